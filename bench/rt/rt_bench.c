@@ -1,0 +1,183 @@
+/*
+ * rt_bench -- loads an NFF (SPD) or OFF scene, renders it with gksrt and reports frame time
+ * and Mrays/s.
+ *   rt_bench FILE [-s SIZE] [-t THREADS] [-corner] [-depth D] [-grid F] [-brute] [-primary]
+ *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-progress]
+ * NFF: the file's view; SPD procedure with -corner (SIZE+1)^2 eye rays, depth 5.
+ * OFF: camera looking at the mesh from +z (of its box centre), one directional light.
+ * -primary: primary rays only (rt_intersect on the camera's rays), reports Mrays/s.
+ */
+#include "gksrt.h"
+#include "rt_testutil.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+/* CPU time of the process: robust against other load on a shared machine (1 thread) */
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static double wall(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "usage: rt_bench FILE [-s N] [-t T] [-corner] [-depth D] [-grid F] [-brute] [-primary] [-o f.ppm] [-reps N]\n");
+        return 2;
+    }
+    const char *path = argv[1], *out = NULL;
+    int size = 512, threads = 1, corner = 0, depth = 5, brute = 0, primary = 0, reps = 1;
+    double gridf = 0.0, subf = 0.0;
+    int submin = 0, nosub = 0, progress = 0;
+    for (int i = 2; i < argc; i++) {
+        if (!strcmp(argv[i], "-s") && i + 1 < argc) size = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "-t") && i + 1 < argc) threads = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "-corner")) corner = 1;
+        else if (!strcmp(argv[i], "-depth") && i + 1 < argc) depth = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "-grid") && i + 1 < argc) gridf = atof(argv[++i]);
+        else if (!strcmp(argv[i], "-brute")) brute = 1;
+        else if (!strcmp(argv[i], "-submin") && i + 1 < argc) submin = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "-subf") && i + 1 < argc) subf = atof(argv[++i]);
+        else if (!strcmp(argv[i], "-nosub")) nosub = 1;
+        else if (!strcmp(argv[i], "-progress")) progress = 1;
+        else if (!strcmp(argv[i], "-primary")) primary = 1;
+        else if (!strcmp(argv[i], "-o") && i + 1 < argc) out = argv[++i];
+        else if (!strcmp(argv[i], "-reps") && i + 1 < argc) reps = atoi(argv[++i]);
+    }
+    rtu_mesh m;
+    size_t n = strlen(path);
+    int isoff = n > 4 && !strcmp(path + n - 4, ".off");
+    if ((isoff ? rtu_load_off(path, &m) : rtu_load_nff(path, &m)) != 0) {
+        fprintf(stderr, "cannot load %s\n", path);
+        return 1;
+    }
+    double bb[6];
+    rtu_mesh_bbox(&m, bb);
+    if (!m.has_view) {
+        double c[3] = {0.5 * (bb[0] + bb[3]), 0.5 * (bb[1] + bb[4]), 0.5 * (bb[2] + bb[5])};
+        double r = 0.5 * sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                              (bb[5] - bb[2]) * (bb[5] - bb[2]));
+        memcpy(m.at, c, sizeof c);
+        memcpy(m.from, c, sizeof c);
+        m.from[2] += 3.0 * r;
+        m.up[1] = 1.0;
+        m.angle = 40.0;
+        m.hither = 0.01 * r;
+    }
+    double vo[4][4];
+    rtu_lookat(m.from, m.at, m.up, vo);
+    rtu_mesh_transform(&m, vo);
+    rtu_mesh_bbox(&m, bb);
+    rt_scene *sc = rt_scene_new();
+    rt_surface s;
+    rt_surface_default(&s);
+    s.ka = 0.1;
+    s.kd = 0.8;
+    int sid = rt_scene_add_surface(sc, &s);
+    if (!m.nlights) {
+        rt_light l = {.type = RT_LIGHT_DIRECTIONAL, .color = {1, 1, 1}, .direction = {-0.3, -0.5, -1}};
+        rt_light a = {.type = RT_LIGHT_AMBIENT, .color = {1, 1, 1}};
+        rt_scene_add_light(sc, &l);
+        rt_scene_add_light(sc, &a);
+    }
+    if (rtu_mesh_add(&m, sc, sid) != 0) {
+        fprintf(stderr, "scene build failed\n");
+        return 1;
+    }
+    rt_build_options bo = {.grid_factor = gridf, .brute_force = brute, .brute_threshold = -1,
+                           .no_subgrids = nosub, .sub_min = submin, .sub_factor = subf};
+    double t0 = now();
+    if (rt_scene_commit(sc, &bo) != RT_OK) {
+        fprintf(stderr, "commit failed\n");
+        return 1;
+    }
+    double tb = now() - t0;
+    rtu_view v;
+    rtu_nff_view(&m, bb, &v);
+    double vm[4][4];
+    rtu_view_matrix(&v, vm);
+    rt_camera cam;
+    int rc = rt_camera_from_view(&cam, vm, v.vp, size, size);
+    if (rc != RT_OK) {
+        fprintf(stderr, "camera failed %d\n", rc);
+        return 1;
+    }
+    rt_render_options ro;
+    rt_render_options_default(&ro);
+    ro.threads = threads;
+    ro.corner_rays = corner;
+    ro.max_depth = depth;
+    ro.progress = progress;
+    memcpy(ro.background, m.bg, sizeof ro.background);
+    float *rgb = malloc((size_t)size * size * 3 * sizeof(float));
+    rt_stats st;
+    memset(&st, 0, sizeof st);
+    if (primary) {
+        size_t nr = (size_t)size * size;
+        rt_ray *rays = malloc(nr * sizeof *rays);
+        rt_hit *hits = malloc(nr * sizeof *hits);
+        for (int y = 0; y < size; y++)
+            for (int x = 0; x < size; x++)
+                rt_camera_ray(&cam, x + 0.5, y + 0.5, &rays[(size_t)y * size + x]);
+        double best = 1e30;
+        for (int r = 0; r < reps; r++) {
+            t0 = now();
+            rt_intersect(sc, nr, rays, hits);
+            double t = now() - t0;
+            if (t < best) best = t;
+        }
+        size_t nh = 0;
+        for (size_t k = 0; k < nr; k++) nh += hits[k].prim >= 0;
+        printf("%s: %zu prims kept, build %.3f s; primary rays %zu, hits %zu: %.3f s, %.2f Mrays/s\n",
+               path, (size_t)m.np, tb, nr, nh, best, nr / best * 1e-6);
+        free(rays);
+        free(hits);
+    } else {
+        double best = 1e30, bestw = 1e30;
+        for (int r = 0; r < reps; r++) {
+            t0 = now();
+            double w0 = wall();
+            rt_render(sc, &cam, &ro, rgb, &st);
+            double t = now() - t0, tw = wall() - w0;
+            if (t < best) best = t;
+            if (tw < bestw) bestw = tw;
+        }
+        uint64_t tot = st.eye_rays + st.shadow_rays + st.reflection_rays + st.refraction_rays;
+        printf("%s: prims %llu, build %.3f s, grid cells %llu refs %llu (%.2f/prim), mem %.1f MB\n"
+               "frame %.3f s CPU, %.3f s wall (%d threads%s): eye %llu hits %llu shadow %llu refl %llu refr %llu, %.2f Mrays/s\n",
+               path, (unsigned long long)st.prims, tb, (unsigned long long)st.grid_cells,
+               (unsigned long long)st.grid_refs, st.prims ? (double)st.grid_refs / st.prims : 0.0,
+               st.memory_bytes / 1e6, best, bestw, threads, corner ? ", corner rays" : "",
+               (unsigned long long)st.eye_rays, (unsigned long long)st.eye_hits,
+               (unsigned long long)st.shadow_rays, (unsigned long long)st.reflection_rays,
+               (unsigned long long)st.refraction_rays, tot / bestw * 1e-6);
+        if (out) {
+            FILE *f = fopen(out, "wb");
+            if (f) {
+                fprintf(f, "P6\n%d %d\n255\n", size, size);
+                for (size_t k = 0; k < (size_t)size * size * 3; k++) {
+                    float x = rgb[k];
+                    int b = x <= 0 ? 0 : x >= 1 ? 255 : (int)(x * 255 + 0.5);
+                    fputc(b, f);
+                }
+                fclose(f);
+            }
+        }
+    }
+    free(rgb);
+    rt_scene_free(sc);
+    rtu_mesh_free(&m);
+    return 0;
+}

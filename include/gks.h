@@ -1,0 +1,243 @@
+/*
+ * gks.h -- C binding of the gks3d library: GKS-3D (ISO 8805) in the style of the
+ * ISO 8651-4 GKS C binding.
+ *
+ * Names follow ISO 8651-4 (gopen_gks, gopen_ws, gpolyline, ginq_op_st, ...). Where the
+ * GKS-3D C binding (ISO/IEC 8806-4) text was not available, GKS-3D functions follow the
+ * same naming rules (a trailing "3" for 3-D variants: gfill_area3, gset_win3, ...); see
+ * docs/BINDING.md for every such choice.
+ *
+ * Gfloat is double: the whole pipeline is computed in double precision.
+ */
+#ifndef GKS3D_GKS_H
+#define GKS3D_GKS_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(GKS3D_BUILDING)
+#define GKS_API __attribute__((visibility("default")))
+#else
+#define GKS_API
+#endif
+
+/* ---------------------------------------------------------------------------------
+ * Basic types
+ * --------------------------------------------------------------------------------- */
+typedef int Gint;
+typedef double Gfloat;
+typedef double Gdouble;
+
+typedef struct { size_t size; void *data; } Gdata;
+
+/* ---------------------------------------------------------------------------------
+ * Enumerations (values as the ISO Fortran binding's GKS_PAR constants)
+ * --------------------------------------------------------------------------------- */
+typedef enum { GASF_BUNDLED, GASF_INDIV } Gasf;
+typedef enum { GIND_NO_CLIP, GIND_CLIP } Gclip_ind;
+typedef enum { GAVAIL_MONOCHR, GAVAIL_COLR } Gcolr_avail;
+typedef enum { GFLAG_COND, GFLAG_ALWAYS } Gctrl_flag;
+typedef enum { GCOORD_WC, GCOORD_NDC } Gcoord_switch;
+typedef enum { GDC_METRES, GDC_OTHER } Gdc_units;
+typedef enum { GDEFER_ASAP, GDEFER_BNIG, GDEFER_BNIL, GDEFER_ASTI } Gdefer_mode;
+typedef enum { GDISP_NOT_EMPTY, GDISP_EMPTY } Gdisp_space_empty;
+typedef enum { GIRG_SUPPR, GIRG_ALLOWED } Girg_mode;
+typedef enum {
+    GLEVEL_0A, GLEVEL_0B, GLEVEL_0C, GLEVEL_1A, GLEVEL_1B,
+    GLEVEL_1C, GLEVEL_2A, GLEVEL_2B, GLEVEL_2C
+} Glevel;
+typedef enum { GNEW_NO, GNEW_YES } Gnew_frame_nec_upd;
+typedef enum { GST_GKCL, GST_GKOP, GST_WSOP, GST_WSAC, GST_SGOP } Gop_st;
+typedef enum { GFLAG_POSTPONE, GFLAG_PERFORM } Gupd_regen_flag;
+typedef enum { GUPD_NOT_PEND, GUPD_PEND } Gupd_st;
+typedef enum { GCAT_OUT, GCAT_IN, GCAT_OUTIN, GCAT_WISS, GCAT_MO, GCAT_MI } Gws_cat;
+typedef enum { GCLASS_VEC, GCLASS_RASTER, GCLASS_OTHER } Gws_class;
+typedef enum { GWS_INACTIVE, GWS_ACTIVE } Gws_st;
+typedef enum { GINQ_SET, GINQ_REALIZED } Ginq_type;
+typedef enum { GSTYLE_HOLLOW, GSTYLE_SOLID, GSTYLE_PAT, GSTYLE_HATCH } Gfill_int_style;
+
+/* ---------------------------------------------------------------------------------
+ * Structures
+ * --------------------------------------------------------------------------------- */
+typedef struct { Gfloat x, y; } Gpoint;
+typedef struct { Gfloat x, y, z; } Gpoint3;
+typedef struct { Gfloat delta_x, delta_y; } Gvec;
+typedef struct { Gfloat delta_x, delta_y, delta_z; } Gvec3;
+typedef struct { Gfloat x_min, x_max, y_min, y_max; } Glimit;
+typedef struct { Gfloat x_min, x_max, y_min, y_max, z_min, z_max; } Glimit3;
+typedef struct { Gint num_points; Gpoint *points; } Gpoint_list;
+typedef struct { Gint num_points; Gpoint3 *points; } Gpoint_list3;
+typedef struct { Gint num_ints; Gint *ints; } Gint_list;
+typedef struct { Gfloat red, green, blue; } Grgb;
+typedef union { Grgb rgb; } Gcolr_rep;
+typedef struct { Gfloat size_x, size_y; } Gfloat_size;
+typedef struct { Gint size_x, size_y; } Gint_size;
+typedef struct { Glimit win; Glimit vp; } Gtran;
+typedef struct { Gclip_ind clip_ind; Glimit clip_rect; } Gclip;
+
+/* Maximum numbers of workstations (INQUIRE WORKSTATION MAXIMUM NUMBERS). */
+typedef struct { Gint simult_open, simult_active, assoc_seg; } Gws_max_nums;
+
+/* Display space size (INQUIRE DISPLAY SPACE SIZE). */
+typedef struct {
+    Gdc_units dc_units;
+    Gfloat_size size_dc;
+    Gint_size size_raster;
+} Gdisp_space_size;
+
+/* ESCAPE data records: an integer array, a real array and a string. */
+typedef struct {
+    Gint num_ints;   const Gint *ints;
+    Gint num_floats; const Gfloat *floats;
+    size_t str_len;  const char *str;
+} Gescape_in_data;
+typedef struct {
+    Gint num_ints;   Gint *ints;      /* capacity in, count out */
+    Gint num_floats; Gfloat *floats;  /* capacity in, count out */
+} Gescape_out_data;
+
+/* ERROR HANDLING procedure type: (error number, function identification, error file). */
+typedef void (*Gerr_handler)(Gint err_num, Gint func_num, const char *err_file);
+
+/* ---------------------------------------------------------------------------------
+ * Workstation types of this implementation (INQUIRE LIST OF AVAILABLE WORKSTATION TYPES)
+ * --------------------------------------------------------------------------------- */
+enum {
+    GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
+    GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
+    GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
+};
+
+/* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the
+ * RAL GKSE_PAR list); GKS-3D and this library's additions are numbered from 109 on.
+ * The full list is in docs/BINDING.md. */
+enum {
+#define GKS_FN(id, sym, name, states) GFN_##sym = id,
+#include "gks_functions.def"
+#undef GKS_FN
+    GFN_COUNT_DUMMY_
+};
+
+/* ---------------------------------------------------------------------------------
+ * Control functions
+ * --------------------------------------------------------------------------------- */
+/* OPEN GKS. err_file: path of the error file (NULL or "" = standard error). Errors: 1, 200. */
+GKS_API void gopen_gks(const char *err_file, size_t mem_unit);
+/* CLOSE GKS. Errors: 2. */
+GKS_API void gclose_gks(void);
+/* OPEN WORKSTATION. conn_id: see docs (PNG file naming). Errors: 8, 20, 21, 22, 23, 24, 26, 28, 42. */
+GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type);
+/* CLOSE WORKSTATION. Errors: 7, 20, 25, 29, 147. */
+GKS_API void gclose_ws(Gint ws_id);
+/* ACTIVATE WORKSTATION. Errors: 6, 20, 25, 29, 33, 35, 43. */
+GKS_API void gactivate_ws(Gint ws_id);
+/* DEACTIVATE WORKSTATION. Errors: 3, 20, 30, 33, 35. */
+GKS_API void gdeactivate_ws(Gint ws_id);
+/* CLEAR WORKSTATION. Errors: 6, 20, 25, 33, 35. */
+GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag);
+/* REDRAW ALL SEGMENTS ON WORKSTATION. Errors: 7, 20, 25, 33, 35, 36. */
+GKS_API void gredraw_all_seg_ws(Gint ws_id);
+/* UPDATE WORKSTATION. Errors: 7, 20, 25, 33, 35, 36. */
+GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag);
+/* SET DEFERRAL STATE. Errors: 7, 20, 25, 33, 35, 36. */
+GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mode);
+/* MESSAGE. Errors: 7, 20, 25, 36. */
+GKS_API void gmessage(Gint ws_id, const char *msg);
+/* ESCAPE. func_id: one of the GESC_* identifiers below. Errors: 8, 180, 181, 182. */
+GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out);
+/* EMERGENCY CLOSE GKS: callable in any state, never reports an error. */
+GKS_API void gemergency_close_gks(void);
+
+/* ESCAPE function identifiers of this implementation (negative = implementation specific,
+ * as the standard reserves). Data records: ints[0] = workstation identifier, then as listed. */
+enum {
+    GESC_SET_FILE_NAME = -101    /* ints[0] ws id; str = base file name for the next frames */
+};
+
+/* ---------------------------------------------------------------------------------
+ * Error handling
+ * --------------------------------------------------------------------------------- */
+/* ERROR HANDLING: the default handler; it calls gerr_log. */
+GKS_API void gerr_hand(Gint err_num, Gint func_num, const char *err_file);
+/* ERROR LOGGING: writes number, function name and message to the error file. */
+GKS_API void gerr_log(Gint err_num, Gint func_num, const char *err_file);
+/* SET ERROR HANDLER (ISO 8651-4): installs new_hand (NULL = the default gerr_hand). */
+GKS_API void gset_err_hand(Gerr_handler new_hand, Gerr_handler *old_hand);
+/* The standard message text of an error number ("" if unknown); never NULL. */
+GKS_API const char *gks_error_message(Gint err_num);
+/* The ISO name of a function identification ("" if unknown); never NULL. */
+GKS_API const char *gks_function_name(Gint func_num);
+
+/* ---------------------------------------------------------------------------------
+ * Output primitives and attributes (2-D subset; the 3-D pipeline extends these)
+ * --------------------------------------------------------------------------------- */
+/* POLYLINE. Errors: 5, 100. */
+GKS_API void gpolyline(const Gpoint_list *point_list);
+/* FILL AREA. Errors: 5, 100. */
+GKS_API void gfill_area(const Gpoint_list *point_list);
+/* SET POLYLINE COLOUR INDEX. Errors: 8, 92. */
+GKS_API void gset_line_colr_ind(Gint colr_ind);
+/* SET FILL AREA COLOUR INDEX. Errors: 8, 92. */
+GKS_API void gset_fill_colr_ind(Gint colr_ind);
+/* SET COLOUR REPRESENTATION. Errors: 7, 20, 25, 33, 35, 36, 93, 96. */
+GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep);
+/* SET WINDOW. Errors: 8, 50, 51. */
+GKS_API void gset_win(Gint tran_num, const Glimit *win);
+/* SET VIEWPORT. Errors: 8, 50, 51, 52. */
+GKS_API void gset_vp(Gint tran_num, const Glimit *vp);
+/* SELECT NORMALIZATION TRANSFORMATION. Errors: 8, 50. */
+GKS_API void gsel_norm_tran(Gint tran_num);
+/* SET CLIPPING INDICATOR. Errors: 8. */
+GKS_API void gset_clip_ind(Gclip_ind clip_ind);
+/* SET WORKSTATION WINDOW. Errors: 7, 20, 25, 33, 36, 51, 53. */
+GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win);
+/* SET WORKSTATION VIEWPORT. Errors: 7, 20, 25, 33, 36, 51, 54. */
+GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp);
+
+/* ---------------------------------------------------------------------------------
+ * Inquiry functions: never call the error handler; *err_ind receives the error number
+ * (0 = none). List inquiries fill list->ints (capacity num_elems_appl_list) from the
+ * 0-based start_pos and return the implementation's list length.
+ * --------------------------------------------------------------------------------- */
+GKS_API void ginq_op_st(Gop_st *op_st);
+GKS_API void ginq_level_gks(Gint *err_ind, Glevel *level);
+GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                      Gint_list *ws_types, Gint *length_list);
+GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num);
+GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num);
+GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                               Gint_list *open_ws, Gint *length_list);
+GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                 Gint_list *active_ws, Gint *length_list);
+/* INQUIRE WORKSTATION CONNECTION AND TYPE: conn_id receives at most conn_size bytes
+ * (NUL-terminated, truncated if needed); *conn_len the full length. */
+GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char *conn_id,
+                               size_t *conn_len, Gint *ws_type);
+GKS_API void ginq_ws_st(Gint ws_id, Gint *err_ind, Gws_st *ws_st);
+GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer_mode,
+                                   Girg_mode *irg_mode, Gdisp_space_empty *disp_empty,
+                                   Gnew_frame_nec_upd *new_frame);
+GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat);
+GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class);
+GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size);
+GKS_API void ginq_cur_norm_tran_num(Gint *err_ind, Gint *norm_tran_num);
+GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran);
+GKS_API void ginq_clip(Gint *err_ind, Gclip *clip);
+GKS_API void ginq_line_colr_ind(Gint *err_ind, Gint *colr_ind);
+GKS_API void ginq_fill_colr_ind(Gint *err_ind, Gint *colr_ind);
+GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
+                           Gcolr_rep *colr_rep);
+GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
+                          Glimit *req_ws_win, Glimit *cur_ws_win,
+                          Glimit *req_ws_vp, Glimit *cur_ws_vp);
+/* INQUIRE ERROR STATE (ISO 8651-4 has no such name; this follows its rules): whether
+ * GKS is currently inside ERROR HANDLING, and the last error number reported. */
+GKS_API void ginq_err_st(Gint *in_error_handling, Gint *last_err_num);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* GKS3D_GKS_H */

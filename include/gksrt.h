@@ -1,0 +1,267 @@
+/*
+ * gksrt.h -- standalone grid ray tracer of the gks3d library (target gksrt).
+ *
+ * Works in view reference coordinates (VRC3), as in Urban & Haberstroh, "Ray Tracing and
+ * Graphics Standards" (1992): the caller transforms its area primitives into VRC3, the camera
+ * is recovered from the INVERSE of the view mapping matrix (VRC3 -> NPC3), xy-clipping is done
+ * by the choice of primary rays, z-clipping by limiting each primary ray to the segment between
+ * the front (NPC z = zmax) and back (NPC z = zmin) planes of the display volume.
+ * Includes no GKS header.
+ *
+ * Phases (Embree-like): rt_scene_new -> rt_scene_add_* -> rt_scene_commit -> rt_render /
+ * rt_intersect / rt_occluded. Adding after a commit un-commits the scene (commit again).
+ * A committed scene is read-only: any number of threads may trace it at the same time.
+ *
+ * Matrices are double m[4][4], m[row][col], acting on homogeneous COLUMN vectors (x,y,z,w).
+ *
+ * All functions returning int return RT_OK (0) or a negative RT_ERR_* code, or a
+ * non-negative id where stated. Bad input (NaN/Inf, zero or huge counts) never crashes.
+ */
+#ifndef GKS3D_GKSRT_H
+#define GKS3D_GKSRT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum {
+    RT_OK = 0,
+    RT_ERR_ARG = -1,      /* invalid argument (NULL, count <= 0, bad id, NaN where not allowed) */
+    RT_ERR_NOMEM = -2,    /* allocation failed or size overflow */
+    RT_ERR_STATE = -3,    /* scene not committed */
+    RT_ERR_SINGULAR = -4, /* view mapping matrix singular / non-finite / display volume unusable */
+    RT_ERR_LIMIT = -5     /* implementation limit (more than RT_MAX_LIGHTS lights, > INT_MAX items) */
+};
+
+#define RT_MAX_LIGHTS 64
+
+typedef struct rt_scene rt_scene;
+
+/* ---- Surfaces (PHIGS PLUS area properties + refraction index) ---------------------------- */
+
+/* Reflectance equation. PHIGS PLUS numbers these 1..4 (NONE..SPECULAR): pass PHIGS value - 1. */
+enum {
+    RT_REFL_NONE = 0,     /* flat: colour = diffuse colour Od, no lights */
+    RT_REFL_AMBIENT = 1,  /* ka*Od*La */
+    RT_REFL_DIFFUSE = 2,  /* + kd*Od*Lc*max(0,N.L) */
+    RT_REFL_SPECULAR = 3  /* + ks*Cs*Lc*max(0,R.E)^se, and mirror reflection weighted by ks*Cs */
+};
+
+typedef struct rt_surface {
+    int refl_eq;           /* RT_REFL_* */
+    double ka, kd, ks;     /* ambient, diffuse, specular coefficients (>= 0) */
+    double diffuse[3];     /* Od, RGB in [0,1] (replaced by the cell colour on cell arrays) */
+    double specular[3];    /* Cs, specular colour */
+    double spec_exp;       /* se >= 0 */
+    double transparency;   /* kt in [0,1]: weight of the transmitted ray; 0 = opaque */
+    double refr_index;     /* > 0. A ray hitting the FRONT side enters a medium of this index
+                              (from 1); hitting the BACK side it leaves a medium of the BACK
+                              surface's index into 1. Exactly 1: no bending, no Fresnel loss. */
+    uint64_t light_mask;   /* bit i set: light i (order of rt_scene_add_light) illuminates */
+} rt_surface;
+
+/* Fills s with: RT_REFL_DIFFUSE, ka = kd = 1, ks = 0, white, se = 1, kt = 0, index 1,
+ * all lights on. */
+void rt_surface_default(rt_surface *s);
+
+/* Adds a surface; returns its id (>= 0) or RT_ERR_ARG (NaN, negative coefficients,
+ * kt outside [0,1], index <= 0, refl_eq outside 0..3), RT_ERR_NOMEM. */
+int rt_scene_add_surface(rt_scene *sc, const rt_surface *s);
+
+/* ---- Lights (PHIGS PLUS light source representation), VRC3 ------------------------------ */
+
+/* PHIGS PLUS light source types (same numbers). */
+enum { RT_LIGHT_AMBIENT = 1, RT_LIGHT_DIRECTIONAL = 2, RT_LIGHT_POSITIONAL = 3, RT_LIGHT_SPOT = 4 };
+
+typedef struct rt_light {
+    int type;              /* RT_LIGHT_* */
+    double color[3];       /* Lc (La for ambient), >= 0 */
+    double position[3];    /* positional, spot */
+    double direction[3];   /* directional, spot: the direction the light TRAVELS (non-zero) */
+    double c1, c2;         /* positional, spot: att = 1/(c1 + c2*d); c1, c2 >= 0, c1 + c2 > 0 */
+    double concentration;  /* spot: factor = cos(angle to axis)^concentration, >= 0 */
+    double spread;         /* spot: half angle in radians, (0, pi]; no light beyond it */
+} rt_light;
+
+/* Adds a light; returns its index 0..RT_MAX_LIGHTS-1 (the bit in rt_surface.light_mask),
+ * RT_ERR_ARG for bad values, RT_ERR_LIMIT beyond RT_MAX_LIGHTS. */
+int rt_scene_add_light(rt_scene *sc, const rt_light *l);
+
+/* ---- Scene ------------------------------------------------------------------------------- */
+
+/* New empty scene, NULL if out of memory. */
+rt_scene *rt_scene_new(void);
+/* Frees a scene (NULL allowed). */
+void rt_scene_free(rt_scene *sc);
+
+/* GKS FILL AREA (nloops = 1) / FILL AREA SET (nloops > 1) in VRC3: loop k has loop_counts[k]
+ * vertices, xyz holds all vertices of all loops consecutively (x,y,z each). Interior by the
+ * even-odd rule over all loops; concave, self-intersecting, repeated or collinear vertices and
+ * slight non-planarity allowed (plane: Newell normal through the vertex centroid; vertices are
+ * projected onto it). The FRONT side is the one the Newell normal points to (counter-clockwise
+ * loop seen from the front). Single-loop triangles use a watertight ray/triangle test.
+ * Degenerate polygons (zero area, NaN/Inf) are accepted here and dropped at commit.
+ * Returns the primitive id (>= 0; polygons and cell arrays share one numbering) or
+ * RT_ERR_ARG (nloops/counts <= 0, bad surface id), RT_ERR_NOMEM, RT_ERR_LIMIT. */
+int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
+                         int front_surface, int back_surface);
+
+/* GKS CELL ARRAY 3 in VRC3: parallelogram with corners P, R, Q and P + Q - R (P and Q
+ * diagonally opposite, R a third corner). Columns i = 0..nx-1 run from P towards R, rows
+ * j = 0..ny-1 from R towards Q; cell (i,j) colour is rgb[3*(j*nx + i) + 0..2] (nearest
+ * neighbour), replacing the surface's diffuse colour. rgb values must be finite (copied).
+ * Front side: the normal (R-P) x (Q-R). Returns the primitive id or an RT_ERR_* code. */
+int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
+                            int nx, int ny, const float *rgb, int front_surface, int back_surface);
+
+typedef struct rt_build_options {
+    double grid_factor;   /* grid cells per primitive; <= 0: default RT_GRID_FACTOR_DEFAULT */
+    int brute_force;      /* 1: no grid (tests) */
+    int brute_threshold;  /* no grid below this many primitives; < 0: default */
+    int grid_res[3];      /* tests/tuning: > 0 in all three: this many cells per axis (<= 1024) */
+    double grid_box[6];   /* tests/tuning: with grid_res, grid box lo xyz, hi xyz (united with
+                             the scene box, which it must contain to be used exactly) */
+    int no_subgrids;      /* 1: no second grid level */
+    int sub_min;          /* second level for top cells with more references; <= 0: default */
+    double sub_factor;    /* second-level cells per reference; <= 0: default */
+} rt_build_options;
+
+/* Grid resolution rule: top level cells ~= factor * primitives, as cubic as the scene box
+ * allows (axes thinner than 1/1000 of the largest get 1 cell), at most 512 per axis and 2^25
+ * cells; a top cell with more than 8 references gets a second-level grid of ~4 cells per
+ * reference (at most 32 per axis). Below 4 primitives: no grid (brute force; measured with
+ * random triangles: equal speed at 2, grid 1.3x faster at 4, 1.6x at 8, 7x at 64).
+ * Measured (bench/rt/rt_bench, -O2, 1 core, CPU seconds / Mrays/s, noise about +-15 %):
+ *   top factor / second level   gears  teapot  mount  tetra | bunny arma fandisk (primary)
+ *   8, none                     1.12   0.23    0.38   0.10  | 5.1   5.9  9.5
+ *   1, >8 refs, 4/ref           1.03   0.21    0.47   0.11  | 5.3   5.7  10.8
+ *   0.5, >8 refs, 8/ref         1.10   0.22    0.51   0.13  | 6.7   5.9  11.8
+ * (SPD scenes: 513x513 corner rays, depth 5; meshes: 512x512 primary rays.) Factors between
+ * 1 and 32 change gears by < 20 %: time is dominated by cell steps and shadow rays. */
+#define RT_GRID_FACTOR_DEFAULT 1.0
+#define RT_BRUTE_THRESHOLD_DEFAULT 4
+
+/* Drops degenerate primitives, builds the uniform grid (CSR arrays). opts may be NULL
+ * (defaults). Returns RT_OK, RT_ERR_NOMEM. */
+int rt_scene_commit(rt_scene *sc, const rt_build_options *opts);
+
+/* ---- Rays --------------------------------------------------------------------------------- */
+
+typedef struct rt_ray {
+    double org[3], dir[3];  /* dir need not be unit; non-finite or zero: always a miss */
+    double tmin, tmax;      /* hits with tmin <= t <= tmax (in units of dir); tmax may be +inf */
+} rt_ray;
+
+typedef struct rt_hit {
+    double t;        /* ray parameter of the nearest hit */
+    int prim;        /* primitive id, -1 = miss */
+    int side;        /* 0: front side hit, 1: back side */
+    double p[3];     /* hit point org + t*dir */
+    double ng[3];    /* unit geometric normal of the front side */
+} rt_hit;
+
+/* Nearest hit for n rays (ties in t: smallest primitive id). RT_ERR_STATE if not committed,
+ * RT_ERR_NOMEM. Grid and brute force give bit-identical results. */
+int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
+/* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
+int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);
+
+/* ---- Camera (paper section 3) ------------------------------------------------------------ */
+
+typedef struct rt_camera {
+    int width, height;       /* raster size in pixels */
+    int perspective;         /* 1: perspective (prp valid), 0: parallel (dop valid) */
+    double prp[3];           /* projection reference point in VRC3 */
+    double dop[3];           /* unit direction of projection (towards the back plane) */
+    double minv[4][4];       /* inverse view mapping matrix NPC3 -> VRC3 */
+    double box[6];           /* display volume in NPC3: xmin,xmax,ymin,ymax,zmin,zmax */
+    double corner[8][3];     /* its corners in VRC3; index bit0: x max, bit1: y max, bit2: z max */
+    double plane[6][4];      /* clipping planes in VRC3: a*x+b*y+c*z+d >= 0 inside (unit a,b,c);
+                                order: x min, x max, y min, y max, back (z min), front (z max) */
+    double origin[3];        /* VRC3 point of NPC (xmin, ymax, zmax): top-left raster corner */
+    double du[3], dv[3];     /* raster steps on the front plane: one pixel right / one pixel down
+                                (exact when the front plane maps affinely, as for all view
+                                mapping matrices; rays themselves always use minv) */
+    double scale;            /* size of the display volume in VRC3 (for epsilons) */
+} rt_camera;
+
+/* Recovers the camera from the view mapping matrix vmap (VRC3 -> NPC3) and the display volume
+ * npc_box (xmin,xmax,ymin,ymax,zmin,zmax; = view clip volume ∩ workstation window):
+ * inverts vmap, maps the 8 corners back to VRC3, P = vmap^-1 (0,0,1,0)^T gives the PRP (w != 0)
+ * or direction of projection (w == 0), derives the 6 clipping planes and the raster on the
+ * front plane. RT_ERR_SINGULAR if vmap is singular or non-finite or the volume has a corner at
+ * or behind infinity; RT_ERR_ARG for a bad box (min >= max in x or y, zmin >= zmax, NaN) or
+ * size (< 1 or > 65536). */
+int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
+                        int width, int height);
+
+/* Primary ray through raster position (px, py): px in [0,width] from the left edge, py in
+ * [0,height] from the TOP edge (pixel (i,r) centre = (i+0.5, r+0.5)). org on the front plane,
+ * unit dir, tmin = 0, tmax = distance to the back plane. Returns RT_OK or RT_ERR_ARG. */
+int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray);
+
+/* ---- Rendering --------------------------------------------------------------------------- */
+
+enum { RT_FRESNEL_EXACT = 0, RT_FRESNEL_SCHLICK = 1, RT_FRESNEL_NONE = 2 };
+
+typedef struct rt_stats {
+    uint64_t eye_rays, eye_hits, shadow_rays, reflection_rays, refraction_rays;
+    uint64_t grid_cells, grid_refs;   /* 0 when brute force */
+    uint64_t prims;                   /* primitives kept at commit */
+    double build_seconds;             /* commit time */
+    double render_seconds;
+    size_t memory_bytes;              /* scene + grid */
+} rt_stats;
+
+typedef void (*rt_progress_fn)(void *user, int tiles_done, int tiles_total);
+
+typedef struct rt_render_options {
+    int samples;            /* per pixel: 1, 4, 9, 16, ... (perfect square, stratified) */
+    int jitter;             /* 1: jitter within strata, deterministic per pixel and sample */
+    int max_depth;          /* eye ray = depth 1; rays at depth max_depth spawn nothing (1..64) */
+    double cutoff;          /* adaptive depth: no secondary ray whose weight (max over RGB of the
+                               product of coefficients along the path) is below this; 0 = off */
+    int threads;            /* 0: number of online CPUs; picture identical for any count */
+    int fresnel;            /* RT_FRESNEL_* for transmitting surfaces */
+    int clip_secondary;     /* 1: shadow/reflection/refraction rays see only the display volume */
+    int corner_rays;        /* 1: SPD mode, (w+1)x(h+1) rays at pixel corners, pixel = mean of
+                               its 4 corners (samples and jitter ignored) */
+    double background[3];
+    int progress;           /* 1: report tiles done, Mrays/s and time left on stderr */
+    rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
+    void *progress_user;
+} rt_render_options;
+
+/* Defaults: 1 sample, no jitter, depth 5, cut-off 0, threads 0, exact Fresnel, clip_secondary 0,
+ * pixel-centre rays, black background, no progress. */
+void rt_render_options_default(rt_render_options *o);
+
+/* Shading of a hit (front or back surface by the side hit; the normal is turned to face the ray):
+ *   refl_eq NONE: I = Od. Otherwise I = sum over ambient lights ka*Od*La + sum over other lights
+ *   att*spot*T*[kd*Od*Lc*max(0,N.L) + ks*Cs*Lc*max(0,R.E)^se] (specular term only for
+ *   SPECULAR), att = 1/(c1 + c2*d) (1 for directional), spot = cos^concentration inside the
+ *   spread, T = shadow transmittance.
+ * Shadow rays: one per non-ambient light in the light mask when N.L > 0 (and the spot cone
+ *   reaches the point and refl_eq >= DIFFUSE); every surface crossed multiplies T by its
+ *   transparency coefficient (no bending); an opaque one blocks.
+ * Secondary rays (depth < max_depth): reflection with weight ks*Cs (refl_eq SPECULAR) plus, on
+ *   transmitting surfaces (kt > 0), kt*F (Fresnel reflectance, 1 on total internal
+ *   reflection); refraction (Snell) with weight kt*(1 - F). Local shading is not scaled by kt.
+ *   Counting as the SPD procedure asks: every spawned reflection ray (also at transmitting
+ *   surfaces and on TIR) is a reflection ray.
+ * Self-intersection: secondary ray origins are moved off the surface along the normal, to the
+ *   side they leave on, by 1e-12*(max|hit coordinate| + t) + 1e-9*(scene extent), i.e. ~10^4
+ *   ulps of the hit point: far above its rounding error (tested at offsets up to 1e6).
+ * Renders cam's raster into rgb (width*height*3 floats, row 0 = top, linear RGB, not clamped).
+ * opts NULL: defaults; stats may be NULL. RT_ERR_STATE if the scene is not committed,
+ * RT_ERR_ARG for bad options, RT_ERR_NOMEM. Never writes NaN/Inf. */
+int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+              float *rgb, rt_stats *stats);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

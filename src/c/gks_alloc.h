@@ -1,0 +1,28 @@
+/*
+ * gks_alloc.h -- the one allocation funnel of the library: overflow-checked sizes and,
+ * in test builds, failure injection (fail the Nth allocation) to check that a failed
+ * allocation reports error 300 and leaves the state lists unchanged.
+ */
+#ifndef GKS_ALLOC_H
+#define GKS_ALLOC_H
+#include "gks_private.h"
+#include <stddef.h>
+
+/* malloc(n * size) with overflow check; NULL on overflow or exhaustion (n*size == 0
+ * allocates one byte so that NULL always means failure). */
+void *gks_alloc_array(size_t n, size_t size);
+/* calloc-like: zeroed. */
+void *gks_calloc_array(size_t n, size_t size);
+/* realloc(p, n * size) with overflow check; on failure p is untouched and NULL returned. */
+void *gks_realloc_array(void *p, size_t n, size_t size);
+/* strdup through the funnel. */
+char *gks_strdup(const char *s);
+/* strndup through the funnel (copies at most n bytes, always terminates). */
+char *gks_strndup(const char *s, size_t n);
+void gks_free(void *p);
+
+/* Test hook: make the Nth allocation from now fail (0 = never). Returns nothing; the
+ * counter can be read with gks_alloc_count(). Exported for the tests only. */
+void gks_alloc_fail_after(long n);
+long gks_alloc_count(void);
+#endif

@@ -1,0 +1,82 @@
+/*
+ * gks_context.h -- the root object holding the standard's tables: the GKS description
+ * table (const), the GKS state list (exists while GKS is open), the error state list and
+ * the workstation state lists of the open workstations. No other file-level mutable state
+ * exists in the core (the allocation fault-injection counter of gks_alloc.c excepted).
+ */
+#ifndef GKS_CONTEXT_H
+#define GKS_CONTEXT_H
+#include "gks_private.h"
+#include "gks.h"
+#include <stdio.h>
+
+#define GKS_MAX_OPEN_WS 16
+#define GKS_MAX_ACTIVE_WS 16
+#define GKS_MAX_NORM_TRAN 31 /* transformations 0..31; 0 is the unity transformation */
+
+typedef struct gks_ws gks_ws;
+typedef struct gks_ws_driver gks_ws_driver;
+
+/* GKS description table (ISO 7942 6.3), constant. */
+typedef struct gks_desc_table {
+    Glevel level;
+    int n_ws_types;
+    const gks_ws_driver *const *ws_types; /* the compiled-in driver list */
+    Gws_max_nums max_nums;
+    int max_norm_tran;
+} gks_desc_table;
+
+/* Primitive attributes currently selected (the GKS state list's "current" entries).
+ * Grows with the output pipeline. */
+typedef struct gks_cur_attrs {
+    int line_colr_ind;
+    int fill_colr_ind;
+} gks_cur_attrs;
+
+typedef struct gks_norm_tran {
+    Glimit3 win;
+    Glimit3 vp;
+} gks_norm_tran;
+
+/* GKS state list (ISO 7942 6.4), allocated at OPEN GKS and freed at CLOSE GKS. */
+typedef struct gks_state_list {
+    int open_ws[GKS_MAX_OPEN_WS];   /* set of open workstations, in order of opening */
+    int n_open;
+    int active_ws[GKS_MAX_ACTIVE_WS];
+    int n_active;
+    gks_cur_attrs attrs;
+    int cur_tnr;
+    gks_norm_tran tran[GKS_MAX_NORM_TRAN + 1];
+    Gclip_ind clip_ind;
+    char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
+} gks_state_list;
+
+/* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives
+ * CLOSE GKS: the handler is installed by the application, possibly before OPEN GKS. */
+typedef struct gks_error_state {
+    int in_handler;        /* error state: ON while ERROR HANDLING runs */
+    int last_error;
+    FILE *fp;              /* error file opened at OPEN GKS, NULL = standard error */
+    Gerr_handler handler;  /* NULL = gerr_hand */
+} gks_error_state;
+
+typedef struct gks_context {
+    Gop_st op_st;
+    const gks_desc_table *desc;
+    gks_state_list *sl;            /* NULL while GKS is closed */
+    gks_error_state err;
+    gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
+} gks_context;
+
+/* The context of this process (the C binding is procedural; GKS is single-threaded). */
+gks_context *gks_ctx(void);
+
+/* Workstation state list of open workstation ws_id, or NULL. */
+gks_ws *gks_ws_lookup(int ws_id);
+
+/* Driver of workstation type ws_type, or NULL if the type does not exist. */
+const gks_ws_driver *gks_driver_for_type(int ws_type);
+
+/* Whether ws_id is in the set of active workstations. */
+int gks_ws_is_active(int ws_id);
+#endif

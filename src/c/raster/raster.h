@@ -1,0 +1,205 @@
+/*
+ * raster.h -- the raster module of the PNG workstation (internal, not installed).
+ *
+ * Draws primitives that the workstation driver has already transformed to device
+ * coordinates (DC), clipped and given resolved attributes (RGB colours in [0,1]).
+ * It knows nothing about GKS state.
+ *
+ * Conventions
+ *  - DC: pixel units of the OUTPUT image, double precision; x right, y UP, y = 0 at the
+ *    bottom edge; pixel (i, j) covers [i, i+1) x [j, j+1), its centre is (i+.5, j+.5).
+ *    z in [0, 1], LARGER z = NEARER the viewer.
+ *  - Coverage: a pixel (sub-pixel when supersampling) is covered iff its centre is inside
+ *    the area by the even-odd rule. A centre exactly on an edge belongs to the area on its
+ *    right (crossings x <= centre count), a centre exactly on a horizontal edge to the area
+ *    above it (half-open [ymin, ymax) rule). Two areas sharing an edge therefore never both
+ *    cover or both miss a pixel (triangles, polygons and cell arrays use the same rule).
+ *  - Depth (zmode): NONE draws colour only; TEST draws colour where z + zbias >= zbuf
+ *    and then sets zbuf = max(zbuf, z) (so later primitives win ties, as in painter
+ *    order); ONLY does the same test and depth write but no colour (hidden-line pass).
+ *  - Anti-aliasing: a framebuffer created with ss = 2..4 stores ss*width x ss*height
+ *    samples; all coordinates, widths, sizes and hatch spacings stay in output pixels;
+ *    output (resolve / PNG) is the box-filtered mean of each ss x ss block.
+ *  - Errors: functions return GKS_RASTER_OK (0) or a gks_raster_status; hostile input
+ *    (NaN/Inf, negative counts, NULL) is rejected before anything is drawn.
+ *  - Allocation goes through the library funnel gks_alloc_array / gks_free (gks_alloc.h).
+ */
+#ifndef GKS_RASTER_H
+#define GKS_RASTER_H
+#include "gks_private.h"
+#include <stddef.h>
+
+typedef enum gks_raster_status {
+    GKS_RASTER_OK = 0,
+    GKS_RASTER_E_ARG = 1,    /* invalid argument: NULL, count, NaN/Inf, unknown type */
+    GKS_RASTER_E_NOMEM = 2,  /* allocation failed or size overflow */
+    GKS_RASTER_E_IO = 3,     /* file cannot be opened, written or read */
+    GKS_RASTER_E_FORMAT = 4  /* file is not a PNG the reader understands */
+} gks_raster_status;
+
+typedef enum gks_raster_zmode {
+    GKS_RASTER_Z_NONE = 0,   /* no depth test, colour only (painter / HLHSR none) */
+    GKS_RASTER_Z_TEST = 1,   /* depth test and write, colour */
+    GKS_RASTER_Z_ONLY = 2    /* depth test and write, no colour (hidden-line pass) */
+} gks_raster_zmode;
+
+/* A DC point; same layout as Gpoint3. */
+typedef struct gks_raster_pt { double x, y, z; } gks_raster_pt;
+
+/* Framebuffer. Colour is float RGB: supersampling averages and the tracer's float output
+ * need more than 8 bits until the final PNG, and 12 B/pixel is cheap at workstation
+ * sizes. Rows are stored bottom-up (row 0 = DC y in [0,1)), w*h samples. */
+typedef struct gks_raster_fb {
+    int width, height;  /* output image size in pixels */
+    int ss;             /* supersampling factor 1..4 */
+    int w, h;           /* sample grid size: ss*width, ss*height */
+    float *rgb;         /* 3*w*h floats, sample (i, j) at rgb[3*((size_t)j*w + i)] */
+    float *z;           /* w*h floats, cleared to -INFINITY (farthest) */
+} gks_raster_fb;
+
+/* Create a width x height framebuffer (1 <= width, height <= 65536, ss 1..4), cleared to
+ * black and farthest depth. NULL on bad arguments or when memory is exhausted. */
+gks_raster_fb *gks_raster_fb_create(int width, int height, int ss);
+/* Free a framebuffer (NULL is ignored). */
+void gks_raster_fb_free(gks_raster_fb *fb);
+/* Clear colour to rgb (components clamped to [0,1]; NULL = black) and depth to farthest. */
+void gks_raster_fb_clear(gks_raster_fb *fb, const float rgb[3]);
+/* Box-filter to width x height 8-bit RGB, row 0 = TOP of the image (3*width*height
+ * bytes). E_ARG on NULL. */
+int gks_raster_fb_resolve(const gks_raster_fb *fb, unsigned char *rgb8);
+
+/* --- Areas ---------------------------------------------------------------------- */
+typedef enum gks_raster_style {
+    GKS_RASTER_SOLID = 0,
+    GKS_RASTER_HATCH = 1,
+    GKS_RASTER_PATTERN = 2
+} gks_raster_style;
+
+/* Hatch styles (value of gks_raster_fill.hatch; GKS negative hatch indices): lines one
+ * output pixel wide every GKS_RASTER_HATCH_SPACING output pixels (-1..-6), or every
+ * GKS_RASTER_HATCH_SPACING/2 pixels (-7..-12, same order). Pixels between hatch lines
+ * are left untouched (colour and depth). */
+#define GKS_RASTER_HATCH_SPACING 8
+enum {
+    GKS_RASTER_HATCH_HORIZONTAL = -1,
+    GKS_RASTER_HATCH_VERTICAL = -2,
+    GKS_RASTER_HATCH_UP45 = -3,        /* +45 degrees: rising to the right */
+    GKS_RASTER_HATCH_DOWN45 = -4,      /* -45 degrees */
+    GKS_RASTER_HATCH_CROSS = -5,       /* horizontal + vertical */
+    GKS_RASTER_HATCH_DIAGCROSS = -6,   /* +45 + -45 */
+    GKS_RASTER_HATCH_LAST = -12
+};
+
+/* Interior of an area (HOLLOW is the caller's: it strokes the boundary). Pattern: pat_rgb holds pat_nx*pat_ny RGB triples, cell (i, j) at
+ * pat_rgb[3*(j*pat_nx + i)]; cell (0, 0) has its corner at pat_ref and spans pat_u
+ * (i direction) and pat_v (j direction), all in DC; tiled, nearest neighbour. */
+typedef struct gks_raster_fill {
+    gks_raster_style style;
+    float rgb[3];              /* SOLID and HATCH colour */
+    int hatch;                 /* HATCH: -1 .. -12 */
+    int pat_nx, pat_ny;        /* PATTERN */
+    const float *pat_rgb;
+    double pat_ref[2], pat_u[2], pat_v[2];
+    gks_raster_zmode zmode;
+    float zbias;               /* >= 0, added to z in the depth test only */
+} gks_raster_fill;
+
+/* FILL AREA 3 / FILL AREA SET 3: fill n_loops closed loops (counts[k] points each,
+ * stored one after another in pts) by the even-odd rule. Depth is taken from the plane
+ * through the vertices' centroid with the Newell normal (best-fit plane for slightly
+ * non-planar polygons), clamped to the vertices' z range. Loops with fewer than 3
+ * points add nothing. E_ARG: NULL, n_loops < 1, a count < 0, a non-finite coordinate,
+ * a bad fill; E_NOMEM. */
+int gks_raster_fill_area(gks_raster_fb *fb, int n_loops, const int *counts,
+                         const gks_raster_pt *pts, const gks_raster_fill *fill);
+
+/* Fast path: n triangles (pts[3k..3k+2]), same coverage and depth rule as
+ * gks_raster_fill_area (depth from the triangle's plane; SSE2/AVX2 depth test).
+ * rgb: NULL to use fill->rgb, else one RGB triple per triangle (replaces fill->rgb).
+ * E_ARG (nothing drawn) on NULL, a bad fill or any non-finite coordinate; no E_NOMEM. */
+int gks_raster_triangles(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
+                         const float *rgb, const gks_raster_fill *fill);
+
+/* CELL ARRAY 3 (after projection): the parallelogram with corner o, i-direction edge
+ * o->pu and j-direction edge o->pv is divided into nx x ny cells; cell (i, j) has
+ * colour rgb[3*(j*nx + i)] and covers o + [i/nx,(i+1)/nx](pu-o) + [j/ny,(j+1)/ny](pv-o).
+ * Each covered pixel takes the colour of the cell containing its centre; the depth
+ * plane is that of o, pu, pv. fill supplies zmode and zbias only (NULL = no depth).
+ * E_ARG on NULL, nx or ny < 1, non-finite corner; a degenerate parallelogram draws
+ * nothing; never E_NOMEM. (GKS-3D's P, Q, R map to o, pu, pv by the caller.) */
+int gks_raster_cell_array(gks_raster_fb *fb, const gks_raster_pt *o,
+                          const gks_raster_pt *pu, const gks_raster_pt *pv,
+                          int nx, int ny, const float *rgb, const gks_raster_fill *fill);
+
+/* --- Lines and markers -------------------------------------------------------------- */
+/* Linetypes (GKS 1..4). Pattern lengths in output pixels times max(1, width):
+ * dashed 8 on 4 off; dotted 2 on 4 off; dash-dotted 8 on 3 off 2 on 3 off. The pattern
+ * continues across vertices (arc length along the whole polyline). */
+enum { GKS_RASTER_LT_SOLID = 1, GKS_RASTER_LT_DASHED = 2, GKS_RASTER_LT_DOTTED = 3,
+       GKS_RASTER_LT_DASHDOT = 4 };
+
+typedef struct gks_raster_line {
+    float rgb[3];
+    double width;              /* output pixels; values below 1 draw as 1 */
+    int type;                  /* linetype 1..4 (ignored by markers: always solid) */
+    gks_raster_zmode zmode;    /* NONE or TEST (ONLY is treated as TEST without colour) */
+    float zbias;               /* >= 0; hidden-line mode: lets edges at a surface's own
+                                  depth show; e.g. 1e-3 */
+} gks_raster_line;
+
+/* POLYLINE 3: n >= 2 points, z interpolated along each segment. Width 1 without
+ * supersampling takes a Bresenham fast path (from the pixel holding one end point to the
+ * pixel holding the other, 8-connected). Wider lines (and all lines when ss > 1) are
+ * quads of the given width (same coverage rule as areas) with butt ends and round joins
+ * where the line turns. E_ARG: NULL, n < 2, non-finite coordinate, type outside 1..4,
+ * width NaN or >= 1e6, bad zmode/zbias; E_NOMEM never. */
+int gks_raster_polyline(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
+                        const gks_raster_line *attr);
+
+/* POLYMARKER 3: n >= 1 markers of GKS type 1 dot (one output pixel), 2 plus, 3 asterisk,
+ * 4 circle, 5 diagonal cross, centred at each point, size = nominal diameter in output
+ * pixels, stroked solid with attr's colour, width, zmode and zbias. E_ARG as polyline,
+ * or type outside 1..5, size not finite or < 0. */
+int gks_raster_markers(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts, int type,
+                       double size, const gks_raster_line *attr);
+
+/* --- Stroke font -------------------------------------------------------------------- */
+/* A simplex sans stroke font for printable ASCII 32..126, compiled in. Font units: base
+ * line 0, cap height 21, descender -7; glyph x from 0 to its advance width. */
+#define GKS_RASTER_GLYPH_MAX_POINTS 160
+#define GKS_RASTER_GLYPH_MAX_STROKES 12
+
+typedef struct gks_raster_font_metrics {
+    double top;      /* 25: above accents / parentheses */
+    double cap;      /* 21 */
+    double half;     /* 10.5: half of the cap height */
+    double base;     /* 0 */
+    double bottom;   /* -7: descender */
+    double max_advance;
+} gks_raster_font_metrics;
+
+typedef struct gks_raster_glyph {
+    double advance;                        /* advance width, font units */
+    int n_strokes;                         /* polylines */
+    int n_points;
+    int stroke_len[GKS_RASTER_GLYPH_MAX_STROKES]; /* points of each polyline, in order */
+    double xy[2 * GKS_RASTER_GLYPH_MAX_POINTS];  /* x0,y0,x1,y1,... font units */
+} gks_raster_glyph;
+
+/* Font metrics (constant). */
+void gks_raster_font_metrics_get(gks_raster_font_metrics *m);
+/* Strokes and advance of character ch. Characters outside 32..126 return E_ARG and the
+ * glyph of '?' (so text layout can still proceed); E_ARG with nothing filled on NULL. */
+int gks_raster_font_glyph(int ch, gks_raster_glyph *g);
+
+/* --- PNG ---------------------------------------------------------------------------- */
+/* Write the resolved framebuffer as 8-bit RGB PNG (row 0 of the file = top of the image).
+ * E_IO if the file cannot be written, E_NOMEM, E_ARG. Never aborts. */
+int gks_raster_fb_write_png(const gks_raster_fb *fb, const char *path);
+/* Write w x h 8-bit RGB pixels (rgb8 row 0 = top) as PNG. */
+int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned char *rgb8);
+/* Read any PNG as 8-bit RGB (alpha dropped, palette/grey expanded, 16-bit stripped):
+ * *rgb8 (row 0 = top, free with gks_free), *w, *h. E_IO, E_FORMAT, E_NOMEM, E_ARG. */
+int gks_raster_png_read_rgb8(const char *path, int *w, int *h, unsigned char **rgb8);
+
+#endif

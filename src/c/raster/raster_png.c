@@ -1,0 +1,150 @@
+/*
+ * raster_png.c -- PNG output and input through libpng. libpng reports errors by
+ * longjmp; every object that must be released after a jump is kept in a struct that
+ * is not modified between setjmp and the jump (so no volatile locals are needed).
+ */
+#include "raster.h"
+#include "gks_alloc.h"
+#include <png.h>
+#include <setjmp.h>
+#include <stdio.h>
+
+/* Quiet handlers: errors jump back (libpng's default), warnings are dropped. */
+static void png_err(png_structp png, png_const_charp msg)
+{
+    (void)msg;
+    png_longjmp(png, 1);
+}
+
+static void png_warn(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+typedef struct png_job {
+    FILE *fp;
+    png_structp png;
+    png_infop info;
+    png_bytep *rows;
+    unsigned char *pix;
+} png_job;
+
+static int write_rows(png_job *job, int w, int h, const unsigned char *rgb8)
+{
+    if (setjmp(png_jmpbuf(job->png)))
+        return GKS_RASTER_E_IO;
+    png_init_io(job->png, job->fp);
+    png_set_IHDR(job->png, job->info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_compression_level(job->png, 6);
+    png_write_info(job->png, job->info);
+    for (int y = 0; y < h; y++)
+        png_write_row(job->png, rgb8 + (size_t)y * (size_t)w * 3);
+    png_write_end(job->png, NULL);
+    return GKS_RASTER_OK;
+}
+
+int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned char *rgb8)
+{
+    if (!path || !rgb8 || w < 1 || h < 1)
+        return GKS_RASTER_E_ARG;
+    png_job job = {0};
+    job.fp = fopen(path, "wb");
+    if (!job.fp)
+        return GKS_RASTER_E_IO;
+    int rc = GKS_RASTER_E_NOMEM;
+    job.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, png_err, png_warn);
+    if (job.png)
+        job.info = png_create_info_struct(job.png);
+    if (job.info)
+        rc = write_rows(&job, w, h, rgb8);
+    png_destroy_write_struct(job.png ? &job.png : NULL, job.info ? &job.info : NULL);
+    if (fclose(job.fp) != 0 && rc == GKS_RASTER_OK)
+        rc = GKS_RASTER_E_IO;
+    if (rc != GKS_RASTER_OK)
+        remove(path);
+    return rc;
+}
+
+int gks_raster_fb_write_png(const gks_raster_fb *fb, const char *path)
+{
+    if (!fb || !path)
+        return GKS_RASTER_E_ARG;
+    size_t n = (size_t)fb->width * (size_t)fb->height;
+    unsigned char *rgb8 = gks_alloc_array(n, 3);
+    if (!rgb8)
+        return GKS_RASTER_E_NOMEM;
+    int rc = gks_raster_fb_resolve(fb, rgb8);
+    if (rc == GKS_RASTER_OK)
+        rc = gks_raster_png_write_rgb8(path, fb->width, fb->height, rgb8);
+    gks_free(rgb8);
+    return rc;
+}
+
+static int read_rows(png_job *job, int *w, int *h)
+{
+    if (setjmp(png_jmpbuf(job->png)))
+        return GKS_RASTER_E_FORMAT;
+    png_init_io(job->png, job->fp);
+    png_set_sig_bytes(job->png, 8);
+    png_set_user_limits(job->png, 65536, 65536);
+    png_read_info(job->png, job->info);
+    png_uint_32 pw = png_get_image_width(job->png, job->info);
+    png_uint_32 ph = png_get_image_height(job->png, job->info);
+    int ct = png_get_color_type(job->png, job->info);
+    png_set_strip_16(job->png);
+    png_set_packing(job->png);
+    if (ct == PNG_COLOR_TYPE_PALETTE)
+        png_set_palette_to_rgb(job->png);
+    if (ct == PNG_COLOR_TYPE_GRAY || ct == PNG_COLOR_TYPE_GRAY_ALPHA) {
+        png_set_expand_gray_1_2_4_to_8(job->png);
+        png_set_gray_to_rgb(job->png);
+    }
+    png_set_strip_alpha(job->png);
+    png_set_interlace_handling(job->png);
+    png_read_update_info(job->png, job->info);
+    if (png_get_rowbytes(job->png, job->info) != (size_t)pw * 3)
+        return GKS_RASTER_E_FORMAT;
+    job->pix = gks_alloc_array((size_t)pw * (size_t)ph, 3);
+    job->rows = gks_alloc_array(ph, sizeof *job->rows);
+    if (!job->pix || !job->rows)
+        return GKS_RASTER_E_NOMEM;
+    for (png_uint_32 y = 0; y < ph; y++)
+        job->rows[y] = job->pix + (size_t)y * pw * 3;
+    png_read_image(job->png, job->rows);
+    png_read_end(job->png, NULL);
+    *w = (int)pw;
+    *h = (int)ph;
+    return GKS_RASTER_OK;
+}
+
+int gks_raster_png_read_rgb8(const char *path, int *w, int *h, unsigned char **rgb8)
+{
+    if (!path || !w || !h || !rgb8)
+        return GKS_RASTER_E_ARG;
+    *rgb8 = NULL;
+    png_job job = {0};
+    job.fp = fopen(path, "rb");
+    if (!job.fp)
+        return GKS_RASTER_E_IO;
+    unsigned char sig[8];
+    int rc = GKS_RASTER_E_FORMAT;
+    if (fread(sig, 1, 8, job.fp) == 8 && png_sig_cmp(sig, 0, 8) == 0) {
+        rc = GKS_RASTER_E_NOMEM;
+        job.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, png_err, png_warn);
+        if (job.png)
+            job.info = png_create_info_struct(job.png);
+        if (job.info)
+            rc = read_rows(&job, w, h);
+        png_destroy_read_struct(job.png ? &job.png : NULL, job.info ? &job.info : NULL, NULL);
+    }
+    fclose(job.fp);
+    gks_free(job.rows);
+    if (rc != GKS_RASTER_OK) {
+        gks_free(job.pix);
+        return rc;
+    }
+    *rgb8 = job.pix;
+    return GKS_RASTER_OK;
+}

@@ -1,0 +1,506 @@
+/*
+ * rt_build.c -- construction of the uniform grid in flat CSR arrays (cell offsets +
+ * reference array, no per-cell allocation) with an optional second level in crowded cells.
+ * A primitive goes into every cell its surface overlaps: SAT for triangles (Akenine-Moeller),
+ * Sutherland-Hodgman clipping of each loop for quads, polygons and cell arrays, against the
+ * cell box enlarged by eps = 1e-9 * (scene magnitude + extent). Resolution rule and its
+ * measurements: gksrt.h (RT_GRID_FACTOR_DEFAULT).
+ */
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- overlap tests for the build ---- */
+
+/* triangle / box SAT (Akenine-Moeller); box given by centre and half sizes */
+static int rt_axis_test(const double v0[3], const double v1[3], const double v2[3],
+                        const double ax[3], const double h[3])
+{
+    double p0 = v0[0] * ax[0] + v0[1] * ax[1] + v0[2] * ax[2];
+    double p1 = v1[0] * ax[0] + v1[1] * ax[1] + v1[2] * ax[2];
+    double p2 = v2[0] * ax[0] + v2[1] * ax[1] + v2[2] * ax[2];
+    double mn = fmin(p0, fmin(p1, p2)), mx = fmax(p0, fmax(p1, p2));
+    double rad = h[0] * fabs(ax[0]) + h[1] * fabs(ax[1]) + h[2] * fabs(ax[2]);
+    return !(mn > rad || mx < -rad);
+}
+
+static int rt_tri_box(const rt_tri *t, const double bc[3], const double h[3])
+{
+    double v[3][3], e[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            v[i][j] = t->v[i][j] - bc[j];
+    for (int j = 0; j < 3; j++) {
+        e[0][j] = v[1][j] - v[0][j];
+        e[1][j] = v[2][j] - v[1][j];
+        e[2][j] = v[0][j] - v[2][j];
+    }
+    for (int j = 0; j < 3; j++) { /* box face normals */
+        double mn = fmin(v[0][j], fmin(v[1][j], v[2][j])), mx = fmax(v[0][j], fmax(v[1][j], v[2][j]));
+        if (mn > h[j] || mx < -h[j])
+            return 0;
+    }
+    for (int i = 0; i < 3; i++) /* edge x box axis */
+        for (int j = 0; j < 3; j++) {
+            double u[3] = {0, 0, 0}, ax[3];
+            u[j] = 1.0;
+            ax[0] = u[1] * e[i][2] - u[2] * e[i][1];
+            ax[1] = u[2] * e[i][0] - u[0] * e[i][2];
+            ax[2] = u[0] * e[i][1] - u[1] * e[i][0];
+            if (!rt_axis_test(v[0], v[1], v[2], ax, h))
+                return 0;
+        }
+    double n[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
+                   e[0][0] * e[1][1] - e[0][1] * e[1][0]};
+    return rt_axis_test(v[0], v[1], v[2], n, h);
+}
+
+typedef struct rt_clipbuf {
+    double *a, *b;
+    size_t cap; /* doubles in each of a and b */
+} rt_clipbuf;
+
+static int rt_clipbuf_reserve(rt_clipbuf *cb, size_t need)
+{
+    if (need <= cb->cap)
+        return 1;
+    size_t nc = need * 2;
+    double *na = rt_realloc_array(cb->a, nc, sizeof(double));
+    if (!na)
+        return 0;
+    cb->a = na;
+    double *nb = rt_realloc_array(cb->b, nc, sizeof(double));
+    if (!nb)
+        return 0;
+    cb->b = nb;
+    cb->cap = nc;
+    return 1;
+}
+
+/* Sutherland-Hodgman clip of a planar loop against box [lo,hi]; 1 if anything remains */
+static int rt_loop_box(rt_clipbuf *cb, const double *pts, size_t n, const double lo[3],
+                       const double hi[3], int *err)
+{
+    for (size_t i = 0; i < n; i++) { /* quick accept: a vertex inside */
+        const double *p = pts + 3 * i;
+        if (p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] &&
+            p[2] <= hi[2])
+            return 1;
+    }
+    if (!rt_clipbuf_reserve(cb, 3 * (n + 2))) {
+        *err = 1;
+        return 0;
+    }
+    memcpy(cb->a, pts, 3 * n * sizeof(double));
+    size_t cur = n;
+    for (int pl = 0; pl < 6 && cur > 0; pl++) {
+        int ax = pl >> 1, upper = pl & 1;
+        double lim = upper ? hi[ax] : lo[ax];
+        if (!rt_clipbuf_reserve(cb, 3 * (2 * cur + 2))) { /* each edge emits <= 2 points */
+            *err = 1;
+            return 0;
+        }
+        size_t out = 0;
+        const double *q = cb->a + 3 * (cur - 1);
+        double dq = upper ? lim - q[ax] : q[ax] - lim;
+        for (size_t i = 0; i < cur; i++) {
+            const double *p = cb->a + 3 * i;
+            double dp = upper ? lim - p[ax] : p[ax] - lim;
+            if ((dp >= 0.0) != (dq >= 0.0)) {
+                double s = dq / (dq - dp);
+                for (int j = 0; j < 3; j++)
+                    cb->b[3 * out + j] = q[j] + s * (p[j] - q[j]);
+                cb->b[3 * out + ax] = lim;
+                out++;
+            }
+            if (dp >= 0.0) {
+                memcpy(cb->b + 3 * out, p, 3 * sizeof(double));
+                out++;
+            }
+            q = p;
+            dq = dp;
+        }
+        double *t = cb->a;
+        cb->a = cb->b;
+        cb->b = t;
+        cur = out;
+    }
+    return cur > 0;
+}
+
+static int rt_plane_box(const double n[3], double d, const double bc[3], const double h[3])
+{
+    double s = n[0] * bc[0] + n[1] * bc[1] + n[2] * bc[2] - d;
+    double r = h[0] * fabs(n[0]) + h[1] * fabs(n[1]) + h[2] * fabs(n[2]);
+    return fabs(s) <= r * (1.0 + 1e-12);
+}
+
+typedef struct rt_pair {
+    uint32_t cell, prim;
+} rt_pair;
+
+typedef struct rt_build {
+    rt_pair *pairs;
+    size_t npairs, cap;
+    rt_clipbuf cb;
+    double *pts;
+    size_t cappts;
+} rt_build;
+
+static int rt_build_push(rt_build *b, size_t cell, size_t prim)
+{
+    if (!rt_grow((void **)&b->pairs, &b->cap, b->npairs + 1, sizeof *b->pairs))
+        return 0;
+    b->pairs[b->npairs].cell = (uint32_t)cell;
+    b->pairs[b->npairs].prim = (uint32_t)prim;
+    b->npairs++;
+    return 1;
+}
+
+/* 3-D points of the polygon/cell outline(s) lying on the traced plane */
+static size_t rt_prim_points(rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+{
+    if (p->kind == RT_KIND_QUAD) {
+        if (!rt_grow((void **)&b->pts, &b->cappts, 12, sizeof(double))) {
+            *err = 1;
+            return 0;
+        }
+        memcpy(b->pts, sc->quad[p->data].v, 12 * sizeof(double));
+        return 4;
+    }
+    if (p->kind == RT_KIND_CELL) {
+        const rt_cell *c = &sc->cell[p->data];
+        if (!rt_grow((void **)&b->pts, &b->cappts, 12, sizeof(double))) {
+            *err = 1;
+            return 0;
+        }
+        for (int j = 0; j < 3; j++) {
+            b->pts[j] = c->p[j];
+            b->pts[3 + j] = c->p[j] + c->a[j];
+            b->pts[6 + j] = c->p[j] + c->a[j] + c->b[j];
+            b->pts[9 + j] = c->p[j] + c->b[j];
+        }
+        return 4;
+    }
+    const rt_poly *po = &sc->poly[p->data];
+    size_t nv = 0;
+    for (uint32_t l = 0; l < po->nloops; l++)
+        nv += sc->loops[po->loop0 + l];
+    if (!rt_grow((void **)&b->pts, &b->cappts, 3 * nv, sizeof(double))) {
+        *err = 1;
+        return 0;
+    }
+    int k = 3 - po->ku - po->kv;
+    for (size_t i = 0; i < nv; i++) {
+        double u = sc->uv[2 * (po->uv0 + i)], v = sc->uv[2 * (po->uv0 + i) + 1];
+        b->pts[3 * i + po->ku] = u;
+        b->pts[3 * i + po->kv] = v;
+        b->pts[3 * i + k] = (po->d - po->n[po->ku] * u - po->n[po->kv] * v) / po->n[k];
+    }
+    return nv;
+}
+
+static void rt_prim_bbox(const rt_scene *sc, const rt_build *b, const rt_prim *p, size_t npts,
+                         double bb[6])
+{
+    for (int i = 0; i < 3; i++) {
+        bb[i] = INFINITY;
+        bb[3 + i] = -INFINITY;
+    }
+    if (p->kind == RT_KIND_TRI) {
+        for (int v = 0; v < 3; v++)
+            for (int i = 0; i < 3; i++) {
+                bb[i] = fmin(bb[i], sc->tri[p->data].v[v][i]);
+                bb[3 + i] = fmax(bb[3 + i], sc->tri[p->data].v[v][i]);
+            }
+        return;
+    }
+    for (size_t v = 0; v < npts; v++)
+        for (int i = 0; i < 3; i++) {
+            bb[i] = fmin(bb[i], b->pts[3 * v + i]);
+            bb[3 + i] = fmax(bb[3 + i], b->pts[3 * v + i]);
+        }
+}
+
+static int rt_cell_of(const rt_box *g, double x, int a)
+{
+    double f = (x - g->lo[a]) * g->inv_cw[a];
+    if (!(f > 0.0))
+        return 0;
+    if (f >= (double)(g->n[a] - 1))
+        return g->n[a] - 1;
+    return (int)f;
+}
+
+/* cells ~= target, as cubic as the box allows; dims thinner than 1/1000 of the largest get 1 */
+static void rt_box_resolution(rt_box *g, double target, int maxn)
+{
+    double ext[3], mx = 0.0;
+    for (int a = 0; a < 3; a++) {
+        ext[a] = g->hi[a] - g->lo[a];
+        mx = fmax(mx, ext[a]);
+    }
+    double vol = 1.0;
+    int k = 0;
+    for (int a = 0; a < 3; a++)
+        if (ext[a] > 1e-3 * mx) {
+            vol *= ext[a] / mx;
+            k++;
+        }
+    if (target < 1.0)
+        target = 1.0;
+    double s = pow(target / vol, 1.0 / (double)k) / mx;
+    double total = 1.0;
+    for (int a = 0; a < 3; a++) {
+        double n = ext[a] > 1e-3 * mx ? floor(ext[a] * s + 0.5) : 1.0;
+        g->n[a] = n < 1.0 ? 1 : (n > (double)maxn ? maxn : (int)n);
+        total *= g->n[a];
+    }
+    while (total > (double)(1 << 25)) {
+        total = 1.0;
+        for (int a = 0; a < 3; a++) {
+            g->n[a] = g->n[a] > 1 ? (g->n[a] * 3) / 4 : 1;
+            total *= g->n[a];
+        }
+    }
+}
+
+static void rt_box_finish(rt_box *g)
+{
+    for (int a = 0; a < 3; a++) {
+        g->cw[a] = (g->hi[a] - g->lo[a]) / g->n[a];
+        g->inv_cw[a] = g->n[a] / (g->hi[a] - g->lo[a]);
+    }
+}
+
+void rt_grid_free(rt_grid *g)
+{
+    free(g->off);
+    free(g->refs);
+    free(g->sub);
+    free(g->subs);
+    free(g->soff);
+    free(g->srefs);
+    memset(g, 0, sizeof *g);
+}
+
+/* cell box of cell c of g, enlarged by eps */
+static void rt_cell_box(const rt_box *g, const int c[3], double eps, double lo[3], double hi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        lo[a] = (c[a] == 0 ? g->lo[a] : g->lo[a] + c[a] * g->cw[a]) - eps;
+        hi[a] = (c[a] == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (c[a] + 1) * g->cw[a]) + eps;
+    }
+}
+
+/* adds (base + cell, i) for every cell of box g whose eps-enlarged box the surface of
+   primitive i overlaps */
+static void rt_insert(rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base, double eps,
+                      int *err)
+{
+    const rt_prim *p = &sc->prim[i];
+    size_t npts = p->kind == RT_KIND_TRI ? 0 : rt_prim_points(sc, b, p, err);
+    if (*err)
+        return;
+    double bb[6];
+    rt_prim_bbox(sc, b, p, npts, bb);
+    int c0[3], c1[3];
+    for (int a = 0; a < 3; a++) {
+        if (bb[a] - eps > g->hi[a] || bb[3 + a] + eps < g->lo[a])
+            return;
+        c0[a] = rt_cell_of(g, bb[a] - eps, a);
+        c1[a] = rt_cell_of(g, bb[3 + a] + eps, a);
+    }
+    int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+    double n[3] = {0, 0, 0}, d = 0.0;
+    if (p->kind == RT_KIND_QUAD) {
+        const rt_quad *q = &sc->quad[p->data];
+        memcpy(n, q->n, sizeof n);
+        d = n[0] * q->v[0][0] + n[1] * q->v[0][1] + n[2] * q->v[0][2];
+    } else if (p->kind == RT_KIND_POLY) {
+        memcpy(n, sc->poly[p->data].n, sizeof n);
+        d = sc->poly[p->data].d;
+    } else if (p->kind == RT_KIND_CELL) {
+        memcpy(n, sc->cell[p->data].n, sizeof n);
+        d = sc->cell[p->data].d;
+    }
+    int c[3];
+    for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
+        for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
+            for (c[0] = c0[0]; c[0] <= c1[0] && !*err; c[0]++) {
+                int hit = single;
+                if (!hit) {
+                    double lo[3], hi[3], bc[3], h[3];
+                    rt_cell_box(g, c, eps, lo, hi);
+                    for (int a = 0; a < 3; a++) {
+                        bc[a] = 0.5 * (lo[a] + hi[a]);
+                        h[a] = 0.5 * (hi[a] - lo[a]);
+                    }
+                    if (p->kind == RT_KIND_TRI) {
+                        hit = rt_tri_box(&sc->tri[p->data], bc, h);
+                    } else if (rt_plane_box(n, d, bc, h)) {
+                        if (p->kind != RT_KIND_POLY) {
+                            hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
+                        } else {
+                            const rt_poly *po = &sc->poly[p->data];
+                            size_t at = 0;
+                            for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
+                                size_t m = sc->loops[po->loop0 + l];
+                                hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
+                                at += m;
+                            }
+                        }
+                    }
+                }
+                if (hit && !rt_build_push(b, base + rt_cell_index(g, c), i))
+                    *err = 1;
+            }
+}
+
+/* pairs -> CSR (stable: primitive order kept within a cell) */
+static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **refsp)
+{
+    uint32_t *off = rt_calloc_array(ncells + 1, sizeof(uint32_t));
+    uint32_t *refs = rt_alloc_array(b->npairs, sizeof(uint32_t));
+    if (!off || !refs) {
+        free(off);
+        free(refs);
+        return RT_ERR_NOMEM;
+    }
+    for (size_t k = 0; k < b->npairs; k++)
+        off[b->pairs[k].cell + 1]++;
+    for (size_t k = 0; k < ncells; k++)
+        off[k + 1] += off[k];
+    for (size_t k = 0; k < b->npairs; k++)
+        refs[off[b->pairs[k].cell]++] = b->pairs[k].prim;
+    for (size_t k = ncells; k > 0; k--)
+        off[k] = off[k - 1];
+    off[0] = 0;
+    *offp = off;
+    *refsp = refs;
+    return RT_OK;
+}
+
+/* Second level (measured, see gksrt.h): a top cell holding more than RT_SUB_MIN references
+ * gets its own grid of about RT_SUB_FACTOR cells per reference (at most 32 per axis). */
+#define RT_SUB_MIN 8
+#define RT_SUB_FACTOR 4.0
+
+static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_factor, int sub_min)
+{
+    rt_grid *g = &sc->grid;
+    size_t nsub = 0;
+    for (size_t ci = 0; ci < g->ncells; ci++)
+        nsub += g->off[ci + 1] - g->off[ci] > (uint32_t)sub_min;
+    if (nsub == 0)
+        return RT_OK;
+    g->sub = rt_alloc_array(g->ncells, sizeof(int32_t));
+    g->subs = rt_alloc_array(nsub, sizeof(rt_subgrid));
+    if (!g->sub || !g->subs)
+        return RT_ERR_NOMEM;
+    b->npairs = 0;
+    size_t total = 0;
+    int err = 0;
+    int c[3];
+    for (c[2] = 0; c[2] < g->b.n[2]; c[2]++)
+        for (c[1] = 0; c[1] < g->b.n[1]; c[1]++)
+            for (c[0] = 0; c[0] < g->b.n[0] && !err; c[0]++) {
+                size_t ci = rt_cell_index(&g->b, c);
+                uint32_t cnt = g->off[ci + 1] - g->off[ci];
+                g->sub[ci] = -1;
+                if (cnt <= (uint32_t)sub_min)
+                    continue;
+                rt_subgrid *sg = &g->subs[g->nsubs];
+                g->sub[ci] = (int32_t)g->nsubs++;
+                rt_cell_box(&g->b, c, 0.0, sg->b.lo, sg->b.hi);
+                rt_box_resolution(&sg->b, sub_factor * cnt, 32);
+                rt_box_finish(&sg->b);
+                size_t n = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+                if (total + n > UINT32_MAX - 1) {
+                    err = 2;
+                    break;
+                }
+                sg->first = (uint32_t)total;
+                for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++)
+                    rt_insert(sc, b, g->refs[k], &sg->b, total, eps, &err);
+                total += n;
+            }
+    if (err)
+        return err == 2 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
+    if (b->npairs > UINT32_MAX - 1)
+        return RT_ERR_LIMIT;
+    g->nsubcells = total;
+    g->nsrefs = b->npairs;
+    return rt_csr(b, total, &g->soff, &g->srefs);
+}
+
+int rt_grid_build(rt_scene *sc, const rt_build_options *o)
+{
+    double factor = o && isfinite(o->grid_factor) && o->grid_factor > 0.0 ? o->grid_factor
+                                                                          : RT_GRID_FACTOR_DEFAULT;
+    int thr = o && o->brute_threshold >= 0 ? o->brute_threshold : RT_BRUTE_THRESHOLD_DEFAULT;
+    sc->use_grid = 0;
+    if ((o && o->brute_force) || sc->nprim == 0 || sc->nprim < (size_t)thr)
+        return RT_OK;
+    if (sc->nprim > UINT32_MAX - 1)
+        return RT_ERR_LIMIT;
+    rt_grid *g = &sc->grid;
+    double mx = 0.0;
+    for (int a = 0; a < 3; a++)
+        mx = fmax(mx, sc->bbox[3 + a] - sc->bbox[a]);
+    double pad = 1e-6 * mx + 1e-12 * sc->scale;
+    for (int a = 0; a < 3; a++) {
+        g->b.lo[a] = sc->bbox[a] - pad;
+        g->b.hi[a] = sc->bbox[3 + a] + pad;
+    }
+    int explicit_res = o && o->grid_res[0] > 0 && o->grid_res[1] > 0 && o->grid_res[2] > 0 &&
+                       o->grid_res[0] <= 1024 && o->grid_res[1] <= 1024 && o->grid_res[2] <= 1024;
+    if (explicit_res) {
+        for (int a = 0; a < 3; a++) {
+            if (isfinite(o->grid_box[a]) && isfinite(o->grid_box[3 + a]) &&
+                o->grid_box[a] < o->grid_box[3 + a]) {
+                if (o->grid_box[a] <= sc->bbox[a])
+                    g->b.lo[a] = o->grid_box[a];
+                if (o->grid_box[3 + a] >= sc->bbox[3 + a])
+                    g->b.hi[a] = o->grid_box[3 + a];
+            }
+            g->b.n[a] = o->grid_res[a];
+        }
+    } else {
+        rt_box_resolution(&g->b, factor * (double)sc->nprim, 512);
+    }
+    rt_box_finish(&g->b);
+    g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
+    const double eps = 1e-9 * (sc->scale + mx);
+    rt_build b;
+    memset(&b, 0, sizeof b);
+    int err = 0;
+    for (size_t i = 0; i < sc->nprim && !err; i++)
+        rt_insert(sc, &b, i, &g->b, 0, eps, &err);
+    int rc = err ? RT_ERR_NOMEM : RT_OK;
+    if (rc == RT_OK && b.npairs > UINT32_MAX - 1)
+        rc = RT_ERR_LIMIT;
+    if (rc == RT_OK) {
+        g->nrefs = b.npairs;
+        rc = rt_csr(&b, g->ncells, &g->off, &g->refs);
+    }
+    int sub_min = o && o->sub_min > 0 ? o->sub_min : RT_SUB_MIN;
+    double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor : RT_SUB_FACTOR;
+    if (rc == RT_OK && !(o && o->no_subgrids))
+        rc = rt_build_subgrids(sc, &b, eps, sub_factor, sub_min);
+    free(b.cb.a);
+    free(b.cb.b);
+    free(b.pts);
+    free(b.pairs);
+    if (rc != RT_OK) {
+        rt_grid_free(g);
+        return rc;
+    }
+    sc->use_grid = 1;
+    return RT_OK;
+}
+

@@ -1,0 +1,248 @@
+/*
+ * rt_camera.c -- camera recovery from the view mapping matrix (Urban & Haberstroh, section 3):
+ * the display volume's corners are mapped through the INVERSE view mapping matrix into VRC3;
+ * P = M^-1 (0,0,1,0)^T is the projection reference point (w != 0) or the direction of
+ * projection (w == 0); the 6 faces give the clipping planes; the raster lies on the front
+ * plane (NPC z = zmax). Each primary ray is the VRC3 image of an NPC projector
+ * x = const, y = const, cut to the segment between the front and back planes: this is exact
+ * for any invertible matrix, parallel, oblique or perspective.
+ */
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Gauss-Jordan with partial pivoting; 0 if singular, non-finite or badly conditioned */
+static int rt_invert4(const double m[4][4], double inv[4][4])
+{
+    double a[4][8];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            if (!isfinite(m[i][j]))
+                return 0;
+            a[i][j] = m[i][j];
+            a[i][4 + j] = i == j ? 1.0 : 0.0;
+        }
+    double mx = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            mx = fmax(mx, fabs(m[i][j]));
+    if (!(mx > 0.0))
+        return 0;
+    for (int c = 0; c < 4; c++) {
+        int p = c;
+        for (int r = c + 1; r < 4; r++)
+            if (fabs(a[r][c]) > fabs(a[p][c]))
+                p = r;
+        if (!(fabs(a[p][c]) > 1e-14 * mx))
+            return 0;
+        if (p != c)
+            for (int j = 0; j < 8; j++) {
+                double t = a[p][j];
+                a[p][j] = a[c][j];
+                a[c][j] = t;
+            }
+        double piv = a[c][c];
+        for (int j = 0; j < 8; j++)
+            a[c][j] /= piv;
+        for (int r = 0; r < 4; r++) {
+            if (r == c || a[r][c] == 0.0)
+                continue;
+            double f = a[r][c];
+            for (int j = 0; j < 8; j++)
+                a[r][j] -= f * a[c][j];
+        }
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            inv[i][j] = a[i][4 + j];
+            if (!isfinite(inv[i][j]))
+                return 0;
+        }
+    /* residual check: M * inv = I */
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double s = 0.0, sa = 0.0;
+            for (int k = 0; k < 4; k++) {
+                s += m[i][k] * inv[k][j];
+                sa += fabs(m[i][k] * inv[k][j]);
+            }
+            if (!(fabs(s - (i == j ? 1.0 : 0.0)) <= 1e-9 * (1.0 + sa)))
+                return 0;
+        }
+    return 1;
+}
+
+static void rt_mul4(const double m[4][4], const double v[4], double r[4])
+{
+    for (int i = 0; i < 4; i++)
+        r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2] + m[i][3] * v[3];
+}
+
+/* NPC point -> VRC3; 0 if at or beyond infinity */
+static int rt_unmap(const rt_camera *cam, double x, double y, double z, double out[3])
+{
+    double v[4] = {x, y, z, 1.0}, h[4];
+    rt_mul4(cam->minv, v, h);
+    if (!(fabs(h[3]) > 0.0))
+        return 0;
+    for (int i = 0; i < 3; i++)
+        out[i] = h[i] / h[3];
+    return isfinite(out[0]) && isfinite(out[1]) && isfinite(out[2]);
+}
+
+static void rt_norm3(double v[3])
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0.0))
+        return;
+    double a = v[0] / m, b = v[1] / m, c = v[2] / m;
+    double l = sqrt(a * a + b * b + c * c);
+    v[0] = a / l;
+    v[1] = b / l;
+    v[2] = c / l;
+}
+
+int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
+                        int width, int height)
+{
+    if (!cam || !vmap || !npc_box)
+        return RT_ERR_ARG;
+    if (width < 1 || height < 1 || width > 65536 || height > 65536)
+        return RT_ERR_ARG;
+    for (int i = 0; i < 6; i++)
+        if (!isfinite(npc_box[i]))
+            return RT_ERR_ARG;
+    if (!(npc_box[0] < npc_box[1]) || !(npc_box[2] < npc_box[3]) || !(npc_box[4] < npc_box[5]))
+        return RT_ERR_ARG;
+    rt_camera c;
+    memset(&c, 0, sizeof c);
+    c.width = width;
+    c.height = height;
+    memcpy(c.box, npc_box, sizeof c.box);
+    if (!rt_invert4(vmap, c.minv))
+        return RT_ERR_SINGULAR;
+    /* corners: w of all 8 must be non-zero with one sign (w is affine in NPC, so the whole
+       volume is then finite) */
+    double wsign = 0.0;
+    for (int k = 0; k < 8; k++) {
+        double v[4] = {npc_box[k & 1 ? 1 : 0], npc_box[k & 2 ? 3 : 2], npc_box[k & 4 ? 5 : 4], 1.0};
+        double h[4];
+        rt_mul4(c.minv, v, h);
+        double hm = fmax(fabs(h[0]), fmax(fabs(h[1]), fabs(h[2])));
+        if (!(fabs(h[3]) > 1e-12 * hm))
+            return RT_ERR_SINGULAR;
+        if (wsign == 0.0)
+            wsign = h[3] > 0.0 ? 1.0 : -1.0;
+        else if ((h[3] > 0.0 ? 1.0 : -1.0) != wsign)
+            return RT_ERR_SINGULAR;
+        for (int i = 0; i < 3; i++)
+            c.corner[k][i] = h[i] / h[3];
+        if (!isfinite(c.corner[k][0]) || !isfinite(c.corner[k][1]) || !isfinite(c.corner[k][2]))
+            return RT_ERR_SINGULAR;
+    }
+    /* projection reference point / direction of projection */
+    double P[4] = {c.minv[0][2], c.minv[1][2], c.minv[2][2], c.minv[3][2]};
+    double pm = fmax(fabs(P[0]), fmax(fabs(P[1]), fabs(P[2])));
+    double axis[3]; /* front -> back through the volume centre */
+    double cf[3] = {0, 0, 0}, cbk[3] = {0, 0, 0}, cen[3] = {0, 0, 0};
+    for (int k = 0; k < 8; k++)
+        for (int i = 0; i < 3; i++) {
+            if (k & 4)
+                cf[i] += 0.25 * c.corner[k][i];
+            else
+                cbk[i] += 0.25 * c.corner[k][i];
+            cen[i] += 0.125 * c.corner[k][i];
+        }
+    for (int i = 0; i < 3; i++)
+        axis[i] = cbk[i] - cf[i];
+    if (fabs(P[3]) > 1e-12 * pm) {
+        c.perspective = 1;
+        for (int i = 0; i < 3; i++)
+            c.prp[i] = P[i] / P[3];
+        for (int i = 0; i < 3; i++)
+            c.dop[i] = axis[i];
+    } else {
+        c.perspective = 0;
+        for (int i = 0; i < 3; i++)
+            c.dop[i] = P[i];
+        if (c.dop[0] * axis[0] + c.dop[1] * axis[1] + c.dop[2] * axis[2] < 0.0)
+            for (int i = 0; i < 3; i++)
+                c.dop[i] = -c.dop[i];
+    }
+    rt_norm3(c.dop);
+    /* size of the volume */
+    double s = 0.0;
+    for (int k = 0; k < 8; k++)
+        for (int i = 0; i < 3; i++)
+            s = fmax(s, fabs(c.corner[k][i] - cen[i]));
+    c.scale = s;
+    /* clipping planes: faces by corner index bits; inside contains the centre */
+    static const int face[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                   {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    for (int f = 0; f < 6; f++) {
+        double n[3] = {0, 0, 0}, q[3] = {0, 0, 0};
+        for (int e = 0; e < 4; e++) {
+            const double *a = c.corner[face[f][e]], *b = c.corner[face[f][(e + 1) & 3]];
+            double ax = a[0] - cen[0], ay = a[1] - cen[1], az = a[2] - cen[2];
+            double bx = b[0] - cen[0], by = b[1] - cen[1], bz = b[2] - cen[2];
+            n[0] += (ay - by) * (az + bz);
+            n[1] += (az - bz) * (ax + bx);
+            n[2] += (ax - bx) * (ay + by);
+            for (int i = 0; i < 3; i++)
+                q[i] += 0.25 * a[i];
+        }
+        double l = fmax(fabs(n[0]), fmax(fabs(n[1]), fabs(n[2])));
+        if (!(l > 1e-14 * s * s))
+            return RT_ERR_SINGULAR;
+        rt_norm3(n);
+        double d = -(n[0] * q[0] + n[1] * q[1] + n[2] * q[2]);
+        if (n[0] * cen[0] + n[1] * cen[1] + n[2] * cen[2] + d < 0.0) {
+            for (int i = 0; i < 3; i++)
+                n[i] = -n[i];
+            d = -d;
+        }
+        for (int i = 0; i < 3; i++)
+            c.plane[f][i] = n[i];
+        c.plane[f][3] = d;
+    }
+    /* raster on the front plane */
+    double dx = (npc_box[1] - npc_box[0]) / width, dy = (npc_box[3] - npc_box[2]) / height;
+    double o[3], a[3], b[3];
+    if (!rt_unmap(&c, npc_box[0], npc_box[3], npc_box[5], o) ||
+        !rt_unmap(&c, npc_box[0] + dx, npc_box[3], npc_box[5], a) ||
+        !rt_unmap(&c, npc_box[0], npc_box[3] - dy, npc_box[5], b))
+        return RT_ERR_SINGULAR;
+    for (int i = 0; i < 3; i++) {
+        c.origin[i] = o[i];
+        c.du[i] = a[i] - o[i];
+        c.dv[i] = b[i] - o[i];
+    }
+    *cam = c;
+    return RT_OK;
+}
+
+int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray)
+{
+    if (!cam || !ray || !isfinite(px) || !isfinite(py) || cam->width < 1 || cam->height < 1)
+        return RT_ERR_ARG;
+    double x = cam->box[0] + px * (cam->box[1] - cam->box[0]) / cam->width;
+    double y = cam->box[3] - py * (cam->box[3] - cam->box[2]) / cam->height;
+    double f[3], b[3];
+    if (!rt_unmap(cam, x, y, cam->box[5], f) || !rt_unmap(cam, x, y, cam->box[4], b))
+        return RT_ERR_ARG;
+    double d[3] = {b[0] - f[0], b[1] - f[1], b[2] - f[2]};
+    double m = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    if (!(m > 0.0) || !isfinite(m))
+        return RT_ERR_ARG;
+    double u[3] = {d[0] / m, d[1] / m, d[2] / m};
+    double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int i = 0; i < 3; i++) {
+        ray->org[i] = f[i];
+        ray->dir[i] = u[i] / l;
+    }
+    ray->tmin = 0.0;
+    ray->tmax = m * l;
+    return RT_OK;
+}

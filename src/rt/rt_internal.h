@@ -1,0 +1,176 @@
+/*
+ * rt_internal.h -- private data of the gksrt ray tracer. Not for applications.
+ */
+#ifndef GKS3D_RT_INTERNAL_H
+#define GKS3D_RT_INTERNAL_H
+
+#ifndef GKS3D_RT_BUILDING
+#error "rt_internal.h is private to src/rt"
+#endif
+
+#include "gksrt.h"
+#include <stddef.h>
+#include <stdint.h>
+
+/* ---- allocation funnel (rt_alloc.c) ---- */
+void *rt_alloc_array(size_t n, size_t size);
+void *rt_calloc_array(size_t n, size_t size);
+void *rt_realloc_array(void *p, size_t n, size_t size);
+/* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
+int rt_grow(void **p, size_t *cap, size_t need, size_t es);
+
+/* ---- primitives ---- */
+enum { RT_KIND_TRI = 0, RT_KIND_POLY = 1, RT_KIND_CELL = 2, RT_KIND_QUAD = 3 };
+
+typedef struct rt_tri {
+    double v[3][3];
+} rt_tri;
+
+/* planar strictly convex 4-gon: watertight edge functions like the triangle, t from the plane */
+typedef struct rt_quad {
+    double v[4][3];
+    double n[3];
+} rt_quad;
+
+typedef struct rt_poly {
+    double n[3], d;     /* plane n.x = d, unit n */
+    int ku, kv;         /* projection axes (dominant axis dropped) */
+    uint32_t uv0;       /* first 2-D vertex in scene uv array */
+    uint32_t loop0;     /* first loop count in scene loops array */
+    uint32_t nloops;
+    double umin, umax, vmin, vmax; /* 2-D bounds (exact reject) */
+    double inv_h;       /* slabs per unit v */
+    uint32_t nslab;     /* horizontal slabs over [vmin,vmax]; edge lists per slab */
+    size_t slab0;       /* first entry in scene slab_off (nslab + 1 entries) */
+} rt_poly;
+
+typedef struct rt_cell {
+    double p[3], a[3], b[3]; /* corner P, column edge R-P, row edge Q-R */
+    double n[3], d;          /* unit normal (a x b), plane */
+    int ku, kv;
+    double inv[2][2];        /* inverse of the projected [a b] */
+    int nx, ny;
+    size_t rgb0;             /* first float in scene cell colour array */
+} rt_cell;
+
+typedef struct rt_prim {
+    uint8_t kind;
+    uint8_t opaque;     /* both sides kt == 0 */
+    int id;             /* user id */
+    int surf[2];        /* front, back surface */
+    uint32_t data;      /* index into tris/polys/cells */
+    double ng[3];       /* unit geometric normal (front) */
+} rt_prim;
+
+/* raw input polygon / cell array kept until commit */
+typedef struct rt_in_prim {
+    int kind;           /* RT_KIND_POLY or RT_KIND_CELL */
+    int front, back;
+    size_t xyz0;        /* first double (poly: all loops; cell: P,Q,R) */
+    size_t loop0;       /* poly: first loop count */
+    int nloops;
+    int nx, ny;         /* cell */
+    size_t rgb0;        /* cell: first float of colours in in_rgb */
+} rt_in_prim;
+
+/* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */
+typedef struct rt_box {
+    double lo[3], hi[3], cw[3], inv_cw[3];
+    int n[3];
+} rt_box;
+
+/* second level: a finer grid inside one crowded top-level cell */
+typedef struct rt_subgrid {
+    rt_box b;
+    uint32_t first;    /* first of its cells in the grid's soff array */
+} rt_subgrid;
+
+/* linear index of cell c in box g (x fastest) */
+static inline size_t rt_cell_index(const rt_box *g, const int c[3])
+{
+    return ((size_t)c[2] * (size_t)g->n[1] + (size_t)c[1]) * (size_t)g->n[0] + (size_t)c[0];
+}
+
+typedef struct rt_grid {
+    rt_box b;
+    uint32_t *off;     /* ncells + 1 */
+    uint32_t *refs;
+    size_t ncells, nrefs;
+    int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
+    rt_subgrid *subs;
+    size_t nsubs;
+    uint32_t *soff;    /* sub-grid cells + 1 */
+    uint32_t *srefs;
+    size_t nsubcells, nsrefs;
+} rt_grid;
+
+struct rt_scene {
+    /* input */
+    rt_surface *surf; size_t nsurf, capsurf;
+    rt_light light[RT_MAX_LIGHTS]; int nlights;
+    rt_in_prim *in; size_t nin, capin;
+    double *in_xyz; size_t nxyz, capxyz;
+    int *in_loops; size_t nloopsin, caploopsin;
+    float *in_rgb; size_t nrgb, caprgb;
+    /* committed */
+    int committed;
+    rt_prim *prim; size_t nprim;
+    rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
+    rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
+    rt_poly *poly; size_t npoly;
+    rt_cell *cell; size_t ncell;
+    double *uv; size_t nuv;           /* 2-D polygon vertices (pairs) */
+    uint32_t *loops; size_t nloops;   /* loop vertex counts of committed polygons */
+    size_t *slab_off; size_t nslab_off; /* per polygon slab: first edge in edges */
+    double *edges; size_t nedges;     /* (qu, qv, au, av) per edge per slab */
+    int use_grid;
+    rt_grid grid;
+    double bbox[6];                   /* lo xyz, hi xyz of kept primitives */
+    double scale;                     /* max |coordinate| of the scene box (epsilons) */
+    double build_seconds;
+    size_t memory_bytes;
+};
+
+/* ---- traversal (rt_grid.c) ---- */
+
+/* per-ray precomputed data */
+typedef struct rt_rayx {
+    double o[3], d[3];
+    double tmin, tmax;
+    int kx, ky, kz;
+    double sx, sy, sz;
+    double invd[3];     /* 1/d, 0 for zero components (never used there) */
+} rt_rayx;
+
+/* per-thread traversal context: mailbox */
+typedef struct rt_ctx {
+    uint32_t *mbox;
+    uint32_t stamp;
+    size_t nprim;
+    long blocker;       /* set by rt_trace_transmit when blocked by an opaque primitive */
+} rt_ctx;
+
+int rt_ctx_init(rt_ctx *c, const rt_scene *sc);
+void rt_ctx_free(rt_ctx *c);
+
+/* 0 if the ray is unusable (non-finite, zero direction, NaN range). */
+int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax);
+
+/* nearest hit: returns internal prim index or -1; *t set. side of hit in *side. */
+long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t);
+/* transmittance along the ray: product of kt of the surfaces hit; 0 = blocked.
+ * any_hit = 1: 0 on the first hit regardless of transparency. */
+double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit);
+/* 1 if the ray hits internal primitive i within its range */
+int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
+
+/* grid build (rt_grid.c) */
+int rt_grid_build(rt_scene *sc, const rt_build_options *o);
+void rt_grid_free(rt_grid *g);
+
+/* cell array colour at point p (on the plane) */
+void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3]);
+
+double rt_now(void);
+
+#endif

@@ -1,0 +1,170 @@
+/*
+ * rt_prim.h -- ray/primitive intersection tests (inline, shared by the traversal).
+ * Private to src/rt.
+ */
+#ifndef GKS3D_RT_PRIM_H
+#define GKS3D_RT_PRIM_H
+
+#include "rt_internal.h"
+
+#include <math.h>
+
+
+/* Watertight ray/triangle test (Woop, Benthin, Wald 2013), double precision with a long double
+ * fallback for edge functions that evaluate to exactly 0. */
+static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, const rt_tri *tr, double tmin, double tmax,
+                               double *tout)
+{
+    const int kx = r->kx, ky = r->ky, kz = r->kz;
+    const double *o = r->o;
+    double A[3], B[3], C[3];
+    for (int j = 0; j < 3; j++) {
+        A[j] = tr->v[0][j] - o[j];
+        B[j] = tr->v[1][j] - o[j];
+        C[j] = tr->v[2][j] - o[j];
+    }
+    const double Ax = A[kx] - r->sx * A[kz], Ay = A[ky] - r->sy * A[kz];
+    const double Bx = B[kx] - r->sx * B[kz], By = B[ky] - r->sy * B[kz];
+    const double Cx = C[kx] - r->sx * C[kz], Cy = C[ky] - r->sy * C[kz];
+    double U = Cx * By - Cy * Bx;
+    double V = Ax * Cy - Ay * Cx;
+    double W = Bx * Ay - By * Ax;
+    if (U == 0.0 || V == 0.0 || W == 0.0) {
+        U = (double)((long double)Cx * By - (long double)Cy * Bx);
+        V = (double)((long double)Ax * Cy - (long double)Ay * Cx);
+        W = (double)((long double)Bx * Ay - (long double)By * Ax);
+    }
+    if ((U < 0.0 || V < 0.0 || W < 0.0) && (U > 0.0 || V > 0.0 || W > 0.0))
+        return 0;
+    const double det = U + V + W;
+    if (det == 0.0)
+        return 0;
+    const double T = U * (r->sz * A[kz]) + V * (r->sz * B[kz]) + W * (r->sz * C[kz]);
+    const double t = T / det;
+    if (!(t >= tmin && t <= tmax))
+        return 0;
+    *tout = t;
+    return 1;
+}
+
+/* edge function of the sheared 2-D edge p -> q: exactly negated for q -> p (watertight) */
+static inline __attribute__((always_inline)) double rt_edge(double px, double py, double qx,
+                                                            double qy)
+{
+    double e = qx * py - qy * px;
+    if (e == 0.0)
+        e = (double)((long double)qx * py - (long double)qy * px);
+    return e;
+}
+
+/* convex planar quad: the 4 edge functions of Woop et al. must agree in sign */
+static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r, const rt_quad *q,
+                                                               double tmin, double tmax,
+                                                               double *tout)
+{
+    const int kx = r->kx, ky = r->ky, kz = r->kz;
+    const double *o = r->o;
+    double x[4], y[4], A[3];
+    for (int k = 0; k < 4; k++) {
+        double az = q->v[k][kz] - o[kz];
+        x[k] = (q->v[k][kx] - o[kx]) - r->sx * az;
+        y[k] = (q->v[k][ky] - o[ky]) - r->sy * az;
+    }
+    double e0 = rt_edge(x[0], y[0], x[1], y[1]);
+    double e1 = rt_edge(x[1], y[1], x[2], y[2]);
+    double e2 = rt_edge(x[2], y[2], x[3], y[3]);
+    double e3 = rt_edge(x[3], y[3], x[0], y[0]);
+    if ((e0 < 0.0 || e1 < 0.0 || e2 < 0.0 || e3 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0 || e3 > 0.0))
+        return 0;
+    const double den = q->n[0] * r->d[0] + q->n[1] * r->d[1] + q->n[2] * r->d[2];
+    if (den == 0.0)
+        return 0;
+    for (int j = 0; j < 3; j++)
+        A[j] = q->v[0][j] - o[j];
+    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / den;
+    if (!(t >= tmin && t <= tmax))
+        return 0;
+    *tout = t;
+    return 1;
+}
+
+/* plane hit + exact-sign even-odd crossing test on the dominant-axis projection */
+static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_poly *p,
+                                double tmin, double tmax, double *tout)
+{
+    const double den = p->n[0] * r->d[0] + p->n[1] * r->d[1] + p->n[2] * r->d[2];
+    if (den == 0.0)
+        return 0;
+    const double t = (p->d - (p->n[0] * r->o[0] + p->n[1] * r->o[1] + p->n[2] * r->o[2])) / den;
+    if (!(t >= tmin && t <= tmax))
+        return 0;
+    const double pu = r->o[p->ku] + t * r->d[p->ku];
+    const double pv = r->o[p->kv] + t * r->d[p->kv];
+    /* exact rejects: no edge straddles v = pv outside [vmin,vmax]; right of umax no crossing
+       lies to the right, left of umin every straddling edge does (an even number) */
+    if (!(pv >= p->vmin && pv <= p->vmax && pu >= p->umin && pu <= p->umax))
+        return 0;
+    uint32_t s = 0;
+    if (p->nslab > 1) {
+        double f = (pv - p->vmin) * p->inv_h;
+        s = f > 0.0 ? (f >= (double)(p->nslab - 1) ? p->nslab - 1 : (uint32_t)f) : 0;
+    }
+    const size_t e0 = sc->slab_off[p->slab0 + s], e1 = sc->slab_off[p->slab0 + s + 1];
+    const double *e = sc->edges + 4 * e0;
+    int inside = 0;
+    for (size_t k = e0; k < e1; k++, e += 4) {
+        /* edge q=(e0,e1) -> a=(e2,e3) crosses the line v = pv (half-open), right of pu */
+        if ((e[3] > pv) != (e[1] > pv)) {
+            double lhs = (pu - e[2]) * (e[1] - e[3]);
+            double rhs = (e[0] - e[2]) * (pv - e[3]);
+            if (e[1] > e[3] ? lhs < rhs : lhs > rhs)
+                inside ^= 1;
+        }
+    }
+    if (!inside)
+        return 0;
+    *tout = t;
+    return 1;
+}
+
+static inline int rt_isect_cell(const rt_rayx *r, const rt_cell *c, double tmin, double tmax,
+                                double *tout)
+{
+    const double den = c->n[0] * r->d[0] + c->n[1] * r->d[1] + c->n[2] * r->d[2];
+    if (den == 0.0)
+        return 0;
+    const double t = (c->d - (c->n[0] * r->o[0] + c->n[1] * r->o[1] + c->n[2] * r->o[2])) / den;
+    if (!(t >= tmin && t <= tmax))
+        return 0;
+    const double qu = r->o[c->ku] + t * r->d[c->ku] - c->p[c->ku];
+    const double qv = r->o[c->kv] + t * r->d[c->kv] - c->p[c->kv];
+    const double s = c->inv[0][0] * qu + c->inv[0][1] * qv;
+    const double w = c->inv[1][0] * qu + c->inv[1][1] * qv;
+    if (!(s >= 0.0 && s <= 1.0 && w >= 0.0 && w <= 1.0))
+        return 0;
+    *tout = t;
+    return 1;
+}
+
+static inline __attribute__((always_inline)) int rt_isect_prim(const rt_scene *sc, const rt_rayx *r, size_t i, double tmin,
+                                double tmax, double *t)
+{
+    if (i < sc->ntri)
+        return rt_isect_tri(r, &sc->tri[i], tmin, tmax, t);
+    if (i - sc->ntri < sc->nquad)
+        return rt_isect_quad(r, &sc->quad[i - sc->ntri], tmin, tmax, t);
+    const rt_prim *p = &sc->prim[i];
+    switch (p->kind) {
+    case RT_KIND_TRI:
+        return rt_isect_tri(r, &sc->tri[p->data], tmin, tmax, t);
+    case RT_KIND_QUAD:
+        return rt_isect_quad(r, &sc->quad[p->data], tmin, tmax, t);
+    case RT_KIND_POLY:
+        return rt_isect_poly(sc, r, &sc->poly[p->data], tmin, tmax, t);
+    default:
+        return rt_isect_cell(r, &sc->cell[p->data], tmin, tmax, t);
+    }
+}
+
+
+#endif

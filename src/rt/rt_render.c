@@ -1,0 +1,533 @@
+/*
+ * rt_render.c -- shading (PHIGS PLUS reflectance equations, shadows, mirror reflection,
+ * refraction with Fresnel weighting) and the tiled multi-threaded frame loop.
+ *
+ * Secondary ray origins are offset from the hit point along the geometric normal, to the
+ * side the ray leaves on, by eps = 1e-12 * (max|hit coordinate| + t) + 1e-9 * scene extent:
+ * about 10^4 ulps of the hit point's magnitude, far above its rounding error, far below any
+ * feature size. Planar primitives cannot be re-hit from that side.
+ *
+ * Shadow rays: one per non-ambient light in the surface's light mask when the (ray-facing)
+ * normal faces the light, the surface's reflectance equation uses diffuse/specular terms and
+ * the spot cone reaches the point. A transparent surface on the way attenuates the light by
+ * its transparency coefficient kt (no refraction of shadow rays); an opaque one blocks it.
+ *
+ * Transmitting surfaces (kt > 0): Fresnel reflectance F (exact dielectric or Schlick); the
+ * reflected ray has weight ks*Cs + kt*F, the refracted ray kt*(1 - F); total internal reflection
+ * gives F = 1. Index exactly 1: straight through, F = 0. Local shading is not scaled by kt.
+ */
+
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define RT_TILE 16
+#define RT_MAX_DEPTH 64
+#define RT_MAX_THREADS 256
+
+void rt_render_options_default(rt_render_options *o)
+{
+    if (!o)
+        return;
+    memset(o, 0, sizeof *o);
+    o->samples = 1;
+    o->max_depth = 5;
+    o->fresnel = RT_FRESNEL_EXACT;
+}
+
+typedef struct rt_job {
+    const rt_scene *sc;
+    const rt_camera *cam;
+    rt_render_options o;
+    float *rgb;
+    float *corner;      /* corner mode: (w+1)*(h+1)*3 */
+    int gw, gh;         /* ray grid size (pixels or corners) */
+    int m;              /* strata per axis */
+    int tiles_x, ntiles;
+    atomic_int next;
+    atomic_int done;
+    atomic_ullong rays;
+    double t0, last_report;
+    pthread_mutex_t lock;
+} rt_job;
+
+typedef struct rt_worker {
+    rt_job *job;
+    rt_ctx ctx;
+    long shadow_cache[RT_MAX_DEPTH + 1][RT_MAX_LIGHTS]; /* last opaque blocker, -1: none */
+    rt_stats st;
+    int err;
+} rt_worker;
+
+static inline double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* clip [t0,t1] of a ray to the display volume (6 planes of cam) */
+static int rt_clip_volume(const rt_camera *cam, const double o[3], const double d[3], double *t0,
+                          double *t1)
+{
+    double eps = 1e-9 * cam->scale;
+    for (int f = 0; f < 6; f++) {
+        const double *pl = cam->plane[f];
+        double num = dot3(pl, o) + pl[3] + eps;
+        double den = dot3(pl, d);
+        if (den == 0.0) {
+            if (num < 0.0)
+                return 0;
+            continue;
+        }
+        double t = -num / den;
+        if (den > 0.0) {
+            if (t > *t0) *t0 = t;
+        } else {
+            if (t < *t1) *t1 = t;
+        }
+    }
+    return *t0 <= *t1;
+}
+
+static double rt_fresnel(int mode, double cos_i, double cos_t, double n1, double n2)
+{
+    if (mode == RT_FRESNEL_NONE)
+        return 0.0;
+    if (mode == RT_FRESNEL_SCHLICK) {
+        double r0 = (n1 - n2) / (n1 + n2);
+        r0 *= r0;
+        double c = n1 <= n2 ? cos_i : cos_t;
+        double x = 1.0 - c;
+        return r0 + (1.0 - r0) * x * x * x * x * x;
+    }
+    double rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+    double rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+static double rt_eps(const rt_scene *sc, const double p[3], double t)
+{
+    double m = fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])));
+    double ext = fmax(sc->bbox[3] - sc->bbox[0], fmax(sc->bbox[4] - sc->bbox[1], sc->bbox[5] - sc->bbox[2]));
+    return 1e-12 * (m + fabs(t)) + 1e-9 * ext + 1e-300;
+}
+
+static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
+                     int depth, double weight, int secondary, double out[3]);
+
+static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double side_eps,
+                     const double d[3], int depth, double weight, int kind, double out[3])
+{
+    double o[3];
+    for (int i = 0; i < 3; i++)
+        o[i] = p[i] + side_eps * n[i];
+    if (kind == 0)
+        w->st.reflection_rays++;
+    else
+        w->st.refraction_rays++;
+    rt_trace(w, o, d, 0.0, INFINITY, depth, weight, 1, out);
+}
+
+static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3], const double P[3],
+                            const double N[3], const double d[3], double eps, int depth,
+                            double out[3])
+{
+    const rt_scene *sc = w->job->sc;
+    const rt_job *job = w->job;
+    for (int li = 0; li < sc->nlights; li++) {
+        if (!(s->light_mask >> li & 1u))
+            continue;
+        const rt_light *l = &sc->light[li];
+        if (l->type == RT_LIGHT_AMBIENT) {
+            for (int c = 0; c < 3; c++)
+                out[c] += s->ka * Od[c] * l->color[c];
+            continue;
+        }
+        if (s->refl_eq < RT_REFL_DIFFUSE)
+            continue;
+        double L[3], dist = INFINITY;
+        if (l->type == RT_LIGHT_DIRECTIONAL) {
+            for (int c = 0; c < 3; c++)
+                L[c] = -l->direction[c];
+        } else {
+            for (int c = 0; c < 3; c++)
+                L[c] = l->position[c] - P[c];
+            dist = sqrt(dot3(L, L));
+            if (!(dist > 0.0))
+                continue;
+            for (int c = 0; c < 3; c++)
+                L[c] /= dist;
+        }
+        double NL = dot3(N, L);
+        if (!(NL > 0.0))
+            continue;
+        double att = 1.0, spot = 1.0;
+        if (l->type != RT_LIGHT_DIRECTIONAL)
+            att = 1.0 / (l->c1 + l->c2 * dist);
+        if (l->type == RT_LIGHT_SPOT) {
+            double ca = -dot3(L, l->direction);
+            if (ca < cos(l->spread) || !(ca > 0.0))
+                continue;
+            spot = pow(ca, l->concentration);
+        }
+        /* shadow ray */
+        double o[3];
+        for (int c = 0; c < 3; c++)
+            o[c] = P[c] + eps * N[c];
+        double t0 = 0.0, t1 = l->type == RT_LIGHT_DIRECTIONAL ? INFINITY : dist * (1.0 - 1e-12) - eps;
+        w->st.shadow_rays++;
+        double T = 0.0;
+        if (job->o.clip_secondary && !rt_clip_volume(job->cam, o, L, &t0, &t1)) {
+            T = 1.0;
+        } else if (t1 <= t0) {
+            T = 1.0;
+        } else {
+            rt_rayx r;
+            long *cache = &w->shadow_cache[depth][li];
+            if (!rt_rayx_setup(&r, o, L, t0, t1)) {
+                T = 1.0;
+            } else if (*cache >= 0 && rt_hits_prim(sc, &r, *cache)) {
+                T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
+            } else {
+                T = rt_trace_transmit(sc, &w->ctx, &r, 0);
+                *cache = T == 0.0 ? w->ctx.blocker : -1;
+            }
+        }
+        if (T == 0.0)
+            continue;
+        double f = T * att * spot;
+        double spec = 0.0;
+        if (s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0) {
+            double R[3];
+            for (int c = 0; c < 3; c++)
+                R[c] = 2.0 * NL * N[c] - L[c];
+            double RE = -dot3(R, d);
+            if (RE > 0.0)
+                spec = s->ks * pow(RE, s->spec_exp);
+        }
+        for (int c = 0; c < 3; c++)
+            out[c] += f * l->color[c] * (s->kd * Od[c] * NL + spec * s->specular[c]);
+    }
+}
+
+static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
+                     int depth, double weight, int secondary, double out[3])
+{
+    const rt_job *job = w->job;
+    const rt_scene *sc = job->sc;
+    for (int c = 0; c < 3; c++)
+        out[c] = job->o.background[c];
+    if (secondary && job->o.clip_secondary && !rt_clip_volume(job->cam, o, d, &tmin, &tmax))
+        return;
+    rt_rayx r;
+    if (!rt_rayx_setup(&r, o, d, tmin, tmax))
+        return;
+    double t;
+    long i = rt_trace_nearest(sc, &w->ctx, &r, &t);
+    if (depth == 1)
+        w->st.eye_hits += i >= 0;
+    if (i < 0)
+        return;
+    const rt_prim *p = &sc->prim[i];
+    double P[3], N[3];
+    for (int c = 0; c < 3; c++)
+        P[c] = o[c] + t * d[c];
+    double dn = dot3(p->ng, d);
+    int side = dn > 0.0;
+    for (int c = 0; c < 3; c++)
+        N[c] = side ? -p->ng[c] : p->ng[c];
+    const rt_surface *s = &sc->surf[p->surf[side]];
+    double Od[3];
+    if (p->kind == RT_KIND_CELL)
+        rt_cell_color(sc, &sc->cell[p->data], P, Od);
+    else
+        memcpy(Od, s->diffuse, sizeof Od);
+    double eps = rt_eps(sc, P, t);
+    if (s->refl_eq == RT_REFL_NONE) {
+        memcpy(out, Od, sizeof Od);
+    } else {
+        out[0] = out[1] = out[2] = 0.0;
+        rt_shade_lights(w, s, Od, P, N, d, eps, depth, out);
+    }
+    if (depth >= job->o.max_depth)
+        return;
+    double wr[3] = {0, 0, 0}, wt = 0.0;
+    if (s->refl_eq == RT_REFL_SPECULAR)
+        for (int c = 0; c < 3; c++)
+            wr[c] = s->ks * s->specular[c];
+    double cos_i = -dot3(N, d);
+    if (cos_i > 1.0)
+        cos_i = 1.0;
+    double T[3] = {0, 0, 0};
+    int refract = 0;
+    if (s->transparency > 0.0) {
+        double n1 = side ? s->refr_index : 1.0, n2 = side ? 1.0 : s->refr_index;
+        double F;
+        if (n1 == n2) {
+            F = 0.0;
+            memcpy(T, d, sizeof T);
+            refract = 1;
+        } else {
+            double eta = n1 / n2;
+            double sin2t = eta * eta * (1.0 - cos_i * cos_i);
+            if (sin2t >= 1.0) {
+                F = 1.0; /* total internal reflection */
+            } else {
+                double cos_t = sqrt(1.0 - sin2t);
+                F = rt_fresnel(job->o.fresnel, cos_i, cos_t, n1, n2);
+                for (int c = 0; c < 3; c++)
+                    T[c] = eta * d[c] + (eta * cos_i - cos_t) * N[c];
+                double l = sqrt(dot3(T, T));
+                for (int c = 0; c < 3; c++)
+                    T[c] /= l;
+                refract = 1;
+            }
+        }
+        for (int c = 0; c < 3; c++)
+            wr[c] += s->transparency * F;
+        wt = refract ? s->transparency * (1.0 - F) : 0.0;
+    }
+    double wrm = fmax(wr[0], fmax(wr[1], wr[2]));
+    if (wrm > 0.0 && !(job->o.cutoff > 0.0 && weight * wrm < job->o.cutoff)) {
+        double R[3], col[3];
+        for (int c = 0; c < 3; c++)
+            R[c] = d[c] + 2.0 * cos_i * N[c];
+        double l = sqrt(dot3(R, R));
+        for (int c = 0; c < 3; c++)
+            R[c] /= l;
+        rt_spawn(w, P, N, eps, R, depth + 1, weight * wrm, 0, col);
+        for (int c = 0; c < 3; c++)
+            out[c] += wr[c] * col[c];
+    }
+    if (wt > 0.0 && !(job->o.cutoff > 0.0 && weight * wt < job->o.cutoff)) {
+        double col[3];
+        rt_spawn(w, P, N, -eps, T, depth + 1, weight * wt, 1, col);
+        for (int c = 0; c < 3; c++)
+            out[c] += wt * col[c];
+    }
+}
+
+static uint64_t rt_mix(uint64_t x)
+{
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+static void rt_eye(rt_worker *w, double px, double py, double out[3])
+{
+    const rt_job *job = w->job;
+    rt_ray ray;
+    w->st.eye_rays++;
+    if (rt_camera_ray(job->cam, px, py, &ray) != RT_OK) {
+        for (int c = 0; c < 3; c++)
+            out[c] = job->o.background[c];
+        return;
+    }
+    rt_trace(w, ray.org, ray.dir, ray.tmin, ray.tmax, 1, 1.0, 0, out);
+}
+
+static void rt_tile(rt_worker *w, int tile)
+{
+    rt_job *job = w->job;
+    int tx = tile % job->tiles_x, ty = tile / job->tiles_x;
+    int x0 = tx * RT_TILE, y0 = ty * RT_TILE;
+    int x1 = x0 + RT_TILE < job->gw ? x0 + RT_TILE : job->gw;
+    int y1 = y0 + RT_TILE < job->gh ? y0 + RT_TILE : job->gh;
+    int m = job->m;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            double acc[3] = {0, 0, 0}, col[3];
+            if (job->o.corner_rays) {
+                rt_eye(w, x, y, col);
+                float *dst = job->corner + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
+                for (int c = 0; c < 3; c++)
+                    dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
+                continue;
+            }
+            uint64_t seed = rt_mix(((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
+            for (int b = 0; b < m; b++)
+                for (int a = 0; a < m; a++) {
+                    double ja = 0.5, jb = 0.5;
+                    if (job->o.jitter) {
+                        uint64_t h = rt_mix(seed ^ (uint64_t)(b * m + a));
+                        ja = (double)(h >> 11) * 0x1.0p-53;
+                        jb = (double)(rt_mix(h) >> 11) * 0x1.0p-53;
+                    }
+                    rt_eye(w, x + (a + ja) / m, y + (b + jb) / m, col);
+                    for (int c = 0; c < 3; c++)
+                        acc[c] += col[c];
+                }
+            float *dst = job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
+            for (int c = 0; c < 3; c++) {
+                double v = acc[c] / (double)(m * m);
+                dst[c] = isfinite(v) ? (float)v : 0.0f;
+            }
+        }
+}
+
+static void rt_progress(rt_job *job, uint64_t rays)
+{
+    int done = atomic_fetch_add(&job->done, 1) + 1;
+    atomic_fetch_add(&job->rays, (unsigned long long)rays);
+    if (!job->o.progress && !job->o.progress_fn)
+        return;
+    pthread_mutex_lock(&job->lock);
+    if (job->o.progress_fn)
+        job->o.progress_fn(job->o.progress_user, done, job->ntiles);
+    double now = rt_now();
+    if (job->o.progress && (now - job->last_report > 0.5 || done == job->ntiles)) {
+        job->last_report = now;
+        double el = now - job->t0;
+        double left = done > 0 ? el * (job->ntiles - done) / done : 0.0;
+        fprintf(stderr, "rt: tiles %d/%d, %.2f Mrays/s, %.1f s left%s", done, job->ntiles,
+                el > 0.0 ? (double)atomic_load(&job->rays) / el * 1e-6 : 0.0, left,
+                done == job->ntiles ? "\n" : "\r");
+    }
+    pthread_mutex_unlock(&job->lock);
+}
+
+static void *rt_work(void *arg)
+{
+    rt_worker *w = arg;
+    rt_job *job = w->job;
+    for (;;) {
+        int t = atomic_fetch_add(&job->next, 1);
+        if (t >= job->ntiles)
+            break;
+        uint64_t before = w->st.eye_rays + w->st.shadow_rays + w->st.reflection_rays +
+                          w->st.refraction_rays;
+        rt_tile(w, t);
+        rt_progress(job, w->st.eye_rays + w->st.shadow_rays + w->st.reflection_rays +
+                             w->st.refraction_rays - before);
+    }
+    return NULL;
+}
+
+int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+              float *rgb, rt_stats *stats)
+{
+    if (!sc || !cam || !rgb)
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    rt_job job;
+    memset(&job, 0, sizeof job);
+    if (opts)
+        job.o = *opts;
+    else
+        rt_render_options_default(&job.o);
+    const rt_render_options *o = &job.o;
+    if (o->samples < 1 || o->samples > 4096 || o->max_depth < 1 || o->max_depth > RT_MAX_DEPTH ||
+        !isfinite(o->cutoff) || o->cutoff < 0.0 || o->threads < 0 || o->fresnel < 0 ||
+        o->fresnel > RT_FRESNEL_NONE)
+        return RT_ERR_ARG;
+    int m = 1;
+    while (m * m < o->samples)
+        m++;
+    if (m * m != o->samples)
+        return RT_ERR_ARG;
+    for (int c = 0; c < 3; c++)
+        if (!isfinite(o->background[c]))
+            return RT_ERR_ARG;
+    if (cam->width < 1 || cam->height < 1 || cam->width > 65536 || cam->height > 65536)
+        return RT_ERR_ARG;
+    job.sc = sc;
+    job.cam = cam;
+    job.rgb = rgb;
+    job.m = m;
+    job.gw = cam->width + (o->corner_rays ? 1 : 0);
+    job.gh = cam->height + (o->corner_rays ? 1 : 0);
+    if (o->corner_rays) {
+        job.corner = rt_alloc_array((size_t)job.gw * (size_t)job.gh, 3 * sizeof(float));
+        if (!job.corner)
+            return RT_ERR_NOMEM;
+    }
+    job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
+    job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
+    atomic_init(&job.next, 0);
+    atomic_init(&job.done, 0);
+    atomic_init(&job.rays, 0);
+    int nt = o->threads;
+    if (nt == 0) {
+        long n = sysconf(_SC_NPROCESSORS_ONLN);
+        nt = n > 0 ? (int)n : 1;
+    }
+    if (nt > RT_MAX_THREADS)
+        nt = RT_MAX_THREADS;
+    if (nt > job.ntiles)
+        nt = job.ntiles;
+    rt_worker *w = rt_calloc_array((size_t)nt, sizeof *w);
+    pthread_t *th = rt_calloc_array((size_t)nt, sizeof *th);
+    int rc = RT_OK;
+    if (!w || !th)
+        rc = RT_ERR_NOMEM;
+    for (int k = 0; k < nt && rc == RT_OK; k++) {
+        w[k].job = &job;
+        for (int a = 0; a <= RT_MAX_DEPTH; a++)
+            for (int b = 0; b < RT_MAX_LIGHTS; b++)
+                w[k].shadow_cache[a][b] = -1;
+        if (rt_ctx_init(&w[k].ctx, sc) != RT_OK)
+            rc = RT_ERR_NOMEM;
+    }
+    if (rc != RT_OK) {
+        for (int k = 0; w && k < nt; k++)
+            rt_ctx_free(&w[k].ctx);
+        free(w);
+        free(th);
+        free(job.corner);
+        return rc;
+    }
+    pthread_mutex_init(&job.lock, NULL);
+    job.t0 = rt_now();
+    int started = 1;
+    for (int k = 1; k < nt; k++) {
+        if (pthread_create(&th[k], NULL, rt_work, &w[k]) != 0)
+            break; /* fewer threads: same picture */
+        started++;
+    }
+    rt_work(&w[0]);
+    for (int k = 1; k < started; k++)
+        pthread_join(th[k], NULL);
+    pthread_mutex_destroy(&job.lock);
+    if (o->corner_rays) {
+        size_t gw = (size_t)job.gw;
+        for (int y = 0; y < cam->height; y++)
+            for (int x = 0; x < cam->width; x++)
+                for (int c = 0; c < 3; c++) {
+                    const float *k0 = job.corner + 3 * ((size_t)y * gw + (size_t)x) + c;
+                    double v = 0.25 * ((double)k0[0] + k0[3] + k0[3 * gw] + k0[3 * gw + 3]);
+                    rgb[3 * ((size_t)y * (size_t)cam->width + (size_t)x) + (size_t)c] =
+                        isfinite(v) ? (float)v : 0.0f;
+                }
+    }
+    rt_stats st;
+    memset(&st, 0, sizeof st);
+    for (int k = 0; k < nt; k++) {
+        st.eye_rays += w[k].st.eye_rays;
+        st.eye_hits += w[k].st.eye_hits;
+        st.shadow_rays += w[k].st.shadow_rays;
+        st.reflection_rays += w[k].st.reflection_rays;
+        st.refraction_rays += w[k].st.refraction_rays;
+        rt_ctx_free(&w[k].ctx);
+    }
+    st.render_seconds = rt_now() - job.t0;
+    st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
+    st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;
+    st.prims = sc->nprim;
+    st.build_seconds = sc->build_seconds;
+    st.memory_bytes = sc->memory_bytes;
+    if (stats)
+        *stats = st;
+    free(w);
+    free(th);
+    free(job.corner);
+    return RT_OK;
+}

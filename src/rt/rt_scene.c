@@ -1,0 +1,664 @@
+/*
+ * rt_scene.c -- scene building: surfaces, lights, polygons, cell arrays, commit
+ * (degenerate primitives dropped, planes and projections precomputed, grid built).
+ */
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int fin3(const double v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+/* geometry coordinates beyond this magnitude are dropped at commit (no overflow in tests) */
+#define RT_COORD_MAX 1e100
+
+static int sane3(const double v[3])
+{
+    return fin3(v) && fabs(v[0]) <= RT_COORD_MAX && fabs(v[1]) <= RT_COORD_MAX &&
+           fabs(v[2]) <= RT_COORD_MAX;
+}
+
+void rt_surface_default(rt_surface *s)
+{
+    if (!s)
+        return;
+    memset(s, 0, sizeof *s);
+    s->refl_eq = RT_REFL_DIFFUSE;
+    s->ka = s->kd = 1.0;
+    for (int i = 0; i < 3; i++)
+        s->diffuse[i] = s->specular[i] = 1.0;
+    s->spec_exp = 1.0;
+    s->refr_index = 1.0;
+    s->light_mask = ~(uint64_t)0;
+}
+
+rt_scene *rt_scene_new(void)
+{
+    rt_scene *sc = rt_calloc_array(1, sizeof *sc);
+    return sc;
+}
+
+static void rt_scene_uncommit(rt_scene *sc)
+{
+    free(sc->prim); sc->prim = NULL; sc->nprim = 0;
+    free(sc->tri); sc->tri = NULL; sc->ntri = 0;
+    free(sc->quad); sc->quad = NULL; sc->nquad = 0;
+    free(sc->poly); sc->poly = NULL; sc->npoly = 0;
+    free(sc->cell); sc->cell = NULL; sc->ncell = 0;
+    free(sc->uv); sc->uv = NULL; sc->nuv = 0;
+    free(sc->loops); sc->loops = NULL; sc->nloops = 0;
+    free(sc->slab_off); sc->slab_off = NULL; sc->nslab_off = 0;
+    free(sc->edges); sc->edges = NULL; sc->nedges = 0;
+    rt_grid_free(&sc->grid);
+    sc->use_grid = 0;
+    sc->committed = 0;
+}
+
+void rt_scene_free(rt_scene *sc)
+{
+    if (!sc)
+        return;
+    rt_scene_uncommit(sc);
+    free(sc->surf);
+    free(sc->in);
+    free(sc->in_xyz);
+    free(sc->in_loops);
+    free(sc->in_rgb);
+    free(sc);
+}
+
+int rt_scene_add_surface(rt_scene *sc, const rt_surface *s)
+{
+    if (!sc || !s)
+        return RT_ERR_ARG;
+    if (s->refl_eq < RT_REFL_NONE || s->refl_eq > RT_REFL_SPECULAR)
+        return RT_ERR_ARG;
+    const double k[] = {s->ka, s->kd, s->ks, s->spec_exp, s->diffuse[0], s->diffuse[1],
+                        s->diffuse[2], s->specular[0], s->specular[1], s->specular[2]};
+    for (size_t i = 0; i < sizeof k / sizeof k[0]; i++)
+        if (!isfinite(k[i]) || k[i] < 0.0)
+            return RT_ERR_ARG;
+    if (!isfinite(s->transparency) || s->transparency < 0.0 || s->transparency > 1.0)
+        return RT_ERR_ARG;
+    if (!isfinite(s->refr_index) || s->refr_index <= 0.0)
+        return RT_ERR_ARG;
+    if (sc->nsurf >= INT_MAX)
+        return RT_ERR_LIMIT;
+    if (!rt_grow((void **)&sc->surf, &sc->capsurf, sc->nsurf + 1, sizeof *sc->surf))
+        return RT_ERR_NOMEM;
+    sc->surf[sc->nsurf] = *s;
+    sc->committed = 0;
+    return (int)sc->nsurf++;
+}
+
+int rt_scene_add_light(rt_scene *sc, const rt_light *l)
+{
+    if (!sc || !l)
+        return RT_ERR_ARG;
+    if (l->type < RT_LIGHT_AMBIENT || l->type > RT_LIGHT_SPOT)
+        return RT_ERR_ARG;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(l->color[i]) || l->color[i] < 0.0)
+            return RT_ERR_ARG;
+    if (l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT) {
+        if (!fin3(l->direction))
+            return RT_ERR_ARG;
+        double n = fabs(l->direction[0]) + fabs(l->direction[1]) + fabs(l->direction[2]);
+        if (!(n > 0.0))
+            return RT_ERR_ARG;
+    }
+    if (l->type == RT_LIGHT_POSITIONAL || l->type == RT_LIGHT_SPOT) {
+        if (!fin3(l->position))
+            return RT_ERR_ARG;
+        if (!isfinite(l->c1) || !isfinite(l->c2) || l->c1 < 0.0 || l->c2 < 0.0 ||
+            !(l->c1 + l->c2 > 0.0))
+            return RT_ERR_ARG;
+    }
+    if (l->type == RT_LIGHT_SPOT) {
+        if (!isfinite(l->concentration) || l->concentration < 0.0)
+            return RT_ERR_ARG;
+        if (!isfinite(l->spread) || l->spread <= 0.0 || l->spread > 3.14159265358979323846 + 1e-12)
+            return RT_ERR_ARG;
+    }
+    if (sc->nlights >= RT_MAX_LIGHTS)
+        return RT_ERR_LIMIT;
+    rt_light *d = &sc->light[sc->nlights];
+    *d = *l;
+    if (l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT) {
+        double n = sqrt(l->direction[0] * l->direction[0] + l->direction[1] * l->direction[1] +
+                        l->direction[2] * l->direction[2]);
+        if (!(n > 0.0) || !isfinite(n)) { /* tiny or huge components: scale first */
+            double m = fmax(fabs(l->direction[0]), fmax(fabs(l->direction[1]), fabs(l->direction[2])));
+            double t[3] = {l->direction[0] / m, l->direction[1] / m, l->direction[2] / m};
+            n = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+            for (int i = 0; i < 3; i++)
+                d->direction[i] = t[i] / n;
+        } else {
+            for (int i = 0; i < 3; i++)
+                d->direction[i] = l->direction[i] / n;
+        }
+    }
+    sc->committed = 0;
+    return sc->nlights++;
+}
+
+static int rt_surface_ok(const rt_scene *sc, int s)
+{
+    return s >= 0 && (size_t)s < sc->nsurf;
+}
+
+int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
+                         int front_surface, int back_surface)
+{
+    if (!sc || nloops <= 0 || !loop_counts || !xyz)
+        return RT_ERR_ARG;
+    if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
+        return RT_ERR_ARG;
+    size_t nv = 0;
+    for (int k = 0; k < nloops; k++) {
+        if (loop_counts[k] <= 0)
+            return RT_ERR_ARG;
+        nv += (size_t)loop_counts[k];
+        if (nv > (size_t)UINT32_MAX / 4)
+            return RT_ERR_LIMIT;
+    }
+    if (sc->nin >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
+        return RT_ERR_LIMIT;
+    if (!rt_grow((void **)&sc->in, &sc->capin, sc->nin + 1, sizeof *sc->in) ||
+        !rt_grow((void **)&sc->in_xyz, &sc->capxyz, sc->nxyz + 3 * nv, sizeof(double)) ||
+        !rt_grow((void **)&sc->in_loops, &sc->caploopsin, sc->nloopsin + (size_t)nloops,
+                 sizeof(int)))
+        return RT_ERR_NOMEM;
+    rt_in_prim *p = &sc->in[sc->nin];
+    p->kind = RT_KIND_POLY;
+    p->front = front_surface;
+    p->back = back_surface;
+    p->xyz0 = sc->nxyz;
+    p->loop0 = sc->nloopsin;
+    p->nloops = nloops;
+    p->nx = p->ny = 0;
+    p->rgb0 = 0;
+    memcpy(sc->in_xyz + sc->nxyz, xyz, 3 * nv * sizeof(double));
+    memcpy(sc->in_loops + sc->nloopsin, loop_counts, (size_t)nloops * sizeof(int));
+    sc->nxyz += 3 * nv;
+    sc->nloopsin += (size_t)nloops;
+    sc->committed = 0;
+    return (int)sc->nin++;
+}
+
+int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
+                            int nx, int ny, const float *rgb, int front_surface, int back_surface)
+{
+    if (!sc || !P || !Q || !R || !rgb || nx <= 0 || ny <= 0)
+        return RT_ERR_ARG;
+    if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
+        return RT_ERR_ARG;
+    size_t ncol = (size_t)nx * (size_t)ny;
+    if (ncol > ((size_t)1 << 31) / 3)
+        return RT_ERR_LIMIT;
+    for (size_t i = 0; i < 3 * ncol; i++)
+        if (!isfinite(rgb[i]))
+            return RT_ERR_ARG;
+    if (sc->nin >= INT_MAX)
+        return RT_ERR_LIMIT;
+    if (!rt_grow((void **)&sc->in, &sc->capin, sc->nin + 1, sizeof *sc->in) ||
+        !rt_grow((void **)&sc->in_xyz, &sc->capxyz, sc->nxyz + 9, sizeof(double)) ||
+        !rt_grow((void **)&sc->in_rgb, &sc->caprgb, sc->nrgb + 3 * ncol, sizeof(float)))
+        return RT_ERR_NOMEM;
+    rt_in_prim *p = &sc->in[sc->nin];
+    p->kind = RT_KIND_CELL;
+    p->front = front_surface;
+    p->back = back_surface;
+    p->xyz0 = sc->nxyz;
+    p->loop0 = 0;
+    p->nloops = 0;
+    p->nx = nx;
+    p->ny = ny;
+    p->rgb0 = sc->nrgb;
+    memcpy(sc->in_xyz + sc->nxyz, P, 3 * sizeof(double));
+    memcpy(sc->in_xyz + sc->nxyz + 3, Q, 3 * sizeof(double));
+    memcpy(sc->in_xyz + sc->nxyz + 6, R, 3 * sizeof(double));
+    memcpy(sc->in_rgb + sc->nrgb, rgb, 3 * ncol * sizeof(float));
+    sc->nxyz += 9;
+    sc->nrgb += 3 * ncol;
+    sc->committed = 0;
+    return (int)sc->nin++;
+}
+
+/* ---- commit ---- */
+
+static int rt_dominant_axis(const double n[3])
+{
+    double ax = fabs(n[0]), ay = fabs(n[1]), az = fabs(n[2]);
+    if (ax >= ay && ax >= az)
+        return 0;
+    return ay >= az ? 1 : 2;
+}
+
+static double rt_len3(const double v[3])
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (m == 0.0 || !isfinite(m))
+        return m;
+    double a = v[0] / m, b = v[1] / m, c = v[2] / m;
+    return m * sqrt(a * a + b * b + c * c);
+}
+
+static void rt_cross(const double a[3], const double b[3], double r[3])
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* plane normal of a polygon (all loops): Newell, or for self-cancelling outlines (bow tie)
+ * the largest fan cross product. 0 if degenerate. */
+static int rt_poly_normal(const double *v, size_t nv, const int *counts, int nloops,
+                          const double c[3], double ext, double n[3])
+{
+    n[0] = n[1] = n[2] = 0.0;
+    size_t base = 0;
+    for (int k = 0; k < nloops; k++) {
+        size_t m = (size_t)counts[k];
+        for (size_t i = 0; i < m; i++) {
+            const double *a = v + 3 * (base + i), *b = v + 3 * (base + (i + 1) % m);
+            double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
+            double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
+            n[0] += (ay - by) * (az + bz);
+            n[1] += (az - bz) * (ax + bx);
+            n[2] += (ax - bx) * (ay + by);
+        }
+        base += m;
+    }
+    double tol = 1e-12 * ext * ext;
+    double len = rt_len3(n);
+    if (len > tol && isfinite(len)) {
+        for (int i = 0; i < 3; i++)
+            n[i] /= len;
+        return 1;
+    }
+    /* fallback: largest cross product (v_i - v_0) x (v_{i+1} - v_0) */
+    double best = 0.0, bn[3] = {0, 0, 0};
+    for (size_t i = 1; i + 1 < nv; i++) {
+        double e1[3], e2[3], x[3];
+        for (int j = 0; j < 3; j++) {
+            e1[j] = v[3 * i + j] - v[j];
+            e2[j] = v[3 * (i + 1) + j] - v[j];
+        }
+        rt_cross(e1, e2, x);
+        double l = rt_len3(x);
+        if (l > best) {
+            best = l;
+            memcpy(bn, x, sizeof bn);
+        }
+    }
+    if (!(best > tol) || !isfinite(best))
+        return 0;
+    for (int i = 0; i < 3; i++)
+        n[i] = bn[i] / best;
+    return 1;
+}
+
+/* planar (within 1e-12 of the size) and strictly convex 4-gon */
+static int rt_quad_convex(const double *v, const double n[3], const double c[3], double ext)
+{
+    for (int i = 0; i < 4; i++) {
+        double d = n[0] * (v[3 * i] - c[0]) + n[1] * (v[3 * i + 1] - c[1]) + n[2] * (v[3 * i + 2] - c[2]);
+        if (!(fabs(d) <= 1e-12 * ext))
+            return 0;
+    }
+    for (int i = 0; i < 4; i++) {
+        const double *a = v + 3 * i, *b = v + 3 * ((i + 1) & 3), *e = v + 3 * ((i + 2) & 3);
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        double w[3] = {e[0] - b[0], e[1] - b[1], e[2] - b[2]};
+        double x[3];
+        rt_cross(u, w, x);
+        if (!(x[0] * n[0] + x[1] * n[1] + x[2] * n[2] > 1e-9 * ext * ext))
+            return 0;
+    }
+    return 1;
+}
+
+static void rt_bbox_add(double bb[6], const double p[3])
+{
+    for (int i = 0; i < 3; i++) {
+        if (p[i] < bb[i]) bb[i] = p[i];
+        if (p[i] > bb[3 + i]) bb[3 + i] = p[i];
+    }
+}
+
+static int rt_commit_prims(rt_scene *sc)
+{
+    size_t n = sc->nin;
+    sc->prim = rt_alloc_array(n, sizeof *sc->prim);
+    sc->tri = rt_alloc_array(n, sizeof *sc->tri);
+    sc->quad = rt_alloc_array(n, sizeof *sc->quad);
+    sc->poly = rt_alloc_array(n, sizeof *sc->poly);
+    sc->cell = rt_alloc_array(n, sizeof *sc->cell);
+    sc->uv = rt_alloc_array(sc->nxyz / 3 * 2, sizeof(double));
+    sc->loops = rt_alloc_array(sc->nloopsin, sizeof(uint32_t));
+    if (!sc->prim || !sc->tri || !sc->quad || !sc->poly || !sc->cell || !sc->uv || !sc->loops)
+        return RT_ERR_NOMEM;
+    double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (size_t id = 0; id < n; id++) {
+        const rt_in_prim *in = &sc->in[id];
+        const double *v = sc->in_xyz + in->xyz0;
+        size_t nv = 0;
+        if (in->kind == RT_KIND_CELL)
+            nv = 3;
+        else
+            for (int k = 0; k < in->nloops; k++)
+                nv += (size_t)sc->in_loops[in->loop0 + (size_t)k];
+        int ok = 1;
+        double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+        double c[3] = {0, 0, 0};
+        for (size_t i = 0; i < nv && ok; i++) {
+            if (!sane3(v + 3 * i)) {
+                ok = 0;
+                break;
+            }
+            rt_bbox_add(pb, v + 3 * i);
+        }
+        if (!ok)
+            continue;
+        double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
+        if (!(ext > 0.0) || !isfinite(ext))
+            continue;
+        /* centroid relative to the box corner (robust for large offsets) */
+        for (size_t i = 0; i < nv; i++)
+            for (int j = 0; j < 3; j++)
+                c[j] += (v[3 * i + j] - pb[j]) / (double)nv;
+        for (int j = 0; j < 3; j++)
+            c[j] += pb[j];
+        rt_prim *pr = &sc->prim[sc->nprim];
+        pr->id = (int)id;
+        pr->surf[0] = in->front;
+        pr->surf[1] = in->back;
+        pr->opaque = sc->surf[in->front].transparency == 0.0 && sc->surf[in->back].transparency == 0.0;
+        if (in->kind == RT_KIND_CELL) {
+            const double *P = v, *Q = v + 3, *R = v + 6;
+            rt_cell *ce = &sc->cell[sc->ncell];
+            double nn[3];
+            for (int j = 0; j < 3; j++) {
+                ce->p[j] = P[j];
+                ce->a[j] = R[j] - P[j];
+                ce->b[j] = Q[j] - R[j];
+            }
+            rt_cross(ce->a, ce->b, nn);
+            double l = rt_len3(nn);
+            if (!(l > 1e-12 * rt_len3(ce->a) * rt_len3(ce->b)) || !isfinite(l))
+                continue;
+            for (int j = 0; j < 3; j++)
+                ce->n[j] = nn[j] / l;
+            ce->d = ce->n[0] * P[0] + ce->n[1] * P[1] + ce->n[2] * P[2];
+            int k = rt_dominant_axis(ce->n);
+            ce->ku = (k + 1) % 3;
+            ce->kv = (k + 2) % 3;
+            double m00 = ce->a[ce->ku], m01 = ce->b[ce->ku], m10 = ce->a[ce->kv], m11 = ce->b[ce->kv];
+            double det = m00 * m11 - m01 * m10;
+            if (!(fabs(det) > 0.0) || !isfinite(1.0 / det))
+                continue;
+            ce->inv[0][0] = m11 / det;
+            ce->inv[0][1] = -m01 / det;
+            ce->inv[1][0] = -m10 / det;
+            ce->inv[1][1] = m00 / det;
+            ce->nx = in->nx;
+            ce->ny = in->ny;
+            ce->rgb0 = in->rgb0;
+            pr->kind = RT_KIND_CELL;
+            pr->data = (uint32_t)sc->ncell++;
+            memcpy(pr->ng, ce->n, sizeof pr->ng);
+            double S[3];
+            for (int j = 0; j < 3; j++)
+                S[j] = P[j] + Q[j] - R[j];
+            rt_bbox_add(bb, P); rt_bbox_add(bb, Q); rt_bbox_add(bb, R); rt_bbox_add(bb, S);
+            sc->nprim++;
+            continue;
+        }
+        const int *counts = sc->in_loops + in->loop0;
+        double nrm[3];
+        if (!rt_poly_normal(v, nv, counts, in->nloops, c, ext, nrm))
+            continue;
+        memcpy(pr->ng, nrm, sizeof pr->ng);
+        if (in->nloops == 1 && nv == 4 && rt_quad_convex(v, nrm, c, ext)) {
+            rt_quad *q = &sc->quad[sc->nquad];
+            memcpy(q->v, v, 12 * sizeof(double));
+            memcpy(q->n, nrm, sizeof q->n);
+            pr->kind = RT_KIND_QUAD;
+            pr->data = (uint32_t)sc->nquad++;
+            for (int i = 0; i < 4; i++)
+                rt_bbox_add(bb, v + 3 * i);
+            sc->nprim++;
+            continue;
+        }
+        if (in->nloops == 1 && nv == 3) {
+            rt_tri *t = &sc->tri[sc->ntri];
+            memcpy(t->v, v, 9 * sizeof(double));
+            pr->kind = RT_KIND_TRI;
+            pr->data = (uint32_t)sc->ntri++;
+            for (int i = 0; i < 3; i++)
+                rt_bbox_add(bb, v + 3 * i);
+            sc->nprim++;
+            continue;
+        }
+        rt_poly *po = &sc->poly[sc->npoly];
+        memcpy(po->n, nrm, sizeof po->n);
+        po->d = nrm[0] * c[0] + nrm[1] * c[1] + nrm[2] * c[2];
+        int k = rt_dominant_axis(nrm);
+        po->ku = (k + 1) % 3;
+        po->kv = (k + 2) % 3;
+        po->uv0 = (uint32_t)sc->nuv;
+        po->loop0 = (uint32_t)sc->nloops;
+        po->nloops = (uint32_t)in->nloops;
+        for (int q = 0; q < in->nloops; q++)
+            sc->loops[sc->nloops++] = (uint32_t)counts[q];
+        for (size_t i = 0; i < nv; i++) {
+            double pu = v[3 * i + po->ku], pv = v[3 * i + po->kv];
+            sc->uv[2 * sc->nuv] = pu;
+            sc->uv[2 * sc->nuv + 1] = pv;
+            sc->nuv++;
+            /* vertex projected onto the plane along axis k: the surface actually traced */
+            double pp[3];
+            pp[po->ku] = pu;
+            pp[po->kv] = pv;
+            pp[k] = (po->d - nrm[po->ku] * pu - nrm[po->kv] * pv) / nrm[k];
+            if (fin3(pp))
+                rt_bbox_add(bb, pp);
+        }
+        pr->kind = RT_KIND_POLY;
+        pr->data = (uint32_t)sc->npoly++;
+        sc->nprim++;
+    }
+    /* stable partition: triangles, then quads, then the rest, so that the prim index alone
+       selects the fast paths (i < ntri: tri[i]; i < ntri + nquad: quad[i - ntri]) */
+    rt_prim *tmp = rt_alloc_array(sc->nprim, sizeof *tmp);
+    if (!tmp)
+        return RT_ERR_NOMEM;
+    size_t a = 0, b = sc->ntri, c2 = sc->ntri + sc->nquad;
+    for (size_t i = 0; i < sc->nprim; i++) {
+        if (sc->prim[i].kind == RT_KIND_TRI)
+            tmp[a++] = sc->prim[i];
+        else if (sc->prim[i].kind == RT_KIND_QUAD)
+            tmp[b++] = sc->prim[i];
+        else
+            tmp[c2++] = sc->prim[i];
+    }
+    free(sc->prim);
+    sc->prim = tmp;
+    if (sc->nprim == 0)
+        for (int i = 0; i < 6; i++)
+            bb[i] = 0.0;
+    memcpy(sc->bbox, bb, sizeof bb);
+    double s = 0.0;
+    for (int i = 0; i < 6; i++)
+        s = fmax(s, fabs(bb[i]));
+    sc->scale = s;
+    return RT_OK;
+}
+
+static uint32_t rt_slab_of(const rt_poly *p, double v)
+{
+    double f = (v - p->vmin) * p->inv_h;
+    if (!(f > 0.0))
+        return 0;
+    if (f >= (double)(p->nslab - 1))
+        return p->nslab - 1;
+    return (uint32_t)f;
+}
+
+/* number of (slab, edge) entries of polygon p with its current slab count */
+static size_t rt_slab_entries(const rt_scene *sc, const rt_poly *p)
+{
+    const double *lu = sc->uv + 2 * (size_t)p->uv0;
+    size_t n = 0;
+    for (uint32_t l = 0; l < p->nloops; l++) {
+        uint32_t m = sc->loops[p->loop0 + l];
+        const double *q = lu + 2 * (size_t)(m - 1);
+        for (uint32_t i = 0; i < m; i++) {
+            const double *a = lu + 2 * (size_t)i;
+            if (a[1] != q[1])
+                n += 1 + rt_slab_of(p, fmax(a[1], q[1])) - rt_slab_of(p, fmin(a[1], q[1]));
+            q = a;
+        }
+        lu += 2 * (size_t)m;
+    }
+    return n;
+}
+
+/* Per polygon: 2-D bounds and horizontal slabs, each listing the edges whose v range meets
+ * it (same slab function for edges and query points, so the even-odd count is unchanged). */
+static int rt_poly_slabs(rt_scene *sc)
+{
+    size_t nslab_tot = 0, nedge_tot = 0;
+    for (size_t k = 0; k < sc->npoly; k++) {
+        rt_poly *p = &sc->poly[k];
+        const double *uv = sc->uv + 2 * (size_t)p->uv0;
+        size_t nv = 0;
+        for (uint32_t l = 0; l < p->nloops; l++)
+            nv += sc->loops[p->loop0 + l];
+        p->umin = p->vmin = INFINITY;
+        p->umax = p->vmax = -INFINITY;
+        for (size_t i = 0; i < nv; i++) {
+            p->umin = fmin(p->umin, uv[2 * i]);
+            p->umax = fmax(p->umax, uv[2 * i]);
+            p->vmin = fmin(p->vmin, uv[2 * i + 1]);
+            p->vmax = fmax(p->vmax, uv[2 * i + 1]);
+        }
+        size_t ns = nv <= 8 ? 1 : (nv + 3) / 4;
+        if (ns > 1024)
+            ns = 1024;
+        double h = p->vmax - p->vmin;
+        if (!(h > 0.0) || !isfinite((double)ns / h))
+            ns = 1;
+        size_t entries;
+        /* long edges repeat in many slabs: keep the lists within 8 entries per edge */
+        for (;;) {
+            p->nslab = (uint32_t)ns;
+            p->inv_h = ns > 1 ? (double)ns / h : 0.0;
+            entries = rt_slab_entries(sc, p);
+            if (ns == 1 || entries <= 8 * nv + 64)
+                break;
+            ns /= 2;
+        }
+        p->slab0 = nslab_tot;
+        nslab_tot += ns + 1;
+        nedge_tot += entries;
+    }
+    sc->slab_off = rt_alloc_array(nslab_tot, sizeof(size_t));
+    sc->edges = rt_alloc_array(nedge_tot, 4 * sizeof(double));
+    if (!sc->slab_off || !sc->edges)
+        return RT_ERR_NOMEM;
+    size_t cursor[1024];
+    size_t base = 0;
+    for (size_t k = 0; k < sc->npoly; k++) {
+        const rt_poly *p = &sc->poly[k];
+        size_t *so = sc->slab_off + p->slab0;
+        for (uint32_t s = 0; s <= p->nslab; s++)
+            so[s] = 0;
+        for (int pass = 0; pass < 2; pass++) {
+            const double *lu = sc->uv + 2 * (size_t)p->uv0;
+            for (uint32_t l = 0; l < p->nloops; l++) {
+                uint32_t m = sc->loops[p->loop0 + l];
+                const double *q = lu + 2 * (size_t)(m - 1);
+                for (uint32_t i = 0; i < m; i++) {
+                    const double *a = lu + 2 * (size_t)i;
+                    if (a[1] != q[1]) { /* horizontal edges never cross */
+                        uint32_t s0 = rt_slab_of(p, fmin(a[1], q[1]));
+                        uint32_t s1 = rt_slab_of(p, fmax(a[1], q[1]));
+                        for (uint32_t s = s0; s <= s1; s++) {
+                            if (pass == 0) {
+                                so[s + 1]++;
+                            } else {
+                                double *e = sc->edges + 4 * cursor[s]++;
+                                e[0] = q[0]; e[1] = q[1]; e[2] = a[0]; e[3] = a[1];
+                            }
+                        }
+                    }
+                    q = a;
+                }
+                lu += 2 * (size_t)m;
+            }
+            if (pass == 0) {
+                so[0] = base;
+                for (uint32_t s = 0; s < p->nslab; s++) {
+                    so[s + 1] += so[s];
+                    cursor[s] = so[s];
+                }
+                base = so[p->nslab];
+            }
+        }
+    }
+    sc->nslab_off = nslab_tot;
+    sc->nedges = nedge_tot;
+    return RT_OK;
+}
+
+int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
+{
+    if (!sc)
+        return RT_ERR_ARG;
+    double t0 = rt_now();
+    rt_scene_uncommit(sc);
+    int rc = rt_commit_prims(sc);
+    if (rc == RT_OK)
+        rc = rt_poly_slabs(sc);
+    if (rc == RT_OK)
+        rc = rt_grid_build(sc, opts);
+    if (rc != RT_OK) {
+        rt_scene_uncommit(sc);
+        return rc;
+    }
+    sc->memory_bytes = sizeof *sc + sc->nprim * sizeof *sc->prim + sc->ntri * sizeof *sc->tri +
+                       sc->nquad * sizeof *sc->quad +
+                       sc->npoly * sizeof *sc->poly + sc->ncell * sizeof *sc->cell +
+                       sc->nuv * 2 * sizeof(double) + sc->nloops * sizeof(uint32_t) +
+                       sc->nslab_off * sizeof(size_t) + sc->nedges * 4 * sizeof(double) +
+                       sc->nrgb * sizeof(float) +
+                       (sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
+                                        sc->grid.nsrefs) * sizeof(uint32_t) +
+                                           sc->grid.nsubs * sizeof(rt_subgrid) +
+                                           (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0)
+                                     : 0);
+    sc->build_seconds = rt_now() - t0;
+    sc->committed = 1;
+    return RT_OK;
+}
+
+void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3])
+{
+    double qu = p[c->ku] - c->p[c->ku], qv = p[c->kv] - c->p[c->kv];
+    double s = c->inv[0][0] * qu + c->inv[0][1] * qv;
+    double t = c->inv[1][0] * qu + c->inv[1][1] * qv;
+    double fs = s * c->nx, ft = t * c->ny;
+    int i = fs >= 0.0 ? (fs < c->nx ? (int)fs : c->nx - 1) : 0;
+    int j = ft >= 0.0 ? (ft < c->ny ? (int)ft : c->ny - 1) : 0;
+    const float *col = sc->in_rgb + c->rgb0 + 3 * ((size_t)j * (size_t)c->nx + (size_t)i);
+    for (int k = 0; k < 3; k++)
+        rgb[k] = col[k];
+}

@@ -1,0 +1,396 @@
+/*
+ * rt_trace.c -- 3D-DDA traversal of the two-level uniform grid and the batch ray API.
+ *
+ * Each primitive is tested once per ray (per-thread mailbox); the nearest hit so far is kept
+ * even when it lies beyond the current cell, and traversal stops as soon as it is not beyond
+ * the current cell's exit (t <= t_exit). Primitives are referenced by every cell their surface
+ * overlaps with the cell box enlarged by a relative epsilon (rt_build.c), so a hit computed
+ * near a cell face is found from either cell. Ties in t go to the smaller primitive id, so
+ * grid and brute force return identical hits.
+ */
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+#include "rt_prim.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- ray setup ---- */
+
+#define RT_RAY_MAX 1e100
+#define RT_MIN(a, b) ((a) < (b) ? (a) : (b))
+
+int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax)
+{
+    /* isfinite/isnan first: ordered comparisons with NaN would raise FE_INVALID */
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(o[i]) || !isfinite(d[i]) || fabs(o[i]) > RT_RAY_MAX || fabs(d[i]) > RT_RAY_MAX)
+            return 0;
+    if (!isfinite(tmin) || isnan(tmax) || tmin > tmax || fabs(tmin) > RT_RAY_MAX)
+        return 0;
+    double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
+    if (ax == 0.0 && ay == 0.0 && az == 0.0)
+        return 0;
+    /* tiny directions: t range must stay meaningful */
+    if (fmax(ax, fmax(ay, az)) < 1e-100)
+        return 0;
+    memcpy(r->o, o, sizeof r->o);
+    memcpy(r->d, d, sizeof r->d);
+    /* components below 1e-150 of the largest are flushed to 0 (finite 1/d everywhere) */
+    double dm = fmax(ax, fmax(ay, az));
+    for (int i = 0; i < 3; i++)
+        if (fabs(r->d[i]) < 1e-150 * dm)
+            r->d[i] = 0.0;
+    d = r->d;
+    r->tmin = tmin;
+    r->tmax = tmax;
+    int kz = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0.0) {
+        int t = kx;
+        kx = ky;
+        ky = t;
+    }
+    r->kx = kx;
+    r->ky = ky;
+    r->kz = kz;
+    r->sx = d[kx] / d[kz];
+    r->sy = d[ky] / d[kz];
+    r->sz = 1.0 / d[kz];
+    for (int i = 0; i < 3; i++)
+        r->invd[i] = d[i] != 0.0 ? 1.0 / d[i] : 0.0;
+    return 1;
+}
+
+/* ---- mailbox context ---- */
+
+int rt_ctx_init(rt_ctx *c, const rt_scene *sc)
+{
+    c->nprim = sc->nprim;
+    c->stamp = 0;
+    c->mbox = rt_calloc_array(sc->nprim ? sc->nprim : 1, sizeof(uint32_t));
+    return c->mbox ? RT_OK : RT_ERR_NOMEM;
+}
+
+void rt_ctx_free(rt_ctx *c)
+{
+    free(c->mbox);
+    c->mbox = NULL;
+}
+
+static inline uint32_t rt_ctx_next(rt_ctx *c)
+{
+    if (++c->stamp == 0) {
+        memset(c->mbox, 0, c->nprim * sizeof(uint32_t));
+        c->stamp = 1;
+    }
+    return c->stamp;
+}
+
+/* ---- DDA ---- */
+
+typedef struct rt_dda {
+    int c[3], step[3];
+    double tnext[3];
+    double t0, t1;
+} rt_dda;
+
+static inline double rt_dda_bound(const rt_box *g, const rt_rayx *r, const int c[3], int a)
+{
+    int b = r->d[a] > 0.0 ? c[a] + 1 : c[a];
+    double x = b == g->n[a] ? g->hi[a] : g->lo[a] + (double)b * g->cw[a];
+    return (x - r->o[a]) * r->invd[a];
+}
+
+/* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1: the range is first cut to
+ * the box (0 if nothing remains); clip = 0 (second level, the range is already inside the
+ * box up to rounding): the start cell is clamped into the box instead. */
+static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, const rt_rayx *r, double t0, double t1, int clip,
+                              rt_dda *s)
+{
+    if (clip) {
+        for (int a = 0; a < 3; a++) {
+            if (r->d[a] == 0.0) { /* +0.0 and -0.0 */
+                if (r->o[a] < g->lo[a] || r->o[a] > g->hi[a])
+                    return 0;
+                continue;
+            }
+            double ta = (g->lo[a] - r->o[a]) * r->invd[a];
+            double tb = (g->hi[a] - r->o[a]) * r->invd[a];
+            if (ta > tb) {
+                double x = ta;
+                ta = tb;
+                tb = x;
+            }
+            if (ta > t0) t0 = ta;
+            if (tb < t1) t1 = tb;
+        }
+        if (!(t0 <= t1) || !isfinite(t0))
+            return 0;
+    }
+    s->t0 = t0;
+    s->t1 = t1;
+    for (int a = 0; a < 3; a++) {
+        double p = r->o[a] + t0 * r->d[a];
+        double f = (p - g->lo[a]) * g->inv_cw[a];
+        int c = f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
+        s->c[a] = c;
+        if (r->d[a] > 0.0) {
+            s->step[a] = 1;
+            s->tnext[a] = rt_dda_bound(g, r, s->c, a);
+        } else if (r->d[a] < 0.0) {
+            s->step[a] = -1;
+            s->tnext[a] = rt_dda_bound(g, r, s->c, a);
+        } else {
+            s->step[a] = 0;
+            s->tnext[a] = INFINITY;
+        }
+    }
+    return 1;
+}
+
+static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, const rt_scene *sc, const rt_rayx *r, size_t i, int any_hit,
+                                   double *T)
+{
+    double t;
+    if (!rt_isect_prim(sc, r, i, r->tmin, r->tmax, &t))
+        return 1;
+    const rt_prim *p = &sc->prim[i];
+    if (any_hit || p->opaque) {
+        *T = 0.0;
+        c->blocker = p->opaque ? (long)i : -1;
+        return 0;
+    }
+    double den = p->ng[0] * r->d[0] + p->ng[1] * r->d[1] + p->ng[2] * r->d[2];
+    *T *= sc->surf[p->surf[den > 0.0 ? 1 : 0]].transparency;
+    return *T > 0.0;
+}
+
+#define RT_INLINE static inline __attribute__((always_inline))
+
+/* nearest-hit update for primitive i (mailboxed by the caller) */
+RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i, double *best,
+                               long *bi)
+{
+    double t;
+    if (rt_isect_prim(sc, r, i, r->tmin, RT_MIN(*best, r->tmax), &t) &&
+        (t < *best || (t == *best && sc->prim[i].id < sc->prim[*bi].id))) {
+        *best = t;
+        *bi = (long)i;
+    }
+}
+
+/* 3D-DDA over the grid. mode 0: nearest hit (stops once the best hit is not beyond the
+ * current cell); mode 1: transmittance (all cells up to tmax). Returns 0 if mode 1 ended
+ * blocked. Direction components exactly +0.0 or -0.0 never step. */
+enum { RT_WALK_CONT = 0, RT_WALK_DONE = 1, RT_WALK_BLOCKED = 2 };
+
+typedef struct rt_walkstate {
+    const rt_scene *sc;
+    rt_ctx *c;
+    const rt_rayx *r;
+    uint32_t stamp;
+    int any_hit;
+    double best;
+    long bi;
+    double T;
+} rt_walkstate;
+
+static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+
+/* 3D-DDA over one box (top level: with second-level cells in sub; second level: sub NULL).
+ * mode 0: nearest hit, DONE as soon as the best hit is not beyond the current cell's exit;
+ * mode 1: transmittance, BLOCKED when an opaque primitive is hit. Each primitive is tested
+ * once per ray (mailbox). Direction components exactly +0.0 or -0.0 never step. */
+RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
+                          const uint32_t *refs, const int32_t *sub, const rt_subgrid *subs,
+                          double t0, double t1, int clip)
+{
+    const rt_scene *sc = w->sc;
+    const rt_rayx *r = w->r;
+    rt_dda s;
+    if (!rt_dda_init(g, r, t0, t1, clip, &s))
+        return RT_WALK_CONT;
+    uint32_t *const mbox = w->c->mbox;
+    const uint32_t stamp = w->stamp;
+    int cx = s.c[0], cy = s.c[1], cz = s.c[2];
+    const int sx = s.step[0], sy = s.step[1], sz = s.step[2];
+    const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
+    double tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
+    double tent = s.t0;
+    t1 = s.t1;
+    const double bx = g->lo[0] - r->o[0], by = g->lo[1] - r->o[1], bz = g->lo[2] - r->o[2];
+    const int ox = sx > 0, oy = sy > 0, oz = sz > 0;
+    size_t ci = rt_cell_index(g, s.c);
+    const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nx, dz = (ptrdiff_t)sz * nx * ny;
+    for (;;) {
+        if (sub && sub[ci] >= 0) {
+            double te = RT_MIN(tx, RT_MIN(ty, tz));
+            int st = mode == 0 ? rt_walk_sub_nearest(w, &subs[sub[ci]], tent, RT_MIN(te, t1))
+                               : rt_walk_sub_transmit(w, &subs[sub[ci]], tent, RT_MIN(te, t1));
+            if (st != RT_WALK_CONT)
+                return st;
+        } else {
+            for (uint32_t k = off[ci], e = off[ci + 1]; k < e; k++) {
+                uint32_t i = refs[k];
+                if (mbox[i] == stamp)
+                    continue;
+                mbox[i] = stamp;
+                if (mode == 0)
+                    rt_nearest_prim(sc, r, i, &w->best, &w->bi);
+                else if (!rt_transmit_prim(w->c, sc, r, i, w->any_hit, &w->T))
+                    return RT_WALK_BLOCKED;
+            }
+        }
+        if (tx <= ty && tx <= tz) {
+            if (mode == 0 && w->bi >= 0 && w->best <= tx)
+                return RT_WALK_DONE;
+            if (tx > t1)
+                return RT_WALK_CONT;
+            cx += sx;
+            if ((unsigned)cx >= (unsigned)nx)
+                return RT_WALK_CONT;
+            ci += dx;
+            tent = tx;
+            tx = (cx + ox == nx ? g->hi[0] - r->o[0] : bx + (double)(cx + ox) * g->cw[0]) * r->invd[0];
+        } else if (ty <= tz) {
+            if (mode == 0 && w->bi >= 0 && w->best <= ty)
+                return RT_WALK_DONE;
+            if (ty > t1)
+                return RT_WALK_CONT;
+            cy += sy;
+            if ((unsigned)cy >= (unsigned)ny)
+                return RT_WALK_CONT;
+            ci += dy;
+            tent = ty;
+            ty = (cy + oy == ny ? g->hi[1] - r->o[1] : by + (double)(cy + oy) * g->cw[1]) * r->invd[1];
+        } else {
+            if (mode == 0 && w->bi >= 0 && w->best <= tz)
+                return RT_WALK_DONE;
+            if (tz > t1)
+                return RT_WALK_CONT;
+            cz += sz;
+            if ((unsigned)cz >= (unsigned)nz)
+                return RT_WALK_CONT;
+            ci += dz;
+            tent = tz;
+            tz = (cz + oz == nz ? g->hi[2] - r->o[2] : bz + (double)(cz + oz) * g->cw[2]) * r->invd[2];
+        }
+    }
+}
+
+static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg,
+                                                         double t0, double t1)
+{
+    const rt_grid *g = &w->sc->grid;
+    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 0);
+}
+
+static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
+                                                          double t0, double t1)
+{
+    const rt_grid *g = &w->sc->grid;
+    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 0);
+}
+
+long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
+{
+    rt_walkstate w = {.sc = sc, .c = c, .r = r, .best = INFINITY, .bi = -1, .T = 1.0};
+    if (!sc->use_grid) {
+        for (size_t i = 0; i < sc->nprim; i++)
+            rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi);
+    } else {
+        const rt_grid *g = &sc->grid;
+        w.stamp = rt_ctx_next(c);
+        rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->sub, g->subs, r->tmin, r->tmax, 1);
+    }
+    *tout = w.best;
+    return w.bi;
+}
+
+double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
+{
+    c->blocker = -1;
+    rt_walkstate w = {.sc = sc, .c = c, .r = r, .any_hit = any_hit, .best = INFINITY, .bi = -1, .T = 1.0};
+    if (!sc->use_grid) {
+        for (size_t i = 0; i < sc->nprim; i++)
+            if (!rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
+                return 0.0;
+        return w.T;
+    }
+    const rt_grid *g = &sc->grid;
+    w.stamp = rt_ctx_next(c);
+    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->sub, g->subs, r->tmin, r->tmax, 1) ==
+        RT_WALK_BLOCKED)
+        return 0.0;
+    return w.T;
+}
+
+int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i)
+{
+    double t;
+    return i >= 0 && (size_t)i < sc->nprim && rt_isect_prim(sc, r, (size_t)i, r->tmin, r->tmax, &t);
+}
+
+/* ---- batch API ---- */
+
+static void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit *h)
+{
+    const rt_prim *p = &sc->prim[i];
+    h->t = t;
+    h->prim = p->id;
+    for (int j = 0; j < 3; j++) {
+        h->p[j] = r->o[j] + t * r->d[j];
+        h->ng[j] = p->ng[j];
+    }
+    double den = p->ng[0] * r->d[0] + p->ng[1] * r->d[1] + p->ng[2] * r->d[2];
+    h->side = den > 0.0 ? 1 : 0;
+}
+
+int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+{
+    if (!sc || (n && (!rays || !hits)))
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    rt_ctx c;
+    if (rt_ctx_init(&c, sc) != RT_OK)
+        return RT_ERR_NOMEM;
+    for (size_t k = 0; k < n; k++) {
+        rt_rayx r;
+        memset(&hits[k], 0, sizeof hits[k]);
+        hits[k].prim = -1;
+        hits[k].t = INFINITY;
+        if (!rt_rayx_setup(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
+            continue;
+        double t;
+        long i = rt_trace_nearest(sc, &c, &r, &t);
+        if (i >= 0)
+            rt_fill_hit(sc, &r, i, t, &hits[k]);
+    }
+    rt_ctx_free(&c);
+    return RT_OK;
+}
+
+int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
+{
+    if (!sc || (n && (!rays || !occluded)))
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    rt_ctx c;
+    if (rt_ctx_init(&c, sc) != RT_OK)
+        return RT_ERR_NOMEM;
+    for (size_t k = 0; k < n; k++) {
+        rt_rayx r;
+        occluded[k] = 0;
+        if (!rt_rayx_setup(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
+            continue;
+        occluded[k] = rt_trace_transmit(sc, &c, &r, 1) == 0.0;
+    }
+    rt_ctx_free(&c);
+    return RT_OK;
+}
+

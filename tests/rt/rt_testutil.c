@@ -1,0 +1,354 @@
+/* rt_testutil.c -- see rt_testutil.h */
+#include "rt_testutil.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void rtu_view_matrix(const rtu_view *v, double m[4][4])
+{
+    double umin = v->win[0], umax = v->win[1], vmin = v->win[2], vmax = v->win[3];
+    double xmin = v->vp[0], xmax = v->vp[1], ymin = v->vp[2], ymax = v->vp[3];
+    double zmin = v->vp[4], zmax = v->vp[5];
+    double cu = 0.5 * (umin + umax), cv = 0.5 * (vmin + vmax);
+    double Sx = (xmax - xmin) / (umax - umin), Sy = (ymax - ymin) / (vmax - vmin);
+    double Dz = zmax - zmin, B = v->bpd, F = v->fpd, VPD = v->vpd;
+    double pu = v->prp[0], pv = v->prp[1], pn = v->prp[2];
+    memset(m, 0, 16 * sizeof(double));
+    if (!v->perspective) {
+        double hx = (pu - cu) / (VPD - pn), hy = (pv - cv) / (VPD - pn);
+        m[0][0] = Sx; m[0][2] = Sx * hx; m[0][3] = xmin - Sx * (hx * VPD + umin);
+        m[1][1] = Sy; m[1][2] = Sy * hy; m[1][3] = ymin - Sy * (hy * VPD + vmin);
+        m[2][2] = Dz / (F - B); m[2][3] = zmin - B * Dz / (F - B);
+        m[3][3] = 1.0;
+        return;
+    }
+    /* x*w = a*(pn - n) + Sx*(pn - VPD)*(u - pu), a = xmin + Sx*(pu - umin), w = pn - n */
+    double ax = xmin + Sx * (pu - umin), ay = ymin + Sy * (pv - vmin);
+    m[0][0] = Sx * (pn - VPD); m[0][2] = -ax; m[0][3] = ax * pn - Sx * (pn - VPD) * pu;
+    m[1][1] = Sy * (pn - VPD); m[1][2] = -ay; m[1][3] = ay * pn - Sy * (pn - VPD) * pv;
+    double K = Dz / (1.0 / (pn - F) - 1.0 / (pn - B));
+    m[2][2] = -zmin + K / (pn - B);
+    m[2][3] = zmin * pn + K - K * pn / (pn - B);
+    m[3][2] = -1.0;
+    m[3][3] = pn;
+}
+
+void rtu_view_projector(const rtu_view *v, double x, double y, double front[3], double back[3])
+{
+    double umin = v->win[0], umax = v->win[1], vmin = v->win[2], vmax = v->win[3];
+    double Sx = (v->vp[1] - v->vp[0]) / (umax - umin), Sy = (v->vp[3] - v->vp[2]) / (vmax - vmin);
+    /* point on the view plane */
+    double u1 = umin + (x - v->vp[0]) / Sx, v1 = vmin + (y - v->vp[2]) / Sy;
+    double q[3] = {u1, v1, v->vpd};
+    double d[3];
+    if (v->perspective) {
+        for (int i = 0; i < 3; i++)
+            d[i] = q[i] - v->prp[i];
+        double tf = (v->fpd - v->prp[2]) / d[2], tb = (v->bpd - v->prp[2]) / d[2];
+        for (int i = 0; i < 3; i++) {
+            front[i] = v->prp[i] + tf * d[i];
+            back[i] = v->prp[i] + tb * d[i];
+        }
+        return;
+    }
+    double cu = 0.5 * (umin + umax), cv = 0.5 * (vmin + vmax);
+    d[0] = cu - v->prp[0];
+    d[1] = cv - v->prp[1];
+    d[2] = v->vpd - v->prp[2];
+    double tf = (v->fpd - v->vpd) / d[2], tb = (v->bpd - v->vpd) / d[2];
+    for (int i = 0; i < 3; i++) {
+        front[i] = q[i] + tf * d[i];
+        back[i] = q[i] + tb * d[i];
+    }
+}
+
+static void norm3(double v[3])
+{
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int i = 0; i < 3; i++)
+        v[i] /= l;
+}
+
+void rtu_lookat(const double from[3], const double at[3], const double up[3], double m[4][4])
+{
+    double n[3] = {from[0] - at[0], from[1] - at[1], from[2] - at[2]}, u[3], v[3];
+    norm3(n);
+    u[0] = up[1] * n[2] - up[2] * n[1];
+    u[1] = up[2] * n[0] - up[0] * n[2];
+    u[2] = up[0] * n[1] - up[1] * n[0];
+    norm3(u);
+    v[0] = n[1] * u[2] - n[2] * u[1];
+    v[1] = n[2] * u[0] - n[0] * u[2];
+    v[2] = n[0] * u[1] - n[1] * u[0];
+    memset(m, 0, 16 * sizeof(double));
+    for (int i = 0; i < 3; i++) {
+        m[0][i] = u[i];
+        m[1][i] = v[i];
+        m[2][i] = n[i];
+    }
+    for (int r = 0; r < 3; r++)
+        m[r][3] = -(m[r][0] * from[0] + m[r][1] * from[1] + m[r][2] * from[2]);
+    m[3][3] = 1.0;
+}
+
+void rtu_xform_point(const double m[4][4], const double p[3], double out[3])
+{
+    double r[3];
+    for (int i = 0; i < 3; i++)
+        r[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3];
+    memcpy(out, r, sizeof r);
+}
+
+static int grow(void **p, size_t *cap, size_t need, size_t es)
+{
+    if (need <= *cap)
+        return 1;
+    size_t nc = *cap ? *cap * 2 : 1024;
+    while (nc < need)
+        nc *= 2;
+    void *q = realloc(*p, nc * es);
+    if (!q)
+        return 0;
+    *p = q;
+    *cap = nc;
+    return 1;
+}
+
+typedef struct {
+    size_t cxyz, ccounts, cidx, csurf, csurfs, clights;
+} caps;
+
+static int add_vertex(rtu_mesh *m, caps *c, const double p[3])
+{
+    if (!grow((void **)&m->xyz, &c->cxyz, 3 * (size_t)(m->nv + 1), sizeof(double)))
+        return -1;
+    memcpy(m->xyz + 3 * (size_t)m->nv, p, 3 * sizeof(double));
+    return m->nv++;
+}
+
+static int add_poly(rtu_mesh *m, caps *c, int n, const int *ix, int surf)
+{
+    if (!grow((void **)&m->counts, &c->ccounts, (size_t)m->np + 1, sizeof(int)) ||
+        !grow((void **)&m->surf, &c->csurf, (size_t)m->np + 1, sizeof(int)) ||
+        !grow((void **)&m->idx, &c->cidx, m->nidx + (size_t)n, sizeof(int)))
+        return -1;
+    m->counts[m->np] = n;
+    m->surf[m->np] = surf;
+    memcpy(m->idx + m->nidx, ix, (size_t)n * sizeof(int));
+    m->nidx += (size_t)n;
+    m->np++;
+    return 0;
+}
+
+int rtu_load_off(const char *path, rtu_mesh *m)
+{
+    memset(m, 0, sizeof *m);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    char hdr[64];
+    int nv, nf, ne;
+    caps c = {0};
+    if (fscanf(f, "%63s", hdr) != 1 || strcmp(hdr, "OFF") != 0 || fscanf(f, "%d %d %d", &nv, &nf, &ne) != 3) {
+        fclose(f);
+        return -1;
+    }
+    for (int i = 0; i < nv; i++) {
+        double p[3];
+        if (fscanf(f, "%lf %lf %lf", &p[0], &p[1], &p[2]) != 3 || add_vertex(m, &c, p) < 0)
+            goto fail;
+    }
+    for (int i = 0; i < nf; i++) {
+        int n, ix[64];
+        if (fscanf(f, "%d", &n) != 1 || n < 1 || n > 64)
+            goto fail;
+        for (int k = 0; k < n; k++)
+            if (fscanf(f, "%d", &ix[k]) != 1 || ix[k] < 0 || ix[k] >= nv)
+                goto fail;
+        int ch; /* skip optional colour on the line */
+        while ((ch = fgetc(f)) != '\n' && ch != EOF) {
+        }
+        if (add_poly(m, &c, n, ix, 0) < 0)
+            goto fail;
+    }
+    fclose(f);
+    return 0;
+fail:
+    fclose(f);
+    rtu_mesh_free(m);
+    return -1;
+}
+
+int rtu_load_nff(const char *path, rtu_mesh *m)
+{
+    memset(m, 0, sizeof *m);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    caps c = {0};
+    char tok[64];
+    int cur = -1;
+    while (fscanf(f, "%63s", tok) == 1) {
+        if (strcmp(tok, "v") == 0) {
+            char w[32];
+            if (fscanf(f, "%31s %lf %lf %lf", w, &m->from[0], &m->from[1], &m->from[2]) != 4 ||
+                fscanf(f, "%31s %lf %lf %lf", w, &m->at[0], &m->at[1], &m->at[2]) != 4 ||
+                fscanf(f, "%31s %lf %lf %lf", w, &m->up[0], &m->up[1], &m->up[2]) != 4 ||
+                fscanf(f, "%31s %lf", w, &m->angle) != 2 || fscanf(f, "%31s %lf", w, &m->hither) != 2 ||
+                fscanf(f, "%31s %d %d", w, &m->res[0], &m->res[1]) != 3)
+                goto fail;
+            m->has_view = 1;
+        } else if (strcmp(tok, "b") == 0) {
+            if (fscanf(f, "%lf %lf %lf", &m->bg[0], &m->bg[1], &m->bg[2]) != 3)
+                goto fail;
+        } else if (strcmp(tok, "l") == 0) {
+            double p[3];
+            if (fscanf(f, "%lf %lf %lf", &p[0], &p[1], &p[2]) != 3)
+                goto fail;
+            if (!grow((void **)&m->lights, &c.clights, (size_t)m->nlights + 1, sizeof *m->lights))
+                goto fail;
+            memcpy(m->lights[m->nlights++], p, sizeof p);
+        } else if (strcmp(tok, "f") == 0) {
+            double r, g, b, kd, ks, sh, t, ior;
+            if (fscanf(f, "%lf %lf %lf %lf %lf %lf %lf %lf", &r, &g, &b, &kd, &ks, &sh, &t, &ior) != 8)
+                goto fail;
+            if (!grow((void **)&m->surfs, &c.csurfs, (size_t)m->nsurfs + 1, sizeof *m->surfs))
+                goto fail;
+            rt_surface *s = &m->surfs[m->nsurfs];
+            rt_surface_default(s);
+            s->refl_eq = RT_REFL_SPECULAR;
+            s->ka = 0.0;
+            s->kd = kd;
+            s->ks = ks;
+            s->diffuse[0] = r; s->diffuse[1] = g; s->diffuse[2] = b;
+            s->spec_exp = sh;
+            s->transparency = t > 1.0 ? 1.0 : t;
+            s->refr_index = ior > 0.0 ? ior : 1.0;
+            cur = m->nsurfs++;
+        } else if (strcmp(tok, "p") == 0 || strcmp(tok, "pp") == 0) {
+            int n, pp = tok[1] == 'p';
+            if (fscanf(f, "%d", &n) != 1 || n < 1 || n > 100000)
+                goto fail;
+            int *ix = malloc((size_t)n * sizeof(int));
+            if (!ix)
+                goto fail;
+            for (int k = 0; k < n; k++) {
+                double p[3], nn[3];
+                if (fscanf(f, "%lf %lf %lf", &p[0], &p[1], &p[2]) != 3 ||
+                    (pp && fscanf(f, "%lf %lf %lf", &nn[0], &nn[1], &nn[2]) != 3) ||
+                    (ix[k] = add_vertex(m, &c, p)) < 0) {
+                    free(ix);
+                    goto fail;
+                }
+            }
+            int rc = add_poly(m, &c, n, ix, cur < 0 ? 0 : cur);
+            free(ix);
+            if (rc < 0)
+                goto fail;
+        } else {
+            int ch; /* unsupported primitive (s, c) or comment: skip the line */
+            while ((ch = fgetc(f)) != '\n' && ch != EOF) {
+            }
+        }
+    }
+    fclose(f);
+    return 0;
+fail:
+    fclose(f);
+    rtu_mesh_free(m);
+    return -1;
+}
+
+void rtu_mesh_free(rtu_mesh *m)
+{
+    free(m->xyz);
+    free(m->counts);
+    free(m->idx);
+    free(m->surf);
+    free(m->surfs);
+    free(m->lights);
+    memset(m, 0, sizeof *m);
+}
+
+void rtu_mesh_transform(rtu_mesh *m, const double vo[4][4])
+{
+    for (int i = 0; i < m->nv; i++)
+        rtu_xform_point(vo, m->xyz + 3 * i, m->xyz + 3 * i);
+    for (int i = 0; i < m->nlights; i++)
+        rtu_xform_point(vo, m->lights[i], m->lights[i]);
+}
+
+void rtu_mesh_bbox(const rtu_mesh *m, double bb[6])
+{
+    for (int i = 0; i < 3; i++) {
+        bb[i] = INFINITY;
+        bb[3 + i] = -INFINITY;
+    }
+    for (int k = 0; k < m->nv; k++)
+        for (int i = 0; i < 3; i++) {
+            bb[i] = fmin(bb[i], m->xyz[3 * k + i]);
+            bb[3 + i] = fmax(bb[3 + i], m->xyz[3 * k + i]);
+        }
+}
+
+int rtu_mesh_add(const rtu_mesh *m, rt_scene *sc, int default_surface)
+{
+    int base = -1;
+    for (int i = 0; i < m->nsurfs; i++) {
+        int id = rt_scene_add_surface(sc, &m->surfs[i]);
+        if (id < 0)
+            return -1;
+        if (base < 0)
+            base = id;
+    }
+    for (int i = 0; i < m->nlights; i++) {
+        rt_light l;
+        memset(&l, 0, sizeof l);
+        l.type = RT_LIGHT_POSITIONAL;
+        double in = 1.0 / sqrt((double)m->nlights);
+        l.color[0] = l.color[1] = l.color[2] = in;
+        memcpy(l.position, m->lights[i], sizeof l.position);
+        l.c1 = 1.0;
+        if (rt_scene_add_light(sc, &l) < 0)
+            break; /* more than 64 lights: ignored */
+    }
+    size_t off = 0;
+    double *buf = NULL;
+    size_t cap = 0;
+    for (int p = 0; p < m->np; p++) {
+        int n = m->counts[p];
+        if (!grow((void **)&buf, &cap, 3 * (size_t)n, sizeof(double))) {
+            free(buf);
+            return -1;
+        }
+        for (int k = 0; k < n; k++)
+            memcpy(buf + 3 * k, m->xyz + 3 * (size_t)m->idx[off + (size_t)k], 3 * sizeof(double));
+        off += (size_t)n;
+        int s = m->nsurfs ? base + m->surf[p] : default_surface;
+        if (rt_scene_add_polygon(sc, 1, &n, buf, s, s) < 0) {
+            free(buf);
+            return -1;
+        }
+    }
+    free(buf);
+    return 0;
+}
+
+void rtu_nff_view(const rtu_mesh *m, const double bb[6], rtu_view *v)
+{
+    memset(v, 0, sizeof *v);
+    double h = tan(0.5 * m->angle * 3.14159265358979323846 / 180.0);
+    double far = 0.0;
+    for (int k = 0; k < 8; k++) {
+        double p[3] = {bb[k & 1 ? 3 : 0], bb[k & 2 ? 4 : 1], bb[k & 4 ? 5 : 2]};
+        far = fmax(far, sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    }
+    v->perspective = 1;
+    v->win[0] = -h; v->win[1] = h; v->win[2] = -h; v->win[3] = h;
+    v->vpd = -1.0;
+    v->fpd = -(m->hither > 0.0 ? m->hither : 1e-3 * far);
+    v->bpd = -1.01 * far - 1.0;
+    v->vp[1] = v->vp[3] = v->vp[5] = 1.0;
+}

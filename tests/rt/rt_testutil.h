@@ -1,0 +1,62 @@
+/*
+ * rt_testutil.h -- helpers for the gksrt tests and benchmark (not part of the library):
+ * view mapping matrices from the formulas of BINDINGS.md 3.3, a view orientation matrix,
+ * and tiny OFF / NFF loaders.
+ */
+#ifndef GKS3D_RT_TESTUTIL_H
+#define GKS3D_RT_TESTUTIL_H
+
+#include "gksrt.h"
+
+/* View parameters (BINDINGS.md 3.3): window [umin,umax]x[vmin,vmax] in the plane n = vpd,
+ * prp, back plane n = bpd, front n = fpd, viewport xmin,xmax,ymin,ymax,zmin,zmax (NPC). */
+typedef struct rtu_view {
+    double win[4];
+    double prp[3];
+    double vpd, bpd, fpd;
+    double vp[6];
+    int perspective;
+} rtu_view;
+
+/* Builds the view mapping matrix VRC3 -> NPC3 from the closed forms. */
+void rtu_view_matrix(const rtu_view *v, double m[4][4]);
+/* The projector through NPC (x, y) computed directly from the view parameters: point on the
+ * front plane (n = fpd) and on the back plane (n = bpd). */
+void rtu_view_projector(const rtu_view *v, double x, double y, double front[3], double back[3]);
+
+/* View orientation (world -> VRC): origin at 'from', n axis towards 'from' - 'at'. */
+void rtu_lookat(const double from[3], const double at[3], const double up[3], double m[4][4]);
+void rtu_xform_point(const double m[4][4], const double p[3], double out[3]);
+
+typedef struct rtu_mesh {
+    double *xyz;          /* vertices (already in VRC3 after rtu_mesh_transform) */
+    int nv;
+    int *counts;          /* polygon vertex counts */
+    int *idx;             /* vertex indices, all polygons */
+    int *surf;            /* surface index per polygon (NFF), 0 for OFF */
+    int np;
+    size_t nidx;
+    rt_surface *surfs;
+    int nsurfs;
+    double (*lights)[3];
+    int nlights;
+    double from[3], at[3], up[3], angle, hither;
+    int res[2];
+    double bg[3];
+    int has_view;
+} rtu_mesh;
+
+int rtu_load_off(const char *path, rtu_mesh *m);  /* 0 on success */
+int rtu_load_nff(const char *path, rtu_mesh *m);
+void rtu_mesh_free(rtu_mesh *m);
+void rtu_mesh_transform(rtu_mesh *m, const double vo[4][4]);
+/* adds all polygons (and NFF surfaces / positional lights) to sc; returns 0 on success */
+int rtu_mesh_add(const rtu_mesh *m, rt_scene *sc, int default_surface);
+/* bounding box lo xyz hi xyz */
+void rtu_mesh_bbox(const rtu_mesh *m, double bb[6]);
+
+/* perspective camera for an NFF view: scene must already be in VRC3 (eye at origin looking
+ * down -n); fills the view so that the whole bbox lies between front and back planes. */
+void rtu_nff_view(const rtu_mesh *m, const double bb_vrc[6], rtu_view *v);
+
+#endif
