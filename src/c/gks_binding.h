@@ -1,0 +1,13 @@
+/*
+ * gks_binding.h -- entry points the Fortran binding needs beyond the ISO C names.
+ * Exported (default visibility) but not part of the installed C interface.
+ */
+#ifndef GKS_BINDING_H
+#define GKS_BINDING_H
+#include "gks.h"
+
+/* OPEN GKS for the Fortran binding: the error file is a Fortran unit number; no file
+ * is opened by C (the Fortran GERLOG writes to the unit). The unit is passed to ERROR
+ * HANDLING as its decimal text. */
+GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit);
+#endif

@@ -1,0 +1,100 @@
+/*
+ * gks_error.c -- error table, the one report function, ERROR HANDLING and ERROR LOGGING.
+ */
+#include "gks_error.h"
+#include "gks_context.h"
+#include "gks_state.h"
+#include <stdio.h>
+
+typedef struct { int num; const char *msg; } err_entry;
+static const err_entry err_table[] = {
+#define GKS_ERR(n, m) { n, m },
+#include "gks_errors.def"
+#undef GKS_ERR
+};
+
+typedef struct { const char *name; unsigned states; } fn_entry;
+static const fn_entry fn_table[] = {
+#define GKS_FN(id, sym, name, states) [id] = { name, states },
+#include "gks_functions.def"
+#undef GKS_FN
+};
+
+const char *gks_error_message(Gint err_num)
+{
+    for (size_t i = 0; i < sizeof err_table / sizeof err_table[0]; i++)
+        if (err_table[i].num == err_num)
+            return err_table[i].msg;
+    return "";
+}
+
+const char *gks_function_name(Gint func_num)
+{
+    if (func_num < 0 || (size_t)func_num >= sizeof fn_table / sizeof fn_table[0] ||
+        !fn_table[func_num].name)
+        return "";
+    return fn_table[func_num].name;
+}
+
+unsigned gks_function_states(int fctid)
+{
+    if (fctid < 0 || (size_t)fctid >= sizeof fn_table / sizeof fn_table[0])
+        return 0;
+    return fn_table[fctid].states;
+}
+
+void gks_error_report(int err_num, int fctid)
+{
+    gks_context *c = gks_ctx();
+    Gerr_handler h = c->err.handler ? c->err.handler : gerr_hand;
+    const char *file = c->sl ? c->sl->err_file : NULL;
+    c->err.last_error = err_num;
+    c->err.in_handler = 1;
+    h(err_num, fctid, file);
+    c->err.in_handler = 0;
+}
+
+int gks_check_state(int fctid)
+{
+    unsigned mask = gks_function_states(fctid);
+    if (mask & (1u << gks_ctx()->op_st))
+        return 0;
+    int e = gks_state_error_for(mask);
+    gks_error_report(e, fctid);
+    return e;
+}
+
+int gks_inq_state(unsigned mask)
+{
+    return (mask & (1u << gks_ctx()->op_st)) ? 0 : gks_state_error_for(mask);
+}
+
+GKS_API void gerr_hand(Gint err_num, Gint func_num, const char *err_file)
+{
+    gerr_log(err_num, func_num, err_file);
+}
+
+GKS_API void gerr_log(Gint err_num, Gint func_num, const char *err_file)
+{
+    (void)err_file; /* the file was opened once at OPEN GKS */
+    FILE *fp = gks_ctx()->err.fp ? gks_ctx()->err.fp : stderr;
+    fprintf(fp, "GKS ERROR %d in %s: %s\n", err_num, gks_function_name(func_num),
+            gks_error_message(err_num));
+    fflush(fp);
+}
+
+GKS_API void gset_err_hand(Gerr_handler new_hand, Gerr_handler *old_hand)
+{
+    gks_context *c = gks_ctx();
+    if (old_hand)
+        *old_hand = c->err.handler ? c->err.handler : gerr_hand;
+    c->err.handler = (new_hand == gerr_hand) ? NULL : new_hand;
+}
+
+GKS_API void ginq_err_st(Gint *in_error_handling, Gint *last_err_num)
+{
+    if (in_error_handling)
+        *in_error_handling = gks_ctx()->err.in_handler;
+    if (last_err_num)
+        *last_err_num = gks_ctx()->err.last_error;
+}

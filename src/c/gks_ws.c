@@ -1,0 +1,83 @@
+#include "gks_ws.h"
+#include "gks_alloc.h"
+#include "gks_error.h"
+#include <string.h>
+
+gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags)
+{
+    if (ws_id < 0) {
+        gks_error_report(20, fctid);
+        return NULL;
+    }
+    gks_ws *ws = gks_ws_lookup(ws_id);
+    if (!ws) {
+        gks_error_report(25, fctid);
+        return NULL;
+    }
+    Gws_cat cat = ws->drv->desc->cat;
+    int err = 0;
+    if ((cat_flags & GKS_WSC_NOT_MO) && cat == GCAT_MO)
+        err = 31;
+    else if ((cat_flags & GKS_WSC_NOT_MI) && cat == GCAT_MI)
+        err = 33;
+    else if ((cat_flags & GKS_WSC_NOT_INPUT) && cat == GCAT_IN)
+        err = 35;
+    else if ((cat_flags & GKS_WSC_NOT_WISS) && cat == GCAT_WISS)
+        err = 36;
+    if (err) {
+        gks_error_report(err, fctid);
+        return NULL;
+    }
+    return ws;
+}
+
+gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
+{
+    const gks_ws_desc *d = drv->desc;
+    gks_ws *ws = gks_calloc_array(1, sizeof *ws);
+    if (!ws)
+        return NULL;
+    ws->id = ws_id;
+    ws->drv = drv;
+    ws->conn_id = gks_strdup(conn_id ? conn_id : "");
+    int n = d->n_colr > 0 ? d->n_colr : 1;
+    ws->colr = gks_calloc_array((size_t)n, sizeof *ws->colr);
+    ws->colr_defined = gks_calloc_array((size_t)n, 1);
+    if (!ws->conn_id || !ws->colr || !ws->colr_defined) {
+        gks_ws_destroy(ws);
+        return NULL;
+    }
+    for (int i = 0; i < d->n_pred_colr && i < n; i++) {
+        ws->colr[i] = d->pred_colr[i];
+        ws->colr_defined[i] = 1;
+    }
+    ws->state = GWS_INACTIVE;
+    ws->defer_mode = d->default_defer;
+    ws->irg_mode = d->default_irg;
+    ws->disp_empty = GDISP_EMPTY;
+    ws->new_frame = GNEW_NO;
+    ws->tran_upd_st = GUPD_NOT_PEND;
+    ws->req_win = ws->cur_win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+    ws->req_vp = ws->cur_vp = (Glimit3){ 0, d->dc_x, 0, d->dc_y, 0, 1 };
+    return ws;
+}
+
+void gks_ws_destroy(gks_ws *ws)
+{
+    if (!ws)
+        return;
+    gks_free(ws->conn_id);
+    gks_free(ws->colr);
+    gks_free(ws->colr_defined);
+    gks_free(ws);
+}
+
+int gks_ws_new_frame(gks_ws *ws)
+{
+    ws->cur_win = ws->req_win;
+    ws->cur_vp = ws->req_vp;
+    ws->tran_upd_st = GUPD_NOT_PEND;
+    ws->new_frame = GNEW_NO;
+    ws->disp_empty = GDISP_EMPTY;
+    return ws->drv->clear ? ws->drv->clear(ws) : 0;
+}

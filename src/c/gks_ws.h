@@ -1,0 +1,29 @@
+/*
+ * gks_ws.h -- workstation state lists: creation/destruction and the common argument
+ * checks of workstation functions (errors 20, 25, 31..39 in the standard's order).
+ */
+#ifndef GKS_WS_H
+#define GKS_WS_H
+#include "gks_private.h"
+#include "ws_driver.h"
+
+/* Category restrictions a function places on its workstation argument. */
+enum {
+    GKS_WSC_NOT_MO = 1 << 0,    /* 31 */
+    GKS_WSC_NOT_MI = 1 << 1,    /* 33 */
+    GKS_WSC_NOT_INPUT = 1 << 2, /* 35 */
+    GKS_WSC_NOT_WISS = 1 << 3   /* 36 */
+};
+
+/* Checks (after the state check): 20 invalid id, 25 not open, then the category errors
+ * selected by `cat_flags`. Reports the error for `fctid` and returns NULL on failure. */
+gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags);
+
+/* Create the state list of a workstation being opened (colour table, transformation,
+ * deferral from the description table). NULL on storage overflow. */
+gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv);
+void gks_ws_destroy(gks_ws *ws);
+
+/* Apply a pending workstation transformation and clear the surface (a new frame). */
+int gks_ws_new_frame(gks_ws *ws);
+#endif
