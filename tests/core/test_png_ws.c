@@ -1,0 +1,162 @@
+/*
+ * test_png_ws.c -- the PNG workstation: image size from the workstation viewport, exact
+ * pixel colours (no tolerance: solid fills without anti-aliasing are exact), clipping at
+ * the normalization viewport, the frame/file naming rule and ESCAPE "set file name".
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+#include <cmocka.h>
+#include "core_util.h"
+
+typedef struct { int w, h; unsigned char *rgb; } image;
+
+static int read_png(const char *path, image *img)
+{
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&pi, path))
+        return 0;
+    pi.format = PNG_FORMAT_RGB;
+    img->w = (int)pi.width;
+    img->h = (int)pi.height;
+    img->rgb = malloc(PNG_IMAGE_SIZE(pi));
+    if (!img->rgb || !png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
+        free(img->rgb);
+        return 0;
+    }
+    return 1;
+}
+
+/* Pixel (x, y) with y counted from the BOTTOM row (DC convention). */
+static const unsigned char *px(const image *img, int x, int y)
+{
+    return img->rgb + 3 * ((size_t)(img->h - 1 - y) * img->w + x);
+}
+
+static void assert_colour(const image *img, int x, int y, int r, int g, int b)
+{
+    const unsigned char *p = px(img, x, y);
+    if (p[0] != r || p[1] != g || p[2] != b)
+        fail_msg("pixel (%d,%d) = %d %d %d, want %d %d %d", x, y, p[0], p[1], p[2], r, g, b);
+}
+
+static void test_fill_and_clip(void **u)
+{
+    (void)u;
+    reset_gks();
+    unlink("t_fill.png");
+    gopen_gks(NULL, 0);
+    gopen_ws(1, "t_fill.png", GWS_TYPE_PNG);
+    gactivate_ws(1);
+    Glimit vp = { 0, 40, 0, 20 }, wsw = { 0, 1, 0, 0.5 };
+    gset_ws_win(1, &wsw);
+    gset_ws_vp(1, &vp);
+    /* tnr 1: WC [0,10]^2 -> NDC [0,0.5]x[0,0.5], clipping on */
+    Glimit win = { 0, 10, 0, 10 }, nvp = { 0, 0.5, 0, 0.5 };
+    gset_win(1, &win);
+    gset_vp(1, &nvp);
+    gsel_norm_tran(1);
+    /* a rectangle reaching far beyond the viewport: clipped to NDC x < 0.5 = pixel 20 */
+    Gpoint r[4] = { { 2.5, 2.5 }, { 100, 2.5 }, { 100, 7.5 }, { 2.5, 7.5 } };
+    Gpoint_list rl = { 4, r };
+    gset_fill_colr_ind(2);
+    gfill_area(&rl);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    assert_int_equal(n_captured, 0);
+
+    image img;
+    assert_true(read_png("t_fill.png", &img));
+    assert_int_equal(img.w, 40);
+    assert_int_equal(img.h, 20);
+    /* WC 2.5..7.5 -> NDC 0.125..0.375 -> pixels 5..15 (centres 5.5..14.5 inside) */
+    int red = 0;
+    for (int y = 0; y < img.h; y++)
+        for (int x = 0; x < img.w; x++) {
+            const unsigned char *p = px(&img, x, y);
+            int inside = x >= 5 && x < 20 && y >= 5 && y < 15;
+            if (inside)
+                assert_colour(&img, x, y, 255, 0, 0);
+            else
+                assert_colour(&img, x, y, 255, 255, 255);
+            red += p[1] == 0;
+        }
+    assert_int_equal(red, 15 * 10);
+    free(img.rgb);
+    unlink("t_fill.png");
+}
+
+static void test_frames_and_names(void **u)
+{
+    (void)u;
+    reset_gks();
+    unlink("t_frame.png");
+    unlink("t_frame-002.png");
+    unlink("t_renamed.png");
+    gopen_gks(NULL, 0);
+    gopen_ws(1, "t_frame", GWS_TYPE_PNG);
+    gactivate_ws(1);
+    Glimit vp = { 0, 8, 0, 8 };
+    gset_ws_vp(1, &vp);
+    Gpoint l[2] = { { 0, 0.5 }, { 1, 0.5 } };
+    Gpoint_list ll = { 2, l };
+    gpolyline(&ll);
+    gclear_ws(1, GFLAG_COND);  /* writes frame 1, starts frame 2 */
+    gpolyline(&ll);
+    gupd_ws(1, GFLAG_PERFORM); /* writes frame 2 */
+    Gint ws = 1;
+    Gescape_in_data in = { 1, &ws, 0, NULL, 9, "t_renamed" };
+    gclear_ws(1, GFLAG_ALWAYS);
+    gescape(GESC_SET_FILE_NAME, &in, NULL);
+    gpolyline(&ll);
+    gdeactivate_ws(1);
+    gclose_ws(1);              /* writes frame 3 under the new name */
+    gclose_gks();
+    assert_int_equal(n_captured, 0);
+    image img;
+    assert_true(read_png("t_frame.png", &img));
+    assert_colour(&img, 3, 4, 0, 0, 0); /* the black line across y = 4 */
+    assert_colour(&img, 3, 1, 255, 255, 255);
+    free(img.rgb);
+    assert_true(read_png("t_frame-002.png", &img));
+    free(img.rgb);
+    assert_int_equal(access("t_renamed-003.png", F_OK), 0);
+    unlink("t_frame.png");
+    unlink("t_frame-002.png");
+    unlink("t_renamed-003.png");
+}
+
+static void test_unwritable_file(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    gopen_ws(1, "/nonexistent-dir/pic.png", GWS_TYPE_PNG);
+    gactivate_ws(1);
+    gdeactivate_ws(1);
+    n_captured = 0;
+    gclose_ws(1);
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 303);
+    Gop_st op;
+    ginq_op_st(&op);
+    assert_int_equal(op, GST_GKOP); /* closed anyway */
+    gclose_gks();
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fill_and_clip),
+        cmocka_unit_test(test_frames_and_names),
+        cmocka_unit_test(test_unwritable_file),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,115 @@
+/*
+ * test_state_errors.c -- table-driven: every function of gks_functions.def (GKS_FN rows)
+ * is called in every reachable operating state; where the state is not allowed, exactly
+ * the standard's state error (1..8) is reported with the function's identification and
+ * the state lists are unchanged. A GKS_FN row without a call here fails the build
+ * (the call table is indexed by the generated GFN_ enum and checked for holes).
+ * SGOP is not reachable until segments exist; its column is covered by the mask logic.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include "core_util.h"
+
+static const Gpoint pts3[3] = { { 0.1, 0.1 }, { 0.9, 0.1 }, { 0.5, 0.9 } };
+static const Gpoint_list list3 = { 3, (Gpoint *)pts3 };
+static const Glimit unit = { 0, 1, 0, 1 };
+
+static void c_OPKS(void) { gopen_gks(NULL, 0); }
+static void c_CLKS(void) { gclose_gks(); }
+static void c_OPWK(void) { gopen_ws(7, NULL, GWS_TYPE_NULL); }
+static void c_CLWK(void) { gclose_ws(1); }
+static void c_ACWK(void) { gactivate_ws(1); }
+static void c_DAWK(void) { gdeactivate_ws(1); }
+static void c_CLRWK(void) { gclear_ws(1, GFLAG_ALWAYS); }
+static void c_RSGWK(void) { gredraw_all_seg_ws(1); }
+static void c_UWK(void) { gupd_ws(1, GFLAG_PERFORM); }
+static void c_SDS(void) { gset_defer_st(1, GDEFER_BNIL, GIRG_SUPPR); }
+static void c_MSG(void) { gmessage(1, "hello"); }
+static void c_ESC(void)
+{
+    Gint ws = 1;
+    Gescape_in_data in = { 1, &ws, 0, NULL, 1, "x" };
+    gescape(GESC_SET_FILE_NAME, &in, NULL);
+}
+static void c_PL(void) { gpolyline(&list3); }
+static void c_FA(void) { gfill_area(&list3); }
+static void c_SPLCI(void) { gset_line_colr_ind(3); }
+static void c_SFACI(void) { gset_fill_colr_ind(3); }
+static void c_SCR(void) { Gcolr_rep c = { { 0.5, 0.5, 0.5 } }; gset_colr_rep(1, 3, &c); }
+static void c_SWN(void) { Glimit w = { -1, 1, -1, 1 }; gset_win(1, &w); }
+static void c_SVP(void) { Glimit v = { 0, 0.5, 0, 0.5 }; gset_vp(1, &v); }
+static void c_SELNT(void) { gsel_norm_tran(1); }
+static void c_SCLIP(void) { gset_clip_ind(GIND_NO_CLIP); }
+static void c_SWKWN(void) { gset_ws_win(1, &unit); }
+static void c_SWKVP(void) { Glimit v = { 0, 100, 0, 100 }; gset_ws_vp(1, &v); }
+
+typedef struct { void (*call)(void); unsigned states; const char *name; } row;
+#define S(x) (1u << (x))
+#define GKS_S_GKCL S(GST_GKCL)
+#define GKS_S_GKOP S(GST_GKOP)
+#define GKS_S_WSOP S(GST_WSOP)
+#define GKS_S_WSAC S(GST_WSAC)
+#define GKS_S_SGOP S(GST_SGOP)
+#define GKS_S_WSOPEN (GKS_S_WSOP | GKS_S_WSAC | GKS_S_SGOP)
+#define GKS_S_OPEN (GKS_S_GKOP | GKS_S_WSOPEN)
+#define GKS_FN_RESERVED(id, sym, name)
+#define GKS_FN(id, sym, name, states) [id] = { c_##sym, states, name },
+static const row rows[] = {
+#include "gks_functions.def"
+};
+#undef GKS_FN
+#undef GKS_FN_RESERVED
+
+/* The standard's state error for an allowed-state mask (independent of the library's). */
+static int expected_error(unsigned m)
+{
+    if (m == GKS_S_GKCL) return 1;
+    if (m == GKS_S_GKOP) return 2;
+    if (m == GKS_S_WSAC) return 3;
+    if (m == GKS_S_SGOP) return 4;
+    if (m == (GKS_S_WSAC | GKS_S_SGOP)) return 5;
+    if (m == (GKS_S_WSOP | GKS_S_WSAC)) return 6;
+    if (m == GKS_S_WSOPEN) return 7;
+    if (m == GKS_S_OPEN) return 8;
+    return -1;
+}
+
+static void test_every_function_every_state(void **unused)
+{
+    (void)unused;
+    int checked = 0;
+    for (size_t id = 0; id < sizeof rows / sizeof rows[0]; id++) {
+        if (!rows[id].call)
+            continue; /* reserved identification: no function yet */
+        assert_string_equal(gks_function_name((Gint)id), rows[id].name);
+        for (Gop_st st = GST_GKCL; st <= GST_WSAC; st++) {
+            enter_state(st);
+            snapshot before, after;
+            take_snapshot(&before);
+            rows[id].call();
+            if (rows[id].states & S(st)) {
+                for (int k = 0; k < n_captured; k++)
+                    assert_true(captured[k].err > 8); /* no state error when allowed */
+                continue;
+            }
+            take_snapshot(&after);
+            if (n_captured != 1 || captured[0].err != expected_error(rows[id].states) ||
+                captured[0].fct != (int)id)
+                fail_msg("%s in state %d: got %d errors, first %d (fct %d), want %d",
+                         rows[id].name, st, n_captured, n_captured ? captured[0].err : 0,
+                         n_captured ? captured[0].fct : -1, expected_error(rows[id].states));
+            assert_memory_equal(&before, &after, sizeof before);
+            checked++;
+        }
+    }
+    reset_gks();
+    assert_true(checked >= 40);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = { cmocka_unit_test(test_every_function_every_state) };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
