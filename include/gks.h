@@ -198,6 +198,49 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win);
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp);
 
 /* ---------------------------------------------------------------------------------
+ * Utility functions (matrices act on column vectors: x' = m[0][0]x + m[0][1]y + m[0][2])
+ * --------------------------------------------------------------------------------- */
+typedef Gfloat Gtran_matrix[2][3];   /* 2-D segment/insert transformation */
+typedef Gfloat Gtran_matrix3[3][4];  /* GKS-3D segment/insert transformation */
+typedef Gfloat Gmatrix3[4][4];       /* view orientation / mapping matrix, m[row][col] */
+typedef enum { GPROJ_PARAL, GPROJ_PERSPECT } Gproj_type;
+/* View mapping parameters (EVALUATE VIEW MAPPING MATRIX 3), all in VRC3 except proj_vp. */
+typedef struct {
+    Glimit win;              /* view window on the view plane (u, v) */
+    Glimit3 proj_vp;         /* projection viewport, NPC3 */
+    Gproj_type proj_type;
+    Gpoint3 proj_ref_point;  /* PRP (u, v, n) */
+    Gfloat view_plane, back_plane, front_plane; /* distances along n */
+} Gview_map3;
+
+/* EVALUATE TRANSFORMATION MATRIX: scale and rotate about the fixed point, then shift.
+ * With GCOORD_WC the fixed point and the shift are first mapped to NDC by the current
+ * normalization transformation (the shift by its scale part). Errors: 8, 308. */
+GKS_API void geval_tran_matrix(const Gpoint *fixed, const Gvec *shift, Gdouble angle,
+                               const Gvec *scale, Gcoord_switch sw, Gtran_matrix m);
+/* ACCUMULATE TRANSFORMATION MATRIX: result = (new transformation) after m_in. Errors: 8, 308. */
+GKS_API void gaccum_tran_matrix(const Gtran_matrix m_in, const Gpoint *fixed, const Gvec *shift,
+                                Gdouble angle, const Gvec *scale, Gcoord_switch sw,
+                                Gtran_matrix m_out);
+/* EVALUATE TRANSFORMATION MATRIX 3: scale, rotate about x, then y, then z (radians) about
+ * the fixed point, then shift. Errors: 8, 308. */
+GKS_API void geval_tran_matrix3(const Gpoint3 *fixed, const Gvec3 *shift, Gdouble x_ang,
+                                Gdouble y_ang, Gdouble z_ang, const Gvec3 *scale,
+                                Gcoord_switch sw, Gtran_matrix3 m);
+/* ACCUMULATE TRANSFORMATION MATRIX 3. Errors: 8, 308. */
+GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
+                                 const Gvec3 *shift, Gdouble x_ang, Gdouble y_ang,
+                                 Gdouble z_ang, const Gvec3 *scale, Gcoord_switch sw,
+                                 Gtran_matrix3 m_out);
+/* EVALUATE VIEW ORIENTATION MATRIX 3 (VRP, VPN, VUP as in PHIGS PEVOM3; the Fortran GEVVWM
+ * takes VUP before VPN). With GCOORD_WC the VRP is mapped to NDC3 by the current
+ * normalization transformation and VPN, VUP by its scale part. Errors: 8, 559, 560, 561, 308. */
+GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const Gvec3 *vup,
+                                    Gcoord_switch sw, Gint *err_ind, Gmatrix3 m);
+/* EVALUATE VIEW MAPPING MATRIX 3. Errors: 8, 2000, 551, 552, 308, 558, 562, 563, 564, 555. */
+GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m);
+
+/* ---------------------------------------------------------------------------------
  * Inquiry functions: never call the error handler; *err_ind receives the error number
  * (0 = none). List inquiries fill list->ints (capacity num_elems_appl_list) from the
  * 0-based start_pos and return the implementation's list length.

@@ -45,6 +45,40 @@ static void c_SCLIP(void) { gset_clip_ind(GIND_NO_CLIP); }
 static void c_SWKWN(void) { gset_ws_win(1, &unit); }
 static void c_SWKVP(void) { Glimit v = { 0, 100, 0, 100 }; gset_ws_vp(1, &v); }
 
+static const Gpoint org = { 0, 0 };
+static const Gvec zero = { 0, 0 }, one = { 1, 1 };
+static const Gpoint3 org3 = { 0, 0, 0 };
+static const Gvec3 zero3 = { 0, 0, 0 }, one3 = { 1, 1, 1 }, vpn3 = { 0, 0, 1 }, vup3 = { 0, 1, 0 };
+static void c_EVTM(void) { Gtran_matrix m; geval_tran_matrix(&org, &zero, 0.5, &one, GCOORD_NDC, m); }
+static void c_ACTM(void)
+{
+    Gtran_matrix in = { { 1, 0, 0 }, { 0, 1, 0 } }, m;
+    gaccum_tran_matrix(in, &org, &zero, 0.5, &one, GCOORD_NDC, m);
+}
+static void c_EVTM3(void)
+{
+    Gtran_matrix3 m;
+    geval_tran_matrix3(&org3, &zero3, 0.1, 0.2, 0.3, &one3, GCOORD_NDC, m);
+}
+static void c_ACTM3(void)
+{
+    Gtran_matrix3 in = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } }, m;
+    gaccum_tran_matrix3(in, &org3, &zero3, 0.1, 0.2, 0.3, &one3, GCOORD_NDC, m);
+}
+static void c_EVVWM(void)
+{
+    Gint err;
+    Gmatrix3 m;
+    geval_view_ori_matrix3(&org3, &vpn3, &vup3, GCOORD_NDC, &err, m);
+}
+static void c_EVPJM(void)
+{
+    Gint err;
+    Gmatrix3 m;
+    Gview_map3 v = { { 0, 1, 0, 1 }, { 0, 1, 0, 1, 0, 1 }, GPROJ_PARAL, { 0.5, 0.5, 5 }, 0, 0, 1 };
+    geval_view_map_matrix3(&v, &err, m);
+}
+
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))
 #define GKS_S_GKCL S(GST_GKCL)
