@@ -241,6 +241,45 @@ GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const 
 GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m);
 
 /* ---------------------------------------------------------------------------------
+ * GKS-3D output and viewing
+ * --------------------------------------------------------------------------------- */
+/* View representation (SET VIEW REPRESENTATION 3): orientation NDC3 -> VRC3, mapping
+ * VRC3 -> NPC3, view clip limits in NPC3 and the xy/back/front clip indicators. */
+typedef struct {
+    Gmatrix3 ori_matrix;
+    Gmatrix3 map_matrix;
+    Glimit3 clip_limit;
+    Gclip_ind xy_clip, back_clip, front_clip;
+} Gview_rep3;
+
+/* HLHSR modes (SET HLHSR MODE, per workstation). */
+enum {
+    GHLHSR_NONE = 0,        /* areas drawn in order */
+    GHLHSR_HIDDEN_LINE = 1, /* areas become outlines, hidden lines removed (not yet: 511) */
+    GHLHSR_ZBUFFER = 2,     /* z-buffer */
+    GHLHSR_PAINTER = 3,     /* depth sorted (not yet: 511) */
+    GHLHSR_RAYTRACE = 4     /* ray tracing (not yet: 511) */
+};
+#define GKS_MAX_VIEW_IND 20 /* view table entries 0..20; 0 is fixed */
+
+/* POLYLINE 3. Errors: 5, 100. */
+GKS_API void gpolyline3(const Gpoint_list3 *point_list);
+/* FILL AREA 3. Errors: 5, 100. */
+GKS_API void gfill_area3(const Gpoint_list3 *point_list);
+/* SET VIEW INDEX (a primitive attribute). Errors: 8, 514. */
+GKS_API void gset_view_ind(Gint view_ind);
+/* SET VIEW REPRESENTATION 3. Errors: 7, 20, 25, 33, 35, 36, 515, 553, 554, 308. */
+GKS_API void gset_view_rep3(Gint ws_id, Gint view_ind, const Gview_rep3 *rep);
+/* SET HLHSR MODE. Errors: 7, 20, 25, 33, 35, 36, 511. */
+GKS_API void gset_hlhsr_mode(Gint ws_id, Gint mode);
+/* SET WINDOW 3 / SET VIEWPORT 3. Errors: 8, 50, 51 (x/y min >= max, z min > max), 52. */
+GKS_API void gset_win3(Gint tran_num, const Glimit3 *win);
+GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp);
+GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind);
+GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3 *rep);
+GKS_API void ginq_hlhsr_mode(Gint ws_id, Gint *err_ind, Gint *mode);
+
+/* ---------------------------------------------------------------------------------
  * Inquiry functions: never call the error handler; *err_ind receives the error number
  * (0 = none). List inquiries fill list->ints (capacity num_elems_appl_list) from the
  * 0-based start_pos and return the implementation's list length.

@@ -31,6 +31,7 @@ typedef struct gks_desc_table {
 typedef struct gks_cur_attrs {
     int line_colr_ind;
     int fill_colr_ind;
+    int view_ind;
 } gks_cur_attrs;
 
 typedef struct gks_norm_tran {

@@ -37,36 +37,39 @@ static int dispatch(gks_prim *p, int colr_ind)
     return 0;
 }
 
-/* WC -> NDC by the current normalization transformation, homogeneous (w = 1). */
-static int normalize(const Gpoint *in, int n, double (*out)[4])
+/* WC3 -> NDC3 by the current normalization transformation, homogeneous (w = 1).
+ * Returns 0 if a coordinate is not finite (the primitive is then not drawn: GKS has no
+ * error for it), 1 otherwise. */
+static int normalize(const double (*in)[3], size_t n, double (*out)[4])
 {
     const gks_norm_tran *t = &gks_ctx()->sl->tran[gks_ctx()->sl->cur_tnr];
-    double sx = (t->vp.x_max - t->vp.x_min) / (t->win.x_max - t->win.x_min);
-    double sy = (t->vp.y_max - t->vp.y_min) / (t->win.y_max - t->win.y_min);
-    for (int i = 0; i < n; i++) {
-        out[i][0] = t->vp.x_min + (in[i].x - t->win.x_min) * sx;
-        out[i][1] = t->vp.y_min + (in[i].y - t->win.y_min) * sy;
-        out[i][2] = 0.0;
+    const double w[6] = { t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max,
+                          t->win.z_min, t->win.z_max };
+    const double v[6] = { t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max,
+                          t->vp.z_min, t->vp.z_max };
+    double m[3][4];
+    if (gks_xform_norm_tran3(w, v, m))
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        gks_xform_mat34_point(m, in[i], out[i]);
         out[i][3] = 1.0;
-        if (!isfinite(out[i][0]) || !isfinite(out[i][1]))
+        if (!isfinite(out[i][0]) || !isfinite(out[i][1]) || !isfinite(out[i][2]))
             return 0;
     }
     return 1;
 }
 
-/* The clip region in NDC: the current viewport if clipping is on, else the NDC unit
- * square (nothing outside NDC space reaches a workstation either way). */
+/* The clip region in NDC3: the current viewport 3 if clipping is on, else none (the
+ * workstation clips at its window in any case). */
 static void clip_region(gks_xform_clip *clip)
 {
     const gks_state_list *sl = gks_ctx()->sl;
     const Glimit3 *v = &sl->tran[sl->cur_tnr].vp;
-    double box[6] = { 0, 1, 0, 1, -1, 1 };
-    if (sl->clip_ind == GIND_CLIP) {
-        box[0] = v->x_min; box[1] = v->x_max;
-        box[2] = v->y_min; box[3] = v->y_max;
-    }
     gks_xform_clip_init(clip);
-    gks_xform_clip_add_box(clip, box, GKS_XFORM_CLIP_XY);
+    if (sl->clip_ind == GIND_CLIP) {
+        const double box[6] = { v->x_min, v->x_max, v->y_min, v->y_max, v->z_min, v->z_max };
+        gks_xform_clip_add_box(clip, box, GKS_XFORM_CLIP_ALL);
+    }
 }
 
 static void to_points(double (*h)[4], size_t n, Gpoint3 *pts)
@@ -75,13 +78,9 @@ static void to_points(double (*h)[4], size_t n, Gpoint3 *pts)
         pts[i] = (Gpoint3){ h[i][0], h[i][1], h[i][2] };
 }
 
-GKS_API void gpolyline(const Gpoint_list *point_list)
+/* POLYLINE (3) after the argument checks: wc holds n >= 2 points. */
+static void output_polyline(int fctid, size_t n, const double (*wc)[3])
 {
-    if (gks_check_state(GFN_PL))
-        return;
-    if (!point_list || point_list->num_points < 2 || !point_list->points)
-        GKS_FAIL(100, GFN_PL);
-    size_t n = (size_t)point_list->num_points;
     double (*h)[4] = gks_alloc_array(n, sizeof *h);
     double (*out)[4] = gks_alloc_array(2 * (n - 1), sizeof *out);
     size_t *len = gks_alloc_array(n - 1, sizeof *len);
@@ -89,8 +88,7 @@ GKS_API void gpolyline(const Gpoint_list *point_list)
     int err = 0;
     if (!h || !out || !len || !pts) {
         err = 300;
-    } else if (normalize(point_list->points, (int)n, h)) {
-        /* Non-finite coordinates: the primitive is not drawn (no standard error). */
+    } else if (normalize(wc, n, h)) {
         gks_xform_clip clip;
         size_t n_out, n_pieces;
         clip_region(&clip);
@@ -100,7 +98,8 @@ GKS_API void gpolyline(const Gpoint_list *point_list)
             size_t off = 0;
             for (size_t k = 0; k < n_pieces && !err; k++) {
                 gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1,
-                               .n_points = (int)len[k], .pts = pts + off };
+                               .n_points = (int)len[k], .pts = pts + off,
+                               .view_ind = gks_ctx()->sl->attrs.view_ind };
                 p.loop_counts = &p.n_points;
                 err = dispatch(&p, gks_ctx()->sl->attrs.line_colr_ind);
                 off += len[k];
@@ -112,23 +111,19 @@ GKS_API void gpolyline(const Gpoint_list *point_list)
     gks_free(len);
     gks_free(pts);
     if (err)
-        gks_error_report(err, GFN_PL);
+        gks_error_report(err, fctid);
 }
 
-GKS_API void gfill_area(const Gpoint_list *point_list)
+/* FILL AREA (3) after the argument checks: wc holds n >= 3 points. */
+static void output_fill_area(int fctid, size_t n, const double (*wc)[3])
 {
-    if (gks_check_state(GFN_FA))
-        return;
-    if (!point_list || point_list->num_points < 3 || !point_list->points)
-        GKS_FAIL(100, GFN_FA);
-    size_t n = (size_t)point_list->num_points;
     double (*h)[4] = gks_alloc_array(n, sizeof *h);
     double (*out)[4] = NULL;
     Gpoint3 *pts = NULL;
     int err = 0;
     if (!h) {
         err = 300;
-    } else if (normalize(point_list->points, (int)n, h)) {
+    } else if (normalize(wc, n, h)) {
         gks_xform_clip clip;
         size_t out_len, n_out = 0;
         clip_region(&clip);
@@ -145,7 +140,8 @@ GKS_API void gfill_area(const Gpoint_list *point_list)
                 to_points(out, n_out, pts);
                 int cnt = (int)out_len;
                 gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = 1, .loop_counts = &cnt,
-                               .n_points = cnt, .pts = pts };
+                               .n_points = cnt, .pts = pts,
+                               .view_ind = gks_ctx()->sl->attrs.view_ind };
                 err = dispatch(&p, gks_ctx()->sl->attrs.fill_colr_ind);
             }
         }
@@ -154,7 +150,65 @@ GKS_API void gfill_area(const Gpoint_list *point_list)
     gks_free(out);
     gks_free(pts);
     if (err)
-        gks_error_report(err, GFN_FA);
+        gks_error_report(err, fctid);
+}
+
+/* Copy a 2-D or 3-D point list into WC3 (z = 0 for 2-D), NULL on storage overflow. */
+static double (*wc_points(const Gpoint *p2, const Gpoint3 *p3, size_t n))[3]
+{
+    double (*wc)[3] = gks_alloc_array(n, sizeof *wc);
+    for (size_t i = 0; wc && i < n; i++) {
+        wc[i][0] = p2 ? p2[i].x : p3[i].x;
+        wc[i][1] = p2 ? p2[i].y : p3[i].y;
+        wc[i][2] = p2 ? 0.0 : p3[i].z;
+    }
+    return wc;
+}
+
+static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 2 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    double (*wc)[3] = wc_points(p2, p3, (size_t)n);
+    if (!wc)
+        GKS_FAIL(300, fctid);
+    output_polyline(fctid, (size_t)n, (const double (*)[3])wc);
+    gks_free(wc);
+}
+
+static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 3 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    double (*wc)[3] = wc_points(p2, p3, (size_t)n);
+    if (!wc)
+        GKS_FAIL(300, fctid);
+    output_fill_area(fctid, (size_t)n, (const double (*)[3])wc);
+    gks_free(wc);
+}
+
+GKS_API void gpolyline(const Gpoint_list *l)
+{
+    polyline_any(GFN_PL, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gpolyline3(const Gpoint_list3 *l)
+{
+    polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+}
+
+GKS_API void gfill_area(const Gpoint_list *l)
+{
+    fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gfill_area3(const Gpoint_list3 *l)
+{
+    fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
 }
 
 GKS_API void gset_line_colr_ind(Gint colr_ind)

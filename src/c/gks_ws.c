@@ -59,6 +59,14 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
     ws->tran_upd_st = GUPD_NOT_PEND;
     ws->req_win = ws->cur_win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
     ws->req_vp = ws->cur_vp = (Glimit3){ 0, d->dc_x, 0, d->dc_y, 0, 1 };
+    for (int v = 0; v <= GKS_MAX_VIEW_IND; v++) {
+        Gview_rep3 *r = &ws->views[v];
+        for (int i = 0; i < 4; i++)
+            r->ori_matrix[i][i] = r->map_matrix[i][i] = 1;
+        r->clip_limit = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+        r->xy_clip = r->back_clip = r->front_clip = GIND_CLIP;
+    }
+    ws->hlhsr_mode = GHLHSR_NONE;
     return ws;
 }
 

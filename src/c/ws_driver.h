@@ -27,6 +27,7 @@ typedef struct gks_ws_desc {
     const Grgb *pred_colr;
     Girg_mode default_irg;        /* default implicit regeneration mode */
     Gdefer_mode default_defer;
+    unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
 } gks_ws_desc;
 
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization and
@@ -40,8 +41,7 @@ typedef struct gks_prim {
     int n_points;
     const Gpoint3 *pts;       /* NDC3 */
     Grgb colour;
-    int clip_on;              /* clipping indicator */
-    Glimit3 clip;             /* clipping volume in NDC3 (viewport of the tnr) */
+    int view_ind;             /* view index attribute: the ws's view representation */
 } gks_prim;
 
 /* Workstation state list (ISO 7942 6.6): owned by the core, created at OPEN WORKSTATION. */
@@ -58,6 +58,8 @@ struct gks_ws {
     Glimit3 req_win, cur_win;     /* workstation window, NPC */
     Glimit3 req_vp, cur_vp;       /* workstation viewport, DC */
     Grgb *colr;                   /* colour table, desc->n_colr entries */
+    Gview_rep3 views[GKS_MAX_VIEW_IND + 1]; /* view table; 0 fixed: identity, NPC cube */
+    int hlhsr_mode;
     unsigned char *colr_defined;
     void *priv;                   /* the driver's own data */
 };

@@ -20,6 +20,7 @@ static const gks_ws_desc null_desc = {
     .pred_colr = null_colours,
     .default_irg = GIRG_ALLOWED,
     .default_defer = GDEFER_ASAP,
+    .hlhsr_modes = 1u << GHLHSR_NONE,
 };
 
 const gks_ws_driver gks_ws_null_driver = {

@@ -143,7 +143,8 @@ static int png_update(gks_ws *ws)
     return 0;
 }
 
-/* NDC3 -> image pixels: workstation window -> viewport, minus the viewport origin. */
+/* NPC3 -> image pixels and depth: workstation window -> viewport (DC), minus the
+ * viewport origin; DC z in [0,1], larger = nearer. */
 static int ws_matrix(const gks_ws *ws, double m[4][4])
 {
     const double win[6] = { ws->cur_win.x_min, ws->cur_win.x_max, ws->cur_win.y_min,
@@ -153,21 +154,43 @@ static int ws_matrix(const gks_ws *ws, double m[4][4])
     return gks_xform_ws_tran3(win, vp, m);
 }
 
+/* The view pipeline of a primitive: NDC3 -> NPC3 (homogeneous) by the view
+ * representation of its view index (an index not in the table uses view 0), and the
+ * clip region in homogeneous NPC3: the view clip limits where the indicators are on,
+ * intersected with the workstation window (clipping there is mandatory). */
+static int view_setup(const gks_ws *ws, int view_ind, double npc[4][4], gks_xform_clip *clip)
+{
+    const Gview_rep3 *v = &ws->views[view_ind >= 0 && view_ind <= GKS_MAX_VIEW_IND ? view_ind : 0];
+    double ori[4][4], map[4][4];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            ori[i][j] = v->ori_matrix[i][j];
+            map[i][j] = v->map_matrix[i][j];
+        }
+    gks_xform_multiply(map, ori, npc);
+    const double lim[6] = { v->clip_limit.x_min, v->clip_limit.x_max, v->clip_limit.y_min,
+                            v->clip_limit.y_max, v->clip_limit.z_min, v->clip_limit.z_max };
+    const double win[6] = { ws->cur_win.x_min, ws->cur_win.x_max, ws->cur_win.y_min,
+                            ws->cur_win.y_max, ws->cur_win.z_min, ws->cur_win.z_max };
+    unsigned flags = (v->xy_clip == GIND_CLIP ? GKS_XFORM_CLIP_XY : 0) |
+                     (v->back_clip == GIND_CLIP ? GKS_XFORM_CLIP_BACK : 0) |
+                     (v->front_clip == GIND_CLIP ? GKS_XFORM_CLIP_FRONT : 0);
+    gks_xform_clip_init(clip);
+    if (flags && gks_xform_clip_add_box(clip, lim, flags))
+        return 1;
+    return gks_xform_clip_add_box(clip, win, GKS_XFORM_CLIP_ALL);
+}
+
 static int png_primitive(gks_ws *ws, const gks_prim *prim)
 {
     png_ws *p = ws->priv;
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
-    double m[4][4];
-    if (ws_matrix(ws, m))
-        return 0; /* degenerate workstation transformation: nothing visible */
-    /* Mandatory clip at the workstation window (x, y), in NDC, homogeneous. */
+    double m[4][4], npc[4][4];
     gks_xform_clip clip;
-    const double box[6] = { ws->cur_win.x_min, ws->cur_win.x_max, ws->cur_win.y_min,
-                            ws->cur_win.y_max, 0, 1 };
-    gks_xform_clip_init(&clip);
-    gks_xform_clip_add_box(&clip, box, GKS_XFORM_CLIP_XY);
+    if (ws_matrix(ws, m) || view_setup(ws, prim->view_ind, npc, &clip))
+        return 0; /* degenerate transformation: nothing visible */
 
     size_t n = (size_t)prim->n_points;
     size_t cap = prim->kind == GKS_PRIM_POLYLINE ? 2 * n : 4 * n + 16;
@@ -181,10 +204,9 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
         err = 300;
         goto done;
     }
-    for (size_t i = 0; i < n; i++) {
-        h[i][0] = prim->pts[i].x; h[i][1] = prim->pts[i].y;
-        h[i][2] = prim->pts[i].z; h[i][3] = 1;
-    }
+    for (size_t i = 0; i < n; i++)
+        gks_xform_apply(npc, (const double[4]){ prim->pts[i].x, prim->pts[i].y, prim->pts[i].z, 1 },
+                        h[i]);
     size_t n_out = 0, n_pieces = 0;
     int r;
     if (prim->kind == GKS_PRIM_POLYLINE) {
@@ -215,14 +237,18 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     if (r)
         goto done;
     for (size_t i = 0; i < n_out; i++) {
-        double q[3];
-        gks_xform_point(m, (const double[3]){ out[i][0], out[i][1], out[i][2] }, q);
+        double c[3], q[3];
+        if (gks_xform_divide(out[i], c))
+            goto done; /* cannot happen after clipping with wmin > 0 */
+        gks_xform_point(m, c, q);
         pts[i] = (gks_raster_pt){ q[0], q[1], q[2] };
     }
+    gks_raster_zmode zmode = ws->hlhsr_mode == GHLHSR_ZBUFFER ? GKS_RASTER_Z_TEST : GKS_RASTER_Z_NONE;
     const float rgb[3] = { (float)prim->colour.red, (float)prim->colour.green,
                            (float)prim->colour.blue };
     if (prim->kind == GKS_PRIM_POLYLINE) {
-        gks_raster_line la = { .rgb = { rgb[0], rgb[1], rgb[2] }, .width = 1, .type = 1 };
+        gks_raster_line la = { .rgb = { rgb[0], rgb[1], rgb[2] }, .width = 1, .type = 1,
+                               .zmode = zmode };
         size_t off = 0;
         for (size_t k = 0; k < n_pieces; k++) {
             gks_raster_polyline(fb, len[k], pts + off, &la);
@@ -233,7 +259,8 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
         int nl = 0;
         for (size_t k = 0; k < n_pieces; k++)
             counts[nl++] = (int)len[k];
-        gks_raster_fill fa = { .style = GKS_RASTER_SOLID, .rgb = { rgb[0], rgb[1], rgb[2] } };
+        gks_raster_fill fa = { .style = GKS_RASTER_SOLID, .rgb = { rgb[0], rgb[1], rgb[2] },
+                               .zmode = zmode };
         if (n_out >= 3)
             gks_raster_fill_area(fb, nl, counts, pts, &fa);
     }
@@ -275,6 +302,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
         .default_defer = GDEFER_ASAP,                                                \
+        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_ZBUFFER),                 \
     }
 
 static const gks_ws_desc png_desc = PNG_DESC(GWS_TYPE_PNG, "png", 1024);

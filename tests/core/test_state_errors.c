@@ -79,6 +79,22 @@ static void c_EVPJM(void)
     geval_view_map_matrix3(&v, &err, m);
 }
 
+static const Gpoint3 tri3[3] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.5, 0.9, 0.5 } };
+static const Gpoint_list3 list3d = { 3, (Gpoint3 *)tri3 };
+static void c_PL3(void) { gpolyline3(&list3d); }
+static void c_FA3(void) { gfill_area3(&list3d); }
+static void c_SVWI(void) { gset_view_ind(1); }
+static void c_SVWR(void)
+{
+    Gview_rep3 r = { .clip_limit = { 0, 1, 0, 1, 0, 1 } };
+    for (int i = 0; i < 4; i++)
+        r.ori_matrix[i][i] = r.map_matrix[i][i] = 1;
+    gset_view_rep3(1, 1, &r);
+}
+static void c_SHRM(void) { gset_hlhsr_mode(1, GHLHSR_NONE); }
+static void c_SW3(void) { Glimit3 w = { -1, 1, -1, 1, -1, 1 }; gset_win3(1, &w); }
+static void c_SV3(void) { Glimit3 v = { 0, 0.5, 0, 0.5, 0, 1 }; gset_vp3(1, &v); }
+
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))
 #define GKS_S_GKCL S(GST_GKCL)
