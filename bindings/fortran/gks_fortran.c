@@ -1,0 +1,523 @@
+/*
+ * gks_fortran.c -- the FORTRAN 77 binding (ISO 8651-1 names) as thin C wrappers over the
+ * C binding (gks.h). Each entry point dereferences its arguments, converts REAL to double
+ * and 1-based list positions to 0-based, takes each CHARACTER argument as a pointer plus
+ * a size_t hidden length after all explicit arguments (gfortran >= 8, ifx, flang), strips
+ * trailing blanks from input text and blank-pads output text.
+ *
+ * ERROR HANDLING: fortran_err_trampoline is installed as the core's handler when the
+ * library is loaded (constructor) and again by GOPKS. It calls the Fortran-callable
+ * GERHND(ERRNR, FCTID, ERRFIL), ERRFIL being the unit given to GOPKS (0 before GOPKS).
+ * The library's GERHND (gerhnd.f, its own object file) calls GERLOG (gerlog.f); a
+ * program that defines its own SUBROUTINE GERHND replaces it at link time (static
+ * archive: the member is never pulled in; shared library: ELF symbol interposition).
+ */
+#include "gks.h"
+#include "gks_binding.h"
+#include "FC.h"
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FAPI __attribute__((visibility("default")))
+#define FNAME(lower, UPPER) FC_GLOBAL(lower, UPPER)
+
+typedef int fint;
+typedef float freal;
+
+/* The Fortran ERROR HANDLING subroutine (gerhnd.f or the application's own). */
+extern void FNAME(gerhnd, GERHND)(const fint *errnr, const fint *fctid, const fint *errfil);
+
+/* Parse a whole decimal integer (surrounding blanks allowed); 0 = ok. */
+static int parse_int(const char *s, size_t len, long *out)
+{
+    while (len > 0 && s[len - 1] == ' ')
+        len--;
+    while (len > 0 && *s == ' ') {
+        s++;
+        len--;
+    }
+    if (len == 0 || len > 20)
+        return -1;
+    char buf[24];
+    memcpy(buf, s, len);
+    buf[len] = '\0';
+    char *end = NULL;
+    errno = 0;
+    long v = strtol(buf, &end, 10);
+    if (errno || *end != '\0' || v < INT32_MIN || v > INT32_MAX)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* The core's handler: err_file is the decimal text of the Fortran unit (NULL before OPEN
+ * GKS: unit 0). When GKS was opened from C with a file name, the C default handles it. */
+static void fortran_err_trampoline(Gint err_num, Gint func_num, const char *err_file)
+{
+    long unit = 0;
+    if (err_file && parse_int(err_file, strlen(err_file), &unit)) {
+        gerr_hand(err_num, func_num, err_file);
+        return;
+    }
+    fint e = err_num, f = func_num, u = (fint)unit;
+    FNAME(gerhnd, GERHND)(&e, &f, &u);
+}
+
+static void install_handler(void)
+{
+    gset_err_hand(fortran_err_trampoline, NULL);
+}
+
+/* Errors raised before GOPKS (e.g. GOPWK in state GKCL) also reach GERHND. */
+__attribute__((constructor)) static void gks_fortran_init(void)
+{
+    install_handler();
+}
+
+/* Out of memory inside the binding: report error 300 through the current handler. */
+static void report_nomem(Gint fctid)
+{
+    Gerr_handler h = NULL;
+    gset_err_hand(NULL, &h);
+    gset_err_hand(h, NULL);
+    h(300, fctid, NULL); /* the unit is unknown here: GERHND receives ERRFIL = 0 */
+}
+
+/* The binding's one allocation funnel: n * size bytes, overflow checked; NULL on failure. */
+static void *alloc_array(size_t n, size_t size)
+{
+    if (size != 0 && n > SIZE_MAX / size)
+        return NULL;
+    return malloc(n * size > 0 ? n * size : 1);
+}
+
+/* Length without trailing blanks. */
+static size_t trimmed(const char *s, size_t len)
+{
+    while (len > 0 && s[len - 1] == ' ')
+        len--;
+    return len;
+}
+
+/* NUL-terminated copy of the first len bytes (caller frees); NULL when out of memory. */
+static char *str_dup_n(const char *s, size_t len)
+{
+    if (len == SIZE_MAX)
+        return NULL;
+    char *p = alloc_array(len + 1, 1);
+    if (!p)
+        return NULL;
+    if (len)
+        memcpy(p, s, len);
+    p[len] = '\0';
+    return p;
+}
+
+/* Blank-padded copy of a C string into a Fortran CHARACTER; returns the copied length. */
+static fint fill_fstr(const char *src, char *dst, size_t dlen)
+{
+    size_t n = strlen(src);
+    if (n > dlen)
+        n = dlen;
+    memcpy(dst, src, n);
+    memset(dst + n, ' ', dlen - n);
+    return (fint)n;
+}
+
+/* Point list from Fortran REAL arrays (NULL points when n <= 0: the core reports 100). */
+static int make_points(fint n, const freal *px, const freal *py, Gpoint_list *pl, Gint fctid)
+{
+    pl->num_points = n;
+    pl->points = NULL;
+    if (n <= 0)
+        return 0;
+    if (!(pl->points = alloc_array((size_t)n, sizeof(Gpoint)))) {
+        report_nomem(fctid);
+        return -1;
+    }
+    for (fint i = 0; i < n; i++) {
+        pl->points[i].x = px[i];
+        pl->points[i].y = py[i];
+    }
+    return 0;
+}
+
+static Glimit make_limit(const freal *x0, const freal *x1, const freal *y0, const freal *y1)
+{
+    Glimit l = { *x0, *x1, *y0, *y1 };
+    return l;
+}
+
+static void put_limit(const Glimit *l, freal *a)
+{
+    a[0] = (freal)l->x_min;
+    a[1] = (freal)l->x_max;
+    a[2] = (freal)l->y_min;
+    a[3] = (freal)l->y_max;
+}
+
+/* ------------------------------------------------------------------ control */
+/* GOPKS(ERRFIL, BUFA): OPEN GKS; ERRFIL is a Fortran unit, BUFA < 0 = default. */
+FAPI void FNAME(gopks, GOPKS)(const fint *errfil, const fint *bufa)
+{
+    install_handler();
+    gks_open_gks_unit(*errfil, *bufa < 0 ? 0 : (size_t)*bufa);
+}
+
+FAPI void FNAME(gclks, GCLKS)(void) { gclose_gks(); }
+FAPI void FNAME(geclks, GECLKS)(void) { gemergency_close_gks(); }
+
+/* GOPWK(WKID, CONID, WTYPE): the integer CONID is passed as its decimal text. */
+FAPI void FNAME(gopwk, GOPWK)(const fint *wkid, const fint *conid, const fint *wtype)
+{
+    char conn[16];
+    snprintf(conn, sizeof conn, "%d", *conid);
+    gopen_ws(*wkid, conn, *wtype);
+}
+
+FAPI void FNAME(gclwk, GCLWK)(const fint *wkid) { gclose_ws(*wkid); }
+FAPI void FNAME(gacwk, GACWK)(const fint *wkid) { gactivate_ws(*wkid); }
+FAPI void FNAME(gdawk, GDAWK)(const fint *wkid) { gdeactivate_ws(*wkid); }
+FAPI void FNAME(grsgwk, GRSGWK)(const fint *wkid) { gredraw_all_seg_ws(*wkid); }
+
+FAPI void FNAME(gclrwk, GCLRWK)(const fint *wkid, const fint *cofl)
+{
+    gclear_ws(*wkid, (Gctrl_flag)*cofl);
+}
+
+FAPI void FNAME(guwk, GUWK)(const fint *wkid, const fint *regfl)
+{
+    gupd_ws(*wkid, (Gupd_regen_flag)*regfl);
+}
+
+FAPI void FNAME(gsds, GSDS)(const fint *wkid, const fint *defmod, const fint *regmod)
+{
+    gset_defer_st(*wkid, (Gdefer_mode)*defmod, (Girg_mode)*regmod);
+}
+
+static void message_n(fint wkid, const char *mess, size_t len)
+{
+    char *s = str_dup_n(mess, trimmed(mess, len));
+    if (!s) {
+        report_nomem(GFN_MSG);
+        return;
+    }
+    gmessage(wkid, s);
+    free(s);
+}
+
+/* GMSG(WKID, MESS) */
+FAPI void FNAME(gmsg, GMSG)(const fint *wkid, const char *mess, size_t mess_len)
+{
+    message_n(*wkid, mess, mess_len);
+}
+
+/* GMSGS(WKID, LSTR, MESS): FORTRAN 77 subset form, LSTR characters of MESS. */
+FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *mess,
+                              size_t mess_len)
+{
+    size_t n = *lstr < 0 ? 0 : (size_t)*lstr;
+    message_n(*wkid, mess, n < mess_len ? n : mess_len);
+}
+
+/* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). Escape -101 (set file name): IDR(1) holds the
+ * workstation identifier in columns 1-10 (I10), IDR(2..LIDR) the file name, each record
+ * blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
+ * No escape returns data: LODR = 0. */
+FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
+                            const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
+                            size_t odr_len)
+{
+    (void)mlodr;
+    (void)odr;
+    (void)odr_len;
+    *lodr = 0;
+    Gescape_in_data in = { 0, NULL, 0, NULL, 0, NULL };
+    Gescape_out_data out = { 0, NULL, 0, NULL };
+    fint nrec = *lidr;
+    long ws = 0;
+    Gint wsid = 0;
+    char *name = NULL;
+    if (*fctid == GESC_SET_FILE_NAME && nrec >= 2 && idr_len > 0 &&
+        !parse_int(idr, idr_len < 10 ? idr_len : 10, &ws)) {
+        wsid = (Gint)ws;
+        size_t total = 0;
+        size_t nr = (size_t)(nrec - 1);
+        size_t cap = nr < SIZE_MAX / idr_len ? nr * idr_len : SIZE_MAX;
+        if (cap == SIZE_MAX || !(name = alloc_array(cap + 1, 1))) {
+            report_nomem(GFN_ESC);
+            return;
+        }
+        for (fint r = 1; r < nrec; r++) {
+            const char *rec = idr + (size_t)r * idr_len;
+            size_t n = trimmed(rec, idr_len);
+            memcpy(name + total, rec, n);
+            total += n;
+        }
+        name[total] = '\0';
+        in.num_ints = 1;
+        in.ints = &wsid;
+        in.str = name;
+        in.str_len = total;
+    }
+    gescape(*fctid, &in, &out);
+    free(name);
+}
+
+/* ------------------------------------------------------------------ output and attributes */
+FAPI void FNAME(gpl, GPL)(const fint *n, const freal *px, const freal *py)
+{
+    Gpoint_list pl;
+    if (make_points(*n, px, py, &pl, GFN_PL))
+        return;
+    gpolyline(&pl);
+    free(pl.points);
+}
+
+FAPI void FNAME(gfa, GFA)(const fint *n, const freal *px, const freal *py)
+{
+    Gpoint_list pl;
+    if (make_points(*n, px, py, &pl, GFN_FA))
+        return;
+    gfill_area(&pl);
+    free(pl.points);
+}
+
+FAPI void FNAME(gsplci, GSPLCI)(const fint *coli) { gset_line_colr_ind(*coli); }
+FAPI void FNAME(gsfaci, GSFACI)(const fint *coli) { gset_fill_colr_ind(*coli); }
+
+FAPI void FNAME(gscr, GSCR)(const fint *wkid, const fint *ci, const freal *cr, const freal *cg,
+                            const freal *cb)
+{
+    Gcolr_rep r;
+    r.rgb.red = *cr;
+    r.rgb.green = *cg;
+    r.rgb.blue = *cb;
+    gset_colr_rep(*wkid, *ci, &r);
+}
+
+/* ------------------------------------------------------------------ transformations */
+FAPI void FNAME(gswn, GSWN)(const fint *tnr, const freal *x0, const freal *x1, const freal *y0,
+                            const freal *y1)
+{
+    Glimit l = make_limit(x0, x1, y0, y1);
+    gset_win(*tnr, &l);
+}
+
+FAPI void FNAME(gsvp, GSVP)(const fint *tnr, const freal *x0, const freal *x1, const freal *y0,
+                            const freal *y1)
+{
+    Glimit l = make_limit(x0, x1, y0, y1);
+    gset_vp(*tnr, &l);
+}
+
+FAPI void FNAME(gselnt, GSELNT)(const fint *tnr) { gsel_norm_tran(*tnr); }
+FAPI void FNAME(gsclip, GSCLIP)(const fint *clsw) { gset_clip_ind((Gclip_ind)*clsw); }
+
+FAPI void FNAME(gswkwn, GSWKWN)(const fint *wkid, const freal *x0, const freal *x1,
+                                const freal *y0, const freal *y1)
+{
+    Glimit l = make_limit(x0, x1, y0, y1);
+    gset_ws_win(*wkid, &l);
+}
+
+FAPI void FNAME(gswkvp, GSWKVP)(const fint *wkid, const freal *x0, const freal *x1,
+                                const freal *y0, const freal *y1)
+{
+    Glimit l = make_limit(x0, x1, y0, y1);
+    gset_ws_vp(*wkid, &l);
+}
+
+/* ------------------------------------------------------------------ inquiries */
+typedef void (*list_inq)(Gint, Gint, Gint *, Gint_list *, Gint *);
+
+/* Fortran list inquiry: N = element wanted (1-based), N = 0 only the count. */
+static void list_elem(list_inq f, fint n, fint *errind, fint *ol, fint *elem)
+{
+    Gint v = 0, len = 0;
+    Gint_list l = { 0, &v };
+    f(n > 0 ? 1 : 0, n > 0 ? n - 1 : (n == 0 ? 0 : -1), errind, &l, &len);
+    *ol = len;
+    if (*errind == 0 && n > len)
+        *errind = 2002; /* the C binding accepts start 0 of an empty list */
+    if (*errind == 0 && n > 0)
+        *elem = v;
+}
+
+FAPI void FNAME(gqops, GQOPS)(fint *opsta)
+{
+    Gop_st s = GST_GKCL;
+    ginq_op_st(&s);
+    *opsta = (fint)s;
+}
+
+FAPI void FNAME(gqlvks, GQLVKS)(fint *errind, fint *level)
+{
+    Glevel l = GLEVEL_0A;
+    ginq_level_gks(errind, &l);
+    *level = (fint)l;
+}
+
+FAPI void FNAME(gqewk, GQEWK)(const fint *n, fint *errind, fint *number, fint *wktyp)
+{
+    list_elem(ginq_list_avail_ws_types, *n, errind, number, wktyp);
+}
+
+FAPI void FNAME(gqopwk, GQOPWK)(const fint *n, fint *errind, fint *ol, fint *wkid)
+{
+    list_elem(ginq_set_open_wss, *n, errind, ol, wkid);
+}
+
+FAPI void FNAME(gqacwk, GQACWK)(const fint *n, fint *errind, fint *ol, fint *wkid)
+{
+    list_elem(ginq_set_active_wss, *n, errind, ol, wkid);
+}
+
+FAPI void FNAME(gqwkm, GQWKM)(fint *errind, fint *mxopwk, fint *mxacwk, fint *mxwkas)
+{
+    Gws_max_nums m = { 0, 0, 0 };
+    ginq_ws_max_nums(errind, &m);
+    *mxopwk = m.simult_open;
+    *mxacwk = m.simult_active;
+    *mxwkas = m.assoc_seg;
+}
+
+FAPI void FNAME(gqmntn, GQMNTN)(fint *errind, fint *maxtnr)
+{
+    ginq_max_norm_tran_num(errind, maxtnr);
+}
+
+/* GQWKC(WKID, ERRIND, CONID, WTYPE): CONID = the connection identifier read as an
+ * integer; -1 when it is not one (a workstation opened from C with a file name). */
+FAPI void FNAME(gqwkc, GQWKC)(const fint *wkid, fint *errind, fint *conid, fint *wtype)
+{
+    char conn[32] = "";
+    size_t len = 0;
+    Gint t = 0;
+    long v = -1;
+    ginq_ws_conn_type(*wkid, sizeof conn, errind, conn, &len, &t);
+    if (*errind)
+        return;
+    if (len >= sizeof conn || parse_int(conn, strlen(conn), &v))
+        v = -1;
+    *conid = (fint)v;
+    *wtype = t;
+}
+
+FAPI void FNAME(gqwks, GQWKS)(const fint *wkid, fint *errind, fint *state)
+{
+    Gws_st s = GWS_INACTIVE;
+    ginq_ws_st(*wkid, errind, &s);
+    *state = (fint)s;
+}
+
+FAPI void FNAME(gqwkca, GQWKCA)(const fint *wtype, fint *errind, fint *wkcat)
+{
+    Gws_cat c = GCAT_OUT;
+    ginq_ws_cat(*wtype, errind, &c);
+    *wkcat = (fint)c;
+}
+
+FAPI void FNAME(gqwkcl, GQWKCL)(const fint *wtype, fint *errind, fint *vrtype)
+{
+    Gws_class c = GCLASS_VEC;
+    ginq_ws_class(*wtype, errind, &c);
+    *vrtype = (fint)c;
+}
+
+FAPI void FNAME(gqdsp, GQDSP)(const fint *wtype, fint *errind, fint *dcunit, freal *rxp,
+                              freal *ryp, fint *lx, fint *ly)
+{
+    Gdisp_space_size d;
+    memset(&d, 0, sizeof d);
+    ginq_disp_space_size(*wtype, errind, &d);
+    *dcunit = (fint)d.dc_units;
+    *rxp = (freal)d.size_dc.size_x;
+    *ryp = (freal)d.size_dc.size_y;
+    *lx = d.size_raster.size_x;
+    *ly = d.size_raster.size_y;
+}
+
+FAPI void FNAME(gqwkdu, GQWKDU)(const fint *wkid, fint *errind, fint *defmod, fint *regmod,
+                                fint *dempty, fint *nframe)
+{
+    Gdefer_mode dm = GDEFER_ASAP;
+    Girg_mode im = GIRG_SUPPR;
+    Gdisp_space_empty de = GDISP_EMPTY;
+    Gnew_frame_nec_upd nf = GNEW_NO;
+    ginq_ws_defer_upd_sts(*wkid, errind, &dm, &im, &de, &nf);
+    *defmod = (fint)dm;
+    *regmod = (fint)im;
+    *dempty = (fint)de;
+    *nframe = (fint)nf;
+}
+
+FAPI void FNAME(gqcntn, GQCNTN)(fint *errind, fint *ctnr)
+{
+    ginq_cur_norm_tran_num(errind, ctnr);
+}
+
+/* GQNT(NTNR, ERRIND, WINDOW(4), VIEWPT(4)): XMIN, XMAX, YMIN, YMAX. */
+FAPI void FNAME(gqnt, GQNT)(const fint *ntnr, fint *errind, freal *window, freal *viewpt)
+{
+    Gtran t;
+    memset(&t, 0, sizeof t);
+    ginq_norm_tran(*ntnr, errind, &t);
+    put_limit(&t.win, window);
+    put_limit(&t.vp, viewpt);
+}
+
+FAPI void FNAME(gqclip, GQCLIP)(fint *errind, fint *clsw, freal *clrect)
+{
+    Gclip c;
+    memset(&c, 0, sizeof c);
+    ginq_clip(errind, &c);
+    *clsw = (fint)c.clip_ind;
+    put_limit(&c.clip_rect, clrect);
+}
+
+FAPI void FNAME(gqplci, GQPLCI)(fint *errind, fint *coli) { ginq_line_colr_ind(errind, coli); }
+FAPI void FNAME(gqfaci, GQFACI)(fint *errind, fint *coli) { ginq_fill_colr_ind(errind, coli); }
+
+FAPI void FNAME(gqcr, GQCR)(const fint *wkid, const fint *coli, const fint *type, fint *errind,
+                            freal *red, freal *green, freal *blue)
+{
+    Gcolr_rep r;
+    memset(&r, 0, sizeof r);
+    ginq_colr_rep(*wkid, *coli, (Ginq_type)*type, errind, &r);
+    *red = (freal)r.rgb.red;
+    *green = (freal)r.rgb.green;
+    *blue = (freal)r.rgb.blue;
+}
+
+FAPI void FNAME(gqwkt, GQWKT)(const fint *wkid, fint *errind, fint *tus, freal *rwindo,
+                              freal *cwindo, freal *rviewp, freal *cviewp)
+{
+    Gupd_st u = GUPD_NOT_PEND;
+    Glimit rw, cw, rv, cv;
+    memset(&rw, 0, sizeof rw);
+    cw = rv = cv = rw;
+    ginq_ws_tran(*wkid, errind, &u, &rw, &cw, &rv, &cv);
+    *tus = (fint)u;
+    put_limit(&rw, rwindo);
+    put_limit(&cw, cwindo);
+    put_limit(&rv, rviewp);
+    put_limit(&cv, cviewp);
+}
+
+/* ------------------------------------------------------------------ helpers for GERLOG */
+/* GKFNAM(FCTID, NAME, LNAME): the ISO name of a function identification, blank-padded;
+ * LNAME = its length (0 if unknown). Not part of ISO 8651-1. */
+FAPI void FNAME(gkfnam, GKFNAM)(const fint *fctid, char *name, fint *lname, size_t name_len)
+{
+    *lname = fill_fstr(gks_function_name(*fctid), name, name_len);
+}
+
+/* GKEMSG(ERRNR, MSG, LMSG): the standard message of an error number, blank-padded. */
+FAPI void FNAME(gkemsg, GKEMSG)(const fint *errnr, char *msg, fint *lmsg, size_t msg_len)
+{
+    *lmsg = fill_fstr(gks_error_message(*errnr), msg, msg_len);
+}

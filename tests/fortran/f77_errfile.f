@@ -1,0 +1,15 @@
+      PROGRAM ERRFIL
+!     Provokes errors with the library's default GERHND/GERLOG writing
+!     to unit 22; the C checker compares the file line by line.
+      INCLUDE 'GKS_PAR'
+      OPEN (22, FILE='f77_errors.txt', STATUS='REPLACE')
+      CALL GOPKS(22, -1)
+      CALL GOPWK(1, 1, 12345)
+      CALL GOPWK(1, 1, GWSNUL)
+      CALL GACWK(5)
+      CALL GOPKS(22, -1)
+      CALL GCLRWK(1, 7)
+      CALL GCLWK(1)
+      CALL GCLKS
+      CLOSE (22)
+      END
