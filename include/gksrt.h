@@ -20,6 +20,14 @@
 #ifndef GKS3D_GKSRT_H
 #define GKS3D_GKSRT_H
 
+/* Symbols of the public API stay visible when the library is built with hidden
+ * visibility (it is folded into libgks3d). */
+#if defined(__GNUC__)
+#define RT_API __attribute__((visibility("default")))
+#else
+#define RT_API
+#endif
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -65,11 +73,11 @@ typedef struct rt_surface {
 
 /* Fills s with: RT_REFL_DIFFUSE, ka = kd = 1, ks = 0, white, se = 1, kt = 0, index 1,
  * all lights on. */
-void rt_surface_default(rt_surface *s);
+RT_API void rt_surface_default(rt_surface *s);
 
 /* Adds a surface; returns its id (>= 0) or RT_ERR_ARG (NaN, negative coefficients,
  * kt outside [0,1], index <= 0, refl_eq outside 0..3), RT_ERR_NOMEM. */
-int rt_scene_add_surface(rt_scene *sc, const rt_surface *s);
+RT_API int rt_scene_add_surface(rt_scene *sc, const rt_surface *s);
 
 /* ---- Lights (PHIGS PLUS light source representation), VRC3 ------------------------------ */
 
@@ -88,14 +96,14 @@ typedef struct rt_light {
 
 /* Adds a light; returns its index 0..RT_MAX_LIGHTS-1 (the bit in rt_surface.light_mask),
  * RT_ERR_ARG for bad values, RT_ERR_LIMIT beyond RT_MAX_LIGHTS. */
-int rt_scene_add_light(rt_scene *sc, const rt_light *l);
+RT_API int rt_scene_add_light(rt_scene *sc, const rt_light *l);
 
 /* ---- Scene ------------------------------------------------------------------------------- */
 
 /* New empty scene, NULL if out of memory. */
-rt_scene *rt_scene_new(void);
+RT_API rt_scene *rt_scene_new(void);
 /* Frees a scene (NULL allowed). */
-void rt_scene_free(rt_scene *sc);
+RT_API void rt_scene_free(rt_scene *sc);
 
 /* GKS FILL AREA (nloops = 1) / FILL AREA SET (nloops > 1) in VRC3: loop k has loop_counts[k]
  * vertices, xyz holds all vertices of all loops consecutively (x,y,z each). Interior by the
@@ -106,7 +114,7 @@ void rt_scene_free(rt_scene *sc);
  * Degenerate polygons (zero area, NaN/Inf) are accepted here and dropped at commit.
  * Returns the primitive id (>= 0; polygons and cell arrays share one numbering) or
  * RT_ERR_ARG (nloops/counts <= 0, bad surface id), RT_ERR_NOMEM, RT_ERR_LIMIT. */
-int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
+RT_API int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
                          int front_surface, int back_surface);
 
 /* GKS CELL ARRAY 3 in VRC3: parallelogram with corners P, R, Q and P + Q - R (P and Q
@@ -114,7 +122,7 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
  * j = 0..ny-1 from R towards Q; cell (i,j) colour is rgb[3*(j*nx + i) + 0..2] (nearest
  * neighbour), replacing the surface's diffuse colour. rgb values must be finite (copied).
  * Front side: the normal (R-P) x (Q-R). Returns the primitive id or an RT_ERR_* code. */
-int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
+RT_API int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
                             int nx, int ny, const float *rgb, int front_surface, int back_surface);
 
 typedef struct rt_build_options {
@@ -146,7 +154,7 @@ typedef struct rt_build_options {
 
 /* Drops degenerate primitives, builds the uniform grid (CSR arrays). opts may be NULL
  * (defaults). Returns RT_OK, RT_ERR_NOMEM. */
-int rt_scene_commit(rt_scene *sc, const rt_build_options *opts);
+RT_API int rt_scene_commit(rt_scene *sc, const rt_build_options *opts);
 
 /* ---- Rays --------------------------------------------------------------------------------- */
 
@@ -165,9 +173,9 @@ typedef struct rt_hit {
 
 /* Nearest hit for n rays (ties in t: smallest primitive id). RT_ERR_STATE if not committed,
  * RT_ERR_NOMEM. Grid and brute force give bit-identical results. */
-int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
+RT_API int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
 /* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
-int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);
+RT_API int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);
 
 /* ---- Camera (paper section 3) ------------------------------------------------------------ */
 
@@ -195,13 +203,13 @@ typedef struct rt_camera {
  * front plane. RT_ERR_SINGULAR if vmap is singular or non-finite or the volume has a corner at
  * or behind infinity; RT_ERR_ARG for a bad box (min >= max in x or y, zmin >= zmax, NaN) or
  * size (< 1 or > 65536). */
-int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
+RT_API int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
                         int width, int height);
 
 /* Primary ray through raster position (px, py): px in [0,width] from the left edge, py in
  * [0,height] from the TOP edge (pixel (i,r) centre = (i+0.5, r+0.5)). org on the front plane,
  * unit dir, tmin = 0, tmax = distance to the back plane. Returns RT_OK or RT_ERR_ARG. */
-int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray);
+RT_API int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray);
 
 /* ---- Rendering --------------------------------------------------------------------------- */
 
@@ -237,7 +245,7 @@ typedef struct rt_render_options {
 
 /* Defaults: 1 sample, no jitter, depth 5, cut-off 0, threads 0, exact Fresnel, clip_secondary 0,
  * pixel-centre rays, black background, no progress. */
-void rt_render_options_default(rt_render_options *o);
+RT_API void rt_render_options_default(rt_render_options *o);
 
 /* Shading of a hit (front or back surface by the side hit; the normal is turned to face the ray):
  *   refl_eq NONE: I = Od. Otherwise I = sum over ambient lights ka*Od*La + sum over other lights
@@ -258,7 +266,7 @@ void rt_render_options_default(rt_render_options *o);
  * Renders cam's raster into rgb (width*height*3 floats, row 0 = top, linear RGB, not clamped).
  * opts NULL: defaults; stats may be NULL. RT_ERR_STATE if the scene is not committed,
  * RT_ERR_ARG for bad options, RT_ERR_NOMEM. Never writes NaN/Inf. */
-int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+RT_API int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats);
 
 #ifdef __cplusplus

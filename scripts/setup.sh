@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# setup.sh -- install the build and test dependencies on Debian 12 (idempotent).
+# Installs only what is missing, with apt-get (non-interactive); runs `apt-get update`
+# only when something has to be installed. Needs root (or sudo) only in that case.
+set -euo pipefail
+
+packages=(cmake gcc gfortran make pkg-config libpng-dev libcmocka-dev)
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+        missing+=("$p")
+    fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all dependencies present (${packages[*]})"
+    exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=()
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root to install ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -q
+"${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
