@@ -23,8 +23,7 @@ static int copy_list(const int *list, int n, Gint cap, Gint start, Gint_list *ou
     return 0;
 }
 
-/* Open workstation for a ws-state-list inquiry: error 7, 20, 25. */
-static gks_ws *inq_ws(Gint ws_id, Gint *err)
+gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
 {
     *err = gks_inq_state(GKS_S_WSOPEN);
     if (*err)
@@ -123,7 +122,7 @@ GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint 
 GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char *conn_id,
                                size_t *conn_len, Gint *ws_type)
 {
-    gks_ws *ws = inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
     size_t len = strlen(ws->conn_id);
@@ -140,7 +139,7 @@ GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char
 
 GKS_API void ginq_ws_st(Gint ws_id, Gint *err_ind, Gws_st *ws_st)
 {
-    gks_ws *ws = inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (ws)
         *ws_st = ws->state;
 }
@@ -149,7 +148,7 @@ GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer
                                    Girg_mode *irg_mode, Gdisp_space_empty *disp_empty,
                                    Gnew_frame_nec_upd *new_frame)
 {
-    gks_ws *ws = inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
     *defer_mode = ws->defer_mode;
@@ -240,7 +239,7 @@ GKS_API void ginq_fill_colr_ind(Gint *err_ind, Gint *colr_ind)
 GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
                            Gcolr_rep *colr_rep)
 {
-    gks_ws *ws = inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
     if (ws->drv->desc->cat == GCAT_MI) { *err_ind = 33; return; }
@@ -263,7 +262,7 @@ GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
                           Glimit *req_ws_win, Glimit *cur_ws_win,
                           Glimit *req_ws_vp, Glimit *cur_ws_vp)
 {
-    gks_ws *ws = inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
 #define XY(l) ((Glimit){ (l).x_min, (l).x_max, (l).y_min, (l).y_max })

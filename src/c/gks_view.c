@@ -108,14 +108,9 @@ GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind)
 
 GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3 *rep)
 {
-    *err_ind = gks_inq_state(GKS_S_WSOPEN);
-    if (*err_ind)
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
         return;
-    gks_ws *ws = ws_id < 0 ? NULL : gks_ws_lookup(ws_id);
-    if (!ws) {
-        *err_ind = ws_id < 0 ? 20 : 25;
-        return;
-    }
     if (view_ind < 0 || view_ind > GKS_MAX_VIEW_IND) {
         *err_ind = view_ind < 0 ? 514 : 515;
         return;
@@ -125,13 +120,8 @@ GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3
 
 GKS_API void ginq_hlhsr_mode(Gint ws_id, Gint *err_ind, Gint *mode)
 {
-    *err_ind = gks_inq_state(GKS_S_WSOPEN);
-    if (*err_ind)
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
         return;
-    gks_ws *ws = ws_id < 0 ? NULL : gks_ws_lookup(ws_id);
-    if (!ws) {
-        *err_ind = ws_id < 0 ? 20 : 25;
-        return;
-    }
     *mode = ws->hlhsr_mode;
 }

@@ -19,6 +19,10 @@ enum {
  * selected by `cat_flags`. Reports the error for `fctid` and returns NULL on failure. */
 gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags);
 
+/* For inquiries of a workstation state list: the open workstation ws_id, or NULL with
+ * *err set to 7 (state), 20 (invalid id) or 25 (not open). Never calls the handler. */
+gks_ws *gks_inq_ws(Gint ws_id, Gint *err);
+
 /* Create the state list of a workstation being opened (colour table, transformation,
  * deferral from the description table). NULL on storage overflow. */
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv);
