@@ -521,3 +521,174 @@ FAPI void FNAME(gkemsg, GKEMSG)(const fint *errnr, char *msg, fint *lmsg, size_t
 {
     *lmsg = fill_fstr(gks_error_message(*errnr), msg, msg_len);
 }
+
+/* ------------------------------------------------- GKS-3D output and viewing */
+/* Names and argument lists as CERN's GKSGRAL-3D primer documents them (BINDINGS.md
+ * §1.5); where it is silent, the documented [I] names. REAL(4,4) matrices: element (i,j)
+ * is row i, column j of the matrix acting on column vectors, stored column-major. */
+
+static int make_points3(fint n, const freal *px, const freal *py, const freal *pz,
+                        Gpoint_list3 *pl, Gint fctid)
+{
+    pl->num_points = n;
+    pl->points = NULL;
+    if (n <= 0)
+        return 0;
+    if (!(pl->points = alloc_array((size_t)n, sizeof(Gpoint3)))) {
+        report_nomem(fctid);
+        return -1;
+    }
+    for (fint i = 0; i < n; i++)
+        pl->points[i] = (Gpoint3){ px[i], py[i], pz[i] };
+    return 0;
+}
+
+static void from_fmatrix4(const freal *a, Gmatrix3 m)
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            m[i][j] = a[i + 4 * j];
+}
+
+static void to_fmatrix4(const Gmatrix3 m, freal *a)
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            a[i + 4 * j] = (freal)m[i][j];
+}
+
+static Glimit3 make_limit3(const freal *a)
+{
+    Glimit3 l = { a[0], a[1], a[2], a[3], a[4], a[5] };
+    return l;
+}
+
+/* GPL3(N, PXA, PYA, PZA) / GFA3(N, PXA, PYA, PZA) */
+FAPI void FNAME(gpl3, GPL3)(const fint *n, const freal *px, const freal *py, const freal *pz)
+{
+    Gpoint_list3 pl;
+    if (make_points3(*n, px, py, pz, &pl, GFN_PL3))
+        return;
+    gpolyline3(&pl);
+    free(pl.points);
+}
+
+FAPI void FNAME(gfa3, GFA3)(const fint *n, const freal *px, const freal *py, const freal *pz)
+{
+    Gpoint_list3 pl;
+    if (make_points3(*n, px, py, pz, &pl, GFN_FA3))
+        return;
+    gfill_area3(&pl);
+    free(pl.points);
+}
+
+/* GSW3(TNR, WN(6)) / GSV3(TNR, VP(6)): XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX. */
+FAPI void FNAME(gsw3, GSW3)(const fint *tnr, const freal *wn)
+{
+    Glimit3 l = make_limit3(wn);
+    gset_win3(*tnr, &l);
+}
+
+FAPI void FNAME(gsv3, GSV3)(const fint *tnr, const freal *vp)
+{
+    Glimit3 l = make_limit3(vp);
+    gset_vp3(*tnr, &l);
+}
+
+FAPI void FNAME(gsvwi, GSVWI)(const fint *vwi) { gset_view_ind(*vwi); }
+FAPI void FNAME(gshrm, GSHRM)(const fint *wkid, const fint *hrm) { gset_hlhsr_mode(*wkid, *hrm); }
+
+/* GSVWR(WKID, VWI, VWM(4,4), PRM(4,4), VCLP(6), CLW, CLB, CLF): SET VIEW REPRESENTATION 3
+ * with the orientation matrix, the mapping matrix, the NPC3 clip limits and the xy, back
+ * and front clip indicators (GNCLIP/GCLIP). */
+FAPI void FNAME(gsvwr, GSVWR)(const fint *wkid, const fint *vwi, const freal *vwm,
+                              const freal *prm, const freal *vclp, const fint *clw,
+                              const fint *clb, const fint *clf)
+{
+    Gview_rep3 r;
+    from_fmatrix4(vwm, r.ori_matrix);
+    from_fmatrix4(prm, r.map_matrix);
+    r.clip_limit = make_limit3(vclp);
+    r.xy_clip = (Gclip_ind)*clw;
+    r.back_clip = (Gclip_ind)*clb;
+    r.front_clip = (Gclip_ind)*clf;
+    gset_view_rep3(*wkid, *vwi, &r);
+}
+
+/* GEVVWM(VRPX,VRPY,VRPZ, VUPX,VUPY,VUPZ, VPNX,VPNY,VPNZ, CSW, ERR, VWM(4,4)):
+ * EVALUATE VIEW ORIENTATION MATRIX 3. Note the order: VUP BEFORE VPN (GKSGRAL-3D), unlike
+ * PHIGS PEVOM3 and the C binding. */
+FAPI void FNAME(gevvwm, GEVVWM)(const freal *vrpx, const freal *vrpy, const freal *vrpz,
+                                const freal *vupx, const freal *vupy, const freal *vupz,
+                                const freal *vpnx, const freal *vpny, const freal *vpnz,
+                                const fint *csw, fint *err, freal *vwm)
+{
+    Gpoint3 vrp = { *vrpx, *vrpy, *vrpz };
+    Gvec3 vup = { *vupx, *vupy, *vupz }, vpn = { *vpnx, *vpny, *vpnz };
+    Gmatrix3 m;
+    Gint e = 0;
+    geval_view_ori_matrix3(&vrp, &vpn, &vup, (Gcoord_switch)*csw, &e, m);
+    *err = e;
+    if (!e)
+        to_fmatrix4((const Gfloat (*)[4])m, vwm);
+}
+
+/* GEVPJM(UMIN,UMAX,VMIN,VMAX, PRVP(6), PROTYP, PRPU,PRPV,PRPN, VPD, BPD, FPD, ERR, PRM(4,4)):
+ * EVALUATE VIEW MAPPING MATRIX 3; PROTYP GPARL = 0 / GPERS = 1. */
+FAPI void FNAME(gevpjm, GEVPJM)(const freal *umin, const freal *umax, const freal *vmin,
+                                const freal *vmax, const freal *prvp, const fint *protyp,
+                                const freal *prpu, const freal *prpv, const freal *prpn,
+                                const freal *vpd, const freal *bpd, const freal *fpd,
+                                fint *err, freal *prm)
+{
+    Gview_map3 v = { { *umin, *umax, *vmin, *vmax }, make_limit3(prvp), (Gproj_type)*protyp,
+                     { *prpu, *prpv, *prpn }, *vpd, *bpd, *fpd };
+    Gmatrix3 m;
+    Gint e = 0;
+    geval_view_map_matrix3(&v, &e, m);
+    *err = e;
+    if (!e)
+        to_fmatrix4((const Gfloat (*)[4])m, prm);
+}
+
+/* 2-D segment matrices REAL M(2,3), column-major (BINDINGS.md §1.1). */
+static void from_fmatrix23(const freal *a, Gtran_matrix m)
+{
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++)
+            m[i][j] = a[i + 2 * j];
+}
+
+static void to_fmatrix23(const Gtran_matrix m, freal *a)
+{
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++)
+            a[i + 2 * j] = (freal)m[i][j];
+}
+
+/* GEVTM(X0,Y0,DX,DY,PHI,SX,SY,SW,MOUT(2,3)) */
+FAPI void FNAME(gevtm, GEVTM)(const freal *x0, const freal *y0, const freal *dx,
+                              const freal *dy, const freal *phi, const freal *sx,
+                              const freal *sy, const fint *sw, freal *mout)
+{
+    Gpoint f = { *x0, *y0 };
+    Gvec s = { *dx, *dy }, sc = { *sx, *sy };
+    Gtran_matrix m;
+    from_fmatrix23(mout, m); /* on error the core leaves m, so MOUT stays unchanged */
+    geval_tran_matrix(&f, &s, *phi, &sc, (Gcoord_switch)*sw, m);
+    to_fmatrix23((const Gfloat (*)[3])m, mout);
+}
+
+/* GACTM(MINP(2,3),X0,Y0,DX,DY,PHI,SX,SY,SW,MOUT(2,3)) */
+FAPI void FNAME(gactm, GACTM)(const freal *minp, const freal *x0, const freal *y0,
+                              const freal *dx, const freal *dy, const freal *phi,
+                              const freal *sx, const freal *sy, const fint *sw, freal *mout)
+{
+    Gtran_matrix in, m;
+    from_fmatrix23(minp, in);
+    from_fmatrix23(mout, m); /* unchanged on error */
+    Gpoint f = { *x0, *y0 };
+    Gvec s = { *dx, *dy }, sc = { *sx, *sy };
+    gaccum_tran_matrix((const Gfloat (*)[3])in, &f, &s, *phi, &sc, (Gcoord_switch)*sw, m);
+    to_fmatrix23((const Gfloat (*)[3])m, mout);
+}
