@@ -154,7 +154,10 @@ GKS_API void gemergency_close_gks(void);
 /* ESCAPE function identifiers of this implementation (negative = implementation specific,
  * as the standard reserves). Data records: ints[0] = workstation identifier, then as listed. */
 enum {
-    GESC_SET_FILE_NAME = -101    /* ints[0] ws id; str = base file name for the next frames */
+    GESC_SET_FILE_NAME = -101,   /* ints[0] ws id; str = base file name for the next frames */
+    GESC_RT_CLIP_SECONDARY = -102 /* ints[0] ws id, ints[1] 0/1: ray-traced shadow, reflection
+                                    and refraction rays see only the display volume (1) or
+                                    the whole scene (0, default). PNG workstations only. */
 };
 
 /* ---------------------------------------------------------------------------------
@@ -258,7 +261,7 @@ enum {
     GHLHSR_HIDDEN_LINE = 1, /* areas become outlines, hidden lines removed (not yet: 511) */
     GHLHSR_ZBUFFER = 2,     /* z-buffer */
     GHLHSR_PAINTER = 3,     /* depth sorted (not yet: 511) */
-    GHLHSR_RAYTRACE = 4     /* ray tracing (not yet: 511) */
+    GHLHSR_RAYTRACE = 4     /* ray tracing of FILL AREAs with lighting (PNG workstations) */
 };
 #define GKS_MAX_VIEW_IND 20 /* view table entries 0..20; 0 is fixed */
 
@@ -278,6 +281,63 @@ GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp);
 GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind);
 GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3 *rep);
 GKS_API void ginq_hlhsr_mode(Gint ws_id, Gint *err_ind, Gint *mode);
+
+/* ---------------------------------------------------------------------------------
+ * Lighting (PHIGS PLUS semantics added to GKS-3D). Used by HLHSR mode GHLHSR_RAYTRACE.
+ * --------------------------------------------------------------------------------- */
+/* Area properties (a primitive attribute, front and back). Coefficients in [0,1];
+ * transpar_coef: 0 = opaque, 1 = fully transmitting; specular_exp >= 0; refr_index > 0.
+ * Defaults: ambient 1, diffuse 1, specular 0, specular colour white, exponent 1,
+ * transparency 0, refraction index 1. */
+typedef struct {
+    Gfloat ambient_coef, diffuse_coef, specular_coef;
+    Grgb specular_colr;
+    Gfloat specular_exp, transpar_coef, refr_index;
+} Garea_props;
+/* Reflectance equations (PHIGS PLUS values). Default GREFL_NONE: the area has its flat
+ * colour, so an unlit default picture equals the classic one. */
+enum { GREFL_NONE = 1, GREFL_AMBIENT = 2, GREFL_AMB_DIFF = 3, GREFL_AMB_DIFF_SPEC = 4 };
+/* Light source types (PHIGS PLUS values). */
+enum { GLIGHT_AMBIENT = 1, GLIGHT_DIRECTIONAL = 2, GLIGHT_POSITIONAL = 3, GLIGHT_SPOT = 4 };
+#define GKS_MAX_LIGHT_IND 64 /* light source table entries 1..64 */
+/* Light source representation. pos and dir are in NDC3, like the primitives after
+ * normalization: the ray tracer transforms them by the view orientation matrix into VRC3.
+ * dir is the direction the light travels. atten: positional/spot attenuation
+ * 1/(atten[0] + atten[1]*d). conc_exp: spot concentration exponent; spread_angle: spot half
+ * angle in radians, [0, pi]. colr in [0,1]. */
+typedef struct {
+    Gint type;
+    Grgb colr;
+    Gpoint3 pos;
+    Gvec3 dir;
+    Gfloat atten[2];
+    Gfloat conc_exp;
+    Gfloat spread_angle;
+} Glight_src_rep;
+
+/* SET (BACK) AREA PROPERTIES. Errors: 8, 96 (specular colour outside [0,1]), 2000 (NULL,
+ * NaN, a coefficient or the transparency outside [0,1], exponent < 0, refraction index <= 0). */
+GKS_API void gset_area_props(const Garea_props *props);
+GKS_API void gset_back_area_props(const Garea_props *props);
+/* SET (BACK) REFLECTANCE EQUATION: GREFL_*. Errors: 8, 524 (not 1..4). */
+GKS_API void gset_refl_eq(Gint refl_eq);
+GKS_API void gset_back_refl_eq(Gint refl_eq);
+/* SET LIGHT SOURCE REPRESENTATION (workstation table, index 1..64; index 1 is predefined
+ * as a white ambient light). Errors: 7, 20, 25, 33, 35, 36, 529 (index < 1 or > 64),
+ * 531 (type not 1..4), 532 (spot spread angle outside [0,pi]), 96 (colour outside [0,1]),
+ * 2000 (NULL, NaN/Inf, negative attenuation or concentration). */
+GKS_API void gset_light_src_rep(Gint ws_id, Gint light_ind, const Glight_src_rep *rep);
+/* SET LIGHT SOURCE STATE (a primitive attribute: the set of active light indices).
+ * Activations are applied, then deactivations. Errors: 8, 533 (an entry < 1; entries > 64
+ * are also 533 in this implementation), 535 (an index in both lists). NULL = empty list. */
+GKS_API void gset_light_src_state(const Gint_list *activate, const Gint_list *deactivate);
+GKS_API void ginq_area_props(Gint *err_ind, Garea_props *front, Garea_props *back);
+GKS_API void ginq_refl_eq(Gint *err_ind, Gint *front, Gint *back);
+/* Errors in *err_ind: workstation errors, 529, 2002 (index not defined). */
+GKS_API void ginq_light_src_rep(Gint ws_id, Gint light_ind, Gint *err_ind, Glight_src_rep *rep);
+/* Active light indices in ascending order (list convention of the other list inquiries). */
+GKS_API void ginq_light_src_state(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                  Gint_list *active, Gint *length_list);
 
 /* ---------------------------------------------------------------------------------
  * Inquiry functions: never call the error handler; *err_ind receives the error number

@@ -8,6 +8,7 @@
 #define GKS_CONTEXT_H
 #include "gks_private.h"
 #include "gks.h"
+#include <stdint.h>
 #include <stdio.h>
 
 #define GKS_MAX_OPEN_WS 16
@@ -32,6 +33,9 @@ typedef struct gks_cur_attrs {
     int line_colr_ind;
     int fill_colr_ind;
     int view_ind;
+    Garea_props area_props[2];  /* front, back (SET (BACK) AREA PROPERTIES) */
+    int refl_eq[2];             /* front, back reflectance equation, GREFL_* */
+    uint64_t light_mask;        /* bit i-1: light source index i is active */
 } gks_cur_attrs;
 
 typedef struct gks_norm_tran {

@@ -18,6 +18,11 @@ static void init_state_list(gks_state_list *sl)
 {
     sl->attrs.line_colr_ind = 1;
     sl->attrs.fill_colr_ind = 1;
+    for (int k = 0; k < 2; k++) {
+        sl->attrs.area_props[k] = (Garea_props){ 1, 1, 0, { 1, 1, 1 }, 1, 0, 1 };
+        sl->attrs.refl_eq[k] = GREFL_NONE;
+    }
+    sl->attrs.light_mask = 0;
     for (int i = 0; i <= GKS_MAX_NORM_TRAN; i++) {
         sl->tran[i].win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
         sl->tran[i].vp = (Glimit3){ 0, 1, 0, 1, 0, 1 };
@@ -281,9 +286,13 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
 {
     if (gks_check_state(GFN_ESC))
         return;
-    if (func_id != GESC_SET_FILE_NAME)
+    if (func_id != GESC_SET_FILE_NAME && func_id != GESC_RT_CLIP_SECONDARY)
         GKS_FAIL(180, GFN_ESC);
-    if (!in || in->num_ints < 1 || !in->ints || !in->str || in->str_len == 0)
+    if (!in || in->num_ints < 1 || !in->ints)
+        GKS_FAIL(182, GFN_ESC);
+    if (func_id == GESC_SET_FILE_NAME && (!in->str || in->str_len == 0))
+        GKS_FAIL(182, GFN_ESC);
+    if (func_id == GESC_RT_CLIP_SECONDARY && (in->num_ints < 2 || (unsigned)in->ints[1] > 1))
         GKS_FAIL(182, GFN_ESC);
     gks_ws *ws = gks_ws_lookup(in->ints[0]);
     if (!ws)

@@ -24,6 +24,12 @@ static Grgb resolve_colour(const gks_ws *ws, int ind)
 static int dispatch(gks_prim *p, int colr_ind)
 {
     gks_context *c = gks_ctx();
+    const gks_cur_attrs *a = &c->sl->attrs;
+    p->area_props[0] = a->area_props[0];
+    p->area_props[1] = a->area_props[1];
+    p->refl_eq[0] = a->refl_eq[0];
+    p->refl_eq[1] = a->refl_eq[1];
+    p->light_mask = a->light_mask;
     for (int i = 0; i < c->sl->n_open; i++) {
         gks_ws *ws = c->ws[i];
         if (ws->state != GWS_ACTIVE || !ws->drv->primitive)

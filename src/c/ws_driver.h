@@ -42,6 +42,9 @@ typedef struct gks_prim {
     const Gpoint3 *pts;       /* NDC3 */
     Grgb colour;
     int view_ind;             /* view index attribute: the ws's view representation */
+    Garea_props area_props[2]; /* front, back area properties (lighting) */
+    int refl_eq[2];           /* front, back reflectance equation, GREFL_* */
+    uint64_t light_mask;      /* bit i-1: light source index i is active */
 } gks_prim;
 
 /* Workstation state list (ISO 7942 6.6): owned by the core, created at OPEN WORKSTATION. */
@@ -61,6 +64,8 @@ struct gks_ws {
     Gview_rep3 views[GKS_MAX_VIEW_IND + 1]; /* view table; 0 fixed: identity, NPC cube */
     int hlhsr_mode;
     unsigned char *colr_defined;
+    Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
+    unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
 };
 

@@ -15,6 +15,7 @@
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_driver.h"
+#include "ws_raytrace.h"
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
@@ -33,6 +34,7 @@ typedef struct png_ws {
     int dirty;          /* content not yet written */
     int written_any;    /* some file has been written */
     int frame_written;  /* the current frame has a file */
+    ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
 } png_ws;
 
 static char *base_from_conn(const char *conn)
@@ -60,7 +62,10 @@ static int png_open(gks_ws *ws)
     if (!p)
         return 300;
     p->base = base_from_conn(ws->conn_id);
-    if (!p->base) {
+    p->rt = ws_rt_new();
+    if (!p->base || !p->rt) {
+        gks_free(p->base);
+        ws_rt_free(p->rt);
         gks_free(p);
         return 300;
     }
@@ -73,6 +78,7 @@ static void png_close(gks_ws *ws)
 {
     png_ws *p = ws->priv;
     gks_raster_fb_free(p->fb);
+    ws_rt_free(p->rt);
     gks_free(p->base);
     gks_free(p);
     ws->priv = NULL;
@@ -112,11 +118,15 @@ static int png_clear(gks_ws *ws)
         p->frame_written = 0;
     }
     p->dirty = 0;
+    ws_rt_reset(p->rt);
     gks_raster_fb_free(p->fb);
     p->fb = NULL;
     return framebuffer(ws) ? 0 : 300;
 }
 
+static int ws_matrix(const gks_ws *ws, double m[4][4]);
+
+/* Writes the frame's file; recorded ray-tracing primitives are traced first. */
 static int png_update(gks_ws *ws)
 {
     png_ws *p = ws->priv;
@@ -125,6 +135,12 @@ static int png_update(gks_ws *ws)
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
+    double wsm[4][4];
+    if (ws_rt_count(p->rt) > 0 && ws_matrix(ws, wsm) == 0) {
+        int e = ws_rt_render(p->rt, ws, (const double (*)[4])wsm, fb);
+        if (e)
+            return e;
+    }
     size_t n = strlen(p->base) + 32;
     char *path = gks_alloc_array(n, 1);
     if (!path)
@@ -187,6 +203,12 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
+    if (ws->hlhsr_mode == GHLHSR_RAYTRACE && prim->kind == GKS_PRIM_FILL_AREA) {
+        if (ws_rt_record(p->rt, ws, prim))
+            return 300;
+        p->dirty = 1;
+        return 0;
+    }
     double m[4][4], npc[4][4];
     gks_xform_clip clip;
     if (ws_matrix(ws, m) || view_setup(ws, prim->view_ind, npc, &clip))
@@ -284,9 +306,15 @@ static int png_message(gks_ws *ws, const char *msg)
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     (void)out;
+    png_ws *p = ws->priv;
+    if (func_id == GESC_RT_CLIP_SECONDARY) {
+        if (!in || in->num_ints < 2 || (unsigned)in->ints[1] > 1)
+            return 182;
+        ws_rt_set_clip_secondary(p->rt, in->ints[1]);
+        return 0;
+    }
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
-    png_ws *p = ws->priv;
     char *b = gks_strndup(in->str, in->str_len);
     if (!b)
         return 300;
@@ -302,7 +330,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
         .default_defer = GDEFER_ASAP,                                                \
-        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_ZBUFFER),                 \
+        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_RAYTRACE),\
     }
 
 static const gks_ws_desc png_desc = PNG_DESC(GWS_TYPE_PNG, "png", 1024);

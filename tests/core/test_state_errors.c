@@ -94,6 +94,22 @@ static void c_SVWR(void)
 static void c_SHRM(void) { gset_hlhsr_mode(1, GHLHSR_NONE); }
 static void c_SW3(void) { Glimit3 w = { -1, 1, -1, 1, -1, 1 }; gset_win3(1, &w); }
 static void c_SV3(void) { Glimit3 v = { 0, 0.5, 0, 0.5, 0, 1 }; gset_vp3(1, &v); }
+static const Garea_props props = { 0.2, 0.8, 0.1, { 1, 1, 1 }, 2, 0, 1 };
+static void c_SAPR(void) { gset_area_props(&props); }
+static void c_SBAPR(void) { gset_back_area_props(&props); }
+static void c_SRFEQ(void) { gset_refl_eq(GREFL_AMB_DIFF); }
+static void c_SBRFEQ(void) { gset_back_refl_eq(GREFL_AMB_DIFF); }
+static void c_SLSR(void)
+{
+    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, 0, -1 }, { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 2, &l);
+}
+static void c_SLSS(void)
+{
+    Gint on = 2;
+    Gint_list a = { 1, &on };
+    gset_light_src_state(&a, NULL);
+}
 
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))
