@@ -289,6 +289,10 @@ int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_
     rt_render_options o;
     rt_render_options_default(&o);
     o.clip_secondary = r->clip_secondary;
+    /* rays that leave the scene see the workstation's background (colour index 0) */
+    o.background[0] = ws->colr[0].red;
+    o.background[1] = ws->colr[0].green;
+    o.background[2] = ws->colr[0].blue;
     int rr = rt_intersect(sc, n, rays, hits);
     if (rr == RT_OK)
         rr = rt_render(sc, &cam, &o, rgb, NULL);
