@@ -10,38 +10,13 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <math.h>
-#include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
 #include <cmocka.h>
 #include "core_util.h"
 
-typedef struct { int w, h; unsigned char *rgb; } image;
-
-static int read_png(const char *path, image *img)
-{
-    png_image pi;
-    memset(&pi, 0, sizeof pi);
-    pi.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&pi, path))
-        return 0;
-    pi.format = PNG_FORMAT_RGB;
-    img->w = (int)pi.width;
-    img->h = (int)pi.height;
-    img->rgb = malloc(PNG_IMAGE_SIZE(pi));
-    if (!img->rgb || !png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
-        free(img->rgb);
-        return 0;
-    }
-    return 1;
-}
-
-/* Pixel (x, y), y from the bottom row. */
-static const unsigned char *px(const image *img, int x, int y)
-{
-    return img->rgb + 3 * ((size_t)(img->h - 1 - y) * img->w + x);
-}
+#include "png_util.h"
 
 static void assert_near(const image *img, int x, int y, double r, double g, double b)
 {
