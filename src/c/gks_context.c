@@ -3,6 +3,7 @@
  */
 #include "gks_context.h"
 #include "ws_driver.h"
+#include "gks_xform.h"
 
 static const gks_ws_driver *const driver_list[] = {
     &gks_ws_null_driver,
@@ -52,4 +53,13 @@ int gks_ws_is_active(int ws_id)
         if (sl->active_ws[i] == ws_id)
             return 1;
     return 0;
+}
+
+int gks_cur_norm_matrix(double m[3][4])
+{
+    const gks_norm_tran *t = &context.sl->tran[context.sl->cur_tnr];
+    double w[6], v[6];
+    gks_limit3_array(&t->win, w);
+    gks_limit3_array(&t->vp, v);
+    return gks_xform_norm_tran3(w, v, m);
 }

@@ -73,6 +73,17 @@ typedef struct gks_context {
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
 } gks_context;
 
+/* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
+static inline void gks_limit3_array(const Glimit3 *l, double b[6])
+{
+    b[0] = l->x_min; b[1] = l->x_max; b[2] = l->y_min;
+    b[3] = l->y_max; b[4] = l->z_min; b[5] = l->z_max;
+}
+
+/* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.
+ * Returns 0 or 308 (degenerate or non-finite window/viewport). GKS must be open. */
+int gks_cur_norm_matrix(double m[3][4]);
+
 /* The context of this process (the C binding is procedural; GKS is single-threaded). */
 gks_context *gks_ctx(void);
 

@@ -48,13 +48,8 @@ static int dispatch(gks_prim *p, int colr_ind)
  * error for it), 1 otherwise. */
 static int normalize(const double (*in)[3], size_t n, double (*out)[4])
 {
-    const gks_norm_tran *t = &gks_ctx()->sl->tran[gks_ctx()->sl->cur_tnr];
-    const double w[6] = { t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max,
-                          t->win.z_min, t->win.z_max };
-    const double v[6] = { t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max,
-                          t->vp.z_min, t->vp.z_max };
     double m[3][4];
-    if (gks_xform_norm_tran3(w, v, m))
+    if (gks_cur_norm_matrix(m))
         return 0;
     for (size_t i = 0; i < n; i++) {
         gks_xform_mat34_point(m, in[i], out[i]);
@@ -70,10 +65,10 @@ static int normalize(const double (*in)[3], size_t n, double (*out)[4])
 static void clip_region(gks_xform_clip *clip)
 {
     const gks_state_list *sl = gks_ctx()->sl;
-    const Glimit3 *v = &sl->tran[sl->cur_tnr].vp;
     gks_xform_clip_init(clip);
     if (sl->clip_ind == GIND_CLIP) {
-        const double box[6] = { v->x_min, v->x_max, v->y_min, v->y_max, v->z_min, v->z_max };
+        double box[6];
+        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
         gks_xform_clip_add_box(clip, box, GKS_XFORM_CLIP_ALL);
     }
 }

@@ -10,24 +10,21 @@
 #include "gks_xform.h"
 
 /* WC -> NDC3 by the current normalization transformation: points (is_point = 1) are
- * mapped, vectors only scaled. csw = GCOORD_NDC leaves them unchanged. */
+ * mapped, vectors only scaled (the matrix is diagonal plus translation). With
+ * GCOORD_NDC, or a degenerate transformation, they are unchanged. */
 static void to_ndc3(Gcoord_switch sw, const double in[3], int is_point, double out[3])
 {
-    const gks_state_list *sl = gks_ctx()->sl;
-    const gks_norm_tran *t = &sl->tran[sl->cur_tnr];
-    const double w[6] = { t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max,
-                          t->win.z_min, t->win.z_max };
-    const double v[6] = { t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max,
-                          t->vp.z_min, t->vp.z_max };
-    for (int k = 0; k < 3; k++) {
-        if (sw != GCOORD_WC) {
+    double m[3][4];
+    if (sw != GCOORD_WC || gks_cur_norm_matrix(m)) {
+        for (int k = 0; k < 3; k++)
             out[k] = in[k];
-            continue;
-        }
-        double dw = w[2 * k + 1] - w[2 * k];
-        double s = dw != 0 ? (v[2 * k + 1] - v[2 * k]) / dw : 1.0;
-        out[k] = is_point ? v[2 * k] + (in[k] - w[2 * k]) * s : in[k] * s;
+        return;
     }
+    if (is_point)
+        gks_xform_mat34_point(m, in, out);
+    else
+        for (int k = 0; k < 3; k++)
+            out[k] = m[k][k] * in[k];
 }
 
 static int sw_valid(Gcoord_switch sw)
@@ -42,15 +39,12 @@ GKS_API void geval_tran_matrix(const Gpoint *fixed, const Gvec *shift, Gdouble a
         return;
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM);
-    double f[3], s[3], r[2][3];
+    double f[3], s[3];
     to_ndc3(sw, (const double[3]){ fixed->x, fixed->y, 0 }, 1, f);
     to_ndc3(sw, (const double[3]){ shift->delta_x, shift->delta_y, 0 }, 0, s);
-    int err = gks_xform_eval_tran(f, s, angle, (const double[2]){ scale->delta_x, scale->delta_y }, r);
+    int err = gks_xform_eval_tran(f, s, angle, (const double[2]){ scale->delta_x, scale->delta_y }, m);
     if (err)
         GKS_FAIL(err, GFN_EVTM);
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 3; j++)
-            m[i][j] = r[i][j];
 }
 
 GKS_API void gaccum_tran_matrix(const Gtran_matrix m_in, const Gpoint *fixed, const Gvec *shift,
@@ -61,19 +55,13 @@ GKS_API void gaccum_tran_matrix(const Gtran_matrix m_in, const Gpoint *fixed, co
         return;
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM);
-    double f[3], s[3], in[2][3], r[2][3];
+    double f[3], s[3];
     to_ndc3(sw, (const double[3]){ fixed->x, fixed->y, 0 }, 1, f);
     to_ndc3(sw, (const double[3]){ shift->delta_x, shift->delta_y, 0 }, 0, s);
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 3; j++)
-            in[i][j] = m_in[i][j];
-    int err = gks_xform_accum_tran(in, f, s, angle,
-                                   (const double[2]){ scale->delta_x, scale->delta_y }, r);
+    int err = gks_xform_accum_tran(m_in, f, s, angle,
+                                   (const double[2]){ scale->delta_x, scale->delta_y }, m_out);
     if (err)
         GKS_FAIL(err, GFN_ACTM);
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 3; j++)
-            m_out[i][j] = r[i][j];
 }
 
 GKS_API void geval_tran_matrix3(const Gpoint3 *fixed, const Gvec3 *shift, Gdouble x_ang,
@@ -84,16 +72,13 @@ GKS_API void geval_tran_matrix3(const Gpoint3 *fixed, const Gvec3 *shift, Gdoubl
         return;
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM3);
-    double f[3], s[3], r[3][4];
+    double f[3], s[3];
     to_ndc3(sw, (const double[3]){ fixed->x, fixed->y, fixed->z }, 1, f);
     to_ndc3(sw, (const double[3]){ shift->delta_x, shift->delta_y, shift->delta_z }, 0, s);
     int err = gks_xform_eval_tran3(f, s, (const double[3]){ x_ang, y_ang, z_ang },
-                                   (const double[3]){ scale->delta_x, scale->delta_y, scale->delta_z }, r);
+                                   (const double[3]){ scale->delta_x, scale->delta_y, scale->delta_z }, m);
     if (err)
         GKS_FAIL(err, GFN_EVTM3);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            m[i][j] = r[i][j];
 }
 
 GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
@@ -105,26 +90,13 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
         return;
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM3);
-    double f[3], s[3], in[3][4], r[3][4];
+    double f[3], s[3];
     to_ndc3(sw, (const double[3]){ fixed->x, fixed->y, fixed->z }, 1, f);
     to_ndc3(sw, (const double[3]){ shift->delta_x, shift->delta_y, shift->delta_z }, 0, s);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            in[i][j] = m_in[i][j];
-    int err = gks_xform_accum_tran3(in, f, s, (const double[3]){ x_ang, y_ang, z_ang },
-                                    (const double[3]){ scale->delta_x, scale->delta_y, scale->delta_z }, r);
+    int err = gks_xform_accum_tran3(m_in, f, s, (const double[3]){ x_ang, y_ang, z_ang },
+                                    (const double[3]){ scale->delta_x, scale->delta_y, scale->delta_z }, m_out);
     if (err)
         GKS_FAIL(err, GFN_ACTM3);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            m_out[i][j] = r[i][j];
-}
-
-static void copy44(const double r[4][4], Gmatrix3 m)
-{
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            m[i][j] = r[i][j];
 }
 
 GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const Gvec3 *vup,
@@ -137,14 +109,13 @@ GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const 
         *err_ind = 2000;
         GKS_FAIL(2000, GFN_EVVWM);
     }
-    double r3[3], n3[3], u3[3], r[4][4];
+    double r3[3], n3[3], u3[3];
     to_ndc3(sw, (const double[3]){ vrp->x, vrp->y, vrp->z }, 1, r3);
     to_ndc3(sw, (const double[3]){ vpn->delta_x, vpn->delta_y, vpn->delta_z }, 0, n3);
     to_ndc3(sw, (const double[3]){ vup->delta_x, vup->delta_y, vup->delta_z }, 0, u3);
-    *err_ind = gks_xform_eval_view_orientation3(r3, n3, u3, r);
+    *err_ind = gks_xform_eval_view_orientation3(r3, n3, u3, m);
     if (*err_ind)
         GKS_FAIL(*err_ind, GFN_EVVWM);
-    copy44((const double (*)[4])r, m);
 }
 
 GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m)
@@ -160,9 +131,7 @@ GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatri
         .prp = { map->proj_ref_point.x, map->proj_ref_point.y, map->proj_ref_point.z },
         .vpd = map->view_plane, .bpd = map->back_plane, .fpd = map->front_plane,
     };
-    double r[4][4];
-    *err_ind = gks_xform_eval_view_mapping3(&v, r);
+    *err_ind = gks_xform_eval_view_mapping3(&v, m);
     if (*err_ind)
         GKS_FAIL(*err_ind, GFN_EVPJM);
-    copy44((const double (*)[4])r, m);
 }

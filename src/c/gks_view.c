@@ -8,15 +8,6 @@
 #include "gks_xform.h"
 #include <math.h>
 
-static int limits6(const Glimit3 *l, double b[6])
-{
-    if (!l)
-        return 0;
-    b[0] = l->x_min; b[1] = l->x_max; b[2] = l->y_min;
-    b[3] = l->y_max; b[4] = l->z_min; b[5] = l->z_max;
-    return 1;
-}
-
 GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
 {
     double b[6];
@@ -24,7 +15,10 @@ GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
         return;
     if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
         GKS_FAIL(50, GFN_SW3);
-    if (!limits6(win, b) || gks_xform_check_window3(b))
+    if (!win)
+        GKS_FAIL(51, GFN_SW3);
+    gks_limit3_array(win, b);
+    if (gks_xform_check_window3(b))
         GKS_FAIL(51, GFN_SW3);
     gks_ctx()->sl->tran[tran_num].win = *win;
 }
@@ -36,8 +30,9 @@ GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
         return;
     if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
         GKS_FAIL(50, GFN_SV3);
-    if (!limits6(vp, b))
+    if (!vp)
         GKS_FAIL(51, GFN_SV3);
+    gks_limit3_array(vp, b);
     int err = gks_xform_check_viewport3(b); /* 51, then 52 */
     if (err)
         GKS_FAIL(err, GFN_SV3);
@@ -73,8 +68,9 @@ GKS_API void gset_view_rep3(Gint ws_id, Gint view_ind, const Gview_rep3 *rep)
     if (view_ind < 1 || view_ind > GKS_MAX_VIEW_IND)
         GKS_FAIL(515, GFN_SVWR);
     double b[6];
-    if (!limits6(rep ? &rep->clip_limit : NULL, b))
+    if (!rep)
         GKS_FAIL(553, GFN_SVWR);
+    gks_limit3_array(&rep->clip_limit, b);
     int err = gks_xform_check_view_clip_limits(b); /* 553, then 554 */
     if (err)
         GKS_FAIL(err, GFN_SVWR);

@@ -163,8 +163,8 @@ static int png_update(gks_ws *ws)
  * viewport origin; DC z in [0,1], larger = nearer. */
 static int ws_matrix(const gks_ws *ws, double m[4][4])
 {
-    const double win[6] = { ws->cur_win.x_min, ws->cur_win.x_max, ws->cur_win.y_min,
-                            ws->cur_win.y_max, ws->cur_win.z_min, ws->cur_win.z_max };
+    double win[6];
+    gks_limit3_array(&ws->cur_win, win);
     const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
                            ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
     return gks_xform_ws_tran3(win, vp, m);
@@ -177,17 +177,10 @@ static int ws_matrix(const gks_ws *ws, double m[4][4])
 static int view_setup(const gks_ws *ws, int view_ind, double npc[4][4], gks_xform_clip *clip)
 {
     const Gview_rep3 *v = &ws->views[view_ind >= 0 && view_ind <= GKS_MAX_VIEW_IND ? view_ind : 0];
-    double ori[4][4], map[4][4];
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            ori[i][j] = v->ori_matrix[i][j];
-            map[i][j] = v->map_matrix[i][j];
-        }
-    gks_xform_multiply(map, ori, npc);
-    const double lim[6] = { v->clip_limit.x_min, v->clip_limit.x_max, v->clip_limit.y_min,
-                            v->clip_limit.y_max, v->clip_limit.z_min, v->clip_limit.z_max };
-    const double win[6] = { ws->cur_win.x_min, ws->cur_win.x_max, ws->cur_win.y_min,
-                            ws->cur_win.y_max, ws->cur_win.z_min, ws->cur_win.z_max };
+    gks_xform_multiply(v->map_matrix, v->ori_matrix, npc);
+    double lim[6], win[6];
+    gks_limit3_array(&v->clip_limit, lim);
+    gks_limit3_array(&ws->cur_win, win);
     unsigned flags = (v->xy_clip == GIND_CLIP ? GKS_XFORM_CLIP_XY : 0) |
                      (v->back_clip == GIND_CLIP ? GKS_XFORM_CLIP_BACK : 0) |
                      (v->front_clip == GIND_CLIP ? GKS_XFORM_CLIP_FRONT : 0);
@@ -220,9 +213,10 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     double (*out)[4] = gks_alloc_array(cap, sizeof *out);
     size_t *len = gks_alloc_array(n + (size_t)prim->n_loops, sizeof *len);
     size_t *loops = gks_alloc_array((size_t)prim->n_loops, sizeof *loops);
+    int *counts = gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
     gks_raster_pt *pts = gks_alloc_array(cap, sizeof *pts);
     int err = 0;
-    if (!h || !out || !len || !loops || !pts) {
+    if (!h || !out || !len || !loops || !counts || !pts) {
         err = 300;
         goto done;
     }
@@ -277,7 +271,6 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
             off += len[k];
         }
     } else {
-        int *counts = (int *)loops; /* reuse: size_t storage is large enough for ints */
         int nl = 0;
         for (size_t k = 0; k < n_pieces; k++)
             counts[nl++] = (int)len[k];
@@ -292,6 +285,7 @@ done:
     gks_free(out);
     gks_free(len);
     gks_free(loops);
+    gks_free(counts);
     gks_free(pts);
     return err;
 }

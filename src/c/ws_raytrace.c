@@ -219,9 +219,7 @@ static int build_scene(const ws_rt *r, const gks_ws *ws, int vi, rt_scene **out)
 /* Display volume of view v: clip limits where on, intersected with the ws window. */
 static int display_volume(const gks_ws *ws, const Gview_rep3 *v, double b[6])
 {
-    b[0] = ws->cur_win.x_min; b[1] = ws->cur_win.x_max;
-    b[2] = ws->cur_win.y_min; b[3] = ws->cur_win.y_max;
-    b[4] = ws->cur_win.z_min; b[5] = ws->cur_win.z_max;
+    gks_limit3_array(&ws->cur_win, b);
     if (v->xy_clip == GIND_CLIP) {
         b[0] = fmax(b[0], v->clip_limit.x_min);
         b[1] = fmin(b[1], v->clip_limit.x_max);
@@ -261,12 +259,8 @@ int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_
     double nb[6] = { box[0] + (ix0 - lo[0]) * sx, box[0] + (ix1 - lo[0]) * sx,
                      box[2] + (iy0 - lo[1]) * sy, box[2] + (iy1 - lo[1]) * sy, box[4], box[5] };
     int w = ix1 - ix0, h = iy1 - iy0;
-    double vmap[4][4];
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++)
-            vmap[i][j] = v->map_matrix[i][j];
     rt_camera cam;
-    if (rt_camera_from_view(&cam, vmap, nb, w, h) != RT_OK)
+    if (rt_camera_from_view(&cam, v->map_matrix, nb, w, h) != RT_OK)
         return 0; /* singular mapping: nothing visible */
 
     rt_scene *sc;
