@@ -155,9 +155,19 @@ GKS_API void gemergency_close_gks(void);
  * as the standard reserves). Data records: ints[0] = workstation identifier, then as listed. */
 enum {
     GESC_SET_FILE_NAME = -101,   /* ints[0] ws id; str = base file name for the next frames */
-    GESC_RT_CLIP_SECONDARY = -102 /* ints[0] ws id, ints[1] 0/1: ray-traced shadow, reflection
+    GESC_RT_CLIP_SECONDARY = -102, /* ints[0] ws id, ints[1] 0/1: ray-traced shadow, reflection
                                     and refraction rays see only the display volume (1) or
                                     the whole scene (0, default). PNG workstations only. */
+    /* Ray-tracing controls of a PNG workstation (HLHSR mode GHLHSR_RAYTRACE); they take effect
+     * at the next picture written. */
+    GESC_RT_SAMPLES = -103,      /* ints[1] samples per pixel (perfect square 1..256),
+                                    ints[2] 0/1 jitter within strata */
+    GESC_RT_MAX_DEPTH = -104,    /* ints[1] maximum ray depth 1..64 (eye ray = 1) */
+    GESC_RT_CUTOFF = -105,       /* floats[0] adaptive depth cut-off weight in [0,1), 0 = off */
+    GESC_RT_THREADS = -106,      /* ints[1] thread count, 0 = all online CPUs */
+    GESC_RT_PROGRESS = -107,     /* ints[1] 0/1: progress report on stderr */
+    GESC_RT_STATS = -108,        /* out: ray and grid statistics of the last traced picture */
+    GESC_RT_SPD = -109           /* ints[1] 0/1: SPD procedure (rays at pixel corners) */
 };
 
 /* ---------------------------------------------------------------------------------

@@ -30,9 +30,35 @@ typedef struct gks_ws_desc {
     unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
 } gks_ws_desc;
 
-/* A primitive as the core hands it to drivers: points in NDC3 after normalization and
- * clipping to the viewport (if on); attributes resolved to colours. */
-typedef enum { GKS_PRIM_POLYLINE, GKS_PRIM_FILL_AREA } gks_prim_kind;
+/* A primitive as the core hands it to drivers: points in NDC3 after normalization,
+ * segment transformation and clipping to the viewport (if on); attributes resolved for this
+ * workstation (individual or bundled by the aspect source flags, colour indices turned into
+ * colours, unsupported values replaced as the standard says). TEXT reaches drivers as
+ * GKS_PRIM_POLYLINE strokes (text = 1); FILL AREA SET as GKS_PRIM_FILL_AREA with n_loops >= 1
+ * and the edge attributes; markers as their clip-surviving centres. */
+typedef enum {
+    GKS_PRIM_POLYLINE, GKS_PRIM_FILL_AREA, GKS_PRIM_POLYMARKER, GKS_PRIM_CELL_ARRAY
+} gks_prim_kind;
+
+typedef struct gks_prim_attrs {
+    int linetype;              /* 1 solid, 2 dashed, 3 dotted, 4 dash-dotted */
+    double linewidth;          /* linewidth scale factor (1 = nominal width) */
+    int marker_type;           /* 1 dot, 2 plus, 3 asterisk, 4 circle, 5 diagonal cross */
+    double marker_size;        /* marker size scale factor (1 = nominal size) */
+    Gfill_int_style int_style; /* fill area interior style */
+    int style_ind;             /* hatch style (negative, ISO) or pattern index */
+    int pat_nx, pat_ny;        /* pattern: cell counts and colours (row-major, row 0 at the */
+    const Grgb *pattern;       /* reference point), NULL unless int_style == GSTYLE_PAT */
+    Gpoint3 pat_ref;           /* pattern reference point and the pattern box's width and */
+    Gvec3 pat_width, pat_height; /* height vectors, all in NDC3 */
+    int edge_flag;             /* FILL AREA SET edges: 0 off, 1 on */
+    int edgetype;              /* as linetype */
+    double edgewidth;          /* edgewidth scale factor */
+    Grgb edge_colour;
+    int hlhsr_id;              /* HLHSR identifier attribute */
+    int pick_id;               /* pick identifier attribute */
+    int text;                  /* 1: a polyline stroke of TEXT (annotation) */
+} gks_prim_attrs;
 
 typedef struct gks_prim {
     gks_prim_kind kind;
@@ -40,7 +66,17 @@ typedef struct gks_prim {
     const int *loop_counts;   /* points per loop */
     int n_points;
     const Gpoint3 *pts;       /* NDC3 */
-    Grgb colour;
+    Grgb colour;              /* line, marker, text or fill colour */
+    gks_prim_attrs attrs;
+    /* CELL ARRAY (3): the parallelogram P (cell (0,0) corner), Q (opposite corner), R (the
+     * corner at the end of P's first row) in NDC3, nx*ny colours row-major from P; the clip
+     * box (NDC3 xmin,xmax,ymin,ymax,zmin,zmax) applies when clip = 1 (cells are clipped per
+     * sample, the only primitive not clipped in the core). */
+    Gpoint3 cell_p, cell_q, cell_r;
+    int cell_nx, cell_ny;
+    const Grgb *cells;
+    int clip;
+    double clip_box[6];
     int view_ind;             /* view index attribute: the ws's view representation */
     Garea_props area_props[2]; /* front, back area properties (lighting) */
     int refl_eq[2];           /* front, back reflectance equation, GREFL_* */
