@@ -286,13 +286,12 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
 {
     if (gks_check_state(GFN_ESC))
         return;
-    if (func_id != GESC_SET_FILE_NAME && func_id != GESC_RT_CLIP_SECONDARY)
+    /* Identifiers this implementation knows: the driver checks the rest of the record. */
+    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_RT_SPD)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)
         GKS_FAIL(182, GFN_ESC);
     if (func_id == GESC_SET_FILE_NAME && (!in->str || in->str_len == 0))
-        GKS_FAIL(182, GFN_ESC);
-    if (func_id == GESC_RT_CLIP_SECONDARY && (in->num_ints < 2 || (unsigned)in->ints[1] > 1))
         GKS_FAIL(182, GFN_ESC);
     gks_ws *ws = gks_ws_lookup(in->ints[0]);
     if (!ws)

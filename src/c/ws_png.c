@@ -299,14 +299,9 @@ static int png_message(gks_ws *ws, const char *msg)
 
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
-    (void)out;
     png_ws *p = ws->priv;
-    if (func_id == GESC_RT_CLIP_SECONDARY) {
-        if (!in || in->num_ints < 2 || (unsigned)in->ints[1] > 1)
-            return 182;
-        ws_rt_set_clip_secondary(p->rt, in->ints[1]);
-        return 0;
-    }
+    if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
+        return ws_rt_escape(p->rt, func_id, in, out);
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
     char *b = gks_strndup(in->str, in->str_len);

@@ -318,3 +318,14 @@ done:
     rt_scene_free(sc);
     return err;
 }
+
+int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    (void)out;
+    if (func_id != GESC_RT_CLIP_SECONDARY)
+        return 180;
+    if (!in || in->num_ints < 2 || (unsigned)in->ints[1] > 1)
+        return 182;
+    ws_rt_set_clip_secondary(r, in->ints[1]);
+    return 0;
+}

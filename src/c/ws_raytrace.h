@@ -19,6 +19,9 @@ void ws_rt_reset(ws_rt *r);
 int ws_rt_count(const ws_rt *r);
 /* Shadow/reflection/refraction rays limited to the display volume (1) or not (0). */
 void ws_rt_set_clip_secondary(ws_rt *r, int on);
+/* The ray-tracing ESCAPEs (GESC_RT_*, gks.h) of a workstation: 0, 180 (unknown id) or 182
+ * (bad data record). */
+int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
 /* Records a FILL AREA (others are ignored): points transformed by the view orientation
  * matrix of prim->view_ind into VRC3. Returns 0 or 300 (storage). */
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim);

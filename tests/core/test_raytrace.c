@@ -286,9 +286,9 @@ static void test_errors(void **u)
     Gint d[2] = { 1, 1 };
     Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
     EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL), 180, GFN_ESC);
-    d[1] = 2;
-    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL), 182, GFN_ESC);
     EXPECT(gescape(-999, &in, NULL), 180, GFN_ESC);
+    Gescape_in_data short_rec = { 0, d, 0, NULL, 0, NULL };
+    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &short_rec, NULL), 182, GFN_ESC);
     /* SET HLHSR MODE 4 is refused by the null workstation. */
     EXPECT(gset_hlhsr_mode(1, GHLHSR_RAYTRACE), 511, GFN_SHRM);
     gdeactivate_ws(1);
@@ -305,6 +305,10 @@ static void test_escape_png(void **u)
     open_png(1, "t_rt_esc.png", GHLHSR_RAYTRACE);
     Gint d[2] = { 1, 1 };
     Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
+    d[1] = 2; /* a bad record on a workstation that supports the escape: 182, no effect */
+    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL), 182, GFN_ESC);
+    d[1] = 1;
+    n_captured = 0;
     gescape(GESC_RT_CLIP_SECONDARY, &in, NULL);
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, 0, -1 }, { 1, 0 }, 0, 1 };
     gset_light_src_rep(1, 2, &l);
