@@ -166,7 +166,11 @@ enum {
     GESC_RT_CUTOFF = -105,       /* floats[0] adaptive depth cut-off weight in [0,1), 0 = off */
     GESC_RT_THREADS = -106,      /* ints[1] thread count, 0 = all online CPUs */
     GESC_RT_PROGRESS = -107,     /* ints[1] 0/1: progress report on stderr */
-    GESC_RT_STATS = -108,        /* out: ray and grid statistics of the last traced picture */
+    GESC_RT_STATS = -108,        /* out (ints): [0] eye rays, [1] eye rays that hit, [2] reflection,
+                                    [3] refraction, [4] shadow rays, [5] grid cells, [6] grid
+                                    references, [7] primitives (each saturating at INT_MAX);
+                                    out (floats): [0] build seconds, [1] render seconds, of the
+                                    last traced picture. Capacity 8 ints / 2 floats (less: 182). */
     GESC_RT_SPD = -109           /* ints[1] 0/1: SPD procedure (rays at pixel corners) */
 };
 
