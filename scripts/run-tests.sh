@@ -3,6 +3,7 @@
 #   ./build-test  Debug, -DGKS_WERROR=ON
 #   ./build-asan  Debug, -DGKS_WERROR=ON -DGKS_SANITIZE=ON (AddressSanitizer + UBSan,
 #                 LeakSanitizer on when it works here, see below)
+# then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
 # Exits non-zero on any build or test failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -37,4 +38,7 @@ fi
 export ASAN_OPTIONS="detect_leaks=$detect_leaks"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j2
+
+echo "=== run-tests: fuzzing the metafile reader (libFuzzer, ${FUZZ_SECONDS:-30} s)"
+scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
 echo "=== run-tests: all passed"

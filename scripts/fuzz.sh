@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# fuzz.sh -- fuzz the untrusted-input readers with libFuzzer for a fixed budget.
+#   scripts/fuzz.sh [seconds per target, default 60]
+# Installs clang and its libFuzzer runtime from Debian if missing, builds each target with
+# -fsanitize=fuzzer,address,undefined, runs it on a copy of the committed corpus
+# (tests/fuzz/corpus_*), and on a crash copies the input into the corpus (so the replay
+# test `fuzz_*_replay` keeps it as a regression test) and fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+budget=${1:-60}
+
+need=()
+for p in clang libclang-rt-14-dev; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || need+=("$p")
+done
+if [ ${#need[@]} -gt 0 ]; then
+    sudo=()
+    [ "$(id -u)" -ne 0 ] && sudo=(sudo)
+    export DEBIAN_FRONTEND=noninteractive
+    "${sudo[@]}" apt-get update -q
+    "${sudo[@]}" apt-get install -y -q --no-install-recommends "${need[@]}"
+fi
+
+out=build-fuzz
+mkdir -p "$out"
+flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
+       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L -Isrc/c -Iinclude)
+clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/gksm.c src/c/gks_alloc.c -lm -o "$out/fuzz_gksm"
+
+status=0
+for target in gksm; do
+    work="$out/corpus_$target"
+    rm -rf "$work"
+    cp -r "tests/fuzz/corpus_$target" "$work"
+    echo "fuzz: $target for ${budget}s"
+    if ! "$out/fuzz_$target" -max_total_time="$budget" -max_len=65536 -timeout=10 \
+            -rss_limit_mb=2048 -artifact_prefix="$out/$target-" "$work" 2>"$out/$target.log"; then
+        tail -40 "$out/$target.log"
+        for a in "$out/$target-"*; do
+            [ -e "$a" ] || continue
+            cp "$a" "tests/fuzz/corpus_$target/regress-$(basename "$a")"
+            echo "fuzz: kept $a as tests/fuzz/corpus_$target/regress-$(basename "$a")"
+        done
+        status=1
+    else
+        grep -E '^#[0-9]+.*(DONE|pulse)' "$out/$target.log" | tail -1
+    fi
+done
+exit $status
