@@ -171,7 +171,10 @@ enum {
                                     references, [7] primitives (each saturating at INT_MAX);
                                     out (floats): [0] build seconds, [1] render seconds, of the
                                     last traced picture. Capacity 8 ints / 2 floats (less: 182). */
-    GESC_RT_SPD = -109           /* ints[1] 0/1: SPD procedure (rays at pixel corners) */
+    GESC_RT_SPD = -109,          /* ints[1] 0/1: SPD procedure (rays at pixel corners) */
+    GESC_PNG_SUPERSAMPLE = -110  /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
+                                    samples per pixel (box filter); applies at once while the
+                                    frame is empty, else from the next CLEAR WORKSTATION */
 };
 
 /* ---------------------------------------------------------------------------------
@@ -213,6 +216,245 @@ GKS_API void gset_clip_ind(Gclip_ind clip_ind);
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win);
 /* SET WORKSTATION VIEWPORT. Errors: 7, 20, 25, 33, 36, 51, 54. */
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp);
+
+/* ---------------------------------------------------------------------------------
+ * Output primitives, attributes, bundles and their inquiries (ISO 7942 5.3-5.4 and the
+ * GKS-3D additions). Errors listed per function, in the order they are checked.
+ * --------------------------------------------------------------------------------- */
+typedef enum { GPREC_STRING, GPREC_CHAR, GPREC_STROKE } Gtext_prec;
+typedef enum { GPATH_RIGHT, GPATH_LEFT, GPATH_UP, GPATH_DOWN } Gtext_path;
+typedef enum { GHOR_NORM, GHOR_LEFT, GHOR_CTR, GHOR_RIGHT } Ghor_text_align;
+typedef enum { GVERT_NORM, GVERT_TOP, GVERT_CAP, GVERT_HALF, GVERT_BASE, GVERT_BOTTOM } Gvert_text_align;
+typedef enum { GEDGE_OFF, GEDGE_ON } Gedge_flag;
+typedef struct { Gint font; Gtext_prec prec; } Gtext_font_prec;
+typedef struct { Ghor_text_align hor; Gvert_text_align vert; } Gtext_align;
+typedef struct { Gint num_point_lists; Gpoint_list *point_lists; } Gpoint_list_list;
+typedef struct { Gint num_point_lists; Gpoint_list3 *point_lists; } Gpoint_list_list3;
+typedef struct { Gpoint p, q; } Grect;
+/* CELL ARRAY 3 parallelogram: P = corner of cell (0,0), Q = the opposite corner, R = the
+ * corner at the end of P's first row (cells of a row run from P towards R). */
+typedef struct { Gpoint3 p, q, r; } Gparal;
+/* Colour index array / pattern: dims.size_x columns, dims.size_y rows, element (i, j) =
+ * colr_array[j * dims.size_x + i], row 0 at P (cell array) or at the reference point. */
+typedef struct { Gint_size dims; Gint *colr_array; } Gpat_rep;
+/* GDP data record (no GDP is supported by this implementation). */
+typedef struct {
+    Gint num_ints;   const Gint *ints;
+    Gint num_floats; const Gfloat *floats;
+    size_t str_len;  const char *str;
+} Ggdp_data;
+/* Aspect source flags: the 13 of GKS in the standard's order, then (Gasfs3) the four
+ * GKS-3D edge flags. Default: all GASF_INDIV. */
+typedef struct {
+    Gasf linetype, linewidth, line_colr_ind;
+    Gasf marker_type, marker_size, marker_colr_ind;
+    Gasf text_font_prec, char_expan, char_space, text_colr_ind;
+    Gasf fill_int_style, fill_style_ind, fill_colr_ind;
+} Gasfs;
+typedef struct {
+    Gasfs asfs;
+    Gasf edge_flag, edgetype, edgewidth, edge_colr_ind;
+} Gasfs3;
+/* Bundles (SET ... REPRESENTATION, INQUIRE ... REPRESENTATION). */
+typedef struct { Gint type; Gfloat width; Gint colr_ind; } Gline_bundle;
+typedef struct { Gint type; Gfloat size; Gint colr_ind; } Gmarker_bundle;
+typedef struct {
+    Gtext_font_prec text_font_prec; Gfloat char_expan; Gfloat char_space; Gint colr_ind;
+} Gtext_bundle;
+typedef struct { Gfill_int_style int_style; Gint style_ind; Gint colr_ind; } Gfill_bundle;
+typedef struct { Gedge_flag flag; Gint type; Gfloat width; Gint colr_ind; } Gedge_bundle;
+/* Workstation facilities (INQUIRE ... FACILITIES). Lists are filled like the other list
+ * inquiries: the caller gives the capacity in num_elems_appl_list and the 0-based start
+ * position; *length_list receives the implementation's length. A width/size count of 0
+ * means continuous between min and max (nominal = the size of scale factor 1). */
+typedef struct {
+    Gint_list types; Gint num_widths; Gfloat nom_width, min_width, max_width; Gint num_pred_inds;
+} Gline_facs;
+typedef struct {
+    Gint_list types; Gint num_sizes; Gfloat nom_size, min_size, max_size; Gint num_pred_inds;
+} Gmarker_facs;
+typedef struct {
+    Gint num_font_precs; Gtext_font_prec *font_precs; /* count out (capacity: num_elems_appl_list) */
+    Gint num_char_hts; Gfloat min_char_ht, max_char_ht;
+    Gint num_char_expans; Gfloat min_char_expan, max_char_expan;
+    Gint num_pred_inds;
+} Gtext_facs;
+typedef struct { Gint_list int_styles; Gint_list hatch_styles; Gint num_pred_inds; } Gfill_facs;
+typedef struct {
+    Gint_list types; Gint num_widths; Gfloat nom_width, min_width, max_width; Gint num_pred_inds;
+} Gedge_facs;
+/* Maximum lengths of the workstation state tables (bundle indices run 1..length). */
+typedef struct {
+    Gint line_bundles, marker_bundles, text_bundles, fill_bundles, pat_reps, colr_reps,
+         edge_bundles;
+} Gmax_ws_st_tables;
+/* Text extent (INQUIRE TEXT EXTENT): concatenation point and the extent parallelogram
+ * (corners in the order lower-left, lower-right, upper-right, upper-left of the text
+ * extent rectangle, in the text's own frame), WC. */
+typedef struct { Gpoint concat_point; Gpoint paral[4]; } Gtext_extent;
+typedef struct { Gpoint3 concat_point; Gpoint3 paral[4]; } Gtext_extent3;
+
+/* POLYMARKER / POLYMARKER 3. Markers whose centre is outside the clipping region (or not
+ * finite) are not drawn. Errors: 5, 100 (fewer than 1 point). */
+GKS_API void gpolymarker(const Gpoint_list *point_list);
+GKS_API void gpolymarker3(const Gpoint_list3 *point_list);
+/* TEXT: string of ISO 646 printable characters (32..126) at pos (WC). STRING and CHAR
+ * precision are drawn as STROKE (allowed: a higher precision). Errors: 5, 101. */
+GKS_API void gtext(const Gpoint *pos, const char *str);
+/* TEXT 3: text plane through pos spanned by dir[0] (the text's local x axis) and dir[1];
+ * character up vector, height etc. act within that plane. Parallel or zero direction
+ * vectors draw nothing (no error is defined). Errors: 5, 101. */
+GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str);
+/* FILL AREA SET / FILL AREA SET 3: even-odd interior of all loops (holes), edges drawn
+ * with the edge attributes when the edge flag is on. Errors: 5, 100 (no loop, or a loop
+ * with fewer than 3 points). */
+GKS_API void gfill_area_set(const Gpoint_list_list *point_list_list);
+GKS_API void gfill_area_set3(const Gpoint_list_list3 *point_list_list);
+/* CELL ARRAY: rectangle with corners P (cell (0,0)) and Q; CELL ARRAY 3: parallelogram
+ * P, Q, R. Errors: 5, 91 (a dimension < 1 or no array). */
+GKS_API void gcell_array(const Grect *rect, const Gpat_rep *colr_array);
+GKS_API void gcell_array3(const Gparal *paral, const Gpat_rep *colr_array);
+/* GENERALIZED DRAWING PRIMITIVE (3): this implementation has no GDP.
+ * Errors: 5, 100 (negative count or no points), 102 (every identifier). */
+GKS_API void ggdp(const Gpoint_list *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
+GKS_API void ggdp3(const Gpoint_list3 *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
+
+/* Primitive attributes (the GKS state list). All in states GKOP, WSOP, WSAC, SGOP
+ * (error 8). Non-finite reals without an error of their own report 308. */
+GKS_API void gset_line_ind(Gint line_ind);                 /* 60: index < 1 */
+GKS_API void gset_linetype(Gint linetype);                  /* 63: linetype 0 */
+GKS_API void gset_linewidth(Gfloat linewidth);              /* 65: < 0 or NaN */
+GKS_API void gset_marker_ind(Gint marker_ind);              /* 66 */
+GKS_API void gset_marker_type(Gint marker_type);            /* 69: type 0 */
+GKS_API void gset_marker_size(Gfloat marker_size);          /* 71: < 0 or NaN */
+GKS_API void gset_marker_colr_ind(Gint colr_ind);           /* 92 */
+GKS_API void gset_text_ind(Gint text_ind);                  /* 72 */
+GKS_API void gset_text_font_prec(const Gtext_font_prec *font_prec); /* 75: font 0; 2000 */
+GKS_API void gset_char_expan(Gfloat char_expan);            /* 77: <= 0 */
+GKS_API void gset_char_space(Gfloat char_space);            /* 308 */
+GKS_API void gset_text_colr_ind(Gint colr_ind);             /* 92 */
+GKS_API void gset_char_ht(Gfloat char_ht);                  /* 78: <= 0 */
+GKS_API void gset_char_up_vec(const Gvec *char_up_vec);     /* 79: length zero */
+GKS_API void gset_text_path(Gtext_path text_path);          /* 2000 */
+GKS_API void gset_text_align(const Gtext_align *text_align); /* 2000 */
+GKS_API void gset_fill_ind(Gint fill_ind);                  /* 80 */
+GKS_API void gset_fill_int_style(Gfill_int_style style);    /* 2000 */
+GKS_API void gset_fill_style_ind(Gint style_ind);           /* 84: index 0 */
+GKS_API void gset_pat_size(const Gvec *pat_size);           /* 87: width or height <= 0 */
+/* SET PATTERN REFERENCE POINT: also resets the pattern reference vectors to (1,0,0),
+ * (0,1,0) and z to 0 (the GKS-3D meaning of the 2-D function). Errors: 8, 308. */
+GKS_API void gset_pat_ref_point(const Gpoint *ref_point);
+/* SET PATTERN REFERENCE POINT AND VECTORS (GKS-3D): the pattern box lies in the plane
+ * of vecs[0] (width direction) and vecs[1] (height direction). Errors: 8, 308, 2000
+ * (a vector zero or the two parallel). */
+GKS_API void gset_pat_ref_point_vecs(const Gpoint3 *ref_point, const Gvec3 vecs[2]);
+GKS_API void gset_asfs(const Gasfs *asfs);                  /* 2000 */
+GKS_API void gset_asfs3(const Gasfs3 *asfs);                /* 2000 */
+GKS_API void gset_pick_id(Gint pick_id);                    /* 97: < 0 */
+/* SET HLHSR IDENTIFIER (GKS-3D primitive attribute; any value, passed to drivers). */
+GKS_API void gset_hlhsr_id(Gint hlhsr_id);
+/* GKS-3D edge attributes of FILL AREA SET (3). Edge index < 1 is error 500 (PHIGS 100 + 400);
+ * the edgetype and edgewidth checks reuse the linetype/linewidth numbers 63, 64, 65. */
+GKS_API void gset_edge_flag(Gedge_flag edge_flag);          /* 2000 */
+GKS_API void gset_edgetype(Gint edgetype);                  /* 63 */
+GKS_API void gset_edgewidth(Gfloat edgewidth);              /* 65 */
+GKS_API void gset_edge_colr_ind(Gint colr_ind);             /* 92 */
+GKS_API void gset_edge_ind(Gint edge_ind);                  /* 500 */
+
+/* Representations (workstation bundle tables, indices 1..20; patterns 1..20). All:
+ * 7, 20, 25, 33, 35, 36, then as listed, colour index 93 last. */
+GKS_API void gset_line_rep(Gint ws_id, Gint line_ind, const Gline_bundle *rep);     /* 60, 63, 64, 65, 93 */
+GKS_API void gset_marker_rep(Gint ws_id, Gint marker_ind, const Gmarker_bundle *rep); /* 66, 69, 70, 71, 93 */
+GKS_API void gset_text_rep(Gint ws_id, Gint text_ind, const Gtext_bundle *rep);     /* 72, 75, 76, 77, 93 */
+GKS_API void gset_fill_rep(Gint ws_id, Gint fill_ind, const Gfill_bundle *rep);     /* 80, 83, 84, 85, 86, 93 */
+GKS_API void gset_pat_rep(Gint ws_id, Gint pat_ind, const Gpat_rep *rep);           /* 85, 90, 91, 93 */
+GKS_API void gset_edge_rep(Gint ws_id, Gint edge_ind, const Gedge_bundle *rep);     /* 500, 63, 64, 65, 93 */
+
+/* Inquiries of the current primitive attributes (error 8). */
+GKS_API void ginq_line_ind(Gint *err_ind, Gint *line_ind);
+GKS_API void ginq_linetype(Gint *err_ind, Gint *linetype);
+GKS_API void ginq_linewidth(Gint *err_ind, Gfloat *linewidth);
+GKS_API void ginq_marker_ind(Gint *err_ind, Gint *marker_ind);
+GKS_API void ginq_marker_type(Gint *err_ind, Gint *marker_type);
+GKS_API void ginq_marker_size(Gint *err_ind, Gfloat *marker_size);
+GKS_API void ginq_marker_colr_ind(Gint *err_ind, Gint *colr_ind);
+GKS_API void ginq_text_ind(Gint *err_ind, Gint *text_ind);
+GKS_API void ginq_text_font_prec(Gint *err_ind, Gtext_font_prec *font_prec);
+GKS_API void ginq_char_expan(Gint *err_ind, Gfloat *char_expan);
+GKS_API void ginq_char_space(Gint *err_ind, Gfloat *char_space);
+GKS_API void ginq_text_colr_ind(Gint *err_ind, Gint *colr_ind);
+GKS_API void ginq_char_ht(Gint *err_ind, Gfloat *char_ht);
+GKS_API void ginq_char_up_vec(Gint *err_ind, Gvec *char_up_vec);
+/* Character width (height x expansion factor 1 of the font: the standard's CHARACTER
+ * WIDTH = height) and the base vector (up vector turned clockwise by 90 degrees, unit). */
+GKS_API void ginq_char_width(Gint *err_ind, Gfloat *char_width);
+GKS_API void ginq_char_base_vec(Gint *err_ind, Gvec *char_base_vec);
+GKS_API void ginq_text_path(Gint *err_ind, Gtext_path *text_path);
+GKS_API void ginq_text_align(Gint *err_ind, Gtext_align *text_align);
+GKS_API void ginq_fill_ind(Gint *err_ind, Gint *fill_ind);
+GKS_API void ginq_fill_int_style(Gint *err_ind, Gfill_int_style *fill_int_style);
+GKS_API void ginq_fill_style_ind(Gint *err_ind, Gint *fill_style_ind);
+GKS_API void ginq_pat_size(Gint *err_ind, Gvec *pat_size);
+GKS_API void ginq_pat_ref_point(Gint *err_ind, Gpoint *ref_point);
+GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *ref_point, Gvec3 vecs[2]);
+GKS_API void ginq_asfs(Gint *err_ind, Gasfs *asfs);
+GKS_API void ginq_asfs3(Gint *err_ind, Gasfs3 *asfs);
+GKS_API void ginq_pick_id(Gint *err_ind, Gint *pick_id);
+GKS_API void ginq_hlhsr_id(Gint *err_ind, Gint *hlhsr_id);
+GKS_API void ginq_edge_flag(Gint *err_ind, Gedge_flag *edge_flag);
+GKS_API void ginq_edgetype(Gint *err_ind, Gint *edgetype);
+GKS_API void ginq_edgewidth(Gint *err_ind, Gfloat *edgewidth);
+GKS_API void ginq_edge_colr_ind(Gint *err_ind, Gint *colr_ind);
+GKS_API void ginq_edge_ind(Gint *err_ind, Gint *edge_ind);
+
+/* Workstation state list inquiries: 7, 20, 25, 33/35/36 as the set function, then:
+ * index invalid (60/66/72/80/85/500), 2000 (type not GINQ_SET/GINQ_REALIZED),
+ * not defined (61/67/73/81/88/501). GINQ_REALIZED returns the values the workstation
+ * uses (unsupported types replaced, widths and sizes clamped to the workstation's range,
+ * undefined colour indices replaced by 1). */
+GKS_API void ginq_line_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gline_bundle *rep);
+GKS_API void ginq_marker_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gmarker_bundle *rep);
+GKS_API void ginq_text_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gtext_bundle *rep);
+GKS_API void ginq_fill_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gfill_bundle *rep);
+GKS_API void ginq_edge_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gedge_bundle *rep);
+/* Pattern: rep->colr_array has room for cap entries; rep->dims receives the pattern's
+ * size; 2001 if cap < size_x * size_y (dims still set). */
+GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gint cap, Gint *err_ind, Gpat_rep *rep);
+/* Lists of defined indices, ascending (INQUIRE LIST OF ... INDICES). */
+GKS_API void ginq_list_line_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+GKS_API void ginq_list_marker_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+GKS_API void ginq_list_text_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+GKS_API void ginq_list_fill_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+GKS_API void ginq_list_pat_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+GKS_API void ginq_list_edge_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
+/* INQUIRE TEXT EXTENT (3): with the workstation's resolved text attributes, in WC.
+ * Errors: 7, 20, 25, 39 (not OUTPUT/OUTIN), 101 (invalid character), 308 (position not
+ * finite), 2000 (TEXT 3 direction vectors zero or parallel). */
+GKS_API void ginq_text_extent(Gint ws_id, const Gpoint *pos, const char *str, Gint *err_ind, Gtext_extent *extent);
+GKS_API void ginq_text_extent3(Gint ws_id, const Gpoint3 *pos, const Gvec3 dir[2], const char *str, Gint *err_ind, Gtext_extent3 *extent);
+
+/* Workstation description table inquiries: 8, 22, 23, 39 (not OUTPUT/OUTIN), then for
+ * the predefined ones: index invalid (60/66/72/80/85/500), not predefined
+ * (62/68/74/82/89/502). */
+GKS_API void ginq_line_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gline_facs *facs, Gint *length_list);
+GKS_API void ginq_marker_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gmarker_facs *facs, Gint *length_list);
+GKS_API void ginq_text_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gtext_facs *facs, Gint *length_list);
+/* Fill area facilities: the two lists (interior styles, hatch styles) share the
+ * capacity and start position; *length_list is the interior style count and
+ * *length_hatch the hatch style count. */
+GKS_API void ginq_fill_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gfill_facs *facs, Gint *length_list, Gint *length_hatch);
+GKS_API void ginq_pat_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_inds);
+GKS_API void ginq_edge_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gedge_facs *facs, Gint *length_list);
+GKS_API void ginq_pred_line_rep(Gint ws_type, Gint ind, Gint *err_ind, Gline_bundle *rep);
+GKS_API void ginq_pred_marker_rep(Gint ws_type, Gint ind, Gint *err_ind, Gmarker_bundle *rep);
+GKS_API void ginq_pred_text_rep(Gint ws_type, Gint ind, Gint *err_ind, Gtext_bundle *rep);
+GKS_API void ginq_pred_fill_rep(Gint ws_type, Gint ind, Gint *err_ind, Gfill_bundle *rep);
+GKS_API void ginq_pred_edge_rep(Gint ws_type, Gint ind, Gint *err_ind, Gedge_bundle *rep);
+/* Predefined pattern: as ginq_pat_rep (cap, 2001). */
+GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gint cap, Gint *err_ind, Gpat_rep *rep);
+GKS_API void ginq_max_ws_st_tables(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables *lengths);
+/* INQUIRE LIST OF AVAILABLE GENERALIZED DRAWING PRIMITIVES: always empty here. */
+GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *gdps, Gint *length_list);
 
 /* ---------------------------------------------------------------------------------
  * Utility functions (matrices act on column vectors: x' = m[0][0]x + m[0][1]y + m[0][2])
@@ -392,6 +634,58 @@ GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
 /* INQUIRE ERROR STATE (ISO 8651-4 has no such name; this follows its rules): whether
  * GKS is currently inside ERROR HANDLING, and the last error number reported. */
 GKS_API void ginq_err_st(Gint *in_error_handling, Gint *last_err_num);
+
+/* ---------------------------------------------------------------------------------
+ * Segments (ISO 7942 5.7; SET SEGMENT TRANSFORMATION 3 of ISO 8805). Segment names are
+ * positive integers (120 otherwise). A segment is stored on the workstations active when
+ * it is created; its primitives are kept in NDC3 with their attributes and clipping
+ * volume, and redrawn through the segment transformation on regeneration.
+ * --------------------------------------------------------------------------------- */
+typedef enum { GSEG_INVIS, GSEG_VIS } Gseg_vis;
+typedef enum { GSEG_NORM, GSEG_HIGHL } Gseg_highl;
+typedef enum { GSEG_UNDET, GSEG_DET } Gseg_det;
+typedef struct {
+    Gint seg_name;
+    Gtran_matrix3 tran_matrix;  /* NDC3 -> NDC3; a 2-D matrix is stored as x/y rows */
+    Gseg_vis vis;
+    Gseg_highl highl;
+    Gfloat pri;                 /* [0, 1] */
+    Gseg_det det;
+} Gseg_attrs3;
+
+/* CREATE SEGMENT. Errors: 3, 120, 121, 301. */
+GKS_API void gcreate_seg(Gint seg_name);
+/* CLOSE SEGMENT. Errors: 4. */
+GKS_API void gclose_seg(void);
+/* RENAME SEGMENT. Errors: 7, 120, 121, 122. */
+GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name);
+/* DELETE SEGMENT. Errors: 7, 120, 122, 125. */
+GKS_API void gdel_seg(Gint seg_name);
+/* DELETE SEGMENT FROM WORKSTATION. Errors: 7, 20, 25, 33, 35, 120, 123, 125. */
+GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name);
+/* SET SEGMENT TRANSFORMATION (2-D matrix: x/y rows, z unchanged). Errors: 7, 120, 122. */
+GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix);
+/* SET SEGMENT TRANSFORMATION 3. Errors: 7, 120, 122. */
+GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix);
+/* SET VISIBILITY. Errors: 7, 120, 122, 2000. */
+GKS_API void gset_vis(Gint seg_name, Gseg_vis vis);
+/* SET HIGHLIGHTING. Errors: 7, 120, 122, 2000. */
+GKS_API void gset_highl(Gint seg_name, Gseg_highl highl);
+/* SET SEGMENT PRIORITY. Errors: 7, 120, 122, 126. */
+GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri);
+/* SET DETECTABILITY. Errors: 7, 120, 122, 2000. */
+GKS_API void gset_det(Gint seg_name, Gseg_det det);
+/* Segment inquiries (list convention of the other list inquiries). */
+GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                Gint_list *seg_names, Gint *length_list);
+GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name);
+GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs);
+GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
+                                   Gint *err_ind, Gint_list *seg_names, Gint *length_list);
+GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
+                                Gint *err_ind, Gint_list *ws_ids, Gint *length_list);
+/* Number of segment priorities supported: 0 = continuous. */
+GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris);
 
 #ifdef __cplusplus
 }

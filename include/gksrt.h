@@ -135,6 +135,11 @@ typedef struct rt_build_options {
     int no_subgrids;      /* 1: no second grid level */
     int sub_min;          /* second level for top cells with more references; <= 0: default */
     double sub_factor;    /* second-level cells per reference; <= 0: default */
+    int grid_frame;       /* 0: automatic: the grid is laid out in a rotated frame (axes from
+                             one of the largest primitives) when that shrinks the grid box
+                             volume below 0.8 of the VRC3-aligned one (scenes seen obliquely);
+                             1: always VRC3 axes. grid_res forces VRC3 axes. Results do not
+                             depend on the frame (grid == brute force bit for bit). */
 } rt_build_options;
 
 /* Grid resolution rule: top level cells ~= factor * primitives, as cubic as the scene box
@@ -156,6 +161,21 @@ typedef struct rt_build_options {
  * (defaults). Returns RT_OK, RT_ERR_NOMEM. */
 RT_API int rt_scene_commit(rt_scene *sc, const rt_build_options *opts);
 
+/* Statistics of the committed grid (for reports and tests). */
+typedef struct rt_grid_info {
+    int res[3];              /* top-level cells per axis; 0 0 0: brute force (no grid) */
+    int rotated;             /* 1: grid laid out in a rotated frame (rt_build_options.grid_frame) */
+    uint64_t prims;          /* primitives kept at commit */
+    uint64_t cells, refs;    /* top level: cells, primitive references */
+    uint64_t empty_cells;    /* top-level cells without references */
+    uint64_t subgrids, subcells, subrefs; /* second level */
+    uint64_t max_leaf_refs;  /* most references in one cell that is traversed as a leaf */
+    double volume_fill;      /* fraction of the grid box in non-empty leaf cells */
+} rt_grid_info;
+
+/* Fills gi for a committed scene. RT_ERR_ARG (NULL), RT_ERR_STATE (not committed). */
+RT_API int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi);
+
 /* ---- Rays --------------------------------------------------------------------------------- */
 
 typedef struct rt_ray {
@@ -176,6 +196,12 @@ typedef struct rt_hit {
 RT_API int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
 /* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
 RT_API int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);
+
+/* Secondary ray from a hit (as the renderer spawns them): origin = hit point moved off the
+ * surface along the geometric normal, to the side dir points to, by
+ * 1e-12*(max|hit coordinate| + t) + 1e-9*(scene extent); dir copied; tmin 0, tmax +inf.
+ * RT_ERR_ARG (NULL, miss, non-finite values, zero dir), RT_ERR_STATE (not committed). */
+RT_API int rt_hit_spawn(const rt_scene *sc, const rt_hit *h, const double dir[3], rt_ray *out);
 
 /* ---- Camera (paper section 3) ------------------------------------------------------------ */
 

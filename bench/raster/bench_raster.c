@@ -7,6 +7,8 @@
  *   walk    one 10^7-point random-walk polyline, 1 px, solid
  * Reference figures (Mesa llvmpipe, single thread): tri16 1.18 s, tri128 10.3 s,
  * walk 1.88 s. Usage: bench_raster [tri16|tri128|eq16|eq128|walk|all] [count] [out.png]
+ * (the raster module alone, wall time; bench_gks runs the same rows through the whole GKS
+ * call path with peak memory and the OSMesa comparison in the same run).
  */
 #include "raster.h"
 #include <math.h>

@@ -2,7 +2,7 @@
  * rt_bench -- loads an NFF (SPD) or OFF scene, renders it with gksrt and reports frame time
  * and Mrays/s.
  *   rt_bench FILE [-s SIZE] [-t THREADS] [-corner] [-depth D] [-grid F] [-brute] [-primary]
- *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-progress]
+ *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-vrcgrid] [-progress]
  * NFF: the file's view; SPD procedure with -corner (SIZE+1)^2 eye rays, depth 5.
  * OFF: camera looking at the mesh from +z (of its box centre), one directional light.
  * -primary: primary rays only (rt_intersect on the camera's rays), reports Mrays/s.
@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     const char *path = argv[1], *out = NULL;
     int size = 512, threads = 1, corner = 0, depth = 5, brute = 0, primary = 0, reps = 1;
     double gridf = 0.0, subf = 0.0;
-    int submin = 0, nosub = 0, progress = 0;
+    int submin = 0, nosub = 0, progress = 0, frame = 0;
     for (int i = 2; i < argc; i++) {
         if (!strcmp(argv[i], "-s") && i + 1 < argc) size = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-t") && i + 1 < argc) threads = atoi(argv[++i]);
@@ -51,6 +51,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "-submin") && i + 1 < argc) submin = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-subf") && i + 1 < argc) subf = atof(argv[++i]);
         else if (!strcmp(argv[i], "-nosub")) nosub = 1;
+        else if (!strcmp(argv[i], "-vrcgrid")) frame = 1;
         else if (!strcmp(argv[i], "-progress")) progress = 1;
         else if (!strcmp(argv[i], "-primary")) primary = 1;
         else if (!strcmp(argv[i], "-o") && i + 1 < argc) out = argv[++i];
@@ -97,13 +98,23 @@ int main(int argc, char **argv)
         return 1;
     }
     rt_build_options bo = {.grid_factor = gridf, .brute_force = brute, .brute_threshold = -1,
-                           .no_subgrids = nosub, .sub_min = submin, .sub_factor = subf};
+                           .no_subgrids = nosub, .sub_min = submin, .sub_factor = subf,
+                           .grid_frame = frame};
     double t0 = now();
     if (rt_scene_commit(sc, &bo) != RT_OK) {
         fprintf(stderr, "commit failed\n");
         return 1;
     }
     double tb = now() - t0;
+    rt_grid_info gi;
+    if (rt_scene_grid_info(sc, &gi) == RT_OK)
+        printf("grid %dx%dx%d%s: %llu cells (%llu empty), %llu refs, %llu subgrids with %llu cells "
+               "and %llu refs, max refs per leaf %llu, non-empty volume %.3f\n",
+               gi.res[0], gi.res[1], gi.res[2], gi.rotated ? " (rotated frame)" : "",
+               (unsigned long long)gi.cells, (unsigned long long)gi.empty_cells,
+               (unsigned long long)gi.refs, (unsigned long long)gi.subgrids,
+               (unsigned long long)gi.subcells, (unsigned long long)gi.subrefs,
+               (unsigned long long)gi.max_leaf_refs, gi.volume_fill);
     rtu_view v;
     rtu_nff_view(&m, bb, &v);
     double vm[4][4];

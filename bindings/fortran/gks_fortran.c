@@ -227,6 +227,7 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
  * workstation identifier in columns 1-10 (I10), IDR(2..LIDR) the file name, each record
  * blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
  * No escape returns data: LODR = 0. */
+int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
 FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
                             const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
                             size_t odr_len)
@@ -235,6 +236,8 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
     (void)odr;
     (void)odr_len;
     *lodr = 0;
+    if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
+        return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
     Gescape_in_data in = { 0, NULL, 0, NULL, 0, NULL };
     Gescape_out_data out = { 0, NULL, 0, NULL };
     fint nrec = *lidr;

@@ -14,6 +14,7 @@
       CALL GACWK(WKID)
       CALL GSCR(WKID, 2, 1.0, 0.0, 0.0)
       CALL GSCR(WKID, 4, 0.0, 0.0, 1.0)
+      CALL GSFAIS(GSOLID)
       CALL GSFACI(2)
       CALL GFA(3, TX, TY)
       CALL GSPLCI(4)

@@ -27,10 +27,47 @@ typedef struct gks_desc_table {
     int max_norm_tran;
 } gks_desc_table;
 
-/* Primitive attributes currently selected (the GKS state list's "current" entries).
- * Grows with the output pipeline. */
+/* Aspect source flags, in the standard's order (GKS 13, then the GKS-3D edge four). */
+enum {
+    GKS_ASF_LINETYPE, GKS_ASF_LINEWIDTH, GKS_ASF_LINE_COLR,
+    GKS_ASF_MARKER_TYPE, GKS_ASF_MARKER_SIZE, GKS_ASF_MARKER_COLR,
+    GKS_ASF_TEXT_FONT_PREC, GKS_ASF_CHAR_EXPAN, GKS_ASF_CHAR_SPACE, GKS_ASF_TEXT_COLR,
+    GKS_ASF_FILL_INT_STYLE, GKS_ASF_FILL_STYLE_IND, GKS_ASF_FILL_COLR,
+    GKS_ASF_EDGE_FLAG, GKS_ASF_EDGETYPE, GKS_ASF_EDGEWIDTH, GKS_ASF_EDGE_COLR,
+    GKS_N_ASF
+};
+
+/* Primitive attributes currently selected (the GKS state list's "current" entries),
+ * named after the standard's entries. Defaults: gks_attr_init. */
 typedef struct gks_cur_attrs {
+    int line_ind, linetype;
+    double linewidth;
     int line_colr_ind;
+    int marker_ind, marker_type;
+    double marker_size;
+    int marker_colr_ind;
+    int text_ind;
+    Gtext_font_prec text_font_prec;
+    double char_expan, char_space;
+    int text_colr_ind;
+    double char_ht;
+    Gvec char_up_vec;
+    Gtext_path text_path;
+    Gtext_align text_align;
+    int fill_ind;
+    Gfill_int_style fill_int_style;
+    int fill_style_ind;
+    Gvec pat_size;               /* width, height */
+    Gpoint3 pat_ref_point;
+    Gvec3 pat_ref_vec[2];        /* width and height directions (GKS-3D) */
+    int edge_ind;
+    Gedge_flag edge_flag;
+    int edgetype;
+    double edgewidth;
+    int edge_colr_ind;
+    Gasf asf[GKS_N_ASF];
+    int pick_id;
+    int hlhsr_id;
     int fill_colr_ind;
     int view_ind;
     Garea_props area_props[2];  /* front, back (SET (BACK) AREA PROPERTIES) */
@@ -65,8 +102,14 @@ typedef struct gks_error_state {
     Gerr_handler handler;  /* NULL = gerr_hand */
 } gks_error_state;
 
+/* Test hook: called with every primitive just before a driver receives it. */
+struct gks_prim;
+typedef void (*gks_prim_hook)(void *ctx, int ws_id, const struct gks_prim *prim);
+
 typedef struct gks_context {
     Gop_st op_st;
+    gks_prim_hook prim_hook;       /* NULL except in tests (gks_test_set_prim_hook) */
+    void *prim_hook_ctx;
     const gks_desc_table *desc;
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
@@ -83,6 +126,9 @@ static inline void gks_limit3_array(const Glimit3 *l, double b[6])
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.
  * Returns 0 or 308 (degenerate or non-finite window/viewport). GKS must be open. */
 int gks_cur_norm_matrix(double m[3][4]);
+
+/* The standard's initial values of the current primitive attributes (gks_attr.c). */
+void gks_attr_init(gks_cur_attrs *a);
 
 /* The context of this process (the C binding is procedural; GKS is single-threaded). */
 gks_context *gks_ctx(void);

@@ -16,6 +16,7 @@
 
 static void init_state_list(gks_state_list *sl)
 {
+    gks_attr_init(&sl->attrs);
     sl->attrs.line_colr_ind = 1;
     sl->attrs.fill_colr_ind = 1;
     for (int k = 0; k < 2; k++) {
@@ -287,7 +288,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
     if (gks_check_state(GFN_ESC))
         return;
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
-    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_RT_SPD)
+    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_SUPERSAMPLE)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)
         GKS_FAIL(182, GFN_ESC);

@@ -222,20 +222,6 @@ GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
     clip->clip_rect = (Glimit){ v->x_min, v->x_max, v->y_min, v->y_max };
 }
 
-GKS_API void ginq_line_colr_ind(Gint *err_ind, Gint *colr_ind)
-{
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
-        *colr_ind = gks_ctx()->sl->attrs.line_colr_ind;
-}
-
-GKS_API void ginq_fill_colr_ind(Gint *err_ind, Gint *colr_ind)
-{
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
-        *colr_ind = gks_ctx()->sl->attrs.fill_colr_ind;
-}
-
 GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
                            Gcolr_rep *colr_rep)
 {

@@ -1,195 +1,297 @@
 /*
- * gks_output.c -- output primitives (2-D subset: POLYLINE, FILL AREA), their colour
- * attributes and the normalization transformation: WC -> NDC, clipping at the viewport
- * when the clipping indicator is on (in the core, in homogeneous form, by gks_xform),
- * then dispatch to every active workstation with the colour resolved per workstation.
+ * gks_output.c -- output primitives (ISO 7942 5.3 and their GKS-3D forms): POLYLINE (3),
+ * POLYMARKER (3), TEXT (3), FILL AREA (3), FILL AREA SET (3), CELL ARRAY (3),
+ * GENERALIZED DRAWING PRIMITIVE (3); SET COLOUR REPRESENTATION; the normalization and
+ * workstation transformation settings.
+ *
+ * Each primitive: state check, argument checks (standard order), then the
+ * workstation-independent stages: WC3 -> NDC3 by the current normalization
+ * transformation, clipping at the viewport 3 when the clipping indicator is on (in the
+ * core, gks_xform), then for each active workstation the attributes are resolved
+ * (gks_attr.h) and the driver gets the primitive.
+ * Non-finite coordinates never reach a driver: a polyline is broken at such a point, a
+ * marker at such a point is dropped, an area or cell array containing one is not drawn
+ * (GKS defines no error for them). Markers are clipped by their centres; TEXT becomes
+ * polyline strokes (gks_text.c) generated per workstation (the text bundle may differ)
+ * and clipped like polylines. CELL ARRAY is the one primitive clipped by the driver
+ * (prim.clip, prim.clip_box).
  */
 #include "gks_alloc.h"
+#include "gks_attr.h"
 #include "gks_error.h"
+#include "gks_export.h"
 #include "gks_state.h"
+#include "gks_text.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
-static Grgb resolve_colour(const gks_ws *ws, int ind)
+/* ------------------------------------------------------------------ normalization */
+typedef struct {
+    double m[3][4];            /* WC3 -> NDC3 */
+    gks_xform_clip clip;       /* in NDC3 (w = 1) */
+    int clip_on;
+    double box[6];             /* the viewport 3 */
+} norm_ctx;
+
+/* 0, or -1 if the current normalization transformation is degenerate. */
+static int norm_setup(norm_ctx *nc)
 {
-    int n = ws->drv->desc->n_colr;
-    /* ISO 7942: a colour index not present in the table is drawn with index 1. */
-    if (ind < 0 || ind >= n || !ws->colr_defined[ind])
-        ind = 1 < n ? 1 : 0;
-    return ws->colr[ind];
+    const gks_state_list *sl = gks_ctx()->sl;
+    if (gks_cur_norm_matrix(nc->m))
+        return -1;
+    gks_xform_clip_init(&nc->clip);
+    gks_limit3_array(&sl->tran[sl->cur_tnr].vp, nc->box);
+    nc->clip_on = sl->clip_ind == GIND_CLIP;
+    if (nc->clip_on && gks_xform_clip_add_box(&nc->clip, nc->box, GKS_XFORM_CLIP_ALL))
+        return -1;
+    return 0;
 }
 
-static int dispatch(gks_prim *p, int colr_ind)
+/* WC3 -> homogeneous NDC3; 1 if finite. */
+static int to_ndc(const norm_ctx *nc, const double wc[3], double h[4])
 {
-    gks_context *c = gks_ctx();
-    const gks_cur_attrs *a = &c->sl->attrs;
+    gks_xform_mat34_point(nc->m, wc, h);
+    h[3] = 1.0;
+    return isfinite(h[0]) && isfinite(h[1]) && isfinite(h[2]);
+}
+
+/* A point list in WC: 2-D (z = 0), 3-D, or double triples. */
+typedef struct {
+    const Gpoint *p2;
+    const Gpoint3 *p3;
+    const double (*d3)[3];
+} pt_src;
+
+static void src_get(const pt_src *s, size_t i, double o[3])
+{
+    if (s->p2) {
+        o[0] = s->p2[i].x; o[1] = s->p2[i].y; o[2] = 0.0;
+    } else if (s->p3) {
+        o[0] = s->p3[i].x; o[1] = s->p3[i].y; o[2] = s->p3[i].z;
+    } else {
+        o[0] = s->d3[i][0]; o[1] = s->d3[i][1]; o[2] = s->d3[i][2];
+    }
+}
+
+/* ------------------------------------------------------------------ growing piece lists */
+typedef struct {
+    Gpoint3 *pts;
+    size_t n, cap;
+    int *len;                  /* points of each piece */
+    size_t np, capp;
+} pieces;
+
+static void pieces_free(pieces *b)
+{
+    gks_free(b->pts);
+    gks_free(b->len);
+    memset(b, 0, sizeof *b);
+}
+
+static int push_pt(pieces *b, const double h[4])
+{
+    if (b->n == b->cap) {
+        size_t cap = b->cap ? 2 * b->cap : 256;
+        Gpoint3 *p = gks_realloc_array(b->pts, cap, sizeof *p);
+        if (!p)
+            return 300;
+        b->pts = p;
+        b->cap = cap;
+    }
+    if (b->np == 0 || b->len[b->np - 1] == INT32_MAX)
+        return 300;
+    b->pts[b->n++] = (Gpoint3){ h[0], h[1], h[2] };
+    b->len[b->np - 1]++;
+    return 0;
+}
+
+static int new_piece(pieces *b)
+{
+    if (b->np == b->capp) {
+        size_t cap = b->capp ? 2 * b->capp : 16;
+        int *l = gks_realloc_array(b->len, cap, sizeof *l);
+        if (!l)
+            return 300;
+        b->len = l;
+        b->capp = cap;
+    }
+    b->len[b->np++] = 0;
+    return 0;
+}
+
+/* Clip the segment a-b to the viewport box (clipping on) plane by plane, each
+ * intersection computed from the segment already shortened by the previous planes and
+ * the clipped coordinate set exactly on the plane (so a segment from -1e30 to 1e30
+ * keeps its visible part, which a single parametric interval cannot resolve).
+ * Returns 1 if a part survives; *moved_a / *moved_b say whether an end was moved. */
+static int clip_segment(const norm_ctx *nc, double a[3], double b[3], int *moved_a,
+                        int *moved_b)
+{
+    *moved_a = *moved_b = 0;
+    if (!nc->clip_on)
+        return 1;
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side < 2; side++) {
+            double lim = nc->box[2 * axis + side];
+            double sg = side ? -1.0 : 1.0; /* inside: sg * (x - lim) >= 0 */
+            double da = sg * (a[axis] - lim), db = sg * (b[axis] - lim);
+            if (da < 0 && db < 0)
+                return 0;
+            if (da >= 0 && db >= 0)
+                continue;
+            double t = da / (da - db);
+            double *moved = da < 0 ? a : b;
+            const double *p = da < 0 ? a : b, *q = da < 0 ? b : a;
+            double tt = da < 0 ? t : 1.0 - t; /* from p towards q */
+            double r[3];
+            for (int k = 0; k < 3; k++)
+                r[k] = p[k] + tt * (q[k] - p[k]);
+            r[axis] = lim;
+            if (!isfinite(r[0]) || !isfinite(r[1]) || !isfinite(r[2]))
+                return 0; /* overflow near DBL_MAX: treated as not visible */
+            memcpy(moved, r, sizeof r);
+            if (da < 0)
+                *moved_a = 1;
+            else
+                *moved_b = 1;
+        }
+    return 1;
+}
+
+/* Whether the point h lies in the clipping region (closed box). */
+static int point_visible(const norm_ctx *nc, const double h[3])
+{
+    if (!nc->clip_on)
+        return 1;
+    for (int k = 0; k < 3; k++)
+        if (!(h[k] >= nc->box[2 * k] && h[k] <= nc->box[2 * k + 1]))
+            return 0;
+    return 1;
+}
+
+/* Clip the polyline s[0..n-1] (WC3) into b: normalized, clipped pieces of >= 2 points.
+ * A segment touching a non-finite point is dropped (the polyline is broken there).
+ * Returns 0 or 300. */
+static int clip_polyline(const norm_ctx *nc, const pt_src *s, size_t n, pieces *b)
+{
+    double prev[4], cur[4], wc[3];
+    int prev_ok = 0, open = 0;
+    for (size_t i = 0; i < n; i++) {
+        src_get(s, i, wc);
+        int ok = to_ndc(nc, wc, cur);
+        if (ok && prev_ok) {
+            double a[4] = { prev[0], prev[1], prev[2], 1 }, e[4] = { cur[0], cur[1], cur[2], 1 };
+            int ma, mb;
+            int vis = clip_segment(nc, a, e, &ma, &mb);
+            if (vis) {
+                if (!(open && !ma)) {
+                    if (new_piece(b) || push_pt(b, a))
+                        return 300;
+                }
+                if (push_pt(b, e))
+                    return 300;
+            }
+            open = vis && !mb;
+        } else {
+            open = 0;
+        }
+        if (ok)
+            memcpy(prev, cur, sizeof prev);
+        prev_ok = ok;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ dispatch */
+/* Attributes every primitive carries, independent of the workstation. */
+static void prim_common(gks_prim *p)
+{
+    const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
+    p->view_ind = a->view_ind;
     p->area_props[0] = a->area_props[0];
     p->area_props[1] = a->area_props[1];
     p->refl_eq[0] = a->refl_eq[0];
     p->refl_eq[1] = a->refl_eq[1];
     p->light_mask = a->light_mask;
-    for (int i = 0; i < c->sl->n_open; i++) {
-        gks_ws *ws = c->ws[i];
-        if (ws->state != GWS_ACTIVE || !ws->drv->primitive)
+}
+
+/* Test hook (exported for the tests only): every primitive a driver receives is first
+ * passed to hook (NULL = none). */
+GKS_TEST_API void gks_test_set_prim_hook(gks_prim_hook hook, void *ctx)
+{
+    gks_ctx()->prim_hook = hook;
+    gks_ctx()->prim_hook_ctx = ctx;
+}
+
+static int send(gks_ws *ws, const gks_prim *p)
+{
+    gks_context *c = gks_ctx();
+    if (c->prim_hook)
+        c->prim_hook(c->prim_hook_ctx, ws->id, p);
+    if (!ws->drv->primitive)
+        return 0;
+    int err = ws->drv->primitive(ws, p);
+    if (!err)
+        ws->disp_empty = GDISP_NOT_EMPTY;
+    return err;
+}
+
+/* The next active workstation from position *k, or NULL when there is none left. */
+static gks_ws *active_ws(int *k)
+{
+    gks_context *c = gks_ctx();
+    while (*k < c->sl->n_open) {
+        gks_ws *ws = c->ws[(*k)++];
+        if (ws->state == GWS_ACTIVE)
+            return ws;
+    }
+    return NULL;
+}
+
+/* Send the pieces as polylines (attributes already in p) to ws. */
+static int send_pieces(gks_ws *ws, gks_prim *p, const pieces *b)
+{
+    size_t off = 0;
+    for (size_t k = 0; k < b->np; k++) {
+        p->n_points = b->len[k];
+        p->pts = b->pts + off;
+        p->loop_counts = &p->n_points;
+        off += (size_t)b->len[k];
+        if (p->n_points < 2)
             continue;
-        p->colour = resolve_colour(ws, colr_ind);
-        int err = ws->drv->primitive(ws, p);
+        int err = send(ws, p);
         if (err)
             return err;
-        ws->disp_empty = GDISP_NOT_EMPTY;
     }
     return 0;
 }
 
-/* WC3 -> NDC3 by the current normalization transformation, homogeneous (w = 1).
- * Returns 0 if a coordinate is not finite (the primitive is then not drawn: GKS has no
- * error for it), 1 otherwise. */
-static int normalize(const double (*in)[3], size_t n, double (*out)[4])
-{
-    double m[3][4];
-    if (gks_cur_norm_matrix(m))
-        return 0;
-    for (size_t i = 0; i < n; i++) {
-        gks_xform_mat34_point(m, in[i], out[i]);
-        out[i][3] = 1.0;
-        if (!isfinite(out[i][0]) || !isfinite(out[i][1]) || !isfinite(out[i][2]))
-            return 0;
-    }
-    return 1;
-}
-
-/* The clip region in NDC3: the current viewport 3 if clipping is on, else none (the
- * workstation clips at its window in any case). */
-static void clip_region(gks_xform_clip *clip)
-{
-    const gks_state_list *sl = gks_ctx()->sl;
-    gks_xform_clip_init(clip);
-    if (sl->clip_ind == GIND_CLIP) {
-        double box[6];
-        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
-        gks_xform_clip_add_box(clip, box, GKS_XFORM_CLIP_ALL);
-    }
-}
-
-static void to_points(double (*h)[4], size_t n, Gpoint3 *pts)
-{
-    for (size_t i = 0; i < n; i++)
-        pts[i] = (Gpoint3){ h[i][0], h[i][1], h[i][2] };
-}
-
-/* POLYLINE (3) after the argument checks: wc holds n >= 2 points. */
-static void output_polyline(int fctid, size_t n, const double (*wc)[3])
-{
-    double (*h)[4] = gks_alloc_array(n, sizeof *h);
-    double (*out)[4] = gks_alloc_array(2 * (n - 1), sizeof *out);
-    size_t *len = gks_alloc_array(n - 1, sizeof *len);
-    Gpoint3 *pts = gks_alloc_array(2 * (n - 1), sizeof *pts);
-    int err = 0;
-    if (!h || !out || !len || !pts) {
-        err = 300;
-    } else if (normalize(wc, n, h)) {
-        gks_xform_clip clip;
-        size_t n_out, n_pieces;
-        clip_region(&clip);
-        if (gks_xform_clip_polyline(&clip, n, (const double (*)[4])h, out, 2 * (n - 1),
-                                    len, n - 1, &n_out, &n_pieces) == 0) {
-            to_points(out, n_out, pts);
-            size_t off = 0;
-            for (size_t k = 0; k < n_pieces && !err; k++) {
-                gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1,
-                               .n_points = (int)len[k], .pts = pts + off,
-                               .view_ind = gks_ctx()->sl->attrs.view_ind };
-                p.loop_counts = &p.n_points;
-                err = dispatch(&p, gks_ctx()->sl->attrs.line_colr_ind);
-                off += len[k];
-            }
-        }
-    }
-    gks_free(h);
-    gks_free(out);
-    gks_free(len);
-    gks_free(pts);
-    if (err)
-        gks_error_report(err, fctid);
-}
-
-/* FILL AREA (3) after the argument checks: wc holds n >= 3 points. */
-static void output_fill_area(int fctid, size_t n, const double (*wc)[3])
-{
-    double (*h)[4] = gks_alloc_array(n, sizeof *h);
-    double (*out)[4] = NULL;
-    Gpoint3 *pts = NULL;
-    int err = 0;
-    if (!h) {
-        err = 300;
-    } else if (normalize(wc, n, h)) {
-        gks_xform_clip clip;
-        size_t out_len, n_out = 0;
-        clip_region(&clip);
-        /* Counting call, then the real one. */
-        int r = gks_xform_clip_polygon(&clip, 1, &n, (const double (*)[4])h, NULL, 0,
-                                       &out_len, &n_out);
-        if ((r == 0 || r == 300) && n_out >= 3) {
-            out = gks_alloc_array(n_out, sizeof *out);
-            pts = gks_alloc_array(n_out, sizeof *pts);
-            if (!out || !pts)
-                err = 300;
-            else if (gks_xform_clip_polygon(&clip, 1, &n, (const double (*)[4])h, out, n_out,
-                                            &out_len, &n_out) == 0 && out_len >= 3) {
-                to_points(out, n_out, pts);
-                int cnt = (int)out_len;
-                gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = 1, .loop_counts = &cnt,
-                               .n_points = cnt, .pts = pts,
-                               .view_ind = gks_ctx()->sl->attrs.view_ind };
-                err = dispatch(&p, gks_ctx()->sl->attrs.fill_colr_ind);
-            }
-        }
-    }
-    gks_free(h);
-    gks_free(out);
-    gks_free(pts);
-    if (err)
-        gks_error_report(err, fctid);
-}
-
-/* Copy a 2-D or 3-D point list into WC3 (z = 0 for 2-D), NULL on storage overflow. */
-static double (*wc_points(const Gpoint *p2, const Gpoint3 *p3, size_t n))[3]
-{
-    double (*wc)[3] = gks_alloc_array(n, sizeof *wc);
-    for (size_t i = 0; wc && i < n; i++) {
-        wc[i][0] = p2 ? p2[i].x : p3[i].x;
-        wc[i][1] = p2 ? p2[i].y : p3[i].y;
-        wc[i][2] = p2 ? 0.0 : p3[i].z;
-    }
-    return wc;
-}
-
+/* ------------------------------------------------------------------ POLYLINE */
 static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
 {
     if (gks_check_state(fctid))
         return;
     if (n < 2 || (!p2 && !p3))
         GKS_FAIL(100, fctid);
-    double (*wc)[3] = wc_points(p2, p3, (size_t)n);
-    if (!wc)
-        GKS_FAIL(300, fctid);
-    output_polyline(fctid, (size_t)n, (const double (*)[3])wc);
-    gks_free(wc);
-}
-
-static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
-{
-    if (gks_check_state(fctid))
+    norm_ctx nc;
+    if (norm_setup(&nc))
         return;
-    if (n < 3 || (!p2 && !p3))
-        GKS_FAIL(100, fctid);
-    double (*wc)[3] = wc_points(p2, p3, (size_t)n);
-    if (!wc)
-        GKS_FAIL(300, fctid);
-    output_fill_area(fctid, (size_t)n, (const double (*)[3])wc);
-    gks_free(wc);
+    pt_src s = { p2, p3, NULL };
+    pieces b = { 0 };
+    int err = clip_polyline(&nc, &s, (size_t)n, &b);
+    gks_ws *ws;
+    for (int k = 0; !err && b.np > 0 && (ws = active_ws(&k));) {
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p);
+        gks_attr_prim_line(ws, &gks_ctx()->sl->attrs, &p);
+        err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    if (err)
+        gks_error_report(err, fctid);
 }
 
 GKS_API void gpolyline(const Gpoint_list *l)
@@ -202,6 +304,248 @@ GKS_API void gpolyline3(const Gpoint_list3 *l)
     polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
 }
 
+/* ------------------------------------------------------------------ POLYMARKER */
+static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 1 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    pt_src s = { p2, p3, NULL };
+    pieces b = { 0 };
+    int err = new_piece(&b);
+    for (int i = 0; i < n && !err; i++) {
+        double wc[3], h[4];
+        src_get(&s, (size_t)i, wc);
+        if (!to_ndc(&nc, wc, h) || !point_visible(&nc, h))
+            continue; /* centre not finite or outside the clipping region */
+        err = push_pt(&b, h);
+    }
+    gks_ws *ws;
+    for (int k = 0; !err && b.n > 0 && (ws = active_ws(&k));) {
+        gks_prim p = { .kind = GKS_PRIM_POLYMARKER, .n_loops = 1, .n_points = (int)b.n,
+                       .pts = b.pts };
+        p.loop_counts = &p.n_points;
+        prim_common(&p);
+        gks_attr_prim_marker(ws, &gks_ctx()->sl->attrs, &p);
+        err = send(ws, &p);
+    }
+    pieces_free(&b);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gpolymarker(const Gpoint_list *l)
+{
+    polymarker_any(GFN_PM, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gpolymarker3(const Gpoint_list3 *l)
+{
+    polymarker_any(GFN_PM3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+}
+
+/* ------------------------------------------------------------------ TEXT */
+typedef struct {
+    const norm_ctx *nc;
+    pieces *b;
+} stroke_ctx;
+
+static int stroke_emit(void *ctx, size_t n, const double (*pts)[3])
+{
+    stroke_ctx *sc = ctx;
+    pt_src s = { NULL, NULL, pts };
+    return clip_polyline(sc->nc, &s, n, sc->b);
+}
+
+static void text_any(int fctid, const double pos[3], const double d0[3], const double d1[3],
+                     const char *str)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (!str || gks_text_check(str))
+        GKS_FAIL(101, fctid);
+    gks_text_frame f;
+    norm_ctx nc;
+    if (!isfinite(pos[0]) || !isfinite(pos[1]) || !isfinite(pos[2]) ||
+        gks_text_frame3(pos, d0, d1, &f) || norm_setup(&nc))
+        return; /* nothing to draw */
+    const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
+    pieces b = { 0 };
+    int err = 0;
+    gks_ws *ws;
+    for (int k = 0; !err && *str && (ws = active_ws(&k));) {
+        gks_text_attrs ta;
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p);
+        gks_attr_text_layout(ws, a, &ta, &p.colour);
+        p.attrs.linetype = 1;
+        p.attrs.linewidth = 1.0;
+        p.attrs.text = 1;
+        p.attrs.hlhsr_id = a->hlhsr_id;
+        p.attrs.pick_id = a->pick_id;
+        b.n = b.np = 0;
+        stroke_ctx sc = { &nc, &b };
+        err = gks_text_strokes(&f, &ta, str, stroke_emit, &sc);
+        if (!err)
+            err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gtext(const Gpoint *pos, const char *str)
+{
+    const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, 0 };
+    text_any(GFN_TX, p, (const double[3]){ 1, 0, 0 }, (const double[3]){ 0, 1, 0 }, str);
+}
+
+GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
+{
+    const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, pos ? pos->z : NAN };
+    double d0[3] = { NAN, NAN, NAN }, d1[3] = { NAN, NAN, NAN };
+    if (dir) {
+        d0[0] = dir[0].delta_x; d0[1] = dir[0].delta_y; d0[2] = dir[0].delta_z;
+        d1[0] = dir[1].delta_x; d1[1] = dir[1].delta_y; d1[2] = dir[1].delta_z;
+    }
+    text_any(GFN_TX3, p, d0, d1, str);
+}
+
+/* ------------------------------------------------------------------ FILL AREA (SET) */
+/* Send an area (nl loops, counts[k] points each, m points in all, NDC3) to every active
+ * workstation. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. */
+static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, int is_set)
+{
+    int err = 0;
+    gks_ws *ws;
+    for (int k = 0; !err && (ws = active_ws(&k));) {
+        gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = nl, .loop_counts = counts,
+                       .n_points = m, .pts = pts };
+        Grgb *pat = NULL;
+        prim_common(&p);
+        err = gks_attr_prim_fill(ws, &gks_ctx()->sl->attrs, &p, &pat);
+        if (!is_set)
+            p.attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
+        if (!err)
+            err = send(ws, &p);
+        gks_free(pat);
+    }
+    return err;
+}
+
+/* The clipped path of an area: homogeneous copy, Sutherland-Hodgman per loop, loops with
+ * fewer than 3 points dropped. Returns 0 or an error number. */
+static int clip_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                     const Gpoint3 *pts, int is_set)
+{
+    double (*h)[4] = gks_alloc_array(n, sizeof *h);
+    size_t *out_len = gks_alloc_array(nloops, sizeof *out_len);
+    double (*out)[4] = NULL;
+    Gpoint3 *cp = NULL;
+    int *counts = NULL;
+    int err = 0;
+    if (!h || !out_len) {
+        err = 300;
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        h[i][0] = pts[i].x; h[i][1] = pts[i].y; h[i][2] = pts[i].z; h[i][3] = 1.0;
+    }
+    size_t n_out = 0;
+    int r = gks_xform_clip_polygon(&nc->clip, nloops, cnt, (const double (*)[4])h, NULL, 0,
+                                   out_len, &n_out);
+    if ((r != 0 && r != 300) || n_out < 3)
+        goto done;
+    out = gks_alloc_array(n_out, sizeof *out);
+    cp = gks_alloc_array(n_out, sizeof *cp);
+    counts = gks_alloc_array(nloops, sizeof *counts);
+    if (!out || !cp || !counts) {
+        err = 300;
+        goto done;
+    }
+    if (gks_xform_clip_polygon(&nc->clip, nloops, cnt, (const double (*)[4])h, out, n_out,
+                               out_len, &n_out))
+        goto done;
+    size_t m = 0, src_off = 0;
+    int nl = 0;
+    for (size_t k = 0; k < nloops; k++) {
+        if (out_len[k] >= 3 && out_len[k] <= INT32_MAX) {
+            for (size_t i = 0; i < out_len[k]; i++)
+                cp[m + i] = (Gpoint3){ out[src_off + i][0], out[src_off + i][1],
+                                       out[src_off + i][2] };
+            m += out_len[k];
+            counts[nl++] = (int)out_len[k];
+        }
+        src_off += out_len[k];
+    }
+    if (nl > 0 && m <= INT32_MAX)
+        err = dispatch_area(nl, counts, (int)m, cp, is_set);
+done:
+    gks_free(h);
+    gks_free(out_len);
+    gks_free(out);
+    gks_free(cp);
+    gks_free(counts);
+    return err;
+}
+
+/* Area after the argument checks: nloops loops (loop k: cnt[k] >= 3 points) taken from
+ * s one after the other. is_set: FILL AREA SET. An area inside the clipping region (the
+ * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
+static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_src *s,
+                        int is_set)
+{
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    size_t n = 0;
+    for (size_t k = 0; k < nloops; k++)
+        n += cnt[k];
+    if (n > INT32_MAX || nloops > INT32_MAX)
+        GKS_FAIL(300, fctid);
+    Gpoint3 *pts = gks_alloc_array(n, sizeof *pts);
+    int *counts = gks_alloc_array(nloops, sizeof *counts);
+    int err = 0, inside = 1;
+    if (!pts || !counts) {
+        err = 300;
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double wc[3], h[4];
+        src_get(s, i, wc);
+        if (!to_ndc(&nc, wc, h))
+            goto done; /* a non-finite vertex: the area is not drawn */
+        inside = inside && point_visible(&nc, h);
+        pts[i] = (Gpoint3){ h[0], h[1], h[2] };
+    }
+    for (size_t k = 0; k < nloops; k++)
+        counts[k] = (int)cnt[k];
+    if (inside)
+        err = dispatch_area((int)nloops, counts, (int)n, pts, is_set);
+    else
+        err = clip_area(&nc, nloops, cnt, n, pts, is_set);
+done:
+    gks_free(pts);
+    gks_free(counts);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 3 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    size_t cnt = (size_t)n;
+    pt_src s = { p2, p3, NULL };
+    output_area(fctid, 1, &cnt, &s, 0);
+}
+
 GKS_API void gfill_area(const Gpoint_list *l)
 {
     fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL);
@@ -212,24 +556,145 @@ GKS_API void gfill_area3(const Gpoint_list3 *l)
     fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
 }
 
-GKS_API void gset_line_colr_ind(Gint colr_ind)
+/* FILL AREA SET (3): the loops are copied into one WC3 array. */
+static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoint_list_list3 *l3)
 {
-    if (gks_check_state(GFN_SPLCI))
+    if (gks_check_state(fctid))
         return;
-    if (colr_ind < 0)
-        GKS_FAIL(92, GFN_SPLCI);
-    gks_ctx()->sl->attrs.line_colr_ind = colr_ind;
+    int nl = l2 ? l2->num_point_lists : l3 ? l3->num_point_lists : 0;
+    if (nl < 1 || (l2 && !l2->point_lists) || (l3 && !l3->point_lists))
+        GKS_FAIL(100, fctid);
+    size_t total = 0;
+    for (int k = 0; k < nl; k++) {
+        int c = l2 ? l2->point_lists[k].num_points : l3->point_lists[k].num_points;
+        int has = l2 ? l2->point_lists[k].points != NULL : l3->point_lists[k].points != NULL;
+        if (c < 3 || !has)
+            GKS_FAIL(100, fctid);
+        total += (size_t)c;
+    }
+    size_t *cnt = gks_alloc_array((size_t)nl, sizeof *cnt);
+    double (*wc)[3] = gks_alloc_array(total, sizeof *wc);
+    if (!cnt || !wc) {
+        gks_free(cnt);
+        gks_free(wc);
+        GKS_FAIL(300, fctid);
+    }
+    size_t off = 0;
+    for (int k = 0; k < nl; k++) {
+        int c = l2 ? l2->point_lists[k].num_points : l3->point_lists[k].num_points;
+        pt_src s = { l2 ? l2->point_lists[k].points : NULL,
+                     l3 ? l3->point_lists[k].points : NULL, NULL };
+        for (int i = 0; i < c; i++)
+            src_get(&s, (size_t)i, wc[off + (size_t)i]);
+        cnt[k] = (size_t)c;
+        off += (size_t)c;
+    }
+    pt_src all = { NULL, NULL, (const double (*)[3])wc };
+    output_area(fctid, (size_t)nl, cnt, &all, 1);
+    gks_free(cnt);
+    gks_free(wc);
 }
 
-GKS_API void gset_fill_colr_ind(Gint colr_ind)
+GKS_API void gfill_area_set(const Gpoint_list_list *l)
 {
-    if (gks_check_state(GFN_SFACI))
-        return;
-    if (colr_ind < 0)
-        GKS_FAIL(92, GFN_SFACI);
-    gks_ctx()->sl->attrs.fill_colr_ind = colr_ind;
+    fill_area_set_any(GFN_FAS, l, NULL);
 }
 
+GKS_API void gfill_area_set3(const Gpoint_list_list3 *l)
+{
+    fill_area_set_any(GFN_FAS3, NULL, l);
+}
+
+/* ------------------------------------------------------------------ CELL ARRAY */
+static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (!ca || !ca->colr_array || ca->dims.size_x < 1 || ca->dims.size_y < 1)
+        GKS_FAIL(91, fctid);
+    norm_ctx nc;
+    double h[3][4];
+    if (norm_setup(&nc))
+        return;
+    for (int i = 0; i < 3; i++)
+        if (!to_ndc(&nc, pqr[i], h[i]))
+            return; /* a non-finite corner: not drawn */
+    size_t n = (size_t)ca->dims.size_x * (size_t)ca->dims.size_y;
+    Grgb *rgb = gks_alloc_array(n, sizeof *rgb);
+    if (!rgb)
+        GKS_FAIL(300, fctid);
+    int err = 0;
+    gks_ws *ws;
+    for (int k = 0; !err && (ws = active_ws(&k));) {
+        gks_prim p = { .kind = GKS_PRIM_CELL_ARRAY, .n_loops = 1,
+                       .cell_p = { h[0][0], h[0][1], h[0][2] },
+                       .cell_q = { h[1][0], h[1][1], h[1][2] },
+                       .cell_r = { h[2][0], h[2][1], h[2][2] },
+                       .cell_nx = ca->dims.size_x, .cell_ny = ca->dims.size_y,
+                       .cells = rgb, .clip = nc.clip_on };
+        p.loop_counts = &p.n_points;
+        memcpy(p.clip_box, nc.box, sizeof nc.box);
+        prim_common(&p);
+        p.attrs.hlhsr_id = gks_ctx()->sl->attrs.hlhsr_id;
+        p.attrs.pick_id = gks_ctx()->sl->attrs.pick_id;
+        for (size_t i = 0; i < n; i++)
+            rgb[i] = gks_attr_colour(ws, ca->colr_array[i]);
+        err = send(ws, &p);
+    }
+    gks_free(rgb);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gcell_array(const Grect *r, const Gpat_rep *ca)
+{
+    double pqr[3][3] = { { NAN, NAN, 0 }, { NAN, NAN, 0 }, { NAN, NAN, 0 } };
+    if (r) {
+        pqr[0][0] = r->p.x; pqr[0][1] = r->p.y;
+        pqr[1][0] = r->q.x; pqr[1][1] = r->q.y;
+        pqr[2][0] = r->q.x; pqr[2][1] = r->p.y; /* R: end of P's row (x direction) */
+    }
+    cell_array_any(GFN_CA, (const double (*)[3])pqr, ca);
+}
+
+GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
+{
+    double pqr[3][3] = { { NAN, NAN, NAN }, { NAN, NAN, NAN }, { NAN, NAN, NAN } };
+    if (par) {
+        const Gpoint3 *v[3] = { &par->p, &par->q, &par->r };
+        for (int i = 0; i < 3; i++) {
+            pqr[i][0] = v[i]->x; pqr[i][1] = v[i]->y; pqr[i][2] = v[i]->z;
+        }
+    }
+    cell_array_any(GFN_CA3, (const double (*)[3])pqr, ca);
+}
+
+/* ------------------------------------------------------------------ GDP */
+/* No GDP exists in this implementation: after the state and point checks every
+ * identifier is invalid (102). */
+static void gdp_any(int fctid, int n, const void *pts, Gint gdp_id)
+{
+    (void)gdp_id;
+    if (gks_check_state(fctid))
+        return;
+    if (n < 0 || (n > 0 && !pts))
+        GKS_FAIL(100, fctid);
+    GKS_FAIL(102, fctid);
+}
+
+GKS_API void ggdp(const Gpoint_list *l, Gint gdp_id, const Ggdp_data *data)
+{
+    (void)data;
+    gdp_any(GFN_GDP, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+}
+
+GKS_API void ggdp3(const Gpoint_list3 *l, Gint gdp_id, const Ggdp_data *data)
+{
+    (void)data;
+    gdp_any(GFN_GDP3, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+}
+
+/* ------------------------------------------------------------------ colour table */
 GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
 {
     if (gks_check_state(GFN_SCR))

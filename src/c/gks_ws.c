@@ -31,6 +31,47 @@ gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags)
     return ws;
 }
 
+/* The bundle tables from the description table's predefined bundles. 300 on storage
+ * overflow (the caller destroys the half-made state list). */
+static int init_bundles(gks_ws *ws, const gks_wdt_output *t)
+{
+    int max = t->max_bundles < GKS_WDT_MAX_BUNDLES ? t->max_bundles : GKS_WDT_MAX_BUNDLES;
+    for (int i = 1; i <= max; i++) {
+        if (i <= t->n_pred_line) {
+            ws->line_rep[i] = t->pred_line[i - 1];
+            ws->line_def[i] = 1;
+        }
+        if (i <= t->n_pred_marker) {
+            ws->marker_rep[i] = t->pred_marker[i - 1];
+            ws->marker_def[i] = 1;
+        }
+        if (i <= t->n_pred_text) {
+            ws->text_rep[i] = t->pred_text[i - 1];
+            ws->text_def[i] = 1;
+        }
+        if (i <= t->n_pred_fill) {
+            ws->fill_rep[i] = t->pred_fill[i - 1];
+            ws->fill_def[i] = 1;
+        }
+        if (i <= t->n_pred_edge) {
+            ws->edge_rep[i] = t->pred_edge[i - 1];
+            ws->edge_def[i] = 1;
+        }
+        if (i <= t->n_pred_pat) {
+            const gks_wdt_pattern *p = &t->pred_pat[i - 1];
+            size_t n = (size_t)p->nx * (size_t)p->ny;
+            ws->pat_rep[i].colr = gks_alloc_array(n, sizeof(int));
+            if (!ws->pat_rep[i].colr)
+                return 300;
+            memcpy(ws->pat_rep[i].colr, p->colr, n * sizeof(int));
+            ws->pat_rep[i].nx = p->nx;
+            ws->pat_rep[i].ny = p->ny;
+            ws->pat_def[i] = 1;
+        }
+    }
+    return 0;
+}
+
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
 {
     const gks_ws_desc *d = drv->desc;
@@ -72,6 +113,10 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
                                       .dir = { 0, 0, -1 }, .atten = { 1, 0 },
                                       .spread_angle = 3.14159265358979323846 };
     ws->light_defined[0] = 1;
+    if (init_bundles(ws, d->out ? d->out : &gks_wdt_raster)) {
+        gks_ws_destroy(ws);
+        return NULL;
+    }
     return ws;
 }
 
@@ -82,6 +127,8 @@ void gks_ws_destroy(gks_ws *ws)
     gks_free(ws->conn_id);
     gks_free(ws->colr);
     gks_free(ws->colr_defined);
+    for (int i = 0; i <= GKS_WDT_MAX_BUNDLES; i++)
+        gks_free(ws->pat_rep[i].colr);
     gks_free(ws);
 }
 

@@ -9,6 +9,7 @@
 #include "gks_private.h"
 #include "gks.h"
 #include "gks_context.h"
+#include "gks_wdt.h"
 
 #define GKS_WS_DRIVER_VERSION 1
 
@@ -28,6 +29,8 @@ typedef struct gks_ws_desc {
     Girg_mode default_irg;        /* default implicit regeneration mode */
     Gdefer_mode default_defer;
     unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
+    /* Output facilities and predefined bundles (gks_wdt.h); NULL = gks_wdt_raster. */
+    const struct gks_wdt_output *out;
 } gks_ws_desc;
 
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
@@ -103,6 +106,18 @@ struct gks_ws {
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
+    /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
+     * when entry i is defined. Initialised from the description table's predefined
+     * bundles at OPEN WORKSTATION. Pattern colour arrays are owned (gks_alloc). */
+    Gline_bundle line_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gmarker_bundle marker_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gtext_bundle text_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gfill_bundle fill_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gedge_bundle edge_rep[GKS_WDT_MAX_BUNDLES + 1];
+    struct { int nx, ny; int *colr; } pat_rep[GKS_WDT_MAX_BUNDLES + 1];
+    unsigned char line_def[GKS_WDT_MAX_BUNDLES + 1], marker_def[GKS_WDT_MAX_BUNDLES + 1],
+        text_def[GKS_WDT_MAX_BUNDLES + 1], fill_def[GKS_WDT_MAX_BUNDLES + 1],
+        edge_def[GKS_WDT_MAX_BUNDLES + 1], pat_def[GKS_WDT_MAX_BUNDLES + 1];
 };
 
 struct gks_ws_driver {

@@ -21,6 +21,7 @@ static const gks_ws_desc null_desc = {
     .default_irg = GIRG_ALLOWED,
     .default_defer = GDEFER_ASAP,
     .hlhsr_modes = 1u << GHLHSR_NONE,
+    .out = &gks_wdt_raster,
 };
 
 const gks_ws_driver gks_ws_null_driver = {

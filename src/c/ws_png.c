@@ -10,11 +10,17 @@
  * A frame's file is written at UPDATE WORKSTATION, CLEAR WORKSTATION and CLOSE
  * WORKSTATION when it has new content; a workstation closed without any drawing still
  * writes one (background) picture.
+ *
+ * Rendering and the HLHSR modes: ws_png_render.h. Anti-aliasing: ESCAPE
+ * GESC_PNG_SUPERSAMPLE (ints[1] = s in 1..4) renders the following frames with s x s
+ * samples per pixel (box-filtered to the image when written); it applies at once if the
+ * current frame is still empty, else from the next CLEAR WORKSTATION. Default 1 (none).
  */
 #include "raster.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_driver.h"
+#include "ws_png_render.h"
 #include "ws_raytrace.h"
 #include <ctype.h>
 #include <math.h>
@@ -28,13 +34,15 @@ static const Grgb png_colours[8] = {
 };
 
 typedef struct png_ws {
-    gks_raster_fb *fb;
+    gks_raster_fb *fb;  /* primitives drawn at once */
     char *base;
     int frame;          /* 1-based number of the current frame */
     int dirty;          /* content not yet written */
     int written_any;    /* some file has been written */
     int frame_written;  /* the current frame has a file */
+    int ss;             /* supersampling factor of the next framebuffer (anti-aliasing) */
     ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
+    png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
 } png_ws;
 
 static char *base_from_conn(const char *conn)
@@ -63,13 +71,16 @@ static int png_open(gks_ws *ws)
         return 300;
     p->base = base_from_conn(ws->conn_id);
     p->rt = ws_rt_new();
-    if (!p->base || !p->rt) {
+    p->render = ws_png_render_new();
+    if (!p->base || !p->rt || !p->render) {
         gks_free(p->base);
         ws_rt_free(p->rt);
+        ws_png_render_free(p->render);
         gks_free(p);
         return 300;
     }
     p->frame = 1;
+    p->ss = 1;
     ws->priv = p;
     return 0;
 }
@@ -79,6 +90,7 @@ static void png_close(gks_ws *ws)
     png_ws *p = ws->priv;
     gks_raster_fb_free(p->fb);
     ws_rt_free(p->rt);
+    ws_png_render_free(p->render);
     gks_free(p->base);
     gks_free(p);
     ws->priv = NULL;
@@ -102,7 +114,7 @@ static gks_raster_fb *framebuffer(gks_ws *ws)
     if (p->fb && p->fb->width == w && p->fb->height == h)
         return p->fb;
     gks_raster_fb_free(p->fb);
-    p->fb = gks_raster_fb_create(w, h, 1);
+    p->fb = gks_raster_fb_create(w, h, p->ss);
     if (p->fb) {
         float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green, (float)ws->colr[0].blue };
         gks_raster_fb_clear(p->fb, bg);
@@ -119,6 +131,18 @@ static int png_clear(gks_ws *ws)
     }
     p->dirty = 0;
     ws_rt_reset(p->rt);
+    ws_png_render_reset(p->render);
+    if (p->fb && p->fb->ss == p->ss) { /* same sampling: cleared in place if the size */
+        gks_raster_fb *fb = p->fb;      /* is unchanged (framebuffer() checks it) */
+        int w, h;
+        image_size(ws, &w, &h);
+        if (fb->width == w && fb->height == h) {
+            float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                            (float)ws->colr[0].blue };
+            gks_raster_fb_clear(fb, bg);
+            return 0;
+        }
+    }
     gks_raster_fb_free(p->fb);
     p->fb = NULL;
     return framebuffer(ws) ? 0 : 300;
@@ -141,6 +165,9 @@ static int png_update(gks_ws *ws)
         if (e)
             return e;
     }
+    gks_raster_fb *pic;
+    if (ws_png_render_compose(p->render, ws, fb, &pic))
+        return 300;
     size_t n = strlen(p->base) + 32;
     char *path = gks_alloc_array(n, 1);
     if (!path)
@@ -149,7 +176,7 @@ static int png_update(gks_ws *ws)
         snprintf(path, n, "%s.png", p->base);
     else
         snprintf(path, n, "%s-%03d.png", p->base, p->frame);
-    int r = gks_raster_fb_write_png(fb, path);
+    int r = gks_raster_fb_write_png(pic, path);
     gks_free(path);
     if (r != GKS_RASTER_OK)
         return r == GKS_RASTER_E_NOMEM ? 300 : 303;
@@ -170,26 +197,6 @@ static int ws_matrix(const gks_ws *ws, double m[4][4])
     return gks_xform_ws_tran3(win, vp, m);
 }
 
-/* The view pipeline of a primitive: NDC3 -> NPC3 (homogeneous) by the view
- * representation of its view index (an index not in the table uses view 0), and the
- * clip region in homogeneous NPC3: the view clip limits where the indicators are on,
- * intersected with the workstation window (clipping there is mandatory). */
-static int view_setup(const gks_ws *ws, int view_ind, double npc[4][4], gks_xform_clip *clip)
-{
-    const Gview_rep3 *v = &ws->views[view_ind >= 0 && view_ind <= GKS_MAX_VIEW_IND ? view_ind : 0];
-    gks_xform_multiply(v->map_matrix, v->ori_matrix, npc);
-    double lim[6], win[6];
-    gks_limit3_array(&v->clip_limit, lim);
-    gks_limit3_array(&ws->cur_win, win);
-    unsigned flags = (v->xy_clip == GIND_CLIP ? GKS_XFORM_CLIP_XY : 0) |
-                     (v->back_clip == GIND_CLIP ? GKS_XFORM_CLIP_BACK : 0) |
-                     (v->front_clip == GIND_CLIP ? GKS_XFORM_CLIP_FRONT : 0);
-    gks_xform_clip_init(clip);
-    if (flags && gks_xform_clip_add_box(clip, lim, flags))
-        return 1;
-    return gks_xform_clip_add_box(clip, win, GKS_XFORM_CLIP_ALL);
-}
-
 static int png_primitive(gks_ws *ws, const gks_prim *prim)
 {
     png_ws *p = ws->priv;
@@ -202,92 +209,10 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
         p->dirty = 1;
         return 0;
     }
-    double m[4][4], npc[4][4];
-    gks_xform_clip clip;
-    if (ws_matrix(ws, m) || view_setup(ws, prim->view_ind, npc, &clip))
-        return 0; /* degenerate transformation: nothing visible */
-
-    size_t n = (size_t)prim->n_points;
-    size_t cap = prim->kind == GKS_PRIM_POLYLINE ? 2 * n : 4 * n + 16;
-    double (*h)[4] = gks_alloc_array(n, sizeof *h);
-    double (*out)[4] = gks_alloc_array(cap, sizeof *out);
-    size_t *len = gks_alloc_array(n + (size_t)prim->n_loops, sizeof *len);
-    size_t *loops = gks_alloc_array((size_t)prim->n_loops, sizeof *loops);
-    int *counts = gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
-    gks_raster_pt *pts = gks_alloc_array(cap, sizeof *pts);
-    int err = 0;
-    if (!h || !out || !len || !loops || !counts || !pts) {
-        err = 300;
-        goto done;
-    }
-    for (size_t i = 0; i < n; i++)
-        gks_xform_apply(npc, (const double[4]){ prim->pts[i].x, prim->pts[i].y, prim->pts[i].z, 1 },
-                        h[i]);
-    size_t n_out = 0, n_pieces = 0;
-    int r;
-    if (prim->kind == GKS_PRIM_POLYLINE) {
-        r = gks_xform_clip_polyline(&clip, n, (const double (*)[4])h, out, cap, len, n,
-                                    &n_out, &n_pieces);
-    } else {
-        for (int k = 0; k < prim->n_loops; k++)
-            loops[k] = (size_t)prim->loop_counts[k];
-        r = gks_xform_clip_polygon(&clip, (size_t)prim->n_loops, loops,
-                                   (const double (*)[4])h, out, cap, len, &n_out);
-        if (r == 300 && n_out > cap) { /* more vertices than estimated: grow, retry */
-            double (*o2)[4] = gks_realloc_array(out, n_out, sizeof *out);
-            gks_raster_pt *p2 = o2 ? gks_realloc_array(pts, n_out, sizeof *pts) : NULL;
-            if (o2)
-                out = o2;
-            if (p2)
-                pts = p2;
-            if (o2 && p2) {
-                cap = n_out;
-                r = gks_xform_clip_polygon(&clip, (size_t)prim->n_loops, loops,
-                                           (const double (*)[4])h, out, cap, len, &n_out);
-            }
-        }
-        n_pieces = (size_t)prim->n_loops;
-    }
-    if (r == 300)
-        err = 300;
-    if (r)
-        goto done;
-    for (size_t i = 0; i < n_out; i++) {
-        double c[3], q[3];
-        if (gks_xform_divide(out[i], c))
-            goto done; /* cannot happen after clipping with wmin > 0 */
-        gks_xform_point(m, c, q);
-        pts[i] = (gks_raster_pt){ q[0], q[1], q[2] };
-    }
-    gks_raster_zmode zmode = ws->hlhsr_mode == GHLHSR_ZBUFFER ? GKS_RASTER_Z_TEST : GKS_RASTER_Z_NONE;
-    const float rgb[3] = { (float)prim->colour.red, (float)prim->colour.green,
-                           (float)prim->colour.blue };
-    if (prim->kind == GKS_PRIM_POLYLINE) {
-        gks_raster_line la = { .rgb = { rgb[0], rgb[1], rgb[2] }, .width = 1, .type = 1,
-                               .zmode = zmode };
-        size_t off = 0;
-        for (size_t k = 0; k < n_pieces; k++) {
-            gks_raster_polyline(fb, len[k], pts + off, &la);
-            off += len[k];
-        }
-    } else {
-        int nl = 0;
-        for (size_t k = 0; k < n_pieces; k++)
-            counts[nl++] = (int)len[k];
-        gks_raster_fill fa = { .style = GKS_RASTER_SOLID, .rgb = { rgb[0], rgb[1], rgb[2] },
-                               .zmode = zmode };
-        if (n_out >= 3)
-            gks_raster_fill_area(fb, nl, counts, pts, &fa);
-    }
-    p->dirty = 1;
-done:
-    gks_free(h);
-    gks_free(out);
-    gks_free(len);
-    gks_free(loops);
-    gks_free(counts);
-    gks_free(pts);
-    return err;
+    int e = ws_png_render_prim(p->render, ws, fb, prim);
+    if (!e)
+        p->dirty = 1;
+    return e;
 }
 
 static int png_message(gks_ws *ws, const char *msg)
@@ -300,6 +225,18 @@ static int png_message(gks_ws *ws, const char *msg)
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     png_ws *p = ws->priv;
+    if (func_id == GESC_PNG_SUPERSAMPLE) {
+        if (in->num_ints < 2 || !in->ints || in->ints[1] < 1 || in->ints[1] > 4)
+            return 182;
+        p->ss = in->ints[1];
+        if (!p->dirty && !p->frame_written && ws_png_render_retained(p->render) == 0 &&
+            ws_rt_count(p->rt) == 0) { /* nothing drawn yet: this frame already */
+            gks_raster_fb_free(p->fb);
+            p->fb = NULL;
+            return framebuffer(ws) ? 0 : 300;
+        }
+        return 0;
+    }
     if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
         return ws_rt_escape(p->rt, func_id, in, out);
     if (func_id != GESC_SET_FILE_NAME)
@@ -318,8 +255,10 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         .dc_units = GDC_OTHER, .dc_x = SIZE, .dc_y = SIZE, .raster_x = SIZE,         \
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
-        .default_defer = GDEFER_ASAP,                                                \
-        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_RAYTRACE),\
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster,                        \
+        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) |               \
+                       (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_PAINTER) |                \
+                       (1u << GHLHSR_RAYTRACE),                                         \
     }
 
 static const gks_ws_desc png_desc = PNG_DESC(GWS_TYPE_PNG, "png", 1024);

@@ -1,32 +1,48 @@
 /*
- * ws_raytrace.h -- HLHSR mode GHLHSR_RAYTRACE for raster workstations: FILL AREA
- * primitives are recorded in VRC3 and traced with gksrt when the frame is written.
+ * ws_raytrace.h -- HLHSR mode GHLHSR_RAYTRACE for raster workstations: FILL AREA, FILL AREA
+ * SET and CELL ARRAY primitives are recorded in VRC3 and traced with gksrt when the frame is
+ * written. The ray-tracing ESCAPEs (GESC_RT_*, gks.h) set the render options. Behaviour and
+ * limits: docs/RAYTRACING.md.
  */
 #ifndef WS_RAYTRACE_H
 #define WS_RAYTRACE_H
 #include "raster.h"
 #include "ws_driver.h"
+#include "gksrt.h"
 
 typedef struct ws_rt ws_rt;
 
-/* New empty recording, NULL if out of memory. */
+/* New empty recording with default options, NULL if out of memory. */
 ws_rt *ws_rt_new(void);
 /* Frees a recording (NULL allowed). */
 void ws_rt_free(ws_rt *r);
-/* Forgets all recorded primitives (new frame); keeps the options. */
+/* Forgets all recorded primitives (new frame); keeps the options and the last statistics. */
 void ws_rt_reset(ws_rt *r);
-/* Number of recorded primitives. */
+/* Number of recorded tracer primitives (a clipped CELL ARRAY may record several). */
 int ws_rt_count(const ws_rt *r);
 /* Shadow/reflection/refraction rays limited to the display volume (1) or not (0). */
 void ws_rt_set_clip_secondary(ws_rt *r, int on);
-/* The ray-tracing ESCAPEs (GESC_RT_*, gks.h) of a workstation: 0, 180 (unknown id) or 182
- * (bad data record). */
+/* The render options the next picture uses (ESCAPE settings; the environment variable
+ * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
+void ws_rt_options(const ws_rt *r, rt_render_options *o);
+/* Statistics of the last traced picture (sums over its views); all zero before the first. */
+void ws_rt_last_stats(const ws_rt *r, rt_stats *st);
+/* The ray-tracing ESCAPEs GESC_RT_CLIP_SECONDARY .. GESC_RT_SPD of a workstation (records
+ * as documented in gks.h, ints[0] = ws id already checked by the core). Returns 0, 180
+ * (identifier not a ray-tracing escape) or 182 (bad data record: nothing changed). */
 int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
-/* Records a FILL AREA (others are ignored): points transformed by the view orientation
- * matrix of prim->view_ind into VRC3. Returns 0 or 300 (storage). */
+/* Records an area primitive (FILL AREA / FILL AREA SET: GKS_PRIM_FILL_AREA with n_loops >=
+ * 1; CELL ARRAY: GKS_PRIM_CELL_ARRAY; other kinds are ignored): points transformed by the
+ * view orientation matrix of prim->view_ind into VRC3. A CELL ARRAY with clip = 1 that is not
+ * inside its clip box is recorded exactly clipped: per row, the run of cells inside as a
+ * one-row cell array and the cells crossing the box boundary as clipped polygons.
+ * Returns 0 or 300 (storage; the recording is unchanged). */
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim);
-/* Traces the primitives of the view of the first recorded primitive into fb: only pixels
- * whose primary ray hits a primitive are written. wsm: NPC3 -> image pixels (x right,
- * y up, pixel (i,j) centre at (i+.5, j+.5)). Returns 0 or 300 (storage). */
+/* Traces the recorded primitives into fb, one view after the other in ascending view index
+ * order, each view's primitives with that view's camera into the pixels of its display volume
+ * (view clip volume where on, intersected with the workstation window). A pixel is composed
+ * over fb by the fraction of its sample rays that hit a primitive (0: fb unchanged). wsm:
+ * NPC3 -> image pixels (x right, y up, pixel (i,j) centre at (i+.5, j+.5)). Returns 0 or
+ * 300 (storage). */
 int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_fb *fb);
 #endif

@@ -161,9 +161,17 @@ static int rt_build_push(rt_build *b, size_t cell, size_t prim)
     return 1;
 }
 
-/* 3-D points of the polygon/cell outline(s) lying on the traced plane */
-static size_t rt_prim_points(rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+/* 3-D points of the triangle / polygon / cell outline(s) lying on the traced plane (VRC3) */
+static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
 {
+    if (p->kind == RT_KIND_TRI) {
+        if (!rt_grow((void **)&b->pts, &b->cappts, 9, sizeof(double))) {
+            *err = 1;
+            return 0;
+        }
+        memcpy(b->pts, sc->tri[p->data].v, 9 * sizeof(double));
+        return 3;
+    }
     if (p->kind == RT_KIND_QUAD) {
         if (!rt_grow((void **)&b->pts, &b->cappts, 12, sizeof(double))) {
             *err = 1;
@@ -204,25 +212,16 @@ static size_t rt_prim_points(rt_scene *sc, rt_build *b, const rt_prim *p, int *e
     return nv;
 }
 
-static void rt_prim_bbox(const rt_scene *sc, const rt_build *b, const rt_prim *p, size_t npts,
-                         double bb[6])
+static void rt_pts_bbox(const double *pts, size_t npts, double bb[6])
 {
     for (int i = 0; i < 3; i++) {
         bb[i] = INFINITY;
         bb[3 + i] = -INFINITY;
     }
-    if (p->kind == RT_KIND_TRI) {
-        for (int v = 0; v < 3; v++)
-            for (int i = 0; i < 3; i++) {
-                bb[i] = fmin(bb[i], sc->tri[p->data].v[v][i]);
-                bb[3 + i] = fmax(bb[3 + i], sc->tri[p->data].v[v][i]);
-            }
-        return;
-    }
     for (size_t v = 0; v < npts; v++)
         for (int i = 0; i < 3; i++) {
-            bb[i] = fmin(bb[i], b->pts[3 * v + i]);
-            bb[3 + i] = fmax(bb[3 + i], b->pts[3 * v + i]);
+            bb[i] = fmin(bb[i], pts[3 * v + i]);
+            bb[3 + i] = fmax(bb[3 + i], pts[3 * v + i]);
         }
 }
 
@@ -282,6 +281,7 @@ void rt_grid_free(rt_grid *g)
     free(g->off);
     free(g->refs);
     free(g->sub);
+    free(g->skip);
     free(g->subs);
     free(g->soff);
     free(g->srefs);
@@ -297,17 +297,60 @@ static void rt_cell_box(const rt_box *g, const int c[3], double eps, double lo[3
     }
 }
 
+void rt_grid_point(const rt_grid *g, const double p[3], double out[3])
+{
+    if (!g->rotated) {
+        memcpy(out, p, 3 * sizeof(double));
+        return;
+    }
+    double q[3] = {p[0] - g->c[0], p[1] - g->c[1], p[2] - g->c[2]};
+    for (int a = 0; a < 3; a++)
+        out[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
+}
+
+void rt_grid_dir(const rt_grid *g, const double v[3], double out[3])
+{
+    if (!g->rotated) {
+        memcpy(out, v, 3 * sizeof(double));
+        return;
+    }
+    double q[3] = {v[0], v[1], v[2]};
+    for (int a = 0; a < 3; a++)
+        out[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
+}
+
+/* plane n.x = d of primitive p (VRC3); 0 for triangles (SAT instead) */
+static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], double *d)
+{
+    n[0] = n[1] = n[2] = 0.0;
+    *d = 0.0;
+    if (p->kind == RT_KIND_QUAD) {
+        const rt_quad *q = &sc->quad[p->data];
+        memcpy(n, q->n, 3 * sizeof(double));
+        *d = n[0] * q->v[0][0] + n[1] * q->v[0][1] + n[2] * q->v[0][2];
+    } else if (p->kind == RT_KIND_POLY) {
+        memcpy(n, sc->poly[p->data].n, 3 * sizeof(double));
+        *d = sc->poly[p->data].d;
+    } else if (p->kind == RT_KIND_CELL) {
+        memcpy(n, sc->cell[p->data].n, 3 * sizeof(double));
+        *d = sc->cell[p->data].d;
+    }
+}
+
 /* adds (base + cell, i) for every cell of box g whose eps-enlarged box the surface of
-   primitive i overlaps */
-static void rt_insert(rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base, double eps,
-                      int *err)
+   primitive i overlaps; geometry is taken into the grid frame of sc first */
+static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
+                      double eps, int *err)
 {
     const rt_prim *p = &sc->prim[i];
-    size_t npts = p->kind == RT_KIND_TRI ? 0 : rt_prim_points(sc, b, p, err);
+    const rt_grid *gr = &sc->grid;
+    size_t npts = rt_prim_points(sc, b, p, err);
     if (*err)
         return;
+    for (size_t k = 0; k < npts; k++)
+        rt_grid_point(gr, b->pts + 3 * k, b->pts + 3 * k);
     double bb[6];
-    rt_prim_bbox(sc, b, p, npts, bb);
+    rt_pts_bbox(b->pts, npts, bb);
     int c0[3], c1[3];
     for (int a = 0; a < 3; a++) {
         if (bb[a] - eps > g->hi[a] || bb[3 + a] + eps < g->lo[a])
@@ -316,18 +359,14 @@ static void rt_insert(rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size
         c1[a] = rt_cell_of(g, bb[3 + a] + eps, a);
     }
     int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
-    double n[3] = {0, 0, 0}, d = 0.0;
-    if (p->kind == RT_KIND_QUAD) {
-        const rt_quad *q = &sc->quad[p->data];
-        memcpy(n, q->n, sizeof n);
-        d = n[0] * q->v[0][0] + n[1] * q->v[0][1] + n[2] * q->v[0][2];
-    } else if (p->kind == RT_KIND_POLY) {
-        memcpy(n, sc->poly[p->data].n, sizeof n);
-        d = sc->poly[p->data].d;
-    } else if (p->kind == RT_KIND_CELL) {
-        memcpy(n, sc->cell[p->data].n, sizeof n);
-        d = sc->cell[p->data].d;
-    }
+    double n0[3], d0, n[3], d = 0.0;
+    rt_prim_plane(sc, p, n0, &d0);
+    rt_grid_dir(gr, n0, n);
+    if (p->kind != RT_KIND_TRI)
+        d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
+    rt_tri tri;
+    if (p->kind == RT_KIND_TRI)
+        memcpy(tri.v, b->pts, sizeof tri.v);
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
@@ -341,7 +380,7 @@ static void rt_insert(rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size
                         h[a] = 0.5 * (hi[a] - lo[a]);
                     }
                     if (p->kind == RT_KIND_TRI) {
-                        hit = rt_tri_box(&sc->tri[p->data], bc, h);
+                        hit = rt_tri_box(&tri, bc, h);
                     } else if (rt_plane_box(n, d, bc, h)) {
                         if (p->kind != RT_KIND_POLY) {
                             hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
@@ -385,10 +424,24 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
     return RT_OK;
 }
 
-/* Second level (measured, see gksrt.h): a top cell holding more than RT_SUB_MIN references
- * gets its own grid of about RT_SUB_FACTOR cells per reference (at most 32 per axis). */
+/* Second level (measured, see gksrt.h). A top cell holding more than RT_SUB_MIN references is
+ * split into "large" primitives (their part inside the cell spans at least half the cell in
+ * two axes: floors, walls crossing the cell) that stay in the top cell's list, and the rest,
+ * which get their own grid of about RT_SUB_FACTOR cells per reference (at most 32 per axis)
+ * over the box of their parts inside the cell. So a small dense object standing on a huge
+ * floor (teapot in a stadium) is resolved by a grid around the object, not around the cell.
+ * Traversal tests a cell's list first, then walks its second-level grid. */
 #define RT_SUB_MIN 8
 #define RT_SUB_FACTOR 4.0
+
+/* bounding box of primitive i in the grid frame */
+static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6], int *err)
+{
+    size_t npts = rt_prim_points(sc, b, &sc->prim[i], err);
+    for (size_t k = 0; k < npts; k++)
+        rt_grid_point(&sc->grid, b->pts + 3 * k, b->pts + 3 * k);
+    rt_pts_bbox(b->pts, npts, bb);
+}
 
 static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_factor, int sub_min)
 {
@@ -400,8 +453,12 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
         return RT_OK;
     g->sub = rt_alloc_array(g->ncells, sizeof(int32_t));
     g->subs = rt_alloc_array(nsub, sizeof(rt_subgrid));
-    if (!g->sub || !g->subs)
+    uint8_t *keep = rt_alloc_array(g->nrefs, 1); /* stays in the top cell's list */
+    if (!g->sub || !g->subs || !keep) {
+        free(keep);
         return RT_ERR_NOMEM;
+    }
+    memset(keep, 1, g->nrefs);
     b->npairs = 0;
     size_t total = 0;
     int err = 0;
@@ -414,10 +471,39 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                 g->sub[ci] = -1;
                 if (cnt <= (uint32_t)sub_min)
                     continue;
+                double lo[3], hi[3], sb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+                rt_cell_box(&g->b, c, 0.0, lo, hi);
+                uint32_t nsmall = 0;
+                for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++) {
+                    double bb[6];
+                    rt_prim_gbox(sc, b, g->refs[k], bb, &err);
+                    int span = 0;
+                    for (int a = 0; a < 3; a++) {
+                        bb[a] = fmax(bb[a] - eps, lo[a]);
+                        bb[3 + a] = fmin(bb[3 + a] + eps, hi[a]);
+                        span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
+                    }
+                    keep[k] = span >= 2;
+                    if (keep[k])
+                        continue;
+                    nsmall++;
+                    for (int a = 0; a < 3; a++) {
+                        sb[a] = fmin(sb[a], bb[a]);
+                        sb[3 + a] = fmax(sb[3 + a], bb[3 + a]);
+                    }
+                }
+                if (nsmall <= (uint32_t)sub_min || err) {
+                    for (uint32_t k = g->off[ci]; k < g->off[ci + 1]; k++)
+                        keep[k] = 1;
+                    continue;
+                }
                 rt_subgrid *sg = &g->subs[g->nsubs];
                 g->sub[ci] = (int32_t)g->nsubs++;
-                rt_cell_box(&g->b, c, 0.0, sg->b.lo, sg->b.hi);
-                rt_box_resolution(&sg->b, sub_factor * cnt, 32);
+                for (int a = 0; a < 3; a++) { /* sub box: the small parts, at least eps thick */
+                    sg->b.lo[a] = fmax(lo[a], fmin(sb[a], 0.5 * (sb[a] + sb[3 + a]) - eps));
+                    sg->b.hi[a] = fmin(hi[a], fmax(sb[3 + a], 0.5 * (sb[a] + sb[3 + a]) + eps));
+                }
+                rt_box_resolution(&sg->b, sub_factor * nsmall, 32);
                 rt_box_finish(&sg->b);
                 size_t n = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
                 if (total + n > UINT32_MAX - 1) {
@@ -426,9 +512,23 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                 }
                 sg->first = (uint32_t)total;
                 for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++)
-                    rt_insert(sc, b, g->refs[k], &sg->b, total, eps, &err);
+                    if (!keep[k])
+                        rt_insert(sc, b, g->refs[k], &sg->b, total, eps, &err);
                 total += n;
             }
+    if (!err) { /* top lists: only what stays (compacted in place) */
+        uint32_t w = 0;
+        for (size_t ci = 0; ci < g->ncells; ci++) {
+            uint32_t k0 = g->off[ci], k1 = g->off[ci + 1];
+            g->off[ci] = w;
+            for (uint32_t k = k0; k < k1; k++)
+                if (keep[k])
+                    g->refs[w++] = g->refs[k];
+        }
+        g->off[g->ncells] = w;
+        g->nrefs = w;
+    }
+    free(keep);
     if (err)
         return err == 2 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
     if (b->npairs > UINT32_MAX - 1)
@@ -437,6 +537,145 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
     g->nsrefs = b->npairs;
     return rt_csr(b, total, &g->soff, &g->srefs);
 }
+
+/* Grid frame. A scene seen obliquely (a floor at 30 degrees to the view direction, as in the
+ * SPD scenes traced in VRC3) has a VRC3-aligned bounding box that is mostly empty: rays then
+ * step through many empty cells. Candidate frames: the VRC3 axes, and for each of the
+ * RT_FRAME_CAND largest primitives (by the area of their bounding box) the frame (longest edge,
+ * normal x edge, normal). The one with the smallest box volume (axes thinner than 1/1000 of the
+ * largest counted at that size) is taken if it is below RT_FRAME_GAIN of the VRC3 volume,
+ * evaluated on at most RT_FRAME_SAMPLE primitives. */
+#define RT_FRAME_CAND 8
+#define RT_FRAME_GAIN 0.8
+#define RT_FRAME_SAMPLE 50000
+
+static double rt_box_volume(const double bb[6])
+{
+    double e[3], mx = 0.0;
+    for (int a = 0; a < 3; a++) {
+        e[a] = bb[3 + a] - bb[a];
+        mx = fmax(mx, e[a]);
+    }
+    if (!(mx > 0.0))
+        return 0.0;
+    return fmax(e[0], 1e-3 * mx) * fmax(e[1], 1e-3 * mx) * fmax(e[2], 1e-3 * mx);
+}
+
+/* box of all primitive points (every stride-th primitive) in the current grid frame */
+static int rt_frame_box(const rt_scene *sc, rt_build *b, size_t stride, double bb[6])
+{
+    int err = 0;
+    for (int a = 0; a < 3; a++) {
+        bb[a] = INFINITY;
+        bb[3 + a] = -INFINITY;
+    }
+    for (size_t i = 0; i < sc->nprim && !err; i += stride) {
+        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        for (size_t k = 0; k < npts; k++) {
+            double q[3];
+            rt_grid_point(&sc->grid, b->pts + 3 * k, q);
+            for (int a = 0; a < 3; a++) {
+                bb[a] = fmin(bb[a], q[a]);
+                bb[3 + a] = fmax(bb[3 + a], q[a]);
+            }
+        }
+    }
+    return err ? RT_ERR_NOMEM : RT_OK;
+}
+
+/* frame of primitive i: rows (edge, normal x edge, normal); 0 if degenerate */
+static int rt_prim_frame(const rt_scene *sc, rt_build *b, size_t i, double R[3][3], int *err)
+{
+    const rt_prim *p = &sc->prim[i];
+    size_t npts = rt_prim_points(sc, b, p, err);
+    const double *n = p->ng;
+    double best = 0.0, u[3] = {0, 0, 0};
+    for (size_t k = 0; k < npts; k++) {
+        const double *a = b->pts + 3 * k, *q = b->pts + 3 * ((k + 1) % npts);
+        double e[3] = {q[0] - a[0], q[1] - a[1], q[2] - a[2]};
+        double en = e[0] * n[0] + e[1] * n[1] + e[2] * n[2];
+        for (int j = 0; j < 3; j++)
+            e[j] -= en * n[j];
+        double l = sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+        if (l > best) {
+            best = l;
+            for (int j = 0; j < 3; j++)
+                u[j] = e[j] / l;
+        }
+    }
+    if (!(best > 0.0) || !isfinite(best))
+        return 0;
+    double v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+    double lv = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(lv > 0.5))
+        return 0;
+    for (int j = 0; j < 3; j++) {
+        R[0][j] = u[j];
+        R[1][j] = v[j] / lv;
+        R[2][j] = n[j];
+    }
+    return 1;
+}
+
+static int rt_choose_frame(rt_scene *sc, rt_build *b)
+{
+    rt_grid *g = &sc->grid;
+    g->rotated = 0;
+    size_t cand[RT_FRAME_CAND];
+    double area[RT_FRAME_CAND];
+    int nc = 0, err = 0;
+    for (size_t i = 0; i < sc->nprim && !err; i++) {
+        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        double bb[6];
+        rt_pts_bbox(b->pts, npts, bb);
+        double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
+        double ar = fmax(e[0] * e[1], fmax(e[1] * e[2], e[0] * e[2]));
+        int k = nc < RT_FRAME_CAND ? nc++ : RT_FRAME_CAND;
+        while (k > 0 && area[k - 1] < ar) { /* insertion into a descending list */
+            if (k < RT_FRAME_CAND) {
+                area[k] = area[k - 1];
+                cand[k] = cand[k - 1];
+            }
+            k--;
+        }
+        if (k < RT_FRAME_CAND) {
+            area[k] = ar;
+            cand[k] = i;
+        }
+    }
+    if (err)
+        return RT_ERR_NOMEM;
+    size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
+    double bb[6];
+    int rc = rt_frame_box(sc, b, stride, bb);
+    double vol0 = rt_box_volume(bb), best = RT_FRAME_GAIN * vol0;
+    double bestR[3][3];
+    int found = 0;
+    for (int a = 0; a < 3; a++)
+        g->c[a] = 0.5 * (sc->bbox[a] + sc->bbox[3 + a]);
+    for (int k = 0; k < nc && rc == RT_OK; k++) {
+        if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
+            continue;
+        g->rotated = 1;
+        rc = rt_frame_box(sc, b, stride, bb);
+        g->rotated = 0;
+        double vol = rt_box_volume(bb);
+        if (vol < best) {
+            best = vol;
+            memcpy(bestR, g->R, sizeof bestR);
+            found = 1;
+        }
+    }
+    if (err)
+        rc = RT_ERR_NOMEM;
+    if (rc == RT_OK && found) {
+        memcpy(g->R, bestR, sizeof bestR);
+        g->rotated = 1;
+    }
+    return rc;
+}
+
+static int rt_build_skip(rt_grid *g);
 
 int rt_grid_build(rt_scene *sc, const rt_build_options *o)
 {
@@ -449,16 +688,27 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     if (sc->nprim > UINT32_MAX - 1)
         return RT_ERR_LIMIT;
     rt_grid *g = &sc->grid;
-    double mx = 0.0;
-    for (int a = 0; a < 3; a++)
-        mx = fmax(mx, sc->bbox[3 + a] - sc->bbox[a]);
-    double pad = 1e-6 * mx + 1e-12 * sc->scale;
-    for (int a = 0; a < 3; a++) {
-        g->b.lo[a] = sc->bbox[a] - pad;
-        g->b.hi[a] = sc->bbox[3 + a] + pad;
-    }
     int explicit_res = o && o->grid_res[0] > 0 && o->grid_res[1] > 0 && o->grid_res[2] > 0 &&
                        o->grid_res[0] <= 1024 && o->grid_res[1] <= 1024 && o->grid_res[2] <= 1024;
+    rt_build b;
+    memset(&b, 0, sizeof b);
+    double fb[6];
+    memcpy(fb, sc->bbox, sizeof fb);
+    int rc = RT_OK;
+    g->rotated = 0;
+    if (!explicit_res && !(o && o->grid_frame == 1)) {
+        rc = rt_choose_frame(sc, &b);
+        if (rc == RT_OK && g->rotated)
+            rc = rt_frame_box(sc, &b, 1, fb);
+    }
+    double mx = 0.0;
+    for (int a = 0; a < 3; a++)
+        mx = fmax(mx, fb[3 + a] - fb[a]);
+    double pad = 1e-6 * mx + 1e-12 * sc->scale;
+    for (int a = 0; a < 3; a++) {
+        g->b.lo[a] = fb[a] - pad;
+        g->b.hi[a] = fb[3 + a] + pad;
+    }
     if (explicit_res) {
         for (int a = 0; a < 3; a++) {
             if (isfinite(o->grid_box[a]) && isfinite(o->grid_box[3 + a]) &&
@@ -476,12 +726,11 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
     const double eps = 1e-9 * (sc->scale + mx);
-    rt_build b;
-    memset(&b, 0, sizeof b);
-    int err = 0;
+    int err = rc != RT_OK;
     for (size_t i = 0; i < sc->nprim && !err; i++)
         rt_insert(sc, &b, i, &g->b, 0, eps, &err);
-    int rc = err ? RT_ERR_NOMEM : RT_OK;
+    if (rc == RT_OK && err)
+        rc = RT_ERR_NOMEM;
     if (rc == RT_OK && b.npairs > UINT32_MAX - 1)
         rc = RT_ERR_LIMIT;
     if (rc == RT_OK) {
@@ -492,6 +741,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor : RT_SUB_FACTOR;
     if (rc == RT_OK && !(o && o->no_subgrids))
         rc = rt_build_subgrids(sc, &b, eps, sub_factor, sub_min);
+    if (rc == RT_OK)
+        rc = rt_build_skip(g);
     free(b.cb.a);
     free(b.cb.b);
     free(b.pts);
@@ -504,3 +755,84 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     return RT_OK;
 }
 
+
+/* Empty-space distances of the top level: d(c) = min over non-empty q of max_a |c_a - q_a|
+ * (capped at RT_SKIP_MAX), by three separable passes: the Chebyshev ball is a cube. A ray in
+ * a cell with d >= 2 can take d - 1 DDA steps without looking at cells: they stay within the
+ * empty cube around it (rt_trace.c). */
+static int rt_build_skip(rt_grid *g)
+{
+    const int nx = g->b.n[0], ny = g->b.n[1], nz = g->b.n[2];
+    uint8_t *a = rt_alloc_array(g->ncells, 1), *b = rt_alloc_array(g->ncells, 1);
+    if (!a || !b) {
+        free(a);
+        free(b);
+        return RT_ERR_NOMEM;
+    }
+    for (size_t ci = 0; ci < g->ncells; ci++)
+        a[ci] = (g->off[ci + 1] > g->off[ci] || (g->sub && g->sub[ci] >= 0)) ? 0 : RT_SKIP_MAX;
+    const int n[3] = {nx, ny, nz};
+    const size_t stride[3] = {1, (size_t)nx, (size_t)nx * (size_t)ny};
+    for (int ax = 0; ax < 3; ax++) { /* b = min over |k| <= R along ax of max(|k|, a) */
+        for (size_t ci = 0; ci < g->ncells; ci++) {
+            int c = (int)((ci / stride[ax]) % (size_t)n[ax]);
+            uint8_t best = a[ci];
+            for (int k = 1; k < RT_SKIP_MAX && k < best; k++) {
+                uint8_t m;
+                if (c - k >= 0 && (m = a[ci - (size_t)k * stride[ax]]) < best)
+                    best = (uint8_t)(m > k ? m : k);
+                if (c + k < n[ax] && (m = a[ci + (size_t)k * stride[ax]]) < best)
+                    best = (uint8_t)(m > k ? m : k);
+            }
+            b[ci] = best;
+        }
+        uint8_t *t = a;
+        a = b;
+        b = t;
+    }
+    free(b);
+    g->skip = a;
+    return RT_OK;
+}
+
+int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
+{
+    if (!sc || !gi)
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    memset(gi, 0, sizeof *gi);
+    gi->prims = sc->nprim;
+    if (!sc->use_grid)
+        return RT_OK;
+    const rt_grid *g = &sc->grid;
+    for (int a = 0; a < 3; a++)
+        gi->res[a] = g->b.n[a];
+    gi->rotated = g->rotated;
+    gi->cells = g->ncells;
+    gi->refs = g->nrefs;
+    gi->subgrids = g->nsubs;
+    gi->subcells = g->nsubcells;
+    gi->subrefs = g->nsrefs;
+    double filled = 0.0;
+    for (size_t ci = 0; ci < g->ncells; ci++) {
+        uint32_t n = g->off[ci + 1] - g->off[ci];
+        gi->empty_cells += n == 0;
+        if (n > gi->max_leaf_refs)
+            gi->max_leaf_refs = n;
+        if (g->sub && g->sub[ci] >= 0) {
+            const rt_subgrid *sg = &g->subs[g->sub[ci]];
+            size_t ns = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+            for (size_t k = 0; k < ns; k++) {
+                uint32_t m = g->soff[sg->first + k + 1] - g->soff[sg->first + k];
+                if (m > gi->max_leaf_refs)
+                    gi->max_leaf_refs = m;
+                filled += m > 0 ? 1.0 / (double)(ns * g->ncells) : 0.0;
+            }
+        } else {
+            filled += n > 0 ? 1.0 / (double)g->ncells : 0.0;
+        }
+    }
+    gi->volume_fill = filled;
+    return RT_OK;
+}

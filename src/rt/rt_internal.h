@@ -40,6 +40,8 @@ typedef struct rt_poly {
     uint32_t nloops;
     double umin, umax, vmin, vmax; /* 2-D bounds (exact reject) */
     double inv_h;       /* slabs per unit v */
+    double cu, cv, rin2;/* disk around (cu,cv) crossed by no edge (radius^2, < 0: none) ... */
+    int cin;            /* ... in which every point has this even-odd parity */
     uint32_t nslab;     /* horizontal slabs over [vmin,vmax]; edge lists per slab */
     size_t slab0;       /* first entry in scene slab_off (nslab + 1 entries) */
 } rt_poly;
@@ -85,6 +87,8 @@ typedef struct rt_subgrid {
     uint32_t first;    /* first of its cells in the grid's soff array */
 } rt_subgrid;
 
+#define RT_SKIP_MAX 7
+
 /* linear index of cell c in box g (x fastest) */
 static inline size_t rt_cell_index(const rt_box *g, const int c[3])
 {
@@ -92,11 +96,15 @@ static inline size_t rt_cell_index(const rt_box *g, const int c[3])
 }
 
 typedef struct rt_grid {
+    int rotated;       /* 0: grid axes = VRC3 axes; 1: grid frame p' = R (p - c) */
+    double R[3][3], c[3];
     rt_box b;
     uint32_t *off;     /* ncells + 1 */
     uint32_t *refs;
     size_t ncells, nrefs;
     int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
+    uint8_t *skip;     /* per top cell: Chebyshev distance (in cells, <= RT_SKIP_MAX) to the
+                          nearest cell with references or a sub-grid; 0 for those */
     rt_subgrid *subs;
     size_t nsubs;
     uint32_t *soff;    /* sub-grid cells + 1 */
@@ -139,8 +147,16 @@ typedef struct rt_rayx {
     double tmin, tmax;
     int kx, ky, kz;
     double sx, sy, sz;
-    double invd[3];     /* 1/d, 0 for zero components (never used there) */
 } rt_rayx;
+
+/* a ray in the grid frame (traversal only; primitive tests use the rt_rayx) */
+typedef struct rt_gray {
+    double o[3], d[3], invd[3];
+} rt_gray;
+
+/* point / direction into the grid frame */
+void rt_grid_point(const rt_grid *g, const double p[3], double out[3]);
+void rt_grid_dir(const rt_grid *g, const double v[3], double out[3]);
 
 /* per-thread traversal context: mailbox */
 typedef struct rt_ctx {

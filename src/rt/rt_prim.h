@@ -34,14 +34,12 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
         V = (double)((long double)Ax * Cy - (long double)Ay * Cx);
         W = (double)((long double)Bx * Ay - (long double)By * Ax);
     }
-    if ((U < 0.0 || V < 0.0 || W < 0.0) && (U > 0.0 || V > 0.0 || W > 0.0))
-        return 0;
+    /* one data-dependent branch (hit or not) instead of several unpredictable ones */
+    const int mixed = ((U < 0.0) | (V < 0.0) | (W < 0.0)) & ((U > 0.0) | (V > 0.0) | (W > 0.0));
     const double det = U + V + W;
-    if (det == 0.0)
-        return 0;
     const double T = U * (r->sz * A[kz]) + V * (r->sz * B[kz]) + W * (r->sz * C[kz]);
-    const double t = T / det;
-    if (!(t >= tmin && t <= tmax))
+    const double t = T / (det != 0.0 ? det : 1.0);
+    if (mixed | (det == 0.0) | !(t >= tmin) | !(t <= tmax))
         return 0;
     *tout = t;
     return 1;
@@ -74,15 +72,13 @@ static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r,
     double e1 = rt_edge(x[1], y[1], x[2], y[2]);
     double e2 = rt_edge(x[2], y[2], x[3], y[3]);
     double e3 = rt_edge(x[3], y[3], x[0], y[0]);
-    if ((e0 < 0.0 || e1 < 0.0 || e2 < 0.0 || e3 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0 || e3 > 0.0))
-        return 0;
+    const int mixed = ((e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0) | (e3 < 0.0)) &
+                      ((e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0) | (e3 > 0.0));
     const double den = q->n[0] * r->d[0] + q->n[1] * r->d[1] + q->n[2] * r->d[2];
-    if (den == 0.0)
-        return 0;
     for (int j = 0; j < 3; j++)
         A[j] = q->v[0][j] - o[j];
-    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / den;
-    if (!(t >= tmin && t <= tmax))
+    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / (den != 0.0 ? den : 1.0);
+    if (mixed | (den == 0.0) | !(t >= tmin) | !(t <= tmax))
         return 0;
     *tout = t;
     return 1;
@@ -104,6 +100,13 @@ static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_p
        lies to the right, left of umin every straddling edge does (an even number) */
     if (!(pv >= p->vmin && pv <= p->vmax && pu >= p->umin && pu <= p->umax))
         return 0;
+    const double du = pu - p->cu, dv = pv - p->cv;
+    if (du * du + dv * dv < p->rin2) { /* inside the edge-free disk: its parity */
+        if (!p->cin)
+            return 0;
+        *tout = t;
+        return 1;
+    }
     uint32_t s = 0;
     if (p->nslab > 1) {
         double f = (pv - p->vmin) * p->inv_h;
@@ -111,15 +114,13 @@ static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_p
     }
     const size_t e0 = sc->slab_off[p->slab0 + s], e1 = sc->slab_off[p->slab0 + s + 1];
     const double *e = sc->edges + 4 * e0;
+    /* branch-free even-odd count: edge (u0,v0)-(u1,v1), v0 < v1, straddles v = pv
+       half-open (v0 <= pv < v1) and crosses it right of pu */
     int inside = 0;
     for (size_t k = e0; k < e1; k++, e += 4) {
-        /* edge q=(e0,e1) -> a=(e2,e3) crosses the line v = pv (half-open), right of pu */
-        if ((e[3] > pv) != (e[1] > pv)) {
-            double lhs = (pu - e[2]) * (e[1] - e[3]);
-            double rhs = (e[0] - e[2]) * (pv - e[3]);
-            if (e[1] > e[3] ? lhs < rhs : lhs > rhs)
-                inside ^= 1;
-        }
+        const int st = (e[1] <= pv) & (pv < e[3]);
+        const int cr = (pv - e[1]) * (e[2] - e[0]) > (pu - e[0]) * (e[3] - e[1]);
+        inside ^= st & cr;
     }
     if (!inside)
         return 0;

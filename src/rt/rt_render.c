@@ -14,7 +14,9 @@
  *
  * Transmitting surfaces (kt > 0): Fresnel reflectance F (exact dielectric or Schlick); the
  * reflected ray has weight ks*Cs + kt*F, the refracted ray kt*(1 - F); total internal reflection
- * gives F = 1. Index exactly 1: straight through, F = 0. Local shading is not scaled by kt.
+ * gives F = 1. Index exactly 1: straight through, F = 0, the ray continues on its own line
+ * (origin moved forward along d past the surface, not along the normal), so the picture
+ * behind is unchanged. Local shading is not scaled by kt.
  */
 
 #define GKS3D_RT_BUILDING 1
@@ -111,11 +113,41 @@ static double rt_fresnel(int mode, double cos_i, double cos_t, double n1, double
     return 0.5 * (rs * rs + rp * rp);
 }
 
+static inline double rt_absmax3(const double v[3])
+{
+    double a = fabs(v[0]), b = fabs(v[1]), c = fabs(v[2]);
+    double m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+/* offset of secondary ray origins from the surface (see the file comment) */
 static double rt_eps(const rt_scene *sc, const double p[3], double t)
 {
-    double m = fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])));
-    double ext = fmax(sc->bbox[3] - sc->bbox[0], fmax(sc->bbox[4] - sc->bbox[1], sc->bbox[5] - sc->bbox[2]));
-    return 1e-12 * (m + fabs(t)) + 1e-9 * ext + 1e-300;
+    const double e[3] = {sc->bbox[3] - sc->bbox[0], sc->bbox[4] - sc->bbox[1], sc->bbox[5] - sc->bbox[2]};
+    return 1e-12 * (rt_absmax3(p) + fabs(t)) + 1e-9 * rt_absmax3(e) + 1e-300;
+}
+
+int rt_hit_spawn(const rt_scene *sc, const rt_hit *h, const double dir[3], rt_ray *out)
+{
+    if (!sc || !h || !dir || !out || h->prim < 0)
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(h->p[i]) || !isfinite(h->ng[i]) || !isfinite(dir[i]))
+            return RT_ERR_ARG;
+    if (!isfinite(h->t) || !(rt_absmax3(dir) > 0.0))
+        return RT_ERR_ARG;
+    double eps = rt_eps(sc, h->p, h->t);
+    if (dot3(h->ng, dir) < 0.0)
+        eps = -eps;
+    for (int i = 0; i < 3; i++) {
+        out->org[i] = h->p[i] + eps * h->ng[i];
+        out->dir[i] = dir[i];
+    }
+    out->tmin = 0.0;
+    out->tmax = INFINITY;
+    return RT_OK;
 }
 
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
@@ -265,7 +297,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (cos_i > 1.0)
         cos_i = 1.0;
     double T[3] = {0, 0, 0};
-    int refract = 0;
+    int refract = 0, straight = 0;
     if (s->transparency > 0.0) {
         double n1 = side ? s->refr_index : 1.0, n2 = side ? 1.0 : s->refr_index;
         double F;
@@ -273,6 +305,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
             F = 0.0;
             memcpy(T, d, sizeof T);
             refract = 1;
+            straight = cos_i > 1e-3;
         } else {
             double eta = n1 / n2;
             double sin2t = eta * eta * (1.0 - cos_i * cos_i);
@@ -307,7 +340,10 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     }
     if (wt > 0.0 && !(job->o.cutoff > 0.0 && weight * wt < job->o.cutoff)) {
         double col[3];
-        rt_spawn(w, P, N, -eps, T, depth + 1, weight * wt, 1, col);
+        if (straight) /* index 1: continue on the same line, just past the surface */
+            rt_spawn(w, P, d, eps / cos_i, T, depth + 1, weight * wt, 1, col);
+        else
+            rt_spawn(w, P, N, -eps, T, depth + 1, weight * wt, 1, col);
         for (int c = 0; c < 3; c++)
             out[c] += wt * col[c];
     }

@@ -531,6 +531,44 @@ static size_t rt_slab_entries(const rt_scene *sc, const rt_poly *p)
     return n;
 }
 
+/* Edge-free disk of polygon p around the centre of its 2-D box: radius = distance to the
+ * nearest edge less a relative margin far above rounding; the even-odd parity of its centre
+ * (crossing rule of rt_isect_poly over all edges) holds in the whole disk. */
+static void rt_poly_disk(const rt_scene *sc, rt_poly *p)
+{
+    const double cu = 0.5 * (p->umin + p->umax), cv = 0.5 * (p->vmin + p->vmax);
+    const double *lu = sc->uv + 2 * (size_t)p->uv0;
+    double dmin2 = INFINITY;
+    int in = 0;
+    for (uint32_t l = 0; l < p->nloops; l++) {
+        uint32_t m = sc->loops[p->loop0 + l];
+        const double *q = lu + 2 * (size_t)(m - 1);
+        for (uint32_t i = 0; i < m; i++) {
+            const double *a = lu + 2 * (size_t)i;
+            const double *lo = q[1] < a[1] ? q : a, *hi = q[1] < a[1] ? a : q;
+            if (lo[1] != hi[1] && lo[1] <= cv && cv < hi[1] &&
+                (cv - lo[1]) * (hi[0] - lo[0]) > (cu - lo[0]) * (hi[1] - lo[1]))
+                in ^= 1;
+            double ex = a[0] - q[0], ey = a[1] - q[1], l2 = ex * ex + ey * ey;
+            double s = l2 > 0.0 ? ((cu - q[0]) * ex + (cv - q[1]) * ey) / l2 : 0.0;
+            s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+            double dx = q[0] + s * ex - cu, dy = q[1] + s * ey - cv;
+            double d2 = dx * dx + dy * dy;
+            if (d2 < dmin2)
+                dmin2 = d2;
+            q = a;
+        }
+        lu += 2 * (size_t)m;
+    }
+    double size = fmax(p->umax - p->umin, p->vmax - p->vmin);
+    double margin = 1e-9 * (size + fabs(cu) + fabs(cv));
+    double r = sqrt(dmin2) - margin;
+    p->cu = cu;
+    p->cv = cv;
+    p->cin = in;
+    p->rin2 = r > margin && isfinite(r) ? r * r * (1.0 - 1e-9) : -1.0;
+}
+
 /* Per polygon: 2-D bounds and horizontal slabs, each listing the edges whose v range meets
  * it (same slab function for edges and query points, so the even-odd count is unchanged). */
 static int rt_poly_slabs(rt_scene *sc)
@@ -550,6 +588,7 @@ static int rt_poly_slabs(rt_scene *sc)
             p->vmin = fmin(p->vmin, uv[2 * i + 1]);
             p->vmax = fmax(p->vmax, uv[2 * i + 1]);
         }
+        rt_poly_disk(sc, p);
         size_t ns = nv <= 8 ? 1 : (nv + 3) / 4;
         if (ns > 1024)
             ns = 1024;
@@ -595,8 +634,10 @@ static int rt_poly_slabs(rt_scene *sc)
                             if (pass == 0) {
                                 so[s + 1]++;
                             } else {
+                                /* stored upwards: (u0, v0, u1, v1) with v0 < v1 */
+                                const double *lo = q[1] < a[1] ? q : a, *hi = q[1] < a[1] ? a : q;
                                 double *e = sc->edges + 4 * cursor[s]++;
-                                e[0] = q[0]; e[1] = q[1]; e[2] = a[0]; e[3] = a[1];
+                                e[0] = lo[0]; e[1] = lo[1]; e[2] = hi[0]; e[3] = hi[1];
                             }
                         }
                     }

@@ -21,24 +21,31 @@
 #define RT_RAY_MAX 1e100
 #define RT_MIN(a, b) ((a) < (b) ? (a) : (b))
 
+static inline double rt_max3(double a, double b, double c)
+{
+    double m = a > b ? a : b; /* operands are never NaN here */
+    return m > c ? m : c;
+}
+
 int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax)
 {
     /* isfinite/isnan first: ordered comparisons with NaN would raise FE_INVALID */
     for (int i = 0; i < 3; i++)
-        if (!isfinite(o[i]) || !isfinite(d[i]) || fabs(o[i]) > RT_RAY_MAX || fabs(d[i]) > RT_RAY_MAX)
+        if (!isfinite(o[i]) || !isfinite(d[i]))
             return 0;
-    if (!isfinite(tmin) || isnan(tmax) || tmin > tmax || fabs(tmin) > RT_RAY_MAX)
+    if (!isfinite(tmin) || isnan(tmax))
         return 0;
     double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
-    if (ax == 0.0 && ay == 0.0 && az == 0.0)
+    double dm = rt_max3(ax, ay, az);
+    if (rt_max3(fabs(o[0]), fabs(o[1]), fabs(o[2])) > RT_RAY_MAX || dm > RT_RAY_MAX ||
+        tmin > tmax || fabs(tmin) > RT_RAY_MAX)
         return 0;
-    /* tiny directions: t range must stay meaningful */
-    if (fmax(ax, fmax(ay, az)) < 1e-100)
+    /* zero or tiny directions: t range must stay meaningful */
+    if (!(dm >= 1e-100))
         return 0;
     memcpy(r->o, o, sizeof r->o);
     memcpy(r->d, d, sizeof r->d);
     /* components below 1e-150 of the largest are flushed to 0 (finite 1/d everywhere) */
-    double dm = fmax(ax, fmax(ay, az));
     for (int i = 0; i < 3; i++)
         if (fabs(r->d[i]) < 1e-150 * dm)
             r->d[i] = 0.0;
@@ -55,12 +62,33 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
     r->kx = kx;
     r->ky = ky;
     r->kz = kz;
-    r->sx = d[kx] / d[kz];
-    r->sy = d[ky] / d[kz];
     r->sz = 1.0 / d[kz];
-    for (int i = 0; i < 3; i++)
-        r->invd[i] = d[i] != 0.0 ? 1.0 / d[i] : 0.0;
+    r->sx = d[kx] * r->sz;
+    r->sy = d[ky] * r->sz;
     return 1;
+}
+
+/* the ray in the grid frame: identity copy or rotated (tiny components flushed to 0) */
+static inline __attribute__((always_inline)) void rt_gray_init(const rt_grid *g, const rt_rayx *r, rt_gray *out)
+{
+    if (!g->rotated) {
+        memcpy(out->o, r->o, sizeof out->o);
+        memcpy(out->d, r->d, sizeof out->d);
+        for (int i = 0; i < 3; i++)
+            out->invd[i] = r->d[i] != 0.0 ? 1.0 / r->d[i] : 0.0;
+        return;
+    }
+    const double q[3] = {r->o[0] - g->c[0], r->o[1] - g->c[1], r->o[2] - g->c[2]};
+    for (int a = 0; a < 3; a++) {
+        out->o[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
+        out->d[a] = g->R[a][0] * r->d[0] + g->R[a][1] * r->d[1] + g->R[a][2] * r->d[2];
+    }
+    double dm = rt_max3(fabs(out->d[0]), fabs(out->d[1]), fabs(out->d[2]));
+    for (int i = 0; i < 3; i++) {
+        if (fabs(out->d[i]) < 1e-150 * dm)
+            out->d[i] = 0.0;
+        out->invd[i] = out->d[i] != 0.0 ? 1.0 / out->d[i] : 0.0;
+    }
 }
 
 /* ---- mailbox context ---- */
@@ -96,17 +124,17 @@ typedef struct rt_dda {
     double t0, t1;
 } rt_dda;
 
-static inline double rt_dda_bound(const rt_box *g, const rt_rayx *r, const int c[3], int a)
+static inline double rt_dda_bound(const rt_box *g, const rt_gray *r, const int c[3], int a)
 {
     int b = r->d[a] > 0.0 ? c[a] + 1 : c[a];
     double x = b == g->n[a] ? g->hi[a] : g->lo[a] + (double)b * g->cw[a];
     return (x - r->o[a]) * r->invd[a];
 }
 
-/* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1: the range is first cut to
- * the box (0 if nothing remains); clip = 0 (second level, the range is already inside the
+/* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1 (all callers): the range is
+ * first cut to the box (0 if nothing remains); clip = 0 (the range is already inside the
  * box up to rounding): the start cell is clamped into the box instead. */
-static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, const rt_rayx *r, double t0, double t1, int clip,
+static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, const rt_gray *r, double t0, double t1, int clip,
                               rt_dda *s)
 {
     if (clip) {
@@ -190,6 +218,7 @@ typedef struct rt_walkstate {
     const rt_scene *sc;
     rt_ctx *c;
     const rt_rayx *r;
+    rt_gray gr;
     uint32_t stamp;
     int any_hit;
     double best;
@@ -204,79 +233,85 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
  * mode 0: nearest hit, DONE as soon as the best hit is not beyond the current cell's exit;
  * mode 1: transmittance, BLOCKED when an opaque primitive is hit. Each primitive is tested
  * once per ray (mailbox). Direction components exactly +0.0 or -0.0 never step. */
+/* bound of cell c + o along axis a as a ray parameter: the same expression for a boundary
+   whichever cell it is computed from, so the steps of a ray are consistent */
+#define RT_BOUND(a, c, up) \
+    (((c) + (up) == nn##a ? g->hi[a] - gr->o[a] : base##a + (double)((c) + (up)) * g->cw[a]) * gr->invd[a])
+
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint32_t *refs, const int32_t *sub, const rt_subgrid *subs,
                           double t0, double t1, int clip)
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
+    const rt_gray *gr = &w->gr;
     rt_dda s;
-    if (!rt_dda_init(g, r, t0, t1, clip, &s))
+    if (!rt_dda_init(g, gr, t0, t1, clip, &s))
         return RT_WALK_CONT;
     uint32_t *const mbox = w->c->mbox;
     const uint32_t stamp = w->stamp;
-    int cx = s.c[0], cy = s.c[1], cz = s.c[2];
+    const int nn0 = g->n[0], nn1 = g->n[1], nn2 = g->n[2];
     const int sx = s.step[0], sy = s.step[1], sz = s.step[2];
-    const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
+    const int ox = sx > 0, oy = sy > 0, oz = sz > 0;
+    const double base0 = g->lo[0] - gr->o[0], base1 = g->lo[1] - gr->o[1], base2 = g->lo[2] - gr->o[2];
+    const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
+    int cx = s.c[0], cy = s.c[1], cz = s.c[2];
     double tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
     double tent = s.t0;
     t1 = s.t1;
-    const double bx = g->lo[0] - r->o[0], by = g->lo[1] - r->o[1], bz = g->lo[2] - r->o[2];
-    const int ox = sx > 0, oy = sy > 0, oz = sz > 0;
     size_t ci = rt_cell_index(g, s.c);
-    const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nx, dz = (ptrdiff_t)sz * nx * ny;
     for (;;) {
+        for (uint32_t k = off[ci], e = off[ci + 1]; k < e; k++) {
+            uint32_t i = refs[k];
+            if (mbox[i] == stamp)
+                continue;
+            mbox[i] = stamp;
+            if (mode == 0)
+                rt_nearest_prim(sc, r, i, &w->best, &w->bi);
+            else if (!rt_transmit_prim(w->c, sc, r, i, w->any_hit, &w->T))
+                return RT_WALK_BLOCKED;
+        }
         if (sub && sub[ci] >= 0) {
             double te = RT_MIN(tx, RT_MIN(ty, tz));
             int st = mode == 0 ? rt_walk_sub_nearest(w, &subs[sub[ci]], tent, RT_MIN(te, t1))
                                : rt_walk_sub_transmit(w, &subs[sub[ci]], tent, RT_MIN(te, t1));
             if (st != RT_WALK_CONT)
                 return st;
-        } else {
-            for (uint32_t k = off[ci], e = off[ci + 1]; k < e; k++) {
-                uint32_t i = refs[k];
-                if (mbox[i] == stamp)
-                    continue;
-                mbox[i] = stamp;
-                if (mode == 0)
-                    rt_nearest_prim(sc, r, i, &w->best, &w->bi);
-                else if (!rt_transmit_prim(w->c, sc, r, i, w->any_hit, &w->T))
-                    return RT_WALK_BLOCKED;
-            }
         }
+        /* next cell: the axis with the smallest boundary parameter (ties: x, y, z) */
         if (tx <= ty && tx <= tz) {
             if (mode == 0 && w->bi >= 0 && w->best <= tx)
                 return RT_WALK_DONE;
             if (tx > t1)
                 return RT_WALK_CONT;
             cx += sx;
-            if ((unsigned)cx >= (unsigned)nx)
+            if ((unsigned)cx >= (unsigned)nn0)
                 return RT_WALK_CONT;
             ci += dx;
             tent = tx;
-            tx = (cx + ox == nx ? g->hi[0] - r->o[0] : bx + (double)(cx + ox) * g->cw[0]) * r->invd[0];
+            tx = RT_BOUND(0, cx, ox);
         } else if (ty <= tz) {
             if (mode == 0 && w->bi >= 0 && w->best <= ty)
                 return RT_WALK_DONE;
             if (ty > t1)
                 return RT_WALK_CONT;
             cy += sy;
-            if ((unsigned)cy >= (unsigned)ny)
+            if ((unsigned)cy >= (unsigned)nn1)
                 return RT_WALK_CONT;
             ci += dy;
             tent = ty;
-            ty = (cy + oy == ny ? g->hi[1] - r->o[1] : by + (double)(cy + oy) * g->cw[1]) * r->invd[1];
+            ty = RT_BOUND(1, cy, oy);
         } else {
             if (mode == 0 && w->bi >= 0 && w->best <= tz)
                 return RT_WALK_DONE;
             if (tz > t1)
                 return RT_WALK_CONT;
             cz += sz;
-            if ((unsigned)cz >= (unsigned)nz)
+            if ((unsigned)cz >= (unsigned)nn2)
                 return RT_WALK_CONT;
             ci += dz;
             tent = tz;
-            tz = (cz + oz == nz ? g->hi[2] - r->o[2] : bz + (double)(cz + oz) * g->cw[2]) * r->invd[2];
+            tz = RT_BOUND(2, cz, oz);
         }
     }
 }
@@ -285,14 +320,14 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
                                                          double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 0);
+    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 1);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 0);
+    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, t0, t1, 1);
 }
 
 long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
@@ -304,6 +339,7 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
     } else {
         const rt_grid *g = &sc->grid;
         w.stamp = rt_ctx_next(c);
+        rt_gray_init(g, r, &w.gr);
         rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->sub, g->subs, r->tmin, r->tmax, 1);
     }
     *tout = w.best;
@@ -322,6 +358,7 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     }
     const rt_grid *g = &sc->grid;
     w.stamp = rt_ctx_next(c);
+    rt_gray_init(g, r, &w.gr);
     if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->sub, g->subs, r->tmin, r->tmax, 1) ==
         RT_WALK_BLOCKED)
         return 0.0;

@@ -27,6 +27,7 @@ static void test_fill_and_clip(void **u)
     reset_gks();
     unlink("t_fill.png");
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, "t_fill.png", GWS_TYPE_PNG);
     gactivate_ws(1);
     Glimit vp = { 0, 40, 0, 20 }, wsw = { 0, 1, 0, 0.5 };
@@ -76,6 +77,7 @@ static void test_frames_and_names(void **u)
     unlink("t_frame-002.png");
     unlink("t_renamed.png");
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, "t_frame", GWS_TYPE_PNG);
     gactivate_ws(1);
     Glimit vp = { 0, 8, 0, 8 };
@@ -113,6 +115,7 @@ static void test_unwritable_file(void **u)
     (void)u;
     reset_gks();
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, "/nonexistent-dir/pic.png", GWS_TYPE_PNG);
     gactivate_ws(1);
     gdeactivate_ws(1);
@@ -137,6 +140,7 @@ static void draw_crossing(int mode, int a_first, image *img)
     reset_gks();
     unlink("t_z.png");
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, "t_z.png", GWS_TYPE_PNG);
     gactivate_ws(1);
     Glimit vp = { 0, 16, 0, 8 }, win = { 0, 1, 0, 0.5 };
@@ -179,6 +183,7 @@ static void test_zbuffer_interpenetrating(void **u)
     /* ray tracing and the other modes not yet available: 511, mode unchanged */
     reset_gks();
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, NULL, GWS_TYPE_NULL);
     gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
     assert_int_equal(n_captured, 1);
@@ -197,6 +202,7 @@ static void test_view_representation(void **u)
     reset_gks();
     unlink("t_view.png");
     gopen_gks(NULL, 0);
+    gset_fill_int_style(GSTYLE_SOLID); /* the standard's default is HOLLOW */
     gopen_ws(1, "t_view.png", GWS_TYPE_PNG);
     gactivate_ws(1);
     Glimit vp = { 0, 20, 0, 20 };

@@ -111,6 +111,83 @@ static void c_SLSS(void)
     gset_light_src_state(&a, NULL);
 }
 
+/* Output primitives and attributes (issue 3). */
+static const Gpoint_list list1 = { 1, (Gpoint *)pts3 };
+static void c_PM(void) { gpolymarker(&list1); }
+static void c_TX(void) { Gpoint p = { 0.5, 0.5 }; gtext(&p, "GKS"); }
+static void c_CA(void)
+{
+    Gint c[4] = { 1, 2, 3, 4 };
+    Grect r = { { 0.1, 0.1 }, { 0.4, 0.4 } };
+    Gpat_rep a = { { 2, 2 }, c };
+    gcell_array(&r, &a);
+}
+static void c_GDP(void) { ggdp(&list3, 1, NULL); }
+static void c_SPLI(void) { gset_line_ind(2); }
+static void c_SLN(void) { gset_linetype(2); }
+static void c_SLWSC(void) { gset_linewidth(2.0); }
+static void c_SPMI(void) { gset_marker_ind(2); }
+static void c_SMK(void) { gset_marker_type(2); }
+static void c_SMKSC(void) { gset_marker_size(2.0); }
+static void c_SPMCI(void) { gset_marker_colr_ind(2); }
+static void c_STXI(void) { gset_text_ind(2); }
+static void c_STXFP(void) { Gtext_font_prec f = { 1, GPREC_STROKE }; gset_text_font_prec(&f); }
+static void c_SCHXP(void) { gset_char_expan(2.0); }
+static void c_SCHSP(void) { gset_char_space(0.5); }
+static void c_STXCI(void) { gset_text_colr_ind(2); }
+static void c_SCHH(void) { gset_char_ht(0.05); }
+static void c_SCHUP(void) { Gvec u = { 1, 0 }; gset_char_up_vec(&u); }
+static void c_STXP(void) { gset_text_path(GPATH_UP); }
+static void c_STXAL(void) { Gtext_align a = { GHOR_CTR, GVERT_HALF }; gset_text_align(&a); }
+static void c_SFAI(void) { gset_fill_ind(2); }
+static void c_SFAIS(void) { gset_fill_int_style(GSTYLE_SOLID); }
+static void c_SFASI(void) { gset_fill_style_ind(2); }
+static void c_SPA(void) { Gvec v = { 0.1, 0.2 }; gset_pat_size(&v); }
+static void c_SPARF(void) { Gpoint p = { 0.1, 0.2 }; gset_pat_ref_point(&p); }
+static void c_SASF(void) { Gasfs a = { 0 }; gset_asfs(&a); }
+static void c_SPKID(void) { gset_pick_id(3); }
+static void c_SPLR(void) { Gline_bundle b = { 2, 1, 1 }; gset_line_rep(1, 2, &b); }
+static void c_SPMR(void) { Gmarker_bundle b = { 2, 1, 1 }; gset_marker_rep(1, 2, &b); }
+static void c_STXR(void) { Gtext_bundle b = { { 1, GPREC_STROKE }, 1, 0, 1 }; gset_text_rep(1, 2, &b); }
+static void c_SFAR(void) { Gfill_bundle b = { GSTYLE_SOLID, 1, 2 }; gset_fill_rep(1, 2, &b); }
+static void c_SPAR(void)
+{
+    Gint c[2] = { 1, 0 };
+    Gpat_rep r = { { 2, 1 }, c };
+    gset_pat_rep(1, 4, &r);
+}
+static void c_PM3(void) { Gpoint_list3 l = { 1, (Gpoint3 *)tri3 }; gpolymarker3(&l); }
+static void c_TX3(void)
+{
+    Gpoint3 p = { 0.5, 0.5, 0.5 };
+    Gvec3 d[2] = { { 1, 0, 0 }, { 0, 1, 0 } };
+    gtext3(&p, d, "GKS-3D");
+}
+static void c_FAS(void) { Gpoint_list_list l = { 1, (Gpoint_list *)&list3 }; gfill_area_set(&l); }
+static void c_FAS3(void) { Gpoint_list_list3 l = { 1, (Gpoint_list3 *)&list3d }; gfill_area_set3(&l); }
+static void c_CA3(void)
+{
+    Gint c[1] = { 2 };
+    Gparal r = { { 0.1, 0.1, 0 }, { 0.4, 0.4, 0 }, { 0.4, 0.1, 0 } };
+    Gpat_rep a = { { 1, 1 }, c };
+    gcell_array3(&r, &a);
+}
+static void c_GDP3(void) { ggdp3(&list3d, 1, NULL); }
+static void c_SEDFG(void) { gset_edge_flag(GEDGE_ON); }
+static void c_SEDT(void) { gset_edgetype(2); }
+static void c_SEWSC(void) { gset_edgewidth(2.0); }
+static void c_SEDCI(void) { gset_edge_colr_ind(2); }
+static void c_SEDI(void) { gset_edge_ind(2); }
+static void c_SEDR(void) { Gedge_bundle b = { GEDGE_ON, 2, 1, 1 }; gset_edge_rep(1, 2, &b); }
+static void c_SPRPV(void)
+{
+    Gpoint3 p = { 0, 0, 0 };
+    Gvec3 v[2] = { { 1, 0, 0 }, { 0, 0, 1 } };
+    gset_pat_ref_point_vecs(&p, v);
+}
+static void c_SHRID(void) { gset_hlhsr_id(1); }
+static void c_ASF3(void) { Gasfs3 a = { { 0 }, 0, 0, 0, 0 }; gset_asfs3(&a); }
+
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))
 #define GKS_S_GKCL S(GST_GKCL)

@@ -44,6 +44,7 @@
       CALL GSVWI(1)
       CALL GSHRM(1, 2)
 !     Two squares crossing at x = 0.5 (A red: z = x; B blue: z = 1-x).
+      CALL GSFAIS(GSOLID)
       CALL GSFACI(2)
       CALL GFA3(4, AX, AY, AZ)
       CALL GSFACI(4)

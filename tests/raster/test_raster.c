@@ -847,6 +847,78 @@ static void test_alloc_failure(void **state)
     gks_raster_fb_free(fb);
 }
 
+/* gks_raster_polyline_cont: a polyline drawn in pieces sharing their end points gives
+ * exactly the picture of one gks_raster_polyline call (dash phase and joins carried),
+ * thin and wide, with and without supersampling. */
+static void test_polyline_cont(void **state)
+{
+    (void)state;
+    enum { N = 61 };
+    gks_raster_pt p[N];
+    for (int i = 0; i < N; i++)
+        p[i] = (gks_raster_pt){4 + i * 1.9, 40 + 25 * sin(i * 0.37), 0.5};
+    for (int ss = 1; ss <= 2; ss++)
+        for (double w = 1; w <= 5; w += 4) {
+            gks_raster_fb *a = gks_raster_fb_create(128, 80, ss);
+            gks_raster_fb *b = gks_raster_fb_create(128, 80, ss);
+            assert_non_null(a);
+            assert_non_null(b);
+            gks_raster_line la = line_attr(GKS_RASTER_LT_DASHDOT, w);
+            assert_int_equal(gks_raster_polyline(a, N, p, &la), GKS_RASTER_OK);
+            gks_raster_stroke st = {0};
+            const int cut[4] = {0, 17, 40, N - 1};
+            for (int k = 0; k < 3; k++)
+                assert_int_equal(gks_raster_polyline_cont(b, (size_t)(cut[k + 1] - cut[k] + 1),
+                                                          p + cut[k], &la, &st),
+                                 GKS_RASTER_OK);
+            size_t n = (size_t)a->w * a->h * 3, diff = 0;
+            for (size_t i = 0; i < n; i++)
+                diff += a->rgb[i] != b->rgb[i];
+            assert_int_equal(diff, 0);
+            assert_true(count_lit(a) > 100);
+            assert_int_equal(gks_raster_polyline_cont(b, 2, p, &la, NULL), GKS_RASTER_E_ARG);
+            gks_raster_fb_free(a);
+            gks_raster_fb_free(b);
+        }
+}
+
+/* gks_raster_cell_array_clipped: only samples inside the given loops take cell colours,
+ * and those equal the unclipped cell array's. */
+static void test_cell_array_clipped(void **state)
+{
+    (void)state;
+    const float cells[3 * 6] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 0, 1};
+    gks_raster_pt o = {8, 8, 0.5}, pu = {56, 8, 0.5}, pv = {8, 40, 0.5};
+    gks_raster_fb *a = gks_raster_fb_create(64, 48, 1);
+    gks_raster_fb *b = gks_raster_fb_create(64, 48, 1);
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_int_equal(gks_raster_cell_array(a, &o, &pu, &pv, 3, 2, cells, NULL), GKS_RASTER_OK);
+    /* a triangle cutting the parallelogram */
+    const gks_raster_pt tri[3] = {{0, 0, 0.5}, {64, 20, 0.5}, {20, 48, 0.5}};
+    const int cnt = 3;
+    assert_int_equal(gks_raster_cell_array_clipped(b, &o, &pu, &pv, 3, 2, cells, NULL, 1, &cnt,
+                                                   tri),
+                     GKS_RASTER_OK);
+    size_t in = 0;
+    for (int j = 0; j < b->h; j++)
+        for (int i = 0; i < b->w; i++) {
+            int inside = ref_inside(1, &cnt, tri, i + 0.5, j + 0.5);
+            if (inside && lit(a, i, j)) {
+                in++;
+                assert_memory_equal(px(a, i, j), px(b, i, j), 3 * sizeof(float));
+            } else {
+                assert_false(lit(b, i, j));
+            }
+        }
+    assert_true(in > 500);
+    assert_int_equal(gks_raster_cell_array_clipped(b, &o, &pu, &pv, 3, 2, cells, NULL, 0, &cnt,
+                                                   tri),
+                     GKS_RASTER_E_ARG);
+    gks_raster_fb_free(a);
+    gks_raster_fb_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -859,7 +931,8 @@ int main(void)
         cmocka_unit_test(test_png),            cmocka_unit_test(test_font),
         cmocka_unit_test(test_hostile),        cmocka_unit_test(test_many_vertices),
         cmocka_unit_test(test_alloc_failure),  cmocka_unit_test(test_supersampled_line),
-        cmocka_unit_test(test_hatch_depth),
+        cmocka_unit_test(test_hatch_depth),    cmocka_unit_test(test_polyline_cont),
+        cmocka_unit_test(test_cell_array_clipped),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

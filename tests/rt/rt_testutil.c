@@ -352,3 +352,160 @@ void rtu_nff_view(const rtu_mesh *m, const double bb[6], rtu_view *v)
     v->bpd = -1.01 * far - 1.0;
     v->vp[1] = v->vp[3] = v->vp[5] = 1.0;
 }
+
+/* ---- closed-mesh leak probe ---- */
+
+double rtu_rand(uint64_t *state)
+{
+    *state = *state * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*state >> 11) * 0x1.0p-53;
+}
+
+void rtu_rand_dir(uint64_t *state, double d[3])
+{
+    for (;;) {
+        double l2 = 0.0;
+        for (int i = 0; i < 3; i++) {
+            d[i] = 2.0 * rtu_rand(state) - 1.0;
+            l2 += d[i] * d[i];
+        }
+        if (l2 > 1e-4 && l2 <= 1.0) {
+            double l = sqrt(l2);
+            for (int i = 0; i < 3; i++)
+                d[i] /= l;
+            return;
+        }
+    }
+}
+
+static int rtu_certify_inside(const rt_scene *sc, const double q[3], uint64_t *rng, int *inner)
+{
+    int side = -1;
+    for (int k = 0; k < 16; k++) {
+        rt_ray r;
+        rt_hit h;
+        memcpy(r.org, q, sizeof r.org);
+        rtu_rand_dir(rng, r.dir);
+        r.tmin = 0.0;
+        r.tmax = INFINITY;
+        if (rt_intersect(sc, 1, &r, &h) != RT_OK || h.prim < 0)
+            return 0;
+        if (side >= 0 && h.side != side)
+            return 0;
+        side = h.side;
+    }
+    *inner = side;
+    return 1;
+}
+
+int rtu_interior_point(const rtu_mesh *m, const rt_scene *sc, double p[3], int *inner_side)
+{
+    double bb[6];
+    rtu_mesh_bbox(m, bb);
+    double diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                       (bb[5] - bb[2]) * (bb[5] - bb[2]));
+    uint64_t rng = 99;
+    size_t off = 0;
+    for (int f = 0; f < m->np; f++) {
+        int nv = m->counts[f];
+        const int *ix = m->idx + off;
+        off += (size_t)nv;
+        if (nv != 3 || f % 101 != 0)
+            continue;
+        const double *a = m->xyz + 3 * ix[0], *b = m->xyz + 3 * ix[1], *c = m->xyz + 3 * ix[2];
+        double e1[3], e2[3], n[3], cen[3];
+        for (int i = 0; i < 3; i++) {
+            e1[i] = b[i] - a[i];
+            e2[i] = c[i] - a[i];
+            cen[i] = (a[i] + b[i] + c[i]) / 3.0;
+        }
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (!(l > 0.0))
+            continue;
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            rt_ray r;
+            rt_hit h;
+            for (int i = 0; i < 3; i++) {
+                r.dir[i] = sgn * n[i] / l;
+                r.org[i] = cen[i] + 1e-5 * diag * r.dir[i];
+            }
+            r.tmin = 0.0;
+            r.tmax = INFINITY;
+            if (rt_intersect(sc, 1, &r, &h) != RT_OK || h.prim < 0)
+                continue;
+            double q[3];
+            for (int i = 0; i < 3; i++)
+                q[i] = r.org[i] + 0.5 * h.t * r.dir[i];
+            if (rtu_certify_inside(sc, q, &rng, inner_side)) {
+                memcpy(p, q, sizeof q);
+                return 0;
+            }
+        }
+    }
+    return -1;
+}
+
+static int rtu_cmp_edge(const void *x, const void *y)
+{
+    const int *a = x, *b = y;
+    if (a[0] != b[0])
+        return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+int rtu_leak_rays(const rtu_mesh *m, const double p[3], size_t nrand, uint64_t seed,
+                  rt_ray **rays, size_t *n, size_t *nvert, size_t *nedge)
+{
+    int *edges = malloc(2 * m->nidx * sizeof(int));
+    if (!edges)
+        return -1;
+    size_t ne = 0, off = 0;
+    for (int f = 0; f < m->np; f++) {
+        int nv = m->counts[f];
+        for (int k = 0; k < nv; k++) {
+            int a = m->idx[off + (size_t)k], b = m->idx[off + (size_t)((k + 1) % nv)];
+            edges[2 * ne] = a < b ? a : b;
+            edges[2 * ne + 1] = a < b ? b : a;
+            ne++;
+        }
+        off += (size_t)nv;
+    }
+    qsort(edges, ne, 2 * sizeof(int), rtu_cmp_edge);
+    size_t nu = 0;
+    for (size_t k = 0; k < ne; k++)
+        if (nu == 0 || rtu_cmp_edge(edges + 2 * k, edges + 2 * (nu - 1)) != 0) {
+            edges[2 * nu] = edges[2 * k];
+            edges[2 * nu + 1] = edges[2 * k + 1];
+            nu++;
+        }
+    size_t total = (size_t)m->nv + nu + nrand;
+    rt_ray *r = malloc(total * sizeof *r);
+    if (!r) {
+        free(edges);
+        return -1;
+    }
+    size_t k = 0;
+    for (int v = 0; v < m->nv; v++, k++)
+        for (int i = 0; i < 3; i++)
+            r[k].dir[i] = m->xyz[3 * v + i] - p[i];
+    for (size_t e = 0; e < nu; e++, k++)
+        for (int i = 0; i < 3; i++)
+            r[k].dir[i] = 0.5 * (m->xyz[3 * edges[2 * e] + i] + m->xyz[3 * edges[2 * e + 1] + i]) - p[i];
+    uint64_t rng = seed;
+    for (size_t j = 0; j < nrand; j++, k++)
+        rtu_rand_dir(&rng, r[k].dir);
+    for (size_t j = 0; j < total; j++) {
+        memcpy(r[j].org, p, 3 * sizeof(double));
+        r[j].tmin = 0.0;
+        r[j].tmax = INFINITY;
+    }
+    free(edges);
+    *rays = r;
+    *n = total;
+    *nvert = (size_t)m->nv;
+    *nedge = nu;
+    return 0;
+}

@@ -8,6 +8,9 @@
 
 #include "gksrt.h"
 
+#include <stddef.h>
+#include <stdint.h>
+
 /* View parameters (BINDINGS.md 3.3): window [umin,umax]x[vmin,vmax] in the plane n = vpd,
  * prp, back plane n = bpd, front n = fpd, viewport xmin,xmax,ymin,ymax,zmin,zmax (NPC). */
 typedef struct rtu_view {
@@ -58,5 +61,25 @@ void rtu_mesh_bbox(const rtu_mesh *m, double bb[6]);
 /* perspective camera for an NFF view: scene must already be in VRC3 (eye at origin looking
  * down -n); fills the view so that the whole bbox lies between front and back planes. */
 void rtu_nff_view(const rtu_mesh *m, const double bb_vrc[6], rtu_view *v);
+
+/* ---- closed-mesh leak probe (test_rt_hard, bench/rt/rt_leak) ---- */
+
+/* deterministic uniform [0,1) (64-bit LCG) */
+double rtu_rand(uint64_t *state);
+/* uniform random unit vector */
+void rtu_rand_dir(uint64_t *state, double d[3]);
+
+/* A point certified inside the closed mesh m (already added to the committed scene sc):
+ * found behind a face along its normal, half-way to the next surface, and accepted when 16
+ * random rays from it all hit the same side of the surface; that side (rt_hit.side seen
+ * from inside) in *inner_side. 0 on success. A ray from inside that leaks through the
+ * surface either misses or first hits the other side. */
+int rtu_interior_point(const rtu_mesh *m, const rt_scene *sc, double p[3], int *inner_side);
+
+/* Rays from p aimed exactly at every vertex, then at every edge midpoint (each undirected edge
+ * once), then nrand random directions; aimed rays have dir = target - p (so the surface is at
+ * t <= 1), random ones unit dir. *rays allocated (free()); counts returned. 0 on success. */
+int rtu_leak_rays(const rtu_mesh *m, const double p[3], size_t nrand, uint64_t seed,
+                  rt_ray **rays, size_t *n, size_t *nvert, size_t *nedge);
 
 #endif

@@ -131,6 +131,16 @@ int gks_raster_cell_array(gks_raster_fb *fb, const gks_raster_pt *o,
                           const gks_raster_pt *pu, const gks_raster_pt *pv,
                           int nx, int ny, const float *rgb, const gks_raster_fill *fill);
 
+/* CELL ARRAY 3 restricted to an area: as gks_raster_cell_array (same o, pu, pv, cells,
+ * depth plane and zmode), but only the samples inside the even-odd interior of the
+ * n_loops loops (counts[k] points each, DC, e.g. the parallelogram clipped by the caller)
+ * and inside the parallelogram (up to 1e-9 of its size) are drawn. E_ARG as both
+ * functions; E_NOMEM. */
+int gks_raster_cell_array_clipped(gks_raster_fb *fb, const gks_raster_pt *o,
+                                  const gks_raster_pt *pu, const gks_raster_pt *pv, int nx,
+                                  int ny, const float *rgb, const gks_raster_fill *fill,
+                                  int n_loops, const int *counts, const gks_raster_pt *pts);
+
 /* --- Lines and markers -------------------------------------------------------------- */
 /* Linetypes (GKS 1..4). Pattern lengths in output pixels times max(1, width):
  * dashed 8 on 4 off; dotted 2 on 4 off; dash-dotted 8 on 3 off 2 on 3 off. The pattern
@@ -155,6 +165,22 @@ typedef struct gks_raster_line {
  * width NaN or >= 1e6, bad zmode/zbias; E_NOMEM never. */
 int gks_raster_polyline(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
                         const gks_raster_line *attr);
+
+/* Continuation state of a polyline drawn in several calls (gks_raster_polyline_cont):
+ * zero-initialise before the first call. */
+typedef struct gks_raster_stroke {
+    int cont;            /* 0: the next call starts a new polyline */
+    double phase;        /* linetype pattern position at the last point drawn */
+    gks_raster_pt prev;  /* the point before the last point drawn (for the join) */
+} gks_raster_stroke;
+
+/* POLYLINE 3 in pieces: as gks_raster_polyline, but when st->cont is set pts[0] must be
+ * the last point of the previous call and the polyline continues there: linetype phase
+ * carried on, the join at pts[0] drawn, the thin path's shared pixel not plotted twice.
+ * The picture equals that of one gks_raster_polyline call over all points. Updates *st.
+ * E_ARG as gks_raster_polyline or st NULL. */
+int gks_raster_polyline_cont(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
+                             const gks_raster_line *attr, gks_raster_stroke *st);
 
 /* POLYMARKER 3: n >= 1 markers of GKS type 1 dot (one output pixel), 2 plus, 3 asterisk,
  * 4 circle, 5 diagonal cross, centred at each point, size = nominal diameter in output

@@ -36,6 +36,7 @@ typedef struct paint {
     int nx, ny;
     const float *cells;
     int avx2;                     /* CPU has AVX2: use span_solid_z_avx2 */
+    int bounded;                  /* cell: skip samples outside the parallelogram */
 } paint;
 
 typedef struct edge {
@@ -140,6 +141,10 @@ static int paint_colour(const paint *p, int i, int r, float c[3])
         ci = fa >= 0.0 && fa < p->nx ? (int)fa : 0;
         cj = fb >= 0.0 && fb < p->ny ? (int)fb : 0;
     } else {
+        /* restricted to an area: samples beyond the parallelogram (by more than rounding)
+         * are not part of the cell array */
+        if (p->bounded && !(a > -1e-9 && a < 1.0 + 1e-9 && b > -1e-9 && b < 1.0 + 1e-9))
+            return 0;
         a *= p->nx;
         b *= p->ny;
         ci = !(a >= 0.0) ? 0 : a >= p->nx ? p->nx - 1 : (int)a;
@@ -651,6 +656,63 @@ int gks_raster_fill_area(gks_raster_fb *fb, int n_loops, const int *counts,
         tri_draw(&p, t2, 0);
         return GKS_RASTER_OK;
     }
+    return polygon_draw(&p, n_loops, counts, pts);
+}
+
+/* Cell array paint and plane of the parallelogram; 0 when it is degenerate. */
+static int cell_setup(paint *p, const gks_raster_pt *o, const gks_raster_pt *pu,
+                      const gks_raster_pt *pv, int nx, int ny, const float *rgb, double *zw)
+{
+    double s = p->fb->ss;
+    p->kind = PAINT_CELL;
+    p->nx = nx;
+    p->ny = ny;
+    p->cells = rgb;
+    p->ox = o->x * s;
+    p->oy = o->y * s;
+    double ux = (pu->x - o->x) * s, uy = (pu->y - o->y) * s;
+    double vx = (pv->x - o->x) * s, vy = (pv->y - o->y) * s;
+    if (!basis_inverse(ux, uy, vx, vy, p->m))
+        return 0;
+    double uz = pu->z - o->z, vz = pv->z - o->z;
+    *zw = o->z + uz + vz;
+    plane_set(p, p->ox, p->oy, o->z, uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx,
+              fmin(fmin(o->z, pu->z), fmin(pv->z, *zw)),
+              fmax(fmax(o->z, pu->z), fmax(pv->z, *zw)));
+    return 1;
+}
+
+int gks_raster_cell_array_clipped(gks_raster_fb *fb, const gks_raster_pt *o,
+                                  const gks_raster_pt *pu, const gks_raster_pt *pv, int nx,
+                                  int ny, const float *rgb, const gks_raster_fill *fill,
+                                  int n_loops, const int *counts, const gks_raster_pt *pts)
+{
+    if (!fb || !o || !pu || !pv || !rgb || nx < 1 || ny < 1 || n_loops < 1 || !counts)
+        return GKS_RASTER_E_ARG;
+    size_t total = 0;
+    for (int l = 0; l < n_loops; l++) {
+        if (counts[l] < 0)
+            return GKS_RASTER_E_ARG;
+        total += (size_t)counts[l];
+    }
+    if (total && !pts)
+        return GKS_RASTER_E_ARG;
+    gks_raster_fill f = {.style = GKS_RASTER_SOLID};
+    if (fill) {
+        f.zmode = fill->zmode;
+        f.zbias = fill->zbias;
+    }
+    paint p;
+    int rc = paint_init(&p, fb, &f);
+    if (rc != GKS_RASTER_OK)
+        return rc;
+    if (!pts_finite(o, 1) || !pts_finite(pu, 1) || !pts_finite(pv, 1) ||
+        !pts_finite(pts, total))
+        return GKS_RASTER_E_ARG;
+    double zw;
+    if (total < 3 || !cell_setup(&p, o, pu, pv, nx, ny, rgb, &zw))
+        return GKS_RASTER_OK;
+    p.bounded = 1;
     return polygon_draw(&p, n_loops, counts, pts);
 }
 

@@ -324,12 +324,31 @@ static void ctx_init(line_ctx *c, gks_raster_fb *fb, const gks_raster_line *attr
     }
 }
 
-static int polyline_draw(line_ctx *c, size_t n, const gks_raster_pt *pts)
+/* Round join at v (a -> v -> b), if the pattern is on there and v is near the image. */
+static int join(line_ctx *c, const gks_raster_pt *a, const gks_raster_pt *v,
+                const gks_raster_pt *b)
+{
+    double left, m = c->w;
+    if (v->x < -m || v->y < -m || v->x > c->fb->width + m || v->y > c->fb->height + m)
+        return GKS_RASTER_OK;
+    if (dash_on(c, c->phase, &left) && turns(a, v, b, c->w))
+        return disc(c, v);
+    return GKS_RASTER_OK;
+}
+
+/* prev: the point before pts[0] when continuing a polyline (NULL: a new polyline). */
+static int polyline_draw(line_ctx *c, size_t n, const gks_raster_pt *pts,
+                         const gks_raster_pt *prev)
 {
     if (c->fb->ss == 1 && c->w <= 1.0) {
         for (size_t i = 0; i + 1 < n; i++)
-            thin_segment(c, &pts[i], &pts[i + 1], i > 0);
+            thin_segment(c, &pts[i], &pts[i + 1], i > 0 || prev);
         return GKS_RASTER_OK;
+    }
+    if (prev && n >= 2) {
+        int rc = join(c, prev, &pts[0], &pts[1]);
+        if (rc != GKS_RASTER_OK)
+            return rc;
     }
     for (size_t i = 0; i + 1 < n; i++) {
         int rc = wide_segment(c, &pts[i], &pts[i + 1]);
@@ -337,16 +356,9 @@ static int polyline_draw(line_ctx *c, size_t n, const gks_raster_pt *pts)
             return rc;
         if (i + 2 >= n)
             break;
-        /* join at pts[i+1], if the pattern is on there and it is near the image */
-        double left, m = c->w;
-        const gks_raster_pt *v = &pts[i + 1];
-        if (v->x < -m || v->y < -m || v->x > c->fb->width + m || v->y > c->fb->height + m)
-            continue;
-        if (dash_on(c, c->phase, &left) && turns(&pts[i], v, &pts[i + 2], c->w)) {
-            rc = disc(c, v);
-            if (rc != GKS_RASTER_OK)
-                return rc;
-        }
+        rc = join(c, &pts[i], &pts[i + 1], &pts[i + 2]);
+        if (rc != GKS_RASTER_OK)
+            return rc;
     }
     return GKS_RASTER_OK;
 }
@@ -360,7 +372,25 @@ int gks_raster_polyline(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
         return GKS_RASTER_E_ARG;
     line_ctx c;
     ctx_init(&c, fb, attr, attr->type);
-    return polyline_draw(&c, n, pts);
+    return polyline_draw(&c, n, pts, NULL);
+}
+
+int gks_raster_polyline_cont(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
+                             const gks_raster_line *attr, gks_raster_stroke *st)
+{
+    if (!st || !line_check(fb, attr) || !pts || n < 2 || attr->type < 1 || attr->type > 4)
+        return GKS_RASTER_E_ARG;
+    if (!pts_finite(pts, n))
+        return GKS_RASTER_E_ARG;
+    line_ctx c;
+    ctx_init(&c, fb, attr, attr->type);
+    if (st->cont && isfinite(st->phase) && st->phase >= 0.0)
+        c.phase = c.n_dash ? fmod(st->phase, c.period) : 0.0;
+    int rc = polyline_draw(&c, n, pts, st->cont && pts_finite(&st->prev, 1) ? &st->prev : NULL);
+    st->phase = c.phase;
+    st->prev = pts[n - 2];
+    st->cont = 1;
+    return rc;
 }
 
 static int marker_one(line_ctx *c, int type, const gks_raster_pt *p, double size)
@@ -385,7 +415,7 @@ static int marker_one(line_ctx *c, int type, const gks_raster_pt *p, double size
             ring[k] = (gks_raster_pt){p->x + r * cos(a), p->y + r * sin(a), p->z};
         }
         c->phase = 0.0;
-        return polyline_draw(c, (size_t)nseg + 1, ring);
+        return polyline_draw(c, (size_t)nseg + 1, ring, NULL);
     }
     gks_raster_pt s[4][2] = {
         {{p->x - r, p->y, p->z}, {p->x + r, p->y, p->z}},
@@ -396,7 +426,7 @@ static int marker_one(line_ctx *c, int type, const gks_raster_pt *p, double size
     int first = type == 5 ? 2 : 0, last = type == 2 ? 2 : 4;
     for (int k = first; k < last; k++) {
         c->phase = 0.0;
-        int rc = polyline_draw(c, 2, s[k]);
+        int rc = polyline_draw(c, 2, s[k], NULL);
         if (rc != GKS_RASTER_OK)
             return rc;
     }

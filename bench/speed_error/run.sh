@@ -1,0 +1,65 @@
+#!/bin/sh
+# run.sh -- speed against error of the gksrt render settings (issue 7): renders the
+# references and all settings for SPD gears, SPD mount and the bunny mesh (with a mirror
+# weight ks 0.3 so that depth and cut-off matter), writes docs/speed_error.csv, the log-log
+# plot docs/speed_error.png (gnuplot) and the log docs/bench/speed_error.txt.
+#   bench/speed_error/run.sh [--no-build] [--quick] [BUILD_DIR]
+# --quick: 64x64, 4x4-spp reference, 1 repetition (a smoke test; writes into BUILD_DIR only).
+# Takes about 10 minutes on 2 idle cores, most of it the 256x256, 16x16-spp references, which
+# are kept in BUILD_DIR/speed_error-ref (delete it to render them again).
+set -eu
+
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=""
+DO_BUILD=1
+QUICK=0
+for a in "$@"; do
+    case "$a" in
+    --no-build) DO_BUILD=0 ;;
+    --quick) QUICK=1 ;;
+    -h | --help)
+        sed -n '2,10p' "$0"
+        exit 0
+        ;;
+    *) BUILD=$a ;;
+    esac
+done
+[ -n "$BUILD" ] || BUILD="$SRC/build-compare"
+DATA=${GKS_DATA:-"$SRC/../shared/data"}
+
+if [ "$DO_BUILD" -eq 1 ]; then
+    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$BUILD" --target speed_error -j2 >/dev/null
+fi
+EXE="$BUILD/bench/speed_error/speed_error"
+[ -x "$EXE" ] || {
+    echo "run.sh: $EXE missing" >&2
+    exit 1
+}
+
+SCENES="gears=$DATA/spd/gears.nff mount=$DATA/spd/mount-tessellated.nff bunny=$DATA/meshes/bunny00.off:0.3"
+if [ "$QUICK" -eq 1 ]; then
+    DOCS="$BUILD/speed_error-quick"
+    mkdir -p "$DOCS/bench"
+    ARGS="-s 64 -ref-spp 16 -reps 1"
+else
+    DOCS="$SRC/docs"
+    mkdir -p "$DOCS/bench"
+    ARGS="-s 256 -ref-spp 256 -ref-depth 8 -ref-threads 2 -reps 3 -ref-cache $BUILD/speed_error-ref"
+    mkdir -p "$BUILD/speed_error-ref"
+fi
+CSV="$DOCS/speed_error.csv"
+{
+    echo "# speed_error (bench/speed_error/run.sh), $(date -u '+%Y-%m-%d %H:%M UTC'), $(uname -m)," \
+         "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores shared with other jobs"
+    # shellcheck disable=SC2086 # argument lists split on purpose
+    "$EXE" $ARGS -csv "$CSV" $SCENES
+} | tee "$DOCS/bench/speed_error.txt"
+
+if command -v gnuplot >/dev/null 2>&1; then
+    gnuplot -e "csv='$CSV'; out='$DOCS/speed_error.png'; scenes='gears mount bunny'" \
+        "$SRC/bench/speed_error/plot.gp"
+    echo "plot: $DOCS/speed_error.png"
+else
+    echo "run.sh: gnuplot not found (scripts/setup-bench.sh installs it); no plot" >&2
+fi

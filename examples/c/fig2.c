@@ -1,0 +1,12 @@
+/*
+ * fig2.c -- Fig. 2: the checkerboard scene drawn the conventional GKS way (HLHSR mode z-buffer).
+ * Usage: fig2_c [SIZE [PREFIX]] (fig_scene.h); writes PREFIXfig2.png and the previews
+ * PREFIXfig2_{none,hiddenline,zbuffer,painter}.png. Fortran twin: examples/f77/fig2.f.
+ */
+#include "fig_scene.h"
+#include <gks.h>
+
+int main(int argc, char **argv)
+{
+    return fig_run(argc, argv, "fig2", FIG_SCENE_BOARD, GHLHSR_ZBUFFER, 0);
+}

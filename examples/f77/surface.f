@@ -1,0 +1,174 @@
+      PROGRAM SURFAC
+C     A scientist's picture: the surface z = f(x, y) of a damped ripple
+C     on a 32 x 32 grid, each grid cell emitted as FILL AREA 3 (split
+C     into two triangles, since a fill area is planar), coloured by
+C     height, ray traced above a mirror plane that shows its underside.
+C     The data stay in the scientist's own coordinates: SET WINDOW 3
+C     and SET VIEWPORT 3 map them to NDC3, and the view's up vector is
+C     the z axis. A z-buffer preview at a third of the size comes first.
+C
+C     Usage: surface_f77 [SIZE [PREFIX]] (SIZE = viewport in pixels,
+C     24..2048, default 480); writes PREFIXsurface_zbuffer.png and
+C     PREFIXsurface.png. C twin: examples/c/surface.c (same pictures).
+      INCLUDE 'GKS_PAR'
+      INTEGER N
+      PARAMETER (N=32)
+      REAL X(N+1), Y(N+1), Z(N+1,N+1), R2
+      INTEGER I, J, SIZE, IOS, NP, NBLEN
+      CHARACTER*256 ARG, PREFIX
+      SIZE = 480
+      PREFIX = ' '
+      IF (COMMAND_ARGUMENT_COUNT() .GE. 1) THEN
+         CALL GET_COMMAND_ARGUMENT(1, ARG)
+         READ (ARG, *, IOSTAT=IOS) SIZE
+         IF (IOS .NE. 0 .OR. SIZE .LT. 24 .OR. SIZE .GT. 2048) THEN
+            WRITE (*, '(A)')
+     +         'usage: surface_f77 [SIZE (24..2048) [PREFIX]]'
+            STOP 2
+         END IF
+      END IF
+      IF (COMMAND_ARGUMENT_COUNT() .GE. 2) THEN
+         CALL GET_COMMAND_ARGUMENT(2, PREFIX)
+      END IF
+      NP = NBLEN(PREFIX)
+      IF (NP .GT. 200) STOP 2
+C     the data: x, y in [-2, 2]
+      DO 10 I = 1, N + 1
+         X(I) = -2.0 + 4.0 * REAL(I - 1) / REAL(N)
+         Y(I) = X(I)
+   10 CONTINUE
+C     NOVECTOR: gfortran -O3 would otherwise call glibc's vector COS
+C     and EXP (libmvec, a few ulps off), even without -ffast-math, and
+C     the heights would no longer match the C twin's cosf and expf.
+      DO 30 J = 1, N + 1
+!GCC$ NOVECTOR
+         DO 20 I = 1, N + 1
+            R2 = X(I) * X(I) + Y(J) * Y(J)
+            Z(I,J) = 0.8 * COS(2.5 * SQRT(R2)) * EXP(-0.25 * R2)
+   20    CONTINUE
+   30 CONTINUE
+      CALL GOPKS(6, -1)
+      CALL SURPIC(PREFIX(1:NP) // 'surface_zbuffer', SIZE / 3, GHZBUF,
+     +            N, X, Y, Z)
+      CALL SURPIC(PREFIX(1:NP) // 'surface', SIZE, GHRAYT, N, X, Y, Z)
+      CALL GCLKS
+      END
+
+      SUBROUTINE SURPIC(BASE, SIZE, MODE, N, X, Y, Z)
+C     One picture of the surface on workstation 1: file BASE.png,
+C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
+      CHARACTER*(*) BASE
+      INTEGER SIZE, MODE, N
+      REAL X(N+1), Y(N+1), Z(N+1,N+1)
+      INCLUDE 'GKS_PAR'
+      INTEGER WS, NC
+      PARAMETER (WS=1, NC=16)
+      INTEGER I, J, K, C, LODR, NB, NBLEN, ACT(2), DEACT(1)
+      REAL WN(6), VP(6), PRVP(6), CLIP(6), VWM(4,4), PRM(4,4)
+      REAL WHITE(3), AMB(3), LAMP(3), ORIGIN(3), DIRN(3), ATT(2)
+      REAL T, PX(4), PY(4), PZ(4), ZM
+      CHARACTER*80 IDR(4), ODR(1)
+      INTEGER ERR
+      DATA WN /-2.5, 2.5, -2.5, 2.5, -1.5, 1.5/
+      DATA VP /0.0, 1.0, 0.0, 1.0, 0.2, 0.8/
+      DATA PRVP /0.0, 1.0, 0.0, 1.0, 0.0, 1.0/
+      DATA CLIP /0.0, 1.0, 0.0, 1.0, 0.0, 1.0/
+      DATA WHITE /1.0, 1.0, 1.0/, AMB /0.3, 0.3, 0.3/
+      DATA LAMP /0.3, 0.1, 1.4/, ORIGIN /0.0, 0.0, 0.0/
+      DATA DIRN /0.0, 0.0, -1.0/, ATT /1.0, 0.0/
+      DATA ACT /2, 3/, DEACT /0/
+      CALL GOPWK(WS, 1, GWSPNG)
+      NB = NBLEN(BASE)
+      WRITE (IDR(1), '(I10)') WS
+      DO 5 J = 1, (NB + 79) / 80
+         IDR(J + 1) = BASE(80 * J - 79 : MIN(80 * J, NB))
+    5 CONTINUE
+      CALL GESC(GESSFN, (NB + 79) / 80 + 1, IDR, 1, LODR, ODR)
+      CALL GSHRM(WS, MODE)
+      CALL GACWK(WS)
+      CALL GSWKWN(WS, 0.0, 1.0, 0.0, 1.0)
+      CALL GSWKVP(WS, 0.0, REAL(SIZE), 0.0, REAL(SIZE))
+C     the scientist's coordinates -> NDC3 (uniform scale 0.2)
+      CALL GSW3(1, WN)
+      CALL GSV3(1, VP)
+      CALL GSELNT(1)
+C     camera: z up (VUP comes before VPN in GEVVWM)
+      CALL GEVVWM(0.5, 0.5, 0.45, 0.0, 0.0, 1.0, 1.0, -1.4, 1.1,
+     +            GNDC, ERR, VWM)
+      CALL GEVPJM(-0.62, 0.62, -0.62, 0.62, PRVP, GPERS,
+     +            0.0, 0.0, 2.5, 0.0, -1.0, 1.0, ERR, PRM)
+      CALL GSVWR(WS, 1, VWM, PRM, CLIP, GCLIP, GCLIP, GCLIP)
+      CALL GSVWI(1)
+C     colour map 16..31 from blue (low) to red (high); 14 the mirror
+      DO 10 C = 0, NC - 1
+         T = REAL(C) / REAL(NC - 1)
+         CALL GSCR(WS, 16 + C, 0.15 + 0.8 * T,
+     +             0.3 + 0.5 * (1.0 - ABS(2.0 * T - 1.0)),
+     +             0.85 - 0.75 * T)
+   10 CONTINUE
+      CALL GSCR(WS, 14, 0.6, 0.65, 0.7)
+      CALL GSLSR(WS, 2, GAMB, AMB, ORIGIN, DIRN, ATT, 0.0, 0.0)
+      CALL GSLSR(WS, 3, GPOSI, WHITE, LAMP, DIRN, ATT, 0.0, 0.0)
+      IF (MODE .EQ. GHRAYT) THEN
+         WRITE (IDR(1), '(3I10)') WS, 4, 0
+         CALL GESC(GESRSA, 1, IDR, 1, LODR, ODR)
+      END IF
+      CALL GSFAIS(GSOLID)
+      CALL GSLSS(2, ACT, 0, DEACT)
+      CALL GSRFEQ(GRAMDS)
+      CALL GSBRFQ(GRAMDS)
+C     the mirror plane below the surface
+      CALL GSAPR(0.1, 0.2, 0.8, WHITE, 100.0, 0.0, 1.0)
+      CALL GSBAPR(0.1, 0.2, 0.8, WHITE, 100.0, 0.0, 1.0)
+      CALL GSFACI(14)
+      PX(1) = -2.5
+      PY(1) = -2.5
+      PX(2) = 2.5
+      PY(2) = -2.5
+      PX(3) = 2.5
+      PY(3) = 2.5
+      PX(4) = -2.5
+      PY(4) = 2.5
+      DO 15 K = 1, 4
+         PZ(K) = -1.2
+   15 CONTINUE
+      CALL GFA3(4, PX, PY, PZ)
+C     the surface: two triangles per grid cell, colour by mean height
+      CALL GSAPR(0.7, 0.8, 0.3, WHITE, 30.0, 0.0, 1.0)
+      CALL GSBAPR(0.7, 0.8, 0.3, WHITE, 30.0, 0.0, 1.0)
+      DO 30 J = 1, N
+         DO 20 I = 1, N
+            ZM = 0.25 * (((Z(I,J) + Z(I+1,J)) + Z(I+1,J+1)) + Z(I,J+1))
+            C = INT((ZM + 0.8) / 1.6 * REAL(NC))
+            CALL GSFACI(16 + MAX(0, MIN(NC - 1, C)))
+            PX(1) = X(I)
+            PY(1) = Y(J)
+            PZ(1) = Z(I,J)
+            PX(2) = X(I+1)
+            PY(2) = Y(J)
+            PZ(2) = Z(I+1,J)
+            PX(3) = X(I+1)
+            PY(3) = Y(J+1)
+            PZ(3) = Z(I+1,J+1)
+            CALL GFA3(3, PX, PY, PZ)
+            PX(2) = PX(3)
+            PY(2) = PY(3)
+            PZ(2) = PZ(3)
+            PX(3) = X(I)
+            PY(3) = Y(J+1)
+            PZ(3) = Z(I,J+1)
+            CALL GFA3(3, PX, PY, PZ)
+   20    CONTINUE
+   30 CONTINUE
+      CALL GDAWK(WS)
+      CALL GCLWK(WS)
+      END
+
+      INTEGER FUNCTION NBLEN(S)
+C     Length of S without trailing blanks.
+      CHARACTER*(*) S
+      DO 10 NBLEN = LEN(S), 1, -1
+         IF (S(NBLEN:NBLEN) .NE. ' ') RETURN
+   10 CONTINUE
+      NBLEN = 0
+      END
