@@ -177,7 +177,7 @@ static int point_visible(const norm_ctx *nc, const double h[3])
  * Returns 0 or 300. */
 static int clip_polyline(const norm_ctx *nc, const pt_src *s, size_t n, pieces *b)
 {
-    double prev[4], cur[4], wc[3];
+    double prev[4] = { 0 }, cur[4], wc[3];
     int prev_ok = 0, open = 0;
     for (size_t i = 0; i < n; i++) {
         src_get(s, i, wc);

@@ -203,7 +203,8 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
-    if (ws->hlhsr_mode == GHLHSR_RAYTRACE && prim->kind == GKS_PRIM_FILL_AREA) {
+    if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
+        (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY)) {
         if (ws_rt_record(p->rt, ws, prim))
             return 300;
         p->dirty = 1;

@@ -10,6 +10,7 @@
  * once needs O(CHUNK) memory whatever the point count.
  */
 #include "ws_png_render.h"
+#include "ws_shade.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include <math.h>
@@ -360,18 +361,20 @@ static int add_pieces(build *b, const Gpoint3 *p, size_t n, int closed, rec *rc)
     return 0;
 }
 
-/* SHADING HOOK: the one place where the colour of an area is decided. Flat shading of
- * the classic modes (ws_shade.c) is to be called here with the area's NDC3 points, its
- * view and prim->area_props / refl_eq / light_mask; today the colour is the resolved
- * fill colour. */
+/* The one place where the colour of an area is decided: flat shading (ws_shade.c) of the
+ * resolved fill colour by the area's properties, reflectance equation and active lights,
+ * with the formulas of the tracer's local shading (so a preview and the traced picture
+ * agree where there are no shadows or global effects). */
 static void area_colour(const gks_ws *ws, const gks_prim *prim, const view_cache *v,
                         float rgb[3])
 {
-    (void)ws;
     (void)v;
-    rgb[0] = (float)prim->colour.red;
-    rgb[1] = (float)prim->colour.green;
-    rgb[2] = (float)prim->colour.blue;
+    ws_shade sh;
+    ws_shade_area(ws, prim, &sh);
+    Grgb c = ws_shade_apply(&sh, &prim->colour);
+    rgb[0] = (float)c.red;
+    rgb[1] = (float)c.green;
+    rgb[2] = (float)c.blue;
 }
 
 static double scale_or_one(double s)
@@ -670,10 +673,13 @@ static int build_cell(build *b, const gks_prim *prim, int retain)
     a.fl = r->n_fl;
     if (GROW(r, fl, cap_fl, r->n_fl + 3 * nc))
         return 300;
+    ws_shade sh;
+    ws_shade_area(b->ws, prim, &sh);
     for (size_t i = 0; i < nc; i++) {
-        r->fl[r->n_fl + 3 * i] = (float)prim->cells[i].red;
-        r->fl[r->n_fl + 3 * i + 1] = (float)prim->cells[i].green;
-        r->fl[r->n_fl + 3 * i + 2] = (float)prim->cells[i].blue;
+        Grgb c = ws_shade_apply(&sh, &prim->cells[i]);
+        r->fl[r->n_fl + 3 * i] = (float)c.red;
+        r->fl[r->n_fl + 3 * i + 1] = (float)c.green;
+        r->fl[r->n_fl + 3 * i + 2] = (float)c.blue;
     }
     r->n_fl += 3 * nc;
     int e = attr_push(r, &a, &rc.attr);

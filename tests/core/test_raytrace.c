@@ -1528,6 +1528,90 @@ static void test_fresnel_schlick_vs_exact(void **u)
     free(g2);
 }
 
+/* CELL ARRAY 3 through the GKS entry point in mode 4: one tracer primitive, the cell colours
+ * from the colour table at the pixel centres of each quarter. */
+static void test_cell_array_e2e(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png(1, "t_rt_ca.png", GHLHSR_RAYTRACE);
+    Gint colrs[4] = { 2, 3, 4, 5 }; /* red green / blue yellow */
+    Gpat_rep ca = { { 2, 2 }, colrs };
+    Gparal par = { { 0.25, 0.25, 0.5 }, { 0.75, 0.75, 0.5 }, { 0.75, 0.25, 0.5 } };
+    gcell_array3(&par, &ca);
+    gupd_ws(1, GFLAG_PERFORM);
+    rt_stat_rec s;
+    get_stats(1, &s);
+    assert_int_equal(s.i[ST_PRIMS], 1);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    no_errors();
+    image img;
+    assert_true(read_png("t_rt_ca.png", &img));
+    assert_near(&img, 20, 20, 1, 0, 0);
+    assert_near(&img, 43, 20, 0, 1, 0);
+    assert_near(&img, 20, 43, 0, 0, 1);
+    assert_near(&img, 43, 43, 1, 1, 0);
+    assert_near(&img, 10, 10, 1, 1, 1);
+    free(img.rgb);
+}
+
+/* The z-buffer preview of a lit square (flat shading, ws_shade) equals the ray-traced picture
+ * within 1/255 in a shadow-free scene: directional + ambient light, specular, depth 1. */
+static void test_preview_equals_traced(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png(1, "t_rt_prev_zb.png", GHLHSR_ZBUFFER);
+    open_png(2, "t_rt_prev_rt.png", GHLHSR_RAYTRACE);
+    assert_int_equal(esc1(GESC_RT_MAX_DEPTH, 2, 1), 0);
+    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 0.6, 0.5, 0.4 }, { 0, 0, 0 }, { 0.2, -0.3, -0.9 },
+                         { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 2, &l);
+    gset_light_src_rep(2, 2, &l);
+    Gcolr_rep cr = { { 0.8, 0.6, 0.4 } };
+    gset_colr_rep(1, 2, &cr);
+    gset_colr_rep(2, 2, &cr);
+    gset_fill_colr_ind(2);
+    gset_fill_int_style(GSTYLE_SOLID);
+    Garea_props pr = { 0.3, 0.7, 0.4, { 1, 0.9, 0.8 }, 5, 0, 1 };
+    gset_area_props(&pr);
+    gset_refl_eq(GREFL_AMB_DIFF_SPEC);
+    Gint on[2] = { 1, 2 };
+    Gint_list a = { 2, on };
+    gset_light_src_state(&a, NULL);
+    square(0.2, 0.8, 0.5);
+    Gint colrs[4] = { 2, 3, 4, 5 };
+    Gpat_rep ca = { { 2, 2 }, colrs };
+    Gparal par = { { 0.05, 0.85, 0.6 }, { 0.95, 0.95, 0.6 }, { 0.95, 0.85, 0.6 } };
+    gcell_array3(&par, &ca);
+    gdeactivate_ws(1);
+    gdeactivate_ws(2);
+    gclose_ws(1);
+    gclose_ws(2);
+    gclose_gks();
+    no_errors();
+    image z, r;
+    assert_true(read_png("t_rt_prev_zb.png", &z));
+    assert_true(read_png("t_rt_prev_rt.png", &r));
+    for (int y = 14; y < 50; y++)
+        for (int x = 14; x < 50; x++)
+            for (int q = 0; q < 3; q++)
+                if (abs(px(&z, x, y)[q] - px(&r, x, y)[q]) > 1)
+                    fail_msg("(%d,%d): preview %d, traced %d", x, y, px(&z, x, y)[q], px(&r, x, y)[q]);
+    assert_true(px(&z, 32, 32)[0] > 60 && px(&z, 32, 32)[0] < 250); /* lit, not saturated */
+    for (int x = 5; x < 60; x += 3) /* the lit cell array above the square: y 0.85..0.95 */
+        for (int q = 0; q < 3; q++)
+            if (abs(px(&z, x, 58)[q] - px(&r, x, 58)[q]) > 1)
+                fail_msg("cell (%d,58): preview %d, traced %d", x, px(&z, x, 58)[q], px(&r, x, 58)[q]);
+    free(z.rgb);
+    free(r.rgb);
+}
+
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1554,6 +1638,8 @@ int main(void)
         cmocka_unit_test(test_clip_secondary_fig45),
         cmocka_unit_test(test_flat_shading_matches_tracer),
         cmocka_unit_test(test_fresnel_schlick_vs_exact),
+        cmocka_unit_test(test_cell_array_e2e),
+        cmocka_unit_test(test_preview_equals_traced),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
