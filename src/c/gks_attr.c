@@ -548,12 +548,8 @@ static double vlen3(const Gvec3 *v)
 }
 
 /* Pattern reference point and box vectors WC3 -> NDC3 by the current normalization. */
-static void pattern_box(const gks_cur_attrs *a, gks_prim *p)
+static void pattern_box(const gks_cur_attrs *a, const double m[3][4], gks_prim *p)
 {
-    double m[3][4];
-    if (gks_cur_norm_matrix(m)) {
-        gks_xform_mat34_identity(m);
-    }
     const double r[3] = { a->pat_ref_point.x, a->pat_ref_point.y, a->pat_ref_point.z };
     double o[3];
     gks_xform_mat34_point(m, r, o);
@@ -570,7 +566,8 @@ static void pattern_box(const gks_cur_attrs *a, gks_prim *p)
     }
 }
 
-int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p, Grgb **pattern)
+int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                       gks_prim *p, Grgb **pattern)
 {
     Gfill_bundle f;
     Gedge_bundle e;
@@ -594,7 +591,7 @@ int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p, Gr
         p->attrs.pat_ny = ny;
         *pattern = c;
     }
-    pattern_box(a, p);
+    pattern_box(a, m, p);
     p->attrs.edge_flag = e.flag == GEDGE_ON;
     p->attrs.edgetype = e.type;
     p->attrs.edgewidth = e.width;

@@ -40,9 +40,11 @@ void gks_attr_text_layout(const gks_ws *ws, const gks_cur_attrs *a, gks_text_att
 
 /* Fill a primitive's colour and attributes for ws for an area primitive: interior,
  * pattern (*pattern receives an allocated colour array the caller frees with gks_free,
- * NULL when not a pattern), edges. Returns 0 or 300. pat_ndc: the pattern reference
- * point and box vectors in NDC3 (from the caller's normalization). */
-int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p, Grgb **pattern);
+ * NULL when not a pattern), edges. m maps WC3 to the primitive's final NDC3 (the
+ * normalization, then the segment transformation): the pattern reference point and box
+ * vectors go through it. Returns 0 or 300. */
+int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                       gks_prim *p, Grgb **pattern);
 void gks_attr_prim_line(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 void gks_attr_prim_marker(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 #endif

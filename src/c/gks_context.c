@@ -12,7 +12,7 @@ static const gks_ws_driver *const driver_list[] = {
 };
 
 static const gks_desc_table desc_table = {
-    .level = GLEVEL_0A, /* raised as segments (1) and WISS (2) land */
+    .level = GLEVEL_1A, /* full output, segments; no WISS (2), no input (b, c) */
     .n_ws_types = (int)(sizeof driver_list / sizeof driver_list[0]),
     .ws_types = driver_list,
     .max_nums = { GKS_MAX_OPEN_WS, GKS_MAX_ACTIVE_WS, GKS_MAX_OPEN_WS },

@@ -91,6 +91,8 @@ typedef struct gks_state_list {
     gks_norm_tran tran[GKS_MAX_NORM_TRAN + 1];
     Gclip_ind clip_ind;
     char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
+    struct gks_seg_store *segs; /* segment storage (gks_seg.h) */
+    int open_seg;               /* name of the open segment, 0 = none */
 } gks_state_list;
 
 /* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives

@@ -7,6 +7,8 @@
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
+#include "gks_seg.h"
+#include "gks_segment.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include <stdio.h>
@@ -46,15 +48,19 @@ static void open_gks(const char *err_name, int open_file)
             GKS_FAIL(200, GFN_OPKS);
     }
     gks_state_list *sl = gks_calloc_array(1, sizeof *sl);
+    gks_seg_store *segs = gks_calloc_array(1, sizeof *segs);
     char *name = (err_name && *err_name) ? gks_strdup(err_name) : NULL;
-    if (!sl || (err_name && *err_name && !name)) {
+    if (!sl || !segs || (err_name && *err_name && !name)) {
         gks_free(sl);
+        gks_free(segs);
         gks_free(name);
         if (fp)
             fclose(fp);
         GKS_FAIL(300, GFN_OPKS);
     }
     init_state_list(sl);
+    gks_seg_store_init(segs);
+    sl->segs = segs;
     sl->err_file = name;
     c->sl = sl;
     c->err.fp = fp;
@@ -81,6 +87,8 @@ static void close_gks(gks_context *c)
         fclose(c->err.fp);
     c->err.fp = NULL;
     gks_free(c->sl->err_file);
+    gks_seg_store_free(c->sl->segs);
+    gks_free(c->sl->segs);
     gks_free(c->sl);
     c->sl = NULL;
     c->op_st = GST_GKCL;
@@ -138,6 +146,7 @@ GKS_API void gclose_ws(Gint ws_id)
     int err = ws->drv->update ? ws->drv->update(ws) : 0;
     if (ws->drv->close)
         ws->drv->close(ws);
+    gks_segment_ws_closed(ws_id);
     gks_state_list *sl = c->sl;
     for (int i = 0; i < sl->n_open; i++) {
         if (sl->open_ws[i] != ws_id)
@@ -211,7 +220,11 @@ GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
     if (ctrl_flag == GFLAG_COND && ws->disp_empty == GDISP_EMPTY &&
         ws->tran_upd_st == GUPD_NOT_PEND)
         return;
+    /* ISO 7942 CLEAR WORKSTATION: the picture is finished, the surface cleared, and the
+     * segments stored on the workstation are deleted from it (and deleted where stored
+     * nowhere else). */
     int err = ws->drv->update ? ws->drv->update(ws) : 0;
+    gks_segment_ws_closed(ws_id);
     if (!err)
         err = gks_ws_new_frame(ws);
     if (err)
@@ -226,9 +239,9 @@ GKS_API void gredraw_all_seg_ws(Gint ws_id)
                                 GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    /* No segments exist yet: redrawing is clearing the surface (ISO 7942: apply pending
-     * transformation, clear, redraw all visible segments). */
-    int err = gks_ws_new_frame(ws);
+    /* ISO 7942: apply a pending workstation transformation, clear the surface, redraw
+     * all visible segments stored on the workstation. */
+    int err = gks_ws_regenerate(ws);
     if (err)
         gks_error_report(err, GFN_RSGWK);
 }
@@ -245,7 +258,7 @@ GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
         GKS_FAIL(2000, GFN_UWK);
     int err = 0;
     if (upd_regen_flag == GFLAG_PERFORM && ws->new_frame == GNEW_YES)
-        err = gks_ws_new_frame(ws);
+        err = gks_ws_regenerate(ws);
     if (!err && ws->drv->update)
         err = ws->drv->update(ws);
     if (err)
@@ -265,7 +278,7 @@ GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mod
     ws->defer_mode = defer_mode;
     ws->irg_mode = irg_mode;
     if (irg_mode == GIRG_ALLOWED && ws->new_frame == GNEW_YES) {
-        int err = gks_ws_new_frame(ws);
+        int err = gks_ws_regenerate(ws);
         if (err)
             gks_error_report(err, GFN_SDS);
     }

@@ -20,6 +20,8 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_export.h"
+#include "gks_seg.h"
+#include "gks_segment.h"
 #include "gks_state.h"
 #include "gks_text.h"
 #include "gks_ws.h"
@@ -30,24 +32,68 @@
 
 /* ------------------------------------------------------------------ normalization */
 typedef struct {
-    double m[3][4];            /* WC3 -> NDC3 */
+    double m[3][4];            /* source -> NDC3 after the segment transformation */
+    double n[3][4];            /* WC3 -> NDC3 (normalization only; what segments store) */
     gks_xform_clip clip;       /* in NDC3 (w = 1) */
     int clip_on;
-    double box[6];             /* the viewport 3 */
+    double box[6];             /* the clipping volume: the viewport 3 when created */
 } norm_ctx;
 
-/* 0, or -1 if the current normalization transformation is degenerate. */
+/* The open segment, or NULL. */
+static gks_segment *open_segment(void)
+{
+    const gks_state_list *sl = gks_ctx()->sl;
+    return sl->open_seg ? gks_seg_find(sl->segs, sl->open_seg) : NULL;
+}
+
+/* A context mapping by m and clipping at box (when clip_on). 0 or -1 (degenerate). */
+static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], int clip_on)
+{
+    memcpy(nc->m, m, sizeof nc->m);
+    memcpy(nc->n, m, sizeof nc->n);
+    memcpy(nc->box, box, sizeof nc->box);
+    nc->clip_on = clip_on;
+    gks_xform_clip_init(&nc->clip);
+    if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
+        return -1;
+    return 0;
+}
+
+/* The current state's context: WC3 -> NDC3 by the current normalization transformation,
+ * then the open segment's transformation (if a segment is open), clipping at the current
+ * viewport 3 when the clipping indicator is on. 0, or -1 if degenerate. */
 static int norm_setup(norm_ctx *nc)
 {
     const gks_state_list *sl = gks_ctx()->sl;
-    if (gks_cur_norm_matrix(nc->m))
+    double n[3][4], box[6];
+    if (gks_cur_norm_matrix(n))
         return -1;
-    gks_xform_clip_init(&nc->clip);
-    gks_limit3_array(&sl->tran[sl->cur_tnr].vp, nc->box);
-    nc->clip_on = sl->clip_ind == GIND_CLIP;
-    if (nc->clip_on && gks_xform_clip_add_box(&nc->clip, nc->box, GKS_XFORM_CLIP_ALL))
+    gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+    const gks_segment *seg = open_segment();
+    if (norm_from(nc, n, box, sl->clip_ind == GIND_CLIP))
         return -1;
+    if (seg)
+        gks_xform_mat34_multiply(seg->tran, n, nc->m);
     return 0;
+}
+
+/* ------------------------------------------------------------------ targets */
+/* Where a primitive goes: the active workstations with the current attributes, or one
+ * workstation with a segment's stored binding (regeneration). */
+typedef struct {
+    const gks_cur_attrs *a;
+    double pat_m[3][4];        /* WC3 -> final NDC3, for pattern boxes */
+    gks_ws *only;              /* regeneration target; NULL: the active workstations */
+    int k, done;
+} target;
+
+static void target_current(target *t, const norm_ctx *nc)
+{
+    const gks_segment *seg = open_segment();
+    memset(t, 0, sizeof *t);
+    t->a = &gks_ctx()->sl->attrs;
+    memcpy(t->pat_m, nc->m, sizeof t->pat_m);
+    t->done = seg && !seg->vis; /* an invisible open segment: stored, not drawn */
 }
 
 /* WC3 -> homogeneous NDC3; 1 if finite. */
@@ -207,9 +253,8 @@ static int clip_polyline(const norm_ctx *nc, const pt_src *s, size_t n, pieces *
 
 /* ------------------------------------------------------------------ dispatch */
 /* Attributes every primitive carries, independent of the workstation. */
-static void prim_common(gks_prim *p)
+static void prim_common(gks_prim *p, const gks_cur_attrs *a)
 {
-    const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
     p->view_ind = a->view_ind;
     p->area_props[0] = a->area_props[0];
     p->area_props[1] = a->area_props[1];
@@ -239,15 +284,22 @@ static int send(gks_ws *ws, const gks_prim *p)
     return err;
 }
 
-/* The next active workstation from position *k, or NULL when there is none left. */
-static gks_ws *active_ws(int *k)
+/* The next workstation of the target, or NULL when there is none left. */
+static gks_ws *next_ws(target *t)
 {
+    if (t->done)
+        return NULL;
+    if (t->only) {
+        t->done = 1;
+        return t->only;
+    }
     gks_context *c = gks_ctx();
-    while (*k < c->sl->n_open) {
-        gks_ws *ws = c->ws[(*k)++];
+    while (t->k < c->sl->n_open) {
+        gks_ws *ws = c->ws[t->k++];
         if (ws->state == GWS_ACTIVE)
             return ws;
     }
+    t->done = 1;
     return NULL;
 }
 
@@ -269,7 +321,62 @@ static int send_pieces(gks_ws *ws, gks_prim *p, const pieces *b)
     return 0;
 }
 
+/* ------------------------------------------------------------------ segment recording */
+/* Stores a primitive into the open segment (if any): geometry mapped to NDC3 by the
+ * normalization only (nc->n), unclipped, with the current attributes, normalization and
+ * clipping volume. Returns 0, 300 or 301. */
+static int record(const norm_ctx *nc, gks_seg_prim *sp, const pt_src *src, size_t n)
+{
+    gks_segment *seg = open_segment();
+    if (!seg)
+        return 0;
+    gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
+    Gpoint3 *pts = gks_alloc_array(n ? n : 1, sizeof *pts);
+    int err = 0;
+    if (!bound || !pts) {
+        err = 300;
+        goto done;
+    }
+    memset(bound, 0, sizeof *bound); /* padding: snapshots are compared bytewise */
+    bound->attrs = gks_ctx()->sl->attrs;
+    memcpy(bound->norm, nc->n, sizeof bound->norm);
+    for (size_t i = 0; i < n; i++) {
+        double wc[3], o[3];
+        src_get(src, i, wc);
+        if (sp->kind == GKS_SEG_TEXT) /* TEXT keeps WC3 (position, two vectors) */
+            memcpy(o, wc, sizeof o);
+        else
+            gks_xform_mat34_point(nc->n, wc, o);
+        pts[i] = (Gpoint3){ o[0], o[1], o[2] };
+    }
+    sp->pts = pts;
+    sp->n_points = (int)n;
+    sp->bound = bound;
+    sp->clip = nc->clip_on;
+    memcpy(sp->clip_box, nc->box, sizeof sp->clip_box);
+    err = gks_seg_append(seg, sp);
+done:
+    gks_free(bound);
+    gks_free(pts);
+    return err;
+}
+
 /* ------------------------------------------------------------------ POLYLINE */
+static int emit_polyline(const norm_ctx *nc, const pt_src *s, size_t n, target *t)
+{
+    pieces b = { 0 };
+    int err = clip_polyline(nc, s, n, &b);
+    gks_ws *ws;
+    while (!err && b.np > 0 && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p, t->a);
+        gks_attr_prim_line(ws, t->a, &p);
+        err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    return err;
+}
+
 static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
 {
     if (gks_check_state(fctid))
@@ -280,16 +387,12 @@ static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
     if (norm_setup(&nc))
         return;
     pt_src s = { p2, p3, NULL };
-    pieces b = { 0 };
-    int err = clip_polyline(&nc, &s, (size_t)n, &b);
-    gks_ws *ws;
-    for (int k = 0; !err && b.np > 0 && (ws = active_ws(&k));) {
-        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
-        prim_common(&p);
-        gks_attr_prim_line(ws, &gks_ctx()->sl->attrs, &p);
-        err = send_pieces(ws, &p, &b);
-    }
-    pieces_free(&b);
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
+    int err = record(&nc, &sp, &s, (size_t)n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polyline(&nc, &s, (size_t)n, &t);
     if (err)
         gks_error_report(err, fctid);
 }
@@ -305,6 +408,30 @@ GKS_API void gpolyline3(const Gpoint_list3 *l)
 }
 
 /* ------------------------------------------------------------------ POLYMARKER */
+static int emit_polymarker(const norm_ctx *nc, const pt_src *s, size_t n, target *t)
+{
+    pieces b = { 0 };
+    int err = new_piece(&b);
+    for (size_t i = 0; i < n && !err; i++) {
+        double wc[3], h[4];
+        src_get(s, i, wc);
+        if (!to_ndc(nc, wc, h) || !point_visible(nc, h))
+            continue; /* centre not finite or outside the clipping region */
+        err = push_pt(&b, h);
+    }
+    gks_ws *ws;
+    while (!err && b.n > 0 && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_POLYMARKER, .n_loops = 1, .n_points = (int)b.n,
+                       .pts = b.pts };
+        p.loop_counts = &p.n_points;
+        prim_common(&p, t->a);
+        gks_attr_prim_marker(ws, t->a, &p);
+        err = send(ws, &p);
+    }
+    pieces_free(&b);
+    return err;
+}
+
 static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
 {
     if (gks_check_state(fctid))
@@ -315,25 +442,12 @@ static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3
     if (norm_setup(&nc))
         return;
     pt_src s = { p2, p3, NULL };
-    pieces b = { 0 };
-    int err = new_piece(&b);
-    for (int i = 0; i < n && !err; i++) {
-        double wc[3], h[4];
-        src_get(&s, (size_t)i, wc);
-        if (!to_ndc(&nc, wc, h) || !point_visible(&nc, h))
-            continue; /* centre not finite or outside the clipping region */
-        err = push_pt(&b, h);
-    }
-    gks_ws *ws;
-    for (int k = 0; !err && b.n > 0 && (ws = active_ws(&k));) {
-        gks_prim p = { .kind = GKS_PRIM_POLYMARKER, .n_loops = 1, .n_points = (int)b.n,
-                       .pts = b.pts };
-        p.loop_counts = &p.n_points;
-        prim_common(&p);
-        gks_attr_prim_marker(ws, &gks_ctx()->sl->attrs, &p);
-        err = send(ws, &p);
-    }
-    pieces_free(&b);
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
+    int err = record(&nc, &sp, &s, (size_t)n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polymarker(&nc, &s, (size_t)n, &t);
     if (err)
         gks_error_report(err, fctid);
 }
@@ -361,6 +475,37 @@ static int stroke_emit(void *ctx, size_t n, const double (*pts)[3])
     return clip_polyline(sc->nc, &s, n, sc->b);
 }
 
+/* TEXT at pos with direction vectors d0, d1 (WC3; nc maps WC3 to the final NDC3). */
+static int emit_text(const norm_ctx *nc, const double pos[3], const double d0[3],
+                     const double d1[3], const char *str, target *t)
+{
+    gks_text_frame f;
+    if (!isfinite(pos[0]) || !isfinite(pos[1]) || !isfinite(pos[2]) ||
+        gks_text_frame3(pos, d0, d1, &f))
+        return 0; /* nothing to draw */
+    pieces b = { 0 };
+    int err = 0;
+    gks_ws *ws;
+    while (!err && *str && (ws = next_ws(t))) {
+        gks_text_attrs ta;
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p, t->a);
+        gks_attr_text_layout(ws, t->a, &ta, &p.colour);
+        p.attrs.linetype = 1;
+        p.attrs.linewidth = 1.0;
+        p.attrs.text = 1;
+        p.attrs.hlhsr_id = t->a->hlhsr_id;
+        p.attrs.pick_id = t->a->pick_id;
+        b.n = b.np = 0;
+        stroke_ctx sc = { nc, &b };
+        err = gks_text_strokes(&f, &ta, str, stroke_emit, &sc);
+        if (!err)
+            err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    return err;
+}
+
 static void text_any(int fctid, const double pos[3], const double d0[3], const double d1[3],
                      const char *str)
 {
@@ -368,32 +513,20 @@ static void text_any(int fctid, const double pos[3], const double d0[3], const d
         return;
     if (!str || gks_text_check(str))
         GKS_FAIL(101, fctid);
-    gks_text_frame f;
     norm_ctx nc;
-    if (!isfinite(pos[0]) || !isfinite(pos[1]) || !isfinite(pos[2]) ||
-        gks_text_frame3(pos, d0, d1, &f) || norm_setup(&nc))
-        return; /* nothing to draw */
-    const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
-    pieces b = { 0 };
-    int err = 0;
-    gks_ws *ws;
-    for (int k = 0; !err && *str && (ws = active_ws(&k));) {
-        gks_text_attrs ta;
-        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
-        prim_common(&p);
-        gks_attr_text_layout(ws, a, &ta, &p.colour);
-        p.attrs.linetype = 1;
-        p.attrs.linewidth = 1.0;
-        p.attrs.text = 1;
-        p.attrs.hlhsr_id = a->hlhsr_id;
-        p.attrs.pick_id = a->pick_id;
-        b.n = b.np = 0;
-        stroke_ctx sc = { &nc, &b };
-        err = gks_text_strokes(&f, &ta, str, stroke_emit, &sc);
-        if (!err)
-            err = send_pieces(ws, &p, &b);
-    }
-    pieces_free(&b);
+    if (norm_setup(&nc))
+        return;
+    const double wc[3][3] = { { pos[0], pos[1], pos[2] }, { d0[0], d0[1], d0[2] },
+                              { d1[0], d1[1], d1[2] } };
+    pt_src s = { NULL, NULL, wc };
+    size_t len = strlen(str);
+    gks_seg_prim sp = { .kind = GKS_SEG_TEXT, .n_loops = 1, .str = str,
+                        .str_len = len > INT32_MAX ? INT32_MAX : (int)len };
+    int err = record(&nc, &sp, &s, 3);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_text(&nc, pos, d0, d1, str, &t);
     if (err)
         gks_error_report(err, fctid);
 }
@@ -416,18 +549,19 @@ GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
 }
 
 /* ------------------------------------------------------------------ FILL AREA (SET) */
-/* Send an area (nl loops, counts[k] points each, m points in all, NDC3) to every active
- * workstation. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. */
-static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, int is_set)
+/* Send an area (nl loops, counts[k] points each, m points in all, NDC3) to the target's
+ * workstations. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. */
+static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, int is_set,
+                         target *t)
 {
     int err = 0;
     gks_ws *ws;
-    for (int k = 0; !err && (ws = active_ws(&k));) {
+    while (!err && (ws = next_ws(t))) {
         gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = nl, .loop_counts = counts,
                        .n_points = m, .pts = pts };
         Grgb *pat = NULL;
-        prim_common(&p);
-        err = gks_attr_prim_fill(ws, &gks_ctx()->sl->attrs, &p, &pat);
+        prim_common(&p, t->a);
+        err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &p, &pat);
         if (!is_set)
             p.attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
         if (!err)
@@ -440,7 +574,7 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
 /* The clipped path of an area: homogeneous copy, Sutherland-Hodgman per loop, loops with
  * fewer than 3 points dropped. Returns 0 or an error number. */
 static int clip_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
-                     const Gpoint3 *pts, int is_set)
+                     const Gpoint3 *pts, int is_set, target *t)
 {
     double (*h)[4] = gks_alloc_array(n, sizeof *h);
     size_t *out_len = gks_alloc_array(nloops, sizeof *out_len);
@@ -483,7 +617,7 @@ static int clip_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_
         src_off += out_len[k];
     }
     if (nl > 0 && m <= INT32_MAX)
-        err = dispatch_area(nl, counts, (int)m, cp, is_set);
+        err = dispatch_area(nl, counts, (int)m, cp, is_set, t);
 done:
     gks_free(h);
     gks_free(out_len);
@@ -493,9 +627,40 @@ done:
     return err;
 }
 
-/* Area after the argument checks: nloops loops (loop k: cnt[k] >= 3 points) taken from
- * s one after the other. is_set: FILL AREA SET. An area inside the clipping region (the
+/* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
+ * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
  * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
+static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                     const pt_src *s, int is_set, target *t)
+{
+    Gpoint3 *pts = gks_alloc_array(n, sizeof *pts);
+    int *counts = gks_alloc_array(nloops, sizeof *counts);
+    int err = 0, inside = 1;
+    if (!pts || !counts) {
+        err = 300;
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double wc[3], h[4];
+        src_get(s, i, wc);
+        if (!to_ndc(nc, wc, h))
+            goto done; /* a non-finite vertex: the area is not drawn */
+        inside = inside && point_visible(nc, h);
+        pts[i] = (Gpoint3){ h[0], h[1], h[2] };
+    }
+    for (size_t k = 0; k < nloops; k++)
+        counts[k] = (int)cnt[k];
+    if (inside)
+        err = dispatch_area((int)nloops, counts, (int)n, pts, is_set, t);
+    else
+        err = clip_area(nc, nloops, cnt, n, pts, is_set, t);
+done:
+    gks_free(pts);
+    gks_free(counts);
+    return err;
+}
+
+/* Area after the argument checks (see emit_area). */
 static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_src *s,
                         int is_set)
 {
@@ -507,30 +672,19 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
         n += cnt[k];
     if (n > INT32_MAX || nloops > INT32_MAX)
         GKS_FAIL(300, fctid);
-    Gpoint3 *pts = gks_alloc_array(n, sizeof *pts);
-    int *counts = gks_alloc_array(nloops, sizeof *counts);
-    int err = 0, inside = 1;
-    if (!pts || !counts) {
-        err = 300;
-        goto done;
-    }
-    for (size_t i = 0; i < n; i++) {
-        double wc[3], h[4];
-        src_get(s, i, wc);
-        if (!to_ndc(&nc, wc, h))
-            goto done; /* a non-finite vertex: the area is not drawn */
-        inside = inside && point_visible(&nc, h);
-        pts[i] = (Gpoint3){ h[0], h[1], h[2] };
-    }
+    int *icnt = gks_alloc_array(nloops, sizeof *icnt);
+    if (!icnt)
+        GKS_FAIL(300, fctid);
     for (size_t k = 0; k < nloops; k++)
-        counts[k] = (int)cnt[k];
-    if (inside)
-        err = dispatch_area((int)nloops, counts, (int)n, pts, is_set);
-    else
-        err = clip_area(&nc, nloops, cnt, n, pts, is_set);
-done:
-    gks_free(pts);
-    gks_free(counts);
+        icnt[k] = (int)cnt[k];
+    gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
+                        .n_loops = (int)nloops, .loop_counts = icnt };
+    int err = record(&nc, &sp, s, n);
+    gks_free(icnt);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_area(&nc, nloops, cnt, n, s, is_set, &t);
     if (err)
         gks_error_report(err, fctid);
 }
@@ -606,6 +760,39 @@ GKS_API void gfill_area_set3(const Gpoint_list_list3 *l)
 }
 
 /* ------------------------------------------------------------------ CELL ARRAY */
+/* A cell array with corners pqr (mapped by nc) and colour indices colr (nx*ny). */
+static int emit_cell_array(const norm_ctx *nc, const double pqr[3][3], int nx, int ny,
+                           const Gint *colr, target *t)
+{
+    double h[3][4];
+    for (int i = 0; i < 3; i++)
+        if (!to_ndc(nc, pqr[i], h[i]))
+            return 0; /* a non-finite corner: not drawn */
+    size_t n = (size_t)nx * (size_t)ny;
+    Grgb *rgb = gks_alloc_array(n, sizeof *rgb);
+    if (!rgb)
+        return 300;
+    int err = 0;
+    gks_ws *ws;
+    while (!err && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_CELL_ARRAY, .n_loops = 1,
+                       .cell_p = { h[0][0], h[0][1], h[0][2] },
+                       .cell_q = { h[1][0], h[1][1], h[1][2] },
+                       .cell_r = { h[2][0], h[2][1], h[2][2] },
+                       .cell_nx = nx, .cell_ny = ny, .cells = rgb, .clip = nc->clip_on };
+        p.loop_counts = &p.n_points;
+        memcpy(p.clip_box, nc->box, sizeof nc->box);
+        prim_common(&p, t->a);
+        p.attrs.hlhsr_id = t->a->hlhsr_id;
+        p.attrs.pick_id = t->a->pick_id;
+        for (size_t i = 0; i < n; i++)
+            rgb[i] = gks_attr_colour(ws, colr[i]);
+        err = send(ws, &p);
+    }
+    gks_free(rgb);
+    return err;
+}
+
 static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca)
 {
     if (gks_check_state(fctid))
@@ -613,35 +800,25 @@ static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca
     if (!ca || !ca->colr_array || ca->dims.size_x < 1 || ca->dims.size_y < 1)
         GKS_FAIL(91, fctid);
     norm_ctx nc;
-    double h[3][4];
     if (norm_setup(&nc))
         return;
-    for (int i = 0; i < 3; i++)
-        if (!to_ndc(&nc, pqr[i], h[i]))
-            return; /* a non-finite corner: not drawn */
-    size_t n = (size_t)ca->dims.size_x * (size_t)ca->dims.size_y;
-    Grgb *rgb = gks_alloc_array(n, sizeof *rgb);
-    if (!rgb)
-        GKS_FAIL(300, fctid);
+    pt_src s = { NULL, NULL, pqr };
+    gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = ca->dims.size_x,
+                        .cell_ny = ca->dims.size_y, .cell_colr = ca->colr_array };
     int err = 0;
-    gks_ws *ws;
-    for (int k = 0; !err && (ws = active_ws(&k));) {
-        gks_prim p = { .kind = GKS_PRIM_CELL_ARRAY, .n_loops = 1,
-                       .cell_p = { h[0][0], h[0][1], h[0][2] },
-                       .cell_q = { h[1][0], h[1][1], h[1][2] },
-                       .cell_r = { h[2][0], h[2][1], h[2][2] },
-                       .cell_nx = ca->dims.size_x, .cell_ny = ca->dims.size_y,
-                       .cells = rgb, .clip = nc.clip_on };
-        p.loop_counts = &p.n_points;
-        memcpy(p.clip_box, nc.box, sizeof nc.box);
-        prim_common(&p);
-        p.attrs.hlhsr_id = gks_ctx()->sl->attrs.hlhsr_id;
-        p.attrs.pick_id = gks_ctx()->sl->attrs.pick_id;
-        for (size_t i = 0; i < n; i++)
-            rgb[i] = gks_attr_colour(ws, ca->colr_array[i]);
-        err = send(ws, &p);
+    if (open_segment()) { /* the corners are stored as P, Q, R in NDC3 */
+        double o[3][3];
+        for (int i = 0; i < 3; i++)
+            gks_xform_mat34_point(nc.n, pqr[i], o[i]);
+        sp.cell_p = (Gpoint3){ o[0][0], o[0][1], o[0][2] };
+        sp.cell_q = (Gpoint3){ o[1][0], o[1][1], o[1][2] };
+        sp.cell_r = (Gpoint3){ o[2][0], o[2][1], o[2][2] };
+        err = record(&nc, &sp, &s, 0);
     }
-    gks_free(rgb);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_cell_array(&nc, pqr, ca->dims.size_x, ca->dims.size_y, ca->colr_array, &t);
     if (err)
         gks_error_report(err, fctid);
 }
@@ -667,6 +844,86 @@ GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
         }
     }
     cell_array_any(GFN_CA3, (const double (*)[3])pqr, ca);
+}
+
+/* ------------------------------------------------------------------ regeneration */
+/* One stored primitive onto ws through segment transformation S. */
+static int replay(gks_ws *ws, const double S[3][4], const gks_seg_prim *sp)
+{
+    norm_ctx nc;
+    double sn[3][4];
+    gks_xform_mat34_multiply(S, sp->bound->norm, sn); /* WC3 -> final NDC3 */
+    const int text = sp->kind == GKS_SEG_TEXT;
+    if (norm_from(&nc, text ? sn : S, sp->clip_box, sp->clip))
+        return 0;
+    target t = { .a = &sp->bound->attrs, .only = ws };
+    memcpy(t.pat_m, sn, sizeof sn);
+    pt_src s = { NULL, sp->pts, NULL };
+    size_t n = (size_t)sp->n_points;
+    switch (sp->kind) {
+    case GKS_SEG_POLYLINE:
+        return emit_polyline(&nc, &s, n, &t);
+    case GKS_SEG_POLYMARKER:
+        return emit_polymarker(&nc, &s, n, &t);
+    case GKS_SEG_TEXT: {
+        if (n != 3 || sp->str_len < 1)
+            return 0;
+        char *str = gks_strndup(sp->str, (size_t)sp->str_len);
+        if (!str)
+            return 300;
+        const double pos[3] = { sp->pts[0].x, sp->pts[0].y, sp->pts[0].z };
+        const double d0[3] = { sp->pts[1].x, sp->pts[1].y, sp->pts[1].z };
+        const double d1[3] = { sp->pts[2].x, sp->pts[2].y, sp->pts[2].z };
+        int err = emit_text(&nc, pos, d0, d1, str, &t);
+        gks_free(str);
+        return err;
+    }
+    case GKS_SEG_FILL_AREA:
+    case GKS_SEG_FILL_AREA_SET: {
+        size_t nl = (size_t)sp->n_loops;
+        size_t *cnt = gks_alloc_array(nl, sizeof *cnt);
+        if (!cnt)
+            return 300;
+        if (sp->loop_counts)
+            for (size_t k = 0; k < nl; k++)
+                cnt[k] = (size_t)sp->loop_counts[k];
+        else
+            cnt[0] = n;
+        int err = emit_area(&nc, nl, cnt, n, &s, sp->kind == GKS_SEG_FILL_AREA_SET, &t);
+        gks_free(cnt);
+        return err;
+    }
+    case GKS_SEG_CELL_ARRAY: {
+        const double pqr[3][3] = { { sp->cell_p.x, sp->cell_p.y, sp->cell_p.z },
+                                   { sp->cell_q.x, sp->cell_q.y, sp->cell_q.z },
+                                   { sp->cell_r.x, sp->cell_r.y, sp->cell_r.z } };
+        return emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, &t);
+    }
+    }
+    return 0;
+}
+
+int gks_output_redraw_segments(gks_ws *ws)
+{
+    const gks_seg_store *st = gks_ctx()->sl->segs;
+    if (st->n == 0)
+        return 0;
+    gks_segment **order = gks_alloc_array(st->n, sizeof *order);
+    if (!order)
+        return 300;
+    size_t n = gks_seg_draw_order(st, ws->id, order);
+    int err = 0;
+    for (size_t i = 0; i < n && !err; i++) {
+        if (!order[i]->vis)
+            continue;
+        for (size_t k = 0; k < gks_seg_count(order[i]) && !err; k++) {
+            gks_seg_prim sp;
+            gks_seg_get(order[i], k, &sp);
+            err = replay(ws, (const double (*)[4])order[i]->tran, &sp);
+        }
+    }
+    gks_free(order);
+    return err;
 }
 
 /* ------------------------------------------------------------------ GDP */

@@ -7,9 +7,9 @@
 #include <string.h>
 
 struct gks_seg_rec {
-    gks_prim_kind kind;
-    int text, n_loops, n_points, cell_nx, cell_ny, clip;
-    size_t pts_off, loops_off, cells_off, attrs_ind;
+    gks_seg_kind kind;
+    int n_loops, n_points, cell_nx, cell_ny, clip, str_len;
+    size_t pts_off, loops_off, cells_off, bound_ind, str_off;
     Gpoint3 cell_p, cell_q, cell_r;
     double clip_box[6];
 };
@@ -27,7 +27,8 @@ static void seg_free(gks_segment *s)
     gks_free(s->rec);
     gks_free(s->pts);
     gks_free(s->ints);
-    gks_free(s->attrs);
+    gks_free(s->bound);
+    gks_free(s->chars);
     gks_free(s);
 }
 
@@ -101,25 +102,28 @@ static int reserve(void **a, size_t *n, size_t *cap, size_t extra, size_t size)
 int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
 {
     size_t n_pts = p->n_points > 0 ? (size_t)p->n_points : 0;
-    size_t n_loops = p->kind == GKS_PRIM_FILL_AREA && p->n_loops > 0 ? (size_t)p->n_loops : 0;
-    size_t n_cells = 0;
-    if (p->kind == GKS_PRIM_CELL_ARRAY && p->cell_nx > 0 && p->cell_ny > 0) {
+    size_t n_loops = p->kind == GKS_SEG_FILL_AREA_SET && p->n_loops > 0 ? (size_t)p->n_loops : 0;
+    size_t n_cells = 0, n_chars = p->kind == GKS_SEG_TEXT && p->str_len > 0 ? (size_t)p->str_len : 0;
+    if (p->kind == GKS_SEG_CELL_ARRAY && p->cell_nx > 0 && p->cell_ny > 0) {
         if ((size_t)p->cell_nx > SIZE_MAX / (size_t)p->cell_ny)
             return 301;
         n_cells = (size_t)p->cell_nx * (size_t)p->cell_ny;
     }
-    int share = s->n_attrs > 0 && memcmp(&s->attrs[s->n_attrs - 1], p->attrs, sizeof *p->attrs) == 0;
+    int share = s->n_bound > 0 &&
+                memcmp(&s->bound[s->n_bound - 1], p->bound, sizeof *p->bound) == 0;
     /* Reserve everything first: on failure nothing has changed. */
     if (reserve((void **)&s->rec, &s->n_rec, &s->cap_rec, 1, sizeof *s->rec) ||
         reserve((void **)&s->pts, &s->n_pts, &s->cap_pts, n_pts, sizeof *s->pts) ||
         reserve((void **)&s->ints, &s->n_ints, &s->cap_ints, n_loops + n_cells, sizeof *s->ints) ||
-        (!share && reserve((void **)&s->attrs, &s->n_attrs, &s->cap_attrs, 1, sizeof *s->attrs)))
+        reserve((void **)&s->chars, &s->n_chars, &s->cap_chars, n_chars, 1) ||
+        (!share && reserve((void **)&s->bound, &s->n_bound, &s->cap_bound, 1, sizeof *s->bound)))
         return 301;
     gks_seg_rec *r = &s->rec[s->n_rec++];
-    *r = (gks_seg_rec){ .kind = p->kind, .text = p->text, .n_loops = (int)n_loops,
-                        .n_points = (int)n_pts, .clip = p->clip, .pts_off = s->n_pts,
-                        .loops_off = s->n_ints, .cells_off = s->n_ints + n_loops,
-                        .cell_p = p->cell_p, .cell_q = p->cell_q, .cell_r = p->cell_r };
+    *r = (gks_seg_rec){ .kind = p->kind, .n_loops = (int)n_loops, .n_points = (int)n_pts,
+                        .clip = p->clip, .pts_off = s->n_pts, .loops_off = s->n_ints,
+                        .cells_off = s->n_ints + n_loops, .str_off = s->n_chars,
+                        .str_len = (int)n_chars, .cell_p = p->cell_p, .cell_q = p->cell_q,
+                        .cell_r = p->cell_r };
     if (n_cells) {
         r->cell_nx = p->cell_nx;
         r->cell_ny = p->cell_ny;
@@ -133,9 +137,12 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
     if (n_cells)
         memcpy(s->ints + s->n_ints + n_loops, p->cell_colr, n_cells * sizeof *s->ints);
     s->n_ints += n_loops + n_cells;
+    if (n_chars)
+        memcpy(s->chars + s->n_chars, p->str, n_chars);
+    s->n_chars += n_chars;
     if (!share)
-        s->attrs[s->n_attrs++] = *p->attrs;
-    r->attrs_ind = s->n_attrs - 1;
+        s->bound[s->n_bound++] = *p->bound;
+    r->bound_ind = s->n_bound - 1;
     return 0;
 }
 
@@ -147,14 +154,15 @@ size_t gks_seg_count(const gks_segment *s)
 void gks_seg_get(const gks_segment *s, size_t i, gks_seg_prim *p)
 {
     const gks_seg_rec *r = &s->rec[i];
-    *p = (gks_seg_prim){ .kind = r->kind, .text = r->text,
-                         .n_loops = r->n_loops ? r->n_loops : 1,
+    *p = (gks_seg_prim){ .kind = r->kind, .n_loops = r->n_loops ? r->n_loops : 1,
                          .loop_counts = r->n_loops ? s->ints + r->loops_off : NULL,
                          .n_points = r->n_points, .pts = s->pts + r->pts_off,
                          .cell_p = r->cell_p, .cell_q = r->cell_q, .cell_r = r->cell_r,
                          .cell_nx = r->cell_nx, .cell_ny = r->cell_ny,
                          .cell_colr = r->cell_nx ? s->ints + r->cells_off : NULL,
-                         .attrs = &s->attrs[r->attrs_ind], .clip = r->clip };
+                         .str = r->str_len ? s->chars + r->str_off : NULL,
+                         .str_len = r->str_len, .bound = &s->bound[r->bound_ind],
+                         .clip = r->clip };
     memcpy(p->clip_box, r->clip_box, sizeof p->clip_box);
 }
 
@@ -208,5 +216,5 @@ size_t gks_seg_draw_order(const gks_seg_store *st, int ws_id, gks_segment **out)
 size_t gks_seg_bytes(const gks_segment *s)
 {
     return s->cap_rec * sizeof *s->rec + s->cap_pts * sizeof *s->pts +
-           s->cap_ints * sizeof *s->ints + s->cap_attrs * sizeof *s->attrs;
+           s->cap_ints * sizeof *s->ints + s->cap_chars + s->cap_bound * sizeof *s->bound;
 }

@@ -5,8 +5,8 @@
  * with another transformation. One store per GKS state list.
  *
  * Storage is flat: per segment one record array and pools of points, integers (loop counts,
- * cell colour indices) and attribute snapshots (a snapshot is shared by consecutive
- * primitives with equal attributes). Memory grows linearly with the content and is freed
+ * cell colour indices), characters and attribute snapshots (a snapshot is shared by
+ * consecutive primitives with equal attributes and normalization). Memory grows linearly with the content and is freed
  * when the segment is deleted. Segment lookup is linear in the number of segments.
  */
 #ifndef GKS_SEG_H
@@ -15,18 +15,34 @@
 #include "ws_driver.h"
 #include <stddef.h>
 
-/* A primitive as the core stores and replays it (colours still as indices). */
+/* What a stored primitive is: the output function that created it. */
+typedef enum {
+    GKS_SEG_POLYLINE, GKS_SEG_POLYMARKER, GKS_SEG_TEXT, GKS_SEG_FILL_AREA,
+    GKS_SEG_FILL_AREA_SET, GKS_SEG_CELL_ARRAY
+} gks_seg_kind;
+
+/* The attributes bound to a primitive and the normalization transformation it was
+ * created with (WC3 -> NDC3; TEXT geometry and pattern boxes are replayed through it). */
+typedef struct gks_seg_bound {
+    gks_cur_attrs attrs;
+    double norm[3][4];
+} gks_seg_bound;
+
+/* A primitive as the core stores and replays it (colours still as indices). Geometry in
+ * NDC3, not yet segment-transformed nor clipped; TEXT keeps its WC3 position and two
+ * direction vectors (pts[0..2]) and its string, because its strokes depend on WC sizes. */
 typedef struct gks_seg_prim {
-    gks_prim_kind kind;
-    int text;                    /* a stroke of TEXT */
+    gks_seg_kind kind;
     int n_loops;                 /* fill area set loops; 1 otherwise */
     const int *loop_counts;
     int n_points;
-    const Gpoint3 *pts;          /* NDC3, not yet segment-transformed nor clipped */
+    const Gpoint3 *pts;
     Gpoint3 cell_p, cell_q, cell_r;
     int cell_nx, cell_ny;
     const int *cell_colr;        /* colour indices, cell_nx * cell_ny */
-    const gks_cur_attrs *attrs;  /* the attributes bound to the primitive */
+    const char *str;             /* TEXT: the string (str_len bytes, not terminated) */
+    int str_len;
+    const gks_seg_bound *bound;  /* attributes and normalization */
     int clip;                    /* 1: clip_box bound (viewport 3 with clipping on) */
     double clip_box[6];
 } gks_seg_prim;
@@ -49,8 +65,10 @@ typedef struct gks_segment {
     size_t n_pts, cap_pts;
     int *ints;
     size_t n_ints, cap_ints;
-    gks_cur_attrs *attrs;
-    size_t n_attrs, cap_attrs;
+    gks_seg_bound *bound;
+    size_t n_bound, cap_bound;
+    char *chars;
+    size_t n_chars, cap_chars;
 } gks_segment;
 
 typedef struct gks_seg_store {

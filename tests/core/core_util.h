@@ -31,7 +31,8 @@ static inline void reset_gks(void)
     capture_reset();
 }
 
-/* Drive GKS from GKCL into `st` (GKCL, GKOP, WSOP, WSAC) with workstation 1 = null. */
+/* Drive GKS from GKCL into `st` (GKCL, GKOP, WSOP, WSAC, SGOP) with workstation 1 = null
+ * and, in SGOP, segment 1 open. */
 static inline void enter_state(Gop_st st)
 {
     reset_gks();
@@ -41,6 +42,8 @@ static inline void enter_state(Gop_st st)
         gopen_ws(1, NULL, GWS_TYPE_NULL);
     if (st >= GST_WSAC)
         gactivate_ws(1);
+    if (st >= GST_SGOP)
+        gcreate_seg(1);
     n_captured = 0;
 }
 
@@ -50,6 +53,8 @@ typedef struct {
     Gint n_open, n_active, open[4], active[4];
     Gint tnr, line_ci, fill_ci;
     Gtran tran1;
+    Gint open_seg, n_segs, segs[4];
+    Gseg_attrs3 seg1;
 } snapshot;
 
 static inline void take_snapshot(snapshot *s)
@@ -65,6 +70,10 @@ static inline void take_snapshot(snapshot *s)
     ginq_line_colr_ind(&err, &s->line_ci);
     ginq_fill_colr_ind(&err, &s->fill_ci);
     ginq_norm_tran(1, &err, &s->tran1);
+    ginq_name_open_seg(&err, &s->open_seg);
+    l.ints = s->segs;
+    ginq_set_seg_names(4, 0, &err, &l, &s->n_segs);
+    ginq_seg_attrs3(1, &err, &s->seg1);
     (void)len;
 }
 #endif

@@ -4,7 +4,6 @@
  * the standard's state error (1..8) is reported with the function's identification and
  * the state lists are unchanged. A GKS_FN row without a call here fails the build
  * (the call table is indexed by the generated GFN_ enum and checked for holes).
- * SGOP is not reachable until segments exist; its column is covered by the mask logic.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -188,6 +187,26 @@ static void c_SPRPV(void)
 static void c_SHRID(void) { gset_hlhsr_id(1); }
 static void c_ASF3(void) { Gasfs3 a = { { 0 }, 0, 0, 0, 0 }; gset_asfs3(&a); }
 
+static void c_CRSG(void) { gcreate_seg(5); }
+static void c_CLSG(void) { gclose_seg(); }
+static void c_RENSG(void) { grename_seg(1, 2); }
+static void c_DSG(void) { gdel_seg(1); }
+static void c_DSGWK(void) { gdel_seg_ws(1, 1); }
+static void c_SSGT(void)
+{
+    const Gtran_matrix m = { { 1, 0, 0.1 }, { 0, 1, 0 } };
+    gset_seg_tran(1, m);
+}
+static void c_SSGT3(void)
+{
+    const Gtran_matrix3 m = { { 1, 0, 0, 0.1 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
+    gset_seg_tran3(1, m);
+}
+static void c_SVIS(void) { gset_vis(1, GSEG_INVIS); }
+static void c_SHLIT(void) { gset_highl(1, GSEG_HIGHL); }
+static void c_SSGP(void) { gset_seg_pri(1, 0.5); }
+static void c_SDTEC(void) { gset_det(1, GSEG_DET); }
+
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))
 #define GKS_S_GKCL S(GST_GKCL)
@@ -227,7 +246,7 @@ static void test_every_function_every_state(void **unused)
         if (!rows[id].call)
             continue; /* reserved identification: no function yet */
         assert_string_equal(gks_function_name((Gint)id), rows[id].name);
-        for (Gop_st st = GST_GKCL; st <= GST_WSAC; st++) {
+        for (Gop_st st = GST_GKCL; st <= GST_SGOP; st++) {
             enter_state(st);
             snapshot before, after;
             take_snapshot(&before);

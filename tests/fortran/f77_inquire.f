@@ -16,7 +16,7 @@
       CALL CHKI('GQOPS open', I1, GGKOP, NFAIL)
       CALL GQLVKS(IERR, I1)
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
-      CALL CHKI('GQLVKS level', I1, GL0A, NFAIL)
+      CALL CHKI('GQLVKS level', I1, GL1A, NFAIL)
 !     available workstation types: 99, 100, 101
       ITYP = -7
       CALL GQEWK(0, IERR, NUM, ITYP)

@@ -13,10 +13,10 @@
 #include "gks_seg.h"
 
 static gks_seg_prim make_area(const Gpoint3 *pts, int n, const int *loops, int nl,
-                              const gks_cur_attrs *a)
+                              const gks_seg_bound *a)
 {
-    return (gks_seg_prim){ .kind = GKS_PRIM_FILL_AREA, .n_loops = nl, .loop_counts = loops,
-                           .n_points = n, .pts = pts, .attrs = a, .clip = 1,
+    return (gks_seg_prim){ .kind = GKS_SEG_FILL_AREA_SET, .n_loops = nl, .loop_counts = loops,
+                           .n_points = n, .pts = pts, .bound = a, .clip = 1,
                            .clip_box = { 0.1, 0.9, 0.2, 0.8, 0, 1 } };
 }
 
@@ -32,53 +32,56 @@ static void test_round_trip(void **u)
     assert_true(s->vis == 1 && s->highl == 0 && s->det == 0 && s->pri == 0.0);
     assert_true(s->tran[0][0] == 1 && s->tran[1][1] == 1 && s->tran[2][2] == 1 && s->tran[0][3] == 0);
 
-    gks_cur_attrs a1, a2;
+    gks_seg_bound a1, a2;
     memset(&a1, 0, sizeof a1);
-    a1.fill_colr_ind = 3;
+    a1.attrs.fill_colr_ind = 3;
+    a1.norm[0][0] = a1.norm[1][1] = a1.norm[2][2] = 1;
     a2 = a1;
-    a2.fill_colr_ind = 4;
+    a2.attrs.fill_colr_ind = 4;
     Gpoint3 sq[8] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
                       { .25, .25, .5 }, { .75, .25, .5 }, { .75, .75, .5 }, { .25, .75, .5 } };
     int loops[2] = { 4, 4 };
     gks_seg_prim p1 = make_area(sq, 8, loops, 2, &a1);
     gks_seg_prim p2 = make_area(sq, 4, loops, 1, &a1); /* same attributes: shared snapshot */
     int colr[6] = { 1, 2, 3, 4, 5, 6 };
-    gks_seg_prim p3 = { .kind = GKS_PRIM_CELL_ARRAY, .n_points = 0, .cell_p = { 0, 0, 0 },
+    gks_seg_prim p3 = { .kind = GKS_SEG_CELL_ARRAY, .n_points = 0, .cell_p = { 0, 0, 0 },
                         .cell_q = { 1, 1, 0 }, .cell_r = { 1, 0, 0 }, .cell_nx = 3,
-                        .cell_ny = 2, .cell_colr = colr, .attrs = &a2 };
-    gks_seg_prim p4 = { .kind = GKS_PRIM_POLYLINE, .text = 1, .n_loops = 1, .n_points = 3,
-                        .pts = sq, .attrs = &a2 };
+                        .cell_ny = 2, .cell_colr = colr, .bound = &a2 };
+    gks_seg_prim p4 = { .kind = GKS_SEG_TEXT, .n_loops = 1, .n_points = 3, .pts = sq,
+                        .str = "abc", .str_len = 3, .bound = &a2 };
     assert_int_equal(gks_seg_append(s, &p1), 0);
     assert_int_equal(gks_seg_append(s, &p2), 0);
     assert_int_equal(gks_seg_append(s, &p3), 0);
     assert_int_equal(gks_seg_append(s, &p4), 0);
-    assert_int_equal(s->n_attrs, 2);
+    assert_int_equal(s->n_bound, 2);
     assert_int_equal(gks_seg_count(s), 4);
 
     gks_seg_prim q;
     gks_seg_get(s, 0, &q);
-    assert_int_equal(q.kind, GKS_PRIM_FILL_AREA);
+    assert_int_equal(q.kind, GKS_SEG_FILL_AREA_SET);
     assert_int_equal(q.n_loops, 2);
     assert_int_equal(q.loop_counts[0], 4);
     assert_int_equal(q.loop_counts[1], 4);
     assert_int_equal(q.n_points, 8);
     assert_memory_equal(q.pts, sq, sizeof sq);
-    assert_int_equal(q.attrs->fill_colr_ind, 3);
+    assert_int_equal(q.bound->attrs.fill_colr_ind, 3);
+    assert_true(q.bound->norm[1][1] == 1);
     assert_int_equal(q.clip, 1);
     assert_true(q.clip_box[1] == 0.9 && q.clip_box[3] == 0.8);
     gks_seg_get(s, 1, &q);
     assert_int_equal(q.n_loops, 1);
     assert_int_equal(q.n_points, 4);
     gks_seg_get(s, 2, &q);
-    assert_int_equal(q.kind, GKS_PRIM_CELL_ARRAY);
+    assert_int_equal(q.kind, GKS_SEG_CELL_ARRAY);
     assert_int_equal(q.cell_nx, 3);
     assert_int_equal(q.cell_ny, 2);
     assert_memory_equal(q.cell_colr, colr, sizeof colr);
     assert_true(q.cell_r.x == 1 && q.cell_q.y == 1);
-    assert_int_equal(q.attrs->fill_colr_ind, 4);
+    assert_int_equal(q.bound->attrs.fill_colr_ind, 4);
     gks_seg_get(s, 3, &q);
-    assert_int_equal(q.kind, GKS_PRIM_POLYLINE);
-    assert_int_equal(q.text, 1);
+    assert_int_equal(q.kind, GKS_SEG_TEXT);
+    assert_int_equal(q.str_len, 3);
+    assert_memory_equal(q.str, "abc", 3);
     assert_int_equal(q.n_points, 3);
     assert_null(q.loop_counts);
 
@@ -128,7 +131,7 @@ static void test_linear_memory(void **u)
     gks_seg_store st;
     gks_seg_store_init(&st);
     gks_segment *s = gks_seg_create(&st, 1);
-    gks_cur_attrs a;
+    gks_seg_bound a;
     memset(&a, 0, sizeof a);
     Gpoint3 tri[3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
     int one = 3;
@@ -145,7 +148,7 @@ static void test_linear_memory(void **u)
     /* record + 3 points + 1 loop count, at most doubled by the growth slack */
     size_t exact = sizeof(Gpoint3) * 3 + sizeof(int) + 2 * sizeof(size_t) * 4 + 100;
     assert_true(per_prim_max <= 2 * exact + 64);
-    assert_int_equal(s->n_attrs, 1);
+    assert_int_equal(s->n_bound, 1);
     gks_seg_store_free(&st);
 }
 
@@ -156,7 +159,7 @@ static void test_overflow(void **u)
     gks_seg_store st;
     gks_seg_store_init(&st);
     gks_segment *s = gks_seg_create(&st, 1);
-    gks_cur_attrs a;
+    gks_seg_bound a;
     memset(&a, 0, sizeof a);
     Gpoint3 tri[3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
     int one = 3;
@@ -164,16 +167,16 @@ static void test_overflow(void **u)
     assert_int_equal(gks_seg_append(s, &p), 0);
     int n_failed = 0;
     for (long k = 1; k <= 4; k++) {
-        gks_cur_attrs b = a;
-        b.fill_colr_ind = (int)k; /* a new snapshot is needed each time */
-        p.attrs = &b;
+        gks_seg_bound b = a;
+        b.attrs.fill_colr_ind = (int)k; /* a new snapshot is needed each time */
+        p.bound = &b;
         /* force growth of every pool: make the k-th allocation fail */
         for (int fill = 0; fill < 2000; fill++) {
             if (s->n_rec == s->cap_rec || s->n_pts + 3 > s->cap_pts)
                 break;
             assert_int_equal(gks_seg_append(s, &p), 0);
         }
-        size_t n_rec = s->n_rec, n_pts = s->n_pts, n_attrs = s->n_attrs;
+        size_t n_rec = s->n_rec, n_pts = s->n_pts, n_attrs = s->n_bound;
         gks_alloc_fail_after(k);
         int e = gks_seg_append(s, &p);
         gks_alloc_fail_after(0);
@@ -182,7 +185,7 @@ static void test_overflow(void **u)
             assert_int_equal(e, 301);
             assert_int_equal(s->n_rec, n_rec);
             assert_int_equal(s->n_pts, n_pts);
-            assert_int_equal(s->n_attrs, n_attrs);
+            assert_int_equal(s->n_bound, n_attrs);
         }
     }
     assert_true(n_failed >= 1);
