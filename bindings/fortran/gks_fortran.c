@@ -14,6 +14,7 @@
  */
 #include "gks.h"
 #include "gks_binding.h"
+#include "gks_fortran.h"
 #include "FC.h"
 #include <errno.h>
 #include <stdint.h>
@@ -21,11 +22,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define FAPI __attribute__((visibility("default")))
-#define FNAME(lower, UPPER) FC_GLOBAL(lower, UPPER)
-
-typedef int fint;
-typedef float freal;
 
 /* The Fortran ERROR HANDLING subroutine (gerhnd.f or the application's own). */
 extern void FNAME(gerhnd, GERHND)(const fint *errnr, const fint *fctid, const fint *errfil);
@@ -335,10 +331,9 @@ FAPI void FNAME(gswkvp, GSWKVP)(const fint *wkid, const freal *x0, const freal *
 }
 
 /* ------------------------------------------------------------------ inquiries */
-typedef void (*list_inq)(Gint, Gint, Gint *, Gint_list *, Gint *);
 
 /* Fortran list inquiry: N = element wanted (1-based), N = 0 only the count. */
-static void list_elem(list_inq f, fint n, fint *errind, fint *ol, fint *elem)
+void gks_f77_list_elem(gks_f77_list_inq f, fint n, fint *errind, fint *ol, fint *elem)
 {
     Gint v = 0, len = 0;
     Gint_list l = { 0, &v };
@@ -366,17 +361,17 @@ FAPI void FNAME(gqlvks, GQLVKS)(fint *errind, fint *level)
 
 FAPI void FNAME(gqewk, GQEWK)(const fint *n, fint *errind, fint *number, fint *wktyp)
 {
-    list_elem(ginq_list_avail_ws_types, *n, errind, number, wktyp);
+    gks_f77_list_elem(ginq_list_avail_ws_types, *n, errind, number, wktyp);
 }
 
 FAPI void FNAME(gqopwk, GQOPWK)(const fint *n, fint *errind, fint *ol, fint *wkid)
 {
-    list_elem(ginq_set_open_wss, *n, errind, ol, wkid);
+    gks_f77_list_elem(ginq_set_open_wss, *n, errind, ol, wkid);
 }
 
 FAPI void FNAME(gqacwk, GQACWK)(const fint *n, fint *errind, fint *ol, fint *wkid)
 {
-    list_elem(ginq_set_active_wss, *n, errind, ol, wkid);
+    gks_f77_list_elem(ginq_set_active_wss, *n, errind, ol, wkid);
 }
 
 FAPI void FNAME(gqwkm, GQWKM)(fint *errind, fint *mxopwk, fint *mxacwk, fint *mxwkas)
