@@ -106,6 +106,7 @@ typedef void (*Gerr_handler)(Gint err_num, Gint func_num, const char *err_file);
  * Workstation types of this implementation (INQUIRE LIST OF AVAILABLE WORKSTATION TYPES)
  * --------------------------------------------------------------------------------- */
 enum {
+    GWS_TYPE_WISS = 3,        /* category WISS: workstation independent segment storage */
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
     GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
     GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
@@ -675,6 +676,18 @@ GKS_API void gset_highl(Gint seg_name, Gseg_highl highl);
 GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri);
 /* SET DETECTABILITY. Errors: 7, 120, 122, 2000. */
 GKS_API void gset_det(Gint seg_name, Gseg_det det);
+/* ASSOCIATE SEGMENT WITH WORKSTATION (the segment must be on the WISS). Errors: 6, 20, 25,
+ * 27, 33, 35, 120, 124, 301. */
+GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name);
+/* COPY SEGMENT TO WORKSTATION: the segment's primitives, through its transformation and
+ * clipping volumes, drawn on ws (not stored there). Errors: 6, 20, 25, 27, 33, 35, 36, 120,
+ * 124. */
+GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name);
+/* INSERT SEGMENT (3): the segment's primitives, mapped by its segment transformation and
+ * then tran_matrix, become new output primitives with their bound attributes and the
+ * current clipping volume. Errors: 5, 27, 120, 124, 125. */
+GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix);
+GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix);
 /* Segment inquiries (list convention of the other list inquiries). */
 GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                 Gint_list *seg_names, Gint *length_list);

@@ -149,3 +149,22 @@ FAPI void FNAME(gqsgp, GQSGP)(const fint *wtype, fint *errind, fint *nsg)
     if (!e)
         *nsg = k;
 }
+
+FAPI void FNAME(gasgwk, GASGWK)(const fint *wkid, const fint *sgna) { gassoc_seg_ws(*wkid, *sgna); }
+FAPI void FNAME(gcsgwk, GCSGWK)(const fint *wkid, const fint *sgna) { gcopy_seg_ws(*wkid, *sgna); }
+
+/* GINSG(SGNA, M(2,3)) */
+FAPI void FNAME(ginsg, GINSG)(const fint *sgna, const freal *m)
+{
+    Gtran_matrix t;
+    from_f23(m, t);
+    ginsert_seg(*sgna, (const Gfloat (*)[3])t);
+}
+
+/* GINSG3(SGNA, M(3,4)) */
+FAPI void FNAME(ginsg3, GINSG3)(const fint *sgna, const freal *m)
+{
+    Gtran_matrix3 t;
+    from_f34(m, t);
+    ginsert_seg3(*sgna, (const Gfloat (*)[4])t);
+}

@@ -9,10 +9,11 @@ static const gks_ws_driver *const driver_list[] = {
     &gks_ws_null_driver,
     &gks_ws_png_driver,
     &gks_ws_png_large_driver,
+    &gks_ws_wiss_driver,
 };
 
 static const gks_desc_table desc_table = {
-    .level = GLEVEL_1A, /* full output, segments; no WISS (2), no input (b, c) */
+    .level = GLEVEL_2A, /* full output, segments, WISS; no input (b, c) */
     .n_ws_types = (int)(sizeof driver_list / sizeof driver_list[0]),
     .ws_types = driver_list,
     .max_nums = { GKS_MAX_OPEN_WS, GKS_MAX_ACTIVE_WS, GKS_MAX_OPEN_WS },
@@ -43,6 +44,15 @@ const gks_ws_driver *gks_driver_for_type(int ws_type)
     for (int i = 0; i < desc_table.n_ws_types; i++)
         if (driver_list[i]->desc->type == ws_type)
             return driver_list[i];
+    return NULL;
+}
+
+gks_ws *gks_wiss(void)
+{
+    gks_state_list *sl = context.sl;
+    for (int i = 0; sl && i < sl->n_open; i++)
+        if (context.ws[i]->drv->desc->cat == GCAT_WISS)
+            return context.ws[i];
     return NULL;
 }
 

@@ -93,6 +93,8 @@ typedef struct gks_state_list {
     char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
     struct gks_seg_store *segs; /* segment storage (gks_seg.h) */
     int open_seg;               /* name of the open segment, 0 = none */
+    int mf_n_mo_active;         /* active MO workstations (gks_mf.c: the MO fast path) */
+    int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
 } gks_state_list;
 
 /* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives
@@ -116,6 +118,7 @@ typedef struct gks_context {
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
+    const struct gks_norm_override *norm_override; /* INTERPRET ITEM (gks_output.c) */
 } gks_context;
 
 /* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
@@ -140,6 +143,9 @@ gks_ws *gks_ws_lookup(int ws_id);
 
 /* Driver of workstation type ws_type, or NULL if the type does not exist. */
 const gks_ws_driver *gks_driver_for_type(int ws_type);
+
+/* The open WISS workstation, or NULL. */
+gks_ws *gks_wiss(void);
 
 /* Whether ws_id is in the set of active workstations. */
 int gks_ws_is_active(int ws_id);

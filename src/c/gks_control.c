@@ -119,6 +119,8 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
         GKS_FAIL(23, GFN_OPWK);
     if (c->sl->n_open >= c->desc->max_nums.simult_open)
         GKS_FAIL(42, GFN_OPWK);
+    if (drv->desc->cat == GCAT_WISS && gks_wiss())
+        GKS_FAIL(28, GFN_OPWK);
     gks_ws *ws = gks_ws_create(ws_id, conn_id, drv);
     if (!ws)
         GKS_FAIL(300, GFN_OPWK);

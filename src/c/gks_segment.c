@@ -227,6 +227,107 @@ GKS_API void gset_det(Gint seg_name, Gseg_det det)
     s->det = det == GSEG_DET;
 }
 
+/* The segment `name` of a WISS function: 120, 124 (not on the WISS, or no such segment). */
+static gks_segment *on_wiss(int fctid, const gks_ws *wiss, Gint name)
+{
+    if (name < 1) {
+        gks_error_report(120, fctid);
+        return NULL;
+    }
+    gks_segment *s = gks_seg_find(store(), name);
+    if (!s || !gks_seg_on_ws(s, wiss->id)) {
+        gks_error_report(124, fctid);
+        return NULL;
+    }
+    return s;
+}
+
+/* The WISS, or NULL after reporting 27. */
+static gks_ws *wiss_open(int fctid)
+{
+    gks_ws *w = gks_wiss();
+    if (!w)
+        gks_error_report(27, fctid);
+    return w;
+}
+
+GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
+{
+    if (gks_check_state(GFN_ASGWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_ASGWK);
+    if (!gks_ws_lookup(ws_id))
+        GKS_FAIL(25, GFN_ASGWK);
+    gks_ws *wiss = wiss_open(GFN_ASGWK);
+    if (!wiss)
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_ASGWK, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT);
+    if (!ws)
+        return;
+    gks_segment *s = on_wiss(GFN_ASGWK, wiss, seg_name);
+    if (!s || gks_seg_on_ws(s, ws_id))
+        return; /* already stored there: nothing to do */
+    if (gks_seg_ws_add(s, ws_id))
+        GKS_FAIL(301, GFN_ASGWK);
+    int err = s->vis ? gks_output_draw_segment(ws, s) : 0;
+    if (err)
+        gks_error_report(err, GFN_ASGWK);
+}
+
+GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
+{
+    if (gks_check_state(GFN_CSGWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_CSGWK);
+    if (!gks_ws_lookup(ws_id))
+        GKS_FAIL(25, GFN_CSGWK);
+    gks_ws *wiss = wiss_open(GFN_CSGWK);
+    if (!wiss)
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_CSGWK, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    gks_segment *s = on_wiss(GFN_CSGWK, wiss, seg_name);
+    if (!s)
+        return;
+    int err = gks_output_draw_segment(ws, s);
+    if (err)
+        gks_error_report(err, GFN_CSGWK);
+}
+
+static void insert_any(int fctid, Gint seg_name, const double m[3][4])
+{
+    if (gks_check_state(fctid))
+        return;
+    gks_ws *wiss = wiss_open(fctid);
+    if (!wiss)
+        return;
+    gks_segment *s = on_wiss(fctid, wiss, seg_name);
+    if (!s)
+        return;
+    if (gks_ctx()->sl->open_seg == seg_name)
+        GKS_FAIL(125, fctid);
+    int err = gks_output_insert_segment(s, m);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix)
+{
+    const double m[3][4] = { { tran_matrix[0][0], tran_matrix[0][1], 0, tran_matrix[0][2] },
+                             { tran_matrix[1][0], tran_matrix[1][1], 0, tran_matrix[1][2] },
+                             { 0, 0, 1, 0 } };
+    insert_any(GFN_INSG, seg_name, m);
+}
+
+GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix)
+{
+    insert_any(GFN_INSG3, seg_name, (const double (*)[4])tran_matrix);
+}
+
 void gks_segment_ws_closed(int ws_id)
 {
     gks_seg_store *st = store();

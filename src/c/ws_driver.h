@@ -140,4 +140,5 @@ struct gks_ws_driver {
 extern const gks_ws_driver gks_ws_null_driver;
 extern const gks_ws_driver gks_ws_png_driver;
 extern const gks_ws_driver gks_ws_png_large_driver;
+extern const gks_ws_driver gks_ws_wiss_driver;
 #endif

@@ -315,6 +315,87 @@ static void test_text_and_cells_replayed(void **u)
     free(want.rgb);
 }
 
+
+/* WISS: a segment stored only on the WISS reaches a PNG workstation by ASSOCIATE (stored
+ * there, redrawn on regeneration), COPY (drawn once) and INSERT (new primitives, here into
+ * an open segment, mapped by the segment and insert transformations). */
+static void test_wiss(void **u)
+{
+    (void)u;
+    open_png40("t_wiss.png");
+    gdeactivate_ws(1);
+    n_captured = 0;
+    /* 27: no WISS yet */
+    const Gtran_matrix id = { { 1, 0, 0 }, { 0, 1, 0 } };
+    gassoc_seg_ws(1, 1);
+    assert_int_equal(captured[0].err, 27);
+    gopen_ws(2, NULL, GWS_TYPE_WISS);
+    gopen_ws(3, NULL, GWS_TYPE_WISS); /* one WISS only */
+    assert_int_equal(captured[1].err, 28);
+    gactivate_ws(2);
+    gcreate_seg(1);
+    square(0.1, 0.1, 0.2, 2); /* red, pixels 4..11 */
+    gclose_seg();
+    gdeactivate_ws(2);
+    n_captured = 0;
+    gassoc_seg_ws(1, 5); /* no such segment on the WISS */
+    gcopy_seg_ws(2, 1);  /* copy onto the WISS itself */
+    assert_int_equal(n_captured, 2);
+    assert_int_equal(captured[0].err, 124);
+    assert_int_equal(captured[1].err, 36);
+    n_captured = 0;
+    gassoc_seg_ws(1, 1);
+    Gint err, names[2], len;
+    Gint_list l = { 0, names };
+    ginq_set_seg_names_ws(1, 2, 0, &err, &l, &len);
+    assert_int_equal(len, 1);
+    assert_int_equal(names[0], 1);
+    gactivate_ws(1);
+    gcreate_seg(2);
+    const Gtran_matrix shift = { { 1, 0, 0.5 }, { 0, 1, 0 } };
+    ginsert_seg(1, shift); /* a second square at pixels 24..31 */
+    gclose_seg();
+    ginsert_seg(2, id);
+    assert_int_equal(captured[0].err, 124); /* segment 2 is not on the WISS */
+    n_captured = 0;
+    /* segment 2 holds the inserted primitive: moving it moves the copy only */
+    const Gtran_matrix up = { { 1, 0, 0 }, { 0, 1, 0.5 } };
+    gset_seg_tran(2, up);
+    gupd_ws(1, GFLAG_PERFORM);
+    image img;
+    gdeactivate_ws(1);
+    gclose_ws(2);
+    gclose_ws(1);
+    gclose_gks();
+    if (n_captured)
+        fail_msg("%d errors, first %d", n_captured, captured[0].err);
+    assert_true(read_png("t_wiss.png", &img));
+    assert_px(&img, 8, 8, 255, 0, 0);   /* segment 1, associated: redrawn */
+    assert_px(&img, 28, 28, 255, 0, 0); /* inserted copy, moved up with segment 2 */
+    assert_bg(&img, 28, 8);
+    free(img.rgb);
+
+    /* COPY draws the segment once; it is not stored on the workstation */
+    open_png40("t_wiss_copy.png");
+    gopen_ws(2, NULL, GWS_TYPE_WISS);
+    gactivate_ws(2);
+    gdeactivate_ws(1);
+    gcreate_seg(1);
+    square(0.5, 0.5, 0.2, 4);
+    gclose_seg();
+    gcopy_seg_ws(1, 1);
+    ginq_set_seg_names_ws(1, 2, 0, &err, &l, &len);
+    assert_int_equal(len, 0);
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gclose_ws(1);
+    gclose_gks();
+    assert_int_equal(n_captured, 0);
+    assert_true(read_png("t_wiss_copy.png", &img));
+    assert_px(&img, 24, 24, 0, 0, 255);
+    free(img.rgb);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -323,6 +404,7 @@ int main(void)
         cmocka_unit_test(test_priority),
         cmocka_unit_test(test_visibility_immediate),
         cmocka_unit_test(test_text_and_cells_replayed),
+        cmocka_unit_test(test_wiss),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

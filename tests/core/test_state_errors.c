@@ -206,6 +206,18 @@ static void c_SVIS(void) { gset_vis(1, GSEG_INVIS); }
 static void c_SHLIT(void) { gset_highl(1, GSEG_HIGHL); }
 static void c_SSGP(void) { gset_seg_pri(1, 0.5); }
 static void c_SDTEC(void) { gset_det(1, GSEG_DET); }
+static void c_ASGWK(void) { gassoc_seg_ws(1, 1); }
+static void c_CSGWK(void) { gcopy_seg_ws(1, 1); }
+static void c_INSG(void)
+{
+    const Gtran_matrix m = { { 1, 0, 0 }, { 0, 1, 0 } };
+    ginsert_seg(1, m);
+}
+static void c_INSG3(void)
+{
+    const Gtran_matrix3 m = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
+    ginsert_seg3(1, m);
+}
 
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))

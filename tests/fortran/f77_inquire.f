@@ -16,12 +16,12 @@
       CALL CHKI('GQOPS open', I1, GGKOP, NFAIL)
       CALL GQLVKS(IERR, I1)
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
-      CALL CHKI('GQLVKS level', I1, GL1A, NFAIL)
-!     available workstation types: 99, 100, 101
+      CALL CHKI('GQLVKS level', I1, GL2A, NFAIL)
+!     available workstation types: 99, 100, 101, 3 (WISS)
       ITYP = -7
       CALL GQEWK(0, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(0) errind', IERR, 0, NFAIL)
-      CALL CHKI('GQEWK(0) number', NUM, 3, NFAIL)
+      CALL CHKI('GQEWK(0) number', NUM, 4, NFAIL)
       CALL CHKI('GQEWK(0) untouched', ITYP, -7, NFAIL)
       CALL GQEWK(1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(1)', ITYP, GWSNUL, NFAIL)
@@ -29,8 +29,10 @@
       CALL CHKI('GQEWK(3) errind', IERR, 0, NFAIL)
       CALL CHKI('GQEWK(3)', ITYP, GWSPLG, NFAIL)
       CALL GQEWK(4, IERR, NUM, ITYP)
-      CALL CHKI('GQEWK(4) errind', IERR, 2002, NFAIL)
-      CALL CHKI('GQEWK(4) number', NUM, 3, NFAIL)
+      CALL CHKI('GQEWK(4) WISS', ITYP, 3, NFAIL)
+      CALL GQEWK(5, IERR, NUM, ITYP)
+      CALL CHKI('GQEWK(5) errind', IERR, 2002, NFAIL)
+      CALL CHKI('GQEWK(5) number', NUM, 4, NFAIL)
       CALL GQEWK(-1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(-1) errind', IERR, 2002, NFAIL)
 !     open workstations 7 (CONID 5) and 3, activate 3
