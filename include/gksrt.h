@@ -67,7 +67,10 @@ typedef struct rt_surface {
     double transparency;   /* kt in [0,1]: weight of the transmitted ray; 0 = opaque */
     double refr_index;     /* > 0. A ray hitting the FRONT side enters a medium of this index
                               (from 1); hitting the BACK side it leaves a medium of the BACK
-                              surface's index into 1. Exactly 1: no bending, no Fresnel loss. */
+                              surface's index into 1. Exactly 1: no bending, no Fresnel loss,
+                              the ray continues on its own line (picture behind unchanged).
+                              Nested media: give an interface the relative index
+                              n_inside / n_outside (tested: water 1.33 around glass 1.5). */
     uint64_t light_mask;   /* bit i set: light i (order of rt_scene_add_light) illuminates */
 } rt_surface;
 
@@ -142,19 +145,27 @@ typedef struct rt_build_options {
                              depend on the frame (grid == brute force bit for bit). */
 } rt_build_options;
 
-/* Grid resolution rule: top level cells ~= factor * primitives, as cubic as the scene box
- * allows (axes thinner than 1/1000 of the largest get 1 cell), at most 512 per axis and 2^25
- * cells; a top cell with more than 8 references gets a second-level grid of ~4 cells per
- * reference (at most 32 per axis). Below 4 primitives: no grid (brute force; measured with
- * random triangles: equal speed at 2, grid 1.3x faster at 4, 1.6x at 8, 7x at 64).
- * Measured (bench/rt/rt_bench, -O2, 1 core, CPU seconds / Mrays/s, noise about +-15 %):
- *   top factor / second level   gears  teapot  mount  tetra | bunny arma fandisk (primary)
- *   8, none                     1.12   0.23    0.38   0.10  | 5.1   5.9  9.5
- *   1, >8 refs, 4/ref           1.03   0.21    0.47   0.11  | 5.3   5.7  10.8
- *   0.5, >8 refs, 8/ref         1.10   0.22    0.51   0.13  | 6.7   5.9  11.8
- * (SPD scenes: 513x513 corner rays, depth 5; meshes: 512x512 primary rays.) Factors between
- * 1 and 32 change gears by < 20 %: time is dominated by cell steps and shadow rays. */
-#define RT_GRID_FACTOR_DEFAULT 1.0
+/* Grid resolution rule: top level cells ~= factor * primitives (default 0.25), as cubic as the
+ * grid box allows (axes thinner than 1/1000 of the largest get 1 cell), at most 512 per axis
+ * and 2^25 cells. A top cell with more than 8 references keeps its large primitives (spanning
+ * half the cell in two axes) in its own list and puts the rest into a second-level grid of ~8
+ * cells per reference (at most 32 per axis) over the box of those parts. Below 4 primitives:
+ * no grid (random triangles: equal speed at 2, grid 1.3x faster at 4, 1.6x at 8, 7x at 64).
+ * Measured sweep (callgrind, render only: instructions M / branch mispredictions M; SPD
+ * gears 129x129 corner rays depth 5, armadillo 256x256 primary rays; timings are too noisy
+ * on the shared machine to rank settings within 10 %):
+ *   top factor, second level        gears         armadillo
+ *   1,    8/ref in cells > 8 refs   398 / 4.50    66.1 / 0.46
+ *   0.25, 8/ref   (default)         365 / 4.27    56.9 / 0.37
+ *   0.5,  8/ref                     393 / 4.49    60.2 / 0.41
+ *   0.125, 8/ref                    377 / 4.39
+ *   0.25, 16/ref                    360 / 4.32
+ *   2 / 4, 4/ref                    419 / 4.64, 436 / 4.63   73.7 / 0.53 (2)
+ *   8, none                         477 / 4.10
+ *   1, 4/ref, grid in VRC3 axes     523 / 6.60   (the rotated grid frame saves 24 %)
+ * The default also wins on teapot (122 vs 137 M), tetra (42 vs 47), mount (258 vs 337, +6 %
+ * mispredictions), bunny (60 vs 69) and fandisk (44 vs 49) against factor 1, 4/ref. */
+#define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 
 /* Drops degenerate primitives, builds the uniform grid (CSR arrays). opts may be NULL
@@ -167,7 +178,7 @@ typedef struct rt_grid_info {
     int rotated;             /* 1: grid laid out in a rotated frame (rt_build_options.grid_frame) */
     uint64_t prims;          /* primitives kept at commit */
     uint64_t cells, refs;    /* top level: cells, primitive references */
-    uint64_t empty_cells;    /* top-level cells without references */
+    uint64_t empty_cells;    /* top-level cells without references and without a second level */
     uint64_t subgrids, subcells, subrefs; /* second level */
     uint64_t max_leaf_refs;  /* most references in one cell that is traversed as a leaf */
     double volume_fill;      /* fraction of the grid box in non-empty leaf cells */

@@ -1,10 +1,14 @@
 /*
  * rt_build.c -- construction of the uniform grid in flat CSR arrays (cell offsets +
- * reference array, no per-cell allocation) with an optional second level in crowded cells.
+ * reference array, no per-cell allocation) with a second level in crowded cells.
+ * The grid may be laid out in a rotated frame (p' = R (p - c), chosen from the largest
+ * primitives when it shrinks the grid box: scenes seen obliquely in VRC3); rays are rotated
+ * for the traversal only, primitive tests stay in VRC3, so results do not depend on it.
  * A primitive goes into every cell its surface overlaps: SAT for triangles (Akenine-Moeller),
  * Sutherland-Hodgman clipping of each loop for quads, polygons and cell arrays, against the
- * cell box enlarged by eps = 1e-9 * (scene magnitude + extent). Resolution rule and its
- * measurements: gksrt.h (RT_GRID_FACTOR_DEFAULT).
+ * cell box enlarged by eps = 1e-9 * (scene magnitude + extent), far above the rounding of the
+ * rotation and of hit points near cell faces. Resolution rule and its measurements: gksrt.h
+ * (RT_GRID_FACTOR_DEFAULT).
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -281,7 +285,6 @@ void rt_grid_free(rt_grid *g)
     free(g->off);
     free(g->refs);
     free(g->sub);
-    free(g->skip);
     free(g->subs);
     free(g->soff);
     free(g->srefs);
@@ -432,7 +435,7 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
  * floor (teapot in a stadium) is resolved by a grid around the object, not around the cell.
  * Traversal tests a cell's list first, then walks its second-level grid. */
 #define RT_SUB_MIN 8
-#define RT_SUB_FACTOR 4.0
+#define RT_SUB_FACTOR 8.0
 
 /* bounding box of primitive i in the grid frame */
 static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6], int *err)
@@ -675,8 +678,6 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b)
     return rc;
 }
 
-static int rt_build_skip(rt_grid *g);
-
 int rt_grid_build(rt_scene *sc, const rt_build_options *o)
 {
     double factor = o && isfinite(o->grid_factor) && o->grid_factor > 0.0 ? o->grid_factor
@@ -741,8 +742,6 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor : RT_SUB_FACTOR;
     if (rc == RT_OK && !(o && o->no_subgrids))
         rc = rt_build_subgrids(sc, &b, eps, sub_factor, sub_min);
-    if (rc == RT_OK)
-        rc = rt_build_skip(g);
     free(b.cb.a);
     free(b.cb.b);
     free(b.pts);
@@ -755,45 +754,6 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     return RT_OK;
 }
 
-
-/* Empty-space distances of the top level: d(c) = min over non-empty q of max_a |c_a - q_a|
- * (capped at RT_SKIP_MAX), by three separable passes: the Chebyshev ball is a cube. A ray in
- * a cell with d >= 2 can take d - 1 DDA steps without looking at cells: they stay within the
- * empty cube around it (rt_trace.c). */
-static int rt_build_skip(rt_grid *g)
-{
-    const int nx = g->b.n[0], ny = g->b.n[1], nz = g->b.n[2];
-    uint8_t *a = rt_alloc_array(g->ncells, 1), *b = rt_alloc_array(g->ncells, 1);
-    if (!a || !b) {
-        free(a);
-        free(b);
-        return RT_ERR_NOMEM;
-    }
-    for (size_t ci = 0; ci < g->ncells; ci++)
-        a[ci] = (g->off[ci + 1] > g->off[ci] || (g->sub && g->sub[ci] >= 0)) ? 0 : RT_SKIP_MAX;
-    const int n[3] = {nx, ny, nz};
-    const size_t stride[3] = {1, (size_t)nx, (size_t)nx * (size_t)ny};
-    for (int ax = 0; ax < 3; ax++) { /* b = min over |k| <= R along ax of max(|k|, a) */
-        for (size_t ci = 0; ci < g->ncells; ci++) {
-            int c = (int)((ci / stride[ax]) % (size_t)n[ax]);
-            uint8_t best = a[ci];
-            for (int k = 1; k < RT_SKIP_MAX && k < best; k++) {
-                uint8_t m;
-                if (c - k >= 0 && (m = a[ci - (size_t)k * stride[ax]]) < best)
-                    best = (uint8_t)(m > k ? m : k);
-                if (c + k < n[ax] && (m = a[ci + (size_t)k * stride[ax]]) < best)
-                    best = (uint8_t)(m > k ? m : k);
-            }
-            b[ci] = best;
-        }
-        uint8_t *t = a;
-        a = b;
-        b = t;
-    }
-    free(b);
-    g->skip = a;
-    return RT_OK;
-}
 
 int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
 {
@@ -817,7 +777,7 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
     double filled = 0.0;
     for (size_t ci = 0; ci < g->ncells; ci++) {
         uint32_t n = g->off[ci + 1] - g->off[ci];
-        gi->empty_cells += n == 0;
+        gi->empty_cells += n == 0 && !(g->sub && g->sub[ci] >= 0);
         if (n > gi->max_leaf_refs)
             gi->max_leaf_refs = n;
         if (g->sub && g->sub[ci] >= 0) {

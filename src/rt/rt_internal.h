@@ -87,8 +87,6 @@ typedef struct rt_subgrid {
     uint32_t first;    /* first of its cells in the grid's soff array */
 } rt_subgrid;
 
-#define RT_SKIP_MAX 7
-
 /* linear index of cell c in box g (x fastest) */
 static inline size_t rt_cell_index(const rt_box *g, const int c[3])
 {
@@ -103,8 +101,6 @@ typedef struct rt_grid {
     uint32_t *refs;
     size_t ncells, nrefs;
     int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
-    uint8_t *skip;     /* per top cell: Chebyshev distance (in cells, <= RT_SKIP_MAX) to the
-                          nearest cell with references or a sub-grid; 0 for those */
     rt_subgrid *subs;
     size_t nsubs;
     uint32_t *soff;    /* sub-grid cells + 1 */

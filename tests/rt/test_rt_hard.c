@@ -6,7 +6,8 @@
  *    midpoint, plus random directions; the full 10^6 random rays: bench/rt/rt_leak),
  *  2 shared diagonal at offsets 0, 1e3, 1e6,  3 re-intersection at scales 1e-3..1e6 and the
  *    89/89.9/89.99 degree shadow-acne sweep (also translated by 1e6),  4 axis-aligned box room
- *    on grid-cell boundaries with +-0 direction components: grid == brute force bit for bit,
+ *    on grid-cell boundaries with +-0 direction components: grid == brute force bit for bit
+ *    (also the rotated grid frame, on SPD gears seen obliquely),
  *  5 coplanar/overlapping polygons,  6 concave, self-intersecting, repeated-vertex, collinear,
  *    non-planar polygons and the 144-vertex polygons of SPD gears,  7 teapot in a stadium
  *    (grid statistics),  8 dielectrics (TIR, nested media by relative indices, index 1),
@@ -170,7 +171,7 @@ static void unit3(double v[3])
 /* ---- 1: closed-mesh leak probe ---- */
 
 #ifndef RT_LEAK_RANDOM
-#define RT_LEAK_RANDOM 10000 /* per mesh in CI; bench/rt/rt_leak runs 10^6 */
+#define RT_LEAK_RANDOM 5000 /* per mesh in CI; bench/rt/rt_leak runs 10^6 */
 #endif
 
 static void leak_probe(const char *path)
@@ -552,6 +553,73 @@ static void test_box_room(void **state)
     }
     free(rays);
     rt_scene_free(sc);
+}
+
+/* The SPD gears seen obliquely (in VRC3 as rt_bench traces them): the grid is laid out in a
+ * rotated frame; still bit-identical to brute force, for eye rays and random rays. */
+static void test_rotated_grid(void **state)
+{
+    (void)state;
+    rtu_mesh m;
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff", &m), 0);
+    double vo[4][4];
+    rtu_lookat(m.from, m.at, m.up, vo);
+    rtu_mesh_transform(&m, vo);
+    rt_scene *sc = rt_scene_new();
+    int s = surf_plain(sc);
+    m.nsurfs = 0;
+    m.nlights = 0;
+    assert_int_equal(rtu_mesh_add(&m, sc, s), 0);
+    double bb[6];
+    rtu_mesh_bbox(&m, bb);
+    enum { NR = 20000 };
+    rt_ray *rays = malloc(NR * sizeof *rays);
+    assert_non_null(rays);
+    uint64_t rng = 3;
+    for (int k = 0; k < NR; k++) {
+        double o[3] = {0, 0, 0}, d[3], tg[3];
+        for (int i = 0; i < 3; i++)
+            tg[i] = bb[i] + (bb[3 + i] - bb[i]) * rtu_rand(&rng);
+        if (k & 1) { /* from inside the scene box in random directions */
+            rtu_rand_dir(&rng, d);
+            memcpy(o, tg, sizeof o);
+        } else { /* from the eye (VRC3 origin) */
+            for (int i = 0; i < 3; i++)
+                d[i] = tg[i];
+        }
+        ray_set(&rays[k], o, d);
+    }
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_int_equal(gi.rotated, 1);
+    /* brute force on a subset (9345 primitives per ray), rotated == VRC3-aligned on all */
+    size_t nhit = 0;
+    size_t bad = grid_vs_brute(sc, NULL, rays, 300, NULL);
+    rt_build_options vrc = {.grid_frame = 1};
+    size_t bad2 = grid_vs_brute(sc, &vrc, rays, 300, NULL);
+    rt_hit *h1 = malloc(NR * sizeof *h1), *h2 = malloc(NR * sizeof *h2);
+    assert_non_null(h1);
+    assert_non_null(h2);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    assert_int_equal(rt_intersect(sc, NR, rays, h1), RT_OK);
+    assert_int_equal(rt_scene_commit(sc, &vrc), RT_OK);
+    assert_int_equal(rt_intersect(sc, NR, rays, h2), RT_OK);
+    for (int k = 0; k < NR; k++) {
+        bad2 += !same_hit(&h1[k], &h2[k]);
+        nhit += h1[k].prim >= 0;
+    }
+    free(h1);
+    free(h2);
+    printf("gears in VRC3, rotated grid %dx%dx%d: %d rays, %zu hits; mismatches: %zu against brute "
+           "force (300 rays), %zu against the VRC3-aligned grid\n", gi.res[0], gi.res[1], gi.res[2],
+           NR, nhit, bad, bad2);
+    assert_true(nhit > NR / 4);
+    assert_int_equal(bad, 0);
+    assert_int_equal(bad2, 0);
+    free(rays);
+    rt_scene_free(sc);
+    rtu_mesh_free(&m);
 }
 
 /* ---- 5: coplanar and overlapping polygons ---- */
@@ -1436,7 +1504,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_leak_probe),        cmocka_unit_test(test_shared_diagonal),
         cmocka_unit_test(test_reintersection),    cmocka_unit_test(test_shadow_acne),
-        cmocka_unit_test(test_box_room),          cmocka_unit_test(test_coplanar),
+        cmocka_unit_test(test_box_room),          cmocka_unit_test(test_rotated_grid),
+        cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_polygons),          cmocka_unit_test(test_gears_polygons),
         cmocka_unit_test(test_teapot_stadium),    cmocka_unit_test(test_tir),
         cmocka_unit_test(test_nested_media),      cmocka_unit_test(test_index_one),
