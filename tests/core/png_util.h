@@ -12,6 +12,8 @@ static inline int read_png(const char *path, image *img)
 {
     png_image pi;
     memset(&pi, 0, sizeof pi);
+    img->w = img->h = 0;
+    img->rgb = NULL;
     pi.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_file(&pi, path))
         return 0;
@@ -21,6 +23,7 @@ static inline int read_png(const char *path, image *img)
     img->rgb = malloc(PNG_IMAGE_SIZE(pi));
     if (!img->rgb || !png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
         free(img->rgb);
+        img->rgb = NULL;
         return 0;
     }
     return 1;

@@ -27,8 +27,9 @@ typedef struct { long long eye, hit, refl, refr, shadow; double t[4]; } stats;
 /* Runs cmd (stderr to stdout); returns the exit status, output in out. */
 static int run(const char *cmd, char *out, size_t size)
 {
-    char full[2048];
-    snprintf(full, sizeof full, "%s 2>&1", cmd);
+    char full[8192];
+    int len = snprintf(full, sizeof full, "%s 2>&1", cmd);
+    assert_true(len > 0 && (size_t)len < sizeof full); /* the command fits */
     FILE *p = popen(full, "r");
     assert_non_null(p);
     size_t n = fread(out, 1, size - 1, p);
