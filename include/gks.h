@@ -106,7 +106,9 @@ typedef void (*Gerr_handler)(Gint err_num, Gint func_num, const char *err_file);
  * Workstation types of this implementation (INQUIRE LIST OF AVAILABLE WORKSTATION TYPES)
  * --------------------------------------------------------------------------------- */
 enum {
+    GWS_TYPE_MO = 2,          /* category MO: GKS metafile output; connection id = file name */
     GWS_TYPE_WISS = 3,        /* category WISS: workstation independent segment storage */
+    GWS_TYPE_MI = 4,          /* category MI: GKS metafile input; connection id = file name */
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
     GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
     GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
@@ -151,6 +153,25 @@ GKS_API void gmessage(Gint ws_id, const char *msg);
 GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out);
 /* EMERGENCY CLOSE GKS: callable in any state, never reports an error. */
 GKS_API void gemergency_close_gks(void);
+
+/* GKS metafile (GKSM) functions; format and item types in docs/METAFILE.md. Item data
+ * records are character strings in the metafile's own field format.
+ * WRITE ITEM TO GKSM: a user item (type 101..999) of `length` characters on the active MO
+ * workstation ws_id. Errors: 5, 20, 25, 30, 32, 160 (type not > 100), 161 (length < 0). */
+GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data);
+/* GET ITEM TYPE FROM GKSM: type and data record length of the MI's current item.
+ * Errors: 7, 20, 25, 34, 162 (no item left), 163 (item invalid). */
+GKS_API void gget_item_type(Gint ws_id, Gint *type, Gint *length);
+/* READ ITEM FROM GKSM: stores the first min(max_length, length) characters of the current
+ * item's data record in data (a longer record is truncated) and makes the next item
+ * current. Errors: 7, 20, 25, 34, 162, 163, 166 (max_length < 0, or > 0 with no data). */
+GKS_API void gread_item(Gint ws_id, Gint max_length, char *data);
+/* INTERPRET ITEM: performs the recorded function (primitives in NDC3 with the recorded
+ * normalization and clipping volume; workstation items on every active workstation),
+ * decoding the record in the field format of the MI the last item was read from.
+ * Errors: 7, 161 (length < 0), 164 (not a GKS item type), 165 (record invalid for the
+ * type), 167 (user item), and those of the function performed. */
+GKS_API void ginterpret_item(Gint type, Gint length, const char *data);
 
 /* ESCAPE function identifiers of this implementation (negative = implementation specific,
  * as the standard reserves). Data records: ints[0] = workstation identifier, then as listed. */
@@ -688,6 +709,31 @@ GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name);
  * current clipping volume. Errors: 5, 27, 120, 124, 125. */
 GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix);
 GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix);
+/* ---- input priorities (ISO 7942 SET VIEWPORT INPUT PRIORITY, ISO 8805 SET VIEW
+ * TRANSFORMATION INPUT PRIORITY): orderings kept for LOCATOR/STROKE input; this
+ * implementation has no input devices yet, the orderings are stored and inquirable. */
+typedef enum { GPRI_HIGHER, GPRI_LOWER } Grel_pri;
+/* SET VIEWPORT INPUT PRIORITY: tran_num directly above/below ref_tran_num. Errors: 8, 50,
+ * 2000. */
+GKS_API void gset_vp_in_pri(Gint tran_num, Gint ref_tran_num, Grel_pri rel_pri);
+/* INQUIRE LIST OF NORMALIZATION TRANSFORMATION NUMBERS (in priority order). */
+GKS_API void ginq_list_norm_tran_nums(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                      Gint_list *list, Gint *length_list);
+/* SET VIEW TRANSFORMATION INPUT PRIORITY. Errors: 7, 20, 25, 33, 35, 36, 515, 2000. */
+GKS_API void gset_view_tran_in_pri(Gint ws_id, Gint view_ind, Gint ref_view_ind,
+                                   Grel_pri rel_pri);
+/* INQUIRE LIST OF VIEW INDICES (in priority order). */
+GKS_API void ginq_list_view_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
+                                 Gint *err_ind, Gint_list *list, Gint *length_list);
+/* SET WORKSTATION WINDOW 3 (NPC3) / VIEWPORT 3 (DC3, z in [0,1]). Errors: 7, 20, 25, 33,
+ * 36, 51, 53 (window) / 54 (viewport). */
+GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win);
+GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp);
+/* INQUIRE WORKSTATION TRANSFORMATION 3. */
+GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
+                           Glimit3 *req_ws_win, Glimit3 *cur_ws_win, Glimit3 *req_ws_vp,
+                           Glimit3 *cur_ws_vp);
+
 /* Segment inquiries (list convention of the other list inquiries). */
 GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                 Gint_list *seg_names, Gint *length_list);
@@ -699,6 +745,155 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
                                 Gint *err_ind, Gint_list *ws_ids, Gint *length_list);
 /* Number of segment priorities supported: 0 = continuous. */
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris);
+
+/* ---------------------------------------------------------------------------------
+ * Input (ISO 7942 5.9; names after ISO 8651-4, see docs/BINDING.md "Input functions").
+ * No workstation type of this implementation has logical input devices (none is of
+ * category INPUT or OUTIN; the GKS level is 2a): every function below performs the
+ * standard's checks and ends with the first error that applies, which for an open
+ * workstation is 38. Output arguments are set to "no input" before any check (status
+ * GIN_STATUS_NONE, transformation 0, position (0,0), empty stroke, empty string).
+ * Errors are listed per function in the order they are checked; 140 (device not
+ * present) would follow 38 on an INPUT/OUTIN workstation. The argument checks the
+ * standard lists after 140 (pet 144, echo area 51/145, data record 146, initial values
+ * 152-154, level 143) are never reached.
+ * --------------------------------------------------------------------------------- */
+typedef enum { GOP_REQ, GOP_SAMPLE, GOP_EVENT } Gop_mode;
+typedef enum { GSWITCH_NO_ECHO, GSWITCH_ECHO } Gecho_switch;
+/* Values of the Fortran GNONE, GOK, GNPICK/GNCHOI (NCAR's C header lists OK first). */
+typedef enum { GIN_STATUS_NONE, GIN_STATUS_OK, GIN_STATUS_NO_IN } Gin_status;
+typedef enum {
+    GIN_NONE, GIN_LOC, GIN_STROKE, GIN_VAL, GIN_CHOICE, GIN_PICK, GIN_STRING
+} Gin_class;
+typedef enum { GSIMULT_NO_MORE, GSIMULT_MORE } Gsimult_events;
+/* A locator value: normalization transformation and position in its WC. */
+typedef struct { Gint norm_tran_num; Gpoint position; } Gloc;
+/* A stroke value. As an output, num_points is the capacity of points on entry and the
+ * number of points on return. */
+typedef struct { Gint norm_tran_num; Gint num_points; Gpoint *points; } Gstroke;
+typedef struct { Gint seg_name; Gint pick_id; } Gpick;
+/* Prompt/echo-type data record (the Fortran binding passes its packed CHARACTER*80
+ * records as str). Never interpreted by this implementation. */
+typedef struct {
+    Gint num_ints;   const Gint *ints;
+    Gint num_floats; const Gfloat *floats;
+    size_t str_len;  const char *str;
+} Gin_data;
+/* Numbers of logical input devices per class (INQUIRE NUMBER OF AVAILABLE ...). */
+typedef struct { Gint loc, stroke, val, choice, pick, string; } Gnum_in;
+/* Device state common to all classes (INQUIRE ... DEVICE STATE). */
+typedef struct {
+    Gop_mode op_mode;
+    Gecho_switch echo_switch;
+    Gint pet;
+    Glimit echo_area;
+    Gin_data in_data;
+} Gin_dev_st;
+typedef struct { Gin_dev_st dev; Gloc init_loc; } Gloc_st;
+typedef struct { Gin_dev_st dev; Gstroke init_stroke; Gint in_buf_size; } Gstroke_st;
+typedef struct { Gin_dev_st dev; Gfloat init_value, low_value, high_value; } Gval_st;
+typedef struct { Gin_dev_st dev; Gin_status init_status; Gint init_choice; } Gchoice_st;
+typedef struct { Gin_dev_st dev; Gin_status init_status; Gpick init_pick; } Gpick_st;
+/* init_string: capacity init_string_size bytes (NUL-terminated on return). */
+typedef struct {
+    Gin_dev_st dev;
+    char *init_string; size_t init_string_size;
+    Gint in_buf_size, init_cur_pos;
+} Gstring_st;
+/* Default device data (INQUIRE DEFAULT ... DEVICE DATA): the prompt/echo types
+ * (pets.ints: capacity pets.num_ints on entry, count on return), echo area, record. */
+typedef struct { Gint_list pets; Glimit echo_area; Gin_data in_data; } Gdef_in;
+typedef struct { Gdef_in dev; Gpoint loc_pos; } Gdef_loc;
+typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_stroke;
+typedef struct { Gdef_in dev; Gfloat value, low_value, high_value; } Gdef_val;
+typedef struct { Gdef_in dev; Gint max_choices; } Gdef_choice;
+typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_string;
+
+/* INITIALISE LOCATOR / STROKE / VALUATOR / CHOICE / PICK / STRING. The valuator range and
+ * the stroke/string buffer sizes are explicit arguments (as NCAR's ginit_string), not
+ * members of the data record. Errors: 7, 20, 25, 38, 140. */
+GKS_API void ginit_loc(Gint ws_id, Gint loc_num, const Gloc *init_loc, Gint pet,
+                       const Glimit *echo_area, const Gin_data *loc_data);
+GKS_API void ginit_stroke(Gint ws_id, Gint stroke_num, const Gstroke *init_stroke, Gint pet,
+                          const Glimit *echo_area, Gint in_buf_size,
+                          const Gin_data *stroke_data);
+GKS_API void ginit_val(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                       const Glimit *echo_area, Gfloat low_value, Gfloat high_value,
+                       const Gin_data *val_data);
+GKS_API void ginit_choice(Gint ws_id, Gint choice_num, Gin_status init_status,
+                          Gint init_choice, Gint pet, const Glimit *echo_area,
+                          const Gin_data *choice_data);
+GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
+                        const Gpick *init_pick, Gint pet, const Glimit *echo_area,
+                        const Gin_data *pick_data);
+GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                          const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
+                          const Gin_data *string_data);
+/* SET LOCATOR / ... / STRING MODE. Errors: 7, 20, 25, 38, 140. */
+GKS_API void gset_loc_mode(Gint ws_id, Gint loc_num, Gop_mode op_mode, Gecho_switch echo_switch);
+GKS_API void gset_stroke_mode(Gint ws_id, Gint stroke_num, Gop_mode op_mode,
+                              Gecho_switch echo_switch);
+GKS_API void gset_val_mode(Gint ws_id, Gint val_num, Gop_mode op_mode, Gecho_switch echo_switch);
+GKS_API void gset_choice_mode(Gint ws_id, Gint choice_num, Gop_mode op_mode,
+                              Gecho_switch echo_switch);
+GKS_API void gset_pick_mode(Gint ws_id, Gint pick_num, Gop_mode op_mode,
+                            Gecho_switch echo_switch);
+GKS_API void gset_string_mode(Gint ws_id, Gint string_num, Gop_mode op_mode,
+                              Gecho_switch echo_switch);
+/* REQUEST LOCATOR / ... / STRING: *in_status is GIN_STATUS_NONE on return. string: a buffer
+ * of the device's buffer size + 1 bytes (receives ""). Errors: 7, 20, 25, 38, 140. */
+GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc);
+GKS_API void greq_stroke(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gstroke *stroke);
+GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *value);
+GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
+GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
+GKS_API void greq_string(Gint ws_id, Gint string_num, Gin_status *in_status, char *string);
+/* SAMPLE LOCATOR / ... / STRING. Errors: 7, 20, 25, 38, 140. */
+GKS_API void gsample_loc(Gint ws_id, Gint loc_num, Gloc *loc);
+GKS_API void gsample_stroke(Gint ws_id, Gint stroke_num, Gstroke *stroke);
+GKS_API void gsample_val(Gint ws_id, Gint val_num, Gfloat *value);
+GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
+GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
+GKS_API void gsample_string(Gint ws_id, Gint string_num, char *string);
+/* AWAIT EVENT: the input queue is always empty, so it returns at once with *in_class =
+ * GIN_NONE, *ws_id = *in_num = 0 (no device exists that could deliver an event within the
+ * timeout). Errors: 7, 151 (timeout negative, NaN or infinite). */
+GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint *in_num);
+/* FLUSH DEVICE EVENTS. Errors: 7, 20, 25, 38, 2000 (class not LOC..STRING), 140. */
+GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num);
+/* GET LOCATOR / ... / STRING: the current event report never holds a value.
+ * Errors: 7, 150. */
+GKS_API void gget_loc(Gloc *loc);
+GKS_API void gget_stroke(Gstroke *stroke);
+GKS_API void gget_val(Gfloat *value);
+GKS_API void gget_choice(Gin_status *in_status, Gint *choice);
+GKS_API void gget_pick(Gin_status *in_status, Gpick *pick);
+GKS_API void gget_string(char *string);
+/* Input inquiries: *err_ind as the other inquiries, nothing else written on error.
+ * Device states: 7, 20, 25, 38, 140. Default data: 8, 22, 23, 38, 140. */
+GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st);
+GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
+                            Gstroke_st *st);
+GKS_API void ginq_val_st(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st *st);
+GKS_API void ginq_choice_st(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st *st);
+GKS_API void ginq_pick_st(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                          Gpick_st *st);
+GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st *st);
+GKS_API void ginq_def_loc_data(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc *def);
+GKS_API void ginq_def_stroke_data(Gint ws_type, Gint stroke_num, Gint *err_ind,
+                                  Gdef_stroke *def);
+GKS_API void ginq_def_val_data(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val *def);
+GKS_API void ginq_def_choice_data(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                  Gdef_choice *def);
+GKS_API void ginq_def_pick_data(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in *def);
+GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
+                                  Gdef_string *def);
+/* INQUIRE NUMBER OF AVAILABLE LOGICAL INPUT DEVICES. Errors: 8, 22, 23, 38. */
+GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in);
+/* INQUIRE INPUT QUEUE OVERFLOW. Errors: 7, 148 (the queue has never overflowed). */
+GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint *in_num);
+/* INQUIRE MORE SIMULTANEOUS EVENTS: GSIMULT_NO_MORE. Errors: 7. */
+GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_events);
 
 #ifdef __cplusplus
 }

@@ -26,9 +26,12 @@ mkdir -p "$out"
 flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
        -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L -Isrc/c -Iinclude)
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/gksm.c src/c/gks_alloc.c -lm -o "$out/fuzz_gksm"
+# The MI workstation target runs the whole library (reader, interpreter, pipeline).
+clang "${flags[@]}" -Isrc/c/xform -Isrc/c/raster -Isrc/rt tests/fuzz/fuzz_mi.c src/c/*.c \
+    src/c/xform/*.c src/c/raster/*.c src/rt/*.c -lpng -lpthread -lm -o "$out/fuzz_mi"
 
 status=0
-for target in gksm; do
+for target in gksm mi; do
     work="$out/corpus_$target"
     rm -rf "$work"
     cp -r "tests/fuzz/corpus_$target" "$work"

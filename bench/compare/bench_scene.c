@@ -220,7 +220,11 @@ static int bs_add_polygons(const scene_io_scene *io, bs_scene *s, int base)
 
 int bs_load(const char *path, const bs_options *opt, bs_scene *s, char *err, size_t err_size)
 {
+    if (!s)
+        return bs_fail(err, err_size, "no scene");
     memset(s, 0, sizeof *s);
+    if (!path || !opt)
+        return bs_fail(err, err_size, "no path or options");
     scene_io_scene io;
     char msg[512];
     int rc = scene_io_load(path, SCENE_IO_AUTO, NULL, &io, msg, sizeof msg);

@@ -159,9 +159,9 @@ static int cmd_rays(int res, int nfiles, char **files)
     printf("Embree %d.%d.%d vs ours: %dx%d primary rays + shadow rays to one point light, 1 thread, "
            "CPU seconds of the tracing thread, best of %d interleaved runs\n",
            RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, res, res, REPS);
-    printf("%-18s %7s | %8s %8s %6s | %7s %8s %8s %6s | %s\n", "mesh", "tris", "o.prim", "E.prim", "o/E",
+    printf("%-24s %7s | %8s %8s %6s | %7s %8s %8s %6s | %s\n", "mesh", "tris", "o.prim", "E.prim", "o/E",
            "shadow", "o.shad", "E.shad", "o/E", "agreement (primary; shadow)");
-    printf("%-18s %7s | %8s %8s %6s | %7s %8s %8s %6s |\n", "", "", "Mrays/s", "Mrays/s", "", "rays", "Mrays/s",
+    printf("%-24s %7s | %8s %8s %6s | %7s %8s %8s %6s |\n", "", "", "Mrays/s", "Mrays/s", "", "rays", "Mrays/s",
            "Mrays/s", "");
     int fails = 0;
     for (int f = 0; f < nfiles; f++) {
@@ -246,7 +246,7 @@ static int cmd_rays(int res, int nfiles, char **files)
             sdis += occ[k] != er.occ[k];
         }
         size_t dis = tie + hitmiss + other;
-        printf("%-18s %7zu | %8.2f %8.2f %6.2f | %7zu %8.2f %8.2f %6.2f | %zu/%zu rays differ; %zu/%zu\n", base,
+        printf("%-24s %7zu | %8.2f %8.2f %6.2f | %7zu %8.2f %8.2f %6.2f | %zu/%zu rays differ; %zu/%zu\n", base,
                s.ntris, n / op * 1e-6, n / ep * 1e-6, ep / op, ns, ns ? ns / os * 1e-6 : 0.0,
                ns ? ns / es * 1e-6 : 0.0, ns ? es / os : 0.0, dis, n, sdis, ns);
         printf("    primary: %zu hits (ours), %zu both miss, %zu same triangle (max rel. t diff %.2e, tol %.0e); "

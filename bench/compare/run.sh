@@ -70,7 +70,7 @@ run() {
     echo "# machine: $(uname -m), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'),"\
          "$(nproc) cores shared with other jobs; $(gcc --version | head -1)"
     echo "# ours: gksrt, Release (-O3 via CMAKE_BUILD_TYPE=Release, no -ffast-math), 1 thread"
-    echo "# peers (Debian): $(dpkg-query -W -f='${Package} ${Version}; ' tachyon-bin-nox povray libembree-dev 2>/dev/null)"
+    echo "# peers (Debian): $(dpkg-query -W -f='${Package} ${Version}; ' tachyon-bin-nox povray libembree-dev 2>/dev/null | sed 's/; $//')"
     echo
     "$BIN/cmp_tachyon" "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" "$DATA/spd/mount-tessellated.nff" \
         "$DATA/spd/teapot.nff" "$DATA/spd/tetra.nff"

@@ -45,7 +45,7 @@ if [ "$QUICK" -eq 1 ]; then
 else
     DOCS="$SRC/docs"
     mkdir -p "$DOCS/bench"
-    ARGS="-s 256 -ref-spp 256 -ref-depth 8 -ref-threads 2 -reps 3 -ref-cache $BUILD/speed_error-ref"
+    ARGS="-s 256 -ref-spp 256 -ref-depth 8 -ref-threads 2 -reps 5 -ref-cache $BUILD/speed_error-ref"
     mkdir -p "$BUILD/speed_error-ref"
 fi
 CSV="$DOCS/speed_error.csv"

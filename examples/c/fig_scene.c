@@ -20,14 +20,17 @@ typedef float real; /* the precision of the Fortran binding's REAL arguments */
 
 enum { WS = 1, MAX_NAME = 300 };
 
-/* The last error reported (an example's own ERROR HANDLING; C handlers get no user data). */
+/* The last error reported and the number of real errors (an example's own ERROR HANDLING;
+ * C handlers get no user data). */
 static Gint last_error;
+static int n_errors;
 
 static void error_handler(Gint err_num, Gint func_num, const char *err_file)
 {
     last_error = err_num;
     if (err_num == 511 && func_num == GFN_SHRM)
         return; /* mode not available: the program skips that preview */
+    n_errors++;
     gerr_hand(err_num, func_num, err_file);
 }
 
@@ -69,11 +72,11 @@ static void board(void)
 }
 
 /* Fig. 2/3: board, a mirror standing at its back, a red tile floating above it and a glass
- * block (transparent, refraction index 1.5) on it. */
-static void scene_board(void)
+ * block (transparent, refraction index 1.5) on it; lit (Fig. 3) or flat (Fig. 2). */
+static void scene_board(int lit)
 {
-    gset_refl_eq(GREFL_AMB_DIFF_SPEC);
-    gset_back_refl_eq(GREFL_AMB_DIFF_SPEC);
+    gset_refl_eq(lit ? GREFL_AMB_DIFF_SPEC : GREFL_NONE);
+    gset_back_refl_eq(lit ? GREFL_AMB_DIFF_SPEC : GREFL_NONE);
     area_props(1.0f, 0.85f, 0.1f, 10.0f, 0.0f, 1.0f);
     board();
     area_props(0.2f, 0.2f, 0.8f, 50.0f, 0.0f, 1.0f);
@@ -143,7 +146,8 @@ static void view(const real *clip)
     Gview_rep3 v = { .clip_limit = { clip[0], clip[1], clip[2], clip[3], clip[4], clip[5] },
                      .xy_clip = GIND_CLIP, .back_clip = GIND_CLIP, .front_clip = GIND_CLIP };
     Gpoint3 vrp = { FIG_VRP[0], FIG_VRP[1], FIG_VRP[2] };
-    Gvec3 vpn = { FIG_VPN[0], FIG_VPN[1], FIG_VPN[2] }, vup = { FIG_VUP[0], FIG_VUP[1], FIG_VUP[2] };
+    Gvec3 vpn = { FIG_VPN[0], FIG_VPN[1], FIG_VPN[2] };
+    Gvec3 vup = { FIG_VUP[0], FIG_VUP[1], FIG_VUP[2] };
     geval_view_ori_matrix3(&vrp, &vpn, &vup, GCOORD_NDC, &err, v.ori_matrix);
     Gview_map3 map = { { FIG_WINDOW[0], FIG_WINDOW[1], FIG_WINDOW[2], FIG_WINDOW[3] },
                        { FIG_PRVP[0], FIG_PRVP[1], FIG_PRVP[2], FIG_PRVP[3], FIG_PRVP[4],
@@ -218,7 +222,7 @@ static int picture(const char *base, int size, int mode, int scene, int clip_sec
     if (scene == FIG_SCENE_FAN)
         scene_fan();
     else
-        scene_board();
+        scene_board(scene == FIG_SCENE_BOARD);
     gdeactivate_ws(WS);
     gclose_ws(WS);
     return 0;
@@ -255,5 +259,5 @@ int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
     snprintf(base, sizeof base, "%s%s", prefix, name);
     picture(base, size, main_mode, scene, clip_secondary);
     gclose_gks();
-    return 0;
+    return n_errors ? 1 : 0;
 }

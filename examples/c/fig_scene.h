@@ -11,7 +11,9 @@
 #ifndef FIG_SCENE_H
 #define FIG_SCENE_H
 
-enum { FIG_SCENE_BOARD = 1, FIG_SCENE_FAN = 2 };
+/* Scenes: the board scene lit (Fig. 3), the ventilator (Fig. 4/5), the board scene without
+ * the lighting model, every area in its flat colour as plain GKS-3D draws it (Fig. 2). */
+enum { FIG_SCENE_BOARD = 1, FIG_SCENE_FAN = 2, FIG_SCENE_FLAT = 3 };
 
 /* View (both scenes): EVALUATE VIEW ORIENTATION MATRIX 3 and VIEW MAPPING MATRIX 3. */
 static const float FIG_VRP[3] = { 0.5f, 0.3f, 0.5f };
@@ -63,7 +65,8 @@ static const float FIG_HUB_DIR[6][2] = {
  * workstation of a third of the size, then the main picture with HLHSR mode main_mode.
  * clip_secondary: ESCAPE GESC_RT_CLIP_SECONDARY on the main workstation. Arguments
  * (argv): [SIZE [PREFIX]], SIZE = main viewport in pixels (default 480, 24..2048),
- * PREFIX = prepended to the file names. Returns the process exit status. */
+ * PREFIX = prepended to the file names. Returns the process exit status: 0, 1 when GKS
+ * reported an error (logged to standard error), 2 for bad arguments. */
 int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
             int clip_secondary);
 

@@ -1,9 +1,9 @@
       PROGRAM FIG2
-C     Fig. 2: the checkerboard scene drawn the conventional GKS way
-C     (HLHSR mode z-buffer).
+C     Fig. 2: the checkerboard scene drawn the conventional GKS way:
+C     HLHSR mode z-buffer, no lighting model (flat colours).
 C     Usage: fig2_f77 [SIZE [PREFIX]]; writes PREFIXfig2.png and the
 C     previews PREFIXfig2_none/hiddenline/zbuffer/painter.png.
 C     C twin: examples/c/fig2.c (byte-identical pictures).
       INCLUDE 'GKS_PAR'
-      CALL FIGRUN('fig2', 1, GHZBUF, 0)
+      CALL FIGRUN('fig2', 3, GHZBUF, 0)
       END

@@ -18,20 +18,26 @@ C     Fortran 2003 intrinsic used.
 
       SUBROUTINE FIGRUN(NAME, SCENE, MMODE, CLIPSR)
 C     Runs one picture program. NAME: file name stem (fig2 ...);
-C     SCENE: 1 board, 2 ventilator; MMODE: HLHSR mode of the main
+C     SCENE: 1 board (lit), 2 ventilator, 3 board in flat colours
+C     (no lighting model); MMODE: HLHSR mode of the main
 C     picture; CLIPSR: 1 = secondary rays clipped (ESCAPE GESRCS).
 C     Command line: SIZE (viewport in pixels, 24..2048, default 480),
-C     PREFIX (prepended to the file names).
+C     PREFIX (prepended to the file names). Stops with code 1 when GKS
+C     reported an error, 2 for bad arguments.
       CHARACTER*(*) NAME
       INTEGER SCENE, MMODE, CLIPSR
       INCLUDE 'GKS_PAR'
       INTEGER NMODES
       PARAMETER (NMODES=4)
       INTEGER MODES(NMODES), SIZE, IOS, M, NP, NBLEN
+      INTEGER LASTE, NERRS
+      COMMON /FIGERR/ LASTE, NERRS
       CHARACTER*10 MNAMES(NMODES)
       CHARACTER*256 ARG, PREFIX, BASE
       DATA MODES /GHNONE, GHLINE, GHZBUF, GHPNTR/
       DATA MNAMES /'none', 'hiddenline', 'zbuffer', 'painter'/
+      LASTE = 0
+      NERRS = 0
       SIZE = 480
       PREFIX = ' '
       IF (COMMAND_ARGUMENT_COUNT() .GE. 1) THEN
@@ -59,6 +65,7 @@ C     PREFIX (prepended to the file names).
       BASE = PREFIX(1:NP) // NAME
       CALL PICTUR(BASE, SIZE, MMODE, SCENE, CLIPSR)
       CALL GCLKS
+      IF (NERRS .GT. 0) STOP 1
       END
 
       SUBROUTINE PICTUR(BASE, SIZE, MODE, SCENE, CLIPSR)
@@ -69,8 +76,8 @@ C     pixels, HLHSR mode MODE.
       INCLUDE 'GKS_PAR'
       INTEGER WS
       PARAMETER (WS=1)
-      INTEGER LASTE
-      COMMON /FIGERR/ LASTE
+      INTEGER LASTE, NERRS
+      COMMON /FIGERR/ LASTE, NERRS
       INTEGER NB, NREC, J, LODR, NBLEN, ACT(2), DEACT(1)
       REAL WHITE(3), ORIGIN(3), AMB(3), LAMPB(3), LAMPF(3)
       CHARACTER*80 IDR(5), ODR(1)
@@ -95,7 +102,7 @@ C        the background picture of the unused workstation
          OPEN (UNIT=91, FILE=BASE(1:NB) // '.png', STATUS='OLD',
      +         IOSTAT=J)
          IF (J .EQ. 0) CLOSE (UNIT=91, STATUS='DELETE')
-         WRITE (*, '(A, I0, A, A, A)') 'HLHSR mode ', MODE,
+         WRITE (*, '(A, I2, A, A, A)') 'HLHSR mode', MODE,
      +      ' not available: ', BASE(1:NB), '.png skipped'
          RETURN
       END IF
@@ -132,7 +139,7 @@ C        2 x 2 samples per pixel; secondary rays clipped or not
       IF (SCENE .EQ. 2) THEN
          CALL SCNFAN
       ELSE
-         CALL SCNBRD
+         CALL SCNBRD(SCENE .EQ. 1)
       END IF
       CALL GDAWK(WS)
       CALL GCLWK(WS)
@@ -215,14 +222,21 @@ C     8 x 8 squares of side 0.1 in the plane y = 0.1, colours 8 and 9.
    20 CONTINUE
       END
 
-      SUBROUTINE SCNBRD
+      SUBROUTINE SCNBRD(LIT)
 C     Fig. 2/3: board, a mirror standing at its back, a red tile
-C     floating above it and a glass block (refraction index 1.5).
+C     floating above it and a glass block (refraction index 1.5); lit
+C     (Fig. 3) or in flat colours, without the lighting model (Fig. 2).
+      LOGICAL LIT
       INCLUDE 'GKS_PAR'
       REAL X0, Y0, Z0, A, H
       PARAMETER (X0=0.55, Y0=0.102, Z0=0.5, A=0.2, H=0.12)
-      CALL GSRFEQ(GRAMDS)
-      CALL GSBRFQ(GRAMDS)
+      IF (LIT) THEN
+         CALL GSRFEQ(GRAMDS)
+         CALL GSBRFQ(GRAMDS)
+      ELSE
+         CALL GSRFEQ(GRNONE)
+         CALL GSBRFQ(GRNONE)
+      END IF
       CALL PROPS(1.0, 0.85, 0.1, 10.0, 0.0, 1.0)
       CALL BOARD
       CALL PROPS(0.2, 0.2, 0.8, 50.0, 0.0, 1.0)
@@ -302,13 +316,14 @@ C     Length of S without trailing blanks.
 
       SUBROUTINE GERHND(ERRNR, FCTID, ERRFIL)
 C     The programs' own ERROR HANDLING (replaces the library's): it
-C     remembers the last error and logs every error except 511 from
-C     SET HLHSR MODE (mode not available: the preview is skipped).
+C     remembers the last error, counts and logs every error except 511
+C     from SET HLHSR MODE (mode not available: the preview is skipped).
       INTEGER ERRNR, FCTID, ERRFIL
       INCLUDE 'GKSE_PAR'
-      INTEGER LASTE
-      COMMON /FIGERR/ LASTE
+      INTEGER LASTE, NERRS
+      COMMON /FIGERR/ LASTE, NERRS
       LASTE = ERRNR
       IF (ERRNR .EQ. 511 .AND. FCTID .EQ. ESHRM) RETURN
+      NERRS = NERRS + 1
       CALL GERLOG(ERRNR, FCTID, ERRFIL)
       END

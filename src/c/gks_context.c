@@ -4,12 +4,15 @@
 #include "gks_context.h"
 #include "ws_driver.h"
 #include "gks_xform.h"
+#include "gks_mf.h"
 
 static const gks_ws_driver *const driver_list[] = {
     &gks_ws_null_driver,
     &gks_ws_png_driver,
     &gks_ws_png_large_driver,
     &gks_ws_wiss_driver,
+    &gks_ws_mo_driver,
+    &gks_ws_mi_driver,
 };
 
 static const gks_desc_table desc_table = {

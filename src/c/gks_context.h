@@ -89,6 +89,7 @@ typedef struct gks_state_list {
     gks_cur_attrs attrs;
     int cur_tnr;
     gks_norm_tran tran[GKS_MAX_NORM_TRAN + 1];
+    int tran_pri[GKS_MAX_NORM_TRAN + 1]; /* viewport input priority, highest first */
     Gclip_ind clip_ind;
     char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
     struct gks_seg_store *segs; /* segment storage (gks_seg.h) */

@@ -7,6 +7,7 @@
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
+#include "gks_mf.h"
 #include "gks_seg.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -27,6 +28,7 @@ static void init_state_list(gks_state_list *sl)
     }
     sl->attrs.light_mask = 0;
     for (int i = 0; i <= GKS_MAX_NORM_TRAN; i++) {
+        sl->tran_pri[i] = i; /* 0 highest, then ascending numbers (ISO 7942 6.4) */
         sl->tran[i].win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
         sl->tran[i].vp = (Glimit3){ 0, 1, 0, 1, 0, 1 };
     }
@@ -185,6 +187,7 @@ GKS_API void gactivate_ws(Gint ws_id)
     ws->state = GWS_ACTIVE;
     c->sl->active_ws[c->sl->n_active++] = ws_id;
     c->op_st = GST_WSAC;
+    gks_mf_recount();
 }
 
 GKS_API void gdeactivate_ws(Gint ws_id)
@@ -208,6 +211,7 @@ GKS_API void gdeactivate_ws(Gint ws_id)
     }
     if (sl->n_active == 0)
         c->op_st = GST_WSOP;
+    gks_mf_recount();
 }
 
 GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
@@ -219,6 +223,7 @@ GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
         return;
     if (ctrl_flag != GFLAG_COND && ctrl_flag != GFLAG_ALWAYS)
         GKS_FAIL(2000, GFN_CLRWK);
+    gks_mf_ws_rec(GFN_CLRWK, ws_id, GKSM_ITEM_CLEAR, "i", ctrl_flag);
     if (ctrl_flag == GFLAG_COND && ws->disp_empty == GDISP_EMPTY &&
         ws->tran_upd_st == GUPD_NOT_PEND)
         return;
@@ -241,6 +246,7 @@ GKS_API void gredraw_all_seg_ws(Gint ws_id)
                                 GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
+    gks_mf_ws_rec(GFN_RSGWK, ws_id, GKSM_ITEM_REDRAW, "");
     /* ISO 7942: apply a pending workstation transformation, clear the surface, redraw
      * all visible segments stored on the workstation. */
     int err = gks_ws_regenerate(ws);
@@ -258,6 +264,7 @@ GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
         return;
     if (upd_regen_flag != GFLAG_POSTPONE && upd_regen_flag != GFLAG_PERFORM)
         GKS_FAIL(2000, GFN_UWK);
+    gks_mf_ws_rec(GFN_UWK, ws_id, GKSM_ITEM_UPDATE, "i", upd_regen_flag);
     int err = 0;
     if (upd_regen_flag == GFLAG_PERFORM && ws->new_frame == GNEW_YES)
         err = gks_ws_regenerate(ws);
@@ -279,6 +286,7 @@ GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mod
         GKS_FAIL(2000, GFN_SDS);
     ws->defer_mode = defer_mode;
     ws->irg_mode = irg_mode;
+    gks_mf_ws_rec(GFN_SDS, ws_id, GKSM_ITEM_DEFER, "ii", defer_mode, irg_mode);
     if (irg_mode == GIRG_ALLOWED && ws->new_frame == GNEW_YES) {
         int err = gks_ws_regenerate(ws);
         if (err)
@@ -293,6 +301,7 @@ GKS_API void gmessage(Gint ws_id, const char *msg)
     gks_ws *ws = gks_ws_checked(GFN_MSG, ws_id, GKS_WSC_NOT_WISS);
     if (!ws)
         return;
+    gks_mf_ws_rec(GFN_MSG, ws_id, GKSM_ITEM_MESSAGE, "s", msg);
     int err = ws->drv->message ? ws->drv->message(ws, msg ? msg : "") : 0;
     if (err)
         gks_error_report(err, GFN_MSG);
@@ -312,6 +321,8 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
     gks_ws *ws = gks_ws_lookup(in->ints[0]);
     if (!ws)
         GKS_FAIL(182, GFN_ESC);
+    if (gks_mf_escape(GFN_ESC, ws, func_id, in))
+        return; /* addressed to an MO workstation: recorded */
     int err = ws->drv->escape ? ws->drv->escape(ws, func_id, in, out) : 180;
     if (err)
         gks_error_report(err, GFN_ESC);

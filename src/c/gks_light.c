@@ -5,6 +5,7 @@
  * (docs/ERRORS.md); out-of-range real values without a PHIGS number are 2000.
  */
 #include "gks_error.h"
+#include "gks_mf.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "ws_driver.h"
@@ -84,6 +85,9 @@ GKS_API void gset_light_src_rep(Gint ws_id, Gint light_ind, const Glight_src_rep
         GKS_FAIL(2000, GFN_SLSR);
     ws->lights[light_ind - 1] = *rep;
     ws->light_defined[light_ind - 1] = 1;
+    gks_mf_ws_rec(GFN_SLSR, ws_id, GKSM_ITEM_LIGHT_REP, "iiRRRRrr", light_ind, rep->type, 3,
+                  &rep->colr.red, 3, &rep->pos.x, 3, &rep->dir.delta_x, 2, rep->atten,
+                  rep->conc_exp, rep->spread_angle);
 }
 
 static int list_ok(const Gint_list *l)

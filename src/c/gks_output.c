@@ -20,6 +20,7 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_export.h"
+#include "gks_mf.h"
 #include "gks_seg.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -34,6 +35,9 @@
 typedef struct {
     double m[3][4];            /* source -> NDC3 after the segment transformation */
     double n[3][4];            /* WC3 -> NDC3 (normalization only; what segments store) */
+    double pn[3][4];           /* source -> NDC3 before the segment transformation: n, or
+                                  the identity for INTERPRET ITEM's NDC3 points */
+    double pat[3][4];          /* WC3 -> final NDC3 for pattern boxes */
     gks_xform_clip clip;       /* in NDC3 (w = 1) */
     int clip_on;
     double box[6];             /* the clipping volume: the viewport 3 when created */
@@ -51,6 +55,8 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
 {
     memcpy(nc->m, m, sizeof nc->m);
     memcpy(nc->n, m, sizeof nc->n);
+    memcpy(nc->pn, m, sizeof nc->pn);
+    memcpy(nc->pat, m, sizeof nc->pat);
     memcpy(nc->box, box, sizeof nc->box);
     nc->clip_on = clip_on;
     gks_xform_clip_init(&nc->clip);
@@ -61,20 +67,51 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
 
 /* The current state's context: WC3 -> NDC3 by the current normalization transformation,
  * then the open segment's transformation (if a segment is open), clipping at the current
- * viewport 3 when the clipping indicator is on. 0, or -1 if degenerate. */
+ * viewport 3 when the clipping indicator is on. While INTERPRET ITEM performs a recorded
+ * primitive (context norm_override, gks_mf.h), the recorded normalization and clipping
+ * volume replace the current ones, and NDC3 points enter through the identity.
+ * 0, or -1 if degenerate. */
 static int norm_setup(norm_ctx *nc)
 {
-    const gks_state_list *sl = gks_ctx()->sl;
+    static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
+    const gks_context *c = gks_ctx();
+    const gks_state_list *sl = c->sl;
+    const gks_norm_override *ov = c->norm_override;
     double n[3][4], box[6];
-    if (gks_cur_norm_matrix(n))
-        return -1;
-    gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+    int clip_on;
+    if (ov) {
+        memcpy(n, ov->norm, sizeof n);
+        memcpy(box, ov->box, sizeof box);
+        clip_on = ov->clip_on;
+    } else {
+        if (gks_cur_norm_matrix(n))
+            return -1;
+        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+        clip_on = sl->clip_ind == GIND_CLIP;
+    }
+    const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
     const gks_segment *seg = open_segment();
-    if (norm_from(nc, n, box, sl->clip_ind == GIND_CLIP))
+    if (norm_from(nc, pm, box, clip_on))
         return -1;
-    if (seg)
-        gks_xform_mat34_multiply(seg->tran, n, nc->m);
+    memcpy(nc->n, n, sizeof nc->n);
+    memcpy(nc->pat, n, sizeof nc->pat);
+    if (seg) {
+        gks_xform_mat34_multiply(seg->tran, pm, nc->m);
+        gks_xform_mat34_multiply(seg->tran, n, nc->pat);
+    }
     return 0;
+}
+
+/* Metafile output (gks_mf.h): the primitive as the active MO workstations record it. */
+static void mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
+{
+    if (!gks_mf_on())
+        return;
+    p.pn = (const double (*)[4])nc->pn;
+    p.norm = (const double (*)[4])nc->n;
+    p.box = nc->box;
+    p.clip_on = nc->clip_on;
+    gks_mf_prim_write(fctid, &p);
 }
 
 /* ------------------------------------------------------------------ targets */
@@ -92,7 +129,7 @@ static void target_current(target *t, const norm_ctx *nc)
     const gks_segment *seg = open_segment();
     memset(t, 0, sizeof *t);
     t->a = &gks_ctx()->sl->attrs;
-    memcpy(t->pat_m, nc->m, sizeof t->pat_m);
+    memcpy(t->pat_m, nc->pat, sizeof t->pat_m);
     t->done = seg && !seg->vis; /* an invisible open segment: stored, not drawn */
 }
 
@@ -346,7 +383,7 @@ static int record(const norm_ctx *nc, gks_seg_prim *sp, const pt_src *src, size_
         if (sp->kind == GKS_SEG_TEXT) /* TEXT keeps WC3 (position, two vectors) */
             memcpy(o, wc, sizeof o);
         else
-            gks_xform_mat34_point(nc->n, wc, o);
+            gks_xform_mat34_point(nc->pn, wc, o);
         pts[i] = (Gpoint3){ o[0], o[1], o[2] };
     }
     sp->pts = pts;
@@ -388,6 +425,8 @@ static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
         return;
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
     int err = record(&nc, &sp, &s, (size_t)n);
     target t;
     target_current(&t, &nc);
@@ -443,6 +482,8 @@ static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3
         return;
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_POLYMARKER3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
     int err = record(&nc, &sp, &s, (size_t)n);
     target t;
     target_current(&t, &nc);
@@ -522,6 +563,7 @@ static void text_any(int fctid, const double pos[3], const double d0[3], const d
     size_t len = strlen(str);
     gks_seg_prim sp = { .kind = GKS_SEG_TEXT, .n_loops = 1, .str = str,
                         .str_len = len > INT32_MAX ? INT32_MAX : (int)len };
+    mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str });
     int err = record(&nc, &sp, &s, 3);
     target t;
     target_current(&t, &nc);
@@ -679,6 +721,10 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
         icnt[k] = (int)cnt[k];
     gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
                         .n_loops = (int)nloops, .loop_counts = icnt };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = is_set ? GKSM_ITEM_FILL_AREA_SET3 : GKSM_ITEM_FILL_AREA3,
+                          .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
+                          .d3 = s->d3 });
     int err = record(&nc, &sp, s, n);
     gks_free(icnt);
     target t;
@@ -806,10 +852,13 @@ static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca
     gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = ca->dims.size_x,
                         .cell_ny = ca->dims.size_y, .cell_colr = ca->colr_array };
     int err = 0;
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr,
+                          .nx = ca->dims.size_x, .ny = ca->dims.size_y, .colr = ca->colr_array });
     if (open_segment()) { /* the corners are stored as P, Q, R in NDC3 */
         double o[3][3];
         for (int i = 0; i < 3; i++)
-            gks_xform_mat34_point(nc.n, pqr[i], o[i]);
+            gks_xform_mat34_point(nc.pn, pqr[i], o[i]);
         sp.cell_p = (Gpoint3){ o[0][0], o[0][1], o[0][2] };
         sp.cell_q = (Gpoint3){ o[1][0], o[1][1], o[1][2] };
         sp.cell_r = (Gpoint3){ o[2][0], o[2][1], o[2][2] };
@@ -1046,6 +1095,7 @@ GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
         GKS_FAIL(96, GFN_SCR);
     ws->colr[colr_ind] = *c;
     ws->colr_defined[colr_ind] = 1;
+    gks_mf_ws_rec(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green, c->blue);
 }
 
 /* --- Normalization transformations ------------------------------------------------ */
@@ -1114,7 +1164,7 @@ static int ws_tran_changed(gks_ws *ws)
     }
     ws->tran_upd_st = GUPD_PEND;
     ws->new_frame = GNEW_YES;
-    return ws->irg_mode == GIRG_ALLOWED ? gks_ws_new_frame(ws) : 0;
+    return ws->irg_mode == GIRG_ALLOWED ? gks_ws_regenerate(ws) : 0;
 }
 
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
@@ -1130,6 +1180,7 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
         GKS_FAIL(53, GFN_SWKWN);
     ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
     ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
+    gks_mf_ws_rec(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         gks_error_report(err, GFN_SWKWN);
@@ -1149,7 +1200,68 @@ GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
         GKS_FAIL(54, GFN_SWKVP);
     ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
     ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
+    gks_mf_ws_rec(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         gks_error_report(err, GFN_SWKVP);
+}
+
+static int box3_valid(const Glimit3 *b)
+{
+    return b && b->x_min < b->x_max && b->y_min < b->y_max && b->z_min <= b->z_max &&
+           isfinite(b->x_min) && isfinite(b->x_max) && isfinite(b->y_min) &&
+           isfinite(b->y_max) && isfinite(b->z_min) && isfinite(b->z_max);
+}
+
+GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
+{
+    if (gks_check_state(GFN_SWKW3))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKW3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!box3_valid(ws_win))
+        GKS_FAIL(51, GFN_SWKW3);
+    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1 ||
+        ws_win->z_min < 0 || ws_win->z_max > 1)
+        GKS_FAIL(53, GFN_SWKW3);
+    ws->req_win = *ws_win;
+    gks_mf_ws_rec(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKW3);
+}
+
+GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
+{
+    if (gks_check_state(GFN_SWKV3))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKV3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!box3_valid(ws_vp))
+        GKS_FAIL(51, GFN_SWKV3);
+    const gks_ws_desc *d = ws->drv->desc;
+    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 ||
+        ws_vp->y_max > d->dc_y || ws_vp->z_min < 0 || ws_vp->z_max > 1)
+        GKS_FAIL(54, GFN_SWKV3);
+    ws->req_vp = *ws_vp;
+    gks_mf_ws_rec(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKV3);
+}
+
+GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
+                           Glimit3 *req_ws_win, Glimit3 *cur_ws_win, Glimit3 *req_ws_vp,
+                           Glimit3 *cur_ws_vp)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    *ws_tran_upd_st = ws->tran_upd_st;
+    *req_ws_win = ws->req_win;
+    *cur_ws_win = ws->cur_win;
+    *req_ws_vp = ws->req_vp;
+    *cur_ws_vp = ws->cur_vp;
 }

@@ -12,6 +12,7 @@
  * Highlighting and detectability do not change a PNG picture.
  */
 #include "gks_error.h"
+#include "gks_mf.h"
 #include "gks_seg.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -70,6 +71,7 @@ GKS_API void gcreate_seg(Gint seg_name)
         gks_seg_ws_add(s, c->sl->active_ws[i]); /* n_active <= GKS_MAX_OPEN_WS: cannot fail */
     c->sl->open_seg = seg_name;
     c->op_st = GST_SGOP;
+    GKS_MF(GFN_CRSG, GKSM_ITEM_CREATE_SEG, "i", seg_name);
 }
 
 GKS_API void gclose_seg(void)
@@ -79,6 +81,7 @@ GKS_API void gclose_seg(void)
         return;
     c->sl->open_seg = 0;
     c->op_st = GST_WSAC;
+    GKS_MF(GFN_CLSG, GKSM_ITEM_CLOSE_SEG, "");
 }
 
 GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
@@ -93,6 +96,7 @@ GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
     if (!s)
         GKS_FAIL(122, GFN_RENSG);
     s->name = new_seg_name;
+    GKS_MF(GFN_RENSG, GKSM_ITEM_RENAME_SEG, "ii", old_seg_name, new_seg_name);
     gks_state_list *sl = gks_ctx()->sl;
     if (sl->open_seg == old_seg_name)
         sl->open_seg = new_seg_name;
@@ -107,6 +111,7 @@ GKS_API void gdel_seg(Gint seg_name)
         return;
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSG);
+    GKS_MF(GFN_DSG, GKSM_ITEM_DEL_SEG, "i", seg_name);
     if (s->vis)
         picture_changed(s);
     gks_seg_delete(store(), seg_name);
@@ -126,6 +131,7 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
         GKS_FAIL(123, GFN_DSGWK);
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSGWK);
+    gks_mf_ws_rec(GFN_DSGWK, ws_id, GKSM_ITEM_DEL_SEG, "i", seg_name);
     gks_seg_ws_remove(s, ws_id);
     if (s->vis) {
         if (ws->irg_mode == GIRG_ALLOWED) {
@@ -150,6 +156,7 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
     /* GKS has no error for a non-finite matrix: it is stored, and the pipeline drops
      * primitives whose transformed coordinates are not finite (as for WC input). */
     memcpy(s->tran, tran_matrix, sizeof s->tran);
+    GKS_MF(GFN_SSGT3, GKSM_ITEM_SEG_TRAN3, "iR", seg_name, 12, &tran_matrix[0][0]);
     if (s->vis)
         picture_changed(s);
 }
@@ -167,6 +174,7 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
                        { tran_matrix[1][0], tran_matrix[1][1], 0, tran_matrix[1][2] },
                        { 0, 0, 1, 0 } };
     memcpy(s->tran, m, sizeof s->tran);
+    GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
     if (s->vis)
         picture_changed(s);
 }
@@ -180,6 +188,7 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
         return;
     if (vis != GSEG_INVIS && vis != GSEG_VIS)
         GKS_FAIL(2000, GFN_SVIS);
+    GKS_MF(GFN_SVIS, GKSM_ITEM_VIS, "ii", seg_name, vis);
     int v = vis == GSEG_VIS;
     if (v == s->vis)
         return;
@@ -196,6 +205,7 @@ GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
         return;
     if (highl != GSEG_NORM && highl != GSEG_HIGHL)
         GKS_FAIL(2000, GFN_SHLIT);
+    GKS_MF(GFN_SHLIT, GKSM_ITEM_HIGHL, "ii", seg_name, highl);
     s->highl = highl == GSEG_HIGHL;
 }
 
@@ -208,6 +218,7 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
         return;
     if (!(pri >= 0.0 && pri <= 1.0))
         GKS_FAIL(126, GFN_SSGP);
+    GKS_MF(GFN_SSGP, GKSM_ITEM_SEG_PRI, "ir", seg_name, pri);
     if (pri == s->pri)
         return;
     s->pri = pri;
@@ -224,6 +235,7 @@ GKS_API void gset_det(Gint seg_name, Gseg_det det)
         return;
     if (det != GSEG_UNDET && det != GSEG_DET)
         GKS_FAIL(2000, GFN_SDTEC);
+    GKS_MF(GFN_SDTEC, GKSM_ITEM_DET, "ii", seg_name, det);
     s->det = det == GSEG_DET;
 }
 

@@ -108,6 +108,8 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
         r->xy_clip = r->back_clip = r->front_clip = GIND_CLIP;
     }
     ws->hlhsr_mode = GHLHSR_NONE;
+    for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
+        ws->view_pri[v] = v;
     /* Light source 1 is predefined: white ambient light. */
     ws->lights[0] = (Glight_src_rep){ .type = GLIGHT_AMBIENT, .colr = { 1, 1, 1 },
                                       .dir = { 0, 0, -1 }, .atten = { 1, 0 },

@@ -102,6 +102,7 @@ struct gks_ws {
     Grgb *colr;                   /* colour table, desc->n_colr entries */
     Gview_rep3 views[GKS_MAX_VIEW_IND + 1]; /* view table; 0 fixed: identity, NPC cube */
     int hlhsr_mode;
+    int view_pri[GKS_MAX_VIEW_IND + 1]; /* view transformation input priority, highest first */
     unsigned char *colr_defined;
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];

@@ -126,11 +126,13 @@ static void test_inquiries(void **u)
     Gint_list tl = { 0, types };
     ginq_list_avail_ws_types(8, 0, &err, &tl, &len);
     assert_int_equal(err, 0);
-    assert_int_equal(len, 4);
-    assert_int_equal(tl.num_ints, 4);
+    assert_int_equal(len, 6);
+    assert_int_equal(tl.num_ints, 6);
     assert_int_equal(types[3], GWS_TYPE_WISS);
+    assert_int_equal(types[4], GWS_TYPE_MO);
+    assert_int_equal(types[5], GWS_TYPE_MI);
     assert_int_equal(level, GLEVEL_2A);
-    ginq_list_avail_ws_types(8, 4, &err, &tl, &len);
+    ginq_list_avail_ws_types(8, 6, &err, &tl, &len);
     assert_int_equal(err, 2002);
     Gws_st st;
     ginq_ws_st(1, &err, &st);

@@ -11,6 +11,8 @@
 #include <cmocka.h>
 #include "core_util.h"
 
+enum { GKSM_TEST_ITEM_LINETYPE = 22 }; /* docs/METAFILE.md */
+
 static const Gpoint pts3[3] = { { 0.1, 0.1 }, { 0.9, 0.1 }, { 0.5, 0.9 } };
 static const Gpoint_list list3 = { 3, (Gpoint *)pts3 };
 static const Glimit unit = { 0, 1, 0, 1 };
@@ -207,6 +209,18 @@ static void c_SHLIT(void) { gset_highl(1, GSEG_HIGHL); }
 static void c_SSGP(void) { gset_seg_pri(1, 0.5); }
 static void c_SDTEC(void) { gset_det(1, GSEG_DET); }
 static void c_ASGWK(void) { gassoc_seg_ws(1, 1); }
+static void c_SVPIP(void) { gset_vp_in_pri(1, 0, GPRI_HIGHER); }
+static void c_SVTIP(void) { gset_view_tran_in_pri(1, 1, 0, GPRI_HIGHER); }
+static void c_SWKW3(void)
+{
+    const Glimit3 w = { 0, 1, 0, 1, 0, 1 };
+    gset_ws_win3(1, &w);
+}
+static void c_SWKV3(void)
+{
+    const Glimit3 v = { 0, 100, 0, 100, 0, 1 };
+    gset_ws_vp3(1, &v);
+}
 static void c_CSGWK(void) { gcopy_seg_ws(1, 1); }
 static void c_INSG(void)
 {
@@ -218,6 +232,50 @@ static void c_INSG3(void)
     const Gtran_matrix3 m = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
     ginsert_seg3(1, m);
 }
+static void c_WITM(void) { gwrite_item(1, 101, 2, "ab"); }
+static void c_GTITM(void) { Gint t, l; gget_item_type(1, &t, &l); }
+static void c_RDITM(void) { char buf[4]; gread_item(1, 4, buf); }
+static void c_IITM(void) { ginterpret_item(GKSM_TEST_ITEM_LINETYPE, 11, "          2"); }
+
+/* Input (gks_input.c): ws 1 is of category OUTPUT, so the allowed states give 38. */
+static const Glimit earea = { 0, 100, 0, 100 };
+static const Gloc loc0 = { 0, { 0.5, 0.5 } };
+static void c_INLC(void) { ginit_loc(1, 1, &loc0, 1, &earea, NULL); }
+static void c_INSK(void)
+{
+    Gstroke s = { 0, 3, (Gpoint *)pts3 };
+    ginit_stroke(1, 1, &s, 1, &earea, 10, NULL);
+}
+static void c_INVL(void) { ginit_val(1, 1, 0.5, 1, &earea, 0, 1, NULL); }
+static void c_INCH(void) { ginit_choice(1, 1, GIN_STATUS_OK, 1, 1, &earea, NULL); }
+static void c_INPK(void) { Gpick p = { 1, 1 }; ginit_pick(1, 1, GIN_STATUS_OK, &p, 1, &earea, NULL); }
+static void c_INST(void) { ginit_string(1, 1, "ab", 1, &earea, 10, 1, NULL); }
+static void c_SLCM(void) { gset_loc_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_SSKM(void) { gset_stroke_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_SVLM(void) { gset_val_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_SCHM(void) { gset_choice_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_SPKM(void) { gset_pick_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_SSTM(void) { gset_string_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
+static void c_RQLC(void) { Gin_status s; Gloc l; greq_loc(1, 1, &s, &l); }
+static void c_RQSK(void) { Gin_status s; Gpoint p[4]; Gstroke k = { 0, 4, p }; greq_stroke(1, 1, &s, &k); }
+static void c_RQVL(void) { Gin_status s; Gfloat v; greq_val(1, 1, &s, &v); }
+static void c_RQCH(void) { Gin_status s; Gint c; greq_choice(1, 1, &s, &c); }
+static void c_RQPK(void) { Gin_status s; Gpick p; greq_pick(1, 1, &s, &p); }
+static void c_RQST(void) { Gin_status s; char b[16]; greq_string(1, 1, &s, b); }
+static void c_SMLC(void) { Gloc l; gsample_loc(1, 1, &l); }
+static void c_SMSK(void) { Gpoint p[4]; Gstroke k = { 0, 4, p }; gsample_stroke(1, 1, &k); }
+static void c_SMVL(void) { Gfloat v; gsample_val(1, 1, &v); }
+static void c_SMCH(void) { Gin_status s; Gint c; gsample_choice(1, 1, &s, &c); }
+static void c_SMPK(void) { Gin_status s; Gpick p; gsample_pick(1, 1, &s, &p); }
+static void c_SMST(void) { char b[16]; gsample_string(1, 1, b); }
+static void c_WAIT(void) { Gint w, n; Gin_class c; gawait_event(0, &w, &c, &n); }
+static void c_FLUSH(void) { gflush_events(1, GIN_LOC, 1); }
+static void c_GTLC(void) { Gloc l; gget_loc(&l); }
+static void c_GTSK(void) { Gpoint p[4]; Gstroke k = { 0, 4, p }; gget_stroke(&k); }
+static void c_GTVL(void) { Gfloat v; gget_val(&v); }
+static void c_GTCH(void) { Gin_status s; Gint c; gget_choice(&s, &c); }
+static void c_GTPK(void) { Gin_status s; Gpick p; gget_pick(&s, &p); }
+static void c_GTST(void) { char b[16]; gget_string(b); }
 
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))

@@ -5,6 +5,7 @@
       INCLUDE 'GKS_PAR'
       INTEGER NFAIL, IERR, I1, IOL, IVIS, IHIL, IDET, I, J
       REAL SM(3,4), SG(3,4), S2(2,3), G2(2,3), PRI
+      REAL W6(6), R6(6), C6(6), V6(6), D6(6)
       NFAIL = 0
       CALL GOPKS(6, -1)
       CALL GOPWK(1, 0, GWSNUL)
@@ -76,6 +77,26 @@
       CALL CHKI('GDSGWK count', IOL, 0, NFAIL)
       CALL GQSGP(GWSPNG, IERR, I1)
       CALL CHKI('GQSGP', I1, 0, NFAIL)
+!     input priorities and workstation transformation 3
+      CALL GSVPIP(3, 0, GHIGHR)
+      CALL GQENTN(1, IERR, IOL, I1)
+      CALL CHKI('GQENTN(1)', I1, 3, NFAIL)
+      CALL CHKI('GQENTN count', IOL, 32, NFAIL)
+      CALL GSVTIP(1, 2, 0, GHIGHR)
+      CALL GQEVWI(1, 1, IERR, IOL, I1)
+      CALL CHKI('GQEVWI(1)', I1, 2, NFAIL)
+      W6(1) = 0.0
+      W6(2) = 0.5
+      W6(3) = 0.25
+      W6(4) = 0.75
+      W6(5) = 0.0
+      W6(6) = 1.0
+      CALL GSWKW3(1, W6)
+      CALL GQWKT3(1, IERR, I1, R6, C6, V6, D6)
+      CALL CHKI('GQWKT3 errind', IERR, 0, NFAIL)
+      DO 70 I = 1, 6
+        CALL CHKR('GQWKT3 RWINDO', R6(I), W6(I), NFAIL)
+   70 CONTINUE
       CALL GDAWK(1)
       CALL GCLWK(1)
       CALL GCLKS

@@ -15,7 +15,8 @@
  * refs mode writes the references instead of comparing.
  *
  * Tolerance of the reference comparison: a pixel counts as different when a channel differs
- * by more than 1 level, and at most 1 in 1000 pixels may (0 in a 40 x 40 preview: 1 pixel).
+ * by more than 1 level, and at most 1 in 1000 pixels may differ (1 in a 40 x 40 preview, 14
+ * in the 120 x 120 picture).
  * The ray tracer is deterministic and independent of the thread count, so our own build
  * reproduces the references exactly (max difference 0, checked at generation); the
  * allowance absorbs last-bit differences of another compiler or libm, which can move a
@@ -23,7 +24,9 @@
  *
  * Fig. 4/5 (the paper's point): both show the ventilator whose far part is clipped away by
  * the view clip (NPC3 y > 0.7); Fig. 4 traces shadow rays against the whole scene, Fig. 5
- * only against the display volume. From the scene geometry (fig_scene.h) and the camera the
+ * only against the display volume. The fan scene is opaque with reflectance equation
+ * ambient+diffuse, so shadow rays are its only secondary rays (no reflection or refraction
+ * path to follow). From the scene geometry (fig_scene.h) and the camera the
  * tracer recovers (rt_camera_from_view), each sample ray of each pixel is cast here: its
  * visible point, then the segment to the lamp, whose hits on the fan are classified inside or
  * outside the display volume (mapped to NPC3). Then
@@ -232,7 +235,8 @@ static void scene_view(fan_scene *s)
 {
     Gint err = 0;
     Gpoint3 vrp = { FIG_VRP[0], FIG_VRP[1], FIG_VRP[2] };
-    Gvec3 vpn = { FIG_VPN[0], FIG_VPN[1], FIG_VPN[2] }, vup = { FIG_VUP[0], FIG_VUP[1], FIG_VUP[2] };
+    Gvec3 vpn = { FIG_VPN[0], FIG_VPN[1], FIG_VPN[2] };
+    Gvec3 vup = { FIG_VUP[0], FIG_VUP[1], FIG_VUP[2] };
     gopen_gks(NULL, 0);
     geval_view_ori_matrix3(&vrp, &vpn, &vup, GCOORD_NDC, &err, s->ori);
     assert_int_equal(err, 0);

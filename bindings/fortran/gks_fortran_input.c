@@ -1,0 +1,753 @@
+/*
+ * gks_fortran_input.c -- FORTRAN 77 binding of the input functions (ISO 8651-1 names and
+ * argument lists, as in RAL GKS libraries/gks/base, e.g. gqsts.f): GINLC GINSK GINVL
+ * GINCH GINPK GINST, GSLCM GSSKM GSVLM GSCHM GSPKM GSSTM, GRQLC GRQSK GRQVL GRQCH GRQPK
+ * GRQST, GSMLC GSMSK GSMVL GSMCH GSMPK GSMST, GWAIT GFLUSH, GGTLC GGTSK GGTVL GGTCH
+ * GGTPK GGTST, GQLCS GQSKS GQVLS GQCHS GQPKS GQSTS, GQDLC GQDSK GQDVL GQDCH GQDPK GQDST,
+ * GQLI, GQIQOV, GQSIM.
+ *
+ * Thin wrappers over gks_input.c (which reports the errors: no workstation of gks3d has
+ * input devices, see docs/BINDING.md "Input functions"). Enumerations pass unchanged
+ * (GNONE/GOK/GNCHOI, GREQU/GSAMPL/GEVENT, GNECHO/GECHO, GNCLAS..GSTRIN have the C values).
+ * Data records DATREC(LDR) are CHARACTER arrays passed to C as their LDR * LEN(DATREC(1))
+ * characters; inquiries return the record's characters the same way. Output strings are
+ * blank-padded; output arrays get at most their declared size (N).
+ */
+#include "gks_fortran.h"
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Report error 300 (storage overflow in the binding) through the current handler. */
+static void report_nomem(Gint fctid)
+{
+    Gerr_handler h = NULL;
+    gset_err_hand(NULL, &h);
+    gset_err_hand(h, NULL);
+    h(300, fctid, NULL);
+}
+
+/* n * size bytes, overflow checked; NULL on failure. */
+static void *alloc_array(size_t n, size_t size)
+{
+    if (size != 0 && n > SIZE_MAX / size)
+        return NULL;
+    return malloc(n * size > 0 ? n * size : 1);
+}
+
+static Glimit echo_area(const freal *xmin, const freal *xmax, const freal *ymin,
+                        const freal *ymax)
+{
+    return (Glimit){ *xmin, *xmax, *ymin, *ymax };
+}
+
+/* The characters of DATREC(LDR) as a data record (none for LDR <= 0). */
+static Gin_data record_in(fint ldr, const char *datrec, size_t elem_len)
+{
+    return (Gin_data){ 0, NULL, 0, NULL, ldr > 0 ? (size_t)ldr * elem_len : 0, datrec };
+}
+
+/* A record's characters into DATREC(MLDR), blank-padded; *ldr = elements used.
+ * Returns 0 or 2001 (DATREC too small). */
+static fint record_out(const Gin_data *r, fint mldr, fint *ldr, char *datrec, size_t elem_len)
+{
+    size_t cap = mldr > 0 ? (size_t)mldr * elem_len : 0;
+    size_t n = r->str ? r->str_len : 0;
+    if (cap)
+        memset(datrec, ' ', cap);
+    *ldr = elem_len ? (fint)((n + elem_len - 1) / elem_len) : 0;
+    if (n > cap)
+        return 2001;
+    if (n)
+        memcpy(datrec, r->str, n);
+    return 0;
+}
+
+/* Blank-padded copy of a C string into a CHARACTER; returns the copied length. */
+static fint fill_fstr(const char *src, char *dst, size_t dlen)
+{
+    size_t n = 0;
+    while (n < dlen && src[n])
+        n++;
+    memcpy(dst, src, n);
+    memset(dst + n, ' ', dlen - n);
+    return (fint)n;
+}
+
+/* A C string buffer for a CHARACTER*(len) output ("" on entry); NULL: 300 reported. */
+static char *str_buffer(size_t len, Gint fctid)
+{
+    char *b = len < SIZE_MAX ? alloc_array(len + 1, 1) : NULL;
+    if (!b)
+        report_nomem(fctid);
+    else
+        b[0] = '\0';
+    return b;
+}
+
+/* Points buffer of capacity n (none for n <= 0). Returns -1 when out of memory, with 300
+ * reported for fctid unless fctid < 0 (inquiries report through ERRIND). */
+static int stroke_buffer(Gstroke *s, fint n, Gint fctid)
+{
+    *s = (Gstroke){ 0, n > 0 ? n : 0, NULL };
+    if (n <= 0)
+        return 0;
+    if (!(s->points = alloc_array((size_t)n, sizeof *s->points))) {
+        if (fctid >= 0)
+            report_nomem(fctid);
+        return -1;
+    }
+    return 0;
+}
+
+/* A stroke into Fortran arrays of size n: *np points, at most n copied. */
+static void stroke_out(const Gstroke *s, fint n, fint *tnr, fint *np, freal *px, freal *py)
+{
+    *tnr = s->norm_tran_num;
+    *np = s->num_points;
+    for (fint i = 0; i < s->num_points && i < n && s->points; i++) {
+        px[i] = (freal)s->points[i].x;
+        py[i] = (freal)s->points[i].y;
+    }
+}
+
+/* ---- INITIALISE ---- */
+
+/* GINLC(WKID, LCDNR, TNR, PX, PY, PET, XMIN, XMAX, YMIN, YMAX, LDR, DATREC) */
+FAPI void FNAME(ginlc, GINLC)(const fint *wkid, const fint *lcdnr, const fint *tnr,
+                              const freal *px, const freal *py, const fint *pet,
+                              const freal *xmin, const freal *xmax, const freal *ymin,
+                              const freal *ymax, const fint *ldr, const char *datrec,
+                              size_t datrec_len)
+{
+    Gloc l = { *tnr, { *px, *py } };
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_loc(*wkid, *lcdnr, &l, *pet, &e, &d);
+}
+
+/* GINSK(WKID, SKDNR, TNR, N, PXA, PYA, PET, XMIN, XMAX, YMIN, YMAX, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(ginsk, GINSK)(const fint *wkid, const fint *skdnr, const fint *tnr,
+                              const fint *n, const freal *pxa, const freal *pya,
+                              const fint *pet, const freal *xmin, const freal *xmax,
+                              const freal *ymin, const freal *ymax, const fint *buflen,
+                              const fint *ldr, const char *datrec, size_t datrec_len)
+{
+    Gstroke s;
+    if (stroke_buffer(&s, *n, GFN_INSK))
+        return;
+    s.norm_tran_num = *tnr;
+    s.num_points = *n;
+    for (fint i = 0; i < *n; i++)
+        s.points[i] = (Gpoint){ pxa[i], pya[i] };
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_stroke(*wkid, *skdnr, &s, *pet, &e, *buflen, &d);
+    free(s.points);
+}
+
+/* GINVL(WKID, VLDNR, IVAL, PET, XMIN, XMAX, YMIN, YMAX, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(ginvl, GINVL)(const fint *wkid, const fint *vldnr, const freal *ival,
+                              const fint *pet, const freal *xmin, const freal *xmax,
+                              const freal *ymin, const freal *ymax, const freal *loval,
+                              const freal *hival, const fint *ldr, const char *datrec,
+                              size_t datrec_len)
+{
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_val(*wkid, *vldnr, *ival, *pet, &e, *loval, *hival, &d);
+}
+
+/* GINCH(WKID, CHDNR, ISTAT, ICHNR, PET, XMIN, XMAX, YMIN, YMAX, LDR, DATREC) */
+FAPI void FNAME(ginch, GINCH)(const fint *wkid, const fint *chdnr, const fint *istat,
+                              const fint *ichnr, const fint *pet, const freal *xmin,
+                              const freal *xmax, const freal *ymin, const freal *ymax,
+                              const fint *ldr, const char *datrec, size_t datrec_len)
+{
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_choice(*wkid, *chdnr, (Gin_status)*istat, *ichnr, *pet, &e, &d);
+}
+
+/* GINPK(WKID, PCDNR, ISTAT, ISGNA, IPCID, PET, XMIN, XMAX, YMIN, YMAX, LDR, DATREC) */
+FAPI void FNAME(ginpk, GINPK)(const fint *wkid, const fint *pcdnr, const fint *istat,
+                              const fint *isgna, const fint *ipcid, const fint *pet,
+                              const freal *xmin, const freal *xmax, const freal *ymin,
+                              const freal *ymax, const fint *ldr, const char *datrec,
+                              size_t datrec_len)
+{
+    Gpick p = { *isgna, *ipcid };
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_pick(*wkid, *pcdnr, (Gin_status)*istat, &p, *pet, &e, &d);
+}
+
+/* GINST(WKID, STDNR, LSTR, ISTR, PET, XMIN, XMAX, YMIN, YMAX, BUFLEN, INIPOS, LDR, DATREC):
+ * the initial string is the first LSTR characters of ISTR (at most LEN(ISTR)). */
+FAPI void FNAME(ginst, GINST)(const fint *wkid, const fint *stdnr, const fint *lstr,
+                              const char *istr, const fint *pet, const freal *xmin,
+                              const freal *xmax, const freal *ymin, const freal *ymax,
+                              const fint *buflen, const fint *inipos, const fint *ldr,
+                              const char *datrec, size_t istr_len, size_t datrec_len)
+{
+    size_t n = *lstr > 0 ? (size_t)*lstr : 0;
+    if (n > istr_len)
+        n = istr_len;
+    char *s = str_buffer(n, GFN_INST);
+    if (!s)
+        return;
+    memcpy(s, istr, n);
+    s[n] = '\0';
+    Glimit e = echo_area(xmin, xmax, ymin, ymax);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_string(*wkid, *stdnr, s, *pet, &e, *buflen, *inipos, &d);
+    free(s);
+}
+
+/* ---- SET MODE: G<S..M>(WKID, DNR, MODE, ESW) ---- */
+
+#define F77_SET_MODE(lower, UPPER, cfn)                                                  \
+    FAPI void FNAME(lower, UPPER)(const fint *wkid, const fint *dnr, const fint *mode,  \
+                                  const fint *esw)                                      \
+    {                                                                                   \
+        cfn(*wkid, *dnr, (Gop_mode)*mode, (Gecho_switch)*esw);                          \
+    }
+F77_SET_MODE(gslcm, GSLCM, gset_loc_mode)
+F77_SET_MODE(gsskm, GSSKM, gset_stroke_mode)
+F77_SET_MODE(gsvlm, GSVLM, gset_val_mode)
+F77_SET_MODE(gschm, GSCHM, gset_choice_mode)
+F77_SET_MODE(gspkm, GSPKM, gset_pick_mode)
+F77_SET_MODE(gsstm, GSSTM, gset_string_mode)
+#undef F77_SET_MODE
+
+/* ---- REQUEST ---- */
+
+/* GRQLC(WKID, LCDNR, STAT, TNR, PX, PY) */
+FAPI void FNAME(grqlc, GRQLC)(const fint *wkid, const fint *lcdnr, fint *stat, fint *tnr,
+                              freal *px, freal *py)
+{
+    Gin_status s;
+    Gloc l;
+    greq_loc(*wkid, *lcdnr, &s, &l);
+    *stat = s;
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+}
+
+/* GRQSK(WKID, SKDNR, N, STAT, TNR, NP, PXA, PYA) */
+FAPI void FNAME(grqsk, GRQSK)(const fint *wkid, const fint *skdnr, const fint *n, fint *stat,
+                              fint *tnr, fint *np, freal *pxa, freal *pya)
+{
+    Gstroke k;
+    Gin_status s = GIN_STATUS_NONE;
+    *stat = GIN_STATUS_NONE;
+    *tnr = *np = 0;
+    if (stroke_buffer(&k, *n, GFN_RQSK))
+        return;
+    greq_stroke(*wkid, *skdnr, &s, &k);
+    *stat = s;
+    stroke_out(&k, *n, tnr, np, pxa, pya);
+    free(k.points);
+}
+
+/* GRQVL(WKID, VLDNR, STAT, VAL) */
+FAPI void FNAME(grqvl, GRQVL)(const fint *wkid, const fint *vldnr, fint *stat, freal *val)
+{
+    Gin_status s;
+    Gfloat v;
+    greq_val(*wkid, *vldnr, &s, &v);
+    *stat = s;
+    *val = (freal)v;
+}
+
+/* GRQCH(WKID, CHDNR, STAT, CHNR) */
+FAPI void FNAME(grqch, GRQCH)(const fint *wkid, const fint *chdnr, fint *stat, fint *chnr)
+{
+    Gin_status s;
+    Gint c;
+    greq_choice(*wkid, *chdnr, &s, &c);
+    *stat = s;
+    *chnr = c;
+}
+
+/* GRQPK(WKID, PCDNR, STAT, SGNA, PCID) */
+FAPI void FNAME(grqpk, GRQPK)(const fint *wkid, const fint *pcdnr, fint *stat, fint *sgna,
+                              fint *pcid)
+{
+    Gin_status s;
+    Gpick p;
+    greq_pick(*wkid, *pcdnr, &s, &p);
+    *stat = s;
+    *sgna = p.seg_name;
+    *pcid = p.pick_id;
+}
+
+/* GRQST(WKID, STDNR, STAT, LOSTR, STR) */
+FAPI void FNAME(grqst, GRQST)(const fint *wkid, const fint *stdnr, fint *stat, fint *lostr,
+                              char *str, size_t str_len)
+{
+    Gin_status s = GIN_STATUS_NONE;
+    char *b = str_buffer(str_len, GFN_RQST);
+    if (b)
+        greq_string(*wkid, *stdnr, &s, b);
+    *stat = s;
+    *lostr = fill_fstr(b ? b : "", str, str_len);
+    free(b);
+}
+
+/* ---- SAMPLE ---- */
+
+/* GSMLC(WKID, LCDNR, TNR, PX, PY) */
+FAPI void FNAME(gsmlc, GSMLC)(const fint *wkid, const fint *lcdnr, fint *tnr, freal *px,
+                              freal *py)
+{
+    Gloc l;
+    gsample_loc(*wkid, *lcdnr, &l);
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+}
+
+/* GSMSK(WKID, SKDNR, N, TNR, NP, PXA, PYA) */
+FAPI void FNAME(gsmsk, GSMSK)(const fint *wkid, const fint *skdnr, const fint *n, fint *tnr,
+                              fint *np, freal *pxa, freal *pya)
+{
+    Gstroke k;
+    *tnr = *np = 0;
+    if (stroke_buffer(&k, *n, GFN_SMSK))
+        return;
+    gsample_stroke(*wkid, *skdnr, &k);
+    stroke_out(&k, *n, tnr, np, pxa, pya);
+    free(k.points);
+}
+
+/* GSMVL(WKID, VLDNR, VAL) */
+FAPI void FNAME(gsmvl, GSMVL)(const fint *wkid, const fint *vldnr, freal *val)
+{
+    Gfloat v;
+    gsample_val(*wkid, *vldnr, &v);
+    *val = (freal)v;
+}
+
+/* GSMCH(WKID, CHDNR, STAT, CHNR) */
+FAPI void FNAME(gsmch, GSMCH)(const fint *wkid, const fint *chdnr, fint *stat, fint *chnr)
+{
+    Gin_status s;
+    Gint c;
+    gsample_choice(*wkid, *chdnr, &s, &c);
+    *stat = s;
+    *chnr = c;
+}
+
+/* GSMPK(WKID, PCDNR, STAT, SGNA, PCID) */
+FAPI void FNAME(gsmpk, GSMPK)(const fint *wkid, const fint *pcdnr, fint *stat, fint *sgna,
+                              fint *pcid)
+{
+    Gin_status s;
+    Gpick p;
+    gsample_pick(*wkid, *pcdnr, &s, &p);
+    *stat = s;
+    *sgna = p.seg_name;
+    *pcid = p.pick_id;
+}
+
+/* GSMST(WKID, STDNR, LOSTR, STR) */
+FAPI void FNAME(gsmst, GSMST)(const fint *wkid, const fint *stdnr, fint *lostr, char *str,
+                              size_t str_len)
+{
+    char *b = str_buffer(str_len, GFN_SMST);
+    if (b)
+        gsample_string(*wkid, *stdnr, b);
+    *lostr = fill_fstr(b ? b : "", str, str_len);
+    free(b);
+}
+
+/* ---- event input ---- */
+
+/* GWAIT(TOUT, WKID, ICL, IDNR) */
+FAPI void FNAME(gwait, GWAIT)(const freal *tout, fint *wkid, fint *icl, fint *idnr)
+{
+    Gint w, n;
+    Gin_class c;
+    gawait_event(*tout, &w, &c, &n);
+    *wkid = w;
+    *icl = c;
+    *idnr = n;
+}
+
+/* GFLUSH(WKID, ICL, IDNR) */
+FAPI void FNAME(gflush, GFLUSH)(const fint *wkid, const fint *icl, const fint *idnr)
+{
+    gflush_events(*wkid, (Gin_class)*icl, *idnr);
+}
+
+/* GGTLC(TNR, PX, PY) */
+FAPI void FNAME(ggtlc, GGTLC)(fint *tnr, freal *px, freal *py)
+{
+    Gloc l;
+    gget_loc(&l);
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+}
+
+/* GGTSK(N, TNR, NP, PXA, PYA) */
+FAPI void FNAME(ggtsk, GGTSK)(const fint *n, fint *tnr, fint *np, freal *pxa, freal *pya)
+{
+    Gstroke k;
+    *tnr = *np = 0;
+    if (stroke_buffer(&k, *n, GFN_GTSK))
+        return;
+    gget_stroke(&k);
+    stroke_out(&k, *n, tnr, np, pxa, pya);
+    free(k.points);
+}
+
+/* GGTVL(VAL) */
+FAPI void FNAME(ggtvl, GGTVL)(freal *val)
+{
+    Gfloat v;
+    gget_val(&v);
+    *val = (freal)v;
+}
+
+/* GGTCH(STAT, CHNR) */
+FAPI void FNAME(ggtch, GGTCH)(fint *stat, fint *chnr)
+{
+    Gin_status s;
+    Gint c;
+    gget_choice(&s, &c);
+    *stat = s;
+    *chnr = c;
+}
+
+/* GGTPK(STAT, SGNA, PCID) */
+FAPI void FNAME(ggtpk, GGTPK)(fint *stat, fint *sgna, fint *pcid)
+{
+    Gin_status s;
+    Gpick p;
+    gget_pick(&s, &p);
+    *stat = s;
+    *sgna = p.seg_name;
+    *pcid = p.pick_id;
+}
+
+/* GGTST(LOSTR, STR) */
+FAPI void FNAME(ggtst, GGTST)(fint *lostr, char *str, size_t str_len)
+{
+    char *b = str_buffer(str_len, GFN_GTST);
+    if (b)
+        gget_string(b);
+    *lostr = fill_fstr(b ? b : "", str, str_len);
+    free(b);
+}
+
+/* ---- inquiries: ERRIND first; the other outputs only when ERRIND = 0 ---- */
+
+/* The outputs common to the device state inquiries; returns ERRIND (0 or 2001). */
+static fint dev_out(const Gin_dev_st *d, fint mldr, fint *mode, fint *esw, fint *pet,
+                    freal *earea, fint *ldr, char *datrec, size_t datrec_len)
+{
+    *mode = d->op_mode;
+    *esw = d->echo_switch;
+    *pet = d->pet;
+    earea[0] = (freal)d->echo_area.x_min;
+    earea[1] = (freal)d->echo_area.x_max;
+    earea[2] = (freal)d->echo_area.y_min;
+    earea[3] = (freal)d->echo_area.y_max;
+    return record_out(&d->in_data, mldr, ldr, datrec, datrec_len);
+}
+
+/* GQLCS(WKID, LCDNR, TYPE, MLDR, ERRIND, MODE, ESW, TNR, PX, PY, PET, EAREA, LDR, DATREC) */
+FAPI void FNAME(gqlcs, GQLCS)(const fint *wkid, const fint *lcdnr, const fint *type,
+                              const fint *mldr, fint *errind, fint *mode, fint *esw,
+                              fint *tnr, freal *px, freal *py, fint *pet, freal *earea,
+                              fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gloc_st s = { 0 };
+    ginq_loc_st(*wkid, *lcdnr, (Ginq_type)*type, errind, &s);
+    if (*errind)
+        return;
+    *tnr = s.init_loc.norm_tran_num;
+    *px = (freal)s.init_loc.position.x;
+    *py = (freal)s.init_loc.position.y;
+    *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+}
+
+/* GQSKS(WKID, SKDNR, TYPE, N, MLDR, ERRIND, MODE, ESW, TNR, NP, PXA, PYA, PET, EAREA,
+ *       BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqsks, GQSKS)(const fint *wkid, const fint *skdnr, const fint *type,
+                              const fint *n, const fint *mldr, fint *errind, fint *mode,
+                              fint *esw, fint *tnr, fint *np, freal *pxa, freal *pya,
+                              fint *pet, freal *earea, fint *buflen, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gstroke_st s = { 0 };
+    if (stroke_buffer(&s.init_stroke, *n, -1)) {
+        *errind = 300;
+        return;
+    }
+    ginq_stroke_st(*wkid, *skdnr, (Ginq_type)*type, errind, &s);
+    if (!*errind) {
+        stroke_out(&s.init_stroke, *n, tnr, np, pxa, pya);
+        *buflen = s.in_buf_size;
+        *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+        if (!*errind && *np > *n)
+            *errind = 2001;
+    }
+    free(s.init_stroke.points);
+}
+
+/* GQVLS(WKID, VLDNR, MLDR, ERRIND, MODE, ESW, IVAL, PET, EAREA, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(gqvls, GQVLS)(const fint *wkid, const fint *vldnr, const fint *mldr,
+                              fint *errind, fint *mode, fint *esw, freal *ival, fint *pet,
+                              freal *earea, freal *loval, freal *hival, fint *ldr,
+                              char *datrec, size_t datrec_len)
+{
+    Gval_st s = { 0 };
+    ginq_val_st(*wkid, *vldnr, errind, &s);
+    if (*errind)
+        return;
+    *ival = (freal)s.init_value;
+    *loval = (freal)s.low_value;
+    *hival = (freal)s.high_value;
+    *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+}
+
+/* GQCHS(WKID, CHDNR, MLDR, ERRIND, MODE, ESW, ISTAT, ICHNR, PET, EAREA, LDR, DATREC) */
+FAPI void FNAME(gqchs, GQCHS)(const fint *wkid, const fint *chdnr, const fint *mldr,
+                              fint *errind, fint *mode, fint *esw, fint *istat, fint *ichnr,
+                              fint *pet, freal *earea, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gchoice_st s = { 0 };
+    ginq_choice_st(*wkid, *chdnr, errind, &s);
+    if (*errind)
+        return;
+    *istat = s.init_status;
+    *ichnr = s.init_choice;
+    *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+}
+
+/* GQPKS(WKID, PCDNR, TYPE, MLDR, ERRIND, MODE, ESW, ISTAT, ISGNA, IPCID, PET, EAREA, LDR,
+ *       DATREC) */
+FAPI void FNAME(gqpks, GQPKS)(const fint *wkid, const fint *pcdnr, const fint *type,
+                              const fint *mldr, fint *errind, fint *mode, fint *esw,
+                              fint *istat, fint *isgna, fint *ipcid, fint *pet, freal *earea,
+                              fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gpick_st s = { 0 };
+    ginq_pick_st(*wkid, *pcdnr, (Ginq_type)*type, errind, &s);
+    if (*errind)
+        return;
+    *istat = s.init_status;
+    *isgna = s.init_pick.seg_name;
+    *ipcid = s.init_pick.pick_id;
+    *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+}
+
+/* GQSTS(WKID, STDNR, MLDR, ERRIND, MODE, ESW, LOSTR, ISTR, PET, EAREA, BUFLEN, INIPOS, LDR,
+ *       DATREC) -- RAL's argument list (MLDR third; docs/BINDING.md) */
+FAPI void FNAME(gqsts, GQSTS)(const fint *wkid, const fint *stdnr, const fint *mldr,
+                              fint *errind, fint *mode, fint *esw, fint *lostr, char *istr,
+                              fint *pet, freal *earea, fint *buflen, fint *inipos, fint *ldr,
+                              char *datrec, size_t istr_len, size_t datrec_len)
+{
+    Gstring_st s = { 0 };
+    s.init_string = istr_len < SIZE_MAX ? alloc_array(istr_len + 1, 1) : NULL;
+    if (!s.init_string) {
+        *errind = 300;
+        return;
+    }
+    s.init_string[0] = '\0';
+    s.init_string_size = istr_len + 1;
+    ginq_string_st(*wkid, *stdnr, errind, &s);
+    if (!*errind) {
+        *lostr = fill_fstr(s.init_string, istr, istr_len);
+        *buflen = s.in_buf_size;
+        *inipos = s.init_cur_pos;
+        *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.init_string);
+}
+
+/* The outputs common to the default-data inquiries: element N of the prompt/echo types
+ * (N = 0: only their number OL). Returns ERRIND (0, 2001, 2002 or 300). */
+static fint def_out(const Gdef_in *d, fint n, fint mldr, fint *ol, fint *pet, freal *earea,
+                    fint *ldr, char *datrec, size_t datrec_len)
+{
+    *ol = d->pets.num_ints;
+    if (n < 0 || n > d->pets.num_ints)
+        return 2002;
+    if (n > 0)
+        *pet = d->pets.ints[n - 1];
+    earea[0] = (freal)d->echo_area.x_min;
+    earea[1] = (freal)d->echo_area.x_max;
+    earea[2] = (freal)d->echo_area.y_min;
+    earea[3] = (freal)d->echo_area.y_max;
+    return record_out(&d->in_data, mldr, ldr, datrec, datrec_len);
+}
+
+/* Room for the first n prompt/echo types (n <= 0: none). Returns -1 when out of memory. */
+static int pets_buffer(Gdef_in *d, fint n)
+{
+    d->pets = (Gint_list){ n > 0 ? n : 0, NULL };
+    if (n > 0 && !(d->pets.ints = alloc_array((size_t)n, sizeof(Gint))))
+        return -1;
+    return 0;
+}
+
+/* GQDLC(WTYPE, LCDNR, N, MLDR, ERRIND, DPX, DPY, OL, PET, EAREA, LDR, DATREC) */
+FAPI void FNAME(gqdlc, GQDLC)(const fint *wtype, const fint *lcdnr, const fint *n,
+                              const fint *mldr, fint *errind, freal *dpx, freal *dpy,
+                              fint *ol, fint *pet, freal *earea, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gdef_loc s = { 0 };
+    if (pets_buffer(&s.dev, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_loc_data(*wtype, *lcdnr, errind, &s);
+    if (!*errind) {
+        *dpx = (freal)s.loc_pos.x;
+        *dpy = (freal)s.loc_pos.y;
+        *errind = def_out(&s.dev, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDSK(WTYPE, SKDNR, N, MLDR, ERRIND, DBUFSK, OL, PET, EAREA, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqdsk, GQDSK)(const fint *wtype, const fint *skdnr, const fint *n,
+                              const fint *mldr, fint *errind, fint *dbufsk, fint *ol,
+                              fint *pet, freal *earea, fint *buflen, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gdef_stroke s = { 0 };
+    if (pets_buffer(&s.dev, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_stroke_data(*wtype, *skdnr, errind, &s);
+    if (!*errind) {
+        *dbufsk = s.max_buf_size;
+        *buflen = s.buf_size;
+        *errind = def_out(&s.dev, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDVL(WTYPE, VLDNR, N, MLDR, ERRIND, DVAL, OL, PET, EAREA, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(gqdvl, GQDVL)(const fint *wtype, const fint *vldnr, const fint *n,
+                              const fint *mldr, fint *errind, freal *dval, fint *ol,
+                              fint *pet, freal *earea, freal *loval, freal *hival, fint *ldr,
+                              char *datrec, size_t datrec_len)
+{
+    Gdef_val s = { 0 };
+    if (pets_buffer(&s.dev, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_val_data(*wtype, *vldnr, errind, &s);
+    if (!*errind) {
+        *dval = (freal)s.value;
+        *loval = (freal)s.low_value;
+        *hival = (freal)s.high_value;
+        *errind = def_out(&s.dev, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDCH(WTYPE, CHDNR, N, MLDR, ERRIND, MALT, OL, PET, EAREA, LDR, DATREC) */
+FAPI void FNAME(gqdch, GQDCH)(const fint *wtype, const fint *chdnr, const fint *n,
+                              const fint *mldr, fint *errind, fint *malt, fint *ol,
+                              fint *pet, freal *earea, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gdef_choice s = { 0 };
+    if (pets_buffer(&s.dev, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_choice_data(*wtype, *chdnr, errind, &s);
+    if (!*errind) {
+        *malt = s.max_choices;
+        *errind = def_out(&s.dev, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDPK(WTYPE, PCDNR, N, MLDR, ERRIND, OL, PET, EAREA, LDR, DATREC) */
+FAPI void FNAME(gqdpk, GQDPK)(const fint *wtype, const fint *pcdnr, const fint *n,
+                              const fint *mldr, fint *errind, fint *ol, fint *pet,
+                              freal *earea, fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gdef_in s = { 0 };
+    if (pets_buffer(&s, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_pick_data(*wtype, *pcdnr, errind, &s);
+    if (!*errind)
+        *errind = def_out(&s, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    free(s.pets.ints);
+}
+
+/* GQDST(WTYPE, STDNR, N, MLDR, ERRIND, MBUFF, OL, PET, EAREA, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqdst, GQDST)(const fint *wtype, const fint *stdnr, const fint *n,
+                              const fint *mldr, fint *errind, fint *mbuff, fint *ol,
+                              fint *pet, freal *earea, fint *buflen, fint *ldr, char *datrec,
+                              size_t datrec_len)
+{
+    Gdef_string s = { 0 };
+    if (pets_buffer(&s.dev, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_string_data(*wtype, *stdnr, errind, &s);
+    if (!*errind) {
+        *mbuff = s.max_buf_size;
+        *buflen = s.buf_size;
+        *errind = def_out(&s.dev, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQLI(WTYPE, ERRIND, NLCD, NSKD, NVLD, NCHD, NPCD, NSTD) */
+FAPI void FNAME(gqli, GQLI)(const fint *wtype, fint *errind, fint *nlcd, fint *nskd,
+                            fint *nvld, fint *nchd, fint *npcd, fint *nstd)
+{
+    Gnum_in n = { 0 };
+    ginq_num_avail_in(*wtype, errind, &n);
+    if (*errind)
+        return;
+    *nlcd = n.loc;
+    *nskd = n.stroke;
+    *nvld = n.val;
+    *nchd = n.choice;
+    *npcd = n.pick;
+    *nstd = n.string;
+}
+
+/* GQIQOV(ERRIND, WKID, ICL, IDNR) */
+FAPI void FNAME(gqiqov, GQIQOV)(fint *errind, fint *wkid, fint *icl, fint *idnr)
+{
+    Gint w = 0, n = 0;
+    Gin_class c = GIN_NONE;
+    ginq_in_overf(errind, &w, &c, &n);
+    if (*errind)
+        return;
+    *wkid = w;
+    *icl = c;
+    *idnr = n;
+}
+
+/* GQSIM(ERRIND, FLAG) */
+FAPI void FNAME(gqsim, GQSIM)(fint *errind, fint *flag)
+{
+    Gsimult_events f = GSIMULT_NO_MORE;
+    ginq_more_simult_events(errind, &f);
+    if (!*errind)
+        *flag = f;
+}

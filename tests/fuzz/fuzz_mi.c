@@ -1,0 +1,75 @@
+/*
+ * fuzz_mi.c -- fuzz target for the metafile input workstation (untrusted input): the bytes
+ * are opened as a GKS metafile (MI workstation, through an anonymous memory file), and
+ * every item is read with GET ITEM TYPE / READ ITEM and performed with INTERPRET ITEM onto
+ * an active null workstation, until the END item or the first read error. Errors are
+ * expected; crashes, sanitizer reports, hangs and unbounded allocation are bugs.
+ * libFuzzer entry point (scripts/fuzz.sh), replayed over tests/fuzz/corpus_mi by the ctest
+ * `fuzz_mi_replay` (fuzz_replay.c) in every build.
+ */
+#define _GNU_SOURCE
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/mman.h>
+#include <unistd.h>
+#include <gks.h>
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static int n_errors; /* errors reported by the current input (the handler has no context) */
+
+static void count_errors(Gint err, Gint fct, const char *file)
+{
+    (void)err;
+    (void)fct;
+    (void)file;
+    n_errors++;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    int fd = memfd_create("fuzz_mi", 0);
+    if (fd < 0)
+        return 0;
+    size_t done = 0;
+    while (done < size) {
+        ssize_t k = write(fd, data + done, size - done);
+        if (k <= 0) {
+            close(fd);
+            return 0;
+        }
+        done += (size_t)k;
+    }
+    char name[64];
+    snprintf(name, sizeof name, "/proc/self/fd/%d", fd);
+    gset_err_hand(count_errors, NULL);
+    gopen_gks(NULL, 0);
+    gopen_ws(1, NULL, GWS_TYPE_NULL);
+    gactivate_ws(1);
+    n_errors = 0;
+    gopen_ws(2, name, GWS_TYPE_MI);
+    char *buf = NULL;
+    for (int items = 0; n_errors == 0 && items < 100000; items++) {
+        Gint type = 0, len = 0;
+        gget_item_type(2, &type, &len);
+        if (n_errors)
+            break;
+        if ((size_t)len > size) /* a length the file cannot hold was accepted */
+            abort();
+        char *b = realloc(buf, (size_t)len + 1);
+        if (!b)
+            break;
+        buf = b;
+        gread_item(2, len, buf);
+        if (n_errors || type == 0)
+            break;
+        ginterpret_item(type, len, buf);
+        n_errors = 0; /* interpretation errors are expected: go on with the next item */
+    }
+    free(buf);
+    gemergency_close_gks();
+    close(fd);
+    return 0;
+}
