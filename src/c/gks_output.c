@@ -904,7 +904,7 @@ static int emit_stored(target *t, const double S[3][4], const double box[6], int
     norm_ctx nc;
     double sn[3][4];
     gks_xform_mat34_multiply(S, sp->bound->norm, sn); /* WC3 -> final NDC3 */
-    if (norm_from(&nc, sp->kind == GKS_SEG_TEXT ? sn : S, box, clip_on))
+    if (norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
         return 0;
     t->a = &sp->bound->attrs;
     memcpy(t->pat_m, sn, sizeof sn);
