@@ -26,7 +26,7 @@ static gks_seg_store *store(void)
 }
 
 /* The picture of every workstation holding segment s has changed. */
-static void picture_changed(const gks_segment *s)
+static void picture_changed(const gks_segment *s, int fctid)
 {
     for (int i = 0; i < s->n_ws; i++) {
         gks_ws *ws = gks_ws_lookup(s->ws[i]);
@@ -35,7 +35,7 @@ static void picture_changed(const gks_segment *s)
         if (ws->irg_mode == GIRG_ALLOWED) {
             int err = gks_ws_regenerate(ws);
             if (err)
-                gks_error_report(err, GFN_SSGT); /* storage: the only possible failure */
+                gks_error_report(err, fctid);
         } else {
             ws->new_frame = GNEW_YES;
         }
@@ -113,7 +113,7 @@ GKS_API void gdel_seg(Gint seg_name)
         GKS_FAIL(125, GFN_DSG);
     GKS_MF(GFN_DSG, GKSM_ITEM_DEL_SEG, "i", seg_name);
     if (s->vis)
-        picture_changed(s);
+        picture_changed(s, GFN_DSG);
     gks_seg_delete(store(), seg_name);
 }
 
@@ -158,7 +158,7 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
     memcpy(s->tran, tran_matrix, sizeof s->tran);
     GKS_MF(GFN_SSGT3, GKSM_ITEM_SEG_TRAN3, "iR", seg_name, 12, &tran_matrix[0][0]);
     if (s->vis)
-        picture_changed(s);
+        picture_changed(s, GFN_SSGT3);
 }
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
@@ -176,7 +176,7 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
     memcpy(s->tran, m, sizeof s->tran);
     GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
     if (s->vis)
-        picture_changed(s);
+        picture_changed(s, GFN_SSGT);
 }
 
 GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
@@ -193,7 +193,7 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
     if (v == s->vis)
         return;
     s->vis = v;
-    picture_changed(s);
+    picture_changed(s, GFN_SVIS);
 }
 
 GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
@@ -223,7 +223,7 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
         return;
     s->pri = pri;
     if (s->vis)
-        picture_changed(s);
+        picture_changed(s, GFN_SSGP);
 }
 
 GKS_API void gset_det(Gint seg_name, Gseg_det det)
