@@ -248,7 +248,11 @@ static void c_INSK(void)
 }
 static void c_INVL(void) { ginit_val(1, 1, 0.5, 1, &earea, 0, 1, NULL); }
 static void c_INCH(void) { ginit_choice(1, 1, GIN_STATUS_OK, 1, 1, &earea, NULL); }
-static void c_INPK(void) { Gpick p = { 1, 1 }; ginit_pick(1, 1, GIN_STATUS_OK, &p, 1, &earea, NULL); }
+static void c_INPK(void)
+{
+    Gpick p = { 1, 1 };
+    ginit_pick(1, 1, GIN_STATUS_OK, &p, 1, &earea, NULL);
+}
 static void c_INST(void) { ginit_string(1, 1, "ab", 1, &earea, 10, 1, NULL); }
 static void c_SLCM(void) { gset_loc_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
 static void c_SSKM(void) { gset_stroke_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
@@ -257,7 +261,13 @@ static void c_SCHM(void) { gset_choice_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
 static void c_SPKM(void) { gset_pick_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
 static void c_SSTM(void) { gset_string_mode(1, 1, GOP_REQ, GSWITCH_ECHO); }
 static void c_RQLC(void) { Gin_status s; Gloc l; greq_loc(1, 1, &s, &l); }
-static void c_RQSK(void) { Gin_status s; Gpoint p[4]; Gstroke k = { 0, 4, p }; greq_stroke(1, 1, &s, &k); }
+static void c_RQSK(void)
+{
+    Gin_status s;
+    Gpoint p[4];
+    Gstroke k = { 0, 4, p };
+    greq_stroke(1, 1, &s, &k);
+}
 static void c_RQVL(void) { Gin_status s; Gfloat v; greq_val(1, 1, &s, &v); }
 static void c_RQCH(void) { Gin_status s; Gint c; greq_choice(1, 1, &s, &c); }
 static void c_RQPK(void) { Gin_status s; Gpick p; greq_pick(1, 1, &s, &p); }

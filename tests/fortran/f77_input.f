@@ -9,7 +9,7 @@
       INTEGER N, ERRS(40), FCTS(40), FILS(40)
       COMMON /ERRREC/ N, ERRS, FCTS, FILS
       INTEGER NW
-      PARAMETER (NW=18)
+      PARAMETER (NW=36)
       INTEGER WERR(NW), WFCT(NW), WFIL(NW)
       INTEGER NFAIL, I, ISTAT, ITNR, ICH, ISG, IPK, LOSTR, NP, IERR
       INTEGER IWK, ICL, IDNR, MODE, IESW, IPET, LDR, IOL, IBUF, IPOS
@@ -18,8 +18,8 @@
       CHARACTER*80 DATREC(2)
       CHARACTER*20 STR
       DATA WERR /7, 7, 38, 38, 38, 38, 38, 38, 38, 38, 38, 38, 151,
-     +   150, 150, 38, 20, 25/
-      DATA WFIL /0, 17*6/
+     +   150, 150, 38, 20, 25, 14*38, 4*150/
+      DATA WFIL /0, 35*6/
       WFCT(1) = ERQLC
       WFCT(2) = ERQLC
       WFCT(3) = EINLC
@@ -38,6 +38,24 @@
       WFCT(16) = EFLUSH
       WFCT(17) = ERQLC
       WFCT(18) = ERQLC
+      WFCT(19) = EINSK
+      WFCT(20) = EINVL
+      WFCT(21) = EINCH
+      WFCT(22) = EINPK
+      WFCT(23) = ESSKM
+      WFCT(24) = ESVLM
+      WFCT(25) = ESCHM
+      WFCT(26) = ESPKM
+      WFCT(27) = ESSTM
+      WFCT(28) = ESMSK
+      WFCT(29) = ESMVL
+      WFCT(30) = ESMCH
+      WFCT(31) = ESMPK
+      WFCT(32) = ESMST
+      WFCT(33) = EGTSK
+      WFCT(34) = EGTVL
+      WFCT(35) = EGTCH
+      WFCT(36) = EGTPK
       N = 0
       NFAIL = 0
       DATREC(1) = ' '
@@ -115,6 +133,55 @@
       CALL GQSIM(IERR, IFLAG)
       CALL CHKI('GQSIM errind', IERR, 0, NFAIL)
       CALL CHKI('GQSIM flag', IFLAG, GNMORE, NFAIL)
+!     every other entry point links and reports its error
+      XA(1) = 0.1
+      YA(1) = 0.2
+      CALL GINSK(1, 1, 0, 1, XA, YA, 1, 0.0, 1.0, 0.0, 1.0, 10, 1,
+     +   DATREC)
+      CALL GINVL(1, 1, 0.5, 1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 1, DATREC)
+      CALL GINCH(1, 1, GOK, 1, 1, 0.0, 1.0, 0.0, 1.0, 1, DATREC)
+      CALL GINPK(1, 1, GOK, 1, 1, 1, 0.0, 1.0, 0.0, 1.0, 1, DATREC)
+      CALL GSSKM(1, 1, GSAMPL, GNECHO)
+      CALL GSVLM(1, 1, GEVENT, GECHO)
+      CALL GSCHM(1, 1, GREQU, GECHO)
+      CALL GSPKM(1, 1, GREQU, GECHO)
+      CALL GSSTM(1, 1, GREQU, GECHO)
+      CALL GSMSK(1, 1, 10, ITNR, NP, XA, YA)
+      CALL GSMVL(1, 1, VAL)
+      CALL GSMCH(1, 1, ISTAT, ICH)
+      CALL GSMPK(1, 1, ISTAT, ISG, IPK)
+      CALL GSMST(1, 1, LOSTR, STR)
+      CALL GGTSK(10, ITNR, NP, XA, YA)
+      CALL GGTVL(VAL)
+      CALL GGTCH(ISTAT, ICH)
+      CALL CHKI('GGTCH STAT', ISTAT, GNONE, NFAIL)
+      CALL GGTPK(ISTAT, ISG, IPK)
+      CALL GQSKS(1, 1, GSET, 10, 2, IERR, MODE, IESW, ITNR, NP, XA, YA,
+     +   IPET, EAREA, IBUF, LDR, DATREC)
+      CALL CHKI('GQSKS', IERR, 38, NFAIL)
+      CALL GQVLS(1, 1, 2, IERR, MODE, IESW, VAL, IPET, EAREA, PX, PY,
+     +   LDR, DATREC)
+      CALL CHKI('GQVLS', IERR, 38, NFAIL)
+      CALL GQCHS(1, 1, 2, IERR, MODE, IESW, ISTAT, ICH, IPET, EAREA,
+     +   LDR, DATREC)
+      CALL CHKI('GQCHS', IERR, 38, NFAIL)
+      CALL GQPKS(1, 1, GSET, 2, IERR, MODE, IESW, ISTAT, ISG, IPK, IPET,
+     +   EAREA, LDR, DATREC)
+      CALL CHKI('GQPKS', IERR, 38, NFAIL)
+      CALL GQDSK(GWSNUL, 1, 1, 2, IERR, IBUF, IOL, IPET, EAREA, IPOS,
+     +   LDR, DATREC)
+      CALL CHKI('GQDSK', IERR, 38, NFAIL)
+      CALL GQDVL(GWSNUL, 1, 1, 2, IERR, VAL, IOL, IPET, EAREA, PX, PY,
+     +   LDR, DATREC)
+      CALL CHKI('GQDVL', IERR, 38, NFAIL)
+      CALL GQDCH(GWSNUL, 1, 1, 2, IERR, ICH, IOL, IPET, EAREA, LDR,
+     +   DATREC)
+      CALL CHKI('GQDCH', IERR, 38, NFAIL)
+      CALL GQDPK(GWSNUL, 1, 1, 2, IERR, IOL, IPET, EAREA, LDR, DATREC)
+      CALL CHKI('GQDPK', IERR, 38, NFAIL)
+      CALL GQDST(0, 1, 1, 2, IERR, IBUF, IOL, IPET, EAREA, IPOS, LDR,
+     +   DATREC)
+      CALL CHKI('GQDST type 0', IERR, 22, NFAIL)
       CALL GDAWK(1)
       CALL GCLWK(1)
       CALL GCLKS
