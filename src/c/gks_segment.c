@@ -17,6 +17,7 @@
 #include "gks_segment.h"
 #include "gks_state.h"
 #include "gks_ws.h"
+#include "gks_xform.h"
 #include <math.h>
 #include <string.h>
 
@@ -170,10 +171,7 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
         return;
     /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
      * transformation is the 3-D one with identity z row and no z coupling). */
-    double m[3][4] = { { tran_matrix[0][0], tran_matrix[0][1], 0, tran_matrix[0][2] },
-                       { tran_matrix[1][0], tran_matrix[1][1], 0, tran_matrix[1][2] },
-                       { 0, 0, 1, 0 } };
-    memcpy(s->tran, m, sizeof s->tran);
+    gks_xform_mat23_to_mat34(tran_matrix, s->tran);
     GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
     if (s->vis)
         picture_changed(s, GFN_SSGT);
@@ -329,10 +327,9 @@ static void insert_any(int fctid, Gint seg_name, const double m[3][4])
 
 GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    const double m[3][4] = { { tran_matrix[0][0], tran_matrix[0][1], 0, tran_matrix[0][2] },
-                             { tran_matrix[1][0], tran_matrix[1][1], 0, tran_matrix[1][2] },
-                             { 0, 0, 1, 0 } };
-    insert_any(GFN_INSG, seg_name, m);
+    double m[3][4];
+    gks_xform_mat23_to_mat34(tran_matrix, m);
+    insert_any(GFN_INSG, seg_name, (const double (*)[4])m);
 }
 
 GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix)

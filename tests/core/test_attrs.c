@@ -13,36 +13,7 @@
 #include "prim_capture.h"
 #include "core_util.h"
 #include "png_util.h"
-
-static int setup(void **state)
-{
-    (void)state;
-    enter_state(GST_WSAC);
-    cap_start();
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    cap_stop();
-    reset_gks();
-    return 0;
-}
-
-static void expect_error(int err, int fct)
-{
-    if (n_captured != 1 || captured[0].err != err || captured[0].fct != fct)
-        fail_msg("got %d errors, first %d (fct %d); want %d (fct %d)", n_captured,
-                 n_captured ? captured[0].err : 0, n_captured ? captured[0].fct : -1, err, fct);
-    n_captured = 0;
-}
-
-static void expect_no_error(void)
-{
-    if (n_captured)
-        fail_msg("unexpected error %d (fct %d)", captured[0].err, captured[0].fct);
-}
+#include "cap_fixture.h"
 
 /* ------------------------------------------------------------------ defaults */
 static void test_defaults(void **state)

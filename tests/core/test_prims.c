@@ -13,38 +13,7 @@
 #include "prim_capture.h"
 #include "core_util.h"
 #include "png_util.h"
-
-/* GKS open, one active null workstation (id 1), capture on, default transformation
- * (WC = NDC unit square, clipping on). */
-static int setup(void **state)
-{
-    (void)state;
-    enter_state(GST_WSAC);
-    cap_start();
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    cap_stop();
-    reset_gks();
-    return 0;
-}
-
-static void expect_error(int err, int fct)
-{
-    if (n_captured != 1 || captured[0].err != err || captured[0].fct != fct)
-        fail_msg("got %d errors, first %d (fct %d); want %d (fct %d)", n_captured,
-                 n_captured ? captured[0].err : 0, n_captured ? captured[0].fct : -1, err, fct);
-    n_captured = 0;
-}
-
-static void expect_no_error(void)
-{
-    if (n_captured)
-        fail_msg("unexpected error %d (fct %d)", captured[0].err, captured[0].fct);
-}
+#include "cap_fixture.h"
 
 /* ------------------------------------------------------------------ POLYMARKER */
 static void test_markers_clipped_by_centre(void **state)
