@@ -53,38 +53,12 @@ static void usage(void)
             "                [--ambient A] [--tessellate N] [--size WxH] scene.nff out.png\n");
 }
 
-static void warn_stderr(void *ctx, const char *msg)
-{
-    (void)ctx;
-    fprintf(stderr, "%s\n", msg);
-}
-
-/* Integer option value in [lo, hi]. */
-static int int_arg(const char *s, long lo, long hi, int *v)
-{
-    char *e;
-    long x = strtol(s, &e, 10);
-    if (!*s || *e || x < lo || x > hi)
-        return -1;
-    *v = (int)x;
-    return 0;
-}
-
-/* Samples per pixel are m x m strata. */
-static int perfect_square(int n)
-{
-    int m = 1;
-    while (m * m < n)
-        m++;
-    return m * m == n;
-}
-
 int main(int argc, char **argv)
 {
     scene_gks_options go = { .threads = -1 };
     scene_io_options io;
     scene_io_options_default(&io);
-    io.warn = warn_stderr;
+    io.warn = scene_gks_warn_stderr;
     int stats = 0, w = 0, h = 0;
     const char *pos[2];
     int npos = 0;
@@ -96,13 +70,13 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--stats") == 0) {
             stats = 1;
         } else if (strcmp(a, "--threads") == 0 && v) {
-            bad = int_arg(v, 0, 256, &go.threads), i++;
+            bad = scene_gks_int_arg(v, 0, 256, &go.threads), i++;
         } else if (strcmp(a, "--samples") == 0 && v) {
-            bad = int_arg(v, 1, 256, &go.samples) || !perfect_square(go.samples), i++;
+            bad = scene_gks_int_arg(v, 1, 256, &go.samples) || !scene_gks_perfect_square(go.samples), i++;
         } else if (strcmp(a, "--depth") == 0 && v) {
-            bad = int_arg(v, 1, 64, &go.depth), i++;
+            bad = scene_gks_int_arg(v, 1, 64, &go.depth), i++;
         } else if (strcmp(a, "--tessellate") == 0 && v) {
-            bad = int_arg(v, 3, 1024, &io.tessellate), i++;
+            bad = scene_gks_int_arg(v, 3, 1024, &io.tessellate), i++;
         } else if (strcmp(a, "--ambient") == 0 && v) {
             char *e;
             go.ambient = strtod(v, &e);

@@ -331,3 +331,27 @@ void scene_gks_print_stats(const scene_gks_result *r)
            r->render_s, r->frame_s);
     fflush(stdout);
 }
+
+void scene_gks_warn_stderr(void *ctx, const char *msg)
+{
+    (void)ctx;
+    fprintf(stderr, "%s\n", msg);
+}
+
+int scene_gks_int_arg(const char *s, long lo, long hi, int *v)
+{
+    char *e;
+    long x = strtol(s, &e, 10);
+    if (!*s || *e || x < lo || x > hi)
+        return -1;
+    *v = (int)x;
+    return 0;
+}
+
+int scene_gks_perfect_square(int n)
+{
+    int m = 1;
+    while (m * m < n)
+        m++;
+    return m * m == n;
+}

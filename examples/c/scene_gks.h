@@ -56,4 +56,12 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
  * "time draw=.. build=.. render=.. frame=.." (seconds) to stdout. */
 void scene_gks_print_stats(const scene_gks_result *res);
 
+/* Command-line helpers shared by the viewers. */
+/* A scene_io warning callback printing to standard error. */
+void scene_gks_warn_stderr(void *ctx, const char *msg);
+/* Integer option value s in [lo, hi] into *v: 0, or -1 if s is not such an integer. */
+int scene_gks_int_arg(const char *s, long lo, long hi, int *v);
+/* Whether n is a perfect square (samples per pixel are m x m strata). */
+int scene_gks_perfect_square(int n);
+
 #endif /* GKS3D_SCENE_GKS_H */
