@@ -536,9 +536,9 @@ typedef struct {
 /* HLHSR modes (SET HLHSR MODE, per workstation). */
 enum {
     GHLHSR_NONE = 0,        /* areas drawn in order */
-    GHLHSR_HIDDEN_LINE = 1, /* areas become outlines, hidden lines removed (not yet: 511) */
+    GHLHSR_HIDDEN_LINE = 1, /* areas become outlines, hidden lines removed */
     GHLHSR_ZBUFFER = 2,     /* z-buffer */
-    GHLHSR_PAINTER = 3,     /* depth sorted (not yet: 511) */
+    GHLHSR_PAINTER = 3,     /* areas depth sorted (mean DC depth), drawn far to near */
     GHLHSR_RAYTRACE = 4     /* ray tracing of FILL AREAs with lighting (PNG workstations) */
 };
 #define GKS_MAX_VIEW_IND 20 /* view table entries 0..20; 0 is fixed */
