@@ -41,6 +41,7 @@ typedef struct {
     gks_xform_clip clip;       /* in NDC3 (w = 1) */
     int clip_on;
     double box[6];             /* the clipping volume: the viewport 3 when created */
+    gks_segment *seg;          /* the open segment (current state only), else NULL */
 } norm_ctx;
 
 /* The open segment, or NULL. */
@@ -59,6 +60,7 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
     memcpy(nc->pat, m, sizeof nc->pat);
     memcpy(nc->box, box, sizeof nc->box);
     nc->clip_on = clip_on;
+    nc->seg = NULL;
     gks_xform_clip_init(&nc->clip);
     if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
         return -1;
@@ -90,9 +92,10 @@ static int norm_setup(norm_ctx *nc)
         clip_on = sl->clip_ind == GIND_CLIP;
     }
     const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
-    const gks_segment *seg = open_segment();
+    gks_segment *seg = open_segment();
     if (norm_from(nc, pm, box, clip_on))
         return -1;
+    nc->seg = seg;
     memcpy(nc->n, n, sizeof nc->n);
     memcpy(nc->pat, n, sizeof nc->pat);
     if (seg) {
@@ -126,7 +129,7 @@ typedef struct {
 
 static void target_current(target *t, const norm_ctx *nc)
 {
-    const gks_segment *seg = open_segment();
+    const gks_segment *seg = nc->seg;
     memset(t, 0, sizeof *t);
     t->a = &gks_ctx()->sl->attrs;
     memcpy(t->pat_m, nc->pat, sizeof t->pat_m);
@@ -364,7 +367,7 @@ static int send_pieces(gks_ws *ws, gks_prim *p, const pieces *b)
  * clipping volume. Returns 0, 300 or 301. */
 static int record(const norm_ctx *nc, gks_seg_prim *sp, const pt_src *src, size_t n)
 {
-    gks_segment *seg = open_segment();
+    gks_segment *seg = nc->seg;
     if (!seg)
         return 0;
     gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
@@ -855,7 +858,7 @@ static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca
     mf_out(fctid, &nc,
            (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr,
                           .nx = ca->dims.size_x, .ny = ca->dims.size_y, .colr = ca->colr_array });
-    if (open_segment()) { /* the corners are stored as P, Q, R in NDC3 */
+    if (nc.seg) { /* the corners are stored as P, Q, R in NDC3 */
         double o[3][3];
         for (int i = 0; i < 3; i++)
             gks_xform_mat34_point(nc.pn, pqr[i], o[i]);
@@ -1032,7 +1035,7 @@ int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
         return 0;
     double M[3][4], total[3][4];
     gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
-    gks_segment *open = open_segment();
+    gks_segment *open = cur.seg;
     if (open)
         gks_xform_mat34_multiply(open->tran, M, total);
     else

@@ -343,33 +343,49 @@ static void i_text(interp *ip, int three)
     gks_free(s);
 }
 
+/* The colour-index grid of a cell array or pattern: NX, NY, then NX*NY indices, which must
+ * end the record. Returns the indices (the caller frees them), or NULL with d->err set
+ * (165: bad counts, garbage or trailing data; 300: storage). */
+static Gint *d_index_grid(dec *d, Gint *nx_out, Gint *ny_out)
+{
+    long nx = d_long(d), ny = d_long(d);
+    if (!d->err && (nx < 1 || ny < 1 || nx > INT_MAX || ny > INT_MAX ||
+                    (size_t)nx > gksm_cur_left(&d->c) / field_w(d, 'i') / (size_t)ny))
+        d->err = 165;
+    if (d->err)
+        return NULL;
+    size_t n = (size_t)nx * (size_t)ny;
+    Gint *colr = gks_alloc_array(n, sizeof *colr);
+    if (!colr) {
+        d->err = 300;
+        return NULL;
+    }
+    for (size_t i = 0; i < n; i++)
+        colr[i] = d_int(d);
+    if (!d->err && gksm_cur_left(&d->c) != 0)
+        d->err = 165;
+    if (d->err) {
+        gks_free(colr);
+        return NULL;
+    }
+    *nx_out = (Gint)nx;
+    *ny_out = (Gint)ny;
+    return colr;
+}
+
 static void i_cell_array(interp *ip, int dim)
 {
     dec *d = &ip->d;
     double v[9] = { 0 };
     for (int i = 0; i < 3; i++)
         d_reals(d, v + 3 * i, dim);
-    long nx = d_long(d), ny = d_long(d);
-    if (!d->err && (nx < 1 || ny < 1 || nx > INT_MAX || ny > INT_MAX ||
-                    (size_t)nx > gksm_cur_left(&d->c) / field_w(d, 'i') / (size_t)ny))
-        d->err = 165;
-    if (d->err)
+    Gint nx, ny;
+    Gint *colr = d->err ? NULL : d_index_grid(d, &nx, &ny);
+    if (!colr)
         return;
-    size_t n = (size_t)nx * (size_t)ny;
-    Gint *colr = gks_alloc_array(n, sizeof *colr);
-    if (!colr) {
-        d->err = 300;
-        return;
-    }
-    for (size_t i = 0; i < n; i++)
-        colr[i] = d_int(d);
-    if (!d->err && gksm_cur_left(&d->c) != 0)
-        d->err = 165;
-    if (!d->err) {
-        Gparal par = { { v[0], v[1], v[2] }, { v[3], v[4], v[5] }, { v[6], v[7], v[8] } };
-        Gpat_rep ca = { { (Gint)nx, (Gint)ny }, colr };
-        WITH_XF(ip, 1, gcell_array3(&par, &ca));
-    }
+    Gparal par = { { v[0], v[1], v[2] }, { v[3], v[4], v[5] }, { v[6], v[7], v[8] } };
+    Gpat_rep ca = { { nx, ny }, colr };
+    WITH_XF(ip, 1, gcell_array3(&par, &ca));
     gks_free(colr);
 }
 
@@ -377,26 +393,12 @@ static void i_pat_rep(interp *ip)
 {
     dec *d = &ip->d;
     int ind = d_int(d);
-    long nx = d_long(d), ny = d_long(d);
-    if (!d->err && (nx < 1 || ny < 1 || nx > INT_MAX || ny > INT_MAX ||
-                    (size_t)nx > gksm_cur_left(&d->c) / field_w(d, 'i') / (size_t)ny))
-        d->err = 165;
-    if (d->err)
+    Gint nx, ny;
+    Gint *colr = d->err ? NULL : d_index_grid(d, &nx, &ny);
+    if (!colr)
         return;
-    size_t n = (size_t)nx * (size_t)ny;
-    Gint *colr = gks_alloc_array(n, sizeof *colr);
-    if (!colr) {
-        d->err = 300;
-        return;
-    }
-    for (size_t i = 0; i < n; i++)
-        colr[i] = d_int(d);
-    if (!d->err && gksm_cur_left(&d->c) == 0) {
-        Gpat_rep rep = { { (Gint)nx, (Gint)ny }, colr };
-        EACH_WS(gset_pat_rep(ws_, ind, &rep));
-    } else if (!d->err) {
-        d->err = 165;
-    }
+    Gpat_rep rep = { { nx, ny }, colr };
+    EACH_WS(gset_pat_rep(ws_, ind, &rep));
     gks_free(colr);
 }
 
