@@ -194,9 +194,12 @@ enum {
                                     out (floats): [0] build seconds, [1] render seconds, of the
                                     last traced picture. Capacity 8 ints / 2 floats (less: 182). */
     GESC_RT_SPD = -109,          /* ints[1] 0/1: SPD procedure (rays at pixel corners) */
-    GESC_PNG_SUPERSAMPLE = -110  /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
+    GESC_PNG_SUPERSAMPLE = -110, /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
                                     samples per pixel (box filter); applies at once while the
                                     frame is empty, else from the next CLEAR WORKSTATION */
+    GESC_PNG_COMPRESSION = -111  /* ints[1] 0: fast PNG encoding (default; zlib run-length,
+                                    SUB filter), 1..9: zlib level with adaptive filters
+                                    (9 smallest files); for every file written from then on */
 };
 
 /* ---------------------------------------------------------------------------------

@@ -11,11 +11,12 @@
  * Both sides first draw an empty frame (buffers allocated and touched), then the timed
  * frame. Timed, in CPU seconds of the process (wall seconds in brackets; the machines
  * are shared): GKS: CLEAR WORKSTATION + the primitives + UPDATE WORKSTATION, which
- * box-filters to 8 bits and writes the PNG file at zlib level 6 (more than OSMesa's
- * read-back; "upd" is that part alone); OSMesa: glClear + draw + glFinish +
- * glReadPixels, and apart from that the time to write the read-back as a PNG file with
- * libpng's defaults (zlib level 6): "GKS/(llvmpipe+PNG)" compares like with like, two
- * programs that each leave the picture in a PNG file. Each run is a child process: its peak resident memory (getrusage
+ * box-filters to 8 bits and writes the PNG file with the workstation's default (fast)
+ * encoder settings (more than OSMesa's read-back; "upd" is that part alone); OSMesa:
+ * glClear + draw + glFinish + glReadPixels, and apart from that the time to write the
+ * read-back as a PNG file with the same encoder settings (zlib run-length strategy, SUB
+ * filter): "GKS/(llvmpipe+PNG)" compares like with like, two programs that each leave
+ * the picture in a PNG file. Each run is a child process: its peak resident memory (getrusage
  * ru_maxrss of the child) includes the generated input (24 B per GKS point).
  * Usage: bench_gks [-g] [-m K] [rows...]  with rows tri16:N, tri128:N, walk:M or "all" (the
  * default); -g: GKS only (no llvmpipe run), e.g. for profiling; -m K: HLHSR mode K
@@ -36,6 +37,8 @@
 #ifdef HAVE_OSMESA
 #include <GL/osmesa.h>
 #include <png.h>
+#include <setjmp.h>
+#include <zlib.h>
 #include <GL/gl.h>
 #endif
 
@@ -159,6 +162,33 @@ static double run_gks(work *w)
 }
 
 #ifdef HAVE_OSMESA
+/* rb: SIZE x SIZE RGBA, GL rows bottom-up; written top row first, alpha dropped. */
+static int write_png_like_gks(const char *path, const unsigned char *rb)
+{
+    FILE *fp = fopen(path, "wb");
+    if (!fp)
+        return -1;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, info ? &info : NULL);
+        fclose(fp);
+        return -1;
+    }
+    png_init_io(png, fp);
+    png_set_IHDR(png, info, SIZE, SIZE, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_compression_strategy(png, Z_RLE);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_write_info(png, info);
+    png_set_filler(png, 0, PNG_FILLER_AFTER);
+    for (int y = SIZE - 1; y >= 0; y--)
+        png_write_row(png, rb + (size_t)y * SIZE * 4);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    return fclose(fp) == 0 ? 0 : -1;
+}
+
 static double run_osmesa(work *w)
 {
     setenv("LP_NUM_THREADS", "0", 1);
@@ -214,17 +244,12 @@ static double run_osmesa(work *w)
     glReadPixels(0, 0, SIZE, SIZE, GL_RGBA, GL_UNSIGNED_BYTE, rb);
     double dt = now() - t0;
     wall_sec = wall() - w0;
-    /* Like for like with GKS's UPDATE: the read-back written as a PNG file (libpng's
-     * defaults: zlib level 6, adaptive filters, as the PNG workstation). Timed apart. */
+    /* Like for like with GKS's UPDATE: the read-back written as an 8-bit RGB PNG file
+     * with the PNG workstation's default encoder settings (zlib run-length strategy, SUB
+     * row filter; docs/WORKSTATIONS.md). Timed apart. */
     double tp = now();
-    png_image pi;
-    memset(&pi, 0, sizeof pi);
-    pi.version = PNG_IMAGE_VERSION;
-    pi.width = SIZE;
-    pi.height = SIZE;
-    pi.format = PNG_FORMAT_RGBA;
-    if (!png_image_write_to_file(&pi, "bench_osmesa.png", 0, rb, -SIZE * 4, NULL))
-        return -1; /* negative stride: GL rows are bottom-up */
+    if (write_png_like_gks("bench_osmesa.png", rb) != 0)
+        return -1;
     upd_sec = now() - tp;
     OSMesaDestroyContext(ctx);
     free(v);

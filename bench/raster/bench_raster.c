@@ -61,7 +61,7 @@ static int bench_tris(gks_raster_fb *fb, size_t n, double size, int equilateral,
     printf("%s%-4g %zu triangles: %.3f s (%.1f ns/triangle) rc %d\n",
            equilateral ? "eq" : "tri", size, n, dt, 1e9 * dt / n, rc);
     if (png)
-        gks_raster_fb_write_png(fb, png);
+        gks_raster_fb_write_png(fb, png, GKS_RASTER_PNG_FAST);
     free(p);
     free(c);
     return rc;
@@ -89,7 +89,7 @@ static int bench_walk(gks_raster_fb *fb, size_t n, const char *png)
     double dt = now() - t0;
     printf("walk    %zu points: %.3f s (%.1f ns/segment) rc %d\n", n, dt, 1e9 * dt / n, rc);
     if (png)
-        gks_raster_fb_write_png(fb, png);
+        gks_raster_fb_write_png(fb, png, GKS_RASTER_PNG_FAST);
     free(p);
     return rc;
 }

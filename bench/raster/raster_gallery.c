@@ -128,7 +128,7 @@ int main(int argc, char **argv)
         gks_raster_pt e[4] = {tr2[3 * t], tr2[3 * t + 1], tr2[3 * t + 2], tr2[3 * t]};
         gks_raster_polyline(fb, 4, e, &hl);
     }
-    int rc = gks_raster_fb_write_png(fb, argv[1]);
+    int rc = gks_raster_fb_write_png(fb, argv[1], GKS_RASTER_PNG_FAST);
     gks_raster_fb_free(fb);
     return rc;
 }

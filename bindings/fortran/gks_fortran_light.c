@@ -192,8 +192,8 @@ static int i10_field(const char *rec, size_t len, int i, Gint *out)
     return 0;
 }
 
-/* The integer ESCAPEs of the ray-tracing workstation from GESC: IDR(1) holds I10 fields,
- * columns 1-10 the workstation identifier, 11-20 and 21-30 the values (GESC_RT_*). Returns
+/* The integer ESCAPEs of the PNG and ray-tracing workstations from GESC: IDR(1) holds I10 fields,
+ * columns 1-10 the workstation identifier, 11-20 and 21-30 the values (GESC_RT_*, GESC_PNG_*). Returns
  * 1 when fctid is one of them (the escape has then been called, malformed records reaching
  * the core as empty data: error 182), 0 otherwise. Called by GESC in gks_fortran.c. */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len)
@@ -205,6 +205,8 @@ int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len)
     case GESC_RT_THREADS:
     case GESC_RT_PROGRESS:
     case GESC_RT_SPD:
+    case GESC_PNG_SUPERSAMPLE:
+    case GESC_PNG_COMPRESSION:
         nvals = 1;
         break;
     case GESC_RT_SAMPLES:

@@ -312,7 +312,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
     if (gks_check_state(GFN_ESC))
         return;
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
-    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_SUPERSAMPLE)
+    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)
         GKS_FAIL(182, GFN_ESC);

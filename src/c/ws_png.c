@@ -15,6 +15,9 @@
  * GESC_PNG_SUPERSAMPLE (ints[1] = s in 1..4) renders the following frames with s x s
  * samples per pixel (box-filtered to the image when written); it applies at once if the
  * current frame is still empty, else from the next CLEAR WORKSTATION. Default 1 (none).
+ * Compression: ESCAPE GESC_PNG_COMPRESSION (ints[1] = 0 fast, the default: zlib run-length
+ * strategy with the SUB row filter; 1..9: zlib level with libpng's adaptive row filters,
+ * 9 smallest) applies to every file written from then on.
  */
 #include "raster.h"
 #include "gks_alloc.h"
@@ -41,6 +44,7 @@ typedef struct png_ws {
     int written_any;    /* some file has been written */
     int frame_written;  /* the current frame has a file */
     int ss;             /* supersampling factor of the next framebuffer (anti-aliasing) */
+    int compression;    /* PNG compression: GKS_RASTER_PNG_FAST or a zlib level 1..9 */
     ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
     png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
 } png_ws;
@@ -81,6 +85,7 @@ static int png_open(gks_ws *ws)
     }
     p->frame = 1;
     p->ss = 1;
+    p->compression = GKS_RASTER_PNG_FAST;
     ws->priv = p;
     return 0;
 }
@@ -176,7 +181,7 @@ static int png_update(gks_ws *ws)
         snprintf(path, n, "%s.png", p->base);
     else
         snprintf(path, n, "%s-%03d.png", p->base, p->frame);
-    int r = gks_raster_fb_write_png(pic, path);
+    int r = gks_raster_fb_write_png(pic, path, p->compression);
     gks_free(path);
     if (r != GKS_RASTER_OK)
         return r == GKS_RASTER_E_NOMEM ? 300 : 303;
@@ -236,6 +241,13 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
             p->fb = NULL;
             return framebuffer(ws) ? 0 : 300;
         }
+        return 0;
+    }
+    if (func_id == GESC_PNG_COMPRESSION) {
+        if (in->num_ints < 2 || !in->ints || in->ints[1] < GKS_RASTER_PNG_FAST ||
+            in->ints[1] > GKS_RASTER_PNG_LEVEL_MAX)
+            return 182;
+        p->compression = in->ints[1];
         return 0;
     }
     if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */

@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <cmocka.h>
 #include "ws_driver.h"
@@ -266,7 +267,7 @@ static void compare_ref(const image *img, const char *name)
     memcpy(top, img->rgb, (size_t)img->w * img->h * 3);
     const char *upd = getenv("GKS_UPDATE_REFS");
     if (upd && strcmp(upd, "1") == 0)
-        assert_int_equal(gks_raster_png_write_rgb8(ref, img->w, img->h, top), 0);
+        assert_int_equal(gks_raster_png_write_rgb8(ref, img->w, img->h, top, GKS_RASTER_PNG_LEVEL_MAX), 0);
     image r = { 0, 0, NULL };
     if (!read_png(ref, &r))
         fail_msg("reference %s missing (GKS_UPDATE_REFS=1 creates it)", ref);
@@ -284,8 +285,8 @@ static void compare_ref(const image *img, const char *name)
         d[3 * i + 1] = d[3 * i + 2] = ok ? 128 : 0;
     }
     if (bad * 1000 > n * REF_MAX_BAD_PERMILLE) {
-        gks_raster_png_write_rgb8(diff, r.w, r.h, d);
-        gks_raster_png_write_rgb8(out, img->w, img->h, top);
+        gks_raster_png_write_rgb8(diff, r.w, r.h, d, GKS_RASTER_PNG_FAST);
+        gks_raster_png_write_rgb8(out, img->w, img->h, top, GKS_RASTER_PNG_FAST);
         fail_msg("%s: %zu of %zu pixels differ from %s (diff in %s)", name, bad, n, ref, diff);
     }
     free(d);
@@ -919,6 +920,73 @@ static void test_e2e_antialias(void **u)
     free(img.rgb);
 }
 
+/* ESCAPE GESC_PNG_COMPRESSION: the fast default and zlib level 9 write the same pixels
+ * (PNG is lossless whatever the setting), level 9 no larger a file; values outside 0..9
+ * report 182 and change nothing; identifiers past the last one report 180. */
+static long e2e_scene_size(const char *name, int compression, image *img)
+{
+    e2e_open(name, 64, 48);
+    if (compression >= 0) {
+        Gint ints[2] = { 1, compression };
+        Gescape_in_data in = { .num_ints = 2, .ints = ints };
+        gescape(GESC_PNG_COMPRESSION, &in, NULL);
+        assert_int_equal(e2e_err, 0);
+    }
+    gset_fill_int_style(GSTYLE_SOLID);
+    for (int k = 0; k < 3; k++) {
+        gset_fill_colr_ind(2 + k);
+        Gpoint q[3] = { { 0.1 + 0.25 * k, 0.1 }, { 0.5 + 0.2 * k, 0.2 }, { 0.3, 0.7 } };
+        Gpoint_list l = { 3, q };
+        gfill_area(&l);
+    }
+    char path[256];
+    snprintf(path, sizeof path, "%s.png", name);
+    gupd_ws(1, GFLAG_PERFORM);
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    e2e_close(name, img);
+    return (long)st.st_size;
+}
+
+static void test_e2e_compression(void **u)
+{
+    (void)u;
+    image fast, best, dflt;
+    long s0 = e2e_scene_size("t_e2e_zfast", GKS_RASTER_PNG_FAST, &fast);
+    long s9 = e2e_scene_size("t_e2e_z9", GKS_RASTER_PNG_LEVEL_MAX, &best);
+    long sd = e2e_scene_size("t_e2e_zdef", -1, &dflt);
+    assert_int_equal(fast.w, best.w);
+    assert_int_equal(fast.h, best.h);
+    assert_memory_equal(fast.rgb, best.rgb, (size_t)fast.w * fast.h * 3);
+    assert_memory_equal(fast.rgb, dflt.rgb, (size_t)fast.w * fast.h * 3);
+    assert_int_equal(sd, s0); /* the default is the fast setting */
+    assert_true(s9 <= s0);
+    free(fast.rgb);
+    free(best.rgb);
+    free(dflt.rgb);
+    e2e_open("t_e2e_zbad", 8, 8);
+    Gint ints[2] = { 1, 10 };
+    Gescape_in_data in = { .num_ints = 2, .ints = ints };
+    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    assert_int_equal(e2e_err, 182);
+    e2e_err = 0;
+    ints[1] = -1;
+    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    assert_int_equal(e2e_err, 182);
+    e2e_err = 0;
+    in.num_ints = 1;
+    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    assert_int_equal(e2e_err, 182);
+    e2e_err = 0;
+    in.num_ints = 2;
+    gescape(GESC_PNG_COMPRESSION - 1, &in, NULL);
+    assert_int_equal(e2e_err, 180);
+    e2e_err = 0;
+    image img;
+    e2e_close("t_e2e_zbad", &img);
+    free(img.rgb);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -941,6 +1009,7 @@ int main(void)
         cmocka_unit_test(test_e2e_hlhsr_modes),
         cmocka_unit_test(test_e2e_primitives),
         cmocka_unit_test(test_e2e_antialias),
+        cmocka_unit_test(test_e2e_compression),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

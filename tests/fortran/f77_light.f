@@ -164,10 +164,24 @@
       CALL CHKER('GESC -102 malformed', 182, EESC, NFAIL)
       CALL GESC(GESRMD, 0, IDR, 1, LODR, ODR)
       CALL CHKER('GESC -104 LIDR 0', 182, EESC, NFAIL)
+!     PNG workstation escapes: compression 9 accepted, 10 is 182;
+!     anti-aliasing 4 accepted, 0 is 182.
+      WRITE (IDR(1), '(2I10)') 2, 9
+      CALL GESC(GESPZC, 1, IDR, 1, LODR, ODR)
+      CALL CHKI('GESC -111', NERR, 14, NFAIL)
+      WRITE (IDR(1), '(2I10)') 2, 10
+      CALL GESC(GESPZC, 1, IDR, 1, LODR, ODR)
+      CALL CHKER('GESC -111 value 10', 182, EESC, NFAIL)
+      WRITE (IDR(1), '(2I10)') 2, 4
+      CALL GESC(GESPAA, 1, IDR, 1, LODR, ODR)
+      CALL CHKI('GESC -110', NERR, 15, NFAIL)
+      WRITE (IDR(1), '(2I10)') 2, 0
+      CALL GESC(GESPAA, 1, IDR, 1, LODR, ODR)
+      CALL CHKER('GESC -110 value 0', 182, EESC, NFAIL)
       CALL GCLWK(2)
       CALL GCLWK(1)
       CALL GCLKS
-      CALL CHKI('error count', NERR, 14, NFAIL)
+      CALL CHKI('error count', NERR, 16, NFAIL)
       IF (NFAIL .EQ. 0) WRITE (*, '(A)') 'F77 LIGHT PASS'
       END
 

@@ -665,18 +665,30 @@ static void test_png(void **state)
     float *tl = fb->rgb + 3 * (20 * 37); /* DC top-left pixel: row 0 of the file */
     tl[0] = 1; tl[1] = 0; tl[2] = 0;
     const char *path = TEST_OUT_DIR "/raster_roundtrip.png";
-    assert_int_equal(gks_raster_fb_write_png(fb, path), 0);
     unsigned char ref[37 * 21 * 3], *rd = NULL;
     int w = 0, h = 0;
     assert_int_equal(gks_raster_fb_resolve(fb, ref), 0);
-    assert_int_equal(gks_raster_png_read_rgb8(path, &w, &h, &rd), 0);
-    assert_int_equal(w, 37);
-    assert_int_equal(h, 21);
-    assert_memory_equal(rd, ref, sizeof ref);
-    assert_true(rd[0] == 255 && rd[1] == 0 && rd[2] == 0);
-    assert_int_equal(rd[3 * (20 * 37 + 36) + 1], 0); /* bottom row: green = 0 */
-    gks_free(rd);
-    assert_int_equal(gks_raster_fb_write_png(fb, "/nonexistent-dir/x/y.png"), GKS_RASTER_E_IO);
+    /* every compression setting (fast, zlib 1..9) is lossless */
+    for (int c = GKS_RASTER_PNG_FAST; c <= GKS_RASTER_PNG_LEVEL_MAX; c++) {
+        assert_int_equal(gks_raster_fb_write_png(fb, path, c), 0);
+        assert_int_equal(gks_raster_png_read_rgb8(path, &w, &h, &rd), 0);
+        assert_int_equal(w, 37);
+        assert_int_equal(h, 21);
+        assert_memory_equal(rd, ref, sizeof ref);
+        assert_true(rd[0] == 255 && rd[1] == 0 && rd[2] == 0);
+        assert_int_equal(rd[3 * (20 * 37 + 36) + 1], 0); /* bottom row: green = 0 */
+        gks_free(rd);
+        rd = NULL;
+    }
+    unsigned char row[37 * 3];
+    assert_int_equal(gks_raster_fb_resolve_row(fb, 20, row), 0);
+    assert_memory_equal(row, ref + 20 * 37 * 3, sizeof row);
+    assert_int_equal(gks_raster_fb_resolve_row(fb, 21, row), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_fb_resolve_row(fb, -1, row), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_fb_write_png(fb, path, -1), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_fb_write_png(fb, path, 10), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_png_write_rgb8(path, 37, 21, ref, 10), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_fb_write_png(fb, "/nonexistent-dir/x/y.png", 0), GKS_RASTER_E_IO);
     assert_int_equal(gks_raster_png_read_rgb8("/nonexistent-dir/y.png", &w, &h, &rd), GKS_RASTER_E_IO);
     assert_null(rd);
     const char *junk = TEST_OUT_DIR "/raster_junk.png";
@@ -695,7 +707,7 @@ static void test_png(void **state)
     fclose(fp);
     assert_int_equal(gks_raster_png_read_rgb8(junk, &w, &h, &rd), GKS_RASTER_E_FORMAT);
     assert_null(rd);
-    assert_int_equal(gks_raster_png_write_rgb8(NULL, 1, 1, ref), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_png_write_rgb8(NULL, 1, 1, ref, 0), GKS_RASTER_E_ARG);
     gks_raster_fb_free(fb);
 }
 

@@ -67,26 +67,47 @@ void gks_raster_fb_clear(gks_raster_fb *fb, const float rgb[3])
     }
 }
 
+/* One channel value in [0,1] (NaN -> 0) to 0..255, rounded to nearest (ties to even, as
+ * lrintf in the default rounding mode; the sum is exact in float for ss <= 4). */
+static unsigned char to_byte(float v)
+{
+    return (unsigned char)lrintf(v * 255.0f);
+}
+
+int gks_raster_fb_resolve_row(const gks_raster_fb *fb, int row, unsigned char *out)
+{
+    if (!fb || !out || row < 0 || row >= fb->height)
+        return GKS_RASTER_E_ARG;
+    int ss = fb->ss;
+    int y = fb->height - 1 - row; /* framebuffer rows run bottom-up */
+    if (ss == 1) {
+        const float *p = fb->rgb + 3 * (size_t)y * (size_t)fb->w;
+        size_t n = 3 * (size_t)fb->width;
+        for (size_t i = 0; i < n; i++)
+            out[i] = to_byte(clamp01(p[i]));
+        return GKS_RASTER_OK;
+    }
+    float scale = 255.0f / (float)(ss * ss);
+    for (int x = 0; x < fb->width; x++) {
+        float acc[3] = {0.0f, 0.0f, 0.0f};
+        for (int sy = 0; sy < ss; sy++) {
+            const float *p = fb->rgb + 3 * ((size_t)(y * ss + sy) * (size_t)fb->w +
+                                            (size_t)x * (size_t)ss);
+            for (int sx = 0; sx < ss; sx++)
+                for (int k = 0; k < 3; k++)
+                    acc[k] += clamp01(p[3 * sx + k]);
+        }
+        for (int k = 0; k < 3; k++)
+            out[3 * x + k] = (unsigned char)lrintf(acc[k] * scale);
+    }
+    return GKS_RASTER_OK;
+}
+
 int gks_raster_fb_resolve(const gks_raster_fb *fb, unsigned char *rgb8)
 {
     if (!fb || !rgb8)
         return GKS_RASTER_E_ARG;
-    int ss = fb->ss;
-    float scale = 255.0f / (float)(ss * ss);
-    for (int y = 0; y < fb->height; y++) {
-        unsigned char *out = rgb8 + (size_t)(fb->height - 1 - y) * (size_t)fb->width * 3;
-        for (int x = 0; x < fb->width; x++) {
-            float acc[3] = {0.0f, 0.0f, 0.0f};
-            for (int sy = 0; sy < ss; sy++) {
-                const float *p = fb->rgb + 3 * ((size_t)(y * ss + sy) * (size_t)fb->w +
-                                                (size_t)x * (size_t)ss);
-                for (int sx = 0; sx < ss; sx++)
-                    for (int k = 0; k < 3; k++)
-                        acc[k] += clamp01(p[3 * sx + k]);
-            }
-            for (int k = 0; k < 3; k++)
-                out[3 * x + k] = (unsigned char)lrintf(acc[k] * scale);
-        }
-    }
+    for (int row = 0; row < fb->height; row++)
+        gks_raster_fb_resolve_row(fb, row, rgb8 + (size_t)row * (size_t)fb->width * 3);
     return GKS_RASTER_OK;
 }

@@ -8,6 +8,7 @@
 #include <png.h>
 #include <setjmp.h>
 #include <stdio.h>
+#include <zlib.h>
 
 /* Quiet handlers: errors jump back (libpng's default), warnings are dropped. */
 static void png_err(png_structp png, png_const_charp msg)
@@ -30,25 +31,44 @@ typedef struct png_job {
     unsigned char *pix;
 } png_job;
 
-static int write_rows(png_job *job, int w, int h, const unsigned char *rgb8)
+/* Where the rows come from: an 8-bit image, or a framebuffer resolved row by row into
+ * buf (so no whole 8-bit copy of the frame is made). */
+typedef struct row_source {
+    const unsigned char *rgb8;
+    const gks_raster_fb *fb;
+    unsigned char *buf;
+} row_source;
+
+static const unsigned char *source_row(const row_source *src, int w, int y)
+{
+    if (src->rgb8)
+        return src->rgb8 + (size_t)y * (size_t)w * 3;
+    gks_raster_fb_resolve_row(src->fb, y, src->buf);
+    return src->buf;
+}
+
+static int write_rows(png_job *job, int w, int h, const row_source *src, int compression)
 {
     if (setjmp(png_jmpbuf(job->png)))
         return GKS_RASTER_E_IO;
     png_init_io(job->png, job->fp);
     png_set_IHDR(job->png, job->info, (png_uint_32)w, (png_uint_32)h, 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_compression_level(job->png, 6);
+    if (compression == GKS_RASTER_PNG_FAST) {
+        png_set_compression_strategy(job->png, Z_RLE);
+        png_set_filter(job->png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    } else {
+        png_set_compression_level(job->png, compression);
+    }
     png_write_info(job->png, job->info);
     for (int y = 0; y < h; y++)
-        png_write_row(job->png, rgb8 + (size_t)y * (size_t)w * 3);
+        png_write_row(job->png, source_row(src, w, y));
     png_write_end(job->png, NULL);
     return GKS_RASTER_OK;
 }
 
-int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned char *rgb8)
+static int write_png(const char *path, int w, int h, const row_source *src, int compression)
 {
-    if (!path || !rgb8 || w < 1 || h < 1)
-        return GKS_RASTER_E_ARG;
     png_job job = {0};
     job.fp = fopen(path, "wb");
     if (!job.fp)
@@ -58,7 +78,7 @@ int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned cha
     if (job.png)
         job.info = png_create_info_struct(job.png);
     if (job.info)
-        rc = write_rows(&job, w, h, rgb8);
+        rc = write_rows(&job, w, h, src, compression);
     png_destroy_write_struct(job.png ? &job.png : NULL, job.info ? &job.info : NULL);
     if (fclose(job.fp) != 0 && rc == GKS_RASTER_OK)
         rc = GKS_RASTER_E_IO;
@@ -67,18 +87,29 @@ int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned cha
     return rc;
 }
 
-int gks_raster_fb_write_png(const gks_raster_fb *fb, const char *path)
+static int bad_compression(int c)
 {
-    if (!fb || !path)
+    return c < GKS_RASTER_PNG_FAST || c > GKS_RASTER_PNG_LEVEL_MAX;
+}
+
+int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned char *rgb8,
+                              int compression)
+{
+    if (!path || !rgb8 || w < 1 || h < 1 || bad_compression(compression))
         return GKS_RASTER_E_ARG;
-    size_t n = (size_t)fb->width * (size_t)fb->height;
-    unsigned char *rgb8 = gks_alloc_array(n, 3);
-    if (!rgb8)
+    row_source src = { .rgb8 = rgb8 };
+    return write_png(path, w, h, &src, compression);
+}
+
+int gks_raster_fb_write_png(const gks_raster_fb *fb, const char *path, int compression)
+{
+    if (!fb || !path || bad_compression(compression))
+        return GKS_RASTER_E_ARG;
+    row_source src = { .fb = fb, .buf = gks_alloc_array((size_t)fb->width, 3) };
+    if (!src.buf)
         return GKS_RASTER_E_NOMEM;
-    int rc = gks_raster_fb_resolve(fb, rgb8);
-    if (rc == GKS_RASTER_OK)
-        rc = gks_raster_png_write_rgb8(path, fb->width, fb->height, rgb8);
-    gks_free(rgb8);
+    int rc = write_png(path, fb->width, fb->height, &src, compression);
+    gks_free(src.buf);
     return rc;
 }
 
