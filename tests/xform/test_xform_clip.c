@@ -445,6 +445,36 @@ static void test_polygon_simple(void **state)
                      GKS_E_NPOINTS_INVALID);
 }
 
+/* Huge coordinates: a quad from (-1e30, .2) to (.6, .8) clipped to the unit box is the
+ * rectangle [0,.6] x [.2,.8] (area .36) with every vertex on or inside the box within
+ * 1e-15 -- interpolating from the far end would put the crossing at the inside vertex,
+ * off the plane x = 0 by 0.6. Also the mirror image and a quad reaching +-1e30 in x and y. */
+static void test_polygon_huge(void **state)
+{
+    (void)state;
+    gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+    double out[64][4];
+    size_t ol[1], no;
+    const size_t l4[1] = { 4 };
+    const double left[4][4] = { { -1e30, .2, .5, 1 }, { .6, .2, .5, 1 }, { .6, .8, .5, 1 },
+                                { -1e30, .8, .5, 1 } };
+    const double right[4][4] = { { .4, .2, .5, 1 }, { 1e30, .2, .5, 1 }, { 1e30, .8, .5, 1 },
+                                 { .4, .8, .5, 1 } };
+    const double all[4][4] = { { -1e30, -1e30, .5, 1 }, { 1e30, -1e30, .5, 1 },
+                               { 1e30, 1e30, .5, 1 }, { -1e30, 1e30, .5, 1 } };
+    const double *cases[3] = { &left[0][0], &right[0][0], &all[0][0] };
+    const double area[3] = { .36, .36, 1.0 };
+    for (int k = 0; k < 3; k++) {
+        assert_int_equal(gks_xform_clip_polygon(&c, 1, l4, (const double (*)[4])cases[k], out,
+                                                64, ol, &no), 0);
+        XT_NEAR(shoelace(ol[0], out), area[k], 1e-15);
+        for (size_t i = 0; i < no; i++) {
+            assert_true(out[i][0] >= -1e-15 && out[i][0] <= 1 + 1e-15);
+            assert_true(out[i][1] >= -1e-15 && out[i][1] <= 1 + 1e-15);
+        }
+    }
+}
+
 /* Compare the even-odd interior of the clipped loops with (input interior ∩ region) on a
  * grid of generic points (offsets avoid the boundary lines). Returns mismatches. */
 static int compare_evenodd(size_t nl, const size_t *len, const double (*pts)[4],
@@ -649,6 +679,7 @@ int main(void)
         cmocka_unit_test(test_polyline_join),
         cmocka_unit_test(test_polyline_random),
         cmocka_unit_test(test_polygon_simple),
+        cmocka_unit_test(test_polygon_huge),
         cmocka_unit_test(test_polygon_evenodd),
         cmocka_unit_test(test_polygon_perspective_eye),
     };

@@ -243,11 +243,18 @@ static int sh_crosses(double a, double b)
 
 static void sh_push(sh_ctx *x, int s, const double p[4]);
 
+/* The crossing point is interpolated from the end nearer to the plane (|d| smaller): the
+ * step t*(far - near) then has |t| <= 1/2 of the segment, so a far end at 1e30 cannot wipe
+ * out the near end's coordinates (from the far end, t rounds to 1 and the "crossing" would
+ * be the inside vertex itself, off the plane by up to its whole distance). */
 static void sh_emit_crossing(sh_ctx *x, int s, const double a[4], double da,
                              const double b[4], double db)
 {
     double q[4];
-    lerp4(a, b, da / (da - db), q);
+    if (fabs(da) <= fabs(db))
+        lerp4(a, b, da / (da - db), q);
+    else
+        lerp4(b, a, db / (db - da), q);
     sh_push(x, s + 1, q);
 }
 
