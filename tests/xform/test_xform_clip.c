@@ -464,6 +464,18 @@ static void test_polygon_huge(void **state)
                                { 1e30, 1e30, .5, 1 }, { -1e30, 1e30, .5, 1 } };
     const double *cases[3] = { &left[0][0], &right[0][0], &all[0][0] };
     const double area[3] = { .36, .36, 1.0 };
+    /* the same for a polyline: (-1e30,.3) -> (.6,.3) -> (1e30,.7) keeps (0,.3), (.6,.3)
+     * and the crossing of x = 1 on the second segment (y = .3 + .4 * .4/(1e30-.6)) */
+    const double line[3][4] = { { -1e30, .3, .5, 1 }, { .6, .3, .5, 1 }, { 1e30, .7, .5, 1 } };
+    size_t pl[4], npieces;
+    assert_int_equal(gks_xform_clip_polyline(&c, 3, line, out, 64, pl, 4, &no, &npieces), 0);
+    assert_int_equal(npieces, 1);
+    assert_int_equal(no, 3);
+    XT_NEAR(out[0][0], 0, 1e-15);
+    XT_NEAR(out[0][1], .3, 1e-15);
+    XT_NEAR(out[1][0], .6, 0);
+    XT_NEAR(out[2][0], 1, 1e-15);
+    XT_NEAR(out[2][1], .3, 1e-15);
     for (int k = 0; k < 3; k++) {
         assert_int_equal(gks_xform_clip_polygon(&c, 1, l4, (const double (*)[4])cases[k], out,
                                                 64, ol, &no), 0);

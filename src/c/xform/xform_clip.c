@@ -120,11 +120,30 @@ static void lerp4(const double a[4], const double b[4], double t, double r[4])
         r[i] = a[i] + t * (b[i] - a[i]);
 }
 
-/* Liang–Barsky on a validated region. Returns 0 / 308; *vis, *t0, *t1 as documented. */
-static int clip_seg(const gks_xform_clip *c, const double p0[4], const double p1[4],
-                    double *t0, double *t1, int *vis)
+/* A point on a segment p0 -> p1 as its parameter t from p0 and u = 1 - t from p1, each
+ * computed directly (d0/(d0-d1) and d1/(d1-d0)), so that a point near either end keeps its
+ * precision when the other end is far away (t = 1 - 6e-31 is 1 in double, u is not 0);
+ * d: the constraint values at p0 and p1 that define the point (crossings only). */
+typedef struct seg_par {
+    double t, u;
+    double d[2];
+} seg_par;
+
+/* a before b along the segment: compared where the parameters are accurate */
+static int seg_before(const seg_par *a, const seg_par *b)
 {
-    double lo = 0.0, hi = 1.0;
+    if (a->t <= 0.5 || b->t <= 0.5)
+        return a->t < b->t;
+    return a->u > b->u;
+}
+
+/* Liang–Barsky on a validated region: the visible part runs from *lo to *hi (0 = p0 and
+ * 1 = p1 when that end is not clipped). Returns 0 / 308; *vis as documented. */
+static int clip_seg(const gks_xform_clip *c, const double p0[4], const double p1[4],
+                    seg_par *lo, seg_par *hi, int *vis)
+{
+    *lo = (seg_par){ 0.0, 1.0, { 0.0, 0.0 } };
+    *hi = (seg_par){ 1.0, 0.0, { 0.0, 0.0 } };
     const int k = n_constraints(c);
     *vis = 0;
     for (int i = 0; i < k; i++) {
@@ -133,17 +152,33 @@ static int clip_seg(const gks_xform_clip *c, const double p0[4], const double p1
             return GKS_E_ARITHMETIC;
         if (d0 < 0.0 && d1 < 0.0)
             return 0;
-        if (d0 < 0.0)
-            lo = fmax(lo, d0 / (d0 - d1));
-        else if (d1 < 0.0)
-            hi = fmin(hi, d0 / (d0 - d1));
-        if (!(lo < hi))
+        if (d0 < 0.0 || d1 < 0.0) { /* crossing: d0 - d1 != 0 */
+            const seg_par x = { d0 / (d0 - d1), d1 / (d1 - d0), { d0, d1 } };
+            if (d0 < 0.0 && seg_before(lo, &x))
+                *lo = x;
+            else if (d1 < 0.0 && seg_before(&x, hi))
+                *hi = x;
+        }
+        if (!seg_before(lo, hi))
             return 0;
     }
-    *t0 = lo;
-    *t1 = hi;
     *vis = 1;
     return 0;
+}
+
+/* The point x: an unclipped end exactly, otherwise the crossing interpolated from the end
+ * nearer to its plane (as sh_emit_crossing does for polygons), so that an end at 1e30 does
+ * not wipe out the other one. */
+static void seg_point(const double p0[4], const double p1[4], const seg_par *x, double q[4])
+{
+    if (x->t <= 0.0)
+        memcpy(q, p0, 4 * sizeof *q);
+    else if (x->u <= 0.0)
+        memcpy(q, p1, 4 * sizeof *q);
+    else if (fabs(x->d[0]) <= fabs(x->d[1]))
+        lerp4(p0, p1, x->t, q);
+    else
+        lerp4(p1, p0, x->u, q);
 }
 
 int gks_xform_clip_line(const gks_xform_clip *c, const double p0[4], const double p1[4],
@@ -151,7 +186,13 @@ int gks_xform_clip_line(const gks_xform_clip *c, const double p0[4], const doubl
 {
     if (!region_ok(c) || !xform_finite_n(p0, 4) || !xform_finite_n(p1, 4))
         return GKS_E_ARITHMETIC;
-    return clip_seg(c, p0, p1, t0, t1, visible);
+    seg_par lo, hi;
+    int err = clip_seg(c, p0, p1, &lo, &hi, visible);
+    if (!err && *visible) {
+        *t0 = lo.t;
+        *t1 = hi.t;
+    }
+    return err;
 }
 
 int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pts)[4],
@@ -173,7 +214,8 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
     size_t no = 0, np = 0;
     int open = 0;   /* the last piece ends at pts[i] exactly (segment end not clipped) */
     for (size_t i = 0; i + 1 < n; i++) {
-        double lo, hi, q[4];
+        double q[4];
+        seg_par lo, hi;
         int vis;
         int err = clip_seg(c, pts[i], pts[i + 1], &lo, &hi, &vis);
         if (err)
@@ -182,8 +224,8 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
             open = 0;
             continue;
         }
-        if (!(open && lo == 0.0)) {           /* start a new piece at p(lo) */
-            lerp4(pts[i], pts[i + 1], lo, q);
+        if (!(open && lo.t == 0.0)) {         /* start a new piece at p(lo) */
+            seg_point(pts[i], pts[i + 1], &lo, q);
             if (!xform_finite_n(q, 4))
                 return GKS_E_ARITHMETIC;
             if (no < out_cap)
@@ -193,7 +235,7 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
                 piece_len[np] = 1;
             np++;
         }
-        lerp4(pts[i], pts[i + 1], hi, q);     /* extend the current piece to p(hi) */
+        seg_point(pts[i], pts[i + 1], &hi, q); /* extend the piece to p(hi) */
         if (!xform_finite_n(q, 4))
             return GKS_E_ARITHMETIC;
         if (no < out_cap)
@@ -201,7 +243,7 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
         no++;
         if (np - 1 < piece_cap)
             piece_len[np - 1]++;
-        open = (hi == 1.0);
+        open = (hi.u == 0.0);
     }
     *n_out = no;
     *n_pieces = np;
