@@ -385,6 +385,21 @@ static void test_fill_area_errors_and_hostile(void **state)
     expect_no_error();
     assert_int_equal(cap.n, 1);
     assert_false(cap.nonfinite);
+    /* ... exactly: reaching 1e30 on one side, the quad clips to [0,.6] x [.2,.8] (every
+     * crossing interpolated from its near end; from the far end it would be off by .6). */
+    Gpoint hl[4] = { { -1e30, 0.2 }, { 0.6, 0.2 }, { 0.6, 0.8 }, { -1e30, 0.8 } };
+    Gpoint_list lhl = { 4, hl };
+    cap.n = 0;
+    gfill_area(&lhl);
+    assert_int_equal(cap.n, 1);
+    double area = 0.0, xmin = 1.0;
+    for (int i = 0, m = cap.rec[0].p.n_points, j = m - 1; i < m; j = i++) {
+        const Gpoint3 *a = &cap.rec[0].pts[j], *b = &cap.rec[0].pts[i];
+        area += a->x * b->y - b->x * a->y;
+        xmin = fmin(xmin, b->x);
+    }
+    assert_true(fabs(0.5 * fabs(area) - 0.36) < 1e-12);
+    assert_true(fabs(xmin) < 1e-12);
     /* Concave, self-intersecting and repeated vertices pass to the driver unchanged. */
     Gpoint bow[6] = { { 0.1, 0.1 }, { 0.9, 0.9 }, { 0.9, 0.9 }, { 0.9, 0.1 }, { 0.1, 0.9 }, { 0.5, 0.5 } };
     Gpoint_list lb = { 6, bow };
