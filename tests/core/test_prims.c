@@ -396,7 +396,8 @@ static void test_fill_area_errors_and_hostile(void **state)
     for (int i = 0, m = cap.rec[0].p.n_points, j = m - 1; i < m; j = i++) {
         const Gpoint3 *a = &cap.rec[0].pts[j], *b = &cap.rec[0].pts[i];
         area += a->x * b->y - b->x * a->y;
-        xmin = fmin(xmin, b->x);
+        if (b->x < xmin)
+            xmin = b->x;
     }
     assert_true(fabs(0.5 * fabs(area) - 0.36) < 1e-12);
     assert_true(fabs(xmin) < 1e-12);
