@@ -272,16 +272,18 @@ typedef struct rt_render_options {
     int threads;            /* 0: number of online CPUs; picture identical for any count */
     int fresnel;            /* RT_FRESNEL_* for transmitting surfaces */
     int clip_secondary;     /* 1: shadow/reflection/refraction rays see only the display volume */
-    int corner_rays;        /* 1: SPD mode, (w+1)x(h+1) rays at pixel corners, pixel = mean of
-                               its 4 corners (samples and jitter ignored) */
+    int corner_rays;        /* 1: (w+1)x(h+1) rays at pixel corners, pixel = mean of its 4
+                               corners (the SPD procedure's rays; samples and jitter ignored);
+                               0: samples stratified rays per pixel */
     double background[3];
     int progress;           /* 1: report tiles done, Mrays/s and time left on stderr */
     rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
     void *progress_user;
 } rt_render_options;
 
-/* Defaults: 1 sample, no jitter, depth 5, cut-off 0, threads 0, exact Fresnel, clip_secondary 0,
- * pixel-centre rays, black background, no progress. */
+/* Defaults (on the speed/error Pareto front of bench/speed_error): corner rays (samples 1, no
+ * jitter, used when corner_rays is set to 0), depth 5, cut-off 0.01, threads 0, exact Fresnel,
+ * clip_secondary 0, black background, no progress. */
 RT_API void rt_render_options_default(rt_render_options *o);
 
 /* Shading of a hit (front or back surface by the side hit; the normal is turned to face the ray):

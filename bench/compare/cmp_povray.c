@@ -136,6 +136,8 @@ int main(int argc, char **argv)
         rt_render_options o;
         rt_render_options_default(&o);
         o.threads = 1;
+        o.corner_rays = 0; /* as POV-Ray here: one ray per pixel centre, no cut-off */
+        o.cutoff = 0.0;
         double t0 = bs_process_cpu();
         int rc = rt_render(s.rt, &s.cam, &o, rgb, NULL);
         double tr = bs_process_cpu() - t0;

@@ -129,6 +129,7 @@ int main(int argc, char **argv)
     rt_render_options_default(&ro);
     ro.threads = threads;
     ro.corner_rays = corner;
+    ro.cutoff = 0.0; /* the SPD procedure: no adaptive cut-off */
     ro.max_depth = depth;
     ro.progress = progress;
     memcpy(ro.background, m.bg, sizeof ro.background);

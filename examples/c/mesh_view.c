@@ -5,6 +5,8 @@
  *   mesh_view [--threads N] [--samples N] [--depth N] [--size WxH] [--ground] [--stats]
  *             [--ambient A] [--azimuth DEG] mesh.off|mesh.ply[.gz] out.png
  *
+ * Sampling: the workstation's default (rays at the pixel corners, each pixel the mean of its
+ * four; cut-off 0.01) unless --samples N asks for N stratified samples per pixel.
  * Each face becomes one FILL AREA 3. The camera (scene_io_frame_view): y up, looking at the
  * bounding-box centre from the front, above and right, 40 degree field of view, the
  * bounding sphere filling the picture; --azimuth turns the camera (and the light) about the

@@ -6,7 +6,9 @@
  *            [--tessellate N] [--size WxH] scene.nff[.gz] out.png
  *
  * --threads N: tracer threads (0 = all CPUs); --samples N: N = m*m stratified samples per
- * pixel (1..256); --depth N: maximum ray depth (eye ray = 1); out.png: the PNG file name
+ * pixel (1..256) instead of the workstation's default (rays at the pixel corners, each pixel
+ * the mean of its four; adaptive cut-off 0.01); --depth N: maximum ray depth (eye ray = 1);
+ * out.png: the PNG file name
  * (a name without ".png" gets it appended by the workstation).
  *
  * The NFF camera becomes the view orientation and mapping matrices (EVALUATE VIEW ORIENTATION

@@ -850,6 +850,7 @@ static int escape_samples(ws_rt *r, const Gescape_in_data *in)
         return 182;
     r->opts.samples = s;
     r->opts.jitter = jitter;
+    r->opts.corner_rays = 0; /* stratified samples per pixel instead of the corner rays */
     return 0;
 }
 

@@ -42,6 +42,11 @@ void rt_render_options_default(rt_render_options *o)
     o->samples = 1;
     o->max_depth = 5;
     o->fresnel = RT_FRESNEL_EXACT;
+    /* On the speed/error Pareto front (README, docs/speed_error.png): corner rays cost one
+     * ray per pixel like a centre ray but filter 2x2; a cut-off of 0.01 saves up to 40 % of
+     * the rays for 0.2 % more RMSE. Reference renders set cutoff 0 and samples. */
+    o->corner_rays = 1;
+    o->cutoff = 0.01;
 }
 
 typedef struct rt_job {

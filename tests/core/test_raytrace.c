@@ -41,6 +41,18 @@ static void no_errors(void)
 static const Glimit unit_win = { 0, 1, 0, 1 };
 static const Glimit vp64 = { 0, 64, 0, 64 };
 
+/* Pixel-centre rays (ESCAPE -103 with 1 sample) and no cut-off (-105 with 0) instead of
+ * the workstation's defaults (corner rays, cut-off 0.01; test_default_sampling): most tests
+ * here compare pixels and ray counts with closed forms for one ray per pixel centre. */
+static void plain_sampling(int ws)
+{
+    Gint ints[2] = { ws, 1 };
+    Gfloat zero[1] = { 0.0 };
+    Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
+    gescape(GESC_RT_SAMPLES, &in, NULL);
+    gescape(GESC_RT_CUTOFF, &in, NULL);
+}
+
 static void open_png(int ws, const char *file, int mode)
 {
     unlink(file);
@@ -49,6 +61,20 @@ static void open_png(int ws, const char *file, int mode)
     gset_ws_win(ws, &unit_win);
     gset_ws_vp(ws, &vp64);
     gset_hlhsr_mode(ws, mode);
+    plain_sampling(ws);
+}
+
+/* A driver-level recorder with plain_sampling's settings. */
+static ws_rt *rt_new_plain(void)
+{
+    ws_rt *r = ws_rt_new();
+    assert_non_null(r);
+    Gint ints[2] = { 0, 1 };
+    Gfloat zero[1] = { 0.0 };
+    Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
+    assert_int_equal(ws_rt_escape(r, GESC_RT_SAMPLES, &in, NULL), 0);
+    assert_int_equal(ws_rt_escape(r, GESC_RT_CUTOFF, &in, NULL), 0);
+    return r;
 }
 
 /* Counter-clockwise square [a,b]^2 at depth z (front side towards +z, the viewer). */
@@ -440,6 +466,71 @@ static void get_stats(int ws, rt_stat_rec *s)
 }
 
 enum { ST_EYE, ST_HIT, ST_REFL, ST_REFR, ST_SHADOW, ST_CELLS, ST_REFS, ST_PRIMS };
+
+/* The workstation's default sampling: rays at the 65 x 65 pixel corners of a 64 x 64
+ * image, each pixel the mean of its 4 corners. The square [0.2,0.8]^2 covers corners
+ * 13..51 (12.8 and 51.2 px): pixels 13..50 are the lit colour as with centre rays, pixels
+ * 12 and 51 of an edge half lit and half background (2 of 4 corners), the corner pixels
+ * (12,12) and (51,51) a quarter. ESCAPE -103 (1 sample) switches to 64 x 64 centre rays,
+ * -109 back to corner rays. */
+static void test_default_sampling(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    unlink("t_rt_default.png");
+    gopen_ws(1, "t_rt_default.png", GWS_TYPE_PNG);
+    gactivate_ws(1);
+    gset_ws_win(1, &unit_win);
+    gset_ws_vp(1, &vp64);
+    gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, -0.8, -0.6 },
+                         { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 2, &l);
+    Grgb c = { 0.8, 0.6, 0.4 };
+    lit_setup(&c);
+    square(0.2, 0.8, 0.5);
+    gupd_ws(1, GFLAG_PERFORM);
+    rt_stat_rec s;
+    get_stats(1, &s);
+    assert_int_equal(s.i[ST_EYE], 65 * 65);
+    assert_int_equal(s.i[ST_HIT], 39 * 39);
+    image img;
+    assert_true(read_png("t_rt_default.png", &img));
+    const double lit[3] = { 0.8 * 0.6, 0.6 * 0.6, 0.4 * 0.6 };
+    for (int k = 13; k <= 50; k++) {
+        assert_near(&img, k, 30, lit[0], lit[1], lit[2]);
+        for (int e = 12; e <= 51; e += 39) {
+            assert_near(&img, e, k, 0.5 * lit[0] + 0.5, 0.5 * lit[1] + 0.5, 0.5 * lit[2] + 0.5);
+            assert_near(&img, k, e, 0.5 * lit[0] + 0.5, 0.5 * lit[1] + 0.5, 0.5 * lit[2] + 0.5);
+        }
+        assert_near(&img, k, 11, 1, 1, 1);
+        assert_near(&img, 52, k, 1, 1, 1);
+    }
+    assert_near(&img, 12, 12, 0.25 * lit[0] + 0.75, 0.25 * lit[1] + 0.75, 0.25 * lit[2] + 0.75);
+    assert_near(&img, 51, 51, 0.25 * lit[0] + 0.75, 0.25 * lit[1] + 0.75, 0.25 * lit[2] + 0.75);
+    free(img.rgb);
+    /* one centre ray per pixel, then corner rays again */
+    Gint d[2] = { 1, 1 };
+    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
+    gescape(GESC_RT_SAMPLES, &in, NULL);
+    gclear_ws(1, GFLAG_ALWAYS);
+    square(0.2, 0.8, 0.5);
+    gupd_ws(1, GFLAG_PERFORM);
+    get_stats(1, &s);
+    assert_int_equal(s.i[ST_EYE], 64 * 64);
+    assert_int_equal(s.i[ST_HIT], 38 * 38);
+    gescape(GESC_RT_SPD, &in, NULL);
+    gclear_ws(1, GFLAG_ALWAYS);
+    square(0.2, 0.8, 0.5);
+    gupd_ws(1, GFLAG_PERFORM);
+    get_stats(1, &s);
+    assert_int_equal(s.i[ST_EYE], 65 * 65);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    no_errors();
+}
 
 /* A 64x64 window fully covered by one square lit by one directional light (plus ambient
  * light 1 when ambient is set): every count of the statistics is known. */
@@ -863,7 +954,7 @@ static void test_fill_area_set_hole(void **u)
     (void)u;
     gks_ws ws;
     fake_ws(&ws);
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = rt_new_plain();
     assert_non_null(r);
     Gpoint3 pts[10] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.9, 0.9, 0.5 }, { 0.1, 0.9, 0.5 },
                         { 0.4, 0.4, 0.5 }, { 0.6, 0.4, 0.5 }, { 0.6, 0.6, 0.5 }, { 0.4, 0.6, 0.5 },
@@ -923,7 +1014,7 @@ static void test_cell_array(void **u)
     (void)u;
     gks_ws ws;
     fake_ws(&ws);
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = rt_new_plain();
     gks_prim p = cell_prim(0.25, 0.75, 2, 2, cells4);
     p.clip = 1; /* the clip box contains the whole array: one record */
     memcpy(p.clip_box, (const double[6]){ 0, 1, 0, 1, 0, 1 }, sizeof p.clip_box);
@@ -961,7 +1052,7 @@ static void test_cell_array_clipped(void **u)
     Grgb cells[16];
     for (int k = 0; k < 16; k++)
         cells[k] = (Grgb){ (k % 4) / 3.0, (k / 4) / 3.0, 0.5 };
-    ws_rt *full = ws_rt_new(), *clip = ws_rt_new();
+    ws_rt *full = rt_new_plain(), *clip = rt_new_plain();
     gks_prim p = cell_prim(0.2, 0.8, 4, 4, cells);
     assert_int_equal(ws_rt_record(full, &ws, &p), 0);
     p.clip = 1;
@@ -999,7 +1090,7 @@ static void test_record_limits(void **u)
     (void)u;
     gks_ws ws;
     fake_ws(&ws);
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = rt_new_plain();
     Grgb one = { 1, 0, 0 };
     gks_prim ok = cell_prim(0.2, 0.8, 1, 1, &one);
     assert_int_equal(ws_rt_record(r, &ws, &ok), 0);
@@ -1067,7 +1158,7 @@ static void test_alloc_failures(void **u)
     Grgb one = { 1, 0, 0 };
     gks_prim ok = cell_prim(0.1, 0.9, 1, 1, &one);
     /* allocations of one successful record + render (with one coverage thread per CPU) */
-    ws_rt *r0 = ws_rt_new();
+    ws_rt *r0 = rt_new_plain();
     gks_raster_fb *fb0 = white_fb();
     long c0 = gks_alloc_count();
     assert_int_equal(ws_rt_record(r0, &ws, &clipped), 0);
@@ -1078,7 +1169,7 @@ static void test_alloc_failures(void **u)
     assert_true(used > 3);
     int failures = 0;
     for (long n = 1; n <= used + 1; n++) {
-        ws_rt *r = ws_rt_new();
+        ws_rt *r = rt_new_plain();
         assert_non_null(r);
         assert_int_equal(ws_rt_record(r, &ws, &ok), 0);
         gks_alloc_fail_after(n);
@@ -1109,6 +1200,11 @@ static void test_escape_records(void **u)
     rt_render_options_default(&def);
     ws_rt_options(r, &o);
     assert_memory_equal(&o, &def, sizeof o);
+    /* the workstation's defaults are the library's: corner rays, cut-off 0.01 (on the
+     * speed/error Pareto front, README) */
+    assert_int_equal(o.corner_rays, 1);
+    assert_true(o.cutoff == 0.01);
+    assert_int_equal(o.samples, 1);
     static const struct { int id, n, v[2]; } bad[] = {
         { GESC_RT_CLIP_SECONDARY, 2, { 2 } }, { GESC_RT_CLIP_SECONDARY, 1, { 0 } },
         { GESC_RT_SAMPLES, 2, { 2 } },        { GESC_RT_SAMPLES, 3, { 9, 3 } },
@@ -1143,6 +1239,8 @@ static void test_escape_records(void **u)
     assert_int_equal(ws_rt_escape(r, GESC_RT_CUTOFF, &fin, NULL), 0);
     d[1] = 9, d[2] = 1, in.num_ints = 3;
     assert_int_equal(ws_rt_escape(r, GESC_RT_SAMPLES, &in, NULL), 0);
+    ws_rt_options(r, &o);
+    assert_int_equal(o.corner_rays, 0); /* samples per pixel replace the corner rays */
     in.num_ints = 2;
     d[1] = 64;
     assert_int_equal(ws_rt_escape(r, GESC_RT_MAX_DEPTH, &in, NULL), 0);
@@ -1303,7 +1401,7 @@ static double shade_vs_trace(gks_ws *ws, const gks_prim *p, int px, int py, Grgb
     ws_shade sh;
     assert_int_equal(ws_shade_area(ws, p, &sh), 0);
     *preview = ws_shade_apply(&sh, &p->colour);
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = rt_new_plain();
     Gint d[2] = { 1, 1 }; /* depth 1: local shading only (no mirrored background) */
     Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
     assert_int_equal(ws_rt_escape(r, GESC_RT_MAX_DEPTH, &in, NULL), 0);
@@ -1622,6 +1720,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_escape_png),
         cmocka_unit_test(test_stats_counts),
+        cmocka_unit_test(test_default_sampling),
         cmocka_unit_test(test_depth_mirror),
         cmocka_unit_test(test_threads_identical),
         cmocka_unit_test(test_samples_edges),

@@ -187,7 +187,7 @@ static void test_mesh_view(void **state)
     assert_int_equal(run(cmd, out, sizeof out), 0);
     stats s;
     parse_stats(out, &s);
-    assert_int_equal(s.eye, 48 * 32); /* one ray per pixel centre by default */
+    assert_int_equal(s.eye, 49 * 33); /* the workstation's default: rays at pixel corners */
     assert_true(s.hit > 0 && s.hit <= s.eye);
     assert_true(s.shadow > 0);
     int w, h;

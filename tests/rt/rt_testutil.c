@@ -509,3 +509,10 @@ int rtu_leak_rays(const rtu_mesh *m, const double p[3], size_t nrand, uint64_t s
     *nedge = nu;
     return 0;
 }
+
+void rtu_options_plain(rt_render_options *o)
+{
+    rt_render_options_default(o);
+    o->corner_rays = 0;
+    o->cutoff = 0.0;
+}

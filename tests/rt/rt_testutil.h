@@ -27,6 +27,10 @@ void rtu_view_matrix(const rtu_view *v, double m[4][4]);
  * front plane (n = fpd) and on the back plane (n = bpd). */
 void rtu_view_projector(const rtu_view *v, double x, double y, double front[3], double back[3]);
 
+/* rt_render_options_default with pixel-centre rays (corner_rays 0) and no cut-off: the
+ * tests count rays per pixel and compare pixel values with closed forms. */
+void rtu_options_plain(rt_render_options *o);
+
 /* View orientation (world -> VRC): origin at 'from', n axis towards 'from' - 'at'. */
 void rtu_lookat(const double from[3], const double at[3], const double up[3], double m[4][4]);
 void rtu_xform_point(const double m[4][4], const double p[3], double out[3]);

@@ -135,6 +135,11 @@ static size_t grid_vs_brute(rt_scene *sc, const rt_build_options *opts, const rt
 static void render_checked(const rt_scene *sc, const rt_camera *cam, const rt_render_options *o,
                            float *rgb, rt_stats *st)
 {
+    rt_render_options plain;
+    if (!o) { /* the tests' defaults: pixel-centre rays, no cut-off */
+        rtu_options_plain(&plain);
+        o = &plain;
+    }
     rtc_traps_on();
     assert_int_equal(rt_render(sc, cam, o, rgb, st), RT_OK);
     rtc_traps_off();
@@ -456,7 +461,7 @@ static void test_shadow_acne(void **state)
                 double prp[3] = {off, off, off + 100};
                 assert_int_equal(cam_parallel(&cam, win, off + 50, off - 50, prp, SW, SH), RT_OK);
                 rt_render_options ro;
-                rt_render_options_default(&ro);
+                rtu_options_plain(&ro);
                 ro.threads = 1;
                 rt_stats st;
                 render_checked(sc, &cam, &ro, rgb, &st);
@@ -712,7 +717,7 @@ static void test_coplanar(void **state)
     assert_non_null(a);
     assert_non_null(b);
     rt_render_options ro;
-    rt_render_options_default(&ro);
+    rtu_options_plain(&ro);
     ro.threads = 1;
     render_checked(sc, &cam, &ro, a, NULL);
     ro.threads = 2;
@@ -1094,7 +1099,7 @@ static void test_tir(void **state)
         double win[4] = {0.3, 0.7, -0.2, 0.2}, prp[3] = {0.5, 0, 100};
         assert_int_equal(cam_parallel(&cam, win, 1, -30, prp, TW, TH), RT_OK);
         rt_render_options ro;
-        rt_render_options_default(&ro);
+        rtu_options_plain(&ro);
         ro.threads = 1;
         ro.fresnel = RT_FRESNEL_NONE;
         ro.max_depth = 8;
@@ -1160,7 +1165,7 @@ static void test_nested_media(void **state)
     double win[4] = {-1.5, -0.5, -0.2, 0.2}, prp[3] = {-1.0 - sl * 10, 0, 10.5}; /* vpd 0.5 */
     assert_int_equal(cam_parallel(&cam, win, 0.5, -3, prp, NW, NH), RT_OK);
     rt_render_options ro;
-    rt_render_options_default(&ro);
+    rtu_options_plain(&ro);
     ro.threads = 1;
     ro.fresnel = RT_FRESNEL_NONE;
     ro.max_depth = 8;
@@ -1237,7 +1242,7 @@ static void test_index_one(void **state)
         double win[4] = {-2, 2, -2, 2}, prp[3] = {0.3, 0.2, 20};
         assert_int_equal(cam_parallel(&cam, win, 4, -4, prp, IW, IH), RT_OK);
         rt_render_options ro;
-        rt_render_options_default(&ro);
+        rtu_options_plain(&ro);
         ro.threads = 1;
         render_checked(sc, &cam, &ro, with ? b : a, NULL);
         rt_scene_free(sc);
@@ -1330,7 +1335,7 @@ static void test_near_singular_view(void **state)
         float *rgb = malloc(32 * 32 * 3 * sizeof(float));
         assert_non_null(rgb);
         rt_render_options ro;
-        rt_render_options_default(&ro);
+        rtu_options_plain(&ro);
         ro.threads = 1;
         render_checked(sc, &cam, &ro, rgb, NULL);
         size_t wrong = 0;
@@ -1486,7 +1491,7 @@ static void test_nan_inf(void **state)
     float *rgb = malloc(24 * 24 * 3 * sizeof(float));
     assert_non_null(rgb);
     rt_render_options ro;
-    rt_render_options_default(&ro);
+    rtu_options_plain(&ro);
     ro.threads = 1;
     ro.background[0] = nan;
     assert_int_equal(rt_render(sc, &cam2, &ro, rgb, NULL), RT_ERR_ARG);

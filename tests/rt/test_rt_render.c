@@ -42,6 +42,11 @@ static double px_y(double y0, double y1, int r, int h) { return y1 - (r + 0.5) *
 static void render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *o, float *rgb,
                    rt_stats *st)
 {
+    rt_render_options plain;
+    if (!o) { /* the tests' defaults: pixel-centre rays, no cut-off */
+        rtu_options_plain(&plain);
+        o = &plain;
+    }
     rtc_traps_on();
     assert_int_equal(rt_render(sc, cam, o, rgb, st), RT_OK);
     rtc_traps_off();
@@ -304,7 +309,7 @@ static void test_glass_slab(void **state)
     cam_top(&cam, 0, 2, 0, 2, 5, -2, 64, 4);
     float rgb[64 * 4 * 3];
     rt_render_options o;
-    rt_render_options_default(&o);
+    rtu_options_plain(&o);
     o.fresnel = RT_FRESNEL_NONE;
     rt_stats st;
     render(sc, &cam, &o, rgb, &st);
@@ -383,7 +388,7 @@ static void test_tir(void **state)
         rt_stats st;
         for (int mode = 0; mode < 2; mode++) {
             rt_render_options o;
-            rt_render_options_default(&o);
+            rtu_options_plain(&o);
             o.fresnel = mode ? RT_FRESNEL_SCHLICK : RT_FRESNEL_EXACT;
             render(sc, &cam, &o, rgb, &st);
             double ci = cos(a);
@@ -491,7 +496,7 @@ static void test_clip_secondary(void **state)
     cam_top(&cam, 0, 2, 0, 2, 1, -1, 8, 8);
     float img[8 * 8 * 3];
     rt_render_options o;
-    rt_render_options_default(&o);
+    rtu_options_plain(&o);
     for (int clip = 0; clip < 2; clip++) {
         o.clip_secondary = clip;
         render(sc, &cam, &o, img, NULL);
@@ -524,7 +529,7 @@ static void test_depth(void **state)
     cam_top(&cam, 0, 1, 0, 1, 0.4, -1, 4, 4);
     float img[4 * 4 * 3];
     rt_render_options o;
-    rt_render_options_default(&o);
+    rtu_options_plain(&o);
     rt_stats st;
     o.max_depth = 64;
     o.cutoff = 0.1; /* weights 0.5, 0.25, 0.125 spawn; 0.0625 does not */
@@ -569,7 +574,7 @@ static void test_threads(void **state)
     enum { N = 24 * 20 * 3 };
     float *a = malloc(N * sizeof(float)), *b = malloc(N * sizeof(float));
     rt_render_options o;
-    rt_render_options_default(&o);
+    rtu_options_plain(&o);
     o.samples = 4;
     o.jitter = 1;
     o.threads = 1;
