@@ -48,8 +48,9 @@ typedef struct setting {
 } setting;
 
 /* Rows other than the two defaults rows set samples, jitter, depth, Fresnel, cut-off and
- * corner rays explicitly: 1, 0, 5, exact, 0, 0 (rt_render_options_default when this was
- * written) except for the parameters their names give. Grid rows rebuild the scene with
+ * corner rays explicitly: 1, 0, 5, exact, 0, 0 (one ray per pixel centre, no cut-off: the
+ * library's defaults until this sweep put corner rays + cut-off 0.01 on the front) except
+ * for the parameters their names give. Grid rows rebuild the scene with
  * that rt_build_options.grid_factor (the defaults use RT_GRID_FACTOR_DEFAULT). */
 static const setting settings[] = {
     {"defaults (rt_render_options_default)", "default", 1, 0, 5, RT_FRESNEL_EXACT, 0, 0.0, 0.0, 1},
