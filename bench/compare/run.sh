@@ -43,7 +43,7 @@ done
 
 if [ "$DO_BUILD" -eq 1 ]; then
     cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-    cmake --build "$BUILD" --target cmp_tachyon cmp_embree cmp_povray -j2 >/dev/null
+    cmake --build "$BUILD" --target cmp_tachyon cmp_embree cmp_povray rt_bench -j2 >/dev/null
 fi
 BIN="$BUILD/bench/compare"
 for t in cmp_tachyon cmp_embree cmp_povray; do
@@ -81,6 +81,25 @@ run() {
     "$BIN/cmp_povray" "$(command -v povray)" "$OUT" "$DATA/meshes/bunny00.off" 512
     echo
     "$BIN/cmp_embree" build
+    echo
+    threads
+}
+
+# Speed-up over threads: rt_bench (SPD procedure, 513x513 corner rays, depth 5, no cut-off),
+# wall seconds of rt_render, best of 3, for 1 thread and for every core of the machine.
+threads() {
+    n=$(nproc)
+    echo "Thread scaling: rt_bench -s 512 -corner -reps 3, wall seconds of rt_render (best of 3), 1 vs $n threads"
+    printf '%-24s %9s %9s %8s %11s\n' scene "1 thread" "$n threads" speed-up efficiency
+    for s in gears mount-tessellated teapot tetra; do
+        t1=$("$BUILD/bench/rt/rt_bench" "$DATA/spd/$s.nff" -s 512 -corner -reps 3 -t 1 |
+            sed -n 's/.* CPU, \([0-9.]*\) s wall.*/\1/p')
+        tn=$("$BUILD/bench/rt/rt_bench" "$DATA/spd/$s.nff" -s 512 -corner -reps 3 -t "$n" |
+            sed -n 's/.* CPU, \([0-9.]*\) s wall.*/\1/p')
+        awk -v s="$s.nff" -v a="$t1" -v b="$tn" -v n="$n" \
+            'BEGIN { printf "%-24s %9.3f %9.3f %8.2f %10.0f %%\n", s, a, b, a / b, 100 * a / b / n }'
+    done
+    echo "(efficiency = speed-up / threads; the cores are shared with other jobs, so a busy core lowers it)"
 }
 
 if [ "$SAVE" -eq 1 ]; then
