@@ -129,7 +129,8 @@ RT_API int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double
                             int nx, int ny, const float *rgb, int front_surface, int back_surface);
 
 typedef struct rt_build_options {
-    double grid_factor;   /* grid cells per primitive; <= 0: default RT_GRID_FACTOR_DEFAULT */
+    double grid_factor;   /* grid cells per primitive; <= 0: default RT_GRID_FACTOR_DEFAULT
+                             (sublinear beyond 10^4 primitives, see below) */
     int brute_force;      /* 1: no grid (tests) */
     int brute_threshold;  /* no grid below this many primitives; < 0: default */
     int grid_res[3];      /* tests/tuning: > 0 in all three: this many cells per axis (<= 1024) */
@@ -145,12 +146,15 @@ typedef struct rt_build_options {
                              depend on the frame (grid == brute force bit for bit). */
 } rt_build_options;
 
-/* Grid resolution rule: top level cells ~= factor * primitives (default 0.25), as cubic as the
- * grid box allows (axes thinner than 1/1000 of the largest get 1 cell), at most 512 per axis
- * and 2^25 cells. A top cell with more than 8 references keeps its large primitives (spanning
- * half the cell in two axes) in its own list and puts the rest into a second-level grid of ~8
- * cells per reference (at most 32 per axis) over the box of those parts. Below 4 primitives:
- * no grid (random triangles: equal speed at 2, grid 1.3x faster at 4, 1.6x at 8, 7x at 64).
+/* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default
+ * factor and more than 10^4 primitives: 0.25 * 10^4 * sqrt(primitives / 10^4), i.e. factor
+ * 0.079 at 10^5 and 0.025 at 10^6), as cubic as the grid box allows (axes thinner than 1/1000
+ * of the largest get 1 cell), at most 512 per axis and 2^25 cells. A top cell with more than
+ * 8 references keeps its large primitives (spanning half the cell in two axes) in its own
+ * list and puts the rest into a second-level grid of ~8 cells per reference (default
+ * sub_factor; 4 beyond 10^4 primitives; at most 32 per axis) over the box of those parts.
+ * Below 4 primitives: no grid (random triangles: equal speed at 2, grid 1.3x faster at 4,
+ * 1.6x at 8, 7x at 64).
  * Measured sweep (callgrind, render only: instructions M / branch mispredictions M; SPD
  * gears 129x129 corner rays depth 5, armadillo 256x256 primary rays; timings are too noisy
  * on the shared machine to rank settings within 10 %):
@@ -164,7 +168,23 @@ typedef struct rt_build_options {
  *   8, none                         477 / 4.10
  *   1, 4/ref, grid in VRC3 axes     523 / 6.60   (the rotated grid frame saves 24 %)
  * The default also wins on teapot (122 vs 137 M), tetra (42 vs 47), mount (258 vs 337, +6 %
- * mispredictions), bunny (60 vs 69) and fandisk (44 vs 49) against factor 1, 4/ref. */
+ * mispredictions), bunny (60 vs 69) and fandisk (44 vs 49) against factor 1, 4/ref.
+ * Large meshes (the sqrt rule above 10^4 primitives; SPD scenes have fewer): the second level
+ * resolves the surface, a fine top level only adds steps through empty cells and cache misses.
+ * callgrind, rt_intersect + rt_occluded instructions M, 384x384 primary rays + their shadow
+ * rays (bench/compare/cmp_embree rays): top factor 0.25 / sqrt rule / 0.05 / 0.02 (8/ref):
+ *   bunny (75k)        142.5 + 88.0 / 136.6 + 86.2 / 135.4 + 88.2 / 134.6 + 90.9
+ *   dragon (203k)      190.8 + 111.0 / 174.9 + 104.4 / 175.8 + 104.8 / 171.7 + 104.7
+ * CPU time (interleaved, noisy) moves the same way, more for the 871k dragon (cache misses).
+ * Second level 4/ref instead of 8/ref beyond 10^4 primitives: +4..8 % instructions (141.5 +
+ * 92.9, 181.6 + 111.8) but no measurable time difference (fewer cache misses; interleaved
+ * runs within +-3 %), half the cells, 25 % fewer references and build time. Default against
+ * 0.25, 8/ref in one process (Mrays/s primary, shadow): dragon 871k 5.12, 1.36 vs 4.49, 1.18;
+ * dragon 203k 6.86, 1.94 vs 6.26, 1.76; armadillo 12.05 vs 11.32; fandisk 10.49 vs 10.19;
+ * references per triangle 4.8-9.0 instead of 8.3-13.9.
+ * SPD scenes: factors 0.05 / 0.15 changed gears by +4 / +9 % and mount by -9 / -5 %
+ * instructions, so below 10^4 primitives the rule stays linear. An explicit grid_factor or
+ * sub_factor is always used as given (linearly). */
 #define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 

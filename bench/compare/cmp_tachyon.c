@@ -14,7 +14,8 @@
  * eye rays; its self-reported preprocessing (grid build) and ray tracing times, wall clock.
  * Ours: the SPD procedure (512x512 pixels from 513x513 corner rays, depth 5, no cut-off,
  * exact Fresnel), 1 thread: rt_scene_commit + rt_render, wall clock.
- * Each measured REPS times, interleaved (Tachyon, ours, Tachyon, ours, ...); best of REPS.
+ * Each measured REPS times (default 3; "-reps N" first, 1..100, for a busy machine),
+ * interleaved (Tachyon, ours, Tachyon, ours, ...); best of REPS.
  */
 #include "bench_scene.h"
 #include "scene_io.h"
@@ -25,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { REPS = 3 };
+enum { REPS_DEFAULT = 3, REPS_MAX = 100 };
 
 /* ---------------------------------------------------------------- export */
 
@@ -282,13 +283,19 @@ static void keep_best(timing *best, const timing *t)
 
 int main(int argc, char **argv)
 {
-    if (argc < 4) {
-        fprintf(stderr, "usage: cmp_tachyon TACHYON_EXE OUTDIR scene.nff...\n");
+    int reps = REPS_DEFAULT;
+    if (argc > 2 && strcmp(argv[1], "-reps") == 0) {
+        reps = atoi(argv[2]);
+        argc -= 2;
+        argv += 2;
+    }
+    if (argc < 4 || reps < 1 || reps > REPS_MAX) {
+        fprintf(stderr, "usage: cmp_tachyon [-reps N] TACHYON_EXE OUTDIR scene.nff...\n");
         return 2;
     }
     const char *exe = argv[1], *outdir = argv[2];
     printf("Tachyon vs ours: SPD scenes, 513x513 eye rays, depth 5, 1 thread; best of %d interleaved runs "
-           "(each column its own minimum)\n", REPS);
+           "(each column its own minimum)\n", reps);
     printf("wall: grid build + trace (Tachyon: its 'Preprocessing' + 'Ray Tracing' times; ours: rt_scene_commit + "
            "rt_render); CPU: the whole job, parse + build + trace, process CPU time (robust to load)\n");
     printf("%-22s %7s %7s | %7s %7s | %6s | %7s %7s %6s | %s\n", "scene", "T.build", "T.trace", "o.build", "o.trace",
@@ -314,7 +321,7 @@ int main(int argc, char **argv)
         rt_stats st;
         memset(&st, 0, sizeof st);
         int ok = 1;
-        for (int r = 0; r < REPS && ok; r++) {
+        for (int r = 0; r < reps && ok; r++) {
             timing t, o;
             if (run_tachyon(exe, dat, tout, &t) != 0) {
                 fprintf(stderr, "%s: tachyon failed\n", scene);

@@ -1,6 +1,9 @@
 /*
  * rt_alloc.c -- the allocation funnel of gksrt: every size multiplication overflow-checked.
  */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE 1 /* madvise, MADV_HUGEPAGE */
+#endif
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
 
@@ -8,6 +11,29 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+/* Large arrays (vertices, references, cell offsets of big meshes: tens of MB read at random
+   by the traversal) are asked to live on transparent huge pages where the system does so
+   only on request (THP "madvise" mode): far fewer TLB misses. Advice only; failure ignored. */
+#define RT_HUGE_MIN ((size_t)4 << 20)
+
+static void rt_huge(void *p, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (!p || bytes < RT_HUGE_MIN)
+        return;
+    const uintptr_t pg = 4096;
+    uintptr_t a = ((uintptr_t)p + pg - 1) & ~(pg - 1), e = ((uintptr_t)p + bytes) & ~(pg - 1);
+    if (e > a)
+        (void)madvise((void *)a, e - a, MADV_HUGEPAGE);
+#else
+    (void)p;
+    (void)bytes;
+#endif
+}
 
 static int rt_mul_ok(size_t n, size_t size, size_t *out)
 {
@@ -22,7 +48,9 @@ void *rt_alloc_array(size_t n, size_t size)
     size_t bytes;
     if (!rt_mul_ok(n, size, &bytes))
         return NULL;
-    return malloc(bytes ? bytes : 1);
+    void *p = malloc(bytes ? bytes : 1);
+    rt_huge(p, bytes);
+    return p;
 }
 
 void *rt_calloc_array(size_t n, size_t size)
@@ -32,7 +60,9 @@ void *rt_calloc_array(size_t n, size_t size)
         return NULL;
     if (bytes == 0)
         return calloc(1, 1);
-    return calloc(n, size);
+    void *p = calloc(n, size);
+    rt_huge(p, bytes);
+    return p;
 }
 
 void *rt_realloc_array(void *p, size_t n, size_t size)
@@ -40,7 +70,9 @@ void *rt_realloc_array(void *p, size_t n, size_t size)
     size_t bytes;
     if (!rt_mul_ok(n, size, &bytes))
         return NULL;
-    return realloc(p, bytes ? bytes : 1);
+    void *q = realloc(p, bytes ? bytes : 1);
+    rt_huge(q, bytes);
+    return q;
 }
 
 int rt_grow(void **p, size_t *cap, size_t need, size_t es)

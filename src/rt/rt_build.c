@@ -8,7 +8,8 @@
  * Sutherland-Hodgman clipping of each loop for quads, polygons and cell arrays, against the
  * cell box enlarged by eps = 1e-9 * (scene magnitude + extent), far above the rounding of the
  * rotation and of hit points near cell faces. Resolution rule and its measurements: gksrt.h
- * (RT_GRID_FACTOR_DEFAULT).
+ * (RT_GRID_FACTOR_DEFAULT). The top level also stores each cell's distance to the nearest
+ * occupied cell (empty-space jumps of the traversal).
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -18,49 +19,58 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ---- overlap tests for the build ---- */
-
-/* triangle / box SAT (Akenine-Moeller); box given by centre and half sizes */
-static int rt_axis_test(const double v0[3], const double v1[3], const double v2[3],
-                        const double ax[3], const double h[3])
+/* min / max without libm calls (fmin/fmax are not inlined without -ffast-math); the build
+   only sees finite values; a NaN in the second operand returns the first, as fmin/fmax do */
+static inline double rt_dmin(double a, double b)
 {
-    double p0 = v0[0] * ax[0] + v0[1] * ax[1] + v0[2] * ax[2];
-    double p1 = v1[0] * ax[0] + v1[1] * ax[1] + v1[2] * ax[2];
-    double p2 = v2[0] * ax[0] + v2[1] * ax[1] + v2[2] * ax[2];
-    double mn = fmin(p0, fmin(p1, p2)), mx = fmax(p0, fmax(p1, p2));
-    double rad = h[0] * fabs(ax[0]) + h[1] * fabs(ax[1]) + h[2] * fabs(ax[2]);
-    return !(mn > rad || mx < -rad);
+    return b < a ? b : a;
 }
 
-static int rt_tri_box(const rt_tri *t, const double bc[3], const double h[3])
+static inline double rt_dmax(double a, double b)
 {
-    double v[3][3], e[3][3];
+    return b > a ? b : a;
+}
+
+/* ---- overlap tests for the build ---- */
+
+/* triangle / box SAT (Akenine-Moeller); box given by centre and half sizes; e: the edges
+   v1-v0, v2-v1, v0-v2, n = e0 x e1 (per triangle). Cheapest axes first: box faces, the
+   triangle's plane, then the 9 edge x box-axis products written out (the zero components
+   of those axes dropped). Rounding (~1e-16 relative) is far below the enlargement of the
+   cell box by eps (1e-9 relative), so the test stays conservative. */
+static inline int rt_sep(double p0, double p1, double p2, double rad)
+{
+    double mn = rt_dmin(p0, rt_dmin(p1, p2)), mx = rt_dmax(p0, rt_dmax(p1, p2));
+    return mn > rad || mx < -rad;
+}
+
+static int rt_tri_box(const rt_tri *t, const double e[3][3], const double n[3], const double bc[3],
+                      const double h[3])
+{
+    double v[3][3];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             v[i][j] = t->v[i][j] - bc[j];
-    for (int j = 0; j < 3; j++) {
-        e[0][j] = v[1][j] - v[0][j];
-        e[1][j] = v[2][j] - v[1][j];
-        e[2][j] = v[0][j] - v[2][j];
-    }
-    for (int j = 0; j < 3; j++) { /* box face normals */
-        double mn = fmin(v[0][j], fmin(v[1][j], v[2][j])), mx = fmax(v[0][j], fmax(v[1][j], v[2][j]));
-        if (mn > h[j] || mx < -h[j])
+    for (int j = 0; j < 3; j++) /* box face normals */
+        if (rt_sep(v[0][j], v[1][j], v[2][j], h[j]))
+            return 0;
+    double pd = n[0] * v[0][0] + n[1] * v[0][1] + n[2] * v[0][2];
+    if (fabs(pd) > h[0] * fabs(n[0]) + h[1] * fabs(n[1]) + h[2] * fabs(n[2]))
+        return 0;
+    for (int i = 0; i < 3; i++) {
+        const double ex = e[i][0], ey = e[i][1], ez = e[i][2];
+        const double ax = fabs(ex), ay = fabs(ey), az = fabs(ez);
+        if (rt_sep(ey * v[0][2] - ez * v[0][1], ey * v[1][2] - ez * v[1][1],
+                   ey * v[2][2] - ez * v[2][1], h[1] * az + h[2] * ay))
+            return 0;
+        if (rt_sep(ez * v[0][0] - ex * v[0][2], ez * v[1][0] - ex * v[1][2],
+                   ez * v[2][0] - ex * v[2][2], h[0] * az + h[2] * ax))
+            return 0;
+        if (rt_sep(ex * v[0][1] - ey * v[0][0], ex * v[1][1] - ey * v[1][0],
+                   ex * v[2][1] - ey * v[2][0], h[0] * ay + h[1] * ax))
             return 0;
     }
-    for (int i = 0; i < 3; i++) /* edge x box axis */
-        for (int j = 0; j < 3; j++) {
-            double u[3] = {0, 0, 0}, ax[3];
-            u[j] = 1.0;
-            ax[0] = u[1] * e[i][2] - u[2] * e[i][1];
-            ax[1] = u[2] * e[i][0] - u[0] * e[i][2];
-            ax[2] = u[0] * e[i][1] - u[1] * e[i][0];
-            if (!rt_axis_test(v[0], v[1], v[2], ax, h))
-                return 0;
-        }
-    double n[3] = {e[0][1] * e[1][2] - e[0][2] * e[1][1], e[0][2] * e[1][0] - e[0][0] * e[1][2],
-                   e[0][0] * e[1][1] - e[0][1] * e[1][0]};
-    return rt_axis_test(v[0], v[1], v[2], n, h);
+    return 1;
 }
 
 typedef struct rt_clipbuf {
@@ -224,8 +234,8 @@ static void rt_pts_bbox(const double *pts, size_t npts, double bb[6])
     }
     for (size_t v = 0; v < npts; v++)
         for (int i = 0; i < 3; i++) {
-            bb[i] = fmin(bb[i], pts[3 * v + i]);
-            bb[3 + i] = fmax(bb[3 + i], pts[3 * v + i]);
+            bb[i] = rt_dmin(bb[i], pts[3 * v + i]);
+            bb[3 + i] = rt_dmax(bb[3 + i], pts[3 * v + i]);
         }
 }
 
@@ -245,7 +255,7 @@ static void rt_box_resolution(rt_box *g, double target, int maxn)
     double ext[3], mx = 0.0;
     for (int a = 0; a < 3; a++) {
         ext[a] = g->hi[a] - g->lo[a];
-        mx = fmax(mx, ext[a]);
+        mx = rt_dmax(mx, ext[a]);
     }
     double vol = 1.0;
     int k = 0;
@@ -285,6 +295,7 @@ void rt_grid_free(rt_grid *g)
     free(g->off);
     free(g->refs);
     free(g->sub);
+    free(g->dist);
     free(g->subs);
     free(g->soff);
     free(g->srefs);
@@ -368,8 +379,18 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     if (p->kind != RT_KIND_TRI)
         d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
     rt_tri tri;
-    if (p->kind == RT_KIND_TRI)
+    double te[3][3] = {{0}}, tn[3] = {0};
+    if (p->kind == RT_KIND_TRI && !single) {
         memcpy(tri.v, b->pts, sizeof tri.v);
+        for (int j = 0; j < 3; j++) {
+            te[0][j] = tri.v[1][j] - tri.v[0][j];
+            te[1][j] = tri.v[2][j] - tri.v[1][j];
+            te[2][j] = tri.v[0][j] - tri.v[2][j];
+        }
+        tn[0] = te[0][1] * te[1][2] - te[0][2] * te[1][1];
+        tn[1] = te[0][2] * te[1][0] - te[0][0] * te[1][2];
+        tn[2] = te[0][0] * te[1][1] - te[0][1] * te[1][0];
+    }
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
@@ -383,7 +404,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
                         h[a] = 0.5 * (hi[a] - lo[a]);
                     }
                     if (p->kind == RT_KIND_TRI) {
-                        hit = rt_tri_box(&tri, bc, h);
+                        hit = rt_tri_box(&tri, te, tn, bc, h);
                     } else if (rt_plane_box(n, d, bc, h)) {
                         if (p->kind != RT_KIND_POLY) {
                             hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
@@ -436,6 +457,7 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
  * Traversal tests a cell's list first, then walks its second-level grid. */
 #define RT_SUB_MIN 8
 #define RT_SUB_FACTOR 8.0
+#define RT_SUB_FACTOR_LARGE 4.0 /* beyond RT_GRID_KNEE primitives (gksrt.h) */
 
 /* bounding box of primitive i in the grid frame */
 static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6], int *err)
@@ -482,8 +504,8 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                     rt_prim_gbox(sc, b, g->refs[k], bb, &err);
                     int span = 0;
                     for (int a = 0; a < 3; a++) {
-                        bb[a] = fmax(bb[a] - eps, lo[a]);
-                        bb[3 + a] = fmin(bb[3 + a] + eps, hi[a]);
+                        bb[a] = rt_dmax(bb[a] - eps, lo[a]);
+                        bb[3 + a] = rt_dmin(bb[3 + a] + eps, hi[a]);
                         span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
                     }
                     keep[k] = span >= 2;
@@ -491,8 +513,8 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                         continue;
                     nsmall++;
                     for (int a = 0; a < 3; a++) {
-                        sb[a] = fmin(sb[a], bb[a]);
-                        sb[3 + a] = fmax(sb[3 + a], bb[3 + a]);
+                        sb[a] = rt_dmin(sb[a], bb[a]);
+                        sb[3 + a] = rt_dmax(sb[3 + a], bb[3 + a]);
                     }
                 }
                 if (nsmall <= (uint32_t)sub_min || err) {
@@ -503,8 +525,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                 rt_subgrid *sg = &g->subs[g->nsubs];
                 g->sub[ci] = (int32_t)g->nsubs++;
                 for (int a = 0; a < 3; a++) { /* sub box: the small parts, at least eps thick */
-                    sg->b.lo[a] = fmax(lo[a], fmin(sb[a], 0.5 * (sb[a] + sb[3 + a]) - eps));
-                    sg->b.hi[a] = fmin(hi[a], fmax(sb[3 + a], 0.5 * (sb[a] + sb[3 + a]) + eps));
+                    double mid = 0.5 * (sb[a] + sb[3 + a]);
+                    sg->b.lo[a] = rt_dmax(lo[a], rt_dmin(sb[a], mid - eps));
+                    sg->b.hi[a] = rt_dmin(hi[a], rt_dmax(sb[3 + a], mid + eps));
                 }
                 rt_box_resolution(&sg->b, sub_factor * nsmall, 32);
                 rt_box_finish(&sg->b);
@@ -541,6 +564,48 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
     return rt_csr(b, total, &g->soff, &g->srefs);
 }
 
+/* Empty-space distance of the top level (rt_grid.dist): exact Chebyshev distance to the
+ * nearest occupied cell by the two-pass 3x3x3 chamfer (forward pass over the 13 neighbours
+ * already visited, backward pass over the other 13). The traversal jumps over the
+ * (2d-1)^3 block of empty cells around an empty cell at distance d >= 2. */
+static int rt_empty_distance(rt_grid *g)
+{
+    g->dist = rt_alloc_array(g->ncells, 1);
+    if (!g->dist)
+        return RT_ERR_NOMEM;
+    const int n0 = g->b.n[0], n1 = g->b.n[1], n2 = g->b.n[2];
+    for (size_t ci = 0; ci < g->ncells; ci++)
+        g->dist[ci] = g->off[ci + 1] != g->off[ci] || (g->sub && g->sub[ci] >= 0) ? 0 : 255;
+    for (int pass = 0; pass < 2; pass++) {
+        const int dir = pass == 0 ? 1 : -1;
+        for (int z = pass ? n2 - 1 : 0; z >= 0 && z < n2; z += dir)
+            for (int y = pass ? n1 - 1 : 0; y >= 0 && y < n1; y += dir)
+                for (int x = pass ? n0 - 1 : 0; x >= 0 && x < n0; x += dir) {
+                    size_t ci = ((size_t)z * n1 + y) * n0 + x;
+                    int d = g->dist[ci];
+                    if (d == 0)
+                        continue;
+                    /* neighbours before (x,y,z) in this pass's order: lower z (any x, y),
+                       same z lower y (any x), same z and y lower x */
+                    for (int dz = -1; dz <= 0; dz++)
+                        for (int dy = -1; dy <= 1; dy++)
+                            for (int dx = -1; dx <= 1; dx++) {
+                                if (dz == 0 && (dy > 0 || (dy == 0 && dx >= 0)))
+                                    continue;
+                                int qx = x + dir * dx, qy = y + dir * dy, qz = z + dir * dz;
+                                if (qx < 0 || qy < 0 || qz < 0 || qx >= n0 || qy >= n1 ||
+                                    qz >= n2)
+                                    continue;
+                                int e = g->dist[((size_t)qz * n1 + qy) * n0 + qx] + 1;
+                                if (e < d)
+                                    d = e;
+                            }
+                    g->dist[ci] = (uint8_t)d;
+                }
+    }
+    return RT_OK;
+}
+
 /* Grid frame. A scene seen obliquely (a floor at 30 degrees to the view direction, as in the
  * SPD scenes traced in VRC3) has a VRC3-aligned bounding box that is mostly empty: rays then
  * step through many empty cells. Candidate frames: the VRC3 axes, and for each of the
@@ -557,11 +622,11 @@ static double rt_box_volume(const double bb[6])
     double e[3], mx = 0.0;
     for (int a = 0; a < 3; a++) {
         e[a] = bb[3 + a] - bb[a];
-        mx = fmax(mx, e[a]);
+        mx = rt_dmax(mx, e[a]);
     }
     if (!(mx > 0.0))
         return 0.0;
-    return fmax(e[0], 1e-3 * mx) * fmax(e[1], 1e-3 * mx) * fmax(e[2], 1e-3 * mx);
+    return rt_dmax(e[0], 1e-3 * mx) * rt_dmax(e[1], 1e-3 * mx) * rt_dmax(e[2], 1e-3 * mx);
 }
 
 /* box of all primitive points (every stride-th primitive) in the current grid frame */
@@ -578,8 +643,8 @@ static int rt_frame_box(const rt_scene *sc, rt_build *b, size_t stride, double b
             double q[3];
             rt_grid_point(&sc->grid, b->pts + 3 * k, q);
             for (int a = 0; a < 3; a++) {
-                bb[a] = fmin(bb[a], q[a]);
-                bb[3 + a] = fmax(bb[3 + a], q[a]);
+                bb[a] = rt_dmin(bb[a], q[a]);
+                bb[3 + a] = rt_dmax(bb[3 + a], q[a]);
             }
         }
     }
@@ -632,7 +697,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b)
         double bb[6];
         rt_pts_bbox(b->pts, npts, bb);
         double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
-        double ar = fmax(e[0] * e[1], fmax(e[1] * e[2], e[0] * e[2]));
+        double ar = rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
         int k = nc < RT_FRAME_CAND ? nc++ : RT_FRAME_CAND;
         while (k > 0 && area[k - 1] < ar) { /* insertion into a descending list */
             if (k < RT_FRAME_CAND) {
@@ -678,6 +743,19 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b)
     return rc;
 }
 
+#define RT_GRID_KNEE 10000.0
+
+/* top-level cells for n primitives: factor * n; with the default factor, beyond
+   RT_GRID_KNEE primitives only as n^(2/3) (see gksrt.h: the second level resolves the
+   surfaces, the top level mainly skips empty space) */
+static double rt_top_cells(const rt_build_options *o, double factor, double n)
+{
+    int dflt = !(o && isfinite(o->grid_factor) && o->grid_factor > 0.0);
+    if (!dflt || n <= RT_GRID_KNEE)
+        return factor * n;
+    return factor * RT_GRID_KNEE * sqrt(n / RT_GRID_KNEE);
+}
+
 int rt_grid_build(rt_scene *sc, const rt_build_options *o)
 {
     double factor = o && isfinite(o->grid_factor) && o->grid_factor > 0.0 ? o->grid_factor
@@ -704,7 +782,7 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     }
     double mx = 0.0;
     for (int a = 0; a < 3; a++)
-        mx = fmax(mx, fb[3 + a] - fb[a]);
+        mx = rt_dmax(mx, fb[3 + a] - fb[a]);
     double pad = 1e-6 * mx + 1e-12 * sc->scale;
     for (int a = 0; a < 3; a++) {
         g->b.lo[a] = fb[a] - pad;
@@ -722,7 +800,7 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
             g->b.n[a] = o->grid_res[a];
         }
     } else {
-        rt_box_resolution(&g->b, factor * (double)sc->nprim, 512);
+        rt_box_resolution(&g->b, rt_top_cells(o, factor, (double)sc->nprim), 512);
     }
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
@@ -739,9 +817,12 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rc = rt_csr(&b, g->ncells, &g->off, &g->refs);
     }
     int sub_min = o && o->sub_min > 0 ? o->sub_min : RT_SUB_MIN;
-    double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor : RT_SUB_FACTOR;
+    double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor
+                        : (double)sc->nprim > RT_GRID_KNEE ? RT_SUB_FACTOR_LARGE : RT_SUB_FACTOR;
     if (rc == RT_OK && !(o && o->no_subgrids))
         rc = rt_build_subgrids(sc, &b, eps, sub_factor, sub_min);
+    if (rc == RT_OK)
+        rc = rt_empty_distance(g);
     free(b.cb.a);
     free(b.cb.b);
     free(b.pts);
@@ -750,6 +831,9 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rt_grid_free(g);
         return rc;
     }
+    g->all_opaque = 1;
+    for (size_t i = 0; i < sc->nprim; i++)
+        g->all_opaque &= sc->prim[i].opaque != 0;
     sc->use_grid = 1;
     return RT_OK;
 }

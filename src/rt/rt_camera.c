@@ -223,17 +223,48 @@ int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double np
     return RT_OK;
 }
 
-int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray)
+/* Terms of a primary ray. The NPC point (x, y, z, 1) maps to h[k] = ((m[k][0]*x + m[k][1]*y) +
+ * m[k][2]*z) + m[k][3] (the order of rt_unmap), so the products with x and with y can be
+ * computed once per raster column and once per raster row: the rays stay bit for bit the ones
+ * of the direct evaluation. */
+void rt_camera_xterm(const rt_camera *cam, double px, double xt[4])
 {
-    if (!cam || !ray || !isfinite(px) || !isfinite(py) || cam->width < 1 || cam->height < 1)
-        return RT_ERR_ARG;
     double x = cam->box[0] + px * (cam->box[1] - cam->box[0]) / cam->width;
+    for (int k = 0; k < 4; k++)
+        xt[k] = cam->minv[k][0] * x;
+}
+
+void rt_camera_yterm(const rt_camera *cam, double py, double yt[4])
+{
     double y = cam->box[3] - py * (cam->box[3] - cam->box[2]) / cam->height;
+    for (int k = 0; k < 4; k++)
+        yt[k] = cam->minv[k][1] * y;
+}
+
+int rt_camera_ray_terms(const rt_camera *cam, const double xt[4], const double yt[4], rt_ray *ray)
+{
+    const double zf = cam->box[5], zb = cam->box[4];
+    double hf[4], hb[4];
+    for (int k = 0; k < 4; k++) {
+        double xy = xt[k] + yt[k];
+        hf[k] = (xy + cam->minv[k][2] * zf) + cam->minv[k][3];
+        hb[k] = (xy + cam->minv[k][2] * zb) + cam->minv[k][3];
+    }
+    if (!(fabs(hf[3]) > 0.0) || !(fabs(hb[3]) > 0.0))
+        return RT_ERR_ARG;
     double f[3], b[3];
-    if (!rt_unmap(cam, x, y, cam->box[5], f) || !rt_unmap(cam, x, y, cam->box[4], b))
+    for (int i = 0; i < 3; i++) {
+        f[i] = hf[i] / hf[3];
+        b[i] = hb[i] / hb[3];
+    }
+    /* finite f and b give a finite difference unless it overflows: the test on m covers it */
+    if (!isfinite(f[0]) || !isfinite(f[1]) || !isfinite(f[2]) || !isfinite(b[0]) ||
+        !isfinite(b[1]) || !isfinite(b[2]))
         return RT_ERR_ARG;
     double d[3] = {b[0] - f[0], b[1] - f[1], b[2] - f[2]};
-    double m = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    double a0 = fabs(d[0]), a1 = fabs(d[1]), a2 = fabs(d[2]);
+    double m = a1 > a2 ? a1 : a2; /* no NaN here: same as fmax */
+    m = a0 > m ? a0 : m;
     if (!(m > 0.0) || !isfinite(m))
         return RT_ERR_ARG;
     double u[3] = {d[0] / m, d[1] / m, d[2] / m};
@@ -245,4 +276,112 @@ int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray)
     ray->tmin = 0.0;
     ray->tmax = m * l;
     return RT_OK;
+}
+
+/* rt_camera_ray_terms for n <= RT_CAM_ROW rays of one raster row, written lane by lane (the
+ * same operations per ray, so the same bits) for the compiler's vector divisions. */
+void rt_camera_rays_row(const rt_camera *cam, const double (*xt)[4], int n, const double yt[4],
+                        rt_ray *ray, int *ok)
+{
+    double f[3][RT_CAM_ROW], b[3][RT_CAM_ROW], hf3[RT_CAM_ROW], hb3[RT_CAM_ROW];
+    double d[3][RT_CAM_ROW], m[RT_CAM_ROW], l[RT_CAM_ROW];
+    if (n > RT_CAM_ROW)
+        n = RT_CAM_ROW;
+    const double zf = cam->box[5], zb = cam->box[4];
+    for (int k = 0; k < 4; k++) {
+        const double cf = cam->minv[k][2] * zf, cb = cam->minv[k][2] * zb, c3 = cam->minv[k][3];
+        double *of = k < 3 ? f[k] : hf3, *ob = k < 3 ? b[k] : hb3;
+        for (int i = 0; i < n; i++) {
+            double xy = xt[i][k] + yt[k];
+            of[i] = (xy + cf) + c3;
+            ob[i] = (xy + cb) + c3;
+        }
+    }
+    for (int i = 0; i < n; i++)
+        ok[i] = fabs(hf3[i]) > 0.0 && fabs(hb3[i]) > 0.0;
+    for (int i = 0; i < n; i++) {
+        double wf = ok[i] ? hf3[i] : 1.0, wb = ok[i] ? hb3[i] : 1.0;
+        for (int c = 0; c < 3; c++) {
+            f[c][i] /= wf;
+            b[c][i] /= wb;
+        }
+    }
+    /* unusable rays get harmless values (no inf - inf, no 0 / 0: the tests trap them) */
+    for (int i = 0; i < n; i++) {
+        int fin = ok[i];
+        for (int c = 0; c < 3; c++)
+            fin &= isfinite(f[c][i]) && isfinite(b[c][i]);
+        for (int c = 0; c < 3; c++) {
+            if (!fin)
+                f[c][i] = b[c][i] = 0.0;
+            d[c][i] = b[c][i] - f[c][i];
+        }
+        double a0 = fabs(d[0][i]), a1 = fabs(d[1][i]), a2 = fabs(d[2][i]);
+        double mm = a1 > a2 ? a1 : a2;
+        mm = a0 > mm ? a0 : mm;
+        ok[i] = fin && mm > 0.0 && isfinite(mm);
+        if (!ok[i]) {
+            d[0][i] = 1.0;
+            d[1][i] = d[2][i] = 0.0;
+            mm = 1.0;
+        }
+        m[i] = mm;
+    }
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < n; i++)
+            d[c][i] /= m[i];
+    for (int i = 0; i < n; i++)
+        l[i] = sqrt(d[0][i] * d[0][i] + d[1][i] * d[1][i] + d[2][i] * d[2][i]);
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < n; i++)
+            d[c][i] /= l[i];
+    for (int i = 0; i < n; i++) {
+        for (int c = 0; c < 3; c++) {
+            ray[i].org[c] = f[c][i];
+            ray[i].dir[c] = d[c][i];
+        }
+        ray[i].tmin = 0.0;
+        ray[i].tmax = m[i] * l[i];
+    }
+}
+
+int rt_camera_vmap(const rt_camera *cam, double vm[4][4], double *wsign)
+{
+    if (!rt_invert4(cam->minv, vm))
+        return 0;
+    /* w of the display volume's centre: points in front of the eye plane share its sign */
+    double c[4] = {0, 0, 0, 1}, h[4];
+    for (int k = 0; k < 8; k++)
+        for (int i = 0; i < 3; i++)
+            c[i] += 0.125 * cam->corner[k][i];
+    rt_mul4(vm, c, h);
+    double hm = fmax(fabs(h[0]), fmax(fabs(h[1]), fabs(h[2])));
+    if (!(fabs(h[3]) > 1e-9 * hm) || !isfinite(h[3]))
+        return 0;
+    *wsign = h[3] > 0.0 ? 1.0 : -1.0;
+    return 1;
+}
+
+int rt_camera_project(const rt_camera *cam, const double vm[4][4], double wsign, const double p[3],
+                      double *px, double *py)
+{
+    double v[4] = {p[0], p[1], p[2], 1.0}, h[4];
+    rt_mul4(vm, v, h);
+    double hm = fmax(fabs(h[0]), fmax(fabs(h[1]), fabs(h[2])));
+    if (!(h[3] * wsign > 1e-9 * hm) || !isfinite(h[3]) || !isfinite(hm))
+        return 0;
+    double x = h[0] / h[3], y = h[1] / h[3];
+    *px = (x - cam->box[0]) * cam->width / (cam->box[1] - cam->box[0]);
+    *py = (cam->box[3] - y) * cam->height / (cam->box[3] - cam->box[2]);
+    return isfinite(*px) && isfinite(*py);
+}
+
+int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray)
+{
+    if (!cam || !ray || !isfinite(px) || !isfinite(py) || cam->width < 1 || cam->height < 1)
+        return RT_ERR_ARG;
+    double xt[4], yt[4];
+    rt_camera_xterm(cam, px, xt);
+    rt_camera_yterm(cam, py, yt);
+    return rt_camera_ray_terms(cam, xt, yt, ray);
 }

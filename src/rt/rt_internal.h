@@ -95,12 +95,15 @@ static inline size_t rt_cell_index(const rt_box *g, const int c[3])
 
 typedef struct rt_grid {
     int rotated;       /* 0: grid axes = VRC3 axes; 1: grid frame p' = R (p - c) */
+    int all_opaque;    /* every primitive opaque: transmittance rays stop at the first hit */
     double R[3][3], c[3];
     rt_box b;
     uint32_t *off;     /* ncells + 1 */
     uint32_t *refs;
     size_t ncells, nrefs;
     int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
+    uint8_t *dist;     /* per top cell: Chebyshev distance in cells to the nearest cell with
+                          references or a sub-grid (0 there, at most 255) */
     rt_subgrid *subs;
     size_t nsubs;
     uint32_t *soff;    /* sub-grid cells + 1 */
@@ -155,8 +158,11 @@ void rt_grid_point(const rt_grid *g, const double p[3], double out[3]);
 void rt_grid_dir(const rt_grid *g, const double v[3], double out[3]);
 
 /* per-thread traversal context: mailbox */
+#define RT_HBOX 256 /* entries of the small mailbox (power of 2) */
+
 typedef struct rt_ctx {
     uint32_t *mbox;
+    uint64_t *hbox;     /* small direct-mapped mailbox: (stamp << 32 | prim) at prim % RT_HBOX */
     uint32_t stamp;
     size_t nprim;
     long blocker;       /* set by rt_trace_transmit when blocked by an opaque primitive */
@@ -184,5 +190,26 @@ void rt_grid_free(rt_grid *g);
 void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3]);
 
 double rt_now(void);
+
+/* ---- primary rays by raster row and column (rt_camera.c) ---- */
+
+/* rt_camera_ray(cam, px, py) == rt_camera_xterm(px) + rt_camera_yterm(py) +
+ * rt_camera_ray_terms, bit for bit: the x terms can be computed once per raster column, the y
+ * terms once per row. px, py must be finite; ray_terms returns RT_OK or RT_ERR_ARG. */
+void rt_camera_xterm(const rt_camera *cam, double px, double xt[4]);
+void rt_camera_yterm(const rt_camera *cam, double py, double yt[4]);
+int rt_camera_ray_terms(const rt_camera *cam, const double xt[4], const double yt[4], rt_ray *ray);
+/* rt_camera_ray_terms for the n <= RT_CAM_ROW raster points (xt[i], yt): rays (unusable
+ * where ok[i] == 0) bit for bit as one by one, computed together (vector divisions). */
+#define RT_CAM_ROW 16
+void rt_camera_rays_row(const rt_camera *cam, const double (*xt)[4], int n, const double yt[4],
+                        rt_ray *ray, int *ok);
+/* The view mapping (inverse of cam->minv) and the sign of w in front of the eye plane; 0 if
+ * not usable. */
+int rt_camera_vmap(const rt_camera *cam, double vm[4][4], double *wsign);
+/* Raster position (as rt_camera_ray takes it) of the VRC3 point p: 1, or 0 if p is not in
+ * front of the eye plane by a margin (its projection would not bound the rays through it). */
+int rt_camera_project(const rt_camera *cam, const double vm[4][4], double wsign, const double p[3],
+                      double *px, double *py);
 
 #endif

@@ -17,8 +17,20 @@
  * gives F = 1. Index exactly 1: straight through, F = 0, the ray continues on its own line
  * (origin moved forward along d past the surface, not along the normal), so the picture
  * behind is unchanged. Local shading is not scaled by kt.
+ *
+ * Frame loop: tiles of 16x16 rays; a tile row's primary rays are made together from
+ * per-column and per-row terms (rt_camera_rays_row: the same bits as rt_camera_ray). Corner
+ * rays (SPD mode) are traced once each and kept in the picture itself (corner (x,y) at pixel
+ * (x,y), the last row and column aside) and averaged in place at the end: no second
+ * full-size buffer to page-fault in. Per worker: a mailbox and, per depth and light, the last
+ * opaque shadow blocker, tested first (rt_hits_prim; an opaque hit answers as the traversal
+ * would). Lights surely behind the surface are rejected before the square root. Eye rays in
+ * blocks of the raster that no primitive's projected bounding box reaches (rt_cover) are
+ * background without being traced. All of this leaves the picture and the ray counts bit for
+ * bit as the direct evaluation.
  */
 
+#define _DEFAULT_SOURCE 1 /* madvise */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
 
@@ -29,10 +41,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #define RT_TILE 16
 #define RT_MAX_DEPTH 64
 #define RT_MAX_THREADS 256
+_Static_assert(RT_TILE <= RT_CAM_ROW, "a tile row is one batch of camera rays");
 
 void rt_render_options_default(rt_render_options *o)
 {
@@ -54,9 +70,13 @@ typedef struct rt_job {
     const rt_camera *cam;
     rt_render_options o;
     float *rgb;
-    float *corner;      /* corner mode: (w+1)*(h+1)*3 */
+    float *edge;        /* corner mode: corners (w, 0..h) then (0..w-1, h), RGB; the others are
+                           kept in rgb itself (corner (x,y) at pixel (x,y)) until averaged */
     int gw, gh;         /* ray grid size (pixels or corners) */
     int m;              /* strata per axis */
+    int32_t *cover;     /* one-ray modes: per block of RT_CB x RT_CB rays, > 0 if a primitive's
+                           projection (with a margin) reaches it; NULL: no culling */
+    int cbx;            /* blocks per row of cover */
     int tiles_x, ntiles;
     atomic_int next;
     atomic_int done;
@@ -68,7 +88,7 @@ typedef struct rt_job {
 typedef struct rt_worker {
     rt_job *job;
     rt_ctx ctx;
-    long shadow_cache[RT_MAX_DEPTH + 1][RT_MAX_LIGHTS]; /* last opaque blocker, -1: none */
+    long *shadow_cache; /* [depth * nlights + light]: last opaque blocker, -1: none */
     rt_stats st;
     int err;
 } rt_worker;
@@ -195,6 +215,14 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         } else {
             for (int c = 0; c < 3; c++)
                 L[c] = l->position[c] - P[c];
+            /* light surely behind the surface, found before the square root and divisions:
+               N.L computed below is then < 0 as well (both dot products have relative errors
+               ~1e-16 of S = sum |N_c L_c|, far below the margin 1e-12 S; S > 1e-250 |L| keeps
+               the terms N_c L_c / dist out of the subnormal range where errors are absolute) */
+            double nl = dot3(N, L);
+            double S = fabs(N[0] * L[0]) + fabs(N[1] * L[1]) + fabs(N[2] * L[2]);
+            if (nl < -1e-12 * S && S > 1e-250 * rt_absmax3(L))
+                continue;
             dist = sqrt(dot3(L, L));
             if (!(dist > 0.0))
                 continue;
@@ -204,14 +232,11 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         double NL = dot3(N, L);
         if (!(NL > 0.0))
             continue;
-        double att = 1.0, spot = 1.0;
-        if (l->type != RT_LIGHT_DIRECTIONAL)
-            att = 1.0 / (l->c1 + l->c2 * dist);
+        double ca = 0.0; /* spot: cosine to the axis */
         if (l->type == RT_LIGHT_SPOT) {
-            double ca = -dot3(L, l->direction);
+            ca = -dot3(L, l->direction);
             if (ca < cos(l->spread) || !(ca > 0.0))
                 continue;
-            spot = pow(ca, l->concentration);
         }
         /* shadow ray */
         double o[3];
@@ -226,7 +251,7 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
             T = 1.0;
         } else {
             rt_rayx r;
-            long *cache = &w->shadow_cache[depth][li];
+            long *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
             if (!rt_rayx_setup(&r, o, L, t0, t1)) {
                 T = 1.0;
             } else if (*cache >= 0 && rt_hits_prim(sc, &r, *cache)) {
@@ -238,6 +263,12 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         }
         if (T == 0.0)
             continue;
+        /* attenuation and spot factor only for light that arrives */
+        double att = 1.0, spot = 1.0;
+        if (l->type != RT_LIGHT_DIRECTIONAL)
+            att = 1.0 / (l->c1 + l->c2 * dist);
+        if (l->type == RT_LIGHT_SPOT)
+            spot = pow(ca, l->concentration);
         double f = T * att * spot;
         double spec = 0.0;
         if (s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0) {
@@ -354,6 +385,26 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     }
 }
 
+/* The picture is usually fresh from malloc (mmap): its first touch takes one page fault per
+   4 KiB, ~10 us each in the virtual machine measured (512x512 RGB floats: 9 ms, more than
+   tracing half of tetra). Populating the pages in one call costs a third of that. Contents are
+   unchanged; whole pages inside the buffer only; errors (older kernels) ignored. */
+static void rt_prefault(void *p, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    long ps = sysconf(_SC_PAGESIZE);
+    if (ps <= 0 || (ps & (ps - 1)) != 0)
+        return;
+    uintptr_t pg = (uintptr_t)ps;
+    uintptr_t a = ((uintptr_t)p + pg - 1) & ~(pg - 1), e = ((uintptr_t)p + bytes) & ~(pg - 1);
+    if (e > a && e - a >= 16 * pg)
+        (void)madvise((void *)a, e - a, MADV_POPULATE_WRITE);
+#else
+    (void)p;
+    (void)bytes;
+#endif
+}
+
 static uint64_t rt_mix(uint64_t x)
 {
     x += 0x9E3779B97F4A7C15ull;
@@ -375,6 +426,145 @@ static void rt_eye(rt_worker *w, double px, double py, double out[3])
     rt_trace(w, ray.org, ray.dir, ray.tmin, ray.tmax, 1, 1.0, 0, out);
 }
 
+/* Number of vertices of primitive i as rt_prim_vertex gives them */
+static size_t rt_prim_nverts(const rt_scene *sc, size_t i)
+{
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI)
+        return 3;
+    if (p->kind == RT_KIND_QUAD || p->kind == RT_KIND_CELL)
+        return 4;
+    const rt_poly *po = &sc->poly[p->data];
+    size_t nv = 0;
+    for (uint32_t l = 0; l < po->nloops; l++)
+        nv += sc->loops[po->loop0 + l];
+    return nv;
+}
+
+/* Vertex k of primitive i, as traced: triangle and quad vertices; polygon vertices projected
+   onto the polygon's plane (as rt_scene_commit does; the traced region lies in their convex
+   hull); the 4 corners of a cell array. */
+static void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
+{
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI) {
+        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_QUAD) {
+        memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_CELL) {
+        const rt_cell *c = &sc->cell[p->data];
+        for (int j = 0; j < 3; j++)
+            out[j] = c->p[j] + (k == 1 || k == 2 ? c->a[j] : 0.0) + (k >= 2 ? c->b[j] : 0.0);
+    } else {
+        const rt_poly *po = &sc->poly[p->data];
+        const double *uv = sc->uv + 2 * ((size_t)po->uv0 + k);
+        int ax = 3 - po->ku - po->kv;
+        out[po->ku] = uv[0];
+        out[po->kv] = uv[1];
+        out[ax] = (po->d - po->n[po->ku] * uv[0] - po->n[po->kv] * uv[1]) / po->n[ax];
+    }
+}
+
+/* Eye ray culling for scenes lying in front of the eye plane: the ray through raster point
+   (px, py) can only hit a primitive whose projected vertices' bounding box, enlarged by one
+   pixel (rays and projections err by ~1e-15 of the raster), contains (px, py). Blocks of
+   RT_CB x RT_CB rays met by no such box are background. Built once per frame with a 2-D
+   difference array: O(vertices + blocks). NULL (no culling) if a vertex is not in front of
+   the eye plane, if there are more vertices than rays (the projections would cost more than
+   they can save), or without memory. */
+#define RT_CB 4
+static int32_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh,
+                         int *cbx)
+{
+    if (sc->nprim == 0)
+        return NULL;
+    double vm[4][4], ws;
+    if (!rt_camera_vmap(cam, vm, &ws))
+        return NULL;
+    /* the projection must invert the rays: the ends of the rays through the raster's corners
+       and centre come back to their raster points within 1/100 of the margin (else a badly
+       conditioned view mapping: no culling) */
+    for (int k = 0; k < 5; k++) {
+        double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
+        double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
+        rt_ray r;
+        if (rt_camera_ray(cam, px, py, &r) != RT_OK)
+            return NULL;
+        for (int e = 0; e < 2; e++) {
+            double q[3], u, v;
+            for (int i = 0; i < 3; i++)
+                q[i] = r.org[i] + (e ? r.tmax : 0.0) * r.dir[i];
+            if (!rt_camera_project(cam, vm, ws, q, &u, &v) || !(fabs(u - px) <= 0.01) ||
+                !(fabs(v - py) <= 0.01))
+                return NULL;
+        }
+    }
+    size_t budget = (size_t)gw * (size_t)gh;
+    for (size_t i = 0, nv = 0; i < sc->nprim; i++) {
+        nv += rt_prim_nverts(sc, i);
+        if (nv > budget)
+            return NULL;
+    }
+    const int nbx = (gw + RT_CB - 1) / RT_CB, nby = (gh + RT_CB - 1) / RT_CB;
+    int32_t *c = rt_calloc_array((size_t)(nbx + 1) * (size_t)(nby + 1), sizeof *c);
+    if (!c)
+        return NULL;
+    for (size_t i = 0; i < sc->nprim; i++) {
+        double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY, q[3];
+        for (size_t k = 0, nv = rt_prim_nverts(sc, i); k < nv; k++) {
+            double pu, pv; /* finite */
+            rt_prim_vertex(sc, i, k, q);
+            if (!rt_camera_project(cam, vm, ws, q, &pu, &pv)) {
+                free(c);
+                return NULL;
+            }
+            u0 = pu < u0 ? pu : u0;
+            u1 = pu > u1 ? pu : u1;
+            v0 = pv < v0 ? pv : v0;
+            v1 = pv > v1 ? pv : v1;
+        }
+        /* rays k with k + off in [u0 - 1, u1 + 1] (clamped to the raster) */
+        double a0 = ceil(u0 - 1.0 - off), a1 = floor(u1 + 1.0 - off);
+        double b0 = ceil(v0 - 1.0 - off), b1 = floor(v1 + 1.0 - off);
+        if (a1 < 0.0 || b1 < 0.0 || a0 > gw - 1 || b0 > gh - 1 || a0 > a1 || b0 > b1)
+            continue;
+        int x0 = a0 < 0.0 ? 0 : (int)a0, x1 = a1 > gw - 1 ? gw - 1 : (int)a1;
+        int y0 = b0 < 0.0 ? 0 : (int)b0, y1 = b1 > gh - 1 ? gh - 1 : (int)b1;
+        x0 /= RT_CB, x1 = x1 / RT_CB + 1, y0 /= RT_CB, y1 = y1 / RT_CB + 1;
+        c[(size_t)y0 * (nbx + 1) + x0]++;
+        c[(size_t)y0 * (nbx + 1) + x1]--;
+        c[(size_t)y1 * (nbx + 1) + x0]--;
+        c[(size_t)y1 * (nbx + 1) + x1]++;
+    }
+    /* inclusive 2-D prefix sums: c = number of boxes over the block (<= nprim) */
+    for (int y = 0; y <= nby; y++)
+        for (int x = 0; x <= nbx; x++) {
+            size_t k = (size_t)y * (nbx + 1) + x;
+            int64_t v = c[k];
+            if (x > 0)
+                v += c[k - 1];
+            if (y > 0)
+                v += c[k - (nbx + 1)];
+            if (x > 0 && y > 0)
+                v -= c[k - (nbx + 1) - 1];
+            c[k] = (int32_t)v;
+        }
+    *cbx = nbx + 1;
+    return c;
+}
+
+/* where corner ray (x, y) is kept: in the picture itself at pixel (x, y), the last column and
+   row of corners in job->edge (see rt_corner_average) */
+static float *rt_corner_at(const rt_job *job, int x, int y)
+{
+    const int W = job->cam->width, H = job->cam->height;
+    if (x < W && y < H)
+        return job->rgb + 3 * ((size_t)y * (size_t)W + (size_t)x);
+    if (x == W)
+        return job->edge + 3 * (size_t)y;
+    return job->edge + 3 * ((size_t)H + 1 + (size_t)x);
+}
+
 static void rt_tile(rt_worker *w, int tile)
 {
     rt_job *job = w->job;
@@ -383,16 +573,52 @@ static void rt_tile(rt_worker *w, int tile)
     int x1 = x0 + RT_TILE < job->gw ? x0 + RT_TILE : job->gw;
     int y1 = y0 + RT_TILE < job->gh ? y0 + RT_TILE : job->gh;
     int m = job->m;
+    if (job->o.corner_rays || (m == 1 && !job->o.jitter)) {
+        /* one ray per corner or pixel centre: x terms once per column, y terms once per row */
+        const double off = job->o.corner_rays ? 0.0 : 0.5;
+        double xt[RT_TILE][4], xs[RT_TILE][4], yt[4], col[3];
+        rt_ray ray[RT_TILE];
+        int ok[RT_TILE], slot[RT_TILE];
+        for (int x = x0; x < x1; x++)
+            rt_camera_xterm(job->cam, x + off, xt[x - x0]);
+        for (int y = y0; y < y1; y++) {
+            /* the rays of a tile row first (independent, their divisions overlap), only those
+               not culled (slot -1: surely background) */
+            int n = 0;
+            const int32_t *cov = job->cover ? job->cover + (size_t)(y / RT_CB) * (size_t)job->cbx : NULL;
+            for (int x = x0; x < x1; x++) {
+                slot[x - x0] = -1;
+                if (!cov || cov[x / RT_CB] > 0) {
+                    memcpy(xs[n], xt[x - x0], sizeof xs[n]);
+                    slot[x - x0] = n++;
+                }
+            }
+            rt_camera_yterm(job->cam, y + off, yt);
+            rt_camera_rays_row(job->cam, (const double(*)[4])xs, n, yt, ray, ok);
+            for (int x = x0; x < x1; x++) {
+                const int k = slot[x - x0];
+                w->st.eye_rays++;
+                if (k >= 0 && ok[k])
+                    rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, col);
+                else
+                    memcpy(col, job->o.background, sizeof col);
+                float *dst;
+                if (job->o.corner_rays) {
+                    dst = rt_corner_at(job, x, y);
+                } else {
+                    dst = job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
+                    for (int c = 0; c < 3; c++)
+                        col[c] += 0.0; /* as the sum over samples below: -0 becomes +0 */
+                }
+                for (int c = 0; c < 3; c++)
+                    dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
+            }
+        }
+        return;
+    }
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double acc[3] = {0, 0, 0}, col[3];
-            if (job->o.corner_rays) {
-                rt_eye(w, x, y, col);
-                float *dst = job->corner + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
-                for (int c = 0; c < 3; c++)
-                    dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
-                continue;
-            }
             uint64_t seed = rt_mix(((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
             for (int b = 0; b < m; b++)
                 for (int a = 0; a < m; a++) {
@@ -412,6 +638,28 @@ static void rt_tile(rt_worker *w, int tile)
                 dst[c] = isfinite(v) ? (float)v : 0.0f;
             }
         }
+}
+
+/* Corner mode, after all rays: pixel (x, y) = mean of corners (x, y), (x+1, y), (x, y+1),
+   (x+1, y+1), in place. Pixel (x, y) holds corner (x, y), which no later pixel needs (in
+   row-major order); the corners read next are not yet overwritten. */
+static void rt_corner_average(const rt_job *job)
+{
+    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height;
+    float *rgb = job->rgb;
+    const float *edge = job->edge;
+    for (size_t y = 0; y < H; y++) {
+        float *r0 = rgb + 3 * y * W;
+        const float *r1 = y + 1 < H ? rgb + 3 * (y + 1) * W : edge + 3 * (H + 1);
+        for (size_t x = 0; x < W; x++) {
+            const float *k10 = x + 1 < W ? r0 + 3 * (x + 1) : edge + 3 * y;
+            const float *k11 = x + 1 < W ? r1 + 3 * (x + 1) : edge + 3 * (y + 1);
+            for (size_t c = 0; c < 3; c++) {
+                double v = 0.25 * ((double)r0[3 * x + c] + k10[c] + r1[3 * x + c] + k11[c]);
+                r0[3 * x + c] = isfinite(v) ? (float)v : 0.0f;
+            }
+        }
+    }
 }
 
 static void rt_progress(rt_job *job, uint64_t rays)
@@ -487,10 +735,12 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     job.gw = cam->width + (o->corner_rays ? 1 : 0);
     job.gh = cam->height + (o->corner_rays ? 1 : 0);
     if (o->corner_rays) {
-        job.corner = rt_alloc_array((size_t)job.gw * (size_t)job.gh, 3 * sizeof(float));
-        if (!job.corner)
+        job.edge = rt_alloc_array((size_t)job.gw + (size_t)job.gh - 1, 3 * sizeof(float));
+        if (!job.edge)
             return RT_ERR_NOMEM;
     }
+    if (o->corner_rays || (m == 1 && !o->jitter)) /* NULL when not applicable or no memory */
+        job.cover = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh, &job.cbx);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
     atomic_init(&job.next, 0);
@@ -510,24 +760,31 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     int rc = RT_OK;
     if (!w || !th)
         rc = RT_ERR_NOMEM;
+    size_t ncache = (size_t)(o->max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
     for (int k = 0; k < nt && rc == RT_OK; k++) {
         w[k].job = &job;
-        for (int a = 0; a <= RT_MAX_DEPTH; a++)
-            for (int b = 0; b < RT_MAX_LIGHTS; b++)
-                w[k].shadow_cache[a][b] = -1;
-        if (rt_ctx_init(&w[k].ctx, sc) != RT_OK)
+        w[k].shadow_cache = rt_alloc_array(ncache, sizeof(long));
+        if (!w[k].shadow_cache || rt_ctx_init(&w[k].ctx, sc) != RT_OK) {
             rc = RT_ERR_NOMEM;
+            break;
+        }
+        for (size_t a = 0; a < ncache; a++)
+            w[k].shadow_cache[a] = -1;
     }
     if (rc != RT_OK) {
-        for (int k = 0; w && k < nt; k++)
+        for (int k = 0; w && k < nt; k++) {
             rt_ctx_free(&w[k].ctx);
+            free(w[k].shadow_cache);
+        }
         free(w);
         free(th);
-        free(job.corner);
+        free(job.edge);
+        free(job.cover);
         return rc;
     }
     pthread_mutex_init(&job.lock, NULL);
     job.t0 = rt_now();
+    rt_prefault(rgb, (size_t)cam->width * (size_t)cam->height * 3 * sizeof(float));
     int started = 1;
     for (int k = 1; k < nt; k++) {
         if (pthread_create(&th[k], NULL, rt_work, &w[k]) != 0)
@@ -538,17 +795,8 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     for (int k = 1; k < started; k++)
         pthread_join(th[k], NULL);
     pthread_mutex_destroy(&job.lock);
-    if (o->corner_rays) {
-        size_t gw = (size_t)job.gw;
-        for (int y = 0; y < cam->height; y++)
-            for (int x = 0; x < cam->width; x++)
-                for (int c = 0; c < 3; c++) {
-                    const float *k0 = job.corner + 3 * ((size_t)y * gw + (size_t)x) + c;
-                    double v = 0.25 * ((double)k0[0] + k0[3] + k0[3 * gw] + k0[3 * gw + 3]);
-                    rgb[3 * ((size_t)y * (size_t)cam->width + (size_t)x) + (size_t)c] =
-                        isfinite(v) ? (float)v : 0.0f;
-                }
-    }
+    if (o->corner_rays)
+        rt_corner_average(&job);
     rt_stats st;
     memset(&st, 0, sizeof st);
     for (int k = 0; k < nt; k++) {
@@ -558,6 +806,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         st.reflection_rays += w[k].st.reflection_rays;
         st.refraction_rays += w[k].st.refraction_rays;
         rt_ctx_free(&w[k].ctx);
+        free(w[k].shadow_cache);
     }
     st.render_seconds = rt_now() - job.t0;
     st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
@@ -569,6 +818,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         *stats = st;
     free(w);
     free(th);
-    free(job.corner);
+    free(job.edge);
+    free(job.cover);
     return RT_OK;
 }

@@ -1,0 +1,302 @@
+/*
+ * test_rt_core.c -- the grid traversal against brute force under the build settings the
+ * defaults do not exercise, and the small mailbox of nearest / any-hit rays.
+ *
+ * Scenes are made so that the small direct-mapped mailbox (RT_HBOX entries, indexed by
+ * primitive index modulo RT_HBOX) collides on purpose: many triangles whose indices differ by
+ * multiples of 256 share cells, and exact duplicates (same vertices, other id) force the tie
+ * rule. Every setting must give the brute-force hit bit for bit (prim, t, side) and the same
+ * occlusion flags; a triangle fan around a ray-pierced vertex must never be missed.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include "gksrt.h"
+#include "rt_check.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static uint64_t rng_state = 1;
+
+static double rnd(void) /* deterministic uniform [0,1) */
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void add_tri(rt_scene *sc, const double v[9], int surf)
+{
+    static const int cnt[1] = {3};
+    assert_true(rt_scene_add_polygon(sc, 1, cnt, v, surf, surf) >= 0);
+}
+
+/* 1200 small random triangles in the unit cube, every 5th one copied about 256 ids later
+   (same vertices: the tie rule decides, and the copies tend to collide in the small mailbox),
+   plus a fan of 8 triangles around the vertex (0.5,0.5,0.5) */
+static void build_scene(rt_scene *sc)
+{
+    rt_surface s;
+    rt_surface_default(&s);
+    int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    enum { NT = 1200 };
+    static double v[NT][9];
+    rng_state = 12345;
+    for (int k = 0; k < NT; k++) {
+        double c[3];
+        for (int i = 0; i < 3; i++)
+            c[i] = 0.05 + 0.9 * rnd();
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                v[k][3 * j + i] = c[i] + 0.12 * (rnd() - 0.5);
+    }
+    for (int k = 0; k < NT; k++) {
+        add_tri(sc, v[k], surf);
+        if (k >= 256 && k % 5 == 0) /* copy of triangle k - 256, about 256 ids later */
+            add_tri(sc, v[k - 256], surf);
+    }
+    for (int j = 0; j < 8; j++) { /* fan around (0.5,0.5,0.5) in the plane z = 0.5 */
+        double a0 = 2.0 * M_PI * j / 8.0, a1 = 2.0 * M_PI * (j + 1) / 8.0;
+        double t[9] = {0.5, 0.5, 0.5, 0.5 + 0.2 * cos(a0), 0.5 + 0.2 * sin(a0), 0.5,
+                       0.5 + 0.2 * cos(a1), 0.5 + 0.2 * sin(a1), 0.5};
+        add_tri(sc, t, surf);
+    }
+}
+
+static void make_rays(rt_ray *rays, int n)
+{
+    rng_state = 777;
+    for (int k = 0; k < n; k++) {
+        rt_ray *r = &rays[k];
+        for (int i = 0; i < 3; i++) {
+            r->org[i] = 1.4 * rnd() - 0.2;
+            r->dir[i] = 2.0 * rnd() - 1.0;
+        }
+        if (k % 7 == 3) { /* through the fan's centre vertex */
+            for (int i = 0; i < 3; i++)
+                r->dir[i] = 0.5 - r->org[i];
+        }
+        if (k % 7 == 5) { /* axis-aligned, signed zeros */
+            int a = k % 3;
+            for (int i = 0; i < 3; i++)
+                r->dir[i] = (k / 7) % 2 ? -0.0 : 0.0;
+            r->dir[a] = (k / 14) % 2 ? -1.0 : 1.0;
+        }
+        r->tmin = 0.0;
+        r->tmax = k % 11 == 4 ? 0.4 : INFINITY;
+    }
+}
+
+static void test_settings_equal_brute(void **state)
+{
+    (void)state;
+    enum { N = 20000, NS = 6 };
+    const rt_build_options opts[NS] = {
+        {.brute_threshold = 0},                                         /* defaults */
+        {.brute_threshold = 0, .grid_factor = 0.002},                   /* one coarse top level */
+        {.brute_threshold = 0, .grid_factor = 0.01, .sub_factor = 1.0}, /* coarse second level */
+        {.brute_threshold = 0, .grid_factor = 0.01, .sub_factor = 64.0, .sub_min = 1},
+        {.brute_threshold = 0, .grid_factor = 4.0, .no_subgrids = 1},   /* fine, one level */
+        {.brute_threshold = 0, .grid_res = {3, 5, 2}, .grid_box = {0, 0, 0, 1, 1, 1}},
+    };
+    rt_scene *b = rt_scene_new();
+    build_scene(b);
+    rt_build_options ob = {.brute_force = 1};
+    assert_int_equal(rt_scene_commit(b, &ob), RT_OK);
+    rt_ray *rays = malloc(N * sizeof *rays);
+    rt_hit *hb = malloc(N * sizeof *hb), *hg = malloc(N * sizeof *hg);
+    unsigned char *ob_occ = malloc(N), *og_occ = malloc(N);
+    assert_non_null(rays);
+    assert_non_null(hb);
+    assert_non_null(hg);
+    assert_non_null(ob_occ);
+    assert_non_null(og_occ);
+    make_rays(rays, N);
+    rtc_traps_on();
+    assert_int_equal(rt_intersect(b, N, rays, hb), RT_OK);
+    assert_int_equal(rt_occluded(b, N, rays, ob_occ), RT_OK);
+    int nhit = 0, nfan = 0;
+    for (int k = 0; k < N; k++) {
+        nhit += hb[k].prim >= 0;
+        /* rays aimed at the fan's centre from below / above z = 0.5 hit something no later
+           than the fan (the vertex shared by 8 triangles must not leak) */
+        if (k % 7 == 3 && fabs(rays[k].org[2] - 0.5) > 1e-3 && rays[k].tmax > 1.0) {
+            nfan++;
+            assert_true(hb[k].prim >= 0);
+            assert_true(hb[k].t <= 1.0 + 1e-12);
+        }
+    }
+    assert_true(nhit > N / 4);
+    assert_true(nfan > 1000);
+    for (int s = 0; s < NS; s++) {
+        rt_scene *g = rt_scene_new();
+        build_scene(g);
+        assert_int_equal(rt_scene_commit(g, &opts[s]), RT_OK);
+        rt_grid_info gi;
+        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+        assert_true(gi.cells + gi.subcells > 1);
+        assert_int_equal(rt_intersect(g, N, rays, hg), RT_OK);
+        assert_int_equal(rt_occluded(g, N, rays, og_occ), RT_OK);
+        for (int k = 0; k < N; k++) {
+            assert_int_equal(hg[k].prim, hb[k].prim);
+            assert_int_equal(og_occ[k], ob_occ[k]);
+            if (hb[k].prim < 0)
+                continue;
+            assert_memory_equal(&hg[k].t, &hb[k].t, sizeof(double));
+            assert_int_equal(hg[k].side, hb[k].side);
+        }
+        rt_scene_free(g);
+    }
+    rtc_traps_off();
+    free(rays);
+    free(hb);
+    free(hg);
+    free(ob_occ);
+    free(og_occ);
+    rt_scene_free(b);
+}
+
+/* duplicates: the tie rule must pick the smaller id whichever copy the grid meets first */
+static void test_duplicate_tie(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    rt_surface s;
+    rt_surface_default(&s);
+    int surf = rt_scene_add_surface(sc, &s);
+    const double t[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const double far_tri[9] = {0, 0, 5, 1, 0, 5, 0, 1, 5};
+    /* 600 filler triangles, then copies of t at ids 600, 856 (= 600 + 256), 1112 */
+    for (int k = 0; k < 600; k++)
+        add_tri(sc, far_tri, surf);
+    add_tri(sc, t, surf);
+    for (int k = 0; k < 255; k++)
+        add_tri(sc, far_tri, surf);
+    add_tri(sc, t, surf);
+    for (int k = 0; k < 255; k++)
+        add_tri(sc, far_tri, surf);
+    add_tri(sc, t, surf);
+    rt_build_options o = {.brute_threshold = 0, .grid_factor = 1.0};
+    assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
+    rt_ray r = {{0.2, 0.3, -1.0}, {0.0, 0.0, 1.0}, 0.0, INFINITY};
+    rt_hit h;
+    assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
+    assert_int_equal(h.prim, 600);
+    assert_true(fabs(h.t - 1.0) < 1e-12);
+    r.org[2] = 2.0; /* from between: the far stack (smallest id 0) */
+    assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
+    assert_int_equal(h.prim, 0);
+    assert_true(fabs(h.t - 3.0) < 1e-12);
+    rt_scene_free(sc);
+}
+
+/* sparse clusters in a large box: the top level has wide empty regions the traversal jumps
+   over (rt_grid.dist); rays along exact diagonals leave the jump blocks through their corners */
+static double sparse_v[7 * 60][9];
+
+static void build_sparse(rt_scene *sc)
+{
+    rt_surface s;
+    rt_surface_default(&s);
+    int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    rng_state = 4242;
+    for (int c = 0; c < 7; c++) {
+        double ctr[3];
+        for (int i = 0; i < 3; i++)
+            ctr[i] = 10.0 * rnd();
+        for (int k = 0; k < 60; k++) {
+            double *v = sparse_v[60 * c + k];
+            for (int j = 0; j < 9; j++)
+                v[j] = ctr[j % 3] + 0.8 * (rnd() - 0.5);
+            add_tri(sc, v, surf);
+        }
+    }
+    const double big[9] = {0, 0, 0, 10, 0, 0, 0, 10, 0}; /* floor corner piece */
+    add_tri(sc, big, surf);
+}
+
+static void test_empty_space_jumps(void **state)
+{
+    (void)state;
+    enum { N = 30000, NS = 4 };
+    const rt_build_options opts[NS] = {
+        {.brute_threshold = 0},
+        {.brute_threshold = 0, .grid_res = {48, 48, 48}, .grid_box = {-1, -1, -1, 11, 11, 11}},
+        {.brute_threshold = 0, .grid_res = {61, 7, 33}, .no_subgrids = 1},
+        {.brute_threshold = 0, .grid_factor = 8.0},
+    };
+    rt_scene *b = rt_scene_new();
+    build_sparse(b);
+    rt_build_options ob = {.brute_force = 1};
+    assert_int_equal(rt_scene_commit(b, &ob), RT_OK);
+    rt_ray *rays = malloc(N * sizeof *rays);
+    rt_hit *hb = malloc(N * sizeof *hb), *hg = malloc(N * sizeof *hg);
+    unsigned char *ob_occ = malloc(N), *og_occ = malloc(N);
+    assert_non_null(rays);
+    assert_non_null(hb);
+    assert_non_null(hg);
+    assert_non_null(ob_occ);
+    assert_non_null(og_occ);
+    rng_state = 99;
+    for (int k = 0; k < N; k++) {
+        rt_ray *r = &rays[k];
+        for (int i = 0; i < 3; i++) {
+            r->org[i] = 12.0 * rnd() - 1.0;
+            r->dir[i] = 2.0 * rnd() - 1.0;
+        }
+        if (k % 3 == 1) /* exact diagonals: equal steps on all axes */
+            for (int i = 0; i < 3; i++)
+                r->dir[i] = ((k >> (i + 2)) & 1) ? -1.0 : 1.0;
+        if (k % 3 == 2) { /* aimed at a vertex of a cluster triangle */
+            const double *v = sparse_v[(k / 3) % (7 * 60)] + 3 * (k % 9 / 3);
+            for (int i = 0; i < 3; i++)
+                r->dir[i] = v[i] - r->org[i];
+        }
+        r->tmin = 0.0;
+        r->tmax = k % 13 == 5 ? 3.0 : INFINITY;
+    }
+    rtc_traps_on();
+    assert_int_equal(rt_intersect(b, N, rays, hb), RT_OK);
+    assert_int_equal(rt_occluded(b, N, rays, ob_occ), RT_OK);
+    int nhit = 0;
+    for (int k = 0; k < N; k++)
+        nhit += hb[k].prim >= 0;
+    assert_true(nhit > N / 20);
+    for (int st = 0; st < NS; st++) {
+        rt_scene *g = rt_scene_new();
+        build_sparse(g);
+        assert_int_equal(rt_scene_commit(g, &opts[st]), RT_OK);
+        assert_int_equal(rt_intersect(g, N, rays, hg), RT_OK);
+        assert_int_equal(rt_occluded(g, N, rays, og_occ), RT_OK);
+        for (int k = 0; k < N; k++) {
+            assert_int_equal(hg[k].prim, hb[k].prim);
+            assert_int_equal(og_occ[k], ob_occ[k]);
+            if (hb[k].prim >= 0)
+                assert_memory_equal(&hg[k].t, &hb[k].t, sizeof(double));
+        }
+        rt_scene_free(g);
+    }
+    rtc_traps_off();
+    free(rays);
+    free(hb);
+    free(hg);
+    free(ob_occ);
+    free(og_occ);
+    rt_scene_free(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_settings_equal_brute),
+        cmocka_unit_test(test_duplicate_tie),
+        cmocka_unit_test(test_empty_space_jumps),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
