@@ -9,7 +9,10 @@
 # Peers: scripts/setup-bench.sh installs them from Debian. Data: ../shared/data (override
 # with GKS_DATA=dir). Timings on a shared machine are noisy: every figure is the best of 3
 # interleaved runs (ours and the peer alternately), and only the ratios within one run mean
-# much.
+# much. The one-thread tables run pinned to one core (taskset), once for every core: on the
+# 2-vCPU VMs here one core at times runs our traversal up to 1.5x slower than the other
+# while Embree hardly notices (bunny primary o/E 0.68 on core 0, 0.46 on core 1, same binary,
+# minutes apart), so an unpinned run measures partly where the scheduler put each program.
 set -eu
 
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
@@ -71,19 +74,39 @@ run() {
          "$(nproc) cores shared with other jobs; $(gcc --version | head -1)"
     echo "# ours: gksrt, Release (-O3 via CMAKE_BUILD_TYPE=Release, no -ffast-math), 1 thread"
     echo "# peers (Debian): $(dpkg-query -W -f='${Package} ${Version}; ' tachyon-bin-nox povray libembree-dev 2>/dev/null | sed 's/; $//')"
+    echo "# one-thread tables: both programs pinned to the same core (taskset), once per core;"\
+         "the cores of a shared VM differ in speed (and not by the same factor for every program)"
+    for cpu in $CPUS; do
+        echo
+        echo "## core $cpu"
+        echo
+        pin "$cpu" "$BIN/cmp_tachyon" "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" \
+            "$DATA/spd/mount-tessellated.nff" "$DATA/spd/teapot.nff" "$DATA/spd/tetra.nff"
+        echo
+        # shellcheck disable=SC2086 # the mesh list is split on purpose
+        pin "$cpu" "$BIN/cmp_embree" rays 1024 $MESHES
+    done
     echo
-    "$BIN/cmp_tachyon" "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" "$DATA/spd/mount-tessellated.nff" \
-        "$DATA/spd/teapot.nff" "$DATA/spd/tetra.nff"
+    echo "## core ${CPUS%% *} only"
     echo
-    # shellcheck disable=SC2086 # the mesh list is split on purpose
-    "$BIN/cmp_embree" rays 1024 $MESHES
+    pin "${CPUS%% *}" "$BIN/cmp_povray" "$(command -v povray)" "$OUT" "$DATA/meshes/bunny00.off" 512
     echo
-    "$BIN/cmp_povray" "$(command -v povray)" "$OUT" "$DATA/meshes/bunny00.off" 512
-    echo
-    "$BIN/cmp_embree" build
+    pin "${CPUS%% *}" "$BIN/cmp_embree" build
     echo
     threads
 }
+
+# pin CPU CMD...: run CMD on core CPU when taskset exists (util-linux), else unpinned
+pin() {
+    c=$1
+    shift
+    if command -v taskset >/dev/null 2>&1; then
+        taskset -c "$c" "$@"
+    else
+        "$@"
+    fi
+}
+CPUS=$(seq 0 $(($(nproc) - 1)) | tr '\n' ' ' | sed 's/ $//')
 
 # Speed-up over threads: rt_bench (SPD procedure, 513x513 corner rays, depth 5, no cut-off),
 # wall seconds of rt_render, best of 3, for 1 thread and for every core of the machine.
