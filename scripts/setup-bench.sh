@@ -5,10 +5,11 @@
 #   tachyon-bin-nox  Tachyon (uniform-grid ray tracer reading NFF), command-line renderer
 #   povray           POV-Ray 3.7
 #   gnuplot-nox      plots of bench/speed_error (PNG via the pngcairo / png terminals)
+#   libosmesa6-dev   Mesa llvmpipe through OSMesa, the peer of bench/raster/bench_gks
 # Already installed packages are skipped; sudo is used only when not running as root.
 set -eu
 
-PKGS="libembree-dev tachyon-bin-nox povray gnuplot-nox"
+PKGS="libembree-dev tachyon-bin-nox povray gnuplot-nox libosmesa6-dev"
 
 missing=""
 for p in $PKGS; do
