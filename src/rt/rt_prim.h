@@ -16,16 +16,13 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
                                double *tout)
 {
     const int kx = r->kx, ky = r->ky, kz = r->kz;
-    const double *o = r->o;
-    double A[3], B[3], C[3];
-    for (int j = 0; j < 3; j++) {
-        A[j] = tr->v[0][j] - o[j];
-        B[j] = tr->v[1][j] - o[j];
-        C[j] = tr->v[2][j] - o[j];
-    }
-    const double Ax = A[kx] - r->sx * A[kz], Ay = A[ky] - r->sy * A[kz];
-    const double Bx = B[kx] - r->sx * B[kz], By = B[ky] - r->sy * B[kz];
-    const double Cx = C[kx] - r->sx * C[kz], Cy = C[ky] - r->sy * C[kz];
+    /* only the components in the ray's axis order are formed (loaded by index straight from
+       the triangle, no gather through a stack copy) */
+    const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
+    const double Az = tr->v[0][kz] - oz, Bz = tr->v[1][kz] - oz, Cz = tr->v[2][kz] - oz;
+    const double Ax = (tr->v[0][kx] - ox) - r->sx * Az, Ay = (tr->v[0][ky] - oy) - r->sy * Az;
+    const double Bx = (tr->v[1][kx] - ox) - r->sx * Bz, By = (tr->v[1][ky] - oy) - r->sy * Bz;
+    const double Cx = (tr->v[2][kx] - ox) - r->sx * Cz, Cy = (tr->v[2][ky] - oy) - r->sy * Cz;
     double U = Cx * By - Cy * Bx;
     double V = Ax * Cy - Ay * Cx;
     double W = Bx * Ay - By * Ax;
@@ -37,7 +34,7 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
     /* one data-dependent branch (hit or not) instead of several unpredictable ones */
     const int mixed = ((U < 0.0) | (V < 0.0) | (W < 0.0)) & ((U > 0.0) | (V > 0.0) | (W > 0.0));
     const double det = U + V + W;
-    const double T = U * (r->sz * A[kz]) + V * (r->sz * B[kz]) + W * (r->sz * C[kz]);
+    const double T = U * (r->sz * Az) + V * (r->sz * Bz) + W * (r->sz * Cz);
     const double t = T / (det != 0.0 ? det : 1.0);
     if (mixed | (det == 0.0) | !(t >= tmin) | !(t <= tmax))
         return 0;

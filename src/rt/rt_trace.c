@@ -303,6 +303,8 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
    before they are tested one after the other: the misses of large meshes overlap */
 static inline void rt_prefetch_tris(const rt_scene *sc, const uint32_t *refs, uint32_t n)
 {
+    if (n < 2) /* a single triangle is loaded by its test at once */
+        return;
     for (uint32_t k = 0; k < n; k++)
         if (refs[k] < sc->ntri) {
             const char *p = (const char *)&sc->tri[refs[k]];
@@ -381,7 +383,11 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     t1 = s.t1;
     size_t ci = rt_cell_index(g, s.c);
     for (;;) {
-        if (dist && dist[ci] >= RT_JUMP_MIN) {
+        /* top level: dist > 0 marks an empty cell without a second-level grid (rt_build.c),
+           passed with one load (the best hit cannot have changed there) */
+        if (dist && dist[ci] != 0) {
+            if (dist[ci] < RT_JUMP_MIN)
+                goto advance;
             /* empty-space jump: every cell within dist - 1 of this one is empty, so the ray
                continues where it leaves that block (the nearer block face on each stepping
                axis); the walk restarts from the cell holding that point. A cell the exact
@@ -408,6 +414,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                 ci = rt_cell_index(g, s.c);
                 continue;
             }
+            goto advance;
         }
         const uint32_t k0 = off[ci], k1 = off[ci + 1];
         if (k0 != k1) {
@@ -429,6 +436,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
            crossing it). */
         if (mode == 0 && w->best < t1)
             t1 = w->best;
+    advance:
         RT_ADVANCE();
     }
 }
