@@ -55,17 +55,11 @@ int main(int argc, char **argv)
         } else if (strcmp(a, "--depth") == 0 && v) {
             bad = scene_gks_int_arg(v, 1, 64, &go.depth), i++;
         } else if (strcmp(a, "--ambient") == 0 && v) {
-            char *e;
-            go.ambient = strtod(v, &e);
-            bad = !*v || *e || !(go.ambient >= 0 && go.ambient <= 1), i++;
+            bad = scene_gks_real_arg(v, 0, 1, &go.ambient), i++;
         } else if (strcmp(a, "--azimuth") == 0 && v) {
-            char *e;
-            azimuth = strtod(v, &e);
-            bad = !*v || *e || !(fabs(azimuth) <= 360), i++;
+            bad = scene_gks_real_arg(v, -360, 360, &azimuth), i++;
         } else if (strcmp(a, "--size") == 0 && v) {
-            char tail;
-            bad = sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 8192 ||
-                  h > 8192, i++;
+            bad = scene_gks_size_arg(v, &w, &h), i++;
         } else if (a[0] == '-' && a[1] == '-') {
             usage();
             return 1;

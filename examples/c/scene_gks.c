@@ -348,6 +348,27 @@ int scene_gks_int_arg(const char *s, long lo, long hi, int *v)
     return 0;
 }
 
+int scene_gks_real_arg(const char *s, double lo, double hi, double *v)
+{
+    char *e;
+    double x = strtod(s, &e);
+    if (!*s || *e || !(x >= lo && x <= hi))
+        return -1;
+    *v = x;
+    return 0;
+}
+
+int scene_gks_size_arg(const char *s, int *w, int *h)
+{
+    int a, b;
+    char tail;
+    if (sscanf(s, "%dx%d%c", &a, &b, &tail) != 2 || a < 1 || b < 1 || a > 8192 || b > 8192)
+        return -1;
+    *w = a;
+    *h = b;
+    return 0;
+}
+
 int scene_gks_perfect_square(int n)
 {
     int m = 1;

@@ -61,6 +61,10 @@ void scene_gks_print_stats(const scene_gks_result *res);
 void scene_gks_warn_stderr(void *ctx, const char *msg);
 /* Integer option value s in [lo, hi] into *v: 0, or -1 if s is not such an integer. */
 int scene_gks_int_arg(const char *s, long lo, long hi, int *v);
+/* Real option value s in [lo, hi] into *v: 0, or -1 if s is not such a number. */
+int scene_gks_real_arg(const char *s, double lo, double hi, double *v);
+/* Image size "WxH", each 1..8192, into *w, *h: 0, or -1 (then *w, *h unchanged). */
+int scene_gks_size_arg(const char *s, int *w, int *h);
 /* Whether n is a perfect square (samples per pixel are m x m strata). */
 int scene_gks_perfect_square(int n);
 

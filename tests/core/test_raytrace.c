@@ -53,7 +53,8 @@ static void plain_sampling(int ws)
     gescape(GESC_RT_CUTOFF, &in, NULL);
 }
 
-static void open_png(int ws, const char *file, int mode)
+/* A 64 x 64 PNG workstation in HLHSR mode `mode` with the workstation's defaults. */
+static void open_png_defaults(int ws, const char *file, int mode)
 {
     unlink(file);
     gopen_ws(ws, file, GWS_TYPE_PNG);
@@ -61,6 +62,11 @@ static void open_png(int ws, const char *file, int mode)
     gset_ws_win(ws, &unit_win);
     gset_ws_vp(ws, &vp64);
     gset_hlhsr_mode(ws, mode);
+}
+
+static void open_png(int ws, const char *file, int mode)
+{
+    open_png_defaults(ws, file, mode);
     plain_sampling(ws);
 }
 
@@ -478,12 +484,7 @@ static void test_default_sampling(void **u)
     (void)u;
     reset_gks();
     gopen_gks(NULL, 0);
-    unlink("t_rt_default.png");
-    gopen_ws(1, "t_rt_default.png", GWS_TYPE_PNG);
-    gactivate_ws(1);
-    gset_ws_win(1, &unit_win);
-    gset_ws_vp(1, &vp64);
-    gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+    open_png_defaults(1, "t_rt_default.png", GHLHSR_RAYTRACE);
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, -0.8, -0.6 },
                          { 1, 0 }, 0, 1 };
     gset_light_src_rep(1, 2, &l);

@@ -120,6 +120,19 @@ static void lerp4(const double a[4], const double b[4], double t, double r[4])
         r[i] = a[i] + t * (b[i] - a[i]);
 }
 
+/* The crossing of segment a -> b with the plane of a constraint worth da at a and db at b
+ * (opposite signs or one of them 0), interpolated from the end nearer to the plane (|d|
+ * smaller): the step t*(far - near) then has |t| <= 1/2, so a far end at 1e30 cannot wipe
+ * out the near end's coordinates (from the far end, t rounds to 1 and the "crossing" would
+ * be the near vertex itself, off the plane by up to its whole distance). */
+static void cross4(const double a[4], const double b[4], double da, double db, double r[4])
+{
+    if (fabs(da) <= fabs(db))
+        lerp4(a, b, da / (da - db), r);
+    else
+        lerp4(b, a, db / (db - da), r);
+}
+
 /* A point on a segment p0 -> p1 as its parameter t from p0 and u = 1 - t from p1, each
  * computed directly (d0/(d0-d1) and d1/(d1-d0)), so that a point near either end keeps its
  * precision when the other end is far away (t = 1 - 6e-31 is 1 in double, u is not 0);
@@ -166,19 +179,15 @@ static int clip_seg(const gks_xform_clip *c, const double p0[4], const double p1
     return 0;
 }
 
-/* The point x: an unclipped end exactly, otherwise the crossing interpolated from the end
- * nearer to its plane (as sh_emit_crossing does for polygons), so that an end at 1e30 does
- * not wipe out the other one. */
+/* The point x: an unclipped end exactly, otherwise the crossing (cross4). */
 static void seg_point(const double p0[4], const double p1[4], const seg_par *x, double q[4])
 {
     if (x->t <= 0.0)
         memcpy(q, p0, 4 * sizeof *q);
     else if (x->u <= 0.0)
         memcpy(q, p1, 4 * sizeof *q);
-    else if (fabs(x->d[0]) <= fabs(x->d[1]))
-        lerp4(p0, p1, x->t, q);
     else
-        lerp4(p1, p0, x->u, q);
+        cross4(p0, p1, x->d[0], x->d[1], q);
 }
 
 int gks_xform_clip_line(const gks_xform_clip *c, const double p0[4], const double p1[4],
@@ -285,18 +294,11 @@ static int sh_crosses(double a, double b)
 
 static void sh_push(sh_ctx *x, int s, const double p[4]);
 
-/* The crossing point is interpolated from the end nearer to the plane (|d| smaller): the
- * step t*(far - near) then has |t| <= 1/2 of the segment, so a far end at 1e30 cannot wipe
- * out the near end's coordinates (from the far end, t rounds to 1 and the "crossing" would
- * be the inside vertex itself, off the plane by up to its whole distance). */
 static void sh_emit_crossing(sh_ctx *x, int s, const double a[4], double da,
                              const double b[4], double db)
 {
     double q[4];
-    if (fabs(da) <= fabs(db))
-        lerp4(a, b, da / (da - db), q);
-    else
-        lerp4(b, a, db / (db - da), q);
+    cross4(a, b, da, db, q);
     sh_push(x, s + 1, q);
 }
 
