@@ -140,8 +140,9 @@ typedef struct rt_build_options {
     int sub_min;          /* second level for top cells with more references; <= 0: default */
     double sub_factor;    /* second-level cells per reference; <= 0: default */
     int grid_frame;       /* 0: automatic: the grid is laid out in a rotated frame (axes from
-                             one of the largest primitives) when that shrinks the grid box
-                             volume below 0.8 of the VRC3-aligned one (scenes seen obliquely);
+                             one of the largest primitives) when that is estimated to save
+                             eye rays (along VRC3 -z) or secondary rays enough traversal
+                             (docs/RAYTRACING.md; scenes seen obliquely);
                              1: always VRC3 axes. grid_res forces VRC3 axes. Results do not
                              depend on the frame (grid == brute force bit for bit). */
 } rt_build_options;

@@ -627,6 +627,96 @@ static void test_rotated_grid(void **state)
     rtu_mesh_free(&m);
 }
 
+/* A cloud of nt small triangles in the box [-hx,hx] x [-hy,hy] x [-hz,hz] of a frame turned by
+ * ay about y, then ax about x (VRC3 = R p), plus one large square on the box face z = -hz (its
+ * frame, the turned one, is the grid frame candidate). aligned = 1: every small triangle lies in a plane of the
+ * turned frame (normals along its axes); 0: random orientations. */
+static void frame_cloud(rt_scene *sc, int s, int nt, double hx, double hy, double hz, double ay,
+                        double ax, int aligned, uint64_t seed)
+{
+    const double cy = cos(ay), sy = sin(ay), cx = cos(ax), sx = sin(ax);
+    /* R = Rx(ax) Ry(ay), rows */
+    const double R[3][3] = {{cy, 0, sy}, {sx * sy, cx, -sx * cy}, {-cx * sy, sx, cx * cy}};
+    uint64_t rng = seed;
+    for (int k = 0; k <= nt; k++) {
+        double q[3][3], v[3][3];
+        if (k == nt) { /* the large square: one 4-gon (first edge along the frame's x) */
+            const double sq[4][3] = {{-hx, -hy, -hz}, {hx, -hy, -hz}, {hx, hy, -hz}, {-hx, hy, -hz}};
+            double xyz[12];
+            for (int j = 0; j < 4; j++)
+                for (int a = 0; a < 3; a++)
+                    xyz[3 * j + a] = R[a][0] * sq[j][0] + R[a][1] * sq[j][1] + R[a][2] * sq[j][2];
+            const int four = 4;
+            assert_true(rt_scene_add_polygon(sc, 1, &four, xyz, s, s) >= 0);
+            break;
+        }
+        const double h = 0.01, c[3] = {(2 * rtu_rand(&rng) - 1) * (hx - h),
+                                       (2 * rtu_rand(&rng) - 1) * (hy - h),
+                                       (2 * rtu_rand(&rng) - 1) * (hz - h)};
+        const int ax0 = (int)(3 * rtu_rand(&rng)) % 3; /* aligned: the normal's axis */
+        for (int j = 0; j < 3; j++) {
+            double d[3];
+            rtu_rand_dir(&rng, d);
+            if (aligned)
+                d[ax0] = 0.0;
+            for (int a = 0; a < 3; a++)
+                q[j][a] = c[a] + h * d[a];
+        }
+        for (int j = 0; j < 3; j++)
+            for (int a = 0; a < 3; a++)
+                v[j][a] = R[a][0] * q[j][0] + R[a][1] * q[j][1] + R[a][2] * q[j][2];
+        assert_true(add_tri(sc, v[0], v[1], v[2], s) >= 0);
+    }
+}
+
+/* The grid frame rule (rt_build.c): a rotation is taken for what it saves eye rays (which run
+ * along VRC3 -z) or secondary rays (surfaces near grid planes), not for the box volume alone.
+ * Each case: the frame chosen, and grid == brute force bit for bit on eye rays. */
+static void test_grid_frame_choice(void **state)
+{
+    (void)state;
+    const double deg = 3.14159265358979323846 / 180.0;
+    const struct {
+        double hx, hy, hz, ay, ax;
+        int aligned, rotated;
+        const char *what;
+    } cases[] = {
+        /* cube turned 30 degrees: VRC3 box volume 1.87x, but the view direction would leave
+           the grid axes (E = 0.54^(2/3) * 1.37 = 0.90): VRC3 axes (the volume rule rotated) */
+        {0.5, 0.5, 0.5, 30 * deg, 0, 0, 0, "turned cube, random triangles"},
+        /* thin slab turned 30 degrees: E = 0.10^(2/3) * 1.37 = 0.30: rotated */
+        {0.5, 0.5, 0.025, 30 * deg, 0, 0, 1, "turned thin slab"},
+        /* cube turned 30 and 20 degrees, triangles in its planes: S = 0.69 (E 1.2): rotated */
+        {0.5, 0.5, 0.5, 30 * deg, 20 * deg, 1, 1, "turned cube, triangles in its planes"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        rt_scene *sc = rt_scene_new();
+        assert_non_null(sc);
+        int s = surf_plain(sc);
+        frame_cloud(sc, s, 3000, cases[c].hx, cases[c].hy, cases[c].hz, cases[c].ay, cases[c].ax,
+                    cases[c].aligned, 11 + c);
+        assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+        rt_grid_info gi;
+        assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+        enum { NR = 400 };
+        rt_ray rays[NR];
+        uint64_t rng = 5;
+        for (int k = 0; k < NR; k++) { /* eye at z = 3 looking down -z over the cloud */
+            const double o[3] = {0, 0, 3}, d[3] = {1.6 * rtu_rand(&rng) - 0.8,
+                                                   1.6 * rtu_rand(&rng) - 0.8, -3};
+            ray_set(&rays[k], o, d);
+        }
+        size_t nhit = 0, bad = grid_vs_brute(sc, NULL, rays, NR, &nhit);
+        printf("%s: grid %dx%dx%d %s; %d eye rays, %zu hits, %zu grid/brute mismatches\n",
+               cases[c].what, gi.res[0], gi.res[1], gi.res[2],
+               gi.rotated ? "rotated" : "in VRC3 axes", NR, nhit, bad);
+        assert_int_equal(gi.rotated, cases[c].rotated);
+        assert_int_equal(bad, 0);
+        assert_true(nhit > NR / 4);
+        rt_scene_free(sc);
+    }
+}
+
 /* ---- 5: coplanar and overlapping polygons ---- */
 
 static void test_coplanar(void **state)
@@ -1510,6 +1600,7 @@ int main(void)
         cmocka_unit_test(test_leak_probe),        cmocka_unit_test(test_shared_diagonal),
         cmocka_unit_test(test_reintersection),    cmocka_unit_test(test_shadow_acne),
         cmocka_unit_test(test_box_room),          cmocka_unit_test(test_rotated_grid),
+        cmocka_unit_test(test_grid_frame_choice),
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_polygons),          cmocka_unit_test(test_gears_polygons),
         cmocka_unit_test(test_teapot_stadium),    cmocka_unit_test(test_tir),
