@@ -24,9 +24,9 @@
  * (x,y), the last row and column aside) and averaged in place at the end: no second
  * full-size buffer to page-fault in. Per worker: a mailbox and, per depth and light, the last
  * opaque shadow blocker, tested first (rt_hits_prim; an opaque hit answers as the traversal
- * would). Lights surely behind the surface are rejected before the square root. Eye rays in
- * blocks of the raster that no primitive's projected bounding box reaches (rt_cover) are
- * background without being traced. All of this leaves the picture and the ray counts bit for
+ * would). Lights surely behind the surface are rejected before the square root. Eye rays
+ * that no primitive's projection reaches (rt_cover: the convex hull of a triangle's, quad's or
+ * cell array's projected vertices, a polygon's box) are background without being traced. All of this leaves the picture and the ray counts bit for
  * bit as the direct evaluation.
  */
 
@@ -74,9 +74,8 @@ typedef struct rt_job {
                            kept in rgb itself (corner (x,y) at pixel (x,y)) until averaged */
     int gw, gh;         /* ray grid size (pixels or corners) */
     int m;              /* strata per axis */
-    int32_t *cover;     /* one-ray modes: per block of RT_CB x RT_CB rays, > 0 if a primitive's
-                           projection (with a margin) reaches it; NULL: no culling */
-    int cbx;            /* blocks per row of cover */
+    uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
+                           margin) reaches it; NULL: no culling */
     int tiles_x, ntiles;
     atomic_int next;
     atomic_int done;
@@ -466,15 +465,67 @@ static void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3]
 }
 
 /* Eye ray culling for scenes lying in front of the eye plane: the ray through raster point
-   (px, py) can only hit a primitive whose projected vertices' bounding box, enlarged by one
-   pixel (rays and projections err by ~1e-15 of the raster), contains (px, py). Blocks of
-   RT_CB x RT_CB rays met by no such box are background. Built once per frame with a 2-D
-   difference array: O(vertices + blocks). NULL (no culling) if a vertex is not in front of
-   the eye plane, if there are more vertices than rays (the projections would cost more than
-   they can save), or without memory. */
-#define RT_CB 4
-static int32_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh,
-                         int *cbx)
+   (px, py) can only hit a primitive whose projection contains (px, py). A straight edge
+   projects to a straight edge, so a triangle, convex quad or cell array projects to the
+   convex polygon of its projected vertices; a general polygon is bounded by the box of its
+   vertices. Each is taken enlarged by RT_COVER_MARGIN raster units (rays and projections err
+   by ~1e-12 of the raster; the inversion is checked to 1/100 below), and every ray point
+   inside is marked: rays not marked are background. Built once per frame, row intervals per
+   primitive: O(vertices + rows covered). NULL (no culling) if a vertex is not in front of the
+   eye plane, if there are more vertices than rays (the projections would cost more than they
+   can save), or without memory. */
+#define RT_COVER_MARGIN 0.25
+
+/* marks the rays (x + off, y + off) of row y in [lo, hi] (raster units, clamped) */
+static void rt_cover_span(uint8_t *c, int gw, double off, int y, double lo, double hi)
+{
+    double a = ceil(lo - off), b = floor(hi - off);
+    if (!(a <= b) || b < 0.0 || a > gw - 1)
+        return;
+    int x0 = a < 0.0 ? 0 : (int)a, x1 = b > gw - 1 ? gw - 1 : (int)b;
+    memset(c + (size_t)y * (size_t)gw + (size_t)x0, 1, (size_t)(x1 - x0 + 1));
+}
+
+/* marks the rays inside the convex polygon q[0..n-1] (either orientation) enlarged by m: per
+   row the interval where every edge's half-plane, moved out by m, holds (that intersection
+   contains the m-neighbourhood of the polygon); a polygon of almost no area: its box. */
+static void rt_cover_convex(uint8_t *c, int gw, int gh, double off, const double (*q)[2], int n,
+                            const double bb[4], double m)
+{
+    double area = 0.0, l2 = 0.0;
+    for (int i = 0; i < n; i++) {
+        const double *p0 = q[i], *p1 = q[(i + 1) % n];
+        area += p0[0] * p1[1] - p1[0] * p0[1];
+        l2 += (p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1]);
+    }
+    const int box = !(fabs(area) > 1e-9 * l2);
+    const double sg = area > 0.0 ? 1.0 : -1.0;
+    double y0 = ceil(bb[2] - m - off), y1 = floor(bb[3] + m - off);
+    if (y0 < 0.0)
+        y0 = 0.0;
+    if (y1 > gh - 1)
+        y1 = gh - 1;
+    for (int y = (int)y0; y <= (int)y1 && y0 <= y1; y++) {
+        const double py = y + off;
+        double lo = bb[0] - m, hi = bb[1] + m;
+        for (int i = 0; i < n && !box; i++) {
+            /* sg * ((p1 - p0) x (p - p0)) >= -m |p1 - p0|, linear in px: cx * px + c0 >= 0 */
+            const double *p0 = q[i], *p1 = q[(i + 1) % n];
+            const double ex = p1[0] - p0[0], ey = p1[1] - p0[1];
+            const double cx = -sg * ey;
+            const double c0 = sg * (ex * (py - p0[1]) + ey * p0[0]) + m * sqrt(ex * ex + ey * ey);
+            if (cx > 0.0)
+                lo = fmax(lo, -c0 / cx);
+            else if (cx < 0.0)
+                hi = fmin(hi, -c0 / cx);
+            else if (c0 < 0.0)
+                hi = -INFINITY;
+        }
+        rt_cover_span(c, gw, off, y, lo, hi);
+    }
+}
+
+static uint8_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh)
 {
     if (sc->nprim == 0)
         return NULL;
@@ -482,7 +533,7 @@ static int32_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, i
     if (!rt_camera_vmap(cam, vm, &ws))
         return NULL;
     /* the projection must invert the rays: the ends of the rays through the raster's corners
-       and centre come back to their raster points within 1/100 of the margin (else a badly
+       and centre come back to their raster points within 1/100 of a raster unit (else a badly
        conditioned view mapping: no culling) */
     for (int k = 0; k < 5; k++) {
         double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
@@ -505,51 +556,33 @@ static int32_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, i
         if (nv > budget)
             return NULL;
     }
-    const int nbx = (gw + RT_CB - 1) / RT_CB, nby = (gh + RT_CB - 1) / RT_CB;
-    int32_t *c = rt_calloc_array((size_t)(nbx + 1) * (size_t)(nby + 1), sizeof *c);
+    uint8_t *c = rt_calloc_array(budget, 1);
     if (!c)
         return NULL;
     for (size_t i = 0; i < sc->nprim; i++) {
-        double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY, q[3];
-        for (size_t k = 0, nv = rt_prim_nverts(sc, i); k < nv; k++) {
+        double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY}, q[4][2], x[3];
+        const size_t nv = rt_prim_nverts(sc, i);
+        for (size_t k = 0; k < nv; k++) {
             double pu, pv; /* finite */
-            rt_prim_vertex(sc, i, k, q);
-            if (!rt_camera_project(cam, vm, ws, q, &pu, &pv)) {
+            rt_prim_vertex(sc, i, k, x);
+            if (!rt_camera_project(cam, vm, ws, x, &pu, &pv)) {
                 free(c);
                 return NULL;
             }
-            u0 = pu < u0 ? pu : u0;
-            u1 = pu > u1 ? pu : u1;
-            v0 = pv < v0 ? pv : v0;
-            v1 = pv > v1 ? pv : v1;
+            if (k < 4) {
+                q[k][0] = pu;
+                q[k][1] = pv;
+            }
+            bb[0] = fmin(bb[0], pu);
+            bb[1] = fmax(bb[1], pu);
+            bb[2] = fmin(bb[2], pv);
+            bb[3] = fmax(bb[3], pv);
         }
-        /* rays k with k + off in [u0 - 1, u1 + 1] (clamped to the raster) */
-        double a0 = ceil(u0 - 1.0 - off), a1 = floor(u1 + 1.0 - off);
-        double b0 = ceil(v0 - 1.0 - off), b1 = floor(v1 + 1.0 - off);
-        if (a1 < 0.0 || b1 < 0.0 || a0 > gw - 1 || b0 > gh - 1 || a0 > a1 || b0 > b1)
-            continue;
-        int x0 = a0 < 0.0 ? 0 : (int)a0, x1 = a1 > gw - 1 ? gw - 1 : (int)a1;
-        int y0 = b0 < 0.0 ? 0 : (int)b0, y1 = b1 > gh - 1 ? gh - 1 : (int)b1;
-        x0 /= RT_CB, x1 = x1 / RT_CB + 1, y0 /= RT_CB, y1 = y1 / RT_CB + 1;
-        c[(size_t)y0 * (nbx + 1) + x0]++;
-        c[(size_t)y0 * (nbx + 1) + x1]--;
-        c[(size_t)y1 * (nbx + 1) + x0]--;
-        c[(size_t)y1 * (nbx + 1) + x1]++;
+        const int kind = sc->prim[i].kind;
+        const int convex = kind == RT_KIND_TRI || kind == RT_KIND_QUAD || kind == RT_KIND_CELL;
+        rt_cover_convex(c, gw, gh, off, (const double(*)[2])q, convex ? (int)nv : 0, bb,
+                        RT_COVER_MARGIN);
     }
-    /* inclusive 2-D prefix sums: c = number of boxes over the block (<= nprim) */
-    for (int y = 0; y <= nby; y++)
-        for (int x = 0; x <= nbx; x++) {
-            size_t k = (size_t)y * (nbx + 1) + x;
-            int64_t v = c[k];
-            if (x > 0)
-                v += c[k - 1];
-            if (y > 0)
-                v += c[k - (nbx + 1)];
-            if (x > 0 && y > 0)
-                v -= c[k - (nbx + 1) - 1];
-            c[k] = (int32_t)v;
-        }
-    *cbx = nbx + 1;
     return c;
 }
 
@@ -585,10 +618,10 @@ static void rt_tile(rt_worker *w, int tile)
             /* the rays of a tile row first (independent, their divisions overlap), only those
                not culled (slot -1: surely background) */
             int n = 0;
-            const int32_t *cov = job->cover ? job->cover + (size_t)(y / RT_CB) * (size_t)job->cbx : NULL;
+            const uint8_t *cov = job->cover ? job->cover + (size_t)y * (size_t)job->gw : NULL;
             for (int x = x0; x < x1; x++) {
                 slot[x - x0] = -1;
-                if (!cov || cov[x / RT_CB] > 0) {
+                if (!cov || cov[x]) {
                     memcpy(xs[n], xt[x - x0], sizeof xs[n]);
                     slot[x - x0] = n++;
                 }
@@ -740,7 +773,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
             return RT_ERR_NOMEM;
     }
     if (o->corner_rays || (m == 1 && !o->jitter)) /* NULL when not applicable or no memory */
-        job.cover = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh, &job.cbx);
+        job.cover = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
     atomic_init(&job.next, 0);
