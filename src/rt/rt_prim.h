@@ -31,12 +31,15 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
         V = (double)((long double)Ax * Cy - (long double)Ay * Cx);
         W = (double)((long double)Bx * Ay - (long double)By * Ax);
     }
-    /* one data-dependent branch (hit or not) instead of several unpredictable ones */
+    /* the edge test as one data-dependent branch; the division only for rays through the
+       triangle */
     const int mixed = ((U < 0.0) | (V < 0.0) | (W < 0.0)) & ((U > 0.0) | (V > 0.0) | (W > 0.0));
     const double det = U + V + W;
+    if (mixed | (det == 0.0))
+        return 0;
     const double T = U * (r->sz * Az) + V * (r->sz * Bz) + W * (r->sz * Cz);
-    const double t = T / (det != 0.0 ? det : 1.0);
-    if (mixed | (det == 0.0) | !(t >= tmin) | !(t <= tmax))
+    const double t = T / det;
+    if (!(t >= tmin) | !(t <= tmax))
         return 0;
     *tout = t;
     return 1;
@@ -72,10 +75,12 @@ static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r,
     const int mixed = ((e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0) | (e3 < 0.0)) &
                       ((e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0) | (e3 > 0.0));
     const double den = q->n[0] * r->d[0] + q->n[1] * r->d[1] + q->n[2] * r->d[2];
+    if (mixed | (den == 0.0)) /* the division only for rays through the quad */
+        return 0;
     for (int j = 0; j < 3; j++)
         A[j] = q->v[0][j] - o[j];
-    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / (den != 0.0 ? den : 1.0);
-    if (mixed | (den == 0.0) | !(t >= tmin) | !(t <= tmax))
+    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / den;
+    if (!(t >= tmin) | !(t <= tmax))
         return 0;
     *tout = t;
     return 1;
