@@ -146,7 +146,11 @@ typedef struct rt_rayx {
     double tmin, tmax;
     int kx, ky, kz;
     double sx, sy, sz;
+    uint32_t skip;      /* primitive never hit: the planar one a secondary ray leaves (its origin
+                           is moved off the plane, its direction points away); RT_NO_SKIP */
 } rt_rayx;
+
+#define RT_NO_SKIP UINT32_MAX
 
 /* a ray in the grid frame (traversal only; primitive tests use the rt_rayx) */
 typedef struct rt_gray {
@@ -171,7 +175,7 @@ typedef struct rt_ctx {
 int rt_ctx_init(rt_ctx *c, const rt_scene *sc);
 void rt_ctx_free(rt_ctx *c);
 
-/* 0 if the ray is unusable (non-finite, zero direction, NaN range). */
+/* 0 if the ray is unusable (non-finite, zero direction, NaN range). r->skip = RT_NO_SKIP. */
 int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax);
 
 /* nearest hit: returns internal prim index or -1; *t set. side of hit in *side. */

@@ -59,6 +59,7 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
     d = r->d;
     r->tmin = tmin;
     r->tmax = tmax;
+    r->skip = RT_NO_SKIP;
     /* dominant axis kz, the other two swapped for a negative d[kz] (winding kept); written
        branch-free: the outcome is random for incoherent rays */
     const int kz = ((ax < ay) | (ax < az)) * (1 + (ay < az));
@@ -321,10 +322,11 @@ static __attribute__((noinline)) void rt_cell_nearest(rt_walkstate *w, const uin
     const rt_rayx *r = w->r;
     uint64_t *const hbox = w->c->hbox;
     const uint64_t key = (uint64_t)w->stamp << 32;
+    const uint32_t skip = r->skip;
     rt_prefetch_tris(sc, refs, n);
     for (uint32_t k = 0; k < n; k++) {
         uint32_t i = refs[k];
-        if (hbox[i % RT_HBOX] == (key | i))
+        if (hbox[i % RT_HBOX] == (key | i) || i == skip)
             continue;
         hbox[i % RT_HBOX] = key | i;
         rt_nearest_prim(sc, r, i, &w->best, &w->bi);
@@ -337,13 +339,14 @@ static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uin
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
+    const uint32_t skip = r->skip;
     rt_prefetch_tris(sc, refs, n);
     if (w->any_hit) {
         uint64_t *const hbox = w->c->hbox;
         const uint64_t key = (uint64_t)w->stamp << 32;
         for (uint32_t k = 0; k < n; k++) {
             uint32_t i = refs[k];
-            if (hbox[i % RT_HBOX] == (key | i))
+            if (hbox[i % RT_HBOX] == (key | i) || i == skip)
                 continue;
             hbox[i % RT_HBOX] = key | i;
             if (!rt_transmit_prim(w->c, sc, r, i, 1, &w->T))
@@ -355,7 +358,7 @@ static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uin
     const uint32_t stamp = w->stamp;
     for (uint32_t k = 0; k < n; k++) {
         uint32_t i = refs[k];
-        if (mbox[i] == stamp)
+        if (mbox[i] == stamp || i == skip)
             continue;
         mbox[i] = stamp;
         if (!rt_transmit_prim(w->c, sc, r, i, 0, &w->T))
@@ -460,7 +463,8 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
     rt_walkstate w = {.sc = sc, .c = c, .r = r, .best = INFINITY, .bi = -1, .T = 1.0};
     if (!sc->use_grid) {
         for (size_t i = 0; i < sc->nprim; i++)
-            rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi);
+            if (i != r->skip)
+                rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi);
     } else {
         const rt_grid *g = &sc->grid;
         w.stamp = rt_ctx_next(c);
@@ -477,7 +481,7 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     rt_walkstate w = {.sc = sc, .c = c, .r = r, .any_hit = any_hit, .best = INFINITY, .bi = -1, .T = 1.0};
     if (!sc->use_grid) {
         for (size_t i = 0; i < sc->nprim; i++)
-            if (!rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
+            if (i != r->skip && !rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
                 return 0.0;
         return w.T;
     }
