@@ -152,7 +152,7 @@ typedef struct rt_build_options {
  * 0.079 at 10^5 and 0.025 at 10^6), as cubic as the grid box allows (axes thinner than 1/1000
  * of the largest get 1 cell), at most 512 per axis and 2^25 cells. A top cell with more than
  * 8 references keeps its large primitives (spanning half the cell in two axes) in its own
- * list and puts the rest into a second-level grid of ~8 cells per reference (default
+ * list and puts the rest into a second-level grid of ~3 cells per reference (default
  * sub_factor; 4 beyond 10^4 primitives; at most 32 per axis) over the box of those parts.
  * Below 4 primitives: no grid (random triangles: equal speed at 2, grid 1.3x faster at 4,
  * 1.6x at 8, 7x at 64).
@@ -185,7 +185,14 @@ typedef struct rt_build_options {
  * references per triangle 4.8-9.0 instead of 8.3-13.9.
  * SPD scenes: factors 0.05 / 0.15 changed gears by +4 / +9 % and mount by -9 / -5 %
  * instructions, so below 10^4 primitives the rule stays linear. An explicit grid_factor or
- * sub_factor is always used as given (linearly). */
+ * sub_factor is always used as given (linearly).
+ * Second level below 10^4 primitives, by time rather than instructions (the instruction
+ * counts above favour finer grids; a finer second level executes fewer instructions but
+ * takes longer): rt_bench SPD -s 512 -corner, CPU s, minimum of 6 runs alternating over both
+ * cores, 8/ref -> 3/ref: mount 0.344 -> 0.312, teapot 0.129 -> 0.125, gears 0.532 -> 0.524,
+ * tetra 0.031 -> 0.030; 2, 4 and 6/ref were within 3 % of 3/ref, 12/ref 5-10 % slower. Beyond
+ * 10^4 primitives 3/ref was as fast as 4/ref but the 871k dragon's eye rays 14 % slower
+ * (cmp_embree, 7.40 -> 6.38 Mrays/s), so 4/ref stays there. */
 #define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 

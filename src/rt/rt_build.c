@@ -456,7 +456,7 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
  * floor (teapot in a stadium) is resolved by a grid around the object, not around the cell.
  * Traversal tests a cell's list first, then walks its second-level grid. */
 #define RT_SUB_MIN 8
-#define RT_SUB_FACTOR 8.0
+#define RT_SUB_FACTOR 3.0
 #define RT_SUB_FACTOR_LARGE 4.0 /* beyond RT_GRID_KNEE primitives (gksrt.h) */
 
 /* bounding box of primitive i in the grid frame */
