@@ -12,6 +12,7 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -169,8 +170,64 @@ static size_t sio_remaining(const sio_reader *r)
 
 /* ---- numbers --------------------------------------------------------------------------- */
 
+/* Decimal token [+-]digits[.digits][e[+-]digits] with at most 15 significant digits and a
+ * decimal exponent within +-22: the digits are an exact integer below 2^53 and the power of
+ * ten is exact, so one IEEE multiplication or division rounds the value correctly, as strtod
+ * does (Clinger's fast path). 0 if the token is not of that form (strtod decides then). */
+static int sio_fast_num(const char *s, size_t n, double *v)
+{
+    static const double p10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                   1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                   1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    size_t i = 0;
+    int neg = 0;
+    if (i < n && (s[i] == '+' || s[i] == '-'))
+        neg = s[i++] == '-';
+    uint64_t m = 0;
+    int sig = 0, digits = 0, scale = 0; /* value = m * 10^(scale + exponent) */
+    for (int frac = 0; i < n; i++) {
+        if (s[i] == '.' && !frac) {
+            frac = 1;
+            continue;
+        }
+        if (s[i] < '0' || s[i] > '9')
+            break;
+        digits++;
+        if (m == 0 && s[i] == '0') { /* leading zeros: not significant */
+            scale -= frac;
+            continue;
+        }
+        if (++sig > 15)
+            return 0;
+        m = 10 * m + (uint64_t)(s[i] - '0');
+        scale -= frac;
+    }
+    if (digits == 0)
+        return 0;
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        int eneg = 0, e = 0, ed = 0;
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-'))
+            eneg = s[i++] == '-';
+        for (; i < n && s[i] >= '0' && s[i] <= '9'; i++, ed++)
+            if ((e = 10 * e + (s[i] - '0')) > 1000)
+                return 0;
+        if (ed == 0)
+            return 0;
+        scale += eneg ? -e : e;
+    }
+    if (i != n || scale < -22 || scale > 22)
+        return 0;
+    double x = (double)m;
+    x = scale < 0 ? x / p10[-scale] : x * p10[scale];
+    *v = neg ? -x : x;
+    return 1;
+}
+
 static int sio_num(sio_reader *r, const sio_tok *t, const char *what, double *v)
 {
+    if (sio_fast_num(t->s, t->n, v))
+        return SCENE_IO_OK;
     char buf[64], b[32];
     if (t->n >= sizeof buf)
         return sio_fail(r, SCENE_IO_ERR_SYNTAX, "number too long for %s: '%s'", what, sio_show(t, b));

@@ -251,6 +251,57 @@ static void test_off_cube(void **state)
     scene_io_free(&s);
 }
 
+/* Numbers: the reader's fast path (at most 15 significant digits, exponent within +-22) and
+ * strtod must give the same bits for every token; random decimal tokens of every shape (signs,
+ * leading/trailing points, leading zeros, 1-20 digits, exponents -40..40) as OFF vertices. */
+static void test_numbers_exact(void **state)
+{
+    (void)state;
+    enum { NV = 30000, TOK = 48 };
+    char *text = malloc((size_t)NV * 3 * TOK + 64);
+    char (*tok)[TOK] = malloc((size_t)NV * 3 * sizeof *tok);
+    assert_non_null(text);
+    assert_non_null(tok);
+    uint64_t x = 88172645463325252ull;
+    size_t len = (size_t)sprintf(text, "OFF\n%d 1 0\n", NV);
+    for (int k = 0; k < 3 * NV; k++) {
+        char *t = tok[k];
+        size_t n = 0;
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        const int nd = 1 + (int)(x % 20), point = (int)((x >> 8) % (size_t)(nd + 2)) - 1;
+        if (x >> 20 & 1)
+            t[n++] = (x >> 21 & 1) ? '-' : '+';
+        for (int d = 0; d < nd; d++) {
+            if (d == point)
+                t[n++] = '.';
+            x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+            t[n++] = (char)('0' + (d < 2 && (x & 3) == 0 ? 0 : (int)(x % 10)));
+        }
+        if (point == nd)
+            t[n++] = '.';
+        if (x >> 30 & 1)
+            n += (size_t)sprintf(t + n, "%c%d", (x >> 31 & 1) ? 'e' : 'E', (int)(x >> 32 & 63) % 81 - 40);
+        t[n] = '\0';
+        len += (size_t)sprintf(text + len, "%s%c", t, k % 3 == 2 ? '\n' : ' ');
+    }
+    len += (size_t)sprintf(text + len, "3 0 1 2\n");
+    scene_io_scene s;
+    char err[256];
+    assert_int_equal(scene_io_parse(text, len, "t", SCENE_IO_OFF, NULL, &s, err, sizeof err),
+                     SCENE_IO_OK);
+    assert_int_equal(s.num_vertices, NV);
+    size_t bad = 0;
+    for (int k = 0; k < 3 * NV; k++) {
+        const double ref = strtod(tok[k], NULL);
+        if (memcmp(&ref, &s.vertices[k], sizeof ref) != 0 && bad++ < 5)
+            printf("token '%s': %.17g, strtod %.17g\n", tok[k], s.vertices[k], ref);
+    }
+    assert_int_equal(bad, 0);
+    scene_io_free(&s);
+    free(text);
+    free(tok);
+}
+
 static const char ply_tet[] =
     "ply\n"
     "format ascii 1.0\n"
@@ -631,6 +682,7 @@ int main(void)
         cmocka_unit_test(test_nff_sphere_tessellated),
         cmocka_unit_test(test_nff_cone_tessellated),
         cmocka_unit_test(test_off_cube),
+        cmocka_unit_test(test_numbers_exact),
         cmocka_unit_test(test_ply_tetra),
         cmocka_unit_test(test_files),
         cmocka_unit_test(test_frame_view),
