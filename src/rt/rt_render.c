@@ -507,6 +507,19 @@ static void rt_cover_convex(uint8_t *c, int gw, int gh, double off, const double
     }
     const int box = !(fabs(area) > 1e-9 * l2);
     const double sg = area > 0.0 ? 1.0 : -1.0;
+    /* edge i: sg * ((p1 - p0) x (p - p0)) >= -m |p1 - p0|, i.e. cx * px + a + b * py >= 0:
+       per row a lower (cx > 0) or upper (cx < 0) bound on px, or all or nothing (cx == 0) */
+    double ka[4], kb[4];
+    int kind[4];
+    for (int i = 0; i < n && !box; i++) {
+        const double *p0 = q[i], *p1 = q[(i + 1) % n];
+        const double ex = p1[0] - p0[0], ey = p1[1] - p0[1];
+        const double cx = -sg * ey;
+        const double a = sg * (ey * p0[0] - ex * p0[1]) + m * sqrt(ex * ex + ey * ey), b = sg * ex;
+        kind[i] = cx > 0.0 ? 1 : (cx < 0.0 ? -1 : 0);
+        ka[i] = kind[i] ? -a / cx : a;
+        kb[i] = kind[i] ? -b / cx : b;
+    }
     double y0 = ceil(bb[2] - m - off), y1 = floor(bb[3] + m - off);
     if (y0 < 0.0)
         y0 = 0.0;
@@ -516,16 +529,12 @@ static void rt_cover_convex(uint8_t *c, int gw, int gh, double off, const double
         const double py = y + off;
         double lo = bb[0] - m, hi = bb[1] + m;
         for (int i = 0; i < n && !box; i++) {
-            /* sg * ((p1 - p0) x (p - p0)) >= -m |p1 - p0|, linear in px: cx * px + c0 >= 0 */
-            const double *p0 = q[i], *p1 = q[(i + 1) % n];
-            const double ex = p1[0] - p0[0], ey = p1[1] - p0[1];
-            const double cx = -sg * ey;
-            const double c0 = sg * (ex * (py - p0[1]) + ey * p0[0]) + m * sqrt(ex * ex + ey * ey);
-            if (cx > 0.0)
-                lo = fmax(lo, -c0 / cx);
-            else if (cx < 0.0)
-                hi = fmin(hi, -c0 / cx);
-            else if (c0 < 0.0)
+            const double v = ka[i] + kb[i] * py;
+            if (kind[i] > 0)
+                lo = fmax(lo, v);
+            else if (kind[i] < 0)
+                hi = fmin(hi, v);
+            else if (v < 0.0)
                 hi = -INFINITY;
         }
         rt_cover_span(c, gw, off, y, lo, hi);
@@ -683,6 +692,15 @@ static void rt_tile(rt_worker *w, int tile)
 /* Corner mode, after all rays: pixel (x, y) = mean of corners (x, y), (x+1, y), (x, y+1),
    (x+1, y+1), in place. Pixel (x, y) holds corner (x, y), which no later pixel needs (in
    row-major order); the corners read next are not yet overwritten. */
+/* pixel value from its 4 corners k00 (also the destination), k10, k01, k11 */
+static inline void rt_corner_mean(float *k00, const float *k10, const float *k01, const float *k11)
+{
+    for (size_t c = 0; c < 3; c++) {
+        double v = 0.25 * ((double)k00[c] + k10[c] + k01[c] + k11[c]);
+        k00[c] = isfinite(v) ? (float)v : 0.0f;
+    }
+}
+
 static void rt_corner_average(const rt_job *job)
 {
     const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height;
@@ -691,14 +709,10 @@ static void rt_corner_average(const rt_job *job)
     for (size_t y = 0; y < H; y++) {
         float *r0 = rgb + 3 * y * W;
         const float *r1 = y + 1 < H ? rgb + 3 * (y + 1) * W : edge + 3 * (H + 1);
-        for (size_t x = 0; x < W; x++) {
-            const float *k10 = x + 1 < W ? r0 + 3 * (x + 1) : edge + 3 * y;
-            const float *k11 = x + 1 < W ? r1 + 3 * (x + 1) : edge + 3 * (y + 1);
-            for (size_t c = 0; c < 3; c++) {
-                double v = 0.25 * ((double)r0[3 * x + c] + k10[c] + r1[3 * x + c] + k11[c]);
-                r0[3 * x + c] = isfinite(v) ? (float)v : 0.0f;
-            }
-        }
+        /* left to right in place: corner x + 1 of this row is read before it is replaced */
+        for (size_t x = 0; x + 1 < W; x++)
+            rt_corner_mean(r0 + 3 * x, r0 + 3 * (x + 1), r1 + 3 * x, r1 + 3 * (x + 1));
+        rt_corner_mean(r0 + 3 * (W - 1), edge + 3 * y, r1 + 3 * (W - 1), edge + 3 * (y + 1));
     }
 }
 
