@@ -5,8 +5,8 @@
 # plot docs/speed_error.png (gnuplot) and the log docs/bench/speed_error.txt.
 #   bench/speed_error/run.sh [--no-build] [--quick] [BUILD_DIR]
 # --quick: 64x64, 4x4-spp reference, 1 repetition (a smoke test; writes into BUILD_DIR only).
-# Takes about 10 minutes on 2 idle cores, most of it the 256x256, 16x16-spp references, which
-# are kept in BUILD_DIR/speed_error-ref (delete it to render them again).
+# Takes about 10 minutes (pinned to one core, see below), most of it the 256x256, 16x16-spp
+# references, which are kept in BUILD_DIR/speed_error-ref (delete it to render them again).
 set -eu
 
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
@@ -49,11 +49,18 @@ else
     mkdir -p "$BUILD/speed_error-ref"
 fi
 CSV="$DOCS/speed_error.csv"
+# Timings are of one thread: pinned to one core (the last), so that the process does not move
+# between the cores of a shared VM, which at times run it at different speeds (the same
+# settings then timed 25 % apart within one run). References not yet cached render slower so.
+PIN=""
+if command -v taskset >/dev/null 2>&1; then
+    PIN="taskset -c $(($(nproc) - 1))"
+fi
 {
     echo "# speed_error (bench/speed_error/run.sh), $(date -u '+%Y-%m-%d %H:%M UTC'), $(uname -m)," \
          "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores shared with other jobs"
     # shellcheck disable=SC2086 # argument lists split on purpose
-    "$EXE" $ARGS -csv "$CSV" $SCENES
+    $PIN "$EXE" $ARGS -csv "$CSV" $SCENES
 } | tee "$DOCS/bench/speed_error.txt"
 
 if command -v gnuplot >/dev/null 2>&1; then
