@@ -717,6 +717,58 @@ static void test_grid_frame_choice(void **state)
     }
 }
 
+/* Second level or one fine level (rt_build.c, RT_UNIFORM_SHARE): a terrain (a height field of
+ * small triangles) crowds every top cell it crosses, so the default build takes one fine level;
+ * explicit second-level options keep two levels; both bit-identical to brute force. */
+static void test_grid_levels(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    int s = surf_plain(sc);
+    enum { N = 40 };
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            double p[4][3];
+            for (int k = 0; k < 4; k++) {
+                const double x = (double)(i + (k == 1 || k == 2)) / N, y = (double)(j + (k >= 2)) / N;
+                p[k][0] = x;
+                p[k][1] = y;
+                p[k][2] = 0.1 * sin(7.0 * x) * cos(5.0 * y);
+            }
+            assert_true(add_tri(sc, p[0], p[1], p[2], s) >= 0);
+            assert_true(add_tri(sc, p[0], p[2], p[3], s) >= 0);
+        }
+    enum { NR = 2000 };
+    rt_ray rays[NR];
+    uint64_t rng = 9;
+    for (int k = 0; k < NR; k++) { /* at points of the terrain's square, from above or grazing */
+        const double o[3] = {rtu_rand(&rng), rtu_rand(&rng), k & 1 ? 2.0 : 0.12};
+        const double d[3] = {rtu_rand(&rng) - o[0], rtu_rand(&rng) - o[1], -o[2]};
+        ray_set(&rays[k], o, d);
+    }
+    rt_grid_info gi, g2;
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    const rt_build_options two = {.sub_factor = 3.0};
+    assert_int_equal(rt_scene_commit(sc, &two), RT_OK);
+    assert_int_equal(rt_scene_grid_info(sc, &g2), RT_OK);
+    size_t nhit = 0, bad = grid_vs_brute(sc, NULL, rays, NR, &nhit);
+    size_t bad2 = grid_vs_brute(sc, &two, rays, NR, NULL);
+    printf("terrain of %d triangles: default grid %dx%dx%d, %llu subgrids; explicit sub_factor 3: "
+           "%dx%dx%d, %llu subgrids; %d rays, %zu hits, mismatches %zu / %zu\n", 2 * N * N,
+           gi.res[0], gi.res[1], gi.res[2], (unsigned long long)gi.subgrids, g2.res[0], g2.res[1],
+           g2.res[2], (unsigned long long)g2.subgrids, NR, nhit, bad, bad2);
+    assert_int_equal(gi.subgrids, 0);
+    assert_true(gi.cells >= 4 * gi.prims); /* the fine level: ~8 cells per primitive */
+    assert_true(g2.subgrids > 0);
+    assert_true(g2.cells < gi.cells / 8);
+    assert_int_equal(bad, 0);
+    assert_int_equal(bad2, 0);
+    assert_true(nhit > NR / 3);
+    rt_scene_free(sc);
+}
+
 /* ---- 5: coplanar and overlapping polygons ---- */
 
 static void test_coplanar(void **state)
@@ -1601,6 +1653,7 @@ int main(void)
         cmocka_unit_test(test_reintersection),    cmocka_unit_test(test_shadow_acne),
         cmocka_unit_test(test_box_room),          cmocka_unit_test(test_rotated_grid),
         cmocka_unit_test(test_grid_frame_choice),
+        cmocka_unit_test(test_grid_levels),
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_polygons),          cmocka_unit_test(test_gears_polygons),
         cmocka_unit_test(test_teapot_stadium),    cmocka_unit_test(test_tir),
