@@ -28,8 +28,8 @@
  * opaque shadow blocker, tested first (rt_hits_prim; an opaque hit answers as the traversal
  * would). Lights surely behind the surface are rejected before the square root. Eye rays
  * that no primitive's projection reaches (rt_cover: the convex hull of a triangle's, quad's or
- * cell array's projected vertices, a polygon's box) are background without being traced. All of this leaves the picture and the ray counts bit for
- * bit as the direct evaluation.
+ * cell array's projected vertices, a polygon's box) are background without being traced.
+ * All of this leaves the picture and the ray counts bit for bit as the direct evaluation.
  */
 
 #define _DEFAULT_SOURCE 1 /* madvise */
