@@ -460,8 +460,7 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
 
 long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
 {
-    rt_walkstate w; /* every field set before use (no zero fill of the ray copy per ray) */
-    w.sc = sc, w.c = c, w.r = r, w.stamp = 0, w.any_hit = 0, w.best = INFINITY, w.bi = -1, w.T = 1.0;
+    rt_walkstate w = {.sc = sc, .c = c, .r = r, .best = INFINITY, .bi = -1, .T = 1.0};
     if (!sc->use_grid) {
         for (size_t i = 0; i < sc->nprim; i++)
             if (i != r->skip)
@@ -479,8 +478,7 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
 {
     c->blocker = -1;
-    rt_walkstate w;
-    w.sc = sc, w.c = c, w.r = r, w.stamp = 0, w.any_hit = any_hit, w.best = INFINITY, w.bi = -1, w.T = 1.0;
+    rt_walkstate w = {.sc = sc, .c = c, .r = r, .any_hit = any_hit, .best = INFINITY, .bi = -1, .T = 1.0};
     if (!sc->use_grid) {
         for (size_t i = 0; i < sc->nprim; i++)
             if (i != r->skip && !rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
