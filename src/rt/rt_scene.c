@@ -684,7 +684,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                        (sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
                                         sc->grid.nsrefs) * sizeof(uint32_t) +
                                            sc->grid.nsubs * sizeof(rt_subgrid) +
-                                           (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0)
+                                           (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
+                                           (sc->grid.dist ? sc->grid.ncells * sizeof(uint8_t) : 0)
                                      : 0);
     sc->build_seconds = rt_now() - t0;
     sc->committed = 1;
