@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #define SIO_DEFAULT_MAX_BYTES ((size_t)1 << 30)
@@ -1180,10 +1181,13 @@ int scene_io_load(const char *path, scene_io_format fmt, const scene_io_options 
     }
     gzbuffer(f, 1 << 17);
     char *buf = NULL;
-    size_t len = 0, cap = 0;
+    size_t len = 0, cap = 0, first = (size_t)1 << 20;
+    struct stat st; /* a plain file is read into one buffer of its size (no copy on growth) */
+    if (stat(path, &st) == 0 && st.st_size > 0 && (uintmax_t)st.st_size < (uintmax_t)max)
+        first = (size_t)st.st_size + 1;
     int rc = SCENE_IO_OK;
     for (;;) {
-        if (len == cap && sio_grow((void **)&buf, &cap, cap ? cap + 1 : (size_t)1 << 20, 1)) {
+        if (len == cap && sio_grow((void **)&buf, &cap, cap ? cap + 1 : first, 1)) {
             rc = SCENE_IO_ERR_NOMEM;
             if (err && err_size)
                 snprintf(err, err_size, "%s: out of memory", path);
