@@ -92,6 +92,73 @@ static void make_rays(rt_ray *rays, int n)
     }
 }
 
+/* Brute-force results of n rays on the scene that build() makes, then the same rays on a grid
+ * built with each of the ns settings: the same primitive and occluded flag for every ray, side
+ * and t bit for bit, and the grid really used. FP traps are on while tracing. */
+typedef struct brute_ref {
+    rt_hit *hb, *hg;
+    unsigned char *ob, *og;
+} brute_ref;
+
+static void brute_ref_init(brute_ref *br, size_t n)
+{
+    br->hb = malloc(n * sizeof *br->hb);
+    br->hg = malloc(n * sizeof *br->hg);
+    br->ob = malloc(n);
+    br->og = malloc(n);
+    assert_non_null(br->hb);
+    assert_non_null(br->hg);
+    assert_non_null(br->ob);
+    assert_non_null(br->og);
+}
+
+static void brute_ref_trace(brute_ref *br, void (*build)(rt_scene *), const rt_ray *rays, size_t n)
+{
+    rt_scene *b = rt_scene_new();
+    build(b);
+    rt_build_options ob = {.brute_force = 1};
+    assert_int_equal(rt_scene_commit(b, &ob), RT_OK);
+    rtc_traps_on();
+    assert_int_equal(rt_intersect(b, n, rays, br->hb), RT_OK);
+    assert_int_equal(rt_occluded(b, n, rays, br->ob), RT_OK);
+    rtc_traps_off();
+    rt_scene_free(b);
+}
+
+static void brute_ref_check(brute_ref *br, void (*build)(rt_scene *), const rt_build_options *opts,
+                            int ns, const rt_ray *rays, size_t n)
+{
+    rtc_traps_on();
+    for (int s = 0; s < ns; s++) {
+        rt_scene *g = rt_scene_new();
+        build(g);
+        assert_int_equal(rt_scene_commit(g, &opts[s]), RT_OK);
+        rt_grid_info gi;
+        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+        assert_true(gi.cells + gi.subcells > 1);
+        assert_int_equal(rt_intersect(g, n, rays, br->hg), RT_OK);
+        assert_int_equal(rt_occluded(g, n, rays, br->og), RT_OK);
+        for (size_t k = 0; k < n; k++) {
+            assert_int_equal(br->hg[k].prim, br->hb[k].prim);
+            assert_int_equal(br->og[k], br->ob[k]);
+            if (br->hb[k].prim < 0)
+                continue;
+            assert_memory_equal(&br->hg[k].t, &br->hb[k].t, sizeof(double));
+            assert_int_equal(br->hg[k].side, br->hb[k].side);
+        }
+        rt_scene_free(g);
+    }
+    rtc_traps_off();
+}
+
+static void brute_ref_free(brute_ref *br)
+{
+    free(br->hb);
+    free(br->hg);
+    free(br->ob);
+    free(br->og);
+}
+
 static void test_settings_equal_brute(void **state)
 {
     (void)state;
@@ -104,22 +171,13 @@ static void test_settings_equal_brute(void **state)
         {.brute_threshold = 0, .grid_factor = 4.0, .no_subgrids = 1},   /* fine, one level */
         {.brute_threshold = 0, .grid_res = {3, 5, 2}, .grid_box = {0, 0, 0, 1, 1, 1}},
     };
-    rt_scene *b = rt_scene_new();
-    build_scene(b);
-    rt_build_options ob = {.brute_force = 1};
-    assert_int_equal(rt_scene_commit(b, &ob), RT_OK);
     rt_ray *rays = malloc(N * sizeof *rays);
-    rt_hit *hb = malloc(N * sizeof *hb), *hg = malloc(N * sizeof *hg);
-    unsigned char *ob_occ = malloc(N), *og_occ = malloc(N);
     assert_non_null(rays);
-    assert_non_null(hb);
-    assert_non_null(hg);
-    assert_non_null(ob_occ);
-    assert_non_null(og_occ);
     make_rays(rays, N);
-    rtc_traps_on();
-    assert_int_equal(rt_intersect(b, N, rays, hb), RT_OK);
-    assert_int_equal(rt_occluded(b, N, rays, ob_occ), RT_OK);
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_scene, rays, N);
+    const rt_hit *hb = br.hb;
     int nhit = 0, nfan = 0;
     for (int k = 0; k < N; k++) {
         nhit += hb[k].prim >= 0;
@@ -133,32 +191,9 @@ static void test_settings_equal_brute(void **state)
     }
     assert_true(nhit > N / 4);
     assert_true(nfan > 1000);
-    for (int s = 0; s < NS; s++) {
-        rt_scene *g = rt_scene_new();
-        build_scene(g);
-        assert_int_equal(rt_scene_commit(g, &opts[s]), RT_OK);
-        rt_grid_info gi;
-        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
-        assert_true(gi.cells + gi.subcells > 1);
-        assert_int_equal(rt_intersect(g, N, rays, hg), RT_OK);
-        assert_int_equal(rt_occluded(g, N, rays, og_occ), RT_OK);
-        for (int k = 0; k < N; k++) {
-            assert_int_equal(hg[k].prim, hb[k].prim);
-            assert_int_equal(og_occ[k], ob_occ[k]);
-            if (hb[k].prim < 0)
-                continue;
-            assert_memory_equal(&hg[k].t, &hb[k].t, sizeof(double));
-            assert_int_equal(hg[k].side, hb[k].side);
-        }
-        rt_scene_free(g);
-    }
-    rtc_traps_off();
+    brute_ref_check(&br, build_scene, opts, NS, rays, N);
+    brute_ref_free(&br);
     free(rays);
-    free(hb);
-    free(hg);
-    free(ob_occ);
-    free(og_occ);
-    rt_scene_free(b);
 }
 
 /* duplicates: the tie rule must pick the smaller id whichever copy the grid meets first */
@@ -231,18 +266,8 @@ static void test_empty_space_jumps(void **state)
         {.brute_threshold = 0, .grid_res = {61, 7, 33}, .no_subgrids = 1},
         {.brute_threshold = 0, .grid_factor = 8.0},
     };
-    rt_scene *b = rt_scene_new();
-    build_sparse(b);
-    rt_build_options ob = {.brute_force = 1};
-    assert_int_equal(rt_scene_commit(b, &ob), RT_OK);
     rt_ray *rays = malloc(N * sizeof *rays);
-    rt_hit *hb = malloc(N * sizeof *hb), *hg = malloc(N * sizeof *hg);
-    unsigned char *ob_occ = malloc(N), *og_occ = malloc(N);
     assert_non_null(rays);
-    assert_non_null(hb);
-    assert_non_null(hg);
-    assert_non_null(ob_occ);
-    assert_non_null(og_occ);
     rng_state = 99;
     for (int k = 0; k < N; k++) {
         rt_ray *r = &rays[k];
@@ -261,34 +286,16 @@ static void test_empty_space_jumps(void **state)
         r->tmin = 0.0;
         r->tmax = k % 13 == 5 ? 3.0 : INFINITY;
     }
-    rtc_traps_on();
-    assert_int_equal(rt_intersect(b, N, rays, hb), RT_OK);
-    assert_int_equal(rt_occluded(b, N, rays, ob_occ), RT_OK);
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_sparse, rays, N);
     int nhit = 0;
     for (int k = 0; k < N; k++)
-        nhit += hb[k].prim >= 0;
+        nhit += br.hb[k].prim >= 0;
     assert_true(nhit > N / 20);
-    for (int st = 0; st < NS; st++) {
-        rt_scene *g = rt_scene_new();
-        build_sparse(g);
-        assert_int_equal(rt_scene_commit(g, &opts[st]), RT_OK);
-        assert_int_equal(rt_intersect(g, N, rays, hg), RT_OK);
-        assert_int_equal(rt_occluded(g, N, rays, og_occ), RT_OK);
-        for (int k = 0; k < N; k++) {
-            assert_int_equal(hg[k].prim, hb[k].prim);
-            assert_int_equal(og_occ[k], ob_occ[k]);
-            if (hb[k].prim >= 0)
-                assert_memory_equal(&hg[k].t, &hb[k].t, sizeof(double));
-        }
-        rt_scene_free(g);
-    }
-    rtc_traps_off();
+    brute_ref_check(&br, build_sparse, opts, NS, rays, N);
+    brute_ref_free(&br);
     free(rays);
-    free(hb);
-    free(hg);
-    free(ob_occ);
-    free(og_occ);
-    rt_scene_free(b);
 }
 
 int main(void)
