@@ -104,19 +104,25 @@ static void lit_setup(const Grgb *c)
     gset_light_src_state(&a, NULL);
 }
 
-static void test_lambert(void **u)
+/* The Lambert square: colour (0.8, 0.6, 0.4) over [0.2,0.8]^2 at z = 0.5, lit by light 2
+ * travelling along (0,-0.8,-0.6): the cosine between the normal +z and -dir is 0.6. */
+static void lambert_square(void)
 {
-    (void)u;
-    reset_gks();
-    gopen_gks(NULL, 0);
-    open_png(1, "t_rt_lambert.png", GHLHSR_RAYTRACE);
-    /* Light travels along (0,-0.8,-0.6): cos between normal +z and -dir = 0.6. */
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, -0.8, -0.6 },
                          { 1, 0 }, 0, 1 };
     gset_light_src_rep(1, 2, &l);
     Grgb c = { 0.8, 0.6, 0.4 };
     lit_setup(&c);
     square(0.2, 0.8, 0.5);
+}
+
+static void test_lambert(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png(1, "t_rt_lambert.png", GHLHSR_RAYTRACE);
+    lambert_square();
     gdeactivate_ws(1);
     gclose_ws(1);
     gclose_gks();
@@ -485,12 +491,7 @@ static void test_default_sampling(void **u)
     reset_gks();
     gopen_gks(NULL, 0);
     open_png_defaults(1, "t_rt_default.png", GHLHSR_RAYTRACE);
-    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, -0.8, -0.6 },
-                         { 1, 0 }, 0, 1 };
-    gset_light_src_rep(1, 2, &l);
-    Grgb c = { 0.8, 0.6, 0.4 };
-    lit_setup(&c);
-    square(0.2, 0.8, 0.5);
+    lambert_square();
     gupd_ws(1, GFLAG_PERFORM);
     rt_stat_rec s;
     get_stats(1, &s);
