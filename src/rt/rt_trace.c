@@ -64,7 +64,9 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
        branch-free: the outcome is random for incoherent rays */
     const int kz = ((ax < ay) | (ax < az)) * (1 + (ay < az));
     const int neg = d[kz] < 0.0;
-    const int kx = (kz + 1 + neg) % 3, ky = (kz + 2 - neg) % 3;
+    /* (kz + 1 + neg) % 3 and (kz + 2 - neg) % 3 */
+    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
+    const int kx = next[neg][kz][0], ky = next[neg][kz][1];
     r->kx = kx;
     r->ky = ky;
     r->kz = kz;
