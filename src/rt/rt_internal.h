@@ -180,6 +180,10 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
 
 /* nearest hit: returns internal prim index or -1; *t set. side of hit in *side. */
 long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t);
+/* nearest hit among the primitives ids[0..n-1] only (a superset of those the ray can hit:
+   then the same answer as rt_trace_nearest), as rt_trace_nearest returns it */
+long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, size_t n,
+                   double *t);
 /* transmittance along the ray: product of kt of the surfaces hit; 0 = blocked.
  * any_hit = 1: 0 on the first hit regardless of transparency. */
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit);

@@ -28,7 +28,10 @@
  * opaque shadow blocker, tested first (rt_hits_prim; an opaque hit answers as the traversal
  * would). Lights surely behind the surface are rejected before the square root. Eye rays
  * that no primitive's projection reaches (rt_cover: the convex hull of a triangle's, quad's or
- * cell array's projected vertices, a polygon's box) are background without being traced.
+ * cell array's projected vertices, a polygon's box) are background without being traced; the
+ * others test just the primitives whose projections reach them (per-ray candidate lists, a
+ * superset of what they can hit: the grid is not walked), unless the lists would exceed
+ * RT_CAND_PER_RAY entries per ray or the raster RT_CAND_RAYS rays (then the mask alone).
  * All of this leaves the picture and the ray counts bit for bit as the direct evaluation.
  */
 
@@ -76,6 +79,11 @@ typedef struct rt_job {
                            kept in rgb itself (corner (x,y) at pixel (x,y)) until averaged */
     int gw, gh;         /* ray grid size (pixels or corners) */
     int m;              /* strata per axis */
+    uint32_t *cand_off; /* one-ray modes, rays up to RT_CAND_RAYS: candidates of ray k (the
+                           primitives whose projection, with a margin, reaches it; a superset
+                           of those it can hit) are cand[cand_off[k] .. cand_off[k + 1] - 1];
+                           NULL: none (then cover, if any) */
+    uint32_t *cand;
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
     int tiles_x, ntiles;
@@ -176,8 +184,15 @@ int rt_hit_spawn(const rt_scene *sc, const rt_hit *h, const double dir[3], rt_ra
     return RT_OK;
 }
 
+/* the candidate primitives of an eye ray (rt_job.cand) */
+typedef struct rt_cands {
+    const uint32_t *ids;
+    size_t n;
+} rt_cands;
+
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
-                     int depth, double weight, int secondary, long from, double out[3]);
+                     int depth, double weight, int secondary, long from, const rt_cands *cand,
+                     double out[3]);
 
 static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double side_eps,
                      const double d[3], int depth, double weight, int kind, long from,
@@ -190,7 +205,7 @@ static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double 
         w->st.reflection_rays++;
     else
         w->st.refraction_rays++;
-    rt_trace(w, o, d, 0.0, INFINITY, depth, weight, 1, from, out);
+    rt_trace(w, o, d, 0.0, INFINITY, depth, weight, 1, from, NULL, out);
 }
 
 static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3], const double P[3],
@@ -287,9 +302,11 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
     }
 }
 
-/* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays */
+/* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
+   cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
-                     int depth, double weight, int secondary, long from, double out[3])
+                     int depth, double weight, int secondary, long from, const rt_cands *cand,
+                     double out[3])
 {
     const rt_job *job = w->job;
     const rt_scene *sc = job->sc;
@@ -303,7 +320,8 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (from >= 0)
         r.skip = (uint32_t)from;
     double t;
-    long i = rt_trace_nearest(sc, &w->ctx, &r, &t);
+    long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
+                  : rt_trace_nearest(sc, &w->ctx, &r, &t);
     if (depth == 1)
         w->st.eye_hits += i >= 0;
     if (i < 0)
@@ -429,7 +447,7 @@ static void rt_eye(rt_worker *w, double px, double py, double out[3])
             out[c] = job->o.background[c];
         return;
     }
-    rt_trace(w, ray.org, ray.dir, ray.tmin, ray.tmax, 1, 1.0, 0, -1, out);
+    rt_trace(w, ray.org, ray.dir, ray.tmin, ray.tmax, 1, 1.0, 0, -1, NULL, out);
 }
 
 /* Number of vertices of primitive i as rt_prim_vertex gives them */
@@ -477,27 +495,49 @@ static void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3]
    convex polygon of its projected vertices; a general polygon is bounded by the box of its
    vertices. Each is taken enlarged by RT_COVER_MARGIN raster units (rays and projections err
    by ~1e-12 of the raster; the inversion is checked to 1/100 below), and every ray point
-   inside is marked: rays not marked are background. Built once per frame, row intervals per
-   primitive: O(vertices + rows covered). NULL (no culling) if a vertex is not in front of the
-   eye plane, if there are more vertices than rays (the projections would cost more than they
-   can save), or without memory. */
+   inside gets the primitive in its candidate list (or is marked, rt_cover): rays without one
+   are background, the others test their candidates only. Built once per frame, row intervals
+   per primitive: O(vertices + rays covered). None (no culling) if a vertex is not in front of
+   the eye plane, if there are more vertices than rays (the projections would cost more than
+   they can save), or without memory. */
 #define RT_COVER_MARGIN 0.25
 
-/* marks the rays (x + off, y + off) of row y in [lo, hi] (raster units, clamped) */
-static void rt_cover_span(uint8_t *c, int gw, double off, int y, double lo, double hi)
+/* where the rays a primitive's projection reaches go: a mask (mark), per-ray counts (count)
+   or the primitive's index into each ray's candidate list (fill: next[k] is the slot after
+   ray k's next free one, lists are filled from the back) */
+enum { RT_COVER_MARK, RT_COVER_COUNT, RT_COVER_FILL };
+
+typedef struct rt_cover_sink {
+    int pass;
+    uint8_t *mask;
+    uint32_t *next;
+    uint32_t *ids;
+    uint32_t prim;
+} rt_cover_sink;
+
+/* the rays (x + off, y + off) of row y in [lo, hi] (raster units, clamped) */
+static void rt_cover_span(rt_cover_sink *s, int gw, double off, int y, double lo, double hi)
 {
     double a = ceil(lo - off), b = floor(hi - off);
     if (!(a <= b) || b < 0.0 || a > gw - 1)
         return;
     int x0 = a < 0.0 ? 0 : (int)a, x1 = b > gw - 1 ? gw - 1 : (int)b;
-    memset(c + (size_t)y * (size_t)gw + (size_t)x0, 1, (size_t)(x1 - x0 + 1));
+    const size_t k0 = (size_t)y * (size_t)gw + (size_t)x0, n = (size_t)(x1 - x0 + 1);
+    if (s->pass == RT_COVER_MARK)
+        memset(s->mask + k0, 1, n);
+    else if (s->pass == RT_COVER_COUNT)
+        for (size_t k = k0; k < k0 + n; k++)
+            s->next[k]++;
+    else
+        for (size_t k = k0; k < k0 + n; k++)
+            s->ids[--s->next[k]] = s->prim;
 }
 
-/* marks the rays inside the convex polygon q[0..n-1] (either orientation) enlarged by m: per
-   row the interval where every edge's half-plane, moved out by m, holds (that intersection
+/* the rays inside the convex polygon q[0..n-1] (either orientation) enlarged by m: per row
+   the interval where every edge's half-plane, moved out by m, holds (that intersection
    contains the m-neighbourhood of the polygon); a polygon of almost no area: its box. */
-static void rt_cover_convex(uint8_t *c, int gw, int gh, double off, const double (*q)[2], int n,
-                            const double bb[4], double m)
+static void rt_cover_convex(rt_cover_sink *s, int gw, int gh, double off, const double (*q)[2],
+                            int n, const double bb[4], double m)
 {
     double area = 0.0, l2 = 0.0;
     for (int i = 0; i < n; i++) {
@@ -537,54 +577,37 @@ static void rt_cover_convex(uint8_t *c, int gw, int gh, double off, const double
             else if (v < 0.0)
                 hi = -INFINITY;
         }
-        rt_cover_span(c, gw, off, y, lo, hi);
+        rt_cover_span(s, gw, off, y, lo, hi);
     }
 }
 
-static uint8_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh)
+/* The culling of one-ray modes (rt_job.cover, rt_job.cand_off/cand), or nothing (the view
+   mapping does not invert the rays well, a vertex is not in front of the eye plane, more
+   vertices than rays, or no memory). */
+typedef struct rt_cover_out {
+    uint8_t *mask;
+    uint32_t *off, *ids;
+} rt_cover_out;
+
+/* Rays per frame up to which eye rays get candidate lists (4 bytes per ray), and at most
+   RT_CAND_PER_RAY list entries per ray on average (else the mask alone). */
+#define RT_CAND_RAYS (1u << 22)
+#define RT_CAND_PER_RAY 16
+
+/* one pass of every primitive's projection into sink s; 0 if a vertex does not project */
+static int rt_cover_pass(const rt_scene *sc, const rt_camera *cam, const double vm[4][4],
+                         double ws, double off, int gw, int gh, rt_cover_sink *s)
 {
-    if (sc->nprim == 0)
-        return NULL;
-    double vm[4][4], ws;
-    if (!rt_camera_vmap(cam, vm, &ws))
-        return NULL;
-    /* the projection must invert the rays: the ends of the rays through the raster's corners
-       and centre come back to their raster points within 1/100 of a raster unit (else a badly
-       conditioned view mapping: no culling) */
-    for (int k = 0; k < 5; k++) {
-        double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
-        double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
-        rt_ray r;
-        if (rt_camera_ray(cam, px, py, &r) != RT_OK)
-            return NULL;
-        for (int e = 0; e < 2; e++) {
-            double q[3], u, v;
-            for (int i = 0; i < 3; i++)
-                q[i] = r.org[i] + (e ? r.tmax : 0.0) * r.dir[i];
-            if (!rt_camera_project(cam, vm, ws, q, &u, &v) || !(fabs(u - px) <= 0.01) ||
-                !(fabs(v - py) <= 0.01))
-                return NULL;
-        }
-    }
-    size_t budget = (size_t)gw * (size_t)gh;
-    for (size_t i = 0, nv = 0; i < sc->nprim; i++) {
-        nv += rt_prim_nverts(sc, i);
-        if (nv > budget)
-            return NULL;
-    }
-    uint8_t *c = rt_calloc_array(budget, 1);
-    if (!c)
-        return NULL;
-    for (size_t i = 0; i < sc->nprim; i++) {
+    for (size_t j = 0; j < sc->nprim; j++) {
+        /* the fill pass goes backwards: each list ends up in ascending primitive order */
+        const size_t i = s->pass == RT_COVER_FILL ? sc->nprim - 1 - j : j;
         double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY}, q[4][2], x[3];
         const size_t nv = rt_prim_nverts(sc, i);
         for (size_t k = 0; k < nv; k++) {
             double pu, pv; /* finite */
             rt_prim_vertex(sc, i, k, x);
-            if (!rt_camera_project(cam, vm, ws, x, &pu, &pv)) {
-                free(c);
-                return NULL;
-            }
+            if (!rt_camera_project(cam, vm, ws, x, &pu, &pv))
+                return 0;
             if (k < 4) {
                 q[k][0] = pu;
                 q[k][1] = pv;
@@ -596,10 +619,83 @@ static uint8_t *rt_cover(const rt_scene *sc, const rt_camera *cam, double off, i
         }
         const int kind = sc->prim[i].kind;
         const int convex = kind == RT_KIND_TRI || kind == RT_KIND_QUAD || kind == RT_KIND_CELL;
-        rt_cover_convex(c, gw, gh, off, (const double(*)[2])q, convex ? (int)nv : 0, bb,
+        s->prim = (uint32_t)i;
+        rt_cover_convex(s, gw, gh, off, (const double(*)[2])q, convex ? (int)nv : 0, bb,
                         RT_COVER_MARGIN);
     }
-    return c;
+    return 1;
+}
+
+static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh)
+{
+    rt_cover_out none = {NULL, NULL, NULL}, out = none;
+    if (sc->nprim == 0)
+        return none;
+    double vm[4][4], ws;
+    if (!rt_camera_vmap(cam, vm, &ws))
+        return none;
+    /* the projection must invert the rays: the ends of the rays through the raster's corners
+       and centre come back to their raster points within 1/100 of a raster unit (else a badly
+       conditioned view mapping: no culling) */
+    for (int k = 0; k < 5; k++) {
+        double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
+        double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
+        rt_ray r;
+        if (rt_camera_ray(cam, px, py, &r) != RT_OK)
+            return none;
+        for (int e = 0; e < 2; e++) {
+            double q[3], u, v;
+            for (int i = 0; i < 3; i++)
+                q[i] = r.org[i] + (e ? r.tmax : 0.0) * r.dir[i];
+            if (!rt_camera_project(cam, vm, ws, q, &u, &v) || !(fabs(u - px) <= 0.01) ||
+                !(fabs(v - py) <= 0.01))
+                return none;
+        }
+    }
+    size_t budget = (size_t)gw * (size_t)gh;
+    for (size_t i = 0, nv = 0; i < sc->nprim; i++) {
+        nv += rt_prim_nverts(sc, i);
+        if (nv > budget)
+            return none;
+    }
+    if (budget <= RT_CAND_RAYS && sc->nprim <= UINT32_MAX) {
+        /* candidate lists: counts, their running sums (list ends), then the lists filled
+           from the back, which leaves each ray's offset at its list's start */
+        rt_cover_sink s = {RT_COVER_COUNT, NULL, rt_calloc_array(budget + 1, sizeof(uint32_t)),
+                           NULL, 0};
+        if (!s.next)
+            return none;
+        if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
+            free(s.next);
+            return none;
+        }
+        uint64_t total = 0;
+        for (size_t k = 0; k < budget; k++) {
+            total += s.next[k];
+            s.next[k] = (uint32_t)(total <= UINT32_MAX ? total : 0);
+        }
+        if (total <= (uint64_t)RT_CAND_PER_RAY * budget) {
+            s.next[budget] = (uint32_t)total;
+            s.ids = rt_alloc_array(total ? (size_t)total : 1, sizeof(uint32_t));
+            s.pass = RT_COVER_FILL;
+            if (s.ids && rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
+                out.off = s.next;
+                out.ids = s.ids;
+                return out;
+            }
+            free(s.ids);
+        }
+        free(s.next); /* too many entries or no memory: the mask alone */
+    }
+    rt_cover_sink s = {RT_COVER_MARK, rt_calloc_array(budget, 1), NULL, NULL, 0};
+    if (!s.mask)
+        return none;
+    if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
+        free(s.mask);
+        return none;
+    }
+    out.mask = s.mask;
+    return out;
 }
 
 /* where corner ray (x, y) is kept: in the picture itself at pixel (x, y), the last column and
@@ -634,10 +730,12 @@ static void rt_tile(rt_worker *w, int tile)
             /* the rays of a tile row first (independent, their divisions overlap), only those
                not culled (slot -1: surely background) */
             int n = 0;
-            const uint8_t *cov = job->cover ? job->cover + (size_t)y * (size_t)job->gw : NULL;
+            const size_t row = (size_t)y * (size_t)job->gw;
+            const uint32_t *co = job->cand_off ? job->cand_off + row : NULL;
+            const uint8_t *cov = job->cover ? job->cover + row : NULL;
             for (int x = x0; x < x1; x++) {
                 slot[x - x0] = -1;
-                if (!cov || cov[x]) {
+                if (co ? co[x + 1] != co[x] : !cov || cov[x]) {
                     memcpy(xs[n], xt[x - x0], sizeof xs[n]);
                     slot[x - x0] = n++;
                 }
@@ -647,9 +745,11 @@ static void rt_tile(rt_worker *w, int tile)
             for (int x = x0; x < x1; x++) {
                 const int k = slot[x - x0];
                 w->st.eye_rays++;
-                if (k >= 0 && ok[k])
-                    rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1, col);
-                else
+                if (k >= 0 && ok[k]) {
+                    const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
+                    rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
+                             co ? &cd : NULL, col);
+                } else
                     memcpy(col, job->o.background, sizeof col);
                 float *dst;
                 if (job->o.corner_rays) {
@@ -793,8 +893,12 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         if (!job.edge)
             return RT_ERR_NOMEM;
     }
-    if (o->corner_rays || (m == 1 && !o->jitter)) /* NULL when not applicable or no memory */
-        job.cover = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
+    if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
+        const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
+        job.cover = cv.mask;
+        job.cand_off = cv.off;
+        job.cand = cv.ids;
+    }
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
     atomic_init(&job.next, 0);
@@ -834,6 +938,8 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         free(th);
         free(job.edge);
         free(job.cover);
+        free(job.cand_off);
+        free(job.cand);
         return rc;
     }
     pthread_mutex_init(&job.lock, NULL);
@@ -874,5 +980,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     free(th);
     free(job.edge);
     free(job.cover);
+    free(job.cand_off);
+    free(job.cand);
     return RT_OK;
 }

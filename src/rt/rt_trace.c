@@ -477,6 +477,18 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
     return w.bi;
 }
 
+long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, size_t n,
+                   double *tout)
+{
+    double best = INFINITY;
+    long bi = -1;
+    for (size_t k = 0; k < n; k++)
+        if (ids[k] != r->skip)
+            rt_nearest_prim(sc, r, ids[k], &best, &bi);
+    *tout = best;
+    return bi;
+}
+
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
 {
     c->blocker = -1;
