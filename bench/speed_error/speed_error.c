@@ -255,7 +255,11 @@ static void pareto(result *r, int n)
 }
 
 /* Reference cache: DIR/NAME_SIZE_SPP_DEPTH_KS.ref holds a text header line and the raw
- * floats; used when the header matches (delete the directory to force new references). */
+ * floats; used when the header matches (delete the directory to force new references). The
+ * header names the sampling: files written before 2026-11-25 04:00 UTC lack it and are
+ * rendered again (references rendered then from the library's defaults had corner rays and
+ * the cut-off once those became the defaults). */
+#define REF_HEADER "speed_error reference (stratified, no cut-off) %d %s\n"
 static int ref_cache_path(char *buf, size_t n, const char *dir, const char *name, int size, int spp, int depth,
                           double ks)
 {
@@ -269,7 +273,7 @@ static int ref_cache_read(const char *path, const char *scene, int size, float *
     if (!f)
         return -1;
     char want[4400], line[4400];
-    snprintf(want, sizeof want, "speed_error reference %d %s\n", size, scene);
+    snprintf(want, sizeof want, REF_HEADER, size, scene);
     size_t n = (size_t)size * size * 3;
     int ok = fgets(line, sizeof line, f) && !strcmp(line, want) && fread(ref, sizeof(float), n, f) == n;
     fclose(f);
@@ -281,7 +285,7 @@ static void ref_cache_write(const char *path, const char *scene, int size, const
     FILE *f = fopen(path, "wb");
     if (!f)
         return;
-    fprintf(f, "speed_error reference %d %s\n", size, scene);
+    fprintf(f, REF_HEADER, size, scene);
     fwrite(ref, sizeof(float), (size_t)size * size * 3, f);
     fclose(f);
 }
@@ -302,9 +306,15 @@ static int run_scene(const char *name, const char *path, double ks, int size, in
         bs_free(&s);
         return -1;
     }
+    /* the reference sets everything it depends on: the library's defaults (corner rays,
+       cut-off) are among the settings it judges */
     rt_render_options o;
     options_of(&settings[0], &s, &o);
     o.samples = ref_spp;
+    o.jitter = 0;
+    o.corner_rays = 0;
+    o.cutoff = 0.0;
+    o.fresnel = RT_FRESNEL_EXACT;
     o.max_depth = ref_depth;
     o.threads = ref_threads;
     rt_stats st;
