@@ -94,10 +94,32 @@ typedef struct rt_job {
     pthread_mutex_t lock;
 } rt_job;
 
+/* Shadow-ray blocker cache, one per (depth, light) and thread: the opaque primitives that
+ * blocked the latest shadow rays, most recent first. After a blocked ray the next one (the
+ * neighbouring pixel's) tests them first: one that it hits gives the traversal's answer
+ * (blocked) without walking. Gears, -s 513 -corner: with 4 entries 222k -> 117k blocked
+ * walks for 485k more probes (1 entry: 450k hits, 4: 556k). After a lit ray nothing is
+ * probed: its successor is most likely lit as well. */
+#define RT_SCACHE 4
+typedef struct rt_scache {
+    long id[RT_SCACHE]; /* -1: none */
+    int live;           /* the last shadow ray of this slot was blocked */
+} rt_scache;
+
+/* moves entry k (or, k == RT_SCACHE, a new blocker b) to the front */
+static void rt_scache_front(rt_scache *c, int k, long b)
+{
+    if (k == RT_SCACHE)
+        for (k = 0; k < RT_SCACHE - 1 && c->id[k] != b; k++)
+            ;
+    memmove(c->id + 1, c->id, (size_t)k * sizeof c->id[0]);
+    c->id[0] = b;
+}
+
 typedef struct rt_worker {
     rt_job *job;
     rt_ctx ctx;
-    long *shadow_cache; /* [depth * nlights + light]: last opaque blocker, -1: none */
+    rt_scache *shadow_cache; /* [depth * nlights + light] */
     rt_stats st;
     int err;
 } rt_worker;
@@ -268,15 +290,26 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
             T = 1.0;
         } else {
             rt_rayx r;
-            long *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
+            rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
             if (!rt_rayx_setup(&r, o, L, t0, t1)) {
                 T = 1.0;
-            } else if ((r.skip = (uint32_t)from), *cache >= 0 && *cache != from &&
-                       rt_hits_prim(sc, &r, *cache)) {
-                T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
             } else {
-                T = rt_trace_transmit(sc, &w->ctx, &r, 0);
-                *cache = T == 0.0 ? w->ctx.blocker : -1;
+                r.skip = (uint32_t)from;
+                int k = RT_SCACHE;
+                if (cache->live)
+                    for (k = 0; k < RT_SCACHE; k++)
+                        if (cache->id[k] >= 0 && cache->id[k] != from &&
+                            rt_hits_prim(sc, &r, cache->id[k]))
+                            break;
+                if (k < RT_SCACHE) {
+                    T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
+                    rt_scache_front(cache, k, cache->id[k]);
+                } else {
+                    T = rt_trace_transmit(sc, &w->ctx, &r, 0);
+                    cache->live = T == 0.0;
+                    if (T == 0.0 && w->ctx.blocker >= 0)
+                        rt_scache_front(cache, RT_SCACHE, w->ctx.blocker);
+                }
             }
         }
         if (T == 0.0)
@@ -921,13 +954,16 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     size_t ncache = (size_t)(o->max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
     for (int k = 0; k < nt && rc == RT_OK; k++) {
         w[k].job = &job;
-        w[k].shadow_cache = rt_alloc_array(ncache, sizeof(long));
+        w[k].shadow_cache = rt_alloc_array(ncache, sizeof(rt_scache));
         if (!w[k].shadow_cache || rt_ctx_init(&w[k].ctx, sc) != RT_OK) {
             rc = RT_ERR_NOMEM;
             break;
         }
-        for (size_t a = 0; a < ncache; a++)
-            w[k].shadow_cache[a] = -1;
+        for (size_t a = 0; a < ncache; a++) {
+            for (int j = 0; j < RT_SCACHE; j++)
+                w[k].shadow_cache[a].id[j] = -1;
+            w[k].shadow_cache[a].live = 0;
+        }
     }
     if (rc != RT_OK) {
         for (int k = 0; w && k < nt; k++) {
