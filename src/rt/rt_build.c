@@ -497,7 +497,12 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
                 if (cnt <= (uint32_t)sub_min)
                     continue;
                 double lo[3], hi[3], sb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-                rt_cell_box(&g->b, c, 0.0, lo, hi);
+                /* the enlarged cell box: the top-level walk places a ray in this cell when
+                   it is within rounding of it (a point on a cell plane computed as 2e-16
+                   beyond 0 is in the cell by its index), and a ray with a direction
+                   component exactly 0 is then clipped to the sub box exactly: clipped to the
+                   cell box itself, the second-level grid was skipped for it */
+                rt_cell_box(&g->b, c, eps, lo, hi);
                 uint32_t nsmall = 0;
                 for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++) {
                     double bb[6];

@@ -6,7 +6,8 @@
  * primitive index modulo RT_HBOX) collides on purpose: many triangles whose indices differ by
  * multiples of 256 share cells, and exact duplicates (same vertices, other id) force the tie
  * rule. Every setting must give the brute-force hit bit for bit (prim, t, side) and the same
- * occlusion flags; a triangle fan around a ray-pierced vertex must never be missed.
+ * occlusion flags; a triangle fan around a ray-pierced vertex must never be missed; rays with
+ * a direction component exactly 0 in a cell plane must find what lies in that plane.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -298,12 +299,93 @@ static void test_empty_space_jumps(void **state)
     free(rays);
 }
 
+/* A lat-long triangle sphere standing on a floor of quads, both symmetric about x = 0 and
+   y = 0, so a top-level cell plane falls on (or within rounding of: -1.6 + 6 * 3.2 / 12 is
+   2.2e-16) the planes x = 0 and y = 0 that hold meridian edges of the sphere. */
+static void build_symsphere(rt_scene *sc)
+{
+    rt_surface s;
+    rt_surface_default(&s);
+    const int sid = rt_scene_add_surface(sc, &s);
+    for (int j = 0; j < 8; j++)
+        for (int i = 0; i < 8; i++) {
+            const double x0 = -1.6 + 0.4 * i, y0 = -1.6 + 0.4 * j;
+            const double v[12] = {x0, y0, -2.5, x0 + 0.4, y0, -2.5, x0 + 0.4, y0 + 0.4, -2.5,
+                                  x0, y0 + 0.4, -2.5};
+            const int n = 4;
+            assert_true(rt_scene_add_polygon(sc, 1, &n, v, sid, sid) >= 0);
+        }
+    enum { NU = 48, NV = 24 };
+    for (int j = 0; j < NV; j++)
+        for (int i = 0; i < NU; i++) {
+            double p[4][3];
+            for (int k = 0; k < 4; k++) {
+                const int ii = i + (k == 1 || k == 2), jj = j + (k >= 2);
+                const double th = M_PI * jj / NV, ph = 2 * M_PI * (ii % NU) / NU;
+                p[k][0] = 0.55 * sin(th) * cos(ph);
+                p[k][1] = 0.55 * sin(th) * sin(ph);
+                p[k][2] = -1.9 + 0.55 * cos(th);
+            }
+            const int n = 3;
+            for (int t = 0; t < 2; t++) {
+                if ((t == 0 && j == 0) || (t == 1 && j == NV - 1))
+                    continue;
+                const double v[9] = {p[0][0], p[0][1], p[0][2], p[1 + t][0], p[1 + t][1],
+                                     p[1 + t][2], p[2 + t][0], p[2 + t][1], p[2 + t][2]};
+                assert_true(rt_scene_add_polygon(sc, 1, &n, v, sid, sid) >= 0);
+            }
+        }
+}
+
+/* rays in the planes x = 0 and y = 0 with that direction component exactly +0.0 or -0.0:
+   the top-level walk places them in the cell on one side of the plane, whose second-level
+   grid must not reject them for lying 2.2e-16 outside its box (it did: the sphere was
+   missed through its meridian triangles, rt_build_subgrids) */
+static void test_zero_component_on_cell_plane(void **state)
+{
+    (void)state;
+    enum { N = 8000, NS = 3 };
+    const rt_build_options opts[NS] = {
+        {.brute_threshold = 0},
+        {.brute_threshold = 0, .grid_factor = 4.0},
+        {.brute_threshold = 0, .sub_min = 1, .sub_factor = 16.0},
+    };
+    rt_ray *rays = malloc(N * sizeof *rays);
+    assert_non_null(rays);
+    rng_state = 7;
+    for (int k = 0; k < N; k++) {
+        rt_ray *r = &rays[k];
+        const int a = k & 1;               /* the zero axis: x or y */
+        const double zero = k & 2 ? -0.0 : 0.0;
+        const double s = 3.0 * rnd() - 1.5, ang = M_PI * (0.05 + 0.9 * rnd());
+        r->org[a] = 0.0;
+        r->org[1 - a] = s;
+        r->org[2] = k % 5 == 0 ? -2.49 : -0.5;
+        r->dir[a] = zero;
+        r->dir[1 - a] = cos(ang);
+        r->dir[2] = r->org[2] < -1.0 ? sin(ang) : -sin(ang);
+        r->tmin = 0.0;
+        r->tmax = INFINITY;
+    }
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_symsphere, rays, N);
+    int nsphere = 0;
+    for (int k = 0; k < N; k++)
+        nsphere += br.hb[k].prim >= 64;
+    assert_true(nsphere > N / 10);
+    brute_ref_check(&br, build_symsphere, opts, NS, rays, N);
+    brute_ref_free(&br);
+    free(rays);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_settings_equal_brute),
         cmocka_unit_test(test_duplicate_tie),
         cmocka_unit_test(test_empty_space_jumps),
+        cmocka_unit_test(test_zero_component_on_cell_plane),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
