@@ -286,6 +286,9 @@ enum { RT_FRESNEL_EXACT = 0, RT_FRESNEL_SCHLICK = 1, RT_FRESNEL_NONE = 2 };
 
 typedef struct rt_stats {
     uint64_t eye_rays, eye_hits, shadow_rays, reflection_rays, refraction_rays;
+    uint64_t shadow_lbuf;             /* shadow rays answered from a light buffer's list */
+    uint64_t shadow_walks;            /* shadow rays that walked the grid (the others: answered
+                                         by the blocker cache, or trivially lit) */
     uint64_t grid_cells, grid_refs;   /* 0 when brute force */
     uint64_t prims;                   /* primitives kept at commit */
     double build_seconds;             /* commit time */
@@ -307,6 +310,8 @@ typedef struct rt_render_options {
     int corner_rays;        /* 1: (w+1)x(h+1) rays at pixel corners, pixel = mean of its 4
                                corners (the SPD procedure's rays; samples and jitter ignored);
                                0: samples stratified rays per pixel */
+    int light_buffers;      /* 1: shadow rays test the candidates of a per-light buffer instead of
+                               walking the grid where it pays (same answers; rt_lbuf.c) */
     double background[3];
     int progress;           /* 1: report tiles done, Mrays/s and time left on stderr */
     rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
@@ -315,7 +320,7 @@ typedef struct rt_render_options {
 
 /* Defaults (on the speed/error Pareto front of bench/speed_error): corner rays (samples 1, no
  * jitter, used when corner_rays is set to 0), depth 5, cut-off 0.01, threads 0, exact Fresnel,
- * clip_secondary 0, black background, no progress. */
+ * clip_secondary 0, light buffers, black background, no progress. */
 RT_API void rt_render_options_default(rt_render_options *o);
 
 /* Shading of a hit (front or back surface by the side hit; the normal is turned to face the ray):

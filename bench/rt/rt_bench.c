@@ -2,7 +2,7 @@
  * rt_bench -- loads an NFF (SPD) or OFF scene, renders it with gksrt and reports frame time
  * and Mrays/s.
  *   rt_bench FILE [-s SIZE] [-t THREADS] [-corner] [-depth D] [-grid F] [-brute] [-primary]
- *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-vrcgrid] [-progress]
+ *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-vrcgrid] [-nolbuf] [-progress]
  * NFF: the file's view; SPD procedure with -corner (SIZE+1)^2 eye rays, depth 5.
  * OFF: camera looking at the mesh from +z (of its box centre), one directional light.
  * -primary: primary rays only (rt_intersect on the camera's rays), reports Mrays/s.
@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     const char *path = argv[1], *out = NULL;
     int size = 512, threads = 1, corner = 0, depth = 5, brute = 0, primary = 0, reps = 1;
     double gridf = 0.0, subf = 0.0;
-    int submin = 0, nosub = 0, progress = 0, frame = 0;
+    int submin = 0, nosub = 0, progress = 0, frame = 0, nolbuf = 0;
     for (int i = 2; i < argc; i++) {
         if (!strcmp(argv[i], "-s") && i + 1 < argc) size = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-t") && i + 1 < argc) threads = atoi(argv[++i]);
@@ -51,6 +51,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "-submin") && i + 1 < argc) submin = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-subf") && i + 1 < argc) subf = atof(argv[++i]);
         else if (!strcmp(argv[i], "-nosub")) nosub = 1;
+        else if (!strcmp(argv[i], "-nolbuf")) nolbuf = 1;
         else if (!strcmp(argv[i], "-vrcgrid")) frame = 1;
         else if (!strcmp(argv[i], "-progress")) progress = 1;
         else if (!strcmp(argv[i], "-primary")) primary = 1;
@@ -131,6 +132,7 @@ int main(int argc, char **argv)
     ro.corner_rays = corner;
     ro.cutoff = 0.0; /* the SPD procedure: no adaptive cut-off */
     ro.max_depth = depth;
+    ro.light_buffers = !nolbuf;
     ro.progress = progress;
     memcpy(ro.background, m.bg, sizeof ro.background);
     float *rgb = malloc((size_t)size * size * 3 * sizeof(float));

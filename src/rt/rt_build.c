@@ -290,6 +290,19 @@ static void rt_box_finish(rt_box *g)
     }
 }
 
+size_t rt_prim_vertices(const rt_scene *sc, size_t i, double **pts, size_t *cap)
+{
+    rt_build b;
+    memset(&b, 0, sizeof b);
+    b.pts = *pts;
+    b.cappts = *cap;
+    int err = 0;
+    size_t n = rt_prim_points(sc, &b, &sc->prim[i], &err);
+    *pts = b.pts;
+    *cap = b.cappts;
+    return err ? 0 : n;
+}
+
 void rt_grid_free(rt_grid *g)
 {
     free(g->off);

@@ -187,12 +187,42 @@ long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, si
 /* transmittance along the ray: product of kt of the surfaces hit; 0 = blocked.
  * any_hit = 1: 0 on the first hit regardless of transparency. */
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit);
+/* the same over the primitives ids[0..n-1] only, a superset of those the ray can hit, in
+   order of zb[id] and up to the first zb[id] > zbo (a light buffer's list, rt_lbuf_find) */
+double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
+                              const uint32_t *ids, uint32_t n, const uint16_t *zb, uint32_t zbo);
 /* 1 if the ray hits internal primitive i within its range */
 int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
 
 /* grid build (rt_grid.c) */
 int rt_grid_build(rt_scene *sc, const rt_build_options *o);
 void rt_grid_free(rt_grid *g);
+/* the vertices of primitive i (xyz each) into *pts, grown as needed (*cap doubles); their
+   number, 0 if out of memory */
+size_t rt_prim_vertices(const rt_scene *sc, size_t i, double **pts, size_t *cap);
+
+/* ---- light buffers (rt_lbuf.c) ---- */
+typedef struct rt_lbuf {
+    int ok;                   /* 0: none (the light's shadow rays walk the grid) */
+    int ortho;                /* directional light: projection along ez */
+    double L[3];              /* light position (ortho: scene box centre) */
+    double ex[3], ey[3], ez[3];
+    double u0, v0, su, sv;    /* cell of plane point (u, v): ((u - u0) su, (v - v0) sv) */
+    int nu, nv;
+    double slack, kdev, zeps; /* query margin: slack + 2 kdev * (light's distance from ray) */
+    double zlo, zscale;       /* depth bucket of z: (z - zlo) * zscale, clamped */
+    uint32_t *off, *ids;      /* cell lists (nu * nv + 1 offsets), in order of zb */
+    uint16_t *zb;             /* per primitive: bucket of its nearest depth (less zeps) */
+} rt_lbuf;
+
+/* builds the buffer of light l; lb->ok = 0 (RT_OK) when the light gets none; RT_ERR_NOMEM */
+int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb);
+void rt_lbuf_free(rt_lbuf *lb);
+/* the candidates of a shadow ray toward lb's light: 1 with the list ids[0..n-1] and the
+   bucket zb of the ray origin's depth (entries of a later bucket lie beyond the origin: they
+   cannot be hit), 0 if no primitive can be hit, -1 if the ray must walk the grid */
+int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
+                 uint32_t *zb);
 
 /* cell array colour at point p (on the plane) */
 void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3]);

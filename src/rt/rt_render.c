@@ -68,6 +68,7 @@ void rt_render_options_default(rt_render_options *o)
      * the rays for 0.2 % more RMSE. Reference renders set cutoff 0 and samples. */
     o->corner_rays = 1;
     o->cutoff = 0.01;
+    o->light_buffers = 1;
 }
 
 typedef struct rt_job {
@@ -86,6 +87,7 @@ typedef struct rt_job {
     uint32_t *cand;
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
+    rt_lbuf lbuf[RT_MAX_LIGHTS]; /* shadow-ray candidates per light (ok = 0: walk the grid) */
     int tiles_x, ntiles;
     atomic_int next;
     atomic_int done;
@@ -305,7 +307,19 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
                     T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
                     rt_scache_front(cache, k, cache->id[k]);
                 } else {
-                    T = rt_trace_transmit(sc, &w->ctx, &r, 0);
+                    /* the light buffer's candidates where it has them, else the walk */
+                    const rt_lbuf *lb = &job->lbuf[li];
+                    const uint32_t *ids;
+                    uint32_t n, zb;
+                    const int f = lb->ok ? rt_lbuf_find(lb, &r, &ids, &n, &zb) : -1;
+                    w->st.shadow_lbuf += f >= 0;
+                    w->st.shadow_walks += f < 0;
+                    if (f < 0)
+                        T = rt_trace_transmit(sc, &w->ctx, &r, 0);
+                    else if (f > 0)
+                        T = rt_trace_transmit_list(sc, &w->ctx, &r, ids, n, lb->zb, zb);
+                    else
+                        T = 1.0;
                     cache->live = T == 0.0;
                     if (T == 0.0 && w->ctx.blocker >= 0)
                         rt_scache_front(cache, RT_SCACHE, w->ctx.blocker);
@@ -887,6 +901,28 @@ static void *rt_work(void *arg)
     return NULL;
 }
 
+/* light buffers (rt_lbuf.c) for the lights of the scene, when asked for and when they pay:
+   projecting a primitive's box costs about as much as a shadow ray's grid walk saves, and
+   each eye ray that hits asks at most one shadow ray per light, so the primitives must not
+   outnumber the eye rays */
+static int rt_job_lbufs(rt_job *job)
+{
+    const rt_scene *sc = job->sc;
+    const double rays = (double)job->gw * (double)job->gh * (double)(job->m * job->m);
+    if (!job->o.light_buffers || !sc->use_grid || sc->nprim == 0 || (double)sc->nprim > rays)
+        return RT_OK;
+    int rc = RT_OK;
+    for (int li = 0; li < sc->nlights && rc == RT_OK; li++)
+        rc = rt_lbuf_build(sc, &sc->light[li], &job->lbuf[li]);
+    return rc;
+}
+
+static void rt_job_lbufs_free(rt_job *job)
+{
+    for (int li = 0; li < RT_MAX_LIGHTS; li++)
+        rt_lbuf_free(&job->lbuf[li]);
+}
+
 int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats)
 {
@@ -915,6 +951,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
             return RT_ERR_ARG;
     if (cam->width < 1 || cam->height < 1 || cam->width > 65536 || cam->height > 65536)
         return RT_ERR_ARG;
+    job.t0 = rt_now(); /* render_seconds: with the eye-ray lists and light buffers built here */
     job.sc = sc;
     job.cam = cam;
     job.rgb = rgb;
@@ -932,6 +969,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         job.cand_off = cv.off;
         job.cand = cv.ids;
     }
+    int rc = rt_job_lbufs(&job);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
     atomic_init(&job.next, 0);
@@ -948,7 +986,6 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         nt = job.ntiles;
     rt_worker *w = rt_calloc_array((size_t)nt, sizeof *w);
     pthread_t *th = rt_calloc_array((size_t)nt, sizeof *th);
-    int rc = RT_OK;
     if (!w || !th)
         rc = RT_ERR_NOMEM;
     size_t ncache = (size_t)(o->max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
@@ -976,10 +1013,10 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         free(job.cover);
         free(job.cand_off);
         free(job.cand);
+        rt_job_lbufs_free(&job);
         return rc;
     }
     pthread_mutex_init(&job.lock, NULL);
-    job.t0 = rt_now();
     rt_prefault(rgb, (size_t)cam->width * (size_t)cam->height * 3 * sizeof(float));
     int started = 1;
     for (int k = 1; k < nt; k++) {
@@ -1001,9 +1038,12 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         st.shadow_rays += w[k].st.shadow_rays;
         st.reflection_rays += w[k].st.reflection_rays;
         st.refraction_rays += w[k].st.refraction_rays;
+        st.shadow_lbuf += w[k].st.shadow_lbuf;
+        st.shadow_walks += w[k].st.shadow_walks;
         rt_ctx_free(&w[k].ctx);
         free(w[k].shadow_cache);
     }
+    rt_job_lbufs_free(&job);
     st.render_seconds = rt_now() - job.t0;
     st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
     st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;

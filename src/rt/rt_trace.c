@@ -510,6 +510,17 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     return w.T;
 }
 
+double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
+                              const uint32_t *ids, uint32_t n, const uint16_t *zb, uint32_t zbo)
+{
+    c->blocker = -1;
+    double T = 1.0;
+    for (uint32_t k = 0; k < n && zb[ids[k]] <= zbo; k++)
+        if (ids[k] != r->skip && !rt_transmit_prim(c, sc, r, ids[k], 0, &T))
+            return 0.0;
+    return T;
+}
+
 int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i)
 {
     double t;
