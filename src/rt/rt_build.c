@@ -290,17 +290,43 @@ static void rt_box_finish(rt_box *g)
     }
 }
 
-size_t rt_prim_vertices(const rt_scene *sc, size_t i, double **pts, size_t *cap)
+/* Number of vertices of primitive i as rt_prim_vertex gives them */
+size_t rt_prim_nverts(const rt_scene *sc, size_t i)
 {
-    rt_build b;
-    memset(&b, 0, sizeof b);
-    b.pts = *pts;
-    b.cappts = *cap;
-    int err = 0;
-    size_t n = rt_prim_points(sc, &b, &sc->prim[i], &err);
-    *pts = b.pts;
-    *cap = b.cappts;
-    return err ? 0 : n;
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI)
+        return 3;
+    if (p->kind == RT_KIND_QUAD || p->kind == RT_KIND_CELL)
+        return 4;
+    const rt_poly *po = &sc->poly[p->data];
+    size_t nv = 0;
+    for (uint32_t l = 0; l < po->nloops; l++)
+        nv += sc->loops[po->loop0 + l];
+    return nv;
+}
+
+/* Vertex k of primitive i, as traced: triangle and quad vertices; polygon vertices projected
+   onto the polygon's plane (as rt_scene_commit does; the traced region lies in their convex
+   hull); the 4 corners of a cell array. */
+void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
+{
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI) {
+        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_QUAD) {
+        memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_CELL) {
+        const rt_cell *c = &sc->cell[p->data];
+        for (int j = 0; j < 3; j++)
+            out[j] = c->p[j] + (k == 1 || k == 2 ? c->a[j] : 0.0) + (k >= 2 ? c->b[j] : 0.0);
+    } else {
+        const rt_poly *po = &sc->poly[p->data];
+        const double *uv = sc->uv + 2 * ((size_t)po->uv0 + k);
+        int ax = 3 - po->ku - po->kv;
+        out[po->ku] = uv[0];
+        out[po->kv] = uv[1];
+        out[ax] = (po->d - po->n[po->ku] * uv[0] - po->n[po->kv] * uv[1]) / po->n[ax];
+    }
 }
 
 void rt_grid_free(rt_grid *g)

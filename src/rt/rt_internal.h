@@ -197,9 +197,10 @@ int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
 /* grid build (rt_grid.c) */
 int rt_grid_build(rt_scene *sc, const rt_build_options *o);
 void rt_grid_free(rt_grid *g);
-/* the vertices of primitive i (xyz each) into *pts, grown as needed (*cap doubles); their
-   number, 0 if out of memory */
-size_t rt_prim_vertices(const rt_scene *sc, size_t i, double **pts, size_t *cap);
+/* the vertices of committed primitive i: their number, and vertex k as traced (polygon
+   vertices projected onto the polygon's plane; the 4 corners of a cell array) */
+size_t rt_prim_nverts(const rt_scene *sc, size_t i);
+void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3]);
 
 /* ---- light buffers (rt_lbuf.c) ---- */
 typedef struct rt_lbuf {

@@ -5,8 +5,9 @@
  * the light (perspective, positional and spot lights) or along the light's direction
  * (orthographic, directional lights) to nearly the same 2-D point: the ray's own point on the
  * light's projection plane. A light buffer is a 2-D grid over the projection of the scene box
- * on that plane whose cells list every primitive whose box projects, with a margin, onto the
- * cell. A shadow ray whose 2-D footprint (its origin's projection plus the bound below) lies
+ * on that plane whose cells list every primitive whose projection, enlarged by a margin,
+ * reaches the cell (a primitive in front of the light projects to the polygon of its
+ * projected vertices: per row of cells the range of its edges clipped to the row). A shadow ray whose 2-D footprint (its origin's projection plus the bound below) lies
  * in one cell can hit only primitives of that cell's list: the list is a superset, so testing
  * it with the same primitive tests gives the traversal's answer (rt_trace_transmit_list).
  * Lists are in order of the nearest depth (distance from the light along the projection axis)
@@ -19,15 +20,17 @@
  * point at depth z then projects within dev (1 + U) / z of the projection of o on each axis
  * (U the largest |u|, |v| on the plane over the scene box: the derivative of the gnomonic
  * projection), and primitives lie at depth >= zmin of the scene box; plus a slack for the
- * rounding of the projections (1e-9 of the plane extent, the primitive boxes another 1e-7).
+ * rounding of the projections (1e-9 of the plane extent, the primitives another 1e-7).
  * Orthographic: the ray is parallel to the axis, only rounding remains. A footprint that
  * crosses a cell boundary (rare: the bound is ~1e-9 of a cell) or leaves the buffer partly
  * falls back to the grid walk; one entirely outside the buffer meets no primitive.
  *
  * Built per rendering (rt_render) for the lights whose buffer pays: perspective needs the
  * scene box in front of the light (nearest depth above 1/100 of the farthest; a light inside
- * or next to the scene keeps the grid walk), and the primitives (projected boxes: ~100 ns
- * each) must not outnumber the rays that will use it (about one per eye ray and light).
+ * or next to the scene keeps the grid walk), and the primitives must not outnumber the rays
+ * that will use it (about one per eye ray and light). Build (one pass projecting and
+ * counting, which keeps the row spans, then the fill in depth order): SPD gears 21 ms for
+ * its 5 lights (9345 primitives, 483k entries), teapot 2.1 ms, mount 5.3 ms, tetra 2.7 ms.
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -36,7 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RT_LBUF_CELLS_PER_PRIM 4.0 /* measured: see rt_lbuf_build */
+#define RT_LBUF_CELLS_PER_PRIM 8.0 /* measured: see rt_lbuf_build */
 #define RT_LBUF_MIN_CELLS 4096
 #define RT_LBUF_MAX_CELLS (1 << 20)
 #define RT_LBUF_MAX_ENTRIES (1u << 24) /* 64 MB of lists per light: beyond, no buffer */
@@ -140,17 +143,138 @@ static inline uint32_t rt_lbuf_bucket(const rt_lbuf *lb, double z)
     return f > 0.0 ? (f < (double)(RT_LBUF_BUCKETS - 1) ? (uint32_t)f : RT_LBUF_BUCKETS - 1) : 0;
 }
 
-static void rt_lbuf_fail(rt_lbuf *lb, int32_t *rng, double *pts, uint32_t *order)
+/* a primitive on the plane, in cell units: its projected vertices (the loops of a polygon
+   one after the other) and their box */
+typedef struct rt_lbuf_proj2 {
+    double *q;      /* 2 per vertex (grown as needed: cap doubles) */
+    size_t n, cap;
+    const uint32_t *loops; /* vertex counts of the nloops loops; NULL: one loop of n */
+    uint32_t nloops;
+    double *span;   /* per row of the box: u-range lo, hi (grown as needed: scap doubles) */
+    size_t scap;
+    int32_t *rs;    /* the row spans found (y, x0, x1), all primitives (rscap ints) */
+    size_t nrs, rscap;
+    double bb[4];   /* x0, y0, x1, y1 */
+    double zmin;    /* nearest vertex depth */
+} rt_lbuf_proj2;
+
+/* 0 if a vertex is not in front of the light (cannot happen: primitives lie in the box), -1
+   without memory */
+static int rt_lbuf_project(const rt_lbuf *lb, const rt_scene *sc, size_t i, rt_lbuf_proj2 *pp)
 {
-    free(rng);
-    free(pts);
+    pp->n = rt_prim_nverts(sc, i);
+    pp->loops = NULL;
+    pp->nloops = 1;
+    if (sc->prim[i].kind == RT_KIND_POLY) {
+        const rt_poly *po = &sc->poly[sc->prim[i].data];
+        pp->loops = sc->loops + po->loop0;
+        pp->nloops = po->nloops;
+    }
+    if (!rt_grow((void **)&pp->q, &pp->cap, 2 * pp->n, sizeof(double)))
+        return -1;
+    pp->bb[0] = pp->bb[1] = pp->zmin = INFINITY;
+    pp->bb[2] = pp->bb[3] = -INFINITY;
+    for (size_t k = 0; k < pp->n; k++) {
+        double p[3], u, v, z;
+        rt_prim_vertex(sc, i, k, p);
+        if (!rt_lbuf_proj(lb, p, &u, &v, &z) || !isfinite(u) || !isfinite(v))
+            return 0;
+        const double x = (u - lb->u0) * lb->su, y = (v - lb->v0) * lb->sv;
+        pp->q[2 * k] = x;
+        pp->q[2 * k + 1] = y;
+        pp->bb[0] = x < pp->bb[0] ? x : pp->bb[0];
+        pp->bb[1] = y < pp->bb[1] ? y : pp->bb[1];
+        pp->bb[2] = x > pp->bb[2] ? x : pp->bb[2];
+        pp->bb[3] = y > pp->bb[3] ? y : pp->bb[3];
+        pp->zmin = z < pp->zmin ? z : pp->zmin;
+    }
+    return 1;
+}
+
+/* The cells the projection, enlarged by (mx, my) cell units, reaches; per row y (the strip
+   [y - my, y + 1 + my]) from the u-range of the primitive within the strip: the u-range of
+   its edges (every loop's, closed) clipped to the strip (the boundary of the part inside the
+   strip is made of those pieces and of strip border pieces ending on them), gathered edge
+   by edge over the rows each edge meets. Counts the cells into off[cell + 1] and appends the row spans to pp->rs.
+   Returns the number of cells, SIZE_MAX without memory. */
+static size_t rt_lbuf_cells(rt_lbuf *lb, rt_lbuf_proj2 *pp, double mx, double my)
+{
+    const int y0 = rt_lbuf_clampi(pp->bb[1] - my, lb->nv), y1 = rt_lbuf_clampi(pp->bb[3] + my, lb->nv);
+    const size_t rows = (size_t)(y1 - y0 + 1);
+    if (!rt_grow((void **)&pp->span, &pp->scap, 2 * rows, sizeof(double)) ||
+        !rt_grow((void **)&pp->rs, &pp->rscap, pp->nrs + 3 * rows, sizeof(int32_t)))
+        return SIZE_MAX;
+    double *span = pp->span;
+    for (size_t r = 0; r < rows; r++) {
+        span[2 * r] = INFINITY;
+        span[2 * r + 1] = -INFINITY;
+    }
+    /* edge by edge (loop by loop) over the rows whose strip it meets: y - my <= yhi and
+       ylo <= y + 1 + my */
+    for (uint32_t l = 0, base = 0; l < pp->nloops; base += pp->loops ? pp->loops[l] : 0, l++) {
+        const size_t len = pp->loops ? pp->loops[l] : pp->n;
+        for (size_t k = 0; k < len; k++) {
+            const double *p0 = pp->q + 2 * (base + k), *p1 = pp->q + 2 * (base + (k + 1) % len);
+            const double ylo = p0[1] < p1[1] ? p0[1] : p1[1], yhi = p0[1] < p1[1] ? p1[1] : p0[1];
+            /* (floor, clamped: a row more at most, where nothing is found) */
+            const int ra0 = rt_lbuf_clampi(ylo - 1.0 - my, lb->nv), rb0 = rt_lbuf_clampi(yhi + my, lb->nv);
+            const int ra = ra0 > y0 ? ra0 : y0, rb = rb0 < y1 ? rb0 : y1;
+            for (int y = ra; y <= rb; y++) {
+                const double sl = y - my, sh = y + 1 + my;
+                double xs[4];
+                int m = 0;
+                if (p0[1] >= sl && p0[1] <= sh)
+                    xs[m++] = p0[0];
+                if (p1[1] >= sl && p1[1] <= sh)
+                    xs[m++] = p1[0];
+                for (int c = 0; c < 2; c++) { /* crossings of the strip's borders */
+                    const double yc = c ? sh : sl;
+                    if (ylo < yc && yc < yhi)
+                        xs[m++] = p0[0] + (yc - p0[1]) / (p1[1] - p0[1]) * (p1[0] - p0[0]);
+                }
+                double *sp = span + 2 * (size_t)(y - y0);
+                for (int c = 0; c < m; c++) {
+                    sp[0] = xs[c] < sp[0] ? xs[c] : sp[0];
+                    sp[1] = xs[c] > sp[1] ? xs[c] : sp[1];
+                }
+            }
+        }
+    }
+    size_t total = 0;
+    for (int y = y0; y <= y1; y++) {
+        double lo = span[2 * (size_t)(y - y0)], hi = span[2 * (size_t)(y - y0) + 1];
+        if (!(lo <= hi)) { /* no piece (rounding at the box's border rows): the box */
+            lo = pp->bb[0];
+            hi = pp->bb[2];
+        }
+        const int x0 = rt_lbuf_clampi(lo - mx, lb->nu), x1 = rt_lbuf_clampi(hi + mx, lb->nu);
+        const size_t row = (size_t)y * (size_t)lb->nu;
+        for (int x = x0; x <= x1; x++)
+            lb->off[row + (size_t)x + 1]++;
+        int32_t *r = pp->rs + pp->nrs;
+        r[0] = y;
+        r[1] = x0;
+        r[2] = x1;
+        pp->nrs += 3;
+        total += (size_t)(x1 - x0 + 1);
+    }
+    return total;
+}
+
+static void rt_lbuf_fail(rt_lbuf *lb, uint32_t *order, rt_lbuf_proj2 *pp)
+{
     free(order);
+    free(pp->q);
+    free(pp->span);
+    free(pp->rs);
     rt_lbuf_free(lb);
 }
 
-/* Cells: RT_LBUF_CELLS_PER_PRIM per primitive (SPD scenes, rt_bench -s 513 -corner, frame s
- * for 1 / 4 / 16 per primitive: gears 0.47 / 0.45 / 0.50, teapot 0.100 / 0.095 / 0.101; 16
- * makes the caps of gears' cog wheels long entries of many cells). */
+/* Cells: RT_LBUF_CELLS_PER_PRIM per primitive. rt_bench SCENE -s 513 -corner, frame s with
+ * 4 / 8 / 16 / 32 per primitive (same core, alternating, best of 3): gears 0.395 / 0.381 /
+ * 0.402 / 0.410, teapot 0.089 / 0.089 / 0.081 / 0.090, mount 0.189 / 0.198 / 0.201 / 0.205,
+ * tetra 0.020 / 0.020 / 0.021 / 0.024. Gears, the scene with the least margin against its
+ * peer (bench/compare), decides. */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
 {
     memset(lb, 0, sizeof *lb);
@@ -194,90 +318,71 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
     lb->zeps = RT_LBUF_BOX_MARGIN * (fabs(zmax) + fabs(zmin));
     lb->zlo = zmin;
     lb->zscale = zmax > zmin ? (double)RT_LBUF_BUCKETS / (zmax - zmin) : 0.0;
+    const double mx = e * lb->su, my = e * lb->sv; /* the margin e in cell units */
 
     const size_t nc = (size_t)lb->nu * (size_t)lb->nv;
-    int32_t *rng = rt_alloc_array(sc->nprim, 4 * sizeof(int32_t));
+    /* order: the primitives sorted by bucket, then RT_LBUF_BUCKETS + 1 counters */
     uint32_t *order = rt_calloc_array(sc->nprim + RT_LBUF_BUCKETS + 1, sizeof(uint32_t));
     lb->off = rt_calloc_array(nc + 1, sizeof(uint32_t));
     lb->zb = rt_alloc_array(sc->nprim, sizeof(uint16_t));
-    double *pts = NULL;
-    size_t cap = 0;
-    if (!rng || !order || !lb->off || !lb->zb) {
-        rt_lbuf_fail(lb, rng, pts, order);
+    if (!order || !lb->off || !lb->zb) {
+        free(order);
+        rt_lbuf_free(lb);
         return RT_ERR_NOMEM;
     }
-    /* per primitive: the cells its projected vertices' box (with margin e) reaches and the
-       bucket of its nearest vertex (less zeps); the projection of a planar polygon in front of
-       the light is the polygon of its projected vertices */
-    uint32_t *bcount = order + sc->nprim; /* RT_LBUF_BUCKETS + 1 counters */
+    uint32_t *bcount = order + sc->nprim;
+    uint32_t *first = rt_alloc_array(sc->nprim + 1, sizeof(uint32_t)); /* of its spans in rs */
     size_t total = 0;
-    for (size_t i = 0; i < sc->nprim; i++) {
-        const size_t nv = rt_prim_vertices(sc, i, &pts, &cap);
-        if (nv == 0) {
-            rt_lbuf_fail(lb, rng, pts, order);
-            return RT_ERR_NOMEM;
+    rt_lbuf_proj2 pp;
+    memset(&pp, 0, sizeof pp);
+    if (!first) {
+        rt_lbuf_fail(lb, order, &pp);
+        return RT_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < sc->nprim && total <= RT_LBUF_MAX_ENTRIES; i++) {
+        const int pr = rt_lbuf_project(lb, sc, i, &pp);
+        first[i] = (uint32_t)(pp.nrs / 3);
+        const size_t nc_i = pr > 0 ? rt_lbuf_cells(lb, &pp, mx, my) : SIZE_MAX;
+        if (pr <= 0 || nc_i == SIZE_MAX || pp.nrs / 3 > UINT32_MAX - 1) {
+            free(first);
+            rt_lbuf_fail(lb, order, &pp);
+            return pr == 0 ? RT_OK : RT_ERR_NOMEM;
         }
-        double r0 = INFINITY, r1 = INFINITY, r2 = -INFINITY, r3 = -INFINITY, zm = INFINITY;
-        for (size_t k = 0; k < nv; k++) {
-            double u, v, z;
-            if (!rt_lbuf_proj(lb, pts + 3 * k, &u, &v, &z) || !isfinite(u) || !isfinite(v)) {
-                rt_lbuf_fail(lb, rng, pts, order); /* cannot happen: inside the box */
-                return RT_OK;
-            }
-            r0 = u < r0 ? u : r0;
-            r1 = v < r1 ? v : r1;
-            r2 = u > r2 ? u : r2;
-            r3 = v > r3 ? v : r3;
-            zm = z < zm ? z : zm;
-        }
-        int32_t *q = rng + 4 * i;
-        q[0] = rt_lbuf_clampi((r0 - e - lb->u0) * lb->su, lb->nu);
-        q[1] = rt_lbuf_clampi((r2 + e - lb->u0) * lb->su, lb->nu);
-        q[2] = rt_lbuf_clampi((r1 - e - lb->v0) * lb->sv, lb->nv);
-        q[3] = rt_lbuf_clampi((r3 + e - lb->v0) * lb->sv, lb->nv);
-        total += (size_t)(q[1] - q[0] + 1) * (size_t)(q[3] - q[2] + 1);
-        lb->zb[i] = (uint16_t)rt_lbuf_bucket(lb, zm - lb->zeps);
+        total += nc_i;
+        lb->zb[i] = (uint16_t)rt_lbuf_bucket(lb, pp.zmin - lb->zeps);
         bcount[lb->zb[i] + 1]++;
     }
-    free(pts);
-    pts = NULL;
-    if (total > RT_LBUF_MAX_ENTRIES) {
-        rt_lbuf_fail(lb, rng, pts, order);
-        return RT_OK;
+    first[sc->nprim] = (uint32_t)(pp.nrs / 3);
+    lb->ids = total <= RT_LBUF_MAX_ENTRIES ? rt_alloc_array(total ? total : 1, sizeof(uint32_t)) : NULL;
+    if (!lb->ids) {
+        free(first);
+        rt_lbuf_fail(lb, order, &pp);
+        return total <= RT_LBUF_MAX_ENTRIES ? RT_ERR_NOMEM : RT_OK;
     }
-    /* primitives in bucket order (counting sort), then the lists filled in that order */
+    /* the primitives in bucket order (counting sort) fill the lists: each list is in order */
     for (uint32_t b = 0; b < RT_LBUF_BUCKETS; b++)
         bcount[b + 1] += bcount[b];
-    uint32_t *sorted = rt_alloc_array(sc->nprim, sizeof(uint32_t));
-    lb->ids = rt_alloc_array(total ? total : 1, sizeof(uint32_t));
-    if (!sorted || !lb->ids) {
-        free(sorted);
-        rt_lbuf_fail(lb, rng, pts, order);
-        return RT_ERR_NOMEM;
-    }
     for (size_t i = 0; i < sc->nprim; i++)
-        sorted[bcount[lb->zb[i]]++] = (uint32_t)i;
-    for (size_t i = 0; i < sc->nprim; i++) {
-        const int32_t *q = rng + 4 * i;
-        for (int y = q[2]; y <= q[3]; y++)
-            for (int x = q[0]; x <= q[1]; x++)
-                lb->off[(size_t)y * (size_t)lb->nu + (size_t)x + 1]++;
-    }
+        order[bcount[lb->zb[i]]++] = (uint32_t)i;
     for (size_t k = 0; k < nc; k++)
         lb->off[k + 1] += lb->off[k];
     for (size_t j = 0; j < sc->nprim; j++) {
-        const uint32_t i = sorted[j];
-        const int32_t *q = rng + 4 * i;
-        for (int y = q[2]; y <= q[3]; y++)
-            for (int x = q[0]; x <= q[1]; x++)
-                lb->ids[lb->off[(size_t)y * (size_t)lb->nu + (size_t)x]++] = i;
+        const uint32_t i = order[j];
+        for (uint32_t k = first[i]; k < first[i + 1]; k++) {
+            const int32_t *r = pp.rs + 3 * (size_t)k;
+            const size_t row = (size_t)r[0] * (size_t)lb->nu;
+            for (int32_t x = r[1]; x <= r[2]; x++)
+                lb->ids[lb->off[row + (size_t)x]++] = i;
+        }
     }
     for (size_t k = nc; k > 0; k--)
         lb->off[k] = lb->off[k - 1];
     lb->off[0] = 0;
-    free(sorted);
-    free(rng);
+    free(first);
     free(order);
+    free(pp.q);
+    free(pp.span);
+    free(pp.rs);
     lb->ok = 1;
     return RT_OK;
 }
