@@ -177,6 +177,10 @@ int main(int argc, char **argv)
                (unsigned long long)st.eye_rays, (unsigned long long)st.eye_hits,
                (unsigned long long)st.shadow_rays, (unsigned long long)st.reflection_rays,
                (unsigned long long)st.refraction_rays, tot / bestw * 1e-6);
+        printf("shadow rays: %llu from light buffers, %llu walked the grid, %llu answered "
+               "otherwise (blocker cache, trivially lit)\n",
+               (unsigned long long)st.shadow_lbuf, (unsigned long long)st.shadow_walks,
+               (unsigned long long)(st.shadow_rays - st.shadow_lbuf - st.shadow_walks));
         if (out) {
             FILE *f = fopen(out, "wb");
             if (f) {

@@ -73,6 +73,11 @@ double rtu_rand(uint64_t *state);
 /* uniform random unit vector */
 void rtu_rand_dir(uint64_t *state, double d[3]);
 
+/* A closed lat-long sphere of triangles (nu around, nv from pole to pole; the pole rows are
+ * single triangles), both sides surface s: vertex (i, j) = c + r (sin th cos ph, sin th sin ph,
+ * cos th), th = pi j / nv, ph = 2 pi i / nu. 0 on success. */
+int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, int s);
+
 /* A point certified inside the closed mesh m (already added to the committed scene sc):
  * found behind a face along its normal, half-way to the next surface, and accepted when 16
  * random rays from it all hit the same side of the surface; that side (rt_hit.side seen

@@ -17,6 +17,7 @@
 
 #include "gksrt.h"
 #include "rt_check.h"
+#include "rt_testutil.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -315,26 +316,7 @@ static void build_symsphere(rt_scene *sc)
             const int n = 4;
             assert_true(rt_scene_add_polygon(sc, 1, &n, v, sid, sid) >= 0);
         }
-    enum { NU = 48, NV = 24 };
-    for (int j = 0; j < NV; j++)
-        for (int i = 0; i < NU; i++) {
-            double p[4][3];
-            for (int k = 0; k < 4; k++) {
-                const int ii = i + (k == 1 || k == 2), jj = j + (k >= 2);
-                const double th = M_PI * jj / NV, ph = 2 * M_PI * (ii % NU) / NU;
-                p[k][0] = 0.55 * sin(th) * cos(ph);
-                p[k][1] = 0.55 * sin(th) * sin(ph);
-                p[k][2] = -1.9 + 0.55 * cos(th);
-            }
-            const int n = 3;
-            for (int t = 0; t < 2; t++) {
-                if ((t == 0 && j == 0) || (t == 1 && j == NV - 1))
-                    continue;
-                const double v[9] = {p[0][0], p[0][1], p[0][2], p[1 + t][0], p[1 + t][1],
-                                     p[1 + t][2], p[2 + t][0], p[2 + t][1], p[2 + t][2]};
-                assert_true(rt_scene_add_polygon(sc, 1, &n, v, sid, sid) >= 0);
-            }
-        }
+    assert_int_equal(rtu_add_sphere(sc, (const double[3]){0.0, 0.0, -1.9}, 0.55, 48, 24, sid), 0);
 }
 
 /* rays in the planes x = 0 and y = 0 with that direction component exactly +0.0 or -0.0:

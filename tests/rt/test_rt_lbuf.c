@@ -69,39 +69,6 @@ static void add_quad(rt_scene *sc, const double q[4][3], double off, int sf, int
     assert_true(rt_scene_add_polygon(sc, 1, &n, v, sf, sb) >= 0);
 }
 
-static void add_tri(rt_scene *sc, const double a[3], const double b[3], const double c[3],
-                    double off, int s)
-{
-    double v[9];
-    for (int j = 0; j < 3; j++) {
-        v[j] = a[j] + off;
-        v[3 + j] = b[j] + off;
-        v[6 + j] = c[j] + off;
-    }
-    int n = 3;
-    assert_true(rt_scene_add_polygon(sc, 1, &n, v, s, s) >= 0);
-}
-
-/* closed lat-long triangle sphere */
-static void add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, double off, int s)
-{
-    for (int j = 0; j < nv; j++)
-        for (int i = 0; i < nu; i++) {
-            double p[4][3];
-            for (int k = 0; k < 4; k++) {
-                const int ii = i + (k == 1 || k == 2), jj = j + (k >= 2);
-                const double th = M_PI * jj / nv, ph = 2 * M_PI * (ii % nu) / nu;
-                p[k][0] = c[0] + r * sin(th) * cos(ph);
-                p[k][1] = c[1] + r * sin(th) * sin(ph);
-                p[k][2] = c[2] + r * cos(th);
-            }
-            if (j > 0)
-                add_tri(sc, p[0], p[1], p[2], off, s);
-            if (j < nv - 1)
-                add_tri(sc, p[0], p[2], p[3], off, s);
-        }
-}
-
 static void build(rt_scene *sc, const lb_case *lc)
 {
     const double o = lc->off;
@@ -116,9 +83,9 @@ static void build(rt_scene *sc, const lb_case *lc)
             add_quad(sc, q, o, floor_s, floor_s);
         }
     if (lc->sphere_only) {
-        add_sphere(sc, (const double[3]){0, 0, -1.9}, 0.55, 48, 24, o, ball);
+        assert_int_equal(rtu_add_sphere(sc, (const double[3]){o, o, -1.9 + o}, 0.55, 48, 24, ball), 0);
     } else {
-        add_sphere(sc, (const double[3]){-0.3, -0.2, -1.9}, 0.4, 16, 8, o, ball);
+        assert_int_equal(rtu_add_sphere(sc, (const double[3]){-0.3 + o, -0.2 + o, -1.9 + o}, 0.4, 16, 8, ball), 0);
         /* transparent box (front kt 0.5, back 0.7) of quads */
         const int glass_f = add_surface(sc, 0.6, 0.9, 0.9, 0.2, 0.5);
         const int glass_b = add_surface(sc, 0.6, 0.9, 0.9, 0.2, 0.7);
