@@ -175,54 +175,56 @@ static int rt_build_push(rt_build *b, size_t cell, size_t prim)
     return 1;
 }
 
-/* 3-D points of the triangle / polygon / cell outline(s) lying on the traced plane (VRC3) */
-static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+/* Number of vertices of primitive i as rt_prim_vertex gives them */
+size_t rt_prim_nverts(const rt_scene *sc, size_t i)
 {
-    if (p->kind == RT_KIND_TRI) {
-        if (!rt_grow((void **)&b->pts, &b->cappts, 9, sizeof(double))) {
-            *err = 1;
-            return 0;
-        }
-        memcpy(b->pts, sc->tri[p->data].v, 9 * sizeof(double));
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI)
         return 3;
-    }
-    if (p->kind == RT_KIND_QUAD) {
-        if (!rt_grow((void **)&b->pts, &b->cappts, 12, sizeof(double))) {
-            *err = 1;
-            return 0;
-        }
-        memcpy(b->pts, sc->quad[p->data].v, 12 * sizeof(double));
+    if (p->kind == RT_KIND_QUAD || p->kind == RT_KIND_CELL)
         return 4;
-    }
-    if (p->kind == RT_KIND_CELL) {
-        const rt_cell *c = &sc->cell[p->data];
-        if (!rt_grow((void **)&b->pts, &b->cappts, 12, sizeof(double))) {
-            *err = 1;
-            return 0;
-        }
-        for (int j = 0; j < 3; j++) {
-            b->pts[j] = c->p[j];
-            b->pts[3 + j] = c->p[j] + c->a[j];
-            b->pts[6 + j] = c->p[j] + c->a[j] + c->b[j];
-            b->pts[9 + j] = c->p[j] + c->b[j];
-        }
-        return 4;
-    }
     const rt_poly *po = &sc->poly[p->data];
     size_t nv = 0;
     for (uint32_t l = 0; l < po->nloops; l++)
         nv += sc->loops[po->loop0 + l];
+    return nv;
+}
+
+/* Vertex k of primitive i, as traced: triangle and quad vertices; polygon vertices projected
+   onto the polygon's plane (as rt_scene_commit does; the traced region lies in their convex
+   hull); the 4 corners of a cell array. */
+void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
+{
+    const rt_prim *p = &sc->prim[i];
+    if (p->kind == RT_KIND_TRI) {
+        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_QUAD) {
+        memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
+    } else if (p->kind == RT_KIND_CELL) {
+        const rt_cell *c = &sc->cell[p->data];
+        for (int j = 0; j < 3; j++)
+            out[j] = c->p[j] + (k == 1 || k == 2 ? c->a[j] : 0.0) + (k >= 2 ? c->b[j] : 0.0);
+    } else {
+        const rt_poly *po = &sc->poly[p->data];
+        const double *uv = sc->uv + 2 * ((size_t)po->uv0 + k);
+        int ax = 3 - po->ku - po->kv;
+        out[po->ku] = uv[0];
+        out[po->kv] = uv[1];
+        out[ax] = (po->d - po->n[po->ku] * uv[0] - po->n[po->kv] * uv[1]) / po->n[ax];
+    }
+}
+
+/* 3-D points of the triangle / polygon / cell outline(s) lying on the traced plane (VRC3),
+   rt_prim_vertex's, into the build's scratch */
+static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+{
+    const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);
     if (!rt_grow((void **)&b->pts, &b->cappts, 3 * nv, sizeof(double))) {
         *err = 1;
         return 0;
     }
-    int k = 3 - po->ku - po->kv;
-    for (size_t i = 0; i < nv; i++) {
-        double u = sc->uv[2 * (po->uv0 + i)], v = sc->uv[2 * (po->uv0 + i) + 1];
-        b->pts[3 * i + po->ku] = u;
-        b->pts[3 * i + po->kv] = v;
-        b->pts[3 * i + k] = (po->d - po->n[po->ku] * u - po->n[po->kv] * v) / po->n[k];
-    }
+    for (size_t k = 0; k < nv; k++)
+        rt_prim_vertex(sc, i, k, b->pts + 3 * k);
     return nv;
 }
 
@@ -287,45 +289,6 @@ static void rt_box_finish(rt_box *g)
     for (int a = 0; a < 3; a++) {
         g->cw[a] = (g->hi[a] - g->lo[a]) / g->n[a];
         g->inv_cw[a] = g->n[a] / (g->hi[a] - g->lo[a]);
-    }
-}
-
-/* Number of vertices of primitive i as rt_prim_vertex gives them */
-size_t rt_prim_nverts(const rt_scene *sc, size_t i)
-{
-    const rt_prim *p = &sc->prim[i];
-    if (p->kind == RT_KIND_TRI)
-        return 3;
-    if (p->kind == RT_KIND_QUAD || p->kind == RT_KIND_CELL)
-        return 4;
-    const rt_poly *po = &sc->poly[p->data];
-    size_t nv = 0;
-    for (uint32_t l = 0; l < po->nloops; l++)
-        nv += sc->loops[po->loop0 + l];
-    return nv;
-}
-
-/* Vertex k of primitive i, as traced: triangle and quad vertices; polygon vertices projected
-   onto the polygon's plane (as rt_scene_commit does; the traced region lies in their convex
-   hull); the 4 corners of a cell array. */
-void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
-{
-    const rt_prim *p = &sc->prim[i];
-    if (p->kind == RT_KIND_TRI) {
-        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
-    } else if (p->kind == RT_KIND_QUAD) {
-        memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
-    } else if (p->kind == RT_KIND_CELL) {
-        const rt_cell *c = &sc->cell[p->data];
-        for (int j = 0; j < 3; j++)
-            out[j] = c->p[j] + (k == 1 || k == 2 ? c->a[j] : 0.0) + (k >= 2 ? c->b[j] : 0.0);
-    } else {
-        const rt_poly *po = &sc->poly[p->data];
-        const double *uv = sc->uv + 2 * ((size_t)po->uv0 + k);
-        int ax = 3 - po->ku - po->kv;
-        out[po->ku] = uv[0];
-        out[po->kv] = uv[1];
-        out[ax] = (po->d - po->n[po->ku] * uv[0] - po->n[po->kv] * uv[1]) / po->n[ax];
     }
 }
 

@@ -78,12 +78,14 @@ static inline int rt_lbuf_proj(const rt_lbuf *lb, const double p[3], double *u, 
     return 1;
 }
 
-/* 2-D box r (u0, v0, u1, v1) of the projection of box bb and its nearest depth; 0 if a
-   corner is not in front (the projection of a box in front is the hull of its corners') */
-static int rt_lbuf_proj_box(const rt_lbuf *lb, const double bb[6], double r[4], double *zmin)
+/* 2-D box r (u0, v0, u1, v1) of the projection of box bb and its nearest and farthest
+   depth; 0 if a corner is not in front (the projection of a box in front is the hull of its
+   corners') */
+static int rt_lbuf_proj_box(const rt_lbuf *lb, const double bb[6], double r[4], double *zmin,
+                            double *zmax)
 {
     r[0] = r[1] = *zmin = INFINITY;
-    r[2] = r[3] = -INFINITY;
+    r[2] = r[3] = *zmax = -INFINITY;
     for (int k = 0; k < 8; k++) {
         const double p[3] = {bb[k & 1 ? 3 : 0], bb[k & 2 ? 4 : 1], bb[k & 4 ? 5 : 2]};
         double u, v, z;
@@ -94,6 +96,7 @@ static int rt_lbuf_proj_box(const rt_lbuf *lb, const double bb[6], double r[4], 
         r[2] = u > r[2] ? u : r[2];
         r[3] = v > r[3] ? v : r[3];
         *zmin = z < *zmin ? z : *zmin;
+        *zmax = z > *zmax ? z : *zmax;
     }
     return 1;
 }
@@ -285,15 +288,9 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
     const double *B = sc->bbox;
     if (!rt_lbuf_axes(lb, B, l))
         return RT_OK;
-    double R[4], zmin, zmax = -INFINITY;
-    if (!rt_lbuf_proj_box(lb, B, R, &zmin))
+    double R[4], zmin, zmax;
+    if (!rt_lbuf_proj_box(lb, B, R, &zmin, &zmax))
         return RT_OK;
-    for (int k = 0; k < 8; k++) {
-        const double p[3] = {B[k & 1 ? 3 : 0], B[k & 2 ? 4 : 1], B[k & 4 ? 5 : 2]};
-        double u, v, z;
-        rt_lbuf_proj(lb, p, &u, &v, &z);
-        zmax = z > zmax ? z : zmax;
-    }
     if (!lb->ortho && !(zmin > RT_LBUF_NEAR * zmax))
         return RT_OK;
     const double wu = R[2] - R[0], wv = R[3] - R[1], ext = wu > wv ? wu : wv;
