@@ -111,7 +111,13 @@ enum {
     GWS_TYPE_MI = 4,          /* category MI: GKS metafile input; connection id = file name */
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
     GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
-    GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
+    GWS_TYPE_PNG_LARGE = 101, /* category OUTPUT, raster, 8192x8192 pixel display space */
+    /* Vector workstations (built with cairo only, else OPEN WORKSTATION reports 23): category
+     * OUTPUT, display space A4 portrait in metres (DC = metres), page = ws viewport. */
+    GWS_TYPE_PDF = 110,       /* PDF file, one page per frame */
+    GWS_TYPE_SVG = 111,       /* SVG file per frame (named like the PNG frames) */
+    GWS_TYPE_PS = 112,        /* PostScript file, one page per frame */
+    GWS_TYPE_EPS = 113        /* EPS file per frame */
 };
 
 /* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the
@@ -197,9 +203,13 @@ enum {
     GESC_PNG_SUPERSAMPLE = -110, /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
                                     samples per pixel (box filter); applies at once while the
                                     frame is empty, else from the next CLEAR WORKSTATION */
-    GESC_PNG_COMPRESSION = -111  /* ints[1] 0: fast PNG encoding (default; zlib run-length,
+    GESC_PNG_COMPRESSION = -111, /* ints[1] 0: fast PNG encoding (default; zlib run-length,
                                     SUB filter), 1..9: zlib level with adaptive filters
                                     (9 smallest files); for every file written from then on */
+    GESC_VEC_RESOLUTION = -112   /* ints[1] 10..2400 dots per inch (default 300) of what a
+                                    vector workstation rasterises (z-buffer and ray-traced
+                                    pictures, hidden-line visibility); at once while the frame
+                                    is empty, else from the next frame */
 };
 
 /* ---------------------------------------------------------------------------------

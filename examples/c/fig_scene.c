@@ -175,12 +175,20 @@ static void escape_ints(int func, int n, Gint v1, Gint v2)
     gescape(func, &in, &out);
 }
 
-/* One picture: file base name, viewport size in pixels, HLHSR mode. 0 = written,
- * 1 = skipped (mode not available). */
-static int picture(const char *base, int size, int mode, int scene, int clip_secondary)
+/* The workstation types by name (third argument). */
+static const struct { const char *name; Gint type; } ws_types[] = {
+    { "png", GWS_TYPE_PNG }, { "pdf", GWS_TYPE_PDF }, { "svg", GWS_TYPE_SVG },
+    { "ps", GWS_TYPE_PS }, { "eps", GWS_TYPE_EPS },
+};
+
+/* One picture: file base name, viewport size in pixels, HLHSR mode, workstation type
+ * (the vector types: a side of size x 0.2 mm, their nominal unit in the place of a
+ * pixel). 0 = written, 1 = skipped (mode not available). */
+static int picture(const char *base, int size, int mode, int scene, int clip_secondary,
+                   int ws_type)
 {
     static const real white[3] = { 1.0f, 1.0f, 1.0f }, origin[3] = { 0.0f, 0.0f, 0.0f };
-    gopen_ws(WS, "1", GWS_TYPE_PNG);
+    gopen_ws(WS, "1", ws_type);
     Gescape_in_data in = { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base };
     Gescape_out_data out = { 0, NULL, 0, NULL };
     gescape(GESC_SET_FILE_NAME, &in, &out);
@@ -204,7 +212,8 @@ static int picture(const char *base, int size, int mode, int scene, int clip_sec
     colour(11, 0.8f, 0.95f, 0.9f);
     colour(12, 0.9f, 0.6f, 0.15f);
     colour(13, 0.3f, 0.3f, 0.3f);
-    Glimit win = { 0.0f, 1.0f, 0.0f, 1.0f }, vp = { 0.0f, (real)size, 0.0f, (real)size };
+    real side = ws_type == GWS_TYPE_PNG ? (real)size : (real)size * 0.0002f;
+    Glimit win = { 0.0f, 1.0f, 0.0f, 1.0f }, vp = { 0.0f, side, 0.0f, side };
     gset_ws_win(WS, &win);
     gset_ws_vp(WS, &vp);
     view(scene == FIG_SCENE_FAN ? FIG_CLIP_FAN : FIG_CLIP_BOARD);
@@ -236,11 +245,19 @@ int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
     static const char *const mode_names[] = { "none", "hiddenline", "zbuffer", "painter" };
     int size = 480;
     const char *prefix = argc > 2 ? argv[2] : "";
+    Gint ws_type = GWS_TYPE_PNG;
+    if (argc > 3) {
+        ws_type = 0;
+        for (size_t t = 0; t < sizeof ws_types / sizeof ws_types[0]; t++)
+            if (strcmp(argv[3], ws_types[t].name) == 0)
+                ws_type = ws_types[t].type;
+    }
     if (argc > 1) {
         char *end = NULL;
         long v = strtol(argv[1], &end, 10);
-        if (*end || v < 24 || v > 2048) {
-            fprintf(stderr, "usage: %s [SIZE (24..2048, default 480) [PREFIX]]\n", argv[0]);
+        if (*end || v < 24 || v > 2048 || ws_type == 0) {
+            fprintf(stderr, "usage: %s [SIZE (24..2048, default 480) [PREFIX "
+                            "[png|pdf|svg|ps|eps]]]\n", argv[0]);
             return 2;
         }
         size = (int)v;
@@ -254,10 +271,10 @@ int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
     char base[MAX_NAME];
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
         snprintf(base, sizeof base, "%s%s_%s", prefix, name, mode_names[m]);
-        picture(base, size / 3, modes[m], scene, 0);
+        picture(base, size / 3, modes[m], scene, 0, ws_type);
     }
     snprintf(base, sizeof base, "%s%s", prefix, name);
-    picture(base, size, main_mode, scene, clip_secondary);
+    picture(base, size, main_mode, scene, clip_secondary, ws_type);
     gclose_gks();
     return n_errors ? 1 : 0;
 }

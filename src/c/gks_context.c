@@ -13,6 +13,12 @@ static const gks_ws_driver *const driver_list[] = {
     &gks_ws_wiss_driver,
     &gks_ws_mo_driver,
     &gks_ws_mi_driver,
+#ifdef GKS_HAVE_CAIRO
+    &gks_ws_pdf_driver,
+    &gks_ws_svg_driver,
+    &gks_ws_ps_driver,
+    &gks_ws_eps_driver,
+#endif
 };
 
 static const gks_desc_table desc_table = {

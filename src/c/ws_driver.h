@@ -142,4 +142,10 @@ extern const gks_ws_driver gks_ws_null_driver;
 extern const gks_ws_driver gks_ws_png_driver;
 extern const gks_ws_driver gks_ws_png_large_driver;
 extern const gks_ws_driver gks_ws_wiss_driver;
+#ifdef GKS_HAVE_CAIRO
+extern const gks_ws_driver gks_ws_pdf_driver;
+extern const gks_ws_driver gks_ws_svg_driver;
+extern const gks_ws_driver gks_ws_ps_driver;
+extern const gks_ws_driver gks_ws_eps_driver;
+#endif
 #endif

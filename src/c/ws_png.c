@@ -25,7 +25,7 @@
 #include "ws_driver.h"
 #include "ws_png_render.h"
 #include "ws_raytrace.h"
-#include <ctype.h>
+#include "ws/ws_file.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -49,31 +49,12 @@ typedef struct png_ws {
     png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
 } png_ws;
 
-static char *base_from_conn(const char *conn)
-{
-    size_t n = strlen(conn);
-    if (n == 0)
-        return gks_strdup("gks");
-    int digits = 1;
-    for (size_t i = 0; i < n; i++)
-        digits &= isdigit((unsigned char)conn[i]) != 0;
-    if (digits) {
-        char *s = gks_alloc_array(n + 4, 1);
-        if (s)
-            snprintf(s, n + 4, "gks%s", conn);
-        return s;
-    }
-    if (n > 4 && strcmp(conn + n - 4, ".png") == 0)
-        return gks_strndup(conn, n - 4);
-    return gks_strdup(conn);
-}
-
 static int png_open(gks_ws *ws)
 {
     png_ws *p = gks_calloc_array(1, sizeof *p);
     if (!p)
         return 300;
-    p->base = base_from_conn(ws->conn_id);
+    p->base = gks_ws_file_base(ws->conn_id, ".png");
     p->rt = ws_rt_new();
     p->render = ws_png_render_new();
     if (!p->base || !p->rt || !p->render) {
@@ -173,14 +154,9 @@ static int png_update(gks_ws *ws)
     gks_raster_fb *pic;
     if (ws_png_render_compose(p->render, ws, fb, &pic))
         return 300;
-    size_t n = strlen(p->base) + 32;
-    char *path = gks_alloc_array(n, 1);
+    char *path = gks_ws_file_frame(p->base, p->frame, ".png");
     if (!path)
         return 300;
-    if (p->frame == 1)
-        snprintf(path, n, "%s.png", p->base);
-    else
-        snprintf(path, n, "%s-%03d.png", p->base, p->frame);
     int r = gks_raster_fb_write_png(pic, path, p->compression);
     gks_free(path);
     if (r != GKS_RASTER_OK)

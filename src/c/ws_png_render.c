@@ -86,6 +86,12 @@ struct png_render {
     size_t cap_order;
     gks_raster_fb *composed;
     int fail;              /* result of the last GROW */
+    double px_per_dc;      /* output pixels per DC unit (1 for the PNG workstation) */
+    double px_per_unit;    /* output pixels per nominal unit (line width 1, marker size 1) */
+    int keep;              /* the primitive being built is retained whatever the mode */
+    gks_raster_fb *depth;  /* ws_png_render_walk: depth buffer of hidden-line mode */
+    gks_raster_pt *vis;    /* ws_png_render_walk: visible runs of a piece */
+    size_t cap_vis;
     view_cache views[GKS_MAX_VIEW_IND + 1];
 };
 
@@ -113,7 +119,22 @@ static void *grow(void *p, size_t *cap, size_t need, size_t size, int *fail)
 
 png_render *ws_png_render_new(void)
 {
-    return gks_calloc_array(1, sizeof(png_render));
+    png_render *r = gks_calloc_array(1, sizeof(png_render));
+    if (r)
+        r->px_per_dc = r->px_per_unit = 1.0;
+    return r;
+}
+
+void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit)
+{
+    if (!(px_per_dc > 0.0) || !isfinite(px_per_dc) || !(px_per_unit > 0.0) ||
+        !isfinite(px_per_unit))
+        return;
+    if (px_per_dc != r->px_per_dc)
+        for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
+            r->views[v].valid = 0;
+    r->px_per_dc = px_per_dc;
+    r->px_per_unit = px_per_unit;
 }
 
 void ws_png_render_free(png_render *r)
@@ -132,6 +153,8 @@ void ws_png_render_free(png_render *r)
     gks_free(r->order);
     gks_free(r->keys);
     gks_raster_fb_free(r->composed);
+    gks_raster_fb_free(r->depth);
+    gks_free(r->vis);
     gks_free(r);
 }
 
@@ -166,8 +189,8 @@ static const view_cache *view_get(png_render *r, const gks_ws *ws, int vi)
     c->vp = ws->cur_vp;
     double win[6], lim[6];
     gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
-                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
+    const double vp[6] = { 0, (ws->cur_vp.x_max - ws->cur_vp.x_min) * r->px_per_dc, 0,
+                           (ws->cur_vp.y_max - ws->cur_vp.y_min) * r->px_per_dc, 0, 1 };
     if (gks_xform_ws_tran3(win, vp, c->dc))
         return c;
     gks_xform_multiply(v->map_matrix, v->ori_matrix, c->npc);
@@ -563,7 +586,7 @@ static int build_area(build *b, const gks_prim *prim, int retain)
     rattr a;
     memset(&a, 0, sizeof a);
     a.linetype = GKS_RASTER_LT_SOLID;
-    a.width = 1.0;
+    a.width = r->px_per_unit;
     if (pa->int_style == GSTYLE_SOLID) {
         a.style = GKS_RASTER_SOLID;
     } else if (pa->int_style == GSTYLE_HATCH) {
@@ -581,7 +604,7 @@ static int build_area(build *b, const gks_prim *prim, int retain)
     if (pa->edge_flag) {
         a.edge = 1;
         a.edgetype = type_or_solid(pa->edgetype);
-        a.edgewidth = scale_or_one(pa->edgewidth);
+        a.edgewidth = scale_or_one(pa->edgewidth) * r->px_per_unit;
         a.edge_rgb[0] = (float)pa->edge_colour.red;
         a.edge_rgb[1] = (float)pa->edge_colour.green;
         a.edge_rgb[2] = (float)pa->edge_colour.blue;
@@ -592,7 +615,7 @@ static int build_area(build *b, const gks_prim *prim, int retain)
     if (e)
         return e;
     size_t n_fill_pts = r->n_pt - pt0;
-    double w = a.edge ? a.edgewidth : 1.0;
+    double w = a.edge ? a.edgewidth : r->px_per_unit;
     rc.zbias = rc.n_fill ? edge_bias(r->pts + pt0, r->cnts + cnt0, rc.n_fill, w)
                          : (float)PNG_HL_BIAS;
     /* the boundary: HOLLOW, the edge flag, and the outlines of hidden-line mode */
@@ -705,9 +728,9 @@ static int build_line(build *b, const gks_prim *prim, int retain)
     rattr a;
     memset(&a, 0, sizeof a);
     a.linetype = pa->text ? GKS_RASTER_LT_SOLID : type_or_solid(pa->linetype);
-    a.width = pa->text || marker ? 1.0 : scale_or_one(pa->linewidth);
+    a.width = (pa->text || marker ? 1.0 : scale_or_one(pa->linewidth)) * r->px_per_unit;
     a.marker_type = pa->marker_type >= 1 && pa->marker_type <= 5 ? pa->marker_type : 3;
-    a.marker_size = PNG_NOMINAL_MARKER_SIZE * scale_or_one(pa->marker_size);
+    a.marker_size = PNG_NOMINAL_MARKER_SIZE * scale_or_one(pa->marker_size) * r->px_per_unit;
     int e = attr_push(r, &a, &rc.attr);
     if (e)
         return e;
@@ -727,7 +750,7 @@ static int build_line(build *b, const gks_prim *prim, int retain)
 
 int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
 {
-    if (!r || !ws || !fb || !prim || prim->n_points < 0 || prim->n_loops < 0 ||
+    if (!r || !ws || (!fb && !r->keep) || !prim || prim->n_points < 0 || prim->n_loops < 0 ||
         (prim->n_points > 0 && !prim->pts))
         return 0;
     if (prim->kind == GKS_PRIM_FILL_AREA) {
@@ -743,7 +766,7 @@ int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const
     if (!v->ok)
         return 0; /* degenerate transformation: nothing visible */
     int mode = ws->hlhsr_mode;
-    int retain = prim->attrs.hlhsr_id != 0 || mode == GHLHSR_HIDDEN_LINE ||
+    int retain = r->keep || prim->attrs.hlhsr_id != 0 || mode == GHLHSR_HIDDEN_LINE ||
                  mode == GHLHSR_PAINTER;
     build b = { .r = r, .v = v, .fb = fb, .ws = ws };
     size_t n_pt = r->n_pt, n_cnt = r->n_cnt, n_attr = r->n_attr, n_fl = r->n_fl;
@@ -883,8 +906,23 @@ static int cmp_key(const void *pa, const void *pb)
     return (a->idx > b->idx) - (a->idx < b->idx);
 }
 
+static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+                   int overlays);
+
 int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
                           gks_raster_fb **out)
+{
+    return compose(r, ws, fb, out, 1);
+}
+
+int ws_png_render_compose_base(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+                               gks_raster_fb **out)
+{
+    return compose(r, ws, fb, out, 0);
+}
+
+static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+                   int overlays)
 {
     *out = fb;
     if (r->n_rec == 0)
@@ -933,11 +971,275 @@ int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
                 draw_rec(r, c, &r->recs[i], immediate_mode(ws), &st);
         }
     }
-    for (size_t i = 0; i < r->n_rec; i++) {
+    for (size_t i = 0; i < r->n_rec && overlays; i++) {
         gks_raster_stroke st = { 0 };
         if (r->recs[i].overlay)
             draw_rec(r, c, &r->recs[i], DRAW_PLAIN, &st);
     }
     *out = c;
     return 0;
+}
+
+int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim)
+{
+    if (!r)
+        return 0;
+    r->keep = 1;
+    int e = ws_png_render_prim(r, ws, NULL, prim);
+    r->keep = 0;
+    return e;
+}
+
+/* --- the frame's records for vector back ends (ws_png_render_walk) ----------------------- */
+typedef struct walk {
+    png_render *r;
+    ws_render_emit emit;
+    void *ctx;
+    const gks_raster_fb *depth; /* hidden-line mode: visibility of lines, else NULL */
+} walk;
+
+/* Is DC point (x, y, z) in front of the depth buffer (the raster's Z_TEST rule)? Outside
+ * the buffer nothing hides it. */
+static int visible(const gks_raster_fb *d, double x, double y, double z, float bias)
+{
+    double fx = floor(x), fy = floor(y);
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < d->w && fy < d->h))
+        return 1;
+    return z + bias >= d->z[(size_t)fy * (size_t)d->w + (size_t)fx];
+}
+
+static int emit_run(walk *w, ws_render_item *it, size_t n)
+{
+    if (n < 2)
+        return 0;
+    int c = (int)n;
+    it->n_loops = 1;
+    it->counts = &c;
+    it->pts = w->r->vis;
+    return w->emit(w->ctx, it);
+}
+
+/* A polyline piece pts[0..n-1] (closed: back to pts[0]) as its visible runs: every segment
+ * is sampled at most half a pixel apart against the depth buffer; a run starts or ends
+ * where the samples change. */
+static int emit_visible(walk *w, ws_render_item *it, const gks_raster_pt *pts, size_t n,
+                        int closed, float bias)
+{
+    png_render *r = w->r;
+    size_t run = 0; /* points of the open run in r->vis */
+    size_t nseg = closed ? n : n - 1;
+    for (size_t s = 0; s < nseg; s++) {
+        const gks_raster_pt *a = &pts[s], *b = &pts[(s + 1) % n];
+        double len = hypot(b->x - a->x, b->y - a->y);
+        double steps = ceil(2.0 * len);
+        size_t k_n = steps >= 1.0 && steps < 1e7 ? (size_t)steps : 1;
+        for (size_t k = 0; k < k_n; k++) {
+            double t = (k + 0.5) / (double)k_n;
+            int v = visible(w->depth, a->x + t * (b->x - a->x), a->y + t * (b->y - a->y),
+                            a->z + t * (b->z - a->z), bias);
+            if (v == (run > 0))
+                continue;
+            double t0 = (double)k / (double)k_n;
+            gks_raster_pt q = { a->x + t0 * (b->x - a->x), a->y + t0 * (b->y - a->y),
+                                a->z + t0 * (b->z - a->z) };
+            if (GROW(r, vis, cap_vis, run + 1))
+                return 300;
+            r->vis[run++] = q;
+            if (!v) {
+                int e = emit_run(w, it, run);
+                run = 0;
+                if (e)
+                    return e;
+            }
+        }
+        if (run) {
+            if (GROW(r, vis, cap_vis, run + 1))
+                return 300;
+            r->vis[run++] = *b;
+        }
+    }
+    return emit_run(w, it, run);
+}
+
+/* Line pieces cnt[0..n-1] from pts (negative count: continues the previous piece) as one
+ * item, or with a depth buffer as their visible runs. */
+static int emit_pieces(walk *w, ws_render_item *it, const gks_raster_pt *pts, const int *cnt,
+                       int n, float bias)
+{
+    if (n <= 0)
+        return 0;
+    if (!w->depth) {
+        it->n_loops = n;
+        it->counts = cnt;
+        it->pts = pts;
+        return w->emit(w->ctx, it);
+    }
+    size_t off = 0;
+    for (int k = 0; k < n; k++) {
+        size_t c = (size_t)(cnt[k] < 0 ? -cnt[k] : cnt[k]);
+        int e = emit_visible(w, it, pts + off, c, 0, bias);
+        if (e)
+            return e;
+        off += c;
+    }
+    return 0;
+}
+
+static void line_item(ws_render_item *it, const png_render *r, const float rgb[3], int type,
+                      double width)
+{
+    memset(it, 0, sizeof *it);
+    it->kind = WS_ITEM_LINE;
+    memcpy(it->rgb, rgb, sizeof it->rgb);
+    it->linetype = type;
+    it->width = width;
+    it->unit = r->px_per_unit;
+}
+
+/* One record as items, in the order and with the choices of draw_rec; hl: the lines pass
+ * of hidden-line mode (w->depth set). */
+static int emit_rec(walk *w, const rec *rc, int hl)
+{
+    png_render *r = w->r;
+    const rattr *a = &r->attrs[rc->attr];
+    const gks_raster_pt *pts = r->pts + rc->pt;
+    const int *cnt = r->cnts + rc->cnt;
+    const gks_raster_fb *depth = w->depth;
+    if (!hl)
+        w->depth = NULL;
+    ws_render_item it;
+    int e = 0;
+    line_item(&it, r, rc->rgb, a->linetype, a->width);
+    if (rc->kind == REC_LINE) {
+        e = emit_pieces(w, &it, pts, cnt, rc->n_fill, rc->zbias);
+    } else if (rc->kind == REC_MARKER) {
+        it.kind = WS_ITEM_MARKERS;
+        it.marker_type = a->marker_type;
+        it.marker_size = a->marker_size;
+        size_t off = 0;
+        for (int k = 0; k < rc->n_fill && !e; off += (size_t)cnt[k], k++) {
+            const gks_raster_pt *p = pts + off;
+            size_t m = (size_t)cnt[k];
+            if (w->depth) { /* a marker is visible when its centre is */
+                if (GROW(r, vis, cap_vis, m)) {
+                    e = 300;
+                    break;
+                }
+                size_t j = 0;
+                for (size_t i = 0; i < m; i++)
+                    if (visible(w->depth, p[i].x, p[i].y, p[i].z, (float)PNG_HL_BIAS))
+                        r->vis[j++] = p[i];
+                p = r->vis;
+                m = j;
+            }
+            if (m == 0)
+                continue;
+            int c = (int)m;
+            it.n_loops = 1;
+            it.counts = &c;
+            it.pts = p;
+            e = w->emit(w->ctx, &it);
+        }
+    } else if (rc->kind == REC_CELL) {
+        memset(&it, 0, sizeof it);
+        it.kind = WS_ITEM_CELLS;
+        it.unit = r->px_per_unit;
+        it.cell_o = pts[0];
+        it.cell_u = pts[1];
+        it.cell_v = pts[2];
+        it.nx = a->nx;
+        it.ny = a->ny;
+        it.rgb_list = r->fl + a->fl;
+        it.n_loops = rc->n_fill;
+        it.counts = cnt;
+        it.pts = pts + 3;
+        e = w->emit(w->ctx, &it);
+    } else {
+        size_t n_fill_pts = 0;
+        for (int k = 0; k < rc->n_fill; k++)
+            n_fill_pts += (size_t)cnt[k];
+        if (rc->n_fill && !hl && a->style != STYLE_HOLLOW) {
+            memset(&it, 0, sizeof it);
+            it.kind = WS_ITEM_AREA;
+            memcpy(it.rgb, rc->rgb, sizeof it.rgb);
+            it.unit = r->px_per_unit;
+            it.style = a->style;
+            it.hatch = a->hatch;
+            if (a->style == GKS_RASTER_PATTERN) {
+                it.nx = a->nx;
+                it.ny = a->ny;
+                it.rgb_list = r->fl + a->fl;
+                memcpy(it.pat_geo, a->geo, sizeof it.pat_geo);
+            }
+            it.n_loops = rc->n_fill;
+            it.counts = cnt;
+            it.pts = pts;
+            e = w->emit(w->ctx, &it);
+        }
+        line_item(&it, r, rc->rgb, a->linetype, a->width);
+        if (e) {
+        } else if (!rc->outlined && hl) { /* retained before the mode became hidden line */
+            const gks_raster_pt *q = pts;
+            for (int k = 0; k < rc->n_fill && !e; q += cnt[k], k++)
+                e = emit_visible(w, &it, q, (size_t)cnt[k], 1, rc->zbias);
+        } else if (rc->n_edge > 0 && (a->edge || a->style == STYLE_HOLLOW || hl)) {
+            if (a->edge) {
+                memcpy(it.rgb, a->edge_rgb, sizeof it.rgb);
+                it.linetype = a->edgetype;
+                it.width = a->edgewidth;
+            }
+            e = emit_pieces(w, &it, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, rc->zbias);
+        }
+    }
+    w->depth = depth;
+    return e;
+}
+
+int ws_png_render_walk(png_render *r, const gks_ws *ws, int width, int height,
+                       ws_render_emit emit, void *ctx)
+{
+    if (r->n_rec == 0)
+        return 0;
+    walk w = { .r = r, .emit = emit, .ctx = ctx };
+    int mode = ws->hlhsr_mode, e = 0;
+    if (mode == GHLHSR_PAINTER) {
+        key_idx *ki = gks_alloc_array(r->n_rec, sizeof *ki);
+        if (!ki)
+            return 300;
+        size_t n = 0;
+        for (size_t i = 0; i < r->n_rec; i++)
+            if (!r->recs[i].overlay)
+                ki[n++] = (key_idx){ isfinite(r->recs[i].key) ? r->recs[i].key : 0.0, i };
+        qsort(ki, n, sizeof *ki, cmp_key);
+        for (size_t i = 0; i < n && !e; i++)
+            e = emit_rec(&w, &r->recs[ki[i].idx], 0);
+        gks_free(ki);
+    } else if (mode == GHLHSR_HIDDEN_LINE) {
+        gks_raster_fb *d = r->depth;
+        if (!d || d->width != width || d->height != height) {
+            gks_raster_fb_free(d);
+            d = r->depth = gks_raster_fb_create(width, height, 1);
+            if (!d)
+                return 300;
+        }
+        gks_raster_fb_clear(d, NULL);
+        for (size_t i = 0; i < r->n_rec; i++) {
+            gks_raster_stroke st = { 0 };
+            if (!r->recs[i].overlay)
+                draw_rec(r, d, &r->recs[i], DRAW_HL_AREAS, &st);
+        }
+        w.depth = d;
+        for (size_t i = 0; i < r->n_rec && !e; i++)
+            if (!r->recs[i].overlay)
+                e = emit_rec(&w, &r->recs[i], 1);
+        w.depth = NULL;
+    } else {
+        for (size_t i = 0; i < r->n_rec && !e; i++)
+            if (!r->recs[i].overlay)
+                e = emit_rec(&w, &r->recs[i], 0);
+    }
+    for (size_t i = 0; i < r->n_rec && !e; i++)
+        if (r->recs[i].overlay)
+            e = emit_rec(&w, &r->recs[i], 0);
+    return e;
 }

@@ -67,4 +67,55 @@ int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const
  * Returns 0 or 300 (*out = NULL). */
 int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
                           gks_raster_fb **out);
+/* The same without the overlays (hlhsr_id != 0): a back end that draws them itself. */
+int ws_png_render_compose_base(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+                               gks_raster_fb **out);
+
+/* Output scale (default 1, 1: the PNG workstation): px_per_dc output pixels per DC unit
+ * (the workstation viewport's size in pixels is its DC size times this) and px_per_unit
+ * pixels per nominal unit (line and edge width 1, marker size 1; hatch spacing stays in
+ * pixels). Invalid values are ignored. */
+void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit);
+/* As ws_png_render_prim, but the primitive is retained whatever the HLHSR mode (for a back
+ * end that draws the frame at UPDATE through ws_png_render_walk). */
+int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim);
+
+/* An item of the frame for vector back ends: points in output pixels (DC x right, y up,
+ * z depth), widths and sizes in pixels, unit = pixels per nominal unit.
+ *  AREA    n_loops loops (counts[k] points) filled by the even-odd rule with style
+ *          (GKS_RASTER_SOLID, _HATCH with hatch -1..-12, _PATTERN with nx x ny colours
+ *          rgb_list and pat_geo = reference point, cell width vector, cell height vector);
+ *  LINE    n_loops pieces, a negative count continues the previous piece (its first point
+ *          is the previous piece's last); linetype 1..4, width;
+ *  MARKERS n_loops chunks of centres; marker_type 1..5, marker_size (diameter), width;
+ *  CELLS   cell array: parallelogram cell_o, cell_u (end of the first row), cell_v (end of
+ *          the first column), nx x ny colours rgb_list row-major from cell_o, drawn inside
+ *          the n_loops loops (the parallelogram clipped). */
+typedef enum { WS_ITEM_AREA, WS_ITEM_LINE, WS_ITEM_MARKERS, WS_ITEM_CELLS } ws_item_kind;
+typedef struct ws_render_item {
+    ws_item_kind kind;
+    float rgb[3];
+    int n_loops;
+    const int *counts;
+    const gks_raster_pt *pts;
+    double unit;
+    int style, hatch;
+    int linetype;
+    double width;
+    int marker_type;
+    double marker_size;
+    int nx, ny;
+    const float *rgb_list;
+    double pat_geo[6];
+    gks_raster_pt cell_o, cell_u, cell_v;
+} ws_render_item;
+typedef int (*ws_render_emit)(void *ctx, const ws_render_item *it);
+/* The retained primitives of the frame as items to emit, in the order of the HLHSR mode:
+ * painter sorted as drawn; hidden line: the areas' depths rasterised into a width x height
+ * depth buffer owned by r, then only the lines, outlines and markers in front of it
+ * (visible runs split at sample spacing <= 1/2 pixel, the same bias as the raster);
+ * others in order of arrival; overlays (hlhsr_id != 0) last. Returns 0, 300 or the first
+ * non-zero result of emit. */
+int ws_png_render_walk(png_render *r, const gks_ws *ws, int width, int height,
+                       ws_render_emit emit, void *ctx);
 #endif

@@ -1,0 +1,770 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * ws_cairo.c -- the vector workstations through cairo: PDF (type 110, one page per frame,
+ * multi-page), SVG (111, one file per frame), PostScript (112, one page per frame) and EPS
+ * (113, one file per frame). Category OUTPUT, class vector; display space A4 portrait
+ * (0.210 x 0.297 m), DC unit = metre; the page of a frame is the current workstation
+ * viewport. Behaviour: docs/WORKSTATIONS.md.
+ *
+ * The frame goes through the PNG workstation's view pipeline and renderers
+ * (ws_png_render.h) at a resolution of GESC_VEC_RESOLUTION dots per inch (default 300),
+ * so that every transformation, clip and HLHSR decision is the PNG workstation's:
+ *  - HLHSR none and painter: every primitive retained and written as vectors in the
+ *    mode's order (ws_png_render_walk): lines with their types and widths, markers, text
+ *    as its stroke-font polylines, fill areas (solid, hatch, pattern), cell arrays as
+ *    images sampled nearest-neighbour;
+ *  - hidden line: the visible runs of the lines and outlines as vector lines (visibility
+ *    sampled against the areas' depth buffer at the resolution above);
+ *  - z-buffer and ray tracing: the raster picture at the resolution above embedded as an
+ *    image (nearest-neighbour), with the overlays (HLHSR identifier != 0) and, in ray
+ *    tracing, the annotations the tracer ignores (lines, markers, text) drawn over it as
+ *    vectors.
+ * Nominal sizes: one nominal unit is VEC_UNIT_M (0.2 mm), the role of one pixel on the
+ * PNG workstation: line width 1, marker size 7, dashes 8 on 4 off and hatch spacing 8 such
+ * units.
+ *
+ * Files (ws_file.h): PDF B.pdf and PS B.ps hold all frames as pages; SVG and EPS write
+ * frame k to B.svg / B-k.svg (like the PNG frames). A frame is drawn at UPDATE WORKSTATION
+ * (and CLEAR and CLOSE WORKSTATION, which update first) when it has new content; SVG/EPS
+ * files are (re)written then; a PDF/PS page is kept until the frame ends (CLEAR WORKSTATION
+ * or the next frame's first output) and the document is complete at CLOSE WORKSTATION.
+ * The creation date in PDF and PS files is fixed (VEC_DATE_*) so that equal programs give
+ * equal files.
+ */
+#include "gks_alloc.h"
+#include "gks_xform.h"
+#include "raster.h"
+#include "ws_driver.h"
+#include "ws_png_render.h"
+#include "ws_raytrace.h"
+#include "ws/ws_file.h"
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define VEC_UNIT_M 0.0002   /* nominal unit: 0.2 mm */
+#define VEC_INCH_M 0.0254
+#define VEC_PI 3.14159265358979323846
+#define VEC_DEFAULT_DPI 300
+#define VEC_DATE_PDF "1970-01-01T00:00:00Z"
+#define VEC_DATE_PS "Thu Jan  1 00:00:00 1970"
+#define VEC_DPI_MIN 10      /* GESC_VEC_RESOLUTION range */
+#define VEC_DPI_MAX 2400
+
+typedef enum { VEC_PDF, VEC_SVG, VEC_PS, VEC_EPS } vec_format;
+
+static const char *const vec_ext[] = { ".pdf", ".svg", ".ps", ".eps" };
+
+/* Predefined colours as on the PNG workstation: 0 background white, 1 black, ... */
+static const Grgb vec_colours[8] = {
+    { 1, 1, 1 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 },
+    { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 },
+};
+
+typedef struct vec_buf { unsigned char *p; size_t n, cap; int fail; } vec_buf;
+
+typedef struct vec_ws {
+    vec_format fmt;
+    char *base;
+    int frame;             /* 1-based number of the current frame */
+    int dirty;             /* content not yet drawn into the frame's page */
+    int frame_written;     /* the current frame has been drawn (file or pending page) */
+    int written_any;
+    int dpi, next_dpi;     /* resolution of rasterised parts; next_dpi from the next frame */
+    png_render *vec;       /* retained primitives written as vectors */
+    png_render *ras;       /* z-buffer primitives drawn at once into fb */
+    gks_raster_fb *fb;     /* raster picture of z-buffer / ray tracing */
+    int raster_used;       /* fb or rt hold part of the frame */
+    ws_rt *rt;
+    cairo_surface_t *page; /* PDF/PS: the drawn frame (recording), until the frame ends */
+    double page_w, page_h; /* its size in points */
+    cairo_surface_t *doc;  /* PDF/PS: the document */
+    vec_buf ps;            /* PS: the document's bytes (creation date fixed at CLOSE) */
+    int pages;
+    int io_error;
+} vec_ws;
+
+static double px_per_m(const vec_ws *v)
+{
+    return v->dpi / VEC_INCH_M;
+}
+
+/* Raster size of the current viewport at the resolution (at least 1 x 1). */
+static void raster_size(const gks_ws *ws, const vec_ws *v, int *w, int *h)
+{
+    double s = px_per_m(v);
+    double fw = ceil((ws->cur_vp.x_max - ws->cur_vp.x_min) * s - 1e-9);
+    double fh = ceil((ws->cur_vp.y_max - ws->cur_vp.y_min) * s - 1e-9);
+    *w = fw >= 1 && fw <= 65536 ? (int)fw : fw > 65536 ? 65536 : 1;
+    *h = fh >= 1 && fh <= 65536 ? (int)fh : fh > 65536 ? 65536 : 1;
+}
+
+static void apply_dpi(vec_ws *v)
+{
+    v->dpi = v->next_dpi;
+    double ppm = px_per_m(v);
+    ws_png_render_set_scale(v->vec, ppm, VEC_UNIT_M * ppm);
+    ws_png_render_set_scale(v->ras, ppm, VEC_UNIT_M * ppm);
+}
+
+static int vec_open_fmt(gks_ws *ws, vec_format fmt)
+{
+    vec_ws *v = gks_calloc_array(1, sizeof *v);
+    if (!v)
+        return 300;
+    v->fmt = fmt;
+    v->base = gks_ws_file_base(ws->conn_id, vec_ext[fmt]);
+    v->vec = ws_png_render_new();
+    v->ras = ws_png_render_new();
+    v->rt = ws_rt_new();
+    if (!v->base || !v->vec || !v->ras || !v->rt) {
+        gks_free(v->base);
+        ws_png_render_free(v->vec);
+        ws_png_render_free(v->ras);
+        ws_rt_free(v->rt);
+        gks_free(v);
+        return 300;
+    }
+    v->frame = 1;
+    v->next_dpi = VEC_DEFAULT_DPI;
+    apply_dpi(v);
+    ws->priv = v;
+    return 0;
+}
+
+static int pdf_open(gks_ws *ws) { return vec_open_fmt(ws, VEC_PDF); }
+static int svg_open(gks_ws *ws) { return vec_open_fmt(ws, VEC_SVG); }
+static int ps_open(gks_ws *ws) { return vec_open_fmt(ws, VEC_PS); }
+static int eps_open(gks_ws *ws) { return vec_open_fmt(ws, VEC_EPS); }
+
+/* --- memory stream of the PS document ------------------------------------------------- */
+static cairo_status_t buf_write(void *closure, const unsigned char *data, unsigned int len)
+{
+    vec_buf *b = closure;
+    if (b->fail)
+        return CAIRO_STATUS_WRITE_ERROR;
+    if (len > b->cap - b->n) {
+        size_t c = b->cap ? b->cap : 65536;
+        while (c - b->n < len && c <= ((size_t)-1) / 4)
+            c *= 2;
+        unsigned char *q = c - b->n >= len ? gks_realloc_array(b->p, c, 1) : NULL;
+        if (!q) { /* b->p kept and freed by its owner */
+            b->fail = 1;
+            return CAIRO_STATUS_NO_MEMORY;
+        }
+        b->p = q;
+        b->cap = c;
+    }
+    memcpy(b->p + b->n, data, len);
+    b->n += len;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+/* Writes the PS bytes to path with the creation date line replaced by VEC_DATE_PS.
+ * Returns 0, 300 or 303. */
+static int buf_save_ps(vec_buf *b, const char *path)
+{
+    if (b->fail)
+        return 300;
+    static const char key[] = "%%CreationDate: ";
+    const unsigned char *p = b->p, *end = b->p + b->n, *line = NULL;
+    for (const unsigned char *q = p; q && q + sizeof key - 1 <= end;) {
+        if (memcmp(q, key, sizeof key - 1) == 0) {
+            line = q;
+            break;
+        }
+        const unsigned char *nl = memchr(q, '\n', (size_t)(end - q));
+        q = nl ? nl + 1 : NULL;
+        if (q && q - p > 4096) /* the date is in the header */
+            break;
+    }
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return 303;
+    int ok = 1;
+    if (line) {
+        const unsigned char *nl = memchr(line, '\n', (size_t)(end - line));
+        const unsigned char *rest = nl ? nl + 1 : end;
+        ok = fwrite(p, 1, (size_t)(line - p), f) == (size_t)(line - p) &&
+             fprintf(f, "%s%s\n", key, VEC_DATE_PS) > 0 &&
+             fwrite(rest, 1, (size_t)(end - rest), f) == (size_t)(end - rest);
+    } else {
+        ok = fwrite(p, 1, b->n, f) == b->n;
+    }
+    ok &= fclose(f) == 0;
+    return ok ? 0 : 303;
+}
+
+/* --- drawing items ---------------------------------------------------------------------- */
+static void path_loops(cairo_t *cr, const ws_render_item *it, int closed)
+{
+    const gks_raster_pt *p = it->pts;
+    for (int k = 0; k < it->n_loops; k++) {
+        int c = it->counts[k];
+        int cont = c < 0;
+        if (cont)
+            c = -c;
+        for (int i = 0; i < c; i++) {
+            if (i == 0 && cont)
+                continue; /* the previous piece's last point */
+            if (i == 0)
+                cairo_move_to(cr, p[i].x, p[i].y);
+            else
+                cairo_line_to(cr, p[i].x, p[i].y);
+        }
+        if (closed && c > 0)
+            cairo_close_path(cr);
+        p += c;
+    }
+}
+
+/* Dashes of the raster module (raster.h) in nominal units times max(1, width). */
+static void set_line(cairo_t *cr, const ws_render_item *it, int type, double width)
+{
+    double w = width > it->unit ? width : it->unit;
+    cairo_set_line_width(cr, w);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    double s = it->unit * (w / it->unit > 1.0 ? w / it->unit : 1.0);
+    double d[4];
+    int n = 0;
+    if (type == 2) {
+        d[0] = 8 * s; d[1] = 4 * s; n = 2;
+    } else if (type == 3) {
+        d[0] = 2 * s; d[1] = 4 * s; n = 2;
+    } else if (type == 4) {
+        d[0] = 8 * s; d[1] = 3 * s; d[2] = 2 * s; d[3] = 3 * s; n = 4;
+    }
+    cairo_set_dash(cr, d, n, 0.0);
+}
+
+static cairo_surface_t *image_of(const float *rgb, int nx, int ny)
+{
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, nx, ny);
+    if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS)
+        return s;
+    cairo_surface_flush(s);
+    unsigned char *d = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    for (int j = 0; j < ny; j++) {
+        uint32_t *row = (uint32_t *)(void *)(d + (size_t)j * (size_t)stride);
+        for (int i = 0; i < nx; i++) {
+            const float *c = rgb + 3 * ((size_t)j * (size_t)nx + (size_t)i);
+            uint32_t q[3];
+            for (int k = 0; k < 3; k++) {
+                float x = c[k] >= 0.0f ? (c[k] <= 1.0f ? c[k] : 1.0f) : 0.0f;
+                q[k] = (uint32_t)(x * 255.0f + 0.5f);
+            }
+            row[i] = 0xff000000u | q[0] << 16 | q[1] << 8 | q[2];
+        }
+    }
+    cairo_surface_mark_dirty(s);
+    return s;
+}
+
+/* An image (pattern cells, cell array) with the matrix from its pixel space to user space;
+ * painted into the current path's even-odd interior. */
+static void paint_image(cairo_t *cr, const float *rgb, int nx, int ny, const cairo_matrix_t *m,
+                        cairo_extend_t extend)
+{
+    cairo_matrix_t inv = *m;
+    if (cairo_matrix_invert(&inv) != CAIRO_STATUS_SUCCESS) {
+        cairo_new_path(cr);
+        return;
+    }
+    cairo_surface_t *img = image_of(rgb, nx, ny);
+    cairo_pattern_t *pat = cairo_pattern_create_for_surface(img);
+    cairo_pattern_set_matrix(pat, &inv);
+    cairo_pattern_set_filter(pat, CAIRO_FILTER_NEAREST);
+    cairo_pattern_set_extend(pat, extend);
+    cairo_set_source(cr, pat);
+    cairo_fill(cr);
+    cairo_pattern_destroy(pat);
+    cairo_surface_destroy(img);
+}
+
+/* Hatch lines of the raster module: the pixel rows / columns / diagonals k * spacing in
+ * nominal units, one unit wide, through the units' centres, inside the current path. */
+static void hatch(cairo_t *cr, const ws_render_item *it)
+{
+    int k = -it->hatch, kind = (k - 1) % 6 + 1;
+    double u = it->unit, s = (k <= 6 ? GKS_RASTER_HATCH_SPACING : GKS_RASTER_HATCH_SPACING / 2);
+    double x0, y0, x1, y1;
+    cairo_save(cr);
+    cairo_clip(cr);
+    cairo_clip_extents(cr, &x0, &y0, &x1, &y1);
+    x0 /= u; y0 /= u; x1 /= u; y1 /= u;
+    cairo_scale(cr, u, u); /* nominal units from here */
+    int hor = kind == 1 || kind == 5, ver = kind == 2 || kind == 5;
+    int up = kind == 3 || kind == 6, down = kind == 4 || kind == 6;
+    if (hor)
+        for (double y = floor(y0 / s) * s; y <= y1; y += s) {
+            cairo_move_to(cr, x0 - 1, y + 0.5);
+            cairo_line_to(cr, x1 + 1, y + 0.5);
+        }
+    if (ver)
+        for (double x = floor(x0 / s) * s; x <= x1; x += s) {
+            cairo_move_to(cr, x + 0.5, y0 - 1);
+            cairo_line_to(cr, x + 0.5, y1 + 1);
+        }
+    cairo_set_line_width(cr, 1.0);
+    cairo_set_dash(cr, NULL, 0, 0);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    cairo_stroke(cr);
+    /* diagonals x - y = c (up) and x + y = c + 1 (down), c a multiple of s; the raster's
+     * staircase is 1 unit wide horizontally, 1/sqrt(2) across */
+    double h = y1 - y0 + 2;
+    if (up)
+        for (double c = floor((x0 - y1 - 1) / s) * s; c <= x1 - y0 + 1; c += s) {
+            cairo_move_to(cr, c + y0 - 1, y0 - 1);
+            cairo_line_to(cr, c + y0 - 1 + h, y0 - 1 + h);
+        }
+    if (down)
+        for (double c = floor((x0 + y0 - 2) / s) * s; c <= x1 + y1 + 1; c += s) {
+            cairo_move_to(cr, c + 1 - (y0 - 1), y0 - 1);
+            cairo_line_to(cr, c + 1 - (y0 - 1) - h, y0 - 1 + h);
+        }
+    cairo_set_line_width(cr, sqrt(0.5));
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}
+
+static void markers(cairo_t *cr, const ws_render_item *it)
+{
+    const gks_raster_pt *p = it->pts;
+    double r = 0.5 * it->marker_size, d = r * sqrt(0.5);
+    set_line(cr, it, 1, it->width);
+    for (int k = 0; k < it->n_loops; k++)
+        for (int i = 0; i < it->counts[k]; i++, p++) {
+            if (it->marker_type == 1) { /* the smallest dot: one nominal unit */
+                cairo_new_sub_path(cr);
+                cairo_arc(cr, p->x, p->y, 0.5 * it->unit, 0, 2 * VEC_PI);
+                cairo_fill(cr);
+                continue;
+            }
+            if (it->marker_type == 4) {
+                cairo_new_sub_path(cr);
+                cairo_arc(cr, p->x, p->y, r, 0, 2 * VEC_PI);
+                continue;
+            }
+            if (it->marker_type == 2 || it->marker_type == 3) {
+                cairo_move_to(cr, p->x - r, p->y);
+                cairo_line_to(cr, p->x + r, p->y);
+                cairo_move_to(cr, p->x, p->y - r);
+                cairo_line_to(cr, p->x, p->y + r);
+            }
+            if (it->marker_type == 3 || it->marker_type == 5) {
+                cairo_move_to(cr, p->x - d, p->y - d);
+                cairo_line_to(cr, p->x + d, p->y + d);
+                cairo_move_to(cr, p->x - d, p->y + d);
+                cairo_line_to(cr, p->x + d, p->y - d);
+            }
+        }
+    cairo_stroke(cr);
+}
+
+static int vec_item(void *ctx, const ws_render_item *it)
+{
+    cairo_t *cr = ctx;
+    cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
+    switch (it->kind) {
+    case WS_ITEM_AREA:
+        cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+        path_loops(cr, it, 1);
+        if (it->style == GKS_RASTER_HATCH) {
+            hatch(cr, it);
+        } else if (it->style == GKS_RASTER_PATTERN) {
+            const double *g = it->pat_geo; /* reference point, cell width, cell height */
+            cairo_matrix_t m;
+            cairo_matrix_init(&m, g[2], g[3], g[4], g[5], g[0], g[1]);
+            paint_image(cr, it->rgb_list, it->nx, it->ny, &m, CAIRO_EXTEND_REPEAT);
+        } else {
+            cairo_fill(cr);
+        }
+        break;
+    case WS_ITEM_LINE:
+        set_line(cr, it, it->linetype, it->width);
+        path_loops(cr, it, 0);
+        cairo_stroke(cr);
+        break;
+    case WS_ITEM_MARKERS:
+        markers(cr, it);
+        break;
+    case WS_ITEM_CELLS: {
+        cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+        path_loops(cr, it, 1);
+        const gks_raster_pt *o = &it->cell_o, *u = &it->cell_u, *w = &it->cell_v;
+        cairo_matrix_t m;
+        cairo_matrix_init(&m, (u->x - o->x) / it->nx, (u->y - o->y) / it->nx,
+                          (w->x - o->x) / it->ny, (w->y - o->y) / it->ny, o->x, o->y);
+        paint_image(cr, it->rgb_list, it->nx, it->ny, &m, CAIRO_EXTEND_PAD);
+        break;
+    }
+    }
+    return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
+}
+
+/* NPC3 -> raster pixels and depth (the ray tracer's wsm, as ws_png.c's). */
+static int ws_matrix(const gks_ws *ws, const vec_ws *v, double m[4][4])
+{
+    double win[6], s = px_per_m(v);
+    gks_limit3_array(&ws->cur_win, win);
+    const double vp[6] = { 0, (ws->cur_vp.x_max - ws->cur_vp.x_min) * s, 0,
+                           (ws->cur_vp.y_max - ws->cur_vp.y_min) * s, 0, 1 };
+    return gks_xform_ws_tran3(win, vp, m);
+}
+
+/* The raster part of the frame (z-buffer, ray tracing) into the page as an image whose
+ * pixels are the raster's. */
+static int draw_raster(gks_ws *ws, vec_ws *v, cairo_t *cr)
+{
+    double wsm[4][4];
+    if (ws_rt_count(v->rt) > 0 && ws_matrix(ws, v, wsm) == 0) {
+        int e = ws_rt_render(v->rt, ws, (const double (*)[4])wsm, v->fb);
+        if (e)
+            return e;
+        ws_rt_reset(v->rt); /* traced once: repeated updates keep the picture */
+    }
+    gks_raster_fb *pic;
+    if (ws_png_render_compose_base(v->ras, ws, v->fb, &pic))
+        return 300;
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic->width,
+                                                      pic->height);
+    unsigned char *row8 = gks_alloc_array((size_t)pic->width, 3);
+    if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS || !row8) {
+        cairo_surface_destroy(img);
+        gks_free(row8);
+        return 300;
+    }
+    cairo_surface_flush(img);
+    unsigned char *d = cairo_image_surface_get_data(img);
+    int stride = cairo_image_surface_get_stride(img);
+    for (int j = 0; j < pic->height; j++) {
+        gks_raster_fb_resolve_row(pic, j, row8);
+        uint32_t *row = (uint32_t *)(void *)(d + (size_t)j * (size_t)stride);
+        for (int i = 0; i < pic->width; i++)
+            row[i] = 0xff000000u | (uint32_t)row8[3 * i] << 16 |
+                     (uint32_t)row8[3 * i + 1] << 8 | row8[3 * i + 2];
+    }
+    gks_free(row8);
+    cairo_surface_mark_dirty(img);
+    cairo_pattern_t *pat = cairo_pattern_create_for_surface(img);
+    cairo_matrix_t m; /* user (pixels, y up) -> image (row 0 at the top) */
+    cairo_matrix_init(&m, 1, 0, 0, -1, 0, pic->height);
+    cairo_pattern_set_matrix(pat, &m);
+    cairo_pattern_set_filter(pat, CAIRO_FILTER_NEAREST);
+    cairo_set_source(cr, pat);
+    cairo_rectangle(cr, 0, 0, pic->width, pic->height);
+    cairo_fill(cr);
+    cairo_pattern_destroy(pat);
+    cairo_surface_destroy(img);
+    return 0;
+}
+
+/* The frame onto a page of size w x h points (cr: user space = raster pixels, y up). */
+static int draw_frame(gks_ws *ws, vec_ws *v, cairo_t *cr, double h_pt)
+{
+    double k = 72.0 / v->dpi;
+    cairo_translate(cr, 0, h_pt);
+    cairo_scale(cr, k, -k);
+    int rw, rh;
+    raster_size(ws, v, &rw, &rh);
+    cairo_set_source_rgb(cr, ws->colr[0].red, ws->colr[0].green, ws->colr[0].blue);
+    cairo_rectangle(cr, 0, 0, rw, rh);
+    cairo_fill(cr);
+    int e = 0;
+    if (v->raster_used && v->fb)
+        e = draw_raster(ws, v, cr);
+    if (!e)
+        e = ws_png_render_walk(v->vec, ws, rw, rh, vec_item, cr);
+    if (!e)
+        e = ws_png_render_walk(v->ras, ws, rw, rh, vec_item, cr); /* its overlays */
+    if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        e = 300;
+    return e;
+}
+
+static void page_size(const gks_ws *ws, double *w, double *h)
+{
+    double k = 72.0 / VEC_INCH_M;
+    *w = (ws->cur_vp.x_max - ws->cur_vp.x_min) * k;
+    *h = (ws->cur_vp.y_max - ws->cur_vp.y_min) * k;
+    if (!(*w >= 1.0)) *w = 1.0;
+    if (!(*h >= 1.0)) *h = 1.0;
+}
+
+/* The PDF / PS document, created at its first page. */
+static int doc_open(vec_ws *v, double w, double h)
+{
+    if (v->doc)
+        return 0;
+    if (v->fmt == VEC_PDF) {
+        char *path = gks_ws_file_frame(v->base, 1, vec_ext[v->fmt]);
+        if (!path)
+            return 300;
+        v->doc = cairo_pdf_surface_create(path, w, h);
+        gks_free(path);
+        cairo_pdf_surface_set_metadata(v->doc, CAIRO_PDF_METADATA_CREATOR, "gks3d");
+        cairo_pdf_surface_set_metadata(v->doc, CAIRO_PDF_METADATA_CREATE_DATE, VEC_DATE_PDF);
+    } else {
+        v->doc = cairo_ps_surface_create_for_stream(buf_write, &v->ps, w, h);
+    }
+    if (cairo_surface_status(v->doc) != CAIRO_STATUS_SUCCESS) {
+        cairo_surface_destroy(v->doc);
+        v->doc = NULL;
+        return 303;
+    }
+    return 0;
+}
+
+/* The pending page (PDF / PS) into the document. */
+static int page_emit(vec_ws *v)
+{
+    if (!v->page)
+        return 0;
+    int e = doc_open(v, v->page_w, v->page_h);
+    if (!e) {
+        if (v->fmt == VEC_PDF)
+            cairo_pdf_surface_set_size(v->doc, v->page_w, v->page_h);
+        else
+            cairo_ps_surface_set_size(v->doc, v->page_w, v->page_h);
+        cairo_t *cr = cairo_create(v->doc);
+        cairo_set_source_surface(cr, v->page, 0, 0);
+        cairo_paint(cr);
+        cairo_show_page(cr);
+        e = cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 303;
+        cairo_destroy(cr);
+        v->pages++;
+    }
+    cairo_surface_destroy(v->page);
+    v->page = NULL;
+    return e;
+}
+
+/* SVG / EPS: the frame's file. */
+static int file_write(gks_ws *ws, vec_ws *v, double w, double h)
+{
+    char *path = gks_ws_file_frame(v->base, v->frame, vec_ext[v->fmt]);
+    if (!path)
+        return 300;
+    cairo_surface_t *s;
+    vec_buf b = { 0 };
+    if (v->fmt == VEC_SVG) {
+        s = cairo_svg_surface_create(path, w, h);
+        cairo_svg_surface_restrict_to_version(s, CAIRO_SVG_VERSION_1_1);
+    } else {
+        s = cairo_ps_surface_create_for_stream(buf_write, &b, w, h);
+        cairo_ps_surface_set_eps(s, 1);
+    }
+    int e = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS ? 0 : 303;
+    if (!e) {
+        cairo_t *cr = cairo_create(s);
+        e = draw_frame(ws, v, cr, h);
+        cairo_show_page(cr);
+        cairo_destroy(cr);
+        cairo_surface_finish(s);
+        if (!e && cairo_surface_status(s) != CAIRO_STATUS_SUCCESS)
+            e = 303;
+    }
+    cairo_surface_destroy(s);
+    if (!e && v->fmt == VEC_EPS)
+        e = buf_save_ps(&b, path);
+    gks_free(b.p);
+    gks_free(path);
+    return e;
+}
+
+static int vec_update(gks_ws *ws)
+{
+    vec_ws *v = ws->priv;
+    if (!v->dirty && v->written_any)
+        return 0;
+    double w, h;
+    page_size(ws, &w, &h);
+    int e;
+    if (v->fmt == VEC_SVG || v->fmt == VEC_EPS) {
+        e = file_write(ws, v, w, h);
+    } else {
+        cairo_rectangle_t ext = { 0, 0, w, h };
+        cairo_surface_t *rec = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &ext);
+        cairo_t *cr = cairo_create(rec);
+        e = draw_frame(ws, v, cr, h);
+        cairo_destroy(cr);
+        if (!e && cairo_surface_status(rec) != CAIRO_STATUS_SUCCESS)
+            e = 300;
+        if (e) {
+            cairo_surface_destroy(rec);
+        } else {
+            if (v->page)
+                cairo_surface_destroy(v->page);
+            v->page = rec;
+            v->page_w = w;
+            v->page_h = h;
+        }
+    }
+    if (e)
+        return e;
+    v->dirty = 0;
+    v->written_any = 1;
+    v->frame_written = 1;
+    return 0;
+}
+
+/* The raster framebuffer of z-buffer / ray tracing for the current viewport. */
+static gks_raster_fb *framebuffer(gks_ws *ws, vec_ws *v)
+{
+    int w, h;
+    raster_size(ws, v, &w, &h);
+    if (v->fb && v->fb->width == w && v->fb->height == h)
+        return v->fb;
+    gks_raster_fb_free(v->fb);
+    v->fb = gks_raster_fb_create(w, h, 1);
+    if (v->fb) {
+        float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                        (float)ws->colr[0].blue };
+        gks_raster_fb_clear(v->fb, bg);
+    }
+    return v->fb;
+}
+
+static int vec_clear(gks_ws *ws)
+{
+    vec_ws *v = ws->priv;
+    int e = 0;
+    if (v->frame_written) {
+        e = page_emit(v);
+        v->frame++;
+        v->frame_written = 0;
+    }
+    v->dirty = 0;
+    v->raster_used = 0;
+    ws_rt_reset(v->rt);
+    ws_png_render_reset(v->vec);
+    ws_png_render_reset(v->ras);
+    if (v->next_dpi != v->dpi)
+        apply_dpi(v);
+    gks_raster_fb_free(v->fb);
+    v->fb = NULL;
+    return e;
+}
+
+static void vec_close(gks_ws *ws)
+{
+    vec_ws *v = ws->priv;
+    int e = page_emit(v);
+    if (v->doc) {
+        cairo_surface_finish(v->doc);
+        if (cairo_surface_status(v->doc) != CAIRO_STATUS_SUCCESS)
+            e = 303;
+        cairo_surface_destroy(v->doc);
+        if (!e && v->fmt == VEC_PS) {
+            char *path = gks_ws_file_frame(v->base, 1, vec_ext[v->fmt]);
+            e = path ? buf_save_ps(&v->ps, path) : 300;
+            gks_free(path);
+        }
+    }
+    if (e) /* CLOSE WORKSTATION has no error path left: the file is incomplete */
+        fprintf(stderr, "gks3d: workstation %d: error %d writing %s%s\n", ws->id, e, v->base,
+                vec_ext[v->fmt]);
+    gks_free(v->ps.p);
+    gks_raster_fb_free(v->fb);
+    ws_rt_free(v->rt);
+    ws_png_render_free(v->vec);
+    ws_png_render_free(v->ras);
+    gks_free(v->base);
+    gks_free(v);
+    ws->priv = NULL;
+}
+
+static int vec_primitive(gks_ws *ws, const gks_prim *prim)
+{
+    vec_ws *v = ws->priv;
+    int mode = ws->hlhsr_mode, e;
+    int area = prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY;
+    if (mode == GHLHSR_RAYTRACE && area) {
+        if (!framebuffer(ws, v))
+            return 300;
+        e = ws_rt_record(v->rt, ws, prim);
+        v->raster_used |= !e;
+    } else if (mode == GHLHSR_ZBUFFER && prim->attrs.hlhsr_id == 0) {
+        gks_raster_fb *fb = framebuffer(ws, v);
+        if (!fb)
+            return 300;
+        e = ws_png_render_prim(v->ras, ws, fb, prim);
+        v->raster_used |= !e;
+    } else {
+        e = ws_png_render_keep(v->vec, ws, prim);
+    }
+    if (!e)
+        v->dirty = 1;
+    return e;
+}
+
+static int vec_message(gks_ws *ws, const char *msg)
+{
+    fprintf(stderr, "gks3d: message for workstation %d: %s\n", ws->id, msg);
+    return 0;
+}
+
+static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    vec_ws *v = ws->priv;
+    if (func_id == GESC_VEC_RESOLUTION) {
+        if (in->num_ints < 2 || !in->ints || in->ints[1] < VEC_DPI_MIN ||
+            in->ints[1] > VEC_DPI_MAX)
+            return 182;
+        v->next_dpi = in->ints[1];
+        if (!v->dirty && !v->frame_written && !v->raster_used &&
+            ws_png_render_retained(v->vec) == 0 && ws_png_render_retained(v->ras) == 0) {
+            apply_dpi(v); /* nothing drawn yet: this frame already */
+            gks_raster_fb_free(v->fb);
+            v->fb = NULL;
+        }
+        return 0;
+    }
+    if (func_id <= GESC_RT_CLIP_SECONDARY && func_id >= GESC_RT_SPD)
+        return ws_rt_escape(v->rt, func_id, in, out);
+    if (func_id != GESC_SET_FILE_NAME)
+        return 180;
+    char *b = gks_strndup(in->str, in->str_len);
+    if (!b)
+        return 300;
+    gks_free(v->base);
+    v->base = b;
+    return 0;
+}
+
+#define VEC_HLHSR                                                                      \
+    ((1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) | (1u << GHLHSR_ZBUFFER) |       \
+     (1u << GHLHSR_PAINTER) | (1u << GHLHSR_RAYTRACE))
+
+#define VEC_DESC(TYPE, NAME)                                                           \
+    {                                                                                  \
+        .type = TYPE, .name = NAME, .cat = GCAT_OUT, .cls = GCLASS_VEC,                \
+        .dc_units = GDC_METRES, .dc_x = 0.210, .dc_y = 0.297,                          \
+        .raster_x = 2480, .raster_y = 3508, /* at the default 300 dpi */               \
+        .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8,                    \
+        .pred_colr = vec_colours, .default_irg = GIRG_SUPPR,                           \
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster, .hlhsr_modes = VEC_HLHSR, \
+    }
+
+static const gks_ws_desc pdf_desc = VEC_DESC(GWS_TYPE_PDF, "pdf");
+static const gks_ws_desc svg_desc = VEC_DESC(GWS_TYPE_SVG, "svg");
+static const gks_ws_desc ps_desc = VEC_DESC(GWS_TYPE_PS, "ps");
+static const gks_ws_desc eps_desc = VEC_DESC(GWS_TYPE_EPS, "eps");
+
+#define VEC_DRIVER(DESC, OPEN)                                                         \
+    {                                                                                  \
+        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN,                 \
+        .close = vec_close, .clear = vec_clear, .update = vec_update,                  \
+        .primitive = vec_primitive, .message = vec_message, .escape = vec_escape,      \
+    }
+
+const gks_ws_driver gks_ws_pdf_driver = VEC_DRIVER(pdf_desc, pdf_open);
+const gks_ws_driver gks_ws_svg_driver = VEC_DRIVER(svg_desc, svg_open);
+const gks_ws_driver gks_ws_ps_driver = VEC_DRIVER(ps_desc, ps_open);
+const gks_ws_driver gks_ws_eps_driver = VEC_DRIVER(eps_desc, eps_open);

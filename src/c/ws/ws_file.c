@@ -1,0 +1,41 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * ws_file.c -- file names of the file workstations (ws_file.h).
+ */
+#include "ws_file.h"
+#include "gks_alloc.h"
+#include <ctype.h>
+#include <stdio.h>
+#include <string.h>
+
+char *gks_ws_file_base(const char *conn, const char *ext)
+{
+    size_t n = conn ? strlen(conn) : 0, ne = strlen(ext);
+    if (n == 0)
+        return gks_strdup("gks");
+    int digits = 1;
+    for (size_t i = 0; i < n; i++)
+        digits &= isdigit((unsigned char)conn[i]) != 0;
+    if (digits) {
+        char *s = gks_alloc_array(n + 4, 1);
+        if (s)
+            snprintf(s, n + 4, "gks%s", conn);
+        return s;
+    }
+    if (n > ne && strcmp(conn + n - ne, ext) == 0)
+        return gks_strndup(conn, n - ne);
+    return gks_strdup(conn);
+}
+
+char *gks_ws_file_frame(const char *base, int frame, const char *ext)
+{
+    size_t n = strlen(base) + strlen(ext) + 16;
+    char *path = gks_alloc_array(n, 1);
+    if (!path)
+        return NULL;
+    if (frame <= 1)
+        snprintf(path, n, "%s%s", base, ext);
+    else
+        snprintf(path, n, "%s-%03d%s", base, frame, ext);
+    return path;
+}
