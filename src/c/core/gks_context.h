@@ -92,9 +92,9 @@ typedef struct gks_state_list {
     int tran_pri[GKS_MAX_NORM_TRAN + 1]; /* viewport input priority, highest first */
     Gclip_ind clip_ind;
     char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
-    struct gks_seg_store *segs; /* segment storage (gks_seg.h) */
+    struct gks_seg_store *segs; /* segment storage (gks_seg_store.h) */
     int open_seg;               /* name of the open segment, 0 = none */
-    int mf_n_mo_active;         /* active MO workstations (gks_mf.c: the MO fast path) */
+    int mf_n_mo_active;         /* active MO workstations (gks_mf_record.c: the MO fast path) */
     int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
 } gks_state_list;
 

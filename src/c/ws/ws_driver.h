@@ -29,7 +29,7 @@ typedef struct gks_ws_desc {
     Girg_mode default_irg;        /* default implicit regeneration mode */
     Gdefer_mode default_defer;
     unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
-    /* Output facilities and predefined bundles (gks_wdt.h); NULL = gks_wdt_raster. */
+    /* Output facilities and predefined bundles (ws_wdt.h); NULL = gks_wdt_raster. */
     const struct gks_wdt_output *out;
 } gks_ws_desc;
 

@@ -1,5 +1,5 @@
 /*
- * gks_inq_output.c -- inquiries of the output attributes: current primitive attributes
+ * gks_inq_attr.c -- inquiries of the output attributes: current primitive attributes
  * (GKS state list), workstation bundle tables (SET and REALIZED values), the output
  * facilities and predefined bundles of workstation description tables, and INQUIRE TEXT
  * EXTENT (3). They never call ERROR HANDLING; nothing but *err_ind is written on error.

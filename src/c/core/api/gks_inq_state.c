@@ -1,5 +1,5 @@
 /*
- * gks_inquiry.c -- inquiry functions. They never call ERROR HANDLING: the error
+ * gks_inq_state.c -- inquiry functions. They never call ERROR HANDLING: the error
  * indicator receives the error number (state errors as the function's class requires:
  * 8 for the GKS state list, 7 for workstation state lists, 0 for description tables that
  * are available in every state except GKCL (8)), and nothing else is written on error.

@@ -12,7 +12,7 @@
  * Non-finite coordinates never reach a driver: a polyline is broken at such a point, a
  * marker at such a point is dropped, an area or cell array containing one is not drawn
  * (GKS defines no error for them). Markers are clipped by their centres; TEXT becomes
- * polyline strokes (gks_text.c) generated per workstation (the text bundle may differ)
+ * polyline strokes (gks_text_layout.c) generated per workstation (the text bundle may differ)
  * and clipped like polylines. CELL ARRAY is the one primitive clipped by the driver
  * (prim.clip, prim.clip_box).
  */
@@ -70,7 +70,7 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
 /* The current state's context: WC3 -> NDC3 by the current normalization transformation,
  * then the open segment's transformation (if a segment is open), clipping at the current
  * viewport 3 when the clipping indicator is on. While INTERPRET ITEM performs a recorded
- * primitive (context norm_override, gks_mf.h), the recorded normalization and clipping
+ * primitive (context norm_override, gks_mf_record.h), the recorded normalization and clipping
  * volume replace the current ones, and NDC3 points enter through the identity.
  * 0, or -1 if degenerate. */
 static int norm_setup(norm_ctx *nc)
@@ -105,7 +105,7 @@ static int norm_setup(norm_ctx *nc)
     return 0;
 }
 
-/* Metafile output (gks_mf.h): the primitive as the active MO workstations record it. */
+/* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record it. */
 static void mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
 {
     if (!gks_mf_on())

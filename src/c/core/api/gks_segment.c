@@ -1,6 +1,6 @@
 /*
  * gks_segment.c -- segment functions (ISO 7942 5.7, GKS-3D SET SEGMENT TRANSFORMATION 3)
- * and their inquiries. The content lives in the segment store (gks_seg.h); primitives
+ * and their inquiries. The content lives in the segment store (gks_seg_store.h); primitives
  * enter it from the output pipeline while a segment is open, and leave it again through
  * gks_output_redraw_segments (regeneration, REDRAW ALL SEGMENTS ON WORKSTATION).
  *

@@ -1,5 +1,5 @@
 /*
- * gks_mf.c -- metafile output: the recording hooks the core calls (gks_mf.h) and WRITE
+ * gks_mf_record.c -- metafile output: the recording hooks the core calls (gks_mf_record.h) and WRITE
  * ITEM TO GKSM. Each hook writes one item to every active MO workstation (or to the
  * addressed MO); a primitive is preceded by the items of the current attributes,
  * normalization and clipping volume that changed since the MO last wrote them.
@@ -63,7 +63,7 @@ static int put_nums(gks_mf_out *o, int item, int n, const long *iv, int m, const
     return put(o, item);
 }
 
-/* Builds o's record from fmt (gks_mf.h) and writes it. */
+/* Builds o's record from fmt (gks_mf_record.h) and writes it. */
 static int put_fmt(gks_mf_out *o, int item, const char *fmt, va_list ap)
 {
     gksm_rec_clear(&o->rec);

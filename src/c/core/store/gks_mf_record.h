@@ -1,9 +1,9 @@
 /*
- * gks_mf.h -- the GKS metafile workstations: recording at the API level (the core calls a
+ * gks_mf_record.h -- the GKS metafile workstations: recording at the API level (the core calls a
  * one-line hook from each function the metafile records; the hook writes an item to every
  * active MO workstation, or to the addressed workstation when it is an MO) and
  * interpretation of items (INTERPRET ITEM performs the recorded function). Item numbers
- * and data records: docs/METAFILE.md. The character codec is gksm.h.
+ * and data records: docs/METAFILE.md. The character codec is gks_mf_codec.h.
  *
  * Current primitive attributes, the normalization and the clipping volume are written
  * lazily: before each primitive, an MO writes the items of those entries that differ from

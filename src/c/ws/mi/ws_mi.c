@@ -2,7 +2,7 @@
  * ws_mi.c -- the GKS metafile input workstation (type GWS_TYPE_MI, category MI) and the
  * metafile input functions GET ITEM TYPE FROM GKSM, READ ITEM FROM GKSM and INTERPRET
  * ITEM. The file is untrusted: the header is checked at OPEN WORKSTATION, every length
- * against the bytes left (gksm.c), and every count in a data record against the record's
+ * against the bytes left (gks_mf_codec.c), and every count in a data record against the record's
  * length before anything is allocated from it.
  */
 #include "gks_alloc.h"
