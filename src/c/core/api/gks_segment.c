@@ -12,8 +12,8 @@
  * Highlighting and detectability do not change a PNG picture.
  */
 #include "gks_error.h"
-#include "gks_mf.h"
-#include "gks_seg.h"
+#include "gks_mf_record.h"
+#include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
 #include "gks_ws.h"

@@ -15,7 +15,7 @@
 #define GKS_MF_H
 #include "gks_private.h"
 #include "gks_context.h"
-#include "gksm.h"
+#include "gks_mf_codec.h"
 
 /* Item types (docs/METAFILE.md). RAL GKS's table for the GKS items; GKS-3D and lighting
  * items in numbers RAL leaves free below 100. */

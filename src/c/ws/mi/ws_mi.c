@@ -7,7 +7,7 @@
  */
 #include "gks_alloc.h"
 #include "gks_error.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "gks_state.h"
 #include "ws_driver.h"
 #include <limits.h>

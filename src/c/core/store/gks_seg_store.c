@@ -1,7 +1,7 @@
 /*
  * gks_seg.c -- segment storage (see gks_seg.h).
  */
-#include "gks_seg.h"
+#include "gks_seg_store.h"
 #include "gks_alloc.h"
 #include <stdint.h>
 #include <string.h>

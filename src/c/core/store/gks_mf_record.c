@@ -4,7 +4,7 @@
  * addressed MO); a primitive is preceded by the items of the current attributes,
  * normalization and clipping volume that changed since the MO last wrote them.
  */
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_state.h"

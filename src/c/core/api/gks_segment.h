@@ -6,7 +6,7 @@
 #define GKS_SEGMENT_H
 #include "gks_private.h"
 #include "ws_driver.h"
-#include "gks_seg.h"
+#include "gks_seg_store.h"
 
 /* CLOSE WORKSTATION / CLEAR WORKSTATION: the segments stored on ws_id are removed from
  * it; a segment stored on no workstation any more is deleted (the open one excepted). */

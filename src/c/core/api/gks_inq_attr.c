@@ -7,7 +7,7 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_state.h"
-#include "gks_text.h"
+#include "gks_text_layout.h"
 #include "gks_ws.h"
 #include <math.h>
 #include <string.h>

@@ -4,7 +4,7 @@
  * patterns and solid/hollow interiors; text is stroked in the core with the compiled-in
  * simplex font (font 1), so every precision of font 1 is available.
  */
-#include "gks_wdt.h"
+#include "ws_wdt.h"
 
 static const int linetypes[] = { 1, 2, 3, 4 };
 static const int markertypes[] = { 1, 2, 3, 4, 5 };

@@ -14,7 +14,7 @@
  * text position. For UP/DOWN, CAP is the cap line of the top character, BASE the base
  * line of the bottom one and HALF midway between them.
  */
-#include "gks_text.h"
+#include "gks_text_layout.h"
 #include "raster.h"
 #include <math.h>
 #include <string.h>

@@ -3,7 +3,7 @@
  * SET VIEW INDEX, SET VIEW REPRESENTATION 3, SET HLHSR MODE, and their inquiries.
  */
 #include "gks_error.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"

@@ -10,7 +10,7 @@
 #define GKS_ATTR_H
 #include "gks_private.h"
 #include "ws_driver.h"
-#include "gks_text.h"
+#include "gks_text_layout.h"
 
 /* The workstation's output description table (never NULL). */
 const gks_wdt_output *gks_attr_wdt(const gks_ws *ws);

@@ -1,7 +1,7 @@
 /*
  * gksm.c -- GKS metafile codec (see gksm.h for the format).
  */
-#include "gksm.h"
+#include "gks_mf_codec.h"
 #include "gks_alloc.h"
 #include <ctype.h>
 #include <errno.h>

@@ -4,7 +4,7 @@
 #include "gks_context.h"
 #include "ws_driver.h"
 #include "gks_xform.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 
 static const gks_ws_driver *const driver_list[] = {
     &gks_ws_null_driver,

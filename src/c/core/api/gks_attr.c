@@ -7,7 +7,7 @@
 #include "gks_attr.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"

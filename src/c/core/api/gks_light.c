@@ -5,7 +5,7 @@
  * (docs/ERRORS.md); out-of-range real values without a PHIGS number are 2000.
  */
 #include "gks_error.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "ws_driver.h"

@@ -5,7 +5,7 @@
  * (gks_mf.c), never through the primitive interface: the driver has no drawing entries.
  */
 #include "gks_alloc.h"
-#include "gks_mf.h"
+#include "gks_mf_record.h"
 #include "ws_driver.h"
 
 static const Grgb mo_colours[2] = { { 1, 1, 1 }, { 0, 0, 0 } };

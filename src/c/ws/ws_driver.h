@@ -9,7 +9,7 @@
 #include "gks_private.h"
 #include "gks.h"
 #include "gks_context.h"
-#include "gks_wdt.h"
+#include "ws_wdt.h"
 
 #define GKS_WS_DRIVER_VERSION 1
 
