@@ -7,3 +7,6 @@ endforeach()
 # A scientist's surface z = f(x, y) above a mirror (twin of examples/f77/surface.f).
 add_executable(surface_c ${CMAKE_CURRENT_LIST_DIR}/surface.c)
 target_link_libraries(surface_c PRIVATE gks3d_shared m)
+# A RAL-style 2-D plot: axes, labels, curves, markers, hatch, pattern, cell array.
+add_executable(plot2d_c ${CMAKE_CURRENT_LIST_DIR}/plot2d.c)
+target_link_libraries(plot2d_c PRIVATE gks3d_shared m)

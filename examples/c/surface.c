@@ -4,7 +4,8 @@
  * each cell two FILL AREA 3 triangles coloured by height, ray traced above a mirror plane.
  * The data stay in the scientist's coordinates: SET WINDOW 3 / SET VIEWPORT 3 map them to
  * NDC3 and the view's up vector is the z axis. A z-buffer preview at a third of the size
- * comes first. Usage: surface_c [SIZE [PREFIX]] (24..2048, default 480); writes
+ * comes first. Usage: surface_c [SIZE [PREFIX [png|pdf|svg|ps|eps]]] (24..2048, default
+ * 480; the vector types draw a side of SIZE x 0.2 mm); writes
  * PREFIXsurface_zbuffer.png and PREFIXsurface.png.
  */
 #include <gks.h>
@@ -47,16 +48,20 @@ static void area_props(real amb, real dif, real spec, real spexp)
     gset_back_area_props(&p);
 }
 
+static Gint ws_type = GWS_TYPE_PNG; /* or a vector type (third argument) */
+
 static void picture(const char *base, int size, int mode, const real *x, const real *y,
                     real z[N + 1][N + 1])
 {
-    gopen_ws(WS, "1", GWS_TYPE_PNG);
+    gopen_ws(WS, "1", ws_type);
     Gescape_in_data in = { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base };
     Gescape_out_data out = { 0, NULL, 0, NULL };
     gescape(GESC_SET_FILE_NAME, &in, &out);
     gset_hlhsr_mode(WS, mode);
     gactivate_ws(WS);
-    Glimit win = { 0.0f, 1.0f, 0.0f, 1.0f }, vp = { 0.0f, (real)size, 0.0f, (real)size };
+    /* vector types: a side of size x 0.2 mm (their nominal unit in the place of a pixel) */
+    real side = ws_type == GWS_TYPE_PNG ? (real)size : (real)size * 0.0002f;
+    Glimit win = { 0.0f, 1.0f, 0.0f, 1.0f }, vp = { 0.0f, side, 0.0f, side };
     gset_ws_win(WS, &win);
     gset_ws_vp(WS, &vp);
     /* the scientist's coordinates -> NDC3 (uniform scale 0.2) */
@@ -130,11 +135,25 @@ int main(int argc, char **argv)
 {
     int size = 480;
     const char *prefix = argc > 2 ? argv[2] : "";
+    static const char *const names[] = { "png", "pdf", "svg", "ps", "eps" };
+    static const Gint types[] = { GWS_TYPE_PNG, GWS_TYPE_PDF, GWS_TYPE_SVG, GWS_TYPE_PS,
+                                  GWS_TYPE_EPS };
+    if (argc > 3) {
+        ws_type = 0;
+        for (int t = 0; t < 5; t++)
+            if (strcmp(argv[3], names[t]) == 0)
+                ws_type = types[t];
+        if (!ws_type) {
+            fprintf(stderr, "%s: unknown workstation type %s\n", argv[0], argv[3]);
+            return 2;
+        }
+    }
     if (argc > 1) {
         char *end = NULL;
         long v = strtol(argv[1], &end, 10);
         if (*end || v < 24 || v > 2048) {
-            fprintf(stderr, "usage: %s [SIZE (24..2048) [PREFIX]]\n", argv[0]);
+            fprintf(stderr, "usage: %s [SIZE (24..2048) [PREFIX [png|pdf|svg|ps|eps]]]\n",
+                    argv[0]);
             return 2;
         }
         size = (int)v;

@@ -29,7 +29,7 @@ C     reported an error, 2 for bad arguments.
       INCLUDE 'GKS_PAR'
       INTEGER NMODES
       PARAMETER (NMODES=4)
-      INTEGER MODES(NMODES), SIZE, IOS, M, NP, NBLEN
+      INTEGER MODES(NMODES), SIZE, IOS, M, NP, NBLEN, WTYPE
       INTEGER LASTE, NERRS
       COMMON /FIGERR/ LASTE, NERRS
       CHARACTER*10 MNAMES(NMODES)
@@ -52,6 +52,21 @@ C     reported an error, 2 for bad arguments.
       IF (COMMAND_ARGUMENT_COUNT() .GE. 2) THEN
          CALL GET_COMMAND_ARGUMENT(2, PREFIX)
       END IF
+      WTYPE = GWSPNG
+      IF (COMMAND_ARGUMENT_COUNT() .GE. 3) THEN
+         CALL GET_COMMAND_ARGUMENT(3, ARG)
+         WTYPE = 0
+         IF (ARG .EQ. 'png') WTYPE = GWSPNG
+         IF (ARG .EQ. 'pdf') WTYPE = GWSPDF
+         IF (ARG .EQ. 'svg') WTYPE = GWSSVG
+         IF (ARG .EQ. 'ps') WTYPE = GWSPS
+         IF (ARG .EQ. 'eps') WTYPE = GWSEPS
+         IF (WTYPE .EQ. 0) THEN
+            WRITE (*, '(A)') 'usage: PROGRAM [SIZE [PREFIX '//
+     +         '[png|pdf|svg|ps|eps]]]'
+            STOP 2
+         END IF
+      END IF
       NP = NBLEN(PREFIX)
       IF (NP .GT. 200) THEN
          WRITE (*, '(A)') 'PREFIX too long'
@@ -60,19 +75,21 @@ C     reported an error, 2 for bad arguments.
       CALL GOPKS(6, -1)
       DO 10 M = 1, NMODES
          BASE = PREFIX(1:NP) // NAME // '_' // MNAMES(M)
-         CALL PICTUR(BASE, SIZE / 3, MODES(M), SCENE, 0)
+         CALL PICTUR(BASE, SIZE / 3, MODES(M), SCENE, 0, WTYPE)
    10 CONTINUE
       BASE = PREFIX(1:NP) // NAME
-      CALL PICTUR(BASE, SIZE, MMODE, SCENE, CLIPSR)
+      CALL PICTUR(BASE, SIZE, MMODE, SCENE, CLIPSR, WTYPE)
       CALL GCLKS
       IF (NERRS .GT. 0) STOP 1
       END
 
-      SUBROUTINE PICTUR(BASE, SIZE, MODE, SCENE, CLIPSR)
-C     One picture on workstation 1: file BASE.png, viewport SIZE x SIZE
-C     pixels, HLHSR mode MODE.
+      SUBROUTINE PICTUR(BASE, SIZE, MODE, SCENE, CLIPSR, WTYPE)
+C     One picture on workstation 1 of type WTYPE: file BASE.png,
+C     viewport SIZE x SIZE pixels (vector types: SIZE x 0.2 mm, their
+C     nominal unit in the place of a pixel), HLHSR mode MODE.
       CHARACTER*(*) BASE
-      INTEGER SIZE, MODE, SCENE, CLIPSR
+      INTEGER SIZE, MODE, SCENE, CLIPSR, WTYPE
+      REAL SIDE
       INCLUDE 'GKS_PAR'
       INTEGER WS
       PARAMETER (WS=1)
@@ -85,7 +102,7 @@ C     pixels, HLHSR mode MODE.
       DATA AMB /0.25, 0.25, 0.25/
       DATA LAMPB /0.2, 0.95, 0.85/, LAMPF /0.4, 1.3, 0.65/
       DATA ACT /2, 3/, DEACT /0/
-      CALL GOPWK(WS, 1, GWSPNG)
+      CALL GOPWK(WS, 1, WTYPE)
 C     ESCAPE set file name: IDR(1) = workstation, IDR(2...) = the name
       NB = NBLEN(BASE)
       NREC = (NB + 79) / 80
@@ -118,7 +135,9 @@ C     sets its size
       CALL GSCR(WS, 12, 0.9, 0.6, 0.15)
       CALL GSCR(WS, 13, 0.3, 0.3, 0.3)
       CALL GSWKWN(WS, 0.0, 1.0, 0.0, 1.0)
-      CALL GSWKVP(WS, 0.0, REAL(SIZE), 0.0, REAL(SIZE))
+      SIDE = REAL(SIZE)
+      IF (WTYPE .NE. GWSPNG) SIDE = REAL(SIZE) * 0.0002
+      CALL GSWKVP(WS, 0.0, SIDE, 0.0, SIDE)
       CALL VIEW(WS, SCENE)
       CALL LIGHT(WS, 2, GAMB, AMB, ORIGIN)
       IF (SCENE .EQ. 2) THEN

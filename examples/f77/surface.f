@@ -7,15 +7,17 @@ C     The data stay in the scientist's own coordinates: SET WINDOW 3
 C     and SET VIEWPORT 3 map them to NDC3, and the view's up vector is
 C     the z axis. A z-buffer preview at a third of the size comes first.
 C
-C     Usage: surface_f77 [SIZE [PREFIX]] (SIZE = viewport in pixels,
-C     24..2048, default 480); writes PREFIXsurface_zbuffer.png and
-C     PREFIXsurface.png. C twin: examples/c/surface.c (same pictures).
+C     Usage: surface_f77 [SIZE [PREFIX [TYPE]]] (SIZE = viewport in
+C     pixels, 24..2048, default 480; TYPE png (default), pdf, svg, ps or
+C     eps); writes PREFIXsurface_zbuffer.png and PREFIXsurface.png (or
+C     .pdf ...). C twin: examples/c/surface.c (same files).
       INCLUDE 'GKS_PAR'
       INTEGER N
       PARAMETER (N=32)
       REAL X(N+1), Y(N+1), Z(N+1,N+1), R2
-      INTEGER I, J, SIZE, IOS, NP, NBLEN
+      INTEGER I, J, SIZE, IOS, NP, NBLEN, WTYPE
       CHARACTER*256 ARG, PREFIX
+      COMMON /SURTYP/ WTYPE
       SIZE = 480
       PREFIX = ' '
       IF (COMMAND_ARGUMENT_COUNT() .GE. 1) THEN
@@ -32,6 +34,17 @@ C     PREFIXsurface.png. C twin: examples/c/surface.c (same pictures).
       END IF
       NP = NBLEN(PREFIX)
       IF (NP .GT. 200) STOP 2
+      WTYPE = GWSPNG
+      IF (COMMAND_ARGUMENT_COUNT() .GE. 3) THEN
+         CALL GET_COMMAND_ARGUMENT(3, ARG)
+         WTYPE = 0
+         IF (ARG .EQ. 'png') WTYPE = GWSPNG
+         IF (ARG .EQ. 'pdf') WTYPE = GWSPDF
+         IF (ARG .EQ. 'svg') WTYPE = GWSSVG
+         IF (ARG .EQ. 'ps') WTYPE = GWSPS
+         IF (ARG .EQ. 'eps') WTYPE = GWSEPS
+         IF (WTYPE .EQ. 0) STOP 2
+      END IF
 C     the data: x, y in [-2, 2]
       DO 10 I = 1, N + 1
          X(I) = -2.0 + 4.0 * REAL(I - 1) / REAL(N)
@@ -68,7 +81,9 @@ C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
       REAL WHITE(3), AMB(3), LAMP(3), ORIGIN(3), DIRN(3), ATT(2)
       REAL T, PX(4), PY(4), PZ(4), ZM
       CHARACTER*80 IDR(4), ODR(1)
-      INTEGER ERR
+      INTEGER ERR, WTYPE
+      REAL SIDE
+      COMMON /SURTYP/ WTYPE
       DATA WN /-2.5, 2.5, -2.5, 2.5, -1.5, 1.5/
       DATA VP /0.0, 1.0, 0.0, 1.0, 0.2, 0.8/
       DATA PRVP /0.0, 1.0, 0.0, 1.0, 0.0, 1.0/
@@ -77,7 +92,7 @@ C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
       DATA LAMP /0.3, 0.1, 1.4/, ORIGIN /0.0, 0.0, 0.0/
       DATA DIRN /0.0, 0.0, -1.0/, ATT /1.0, 0.0/
       DATA ACT /2, 3/, DEACT /0/
-      CALL GOPWK(WS, 1, GWSPNG)
+      CALL GOPWK(WS, 1, WTYPE)
       NB = NBLEN(BASE)
       WRITE (IDR(1), '(I10)') WS
       DO 5 J = 1, (NB + 79) / 80
@@ -87,7 +102,11 @@ C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
       CALL GSHRM(WS, MODE)
       CALL GACWK(WS)
       CALL GSWKWN(WS, 0.0, 1.0, 0.0, 1.0)
-      CALL GSWKVP(WS, 0.0, REAL(SIZE), 0.0, REAL(SIZE))
+C     vector types: a side of SIZE x 0.2 mm (their nominal unit in the
+C     place of a pixel)
+      SIDE = REAL(SIZE)
+      IF (WTYPE .NE. GWSPNG) SIDE = REAL(SIZE) * 0.0002
+      CALL GSWKVP(WS, 0.0, SIDE, 0.0, SIDE)
 C     the scientist's coordinates -> NDC3 (uniform scale 0.2)
       CALL GSW3(1, WN)
       CALL GSV3(1, VP)

@@ -122,17 +122,26 @@ static void test_inquiries(void **u)
     gopen_gks(NULL, 0);
     ginq_level_gks(&err, &level);
     assert_int_equal(err, 0);
-    Gint types[8], len;
+#ifdef GKS_HAVE_CAIRO
+    enum { N_TYPES = 10 }; /* and the vector workstations */
+#else
+    enum { N_TYPES = 6 };
+#endif
+    Gint types[16], len;
     Gint_list tl = { 0, types };
-    ginq_list_avail_ws_types(8, 0, &err, &tl, &len);
+    ginq_list_avail_ws_types(16, 0, &err, &tl, &len);
     assert_int_equal(err, 0);
-    assert_int_equal(len, 6);
-    assert_int_equal(tl.num_ints, 6);
+    assert_int_equal(len, N_TYPES);
+    assert_int_equal(tl.num_ints, N_TYPES);
     assert_int_equal(types[3], GWS_TYPE_WISS);
     assert_int_equal(types[4], GWS_TYPE_MO);
     assert_int_equal(types[5], GWS_TYPE_MI);
+#ifdef GKS_HAVE_CAIRO
+    assert_int_equal(types[6], GWS_TYPE_PDF);
+    assert_int_equal(types[9], GWS_TYPE_EPS);
+#endif
     assert_int_equal(level, GLEVEL_2A);
-    ginq_list_avail_ws_types(8, 6, &err, &tl, &len);
+    ginq_list_avail_ws_types(16, N_TYPES, &err, &tl, &len);
     assert_int_equal(err, 2002);
     Gws_st st;
     ginq_ws_st(1, &err, &st);

@@ -18,10 +18,23 @@
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
       CALL CHKI('GQLVKS level', I1, GL2A, NFAIL)
 !     available workstation types: 99, 100, 101, 3 (WISS), 2 (MO), 4 (MI)
+!     and, in a build with cairo, 110-113 (PDF, SVG, PS, EPS)
       ITYP = -7
       CALL GQEWK(0, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(0) errind', IERR, 0, NFAIL)
-      CALL CHKI('GQEWK(0) number', NUM, 6, NFAIL)
+      IF (NUM .NE. 10) CALL CHKI('GQEWK(0) number', NUM, 6, NFAIL)
+      IF (NUM .EQ. 10) THEN
+         CALL GQEWK(7, IERR, I1, ITYP)
+         CALL CHKI('GQEWK(7) PDF', ITYP, GWSPDF, NFAIL)
+         CALL GQEWK(8, IERR, I1, ITYP)
+         CALL CHKI('GQEWK(8) SVG', ITYP, GWSSVG, NFAIL)
+         CALL GQEWK(9, IERR, I1, ITYP)
+         CALL CHKI('GQEWK(9) PS', ITYP, GWSPS, NFAIL)
+         CALL GQEWK(10, IERR, I1, ITYP)
+         CALL CHKI('GQEWK(10) EPS', ITYP, GWSEPS, NFAIL)
+      END IF
+      I2 = NUM
+      ITYP = -7
       CALL CHKI('GQEWK(0) untouched', ITYP, -7, NFAIL)
       CALL GQEWK(1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(1)', ITYP, GWSNUL, NFAIL)
@@ -34,9 +47,9 @@
       CALL CHKI('GQEWK(5) MO', ITYP, GWSMO, NFAIL)
       CALL GQEWK(6, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(6) MI', ITYP, GWSMI, NFAIL)
-      CALL GQEWK(7, IERR, NUM, ITYP)
-      CALL CHKI('GQEWK(7) errind', IERR, 2002, NFAIL)
-      CALL CHKI('GQEWK(7) number', NUM, 6, NFAIL)
+      CALL GQEWK(I2 + 1, IERR, NUM, ITYP)
+      CALL CHKI('GQEWK(N+1) errind', IERR, 2002, NFAIL)
+      CALL CHKI('GQEWK(N+1) number', NUM, I2, NFAIL)
       CALL GQEWK(-1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(-1) errind', IERR, 2002, NFAIL)
 !     open workstations 7 (CONID 5) and 3, activate 3

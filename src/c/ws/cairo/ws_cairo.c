@@ -37,7 +37,7 @@
 #include "ws_driver.h"
 #include "ws_png_render.h"
 #include "ws_raytrace.h"
-#include "ws/ws_file.h"
+#include "ws_file.h"
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
 #include <cairo-svg.h>
@@ -67,6 +67,17 @@ static const Grgb vec_colours[8] = {
 
 typedef struct vec_buf { unsigned char *p; size_t n, cap; int fail; } vec_buf;
 
+/* What a frame's page needs beyond the retained records, taken at UPDATE (the
+ * workstation's viewport, colours and mode may change before the frame ends). */
+typedef struct vec_snap {
+    double w_pt, h_pt;     /* page size in points */
+    int rw, rh;            /* raster size (pixels at the resolution) */
+    double pw, ph;         /* page size in those pixels */
+    float bg[3];           /* colour 0 */
+    int mode;              /* HLHSR mode */
+    cairo_surface_t *img;  /* the raster part (z-buffer, ray tracing) or NULL */
+} vec_snap;
+
 typedef struct vec_ws {
     vec_format fmt;
     char *base;
@@ -80,8 +91,7 @@ typedef struct vec_ws {
     gks_raster_fb *fb;     /* raster picture of z-buffer / ray tracing */
     int raster_used;       /* fb or rt hold part of the frame */
     ws_rt *rt;
-    cairo_surface_t *page; /* PDF/PS: the drawn frame (recording), until the frame ends */
-    double page_w, page_h; /* its size in points */
+    vec_snap snap;         /* the frame as of its last UPDATE */
     cairo_surface_t *doc;  /* PDF/PS: the document */
     vec_buf ps;            /* PS: the document's bytes (creation date fixed at CLOSE) */
     int pages;
@@ -418,16 +428,17 @@ static int ws_matrix(const gks_ws *ws, const vec_ws *v, double m[4][4])
     return gks_xform_ws_tran3(win, vp, m);
 }
 
-/* The raster part of the frame (z-buffer, ray tracing) into the page as an image whose
- * pixels are the raster's. */
-static int draw_raster(gks_ws *ws, vec_ws *v, cairo_t *cr)
+/* The raster part of the frame (z-buffer, ray tracing) as an image; NULL + 300 on
+ * storage overflow. */
+static int raster_image(gks_ws *ws, vec_ws *v, cairo_surface_t **out)
 {
+    *out = NULL;
     double wsm[4][4];
     if (ws_rt_count(v->rt) > 0 && ws_matrix(ws, v, wsm) == 0) {
         int e = ws_rt_render(v->rt, ws, (const double (*)[4])wsm, v->fb);
         if (e)
             return e;
-        ws_rt_reset(v->rt); /* traced once: repeated updates keep the picture */
+        ws_rt_reset(v->rt); /* traced into fb once: later updates keep the picture */
     }
     gks_raster_fb *pic;
     if (ws_png_render_compose_base(v->ras, ws, v->fb, &pic))
@@ -452,49 +463,71 @@ static int draw_raster(gks_ws *ws, vec_ws *v, cairo_t *cr)
     }
     gks_free(row8);
     cairo_surface_mark_dirty(img);
-    cairo_pattern_t *pat = cairo_pattern_create_for_surface(img);
-    cairo_matrix_t m; /* user (pixels, y up) -> image (row 0 at the top) */
-    cairo_matrix_init(&m, 1, 0, 0, -1, 0, pic->height);
-    cairo_pattern_set_matrix(pat, &m);
-    cairo_pattern_set_filter(pat, CAIRO_FILTER_NEAREST);
-    cairo_set_source(cr, pat);
-    cairo_rectangle(cr, 0, 0, pic->width, pic->height);
-    cairo_fill(cr);
-    cairo_pattern_destroy(pat);
-    cairo_surface_destroy(img);
+    *out = img;
     return 0;
 }
 
-/* The frame onto a page of size w x h points (cr: user space = raster pixels, y up). */
-static int draw_frame(gks_ws *ws, vec_ws *v, cairo_t *cr, double h_pt)
+/* The frame's snapshot at UPDATE. */
+static int snap_take(gks_ws *ws, vec_ws *v)
 {
+    vec_snap *s = &v->snap;
+    cairo_surface_t *img = NULL;
+    if (v->raster_used && v->fb) {
+        int e = raster_image(ws, v, &img);
+        if (e)
+            return e;
+    }
+    if (s->img)
+        cairo_surface_destroy(s->img);
+    s->img = img;
+    double k = 72.0 / VEC_INCH_M, vw = ws->cur_vp.x_max - ws->cur_vp.x_min,
+           vh = ws->cur_vp.y_max - ws->cur_vp.y_min;
+    s->w_pt = vw * k >= 1.0 ? vw * k : 1.0;
+    s->h_pt = vh * k >= 1.0 ? vh * k : 1.0;
+    s->pw = s->w_pt * v->dpi / 72.0;
+    s->ph = s->h_pt * v->dpi / 72.0;
+    raster_size(ws, v, &s->rw, &s->rh);
+    s->bg[0] = (float)ws->colr[0].red;
+    s->bg[1] = (float)ws->colr[0].green;
+    s->bg[2] = (float)ws->colr[0].blue;
+    s->mode = ws->hlhsr_mode;
+    return 0;
+}
+
+/* The frame onto a page (snapshot and retained records); cr: a fresh context of a page of
+ * the snapshot's size. User space: raster pixels, y up. */
+static int draw_frame(vec_ws *v, cairo_t *cr)
+{
+    const vec_snap *s = &v->snap;
     double k = 72.0 / v->dpi;
-    cairo_translate(cr, 0, h_pt);
+    cairo_translate(cr, 0, s->h_pt);
     cairo_scale(cr, k, -k);
-    int rw, rh;
-    raster_size(ws, v, &rw, &rh);
-    cairo_set_source_rgb(cr, ws->colr[0].red, ws->colr[0].green, ws->colr[0].blue);
-    cairo_rectangle(cr, 0, 0, rw, rh);
+    cairo_set_source_rgb(cr, s->bg[0], s->bg[1], s->bg[2]);
+    cairo_rectangle(cr, 0, 0, s->pw, s->ph);
     cairo_fill(cr);
-    int e = 0;
-    if (v->raster_used && v->fb)
-        e = draw_raster(ws, v, cr);
+    if (s->img) {
+        /* user (pixels, y up) -> image (row 0 at the top), fitted to the page exactly
+         * (its last row and column reach beyond the page by less than a pixel: scaled by at
+         * most half a pixel over the page, so readers that snap images to their pixel grid
+         * keep it in place) */
+        int iw = cairo_image_surface_get_width(s->img);
+        int ih = cairo_image_surface_get_height(s->img);
+        cairo_pattern_t *pat = cairo_pattern_create_for_surface(s->img);
+        cairo_matrix_t m;
+        cairo_matrix_init(&m, iw / s->pw, 0, 0, -ih / s->ph, 0, ih);
+        cairo_pattern_set_matrix(pat, &m);
+        cairo_pattern_set_filter(pat, CAIRO_FILTER_NEAREST);
+        cairo_set_source(cr, pat);
+        cairo_rectangle(cr, 0, 0, s->pw, s->ph);
+        cairo_fill(cr);
+        cairo_pattern_destroy(pat);
+    }
+    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, cr);
     if (!e)
-        e = ws_png_render_walk(v->vec, ws, rw, rh, vec_item, cr);
-    if (!e)
-        e = ws_png_render_walk(v->ras, ws, rw, rh, vec_item, cr); /* its overlays */
+        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, cr); /* overlays */
     if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         e = 300;
     return e;
-}
-
-static void page_size(const gks_ws *ws, double *w, double *h)
-{
-    double k = 72.0 / VEC_INCH_M;
-    *w = (ws->cur_vp.x_max - ws->cur_vp.x_min) * k;
-    *h = (ws->cur_vp.y_max - ws->cur_vp.y_min) * k;
-    if (!(*w >= 1.0)) *w = 1.0;
-    if (!(*h >= 1.0)) *h = 1.0;
 }
 
 /* The PDF / PS document, created at its first page. */
@@ -521,33 +554,31 @@ static int doc_open(vec_ws *v, double w, double h)
     return 0;
 }
 
-/* The pending page (PDF / PS) into the document. */
+/* PDF / PS: the frame, as of its last UPDATE, as the document's next page. */
 static int page_emit(vec_ws *v)
 {
-    if (!v->page)
-        return 0;
-    int e = doc_open(v, v->page_w, v->page_h);
-    if (!e) {
-        if (v->fmt == VEC_PDF)
-            cairo_pdf_surface_set_size(v->doc, v->page_w, v->page_h);
-        else
-            cairo_ps_surface_set_size(v->doc, v->page_w, v->page_h);
-        cairo_t *cr = cairo_create(v->doc);
-        cairo_set_source_surface(cr, v->page, 0, 0);
-        cairo_paint(cr);
-        cairo_show_page(cr);
-        e = cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 303;
-        cairo_destroy(cr);
-        v->pages++;
-    }
-    cairo_surface_destroy(v->page);
-    v->page = NULL;
+    const vec_snap *s = &v->snap;
+    int e = doc_open(v, s->w_pt, s->h_pt);
+    if (e)
+        return e;
+    if (v->fmt == VEC_PDF)
+        cairo_pdf_surface_set_size(v->doc, s->w_pt, s->h_pt);
+    else
+        cairo_ps_surface_set_size(v->doc, s->w_pt, s->h_pt);
+    cairo_t *cr = cairo_create(v->doc);
+    e = draw_frame(v, cr);
+    cairo_show_page(cr);
+    if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+        e = 303;
+    cairo_destroy(cr);
+    v->pages++;
     return e;
 }
 
 /* SVG / EPS: the frame's file. */
-static int file_write(gks_ws *ws, vec_ws *v, double w, double h)
+static int file_write(vec_ws *v)
 {
+    double w = v->snap.w_pt, h = v->snap.h_pt;
     char *path = gks_ws_file_frame(v->base, v->frame, vec_ext[v->fmt]);
     if (!path)
         return 300;
@@ -563,7 +594,7 @@ static int file_write(gks_ws *ws, vec_ws *v, double w, double h)
     int e = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS ? 0 : 303;
     if (!e) {
         cairo_t *cr = cairo_create(s);
-        e = draw_frame(ws, v, cr, h);
+        e = draw_frame(v, cr);
         cairo_show_page(cr);
         cairo_destroy(cr);
         cairo_surface_finish(s);
@@ -583,29 +614,9 @@ static int vec_update(gks_ws *ws)
     vec_ws *v = ws->priv;
     if (!v->dirty && v->written_any)
         return 0;
-    double w, h;
-    page_size(ws, &w, &h);
-    int e;
-    if (v->fmt == VEC_SVG || v->fmt == VEC_EPS) {
-        e = file_write(ws, v, w, h);
-    } else {
-        cairo_rectangle_t ext = { 0, 0, w, h };
-        cairo_surface_t *rec = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, &ext);
-        cairo_t *cr = cairo_create(rec);
-        e = draw_frame(ws, v, cr, h);
-        cairo_destroy(cr);
-        if (!e && cairo_surface_status(rec) != CAIRO_STATUS_SUCCESS)
-            e = 300;
-        if (e) {
-            cairo_surface_destroy(rec);
-        } else {
-            if (v->page)
-                cairo_surface_destroy(v->page);
-            v->page = rec;
-            v->page_w = w;
-            v->page_h = h;
-        }
-    }
+    int e = snap_take(ws, v);
+    if (!e && (v->fmt == VEC_SVG || v->fmt == VEC_EPS))
+        e = file_write(v);
     if (e)
         return e;
     v->dirty = 0;
@@ -636,7 +647,8 @@ static int vec_clear(gks_ws *ws)
     vec_ws *v = ws->priv;
     int e = 0;
     if (v->frame_written) {
-        e = page_emit(v);
+        if (v->fmt == VEC_PDF || v->fmt == VEC_PS)
+            e = page_emit(v);
         v->frame++;
         v->frame_written = 0;
     }
@@ -655,7 +667,9 @@ static int vec_clear(gks_ws *ws)
 static void vec_close(gks_ws *ws)
 {
     vec_ws *v = ws->priv;
-    int e = page_emit(v);
+    int e = 0;
+    if (v->frame_written && (v->fmt == VEC_PDF || v->fmt == VEC_PS))
+        e = page_emit(v);
     if (v->doc) {
         cairo_surface_finish(v->doc);
         if (cairo_surface_status(v->doc) != CAIRO_STATUS_SUCCESS)
@@ -671,6 +685,8 @@ static void vec_close(gks_ws *ws)
         fprintf(stderr, "gks3d: workstation %d: error %d writing %s%s\n", ws->id, e, v->base,
                 vec_ext[v->fmt]);
     gks_free(v->ps.p);
+    if (v->snap.img)
+        cairo_surface_destroy(v->snap.img);
     gks_raster_fb_free(v->fb);
     ws_rt_free(v->rt);
     ws_png_render_free(v->vec);

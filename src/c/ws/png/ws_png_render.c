@@ -1,0 +1,1245 @@
+/*
+ * ws_png_render.c -- primitives of the PNG workstation through the view pipeline into the
+ * raster module, and the classic HLHSR modes (see ws_png_render.h).
+ *
+ * Every primitive becomes one record of the frame list: its DC points after clipping
+ * (fill loops, then edge pieces), counts, colour and an attribute entry (consecutive
+ * records with equal attributes share one). Primitives drawn at once are built the same
+ * way, drawn and popped again, so there is one path from gks_prim to pixels. Long
+ * polylines and marker lists are processed in chunks of CHUNK points so that drawing at
+ * once needs O(CHUNK) memory whatever the point count.
+ */
+#include "ws_png_render.h"
+#include "ws_shade.h"
+#include "gks_alloc.h"
+#include "gks_xform.h"
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { CHUNK = 4096 };
+enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL };
+enum { STYLE_HOLLOW = -1 };
+
+/* Attributes of a record (shared by consecutive records with equal values). */
+typedef struct rattr {
+    int linetype;          /* line; area: boundary of HOLLOW */
+    double width;          /* line width / marker stroke width, pixels */
+    int marker_type;
+    double marker_size;    /* pixels */
+    int style;             /* area: STYLE_HOLLOW or a gks_raster_style */
+    int hatch;
+    int edge;              /* area: edge flag */
+    int edgetype;
+    double edgewidth;
+    float edge_rgb[3];
+    size_t fl;             /* first float of the pattern / cells in the float list */
+    int nx, ny;
+    double geo[6];         /* pattern reference point, cell width, cell height vector (DC) */
+} rattr;
+
+/* One primitive of the frame. Points from pt: area: fill loops, then edge pieces; cell:
+ * o, pu, pv, then the clipped loops; line: pieces; marker: chunks of centres. Counts
+ * from cnt: n_fill loops / pieces / chunks, then n_edge edge pieces. A negative piece
+ * count marks a piece continuing the previous one (a chunk boundary inside a piece). */
+typedef struct rec {
+    unsigned char kind, overlay;
+    unsigned char outlined;  /* area: the boundary pieces were built (n_edge of them) */
+    float rgb[3];
+    float zbias;           /* edges of this area (slope-scaled) or lines */
+    double key;            /* painter sort key: mean DC depth */
+    size_t pt, cnt, attr;
+    int n_fill, n_edge;
+} rec;
+
+/* The view pipeline of one view index, valid while the inputs it was made from (view
+ * representation, workstation window and viewport) are unchanged. */
+typedef struct view_cache {
+    int valid, ok;
+    Gview_rep3 rep;
+    Glimit3 win, vp;
+    double npc[4][4];      /* NDC3 -> homogeneous NPC3 */
+    double dc[4][4];       /* NPC3 -> DC (pixels of the image, depth in [0,1]) */
+    gks_xform_clip clip;   /* view clip limits (by the indicators) and workstation window */
+} view_cache;
+
+struct png_render {
+    rec *recs;
+    size_t n_rec, cap_rec;
+    rattr *attrs;
+    size_t n_attr, cap_attr;
+    gks_raster_pt *pts;
+    size_t n_pt, cap_pt;
+    int *cnts;
+    size_t n_cnt, cap_cnt;
+    float *fl;
+    size_t n_fl, cap_fl;
+    size_t n_retained;
+    /* scratch of the clipping stage */
+    double (*h)[4], (*out)[4];
+    size_t cap_h, cap_out;
+    size_t *len, *loops;
+    size_t cap_len, cap_loops;
+    size_t *order;         /* painter: sorted record indices */
+    double *keys;
+    size_t cap_order;
+    gks_raster_fb *composed;
+    int fail;              /* result of the last GROW */
+    double px_per_dc;      /* output pixels per DC unit (1 for the PNG workstation) */
+    double px_per_unit;    /* output pixels per nominal unit (line width 1, marker size 1) */
+    int keep;              /* the primitive being built is retained whatever the mode */
+    gks_raster_fb *depth;  /* ws_png_render_walk: depth buffer of hidden-line mode */
+    gks_raster_pt *vis;    /* ws_png_render_walk: visible runs of a piece */
+    size_t cap_vis;
+    view_cache views[GKS_MAX_VIEW_IND + 1];
+};
+
+/* --- growable arrays ------------------------------------------------------------------ */
+/* p grown to at least need elements (geometric growth); on failure p is kept and
+ * *fail = 300. */
+static void *grow(void *p, size_t *cap, size_t need, size_t size, int *fail)
+{
+    *fail = 0;
+    if (need <= *cap)
+        return p;
+    size_t c = *cap ? *cap : 64;
+    while (c < need)
+        c = c > SIZE_MAX / 2 ? need : 2 * c;
+    void *q = gks_realloc_array(p, c, size);
+    if (!q) {
+        *fail = 300;
+        return p;
+    }
+    *cap = c;
+    return q;
+}
+#define GROW(r, arr, cap, need) \
+    ((r)->arr = grow((r)->arr, &(r)->cap, (need), sizeof *(r)->arr, &(r)->fail), (r)->fail)
+
+png_render *ws_png_render_new(void)
+{
+    png_render *r = gks_calloc_array(1, sizeof(png_render));
+    if (r)
+        r->px_per_dc = r->px_per_unit = 1.0;
+    return r;
+}
+
+void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit)
+{
+    if (!(px_per_dc > 0.0) || !isfinite(px_per_dc) || !(px_per_unit > 0.0) ||
+        !isfinite(px_per_unit))
+        return;
+    if (px_per_dc != r->px_per_dc)
+        for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
+            r->views[v].valid = 0;
+    r->px_per_dc = px_per_dc;
+    r->px_per_unit = px_per_unit;
+}
+
+void ws_png_render_free(png_render *r)
+{
+    if (!r)
+        return;
+    gks_free(r->recs);
+    gks_free(r->attrs);
+    gks_free(r->pts);
+    gks_free(r->cnts);
+    gks_free(r->fl);
+    gks_free(r->h);
+    gks_free(r->out);
+    gks_free(r->len);
+    gks_free(r->loops);
+    gks_free(r->order);
+    gks_free(r->keys);
+    gks_raster_fb_free(r->composed);
+    gks_raster_fb_free(r->depth);
+    gks_free(r->vis);
+    gks_free(r);
+}
+
+void ws_png_render_reset(png_render *r)
+{
+    r->n_rec = r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_retained = 0;
+    for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
+        r->views[v].valid = 0;
+}
+
+size_t ws_png_render_retained(const png_render *r)
+{
+    return r->n_retained;
+}
+
+/* --- view pipeline ---------------------------------------------------------------------- */
+/* The cached pipeline of view index vi (an index outside the table uses view 0). */
+static const view_cache *view_get(png_render *r, const gks_ws *ws, int vi)
+{
+    if (vi < 0 || vi > GKS_MAX_VIEW_IND)
+        vi = 0;
+    view_cache *c = &r->views[vi];
+    const Gview_rep3 *v = &ws->views[vi];
+    if (c->valid && memcmp(&c->rep, v, sizeof *v) == 0 &&
+        memcmp(&c->win, &ws->cur_win, sizeof c->win) == 0 &&
+        memcmp(&c->vp, &ws->cur_vp, sizeof c->vp) == 0)
+        return c;
+    c->valid = 1;
+    c->ok = 0;
+    c->rep = *v;
+    c->win = ws->cur_win;
+    c->vp = ws->cur_vp;
+    double win[6], lim[6];
+    gks_limit3_array(&ws->cur_win, win);
+    const double vp[6] = { 0, (ws->cur_vp.x_max - ws->cur_vp.x_min) * r->px_per_dc, 0,
+                           (ws->cur_vp.y_max - ws->cur_vp.y_min) * r->px_per_dc, 0, 1 };
+    if (gks_xform_ws_tran3(win, vp, c->dc))
+        return c;
+    gks_xform_multiply(v->map_matrix, v->ori_matrix, c->npc);
+    gks_limit3_array(&v->clip_limit, lim);
+    unsigned flags = (v->xy_clip == GIND_CLIP ? GKS_XFORM_CLIP_XY : 0) |
+                     (v->back_clip == GIND_CLIP ? GKS_XFORM_CLIP_BACK : 0) |
+                     (v->front_clip == GIND_CLIP ? GKS_XFORM_CLIP_FRONT : 0);
+    gks_xform_clip_init(&c->clip);
+    if (flags && gks_xform_clip_add_box(&c->clip, lim, flags))
+        return c;
+    if (gks_xform_clip_add_box(&c->clip, win, GKS_XFORM_CLIP_ALL))
+        return c;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(c->npc[i][j]))
+                return c;
+    c->ok = 1;
+    return c;
+}
+
+static void to_h(const view_cache *v, const Gpoint3 *p, double h[4])
+{
+    gks_xform_apply(v->npc, (const double[4]){ p->x, p->y, p->z, 1 }, h);
+}
+
+/* A clipped homogeneous NPC point to DC; 0 if it cannot be divided. */
+static int to_dc(const view_cache *v, const double h[4], gks_raster_pt *q)
+{
+    double c[3], d[3];
+    if (gks_xform_divide(h, c))
+        return 0;
+    gks_xform_point(v->dc, c, d);
+    *q = (gks_raster_pt){ d[0], d[1], d[2] };
+    return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]);
+}
+
+/* Is a homogeneous NPC point inside the clip region? */
+static int inside(const gks_xform_clip *c, const double h[4])
+{
+    if (!(h[3] >= c->wmin))
+        return 0;
+    for (int i = 0; i < c->n; i++)
+        if (!(c->p[i][0] * h[0] + c->p[i][1] * h[1] + c->p[i][2] * h[2] + c->p[i][3] * h[3] >=
+              0.0))
+            return 0;
+    return 1;
+}
+
+static int all_inside(const gks_xform_clip *c, const double (*h)[4], size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!inside(c, h[i]))
+            return 0;
+    return 1;
+}
+
+/* An NDC3 point through the whole pipeline without clipping (pattern geometry). */
+static int ndc_to_dc(const view_cache *v, const Gpoint3 *p, double q[3])
+{
+    double h[4];
+    to_h(v, p, h);
+    if (!(h[3] > 0.0))
+        return 0;
+    double c[3] = { h[0] / h[3], h[1] / h[3], h[2] / h[3] };
+    gks_xform_point(v->dc, c, q);
+    return isfinite(q[0]) && isfinite(q[1]) && isfinite(q[2]);
+}
+
+/* --- building records ------------------------------------------------------------------- */
+typedef struct build {
+    png_render *r;
+    const view_cache *v;
+    gks_raster_fb *fb;        /* non-NULL: draw each chunk at once, then drop it */
+    const gks_ws *ws;
+    gks_raster_stroke st;     /* stroke state across chunks drawn at once */
+} build;
+
+static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
+                     gks_raster_stroke *st);
+
+/* Appends an attribute entry unless equal to the last one; sets *idx. */
+static int attr_push(png_render *r, const rattr *a, size_t *idx)
+{
+    if (r->n_attr && memcmp(&r->attrs[r->n_attr - 1], a, sizeof *a) == 0) {
+        *idx = r->n_attr - 1;
+        return 0;
+    }
+    if (GROW(r, attrs, cap_attr, r->n_attr + 1))
+        return 300;
+    r->attrs[r->n_attr] = *a;
+    *idx = r->n_attr++;
+    return 0;
+}
+
+static int count_push(png_render *r, int c)
+{
+    if (GROW(r, cnts, cap_cnt, r->n_cnt + 1))
+        return 300;
+    r->cnts[r->n_cnt++] = c;
+    return 0;
+}
+
+/* Mode of drawing a record at once (see draw_rec). */
+enum { DRAW_PLAIN, DRAW_ZTEST, DRAW_HL_AREAS, DRAW_HL_LINES };
+
+static int immediate_mode(const gks_ws *ws)
+{
+    return ws->hlhsr_mode == GHLHSR_ZBUFFER ? DRAW_ZTEST : DRAW_PLAIN;
+}
+
+/* Polyline pieces (or marker centres) of points p[0..n-1] (closed: back to p[0]) clipped
+ * and in DC, appended to the list as counts of *rc. With b->fb, each chunk is drawn and
+ * dropped. */
+static int add_pieces(build *b, const Gpoint3 *p, size_t n, int closed, rec *rc)
+{
+    png_render *r = b->r;
+    const view_cache *v = b->v;
+    int markers = rc->kind == REC_MARKER;
+    size_t total = markers ? n : closed ? n + 1 : n; /* points walked, p[i % n] */
+    if (GROW(r, h, cap_h, CHUNK + 1) || GROW(r, out, cap_out, 2 * CHUNK + 2) ||
+        GROW(r, len, cap_len, CHUNK + 1))
+        return 300;
+    int cont = 0; /* the previous chunk's last point was inside: its piece continues */
+    for (size_t s = 0; s + (markers ? 0 : 1) < total;) {
+        size_t m = total - s;
+        if (m > CHUNK + (markers ? 0 : 1))
+            m = CHUNK + (markers ? 0 : 1);
+        for (size_t i = 0; i < m; i++)
+            to_h(v, &p[(s + i) % n], r->h[i]);
+        size_t pt0 = r->n_pt, cnt0 = r->n_cnt;
+        if (markers) {
+            if (GROW(r, pts, cap_pt, r->n_pt + m))
+                return 300;
+            size_t k = 0;
+            for (size_t i = 0; i < m; i++)
+                if (inside(&v->clip, r->h[i]) && to_dc(v, r->h[i], &r->pts[r->n_pt + k]))
+                    k++;
+            if (k) {
+                r->n_pt += k;
+                if (count_push(r, (int)k))
+                    return 300;
+                rc->n_fill++;
+            }
+            s += m;
+        } else {
+            size_t n_out = 0, n_pieces = 0;
+            int e = 0;
+            if (all_inside(&v->clip, (const double (*)[4])r->h, m)) { /* trivial accept */
+                memcpy(r->out, r->h, m * sizeof *r->out);
+                r->len[0] = n_out = m;
+                n_pieces = 1;
+            } else {
+                e = gks_xform_clip_polyline(&v->clip, m, (const double (*)[4])r->h, r->out,
+                                            r->cap_out, r->len, r->cap_len, &n_out, &n_pieces);
+            }
+            if (e == 300)
+                return 300;
+            if (e)
+                n_pieces = 0; /* non-finite: nothing of this chunk */
+            if (GROW(r, pts, cap_pt, r->n_pt + n_out))
+                return 300;
+            size_t off = 0;
+            for (size_t k = 0; k < n_pieces; k++) {
+                size_t c = 0;
+                for (size_t i = 0; i < r->len[k]; i++)
+                    if (to_dc(v, r->out[off + i], &r->pts[r->n_pt + c]))
+                        c++;
+                off += r->len[k];
+                if (c < 2)
+                    continue;
+                r->n_pt += c;
+                int first_cont = k == 0 && cont && inside(&v->clip, r->h[0]);
+                if (count_push(r, first_cont ? -(int)c : (int)c))
+                    return 300;
+                rc->n_fill++;
+            }
+            cont = e == 0 && inside(&v->clip, r->h[m - 1]);
+            s += m - 1;
+        }
+        if (b->fb && r->n_cnt > cnt0) { /* draw this chunk at once, then drop it */
+            rec t = *rc;
+            t.pt = pt0;
+            t.cnt = cnt0;
+            t.n_fill = (int)(r->n_cnt - cnt0);
+            draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
+            r->n_pt = pt0;
+            r->n_cnt = cnt0;
+            rc->n_fill = 0;
+        }
+    }
+    return 0;
+}
+
+/* The one place where the colour of an area is decided: flat shading (ws_shade.c) of the
+ * resolved fill colour by the area's properties, reflectance equation and active lights,
+ * with the formulas of the tracer's local shading (so a preview and the traced picture
+ * agree where there are no shadows or global effects). */
+static void area_colour(const gks_ws *ws, const gks_prim *prim, const view_cache *v,
+                        float rgb[3])
+{
+    (void)v;
+    ws_shade sh;
+    ws_shade_area(ws, prim, &sh);
+    Grgb c = ws_shade_apply(&sh, &prim->colour);
+    rgb[0] = (float)c.red;
+    rgb[1] = (float)c.green;
+    rgb[2] = (float)c.blue;
+}
+
+static double scale_or_one(double s)
+{
+    return isfinite(s) && s > 0.0 ? (s < 1e4 ? s : 1e4) : 1.0;
+}
+
+static int type_or_solid(int t)
+{
+    return t >= 1 && t <= 4 ? t : GKS_RASTER_LT_SOLID;
+}
+
+/* Slope-scaled depth bias of the edges of the fill loops (DC): see ws_png_render.h. */
+static float edge_bias(const gks_raster_pt *p, const int *cnt, int n_loops, double w)
+{
+    double n[3] = { 0, 0, 0 }, zmin = INFINITY, zmax = -INFINITY;
+    const gks_raster_pt *q = p;
+    for (int l = 0; l < n_loops; q += cnt[l], l++)
+        for (int i = 0; i < cnt[l]; i++) {
+            const gks_raster_pt *a = q + i, *c = q + (i + 1 == cnt[l] ? 0 : i + 1);
+            n[0] += (a->y - c->y) * (a->z + c->z);
+            n[1] += (a->z - c->z) * (a->x + c->x);
+            n[2] += (a->x - c->x) * (a->y + c->y);
+            zmin = fmin(zmin, a->z);
+            zmax = fmax(zmax, a->z);
+        }
+    double slope = (fabs(n[0]) + fabs(n[1])) / fabs(n[2]);
+    double b = slope * (0.75 + 0.5 * w), range = zmax - zmin;
+    if (!(b < range)) /* NaN (edge-on) too: the area's depth never differs by more */
+        b = range;
+    if (!(b < PNG_HL_BIAS_MAX))
+        b = PNG_HL_BIAS_MAX;
+    return (float)(PNG_HL_BIAS + b);
+}
+
+static void mean_key(const png_render *r, rec *rc, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++)
+        s += r->pts[rc->pt + i].z;
+    rc->key = n ? s / (double)n : 0.0;
+}
+
+/* Pattern of an area into the float list and a->geo; 0 if unusable (solid instead). */
+static int pattern_set(png_render *r, const view_cache *v, const gks_prim_attrs *pa, rattr *a)
+{
+    if (!pa->pattern || pa->pat_nx < 1 || pa->pat_ny < 1 ||
+        (size_t)pa->pat_nx > SIZE_MAX / 3 / (size_t)pa->pat_ny)
+        return 0;
+    Gpoint3 ref = pa->pat_ref;
+    Gpoint3 pw = { ref.x + pa->pat_width.delta_x, ref.y + pa->pat_width.delta_y,
+                   ref.z + pa->pat_width.delta_z };
+    Gpoint3 ph = { ref.x + pa->pat_height.delta_x, ref.y + pa->pat_height.delta_y,
+                   ref.z + pa->pat_height.delta_z };
+    double q0[3], q1[3], q2[3];
+    if (!ndc_to_dc(v, &ref, q0) || !ndc_to_dc(v, &pw, q1) || !ndc_to_dc(v, &ph, q2))
+        return 0;
+    double g[6] = { q0[0], q0[1], (q1[0] - q0[0]) / pa->pat_nx, (q1[1] - q0[1]) / pa->pat_nx,
+                    (q2[0] - q0[0]) / pa->pat_ny, (q2[1] - q0[1]) / pa->pat_ny };
+    double det = g[2] * g[5] - g[3] * g[4];
+    if (!isfinite(det) || fabs(det) < 1e-6)
+        return 0;
+    size_t nc = (size_t)pa->pat_nx * (size_t)pa->pat_ny;
+    if (GROW(r, fl, cap_fl, r->n_fl + 3 * nc))
+        return -1;
+    for (size_t i = 0; i < nc; i++) {
+        r->fl[r->n_fl + 3 * i] = (float)pa->pattern[i].red;
+        r->fl[r->n_fl + 3 * i + 1] = (float)pa->pattern[i].green;
+        r->fl[r->n_fl + 3 * i + 2] = (float)pa->pattern[i].blue;
+    }
+    a->fl = r->n_fl;
+    r->n_fl += 3 * nc;
+    a->nx = pa->pat_nx;
+    a->ny = pa->pat_ny;
+    memcpy(a->geo, g, sizeof g);
+    return 1;
+}
+
+/* Fill loops of an area (or a cell array's parallelogram) clipped and in DC, appended as
+ * rc's fill loops. ndc: the loops' points, n_loops loops of lc[k] points. */
+static int add_loops(build *b, const Gpoint3 *ndc, int n_loops, const int *lc,
+                     const gks_xform_clip *clip, rec *rc)
+{
+    png_render *r = b->r;
+    size_t n = 0;
+    for (int k = 0; k < n_loops; k++) {
+        if (lc[k] < 0)
+            return 0;
+        n += (size_t)lc[k];
+    }
+    if (GROW(r, h, cap_h, n) || GROW(r, loops, cap_loops, (size_t)n_loops) ||
+        GROW(r, len, cap_len, (size_t)n_loops))
+        return 300;
+    for (size_t i = 0; i < n; i++)
+        to_h(b->v, &ndc[i], r->h[i]);
+    for (int k = 0; k < n_loops; k++)
+        r->loops[k] = (size_t)lc[k];
+    if (all_inside(clip, r->h, n)) { /* trivial accept: no clipping */
+        if (GROW(r, pts, cap_pt, r->n_pt + n))
+            return 300;
+        size_t off = 0;
+        for (int k = 0; k < n_loops; off += (size_t)lc[k], k++) {
+            int c = 0;
+            for (int i = 0; i < lc[k]; i++)
+                if (to_dc(b->v, r->h[off + (size_t)i], &r->pts[r->n_pt + (size_t)c]))
+                    c++;
+            if (c < 3)
+                continue;
+            r->n_pt += (size_t)c;
+            if (count_push(r, c))
+                return 300;
+            rc->n_fill++;
+        }
+        return 0;
+    }
+    size_t need = 4 * n + 16;
+    for (int attempt = 0; attempt < 3; attempt++) {
+        if (GROW(r, out, cap_out, need))
+            return 300;
+        size_t n_out = 0;
+        int e = gks_xform_clip_polygon(clip, (size_t)n_loops, r->loops,
+                                       (const double (*)[4])r->h, r->out, r->cap_out, r->len,
+                                       &n_out);
+        if (e == 300 && n_out > r->cap_out) {
+            need = n_out;
+            continue;
+        }
+        if (e)
+            return e == 300 ? 300 : 0; /* non-finite or degenerate: nothing */
+        if (GROW(r, pts, cap_pt, r->n_pt + n_out))
+            return 300;
+        size_t off = 0;
+        for (int k = 0; k < n_loops; k++) {
+            size_t c = 0;
+            for (size_t i = 0; i < r->len[k]; i++)
+                if (to_dc(b->v, r->out[off + i], &r->pts[r->n_pt + c]))
+                    c++;
+            off += r->len[k];
+            if (c < 3 || c > INT32_MAX)
+                continue;
+            r->n_pt += c;
+            if (count_push(r, (int)c))
+                return 300;
+            rc->n_fill++;
+        }
+        return 0;
+    }
+    return 300;
+}
+
+/* Pushes the finished record; draws and pops it when it is not retained. */
+static int rec_finish(build *b, rec *rc, size_t pt0, size_t cnt0, size_t attr0, size_t fl0,
+                      int retain)
+{
+    png_render *r = b->r;
+    if (rc->n_fill + rc->n_edge == 0) {
+        r->n_pt = pt0;
+        r->n_cnt = cnt0;
+        r->n_attr = attr0;
+        r->n_fl = fl0;
+        return 0;
+    }
+    if (retain) {
+        if (GROW(r, recs, cap_rec, r->n_rec + 1))
+            return 300;
+        r->recs[r->n_rec++] = *rc;
+        r->n_retained++;
+        return 0;
+    }
+    gks_raster_stroke st = { 0 };
+    draw_rec(r, b->fb, rc, immediate_mode(b->ws), &st);
+    r->n_pt = pt0;
+    r->n_cnt = cnt0;
+    r->n_attr = attr0;
+    r->n_fl = fl0;
+    return 0;
+}
+
+static int build_area(build *b, const gks_prim *prim, int retain)
+{
+    png_render *r = b->r;
+    const gks_prim_attrs *pa = &prim->attrs;
+    size_t pt0 = r->n_pt, cnt0 = r->n_cnt, attr0 = r->n_attr, fl0 = r->n_fl;
+    rec rc = { .kind = REC_AREA, .overlay = pa->hlhsr_id != 0, .pt = pt0, .cnt = cnt0 };
+    area_colour(b->ws, prim, b->v, rc.rgb);
+    rattr a;
+    memset(&a, 0, sizeof a);
+    a.linetype = GKS_RASTER_LT_SOLID;
+    a.width = r->px_per_unit;
+    if (pa->int_style == GSTYLE_SOLID) {
+        a.style = GKS_RASTER_SOLID;
+    } else if (pa->int_style == GSTYLE_HATCH) {
+        a.style = GKS_RASTER_HATCH;
+        a.hatch = pa->style_ind <= -1 && pa->style_ind >= GKS_RASTER_HATCH_LAST ? pa->style_ind
+                                                                                : -1;
+    } else if (pa->int_style == GSTYLE_PAT) {
+        int ok = pattern_set(r, b->v, pa, &a);
+        if (ok < 0)
+            return 300;
+        a.style = ok ? GKS_RASTER_PATTERN : GKS_RASTER_SOLID;
+    } else {
+        a.style = STYLE_HOLLOW;
+    }
+    if (pa->edge_flag) {
+        a.edge = 1;
+        a.edgetype = type_or_solid(pa->edgetype);
+        a.edgewidth = scale_or_one(pa->edgewidth) * r->px_per_unit;
+        a.edge_rgb[0] = (float)pa->edge_colour.red;
+        a.edge_rgb[1] = (float)pa->edge_colour.green;
+        a.edge_rgb[2] = (float)pa->edge_colour.blue;
+    }
+    int e = attr_push(r, &a, &rc.attr);
+    if (!e && prim->n_points >= 3)
+        e = add_loops(b, prim->pts, prim->n_loops, prim->loop_counts, &b->v->clip, &rc);
+    if (e)
+        return e;
+    size_t n_fill_pts = r->n_pt - pt0;
+    double w = a.edge ? a.edgewidth : r->px_per_unit;
+    rc.zbias = rc.n_fill ? edge_bias(r->pts + pt0, r->cnts + cnt0, rc.n_fill, w)
+                         : (float)PNG_HL_BIAS;
+    /* the boundary: HOLLOW, the edge flag, and the outlines of hidden-line mode */
+    if (a.style == STYLE_HOLLOW || a.edge || b->ws->hlhsr_mode == GHLHSR_HIDDEN_LINE) {
+        int fill_loops = rc.n_fill;
+        rc.n_fill = 0;
+        size_t off = 0;
+        build eb = *b;
+        eb.fb = NULL;
+        rec er = rc;
+        er.kind = REC_LINE;
+        for (int k = 0; k < prim->n_loops && !e; k++) {
+            int c = prim->loop_counts[k];
+            if (c >= 2)
+                e = add_pieces(&eb, prim->pts + off, (size_t)c, 1, &er);
+            off += (size_t)(c > 0 ? c : 0);
+        }
+        rc.n_fill = fill_loops;
+        rc.n_edge = er.n_fill;
+        rc.outlined = 1;
+        if (e)
+            return e;
+    }
+    mean_key(r, &rc, n_fill_pts ? n_fill_pts : r->n_pt - pt0);
+    return rec_finish(b, &rc, pt0, cnt0, attr0, fl0, retain);
+}
+
+static int build_cell(build *b, const gks_prim *prim, int retain)
+{
+    png_render *r = b->r;
+    if (prim->cell_nx < 1 || prim->cell_ny < 1 || !prim->cells ||
+        (size_t)prim->cell_nx > SIZE_MAX / 3 / (size_t)prim->cell_ny)
+        return 0;
+    size_t pt0 = r->n_pt, cnt0 = r->n_cnt, attr0 = r->n_attr, fl0 = r->n_fl;
+    rec rc = { .kind = REC_CELL, .overlay = prim->attrs.hlhsr_id != 0, .pt = pt0,
+               .cnt = cnt0 };
+    /* the corners o = P, pu = R (end of the first row), pv = P + Q - R, in DC */
+    const Gpoint3 *P = &prim->cell_p, *Q = &prim->cell_q, *R = &prim->cell_r;
+    Gpoint3 V = { P->x + Q->x - R->x, P->y + Q->y - R->y, P->z + Q->z - R->z };
+    Gpoint3 par[4] = { *P, *R, *Q, V };
+    double c0[3], c1[3], c2[3];
+    if (!ndc_to_dc(b->v, P, c0) || !ndc_to_dc(b->v, R, c1) || !ndc_to_dc(b->v, Q, c2))
+        return 0;
+    /* the clip box of CELL ARRAY (NDC3): the parallelogram is clipped in NDC3 first
+     * (a convex 4-gon cut by 6 planes keeps at most 10 vertices) */
+    Gpoint3 clipped[16];
+    const Gpoint3 *loop = par;
+    int nl = 4;
+    if (prim->clip) {
+        gks_xform_clip nc;
+        gks_xform_clip_init(&nc);
+        if (gks_xform_clip_add_box(&nc, prim->clip_box, GKS_XFORM_CLIP_ALL))
+            return 0;
+        double hin[4][4], hout[16][4];
+        for (int i = 0; i < 4; i++) {
+            hin[i][0] = par[i].x; hin[i][1] = par[i].y; hin[i][2] = par[i].z; hin[i][3] = 1;
+        }
+        size_t l4 = 4, olen = 0, nout = 0;
+        if (gks_xform_clip_polygon(&nc, 1, &l4, (const double (*)[4])hin, hout, 16, &olen,
+                                   &nout) || olen < 3)
+            return 0;
+        for (size_t i = 0; i < olen; i++)
+            clipped[i] = (Gpoint3){ hout[i][0], hout[i][1], hout[i][2] };
+        loop = clipped;
+        nl = (int)olen;
+    }
+    if (GROW(r, pts, cap_pt, r->n_pt + 3))
+        return 300;
+    r->pts[r->n_pt++] = (gks_raster_pt){ c0[0], c0[1], c0[2] };
+    r->pts[r->n_pt++] = (gks_raster_pt){ c1[0], c1[1], c1[2] };
+    r->pts[r->n_pt++] = (gks_raster_pt){ c0[0] + c2[0] - c1[0], c0[1] + c2[1] - c1[1],
+                                         c0[2] + c2[2] - c1[2] };
+    size_t nc = (size_t)prim->cell_nx * (size_t)prim->cell_ny;
+    rattr a;
+    memset(&a, 0, sizeof a);
+    a.nx = prim->cell_nx;
+    a.ny = prim->cell_ny;
+    a.fl = r->n_fl;
+    if (GROW(r, fl, cap_fl, r->n_fl + 3 * nc))
+        return 300;
+    ws_shade sh;
+    ws_shade_area(b->ws, prim, &sh);
+    for (size_t i = 0; i < nc; i++) {
+        Grgb c = ws_shade_apply(&sh, &prim->cells[i]);
+        r->fl[r->n_fl + 3 * i] = (float)c.red;
+        r->fl[r->n_fl + 3 * i + 1] = (float)c.green;
+        r->fl[r->n_fl + 3 * i + 2] = (float)c.blue;
+    }
+    r->n_fl += 3 * nc;
+    int e = attr_push(r, &a, &rc.attr);
+    if (!e)
+        e = add_loops(b, loop, 1, &nl, &b->v->clip, &rc);
+    if (e)
+        return e;
+    mean_key(r, &rc, r->n_pt - pt0);
+    return rec_finish(b, &rc, pt0, cnt0, attr0, fl0, retain);
+}
+
+static int build_line(build *b, const gks_prim *prim, int retain)
+{
+    png_render *r = b->r;
+    const gks_prim_attrs *pa = &prim->attrs;
+    size_t pt0 = r->n_pt, cnt0 = r->n_cnt, attr0 = r->n_attr, fl0 = r->n_fl;
+    int marker = prim->kind == GKS_PRIM_POLYMARKER;
+    rec rc = { .kind = marker ? REC_MARKER : REC_LINE, .overlay = pa->hlhsr_id != 0,
+               .pt = pt0, .cnt = cnt0, .zbias = (float)PNG_HL_BIAS };
+    rc.rgb[0] = (float)prim->colour.red;
+    rc.rgb[1] = (float)prim->colour.green;
+    rc.rgb[2] = (float)prim->colour.blue;
+    rattr a;
+    memset(&a, 0, sizeof a);
+    a.linetype = pa->text ? GKS_RASTER_LT_SOLID : type_or_solid(pa->linetype);
+    a.width = (pa->text || marker ? 1.0 : scale_or_one(pa->linewidth)) * r->px_per_unit;
+    a.marker_type = pa->marker_type >= 1 && pa->marker_type <= 5 ? pa->marker_type : 3;
+    a.marker_size = PNG_NOMINAL_MARKER_SIZE * scale_or_one(pa->marker_size) * r->px_per_unit;
+    int e = attr_push(r, &a, &rc.attr);
+    if (e)
+        return e;
+    build lb = *b;
+    lb.fb = retain ? NULL : b->fb;
+    if (prim->n_points >= (marker ? 1 : 2))
+        e = add_pieces(&lb, prim->pts, (size_t)prim->n_points, 0, &rc);
+    if (e)
+        return e;
+    if (!retain) { /* drawn chunk by chunk */
+        r->n_attr = attr0;
+        return 0;
+    }
+    mean_key(r, &rc, r->n_pt - pt0);
+    return rec_finish(b, &rc, pt0, cnt0, attr0, fl0, 1);
+}
+
+int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
+{
+    if (!r || !ws || (!fb && !r->keep) || !prim || prim->n_points < 0 || prim->n_loops < 0 ||
+        (prim->n_points > 0 && !prim->pts))
+        return 0;
+    if (prim->kind == GKS_PRIM_FILL_AREA) {
+        if (!prim->loop_counts || prim->n_loops < 1)
+            return 0;
+        long long s = 0;
+        for (int k = 0; k < prim->n_loops; k++)
+            s += prim->loop_counts[k] > 0 ? prim->loop_counts[k] : 0;
+        if (s != prim->n_points)
+            return 0; /* inconsistent counts: nothing, never a read beyond pts */
+    }
+    const view_cache *v = view_get(r, ws, prim->view_ind);
+    if (!v->ok)
+        return 0; /* degenerate transformation: nothing visible */
+    int mode = ws->hlhsr_mode;
+    int retain = r->keep || prim->attrs.hlhsr_id != 0 || mode == GHLHSR_HIDDEN_LINE ||
+                 mode == GHLHSR_PAINTER;
+    build b = { .r = r, .v = v, .fb = fb, .ws = ws };
+    size_t n_pt = r->n_pt, n_cnt = r->n_cnt, n_attr = r->n_attr, n_fl = r->n_fl;
+    int e = 0;
+    switch (prim->kind) {
+    case GKS_PRIM_FILL_AREA:
+        e = build_area(&b, prim, retain);
+        break;
+    case GKS_PRIM_CELL_ARRAY:
+        e = build_cell(&b, prim, retain);
+        break;
+    case GKS_PRIM_POLYLINE:
+    case GKS_PRIM_POLYMARKER:
+        e = build_line(&b, prim, retain);
+        break;
+    }
+    if (e) { /* storage overflow: the list as before the primitive */
+        r->n_pt = n_pt;
+        r->n_cnt = n_cnt;
+        r->n_attr = n_attr;
+        r->n_fl = n_fl;
+    }
+    return e;
+}
+
+/* --- drawing records --------------------------------------------------------------------- */
+/* Pieces of a line record, counts cnt[0..n-1] from pts (negative = continues). */
+static void draw_pieces(gks_raster_fb *fb, const gks_raster_pt *pts, const int *cnt, int n,
+                        const gks_raster_line *la, gks_raster_stroke *st)
+{
+    size_t off = 0;
+    for (int k = 0; k < n; k++) {
+        int c = cnt[k] < 0 ? -cnt[k] : cnt[k];
+        if (cnt[k] >= 0)
+            *st = (gks_raster_stroke){ 0 };
+        gks_raster_polyline_cont(fb, (size_t)c, pts + off, la, st);
+        off += (size_t)c;
+    }
+}
+
+/* Draws a record. how: DRAW_PLAIN (no depth), DRAW_ZTEST (depth test; edges of areas
+ * with the slope bias), DRAW_HL_AREAS (areas into the depth buffer only, nothing else),
+ * DRAW_HL_LINES (everything but area interiors, depth-tested; areas as outlines). */
+static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
+                     gks_raster_stroke *st)
+{
+    const rattr *a = &r->attrs[rc->attr];
+    const gks_raster_pt *pts = r->pts + rc->pt;
+    const int *cnt = r->cnts + rc->cnt;
+    gks_raster_zmode zm = how == DRAW_PLAIN ? GKS_RASTER_Z_NONE
+                          : how == DRAW_HL_AREAS ? GKS_RASTER_Z_ONLY : GKS_RASTER_Z_TEST;
+    gks_raster_line la = { .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] }, .width = a->width,
+                           .type = a->linetype, .zmode = zm,
+                           .zbias = how == DRAW_HL_LINES ? rc->zbias : 0.0f };
+    if (rc->kind == REC_LINE) {
+        if (how != DRAW_HL_AREAS)
+            draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
+        return;
+    }
+    if (rc->kind == REC_MARKER) {
+        if (how == DRAW_HL_AREAS)
+            return;
+        size_t off = 0;
+        for (int k = 0; k < rc->n_fill; k++) {
+            gks_raster_markers(fb, (size_t)cnt[k], pts + off, a->marker_type, a->marker_size,
+                               &la);
+            off += (size_t)cnt[k];
+        }
+        return;
+    }
+    if (rc->kind == REC_CELL) {
+        if (how == DRAW_HL_AREAS)
+            return;
+        gks_raster_fill f = { .zmode = zm };
+        gks_raster_cell_array_clipped(fb, &pts[0], &pts[1], &pts[2], a->nx, a->ny,
+                                      r->fl + a->fl, &f, rc->n_fill, cnt, pts + 3);
+        return;
+    }
+    /* area: interior, then boundary (HOLLOW) and edges */
+    size_t n_fill_pts = 0;
+    for (int k = 0; k < rc->n_fill; k++)
+        n_fill_pts += (size_t)cnt[k];
+    int outline = how == DRAW_HL_LINES;
+    if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS)) {
+        gks_raster_fill f = { .style = a->style == STYLE_HOLLOW ? GKS_RASTER_SOLID
+                                                                : (gks_raster_style)a->style,
+                              .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] },
+                              .hatch = a->hatch, .zmode = zm };
+        if (how == DRAW_HL_AREAS)
+            f.style = GKS_RASTER_SOLID;
+        if (f.style == GKS_RASTER_PATTERN) {
+            f.pat_nx = a->nx;
+            f.pat_ny = a->ny;
+            f.pat_rgb = r->fl + a->fl;
+            memcpy(f.pat_ref, a->geo, 2 * sizeof(double));
+            memcpy(f.pat_u, a->geo + 2, 2 * sizeof(double));
+            memcpy(f.pat_v, a->geo + 4, 2 * sizeof(double));
+        }
+        gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f);
+    }
+    if (how == DRAW_HL_AREAS)
+        return;
+    if (!rc->outlined && outline) { /* retained before the mode became hidden line: */
+        const gks_raster_pt *q = pts;    /* the clipped loops as outlines */
+        la.zbias = rc->zbias;
+        for (int k = 0; k < rc->n_fill; q += cnt[k], k++) {
+            gks_raster_stroke ls = { 0 };
+            gks_raster_pt close[2] = { q[cnt[k] - 1], q[0] };
+            gks_raster_polyline_cont(fb, (size_t)cnt[k], q, &la, &ls);
+            gks_raster_polyline_cont(fb, 2, close, &la, &ls);
+        }
+        return;
+    }
+    if (rc->n_edge == 0)
+        return;
+    la.zbias = zm == GKS_RASTER_Z_NONE ? 0.0f : rc->zbias;
+    if (a->edge) {
+        la.rgb[0] = a->edge_rgb[0];
+        la.rgb[1] = a->edge_rgb[1];
+        la.rgb[2] = a->edge_rgb[2];
+        la.type = a->edgetype;
+        la.width = a->edgewidth;
+    } else if (a->style != STYLE_HOLLOW && !outline) {
+        return; /* outlines were built for another mode */
+    }
+    gks_raster_stroke es = { 0 };
+    draw_pieces(fb, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, &la, &es);
+}
+
+typedef struct key_idx { double key; size_t idx; } key_idx;
+
+static int cmp_key(const void *pa, const void *pb)
+{
+    const key_idx *a = pa, *b = pb;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+                   int overlays);
+
+int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+                          gks_raster_fb **out)
+{
+    return compose(r, ws, fb, out, 1);
+}
+
+int ws_png_render_compose_base(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+                               gks_raster_fb **out)
+{
+    return compose(r, ws, fb, out, 0);
+}
+
+static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+                   int overlays)
+{
+    *out = fb;
+    if (r->n_rec == 0)
+        return 0;
+    gks_raster_fb *c = r->composed;
+    if (!c || c->width != fb->width || c->height != fb->height || c->ss != fb->ss) {
+        gks_raster_fb_free(c);
+        c = r->composed = gks_raster_fb_create(fb->width, fb->height, fb->ss);
+        if (!c) {
+            *out = NULL;
+            return 300;
+        }
+    }
+    size_t ns = (size_t)fb->w * (size_t)fb->h;
+    memcpy(c->rgb, fb->rgb, 3 * ns * sizeof *c->rgb);
+    memcpy(c->z, fb->z, ns * sizeof *c->z);
+    int mode = ws->hlhsr_mode;
+    size_t n = 0;
+    key_idx *ki = NULL;
+    if (mode == GHLHSR_PAINTER) {
+        ki = gks_alloc_array(r->n_rec, sizeof *ki);
+        if (!ki) {
+            *out = NULL;
+            return 300;
+        }
+        for (size_t i = 0; i < r->n_rec; i++)
+            if (!r->recs[i].overlay)
+                ki[n++] = (key_idx){ isfinite(r->recs[i].key) ? r->recs[i].key : 0.0, i };
+        qsort(ki, n, sizeof *ki, cmp_key);
+        for (size_t i = 0; i < n; i++) {
+            gks_raster_stroke st = { 0 };
+            draw_rec(r, c, &r->recs[ki[i].idx], DRAW_PLAIN, &st);
+        }
+        gks_free(ki);
+    } else if (mode == GHLHSR_HIDDEN_LINE) {
+        for (int pass = 0; pass < 2; pass++)
+            for (size_t i = 0; i < r->n_rec; i++) {
+                gks_raster_stroke st = { 0 };
+                if (!r->recs[i].overlay)
+                    draw_rec(r, c, &r->recs[i], pass ? DRAW_HL_LINES : DRAW_HL_AREAS, &st);
+            }
+    } else { /* retained under another mode, the mode changed within the frame */
+        for (size_t i = 0; i < r->n_rec; i++) {
+            gks_raster_stroke st = { 0 };
+            if (!r->recs[i].overlay)
+                draw_rec(r, c, &r->recs[i], immediate_mode(ws), &st);
+        }
+    }
+    for (size_t i = 0; i < r->n_rec && overlays; i++) {
+        gks_raster_stroke st = { 0 };
+        if (r->recs[i].overlay)
+            draw_rec(r, c, &r->recs[i], DRAW_PLAIN, &st);
+    }
+    *out = c;
+    return 0;
+}
+
+int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim)
+{
+    if (!r)
+        return 0;
+    r->keep = 1;
+    int e = ws_png_render_prim(r, ws, NULL, prim);
+    r->keep = 0;
+    return e;
+}
+
+/* --- the frame's records for vector back ends (ws_png_render_walk) ----------------------- */
+typedef struct walk {
+    png_render *r;
+    ws_render_emit emit;
+    void *ctx;
+    const gks_raster_fb *depth; /* hidden-line mode: visibility of lines, else NULL */
+} walk;
+
+/* Is DC point (x, y, z) in front of the depth buffer (the raster's Z_TEST rule)? Outside
+ * the buffer nothing hides it. */
+static int visible(const gks_raster_fb *d, double x, double y, double z, float bias)
+{
+    double fx = floor(x), fy = floor(y);
+    if (!(fx >= 0.0 && fy >= 0.0 && fx < d->w && fy < d->h))
+        return 1;
+    return z + bias >= d->z[(size_t)fy * (size_t)d->w + (size_t)fx];
+}
+
+static int emit_run(walk *w, ws_render_item *it, size_t n)
+{
+    if (n < 2)
+        return 0;
+    int c = (int)n;
+    it->n_loops = 1;
+    it->counts = &c;
+    it->pts = w->r->vis;
+    return w->emit(w->ctx, it);
+}
+
+/* A polyline piece pts[0..n-1] (closed: back to pts[0]) as its visible runs: every segment
+ * is sampled at most half a pixel apart against the depth buffer; a run starts or ends
+ * where the samples change. */
+static int emit_visible(walk *w, ws_render_item *it, const gks_raster_pt *pts, size_t n,
+                        int closed, float bias)
+{
+    png_render *r = w->r;
+    size_t run = 0; /* points of the open run in r->vis */
+    size_t nseg = closed ? n : n - 1;
+    for (size_t s = 0; s < nseg; s++) {
+        const gks_raster_pt *a = &pts[s], *b = &pts[(s + 1) % n];
+        double len = hypot(b->x - a->x, b->y - a->y);
+        double steps = ceil(2.0 * len);
+        size_t k_n = steps >= 1.0 && steps < 1e7 ? (size_t)steps : 1;
+        for (size_t k = 0; k < k_n; k++) {
+            double t = (k + 0.5) / (double)k_n;
+            int v = visible(w->depth, a->x + t * (b->x - a->x), a->y + t * (b->y - a->y),
+                            a->z + t * (b->z - a->z), bias);
+            if (v == (run > 0))
+                continue;
+            double t0 = (double)k / (double)k_n;
+            gks_raster_pt q = { a->x + t0 * (b->x - a->x), a->y + t0 * (b->y - a->y),
+                                a->z + t0 * (b->z - a->z) };
+            if (GROW(r, vis, cap_vis, run + 1))
+                return 300;
+            r->vis[run++] = q;
+            if (!v) {
+                int e = emit_run(w, it, run);
+                run = 0;
+                if (e)
+                    return e;
+            }
+        }
+        if (run) {
+            if (GROW(r, vis, cap_vis, run + 1))
+                return 300;
+            r->vis[run++] = *b;
+        }
+    }
+    return emit_run(w, it, run);
+}
+
+/* Line pieces cnt[0..n-1] from pts (negative count: continues the previous piece) as one
+ * item, or with a depth buffer as their visible runs. */
+static int emit_pieces(walk *w, ws_render_item *it, const gks_raster_pt *pts, const int *cnt,
+                       int n, float bias)
+{
+    if (n <= 0)
+        return 0;
+    if (!w->depth) {
+        it->n_loops = n;
+        it->counts = cnt;
+        it->pts = pts;
+        return w->emit(w->ctx, it);
+    }
+    size_t off = 0;
+    for (int k = 0; k < n; k++) {
+        size_t c = (size_t)(cnt[k] < 0 ? -cnt[k] : cnt[k]);
+        int e = emit_visible(w, it, pts + off, c, 0, bias);
+        if (e)
+            return e;
+        off += c;
+    }
+    return 0;
+}
+
+static void line_item(ws_render_item *it, const png_render *r, const float rgb[3], int type,
+                      double width)
+{
+    memset(it, 0, sizeof *it);
+    it->kind = WS_ITEM_LINE;
+    memcpy(it->rgb, rgb, sizeof it->rgb);
+    it->linetype = type;
+    it->width = width;
+    it->unit = r->px_per_unit;
+}
+
+/* One record as items, in the order and with the choices of draw_rec; hl: the lines pass
+ * of hidden-line mode (w->depth set). */
+static int emit_rec(walk *w, const rec *rc, int hl)
+{
+    png_render *r = w->r;
+    const rattr *a = &r->attrs[rc->attr];
+    const gks_raster_pt *pts = r->pts + rc->pt;
+    const int *cnt = r->cnts + rc->cnt;
+    const gks_raster_fb *depth = w->depth;
+    if (!hl)
+        w->depth = NULL;
+    ws_render_item it;
+    int e = 0;
+    line_item(&it, r, rc->rgb, a->linetype, a->width);
+    if (rc->kind == REC_LINE) {
+        e = emit_pieces(w, &it, pts, cnt, rc->n_fill, rc->zbias);
+    } else if (rc->kind == REC_MARKER) {
+        it.kind = WS_ITEM_MARKERS;
+        it.marker_type = a->marker_type;
+        it.marker_size = a->marker_size;
+        size_t off = 0;
+        for (int k = 0; k < rc->n_fill && !e; off += (size_t)cnt[k], k++) {
+            const gks_raster_pt *p = pts + off;
+            size_t m = (size_t)cnt[k];
+            if (w->depth) { /* a marker is visible when its centre is */
+                if (GROW(r, vis, cap_vis, m)) {
+                    e = 300;
+                    break;
+                }
+                size_t j = 0;
+                for (size_t i = 0; i < m; i++)
+                    if (visible(w->depth, p[i].x, p[i].y, p[i].z, (float)PNG_HL_BIAS))
+                        r->vis[j++] = p[i];
+                p = r->vis;
+                m = j;
+            }
+            if (m == 0)
+                continue;
+            int c = (int)m;
+            it.n_loops = 1;
+            it.counts = &c;
+            it.pts = p;
+            e = w->emit(w->ctx, &it);
+        }
+    } else if (rc->kind == REC_CELL) {
+        memset(&it, 0, sizeof it);
+        it.kind = WS_ITEM_CELLS;
+        it.unit = r->px_per_unit;
+        it.cell_o = pts[0];
+        it.cell_u = pts[1];
+        it.cell_v = pts[2];
+        it.nx = a->nx;
+        it.ny = a->ny;
+        it.rgb_list = r->fl + a->fl;
+        it.n_loops = rc->n_fill;
+        it.counts = cnt;
+        it.pts = pts + 3;
+        e = w->emit(w->ctx, &it);
+    } else {
+        size_t n_fill_pts = 0;
+        for (int k = 0; k < rc->n_fill; k++)
+            n_fill_pts += (size_t)cnt[k];
+        if (rc->n_fill && !hl && a->style != STYLE_HOLLOW) {
+            memset(&it, 0, sizeof it);
+            it.kind = WS_ITEM_AREA;
+            memcpy(it.rgb, rc->rgb, sizeof it.rgb);
+            it.unit = r->px_per_unit;
+            it.style = a->style;
+            it.hatch = a->hatch;
+            if (a->style == GKS_RASTER_PATTERN) {
+                it.nx = a->nx;
+                it.ny = a->ny;
+                it.rgb_list = r->fl + a->fl;
+                memcpy(it.pat_geo, a->geo, sizeof it.pat_geo);
+            }
+            it.n_loops = rc->n_fill;
+            it.counts = cnt;
+            it.pts = pts;
+            e = w->emit(w->ctx, &it);
+        }
+        line_item(&it, r, rc->rgb, a->linetype, a->width);
+        if (e) {
+        } else if (!rc->outlined && hl) { /* retained before the mode became hidden line */
+            const gks_raster_pt *q = pts;
+            for (int k = 0; k < rc->n_fill && !e; q += cnt[k], k++)
+                e = emit_visible(w, &it, q, (size_t)cnt[k], 1, rc->zbias);
+        } else if (rc->n_edge > 0 && (a->edge || a->style == STYLE_HOLLOW || hl)) {
+            if (a->edge) {
+                memcpy(it.rgb, a->edge_rgb, sizeof it.rgb);
+                it.linetype = a->edgetype;
+                it.width = a->edgewidth;
+            }
+            e = emit_pieces(w, &it, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, rc->zbias);
+        }
+    }
+    w->depth = depth;
+    return e;
+}
+
+int ws_png_render_walk(png_render *r, int mode, int width, int height, ws_render_emit emit,
+                       void *ctx)
+{
+    if (r->n_rec == 0)
+        return 0;
+    walk w = { .r = r, .emit = emit, .ctx = ctx };
+    int e = 0;
+    if (mode == GHLHSR_PAINTER) {
+        key_idx *ki = gks_alloc_array(r->n_rec, sizeof *ki);
+        if (!ki)
+            return 300;
+        size_t n = 0;
+        for (size_t i = 0; i < r->n_rec; i++)
+            if (!r->recs[i].overlay)
+                ki[n++] = (key_idx){ isfinite(r->recs[i].key) ? r->recs[i].key : 0.0, i };
+        qsort(ki, n, sizeof *ki, cmp_key);
+        for (size_t i = 0; i < n && !e; i++)
+            e = emit_rec(&w, &r->recs[ki[i].idx], 0);
+        gks_free(ki);
+    } else if (mode == GHLHSR_HIDDEN_LINE) {
+        gks_raster_fb *d = r->depth;
+        if (!d || d->width != width || d->height != height) {
+            gks_raster_fb_free(d);
+            d = r->depth = gks_raster_fb_create(width, height, 1);
+            if (!d)
+                return 300;
+        }
+        gks_raster_fb_clear(d, NULL);
+        for (size_t i = 0; i < r->n_rec; i++) {
+            gks_raster_stroke st = { 0 };
+            if (!r->recs[i].overlay)
+                draw_rec(r, d, &r->recs[i], DRAW_HL_AREAS, &st);
+        }
+        w.depth = d;
+        for (size_t i = 0; i < r->n_rec && !e; i++)
+            if (!r->recs[i].overlay)
+                e = emit_rec(&w, &r->recs[i], 1);
+        w.depth = NULL;
+    } else {
+        for (size_t i = 0; i < r->n_rec && !e; i++)
+            if (!r->recs[i].overlay)
+                e = emit_rec(&w, &r->recs[i], 0);
+    }
+    for (size_t i = 0; i < r->n_rec && !e; i++)
+        if (r->recs[i].overlay)
+            e = emit_rec(&w, &r->recs[i], 0);
+    return e;
+}
