@@ -14,7 +14,7 @@
 #include "gks_indev.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
-#include "gks_seg.h"
+#include "gks_seg_store.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
 #include <errno.h>
