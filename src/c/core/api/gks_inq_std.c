@@ -7,7 +7,7 @@
  * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
  * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
  */
-#include "core/gks_store.h"
+#include "gks_store.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_state.h"
