@@ -135,6 +135,11 @@ struct gks_ws_driver {
     int (*message)(gks_ws *ws, const char *msg);
     /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
     int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
+    /* Pixel readback (INQUIRE PIXEL ...): the picture as it would be written now, nx x ny
+     * pixels from image pixel (x0, y0) (DC relative to the viewport origin, y up), row by
+     * row upward, each 0xRRGGBB (8 bits per component) or -1 outside the image. Returns 0
+     * or 300. NULL: the type has no pixel store readback (error 40). */
+    int (*read_pixels)(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb);
 };
 
 /* The compiled-in drivers. */
