@@ -139,6 +139,11 @@ struct gks_ws_driver {
     int (*message)(gks_ws *ws, const char *msg);
     /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
     int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
+    /* Pixel readback (INQUIRE PIXEL ...): the picture as it would be written now, nx x ny
+     * pixels from image pixel (x0, y0) (DC relative to the viewport origin, y up), row by
+     * row upward, each 0xRRGGBB (8 bits per component) or -1 outside the image. Returns 0
+     * or 300. NULL: the type has no pixel store readback (error 40). */
+    int (*read_pixels)(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb);
     /* Interactive input devices: waits at most timeout seconds (0: poll) for a raw event
      * of the physical devices, given the logical devices taking input now (to map the
      * mouse and keys to them and to draw prompts and echoes). Returns 1 with *ev filled
