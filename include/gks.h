@@ -986,6 +986,23 @@ typedef struct {
     Gint init_view_ind; Gstroke3 init_stroke; Gint in_buf_size;
 } Gstroke_st3;
 typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gpoint3 loc_pos; } Gdef_loc3;
+/* The other classes' 3-D device states and default data: as the 2-D ones with an echo
+ * volume (DC3) instead of the echo area. */
+#define GKS_IN_DEV_ST3_ \
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data
+typedef struct { GKS_IN_DEV_ST3_; Gfloat init_value, low_value, high_value; } Gval_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gint init_choice; } Gchoice_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gpick init_pick; } Gpick_st3;
+typedef struct {
+    GKS_IN_DEV_ST3_;
+    char *init_string; size_t init_string_size;
+    Gint in_buf_size, init_cur_pos;
+} Gstring_st3;
+#undef GKS_IN_DEV_ST3_
+typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; } Gdef_in3;
+typedef struct { Gdef_in3 dev; Gfloat value, low_value, high_value; } Gdef_val3;
+typedef struct { Gdef_in3 dev; Gint max_choices; } Gdef_choice3;
+typedef struct { Gdef_in3 dev; Gint max_buf_size, buf_size; } Gdef_string3;
 typedef struct {
     Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gint max_buf_size, buf_size;
 } Gdef_stroke3;
@@ -1020,6 +1037,18 @@ GKS_API void ginit_loc3(Gint ws_id, Gint loc_num, Gint init_view_ind, const Gloc
 GKS_API void ginit_stroke3(Gint ws_id, Gint stroke_num, Gint init_view_ind,
                            const Gstroke3 *init_stroke, Gint pet, const Glimit3 *echo_vol,
                            Gint in_buf_size, const Gin_data *stroke_data);
+GKS_API void ginit_val3(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *echo_vol, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data);
+GKS_API void ginit_choice3(Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, const Glimit3 *echo_vol,
+                           const Gin_data *choice_data);
+GKS_API void ginit_pick3(Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, const Glimit3 *echo_vol,
+                         const Gin_data *pick_data);
+GKS_API void ginit_string3(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                           const Glimit3 *echo_vol, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data);
 /* SET LOCATOR / ... / STRING MODE: SAMPLE and EVENT start from the initial value.
  * Errors: 7, 20, 25, 38, 140, 2000. */
 GKS_API void gset_loc_mode(Gint ws_id, Gint loc_num, Gop_mode op_mode, Gecho_switch echo_switch);
@@ -1083,6 +1112,17 @@ GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *
 GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def);
 GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
                                    Gdef_stroke3 *def);
+GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st);
+GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st);
+GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                           Gpick_st3 *st);
+GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st);
+GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def);
+GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                   Gdef_choice3 *def);
+GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def);
+GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
+                                   Gdef_string3 *def);
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st);
 GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                             Gstroke_st *st);

@@ -287,6 +287,14 @@ static void c_GTCH(void) { Gin_status s; Gint c; gget_choice(&s, &c); }
 static void c_GTPK(void) { Gin_status s; Gpick p; gget_pick(&s, &p); }
 static void c_GTST(void) { char b[16]; gget_string(b); }
 static const Glimit3 evol = { 0, 100, 0, 100, 0, 1 };
+static void c_INVL3(void) { ginit_val3(1, 1, 0.5, 1, &evol, 0, 1, NULL); }
+static void c_INCH3(void) { ginit_choice3(1, 1, GIN_STATUS_OK, 1, 1, &evol, NULL); }
+static void c_INPK3(void)
+{
+    Gpick p = { 1, 1 };
+    ginit_pick3(1, 1, GIN_STATUS_OK, &p, 1, &evol, NULL);
+}
+static void c_INST3(void) { ginit_string3(1, 1, "ab", 1, &evol, 10, 1, NULL); }
 static void c_INLC3(void)
 {
     Gloc3 l = { 0, { 0.5, 0.5, 0.5 } };

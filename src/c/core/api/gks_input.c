@@ -108,6 +108,9 @@ static int echo_error(const gks_ws *ws, const Glimit3 *e)
     return 0;
 }
 
+/* An invalid echo volume (51) for a NULL argument. */
+static const Glimit3 bad_vol = { 1, 0, 1, 0, 0, 0 };
+
 static Glimit3 echo_vol2(const Glimit *e)
 {
     return e ? (Glimit3){ e->x_min, e->x_max, e->y_min, e->y_max, 0, 1 }
@@ -251,38 +254,53 @@ GKS_API void ginit_stroke3(Gint ws_id, Gint stroke_num, Gint init_view_ind,
                 s.points, NULL, pet, echo_vol, in_buf_size, stroke_data);
 }
 
-GKS_API void ginit_val(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
-                       const Glimit *echo_area, Gfloat low_value, Gfloat high_value,
-                       const Gin_data *val_data)
+static void do_init_val(int fct, Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *evp, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data)
 {
     gks_ws *ws;
-    gks_indev *d = input_entry(GFN_INVL, ws_id, GIN_VAL, val_num, &ws);
+    gks_indev *d = input_entry(fct, ws_id, GIN_VAL, val_num, &ws);
     if (!d)
         return;
-    Glimit3 ev = echo_vol2(echo_area);
+    Glimit3 ev = evp ? *evp : echo_vol2(NULL);
     int e = init_common(ws, GIN_VAL, pet, &ev, val_data);
     if (!e && !(low_value < high_value))
         e = 146;
     if (!e && !(init_value >= low_value && init_value <= high_value))
         e = 152;
     if (e)
-        GKS_FAIL(e, GFN_INVL);
+        GKS_FAIL(e, fct);
     gks_in_val v = { .status = GIN_STATUS_OK, .val = init_value };
     if (init_store(d, pet, &ev, val_data, &v))
-        GKS_FAIL(300, GFN_INVL);
+        GKS_FAIL(300, fct);
     d->low = low_value;
     d->high = high_value;
 }
 
-GKS_API void ginit_choice(Gint ws_id, Gint choice_num, Gin_status init_status,
-                          Gint init_choice, Gint pet, const Glimit *echo_area,
-                          const Gin_data *choice_data)
+GKS_API void ginit_val(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                       const Glimit *echo_area, Gfloat low_value, Gfloat high_value,
+                       const Gin_data *val_data)
+{
+    Glimit3 ev = echo_vol2(echo_area);
+    do_init_val(GFN_INVL, ws_id, val_num, init_value, pet, &ev, low_value, high_value,
+                val_data);
+}
+
+GKS_API void ginit_val3(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *echo_vol, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data)
+{
+    do_init_val(GFN_INVL3, ws_id, val_num, init_value, pet, echo_vol ? echo_vol : &bad_vol,
+                low_value, high_value, val_data);
+}
+
+static void do_init_choice(int fct, Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, Glimit3 ev, const Gin_data *choice_data)
 {
     gks_ws *ws;
-    gks_indev *d = input_entry(GFN_INCH, ws_id, GIN_CHOICE, choice_num, &ws);
+    gks_indev *d = input_entry(fct, ws_id, GIN_CHOICE, choice_num, &ws);
     if (!d)
         return;
-    Glimit3 ev = echo_vol2(echo_area);
     int e = init_common(ws, GIN_CHOICE, pet, &ev, choice_data);
     if (!e && (unsigned)init_status > GIN_STATUS_NO_IN)
         e = 2000;
@@ -290,42 +308,71 @@ GKS_API void ginit_choice(Gint ws_id, Gint choice_num, Gin_status init_status,
         (init_choice < 1 || init_choice > ws->in->desc->max_choices))
         e = 152;
     if (e)
-        GKS_FAIL(e, GFN_INCH);
+        GKS_FAIL(e, fct);
     gks_in_val v = { .status = init_status, .choice = init_choice };
     if (init_store(d, pet, &ev, choice_data, &v))
-        GKS_FAIL(300, GFN_INCH);
+        GKS_FAIL(300, fct);
 }
 
-GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
-                        const Gpick *init_pick, Gint pet, const Glimit *echo_area,
-                        const Gin_data *pick_data)
+GKS_API void ginit_choice(Gint ws_id, Gint choice_num, Gin_status init_status,
+                          Gint init_choice, Gint pet, const Glimit *echo_area,
+                          const Gin_data *choice_data)
+{
+    do_init_choice(GFN_INCH, ws_id, choice_num, init_status, init_choice, pet,
+                   echo_vol2(echo_area), choice_data);
+}
+
+GKS_API void ginit_choice3(Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, const Glimit3 *echo_vol,
+                           const Gin_data *choice_data)
+{
+    do_init_choice(GFN_INCH3, ws_id, choice_num, init_status, init_choice, pet,
+                   echo_vol ? *echo_vol : bad_vol, choice_data);
+}
+
+static void do_init_pick(int fct, Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, Glimit3 ev, const Gin_data *pick_data)
 {
     gks_ws *ws;
-    gks_indev *d = input_entry(GFN_INPK, ws_id, GIN_PICK, pick_num, &ws);
+    gks_indev *d = input_entry(fct, ws_id, GIN_PICK, pick_num, &ws);
     if (!d)
         return;
-    Glimit3 ev = echo_vol2(echo_area);
     int e = init_common(ws, GIN_PICK, pet, &ev, pick_data);
     if (!e && (unsigned)init_status > GIN_STATUS_NO_IN)
         e = 2000;
     if (!e && init_status == GIN_STATUS_OK && (!init_pick || init_pick->seg_name < 1))
         e = 152;
     if (e)
-        GKS_FAIL(e, GFN_INPK);
+        GKS_FAIL(e, fct);
     gks_in_val v = { .status = init_status, .pick = init_pick ? *init_pick : no_pick };
     if (init_store(d, pet, &ev, pick_data, &v))
-        GKS_FAIL(300, GFN_INPK);
+        GKS_FAIL(300, fct);
 }
 
-GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
-                          const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
-                          const Gin_data *string_data)
+GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
+                        const Gpick *init_pick, Gint pet, const Glimit *echo_area,
+                        const Gin_data *pick_data)
+{
+    do_init_pick(GFN_INPK, ws_id, pick_num, init_status, init_pick, pet, echo_vol2(echo_area),
+                 pick_data);
+}
+
+GKS_API void ginit_pick3(Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, const Glimit3 *echo_vol,
+                         const Gin_data *pick_data)
+{
+    do_init_pick(GFN_INPK3, ws_id, pick_num, init_status, init_pick, pet,
+                 echo_vol ? *echo_vol : bad_vol, pick_data);
+}
+
+static void do_init_string(int fct, Gint ws_id, Gint string_num, const char *init_string,
+                           Gint pet, Glimit3 ev, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data)
 {
     gks_ws *ws;
-    gks_indev *d = input_entry(GFN_INST, ws_id, GIN_STRING, string_num, &ws);
+    gks_indev *d = input_entry(fct, ws_id, GIN_STRING, string_num, &ws);
     if (!d)
         return;
-    Glimit3 ev = echo_vol2(echo_area);
     int e = init_common(ws, GIN_STRING, pet, &ev, string_data);
     if (!e && (in_buf_size < 1 || in_buf_size > GKS_IN_STRING_MAX))
         e = 146;
@@ -335,12 +382,28 @@ GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, 
     if (!e && (init_cur_pos < 1 || (size_t)init_cur_pos > n + 1))
         e = 152;
     if (e)
-        GKS_FAIL(e, GFN_INST);
+        GKS_FAIL(e, fct);
     gks_in_val v = { .status = GIN_STATUS_OK, .str = (char *)(init_string ? init_string : "") };
     if (init_store(d, pet, &ev, string_data, &v))
-        GKS_FAIL(300, GFN_INST);
+        GKS_FAIL(300, fct);
     d->buf_size = in_buf_size;
     d->cur_pos = init_cur_pos;
+}
+
+GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                          const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
+                          const Gin_data *string_data)
+{
+    do_init_string(GFN_INST, ws_id, string_num, init_string, pet, echo_vol2(echo_area),
+                   in_buf_size, init_cur_pos, string_data);
+}
+
+GKS_API void ginit_string3(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                           const Glimit3 *echo_vol, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data)
+{
+    do_init_string(GFN_INST3, ws_id, string_num, init_string, pet,
+                   echo_vol ? *echo_vol : bad_vol, in_buf_size, init_cur_pos, string_data);
 }
 
 /* ---- SET ... MODE ---- */
@@ -988,6 +1051,61 @@ GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_
     }
 }
 
+/* The device state 3 common part: mode, echo, pet, echo volume, record. */
+#define DEV_ST3(st, d)                                                                     \
+    do {                                                                                   \
+        (st)->op_mode = (d)->mode;                                                         \
+        (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;                    \
+        (st)->pet = (d)->pet;                                                              \
+        (st)->echo_vol = (d)->echo_vol;                                                    \
+        (st)->in_data = (d)->rec;                                                          \
+    } while (0)
+
+GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
+    if (!d || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_value = d->init.val;
+    st->low_value = d->low;
+    st->high_value = d->high;
+}
+
+GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
+    if (!d || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_status = d->init.status;
+    st->init_choice = d->init.choice;
+}
+
+GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                           Gpick_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_status = d->init.status;
+    st->init_pick = d->init.pick;
+}
+
+GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
+    if (!d || !st)
+        return;
+    Gstring_st s2 = { .init_string = st->init_string, .init_string_size = st->init_string_size };
+    ginq_string_st(ws_id, string_num, err_ind, &s2);
+    DEV_ST3(st, d);
+    st->in_buf_size = s2.in_buf_size;
+    st->init_cur_pos = s2.init_cur_pos;
+}
+#undef DEV_ST3
+
 /* Default-data inquiries: 8, 22, 23, 38, 140; fills the common part. */
 static int inq_default(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in *def,
                        gks_indev *d)
@@ -1091,6 +1209,57 @@ GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
     gks_indev d;
     if (!inq_default(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d) &&
         def) {
+        def->max_buf_size = GKS_IN_STRING_MAX;
+        def->buf_size = d.buf_size;
+    }
+}
+
+/* The 3-D default data: the 2-D inquiry plus the echo volume. */
+static void def3(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in3 *def,
+                 gks_indev *d)
+{
+    Gdef_in dv = { 0 };
+    if (def)
+        dv.pets = def->pets;
+    if (inq_default(ws_type, cls, num, err_ind, &dv, d) || !def)
+        return;
+    def->pets.num_ints = dv.pets.num_ints;
+    def->echo_vol = d->echo_vol;
+    def->in_data = dv.in_data;
+}
+
+GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind) {
+        def->value = d.init.val;
+        def->low_value = d.low;
+        def->high_value = d.high;
+    }
+}
+
+GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                   Gdef_choice3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind)
+        def->max_choices = gks_driver_for_type(ws_type)->desc->in->max_choices;
+}
+
+GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
+}
+
+GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
+                                   Gdef_string3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind) {
         def->max_buf_size = GKS_IN_STRING_MAX;
         def->buf_size = d.buf_size;
     }
