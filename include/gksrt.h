@@ -41,7 +41,8 @@ enum {
     RT_ERR_NOMEM = -2,    /* allocation failed or size overflow */
     RT_ERR_STATE = -3,    /* scene not committed */
     RT_ERR_SINGULAR = -4, /* view mapping matrix singular / non-finite / display volume unusable */
-    RT_ERR_LIMIT = -5     /* implementation limit (more than RT_MAX_LIGHTS lights, > INT_MAX items) */
+    RT_ERR_LIMIT = -5,    /* implementation limit (more than RT_MAX_LIGHTS lights, > INT_MAX items) */
+    RT_ERR_HOOK = -6      /* a tile hook callback failed (rt_render_options.tiles) */
 };
 
 #define RT_MAX_LIGHTS 64
@@ -298,6 +299,36 @@ typedef struct rt_stats {
 
 typedef void (*rt_progress_fn)(void *user, int tiles_done, int tiles_total);
 
+/* Tile distribution (docs/MPI.md): the frame's ray grid ((w+1) x (h+1) corner rays, else
+ * w x h pixels) is cut into 16 x 16 tiles numbered row-major 0..ntiles-1, the same on every
+ * process rendering the same view. A hook decides which tiles this process traces and hands
+ * the traced ones on; tiles traced elsewhere come back through rt_frame_store. A tile's
+ * payload (opaque bytes: its rays' results before the final resolve, and its ray counters)
+ * depends only on scene, camera, options and tile index, so the picture is bit-identical
+ * for any split. next and done are called one thread at a time (under rt_render's lock);
+ * with threads == 1 every callback runs on the thread that called rt_render; begin and end
+ * always do. A callback returning an error stops all threads; rt_render returns
+ * RT_ERR_HOOK. */
+typedef struct rt_frame rt_frame;
+typedef struct rt_tile_hook {
+    void *user;
+    /* once before any tile: 0 or < 0 (error) */
+    int (*begin)(void *user, rt_frame *f, int ntiles, size_t max_tile_bytes);
+    /* next tile to trace here (>= 0); -1: none left for this process; < -1: error */
+    int (*next)(void *user);
+    /* a tile traced here and its payload: 0 or < 0 (error) */
+    int (*done)(void *user, int tile, const void *payload, size_t bytes);
+    /* after every local thread stopped: 1 the frame is complete here (resolved into rgb,
+       stats over all tiles); 0 not assembled here (rgb unspecified, stats of the tiles
+       traced here); < 0 error */
+    int (*end)(void *user, rt_frame *f);
+} rt_tile_hook;
+
+/* Stores the payload of a tile traced elsewhere into f as if traced here (its ray counters
+ * count in the frame's stats). Only from inside the hook's callbacks. RT_ERR_ARG for a bad
+ * tile, size or payload. */
+RT_API int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes);
+
 typedef struct rt_render_options {
     int samples;            /* per pixel: 1, 4, 9, 16, ... (perfect square, stratified) */
     int jitter;             /* 1: jitter within strata, deterministic per pixel and sample */
@@ -316,6 +347,7 @@ typedef struct rt_render_options {
     int progress;           /* 1: report tiles done, Mrays/s and time left on stderr */
     rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
     void *progress_user;
+    const rt_tile_hook *tiles;   /* NULL: every tile traced here (default) */
 } rt_render_options;
 
 /* Defaults (on the speed/error Pareto front of bench/speed_error): corner rays (samples 1, no
