@@ -320,7 +320,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
         gks_ws *iws = in && in->num_ints >= 1 && in->ints ? gks_ws_lookup(in->ints[0]) : NULL;
         int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0) : 182;
         if (e)
-            gks_error_report(e, GFN_ESC);
+            GKS_FAIL(e, GFN_ESC);
         return;
     }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */

@@ -24,6 +24,12 @@
 #include <math.h>
 #include <string.h>
 
+/* Reports an error as the caller's last action (the caller returns right after). */
+static void report(int e, int fctid)
+{
+    GKS_FAIL(e, fctid);
+}
+
 static const Gloc no_loc = { 0, { 0, 0 } };
 static const Gpick no_pick = { 0, 0 };
 
@@ -73,7 +79,7 @@ static gks_indev *input_entry(int fctid, Gint ws_id, Gin_class cls, Gint num, gk
     gks_ws *w = NULL;
     int e = device_error(ws_id, cls, num, &w);
     if (e) {
-        gks_error_report(e, fctid);
+        report(e, fctid);
         return NULL;
     }
     *ws = w;
@@ -232,7 +238,7 @@ static void do_init_stroke(int fct, Gint ws_id, Gint num, Gint view_ind, Gint tn
         d->buf_size = buf;
     gks_in_val_free(&v);
     if (e)
-        gks_error_report(e, fct);
+        report(e, fct);
 }
 
 GKS_API void ginit_stroke(Gint ws_id, Gint stroke_num, const Gstroke *init_stroke, Gint pet,
@@ -515,11 +521,11 @@ static int request(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
     if (!d)
         return -1;
     if (d->mode != GOP_REQ) {
-        gks_error_report(141, fct);
+        report(141, fct);
         return -1;
     }
     if (gks_in_request(ws, cls, num, v)) {
-        gks_error_report(300, fct);
+        report(300, fct);
         return -1;
     }
     return 0;
@@ -665,11 +671,11 @@ static int sample(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
     if (!d)
         return -1;
     if (d->mode != GOP_SAMPLE) {
-        gks_error_report(142, fct);
+        report(142, fct);
         return -1;
     }
     if (gks_in_sample(ws, cls, num, v)) {
-        gks_error_report(300, fct);
+        report(300, fct);
         return -1;
     }
     return 0;
@@ -806,7 +812,7 @@ GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint
     if (in_num)
         *in_num = n;
     if (e)
-        gks_error_report(e, GFN_WAIT);
+        report(e, GFN_WAIT);
 }
 
 GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num)
@@ -827,7 +833,7 @@ static const gks_in_val *get_entry(int fctid, Gin_class cls)
         return NULL;
     const gks_in_val *v = gks_in_current(cls);
     if (!v)
-        gks_error_report(150, fctid);
+        report(150, fctid);
     return v;
 }
 
