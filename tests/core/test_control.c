@@ -140,7 +140,7 @@ static void test_inquiries(void **u)
     assert_int_equal(types[6], GWS_TYPE_PDF);
     assert_int_equal(types[9], GWS_TYPE_EPS);
 #endif
-    assert_int_equal(level, GLEVEL_2A);
+    assert_int_equal(level, GLEVEL_2C);
     ginq_list_avail_ws_types(16, N_TYPES, &err, &tl, &len);
     assert_int_equal(err, 2002);
     Gws_st st;
@@ -160,7 +160,7 @@ static void test_inquiries(void **u)
     Gws_cat cat;
     ginq_ws_cat(GWS_TYPE_PNG, &err, &cat);
     assert_int_equal(err, 0);
-    assert_int_equal(cat, GCAT_OUT);
+    assert_int_equal(cat, GCAT_OUTIN);
     ginq_ws_cat(777, &err, &cat);
     assert_int_equal(err, 23);
     Gdisp_space_size ds;
