@@ -20,8 +20,6 @@ void ws_rt_free(ws_rt *r);
 void ws_rt_reset(ws_rt *r);
 /* Number of recorded tracer primitives (a clipped CELL ARRAY may record several). */
 int ws_rt_count(const ws_rt *r);
-/* Shadow/reflection/refraction rays limited to the display volume (1) or not (0). */
-void ws_rt_set_clip_secondary(ws_rt *r, int on);
 /* The render options the next picture uses (ESCAPE settings; the environment variable
  * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
 void ws_rt_options(const ws_rt *r, rt_render_options *o);

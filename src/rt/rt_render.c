@@ -88,6 +88,8 @@ typedef struct rt_job {
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
     rt_lbuf lbuf[RT_MAX_LIGHTS]; /* shadow-ray candidates per light (ok = 0: walk the grid) */
+    unsigned short *cover_out; /* NULL, or per pixel: its eye rays that hit (rt_render_cover) */
+    uint8_t *corner_hit;       /* corner mode with cover_out: per corner ray, 1 if it hit */
     int tiles_x, ntiles;
     atomic_int next;
     atomic_int done;
@@ -123,6 +125,7 @@ typedef struct rt_worker {
     rt_ctx ctx;
     rt_scache *shadow_cache; /* [depth * nlights + light] */
     rt_stats st;
+    int eye_hit;             /* the latest eye ray hit a primitive */
     int err;
 } rt_worker;
 
@@ -369,8 +372,10 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     double t;
     long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
                   : rt_trace_nearest(sc, &w->ctx, &r, &t);
-    if (depth == 1)
+    if (depth == 1) {
         w->st.eye_hits += i >= 0;
+        w->eye_hit = i >= 0;
+    }
     if (i < 0)
         return;
     const rt_prim *p = &sc->prim[i];
@@ -489,6 +494,7 @@ static void rt_eye(rt_worker *w, double px, double py, double out[3])
     const rt_job *job = w->job;
     rt_ray ray;
     w->st.eye_rays++;
+    w->eye_hit = 0;
     if (rt_camera_ray(job->cam, px, py, &ray) != RT_OK) {
         for (int c = 0; c < 3; c++)
             out[c] = job->o.background[c];
@@ -753,6 +759,7 @@ static void rt_tile(rt_worker *w, int tile)
             for (int x = x0; x < x1; x++) {
                 const int k = slot[x - x0];
                 w->st.eye_rays++;
+                w->eye_hit = 0;
                 if (k >= 0 && ok[k]) {
                     const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
                     rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
@@ -769,6 +776,10 @@ static void rt_tile(rt_worker *w, int tile)
                 }
                 for (int c = 0; c < 3; c++)
                     dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
+                if (job->corner_hit)
+                    job->corner_hit[row + (size_t)x] = (uint8_t)w->eye_hit;
+                else if (job->cover_out)
+                    job->cover_out[row + (size_t)x] = (unsigned short)w->eye_hit;
             }
         }
         return;
@@ -776,6 +787,7 @@ static void rt_tile(rt_worker *w, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double acc[3] = {0, 0, 0}, col[3];
+            int hits = 0;
             uint64_t seed = rt_mix(((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
             for (int b = 0; b < m; b++)
                 for (int a = 0; a < m; a++) {
@@ -788,7 +800,10 @@ static void rt_tile(rt_worker *w, int tile)
                     rt_eye(w, x + (a + ja) / m, y + (b + jb) / m, col);
                     for (int c = 0; c < 3; c++)
                         acc[c] += col[c];
+                    hits += w->eye_hit;
                 }
+            if (job->cover_out)
+                job->cover_out[(size_t)y * (size_t)job->gw + (size_t)x] = (unsigned short)hits;
             float *dst = job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
             for (int c = 0; c < 3; c++) {
                 double v = acc[c] / (double)(m * m);
@@ -887,6 +902,23 @@ static void rt_job_lbufs_free(rt_job *job)
 int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats)
 {
+    return rt_render_cover(sc, cam, opts, rgb, NULL, stats);
+}
+
+/* cover[y*W + x] = corner hits of corners (x,y), (x+1,y), (x,y+1), (x+1,y+1) */
+static void rt_corner_cover(const rt_job *job)
+{
+    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height, G = W + 1;
+    const uint8_t *h = job->corner_hit;
+    for (size_t y = 0; y < H; y++)
+        for (size_t x = 0; x < W; x++)
+            job->cover_out[y * W + x] = (unsigned short)(h[y * G + x] + h[y * G + x + 1] +
+                                                         h[(y + 1) * G + x] + h[(y + 1) * G + x + 1]);
+}
+
+int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+                    float *rgb, unsigned short *cover, rt_stats *stats)
+{
     if (!sc || !cam || !rgb)
         return RT_ERR_ARG;
     if (!sc->committed)
@@ -919,10 +951,16 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     job.m = m;
     job.gw = cam->width + (o->corner_rays ? 1 : 0);
     job.gh = cam->height + (o->corner_rays ? 1 : 0);
+    job.cover_out = cover;
     if (o->corner_rays) {
         job.edge = rt_alloc_array((size_t)job.gw + (size_t)job.gh - 1, 3 * sizeof(float));
-        if (!job.edge)
+        if (cover)
+            job.corner_hit = rt_alloc_array((size_t)job.gw, (size_t)job.gh);
+        if (!job.edge || (cover && !job.corner_hit)) {
+            free(job.edge);
+            free(job.corner_hit);
             return RT_ERR_NOMEM;
+        }
     }
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
         const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
@@ -971,6 +1009,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         free(w);
         free(th);
         free(job.edge);
+        free(job.corner_hit);
         free(job.cover);
         free(job.cand_off);
         free(job.cand);
@@ -991,6 +1030,8 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     pthread_mutex_destroy(&job.lock);
     if (o->corner_rays)
         rt_corner_average(&job);
+    if (job.corner_hit)
+        rt_corner_cover(&job);
     rt_stats st;
     memset(&st, 0, sizeof st);
     for (int k = 0; k < nt; k++) {
@@ -1016,6 +1057,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     free(w);
     free(th);
     free(job.edge);
+    free(job.corner_hit);
     free(job.cover);
     free(job.cand_off);
     free(job.cand);
