@@ -140,7 +140,15 @@ static void surface_of(const rt_attr *a, int side, rt_surface *s)
     s->light_mask = 0;
 }
 
-static int tracer_err(int id) { return id == RT_ERR_NOMEM || id == RT_ERR_LIMIT ? 300 : 0; }
+/* The GKS error for a tracer result: storage (RT_ERR_NOMEM, RT_ERR_LIMIT: an
+ * implementation limit on items) is 300; data the tracer cannot use (RT_ERR_SINGULAR,
+ * RT_ERR_ARG, RT_ERR_STATE) is 308, arithmetic error. */
+static int gks_err_of_rt(int rc)
+{
+    if (rc >= 0)
+        return 0;
+    return rc == RT_ERR_NOMEM || rc == RT_ERR_LIMIT ? 300 : 308;
+}
 
 static int note_surface(rt_view_rec *vr, int id, uint64_t mask)
 {
@@ -178,10 +186,8 @@ static int view_surfaces(ws_rt *r, int vi, const rt_attr *a, rt_view_rec **vrp)
         int f = rt_scene_add_surface(vr->sc, &s);
         surface_of(a, 1, &s);
         int b = rt_scene_add_surface(vr->sc, &s);
-        if (f == RT_ERR_NOMEM || b == RT_ERR_NOMEM || f == RT_ERR_LIMIT || b == RT_ERR_LIMIT)
-            return 300;
-        if (f < 0 || b < 0)
-            return 0; /* cannot happen: values checked at SET */
+        if (f < 0 || b < 0) /* values are checked at SET: only storage fails here */
+            return gks_err_of_rt(f < 0 ? f : b);
         if (note_surface(vr, f, a->light_mask) || note_surface(vr, b, a->light_mask))
             return 300;
         vr->last = *a;
@@ -208,7 +214,7 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
     }
     int id = rt_scene_add_polygon(vr->sc, n_loops, counts, xyz, vr->f, vr->b);
     if (id < 0)
-        return tracer_err(id);
+        return gks_err_of_rt(id);
     r->count++;
     return 0;
 }
@@ -246,7 +252,7 @@ static int push_cells(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, cons
     int id = rt_scene_add_cell_array(vr->sc, c[0], c[1], c[2], nx, ny, rgb, vr->f, vr->b);
     gks_free(rgb);
     if (id < 0)
-        return tracer_err(id);
+        return gks_err_of_rt(id);
     r->count++;
     return 0;
 }
@@ -498,8 +504,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
         memcpy(bo.cull, cull->plane, sizeof bo.cull);
         bo.cull_eps = 2e-9 * cull->scale;
     }
-    int rc = rt_scene_commit(sc, &bo);
-    return rc == RT_OK ? 0 : 300;
+    return gks_err_of_rt(rt_scene_commit(sc, &bo));
 }
 
 /* Display volume of view v: clip limits where on, intersected with the ws window. */
@@ -613,7 +618,7 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
         rr = rt_render_cover(sc, &cam, &o, rgb, cnt, &s);
     }
     if (rr != RT_OK) {
-        err = rr == RT_ERR_NOMEM ? 300 : 0;
+        err = gks_err_of_rt(rr);
         goto done;
     }
     stats_add(st, &s);
