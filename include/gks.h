@@ -110,8 +110,9 @@ enum {
     GWS_TYPE_WISS = 3,        /* category WISS: workstation independent segment storage */
     GWS_TYPE_MI = 4,          /* category MI: GKS metafile input; connection id = file name */
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
-    GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
-    GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
+    GWS_TYPE_PNG = 100,       /* category OUTIN, raster, 1024x1024 pixel display space;
+                                 input from scripts (docs/INPUT.md) */
+    GWS_TYPE_PNG_LARGE = 101  /* category OUTIN, raster, 8192x8192 pixel display space */
 };
 
 /* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the
@@ -197,9 +198,13 @@ enum {
     GESC_PNG_SUPERSAMPLE = -110, /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
                                     samples per pixel (box filter); applies at once while the
                                     frame is empty, else from the next CLEAR WORKSTATION */
-    GESC_PNG_COMPRESSION = -111  /* ints[1] 0: fast PNG encoding (default; zlib run-length,
+    GESC_PNG_COMPRESSION = -111, /* ints[1] 0: fast PNG encoding (default; zlib run-length,
                                     SUB filter), 1..9: zlib level with adaptive filters
                                     (9 smallest files); for every file written from then on */
+    /* Scripted input (docs/INPUT.md): ints[0] ws id of an INPUT/OUTIN workstation; str =
+     * name of a file of raw device events (device coordinates) that its logical input
+     * devices replay from now on, replacing any script (182: unreadable file). */
+    GESC_INPUT_SCRIPT = -130
 };
 
 /* ---------------------------------------------------------------------------------
@@ -713,8 +718,8 @@ GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name);
 GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix);
 GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix);
 /* ---- input priorities (ISO 7942 SET VIEWPORT INPUT PRIORITY, ISO 8805 SET VIEW
- * TRANSFORMATION INPUT PRIORITY): orderings kept for LOCATOR/STROKE input; this
- * implementation has no input devices yet, the orderings are stored and inquirable. */
+ * TRANSFORMATION INPUT PRIORITY): the orderings by which LOCATOR/STROKE positions are
+ * transformed back (see "Input" below). */
 typedef enum { GPRI_HIGHER, GPRI_LOWER } Grel_pri;
 /* SET VIEWPORT INPUT PRIORITY: tran_num directly above/below ref_tran_num. Errors: 8, 50,
  * 2000. */
@@ -750,17 +755,174 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris);
 
 /* ---------------------------------------------------------------------------------
- * Input (ISO 7942 5.9; names after ISO 8651-4, see docs/BINDING.md "Input functions").
- * No workstation type of this implementation has logical input devices (none is of
- * category INPUT or OUTIN; the GKS level is 2a): every function below performs the
- * standard's checks and ends with the first error that applies, which for an open
- * workstation is 38. Output arguments are set to "no input" before any check (status
- * GIN_STATUS_NONE, transformation 0, position (0,0), empty stroke, empty string).
- * Errors are listed per function in the order they are checked; 140 (device not
- * present) would follow 38 on an INPUT/OUTIN workstation. The argument checks the
- * standard lists after 140 (pet 144, echo area 51/145, data record 146, initial values
- * 152-154, level 143) are never reached.
+ * Further inquiries of ISO 7942 / ISO 8805 (src/c/core/api/gks_inq_std.c): current
+ * attribute sets, colour facilities, dynamic modification, pixels, GKS-3D description
+ * table entries. Types and argument lists as ISO 8651-4 (NCAR's published header);
+ * the GKS-3D forms append their entries (docs/BINDING.md).
  * --------------------------------------------------------------------------------- */
+/* Storage for inquiries whose results have a size only GKS knows (ISO 8651-4 3.9).
+ * A store is reused (and its previous contents freed) by each call it is passed to. */
+typedef struct gks_store_rec *Gstore;
+/* CREATE STORE: *store receives a new, empty store. Errors (in *err_ind): 300. */
+GKS_API void gcreate_store(Gint *err_ind, Gstore *store);
+/* DELETE STORE: frees the store and what it holds (NULL is ignored). */
+GKS_API void gdel_store(Gstore store);
+
+typedef enum { GATTR_LINE, GATTR_MARKER, GATTR_TEXT, GATTR_FILL, GATTR_EDGE } Gattrs;
+typedef enum { GINVAL_ABSENT, GINVAL_PRESENT } Gpres_inval;
+typedef enum { GDYN_IRG, GDYN_IMM } Gdyn_mod;
+typedef struct { Gint num_colrs; Gcolr_avail colr_avail; Gint num_pred_inds; } Gcolr_facs;
+/* Current primitive attributes (INQUIRE CURRENT PRIMITIVE ATTRIBUTE VALUES). */
+typedef struct {
+    Gint line_ind, marker_ind, text_ind;
+    Gdouble char_ht;
+    Gvec char_up_vec;
+    Gdouble char_width;
+    Gvec char_base_vec;
+    Gtext_path text_path;
+    Gtext_align text_align;
+    Gint fill_ind;
+    Gvec pat_width_vec, pat_ht_vec;
+    Gpoint pat_ref_point;
+} Gprim_attrs;
+/* GKS-3D: the 2-D set, then the pattern reference point and vectors in 3-D, edge index,
+ * view index and HLHSR identifier. */
+typedef struct {
+    Gprim_attrs attrs;
+    Gpoint3 pat_ref_point;
+    Gvec3 pat_ref_vecs[2];
+    Gint edge_ind, view_ind, hlhsr_id;
+} Gprim_attrs3;
+/* Current individual attributes (INQUIRE CURRENT INDIVIDUAL ATTRIBUTE VALUES). */
+typedef struct {
+    Gint linetype;
+    Gdouble linewidth;
+    Gint line_colr_ind;
+    Gint marker_type;
+    Gdouble marker_size;
+    Gint marker_colr_ind;
+    Gtext_font_prec text_font_prec;
+    Gdouble char_expan, char_space;
+    Gint text_colr_ind;
+    Gfill_int_style fill_int_style;
+    Gint fill_style_ind, fill_colr_ind;
+    Gasfs asfs;
+} Gindiv_attrs;
+typedef struct {
+    Gindiv_attrs attrs;
+    Gedge_flag edge_flag;
+    Gint edgetype;
+    Gdouble edgewidth;
+    Gint edge_colr_ind;
+    Gasfs3 asfs;
+} Gindiv_attrs3;
+/* Dynamic modification accepted for workstation attributes / segment attributes. */
+typedef struct {
+    Gdyn_mod line_bundle, marker_bundle, text_bundle, fill_bundle, pat_rep, colr_rep, ws_tran;
+} Gdyn_mod_ws_attrs;
+typedef struct {
+    Gdyn_mod_ws_attrs attrs;
+    Gdyn_mod edge_bundle, view_rep, hlhsr_mode;
+} Gdyn_mod_ws_attrs3;
+typedef struct {
+    Gdyn_mod tran, appear, disappear, highl, pri, add_prim, del;
+} Gdyn_mod_seg_attrs;
+/* 2-D segment attributes (INQUIRE SEGMENT ATTRIBUTES); the 3-D form is Gseg_attrs3. */
+typedef struct {
+    Gint seg_name;
+    Gtran_matrix tran_matrix;
+    Gseg_vis vis;
+    Gseg_highl highl;
+    Gfloat pri;
+    Gseg_det det;
+} Gseg_attrs;
+typedef struct { Glimit3 win; Glimit3 vp; } Gtran3;
+typedef struct { Gclip_ind clip_ind; Glimit3 clip_vol; } Gclip3;
+typedef struct { Gfloat size_x, size_y, size_z; } Gfloat_size3;
+typedef struct { Gint size_x, size_y, size_z; } Gint_size3;
+typedef struct { Gdc_units dc_units; Gfloat_size3 size_dc; Gint_size3 size_raster; } Gdisp_space_size3;
+typedef struct {
+    Gint line_bundles, marker_bundles, text_bundles, fill_bundles, pat_reps, colr_reps,
+         edge_bundles, view_reps;
+} Gmax_ws_st_tables3;
+
+/* Current attribute sets: error 8. */
+GKS_API void ginq_cur_prim_attrs(Gint *err_ind, Gprim_attrs *attrs);
+GKS_API void ginq_cur_prim_attrs3(Gint *err_ind, Gprim_attrs3 *attrs);
+GKS_API void ginq_cur_indiv_attrs(Gint *err_ind, Gindiv_attrs *attrs);
+GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *attrs);
+/* Pattern width and height vectors: the pattern size along the reference vectors'
+ * directions, x/y components (WC). Error 8. */
+GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *pat_width_vec);
+GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *pat_ht_vec);
+/* INQUIRE NORMALIZATION TRANSFORMATION 3 (8, 50) and CLIPPING 3 (8). */
+GKS_API void ginq_norm_tran3(Gint num, Gint *err_ind, Gtran3 *norm_tran);
+GKS_API void ginq_clip3(Gint *err_ind, Gclip3 *clip);
+/* 2-D segment attributes: the x/y rows of the segment's 3-D matrix. Errors 7, 120, 122. */
+GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs);
+/* INQUIRE LIST OF COLOUR INDICES (defined entries, ascending). Errors 7, 20, 25, 33, 35, 36. */
+GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
+                                 Gint *err_ind, Gint_list *colr_inds, Gint *length_list);
+/* Description table: 8, 22, 23, then 39 (not OUTPUT/OUTIN) for output entries; the
+ * predefined colour representation adds 93 (index < 0) and 95 (not predefined). */
+GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs);
+GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep *colr_rep);
+GKS_API void ginq_dyn_mod_ws_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs *dyn_mod);
+GKS_API void ginq_dyn_mod_ws_attrs3(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs3 *dyn_mod);
+GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_defer_mode,
+                                Girg_mode *def_irg_mode);
+GKS_API void ginq_dyn_mod_seg_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_seg_attrs *dyn_mod);
+GKS_API void ginq_disp_space_size3(Gint ws_type, Gint *err_ind, Gdisp_space_size3 *disp_size);
+GKS_API void ginq_max_ws_st_tables3(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables3 *lengths);
+/* GKS-3D view and HLHSR facilities: number of predefined views, a predefined view
+ * representation (view index < 0: 514; not predefined: 2002), HLHSR identifiers and
+ * modes (list convention; both lists share capacity and start position). */
+GKS_API void ginq_view_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_views);
+GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gview_rep3 *rep);
+GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos,
+                             Gint *err_ind, Gint_list *hlhsr_ids, Gint *length_ids,
+                             Gint_list *hlhsr_modes, Gint *length_modes);
+/* GDPs: INQUIRE GENERALIZED DRAWING PRIMITIVE (3): the attribute bundles a GDP uses
+ * (41: the type cannot generate the GDP). */
+GKS_API void ginq_list_avail_gdps3(Gint ws_type, Gint num_elems_appl_list, Gint start_pos,
+                                   Gint *err_ind, Gint_list *gdps, Gint *length_list);
+GKS_API void ginq_gdp(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[4]);
+GKS_API void ginq_gdp3(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[5]);
+/* Pixel inquiries (raster workstations that keep a frame buffer: PNG). Points are WC of
+ * the current normalization transformation, mapped through it and the workstation
+ * transformation to a pixel of the current frame as drawn so far. A pixel whose colour
+ * is no entry of the colour table (anti-aliased edges, lit ray-traced areas), or that
+ * lies outside the display surface, is the invalid colour index -1.
+ * Errors: 7, 20, 25, 39 (not OUTPUT/OUTIN), 40 (no pixel readback). */
+GKS_API void ginq_pixel_array_dims(Gint ws_id, const Grect *rect, Gint *err_ind, Gint_size *dims);
+/* Pixel array from pixel_loc (the top-left corner) dims->size_x columns by size_y rows,
+ * row-major from the top row, into pixel_array (list convention over the whole array:
+ * capacity num_elems_appl_list, 0-based start_pos; *length_list = columns * rows). */
+GKS_API void ginq_pixel_array(Gint ws_id, const Gpoint *pixel_loc, const Gint_size *dims,
+                              Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                              Gpres_inval *pres_inval, Gint_list *pixel_array,
+                              Gint *length_list);
+GKS_API void ginq_pixel(Gint ws_id, const Gpoint *pixel_loc, Gint *err_ind, Gint *colr_ind);
+
+/* ---------------------------------------------------------------------------------
+ * Input (ISO 7942 5.9, ISO 8805 LOCATOR 3 / STROKE 3; names after ISO 8651-4, see
+ * docs/INPUT.md). Input level c: REQUEST, SAMPLE and EVENT mode. The PNG workstations
+ * (category OUTIN) have 2 devices of every class, fed by input scripts (ESCAPE
+ * GESC_INPUT_SCRIPT or the environment variable GKS_INPUT_SCRIPT; events in device
+ * coordinates); an interactive workstation (X11) adds its mouse and keyboard. A REQUEST
+ * with no event that can come (script exhausted, no interactive device) returns status
+ * GIN_STATUS_NONE at once. Locator and stroke positions go back through the view
+ * transformation of highest view transformation input priority whose clip limits hold
+ * them, then through the normalization transformation of highest viewport input priority
+ * whose viewport holds them. PICK returns the visible, detectable segment of highest
+ * priority with a primitive within 0.01 NPC of the position, and that primitive's pick
+ * identifier. The input queue holds GKS_IN_QUEUE_CAPACITY events; when it is full
+ * further events are lost until it has been emptied, and the next AWAIT EVENT reports
+ * 147 once. Output arguments are set to "no input" before any check (status
+ * GIN_STATUS_NONE, transformation 0, position (0,0), empty stroke, empty string).
+ * Errors are listed per function in the order they are checked.
+ * --------------------------------------------------------------------------------- */
+#define GKS_IN_QUEUE_CAPACITY 128
 typedef enum { GOP_REQ, GOP_SAMPLE, GOP_EVENT } Gop_mode;
 typedef enum { GSWITCH_NO_ECHO, GSWITCH_ECHO } Gecho_switch;
 /* Values of the Fortran GNONE, GOK, GNPICK/GNCHOI (NCAR's C header lists OK first). */
@@ -811,10 +973,48 @@ typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_stroke;
 typedef struct { Gdef_in dev; Gfloat value, low_value, high_value; } Gdef_val;
 typedef struct { Gdef_in dev; Gint max_choices; } Gdef_choice;
 typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_string;
+/* GKS-3D: a locator 3 value (WC3 position), a stroke 3 (as Gstroke), their device states
+ * (echo volume in DC3, view index of the initial value) and default data. */
+typedef struct { Gint norm_tran_num; Gpoint3 position; } Gloc3;
+typedef struct { Gint norm_tran_num; Gint num_points; Gpoint3 *points; } Gstroke3;
+typedef struct {
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data;
+    Gint init_view_ind; Gloc3 init_loc;
+} Gloc_st3;
+typedef struct {
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data;
+    Gint init_view_ind; Gstroke3 init_stroke; Gint in_buf_size;
+} Gstroke_st3;
+typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gpoint3 loc_pos; } Gdef_loc3;
+/* The other classes' 3-D device states and default data: as the 2-D ones with an echo
+ * volume (DC3) instead of the echo area. */
+#define GKS_IN_DEV_ST3_ \
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data
+typedef struct { GKS_IN_DEV_ST3_; Gfloat init_value, low_value, high_value; } Gval_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gint init_choice; } Gchoice_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gpick init_pick; } Gpick_st3;
+typedef struct {
+    GKS_IN_DEV_ST3_;
+    char *init_string; size_t init_string_size;
+    Gint in_buf_size, init_cur_pos;
+} Gstring_st3;
+#undef GKS_IN_DEV_ST3_
+typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; } Gdef_in3;
+typedef struct { Gdef_in3 dev; Gfloat value, low_value, high_value; } Gdef_val3;
+typedef struct { Gdef_in3 dev; Gint max_choices; } Gdef_choice3;
+typedef struct { Gdef_in3 dev; Gint max_buf_size, buf_size; } Gdef_string3;
+typedef struct {
+    Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gint max_buf_size, buf_size;
+} Gdef_stroke3;
 
-/* INITIALISE LOCATOR / STROKE / VALUATOR / CHOICE / PICK / STRING. The valuator range and
- * the stroke/string buffer sizes are explicit arguments (as NCAR's ginit_string), not
- * members of the data record. Errors: 7, 20, 25, 38, 140. */
+/* INITIALISE LOCATOR / STROKE / VALUATOR / CHOICE / PICK / STRING (3). The valuator range
+ * and the stroke/string buffer sizes are explicit arguments (as NCAR's ginit_string), not
+ * members of the data record; the record is stored and returned, not interpreted. Echo
+ * areas are in DC (2-D: the echo volume's z is [0,1]). Errors: 7, 20, 25, 38, 140, 144
+ * (pet), 51, 145 (echo area), 146 (record; buffer size outside 1..max; valuator low >=
+ * high), 2000 (initial status), 152 (initial value: locator/stroke point outside NDC by
+ * its transformation, invalid transformation or view index, value outside the range,
+ * choice outside 1..max, pick segment < 1, string cursor outside 1..length+1), 153, 154. */
 GKS_API void ginit_loc(Gint ws_id, Gint loc_num, const Gloc *init_loc, Gint pet,
                        const Glimit *echo_area, const Gin_data *loc_data);
 GKS_API void ginit_stroke(Gint ws_id, Gint stroke_num, const Gstroke *init_stroke, Gint pet,
@@ -832,7 +1032,25 @@ GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
 GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
                           const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
                           const Gin_data *string_data);
-/* SET LOCATOR / ... / STRING MODE. Errors: 7, 20, 25, 38, 140. */
+GKS_API void ginit_loc3(Gint ws_id, Gint loc_num, Gint init_view_ind, const Gloc3 *init_loc,
+                        Gint pet, const Glimit3 *echo_vol, const Gin_data *loc_data);
+GKS_API void ginit_stroke3(Gint ws_id, Gint stroke_num, Gint init_view_ind,
+                           const Gstroke3 *init_stroke, Gint pet, const Glimit3 *echo_vol,
+                           Gint in_buf_size, const Gin_data *stroke_data);
+GKS_API void ginit_val3(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *echo_vol, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data);
+GKS_API void ginit_choice3(Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, const Glimit3 *echo_vol,
+                           const Gin_data *choice_data);
+GKS_API void ginit_pick3(Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, const Glimit3 *echo_vol,
+                         const Gin_data *pick_data);
+GKS_API void ginit_string3(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                           const Glimit3 *echo_vol, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data);
+/* SET LOCATOR / ... / STRING MODE: SAMPLE and EVENT start from the initial value.
+ * Errors: 7, 20, 25, 38, 140, 2000. */
 GKS_API void gset_loc_mode(Gint ws_id, Gint loc_num, Gop_mode op_mode, Gecho_switch echo_switch);
 GKS_API void gset_stroke_mode(Gint ws_id, Gint stroke_num, Gop_mode op_mode,
                               Gecho_switch echo_switch);
@@ -843,28 +1061,38 @@ GKS_API void gset_pick_mode(Gint ws_id, Gint pick_num, Gop_mode op_mode,
                             Gecho_switch echo_switch);
 GKS_API void gset_string_mode(Gint ws_id, Gint string_num, Gop_mode op_mode,
                               Gecho_switch echo_switch);
-/* REQUEST LOCATOR / ... / STRING: *in_status is GIN_STATUS_NONE on return. string: a buffer
- * of the device's buffer size + 1 bytes (receives ""). Errors: 7, 20, 25, 38, 140. */
+/* REQUEST LOCATOR / ... / STRING (3): waits for the device's trigger; status OK, NONE
+ * (break, or no event can come) or NO_IN (no choice / nothing picked). Stroke: num_points
+ * is the capacity of points on entry, the count returned on return. string: a buffer of
+ * the device's buffer size + 1 bytes. Errors: 7, 20, 25, 38, 140, 141. */
 GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc);
 GKS_API void greq_stroke(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gstroke *stroke);
 GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *value);
 GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
 GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
 GKS_API void greq_string(Gint ws_id, Gint string_num, Gin_status *in_status, char *string);
-/* SAMPLE LOCATOR / ... / STRING. Errors: 7, 20, 25, 38, 140. */
+GKS_API void greq_loc3(Gint ws_id, Gint loc_num, Gin_status *in_status, Gint *view_ind,
+                       Gloc3 *loc);
+GKS_API void greq_stroke3(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gint *view_ind,
+                          Gstroke3 *stroke);
+/* SAMPLE LOCATOR / ... / STRING (3): the current measure, after the operator actions that
+ * are pending (one script line for a device in SAMPLE or EVENT mode).
+ * Errors: 7, 20, 25, 38, 140, 142. */
 GKS_API void gsample_loc(Gint ws_id, Gint loc_num, Gloc *loc);
 GKS_API void gsample_stroke(Gint ws_id, Gint stroke_num, Gstroke *stroke);
 GKS_API void gsample_val(Gint ws_id, Gint val_num, Gfloat *value);
 GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
 GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
 GKS_API void gsample_string(Gint ws_id, Gint string_num, char *string);
-/* AWAIT EVENT: the input queue is always empty, so it returns at once with *in_class =
- * GIN_NONE, *ws_id = *in_num = 0 (no device exists that could deliver an event within the
- * timeout). Errors: 7, 151 (timeout negative, NaN or infinite). */
+GKS_API void gsample_loc3(Gint ws_id, Gint loc_num, Gint *view_ind, Gloc3 *loc);
+GKS_API void gsample_stroke3(Gint ws_id, Gint stroke_num, Gint *view_ind, Gstroke3 *stroke);
+/* AWAIT EVENT: the oldest queued event becomes the current event report; if the queue is
+ * empty, waits up to timeout seconds for one (*in_class GIN_NONE if none came).
+ * Errors: 7, 151 (timeout negative, NaN or infinite), 147 (the queue overflowed). */
 GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint *in_num);
 /* FLUSH DEVICE EVENTS. Errors: 7, 20, 25, 38, 2000 (class not LOC..STRING), 140. */
 GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num);
-/* GET LOCATOR / ... / STRING: the current event report never holds a value.
+/* GET LOCATOR / ... / STRING (3): the value of the current event report.
  * Errors: 7, 150. */
 GKS_API void gget_loc(Gloc *loc);
 GKS_API void gget_stroke(Gstroke *stroke);
@@ -872,8 +1100,29 @@ GKS_API void gget_val(Gfloat *value);
 GKS_API void gget_choice(Gin_status *in_status, Gint *choice);
 GKS_API void gget_pick(Gin_status *in_status, Gpick *pick);
 GKS_API void gget_string(char *string);
+GKS_API void gget_loc3(Gint *view_ind, Gloc3 *loc);
+GKS_API void gget_stroke3(Gint *view_ind, Gstroke3 *stroke);
 /* Input inquiries: *err_ind as the other inquiries, nothing else written on error.
- * Device states: 7, 20, 25, 38, 140. Default data: 8, 22, 23, 38, 140. */
+ * Device states: 7, 20, 25, 38, 140, 2000 (type); in_data points into the state list
+ * (valid until the device is initialised again). Default data: 8, 22, 23, 38, 140. */
+GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind,
+                          Gloc_st3 *st);
+GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
+                             Gstroke_st3 *st);
+GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def);
+GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
+                                   Gdef_stroke3 *def);
+GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st);
+GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st);
+GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                           Gpick_st3 *st);
+GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st);
+GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def);
+GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                   Gdef_choice3 *def);
+GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def);
+GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
+                                   Gdef_string3 *def);
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st);
 GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                             Gstroke_st *st);
@@ -893,9 +1142,12 @@ GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
                                   Gdef_string *def);
 /* INQUIRE NUMBER OF AVAILABLE LOGICAL INPUT DEVICES. Errors: 8, 22, 23, 38. */
 GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in);
-/* INQUIRE INPUT QUEUE OVERFLOW. Errors: 7, 148 (the queue has never overflowed). */
+/* INQUIRE INPUT QUEUE OVERFLOW: the device whose event was lost first; clears the
+ * condition. Errors: 7, 148 (no overflow since GKS was opened or the last inquiry), 149
+ * (it overflowed, but that workstation has been closed). */
 GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint *in_num);
-/* INQUIRE MORE SIMULTANEOUS EVENTS: GSIMULT_NO_MORE. Errors: 7. */
+/* INQUIRE MORE SIMULTANEOUS EVENTS: GSIMULT_NO_MORE (every trigger belongs to one
+ * device). Errors: 7. */
 GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_events);
 
 #ifdef __cplusplus

@@ -156,48 +156,10 @@ typedef struct rt_build_options {
  * list and puts the rest into a second-level grid of ~3 cells per reference (default
  * sub_factor; 4 beyond 10^4 primitives; at most 32 per axis) over the box of those parts.
  * Up to 10^4 primitives and with all grid options at their defaults, when at least 3/4 of
- * the occupied top cells hold more than 8 references (surfaces filling their cells evenly,
- * as SPD mount and tetra), one level of 8 cells per primitive replaces the two (rt_build.c:
- * mount 13 % faster, tetra 3-6 %).
- * Below 4 primitives: no grid (random triangles: equal speed at 2, grid 1.3x faster at 4,
- * 1.6x at 8, 7x at 64).
- * Measured sweep (callgrind, render only: instructions M / branch mispredictions M; SPD
- * gears 129x129 corner rays depth 5, armadillo 256x256 primary rays; timings are too noisy
- * on the shared machine to rank settings within 10 %):
- *   top factor, second level        gears         armadillo
- *   1,    8/ref in cells > 8 refs   398 / 4.50    66.1 / 0.46
- *   0.25, 8/ref   (default)         365 / 4.27    56.9 / 0.37
- *   0.5,  8/ref                     393 / 4.49    60.2 / 0.41
- *   0.125, 8/ref                    377 / 4.39
- *   0.25, 16/ref                    360 / 4.32
- *   2 / 4, 4/ref                    419 / 4.64, 436 / 4.63   73.7 / 0.53 (2)
- *   8, none                         477 / 4.10
- *   1, 4/ref, grid in VRC3 axes     523 / 6.60   (the rotated grid frame saves 24 %)
- * The default also wins on teapot (122 vs 137 M), tetra (42 vs 47), mount (258 vs 337, +6 %
- * mispredictions), bunny (60 vs 69) and fandisk (44 vs 49) against factor 1, 4/ref.
- * Large meshes (the sqrt rule above 10^4 primitives; SPD scenes have fewer): the second level
- * resolves the surface, a fine top level only adds steps through empty cells and cache misses.
- * callgrind, rt_intersect + rt_occluded instructions M, 384x384 primary rays + their shadow
- * rays (bench/compare/cmp_embree rays): top factor 0.25 / sqrt rule / 0.05 / 0.02 (8/ref):
- *   bunny (75k)        142.5 + 88.0 / 136.6 + 86.2 / 135.4 + 88.2 / 134.6 + 90.9
- *   dragon (203k)      190.8 + 111.0 / 174.9 + 104.4 / 175.8 + 104.8 / 171.7 + 104.7
- * CPU time (interleaved, noisy) moves the same way, more for the 871k dragon (cache misses).
- * Second level 4/ref instead of 8/ref beyond 10^4 primitives: +4..8 % instructions (141.5 +
- * 92.9, 181.6 + 111.8) but no measurable time difference (fewer cache misses; interleaved
- * runs within +-3 %), half the cells, 25 % fewer references and build time. Default against
- * 0.25, 8/ref in one process (Mrays/s primary, shadow): dragon 871k 5.12, 1.36 vs 4.49, 1.18;
- * dragon 203k 6.86, 1.94 vs 6.26, 1.76; armadillo 12.05 vs 11.32; fandisk 10.49 vs 10.19;
- * references per triangle 4.8-9.0 instead of 8.3-13.9.
- * SPD scenes: factors 0.05 / 0.15 changed gears by +4 / +9 % and mount by -9 / -5 %
- * instructions, so below 10^4 primitives the rule stays linear. An explicit grid_factor or
- * sub_factor is always used as given (linearly).
- * Second level below 10^4 primitives, by time rather than instructions (the instruction
- * counts above favour finer grids; a finer second level executes fewer instructions but
- * takes longer): rt_bench SPD -s 512 -corner, CPU s, minimum of 6 runs alternating over both
- * cores, 8/ref -> 3/ref: mount 0.344 -> 0.312, teapot 0.129 -> 0.125, gears 0.532 -> 0.524,
- * tetra 0.031 -> 0.030; 2, 4 and 6/ref were within 3 % of 3/ref, 12/ref 5-10 % slower. Beyond
- * 10^4 primitives 3/ref was as fast as 4/ref but the 871k dragon's eye rays 14 % slower
- * (cmp_embree, 7.40 -> 6.38 Mrays/s), so 4/ref stays there. */
+ * the occupied top cells hold more than 8 references (surfaces filling their cells evenly),
+ * one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
+ * explicit grid_factor or sub_factor is always used as given (linearly). The measurements
+ * behind these numbers: docs/bench/rt_tuning.md. */
 #define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 

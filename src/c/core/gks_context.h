@@ -92,10 +92,11 @@ typedef struct gks_state_list {
     int tran_pri[GKS_MAX_NORM_TRAN + 1]; /* viewport input priority, highest first */
     Gclip_ind clip_ind;
     char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
-    struct gks_seg_store *segs; /* segment storage (gks_seg.h) */
+    struct gks_seg_store *segs; /* segment storage (gks_seg_store.h) */
     int open_seg;               /* name of the open segment, 0 = none */
-    int mf_n_mo_active;         /* active MO workstations (gks_mf.c: the MO fast path) */
+    int mf_n_mo_active;         /* active MO workstations (gks_mf_record.c: the MO fast path) */
     int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
+    struct gks_in_queue *inq;   /* input queue and current event report (gks_indev.h) */
 } gks_state_list;
 
 /* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives
@@ -105,6 +106,7 @@ typedef struct gks_error_state {
     int last_error;
     FILE *fp;              /* error file opened at OPEN GKS, NULL = standard error */
     Gerr_handler handler;  /* NULL = gerr_hand */
+    unsigned long epoch;   /* world epoch (gks_error.h): changes when the world does */
 } gks_error_state;
 
 /* Test hook: called with every primitive just before a driver receives it. */

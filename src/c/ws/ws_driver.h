@@ -10,6 +10,7 @@
 #include "gks.h"
 #include "gks_context.h"
 #include "ws_wdt.h"
+#include "gks_indev.h"
 
 #define GKS_WS_DRIVER_VERSION 1
 
@@ -29,8 +30,10 @@ typedef struct gks_ws_desc {
     Girg_mode default_irg;        /* default implicit regeneration mode */
     Gdefer_mode default_defer;
     unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
-    /* Output facilities and predefined bundles (gks_wdt.h); NULL = gks_wdt_raster. */
+    /* Output facilities and predefined bundles (ws_wdt.h); NULL = gks_wdt_raster. */
     const struct gks_wdt_output *out;
+    /* Logical input devices (category INPUT/OUTIN), NULL = none (gks_indev.h). */
+    const struct gks_in_desc *in;
 } gks_ws_desc;
 
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
@@ -90,6 +93,7 @@ typedef struct gks_prim {
 struct gks_ws {
     int id;
     char *conn_id;
+    char *file;                   /* canonical path of the file it writes/reads, or NULL */
     const gks_ws_driver *drv;
     Gws_st state;
     Gdefer_mode defer_mode;
@@ -107,6 +111,7 @@ struct gks_ws {
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
+    gks_in_ws *in;                /* input device state lists (core), NULL = no input */
     /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
      * when entry i is defined. Initialised from the description table's predefined
      * bundles at OPEN WORKSTATION. Pattern colour arrays are owned (gks_alloc). */
@@ -124,6 +129,11 @@ struct gks_ws {
 struct gks_ws_driver {
     int version;
     const gks_ws_desc *desc;
+    /* File workstations: the name of the file the workstation will write (MI: read) for
+     * its connection identifier, in *path (gks_alloc'd); 0, 21 or 300. OPEN WORKSTATION
+     * checks it before open (gks_ws_file_check): 26 if it cannot be created (read), 21
+     * if another open workstation uses the same file. NULL: no file. */
+    int (*file)(const gks_ws *ws, char **path);
     /* Returns 0 or a GKS error number (26: cannot be opened, 300: storage). */
     int (*open)(gks_ws *ws);
     void (*close)(gks_ws *ws);
@@ -135,6 +145,17 @@ struct gks_ws_driver {
     int (*message)(gks_ws *ws, const char *msg);
     /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
     int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
+    /* Pixel readback (INQUIRE PIXEL ...): the picture as it would be written now, nx x ny
+     * pixels from image pixel (x0, y0) (DC relative to the viewport origin, y up), row by
+     * row upward, each 0xRRGGBB (8 bits per component) or -1 outside the image. Returns 0
+     * or 300. NULL: the type has no pixel store readback (error 40). */
+    int (*read_pixels)(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb);
+    /* Interactive input devices: waits at most timeout seconds (0: poll) for a raw event
+     * of the physical devices, given the logical devices taking input now (to map the
+     * mouse and keys to them and to draw prompts and echoes). Returns 1 with *ev filled
+     * (valid until the next call), 0 if none came, -1 if no event can ever come (e.g.
+     * the window is gone). NULL: the type's devices are fed by input scripts only. */
+    int (*input)(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev);
 };
 
 /* The compiled-in drivers. */

@@ -1,5 +1,5 @@
 /*
- * gks_wdt.c -- the output facilities and predefined bundles of the raster workstations.
+ * ws_wdt.c -- the output facilities and predefined bundles of the raster workstations.
  * The raster module draws linetypes 1..4, marker types 1..5, hatch styles -1..-12,
  * patterns and solid/hollow interiors; text is stroked in the core with the compiled-in
  * simplex font (font 1), so every precision of font 1 is available.

@@ -1,5 +1,5 @@
 /*
- * gks_wdt.h -- the output part of workstation description tables (ISO 7942 6.2): lists
+ * ws_wdt.h -- the output part of workstation description tables (ISO 7942 6.2): lists
  * of supported linetypes, marker types, text fonts and precisions, interior and hatch
  * styles, edgetypes, the ranges of widths and sizes, and the predefined bundles and
  * patterns. One const table serves the raster workstations (PNG, null); a

@@ -1,6 +1,6 @@
 /*
  * gks_segment.h -- the segment functions' links to the rest of the core: workstation
- * closing/clearing and regeneration. The store itself is gks_seg.h.
+ * closing/clearing and regeneration. The store itself is gks_seg_store.h.
  */
 #ifndef GKS_SEGMENT_H
 #define GKS_SEGMENT_H

@@ -7,6 +7,7 @@
  */
 #include "gks_context.h"
 #include "gks_error.h"
+#include "gks_state.h"
 #include "gks_xform.h"
 
 /* WC -> NDC3 by the current normalization transformation: points (is_point = 1) are
@@ -32,11 +33,16 @@ static int sw_valid(Gcoord_switch sw)
     return sw == GCOORD_WC || sw == GCOORD_NDC;
 }
 
+/* A NULL pointer argument without an error of its own is 2003 (docs/ERRORS.md). */
+#define GKS_E_NULL_ARG 2003
+
 GKS_API void geval_tran_matrix(const Gpoint *fixed, const Gvec *shift, Gdouble angle,
                                const Gvec *scale, Gcoord_switch sw, Gtran_matrix m)
 {
     if (gks_check_state(GFN_EVTM))
         return;
+    if (!fixed || !shift || !scale || !m)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVTM);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM);
     double f[3], s[3];
@@ -53,6 +59,8 @@ GKS_API void gaccum_tran_matrix(const Gtran_matrix m_in, const Gpoint *fixed, co
 {
     if (gks_check_state(GFN_ACTM))
         return;
+    if (!m_in || !fixed || !shift || !scale || !m_out)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_ACTM);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM);
     double f[3], s[3];
@@ -70,6 +78,8 @@ GKS_API void geval_tran_matrix3(const Gpoint3 *fixed, const Gvec3 *shift, Gdoubl
 {
     if (gks_check_state(GFN_EVTM3))
         return;
+    if (!fixed || !shift || !scale || !m)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVTM3);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM3);
     double f[3], s[3];
@@ -88,6 +98,8 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
 {
     if (gks_check_state(GFN_ACTM3))
         return;
+    if (!m_in || !fixed || !shift || !scale || !m_out)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_ACTM3);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM3);
     double f[3], s[3];
@@ -102,27 +114,42 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
 GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const Gvec3 *vup,
                                     Gcoord_switch sw, Gint *err_ind, Gmatrix3 m)
 {
-    *err_ind = gks_check_state(GFN_EVVWM);
+    /* ISO 8805 (like PHIGS): the evaluate-view utilities report the standard's errors in
+     * their error indicator only; ERROR HANDLING is not called. A NULL argument (2003,
+     * not an error of the standard) still goes through the one error path. */
+    Gint e_ = 0;
+    if (!err_ind)
+        err_ind = &e_;
+    *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
+    if (!vrp || !vpn || !vup || !m) {
+        *err_ind = GKS_E_NULL_ARG;
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVVWM);
+    }
     if (!sw_valid(sw)) {
         *err_ind = 2000;
-        GKS_FAIL(2000, GFN_EVVWM);
+        return;
     }
     double r3[3], n3[3], u3[3];
     to_ndc3(sw, (const double[3]){ vrp->x, vrp->y, vrp->z }, 1, r3);
     to_ndc3(sw, (const double[3]){ vpn->delta_x, vpn->delta_y, vpn->delta_z }, 0, n3);
     to_ndc3(sw, (const double[3]){ vup->delta_x, vup->delta_y, vup->delta_z }, 0, u3);
     *err_ind = gks_xform_eval_view_orientation3(r3, n3, u3, m);
-    if (*err_ind)
-        GKS_FAIL(*err_ind, GFN_EVVWM);
 }
 
 GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m)
 {
-    *err_ind = gks_check_state(GFN_EVPJM);
+    Gint e_ = 0;
+    if (!err_ind)
+        err_ind = &e_;
+    *err_ind = gks_inq_state(GKS_S_OPEN); /* error indicator only, as above */
     if (*err_ind)
         return;
+    if (!map || !m) {
+        *err_ind = GKS_E_NULL_ARG;
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVPJM);
+    }
     gks_xform_view_map3 v = {
         .window = { map->win.x_min, map->win.x_max, map->win.y_min, map->win.y_max },
         .viewport = { map->proj_vp.x_min, map->proj_vp.x_max, map->proj_vp.y_min,
@@ -132,6 +159,4 @@ GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatri
         .vpd = map->view_plane, .bpd = map->back_plane, .fpd = map->front_plane,
     };
     *err_ind = gks_xform_eval_view_mapping3(&v, m);
-    if (*err_ind)
-        GKS_FAIL(*err_ind, GFN_EVPJM);
 }

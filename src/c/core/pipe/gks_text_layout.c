@@ -1,5 +1,5 @@
 /*
- * gks_text.c -- TEXT (3) layout with the compiled-in stroke font.
+ * gks_text_layout.c -- TEXT (3) layout with the compiled-in stroke font.
  *
  * Geometry (ISO 7942 5.4.4, applied in the text plane): the character height is the
  * font's cap height; k = char_ht / cap converts font units. Within the plane, u is the

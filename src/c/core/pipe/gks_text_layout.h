@@ -1,5 +1,5 @@
 /*
- * gks_text.h -- TEXT (3) layout: turns a string into polyline strokes of the compiled-in
+ * gks_text_layout.h -- TEXT (3) layout: turns a string into polyline strokes of the compiled-in
  * stroke font (src/c/raster) in WC3, honouring character height, expansion factor,
  * spacing, up vector, text path and alignment, in the text plane of TEXT 3 (the x/y
  * plane for 2-D TEXT). No GKS state: the caller passes resolved attributes.

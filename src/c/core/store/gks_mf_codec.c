@@ -1,5 +1,5 @@
 /*
- * gksm.c -- GKS metafile codec (see gksm.h for the format).
+ * gks_mf_codec.c -- GKS metafile codec (see gks_mf_codec.h for the format).
  */
 #include "gks_mf_codec.h"
 #include "gks_alloc.h"

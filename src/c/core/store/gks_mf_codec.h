@@ -1,5 +1,5 @@
 /*
- * gksm.h -- the GKS metafile (GKSM, ISO 7942 Annex E) codec, character-coded as RAL GKS
+ * gks_mf_codec.h -- the GKS metafile (GKSM, ISO 7942 Annex E) codec, character-coded as RAL GKS
  * writes it: a 90-character file header, then items "header + data record". No GKS state:
  * the metafile workstations (output and input) build on this.
  *

@@ -1,5 +1,5 @@
 /*
- * gks_seg.c -- segment storage (see gks_seg.h).
+ * gks_seg_store.c -- segment storage (see gks_seg_store.h).
  */
 #include "gks_seg_store.h"
 #include "gks_alloc.h"

@@ -1,5 +1,5 @@
 /*
- * gks_seg.h -- segment storage (ISO 7942 4.7, 6.7): named segments holding their
+ * gks_seg_store.h -- segment storage (ISO 7942 4.7, 6.7): named segments holding their
  * primitives in NDC3, before segment transformation and clipping, with the attributes
  * and the clipping volume bound to each primitive, so that a segment can be redrawn
  * with another transformation. One store per GKS state list.

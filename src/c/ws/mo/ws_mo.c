@@ -2,7 +2,7 @@
  * ws_mo.c -- the GKS metafile output workstation (type GWS_TYPE_MO, category MO). The
  * connection identifier is the file name; OPEN WORKSTATION writes the file header, CLOSE
  * WORKSTATION the END item. The items themselves are written by the core's recording hooks
- * (gks_mf.c), never through the primitive interface: the driver has no drawing entries.
+ * (gks_mf_record.c), never through the primitive interface: the driver has no drawing entries.
  */
 #include "gks_alloc.h"
 #include "gks_mf_record.h"
@@ -77,6 +77,7 @@ static int mo_update(gks_ws *ws)
 const gks_ws_driver gks_ws_mo_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mo_desc,
+    .file = gks_mf_file,
     .open = mo_open,
     .close = mo_close,
     .update = mo_update,

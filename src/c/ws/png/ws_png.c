@@ -71,6 +71,18 @@ static char *base_from_conn(const char *conn)
     return gks_strdup(conn);
 }
 
+/* The file of frame 1 (later frames are B-k.png beside it). */
+static int png_file(const gks_ws *ws, char **path)
+{
+    char *b = base_from_conn(ws->conn_id ? ws->conn_id : "");
+    size_t n = b ? strlen(b) + 5 : 0;
+    *path = b ? gks_alloc_array(n, 1) : NULL;
+    if (*path)
+        snprintf(*path, n, "%s.png", b);
+    gks_free(b);
+    return *path ? 0 : 300;
+}
+
 static int png_open(gks_ws *ws)
 {
     png_ws *p = gks_calloc_array(1, sizeof *p);
@@ -280,13 +292,39 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     return 0;
 }
 
+/* Pixel readback: the composed picture (retained primitives drawn over the immediate
+ * ones; areas recorded for ray tracing are traced only when the frame is written). */
+static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
+{
+    png_ws *p = ws->priv;
+    gks_raster_fb *fb = framebuffer(ws), *pic;
+    if (!fb || ws_png_render_compose(p->render, ws, fb, &pic))
+        return 300;
+    unsigned char *row = gks_alloc_array((size_t)pic->width, 3);
+    if (!row)
+        return 300;
+    for (int j = 0; j < ny; j++) {
+        int y = y0 + j, have = y >= 0 && y < pic->height;
+        if (have)
+            gks_raster_fb_resolve_row(pic, pic->height - 1 - y, row);
+        for (int i = 0; i < nx; i++) {
+            int x = x0 + i;
+            const unsigned char *c = row + 3 * (size_t)x;
+            rgb[(size_t)j * (size_t)nx + (size_t)i] =
+                have && x >= 0 && x < pic->width ? (c[0] << 16) | (c[1] << 8) | c[2] : -1;
+        }
+    }
+    gks_free(row);
+    return 0;
+}
+
 #define PNG_DESC(TYPE, NAME, SIZE)                                                   \
     {                                                                                \
-        .type = TYPE, .name = NAME, .cat = GCAT_OUT, .cls = GCLASS_RASTER,           \
+        .type = TYPE, .name = NAME, .cat = GCAT_OUTIN, .cls = GCLASS_RASTER,           \
         .dc_units = GDC_OTHER, .dc_x = SIZE, .dc_y = SIZE, .raster_x = SIZE,         \
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
-        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster,                        \
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster, .in = &gks_in_desc_std, \
         .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) |               \
                        (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_PAINTER) |                \
                        (1u << GHLHSR_RAYTRACE),                                         \
@@ -297,9 +335,11 @@ static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-larg
 
 #define PNG_DRIVER(DESC)                                                           \
     {                                                                              \
-        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = png_open,         \
+        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .file = png_file,         \
+        .open = png_open,                                                          \
         .close = png_close, .clear = png_clear, .update = png_update,              \
         .primitive = png_primitive, .message = png_message, .escape = png_escape,  \
+        .read_pixels = png_read_pixels,                                            \
     }
 
 const gks_ws_driver gks_ws_png_driver = PNG_DRIVER(png_desc);
