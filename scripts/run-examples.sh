@@ -49,6 +49,18 @@ done
 echo "run-examples: C and Fortran pictures: $same byte-identical, $differ differ"
 [ "$differ" -eq 0 ] || status=1
 
+# The PDF run (built with cairo): Fig. 2 with its previews, the surface and the RAL-style
+# 2-D plot as PDF files into build/pictures/pdf (PNG of the plot beside them).
+if [ -n "$(find "$root/build/src" -name 'ws_cairo.c.o' -print -quit 2>/dev/null)" ]; then
+    mkdir -p "$out/pdf"
+    for name in fig2 surface plot2d; do
+        run "$out/pdf" "${name}_c" 480 "" pdf || status=1
+    done
+    run "$out" plot2d_c || status=1
+else
+    echo "run-examples: built without cairo: no PDF run"
+fi
+
 # The first examples.
 for prog in hello_c hello_f77 checkerboard_c; do
     run "$out" "$prog" || status=1
@@ -65,7 +77,7 @@ if [ -f "$data/meshes/bunny00.off" ]; then
 fi
 
 # Anything else under build/examples: without arguments, skipped when it needs some.
-known=" ${twins[*]/%/_c} ${twins[*]/%/_f77} hello_c hello_f77 checkerboard_c nff_view mesh_view "
+known=" ${twins[*]/%/_c} ${twins[*]/%/_f77} hello_c hello_f77 checkerboard_c nff_view mesh_view plot2d_c "
 while IFS= read -r f; do
     name=$(basename "$f")
     case "$known" in *" $name "*) continue ;; esac
@@ -75,6 +87,6 @@ done < <(find "$ex" -type f -perm -u+x ! -name '*.so*' ! -name '*.a' ! -name '*.
 
 echo "run-examples: pictures written:"
 n=0
-while IFS= read -r f; do echo "  $f"; n=$((n + 1)); done < <(find "$out" -name '*.png' | sort)
+while IFS= read -r f; do echo "  $f"; n=$((n + 1)); done < <(find "$out" -name '*.png' -o -name '*.pdf' | sort)
 [ "$n" -gt 0 ] || { echo "run-examples: no PNG file written" >&2; exit 1; }
 exit "$status"

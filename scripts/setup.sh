@@ -5,7 +5,9 @@
 set -euo pipefail
 
 packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
-          libopenmpi-dev openmpi-bin) # OpenMPI: the optional MPI build and its test (docs/MPI.md)
+          libopenmpi-dev openmpi-bin # OpenMPI: the optional MPI build and its test (docs/MPI.md)
+          libcairo2-dev poppler-utils librsvg2-bin ghostscript) # cairo: the PDF/SVG/PS/EPS
+          # workstations; their tests open the files in pdftoppm, rsvg-convert and gs
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then

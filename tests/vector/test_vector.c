@@ -9,6 +9,7 @@
  *                                      compares it with the PNG workstation's picture
  *   test_vector twins   OUT            C and Fortran files byte-identical
  *   test_vector text    OUT            ink of TEXT agrees with INQUIRE TEXT EXTENT
+ *   test_vector resolution OUT         ESCAPE GESC_VEC_RESOLUTION (embedded image size)
  *
  * Pictures: SIZE pixels (fig2 and plot2d 360, previews 120; surface 180, ray traced at
  * 300 dpi on the vector types) on the PNG workstation, SIZE x 0.2 mm on the vector ones, whose
@@ -352,6 +353,72 @@ static int text(const char *out)
     return fail;
 }
 
+static Gint last_err;
+static void on_error(Gint err, Gint func, const char *file)
+{
+    (void)func;
+    (void)file;
+    last_err = err;
+}
+
+/* ESCAPE GESC_VEC_RESOLUTION: a z-buffer frame's embedded image has the requested
+ * resolution at the page size (pdfimages -list), a bad value reports 182 and changes
+ * nothing. */
+static int resolution(const char *out)
+{
+    if (!have("pdfimages")) {
+        printf("skipped: pdfimages not found (poppler-utils)\n");
+        return SKIP;
+    }
+    static const int dpi[3] = { 300, 100, 0 }; /* 0: a bad value (5) after 100 */
+    int fail = 0;
+    gset_err_hand(on_error, NULL);
+    gopen_gks(NULL, 0);
+    for (int k = 0; k < 3; k++) {
+        char file[PATH_LEN], cmd[3 * PATH_LEN];
+        snprintf(file, sizeof file, "%s/res%d.pdf", out, k);
+        gopen_ws(1, file, GWS_TYPE_PDF);
+        Glimit w = { 0, 1, 0, 1 }, v = { 0, 0.0508f, 0, 0.0254f }; /* 2 x 1 inch */
+        gset_ws_win(1, &w);
+        gset_ws_vp(1, &v);
+        gset_hlhsr_mode(1, GHLHSR_ZBUFFER);
+        last_err = 0;
+        if (k > 0) {
+            Gint ints[2] = { 1, 100 };
+            Gescape_in_data in = { 2, ints, 0, NULL, 0, NULL };
+            Gescape_out_data o = { 0, NULL, 0, NULL };
+            gescape(GESC_VEC_RESOLUTION, &in, &o);
+            if (k == 2) {
+                ints[1] = 5;
+                gescape(GESC_VEC_RESOLUTION, &in, &o);
+            }
+        }
+        int want_err = k == 2 ? 182 : 0, want = k == 0 ? 300 : 100;
+        gactivate_ws(1);
+        gset_fill_int_style(GSTYLE_SOLID);
+        Gpoint p[3] = { { 0.1f, 0.1f }, { 0.9f, 0.2f }, { 0.5f, 0.45f } };
+        Gpoint_list l = { 3, p };
+        gfill_area(&l);
+        gdeactivate_ws(1);
+        gclose_ws(1);
+        snprintf(cmd, sizeof cmd, "pdfimages -list '%s' | awk 'NR > 2 { print $4, $5 }'",
+                 file);
+        FILE *f = popen(cmd, "r");
+        int iw = -1, ih = -1;
+        if (!f || fscanf(f, "%d %d", &iw, &ih) != 2)
+            iw = ih = -1;
+        if (f)
+            pclose(f);
+        int ok = iw == 2 * want && ih == want && last_err == want_err;
+        printf("resolution %s: image %d x %d (want %d x %d), error %d (want %d)%s\n",
+               k == 0 ? "default" : k == 1 ? "100 dpi" : "100 dpi then 5 (bad)", iw, ih,
+               2 * want, want, (int)last_err, want_err, ok ? "" : "  FAIL");
+        fail |= !ok;
+    }
+    gclose_gks();
+    return fail;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 5 && strcmp(argv[1], "run") == 0)
@@ -362,6 +429,8 @@ int main(int argc, char **argv)
         return twins(argv[2]);
     if (argc >= 3 && strcmp(argv[1], "text") == 0)
         return text(argv[2]);
+    if (argc >= 3 && strcmp(argv[1], "resolution") == 0)
+        return resolution(argv[2]);
     fprintf(stderr, "usage: test_vector run CBIN FBIN OUT | readers OUT | twins OUT | text OUT\n");
     return 2;
 }
