@@ -2,9 +2,9 @@
 /*
  * test_metafile_loss.c -- metafile output that fails and metafile input that is untrusted
  * (issue 20 C, G, J):
- * - a full metafile (/dev/full) costs a healthy second metafile no item: both receive every
- *   item, the healthy file is byte for byte the file written alone, and the loss is reported
- *   once (303) for the failing workstation;
+ * - a full metafile (a file size limit) costs a healthy second metafile no item: both
+ *   receive every item, the healthy file is byte for byte the file written alone, and the
+ *   loss is reported once (303) for the failing workstation;
  * - a write that fails at CLOSE WORKSTATION (the END item and fclose, under a file size limit)
  *   is reported as 303, once;
  * - INTERPRET ITEM of an ESCAPE item refuses by default to change file names or threads
@@ -23,6 +23,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <cmocka.h>
+#include <string.h>
 #include "core_util.h"
 
 enum { WS_A = 1, WS_B = 2, WS_MI = 3, WS_PNG = 4 };
@@ -71,41 +72,59 @@ static void many_segments(void)
     }
 }
 
-/* C: /dev/full fails; the healthy file gets every item, and the loss is reported once. */
+/* C: a file size limit that only the first MO reaches (its workstation-addressed MESSAGE
+ * items make it large) stands for a full disk. The healthy MO gets every item: its file is
+ * byte for byte the file written alone; the loss is reported once. */
 static void test_full_file_keeps_healthy(void **u)
 {
     (void)u;
-    if (access("/dev/full", W_OK) != 0)
-        skip();
+    const long limit = 1L << 20;
     reset_gks();
     gopen_gks(NULL, 0);
-    gopen_ws(WS_A, "loss_alone.gksm", GWS_TYPE_MO);
-    gactivate_ws(WS_A);
+    gopen_ws(WS_B, "loss_alone.gksm", GWS_TYPE_MO);
+    gactivate_ws(WS_B);
     many_segments();
-    gdeactivate_ws(WS_A);
-    gclose_ws(WS_A);
+    gdeactivate_ws(WS_B);
+    gclose_ws(WS_B);
     gclose_gks();
     assert_int_equal(n_captured, 0);
+    long alone = file_size("loss_alone.gksm");
+    assert_true(alone > 100000 && alone < limit);
 
+    struct rlimit old, lim;
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &old), 0);
+    if (old.rlim_cur != RLIM_INFINITY && old.rlim_cur < (rlim_t)limit)
+        skip();
+    void (*prev)(int) = signal(SIGXFSZ, SIG_IGN);
+    lim = old;
+    lim.rlim_cur = (rlim_t)limit;
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
     capture_reset();
     gopen_gks(NULL, 0);
-    gopen_ws(WS_A, "/dev/full", GWS_TYPE_MO);
+    gopen_ws(WS_A, "loss_full.gksm", GWS_TYPE_MO);
     gopen_ws(WS_B, "loss_healthy.gksm", GWS_TYPE_MO);
     gactivate_ws(WS_A);
     gactivate_ws(WS_B);
+    static char msg[1001];
+    memset(msg, 'm', 1000);
+    for (int i = 0; i < 2000; i++) /* 2 MB for A only */
+        gmessage(WS_A, msg);
     many_segments();
     gdeactivate_ws(WS_A);
     gdeactivate_ws(WS_B);
     gclose_ws(WS_A);
     gclose_ws(WS_B);
     gclose_gks();
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+    signal(SIGXFSZ, prev);
     /* one report for the full file, none for the healthy one */
     assert_int_equal(n_captured, 1);
     assert_int_equal(captured[0].err, 303);
+    assert_int_equal(captured[0].fct, GFN_MSG);
+    assert_true(file_size("loss_full.gksm") <= limit);
 
     size_t na, nb;
     char *a = slurp("loss_alone.gksm", &na), *b = slurp("loss_healthy.gksm", &nb);
-    assert_true(na > 100000);
     assert_int_equal(na, nb);
     assert_memory_equal(a, b, na);
     free(a);

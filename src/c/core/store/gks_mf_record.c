@@ -38,6 +38,14 @@ char *gks_mf_file_name(const char *conn_id)
     return s;
 }
 
+int gks_mf_file(const gks_ws *ws, char **path)
+{
+    if (!ws->conn_id || !*ws->conn_id)
+        return 21;
+    *path = gks_mf_file_name(ws->conn_id);
+    return *path ? 0 : 300;
+}
+
 static gks_mf_out *mo_of(gks_ws *ws)
 {
     return ws && ws->drv->desc->cat == GCAT_MO ? ws->priv : NULL;
@@ -70,14 +78,14 @@ static void note(mf_errs *e, gks_mf_out *o, int err)
         e->err[e->n++] = err;
 }
 
-/* Reports the noted errors; stops if the error handler closed GKS. */
-static void report(const mf_errs *e, int fctid)
+/* Reports the noted errors. Returns 1 if the world is unchanged (gks_error_report), 0 as
+ * soon as the handler changed it (the remaining errors are then not reported). */
+GKS_MUST_CHECK static int report(const mf_errs *e, int fctid)
 {
-    for (int i = 0; i < e->n; i++) {
-        if (gks_ctx()->op_st == GST_GKCL)
-            return;
-        gks_error_report(e->err[i], fctid);
-    }
+    for (int i = 0; i < e->n; i++)
+        if (!gks_error_report(e->err[i], fctid))
+            return 0;
+    return 1;
 }
 
 /* Writes the record under construction as item `item`; 0, 300 or 303. */
@@ -136,7 +144,7 @@ static int put_fmt(gks_mf_out *o, int item, const char *fmt, va_list ap)
     return put(o, item);
 }
 
-void gks_mf_rec(int fctid, int item, const char *fmt, ...)
+int gks_mf_rec(int fctid, int item, const char *fmt, ...)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
@@ -149,20 +157,20 @@ void gks_mf_rec(int fctid, int item, const char *fmt, ...)
         note(&e, o, put_fmt(o, item, fmt, ap));
         va_end(ap);
     }
-    report(&e, fctid);
+    return report(&e, fctid);
 }
 
-void gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
+int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
 {
     gks_mf_out *o = mo_of(gks_ws_lookup(ws_id));
     if (!o || o->lost)
-        return;
+        return 1;
     va_list ap;
     va_start(ap, fmt);
     mf_errs e = { 0 };
     note(&e, o, put_fmt(o, item, fmt, ap));
     va_end(ap);
-    report(&e, fctid);
+    return report(&e, fctid);
 }
 
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
@@ -185,7 +193,8 @@ int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
     gksm_rec_str(&o->rec, in->str ? in->str : "", in->str ? in->str_len : 0);
     mf_errs e = { 0 };
     note(&e, o, put(o, GKSM_ITEM_ESCAPE));
-    report(&e, fctid);
+    if (report(&e, fctid)) {
+    } /* the caller returns either way: the ESCAPE was for this MO */
     return 1;
 }
 
@@ -415,7 +424,7 @@ static int write_cells(gks_mf_out *o, const gks_mf_prim *p)
     return put(o, p->item);
 }
 
-void gks_mf_prim_write(int fctid, const gks_mf_prim *p)
+int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
@@ -451,7 +460,7 @@ void gks_mf_prim_write(int fctid, const gks_mf_prim *p)
         }
         note(&e, o, err);
     }
-    report(&e, fctid);
+    return report(&e, fctid);
 }
 
 /* ---------------------------------------------------------------- WRITE ITEM TO GKSM */
@@ -479,5 +488,6 @@ GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
     gksm_rec_raw(&o->rec, data, (size_t)length);
     mf_errs e = { 0 };
     note(&e, o, put(o, type));
-    report(&e, GFN_WITM);
+    if (report(&e, GFN_WITM)) {
+    } /* the last action: returning is right either way */
 }
