@@ -149,8 +149,9 @@ static void one_call(rd *r)
     case 1: gclose_gks(); break;
     case 2: {
         Gint t = types[byte(r) % 6];
+        int e0 = n_errors;
         gopen_ws(ws, conn[byte(r) % 4], t);
-        if (t == GWS_TYPE_PNG) { /* small pictures keep the target fast */
+        if (t == GWS_TYPE_PNG && n_errors == e0) { /* small pictures keep it fast */
             const Glimit vp = { 0, 16, 0, 16 };
             gset_ws_vp(ws, &vp);
         }
