@@ -8,6 +8,7 @@
 #include "gks_binding.h"
 #include "gks_error.h"
 #include "gks_mf_record.h"
+#include "gks_par.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -43,9 +44,14 @@ static void open_gks(const char *err_name, int open_file)
     gks_context *c = gks_ctx();
     if (gks_check_state(GFN_OPKS))
         return;
+    gks_par_start(NULL); /* MPI build under mpirun: MPI up on every rank (docs/MPI.md) */
     FILE *fp = NULL;
     if (open_file && err_name && *err_name) {
-        fp = fopen(err_name, "a");
+        char *path = NULL; /* MPI rank R > 0: err_name.R */
+        if (gks_par_rank() > 0 && !(path = gks_par_rank_path(err_name)))
+            GKS_FAIL(300, GFN_OPKS);
+        fp = fopen(path ? path : err_name, "a");
+        gks_free(path);
         if (!fp)
             GKS_FAIL(200, GFN_OPKS);
     }
@@ -90,6 +96,7 @@ static void close_gks(gks_context *c)
         fclose(c->err.fp);
     c->err.fp = NULL;
     gks_free(c->sl->err_file);
+    gks_in_reset();
     gks_seg_store_free(c->sl->segs);
     gks_free(c->sl->segs);
     gks_free(c->sl);
@@ -315,6 +322,13 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
 {
     if (gks_check_state(GFN_ESC))
         return;
+    if (func_id == GESC_INPUT_SCRIPT) { /* the core's: input devices are the core's */
+        gks_ws *iws = in && in->num_ints >= 1 && in->ints ? gks_ws_lookup(in->ints[0]) : NULL;
+        int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0) : 182;
+        if (e)
+            GKS_FAIL(e, GFN_ESC);
+        return;
+    }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
     if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
         GKS_FAIL(180, GFN_ESC);
