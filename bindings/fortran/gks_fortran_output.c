@@ -142,7 +142,7 @@ FAPI void FNAME(gpm3, GPM3)(const fint *n, const freal *px, const freal *py, con
 static char *text_str(const char *s, size_t len, Gint fctid)
 {
     char *t = fstr(s, len, fctid);
-    for (size_t i = 0, n = trimmed(s, len); t && i < n; i++)
+    for (size_t i = 0; t && i < len; i++)
         if (t[i] == '\0')
             t[i] = 127;
     return t;
