@@ -63,9 +63,8 @@ int main(int argc, char **argv)
     snprintf(base, sizeof base, "%splot2d", prefix);
     gopen_gks(NULL, 0);
     gopen_ws(WS, "1", types[t]);
-    Gescape_in_data in = { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
-    gescape(GESC_SET_FILE_NAME, &in, &out);
+    Gescape_in_data in = { { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base } };
+    gescape(GESC_SET_FILE_NAME, &in, NULL, NULL);
     gactivate_ws(WS);
     colour(2, 0.8f, 0.1f, 0.1f);
     colour(3, 0.1f, 0.3f, 0.8f);
@@ -162,8 +161,7 @@ int main(int argc, char **argv)
     gset_pat_rep(WS, 1, &pr);
     gset_fill_int_style(GSTYLE_PAT);
     gset_fill_style_ind(1);
-    Gvec ps = { 0.02f, 0.02f };
-    gset_pat_size(&ps);
+    gset_pat_size(0.02f, 0.02f);
     Gpoint pref = { 0.70f, 0.90f };
     gset_pat_ref_point(&pref);
     Gpoint box[4] = { { 0.70f, 0.90f }, { 0.78f, 0.90f }, { 0.78f, 0.96f }, { 0.70f, 0.96f } };

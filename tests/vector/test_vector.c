@@ -370,7 +370,6 @@ static int resolution(const char *out)
         printf("skipped: pdfimages not found (poppler-utils)\n");
         return SKIP;
     }
-    static const int dpi[3] = { 300, 100, 0 }; /* 0: a bad value (5) after 100 */
     int fail = 0;
     gset_err_hand(on_error, NULL);
     gopen_gks(NULL, 0);
@@ -385,12 +384,11 @@ static int resolution(const char *out)
         last_err = 0;
         if (k > 0) {
             Gint ints[2] = { 1, 100 };
-            Gescape_in_data in = { 2, ints, 0, NULL, 0, NULL };
-            Gescape_out_data o = { 0, NULL, 0, NULL };
-            gescape(GESC_VEC_RESOLUTION, &in, &o);
+            Gescape_in_data in = { { 2, ints, 0, NULL, 0, NULL } };
+            gescape(GESC_VEC_RESOLUTION, &in, NULL, NULL);
             if (k == 2) {
                 ints[1] = 5;
-                gescape(GESC_VEC_RESOLUTION, &in, &o);
+                gescape(GESC_VEC_RESOLUTION, &in, NULL, NULL);
             }
         }
         int want_err = k == 2 ? 182 : 0, want = k == 0 ? 300 : 100;
