@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # fuzz.sh -- fuzz the untrusted-input readers with libFuzzer for a fixed budget.
 #   scripts/fuzz.sh [seconds per target, default 60]
 # Installs clang and its libFuzzer runtime from Debian if missing, builds each target with
@@ -22,13 +23,19 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 
 out=build-fuzz
-mkdir -p "$out"
+mkdir -p "$out/include"
+# gks.h includes the version header that CMake generates; make it the same way here.
+version=$(sed -n 's/^project(gks3d VERSION \([0-9]*\)\.\([0-9]*\)\.\([0-9]*\).*/\1 \2 \3/p' CMakeLists.txt)
+read -r vmajor vminor vpatch <<<"$version"
+sed -e "s/@PROJECT_VERSION_MAJOR@/$vmajor/" -e "s/@PROJECT_VERSION_MINOR@/$vminor/" \
+    -e "s/@PROJECT_VERSION_PATCH@/$vpatch/" -e "s/@PROJECT_VERSION@/$vmajor.$vminor.$vpatch/" \
+    include/gks3d_version.h.in >"$out/include/gks3d_version.h"
 flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L -Isrc/c -Iinclude)
+       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L -Isrc/c -Iinclude -I"$out/include")
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/gksm.c src/c/gks_alloc.c -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).
 clang "${flags[@]}" -Isrc/c/xform -Isrc/c/raster -Isrc/rt tests/fuzz/fuzz_mi.c src/c/*.c \
-    src/c/xform/*.c src/c/raster/*.c src/rt/*.c -lpng -lpthread -lm -o "$out/fuzz_mi"
+    src/c/core/*.c src/c/xform/*.c src/c/raster/*.c src/rt/*.c -lpng -lpthread -lm -o "$out/fuzz_mi"
 
 status=0
 for target in gksm mi; do
