@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_input.c -- the input functions (gks_input.c) of an implementation without input
  * devices: every function reports exactly the standard's first applicable error with its
