@@ -759,6 +759,156 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris);
 
 /* ---------------------------------------------------------------------------------
+ * Further inquiries of ISO 7942 / ISO 8805 (src/c/core/api/gks_inq_std.c): current
+ * attribute sets, colour facilities, dynamic modification, pixels, GKS-3D description
+ * table entries. Types and argument lists as ISO 8651-4 (NCAR's published header);
+ * the GKS-3D forms append their entries (docs/BINDING.md).
+ * --------------------------------------------------------------------------------- */
+/* Storage for inquiries whose results have a size only GKS knows (ISO 8651-4 3.9).
+ * A store is reused (and its previous contents freed) by each call it is passed to. */
+typedef struct gks_store_rec *Gstore;
+/* CREATE STORE: *store receives a new, empty store. Errors (in *err_ind): 300. */
+GKS_API void gcreate_store(Gint *err_ind, Gstore *store);
+/* DELETE STORE: frees the store and what it holds (NULL is ignored). */
+GKS_API void gdel_store(Gstore store);
+
+typedef enum { GATTR_LINE, GATTR_MARKER, GATTR_TEXT, GATTR_FILL, GATTR_EDGE } Gattrs;
+typedef enum { GINVAL_ABSENT, GINVAL_PRESENT } Gpres_inval;
+typedef enum { GDYN_IRG, GDYN_IMM } Gdyn_mod;
+typedef struct { Gint num_colrs; Gcolr_avail colr_avail; Gint num_pred_inds; } Gcolr_facs;
+/* Current primitive attributes (INQUIRE CURRENT PRIMITIVE ATTRIBUTE VALUES). */
+typedef struct {
+    Gint line_ind, marker_ind, text_ind;
+    Gdouble char_ht;
+    Gvec char_up_vec;
+    Gdouble char_width;
+    Gvec char_base_vec;
+    Gtext_path text_path;
+    Gtext_align text_align;
+    Gint fill_ind;
+    Gvec pat_width_vec, pat_ht_vec;
+    Gpoint pat_ref_point;
+} Gprim_attrs;
+/* GKS-3D: the 2-D set, then the pattern reference point and vectors in 3-D, edge index,
+ * view index and HLHSR identifier. */
+typedef struct {
+    Gprim_attrs attrs;
+    Gpoint3 pat_ref_point;
+    Gvec3 pat_ref_vecs[2];
+    Gint edge_ind, view_ind, hlhsr_id;
+} Gprim_attrs3;
+/* Current individual attributes (INQUIRE CURRENT INDIVIDUAL ATTRIBUTE VALUES). */
+typedef struct {
+    Gint linetype;
+    Gdouble linewidth;
+    Gint line_colr_ind;
+    Gint marker_type;
+    Gdouble marker_size;
+    Gint marker_colr_ind;
+    Gtext_font_prec text_font_prec;
+    Gdouble char_expan, char_space;
+    Gint text_colr_ind;
+    Gfill_int_style fill_int_style;
+    Gint fill_style_ind, fill_colr_ind;
+    Gasfs asfs;
+} Gindiv_attrs;
+typedef struct {
+    Gindiv_attrs attrs;
+    Gedge_flag edge_flag;
+    Gint edgetype;
+    Gdouble edgewidth;
+    Gint edge_colr_ind;
+    Gasfs3 asfs;
+} Gindiv_attrs3;
+/* Dynamic modification accepted for workstation attributes / segment attributes. */
+typedef struct {
+    Gdyn_mod line_bundle, marker_bundle, text_bundle, fill_bundle, pat_rep, colr_rep, ws_tran;
+} Gdyn_mod_ws_attrs;
+typedef struct {
+    Gdyn_mod_ws_attrs attrs;
+    Gdyn_mod edge_bundle, view_rep, hlhsr_mode;
+} Gdyn_mod_ws_attrs3;
+typedef struct {
+    Gdyn_mod tran, appear, disappear, highl, pri, add_prim, del;
+} Gdyn_mod_seg_attrs;
+/* 2-D segment attributes (INQUIRE SEGMENT ATTRIBUTES); the 3-D form is Gseg_attrs3. */
+typedef struct {
+    Gint seg_name;
+    Gtran_matrix tran_matrix;
+    Gseg_vis vis;
+    Gseg_highl highl;
+    Gfloat pri;
+    Gseg_det det;
+} Gseg_attrs;
+typedef struct { Glimit3 win; Glimit3 vp; } Gtran3;
+typedef struct { Gclip_ind clip_ind; Glimit3 clip_vol; } Gclip3;
+typedef struct { Gfloat size_x, size_y, size_z; } Gfloat_size3;
+typedef struct { Gint size_x, size_y, size_z; } Gint_size3;
+typedef struct { Gdc_units dc_units; Gfloat_size3 size_dc; Gint_size3 size_raster; } Gdisp_space_size3;
+typedef struct {
+    Gint line_bundles, marker_bundles, text_bundles, fill_bundles, pat_reps, colr_reps,
+         edge_bundles, view_reps;
+} Gmax_ws_st_tables3;
+
+/* Current attribute sets: error 8. */
+GKS_API void ginq_cur_prim_attrs(Gint *err_ind, Gprim_attrs *attrs);
+GKS_API void ginq_cur_prim_attrs3(Gint *err_ind, Gprim_attrs3 *attrs);
+GKS_API void ginq_cur_indiv_attrs(Gint *err_ind, Gindiv_attrs *attrs);
+GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *attrs);
+/* Pattern width and height vectors: the pattern size along the reference vectors'
+ * directions, x/y components (WC). Error 8. */
+GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *pat_width_vec);
+GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *pat_ht_vec);
+/* INQUIRE NORMALIZATION TRANSFORMATION 3 (8, 50) and CLIPPING 3 (8). */
+GKS_API void ginq_norm_tran3(Gint num, Gint *err_ind, Gtran3 *norm_tran);
+GKS_API void ginq_clip3(Gint *err_ind, Gclip3 *clip);
+/* 2-D segment attributes: the x/y rows of the segment's 3-D matrix. Errors 7, 120, 122. */
+GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs);
+/* INQUIRE LIST OF COLOUR INDICES (defined entries, ascending). Errors 7, 20, 25, 33, 35, 36. */
+GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
+                                 Gint *err_ind, Gint_list *colr_inds, Gint *length_list);
+/* Description table: 8, 22, 23, then 39 (not OUTPUT/OUTIN) for output entries; the
+ * predefined colour representation adds 93 (index < 0) and 95 (not predefined). */
+GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs);
+GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep *colr_rep);
+GKS_API void ginq_dyn_mod_ws_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs *dyn_mod);
+GKS_API void ginq_dyn_mod_ws_attrs3(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs3 *dyn_mod);
+GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_defer_mode,
+                                Girg_mode *def_irg_mode);
+GKS_API void ginq_dyn_mod_seg_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_seg_attrs *dyn_mod);
+GKS_API void ginq_disp_space_size3(Gint ws_type, Gint *err_ind, Gdisp_space_size3 *disp_size);
+GKS_API void ginq_max_ws_st_tables3(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables3 *lengths);
+/* GKS-3D view and HLHSR facilities: number of predefined views, a predefined view
+ * representation (view index < 0: 514; not predefined: 2002), HLHSR identifiers and
+ * modes (list convention; both lists share capacity and start position). */
+GKS_API void ginq_view_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_views);
+GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gview_rep3 *rep);
+GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos,
+                             Gint *err_ind, Gint_list *hlhsr_ids, Gint *length_ids,
+                             Gint_list *hlhsr_modes, Gint *length_modes);
+/* GDPs: INQUIRE GENERALIZED DRAWING PRIMITIVE (3): the attribute bundles a GDP uses
+ * (41: the type cannot generate the GDP). */
+GKS_API void ginq_list_avail_gdps3(Gint ws_type, Gint num_elems_appl_list, Gint start_pos,
+                                   Gint *err_ind, Gint_list *gdps, Gint *length_list);
+GKS_API void ginq_gdp(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[4]);
+GKS_API void ginq_gdp3(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[5]);
+/* Pixel inquiries (raster workstations that keep a frame buffer: PNG). Points are WC of
+ * the current normalization transformation, mapped through it and the workstation
+ * transformation to a pixel of the current frame as drawn so far. A pixel whose colour
+ * is no entry of the colour table (anti-aliased edges, lit ray-traced areas), or that
+ * lies outside the display surface, is the invalid colour index -1.
+ * Errors: 7, 20, 25, 39 (not OUTPUT/OUTIN), 40 (no pixel readback). */
+GKS_API void ginq_pixel_array_dims(Gint ws_id, const Grect *rect, Gint *err_ind, Gint_size *dims);
+/* Pixel array from pixel_loc (the top-left corner) dims->size_x columns by size_y rows,
+ * row-major from the top row, into pixel_array (list convention over the whole array:
+ * capacity num_elems_appl_list, 0-based start_pos; *length_list = columns * rows). */
+GKS_API void ginq_pixel_array(Gint ws_id, const Gpoint *pixel_loc, const Gint_size *dims,
+                              Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                              Gpres_inval *pres_inval, Gint_list *pixel_array,
+                              Gint *length_list);
+GKS_API void ginq_pixel(Gint ws_id, const Gpoint *pixel_loc, Gint *err_ind, Gint *colr_ind);
+
+/* ---------------------------------------------------------------------------------
  * Input (ISO 7942 5.9; names after ISO 8651-4, see docs/BINDING.md "Input functions").
  * No workstation type of this implementation has logical input devices (none is of
  * category INPUT or OUTIN; the GKS level is 2a): every function below performs the

@@ -30,12 +30,17 @@ read -r vmajor vminor vpatch <<<"$version"
 sed -e "s/@PROJECT_VERSION_MAJOR@/$vmajor/" -e "s/@PROJECT_VERSION_MINOR@/$vminor/" \
     -e "s/@PROJECT_VERSION_PATCH@/$vpatch/" -e "s/@PROJECT_VERSION@/$vmajor.$vminor.$vpatch/" \
     include/gks3d_version.h.in >"$out/include/gks3d_version.h"
+# Every folder of src/c is a module with its headers next to its sources (src/c/CMakeLists.txt).
+incs=()
+while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
 flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L -Isrc/c -Iinclude -I"$out/include")
-clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/gksm.c src/c/gks_alloc.c -lm -o "$out/fuzz_gksm"
+       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude -I"$out/include")
+clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
+    -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).
-clang "${flags[@]}" -Isrc/c/xform -Isrc/c/raster -Isrc/rt tests/fuzz/fuzz_mi.c src/c/*.c \
-    src/c/core/*.c src/c/xform/*.c src/c/raster/*.c src/rt/*.c -lpng -lpthread -lm -o "$out/fuzz_mi"
+mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' | sort)
+clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthread -lm \
+    -o "$out/fuzz_mi"
 
 status=0
 for target in gksm mi; do

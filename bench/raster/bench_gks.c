@@ -330,6 +330,7 @@ static int row(const char *name, int walk, double box, size_t n)
     (void)to;
     (void)wo;
     (void)mo;
+    (void)uo;
 #endif
     printf("\n");
     fflush(stdout);

@@ -41,7 +41,8 @@ enum {
     RT_ERR_NOMEM = -2,    /* allocation failed or size overflow */
     RT_ERR_STATE = -3,    /* scene not committed */
     RT_ERR_SINGULAR = -4, /* view mapping matrix singular / non-finite / display volume unusable */
-    RT_ERR_LIMIT = -5     /* implementation limit (more than RT_MAX_LIGHTS lights, > INT_MAX items) */
+    RT_ERR_LIMIT = -5,    /* implementation limit (more than RT_MAX_LIGHTS lights, > INT_MAX items) */
+    RT_ERR_HOOK = -6      /* a tile hook callback failed (rt_render_options.tiles) */
 };
 
 #define RT_MAX_LIGHTS 64
@@ -155,48 +156,10 @@ typedef struct rt_build_options {
  * list and puts the rest into a second-level grid of ~3 cells per reference (default
  * sub_factor; 4 beyond 10^4 primitives; at most 32 per axis) over the box of those parts.
  * Up to 10^4 primitives and with all grid options at their defaults, when at least 3/4 of
- * the occupied top cells hold more than 8 references (surfaces filling their cells evenly,
- * as SPD mount and tetra), one level of 8 cells per primitive replaces the two (rt_build.c:
- * mount 13 % faster, tetra 3-6 %).
- * Below 4 primitives: no grid (random triangles: equal speed at 2, grid 1.3x faster at 4,
- * 1.6x at 8, 7x at 64).
- * Measured sweep (callgrind, render only: instructions M / branch mispredictions M; SPD
- * gears 129x129 corner rays depth 5, armadillo 256x256 primary rays; timings are too noisy
- * on the shared machine to rank settings within 10 %):
- *   top factor, second level        gears         armadillo
- *   1,    8/ref in cells > 8 refs   398 / 4.50    66.1 / 0.46
- *   0.25, 8/ref   (default)         365 / 4.27    56.9 / 0.37
- *   0.5,  8/ref                     393 / 4.49    60.2 / 0.41
- *   0.125, 8/ref                    377 / 4.39
- *   0.25, 16/ref                    360 / 4.32
- *   2 / 4, 4/ref                    419 / 4.64, 436 / 4.63   73.7 / 0.53 (2)
- *   8, none                         477 / 4.10
- *   1, 4/ref, grid in VRC3 axes     523 / 6.60   (the rotated grid frame saves 24 %)
- * The default also wins on teapot (122 vs 137 M), tetra (42 vs 47), mount (258 vs 337, +6 %
- * mispredictions), bunny (60 vs 69) and fandisk (44 vs 49) against factor 1, 4/ref.
- * Large meshes (the sqrt rule above 10^4 primitives; SPD scenes have fewer): the second level
- * resolves the surface, a fine top level only adds steps through empty cells and cache misses.
- * callgrind, rt_intersect + rt_occluded instructions M, 384x384 primary rays + their shadow
- * rays (bench/compare/cmp_embree rays): top factor 0.25 / sqrt rule / 0.05 / 0.02 (8/ref):
- *   bunny (75k)        142.5 + 88.0 / 136.6 + 86.2 / 135.4 + 88.2 / 134.6 + 90.9
- *   dragon (203k)      190.8 + 111.0 / 174.9 + 104.4 / 175.8 + 104.8 / 171.7 + 104.7
- * CPU time (interleaved, noisy) moves the same way, more for the 871k dragon (cache misses).
- * Second level 4/ref instead of 8/ref beyond 10^4 primitives: +4..8 % instructions (141.5 +
- * 92.9, 181.6 + 111.8) but no measurable time difference (fewer cache misses; interleaved
- * runs within +-3 %), half the cells, 25 % fewer references and build time. Default against
- * 0.25, 8/ref in one process (Mrays/s primary, shadow): dragon 871k 5.12, 1.36 vs 4.49, 1.18;
- * dragon 203k 6.86, 1.94 vs 6.26, 1.76; armadillo 12.05 vs 11.32; fandisk 10.49 vs 10.19;
- * references per triangle 4.8-9.0 instead of 8.3-13.9.
- * SPD scenes: factors 0.05 / 0.15 changed gears by +4 / +9 % and mount by -9 / -5 %
- * instructions, so below 10^4 primitives the rule stays linear. An explicit grid_factor or
- * sub_factor is always used as given (linearly).
- * Second level below 10^4 primitives, by time rather than instructions (the instruction
- * counts above favour finer grids; a finer second level executes fewer instructions but
- * takes longer): rt_bench SPD -s 512 -corner, CPU s, minimum of 6 runs alternating over both
- * cores, 8/ref -> 3/ref: mount 0.344 -> 0.312, teapot 0.129 -> 0.125, gears 0.532 -> 0.524,
- * tetra 0.031 -> 0.030; 2, 4 and 6/ref were within 3 % of 3/ref, 12/ref 5-10 % slower. Beyond
- * 10^4 primitives 3/ref was as fast as 4/ref but the 871k dragon's eye rays 14 % slower
- * (cmp_embree, 7.40 -> 6.38 Mrays/s), so 4/ref stays there. */
+ * the occupied top cells hold more than 8 references (surfaces filling their cells evenly),
+ * one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
+ * explicit grid_factor or sub_factor is always used as given (linearly). The measurements
+ * behind these numbers: docs/bench/rt_tuning.md. */
 #define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 
@@ -298,6 +261,36 @@ typedef struct rt_stats {
 
 typedef void (*rt_progress_fn)(void *user, int tiles_done, int tiles_total);
 
+/* Tile distribution (docs/MPI.md): the frame's ray grid ((w+1) x (h+1) corner rays, else
+ * w x h pixels) is cut into 16 x 16 tiles numbered row-major 0..ntiles-1, the same on every
+ * process rendering the same view. A hook decides which tiles this process traces and hands
+ * the traced ones on; tiles traced elsewhere come back through rt_frame_store. A tile's
+ * payload (opaque bytes: its rays' results before the final resolve, and its ray counters)
+ * depends only on scene, camera, options and tile index, so the picture is bit-identical
+ * for any split. next and done are called one thread at a time (under rt_render's lock);
+ * with threads == 1 every callback runs on the thread that called rt_render; begin and end
+ * always do. A callback returning an error stops all threads; rt_render returns
+ * RT_ERR_HOOK. */
+typedef struct rt_frame rt_frame;
+typedef struct rt_tile_hook {
+    void *user;
+    /* once before any tile: 0 or < 0 (error) */
+    int (*begin)(void *user, rt_frame *f, int ntiles, size_t max_tile_bytes);
+    /* next tile to trace here (>= 0); -1: none left for this process; < -1: error */
+    int (*next)(void *user);
+    /* a tile traced here and its payload: 0 or < 0 (error) */
+    int (*done)(void *user, int tile, const void *payload, size_t bytes);
+    /* after every local thread stopped: 1 the frame is complete here (resolved into rgb,
+       stats over all tiles); 0 not assembled here (rgb unspecified, stats of the tiles
+       traced here); < 0 error */
+    int (*end)(void *user, rt_frame *f);
+} rt_tile_hook;
+
+/* Stores the payload of a tile traced elsewhere into f as if traced here (its ray counters
+ * count in the frame's stats). Only from inside the hook's callbacks. RT_ERR_ARG for a bad
+ * tile, size or payload. */
+RT_API int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes);
+
 typedef struct rt_render_options {
     int samples;            /* per pixel: 1, 4, 9, 16, ... (perfect square, stratified) */
     int jitter;             /* 1: jitter within strata, deterministic per pixel and sample */
@@ -316,6 +309,7 @@ typedef struct rt_render_options {
     int progress;           /* 1: report tiles done, Mrays/s and time left on stderr */
     rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
     void *progress_user;
+    const rt_tile_hook *tiles;   /* NULL: every tile traced here (default) */
 } rt_render_options;
 
 /* Defaults (on the speed/error Pareto front of bench/speed_error): corner rays (samples 1, no

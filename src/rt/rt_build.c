@@ -451,7 +451,7 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
     return RT_OK;
 }
 
-/* Second level (measured, see gksrt.h). A top cell holding more than RT_SUB_MIN references is
+/* Second level (measured: docs/bench/rt_tuning.md). A top cell holding more than RT_SUB_MIN references is
  * split into "large" primitives (their part inside the cell spans at least half the cell in
  * two axes: floors, walls crossing the cell) that stay in the top cell's list, and the rest,
  * which get their own grid of about RT_SUB_FACTOR cells per reference (at most 32 per axis)
@@ -630,11 +630,7 @@ static int rt_empty_distance(rt_grid *g)
  * E < 0.7 (RT_FRAME_EYE), or when S < 0.9 and E < 1.5 (RT_FRAME_SEC, RT_FRAME_EYE_MAX); of
  * those the smallest E * S is taken (axes thinner than 1/1000 of the largest counted at that
  * size; at most RT_FRAME_SAMPLE primitives evaluated).
- * Measured (rotated / VRC3 axes, same core, CPU; E, S): SPD gears rt_bench -corner -s 512
- * 0.57 / 0.81 s (0.57, 0.83), teapot 0.151 / 0.145 s (0.81, 0.97), mount 0.395 / 0.374 s
- * (1.51, 1.03); cmp_embree primary Mrays/s: dragon 203k 6.4-7.1 / 9.1-9.2 (1.16, 0.99);
- * fandisk primary 10.2-10.7 / 11.0-11.2 but shadow 1.9-2.0 / 1.15-1.2 (1.30, 0.83). The former
- * rule (box volume below 0.8 of VRC3's) rotated all five. */
+ * Measurements: docs/bench/rt_tuning.md. */
 #define RT_FRAME_CAND 8
 #define RT_FRAME_EYE 0.7
 #define RT_FRAME_SEC 0.9
@@ -791,11 +787,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b)
  * a wide floor: teapot in a stadium); when nearly every occupied top cell is crowded, the
  * occupancy is uniform over the occupied part and one level of RT_UNIFORM_FACTOR cells per
  * primitive walks faster (one DDA, no second-level entries). Decided on the top-level counts,
- * for the default options up to RT_GRID_KNEE primitives. Measured (rt_bench SPD -s 512
- * -corner, CPU s, minimum of 4 runs alternating over both cores; share of occupied top cells
- * with more than RT_SUB_MIN references): mount 0.86: 0.319 -> 0.281 (factor 16: 0.282, 32:
- * 0.289), tetra 0.83: 0.032 -> 0.030; gears 0.57: 0.545 -> 0.579, teapot 0.41: 0.128 -> 0.146
- * keep two levels. */
+ * for the default options up to RT_GRID_KNEE primitives (measurements: docs/bench/rt_tuning.md). */
 #define RT_UNIFORM_SHARE 0.75
 #define RT_UNIFORM_FACTOR 8.0
 

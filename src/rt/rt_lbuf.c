@@ -29,9 +29,9 @@
  * Built per rendering (rt_render) for the lights whose buffer pays: perspective needs the
  * scene box in front of the light (nearest depth above 1/100 of the farthest; a light inside
  * or next to the scene keeps the grid walk), and the primitives must not outnumber the rays
- * that will use it (about one per eye ray and light). Build (one pass projecting and
- * counting, which keeps the row spans, then the fill in depth order): SPD gears 21 ms for
- * its 5 lights (9345 primitives, 483k entries), teapot 2.1 ms, mount 5.3 ms, tetra 2.7 ms.
+ * that will use it (about one per eye ray and light). Build: one pass projecting and
+ * counting, which keeps the row spans, then the fill in depth order (build times:
+ * docs/bench/rt_tuning.md).
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -40,7 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RT_LBUF_CELLS_PER_PRIM 8.0 /* measured: see rt_lbuf_build */
+#define RT_LBUF_CELLS_PER_PRIM 8.0 /* measured: docs/bench/rt_tuning.md */
 #define RT_LBUF_MIN_CELLS 4096
 #define RT_LBUF_MAX_CELLS (1 << 20)
 #define RT_LBUF_MAX_ENTRIES (1u << 24) /* 64 MB of lists per light: beyond, no buffer */
@@ -274,11 +274,8 @@ static void rt_lbuf_fail(rt_lbuf *lb, uint32_t *order, rt_lbuf_proj2 *pp)
     rt_lbuf_free(lb);
 }
 
-/* Cells: RT_LBUF_CELLS_PER_PRIM per primitive. rt_bench SCENE -s 513 -corner, frame s with
- * 4 / 8 / 16 / 32 per primitive (same core, alternating, best of 3): gears 0.395 / 0.381 /
- * 0.402 / 0.410, teapot 0.089 / 0.089 / 0.081 / 0.090, mount 0.189 / 0.198 / 0.201 / 0.205,
- * tetra 0.020 / 0.020 / 0.021 / 0.024. Gears, the scene with the least margin against its
- * peer (bench/compare), decides. */
+/* The light buffer of light l over the scene: RT_LBUF_CELLS_PER_PRIM cells per primitive
+ * (chosen on SPD gears, docs/bench/rt_tuning.md). */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
 {
     memset(lb, 0, sizeof *lb);

@@ -95,7 +95,19 @@ typedef struct rt_job {
     atomic_ullong rays;
     double t0, last_report;
     pthread_mutex_t lock;
+    const rt_tile_hook *hook;  /* o.tiles; NULL: every tile here */
+    atomic_int hook_failed;    /* a callback failed: threads stop, rt_render fails */
+    rt_stats remote;           /* ray counters of the tiles stored by rt_frame_store */
 } rt_job;
+
+/* The frame handed to a tile hook (rt_frame_store). */
+struct rt_frame {
+    rt_job *job;
+};
+
+/* Tile payload: RT_PAYLOAD_COUNTERS uint64 ray counters, then RGB floats per ray of the tile,
+   row-major (in corner mode the corner rays, before averaging). */
+#define RT_PAYLOAD_COUNTERS 7
 
 /* Shadow-ray blocker cache, one per (depth, light) and thread: the opaque primitives that
  * blocked the latest shadow rays, most recent first. After a blocked ray the next one (the
@@ -125,6 +137,7 @@ typedef struct rt_worker {
     rt_scache *shadow_cache; /* [depth * nlights + light] */
     rt_stats st;
     int err;
+    unsigned char *payload;  /* with a tile hook: one tile's payload */
 } rt_worker;
 
 static inline double dot3(const double a[3], const double b[3])
@@ -825,6 +838,100 @@ static void rt_corner_average(const rt_job *job)
     }
 }
 
+/* tile t's rectangle of the ray grid and payload size */
+static size_t rt_tile_rect(const rt_job *job, int t, int *x0, int *x1, int *y0, int *y1)
+{
+    int tx = t % job->tiles_x, ty = t / job->tiles_x;
+    *x0 = tx * RT_TILE;
+    *y0 = ty * RT_TILE;
+    *x1 = *x0 + RT_TILE < job->gw ? *x0 + RT_TILE : job->gw;
+    *y1 = *y0 + RT_TILE < job->gh ? *y0 + RT_TILE : job->gh;
+    return RT_PAYLOAD_COUNTERS * sizeof(uint64_t) +
+           (size_t)(*x1 - *x0) * (size_t)(*y1 - *y0) * 3 * sizeof(float);
+}
+
+/* where ray (x, y) of the grid is kept until the frame is resolved */
+static float *rt_ray_slot(const rt_job *job, int x, int y)
+{
+    if (job->o.corner_rays)
+        return rt_corner_at(job, x, y);
+    return job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
+}
+
+static void rt_counters(const rt_stats *s, uint64_t c[RT_PAYLOAD_COUNTERS])
+{
+    c[0] = s->eye_rays;
+    c[1] = s->eye_hits;
+    c[2] = s->shadow_rays;
+    c[3] = s->reflection_rays;
+    c[4] = s->refraction_rays;
+    c[5] = s->shadow_lbuf;
+    c[6] = s->shadow_walks;
+}
+
+/* packs tile t traced by w (counters: the difference of w's stats to before) */
+static size_t rt_tile_pack(rt_worker *w, int t, const rt_stats *before)
+{
+    int x0, x1, y0, y1;
+    size_t bytes = rt_tile_rect(w->job, t, &x0, &x1, &y0, &y1);
+    uint64_t a[RT_PAYLOAD_COUNTERS], b[RT_PAYLOAD_COUNTERS];
+    rt_counters(&w->st, a);
+    rt_counters(before, b);
+    for (int k = 0; k < RT_PAYLOAD_COUNTERS; k++)
+        a[k] -= b[k];
+    memcpy(w->payload, a, sizeof a);
+    unsigned char *p = w->payload + sizeof a;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++, p += 3 * sizeof(float))
+            memcpy(p, rt_ray_slot(w->job, x, y), 3 * sizeof(float));
+    return bytes;
+}
+
+int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes)
+{
+    if (!f || !f->job || !payload || tile < 0 || tile >= f->job->ntiles)
+        return RT_ERR_ARG;
+    rt_job *job = f->job;
+    int x0, x1, y0, y1;
+    if (bytes != rt_tile_rect(job, tile, &x0, &x1, &y0, &y1))
+        return RT_ERR_ARG;
+    uint64_t c[RT_PAYLOAD_COUNTERS];
+    memcpy(c, payload, sizeof c);
+    const unsigned char *p = (const unsigned char *)payload + sizeof c;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++, p += 3 * sizeof(float)) {
+            float v[3];
+            memcpy(v, p, sizeof v);
+            float *dst = rt_ray_slot(job, x, y);
+            for (int k = 0; k < 3; k++)
+                dst[k] = isfinite(v[k]) ? v[k] : 0.0f; /* never NaN/Inf in the picture */
+        }
+    rt_stats *r = &job->remote;
+    r->eye_rays += c[0];
+    r->eye_hits += c[1];
+    r->shadow_rays += c[2];
+    r->reflection_rays += c[3];
+    r->refraction_rays += c[4];
+    r->shadow_lbuf += c[5];
+    r->shadow_walks += c[6];
+    return RT_OK;
+}
+
+/* the hook's next tile for a worker, -1 when none (or after a failure) */
+static int rt_hook_next(rt_job *job)
+{
+    if (atomic_load(&job->hook_failed))
+        return -1;
+    pthread_mutex_lock(&job->lock);
+    int t = job->hook->next(job->hook->user);
+    pthread_mutex_unlock(&job->lock);
+    if (t < -1 || t >= job->ntiles) {
+        atomic_store(&job->hook_failed, 1);
+        return -1;
+    }
+    return t;
+}
+
 static void rt_progress(rt_job *job, uint64_t rays)
 {
     int done = atomic_fetch_add(&job->done, 1) + 1;
@@ -851,12 +958,23 @@ static void *rt_work(void *arg)
     rt_worker *w = arg;
     rt_job *job = w->job;
     for (;;) {
-        int t = atomic_fetch_add(&job->next, 1);
-        if (t >= job->ntiles)
+        int t = job->hook ? rt_hook_next(job) : atomic_fetch_add(&job->next, 1);
+        if (t < 0 || t >= job->ntiles)
             break;
+        const rt_stats st0 = w->st;
         uint64_t before = w->st.eye_rays + w->st.shadow_rays + w->st.reflection_rays +
                           w->st.refraction_rays;
         rt_tile(w, t);
+        if (job->hook) {
+            size_t bytes = rt_tile_pack(w, t, &st0);
+            pthread_mutex_lock(&job->lock);
+            int rc = job->hook->done(job->hook->user, t, w->payload, bytes);
+            pthread_mutex_unlock(&job->lock);
+            if (rc < 0) {
+                atomic_store(&job->hook_failed, 1);
+                break;
+            }
+        }
         rt_progress(job, w->st.eye_rays + w->st.shadow_rays + w->st.reflection_rays +
                              w->st.refraction_rays - before);
     }
@@ -937,6 +1055,16 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     atomic_init(&job.next, 0);
     atomic_init(&job.done, 0);
     atomic_init(&job.rays, 0);
+    atomic_init(&job.hook_failed, 0);
+    job.hook = o->tiles;
+    if (job.hook && (!job.hook->next || !job.hook->done)) {
+        job.hook = NULL;
+        if (rc == RT_OK)
+            rc = RT_ERR_ARG;
+    }
+    rt_frame frame = {&job};
+    int tx0, tx1, ty0, ty1; /* tile 0 is a largest tile */
+    const size_t max_payload = rt_tile_rect(&job, 0, &tx0, &tx1, &ty0, &ty1);
     int nt = o->threads;
     if (nt == 0) {
         long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -958,16 +1086,24 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
             rc = RT_ERR_NOMEM;
             break;
         }
+        if (job.hook && !(w[k].payload = rt_alloc_array(1, max_payload))) {
+            rc = RT_ERR_NOMEM;
+            break;
+        }
         for (size_t a = 0; a < ncache; a++) {
             for (int j = 0; j < RT_SCACHE; j++)
                 w[k].shadow_cache[a].id[j] = -1;
             w[k].shadow_cache[a].live = 0;
         }
     }
+    if (rc == RT_OK && job.hook && job.hook->begin &&
+        job.hook->begin(job.hook->user, &frame, job.ntiles, max_payload) < 0)
+        rc = RT_ERR_HOOK;
     if (rc != RT_OK) {
         for (int k = 0; w && k < nt; k++) {
             rt_ctx_free(&w[k].ctx);
             free(w[k].shadow_cache);
+            free(w[k].payload);
         }
         free(w);
         free(th);
@@ -989,11 +1125,17 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     rt_work(&w[0]);
     for (int k = 1; k < started; k++)
         pthread_join(th[k], NULL);
+    int whole = 1; /* the frame is complete here */
+    if (job.hook) {
+        int e = job.hook->end ? job.hook->end(job.hook->user, &frame) : 1;
+        if (e < 0 || atomic_load(&job.hook_failed))
+            rc = RT_ERR_HOOK;
+        whole = e > 0;
+    }
     pthread_mutex_destroy(&job.lock);
-    if (o->corner_rays)
+    if (o->corner_rays && whole && rc == RT_OK)
         rt_corner_average(&job);
-    rt_stats st;
-    memset(&st, 0, sizeof st);
+    rt_stats st = job.remote;
     for (int k = 0; k < nt; k++) {
         st.eye_rays += w[k].st.eye_rays;
         st.eye_hits += w[k].st.eye_hits;
@@ -1004,6 +1146,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         st.shadow_walks += w[k].st.shadow_walks;
         rt_ctx_free(&w[k].ctx);
         free(w[k].shadow_cache);
+        free(w[k].payload);
     }
     rt_job_lbufs_free(&job);
     st.render_seconds = rt_now() - job.t0;
@@ -1020,5 +1163,5 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     free(job.cover);
     free(job.cand_off);
     free(job.cand);
-    return RT_OK;
+    return rc;
 }

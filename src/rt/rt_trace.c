@@ -194,10 +194,8 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
     return 1;
 }
 
-/* empty-space jumps from top cells at distance >= RT_JUMP_MIN (rt_grid.dist): callgrind,
-   primary + shadow rays of cmp_embree, instructions M: dragon 203k 193.4 + 120.3 without,
-   185.4 + 124.8 from 2, 182.5 + 119.7 from 3, 184.2 + 118.4 from 4; bunny 150.3 + 99.5,
-   159.0 + 100.3, 151.1 + 99.0, 149.1 + 99.5 (a restart costs about three steps) */
+/* empty-space jumps from top cells at distance >= RT_JUMP_MIN (rt_grid.dist); a restart
+   costs about three steps, so shorter jumps do not pay (docs/bench/rt_tuning.md) */
 #define RT_JUMP_MIN 3
 
 /* the DDA state at ray parameter t0 inside box g (after an empty-space jump) */
@@ -268,9 +266,8 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
 
 /* one DDA step to the next cell: the axis with the smallest boundary parameter (ties: x, y, z);
    leaves the walk past t1 (nearest mode: lowered to the best hit) or the box. Registers
-   only, no array indexed by the axis: measured 2x faster on primary
-   rays than a branch-free table version (store-to-load latency), despite more mispredictions
-   on incoherent shadow rays. */
+   only, no array indexed by the axis: a table version waits on store-to-load latency
+   (docs/bench/rt_tuning.md). */
 #define RT_ADVANCE()                                                        \
     do {                                                                    \
         if (tx <= ty && tx <= tz) {                                         \

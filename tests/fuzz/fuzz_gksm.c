@@ -10,7 +10,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "gksm.h"
+#include "gks_mf_codec.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

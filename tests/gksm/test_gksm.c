@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "gksm.h"
+#include "gks_mf_codec.h"
 
 /* A metafile in memory as a FILE (tmpfile, so the reader can seek). */
 static FILE *mem_file(const char *data, size_t n)

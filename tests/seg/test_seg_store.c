@@ -11,7 +11,7 @@
 #include <string.h>
 #include <cmocka.h>
 #include "gks_alloc.h"
-#include "gks_seg.h"
+#include "gks_seg_store.h"
 
 static gks_seg_prim make_area(const Gpoint3 *pts, int n, const int *loops, int nl,
                               const gks_seg_bound *a)

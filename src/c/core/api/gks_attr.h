@@ -1,0 +1,50 @@
+/*
+ * gks_attr.h -- attribute resolution for one workstation (ISO 7942 4.4.4-4.4.8): each
+ * aspect comes from the current individual value or, by its aspect source flag, from
+ * the workstation's bundle of the current index (index 1 if that index is not defined);
+ * then the workstation realizes it (unsupported linetype -> 1, marker type -> 3, font ->
+ * 1, interior style -> HOLLOW, hatch style -> its first one, pattern index -> 1; widths
+ * and sizes clamped to the workstation's range; undefined colour index -> 1).
+ */
+#ifndef GKS_ATTR_H
+#define GKS_ATTR_H
+#include "gks_private.h"
+#include "ws_driver.h"
+#include "gks_text_layout.h"
+
+/* The workstation's output description table (never NULL). */
+const gks_wdt_output *gks_attr_wdt(const gks_ws *ws);
+
+/* The colour of index ind on ws (undefined index -> 1). */
+Grgb gks_attr_colour(const gks_ws *ws, int ind);
+/* The realized colour index (undefined -> 1). */
+int gks_attr_colr_ind(const gks_ws *ws, int ind);
+
+/* Realized bundles (INQUIRE ... REPRESENTATION with GINQ_REALIZED, and dispatch). */
+void gks_attr_realize_line(const gks_ws *ws, const Gline_bundle *in, Gline_bundle *out);
+void gks_attr_realize_marker(const gks_ws *ws, const Gmarker_bundle *in, Gmarker_bundle *out);
+void gks_attr_realize_text(const gks_ws *ws, const Gtext_bundle *in, Gtext_bundle *out);
+void gks_attr_realize_fill(const gks_ws *ws, const Gfill_bundle *in, Gfill_bundle *out);
+void gks_attr_realize_edge(const gks_ws *ws, const Gedge_bundle *in, Gedge_bundle *out);
+
+/* The effective (ASF-selected, realized) bundles of the current attributes on ws. */
+void gks_attr_line(const gks_ws *ws, const gks_cur_attrs *a, Gline_bundle *out);
+void gks_attr_marker(const gks_ws *ws, const gks_cur_attrs *a, Gmarker_bundle *out);
+void gks_attr_text(const gks_ws *ws, const gks_cur_attrs *a, Gtext_bundle *out);
+void gks_attr_fill(const gks_ws *ws, const gks_cur_attrs *a, Gfill_bundle *out);
+void gks_attr_edge(const gks_ws *ws, const gks_cur_attrs *a, Gedge_bundle *out);
+
+/* Resolved text layout attributes for ws (bundle part from gks_attr_text). */
+void gks_attr_text_layout(const gks_ws *ws, const gks_cur_attrs *a, gks_text_attrs *out,
+                          Grgb *colour);
+
+/* Fill a primitive's colour and attributes for ws for an area primitive: interior,
+ * pattern (*pattern receives an allocated colour array the caller frees with gks_free,
+ * NULL when not a pattern), edges. m maps WC3 to the primitive's final NDC3 (the
+ * normalization, then the segment transformation): the pattern reference point and box
+ * vectors go through it. Returns 0 or 300. */
+int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                       gks_prim *p, Grgb **pattern);
+void gks_attr_prim_line(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
+void gks_attr_prim_marker(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
+#endif

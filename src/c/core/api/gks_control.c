@@ -1,0 +1,348 @@
+/*
+ * gks_control.c -- control functions (ISO 7942 5.2): OPEN/CLOSE GKS, OPEN/CLOSE/ACTIVATE/
+ * DEACTIVATE/CLEAR/UPDATE WORKSTATION, REDRAW ALL SEGMENTS ON WORKSTATION, SET DEFERRAL
+ * STATE, MESSAGE, ESCAPE, EMERGENCY CLOSE GKS. Each entry point: state check, argument
+ * checks in the standard's order (error -> report, no other effect), then the work.
+ */
+#include "gks_alloc.h"
+#include "gks_binding.h"
+#include "gks_error.h"
+#include "gks_mf_record.h"
+#include "gks_seg_store.h"
+#include "gks_segment.h"
+#include "gks_state.h"
+#include "gks_ws.h"
+#include <stdio.h>
+#include <string.h>
+
+#define MAX_CONN_LEN 4096
+
+static void init_state_list(gks_state_list *sl)
+{
+    gks_attr_init(&sl->attrs);
+    sl->attrs.line_colr_ind = 1;
+    sl->attrs.fill_colr_ind = 1;
+    for (int k = 0; k < 2; k++) {
+        sl->attrs.area_props[k] = (Garea_props){ 1, 1, 0, { 1, 1, 1 }, 1, 0, 1 };
+        sl->attrs.refl_eq[k] = GREFL_NONE;
+    }
+    sl->attrs.light_mask = 0;
+    for (int i = 0; i <= GKS_MAX_NORM_TRAN; i++) {
+        sl->tran_pri[i] = i; /* 0 highest, then ascending numbers (ISO 7942 6.4) */
+        sl->tran[i].win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+        sl->tran[i].vp = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+    }
+    sl->cur_tnr = 0;
+    sl->clip_ind = GIND_CLIP;
+}
+
+/* Shared by gopen_gks and gks_open_gks_unit. err_name: what ERROR HANDLING receives;
+ * open_file: whether C opens err_name as the error file. */
+static void open_gks(const char *err_name, int open_file)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_OPKS))
+        return;
+    FILE *fp = NULL;
+    if (open_file && err_name && *err_name) {
+        fp = fopen(err_name, "a");
+        if (!fp)
+            GKS_FAIL(200, GFN_OPKS);
+    }
+    gks_state_list *sl = gks_calloc_array(1, sizeof *sl);
+    gks_seg_store *segs = gks_calloc_array(1, sizeof *segs);
+    char *name = (err_name && *err_name) ? gks_strdup(err_name) : NULL;
+    if (!sl || !segs || (err_name && *err_name && !name)) {
+        gks_free(sl);
+        gks_free(segs);
+        gks_free(name);
+        if (fp)
+            fclose(fp);
+        GKS_FAIL(300, GFN_OPKS);
+    }
+    init_state_list(sl);
+    gks_seg_store_init(segs);
+    sl->segs = segs;
+    sl->err_file = name;
+    c->sl = sl;
+    c->err.fp = fp;
+    c->op_st = GST_GKOP;
+}
+
+GKS_API void gopen_gks(const char *err_file, size_t mem_unit)
+{
+    (void)mem_unit; /* memory is allocated on demand */
+    open_gks(err_file, 1);
+}
+
+GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit)
+{
+    char name[24];
+    (void)mem_unit;
+    snprintf(name, sizeof name, "%d", err_unit);
+    open_gks(name, 0);
+}
+
+static void close_gks(gks_context *c)
+{
+    if (c->err.fp)
+        fclose(c->err.fp);
+    c->err.fp = NULL;
+    gks_free(c->sl->err_file);
+    gks_seg_store_free(c->sl->segs);
+    gks_free(c->sl->segs);
+    gks_free(c->sl);
+    c->sl = NULL;
+    c->op_st = GST_GKCL;
+}
+
+GKS_API void gclose_gks(void)
+{
+    if (gks_check_state(GFN_CLKS))
+        return;
+    close_gks(gks_ctx());
+}
+
+GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_OPWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_OPWK);
+    if (gks_ws_lookup(ws_id))
+        GKS_FAIL(24, GFN_OPWK);
+    if (conn_id && strnlen(conn_id, MAX_CONN_LEN + 1) > MAX_CONN_LEN)
+        GKS_FAIL(21, GFN_OPWK);
+    if (ws_type <= 0)
+        GKS_FAIL(22, GFN_OPWK);
+    const gks_ws_driver *drv = gks_driver_for_type(ws_type);
+    if (!drv)
+        GKS_FAIL(23, GFN_OPWK);
+    if (c->sl->n_open >= c->desc->max_nums.simult_open)
+        GKS_FAIL(42, GFN_OPWK);
+    if (drv->desc->cat == GCAT_WISS && gks_wiss())
+        GKS_FAIL(28, GFN_OPWK);
+    gks_ws *ws = gks_ws_create(ws_id, conn_id, drv);
+    if (!ws)
+        GKS_FAIL(300, GFN_OPWK);
+    int err = drv->open ? drv->open(ws) : 0;
+    if (err) {
+        gks_ws_destroy(ws);
+        GKS_FAIL(err, GFN_OPWK);
+    }
+    c->ws[c->sl->n_open] = ws;
+    c->sl->open_ws[c->sl->n_open++] = ws_id;
+    if (c->op_st == GST_GKOP)
+        c->op_st = GST_WSOP;
+}
+
+GKS_API void gclose_ws(Gint ws_id)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_CLWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_CLWK, ws_id, 0);
+    if (!ws)
+        return;
+    if (ws->state == GWS_ACTIVE)
+        GKS_FAIL(29, GFN_CLWK);
+    int err = ws->drv->update ? ws->drv->update(ws) : 0;
+    if (ws->drv->close)
+        ws->drv->close(ws);
+    gks_segment_ws_closed(ws_id);
+    gks_state_list *sl = c->sl;
+    for (int i = 0; i < sl->n_open; i++) {
+        if (sl->open_ws[i] != ws_id)
+            continue;
+        memmove(&sl->open_ws[i], &sl->open_ws[i + 1], (size_t)(sl->n_open - i - 1) * sizeof sl->open_ws[0]);
+        memmove(&c->ws[i], &c->ws[i + 1], (size_t)(sl->n_open - i - 1) * sizeof c->ws[0]);
+        sl->n_open--;
+        c->ws[sl->n_open] = NULL;
+        break;
+    }
+    gks_ws_destroy(ws);
+    if (sl->n_open == 0)
+        c->op_st = GST_GKOP;
+    if (err) /* the workstation is closed; the failed final write is still reported */
+        gks_error_report(err, GFN_CLWK);
+}
+
+GKS_API void gactivate_ws(Gint ws_id)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_ACWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_ACWK, ws_id, 0);
+    if (!ws)
+        return;
+    if (ws->state == GWS_ACTIVE)
+        GKS_FAIL(29, GFN_ACWK);
+    if (ws->drv->desc->cat == GCAT_MI)
+        GKS_FAIL(33, GFN_ACWK);
+    if (ws->drv->desc->cat == GCAT_IN)
+        GKS_FAIL(35, GFN_ACWK);
+    if (c->sl->n_active >= c->desc->max_nums.simult_active)
+        GKS_FAIL(43, GFN_ACWK);
+    ws->state = GWS_ACTIVE;
+    c->sl->active_ws[c->sl->n_active++] = ws_id;
+    c->op_st = GST_WSAC;
+    gks_mf_recount();
+}
+
+GKS_API void gdeactivate_ws(Gint ws_id)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_DAWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_DAWK);
+    gks_ws *ws = gks_ws_lookup(ws_id);
+    if (!ws || ws->state != GWS_ACTIVE)
+        GKS_FAIL(30, GFN_DAWK);
+    ws->state = GWS_INACTIVE;
+    gks_state_list *sl = c->sl;
+    for (int i = 0; i < sl->n_active; i++) {
+        if (sl->active_ws[i] != ws_id)
+            continue;
+        memmove(&sl->active_ws[i], &sl->active_ws[i + 1], (size_t)(sl->n_active - i - 1) * sizeof sl->active_ws[0]);
+        sl->n_active--;
+        break;
+    }
+    if (sl->n_active == 0)
+        c->op_st = GST_WSOP;
+    gks_mf_recount();
+}
+
+GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
+{
+    if (gks_check_state(GFN_CLRWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_CLRWK, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT);
+    if (!ws)
+        return;
+    if (ctrl_flag != GFLAG_COND && ctrl_flag != GFLAG_ALWAYS)
+        GKS_FAIL(2000, GFN_CLRWK);
+    gks_mf_ws_rec(GFN_CLRWK, ws_id, GKSM_ITEM_CLEAR, "i", ctrl_flag);
+    if (ctrl_flag == GFLAG_COND && ws->disp_empty == GDISP_EMPTY &&
+        ws->tran_upd_st == GUPD_NOT_PEND)
+        return;
+    /* ISO 7942 CLEAR WORKSTATION: the picture is finished, the surface cleared, and the
+     * segments stored on the workstation are deleted from it (and deleted where stored
+     * nowhere else). */
+    int err = ws->drv->update ? ws->drv->update(ws) : 0;
+    gks_segment_ws_closed(ws_id);
+    if (!err)
+        err = gks_ws_new_frame(ws);
+    if (err)
+        gks_error_report(err, GFN_CLRWK);
+}
+
+GKS_API void gredraw_all_seg_ws(Gint ws_id)
+{
+    if (gks_check_state(GFN_RSGWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_RSGWK, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    gks_mf_ws_rec(GFN_RSGWK, ws_id, GKSM_ITEM_REDRAW, "");
+    /* ISO 7942: apply a pending workstation transformation, clear the surface, redraw
+     * all visible segments stored on the workstation. */
+    int err = gks_ws_regenerate(ws);
+    if (err)
+        gks_error_report(err, GFN_RSGWK);
+}
+
+GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
+{
+    if (gks_check_state(GFN_UWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_UWK, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (upd_regen_flag != GFLAG_POSTPONE && upd_regen_flag != GFLAG_PERFORM)
+        GKS_FAIL(2000, GFN_UWK);
+    gks_mf_ws_rec(GFN_UWK, ws_id, GKSM_ITEM_UPDATE, "i", upd_regen_flag);
+    int err = 0;
+    if (upd_regen_flag == GFLAG_PERFORM && ws->new_frame == GNEW_YES)
+        err = gks_ws_regenerate(ws);
+    if (!err && ws->drv->update)
+        err = ws->drv->update(ws);
+    if (err)
+        gks_error_report(err, GFN_UWK);
+}
+
+GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mode)
+{
+    if (gks_check_state(GFN_SDS))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SDS, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if ((unsigned)defer_mode > GDEFER_ASTI || (unsigned)irg_mode > GIRG_ALLOWED)
+        GKS_FAIL(2000, GFN_SDS);
+    ws->defer_mode = defer_mode;
+    ws->irg_mode = irg_mode;
+    gks_mf_ws_rec(GFN_SDS, ws_id, GKSM_ITEM_DEFER, "ii", defer_mode, irg_mode);
+    if (irg_mode == GIRG_ALLOWED && ws->new_frame == GNEW_YES) {
+        int err = gks_ws_regenerate(ws);
+        if (err)
+            gks_error_report(err, GFN_SDS);
+    }
+}
+
+GKS_API void gmessage(Gint ws_id, const char *msg)
+{
+    if (gks_check_state(GFN_MSG))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_MSG, ws_id, GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    gks_mf_ws_rec(GFN_MSG, ws_id, GKSM_ITEM_MESSAGE, "s", msg);
+    int err = ws->drv->message ? ws->drv->message(ws, msg ? msg : "") : 0;
+    if (err)
+        gks_error_report(err, GFN_MSG);
+}
+
+GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    if (gks_check_state(GFN_ESC))
+        return;
+    /* Identifiers this implementation knows: the driver checks the rest of the record. */
+    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
+        GKS_FAIL(180, GFN_ESC);
+    if (!in || in->num_ints < 1 || !in->ints)
+        GKS_FAIL(182, GFN_ESC);
+    if (func_id == GESC_SET_FILE_NAME && (!in->str || in->str_len == 0))
+        GKS_FAIL(182, GFN_ESC);
+    gks_ws *ws = gks_ws_lookup(in->ints[0]);
+    if (!ws)
+        GKS_FAIL(182, GFN_ESC);
+    if (gks_mf_escape(GFN_ESC, ws, func_id, in))
+        return; /* addressed to an MO workstation: recorded */
+    int err = ws->drv->escape ? ws->drv->escape(ws, func_id, in, out) : 180;
+    if (err)
+        gks_error_report(err, GFN_ESC);
+}
+
+GKS_API void gemergency_close_gks(void)
+{
+    gks_context *c = gks_ctx();
+    if (c->op_st == GST_GKCL)
+        return;
+    gks_state_list *sl = c->sl;
+    while (sl->n_open > 0) {
+        gks_ws *ws = c->ws[--sl->n_open];
+        if (ws->drv->update)
+            ws->drv->update(ws);
+        if (ws->drv->close)
+            ws->drv->close(ws);
+        gks_ws_destroy(ws);
+        c->ws[sl->n_open] = NULL;
+    }
+    sl->n_active = 0;
+    close_gks(c);
+}

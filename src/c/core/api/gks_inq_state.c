@@ -1,0 +1,261 @@
+/*
+ * gks_inq_state.c -- inquiry functions. They never call ERROR HANDLING: the error
+ * indicator receives the error number (state errors as the function's class requires:
+ * 8 for the GKS state list, 7 for workstation state lists, 0 for description tables that
+ * are available in every state except GKCL (8)), and nothing else is written on error.
+ */
+#include "gks_error.h"
+#include "gks_state.h"
+#include "gks_ws.h"
+#include <string.h>
+
+/* Copy list[start..] into out (capacity cap). Errors: 2002 when start is outside. */
+static int copy_list(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
+{
+    *len = n;
+    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
+        return 2002;
+    int k = 0;
+    for (int i = start; i < n && k < cap && out && out->ints; i++)
+        out->ints[k++] = list[i];
+    if (out)
+        out->num_ints = k;
+    return 0;
+}
+
+gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
+{
+    *err = gks_inq_state(GKS_S_WSOPEN);
+    if (*err)
+        return NULL;
+    if (ws_id < 0) {
+        *err = 20;
+        return NULL;
+    }
+    gks_ws *ws = gks_ws_lookup(ws_id);
+    if (!ws)
+        *err = 25;
+    return ws;
+}
+
+/* Workstation description table of a type: error 8, 22, 23. */
+static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
+{
+    *err = gks_inq_state(GKS_S_OPEN);
+    if (*err)
+        return NULL;
+    if (ws_type <= 0) {
+        *err = 22;
+        return NULL;
+    }
+    const gks_ws_driver *d = gks_driver_for_type(ws_type);
+    if (!d) {
+        *err = 23;
+        return NULL;
+    }
+    return d->desc;
+}
+
+GKS_API void ginq_op_st(Gop_st *op_st)
+{
+    if (op_st)
+        *op_st = gks_ctx()->op_st;
+}
+
+GKS_API void ginq_level_gks(Gint *err_ind, Glevel *level)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (!*err_ind)
+        *level = gks_ctx()->desc->level;
+}
+
+GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                      Gint_list *ws_types, Gint *length_list)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_desc_table *d = gks_ctx()->desc;
+    int types[16];
+    int n = d->n_ws_types < 16 ? d->n_ws_types : 16;
+    for (int i = 0; i < n; i++)
+        types[i] = d->ws_types[i]->desc->type;
+    *err_ind = copy_list(types, n, num_elems_appl_list, start_pos, ws_types, length_list);
+}
+
+GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (!*err_ind)
+        *ws_max_num = gks_ctx()->desc->max_nums;
+}
+
+GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (!*err_ind)
+        *max_norm_tran_num = gks_ctx()->desc->max_norm_tran;
+}
+
+GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                               Gint_list *open_ws, Gint *length_list)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_state_list *sl = gks_ctx()->sl;
+    *err_ind = copy_list(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
+                         length_list);
+}
+
+GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                 Gint_list *active_ws, Gint *length_list)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_state_list *sl = gks_ctx()->sl;
+    *err_ind = copy_list(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
+                         active_ws, length_list);
+}
+
+GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char *conn_id,
+                               size_t *conn_len, Gint *ws_type)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    size_t len = strlen(ws->conn_id);
+    if (conn_len)
+        *conn_len = len;
+    if (conn_id && conn_size > 0) {
+        size_t k = len < conn_size - 1 ? len : conn_size - 1;
+        memcpy(conn_id, ws->conn_id, k);
+        conn_id[k] = '\0';
+    }
+    if (ws_type)
+        *ws_type = ws->drv->desc->type;
+}
+
+GKS_API void ginq_ws_st(Gint ws_id, Gint *err_ind, Gws_st *ws_st)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (ws)
+        *ws_st = ws->state;
+}
+
+GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer_mode,
+                                   Girg_mode *irg_mode, Gdisp_space_empty *disp_empty,
+                                   Gnew_frame_nec_upd *new_frame)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    *defer_mode = ws->defer_mode;
+    *irg_mode = ws->irg_mode;
+    *disp_empty = ws->disp_empty;
+    *new_frame = ws->new_frame;
+}
+
+GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
+{
+    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    if (d)
+        *cat = d->cat;
+}
+
+GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
+{
+    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    if (!d)
+        return;
+    if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {
+        *err_ind = 39;
+        return;
+    }
+    *ws_class = d->cls;
+}
+
+GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size)
+{
+    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    if (!d)
+        return;
+    if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {
+        *err_ind = 31;
+        return;
+    }
+    disp_size->dc_units = d->dc_units;
+    disp_size->size_dc = (Gfloat_size){ d->dc_x, d->dc_y };
+    disp_size->size_raster = (Gint_size){ d->raster_x, d->raster_y };
+}
+
+GKS_API void ginq_cur_norm_tran_num(Gint *err_ind, Gint *norm_tran_num)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (!*err_ind)
+        *norm_tran_num = gks_ctx()->sl->cur_tnr;
+}
+
+GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    if (num < 0 || num > GKS_MAX_NORM_TRAN) {
+        *err_ind = 50;
+        return;
+    }
+    const gks_norm_tran *t = &gks_ctx()->sl->tran[num];
+    norm_tran->win = (Glimit){ t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max };
+    norm_tran->vp = (Glimit){ t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max };
+}
+
+GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_state_list *sl = gks_ctx()->sl;
+    const Glimit3 *v = &sl->tran[sl->cur_tnr].vp;
+    clip->clip_ind = sl->clip_ind;
+    clip->clip_rect = (Glimit){ v->x_min, v->x_max, v->y_min, v->y_max };
+}
+
+GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
+                           Gcolr_rep *colr_rep)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    if (ws->drv->desc->cat == GCAT_MI) { *err_ind = 33; return; }
+    if (colr_ind < 0) { *err_ind = 93; return; }
+    if (type != GINQ_SET && type != GINQ_REALIZED) { *err_ind = 2000; return; }
+    if (colr_ind >= ws->drv->desc->n_colr || !ws->colr_defined[colr_ind]) {
+        *err_ind = 94;
+        return;
+    }
+    Grgb c = ws->colr[colr_ind];
+    if (type == GINQ_REALIZED) { /* 8 bits per component in the PNG */
+        c.red = (int)(c.red * 255 + 0.5) / 255.0;
+        c.green = (int)(c.green * 255 + 0.5) / 255.0;
+        c.blue = (int)(c.blue * 255 + 0.5) / 255.0;
+    }
+    colr_rep->rgb = c;
+}
+
+GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
+                          Glimit *req_ws_win, Glimit *cur_ws_win,
+                          Glimit *req_ws_vp, Glimit *cur_ws_vp)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+#define XY(l) ((Glimit){ (l).x_min, (l).x_max, (l).y_min, (l).y_max })
+    *ws_tran_upd_st = ws->tran_upd_st;
+    *req_ws_win = XY(ws->req_win);
+    *cur_ws_win = XY(ws->cur_win);
+    *req_ws_vp = XY(ws->req_vp);
+    *cur_ws_vp = XY(ws->cur_vp);
+#undef XY
+}

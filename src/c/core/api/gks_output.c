@@ -1,0 +1,1270 @@
+/*
+ * gks_output.c -- output primitives (ISO 7942 5.3 and their GKS-3D forms): POLYLINE (3),
+ * POLYMARKER (3), TEXT (3), FILL AREA (3), FILL AREA SET (3), CELL ARRAY (3),
+ * GENERALIZED DRAWING PRIMITIVE (3); SET COLOUR REPRESENTATION; the normalization and
+ * workstation transformation settings.
+ *
+ * Each primitive: state check, argument checks (standard order), then the
+ * workstation-independent stages: WC3 -> NDC3 by the current normalization
+ * transformation, clipping at the viewport 3 when the clipping indicator is on (in the
+ * core, gks_xform), then for each active workstation the attributes are resolved
+ * (gks_attr.h) and the driver gets the primitive.
+ * Non-finite coordinates never reach a driver: a polyline is broken at such a point, a
+ * marker at such a point is dropped, an area or cell array containing one is not drawn
+ * (GKS defines no error for them). Markers are clipped by their centres; TEXT becomes
+ * polyline strokes (gks_text_layout.c) generated per workstation (the text bundle may differ)
+ * and clipped like polylines. CELL ARRAY is the one primitive clipped by the driver
+ * (prim.clip, prim.clip_box).
+ */
+#include "gks_alloc.h"
+#include "gks_attr.h"
+#include "gks_error.h"
+#include "gks_export.h"
+#include "gks_mf_record.h"
+#include "gks_seg_store.h"
+#include "gks_segment.h"
+#include "gks_state.h"
+#include "gks_text_layout.h"
+#include "gks_ws.h"
+#include "gks_xform.h"
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+/* ------------------------------------------------------------------ normalization */
+typedef struct {
+    double m[3][4];            /* source -> NDC3 after the segment transformation */
+    double n[3][4];            /* WC3 -> NDC3 (normalization only; what segments store) */
+    double pn[3][4];           /* source -> NDC3 before the segment transformation: n, or
+                                  the identity for INTERPRET ITEM's NDC3 points */
+    double pat[3][4];          /* WC3 -> final NDC3 for pattern boxes */
+    gks_xform_clip clip;       /* in NDC3 (w = 1) */
+    int clip_on;
+    double box[6];             /* the clipping volume: the viewport 3 when created */
+    gks_segment *seg;          /* the open segment (current state only), else NULL */
+} norm_ctx;
+
+/* The open segment, or NULL. */
+static gks_segment *open_segment(void)
+{
+    const gks_state_list *sl = gks_ctx()->sl;
+    return sl->open_seg ? gks_seg_find(sl->segs, sl->open_seg) : NULL;
+}
+
+/* A context mapping by m and clipping at box (when clip_on). 0 or -1 (degenerate). */
+static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], int clip_on)
+{
+    memcpy(nc->m, m, sizeof nc->m);
+    memcpy(nc->n, m, sizeof nc->n);
+    memcpy(nc->pn, m, sizeof nc->pn);
+    memcpy(nc->pat, m, sizeof nc->pat);
+    memcpy(nc->box, box, sizeof nc->box);
+    nc->clip_on = clip_on;
+    nc->seg = NULL;
+    gks_xform_clip_init(&nc->clip);
+    if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
+        return -1;
+    return 0;
+}
+
+/* The current state's context: WC3 -> NDC3 by the current normalization transformation,
+ * then the open segment's transformation (if a segment is open), clipping at the current
+ * viewport 3 when the clipping indicator is on. While INTERPRET ITEM performs a recorded
+ * primitive (context norm_override, gks_mf_record.h), the recorded normalization and clipping
+ * volume replace the current ones, and NDC3 points enter through the identity.
+ * 0, or -1 if degenerate. */
+static int norm_setup(norm_ctx *nc)
+{
+    static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
+    const gks_context *c = gks_ctx();
+    const gks_state_list *sl = c->sl;
+    const gks_norm_override *ov = c->norm_override;
+    double n[3][4], box[6];
+    int clip_on;
+    if (ov) {
+        memcpy(n, ov->norm, sizeof n);
+        memcpy(box, ov->box, sizeof box);
+        clip_on = ov->clip_on;
+    } else {
+        if (gks_cur_norm_matrix(n))
+            return -1;
+        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+        clip_on = sl->clip_ind == GIND_CLIP;
+    }
+    const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
+    gks_segment *seg = open_segment();
+    if (norm_from(nc, pm, box, clip_on))
+        return -1;
+    nc->seg = seg;
+    memcpy(nc->n, n, sizeof nc->n);
+    memcpy(nc->pat, n, sizeof nc->pat);
+    if (seg) {
+        gks_xform_mat34_multiply(seg->tran, pm, nc->m);
+        gks_xform_mat34_multiply(seg->tran, n, nc->pat);
+    }
+    return 0;
+}
+
+/* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record it. */
+static void mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
+{
+    if (!gks_mf_on())
+        return;
+    p.pn = (const double (*)[4])nc->pn;
+    p.norm = (const double (*)[4])nc->n;
+    p.box = nc->box;
+    p.clip_on = nc->clip_on;
+    gks_mf_prim_write(fctid, &p);
+}
+
+/* ------------------------------------------------------------------ targets */
+/* Where a primitive goes: the active workstations with the current attributes, or one
+ * workstation with a segment's stored binding (regeneration). */
+typedef struct {
+    const gks_cur_attrs *a;
+    double pat_m[3][4];        /* WC3 -> final NDC3, for pattern boxes */
+    gks_ws *only;              /* regeneration target; NULL: the active workstations */
+    int k, done;
+} target;
+
+static void target_current(target *t, const norm_ctx *nc)
+{
+    const gks_segment *seg = nc->seg;
+    memset(t, 0, sizeof *t);
+    t->a = &gks_ctx()->sl->attrs;
+    memcpy(t->pat_m, nc->pat, sizeof t->pat_m);
+    t->done = seg && !seg->vis; /* an invisible open segment: stored, not drawn */
+}
+
+/* WC3 -> homogeneous NDC3; 1 if finite. */
+static int to_ndc(const norm_ctx *nc, const double wc[3], double h[4])
+{
+    gks_xform_mat34_point(nc->m, wc, h);
+    h[3] = 1.0;
+    return isfinite(h[0]) && isfinite(h[1]) && isfinite(h[2]);
+}
+
+/* A point list in WC: 2-D (z = 0), 3-D, or double triples. */
+typedef struct {
+    const Gpoint *p2;
+    const Gpoint3 *p3;
+    const double (*d3)[3];
+} pt_src;
+
+static void src_get(const pt_src *s, size_t i, double o[3])
+{
+    if (s->p2) {
+        o[0] = s->p2[i].x; o[1] = s->p2[i].y; o[2] = 0.0;
+    } else if (s->p3) {
+        o[0] = s->p3[i].x; o[1] = s->p3[i].y; o[2] = s->p3[i].z;
+    } else {
+        o[0] = s->d3[i][0]; o[1] = s->d3[i][1]; o[2] = s->d3[i][2];
+    }
+}
+
+/* ------------------------------------------------------------------ growing piece lists */
+typedef struct {
+    Gpoint3 *pts;
+    size_t n, cap;
+    int *len;                  /* points of each piece */
+    size_t np, capp;
+} pieces;
+
+static void pieces_free(pieces *b)
+{
+    gks_free(b->pts);
+    gks_free(b->len);
+    memset(b, 0, sizeof *b);
+}
+
+static int push_pt(pieces *b, const double h[4])
+{
+    if (b->n == b->cap) {
+        size_t cap = b->cap ? 2 * b->cap : 256;
+        Gpoint3 *p = gks_realloc_array(b->pts, cap, sizeof *p);
+        if (!p)
+            return 300;
+        b->pts = p;
+        b->cap = cap;
+    }
+    if (b->np == 0 || b->len[b->np - 1] == INT32_MAX)
+        return 300;
+    b->pts[b->n++] = (Gpoint3){ h[0], h[1], h[2] };
+    b->len[b->np - 1]++;
+    return 0;
+}
+
+static int new_piece(pieces *b)
+{
+    if (b->np == b->capp) {
+        size_t cap = b->capp ? 2 * b->capp : 16;
+        int *l = gks_realloc_array(b->len, cap, sizeof *l);
+        if (!l)
+            return 300;
+        b->len = l;
+        b->capp = cap;
+    }
+    b->len[b->np++] = 0;
+    return 0;
+}
+
+/* Clip the segment a-b to the viewport box (clipping on) plane by plane, each
+ * intersection computed from the segment already shortened by the previous planes and
+ * the clipped coordinate set exactly on the plane (so a segment from -1e30 to 1e30
+ * keeps its visible part, which a single parametric interval cannot resolve).
+ * Returns 1 if a part survives; *moved_a / *moved_b say whether an end was moved. */
+static int clip_segment(const norm_ctx *nc, double a[3], double b[3], int *moved_a,
+                        int *moved_b)
+{
+    *moved_a = *moved_b = 0;
+    if (!nc->clip_on)
+        return 1;
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side < 2; side++) {
+            double lim = nc->box[2 * axis + side];
+            double sg = side ? -1.0 : 1.0; /* inside: sg * (x - lim) >= 0 */
+            double da = sg * (a[axis] - lim), db = sg * (b[axis] - lim);
+            if (da < 0 && db < 0)
+                return 0;
+            if (da >= 0 && db >= 0)
+                continue;
+            double t = da / (da - db);
+            double *moved = da < 0 ? a : b;
+            const double *p = da < 0 ? a : b, *q = da < 0 ? b : a;
+            double tt = da < 0 ? t : 1.0 - t; /* from p towards q */
+            double r[3];
+            for (int k = 0; k < 3; k++)
+                r[k] = p[k] + tt * (q[k] - p[k]);
+            r[axis] = lim;
+            if (!isfinite(r[0]) || !isfinite(r[1]) || !isfinite(r[2]))
+                return 0; /* overflow near DBL_MAX: treated as not visible */
+            memcpy(moved, r, sizeof r);
+            if (da < 0)
+                *moved_a = 1;
+            else
+                *moved_b = 1;
+        }
+    return 1;
+}
+
+/* Whether the point h lies in the clipping region (closed box). */
+static int point_visible(const norm_ctx *nc, const double h[3])
+{
+    if (!nc->clip_on)
+        return 1;
+    for (int k = 0; k < 3; k++)
+        if (!(h[k] >= nc->box[2 * k] && h[k] <= nc->box[2 * k + 1]))
+            return 0;
+    return 1;
+}
+
+/* Clip the polyline s[0..n-1] (WC3) into b: normalized, clipped pieces of >= 2 points.
+ * A segment touching a non-finite point is dropped (the polyline is broken there).
+ * Returns 0 or 300. */
+static int clip_polyline(const norm_ctx *nc, const pt_src *s, size_t n, pieces *b)
+{
+    double prev[4] = { 0 }, cur[4], wc[3];
+    int prev_ok = 0, open = 0;
+    for (size_t i = 0; i < n; i++) {
+        src_get(s, i, wc);
+        int ok = to_ndc(nc, wc, cur);
+        if (ok && prev_ok) {
+            double a[4] = { prev[0], prev[1], prev[2], 1 }, e[4] = { cur[0], cur[1], cur[2], 1 };
+            int ma, mb;
+            int vis = clip_segment(nc, a, e, &ma, &mb);
+            if (vis) {
+                if (!(open && !ma)) {
+                    if (new_piece(b) || push_pt(b, a))
+                        return 300;
+                }
+                if (push_pt(b, e))
+                    return 300;
+            }
+            open = vis && !mb;
+        } else {
+            open = 0;
+        }
+        if (ok)
+            memcpy(prev, cur, sizeof prev);
+        prev_ok = ok;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ dispatch */
+/* Attributes every primitive carries, independent of the workstation. */
+static void prim_common(gks_prim *p, const gks_cur_attrs *a)
+{
+    p->view_ind = a->view_ind;
+    p->area_props[0] = a->area_props[0];
+    p->area_props[1] = a->area_props[1];
+    p->refl_eq[0] = a->refl_eq[0];
+    p->refl_eq[1] = a->refl_eq[1];
+    p->light_mask = a->light_mask;
+}
+
+/* Test hook (exported for the tests only): every primitive a driver receives is first
+ * passed to hook (NULL = none). */
+GKS_TEST_API void gks_test_set_prim_hook(gks_prim_hook hook, void *ctx)
+{
+    gks_ctx()->prim_hook = hook;
+    gks_ctx()->prim_hook_ctx = ctx;
+}
+
+static int send(gks_ws *ws, const gks_prim *p)
+{
+    gks_context *c = gks_ctx();
+    if (c->prim_hook)
+        c->prim_hook(c->prim_hook_ctx, ws->id, p);
+    if (!ws->drv->primitive)
+        return 0;
+    int err = ws->drv->primitive(ws, p);
+    if (!err)
+        ws->disp_empty = GDISP_NOT_EMPTY;
+    return err;
+}
+
+/* The next workstation of the target, or NULL when there is none left. */
+static gks_ws *next_ws(target *t)
+{
+    if (t->done)
+        return NULL;
+    if (t->only) {
+        t->done = 1;
+        return t->only;
+    }
+    gks_context *c = gks_ctx();
+    while (t->k < c->sl->n_open) {
+        gks_ws *ws = c->ws[t->k++];
+        if (ws->state == GWS_ACTIVE)
+            return ws;
+    }
+    t->done = 1;
+    return NULL;
+}
+
+/* Send the pieces as polylines (attributes already in p) to ws. */
+static int send_pieces(gks_ws *ws, gks_prim *p, const pieces *b)
+{
+    size_t off = 0;
+    for (size_t k = 0; k < b->np; k++) {
+        p->n_points = b->len[k];
+        p->pts = b->pts + off;
+        p->loop_counts = &p->n_points;
+        off += (size_t)b->len[k];
+        if (p->n_points < 2)
+            continue;
+        int err = send(ws, p);
+        if (err)
+            return err;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ segment recording */
+/* Stores a primitive into the open segment (if any): geometry mapped to NDC3 by the
+ * normalization only (nc->n), unclipped, with the current attributes, normalization and
+ * clipping volume. Returns 0, 300 or 301. */
+static int record(const norm_ctx *nc, gks_seg_prim *sp, const pt_src *src, size_t n)
+{
+    gks_segment *seg = nc->seg;
+    if (!seg)
+        return 0;
+    gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
+    Gpoint3 *pts = gks_alloc_array(n ? n : 1, sizeof *pts);
+    int err = 0;
+    if (!bound || !pts) {
+        err = 300;
+        goto done;
+    }
+    memset(bound, 0, sizeof *bound); /* padding: snapshots are compared bytewise */
+    bound->attrs = gks_ctx()->sl->attrs;
+    memcpy(bound->norm, nc->n, sizeof bound->norm);
+    for (size_t i = 0; i < n; i++) {
+        double wc[3], o[3];
+        src_get(src, i, wc);
+        if (sp->kind == GKS_SEG_TEXT) /* TEXT keeps WC3 (position, two vectors) */
+            memcpy(o, wc, sizeof o);
+        else
+            gks_xform_mat34_point(nc->pn, wc, o);
+        pts[i] = (Gpoint3){ o[0], o[1], o[2] };
+    }
+    sp->pts = pts;
+    sp->n_points = (int)n;
+    sp->bound = bound;
+    sp->clip = nc->clip_on;
+    memcpy(sp->clip_box, nc->box, sizeof sp->clip_box);
+    err = gks_seg_append(seg, sp);
+done:
+    gks_free(bound);
+    gks_free(pts);
+    return err;
+}
+
+/* ------------------------------------------------------------------ POLYLINE */
+static int emit_polyline(const norm_ctx *nc, const pt_src *s, size_t n, target *t)
+{
+    pieces b = { 0 };
+    int err = clip_polyline(nc, s, n, &b);
+    gks_ws *ws;
+    while (!err && b.np > 0 && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p, t->a);
+        gks_attr_prim_line(ws, t->a, &p);
+        err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    return err;
+}
+
+static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 2 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    pt_src s = { p2, p3, NULL };
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
+    int err = record(&nc, &sp, &s, (size_t)n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polyline(&nc, &s, (size_t)n, &t);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gpolyline(const Gpoint_list *l)
+{
+    polyline_any(GFN_PL, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gpolyline3(const Gpoint_list3 *l)
+{
+    polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+}
+
+/* ------------------------------------------------------------------ POLYMARKER */
+static int emit_polymarker(const norm_ctx *nc, const pt_src *s, size_t n, target *t)
+{
+    pieces b = { 0 };
+    int err = new_piece(&b);
+    for (size_t i = 0; i < n && !err; i++) {
+        double wc[3], h[4];
+        src_get(s, i, wc);
+        if (!to_ndc(nc, wc, h) || !point_visible(nc, h))
+            continue; /* centre not finite or outside the clipping region */
+        err = push_pt(&b, h);
+    }
+    gks_ws *ws;
+    while (!err && b.n > 0 && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_POLYMARKER, .n_loops = 1, .n_points = (int)b.n,
+                       .pts = b.pts };
+        p.loop_counts = &p.n_points;
+        prim_common(&p, t->a);
+        gks_attr_prim_marker(ws, t->a, &p);
+        err = send(ws, &p);
+    }
+    pieces_free(&b);
+    return err;
+}
+
+static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 1 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    pt_src s = { p2, p3, NULL };
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_POLYMARKER3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
+    int err = record(&nc, &sp, &s, (size_t)n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polymarker(&nc, &s, (size_t)n, &t);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gpolymarker(const Gpoint_list *l)
+{
+    polymarker_any(GFN_PM, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gpolymarker3(const Gpoint_list3 *l)
+{
+    polymarker_any(GFN_PM3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+}
+
+/* ------------------------------------------------------------------ TEXT */
+typedef struct {
+    const norm_ctx *nc;
+    pieces *b;
+} stroke_ctx;
+
+static int stroke_emit(void *ctx, size_t n, const double (*pts)[3])
+{
+    stroke_ctx *sc = ctx;
+    pt_src s = { NULL, NULL, pts };
+    return clip_polyline(sc->nc, &s, n, sc->b);
+}
+
+/* TEXT at pos with direction vectors d0, d1 (WC3; nc maps WC3 to the final NDC3). */
+static int emit_text(const norm_ctx *nc, const double pos[3], const double d0[3],
+                     const double d1[3], const char *str, target *t)
+{
+    gks_text_frame f;
+    if (!isfinite(pos[0]) || !isfinite(pos[1]) || !isfinite(pos[2]) ||
+        gks_text_frame3(pos, d0, d1, &f))
+        return 0; /* nothing to draw */
+    pieces b = { 0 };
+    int err = 0;
+    gks_ws *ws;
+    while (!err && *str && (ws = next_ws(t))) {
+        gks_text_attrs ta;
+        gks_prim p = { .kind = GKS_PRIM_POLYLINE, .n_loops = 1 };
+        prim_common(&p, t->a);
+        gks_attr_text_layout(ws, t->a, &ta, &p.colour);
+        p.attrs.linetype = 1;
+        p.attrs.linewidth = 1.0;
+        p.attrs.text = 1;
+        p.attrs.hlhsr_id = t->a->hlhsr_id;
+        p.attrs.pick_id = t->a->pick_id;
+        b.n = b.np = 0;
+        stroke_ctx sc = { nc, &b };
+        err = gks_text_strokes(&f, &ta, str, stroke_emit, &sc);
+        if (!err)
+            err = send_pieces(ws, &p, &b);
+    }
+    pieces_free(&b);
+    return err;
+}
+
+static void text_any(int fctid, const double pos[3], const double d0[3], const double d1[3],
+                     const char *str)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (!str || gks_text_check(str))
+        GKS_FAIL(101, fctid);
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    const double wc[3][3] = { { pos[0], pos[1], pos[2] }, { d0[0], d0[1], d0[2] },
+                              { d1[0], d1[1], d1[2] } };
+    pt_src s = { NULL, NULL, wc };
+    size_t len = strlen(str);
+    gks_seg_prim sp = { .kind = GKS_SEG_TEXT, .n_loops = 1, .str = str,
+                        .str_len = len > INT32_MAX ? INT32_MAX : (int)len };
+    mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str });
+    int err = record(&nc, &sp, &s, 3);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_text(&nc, pos, d0, d1, str, &t);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gtext(const Gpoint *pos, const char *str)
+{
+    const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, 0 };
+    text_any(GFN_TX, p, (const double[3]){ 1, 0, 0 }, (const double[3]){ 0, 1, 0 }, str);
+}
+
+GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
+{
+    const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, pos ? pos->z : NAN };
+    double d0[3] = { NAN, NAN, NAN }, d1[3] = { NAN, NAN, NAN };
+    if (dir) {
+        d0[0] = dir[0].delta_x; d0[1] = dir[0].delta_y; d0[2] = dir[0].delta_z;
+        d1[0] = dir[1].delta_x; d1[1] = dir[1].delta_y; d1[2] = dir[1].delta_z;
+    }
+    text_any(GFN_TX3, p, d0, d1, str);
+}
+
+/* ------------------------------------------------------------------ FILL AREA (SET) */
+/* Send an area (nl loops, counts[k] points each, m points in all, NDC3) to the target's
+ * workstations. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. */
+static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, int is_set,
+                         target *t)
+{
+    int err = 0;
+    gks_ws *ws;
+    while (!err && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = nl, .loop_counts = counts,
+                       .n_points = m, .pts = pts };
+        Grgb *pat = NULL;
+        prim_common(&p, t->a);
+        err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &p, &pat);
+        if (!is_set)
+            p.attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
+        if (!err)
+            err = send(ws, &p);
+        gks_free(pat);
+    }
+    return err;
+}
+
+/* The clipped path of an area: homogeneous copy, Sutherland-Hodgman per loop, loops with
+ * fewer than 3 points dropped. Returns 0 or an error number. */
+static int clip_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                     const Gpoint3 *pts, int is_set, target *t)
+{
+    double (*h)[4] = gks_alloc_array(n, sizeof *h);
+    size_t *out_len = gks_alloc_array(nloops, sizeof *out_len);
+    double (*out)[4] = NULL;
+    Gpoint3 *cp = NULL;
+    int *counts = NULL;
+    int err = 0;
+    if (!h || !out_len) {
+        err = 300;
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        h[i][0] = pts[i].x; h[i][1] = pts[i].y; h[i][2] = pts[i].z; h[i][3] = 1.0;
+    }
+    size_t n_out = 0;
+    int r = gks_xform_clip_polygon(&nc->clip, nloops, cnt, (const double (*)[4])h, NULL, 0,
+                                   out_len, &n_out);
+    if ((r != 0 && r != 300) || n_out < 3)
+        goto done;
+    out = gks_alloc_array(n_out, sizeof *out);
+    cp = gks_alloc_array(n_out, sizeof *cp);
+    counts = gks_alloc_array(nloops, sizeof *counts);
+    if (!out || !cp || !counts) {
+        err = 300;
+        goto done;
+    }
+    if (gks_xform_clip_polygon(&nc->clip, nloops, cnt, (const double (*)[4])h, out, n_out,
+                               out_len, &n_out))
+        goto done;
+    size_t m = 0, src_off = 0;
+    int nl = 0;
+    for (size_t k = 0; k < nloops; k++) {
+        if (out_len[k] >= 3 && out_len[k] <= INT32_MAX) {
+            for (size_t i = 0; i < out_len[k]; i++)
+                cp[m + i] = (Gpoint3){ out[src_off + i][0], out[src_off + i][1],
+                                       out[src_off + i][2] };
+            m += out_len[k];
+            counts[nl++] = (int)out_len[k];
+        }
+        src_off += out_len[k];
+    }
+    if (nl > 0 && m <= INT32_MAX)
+        err = dispatch_area(nl, counts, (int)m, cp, is_set, t);
+done:
+    gks_free(h);
+    gks_free(out_len);
+    gks_free(out);
+    gks_free(cp);
+    gks_free(counts);
+    return err;
+}
+
+/* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
+ * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
+ * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
+static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                     const pt_src *s, int is_set, target *t)
+{
+    Gpoint3 *pts = gks_alloc_array(n, sizeof *pts);
+    int *counts = gks_alloc_array(nloops, sizeof *counts);
+    int err = 0, inside = 1;
+    if (!pts || !counts) {
+        err = 300;
+        goto done;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double wc[3], h[4];
+        src_get(s, i, wc);
+        if (!to_ndc(nc, wc, h))
+            goto done; /* a non-finite vertex: the area is not drawn */
+        inside = inside && point_visible(nc, h);
+        pts[i] = (Gpoint3){ h[0], h[1], h[2] };
+    }
+    for (size_t k = 0; k < nloops; k++)
+        counts[k] = (int)cnt[k];
+    if (inside)
+        err = dispatch_area((int)nloops, counts, (int)n, pts, is_set, t);
+    else
+        err = clip_area(nc, nloops, cnt, n, pts, is_set, t);
+done:
+    gks_free(pts);
+    gks_free(counts);
+    return err;
+}
+
+/* Area after the argument checks (see emit_area). */
+static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_src *s,
+                        int is_set)
+{
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    size_t n = 0;
+    for (size_t k = 0; k < nloops; k++)
+        n += cnt[k];
+    if (n > INT32_MAX || nloops > INT32_MAX)
+        GKS_FAIL(300, fctid);
+    int *icnt = gks_alloc_array(nloops, sizeof *icnt);
+    if (!icnt)
+        GKS_FAIL(300, fctid);
+    for (size_t k = 0; k < nloops; k++)
+        icnt[k] = (int)cnt[k];
+    gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
+                        .n_loops = (int)nloops, .loop_counts = icnt };
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = is_set ? GKSM_ITEM_FILL_AREA_SET3 : GKSM_ITEM_FILL_AREA3,
+                          .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
+                          .d3 = s->d3 });
+    int err = record(&nc, &sp, s, n);
+    gks_free(icnt);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_area(&nc, nloops, cnt, n, s, is_set, &t);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (n < 3 || (!p2 && !p3))
+        GKS_FAIL(100, fctid);
+    size_t cnt = (size_t)n;
+    pt_src s = { p2, p3, NULL };
+    output_area(fctid, 1, &cnt, &s, 0);
+}
+
+GKS_API void gfill_area(const Gpoint_list *l)
+{
+    fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+}
+
+GKS_API void gfill_area3(const Gpoint_list3 *l)
+{
+    fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+}
+
+/* FILL AREA SET (3): the loops are copied into one WC3 array. */
+static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoint_list_list3 *l3)
+{
+    if (gks_check_state(fctid))
+        return;
+    int nl = l2 ? l2->num_point_lists : l3 ? l3->num_point_lists : 0;
+    if (nl < 1 || (l2 && !l2->point_lists) || (l3 && !l3->point_lists))
+        GKS_FAIL(100, fctid);
+    size_t total = 0;
+    for (int k = 0; k < nl; k++) {
+        int c = l2 ? l2->point_lists[k].num_points : l3->point_lists[k].num_points;
+        int has = l2 ? l2->point_lists[k].points != NULL : l3->point_lists[k].points != NULL;
+        if (c < 3 || !has)
+            GKS_FAIL(100, fctid);
+        total += (size_t)c;
+    }
+    size_t *cnt = gks_alloc_array((size_t)nl, sizeof *cnt);
+    double (*wc)[3] = gks_alloc_array(total, sizeof *wc);
+    if (!cnt || !wc) {
+        gks_free(cnt);
+        gks_free(wc);
+        GKS_FAIL(300, fctid);
+    }
+    size_t off = 0;
+    for (int k = 0; k < nl; k++) {
+        int c = l2 ? l2->point_lists[k].num_points : l3->point_lists[k].num_points;
+        pt_src s = { l2 ? l2->point_lists[k].points : NULL,
+                     l3 ? l3->point_lists[k].points : NULL, NULL };
+        for (int i = 0; i < c; i++)
+            src_get(&s, (size_t)i, wc[off + (size_t)i]);
+        cnt[k] = (size_t)c;
+        off += (size_t)c;
+    }
+    pt_src all = { NULL, NULL, (const double (*)[3])wc };
+    output_area(fctid, (size_t)nl, cnt, &all, 1);
+    gks_free(cnt);
+    gks_free(wc);
+}
+
+GKS_API void gfill_area_set(const Gpoint_list_list *l)
+{
+    fill_area_set_any(GFN_FAS, l, NULL);
+}
+
+GKS_API void gfill_area_set3(const Gpoint_list_list3 *l)
+{
+    fill_area_set_any(GFN_FAS3, NULL, l);
+}
+
+/* ------------------------------------------------------------------ CELL ARRAY */
+/* A cell array with corners pqr (mapped by nc) and colour indices colr (nx*ny). */
+static int emit_cell_array(const norm_ctx *nc, const double pqr[3][3], int nx, int ny,
+                           const Gint *colr, target *t)
+{
+    double h[3][4];
+    for (int i = 0; i < 3; i++)
+        if (!to_ndc(nc, pqr[i], h[i]))
+            return 0; /* a non-finite corner: not drawn */
+    size_t n = (size_t)nx * (size_t)ny;
+    Grgb *rgb = gks_alloc_array(n, sizeof *rgb);
+    if (!rgb)
+        return 300;
+    int err = 0;
+    gks_ws *ws;
+    while (!err && (ws = next_ws(t))) {
+        gks_prim p = { .kind = GKS_PRIM_CELL_ARRAY, .n_loops = 1,
+                       .cell_p = { h[0][0], h[0][1], h[0][2] },
+                       .cell_q = { h[1][0], h[1][1], h[1][2] },
+                       .cell_r = { h[2][0], h[2][1], h[2][2] },
+                       .cell_nx = nx, .cell_ny = ny, .cells = rgb, .clip = nc->clip_on };
+        p.loop_counts = &p.n_points;
+        memcpy(p.clip_box, nc->box, sizeof nc->box);
+        prim_common(&p, t->a);
+        p.attrs.hlhsr_id = t->a->hlhsr_id;
+        p.attrs.pick_id = t->a->pick_id;
+        for (size_t i = 0; i < n; i++)
+            rgb[i] = gks_attr_colour(ws, colr[i]);
+        err = send(ws, &p);
+    }
+    gks_free(rgb);
+    return err;
+}
+
+static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca)
+{
+    if (gks_check_state(fctid))
+        return;
+    if (!ca || !ca->colr_array || ca->dims.size_x < 1 || ca->dims.size_y < 1)
+        GKS_FAIL(91, fctid);
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        return;
+    pt_src s = { NULL, NULL, pqr };
+    gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = ca->dims.size_x,
+                        .cell_ny = ca->dims.size_y, .cell_colr = ca->colr_array };
+    int err = 0;
+    mf_out(fctid, &nc,
+           (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr,
+                          .nx = ca->dims.size_x, .ny = ca->dims.size_y, .colr = ca->colr_array });
+    if (nc.seg) { /* the corners are stored as P, Q, R in NDC3 */
+        double o[3][3];
+        for (int i = 0; i < 3; i++)
+            gks_xform_mat34_point(nc.pn, pqr[i], o[i]);
+        sp.cell_p = (Gpoint3){ o[0][0], o[0][1], o[0][2] };
+        sp.cell_q = (Gpoint3){ o[1][0], o[1][1], o[1][2] };
+        sp.cell_r = (Gpoint3){ o[2][0], o[2][1], o[2][2] };
+        err = record(&nc, &sp, &s, 0);
+    }
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_cell_array(&nc, pqr, ca->dims.size_x, ca->dims.size_y, ca->colr_array, &t);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void gcell_array(const Grect *r, const Gpat_rep *ca)
+{
+    double pqr[3][3] = { { NAN, NAN, 0 }, { NAN, NAN, 0 }, { NAN, NAN, 0 } };
+    if (r) {
+        pqr[0][0] = r->p.x; pqr[0][1] = r->p.y;
+        pqr[1][0] = r->q.x; pqr[1][1] = r->q.y;
+        pqr[2][0] = r->q.x; pqr[2][1] = r->p.y; /* R: end of P's row (x direction) */
+    }
+    cell_array_any(GFN_CA, (const double (*)[3])pqr, ca);
+}
+
+GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
+{
+    double pqr[3][3] = { { NAN, NAN, NAN }, { NAN, NAN, NAN }, { NAN, NAN, NAN } };
+    if (par) {
+        const Gpoint3 *v[3] = { &par->p, &par->q, &par->r };
+        for (int i = 0; i < 3; i++) {
+            pqr[i][0] = v[i]->x; pqr[i][1] = v[i]->y; pqr[i][2] = v[i]->z;
+        }
+    }
+    cell_array_any(GFN_CA3, (const double (*)[3])pqr, ca);
+}
+
+/* ------------------------------------------------------------------ stored primitives */
+/* A stored primitive (NDC3 geometry; TEXT in WC3 through its bound normalization) sent
+ * to the target through the affine map S (NDC3 -> NDC3) and clipped at box when clip_on. */
+static int emit_stored(target *t, const double S[3][4], const double box[6], int clip_on,
+                       const gks_seg_prim *sp)
+{
+    norm_ctx nc;
+    double sn[3][4];
+    gks_xform_mat34_multiply(S, sp->bound->norm, sn); /* WC3 -> final NDC3 */
+    if (norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
+        return 0;
+    t->a = &sp->bound->attrs;
+    memcpy(t->pat_m, sn, sizeof sn);
+    pt_src s = { NULL, sp->pts, NULL };
+    size_t n = (size_t)sp->n_points;
+    switch (sp->kind) {
+    case GKS_SEG_POLYLINE:
+        return emit_polyline(&nc, &s, n, t);
+    case GKS_SEG_POLYMARKER:
+        return emit_polymarker(&nc, &s, n, t);
+    case GKS_SEG_TEXT: {
+        if (n != 3 || sp->str_len < 1)
+            return 0;
+        char *str = gks_strndup(sp->str, (size_t)sp->str_len);
+        if (!str)
+            return 300;
+        const double pos[3] = { sp->pts[0].x, sp->pts[0].y, sp->pts[0].z };
+        const double d0[3] = { sp->pts[1].x, sp->pts[1].y, sp->pts[1].z };
+        const double d1[3] = { sp->pts[2].x, sp->pts[2].y, sp->pts[2].z };
+        int err = emit_text(&nc, pos, d0, d1, str, t);
+        gks_free(str);
+        return err;
+    }
+    case GKS_SEG_FILL_AREA:
+    case GKS_SEG_FILL_AREA_SET: {
+        size_t nl = (size_t)sp->n_loops;
+        size_t *cnt = gks_alloc_array(nl, sizeof *cnt);
+        if (!cnt)
+            return 300;
+        if (sp->loop_counts)
+            for (size_t k = 0; k < nl; k++)
+                cnt[k] = (size_t)sp->loop_counts[k];
+        else
+            cnt[0] = n;
+        int err = emit_area(&nc, nl, cnt, n, &s, sp->kind == GKS_SEG_FILL_AREA_SET, t);
+        gks_free(cnt);
+        return err;
+    }
+    case GKS_SEG_CELL_ARRAY: {
+        const double pqr[3][3] = { { sp->cell_p.x, sp->cell_p.y, sp->cell_p.z },
+                                   { sp->cell_q.x, sp->cell_q.y, sp->cell_q.z },
+                                   { sp->cell_r.x, sp->cell_r.y, sp->cell_r.z } };
+        return emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, t);
+    }
+    }
+    return 0;
+}
+
+int gks_output_draw_segment(gks_ws *ws, const gks_segment *seg)
+{
+    int err = 0;
+    for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
+        gks_seg_prim sp;
+        gks_seg_get(seg, k, &sp);
+        target t = { .only = ws };
+        err = emit_stored(&t, (const double (*)[4])seg->tran, sp.clip_box, sp.clip, &sp);
+    }
+    return err;
+}
+
+int gks_output_redraw_segments(gks_ws *ws)
+{
+    const gks_seg_store *st = gks_ctx()->sl->segs;
+    if (st->n == 0)
+        return 0;
+    gks_segment **order = gks_alloc_array(st->n, sizeof *order);
+    if (!order)
+        return 300;
+    size_t n = gks_seg_draw_order(st, ws->id, order);
+    int err = 0;
+    for (size_t i = 0; i < n && !err; i++)
+        if (order[i]->vis)
+            err = gks_output_draw_segment(ws, order[i]);
+    gks_free(order);
+    return err;
+}
+
+/* One stored primitive of an inserted segment, mapped by M (segment transformation, then
+ * insert transformation), stored into the open segment as a new primitive with the current
+ * clipping volume. */
+static int insert_record(gks_segment *open, const double M[3][4], const norm_ctx *cur,
+                         const gks_seg_prim *sp)
+{
+    gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
+    size_t n = (size_t)sp->n_points;
+    Gpoint3 *pts = gks_alloc_array(n ? n : 1, sizeof *pts);
+    int err = 0;
+    if (!bound || !pts) {
+        err = 300;
+        goto done;
+    }
+    *bound = *sp->bound;
+    gks_xform_mat34_multiply(M, sp->bound->norm, bound->norm);
+    for (size_t i = 0; i < n; i++) {
+        double p[3] = { sp->pts[i].x, sp->pts[i].y, sp->pts[i].z }, o[3];
+        if (sp->kind == GKS_SEG_TEXT)
+            memcpy(o, p, sizeof o); /* WC3: the new normalization carries M */
+        else
+            gks_xform_mat34_point(M, p, o);
+        pts[i] = (Gpoint3){ o[0], o[1], o[2] };
+    }
+    gks_seg_prim np = *sp;
+    np.pts = pts;
+    np.bound = bound;
+    np.clip = cur->clip_on;
+    memcpy(np.clip_box, cur->box, sizeof np.clip_box);
+    const Gpoint3 *c[3] = { &sp->cell_p, &sp->cell_q, &sp->cell_r };
+    Gpoint3 *d[3] = { &np.cell_p, &np.cell_q, &np.cell_r };
+    for (int k = 0; k < 3; k++) {
+        double p[3] = { c[k]->x, c[k]->y, c[k]->z }, o[3];
+        gks_xform_mat34_point(M, p, o);
+        *d[k] = (Gpoint3){ o[0], o[1], o[2] };
+    }
+    err = gks_seg_append(open, &np);
+done:
+    gks_free(bound);
+    gks_free(pts);
+    return err;
+}
+
+int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
+{
+    norm_ctx cur;
+    if (norm_setup(&cur))
+        return 0;
+    double M[3][4], total[3][4];
+    gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
+    gks_segment *open = cur.seg;
+    if (open)
+        gks_xform_mat34_multiply(open->tran, M, total);
+    else
+        memcpy(total, M, sizeof total);
+    int err = 0;
+    for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
+        gks_seg_prim sp;
+        gks_seg_get(seg, k, &sp);
+        if (open)
+            err = insert_record(open, (const double (*)[4])M, &cur, &sp);
+        target t;
+        target_current(&t, &cur);
+        if (!err)
+            err = emit_stored(&t, (const double (*)[4])total, cur.box, cur.clip_on, &sp);
+    }
+    return err;
+}
+
+/* ------------------------------------------------------------------ GDP */
+/* No GDP exists in this implementation: after the state and point checks every
+ * identifier is invalid (102). */
+static void gdp_any(int fctid, int n, const void *pts, Gint gdp_id)
+{
+    (void)gdp_id;
+    if (gks_check_state(fctid))
+        return;
+    if (n < 0 || (n > 0 && !pts))
+        GKS_FAIL(100, fctid);
+    GKS_FAIL(102, fctid);
+}
+
+GKS_API void ggdp(const Gpoint_list *l, Gint gdp_id, const Ggdp_data *data)
+{
+    (void)data;
+    gdp_any(GFN_GDP, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+}
+
+GKS_API void ggdp3(const Gpoint_list3 *l, Gint gdp_id, const Ggdp_data *data)
+{
+    (void)data;
+    gdp_any(GFN_GDP3, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+}
+
+/* ------------------------------------------------------------------ colour table */
+GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
+{
+    if (gks_check_state(GFN_SCR))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SCR, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (colr_ind < 0 || colr_ind >= ws->drv->desc->n_colr)
+        GKS_FAIL(93, GFN_SCR);
+    if (!colr_rep)
+        GKS_FAIL(96, GFN_SCR);
+    const Grgb *c = &colr_rep->rgb;
+    if (!(c->red >= 0 && c->red <= 1 && c->green >= 0 && c->green <= 1 && c->blue >= 0 &&
+          c->blue <= 1))
+        GKS_FAIL(96, GFN_SCR);
+    ws->colr[colr_ind] = *c;
+    ws->colr_defined[colr_ind] = 1;
+    gks_mf_ws_rec(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green, c->blue);
+}
+
+/* --- Normalization transformations ------------------------------------------------ */
+static int rect_valid(const Glimit *r)
+{
+    return r && isfinite(r->x_min) && isfinite(r->x_max) && isfinite(r->y_min) &&
+           isfinite(r->y_max) && r->x_min < r->x_max && r->y_min < r->y_max;
+}
+
+GKS_API void gset_win(Gint tran_num, const Glimit *win)
+{
+    if (gks_check_state(GFN_SWN))
+        return;
+    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, GFN_SWN);
+    if (!rect_valid(win))
+        GKS_FAIL(51, GFN_SWN);
+    Glimit3 *w = &gks_ctx()->sl->tran[tran_num].win;
+    w->x_min = win->x_min; w->x_max = win->x_max;
+    w->y_min = win->y_min; w->y_max = win->y_max;
+}
+
+GKS_API void gset_vp(Gint tran_num, const Glimit *vp)
+{
+    if (gks_check_state(GFN_SVP))
+        return;
+    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, GFN_SVP);
+    if (!rect_valid(vp))
+        GKS_FAIL(51, GFN_SVP);
+    if (vp->x_min < 0 || vp->x_max > 1 || vp->y_min < 0 || vp->y_max > 1)
+        GKS_FAIL(52, GFN_SVP);
+    Glimit3 *v = &gks_ctx()->sl->tran[tran_num].vp;
+    v->x_min = vp->x_min; v->x_max = vp->x_max;
+    v->y_min = vp->y_min; v->y_max = vp->y_max;
+}
+
+GKS_API void gsel_norm_tran(Gint tran_num)
+{
+    if (gks_check_state(GFN_SELNT))
+        return;
+    if (tran_num < 0 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, GFN_SELNT);
+    gks_ctx()->sl->cur_tnr = tran_num;
+}
+
+GKS_API void gset_clip_ind(Gclip_ind clip_ind)
+{
+    if (gks_check_state(GFN_SCLIP))
+        return;
+    if (clip_ind != GIND_CLIP && clip_ind != GIND_NO_CLIP)
+        GKS_FAIL(2000, GFN_SCLIP);
+    gks_ctx()->sl->clip_ind = clip_ind;
+}
+
+/* --- Workstation transformation ------------------------------------------------------ */
+/* Requested values become current at once when the display surface is empty, else at
+ * the next regeneration (UPDATE with PERFORM, CLEAR, or at once if implicit
+ * regeneration is allowed). */
+static int ws_tran_changed(gks_ws *ws)
+{
+    if (ws->disp_empty == GDISP_EMPTY) {
+        ws->cur_win = ws->req_win;
+        ws->cur_vp = ws->req_vp;
+        return ws->drv->clear ? ws->drv->clear(ws) : 0;
+    }
+    ws->tran_upd_st = GUPD_PEND;
+    ws->new_frame = GNEW_YES;
+    return ws->irg_mode == GIRG_ALLOWED ? gks_ws_regenerate(ws) : 0;
+}
+
+GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
+{
+    if (gks_check_state(GFN_SWKWN))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKWN, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!rect_valid(ws_win))
+        GKS_FAIL(51, GFN_SWKWN);
+    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1)
+        GKS_FAIL(53, GFN_SWKWN);
+    ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
+    ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
+    gks_mf_ws_rec(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKWN);
+}
+
+GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
+{
+    if (gks_check_state(GFN_SWKVP))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKVP, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!rect_valid(ws_vp))
+        GKS_FAIL(51, GFN_SWKVP);
+    const gks_ws_desc *d = ws->drv->desc;
+    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 || ws_vp->y_max > d->dc_y)
+        GKS_FAIL(54, GFN_SWKVP);
+    ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
+    ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
+    gks_mf_ws_rec(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKVP);
+}
+
+static int box3_valid(const Glimit3 *b)
+{
+    return b && b->x_min < b->x_max && b->y_min < b->y_max && b->z_min <= b->z_max &&
+           isfinite(b->x_min) && isfinite(b->x_max) && isfinite(b->y_min) &&
+           isfinite(b->y_max) && isfinite(b->z_min) && isfinite(b->z_max);
+}
+
+GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
+{
+    if (gks_check_state(GFN_SWKW3))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKW3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!box3_valid(ws_win))
+        GKS_FAIL(51, GFN_SWKW3);
+    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1 ||
+        ws_win->z_min < 0 || ws_win->z_max > 1)
+        GKS_FAIL(53, GFN_SWKW3);
+    ws->req_win = *ws_win;
+    gks_mf_ws_rec(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKW3);
+}
+
+GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
+{
+    if (gks_check_state(GFN_SWKV3))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SWKV3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (!box3_valid(ws_vp))
+        GKS_FAIL(51, GFN_SWKV3);
+    const gks_ws_desc *d = ws->drv->desc;
+    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 ||
+        ws_vp->y_max > d->dc_y || ws_vp->z_min < 0 || ws_vp->z_max > 1)
+        GKS_FAIL(54, GFN_SWKV3);
+    ws->req_vp = *ws_vp;
+    gks_mf_ws_rec(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
+    int err = ws_tran_changed(ws);
+    if (err)
+        gks_error_report(err, GFN_SWKV3);
+}
+
+GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
+                           Glimit3 *req_ws_win, Glimit3 *cur_ws_win, Glimit3 *req_ws_vp,
+                           Glimit3 *cur_ws_vp)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    *ws_tran_upd_st = ws->tran_upd_st;
+    *req_ws_win = ws->req_win;
+    *cur_ws_win = ws->cur_win;
+    *req_ws_vp = ws->req_vp;
+    *cur_ws_vp = ws->cur_vp;
+}

@@ -1,0 +1,479 @@
+/*
+ * gks_segment.c -- segment functions (ISO 7942 5.7, GKS-3D SET SEGMENT TRANSFORMATION 3)
+ * and their inquiries. The content lives in the segment store (gks_seg_store.h); primitives
+ * enter it from the output pipeline while a segment is open, and leave it again through
+ * gks_output_redraw_segments (regeneration, REDRAW ALL SEGMENTS ON WORKSTATION).
+ *
+ * Picture changes: this PNG-file implementation cannot modify a picture dynamically, so a
+ * change that affects a workstation's picture (segment transformation, visibility,
+ * priority, deletion) needs an implicit regeneration there: done at once when the
+ * workstation's implicit regeneration mode is ALLOWED, else "new frame action necessary
+ * at update" is set and UPDATE WORKSTATION (PERFORM) or REDRAW ALL SEGMENTS does it.
+ * Highlighting and detectability do not change a PNG picture.
+ */
+#include "gks_error.h"
+#include "gks_mf_record.h"
+#include "gks_seg_store.h"
+#include "gks_segment.h"
+#include "gks_state.h"
+#include "gks_ws.h"
+#include "gks_xform.h"
+#include <math.h>
+#include <string.h>
+
+static gks_seg_store *store(void)
+{
+    return gks_ctx()->sl->segs;
+}
+
+/* The picture of every workstation holding segment s has changed. */
+static void picture_changed(const gks_segment *s, int fctid)
+{
+    for (int i = 0; i < s->n_ws; i++) {
+        gks_ws *ws = gks_ws_lookup(s->ws[i]);
+        if (!ws)
+            continue;
+        if (ws->irg_mode == GIRG_ALLOWED) {
+            int err = gks_ws_regenerate(ws);
+            if (err)
+                gks_error_report(err, fctid);
+        } else {
+            ws->new_frame = GNEW_YES;
+        }
+    }
+}
+
+/* Common checks of the functions naming an existing segment: 120, 122. */
+static gks_segment *existing(int fctid, Gint name)
+{
+    if (name < 1) {
+        gks_error_report(120, fctid);
+        return NULL;
+    }
+    gks_segment *s = gks_seg_find(store(), name);
+    if (!s)
+        gks_error_report(122, fctid);
+    return s;
+}
+
+GKS_API void gcreate_seg(Gint seg_name)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_CRSG))
+        return;
+    if (seg_name < 1)
+        GKS_FAIL(120, GFN_CRSG);
+    if (gks_seg_find(store(), seg_name))
+        GKS_FAIL(121, GFN_CRSG);
+    gks_segment *s = gks_seg_create(store(), seg_name);
+    if (!s)
+        GKS_FAIL(301, GFN_CRSG);
+    for (int i = 0; i < c->sl->n_active; i++)
+        gks_seg_ws_add(s, c->sl->active_ws[i]); /* n_active <= GKS_MAX_OPEN_WS: cannot fail */
+    c->sl->open_seg = seg_name;
+    c->op_st = GST_SGOP;
+    GKS_MF(GFN_CRSG, GKSM_ITEM_CREATE_SEG, "i", seg_name);
+}
+
+GKS_API void gclose_seg(void)
+{
+    gks_context *c = gks_ctx();
+    if (gks_check_state(GFN_CLSG))
+        return;
+    c->sl->open_seg = 0;
+    c->op_st = GST_WSAC;
+    GKS_MF(GFN_CLSG, GKSM_ITEM_CLOSE_SEG, "");
+}
+
+GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
+{
+    if (gks_check_state(GFN_RENSG))
+        return;
+    if (old_seg_name < 1 || new_seg_name < 1)
+        GKS_FAIL(120, GFN_RENSG);
+    gks_segment *s = gks_seg_find(store(), old_seg_name);
+    if (gks_seg_find(store(), new_seg_name))
+        GKS_FAIL(121, GFN_RENSG);
+    if (!s)
+        GKS_FAIL(122, GFN_RENSG);
+    s->name = new_seg_name;
+    GKS_MF(GFN_RENSG, GKSM_ITEM_RENAME_SEG, "ii", old_seg_name, new_seg_name);
+    gks_state_list *sl = gks_ctx()->sl;
+    if (sl->open_seg == old_seg_name)
+        sl->open_seg = new_seg_name;
+}
+
+GKS_API void gdel_seg(Gint seg_name)
+{
+    if (gks_check_state(GFN_DSG))
+        return;
+    gks_segment *s = existing(GFN_DSG, seg_name);
+    if (!s)
+        return;
+    if (gks_ctx()->sl->open_seg == seg_name)
+        GKS_FAIL(125, GFN_DSG);
+    GKS_MF(GFN_DSG, GKSM_ITEM_DEL_SEG, "i", seg_name);
+    if (s->vis)
+        picture_changed(s, GFN_DSG);
+    gks_seg_delete(store(), seg_name);
+}
+
+GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
+{
+    if (gks_check_state(GFN_DSGWK))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_DSGWK, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT);
+    if (!ws)
+        return;
+    if (seg_name < 1)
+        GKS_FAIL(120, GFN_DSGWK);
+    gks_segment *s = gks_seg_find(store(), seg_name);
+    if (!s || !gks_seg_on_ws(s, ws_id))
+        GKS_FAIL(123, GFN_DSGWK);
+    if (gks_ctx()->sl->open_seg == seg_name)
+        GKS_FAIL(125, GFN_DSGWK);
+    gks_mf_ws_rec(GFN_DSGWK, ws_id, GKSM_ITEM_DEL_SEG, "i", seg_name);
+    gks_seg_ws_remove(s, ws_id);
+    if (s->vis) {
+        if (ws->irg_mode == GIRG_ALLOWED) {
+            int err = gks_ws_regenerate(ws);
+            if (err)
+                gks_error_report(err, GFN_DSGWK);
+        } else {
+            ws->new_frame = GNEW_YES;
+        }
+    }
+    if (s->n_ws == 0) /* stored nowhere any more: the segment ceases to exist */
+        gks_seg_delete(store(), seg_name);
+}
+
+GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
+{
+    if (gks_check_state(GFN_SSGT3))
+        return;
+    gks_segment *s = existing(GFN_SSGT3, seg_name);
+    if (!s)
+        return;
+    /* GKS has no error for a non-finite matrix: it is stored, and the pipeline drops
+     * primitives whose transformed coordinates are not finite (as for WC input). */
+    memcpy(s->tran, tran_matrix, sizeof s->tran);
+    GKS_MF(GFN_SSGT3, GKSM_ITEM_SEG_TRAN3, "iR", seg_name, 12, &tran_matrix[0][0]);
+    if (s->vis)
+        picture_changed(s, GFN_SSGT3);
+}
+
+GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
+{
+    if (gks_check_state(GFN_SSGT))
+        return;
+    gks_segment *s = existing(GFN_SSGT, seg_name);
+    if (!s)
+        return;
+    /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
+     * transformation is the 3-D one with identity z row and no z coupling). */
+    gks_xform_mat23_to_mat34(tran_matrix, s->tran);
+    GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
+    if (s->vis)
+        picture_changed(s, GFN_SSGT);
+}
+
+GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
+{
+    if (gks_check_state(GFN_SVIS))
+        return;
+    gks_segment *s = existing(GFN_SVIS, seg_name);
+    if (!s)
+        return;
+    if (vis != GSEG_INVIS && vis != GSEG_VIS)
+        GKS_FAIL(2000, GFN_SVIS);
+    GKS_MF(GFN_SVIS, GKSM_ITEM_VIS, "ii", seg_name, vis);
+    int v = vis == GSEG_VIS;
+    if (v == s->vis)
+        return;
+    s->vis = v;
+    picture_changed(s, GFN_SVIS);
+}
+
+GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
+{
+    if (gks_check_state(GFN_SHLIT))
+        return;
+    gks_segment *s = existing(GFN_SHLIT, seg_name);
+    if (!s)
+        return;
+    if (highl != GSEG_NORM && highl != GSEG_HIGHL)
+        GKS_FAIL(2000, GFN_SHLIT);
+    GKS_MF(GFN_SHLIT, GKSM_ITEM_HIGHL, "ii", seg_name, highl);
+    s->highl = highl == GSEG_HIGHL;
+}
+
+GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
+{
+    if (gks_check_state(GFN_SSGP))
+        return;
+    gks_segment *s = existing(GFN_SSGP, seg_name);
+    if (!s)
+        return;
+    if (!(pri >= 0.0 && pri <= 1.0))
+        GKS_FAIL(126, GFN_SSGP);
+    GKS_MF(GFN_SSGP, GKSM_ITEM_SEG_PRI, "ir", seg_name, pri);
+    if (pri == s->pri)
+        return;
+    s->pri = pri;
+    if (s->vis)
+        picture_changed(s, GFN_SSGP);
+}
+
+GKS_API void gset_det(Gint seg_name, Gseg_det det)
+{
+    if (gks_check_state(GFN_SDTEC))
+        return;
+    gks_segment *s = existing(GFN_SDTEC, seg_name);
+    if (!s)
+        return;
+    if (det != GSEG_UNDET && det != GSEG_DET)
+        GKS_FAIL(2000, GFN_SDTEC);
+    GKS_MF(GFN_SDTEC, GKSM_ITEM_DET, "ii", seg_name, det);
+    s->det = det == GSEG_DET;
+}
+
+/* The segment `name` of a WISS function: 120, 124 (not on the WISS, or no such segment). */
+static gks_segment *on_wiss(int fctid, const gks_ws *wiss, Gint name)
+{
+    if (name < 1) {
+        gks_error_report(120, fctid);
+        return NULL;
+    }
+    gks_segment *s = gks_seg_find(store(), name);
+    if (!s || !gks_seg_on_ws(s, wiss->id)) {
+        gks_error_report(124, fctid);
+        return NULL;
+    }
+    return s;
+}
+
+/* The WISS, or NULL after reporting 27. */
+static gks_ws *wiss_open(int fctid)
+{
+    gks_ws *w = gks_wiss();
+    if (!w)
+        gks_error_report(27, fctid);
+    return w;
+}
+
+GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
+{
+    if (gks_check_state(GFN_ASGWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_ASGWK);
+    if (!gks_ws_lookup(ws_id))
+        GKS_FAIL(25, GFN_ASGWK);
+    gks_ws *wiss = wiss_open(GFN_ASGWK);
+    if (!wiss)
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_ASGWK, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT);
+    if (!ws)
+        return;
+    gks_segment *s = on_wiss(GFN_ASGWK, wiss, seg_name);
+    if (!s || gks_seg_on_ws(s, ws_id))
+        return; /* already stored there: nothing to do */
+    if (gks_seg_ws_add(s, ws_id))
+        GKS_FAIL(301, GFN_ASGWK);
+    int err = s->vis ? gks_output_draw_segment(ws, s) : 0;
+    if (err)
+        gks_error_report(err, GFN_ASGWK);
+}
+
+GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
+{
+    if (gks_check_state(GFN_CSGWK))
+        return;
+    if (ws_id < 0)
+        GKS_FAIL(20, GFN_CSGWK);
+    if (!gks_ws_lookup(ws_id))
+        GKS_FAIL(25, GFN_CSGWK);
+    gks_ws *wiss = wiss_open(GFN_CSGWK);
+    if (!wiss)
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_CSGWK, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    gks_segment *s = on_wiss(GFN_CSGWK, wiss, seg_name);
+    if (!s)
+        return;
+    int err = gks_output_draw_segment(ws, s);
+    if (err)
+        gks_error_report(err, GFN_CSGWK);
+}
+
+static void insert_any(int fctid, Gint seg_name, const double m[3][4])
+{
+    if (gks_check_state(fctid))
+        return;
+    gks_ws *wiss = wiss_open(fctid);
+    if (!wiss)
+        return;
+    gks_segment *s = on_wiss(fctid, wiss, seg_name);
+    if (!s)
+        return;
+    if (gks_ctx()->sl->open_seg == seg_name)
+        GKS_FAIL(125, fctid);
+    int err = gks_output_insert_segment(s, m);
+    if (err)
+        gks_error_report(err, fctid);
+}
+
+GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix)
+{
+    double m[3][4];
+    gks_xform_mat23_to_mat34(tran_matrix, m);
+    insert_any(GFN_INSG, seg_name, (const double (*)[4])m);
+}
+
+GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix)
+{
+    insert_any(GFN_INSG3, seg_name, (const double (*)[4])tran_matrix);
+}
+
+void gks_segment_ws_closed(int ws_id)
+{
+    gks_seg_store *st = store();
+    for (size_t i = 0; i < st->n;) {
+        gks_segment *s = st->seg[i];
+        gks_seg_ws_remove(s, ws_id);
+        if (s->n_ws == 0 && gks_ctx()->sl->open_seg != s->name)
+            gks_seg_delete(st, s->name); /* st->seg[i] is now the next one */
+        else
+            i++;
+    }
+}
+
+/* ---------------------------------------------------------------- inquiries */
+
+GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
+                                Gint_list *seg_names, Gint *length_list)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_seg_store *st = store();
+    *length_list = (Gint)st->n;
+    if (start_pos < 0 || (start_pos >= (Gint)st->n && !(start_pos == 0 && st->n == 0))) {
+        *err_ind = 2002;
+        return;
+    }
+    int k = 0;
+    for (size_t i = (size_t)start_pos; i < st->n && k < num_elems_appl_list && seg_names &&
+                                       seg_names->ints; i++)
+        seg_names->ints[k++] = st->seg[i]->name;
+    if (seg_names)
+        seg_names->num_ints = k;
+}
+
+GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
+{
+    *err_ind = gks_inq_state(GKS_S_SGOP);
+    if (*err_ind)
+        return;
+    *seg_name = gks_ctx()->sl->open_seg;
+}
+
+GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    if (seg_name < 1) {
+        *err_ind = 120;
+        return;
+    }
+    const gks_segment *s = gks_seg_find(store(), seg_name);
+    if (!s) {
+        *err_ind = 122;
+        return;
+    }
+    attrs->seg_name = s->name;
+    memcpy(attrs->tran_matrix, s->tran, sizeof attrs->tran_matrix);
+    attrs->vis = s->vis ? GSEG_VIS : GSEG_INVIS;
+    attrs->highl = s->highl ? GSEG_HIGHL : GSEG_NORM;
+    attrs->pri = s->pri;
+    attrs->det = s->det ? GSEG_DET : GSEG_UNDET;
+}
+
+GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
+                                   Gint *err_ind, Gint_list *seg_names, Gint *length_list)
+{
+    if (!gks_inq_ws(ws_id, err_ind))
+        return;
+    const gks_seg_store *st = store();
+    int n = 0, k = 0;
+    for (size_t i = 0; i < st->n; i++) {
+        if (!gks_seg_on_ws(st->seg[i], ws_id))
+            continue;
+        if (n >= start_pos && k < num_elems_appl_list && seg_names && seg_names->ints)
+            seg_names->ints[k++] = st->seg[i]->name;
+        n++;
+    }
+    *length_list = n;
+    if (seg_names)
+        seg_names->num_ints = k;
+    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0)))
+        *err_ind = 2002;
+}
+
+GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
+                                Gint *err_ind, Gint_list *ws_ids, Gint *length_list)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    if (seg_name < 1) {
+        *err_ind = 120;
+        return;
+    }
+    const gks_segment *s = gks_seg_find(store(), seg_name);
+    if (!s) {
+        *err_ind = 122;
+        return;
+    }
+    *length_list = s->n_ws;
+    if (start_pos < 0 || (start_pos >= s->n_ws && !(start_pos == 0 && s->n_ws == 0))) {
+        *err_ind = 2002;
+        return;
+    }
+    int k = 0;
+    for (int i = start_pos; i < s->n_ws && k < num_elems_appl_list && ws_ids && ws_ids->ints; i++)
+        ws_ids->ints[k++] = s->ws[i];
+    if (ws_ids)
+        ws_ids->num_ints = k;
+}
+
+GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (*err_ind)
+        return;
+    const gks_ws_driver *drv = gks_driver_for_type(ws_type);
+    if (!drv) {
+        *err_ind = 23;
+        return;
+    }
+    if (drv->desc->cat == GCAT_MI) {
+        *err_ind = 33;
+        return;
+    }
+    /* Priorities are kept as given (doubles): 0 means "a continuous range". */
+    *num_seg_pris = 0;
+}
+
+int gks_ws_regenerate(gks_ws *ws)
+{
+    /* The picture being replaced is discarded, not written: a regeneration is a new
+     * version of the same frame (primitives outside segments are lost, as ISO 7942 says). */
+    int err = gks_ws_new_frame(ws);
+    if (!err)
+        err = gks_output_redraw_segments(ws);
+    return err;
+}

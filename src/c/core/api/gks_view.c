@@ -1,0 +1,128 @@
+/*
+ * gks_view.c -- GKS-3D viewing and HLHSR functions: SET WINDOW 3, SET VIEWPORT 3,
+ * SET VIEW INDEX, SET VIEW REPRESENTATION 3, SET HLHSR MODE, and their inquiries.
+ */
+#include "gks_error.h"
+#include "gks_mf_record.h"
+#include "gks_state.h"
+#include "gks_ws.h"
+#include "gks_xform.h"
+#include <math.h>
+
+GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
+{
+    double b[6];
+    if (gks_check_state(GFN_SW3))
+        return;
+    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, GFN_SW3);
+    if (!win)
+        GKS_FAIL(51, GFN_SW3);
+    gks_limit3_array(win, b);
+    if (gks_xform_check_window3(b))
+        GKS_FAIL(51, GFN_SW3);
+    gks_ctx()->sl->tran[tran_num].win = *win;
+}
+
+GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
+{
+    double b[6];
+    if (gks_check_state(GFN_SV3))
+        return;
+    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, GFN_SV3);
+    if (!vp)
+        GKS_FAIL(51, GFN_SV3);
+    gks_limit3_array(vp, b);
+    int err = gks_xform_check_viewport3(b); /* 51, then 52 */
+    if (err)
+        GKS_FAIL(err, GFN_SV3);
+    gks_ctx()->sl->tran[tran_num].vp = *vp;
+}
+
+GKS_API void gset_view_ind(Gint view_ind)
+{
+    if (gks_check_state(GFN_SVWI))
+        return;
+    if (view_ind < 0)
+        GKS_FAIL(514, GFN_SVWI);
+    gks_ctx()->sl->attrs.view_ind = view_ind;
+}
+
+static int matrix_finite(const Gmatrix3 m)
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            if (!isfinite(m[i][j]))
+                return 0;
+    return 1;
+}
+
+GKS_API void gset_view_rep3(Gint ws_id, Gint view_ind, const Gview_rep3 *rep)
+{
+    if (gks_check_state(GFN_SVWR))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SVWR, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (view_ind < 1 || view_ind > GKS_MAX_VIEW_IND)
+        GKS_FAIL(515, GFN_SVWR);
+    double b[6];
+    if (!rep)
+        GKS_FAIL(553, GFN_SVWR);
+    gks_limit3_array(&rep->clip_limit, b);
+    int err = gks_xform_check_view_clip_limits(b); /* 553, then 554 */
+    if (err)
+        GKS_FAIL(err, GFN_SVWR);
+    if (!matrix_finite(rep->ori_matrix) || !matrix_finite(rep->map_matrix))
+        GKS_FAIL(308, GFN_SVWR);
+    if ((unsigned)rep->xy_clip > GIND_CLIP || (unsigned)rep->back_clip > GIND_CLIP ||
+        (unsigned)rep->front_clip > GIND_CLIP)
+        GKS_FAIL(2000, GFN_SVWR);
+    ws->views[view_ind] = *rep;
+    gks_mf_ws_rec(GFN_SVWR, ws_id, GKSM_ITEM_VIEW_REP3, "iRRRiii", view_ind, 16,
+                  &rep->ori_matrix[0][0], 16, &rep->map_matrix[0][0], 6, &rep->clip_limit.x_min, rep->xy_clip,
+                  rep->back_clip, rep->front_clip);
+}
+
+GKS_API void gset_hlhsr_mode(Gint ws_id, Gint mode)
+{
+    if (gks_check_state(GFN_SHRM))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SHRM, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (mode < 0 || mode > 31 || !(ws->drv->desc->hlhsr_modes & (1u << mode)))
+        GKS_FAIL(511, GFN_SHRM);
+    ws->hlhsr_mode = mode;
+    gks_mf_ws_rec(GFN_SHRM, ws_id, GKSM_ITEM_HLHSR_MODE, "i", mode);
+}
+
+GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind)
+{
+    *err_ind = gks_inq_state(GKS_S_OPEN);
+    if (!*err_ind)
+        *view_ind = gks_ctx()->sl->attrs.view_ind;
+}
+
+GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3 *rep)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    if (view_ind < 0 || view_ind > GKS_MAX_VIEW_IND) {
+        *err_ind = view_ind < 0 ? 514 : 515;
+        return;
+    }
+    *rep = ws->views[view_ind];
+}
+
+GKS_API void ginq_hlhsr_mode(Gint ws_id, Gint *err_ind, Gint *mode)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (!ws)
+        return;
+    *mode = ws->hlhsr_mode;
+}

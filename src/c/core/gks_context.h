@@ -1,0 +1,153 @@
+/*
+ * gks_context.h -- the root object holding the standard's tables: the GKS description
+ * table (const), the GKS state list (exists while GKS is open), the error state list and
+ * the workstation state lists of the open workstations. No other file-level mutable state
+ * exists in the core (the allocation fault-injection counter of gks_alloc.c excepted).
+ */
+#ifndef GKS_CONTEXT_H
+#define GKS_CONTEXT_H
+#include "gks_private.h"
+#include "gks.h"
+#include <stdint.h>
+#include <stdio.h>
+
+#define GKS_MAX_OPEN_WS 16
+#define GKS_MAX_ACTIVE_WS 16
+#define GKS_MAX_NORM_TRAN 31 /* transformations 0..31; 0 is the unity transformation */
+
+typedef struct gks_ws gks_ws;
+typedef struct gks_ws_driver gks_ws_driver;
+
+/* GKS description table (ISO 7942 6.3), constant. */
+typedef struct gks_desc_table {
+    Glevel level;
+    int n_ws_types;
+    const gks_ws_driver *const *ws_types; /* the compiled-in driver list */
+    Gws_max_nums max_nums;
+    int max_norm_tran;
+} gks_desc_table;
+
+/* Aspect source flags, in the standard's order (GKS 13, then the GKS-3D edge four). */
+enum {
+    GKS_ASF_LINETYPE, GKS_ASF_LINEWIDTH, GKS_ASF_LINE_COLR,
+    GKS_ASF_MARKER_TYPE, GKS_ASF_MARKER_SIZE, GKS_ASF_MARKER_COLR,
+    GKS_ASF_TEXT_FONT_PREC, GKS_ASF_CHAR_EXPAN, GKS_ASF_CHAR_SPACE, GKS_ASF_TEXT_COLR,
+    GKS_ASF_FILL_INT_STYLE, GKS_ASF_FILL_STYLE_IND, GKS_ASF_FILL_COLR,
+    GKS_ASF_EDGE_FLAG, GKS_ASF_EDGETYPE, GKS_ASF_EDGEWIDTH, GKS_ASF_EDGE_COLR,
+    GKS_N_ASF
+};
+
+/* Primitive attributes currently selected (the GKS state list's "current" entries),
+ * named after the standard's entries. Defaults: gks_attr_init. */
+typedef struct gks_cur_attrs {
+    int line_ind, linetype;
+    double linewidth;
+    int line_colr_ind;
+    int marker_ind, marker_type;
+    double marker_size;
+    int marker_colr_ind;
+    int text_ind;
+    Gtext_font_prec text_font_prec;
+    double char_expan, char_space;
+    int text_colr_ind;
+    double char_ht;
+    Gvec char_up_vec;
+    Gtext_path text_path;
+    Gtext_align text_align;
+    int fill_ind;
+    Gfill_int_style fill_int_style;
+    int fill_style_ind;
+    Gvec pat_size;               /* width, height */
+    Gpoint3 pat_ref_point;
+    Gvec3 pat_ref_vec[2];        /* width and height directions (GKS-3D) */
+    int edge_ind;
+    Gedge_flag edge_flag;
+    int edgetype;
+    double edgewidth;
+    int edge_colr_ind;
+    Gasf asf[GKS_N_ASF];
+    int pick_id;
+    int hlhsr_id;
+    int fill_colr_ind;
+    int view_ind;
+    Garea_props area_props[2];  /* front, back (SET (BACK) AREA PROPERTIES) */
+    int refl_eq[2];             /* front, back reflectance equation, GREFL_* */
+    uint64_t light_mask;        /* bit i-1: light source index i is active */
+} gks_cur_attrs;
+
+typedef struct gks_norm_tran {
+    Glimit3 win;
+    Glimit3 vp;
+} gks_norm_tran;
+
+/* GKS state list (ISO 7942 6.4), allocated at OPEN GKS and freed at CLOSE GKS. */
+typedef struct gks_state_list {
+    int open_ws[GKS_MAX_OPEN_WS];   /* set of open workstations, in order of opening */
+    int n_open;
+    int active_ws[GKS_MAX_ACTIVE_WS];
+    int n_active;
+    gks_cur_attrs attrs;
+    int cur_tnr;
+    gks_norm_tran tran[GKS_MAX_NORM_TRAN + 1];
+    int tran_pri[GKS_MAX_NORM_TRAN + 1]; /* viewport input priority, highest first */
+    Gclip_ind clip_ind;
+    char *err_file; /* error file as given at OPEN GKS (NULL = standard error) */
+    struct gks_seg_store *segs; /* segment storage (gks_seg_store.h) */
+    int open_seg;               /* name of the open segment, 0 = none */
+    int mf_n_mo_active;         /* active MO workstations (gks_mf_record.c: the MO fast path) */
+    int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
+} gks_state_list;
+
+/* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives
+ * CLOSE GKS: the handler is installed by the application, possibly before OPEN GKS. */
+typedef struct gks_error_state {
+    int in_handler;        /* error state: ON while ERROR HANDLING runs */
+    int last_error;
+    FILE *fp;              /* error file opened at OPEN GKS, NULL = standard error */
+    Gerr_handler handler;  /* NULL = gerr_hand */
+} gks_error_state;
+
+/* Test hook: called with every primitive just before a driver receives it. */
+struct gks_prim;
+typedef void (*gks_prim_hook)(void *ctx, int ws_id, const struct gks_prim *prim);
+
+typedef struct gks_context {
+    Gop_st op_st;
+    gks_prim_hook prim_hook;       /* NULL except in tests (gks_test_set_prim_hook) */
+    void *prim_hook_ctx;
+    const gks_desc_table *desc;
+    gks_state_list *sl;            /* NULL while GKS is closed */
+    gks_error_state err;
+    gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
+    const struct gks_norm_override *norm_override; /* INTERPRET ITEM (gks_output.c) */
+} gks_context;
+
+/* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
+static inline void gks_limit3_array(const Glimit3 *l, double b[6])
+{
+    b[0] = l->x_min; b[1] = l->x_max; b[2] = l->y_min;
+    b[3] = l->y_max; b[4] = l->z_min; b[5] = l->z_max;
+}
+
+/* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.
+ * Returns 0 or 308 (degenerate or non-finite window/viewport). GKS must be open. */
+int gks_cur_norm_matrix(double m[3][4]);
+
+/* The standard's initial values of the current primitive attributes (gks_attr.c). */
+void gks_attr_init(gks_cur_attrs *a);
+
+/* The context of this process (the C binding is procedural; GKS is single-threaded). */
+gks_context *gks_ctx(void);
+
+/* Workstation state list of open workstation ws_id, or NULL. */
+gks_ws *gks_ws_lookup(int ws_id);
+
+/* Driver of workstation type ws_type, or NULL if the type does not exist. */
+const gks_ws_driver *gks_driver_for_type(int ws_type);
+
+/* The open WISS workstation, or NULL. */
+gks_ws *gks_wiss(void);
+
+/* Whether ws_id is in the set of active workstations. */
+int gks_ws_is_active(int ws_id);
+#endif

@@ -1,0 +1,83 @@
+/*
+ * ws_mo.c -- the GKS metafile output workstation (type GWS_TYPE_MO, category MO). The
+ * connection identifier is the file name; OPEN WORKSTATION writes the file header, CLOSE
+ * WORKSTATION the END item. The items themselves are written by the core's recording hooks
+ * (gks_mf_record.c), never through the primitive interface: the driver has no drawing entries.
+ */
+#include "gks_alloc.h"
+#include "gks_mf_record.h"
+#include "ws_driver.h"
+
+static const Grgb mo_colours[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
+
+static const gks_ws_desc mo_desc = {
+    .type = GWS_TYPE_MO,
+    .name = "gksm-out",
+    .cat = GCAT_MO,
+    .cls = GCLASS_OTHER,
+    .dc_units = GDC_OTHER,
+    .dc_x = 1024, .dc_y = 1024,
+    .raster_x = 1024, .raster_y = 1024,
+    .colr_avail = GAVAIL_COLR,
+    .n_colr = 256,
+    .n_pred_colr = 2,
+    .pred_colr = mo_colours,
+    .default_irg = GIRG_ALLOWED,
+    .default_defer = GDEFER_ASAP,
+    /* every mode is recorded (the interpreting workstation decides what it supports) */
+    .hlhsr_modes = 1u << GHLHSR_NONE | 1u << GHLHSR_HIDDEN_LINE | 1u << GHLHSR_ZBUFFER |
+                   1u << GHLHSR_PAINTER | 1u << GHLHSR_RAYTRACE,
+    .out = &gks_wdt_raster,
+};
+
+static int mo_open(gks_ws *ws)
+{
+    if (!ws->conn_id || !*ws->conn_id)
+        return 21;
+    gks_mf_out *o = gks_calloc_array(1, sizeof *o);
+    if (!o)
+        return 300;
+    gksm_rec_init(&o->rec);
+    char *path = gks_mf_file_name(ws->conn_id);
+    o->fp = path ? fopen(path, "wb") : NULL;
+    gks_free(path);
+    if (!o->fp) {
+        gks_free(o);
+        return 26;
+    }
+    if (gksm_write_header(o->fp, "gks3d GKS-3D metafile", NULL)) {
+        fclose(o->fp);
+        gks_free(o);
+        return 26;
+    }
+    ws->priv = o;
+    return 0;
+}
+
+static void mo_close(gks_ws *ws)
+{
+    gks_mf_out *o = ws->priv;
+    if (!o)
+        return;
+    gksm_rec_clear(&o->rec);
+    gksm_write_item(o->fp, GKSM_ITEM_END, &o->rec);
+    fclose(o->fp);
+    gksm_rec_free(&o->rec);
+    gks_free(o);
+    ws->priv = NULL;
+}
+
+/* UPDATE WORKSTATION (and CLOSE, before close): the items so far reach the file. */
+static int mo_update(gks_ws *ws)
+{
+    gks_mf_out *o = ws->priv;
+    return fflush(o->fp) == 0 && !ferror(o->fp) ? 0 : 303;
+}
+
+const gks_ws_driver gks_ws_mo_driver = {
+    .version = GKS_WS_DRIVER_VERSION,
+    .desc = &mo_desc,
+    .open = mo_open,
+    .close = mo_close,
+    .update = mo_update,
+};

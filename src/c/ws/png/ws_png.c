@@ -1,0 +1,315 @@
+/*
+ * ws_png.c -- the PNG workstation (types 100 and 101): category OUTPUT, raster, display
+ * space 1024x1024 (type 100) or 8192x8192 (type 101) pixels; DC unit = one pixel.
+ * The image of a frame is the current workstation viewport (its size in pixels).
+ *
+ * File naming (docs/WORKSTATIONS.md): the connection identifier gives a base name B:
+ *   ""/NULL -> "gks";  all digits N (a Fortran CONID) -> "gksN";  "path.png" -> "path";
+ *   anything else is used as is. Frame 1 is written to B.png, frame k > 1 to B-k.png
+ *   (k with at least three digits). ESCAPE GESC_SET_FILE_NAME replaces B.
+ * A frame's file is written at UPDATE WORKSTATION, CLEAR WORKSTATION and CLOSE
+ * WORKSTATION when it has new content; a workstation closed without any drawing still
+ * writes one (background) picture.
+ *
+ * Rendering and the HLHSR modes: ws_png_render.h. Anti-aliasing: ESCAPE
+ * GESC_PNG_SUPERSAMPLE (ints[1] = s in 1..4) renders the following frames with s x s
+ * samples per pixel (box-filtered to the image when written); it applies at once if the
+ * current frame is still empty, else from the next CLEAR WORKSTATION. Default 1 (none).
+ * Compression: ESCAPE GESC_PNG_COMPRESSION (ints[1] = 0 fast, the default: zlib run-length
+ * strategy with the SUB row filter; 1..9: zlib level with libpng's adaptive row filters,
+ * 9 smallest) applies to every file written from then on.
+ */
+#include "raster.h"
+#include "gks_alloc.h"
+#include "gks_xform.h"
+#include "ws_driver.h"
+#include "ws_png_render.h"
+#include "ws_raytrace.h"
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Predefined colours: 0 background white, 1 foreground black, then the usual six. */
+static const Grgb png_colours[8] = {
+    { 1, 1, 1 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 },
+    { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 },
+};
+
+typedef struct png_ws {
+    gks_raster_fb *fb;  /* primitives drawn at once */
+    char *base;
+    int frame;          /* 1-based number of the current frame */
+    int dirty;          /* content not yet written */
+    int written_any;    /* some file has been written */
+    int frame_written;  /* the current frame has a file */
+    int ss;             /* supersampling factor of the next framebuffer (anti-aliasing) */
+    int compression;    /* PNG compression: GKS_RASTER_PNG_FAST or a zlib level 1..9 */
+    ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
+    png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
+} png_ws;
+
+static char *base_from_conn(const char *conn)
+{
+    size_t n = strlen(conn);
+    if (n == 0)
+        return gks_strdup("gks");
+    int digits = 1;
+    for (size_t i = 0; i < n; i++)
+        digits &= isdigit((unsigned char)conn[i]) != 0;
+    if (digits) {
+        char *s = gks_alloc_array(n + 4, 1);
+        if (s)
+            snprintf(s, n + 4, "gks%s", conn);
+        return s;
+    }
+    if (n > 4 && strcmp(conn + n - 4, ".png") == 0)
+        return gks_strndup(conn, n - 4);
+    return gks_strdup(conn);
+}
+
+static int png_open(gks_ws *ws)
+{
+    png_ws *p = gks_calloc_array(1, sizeof *p);
+    if (!p)
+        return 300;
+    p->base = base_from_conn(ws->conn_id);
+    p->rt = ws_rt_new();
+    p->render = ws_png_render_new();
+    if (!p->base || !p->rt || !p->render) {
+        gks_free(p->base);
+        ws_rt_free(p->rt);
+        ws_png_render_free(p->render);
+        gks_free(p);
+        return 300;
+    }
+    p->frame = 1;
+    p->ss = 1;
+    p->compression = GKS_RASTER_PNG_FAST;
+    ws->priv = p;
+    return 0;
+}
+
+static void png_close(gks_ws *ws)
+{
+    png_ws *p = ws->priv;
+    gks_raster_fb_free(p->fb);
+    ws_rt_free(p->rt);
+    ws_png_render_free(p->render);
+    gks_free(p->base);
+    gks_free(p);
+    ws->priv = NULL;
+}
+
+static void image_size(const gks_ws *ws, int *w, int *h)
+{
+    *w = (int)ceil(ws->cur_vp.x_max - ws->cur_vp.x_min - 1e-9);
+    *h = (int)ceil(ws->cur_vp.y_max - ws->cur_vp.y_min - 1e-9);
+    if (*w < 1) *w = 1;
+    if (*h < 1) *h = 1;
+}
+
+/* The framebuffer for the current viewport, created or re-created and cleared to
+ * colour 0 when its size changed; NULL on storage overflow. */
+static gks_raster_fb *framebuffer(gks_ws *ws)
+{
+    png_ws *p = ws->priv;
+    int w, h;
+    image_size(ws, &w, &h);
+    if (p->fb && p->fb->width == w && p->fb->height == h)
+        return p->fb;
+    gks_raster_fb_free(p->fb);
+    p->fb = gks_raster_fb_create(w, h, p->ss);
+    if (p->fb) {
+        float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green, (float)ws->colr[0].blue };
+        gks_raster_fb_clear(p->fb, bg);
+    }
+    return p->fb;
+}
+
+static int png_clear(gks_ws *ws)
+{
+    png_ws *p = ws->priv;
+    if (p->frame_written) {
+        p->frame++;
+        p->frame_written = 0;
+    }
+    p->dirty = 0;
+    ws_rt_reset(p->rt);
+    ws_png_render_reset(p->render);
+    if (p->fb && p->fb->ss == p->ss) { /* same sampling: cleared in place if the size */
+        gks_raster_fb *fb = p->fb;      /* is unchanged (framebuffer() checks it) */
+        int w, h;
+        image_size(ws, &w, &h);
+        if (fb->width == w && fb->height == h) {
+            float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                            (float)ws->colr[0].blue };
+            gks_raster_fb_clear(fb, bg);
+            return 0;
+        }
+    }
+    gks_raster_fb_free(p->fb);
+    p->fb = NULL;
+    return framebuffer(ws) ? 0 : 300;
+}
+
+static int ws_matrix(const gks_ws *ws, double m[4][4]);
+
+/* Writes the frame's file; recorded ray-tracing primitives are traced first. */
+static int png_update(gks_ws *ws)
+{
+    png_ws *p = ws->priv;
+    if (!p->dirty && p->written_any)
+        return 0;
+    gks_raster_fb *fb = framebuffer(ws);
+    if (!fb)
+        return 300;
+    double wsm[4][4];
+    if (ws_rt_count(p->rt) > 0 && ws_matrix(ws, wsm) == 0) {
+        int e = ws_rt_render(p->rt, ws, (const double (*)[4])wsm, fb);
+        if (e)
+            return e;
+    }
+    gks_raster_fb *pic;
+    if (ws_png_render_compose(p->render, ws, fb, &pic))
+        return 300;
+    size_t n = strlen(p->base) + 32;
+    char *path = gks_alloc_array(n, 1);
+    if (!path)
+        return 300;
+    if (p->frame == 1)
+        snprintf(path, n, "%s.png", p->base);
+    else
+        snprintf(path, n, "%s-%03d.png", p->base, p->frame);
+    int r = gks_raster_fb_write_png(pic, path, p->compression);
+    gks_free(path);
+    if (r != GKS_RASTER_OK)
+        return r == GKS_RASTER_E_NOMEM ? 300 : 303;
+    p->dirty = 0;
+    p->written_any = 1;
+    p->frame_written = 1;
+    return 0;
+}
+
+/* NPC3 -> image pixels and depth: workstation window -> viewport (DC), minus the
+ * viewport origin; DC z in [0,1], larger = nearer. */
+static int ws_matrix(const gks_ws *ws, double m[4][4])
+{
+    double win[6];
+    gks_limit3_array(&ws->cur_win, win);
+    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
+                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
+    return gks_xform_ws_tran3(win, vp, m);
+}
+
+static int png_primitive(gks_ws *ws, const gks_prim *prim)
+{
+    png_ws *p = ws->priv;
+    gks_raster_fb *fb = framebuffer(ws);
+    if (!fb)
+        return 300;
+    if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
+        (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY)) {
+        if (ws_rt_record(p->rt, ws, prim))
+            return 300;
+        p->dirty = 1;
+        return 0;
+    }
+    int e = ws_png_render_prim(p->render, ws, fb, prim);
+    if (!e)
+        p->dirty = 1;
+    return e;
+}
+
+static int png_message(gks_ws *ws, const char *msg)
+{
+    /* A file workstation has no operator display: messages go to standard error. */
+    fprintf(stderr, "gks3d: message for workstation %d: %s\n", ws->id, msg);
+    return 0;
+}
+
+static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    png_ws *p = ws->priv;
+    if (func_id == GESC_PNG_SUPERSAMPLE) {
+        if (in->num_ints < 2 || !in->ints || in->ints[1] < 1 || in->ints[1] > 4)
+            return 182;
+        p->ss = in->ints[1];
+        if (!p->dirty && !p->frame_written && ws_png_render_retained(p->render) == 0 &&
+            ws_rt_count(p->rt) == 0) { /* nothing drawn yet: this frame already */
+            gks_raster_fb_free(p->fb);
+            p->fb = NULL;
+            return framebuffer(ws) ? 0 : 300;
+        }
+        return 0;
+    }
+    if (func_id == GESC_PNG_COMPRESSION) {
+        if (in->num_ints < 2 || !in->ints || in->ints[1] < GKS_RASTER_PNG_FAST ||
+            in->ints[1] > GKS_RASTER_PNG_LEVEL_MAX)
+            return 182;
+        p->compression = in->ints[1];
+        return 0;
+    }
+    if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
+        return ws_rt_escape(p->rt, func_id, in, out);
+    if (func_id != GESC_SET_FILE_NAME)
+        return 180;
+    char *b = gks_strndup(in->str, in->str_len);
+    if (!b)
+        return 300;
+    gks_free(p->base);
+    p->base = b;
+    return 0;
+}
+
+/* Pixel readback: the composed picture (retained primitives drawn over the immediate
+ * ones; areas recorded for ray tracing are traced only when the frame is written). */
+static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
+{
+    png_ws *p = ws->priv;
+    gks_raster_fb *fb = framebuffer(ws), *pic;
+    if (!fb || ws_png_render_compose(p->render, ws, fb, &pic))
+        return 300;
+    unsigned char *row = gks_alloc_array((size_t)pic->width, 3);
+    if (!row)
+        return 300;
+    for (int j = 0; j < ny; j++) {
+        int y = y0 + j, have = y >= 0 && y < pic->height;
+        if (have)
+            gks_raster_fb_resolve_row(pic, pic->height - 1 - y, row);
+        for (int i = 0; i < nx; i++) {
+            int x = x0 + i;
+            const unsigned char *c = row + 3 * (size_t)x;
+            rgb[(size_t)j * (size_t)nx + (size_t)i] =
+                have && x >= 0 && x < pic->width ? (c[0] << 16) | (c[1] << 8) | c[2] : -1;
+        }
+    }
+    gks_free(row);
+    return 0;
+}
+
+#define PNG_DESC(TYPE, NAME, SIZE)                                                   \
+    {                                                                                \
+        .type = TYPE, .name = NAME, .cat = GCAT_OUT, .cls = GCLASS_RASTER,           \
+        .dc_units = GDC_OTHER, .dc_x = SIZE, .dc_y = SIZE, .raster_x = SIZE,         \
+        .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
+        .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster,                        \
+        .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) |               \
+                       (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_PAINTER) |                \
+                       (1u << GHLHSR_RAYTRACE),                                         \
+    }
+
+static const gks_ws_desc png_desc = PNG_DESC(GWS_TYPE_PNG, "png", 1024);
+static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-large", 8192);
+
+#define PNG_DRIVER(DESC)                                                           \
+    {                                                                              \
+        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = png_open,         \
+        .close = png_close, .clear = png_clear, .update = png_update,              \
+        .primitive = png_primitive, .message = png_message, .escape = png_escape,  \
+        .read_pixels = png_read_pixels,                                            \
+    }
+
+const gks_ws_driver gks_ws_png_driver = PNG_DRIVER(png_desc);
+const gks_ws_driver gks_ws_png_large_driver = PNG_DRIVER(png_large_desc);

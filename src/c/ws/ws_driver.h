@@ -1,0 +1,150 @@
+/*
+ * ws_driver.h -- workstation drivers behind one small interface (cairo/netCDF style):
+ * one static const table per workstation type, designated initialisers, NULL = not
+ * supported (the core supplies the default). The core decides legality and resolves
+ * attributes; a driver receives primitives in NDC3 with resolved colours and only draws.
+ */
+#ifndef WS_DRIVER_H
+#define WS_DRIVER_H
+#include "gks_private.h"
+#include "gks.h"
+#include "gks_context.h"
+#include "ws_wdt.h"
+
+#define GKS_WS_DRIVER_VERSION 1
+
+/* Workstation description table (ISO 7942 6.2): constant per workstation type. */
+typedef struct gks_ws_desc {
+    int type;
+    const char *name;
+    Gws_cat cat;
+    Gws_class cls;
+    Gdc_units dc_units;
+    double dc_x, dc_y;            /* display space size in DC units */
+    int raster_x, raster_y;       /* display space size in raster units */
+    Gcolr_avail colr_avail;
+    int n_colr;                   /* colour table size */
+    int n_pred_colr;              /* predefined colour representations */
+    const Grgb *pred_colr;
+    Girg_mode default_irg;        /* default implicit regeneration mode */
+    Gdefer_mode default_defer;
+    unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
+    /* Output facilities and predefined bundles (ws_wdt.h); NULL = gks_wdt_raster. */
+    const struct gks_wdt_output *out;
+} gks_ws_desc;
+
+/* A primitive as the core hands it to drivers: points in NDC3 after normalization,
+ * segment transformation and clipping to the viewport (if on); attributes resolved for this
+ * workstation (individual or bundled by the aspect source flags, colour indices turned into
+ * colours, unsupported values replaced as the standard says). TEXT reaches drivers as
+ * GKS_PRIM_POLYLINE strokes (text = 1); FILL AREA SET as GKS_PRIM_FILL_AREA with n_loops >= 1
+ * and the edge attributes; markers as their clip-surviving centres. */
+typedef enum {
+    GKS_PRIM_POLYLINE, GKS_PRIM_FILL_AREA, GKS_PRIM_POLYMARKER, GKS_PRIM_CELL_ARRAY
+} gks_prim_kind;
+
+typedef struct gks_prim_attrs {
+    int linetype;              /* 1 solid, 2 dashed, 3 dotted, 4 dash-dotted */
+    double linewidth;          /* linewidth scale factor (1 = nominal width) */
+    int marker_type;           /* 1 dot, 2 plus, 3 asterisk, 4 circle, 5 diagonal cross */
+    double marker_size;        /* marker size scale factor (1 = nominal size) */
+    Gfill_int_style int_style; /* fill area interior style */
+    int style_ind;             /* hatch style (negative, ISO) or pattern index */
+    int pat_nx, pat_ny;        /* pattern: cell counts and colours (row-major, row 0 at the */
+    const Grgb *pattern;       /* reference point), NULL unless int_style == GSTYLE_PAT */
+    Gpoint3 pat_ref;           /* pattern reference point and the pattern box's width and */
+    Gvec3 pat_width, pat_height; /* height vectors, all in NDC3 */
+    int edge_flag;             /* FILL AREA SET edges: 0 off, 1 on */
+    int edgetype;              /* as linetype */
+    double edgewidth;          /* edgewidth scale factor */
+    Grgb edge_colour;
+    int hlhsr_id;              /* HLHSR identifier attribute */
+    int pick_id;               /* pick identifier attribute */
+    int text;                  /* 1: a polyline stroke of TEXT (annotation) */
+} gks_prim_attrs;
+
+typedef struct gks_prim {
+    gks_prim_kind kind;
+    int n_loops;              /* fill area set: number of loops; 1 otherwise */
+    const int *loop_counts;   /* points per loop */
+    int n_points;
+    const Gpoint3 *pts;       /* NDC3 */
+    Grgb colour;              /* line, marker, text or fill colour */
+    gks_prim_attrs attrs;
+    /* CELL ARRAY (3): the parallelogram P (cell (0,0) corner), Q (opposite corner), R (the
+     * corner at the end of P's first row) in NDC3, nx*ny colours row-major from P; the clip
+     * box (NDC3 xmin,xmax,ymin,ymax,zmin,zmax) applies when clip = 1 (cells are clipped per
+     * sample, the only primitive not clipped in the core). */
+    Gpoint3 cell_p, cell_q, cell_r;
+    int cell_nx, cell_ny;
+    const Grgb *cells;
+    int clip;
+    double clip_box[6];
+    int view_ind;             /* view index attribute: the ws's view representation */
+    Garea_props area_props[2]; /* front, back area properties (lighting) */
+    int refl_eq[2];           /* front, back reflectance equation, GREFL_* */
+    uint64_t light_mask;      /* bit i-1: light source index i is active */
+} gks_prim;
+
+/* Workstation state list (ISO 7942 6.6): owned by the core, created at OPEN WORKSTATION. */
+struct gks_ws {
+    int id;
+    char *conn_id;
+    const gks_ws_driver *drv;
+    Gws_st state;
+    Gdefer_mode defer_mode;
+    Girg_mode irg_mode;
+    Gdisp_space_empty disp_empty;
+    Gnew_frame_nec_upd new_frame;
+    Gupd_st tran_upd_st;
+    Glimit3 req_win, cur_win;     /* workstation window, NPC */
+    Glimit3 req_vp, cur_vp;       /* workstation viewport, DC */
+    Grgb *colr;                   /* colour table, desc->n_colr entries */
+    Gview_rep3 views[GKS_MAX_VIEW_IND + 1]; /* view table; 0 fixed: identity, NPC cube */
+    int hlhsr_mode;
+    int view_pri[GKS_MAX_VIEW_IND + 1]; /* view transformation input priority, highest first */
+    unsigned char *colr_defined;
+    Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
+    unsigned char light_defined[GKS_MAX_LIGHT_IND];
+    void *priv;                   /* the driver's own data */
+    /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
+     * when entry i is defined. Initialised from the description table's predefined
+     * bundles at OPEN WORKSTATION. Pattern colour arrays are owned (gks_alloc). */
+    Gline_bundle line_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gmarker_bundle marker_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gtext_bundle text_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gfill_bundle fill_rep[GKS_WDT_MAX_BUNDLES + 1];
+    Gedge_bundle edge_rep[GKS_WDT_MAX_BUNDLES + 1];
+    struct { int nx, ny; int *colr; } pat_rep[GKS_WDT_MAX_BUNDLES + 1];
+    unsigned char line_def[GKS_WDT_MAX_BUNDLES + 1], marker_def[GKS_WDT_MAX_BUNDLES + 1],
+        text_def[GKS_WDT_MAX_BUNDLES + 1], fill_def[GKS_WDT_MAX_BUNDLES + 1],
+        edge_def[GKS_WDT_MAX_BUNDLES + 1], pat_def[GKS_WDT_MAX_BUNDLES + 1];
+};
+
+struct gks_ws_driver {
+    int version;
+    const gks_ws_desc *desc;
+    /* Returns 0 or a GKS error number (26: cannot be opened, 300: storage). */
+    int (*open)(gks_ws *ws);
+    void (*close)(gks_ws *ws);
+    /* Start a new frame (the display surface is cleared). */
+    int (*clear)(gks_ws *ws);
+    /* Make the picture current: e.g. write the frame's file. */
+    int (*update)(gks_ws *ws);
+    int (*primitive)(gks_ws *ws, const gks_prim *prim);
+    int (*message)(gks_ws *ws, const char *msg);
+    /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
+    int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
+    /* Pixel readback (INQUIRE PIXEL ...): the picture as it would be written now, nx x ny
+     * pixels from image pixel (x0, y0) (DC relative to the viewport origin, y up), row by
+     * row upward, each 0xRRGGBB (8 bits per component) or -1 outside the image. Returns 0
+     * or 300. NULL: the type has no pixel store readback (error 40). */
+    int (*read_pixels)(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb);
+};
+
+/* The compiled-in drivers. */
+extern const gks_ws_driver gks_ws_null_driver;
+extern const gks_ws_driver gks_ws_png_driver;
+extern const gks_ws_driver gks_ws_png_large_driver;
+extern const gks_ws_driver gks_ws_wiss_driver;
+#endif
