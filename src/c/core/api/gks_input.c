@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_input.c -- the input functions of ISO 7942 5.9 (INITIALISE, SET MODE, REQUEST,
  * SAMPLE, AWAIT EVENT, FLUSH DEVICE EVENTS, GET) and the input inquiries, for an
