@@ -329,6 +329,7 @@ static int row(const char *name, int walk, double box, size_t n)
 #else
     (void)to;
     (void)wo;
+    (void)uo;
     (void)mo;
     (void)uo;
 #endif

@@ -77,10 +77,7 @@ __attribute__((constructor)) static void gks_fortran_init(void)
 /* Out of memory inside the binding: report error 300 through the current handler. */
 static void report_nomem(Gint fctid)
 {
-    Gerr_handler h = NULL;
-    gset_err_hand(NULL, &h);
-    gset_err_hand(h, NULL);
-    h(300, fctid, NULL); /* the unit is unknown here: GERHND receives ERRFIL = 0 */
+    gks_binding_error(300, fctid);
 }
 
 /* The binding's one allocation funnel: n * size bytes, overflow checked; NULL on failure. */

@@ -14,6 +14,7 @@
  * characters; inquiries return the record's characters the same way. Output strings are
  * blank-padded; output arrays get at most their declared size (N).
  */
+#include "gks_binding.h"
 #include "gks_fortran.h"
 #include <stdint.h>
 #include <stdlib.h>
@@ -22,10 +23,7 @@
 /* Report error 300 (storage overflow in the binding) through the current handler. */
 static void report_nomem(Gint fctid)
 {
-    Gerr_handler h = NULL;
-    gset_err_hand(NULL, &h);
-    gset_err_hand(h, NULL);
-    h(300, fctid, NULL);
+    gks_binding_error(300, fctid);
 }
 
 /* n * size bytes, overflow checked; NULL on failure. */

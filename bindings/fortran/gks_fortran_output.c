@@ -9,6 +9,7 @@
  * arguments; input text is blank-trimmed. Conventions as gks_fortran.c.
  */
 #include "gks.h"
+#include "gks_binding.h"
 #include "FC.h"
 #include <math.h>
 #include <stdint.h>
@@ -25,10 +26,7 @@ typedef float freal;
 /* Report error 300 (storage overflow in the binding) through the current handler. */
 static void report_nomem(Gint fctid)
 {
-    Gerr_handler h = NULL;
-    gset_err_hand(NULL, &h);
-    gset_err_hand(h, NULL);
-    h(300, fctid, NULL);
+    gks_binding_error(300, fctid);
 }
 
 /* n * size bytes, overflow checked; NULL on failure. */

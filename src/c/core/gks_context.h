@@ -106,6 +106,7 @@ typedef struct gks_error_state {
     int last_error;
     FILE *fp;              /* error file opened at OPEN GKS, NULL = standard error */
     Gerr_handler handler;  /* NULL = gerr_hand */
+    unsigned long epoch;   /* world epoch (gks_error.h): changes when the world does */
 } gks_error_state;
 
 /* Test hook: called with every primitive just before a driver receives it. */

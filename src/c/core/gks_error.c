@@ -3,6 +3,7 @@
  * gks_error.c -- error table, the one report function, ERROR HANDLING and ERROR LOGGING.
  */
 #include "gks_error.h"
+#include "gks_binding.h"
 #include "gks_context.h"
 #include "gks_state.h"
 #include <stdio.h>
@@ -44,25 +45,57 @@ unsigned gks_function_states(int fctid)
     return fn_table[fctid].states;
 }
 
-void gks_error_report(int err_num, int fctid)
+int gks_error_report(int err_num, int fctid)
 {
     gks_context *c = gks_ctx();
     Gerr_handler h = c->err.handler ? c->err.handler : gerr_hand;
     const char *file = c->sl ? c->sl->err_file : NULL;
+    unsigned long epoch = c->err.epoch;
+    int outer = c->err.in_handler; /* a handler's own call may report: nest */
     c->err.last_error = err_num;
     c->err.in_handler = 1;
     h(err_num, fctid, file);
-    c->err.in_handler = 0;
+    c->err.in_handler = outer;
+    return c->err.epoch == epoch;
+}
+
+GKS_API void gks_binding_error(int err_num, int fctid)
+{
+    if (gks_error_report(err_num, fctid)) {
+    } /* the binding's wrapper returns at once */
+}
+
+unsigned long gks_world_epoch(void)
+{
+    return gks_ctx()->err.epoch;
+}
+
+void gks_world_changed(void)
+{
+    gks_ctx()->err.epoch++;
 }
 
 int gks_check_state(int fctid)
 {
+    /* Every non-inquiry entry point passes here: entered from ERROR HANDLING, it may
+     * change anything, so the reporting function must not go on. */
+    if (gks_ctx()->err.in_handler)
+        gks_world_changed();
     unsigned mask = gks_function_states(fctid);
     if (mask & (1u << gks_ctx()->op_st))
         return 0;
     int e = gks_state_error_for(mask);
-    gks_error_report(e, fctid);
+    if (gks_error_report(e, fctid)) {
+    } /* the caller returns on e != 0 anyway */
     return e;
+}
+
+int gks_inq_begin(Gint *err_ind, unsigned mask)
+{
+    if (!err_ind)
+        return -1;
+    *err_ind = gks_inq_state(mask);
+    return *err_ind;
 }
 
 int gks_inq_state(unsigned mask)

@@ -3,14 +3,34 @@
  * gks_error.h -- the one error path: every function that detects an error calls
  * gks_error_report(), which sets the error state, calls the current ERROR HANDLING
  * procedure (gerr_hand or the application's) and returns. Never exits.
+ *
+ * The handler may change the world: ISO 7942 lets it call EMERGENCY CLOSE GKS, and a
+ * careless one may call anything. So gks_error_report() answers whether the caller may
+ * go on: it compares the context's world epoch (gks_context.h) before and after the
+ * handler. The answer must be used (warn_unused_result, -Werror): a caller that does not
+ * return at once on 0 fails to compile. docs/ERRORS.md describes the design.
  */
 #ifndef GKS_ERROR_H
 #define GKS_ERROR_H
 #include "gks_private.h"
 #include "gks.h"
 
-/* Report error `err_num` detected in function `fctid`. */
-void gks_error_report(int err_num, int fctid);
+#define GKS_MUST_CHECK __attribute__((warn_unused_result))
+
+/* Report error `err_num` detected in function `fctid`. Returns 1 if the world is as it
+ * was before the report (the caller may continue: next workstation, next segment), 0 if
+ * the handler changed it (GKS closed, a workstation closed, a segment deleted, any other
+ * non-inquiry function called): the caller then returns at once, touching nothing it
+ * looked up before the report. */
+GKS_MUST_CHECK int gks_error_report(int err_num, int fctid);
+
+/* The world epoch: a counter that changes whenever something a caller may hold a
+ * pointer to ceases to exist (CLOSE GKS and EMERGENCY CLOSE GKS, CLOSE WORKSTATION, a
+ * segment deleted) and whenever a non-inquiry function is entered while ERROR HANDLING
+ * runs. Code that calls public functions in a loop (INTERPRET ITEM) compares it. */
+unsigned long gks_world_epoch(void);
+/* Mark the world changed (the sites listed above). */
+void gks_world_changed(void);
 
 /* Entry-point guard: if the operating state does not allow `fctid`, report the state
  * error and return it; else return 0. Usage:  if (gks_check_state(GFN_PL)) return; */
@@ -19,6 +39,22 @@ int gks_check_state(int fctid);
 /* For inquiries: the state error number for a function allowed in `mask`, or 0. */
 int gks_inq_state(unsigned mask);
 
-/* Shorthand for the entry points: report and return from a void function. */
-#define GKS_FAIL(err, fct) do { gks_error_report((err), (fct)); return; } while (0)
+/* Inquiry entry: writes the state error (or 0) to *err_ind and returns it; a NULL error
+ * indicator returns -1 (the inquiry has nowhere to answer and does nothing). */
+int gks_inq_begin(Gint *err_ind, unsigned mask);
+
+/* Report as the caller's last action and return (from a void function / with `val`):
+ * returning is right whatever the handler did. */
+#define GKS_FAIL(err, fct)                                                                 \
+    do {                                                                                   \
+        if (gks_error_report((err), (fct))) {                                              \
+        }                                                                                  \
+        return;                                                                            \
+    } while (0)
+#define GKS_FAIL_RET(err, fct, val)                                                        \
+    do {                                                                                   \
+        if (gks_error_report((err), (fct))) {                                              \
+        }                                                                                  \
+        return (val);                                                                      \
+    } while (0)
 #endif

@@ -1,20 +1,22 @@
 /* SPDX-License-Identifier: MIT */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include "gks_ws.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags)
 {
-    if (ws_id < 0) {
-        gks_error_report(20, fctid);
-        return NULL;
-    }
+    if (ws_id < 0)
+        GKS_FAIL_RET(20, fctid, NULL);
     gks_ws *ws = gks_ws_lookup(ws_id);
-    if (!ws) {
-        gks_error_report(25, fctid);
-        return NULL;
-    }
+    if (!ws)
+        GKS_FAIL_RET(25, fctid, NULL);
     Gws_cat cat = ws->drv->desc->cat;
     int err = 0;
     if ((cat_flags & GKS_WSC_NOT_MO) && cat == GCAT_MO)
@@ -25,10 +27,8 @@ gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags)
         err = 35;
     else if ((cat_flags & GKS_WSC_NOT_WISS) && cat == GCAT_WISS)
         err = 36;
-    if (err) {
-        gks_error_report(err, fctid);
-        return NULL;
-    }
+    if (err)
+        GKS_FAIL_RET(err, fctid, NULL);
     return ws;
 }
 
@@ -123,11 +123,94 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
     return ws;
 }
 
+/* realpath() into the funnel; NULL with *err = 26 (no such path) or 300. */
+static char *canonical(const char *path, int *err)
+{
+    char *r = realpath(path, NULL);
+    if (!r) {
+        *err = errno == ENOMEM ? 300 : 26;
+        return NULL;
+    }
+    char *c = gks_strdup(r);
+    free(r);
+    *err = c ? 0 : 300;
+    return c;
+}
+
+/* The canonical path of `path`, which must be usable: an existing regular file (readable,
+ * or writable when `write`), or, when writing, a name not yet taken in a writable
+ * directory. NULL with *err = 26 or 300. */
+static char *usable_file(const char *path, int write, int *err)
+{
+    struct stat st;
+    if (stat(path, &st) == 0) {
+        if (!S_ISREG(st.st_mode) || access(path, write ? W_OK : R_OK) != 0) {
+            *err = 26;
+            return NULL;
+        }
+        return canonical(path, err);
+    }
+    if (errno != ENOENT || !write) {
+        *err = 26;
+        return NULL;
+    }
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? gks_strndup(path, slash == path ? 1 : (size_t)(slash - path))
+                      : gks_strdup(".");
+    if (!dir) {
+        *err = 300;
+        return NULL;
+    }
+    char *cdir = NULL;
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0)
+        *err = 26;
+    else
+        cdir = canonical(dir, err);
+    gks_free(dir);
+    if (!cdir)
+        return NULL;
+    const char *base = slash ? slash + 1 : path;
+    size_t n = strlen(cdir) + strlen(base) + 2;
+    char *c = gks_alloc_array(n, 1);
+    if (c)
+        snprintf(c, n, "%s%s%s", cdir, strcmp(cdir, "/") ? "/" : "", base);
+    gks_free(cdir);
+    *err = c ? 0 : 300;
+    return c;
+}
+
+int gks_ws_file_check(gks_ws *ws)
+{
+    if (!ws->drv->file)
+        return 0;
+    char *path = NULL;
+    int err = ws->drv->file(ws, &path);
+    if (err)
+        return err;
+    if (!*path) {
+        gks_free(path);
+        return 21;
+    }
+    char *canon = usable_file(path, ws->drv->desc->cat != GCAT_MI, &err);
+    gks_free(path);
+    if (!canon)
+        return err;
+    const gks_context *c = gks_ctx();
+    for (int i = 0; c->sl && i < c->sl->n_open; i++)
+        if (c->ws[i]->file && strcmp(c->ws[i]->file, canon) == 0) {
+            gks_free(canon);
+            return 21; /* the connection (its file) is in use by another workstation */
+        }
+    ws->file = canon;
+    return 0;
+}
+
 void gks_ws_destroy(gks_ws *ws)
 {
     if (!ws)
         return;
     gks_free(ws->conn_id);
+    gks_free(ws->file);
     gks_free(ws->colr);
     gks_free(ws->colr_defined);
     for (int i = 0; i <= GKS_WDT_MAX_BUNDLES; i++)

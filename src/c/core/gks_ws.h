@@ -21,13 +21,21 @@ enum {
 gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags);
 
 /* For inquiries of a workstation state list: the open workstation ws_id, or NULL with
- * *err set to 7 (state), 20 (invalid id) or 25 (not open). Never calls the handler. */
+ * *err set to 7 (state), 20 (invalid id) or 25 (not open); NULL when err is NULL. Never
+ * calls the handler. */
 gks_ws *gks_inq_ws(Gint ws_id, Gint *err);
 
 /* Create the state list of a workstation being opened (colour table, transformation,
  * deferral from the description table). NULL on storage overflow. */
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv);
 void gks_ws_destroy(gks_ws *ws);
+
+/* OPEN WORKSTATION's file check, before the driver opens anything: the driver's file
+ * (drv->file) must be a regular file or not exist yet in a writable directory (MI: an
+ * existing readable regular file): else 26 (a directory, FIFO or device is refused, so
+ * nothing blocks). Its canonical path (symbolic links resolved) goes to ws->file; if
+ * another open workstation has the same file, 21. Returns 0, 21, 26 or 300. */
+int gks_ws_file_check(gks_ws *ws);
 
 /* Apply a pending workstation transformation and clear the surface (a new frame). */
 int gks_ws_new_frame(gks_ws *ws);

@@ -4,12 +4,19 @@
  * longjmp; every object that must be released after a jump is kept in a struct that
  * is not modified between setjmp and the jump (so no volatile locals are needed).
  */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* open, fstat, fdopen, ftruncate */
+#endif
 #include "raster.h"
 #include "gks_alloc.h"
 #include <png.h>
 #include <setjmp.h>
 #include <stdio.h>
 #include <zlib.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* Quiet handlers: errors jump back (libpng's default), warnings are dropped. */
 static void png_err(png_structp png, png_const_charp msg)
@@ -68,10 +75,37 @@ static int write_rows(png_job *job, int w, int h, const row_source *src, int com
     return GKS_RASTER_OK;
 }
 
+/* The output file, truncated: an existing regular file (through a symbolic link too), or
+ * a new one (*created = 1). A FIFO or device is refused without blocking (O_NONBLOCK:
+ * a FIFO without a reader fails at once). NULL on failure. */
+static FILE *open_output(const char *path, int *created)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    *created = fd >= 0;
+    if (fd < 0 && errno == EEXIST) /* (O_CREAT: through a dangling link, the user's) */
+        fd = open(path, O_WRONLY | O_CREAT | O_NONBLOCK | O_CLOEXEC, 0666);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || (!*created && ftruncate(fd, 0) != 0) ||
+        fcntl(fd, F_SETFL, 0) != 0) {
+        close(fd);
+        return NULL;
+    }
+    FILE *fp = fdopen(fd, "wb");
+    if (!fp) {
+        close(fd);
+        if (*created)
+            remove(path);
+    }
+    return fp;
+}
+
 static int write_png(const char *path, int w, int h, const row_source *src, int compression)
 {
     png_job job = {0};
-    job.fp = fopen(path, "wb");
+    int created = 0;
+    job.fp = open_output(path, &created);
     if (!job.fp)
         return GKS_RASTER_E_IO;
     int rc = GKS_RASTER_E_NOMEM;
@@ -83,8 +117,8 @@ static int write_png(const char *path, int w, int h, const row_source *src, int 
     png_destroy_write_struct(job.png ? &job.png : NULL, job.info ? &job.info : NULL);
     if (fclose(job.fp) != 0 && rc == GKS_RASTER_OK)
         rc = GKS_RASTER_E_IO;
-    if (rc != GKS_RASTER_OK)
-        remove(path);
+    if (rc != GKS_RASTER_OK && created)
+        remove(path); /* never what the library did not create (a user's file or link) */
     return rc;
 }
 

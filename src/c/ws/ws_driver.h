@@ -91,6 +91,7 @@ typedef struct gks_prim {
 struct gks_ws {
     int id;
     char *conn_id;
+    char *file;                   /* canonical path of the file it writes/reads, or NULL */
     const gks_ws_driver *drv;
     Gws_st state;
     Gdefer_mode defer_mode;
@@ -125,6 +126,11 @@ struct gks_ws {
 struct gks_ws_driver {
     int version;
     const gks_ws_desc *desc;
+    /* File workstations: the name of the file the workstation will write (MI: read) for
+     * its connection identifier, in *path (gks_alloc'd); 0, 21 or 300. OPEN WORKSTATION
+     * checks it before open (gks_ws_file_check): 26 if it cannot be created (read), 21
+     * if another open workstation uses the same file. NULL: no file. */
+    int (*file)(const gks_ws *ws, char **path);
     /* Returns 0 or a GKS error number (26: cannot be opened, 300: storage). */
     int (*open)(gks_ws *ws);
     void (*close)(gks_ws *ws);

@@ -325,7 +325,13 @@ int gks_xform_norm_tran3(const double win[6], const double vp[6], double m[3][4]
         return err;
     double r[3][4] = { { 0 } };
     for (int i = 0; i < 3; i++) {
+        double w = win[2 * i + 1] - win[2 * i], v = vp[2 * i + 1] - vp[2 * i];
         double s = lin_scale(win[2 * i], win[2 * i + 1], vp[2 * i], vp[2 * i + 1]);
+        /* Not representable: an extent that overflows (a window of +-1e308 would map
+         * everything to one point), or a scale that overflows or underflows to 0 where
+         * both extents are positive (a window 4.9e-324 wide). */
+        if (!isfinite(w) || (w > 0 && v > 0 && !(s > 0)))
+            return GKS_E_ARITHMETIC;
         r[i][i] = s;
         r[i][3] = vp[2 * i] - s * win[2 * i];
     }

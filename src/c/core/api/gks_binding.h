@@ -11,4 +11,9 @@
  * is opened by C (the Fortran GERLOG writes to the unit). The unit is passed to ERROR
  * HANDLING as its decimal text. */
 GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit);
+
+/* An error the binding itself detects (300: storage overflow while converting
+ * arguments), reported through the core's one error path (gks_error_report): the error
+ * state is set and the handler called like for any other error. */
+GKS_API void gks_binding_error(int err_num, int fctid);
 #endif

@@ -86,6 +86,7 @@ GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit)
 
 static void close_gks(gks_context *c)
 {
+    gks_world_changed(); /* every state list is gone */
     if (c->err.fp)
         fclose(c->err.fp);
     c->err.fp = NULL;
@@ -127,7 +128,9 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
     gks_ws *ws = gks_ws_create(ws_id, conn_id, drv);
     if (!ws)
         GKS_FAIL(300, GFN_OPWK);
-    int err = drv->open ? drv->open(ws) : 0;
+    int err = gks_ws_file_check(ws);
+    if (!err && drv->open)
+        err = drv->open(ws);
     if (err) {
         gks_ws_destroy(ws);
         GKS_FAIL(err, GFN_OPWK);
@@ -163,10 +166,11 @@ GKS_API void gclose_ws(Gint ws_id)
         break;
     }
     gks_ws_destroy(ws);
+    gks_world_changed();
     if (sl->n_open == 0)
         c->op_st = GST_GKOP;
     if (err) /* the workstation is closed; the failed final write is still reported */
-        gks_error_report(err, GFN_CLWK);
+        GKS_FAIL(err, GFN_CLWK);
 }
 
 GKS_API void gactivate_ws(Gint ws_id)
@@ -224,7 +228,7 @@ GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
         return;
     if (ctrl_flag != GFLAG_COND && ctrl_flag != GFLAG_ALWAYS)
         GKS_FAIL(2000, GFN_CLRWK);
-    gks_mf_ws_rec(GFN_CLRWK, ws_id, GKSM_ITEM_CLEAR, "i", ctrl_flag);
+    GKS_MF_WS(GFN_CLRWK, ws_id, GKSM_ITEM_CLEAR, "i", ctrl_flag);
     if (ctrl_flag == GFLAG_COND && ws->disp_empty == GDISP_EMPTY &&
         ws->tran_upd_st == GUPD_NOT_PEND)
         return;
@@ -236,7 +240,7 @@ GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
     if (!err)
         err = gks_ws_new_frame(ws);
     if (err)
-        gks_error_report(err, GFN_CLRWK);
+        GKS_FAIL(err, GFN_CLRWK);
 }
 
 GKS_API void gredraw_all_seg_ws(Gint ws_id)
@@ -247,12 +251,12 @@ GKS_API void gredraw_all_seg_ws(Gint ws_id)
                                 GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    gks_mf_ws_rec(GFN_RSGWK, ws_id, GKSM_ITEM_REDRAW, "");
+    GKS_MF_WS(GFN_RSGWK, ws_id, GKSM_ITEM_REDRAW, "");
     /* ISO 7942: apply a pending workstation transformation, clear the surface, redraw
      * all visible segments stored on the workstation. */
     int err = gks_ws_regenerate(ws);
     if (err)
-        gks_error_report(err, GFN_RSGWK);
+        GKS_FAIL(err, GFN_RSGWK);
 }
 
 GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
@@ -265,14 +269,14 @@ GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
         return;
     if (upd_regen_flag != GFLAG_POSTPONE && upd_regen_flag != GFLAG_PERFORM)
         GKS_FAIL(2000, GFN_UWK);
-    gks_mf_ws_rec(GFN_UWK, ws_id, GKSM_ITEM_UPDATE, "i", upd_regen_flag);
+    GKS_MF_WS(GFN_UWK, ws_id, GKSM_ITEM_UPDATE, "i", upd_regen_flag);
     int err = 0;
     if (upd_regen_flag == GFLAG_PERFORM && ws->new_frame == GNEW_YES)
         err = gks_ws_regenerate(ws);
     if (!err && ws->drv->update)
         err = ws->drv->update(ws);
     if (err)
-        gks_error_report(err, GFN_UWK);
+        GKS_FAIL(err, GFN_UWK);
 }
 
 GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mode)
@@ -287,11 +291,11 @@ GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mod
         GKS_FAIL(2000, GFN_SDS);
     ws->defer_mode = defer_mode;
     ws->irg_mode = irg_mode;
-    gks_mf_ws_rec(GFN_SDS, ws_id, GKSM_ITEM_DEFER, "ii", defer_mode, irg_mode);
+    GKS_MF_WS(GFN_SDS, ws_id, GKSM_ITEM_DEFER, "ii", defer_mode, irg_mode);
     if (irg_mode == GIRG_ALLOWED && ws->new_frame == GNEW_YES) {
         int err = gks_ws_regenerate(ws);
         if (err)
-            gks_error_report(err, GFN_SDS);
+            GKS_FAIL(err, GFN_SDS);
     }
 }
 
@@ -302,10 +306,10 @@ GKS_API void gmessage(Gint ws_id, const char *msg)
     gks_ws *ws = gks_ws_checked(GFN_MSG, ws_id, GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    gks_mf_ws_rec(GFN_MSG, ws_id, GKSM_ITEM_MESSAGE, "s", msg);
+    GKS_MF_WS(GFN_MSG, ws_id, GKSM_ITEM_MESSAGE, "s", msg);
     int err = ws->drv->message ? ws->drv->message(ws, msg ? msg : "") : 0;
     if (err)
-        gks_error_report(err, GFN_MSG);
+        GKS_FAIL(err, GFN_MSG);
 }
 
 GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
@@ -323,10 +327,10 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
     if (!ws)
         GKS_FAIL(182, GFN_ESC);
     if (gks_mf_escape(GFN_ESC, ws, func_id, in))
-        return; /* addressed to an MO workstation: recorded */
+        return; /* addressed to an MO workstation: recorded (or its failure reported) */
     int err = ws->drv->escape ? ws->drv->escape(ws, func_id, in, out) : 180;
     if (err)
-        gks_error_report(err, GFN_ESC);
+        GKS_FAIL(err, GFN_ESC);
 }
 
 GKS_API void gemergency_close_gks(void)

@@ -80,7 +80,7 @@ static int input_entry(int fctid, Gint ws_id, Gin_class cls, Gint dev)
         return e;
     e = device_error(ws_id, cls, dev);
     if (e)
-        gks_error_report(e, fctid);
+        GKS_FAIL_RET(e, fctid, e);
     return e;
 }
 
@@ -90,7 +90,7 @@ static void get_entry(int fctid)
 {
     if (gks_check_state(fctid))
         return;
-    gks_error_report(150, fctid);
+    GKS_FAIL(150, fctid);
 }
 
 static void set_err(Gint *err_ind, Gint e)
@@ -303,7 +303,7 @@ GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint
     if (gks_check_state(GFN_WAIT))
         return;
     if (!isfinite(timeout) || timeout < 0)
-        gks_error_report(151, GFN_WAIT);
+        GKS_FAIL(151, GFN_WAIT);
     /* The queue is empty and no device is in EVENT mode: nothing can arrive within the
      * timeout, so the result (class NONE) is returned without waiting. */
 }

@@ -57,8 +57,7 @@ GKS_API void ginq_edge_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->edge_ind); }
 
 GKS_API void ginq_char_base_vec(Gint *err_ind, Gvec *v)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const Gvec *u = &gks_ctx()->sl->attrs.char_up_vec;
     double l = hypot(u->delta_x, u->delta_y);
@@ -67,15 +66,13 @@ GKS_API void ginq_char_base_vec(Gint *err_ind, Gvec *v)
 
 GKS_API void ginq_pat_ref_point(Gint *err_ind, Gpoint *v)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *v = (Gpoint){ gks_ctx()->sl->attrs.pat_ref_point.x, gks_ctx()->sl->attrs.pat_ref_point.y };
 }
 
 GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *p, Gvec3 vecs[2])
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
     *p = a->pat_ref_point;
@@ -85,8 +82,7 @@ GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *p, Gvec3 vecs[2])
 
 GKS_API void ginq_asfs3(Gint *err_ind, Gasfs3 *s)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const Gasf *f = gks_ctx()->sl->attrs.asf;
     s->asfs = (Gasfs){ f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8], f[9], f[10],

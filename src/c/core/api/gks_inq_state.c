@@ -26,8 +26,7 @@ static int copy_list(const int *list, int n, Gint cap, Gint start, Gint_list *ou
 
 gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
 {
-    *err = gks_inq_state(GKS_S_WSOPEN);
-    if (*err)
+    if (gks_inq_begin(err, GKS_S_WSOPEN))
         return NULL;
     if (ws_id < 0) {
         *err = 20;
@@ -65,16 +64,14 @@ GKS_API void ginq_op_st(Gop_st *op_st)
 
 GKS_API void ginq_level_gks(Gint *err_ind, Glevel *level)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *level = gks_ctx()->desc->level;
 }
 
 GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                       Gint_list *ws_types, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_desc_table *d = gks_ctx()->desc;
     int types[16];
@@ -86,23 +83,20 @@ GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, 
 
 GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *ws_max_num = gks_ctx()->desc->max_nums;
 }
 
 GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *max_norm_tran_num = gks_ctx()->desc->max_norm_tran;
 }
 
 GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                Gint_list *open_ws, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
     *err_ind = copy_list(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
@@ -112,8 +106,7 @@ GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *e
 GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                  Gint_list *active_ws, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
     *err_ind = copy_list(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
@@ -193,15 +186,13 @@ GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size 
 
 GKS_API void ginq_cur_norm_tran_num(Gint *err_ind, Gint *norm_tran_num)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (!*err_ind)
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *norm_tran_num = gks_ctx()->sl->cur_tnr;
 }
 
 GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (num < 0 || num > GKS_MAX_NORM_TRAN) {
         *err_ind = 50;
@@ -214,8 +205,7 @@ GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
 
 GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
     const Glimit3 *v = &sl->tran[sl->cur_tnr].vp;

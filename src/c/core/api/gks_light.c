@@ -86,9 +86,9 @@ GKS_API void gset_light_src_rep(Gint ws_id, Gint light_ind, const Glight_src_rep
         GKS_FAIL(2000, GFN_SLSR);
     ws->lights[light_ind - 1] = *rep;
     ws->light_defined[light_ind - 1] = 1;
-    gks_mf_ws_rec(GFN_SLSR, ws_id, GKSM_ITEM_LIGHT_REP, "iiRRRRrr", light_ind, rep->type, 3,
-                  &rep->colr.red, 3, &rep->pos.x, 3, &rep->dir.delta_x, 2, rep->atten,
-                  rep->conc_exp, rep->spread_angle);
+    GKS_MF_WS(GFN_SLSR, ws_id, GKSM_ITEM_LIGHT_REP, "iiRRRRrr", light_ind, rep->type, 3,
+              &rep->colr.red, 3, &rep->pos.x, 3, &rep->dir.delta_x, 2, rep->atten,
+              rep->conc_exp, rep->spread_angle);
 }
 
 static int list_ok(const Gint_list *l)
@@ -126,8 +126,7 @@ GKS_API void gset_light_src_state(const Gint_list *activate, const Gint_list *de
 
 GKS_API void ginq_area_props(Gint *err_ind, Garea_props *front, Garea_props *back)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (front)
         *front = gks_ctx()->sl->attrs.area_props[0];
@@ -137,8 +136,7 @@ GKS_API void ginq_area_props(Gint *err_ind, Garea_props *front, Garea_props *bac
 
 GKS_API void ginq_refl_eq(Gint *err_ind, Gint *front, Gint *back)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (front)
         *front = gks_ctx()->sl->attrs.refl_eq[0];
@@ -166,8 +164,7 @@ GKS_API void ginq_light_src_rep(Gint ws_id, Gint light_ind, Gint *err_ind, Gligh
 GKS_API void ginq_light_src_state(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                   Gint_list *active, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     uint64_t m = gks_ctx()->sl->attrs.light_mask;
     int n = 0;

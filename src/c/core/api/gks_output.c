@@ -73,7 +73,7 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
  * viewport 3 when the clipping indicator is on. While INTERPRET ITEM performs a recorded
  * primitive (context norm_override, gks_mf_record.h), the recorded normalization and clipping
  * volume replace the current ones, and NDC3 points enter through the identity.
- * 0, or -1 if degenerate. */
+ * 0, or 308 if the normalization cannot be represented (gks_xform_norm_tran3). */
 static int norm_setup(norm_ctx *nc)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
@@ -88,14 +88,14 @@ static int norm_setup(norm_ctx *nc)
         clip_on = ov->clip_on;
     } else {
         if (gks_cur_norm_matrix(n))
-            return -1;
+            return 308;
         gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
         clip_on = sl->clip_ind == GIND_CLIP;
     }
     const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
     gks_segment *seg = open_segment();
     if (norm_from(nc, pm, box, clip_on))
-        return -1;
+        return 308;
     nc->seg = seg;
     memcpy(nc->n, n, sizeof nc->n);
     memcpy(nc->pat, n, sizeof nc->pat);
@@ -106,16 +106,17 @@ static int norm_setup(norm_ctx *nc)
     return 0;
 }
 
-/* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record it. */
-static void mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
+/* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record
+ * it. 0: an error was reported and the world changed; the caller returns at once. */
+static GKS_MUST_CHECK int mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
 {
     if (!gks_mf_on())
-        return;
+        return 1;
     p.pn = (const double (*)[4])nc->pn;
     p.norm = (const double (*)[4])nc->n;
     p.box = nc->box;
     p.clip_on = nc->clip_on;
-    gks_mf_prim_write(fctid, &p);
+    return gks_mf_prim_write(fctid, &p);
 }
 
 /* ------------------------------------------------------------------ targets */
@@ -426,18 +427,19 @@ static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
         GKS_FAIL(100, fctid);
     norm_ctx nc;
     if (norm_setup(&nc))
-        return;
+        GKS_FAIL(308, fctid);
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
-    mf_out(fctid, &nc,
-           (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
+    if (!mf_out(fctid, &nc,
+               (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = (size_t)n, .p2 = p2, .p3 = p3 }))
+        return;
     int err = record(&nc, &sp, &s, (size_t)n);
     target t;
     target_current(&t, &nc);
     if (!err)
         err = emit_polyline(&nc, &s, (size_t)n, &t);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 GKS_API void gpolyline(const Gpoint_list *l)
@@ -483,18 +485,19 @@ static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3
         GKS_FAIL(100, fctid);
     norm_ctx nc;
     if (norm_setup(&nc))
-        return;
+        GKS_FAIL(308, fctid);
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
-    mf_out(fctid, &nc,
-           (gks_mf_prim){ .item = GKSM_ITEM_POLYMARKER3, .n = (size_t)n, .p2 = p2, .p3 = p3 });
+    if (!mf_out(fctid, &nc,
+               (gks_mf_prim){ .item = GKSM_ITEM_POLYMARKER3, .n = (size_t)n, .p2 = p2, .p3 = p3 }))
+        return;
     int err = record(&nc, &sp, &s, (size_t)n);
     target t;
     target_current(&t, &nc);
     if (!err)
         err = emit_polymarker(&nc, &s, (size_t)n, &t);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 GKS_API void gpolymarker(const Gpoint_list *l)
@@ -560,21 +563,22 @@ static void text_any(int fctid, const double pos[3], const double d0[3], const d
         GKS_FAIL(101, fctid);
     norm_ctx nc;
     if (norm_setup(&nc))
-        return;
+        GKS_FAIL(308, fctid);
     const double wc[3][3] = { { pos[0], pos[1], pos[2] }, { d0[0], d0[1], d0[2] },
                               { d1[0], d1[1], d1[2] } };
     pt_src s = { NULL, NULL, wc };
     size_t len = strlen(str);
     gks_seg_prim sp = { .kind = GKS_SEG_TEXT, .n_loops = 1, .str = str,
                         .str_len = len > INT32_MAX ? INT32_MAX : (int)len };
-    mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str });
+    if (!mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str }))
+        return;
     int err = record(&nc, &sp, &s, 3);
     target t;
     target_current(&t, &nc);
     if (!err)
         err = emit_text(&nc, pos, d0, d1, str, &t);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 GKS_API void gtext(const Gpoint *pos, const char *str)
@@ -712,12 +716,17 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
 {
     norm_ctx nc;
     if (norm_setup(&nc))
-        return;
+        GKS_FAIL(308, fctid);
     size_t n = 0;
     for (size_t k = 0; k < nloops; k++)
         n += cnt[k];
     if (n > INT32_MAX || nloops > INT32_MAX)
         GKS_FAIL(300, fctid);
+    if (!mf_out(fctid, &nc,
+               (gks_mf_prim){ .item = is_set ? GKSM_ITEM_FILL_AREA_SET3 : GKSM_ITEM_FILL_AREA3,
+                              .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
+                              .d3 = s->d3 }))
+        return;
     int *icnt = gks_alloc_array(nloops, sizeof *icnt);
     if (!icnt)
         GKS_FAIL(300, fctid);
@@ -725,10 +734,6 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
         icnt[k] = (int)cnt[k];
     gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
                         .n_loops = (int)nloops, .loop_counts = icnt };
-    mf_out(fctid, &nc,
-           (gks_mf_prim){ .item = is_set ? GKSM_ITEM_FILL_AREA_SET3 : GKSM_ITEM_FILL_AREA3,
-                          .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
-                          .d3 = s->d3 });
     int err = record(&nc, &sp, s, n);
     gks_free(icnt);
     target t;
@@ -736,7 +741,7 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
     if (!err)
         err = emit_area(&nc, nloops, cnt, n, s, is_set, &t);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
@@ -851,14 +856,15 @@ static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca
         GKS_FAIL(91, fctid);
     norm_ctx nc;
     if (norm_setup(&nc))
-        return;
+        GKS_FAIL(308, fctid);
     pt_src s = { NULL, NULL, pqr };
     gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = ca->dims.size_x,
                         .cell_ny = ca->dims.size_y, .cell_colr = ca->colr_array };
     int err = 0;
-    mf_out(fctid, &nc,
-           (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr,
-                          .nx = ca->dims.size_x, .ny = ca->dims.size_y, .colr = ca->colr_array });
+    if (!mf_out(fctid, &nc,
+               (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr,
+                              .nx = ca->dims.size_x, .ny = ca->dims.size_y, .colr = ca->colr_array }))
+        return;
     if (nc.seg) { /* the corners are stored as P, Q, R in NDC3 */
         double o[3][3];
         for (int i = 0; i < 3; i++)
@@ -873,7 +879,7 @@ static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca
     if (!err)
         err = emit_cell_array(&nc, pqr, ca->dims.size_x, ca->dims.size_y, ca->colr_array, &t);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 GKS_API void gcell_array(const Grect *r, const Gpat_rep *ca)
@@ -1033,7 +1039,7 @@ int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
 {
     norm_ctx cur;
     if (norm_setup(&cur))
-        return 0;
+        return 308;
     double M[3][4], total[3][4];
     gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
     gks_segment *open = cur.seg;
@@ -1099,7 +1105,8 @@ GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
         GKS_FAIL(96, GFN_SCR);
     ws->colr[colr_ind] = *c;
     ws->colr_defined[colr_ind] = 1;
-    gks_mf_ws_rec(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green, c->blue);
+    GKS_MF_WS(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green,
+              c->blue);
 }
 
 /* --- Normalization transformations ------------------------------------------------ */
@@ -1184,10 +1191,10 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
         GKS_FAIL(53, GFN_SWKWN);
     ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
     ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
-    gks_mf_ws_rec(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
+    GKS_MF_WS(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
     int err = ws_tran_changed(ws);
     if (err)
-        gks_error_report(err, GFN_SWKWN);
+        GKS_FAIL(err, GFN_SWKWN);
 }
 
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
@@ -1204,10 +1211,10 @@ GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
         GKS_FAIL(54, GFN_SWKVP);
     ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
     ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
-    gks_mf_ws_rec(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
+    GKS_MF_WS(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
-        gks_error_report(err, GFN_SWKVP);
+        GKS_FAIL(err, GFN_SWKVP);
 }
 
 static int box3_valid(const Glimit3 *b)
@@ -1230,10 +1237,10 @@ GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
         ws_win->z_min < 0 || ws_win->z_max > 1)
         GKS_FAIL(53, GFN_SWKW3);
     ws->req_win = *ws_win;
-    gks_mf_ws_rec(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
+    GKS_MF_WS(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
     int err = ws_tran_changed(ws);
     if (err)
-        gks_error_report(err, GFN_SWKW3);
+        GKS_FAIL(err, GFN_SWKW3);
 }
 
 GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
@@ -1250,10 +1257,10 @@ GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
         ws_vp->y_max > d->dc_y || ws_vp->z_min < 0 || ws_vp->z_max > 1)
         GKS_FAIL(54, GFN_SWKV3);
     ws->req_vp = *ws_vp;
-    gks_mf_ws_rec(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
+    GKS_MF_WS(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
-        gks_error_report(err, GFN_SWKV3);
+        GKS_FAIL(err, GFN_SWKV3);
 }
 
 GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,

@@ -58,8 +58,7 @@ GKS_API void gset_vp_in_pri(Gint tran_num, Gint ref_tran_num, Grel_pri rel_pri)
 GKS_API void ginq_list_norm_tran_nums(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                       Gint_list *list, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     *err_ind = copy_out(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1, num_elems_appl_list,
                         start_pos, list, length_list);

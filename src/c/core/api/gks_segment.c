@@ -27,33 +27,57 @@ static gks_seg_store *store(void)
     return gks_ctx()->sl->segs;
 }
 
-/* The picture of every workstation holding segment s has changed. */
-static void picture_changed(const gks_segment *s, int fctid)
+static int finite_n(const double *v, int n)
 {
-    for (int i = 0; i < s->n_ws; i++) {
-        gks_ws *ws = gks_ws_lookup(s->ws[i]);
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return 0;
+    return 1;
+}
+
+/* The pictures of workstations ids[0..n-1] have changed. A failed regeneration is
+ * reported for its workstation and the others still regenerate, unless the handler
+ * changed the world: then 0 (the caller returns at once). */
+static GKS_MUST_CHECK int pictures_changed(const int *ids, int n, int fctid)
+{
+    for (int i = 0; i < n; i++) {
+        gks_ws *ws = gks_ws_lookup(ids[i]);
         if (!ws)
             continue;
-        if (ws->irg_mode == GIRG_ALLOWED) {
-            int err = gks_ws_regenerate(ws);
-            if (err)
-                gks_error_report(err, fctid);
-        } else {
+        if (ws->irg_mode != GIRG_ALLOWED) {
             ws->new_frame = GNEW_YES;
+            continue;
         }
+        int err = gks_ws_regenerate(ws);
+        if (err && !gks_error_report(err, fctid))
+            return 0;
     }
+    return 1;
+}
+
+/* The picture of every workstation holding segment s has changed (see above). */
+static GKS_MUST_CHECK int picture_changed(const gks_segment *s, int fctid)
+{
+    int ids[GKS_MAX_OPEN_WS]; /* a copy: s may cease to exist during the loop */
+    memcpy(ids, s->ws, (size_t)s->n_ws * sizeof ids[0]);
+    return pictures_changed(ids, s->n_ws, fctid);
+}
+
+/* Segment `name` ceases to exist (pointers to it are stale: the world changes). */
+static void seg_delete(int name)
+{
+    gks_seg_delete(store(), name);
+    gks_world_changed();
 }
 
 /* Common checks of the functions naming an existing segment: 120, 122. */
 static gks_segment *existing(int fctid, Gint name)
 {
-    if (name < 1) {
-        gks_error_report(120, fctid);
-        return NULL;
-    }
+    if (name < 1)
+        GKS_FAIL_RET(120, fctid, NULL);
     gks_segment *s = gks_seg_find(store(), name);
     if (!s)
-        gks_error_report(122, fctid);
+        GKS_FAIL_RET(122, fctid, NULL);
     return s;
 }
 
@@ -114,9 +138,13 @@ GKS_API void gdel_seg(Gint seg_name)
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSG);
     GKS_MF(GFN_DSG, GKSM_ITEM_DEL_SEG, "i", seg_name);
-    if (s->vis)
-        picture_changed(s, GFN_DSG);
-    gks_seg_delete(store(), seg_name);
+    /* ISO 7942: the segment is deleted, then the pictures are regenerated without it. */
+    int vis = s->vis;
+    int ids[GKS_MAX_OPEN_WS], n = s->n_ws;
+    memcpy(ids, s->ws, (size_t)n * sizeof ids[0]);
+    seg_delete(seg_name);
+    if (vis && !pictures_changed(ids, n, GFN_DSG))
+        return;
 }
 
 GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
@@ -133,19 +161,20 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
         GKS_FAIL(123, GFN_DSGWK);
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSGWK);
-    gks_mf_ws_rec(GFN_DSGWK, ws_id, GKSM_ITEM_DEL_SEG, "i", seg_name);
+    GKS_MF_WS(GFN_DSGWK, ws_id, GKSM_ITEM_DEL_SEG, "i", seg_name);
     gks_seg_ws_remove(s, ws_id);
-    if (s->vis) {
-        if (ws->irg_mode == GIRG_ALLOWED) {
-            int err = gks_ws_regenerate(ws);
-            if (err)
-                gks_error_report(err, GFN_DSGWK);
-        } else {
-            ws->new_frame = GNEW_YES;
-        }
-    }
+    int vis = s->vis;
     if (s->n_ws == 0) /* stored nowhere any more: the segment ceases to exist */
-        gks_seg_delete(store(), seg_name);
+        seg_delete(seg_name);
+    if (!vis)
+        return;
+    if (ws->irg_mode != GIRG_ALLOWED) {
+        ws->new_frame = GNEW_YES;
+        return;
+    }
+    int err = gks_ws_regenerate(ws);
+    if (err)
+        GKS_FAIL(err, GFN_DSGWK);
 }
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
@@ -155,12 +184,17 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
     gks_segment *s = existing(GFN_SSGT3, seg_name);
     if (!s)
         return;
-    /* GKS has no error for a non-finite matrix: it is stored, and the pipeline drops
-     * primitives whose transformed coordinates are not finite (as for WC input). */
+    if (!tran_matrix)
+        GKS_FAIL(2003, GFN_SSGT3);
+    /* GKS has no error of its own for a non-finite matrix: 308, as for the other
+     * non-finite reals (docs/BINDING.md); stored it would make the segment vanish. */
+    if (!finite_n(&tran_matrix[0][0], 12))
+        GKS_FAIL(308, GFN_SSGT3);
     memcpy(s->tran, tran_matrix, sizeof s->tran);
     GKS_MF(GFN_SSGT3, GKSM_ITEM_SEG_TRAN3, "iR", seg_name, 12, &tran_matrix[0][0]);
     if (s->vis)
-        picture_changed(s, GFN_SSGT3);
+        if (!picture_changed(s, GFN_SSGT3))
+            return;
 }
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
@@ -170,12 +204,17 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
     gks_segment *s = existing(GFN_SSGT, seg_name);
     if (!s)
         return;
+    if (!tran_matrix)
+        GKS_FAIL(2003, GFN_SSGT);
+    if (!finite_n(&tran_matrix[0][0], 6))
+        GKS_FAIL(308, GFN_SSGT);
     /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
      * transformation is the 3-D one with identity z row and no z coupling). */
     gks_xform_mat23_to_mat34(tran_matrix, s->tran);
     GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
     if (s->vis)
-        picture_changed(s, GFN_SSGT);
+        if (!picture_changed(s, GFN_SSGT))
+            return;
 }
 
 GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
@@ -192,7 +231,8 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
     if (v == s->vis)
         return;
     s->vis = v;
-    picture_changed(s, GFN_SVIS);
+    if (!picture_changed(s, GFN_SVIS))
+        return;
 }
 
 GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
@@ -222,7 +262,8 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
         return;
     s->pri = pri;
     if (s->vis)
-        picture_changed(s, GFN_SSGP);
+        if (!picture_changed(s, GFN_SSGP))
+            return;
 }
 
 GKS_API void gset_det(Gint seg_name, Gseg_det det)
@@ -241,15 +282,11 @@ GKS_API void gset_det(Gint seg_name, Gseg_det det)
 /* The segment `name` of a WISS function: 120, 124 (not on the WISS, or no such segment). */
 static gks_segment *on_wiss(int fctid, const gks_ws *wiss, Gint name)
 {
-    if (name < 1) {
-        gks_error_report(120, fctid);
-        return NULL;
-    }
+    if (name < 1)
+        GKS_FAIL_RET(120, fctid, NULL);
     gks_segment *s = gks_seg_find(store(), name);
-    if (!s || !gks_seg_on_ws(s, wiss->id)) {
-        gks_error_report(124, fctid);
-        return NULL;
-    }
+    if (!s || !gks_seg_on_ws(s, wiss->id))
+        GKS_FAIL_RET(124, fctid, NULL);
     return s;
 }
 
@@ -258,7 +295,7 @@ static gks_ws *wiss_open(int fctid)
 {
     gks_ws *w = gks_wiss();
     if (!w)
-        gks_error_report(27, fctid);
+        GKS_FAIL_RET(27, fctid, NULL);
     return w;
 }
 
@@ -283,7 +320,7 @@ GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
         GKS_FAIL(301, GFN_ASGWK);
     int err = s->vis ? gks_output_draw_segment(ws, s) : 0;
     if (err)
-        gks_error_report(err, GFN_ASGWK);
+        GKS_FAIL(err, GFN_ASGWK);
 }
 
 GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
@@ -306,7 +343,7 @@ GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
         return;
     int err = gks_output_draw_segment(ws, s);
     if (err)
-        gks_error_report(err, GFN_CSGWK);
+        GKS_FAIL(err, GFN_CSGWK);
 }
 
 static void insert_any(int fctid, Gint seg_name, const double m[3][4])
@@ -321,16 +358,21 @@ static void insert_any(int fctid, Gint seg_name, const double m[3][4])
         return;
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, fctid);
+    if (!m)
+        GKS_FAIL(2003, fctid);
+    if (!finite_n(&m[0][0], 12))
+        GKS_FAIL(308, fctid);
     int err = gks_output_insert_segment(s, m);
     if (err)
-        gks_error_report(err, fctid);
+        GKS_FAIL(err, fctid);
 }
 
 GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix)
 {
     double m[3][4];
-    gks_xform_mat23_to_mat34(tran_matrix, m);
-    insert_any(GFN_INSG, seg_name, (const double (*)[4])m);
+    if (tran_matrix)
+        gks_xform_mat23_to_mat34(tran_matrix, m);
+    insert_any(GFN_INSG, seg_name, tran_matrix ? (const double (*)[4])m : NULL);
 }
 
 GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix)
@@ -345,7 +387,7 @@ void gks_segment_ws_closed(int ws_id)
         gks_segment *s = st->seg[i];
         gks_seg_ws_remove(s, ws_id);
         if (s->n_ws == 0 && gks_ctx()->sl->open_seg != s->name)
-            gks_seg_delete(st, s->name); /* st->seg[i] is now the next one */
+            seg_delete(s->name); /* st->seg[i] is now the next one */
         else
             i++;
     }
@@ -356,8 +398,7 @@ void gks_segment_ws_closed(int ws_id)
 GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                 Gint_list *seg_names, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_seg_store *st = store();
     *length_list = (Gint)st->n;
@@ -375,16 +416,14 @@ GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *
 
 GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
 {
-    *err_ind = gks_inq_state(GKS_S_SGOP);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_SGOP))
         return;
     *seg_name = gks_ctx()->sl->open_seg;
 }
 
 GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (seg_name < 1) {
         *err_ind = 120;
@@ -427,8 +466,7 @@ GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint st
 GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
                                 Gint *err_ind, Gint_list *ws_ids, Gint *length_list)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (seg_name < 1) {
         *err_ind = 120;
@@ -453,8 +491,7 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
 {
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_ws_driver *drv = gks_driver_for_type(ws_type);
     if (!drv) {

@@ -33,11 +33,16 @@ static int sw_valid(Gcoord_switch sw)
     return sw == GCOORD_WC || sw == GCOORD_NDC;
 }
 
+/* A NULL pointer argument without an error of its own is 2003 (docs/ERRORS.md). */
+#define GKS_E_NULL_ARG 2003
+
 GKS_API void geval_tran_matrix(const Gpoint *fixed, const Gvec *shift, Gdouble angle,
                                const Gvec *scale, Gcoord_switch sw, Gtran_matrix m)
 {
     if (gks_check_state(GFN_EVTM))
         return;
+    if (!fixed || !shift || !scale || !m)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVTM);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM);
     double f[3], s[3];
@@ -54,6 +59,8 @@ GKS_API void gaccum_tran_matrix(const Gtran_matrix m_in, const Gpoint *fixed, co
 {
     if (gks_check_state(GFN_ACTM))
         return;
+    if (!m_in || !fixed || !shift || !scale || !m_out)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_ACTM);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM);
     double f[3], s[3];
@@ -71,6 +78,8 @@ GKS_API void geval_tran_matrix3(const Gpoint3 *fixed, const Gvec3 *shift, Gdoubl
 {
     if (gks_check_state(GFN_EVTM3))
         return;
+    if (!fixed || !shift || !scale || !m)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVTM3);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_EVTM3);
     double f[3], s[3];
@@ -89,6 +98,8 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
 {
     if (gks_check_state(GFN_ACTM3))
         return;
+    if (!m_in || !fixed || !shift || !scale || !m_out)
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_ACTM3);
     if (!sw_valid(sw))
         GKS_FAIL(2000, GFN_ACTM3);
     double f[3], s[3];
@@ -103,9 +114,16 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
 GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const Gvec3 *vup,
                                     Gcoord_switch sw, Gint *err_ind, Gmatrix3 m)
 {
+    Gint e_ = 0;
+    if (!err_ind)
+        err_ind = &e_; /* the error still goes to the handler */
     *err_ind = gks_check_state(GFN_EVVWM);
     if (*err_ind)
         return;
+    if (!vrp || !vpn || !vup || !m) {
+        *err_ind = GKS_E_NULL_ARG;
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVVWM);
+    }
     if (!sw_valid(sw)) {
         *err_ind = 2000;
         GKS_FAIL(2000, GFN_EVVWM);
@@ -121,9 +139,16 @@ GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const 
 
 GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m)
 {
+    Gint e_ = 0;
+    if (!err_ind)
+        err_ind = &e_;
     *err_ind = gks_check_state(GFN_EVPJM);
     if (*err_ind)
         return;
+    if (!map || !m) {
+        *err_ind = GKS_E_NULL_ARG;
+        GKS_FAIL(GKS_E_NULL_ARG, GFN_EVPJM);
+    }
     gks_xform_view_map3 v = {
         .window = { map->win.x_min, map->win.x_max, map->win.y_min, map->win.y_max },
         .viewport = { map->proj_vp.x_min, map->proj_vp.x_max, map->proj_vp.y_min,

@@ -39,6 +39,14 @@ char *gks_mf_file_name(const char *conn_id)
     return s;
 }
 
+int gks_mf_file(const gks_ws *ws, char **path)
+{
+    if (!ws->conn_id || !*ws->conn_id)
+        return 21;
+    *path = gks_mf_file_name(ws->conn_id);
+    return *path ? 0 : 300;
+}
+
 static gks_mf_out *mo_of(gks_ws *ws)
 {
     return ws && ws->drv->desc->cat == GCAT_MO ? ws->priv : NULL;
@@ -100,7 +108,7 @@ static int put_fmt(gks_mf_out *o, int item, const char *fmt, va_list ap)
     return put(o, item);
 }
 
-void gks_mf_rec(int fctid, int item, const char *fmt, ...)
+int gks_mf_rec(int fctid, int item, const char *fmt, ...)
 {
     gks_context *c = gks_ctx();
     int err = 0;
@@ -113,21 +121,19 @@ void gks_mf_rec(int fctid, int item, const char *fmt, ...)
         err = put_fmt(o, item, fmt, ap);
         va_end(ap);
     }
-    if (err)
-        gks_error_report(err, fctid);
+    return !err || gks_error_report(err, fctid);
 }
 
-void gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
+int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
 {
     gks_mf_out *o = mo_of(gks_ws_lookup(ws_id));
     if (!o)
-        return;
+        return 1;
     va_list ap;
     va_start(ap, fmt);
     int err = put_fmt(o, item, fmt, ap);
     va_end(ap);
-    if (err)
-        gks_error_report(err, fctid);
+    return !err || gks_error_report(err, fctid);
 }
 
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
@@ -147,8 +153,8 @@ int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
         gksm_rec_real(&o->rec, in->floats[i]);
     gksm_rec_str(&o->rec, in->str ? in->str : "", in->str ? in->str_len : 0);
     int err = put(o, GKSM_ITEM_ESCAPE);
-    if (err)
-        gks_error_report(err, fctid);
+    if (err && gks_error_report(err, fctid)) {
+    } /* the caller returns: the ESCAPE was for this MO */
     return 1;
 }
 
@@ -378,7 +384,7 @@ static int write_cells(gks_mf_out *o, const gks_mf_prim *p)
     return put(o, p->item);
 }
 
-void gks_mf_prim_write(int fctid, const gks_mf_prim *p)
+int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 {
     gks_context *c = gks_ctx();
     int err = 0;
@@ -410,8 +416,7 @@ void gks_mf_prim_write(int fctid, const gks_mf_prim *p)
             break;
         }
     }
-    if (err)
-        gks_error_report(err, fctid);
+    return !err || gks_error_report(err, fctid);
 }
 
 /* ---------------------------------------------------------------- WRITE ITEM TO GKSM */
@@ -437,5 +442,5 @@ GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
     gksm_rec_raw(&o->rec, data, (size_t)length);
     int err = put(o, type);
     if (err)
-        gks_error_report(err, GFN_WITM);
+        GKS_FAIL(err, GFN_WITM);
 }

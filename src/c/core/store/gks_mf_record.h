@@ -16,6 +16,7 @@
 #define GKS_MF_H
 #include "gks_private.h"
 #include "gks_context.h"
+#include "gks_error.h"
 #include "gks_mf_codec.h"
 
 /* Item types (docs/METAFILE.md). RAL GKS's table for the GKS items; GKS-3D and lighting
@@ -111,6 +112,8 @@ extern const gks_ws_driver gks_ws_mi_driver;
  * "gks<digits>.gksm" when it is all digits (a Fortran integer CONID), as the PNG
  * workstation names "gks<digits>.png". NULL on storage overflow. Free with gks_free. */
 char *gks_mf_file_name(const char *conn_id);
+/* The drivers' file entry (ws_driver.h) of MO and MI: 21 for an empty identifier. */
+int gks_mf_file(const gks_ws *ws, char **path);
 
 /* Whether any MO workstation is active (the fast-path test). */
 static inline int gks_mf_on(void)
@@ -122,25 +125,34 @@ static inline int gks_mf_on(void)
 /* ACTIVATE / DEACTIVATE WORKSTATION: recount the active MO workstations. */
 void gks_mf_recount(void);
 
-/* ---- hooks: each writes one item (errors 300, 303 reported for fctid) ---- */
+/* ---- hooks: each writes one item (errors 300, 303 reported for fctid). Each returns
+ * what gks_error_report returned (1 when nothing was reported): on 0 the caller returns at
+ * once (gks_error.h). ---- */
 /* A primitive, preceded by the attribute, normalization and clipping items that changed. */
-void gks_mf_prim_write(int fctid, const gks_mf_prim *p);
+GKS_MUST_CHECK int gks_mf_prim_write(int fctid, const gks_mf_prim *p);
 /* An item of the active MO workstations, its data record described by fmt: 'i' an int
  * argument, 'r' a double, 'I' (int n, const int *v) n ints, 'R' (int n, const double *v)
  * n reals, 's' a string (const char *, written as count and characters). */
-void gks_mf_rec(int fctid, int item, const char *fmt, ...);
+GKS_MUST_CHECK int gks_mf_rec(int fctid, int item, const char *fmt, ...);
 /* The same for a workstation-addressed function: written only when ws_id is an open MO
  * (active or not; no fast path needed: these are not per-primitive calls). */
-void gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...);
+GKS_MUST_CHECK int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...);
 
 /* ESCAPE addressed to workstation ws: if ws is an MO, writes the ESCAPE item (function
  * identification, integers, reals, string) and returns 1; else returns 0. */
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in);
 
-/* The one-line hook of a function recorded on every active MO (fast path: one test). */
+/* The one-line hook of a function recorded on every active MO (fast path: one test).
+ * Returns from the calling void function when the error handler changed the world. */
 #define GKS_MF(fct, item, ...)                                                             \
     do {                                                                                   \
-        if (gks_mf_on())                                                                   \
-            gks_mf_rec((fct), (item), __VA_ARGS__);                                        \
+        if (gks_mf_on() && !gks_mf_rec((fct), (item), __VA_ARGS__))                        \
+            return;                                                                        \
+    } while (0)
+/* The same for a workstation-addressed function (gks_mf_ws_rec). */
+#define GKS_MF_WS(fct, ws_id, item, ...)                                                   \
+    do {                                                                                   \
+        if (!gks_mf_ws_rec((fct), (ws_id), (item), __VA_ARGS__))                           \
+            return;                                                                        \
     } while (0)
 #endif

@@ -80,6 +80,7 @@ static void mi_close(gks_ws *ws)
 const gks_ws_driver gks_ws_mi_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mi_desc,
+    .file = gks_mf_file,
     .open = mi_open,
     .close = mi_close,
 };
@@ -90,19 +91,13 @@ static gks_mf_in *mi_checked(int fct, Gint ws_id)
 {
     if (gks_check_state(fct))
         return NULL;
-    if (ws_id < 0) {
-        gks_error_report(20, fct);
-        return NULL;
-    }
+    if (ws_id < 0)
+        GKS_FAIL_RET(20, fct, NULL);
     gks_ws *ws = gks_ws_lookup(ws_id);
-    if (!ws) {
-        gks_error_report(25, fct);
-        return NULL;
-    }
-    if (ws->drv->desc->cat != GCAT_MI) {
-        gks_error_report(34, fct);
-        return NULL;
-    }
+    if (!ws)
+        GKS_FAIL_RET(25, fct, NULL);
+    if (ws->drv->desc->cat != GCAT_MI)
+        GKS_FAIL_RET(34, fct, NULL);
     return ws->priv;
 }
 
@@ -260,11 +255,14 @@ static int active_targets(int ids[GKS_MAX_ACTIVE_WS])
     return n;
 }
 
+/* A call per target workstation; the loop stops when an error handler changed the world
+ * (gks_error.h): the remaining ids may be stale, GKS may be closed. */
 #define EACH_WS(call)                                                                      \
     do {                                                                                   \
         int ids_[GKS_MAX_ACTIVE_WS];                                                       \
         int n_ = active_targets(ids_);                                                     \
-        for (int k_ = 0; k_ < n_; k_++) {                                                  \
+        unsigned long epoch_ = gks_world_epoch();                                          \
+        for (int k_ = 0; k_ < n_ && gks_world_epoch() == epoch_; k_++) {                   \
             const Gint ws_ = ids_[k_];                                                     \
             call;                                                                          \
         }                                                                                  \
@@ -849,5 +847,5 @@ GKS_API void ginterpret_item(Gint type, Gint length, const char *data)
     gksm_cur_init(&ip.d.c, m ? &m->in : &fmt, data ? data : "", (size_t)length);
     int err = perform(&ip, type);
     if (err)
-        gks_error_report(err, GFN_IITM);
+        GKS_FAIL(err, GFN_IITM);
 }

@@ -78,6 +78,7 @@ static int mo_update(gks_ws *ws)
 const gks_ws_driver gks_ws_mo_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mo_desc,
+    .file = gks_mf_file,
     .open = mo_open,
     .close = mo_close,
     .update = mo_update,

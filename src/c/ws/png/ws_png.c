@@ -69,6 +69,18 @@ static char *base_from_conn(const char *conn)
     return gks_strdup(conn);
 }
 
+/* The file of frame 1 (later frames are B-k.png beside it). */
+static int png_file(const gks_ws *ws, char **path)
+{
+    char *b = base_from_conn(ws->conn_id ? ws->conn_id : "");
+    size_t n = b ? strlen(b) + 5 : 0;
+    *path = b ? gks_alloc_array(n, 1) : NULL;
+    if (*path)
+        snprintf(*path, n, "%s.png", b);
+    gks_free(b);
+    return *path ? 0 : 300;
+}
+
 static int png_open(gks_ws *ws)
 {
     png_ws *p = gks_calloc_array(1, sizeof *p);
@@ -306,7 +318,8 @@ static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-larg
 
 #define PNG_DRIVER(DESC)                                                           \
     {                                                                              \
-        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = png_open,         \
+        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .file = png_file,         \
+        .open = png_open,                                                          \
         .close = png_close, .clear = png_clear, .update = png_update,              \
         .primitive = png_primitive, .message = png_message, .escape = png_escape,  \
         .read_pixels = png_read_pixels,                                            \

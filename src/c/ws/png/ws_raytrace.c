@@ -426,6 +426,16 @@ static int same_surfaces(const rt_rec *a, const rt_rec *b)
            memcmp(&a->props[0], &b->props[0], sizeof a->props) == 0;
 }
 
+/* The GKS error for a tracer result: storage (RT_ERR_NOMEM, RT_ERR_LIMIT: an
+ * implementation limit on items) is 300; data the tracer cannot use (RT_ERR_SINGULAR,
+ * RT_ERR_ARG, RT_ERR_STATE) is 308, arithmetic error. */
+static int gks_err_of_rt(int rc)
+{
+    if (rc >= 0)
+        return 0;
+    return rc == RT_ERR_NOMEM || rc == RT_ERR_LIMIT ? 300 : 308;
+}
+
 /* Adds record rec (of view vi, lights mask in the scene's numbering) to sc. Returns 0 or 300. */
 static int add_rec(rt_scene *sc, const ws_rt *r, const rt_rec *rec, uint64_t mask,
                    surf_cache *cache)
@@ -437,10 +447,8 @@ static int add_rec(rt_scene *sc, const ws_rt *r, const rt_rec *rec, uint64_t mas
         f = rt_scene_add_surface(sc, &s);
         surface_of(rec, 1, mask, &s);
         b = rt_scene_add_surface(sc, &s);
-        if (f == RT_ERR_NOMEM || b == RT_ERR_NOMEM)
-            return 300;
-        if (f < 0 || b < 0)
-            return 0; /* cannot happen: values checked at SET */
+        if (f < 0 || b < 0) /* values are checked at SET: only storage fails here */
+            return gks_err_of_rt(f < 0 ? f : b);
         *cache = (surf_cache){ rec, mask, f, b };
     }
     const double *xyz = r->xyz + 3 * (size_t)rec->pt_off;
@@ -448,7 +456,7 @@ static int add_rec(rt_scene *sc, const ws_rt *r, const rt_rec *rec, uint64_t mas
                  ? rt_scene_add_cell_array(sc, xyz, xyz + 3, xyz + 6, rec->nx, rec->ny,
                                            r->rgb + 3 * rec->rgb_off, f, b)
                  : rt_scene_add_polygon(sc, rec->n_loops, r->loops + rec->loop_off, xyz, f, b);
-    return id == RT_ERR_NOMEM ? 300 : 0;
+    return gks_err_of_rt(id);
 }
 
 /* 1 if every vertex of rec lies outside one clipping plane of cam (beyond the tracer's
@@ -515,14 +523,16 @@ static int build_scene(const ws_rt *r, const gks_ws *ws, int vi, const rt_camera
         for (int i = 0; i < GKS_MAX_LIGHT_IND; i++)
             if (((rec->light_mask >> i) & 1) && bit[i] >= 0)
                 mask |= (uint64_t)1 << bit[i];
-        if (add_rec(sc, r, rec, mask, &cache)) {
+        int err = add_rec(sc, r, rec, mask, &cache);
+        if (err) {
             rt_scene_free(sc);
-            return 300;
+            return err;
         }
     }
-    if (rt_scene_commit(sc, NULL) != RT_OK) {
+    int rc = rt_scene_commit(sc, NULL);
+    if (rc != RT_OK) {
         rt_scene_free(sc);
-        return 300;
+        return gks_err_of_rt(rc);
     }
     *out = sc;
     return 0;
@@ -584,8 +594,9 @@ static void *cover_run(void *arg)
             if (rt_camera_ray(cam, px, py, &rays[q]) != RT_OK)
                 rays[q] = (rt_ray){ .tmin = 1, .tmax = 0 };
         }
-        if (rt_intersect(j->sc, nb, rays, hits) != RT_OK) {
-            j->err = 300;
+        int rc = rt_intersect(j->sc, nb, rays, hits);
+        if (rc != RT_OK) {
+            j->err = gks_err_of_rt(rc);
             break;
         }
         for (size_t q = 0; q < nb; q++) {
@@ -749,7 +760,7 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
     }
     int rr = rt_render(sc, &cam, &o, rgb, &s);
     if (rr != RT_OK) {
-        err = rr == RT_ERR_NOMEM ? 300 : 0;
+        err = gks_err_of_rt(rr);
         goto done;
     }
     stats_add(st, &s);
