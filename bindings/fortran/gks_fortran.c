@@ -220,16 +220,17 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
 /* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). Escape -101 (set file name): IDR(1) holds the
  * workstation identifier in columns 1-10 (I10), IDR(2..LIDR) the file name, each record
  * blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
- * No escape returns data: LODR = 0. */
+ * No escape available from Fortran returns data, so MLODR, LODR and ODR are not
+ * touched (a program may pass constants there, as NCAR's fgke03 does). */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
 FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
                             const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
                             size_t odr_len)
 {
     (void)mlodr;
+    (void)lodr;
     (void)odr;
     (void)odr_len;
-    *lodr = 0;
     if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
         return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
     Gescape_in_data in = { 0, NULL, 0, NULL, 0, NULL };

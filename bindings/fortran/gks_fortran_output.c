@@ -6,7 +6,7 @@
  * bindings/fortran/README.md otherwise). Thin wrappers: convert arguments (REAL -> double,
  * Fortran arrays -> C lists, 1-based list positions -> 0-based), call the C binding,
  * convert outputs. CHARACTER arguments take a size_t hidden length after all explicit
- * arguments; input text is blank-trimmed. Conventions as gks_fortran.c.
+ * arguments; text keeps its trailing blanks. Conventions as gks_fortran.c.
  */
 #include "gks.h"
 #include "gks_binding.h"
@@ -37,17 +37,12 @@ static void *alloc_array(size_t n, size_t size)
     return malloc(n * size > 0 ? n * size : 1);
 }
 
-static size_t trimmed(const char *s, size_t len)
-{
-    while (len > 0 && s[len - 1] == ' ')
-        len--;
-    return len;
-}
-
-/* NUL-terminated copy of the blank-trimmed first len characters; NULL: reported 300. */
+/* NUL-terminated copy of the first len characters of a text string; NULL: reported 300.
+ * Not trimmed: a CHARACTER text has its full declared length in ISO 8651-1, so the
+ * trailing blanks of 'HOURS ' are drawn and measured (TEXT, INQUIRE TEXT EXTENT). File
+ * names and connection identifiers are trimmed elsewhere (gks_fortran.c). */
 static char *fstr(const char *s, size_t len, Gint fctid)
 {
-    len = trimmed(s, len);
     char *p = len < SIZE_MAX ? alloc_array(len + 1, 1) : NULL;
     if (!p) {
         report_nomem(fctid);

@@ -171,6 +171,15 @@ static void plot(const line_ctx *c, int x, int y, double z)
     fb->rgb[3 * i + 2] = c->rgb[2];
 }
 
+/* Pixel column (row) of a coordinate on an axis of n pixels. The display surface is
+ * closed: a point on its right (top) boundary, v = n up to rounding, belongs to the last
+ * pixel, so lines at NDC x = 1 or y = 1 are drawn like those at 0. */
+static int edge_pixel(double v, int n)
+{
+    int i = (int)floor(v);
+    return i == n && v <= n + 1e-9 * n ? n - 1 : i;
+}
+
 /* 1-pixel segment (ss == 1): Bresenham between the pixels holding the clipped end points. */
 static void thin_segment(line_ctx *c, const gks_raster_pt *pa, const gks_raster_pt *pb,
                          int skip_first)
@@ -188,7 +197,8 @@ static void thin_segment(line_ctx *c, const gks_raster_pt *pa, const gks_raster_
     double za = lerp(pa->z, pb->z, t0), zb = lerp(pa->z, pb->z, t1);
     double cl = length2(x1 - x0, y1 - y0);
     double phs = phase_add(c, ph0, t0 * len);
-    int ix = (int)floor(x0), iy = (int)floor(y0), ex = (int)floor(x1), ey = (int)floor(y1);
+    int ix = edge_pixel(x0, c->fb->w), iy = edge_pixel(y0, c->fb->h);
+    int ex = edge_pixel(x1, c->fb->w), ey = edge_pixel(y1, c->fb->h);
     int dx = ex > ix ? ex - ix : ix - ex, dy = ey > iy ? ey - iy : iy - ey;
     int sx = ex > ix ? 1 : -1, sy = ey > iy ? 1 : -1;
     int n = dx > dy ? dx : dy, err = dx - dy;

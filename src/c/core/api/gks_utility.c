@@ -8,6 +8,7 @@
  */
 #include "gks_context.h"
 #include "gks_error.h"
+#include "gks_state.h"
 #include "gks_xform.h"
 
 /* WC -> NDC3 by the current normalization transformation: points (is_point = 1) are
@@ -114,10 +115,13 @@ GKS_API void gaccum_tran_matrix3(const Gtran_matrix3 m_in, const Gpoint3 *fixed,
 GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const Gvec3 *vup,
                                     Gcoord_switch sw, Gint *err_ind, Gmatrix3 m)
 {
+    /* ISO 8805 (like PHIGS): the evaluate-view utilities report the standard's errors in
+     * their error indicator only; ERROR HANDLING is not called. A NULL argument (2003,
+     * not an error of the standard) still goes through the one error path. */
     Gint e_ = 0;
     if (!err_ind)
-        err_ind = &e_; /* the error still goes to the handler */
-    *err_ind = gks_check_state(GFN_EVVWM);
+        err_ind = &e_;
+    *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
     if (!vrp || !vpn || !vup || !m) {
@@ -126,15 +130,13 @@ GKS_API void geval_view_ori_matrix3(const Gpoint3 *vrp, const Gvec3 *vpn, const 
     }
     if (!sw_valid(sw)) {
         *err_ind = 2000;
-        GKS_FAIL(2000, GFN_EVVWM);
+        return;
     }
     double r3[3], n3[3], u3[3];
     to_ndc3(sw, (const double[3]){ vrp->x, vrp->y, vrp->z }, 1, r3);
     to_ndc3(sw, (const double[3]){ vpn->delta_x, vpn->delta_y, vpn->delta_z }, 0, n3);
     to_ndc3(sw, (const double[3]){ vup->delta_x, vup->delta_y, vup->delta_z }, 0, u3);
     *err_ind = gks_xform_eval_view_orientation3(r3, n3, u3, m);
-    if (*err_ind)
-        GKS_FAIL(*err_ind, GFN_EVVWM);
 }
 
 GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatrix3 m)
@@ -142,7 +144,7 @@ GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatri
     Gint e_ = 0;
     if (!err_ind)
         err_ind = &e_;
-    *err_ind = gks_check_state(GFN_EVPJM);
+    *err_ind = gks_inq_state(GKS_S_OPEN); /* error indicator only, as above */
     if (*err_ind)
         return;
     if (!map || !m) {
@@ -158,6 +160,4 @@ GKS_API void geval_view_map_matrix3(const Gview_map3 *map, Gint *err_ind, Gmatri
         .vpd = map->view_plane, .bpd = map->back_plane, .fpd = map->front_plane,
     };
     *err_ind = gks_xform_eval_view_mapping3(&v, m);
-    if (*err_ind)
-        GKS_FAIL(*err_ind, GFN_EVPJM);
 }
