@@ -113,8 +113,9 @@ enum {
     GWS_TYPE_WISS = 3,        /* category WISS: workstation independent segment storage */
     GWS_TYPE_MI = 4,          /* category MI: GKS metafile input; connection id = file name */
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
-    GWS_TYPE_PNG = 100,       /* category OUTPUT, raster, 1024x1024 pixel display space */
-    GWS_TYPE_PNG_LARGE = 101  /* category OUTPUT, raster, 8192x8192 pixel display space */
+    GWS_TYPE_PNG = 100,       /* category OUTIN, raster, 1024x1024 pixel display space;
+                                 input from scripts (docs/INPUT.md) */
+    GWS_TYPE_PNG_LARGE = 101  /* category OUTIN, raster, 8192x8192 pixel display space */
 };
 
 /* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the
@@ -206,9 +207,13 @@ enum {
     GESC_PNG_SUPERSAMPLE = -110, /* ints[1] 1..4: anti-aliasing of a PNG workstation by s x s
                                     samples per pixel (box filter); applies at once while the
                                     frame is empty, else from the next CLEAR WORKSTATION */
-    GESC_PNG_COMPRESSION = -111  /* ints[1] 0: fast PNG encoding (default; zlib run-length,
+    GESC_PNG_COMPRESSION = -111, /* ints[1] 0: fast PNG encoding (default; zlib run-length,
                                     SUB filter), 1..9: zlib level with adaptive filters
                                     (9 smallest files); for every file written from then on */
+    /* Scripted input (docs/INPUT.md): ints[0] ws id of an INPUT/OUTIN workstation; str =
+     * name of a file of raw device events (device coordinates) that its logical input
+     * devices replay from now on, replacing any script (182: unreadable file). */
+    GESC_INPUT_SCRIPT = -130
 };
 
 /* ---------------------------------------------------------------------------------
@@ -722,8 +727,8 @@ GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name);
 GKS_API void ginsert_seg(Gint seg_name, const Gtran_matrix tran_matrix);
 GKS_API void ginsert_seg3(Gint seg_name, const Gtran_matrix3 tran_matrix);
 /* ---- input priorities (ISO 7942 SET VIEWPORT INPUT PRIORITY, ISO 8805 SET VIEW
- * TRANSFORMATION INPUT PRIORITY): orderings kept for LOCATOR/STROKE input; this
- * implementation has no input devices yet, the orderings are stored and inquirable. */
+ * TRANSFORMATION INPUT PRIORITY): the orderings by which LOCATOR/STROKE positions are
+ * transformed back (see "Input" below). */
 typedef enum { GPRI_HIGHER, GPRI_LOWER } Grel_pri;
 /* SET VIEWPORT INPUT PRIORITY: tran_num directly above/below ref_tran_num. Errors: 8, 50,
  * 2000. */
@@ -909,17 +914,24 @@ GKS_API void ginq_pixel_array(Gint ws_id, const Gpoint *pixel_loc, const Gint_si
 GKS_API void ginq_pixel(Gint ws_id, const Gpoint *pixel_loc, Gint *err_ind, Gint *colr_ind);
 
 /* ---------------------------------------------------------------------------------
- * Input (ISO 7942 5.9; names after ISO 8651-4, see docs/BINDING.md "Input functions").
- * No workstation type of this implementation has logical input devices (none is of
- * category INPUT or OUTIN; the GKS level is 2a): every function below performs the
- * standard's checks and ends with the first error that applies, which for an open
- * workstation is 38. Output arguments are set to "no input" before any check (status
+ * Input (ISO 7942 5.9, ISO 8805 LOCATOR 3 / STROKE 3; names after ISO 8651-4, see
+ * docs/INPUT.md). Input level c: REQUEST, SAMPLE and EVENT mode. The PNG workstations
+ * (category OUTIN) have 2 devices of every class, fed by input scripts (ESCAPE
+ * GESC_INPUT_SCRIPT or the environment variable GKS_INPUT_SCRIPT; events in device
+ * coordinates); an interactive workstation (X11) adds its mouse and keyboard. A REQUEST
+ * with no event that can come (script exhausted, no interactive device) returns status
+ * GIN_STATUS_NONE at once. Locator and stroke positions go back through the view
+ * transformation of highest view transformation input priority whose clip limits hold
+ * them, then through the normalization transformation of highest viewport input priority
+ * whose viewport holds them. PICK returns the visible, detectable segment of highest
+ * priority with a primitive within 0.01 NPC of the position, and that primitive's pick
+ * identifier. The input queue holds GKS_IN_QUEUE_CAPACITY events; when it is full
+ * further events are lost until it has been emptied, and the next AWAIT EVENT reports
+ * 147 once. Output arguments are set to "no input" before any check (status
  * GIN_STATUS_NONE, transformation 0, position (0,0), empty stroke, empty string).
- * Errors are listed per function in the order they are checked; 140 (device not
- * present) would follow 38 on an INPUT/OUTIN workstation. The argument checks the
- * standard lists after 140 (pet 144, echo area 51/145, data record 146, initial values
- * 152-154, level 143) are never reached.
+ * Errors are listed per function in the order they are checked.
  * --------------------------------------------------------------------------------- */
+#define GKS_IN_QUEUE_CAPACITY 128
 typedef enum { GOP_REQ, GOP_SAMPLE, GOP_EVENT } Gop_mode;
 typedef enum { GSWITCH_NO_ECHO, GSWITCH_ECHO } Gecho_switch;
 /* Values of the Fortran GNONE, GOK, GNPICK/GNCHOI (NCAR's C header lists OK first). */
@@ -970,10 +982,48 @@ typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_stroke;
 typedef struct { Gdef_in dev; Gfloat value, low_value, high_value; } Gdef_val;
 typedef struct { Gdef_in dev; Gint max_choices; } Gdef_choice;
 typedef struct { Gdef_in dev; Gint max_buf_size, buf_size; } Gdef_string;
+/* GKS-3D: a locator 3 value (WC3 position), a stroke 3 (as Gstroke), their device states
+ * (echo volume in DC3, view index of the initial value) and default data. */
+typedef struct { Gint norm_tran_num; Gpoint3 position; } Gloc3;
+typedef struct { Gint norm_tran_num; Gint num_points; Gpoint3 *points; } Gstroke3;
+typedef struct {
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data;
+    Gint init_view_ind; Gloc3 init_loc;
+} Gloc_st3;
+typedef struct {
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data;
+    Gint init_view_ind; Gstroke3 init_stroke; Gint in_buf_size;
+} Gstroke_st3;
+typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gpoint3 loc_pos; } Gdef_loc3;
+/* The other classes' 3-D device states and default data: as the 2-D ones with an echo
+ * volume (DC3) instead of the echo area. */
+#define GKS_IN_DEV_ST3_ \
+    Gop_mode op_mode; Gecho_switch echo_switch; Gint pet; Glimit3 echo_vol; Gin_data in_data
+typedef struct { GKS_IN_DEV_ST3_; Gfloat init_value, low_value, high_value; } Gval_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gint init_choice; } Gchoice_st3;
+typedef struct { GKS_IN_DEV_ST3_; Gin_status init_status; Gpick init_pick; } Gpick_st3;
+typedef struct {
+    GKS_IN_DEV_ST3_;
+    char *init_string; size_t init_string_size;
+    Gint in_buf_size, init_cur_pos;
+} Gstring_st3;
+#undef GKS_IN_DEV_ST3_
+typedef struct { Gint_list pets; Glimit3 echo_vol; Gin_data in_data; } Gdef_in3;
+typedef struct { Gdef_in3 dev; Gfloat value, low_value, high_value; } Gdef_val3;
+typedef struct { Gdef_in3 dev; Gint max_choices; } Gdef_choice3;
+typedef struct { Gdef_in3 dev; Gint max_buf_size, buf_size; } Gdef_string3;
+typedef struct {
+    Gint_list pets; Glimit3 echo_vol; Gin_data in_data; Gint max_buf_size, buf_size;
+} Gdef_stroke3;
 
-/* INITIALISE LOCATOR / STROKE / VALUATOR / CHOICE / PICK / STRING. The valuator range and
- * the stroke/string buffer sizes are explicit arguments (as NCAR's ginit_string), not
- * members of the data record. Errors: 7, 20, 25, 38, 140. */
+/* INITIALISE LOCATOR / STROKE / VALUATOR / CHOICE / PICK / STRING (3). The valuator range
+ * and the stroke/string buffer sizes are explicit arguments (as NCAR's ginit_string), not
+ * members of the data record; the record is stored and returned, not interpreted. Echo
+ * areas are in DC (2-D: the echo volume's z is [0,1]). Errors: 7, 20, 25, 38, 140, 144
+ * (pet), 51, 145 (echo area), 146 (record; buffer size outside 1..max; valuator low >=
+ * high), 2000 (initial status), 152 (initial value: locator/stroke point outside NDC by
+ * its transformation, invalid transformation or view index, value outside the range,
+ * choice outside 1..max, pick segment < 1, string cursor outside 1..length+1), 153, 154. */
 GKS_API void ginit_loc(Gint ws_id, Gint loc_num, const Gloc *init_loc, Gint pet,
                        const Glimit *echo_area, const Gin_data *loc_data);
 GKS_API void ginit_stroke(Gint ws_id, Gint stroke_num, const Gstroke *init_stroke, Gint pet,
@@ -991,7 +1041,25 @@ GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
 GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
                           const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
                           const Gin_data *string_data);
-/* SET LOCATOR / ... / STRING MODE. Errors: 7, 20, 25, 38, 140. */
+GKS_API void ginit_loc3(Gint ws_id, Gint loc_num, Gint init_view_ind, const Gloc3 *init_loc,
+                        Gint pet, const Glimit3 *echo_vol, const Gin_data *loc_data);
+GKS_API void ginit_stroke3(Gint ws_id, Gint stroke_num, Gint init_view_ind,
+                           const Gstroke3 *init_stroke, Gint pet, const Glimit3 *echo_vol,
+                           Gint in_buf_size, const Gin_data *stroke_data);
+GKS_API void ginit_val3(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *echo_vol, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data);
+GKS_API void ginit_choice3(Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, const Glimit3 *echo_vol,
+                           const Gin_data *choice_data);
+GKS_API void ginit_pick3(Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, const Glimit3 *echo_vol,
+                         const Gin_data *pick_data);
+GKS_API void ginit_string3(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                           const Glimit3 *echo_vol, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data);
+/* SET LOCATOR / ... / STRING MODE: SAMPLE and EVENT start from the initial value.
+ * Errors: 7, 20, 25, 38, 140, 2000. */
 GKS_API void gset_loc_mode(Gint ws_id, Gint loc_num, Gop_mode op_mode, Gecho_switch echo_switch);
 GKS_API void gset_stroke_mode(Gint ws_id, Gint stroke_num, Gop_mode op_mode,
                               Gecho_switch echo_switch);
@@ -1002,28 +1070,38 @@ GKS_API void gset_pick_mode(Gint ws_id, Gint pick_num, Gop_mode op_mode,
                             Gecho_switch echo_switch);
 GKS_API void gset_string_mode(Gint ws_id, Gint string_num, Gop_mode op_mode,
                               Gecho_switch echo_switch);
-/* REQUEST LOCATOR / ... / STRING: *in_status is GIN_STATUS_NONE on return. string: a buffer
- * of the device's buffer size + 1 bytes (receives ""). Errors: 7, 20, 25, 38, 140. */
+/* REQUEST LOCATOR / ... / STRING (3): waits for the device's trigger; status OK, NONE
+ * (break, or no event can come) or NO_IN (no choice / nothing picked). Stroke: num_points
+ * is the capacity of points on entry, the count returned on return. string: a buffer of
+ * the device's buffer size + 1 bytes. Errors: 7, 20, 25, 38, 140, 141. */
 GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc);
 GKS_API void greq_stroke(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gstroke *stroke);
 GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *value);
 GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
 GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
 GKS_API void greq_string(Gint ws_id, Gint string_num, Gin_status *in_status, char *string);
-/* SAMPLE LOCATOR / ... / STRING. Errors: 7, 20, 25, 38, 140. */
+GKS_API void greq_loc3(Gint ws_id, Gint loc_num, Gin_status *in_status, Gint *view_ind,
+                       Gloc3 *loc);
+GKS_API void greq_stroke3(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gint *view_ind,
+                          Gstroke3 *stroke);
+/* SAMPLE LOCATOR / ... / STRING (3): the current measure, after the operator actions that
+ * are pending (one script line for a device in SAMPLE or EVENT mode).
+ * Errors: 7, 20, 25, 38, 140, 142. */
 GKS_API void gsample_loc(Gint ws_id, Gint loc_num, Gloc *loc);
 GKS_API void gsample_stroke(Gint ws_id, Gint stroke_num, Gstroke *stroke);
 GKS_API void gsample_val(Gint ws_id, Gint val_num, Gfloat *value);
 GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice);
 GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick);
 GKS_API void gsample_string(Gint ws_id, Gint string_num, char *string);
-/* AWAIT EVENT: the input queue is always empty, so it returns at once with *in_class =
- * GIN_NONE, *ws_id = *in_num = 0 (no device exists that could deliver an event within the
- * timeout). Errors: 7, 151 (timeout negative, NaN or infinite). */
+GKS_API void gsample_loc3(Gint ws_id, Gint loc_num, Gint *view_ind, Gloc3 *loc);
+GKS_API void gsample_stroke3(Gint ws_id, Gint stroke_num, Gint *view_ind, Gstroke3 *stroke);
+/* AWAIT EVENT: the oldest queued event becomes the current event report; if the queue is
+ * empty, waits up to timeout seconds for one (*in_class GIN_NONE if none came).
+ * Errors: 7, 151 (timeout negative, NaN or infinite), 147 (the queue overflowed). */
 GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint *in_num);
 /* FLUSH DEVICE EVENTS. Errors: 7, 20, 25, 38, 2000 (class not LOC..STRING), 140. */
 GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num);
-/* GET LOCATOR / ... / STRING: the current event report never holds a value.
+/* GET LOCATOR / ... / STRING (3): the value of the current event report.
  * Errors: 7, 150. */
 GKS_API void gget_loc(Gloc *loc);
 GKS_API void gget_stroke(Gstroke *stroke);
@@ -1031,8 +1109,29 @@ GKS_API void gget_val(Gfloat *value);
 GKS_API void gget_choice(Gin_status *in_status, Gint *choice);
 GKS_API void gget_pick(Gin_status *in_status, Gpick *pick);
 GKS_API void gget_string(char *string);
+GKS_API void gget_loc3(Gint *view_ind, Gloc3 *loc);
+GKS_API void gget_stroke3(Gint *view_ind, Gstroke3 *stroke);
 /* Input inquiries: *err_ind as the other inquiries, nothing else written on error.
- * Device states: 7, 20, 25, 38, 140. Default data: 8, 22, 23, 38, 140. */
+ * Device states: 7, 20, 25, 38, 140, 2000 (type); in_data points into the state list
+ * (valid until the device is initialised again). Default data: 8, 22, 23, 38, 140. */
+GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind,
+                          Gloc_st3 *st);
+GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
+                             Gstroke_st3 *st);
+GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def);
+GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
+                                   Gdef_stroke3 *def);
+GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st);
+GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st);
+GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                           Gpick_st3 *st);
+GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st);
+GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def);
+GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                   Gdef_choice3 *def);
+GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def);
+GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
+                                   Gdef_string3 *def);
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st);
 GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                             Gstroke_st *st);
@@ -1052,9 +1151,12 @@ GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
                                   Gdef_string *def);
 /* INQUIRE NUMBER OF AVAILABLE LOGICAL INPUT DEVICES. Errors: 8, 22, 23, 38. */
 GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in);
-/* INQUIRE INPUT QUEUE OVERFLOW. Errors: 7, 148 (the queue has never overflowed). */
+/* INQUIRE INPUT QUEUE OVERFLOW: the device whose event was lost first; clears the
+ * condition. Errors: 7, 148 (no overflow since GKS was opened or the last inquiry), 149
+ * (it overflowed, but that workstation has been closed). */
 GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint *in_num);
-/* INQUIRE MORE SIMULTANEOUS EVENTS: GSIMULT_NO_MORE. Errors: 7. */
+/* INQUIRE MORE SIMULTANEOUS EVENTS: GSIMULT_NO_MORE (every trigger belongs to one
+ * device). Errors: 7. */
 GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_events);
 
 #ifdef __cplusplus

@@ -132,7 +132,7 @@ static void test_inquiries(void **u)
     assert_int_equal(types[3], GWS_TYPE_WISS);
     assert_int_equal(types[4], GWS_TYPE_MO);
     assert_int_equal(types[5], GWS_TYPE_MI);
-    assert_int_equal(level, GLEVEL_2A);
+    assert_int_equal(level, GLEVEL_2C);
     ginq_list_avail_ws_types(8, 6, &err, &tl, &len);
     assert_int_equal(err, 2002);
     Gws_st st;
@@ -152,7 +152,7 @@ static void test_inquiries(void **u)
     Gws_cat cat;
     ginq_ws_cat(GWS_TYPE_PNG, &err, &cat);
     assert_int_equal(err, 0);
-    assert_int_equal(cat, GCAT_OUT);
+    assert_int_equal(cat, GCAT_OUTIN);
     ginq_ws_cat(777, &err, &cat);
     assert_int_equal(err, 23);
     Gdisp_space_size ds;

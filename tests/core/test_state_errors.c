@@ -302,6 +302,39 @@ static void c_GTVL(void) { Gfloat v; gget_val(&v); }
 static void c_GTCH(void) { Gin_status s; Gint c; gget_choice(&s, &c); }
 static void c_GTPK(void) { Gin_status s; Gpick p; gget_pick(&s, &p); }
 static void c_GTST(void) { char b[16]; gget_string(b); }
+static const Glimit3 evol = { 0, 100, 0, 100, 0, 1 };
+static void c_INVL3(void) { ginit_val3(1, 1, 0.5, 1, &evol, 0, 1, NULL); }
+static void c_INCH3(void) { ginit_choice3(1, 1, GIN_STATUS_OK, 1, 1, &evol, NULL); }
+static void c_INPK3(void)
+{
+    Gpick p = { 1, 1 };
+    ginit_pick3(1, 1, GIN_STATUS_OK, &p, 1, &evol, NULL);
+}
+static void c_INST3(void) { ginit_string3(1, 1, "ab", 1, &evol, 10, 1, NULL); }
+static void c_INLC3(void)
+{
+    Gloc3 l = { 0, { 0.5, 0.5, 0.5 } };
+    ginit_loc3(1, 1, 0, &l, 1, &evol, NULL);
+}
+static void c_INSK3(void)
+{
+    Gpoint3 p[1] = { { 0.5, 0.5, 0.5 } };
+    Gstroke3 k = { 0, 1, p };
+    ginit_stroke3(1, 1, 0, &k, 1, &evol, 10, NULL);
+}
+static void c_RQLC3(void) { Gin_status s; Gint v; Gloc3 l; greq_loc3(1, 1, &s, &v, &l); }
+static void c_RQSK3(void)
+{
+    Gin_status s;
+    Gint v;
+    Gpoint3 p[4];
+    Gstroke3 k = { 0, 4, p };
+    greq_stroke3(1, 1, &s, &v, &k);
+}
+static void c_SMLC3(void) { Gint v; Gloc3 l; gsample_loc3(1, 1, &v, &l); }
+static void c_SMSK3(void) { Gint v; Gpoint3 p[4]; Gstroke3 k = { 0, 4, p }; gsample_stroke3(1, 1, &v, &k); }
+static void c_GTLC3(void) { Gint v; Gloc3 l; gget_loc3(&v, &l); }
+static void c_GTSK3(void) { Gint v; Gpoint3 p[4]; Gstroke3 k = { 0, 4, p }; gget_stroke3(&v, &k); }
 
 typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define S(x) (1u << (x))

@@ -17,7 +17,7 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQOPS open', I1, GGKOP, NFAIL)
       CALL GQLVKS(IERR, I1)
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
-      CALL CHKI('GQLVKS level', I1, GL2A, NFAIL)
+      CALL CHKI('GQLVKS level', I1, GL2C, NFAIL)
 !     available workstation types: 99, 100, 101, 3 (WISS), 2 (MO), 4 (MI)
       ITYP = -7
       CALL GQEWK(0, IERR, NUM, ITYP)
@@ -75,7 +75,7 @@ C     SPDX-License-Identifier: MIT
       CALL GQWKS(7, IERR, I1)
       CALL CHKI('GQWKS 7', I1, GINACT, NFAIL)
       CALL GQWKCA(GWSPNG, IERR, I1)
-      CALL CHKI('GQWKCA', I1, GOUTPT, NFAIL)
+      CALL CHKI('GQWKCA', I1, GOUTIN, NFAIL)
       CALL GQWKCL(GWSPNG, IERR, I1)
       CALL CHKI('GQWKCL', I1, GRASTR, NFAIL)
       CALL GQDSP(GWSPNG, IERR, I1, R1, R2, I2, I3)

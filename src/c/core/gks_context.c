@@ -17,7 +17,7 @@ static const gks_ws_driver *const driver_list[] = {
 };
 
 static const gks_desc_table desc_table = {
-    .level = GLEVEL_2A, /* full output, segments, WISS; no input (b, c) */
+    .level = GLEVEL_2C, /* full output, segments, WISS; REQUEST, SAMPLE and EVENT input */
     .n_ws_types = (int)(sizeof driver_list / sizeof driver_list[0]),
     .ws_types = driver_list,
     .max_nums = { GKS_MAX_OPEN_WS, GKS_MAX_ACTIVE_WS, GKS_MAX_OPEN_WS },

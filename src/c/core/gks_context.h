@@ -97,6 +97,7 @@ typedef struct gks_state_list {
     int open_seg;               /* name of the open segment, 0 = none */
     int mf_n_mo_active;         /* active MO workstations (gks_mf_record.c: the MO fast path) */
     int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
+    struct gks_in_queue *inq;   /* input queue and current event report (gks_indev.h) */
 } gks_state_list;
 
 /* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives

@@ -116,7 +116,7 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
                                       .dir = { 0, 0, -1 }, .atten = { 1, 0 },
                                       .spread_angle = 3.14159265358979323846 };
     ws->light_defined[0] = 1;
-    if (init_bundles(ws, d->out ? d->out : &gks_wdt_raster)) {
+    if (init_bundles(ws, d->out ? d->out : &gks_wdt_raster) || gks_in_ws_open(ws, d->in)) {
         gks_ws_destroy(ws);
         return NULL;
     }
@@ -209,6 +209,7 @@ void gks_ws_destroy(gks_ws *ws)
 {
     if (!ws)
         return;
+    gks_in_ws_close(ws);
     gks_free(ws->conn_id);
     gks_free(ws->file);
     gks_free(ws->colr);

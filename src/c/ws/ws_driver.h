@@ -11,6 +11,7 @@
 #include "gks.h"
 #include "gks_context.h"
 #include "ws_wdt.h"
+#include "gks_indev.h"
 
 #define GKS_WS_DRIVER_VERSION 1
 
@@ -32,6 +33,8 @@ typedef struct gks_ws_desc {
     unsigned hlhsr_modes;         /* mask of supported HLHSR modes (1 << mode) */
     /* Output facilities and predefined bundles (ws_wdt.h); NULL = gks_wdt_raster. */
     const struct gks_wdt_output *out;
+    /* Logical input devices (category INPUT/OUTIN), NULL = none (gks_indev.h). */
+    const struct gks_in_desc *in;
 } gks_ws_desc;
 
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
@@ -109,6 +112,7 @@ struct gks_ws {
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
+    gks_in_ws *in;                /* input device state lists (core), NULL = no input */
     /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
      * when entry i is defined. Initialised from the description table's predefined
      * bundles at OPEN WORKSTATION. Pattern colour arrays are owned (gks_alloc). */
@@ -147,6 +151,12 @@ struct gks_ws_driver {
      * row upward, each 0xRRGGBB (8 bits per component) or -1 outside the image. Returns 0
      * or 300. NULL: the type has no pixel store readback (error 40). */
     int (*read_pixels)(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb);
+    /* Interactive input devices: waits at most timeout seconds (0: poll) for a raw event
+     * of the physical devices, given the logical devices taking input now (to map the
+     * mouse and keys to them and to draw prompts and echoes). Returns 1 with *ev filled
+     * (valid until the next call), 0 if none came, -1 if no event can ever come (e.g.
+     * the window is gone). NULL: the type's devices are fed by input scripts only. */
+    int (*input)(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev);
 };
 
 /* The compiled-in drivers. */

@@ -91,6 +91,7 @@ static void close_gks(gks_context *c)
         fclose(c->err.fp);
     c->err.fp = NULL;
     gks_free(c->sl->err_file);
+    gks_in_reset();
     gks_seg_store_free(c->sl->segs);
     gks_free(c->sl->segs);
     gks_free(c->sl);
@@ -316,6 +317,13 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
 {
     if (gks_check_state(GFN_ESC))
         return;
+    if (func_id == GESC_INPUT_SCRIPT) { /* the core's: input devices are the core's */
+        gks_ws *iws = in && in->num_ints >= 1 && in->ints ? gks_ws_lookup(in->ints[0]) : NULL;
+        int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0) : 182;
+        if (e)
+            GKS_FAIL(e, GFN_ESC);
+        return;
+    }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
     if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
         GKS_FAIL(180, GFN_ESC);

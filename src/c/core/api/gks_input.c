@@ -1,38 +1,37 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_input.c -- the input functions of ISO 7942 5.9 (INITIALISE, SET MODE, REQUEST,
- * SAMPLE, AWAIT EVENT, FLUSH DEVICE EVENTS, GET) and the input inquiries, for an
- * implementation whose workstations have no logical input devices.
+ * gks_input.c -- the input functions of ISO 7942 5.9 and ISO 8805 (INITIALISE, SET MODE,
+ * REQUEST, SAMPLE, AWAIT EVENT, FLUSH DEVICE EVENTS, GET, their 3-D forms for LOCATOR and
+ * STROKE) and the input inquiries. Guard clauses in the standard's order, then the device
+ * logic of gks_indev.c.
  *
- * No workstation type is of category INPUT or OUTIN and no description table lists a
- * logical input device (the GKS level is 2a). Each function performs the standard's
- * checks in the standard's order and ends with the first one that fails: the operating
- * state (7; 8 for the description-table inquiries), then the workstation (20 invalid
- * identifier, 25 not open, 38 neither INPUT nor OUTIN -- the MO, MI and WISS categories
- * included, the standard lists no 31/33/36 for input functions) and the device (140).
- * The checks the standard lists after 140 (prompt/echo type, echo area, data record,
- * initial values, 141/142 mode, 143 level) cannot be reached and are not coded.
- * AWAIT EVENT finds the input queue empty and no device that could fill it, so it returns
- * class NONE at once; GET finds no value in the current event report (150).
+ * Checks of every function that names a device: 7 (state), 20 (invalid ws id), 25 (not
+ * open), 38 (neither INPUT nor OUTIN; also MO, MI, WISS), 140 (no such device). Then:
+ * INITIALISE 144 (prompt/echo type), 51 (echo area invalid), 145 (echo area outside the
+ * display space), 146 (data record: negative counts), 152 (initial value), 153/154
+ * (initial stroke/string longer than the buffer; buffer size outside 1..max: 146);
+ * SET MODE 2000 (mode or echo switch out of range); REQUEST 141 (not in REQUEST mode);
+ * SAMPLE 142 (not in SAMPLE mode); AWAIT EVENT 151 (timeout negative or not finite), 147
+ * (the queue overflowed); GET 150 (no value of the class in the current event report).
  * Output arguments are set to "no input" before any check (REQUEST: status NONE), so a
- * caller never reads stale values. No state list is changed by any function here.
+ * caller never reads stale values.
  */
+#include "gks_alloc.h"
 #include "gks_error.h"
+#include "gks_indev.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include <math.h>
+#include <string.h>
+
+/* Reports an error as the caller's last action (the caller returns right after). */
+static void report(int e, int fctid)
+{
+    GKS_FAIL(e, fctid);
+}
 
 static const Gloc no_loc = { 0, { 0, 0 } };
 static const Gpick no_pick = { 0, 0 };
-
-/* Logical input devices of class cls on a workstation type. The description tables of
- * this implementation (ws_driver.h) describe output only: 0 for every type and class. */
-static int num_devices(const gks_ws_desc *d, Gin_class cls)
-{
-    (void)d;
-    (void)cls;
-    return 0;
-}
 
 /* The device checks after the category check: 2000 for a class outside LOC..STRING
  * (FLUSH DEVICE EVENTS), 140 for a device number the type does not have. */
@@ -42,55 +41,49 @@ static int device_number_error(const gks_ws_desc *d, Gin_class cls, Gint dev)
         return 38;
     if (cls < GIN_LOC || cls > GIN_STRING)
         return 2000;
-    if (dev < 1 || dev > num_devices(d, cls))
+    if (dev < 1 || dev > gks_in_num_devices(d->in, cls))
         return 140;
     return 0;
 }
 
-/* Workstation and device of the functions that name an open workstation: 20, 25, 38,
- * (2000,) 140. Never 0 while num_devices is 0. */
-static int device_error(Gint ws_id, Gin_class cls, Gint dev)
+/* Workstation and device of the functions that name an open workstation. */
+static int device_error(Gint ws_id, Gin_class cls, Gint dev, gks_ws **out)
 {
     if (ws_id < 0)
         return 20;
-    const gks_ws *ws = gks_ws_lookup(ws_id);
+    gks_ws *ws = gks_ws_lookup(ws_id);
     if (!ws)
         return 25;
+    *out = ws;
     return device_number_error(ws->drv->desc, cls, dev);
 }
 
 /* Workstation type and device of the default-data inquiries: 22, 23, 38, 140. */
-static int type_device_error(Gint ws_type, Gin_class cls, Gint dev)
+static int type_device_error(Gint ws_type, Gin_class cls, Gint dev, const gks_ws_desc **out)
 {
     if (ws_type <= 0)
         return 22;
     const gks_ws_driver *d = gks_driver_for_type(ws_type);
     if (!d)
         return 23;
+    *out = d->desc;
     return device_number_error(d->desc, cls, dev);
 }
 
 /* Entry of every function that names a device: the state check (7), then the device
- * checks; the first error is reported for fctid. Every path ends in an error, which is
- * returned: there is no device to operate on. */
-static int input_entry(int fctid, Gint ws_id, Gin_class cls, Gint dev)
-{
-    int e = gks_check_state(fctid);
-    if (e)
-        return e;
-    e = device_error(ws_id, cls, dev);
-    if (e)
-        GKS_FAIL_RET(e, fctid, e);
-    return e;
-}
-
-/* Entry of the GET functions: state (7), then 150 (no value of the class in the current
- * event report: AWAIT EVENT never delivers one). */
-static void get_entry(int fctid)
+ * checks; the device, or NULL with the first error reported for fctid. */
+static gks_indev *input_entry(int fctid, Gint ws_id, Gin_class cls, Gint num, gks_ws **ws)
 {
     if (gks_check_state(fctid))
-        return;
-    GKS_FAIL(150, fctid);
+        return NULL;
+    gks_ws *w = NULL;
+    int e = device_error(ws_id, cls, num, &w);
+    if (e) {
+        report(e, fctid);
+        return NULL;
+    }
+    *ws = w;
+    return gks_in_dev(w, cls, num);
 }
 
 static void set_err(Gint *err_ind, Gint e)
@@ -99,78 +92,344 @@ static void set_err(Gint *err_ind, Gint e)
         *err_ind = e;
 }
 
-/* Error indicator of the device state inquiries: 7, 20, 25, 38, 140. */
-static Gint inq_device(Gint ws_id, Gin_class cls, Gint dev)
+/* ---- INITIALISE ---- */
+
+static int rec_error(const Gin_data *r)
 {
-    Gint e = gks_inq_state(GKS_S_WSOPEN);
-    return e ? e : device_error(ws_id, cls, dev);
+    return r && (r->num_ints < 0 || r->num_floats < 0 || (r->num_ints > 0 && !r->ints) ||
+                 (r->num_floats > 0 && !r->floats) || (r->str_len > 0 && !r->str))
+               ? 146
+               : 0;
 }
 
-/* Error indicator of the default-data inquiries: 8, 22, 23, 38, 140. */
-static Gint inq_type_device(Gint ws_type, Gin_class cls, Gint dev)
+/* Echo volume checks (51 invalid, 145 outside the display space) of a DC3 volume. */
+static int echo_error(const gks_ws *ws, const Glimit3 *e)
 {
-    Gint e = gks_inq_state(GKS_S_OPEN);
-    return e ? e : type_device_error(ws_type, cls, dev);
+    const gks_ws_desc *d = ws->drv->desc;
+    if (!e || !(e->x_min < e->x_max) || !(e->y_min < e->y_max) || !(e->z_min <= e->z_max))
+        return 51;
+    if (e->x_min < 0 || e->x_max > d->dc_x || e->y_min < 0 || e->y_max > d->dc_y ||
+        e->z_min < 0 || e->z_max > 1)
+        return 145;
+    return 0;
 }
 
-/* ---- INITIALISE ... (errors 7, 20, 25, 38, 140) ---- */
+/* An invalid echo volume (51) for a NULL argument. */
+static const Glimit3 bad_vol = { 1, 0, 1, 0, 0, 0 };
+
+static Glimit3 echo_vol2(const Glimit *e)
+{
+    return e ? (Glimit3){ e->x_min, e->x_max, e->y_min, e->y_max, 0, 1 }
+             : (Glimit3){ 1, 0, 1, 0, 0, 0 };
+}
+
+/* Is WC3 point p, under transformation tnr, inside NDC space (the unit cube)? */
+static int in_ndc(int tnr, const Gpoint3 *p)
+{
+    if (tnr < 0 || tnr > GKS_MAX_NORM_TRAN)
+        return 0;
+    const gks_norm_tran *t = &gks_ctx()->sl->tran[tnr];
+    const Gfloat w[6] = { t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max,
+                          t->win.z_min, t->win.z_max };
+    const Gfloat v[6] = { t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max,
+                          t->vp.z_min, t->vp.z_max };
+    const Gfloat q[3] = { p->x, p->y, p->z };
+    for (int i = 0; i < 3; i++) {
+        double dw = w[2 * i + 1] - w[2 * i];
+        double n = dw != 0 ? v[2 * i] + (q[i] - w[2 * i]) * (v[2 * i + 1] - v[2 * i]) / dw
+                           : v[2 * i];
+        if (!isfinite(n) || n < -1e-9 || n > 1 + 1e-9)
+            return 0;
+    }
+    return 1;
+}
+
+/* The common part of INITIALISE: pet (144), echo volume (51, 145), record (146). */
+static int init_common(const gks_ws *ws, Gin_class cls, Gint pet, const Glimit3 *ev,
+                       const Gin_data *rec)
+{
+    if (pet < 1 || pet > ws->in->desc->max_pet[cls - GIN_LOC])
+        return 144;
+    int e = echo_error(ws, ev);
+    return e ? e : rec_error(rec);
+}
+
+/* Stores the new state; 0 or 300 (the device unchanged). */
+static int init_store(gks_indev *d, Gint pet, const Glimit3 *ev, const Gin_data *rec,
+                      const gks_in_val *init)
+{
+    Gin_data r = { 0 };
+    gks_in_val v = { 0 };
+    if (gks_in_rec_copy(&r, rec) || gks_in_val_copy(&v, init)) {
+        gks_in_rec_free(&r);
+        return 300;
+    }
+    gks_in_rec_free(&d->rec);
+    gks_in_val_free(&d->init);
+    d->rec = r;
+    d->init = v;
+    d->pet = pet;
+    d->echo_vol = *ev;
+    return 0;
+}
+
+static void do_init_loc(int fct, Gint ws_id, Gint num, Gint view_ind, Gint tnr, Gpoint3 pos,
+                     Gint pet, const Glimit3 *ev, const Gin_data *rec)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_LOC, num, &ws);
+    if (!d)
+        return;
+    int e = init_common(ws, GIN_LOC, pet, ev, rec);
+    if (!e && (view_ind < 0 || view_ind > GKS_MAX_VIEW_IND || !in_ndc(tnr, &pos)))
+        e = 152;
+    if (e)
+        GKS_FAIL(e, fct);
+    gks_in_val v = { .status = GIN_STATUS_OK, .tnr = tnr, .view_ind = view_ind, .pos = pos };
+    if (init_store(d, pet, ev, rec, &v))
+        GKS_FAIL(300, fct);
+}
 
 GKS_API void ginit_loc(Gint ws_id, Gint loc_num, const Gloc *init_loc, Gint pet,
                        const Glimit *echo_area, const Gin_data *loc_data)
 {
-    (void)init_loc, (void)pet, (void)echo_area, (void)loc_data;
-    input_entry(GFN_INLC, ws_id, GIN_LOC, loc_num);
+    Glimit3 ev = echo_vol2(echo_area);
+    Gloc l = init_loc ? *init_loc : (Gloc){ -1, { 0, 0 } };
+    do_init_loc(GFN_INLC, ws_id, loc_num, 0, l.norm_tran_num,
+             (Gpoint3){ l.position.x, l.position.y, 0 }, pet, &ev, loc_data);
+}
+
+GKS_API void ginit_loc3(Gint ws_id, Gint loc_num, Gint init_view_ind, const Gloc3 *init_loc,
+                        Gint pet, const Glimit3 *echo_vol, const Gin_data *loc_data)
+{
+    Gloc3 l = init_loc ? *init_loc : (Gloc3){ -1, { 0, 0, 0 } };
+    do_init_loc(GFN_INLC3, ws_id, loc_num, init_view_ind, l.norm_tran_num, l.position, pet,
+             echo_vol, loc_data);
+}
+
+static void do_init_stroke(int fct, Gint ws_id, Gint num, Gint view_ind, Gint tnr, Gint n,
+                        const Gpoint3 *pts, const Gpoint *pts2, Gint pet, const Glimit3 *ev,
+                        Gint buf, const Gin_data *rec)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_STROKE, num, &ws);
+    if (!d)
+        return;
+    int e = init_common(ws, GIN_STROKE, pet, ev, rec);
+    if (!e && (buf < 1 || buf > GKS_IN_STROKE_MAX))
+        e = 146;
+    if (!e && (n < 0 || (n > 0 && !pts && !pts2) || view_ind < 0 ||
+               view_ind > GKS_MAX_VIEW_IND || tnr < 0 || tnr > GKS_MAX_NORM_TRAN))
+        e = 152;
+    gks_in_val v = { .status = GIN_STATUS_OK, .tnr = tnr, .view_ind = view_ind };
+    if (!e && n > 0 && !(v.pts = gks_alloc_array((size_t)n, sizeof *v.pts)))
+        e = 300;
+    for (Gint i = 0; !e && i < n; i++) {
+        v.pts[i] = pts ? pts[i] : (Gpoint3){ pts2[i].x, pts2[i].y, 0 };
+        if (!in_ndc(tnr, &v.pts[i]))
+            e = 152;
+    }
+    if (!e && n > buf)
+        e = 153;
+    v.n = n;
+    if (!e && init_store(d, pet, ev, rec, &v))
+        e = 300;
+    if (!e)
+        d->buf_size = buf;
+    gks_in_val_free(&v);
+    if (e)
+        report(e, fct);
 }
 
 GKS_API void ginit_stroke(Gint ws_id, Gint stroke_num, const Gstroke *init_stroke, Gint pet,
                           const Glimit *echo_area, Gint in_buf_size,
                           const Gin_data *stroke_data)
 {
-    (void)init_stroke, (void)pet, (void)echo_area, (void)in_buf_size, (void)stroke_data;
-    input_entry(GFN_INSK, ws_id, GIN_STROKE, stroke_num);
+    Glimit3 ev = echo_vol2(echo_area);
+    Gstroke s = init_stroke ? *init_stroke : (Gstroke){ -1, 0, NULL };
+    do_init_stroke(GFN_INSK, ws_id, stroke_num, 0, s.norm_tran_num, s.num_points, NULL,
+                s.points, pet, &ev, in_buf_size, stroke_data);
+}
+
+GKS_API void ginit_stroke3(Gint ws_id, Gint stroke_num, Gint init_view_ind,
+                           const Gstroke3 *init_stroke, Gint pet, const Glimit3 *echo_vol,
+                           Gint in_buf_size, const Gin_data *stroke_data)
+{
+    Gstroke3 s = init_stroke ? *init_stroke : (Gstroke3){ -1, 0, NULL };
+    do_init_stroke(GFN_INSK3, ws_id, stroke_num, init_view_ind, s.norm_tran_num, s.num_points,
+                s.points, NULL, pet, echo_vol, in_buf_size, stroke_data);
+}
+
+static void do_init_val(int fct, Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *evp, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_VAL, val_num, &ws);
+    if (!d)
+        return;
+    Glimit3 ev = evp ? *evp : echo_vol2(NULL);
+    int e = init_common(ws, GIN_VAL, pet, &ev, val_data);
+    if (!e && !(low_value < high_value))
+        e = 146;
+    if (!e && !(init_value >= low_value && init_value <= high_value))
+        e = 152;
+    if (e)
+        GKS_FAIL(e, fct);
+    gks_in_val v = { .status = GIN_STATUS_OK, .val = init_value };
+    if (init_store(d, pet, &ev, val_data, &v))
+        GKS_FAIL(300, fct);
+    d->low = low_value;
+    d->high = high_value;
 }
 
 GKS_API void ginit_val(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
                        const Glimit *echo_area, Gfloat low_value, Gfloat high_value,
                        const Gin_data *val_data)
 {
-    (void)init_value, (void)pet, (void)echo_area, (void)low_value, (void)high_value;
-    (void)val_data;
-    input_entry(GFN_INVL, ws_id, GIN_VAL, val_num);
+    Glimit3 ev = echo_vol2(echo_area);
+    do_init_val(GFN_INVL, ws_id, val_num, init_value, pet, &ev, low_value, high_value,
+                val_data);
+}
+
+GKS_API void ginit_val3(Gint ws_id, Gint val_num, Gfloat init_value, Gint pet,
+                        const Glimit3 *echo_vol, Gfloat low_value, Gfloat high_value,
+                        const Gin_data *val_data)
+{
+    do_init_val(GFN_INVL3, ws_id, val_num, init_value, pet, echo_vol ? echo_vol : &bad_vol,
+                low_value, high_value, val_data);
+}
+
+static void do_init_choice(int fct, Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, Glimit3 ev, const Gin_data *choice_data)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_CHOICE, choice_num, &ws);
+    if (!d)
+        return;
+    int e = init_common(ws, GIN_CHOICE, pet, &ev, choice_data);
+    if (!e && (unsigned)init_status > GIN_STATUS_NO_IN)
+        e = 2000;
+    if (!e && init_status == GIN_STATUS_OK &&
+        (init_choice < 1 || init_choice > ws->in->desc->max_choices))
+        e = 152;
+    if (e)
+        GKS_FAIL(e, fct);
+    gks_in_val v = { .status = init_status, .choice = init_choice };
+    if (init_store(d, pet, &ev, choice_data, &v))
+        GKS_FAIL(300, fct);
 }
 
 GKS_API void ginit_choice(Gint ws_id, Gint choice_num, Gin_status init_status,
                           Gint init_choice, Gint pet, const Glimit *echo_area,
                           const Gin_data *choice_data)
 {
-    (void)init_status, (void)init_choice, (void)pet, (void)echo_area, (void)choice_data;
-    input_entry(GFN_INCH, ws_id, GIN_CHOICE, choice_num);
+    do_init_choice(GFN_INCH, ws_id, choice_num, init_status, init_choice, pet,
+                   echo_vol2(echo_area), choice_data);
+}
+
+GKS_API void ginit_choice3(Gint ws_id, Gint choice_num, Gin_status init_status,
+                           Gint init_choice, Gint pet, const Glimit3 *echo_vol,
+                           const Gin_data *choice_data)
+{
+    do_init_choice(GFN_INCH3, ws_id, choice_num, init_status, init_choice, pet,
+                   echo_vol ? *echo_vol : bad_vol, choice_data);
+}
+
+static void do_init_pick(int fct, Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, Glimit3 ev, const Gin_data *pick_data)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_PICK, pick_num, &ws);
+    if (!d)
+        return;
+    int e = init_common(ws, GIN_PICK, pet, &ev, pick_data);
+    if (!e && (unsigned)init_status > GIN_STATUS_NO_IN)
+        e = 2000;
+    if (!e && init_status == GIN_STATUS_OK && (!init_pick || init_pick->seg_name < 1))
+        e = 152;
+    if (e)
+        GKS_FAIL(e, fct);
+    gks_in_val v = { .status = init_status, .pick = init_pick ? *init_pick : no_pick };
+    if (init_store(d, pet, &ev, pick_data, &v))
+        GKS_FAIL(300, fct);
 }
 
 GKS_API void ginit_pick(Gint ws_id, Gint pick_num, Gin_status init_status,
                         const Gpick *init_pick, Gint pet, const Glimit *echo_area,
                         const Gin_data *pick_data)
 {
-    (void)init_status, (void)init_pick, (void)pet, (void)echo_area, (void)pick_data;
-    input_entry(GFN_INPK, ws_id, GIN_PICK, pick_num);
+    do_init_pick(GFN_INPK, ws_id, pick_num, init_status, init_pick, pet, echo_vol2(echo_area),
+                 pick_data);
+}
+
+GKS_API void ginit_pick3(Gint ws_id, Gint pick_num, Gin_status init_status,
+                         const Gpick *init_pick, Gint pet, const Glimit3 *echo_vol,
+                         const Gin_data *pick_data)
+{
+    do_init_pick(GFN_INPK3, ws_id, pick_num, init_status, init_pick, pet,
+                 echo_vol ? *echo_vol : bad_vol, pick_data);
+}
+
+static void do_init_string(int fct, Gint ws_id, Gint string_num, const char *init_string,
+                           Gint pet, Glimit3 ev, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data)
+{
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, GIN_STRING, string_num, &ws);
+    if (!d)
+        return;
+    int e = init_common(ws, GIN_STRING, pet, &ev, string_data);
+    if (!e && (in_buf_size < 1 || in_buf_size > GKS_IN_STRING_MAX))
+        e = 146;
+    size_t n = init_string ? strnlen(init_string, (size_t)GKS_IN_STRING_MAX + 1) : 0;
+    if (!e && n > (size_t)in_buf_size)
+        e = 154;
+    if (!e && (init_cur_pos < 1 || (size_t)init_cur_pos > n + 1))
+        e = 152;
+    if (e)
+        GKS_FAIL(e, fct);
+    gks_in_val v = { .status = GIN_STATUS_OK, .str = (char *)(init_string ? init_string : "") };
+    if (init_store(d, pet, &ev, string_data, &v))
+        GKS_FAIL(300, fct);
+    d->buf_size = in_buf_size;
+    d->cur_pos = init_cur_pos;
 }
 
 GKS_API void ginit_string(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
                           const Glimit *echo_area, Gint in_buf_size, Gint init_cur_pos,
                           const Gin_data *string_data)
 {
-    (void)init_string, (void)pet, (void)echo_area, (void)in_buf_size, (void)init_cur_pos;
-    (void)string_data;
-    input_entry(GFN_INST, ws_id, GIN_STRING, string_num);
+    do_init_string(GFN_INST, ws_id, string_num, init_string, pet, echo_vol2(echo_area),
+                   in_buf_size, init_cur_pos, string_data);
 }
 
-/* ---- SET ... MODE (errors 7, 20, 25, 38, 140) ---- */
+GKS_API void ginit_string3(Gint ws_id, Gint string_num, const char *init_string, Gint pet,
+                           const Glimit3 *echo_vol, Gint in_buf_size, Gint init_cur_pos,
+                           const Gin_data *string_data)
+{
+    do_init_string(GFN_INST3, ws_id, string_num, init_string, pet,
+                   echo_vol ? *echo_vol : bad_vol, in_buf_size, init_cur_pos, string_data);
+}
+
+/* ---- SET ... MODE ---- */
+
+static void set_mode(int fct, Gint ws_id, Gin_class cls, Gint num, Gop_mode mode,
+                     Gecho_switch echo)
+{
+    gks_ws *ws;
+    if (!input_entry(fct, ws_id, cls, num, &ws))
+        return;
+    if ((unsigned)mode > GOP_EVENT || (unsigned)echo > GSWITCH_ECHO)
+        GKS_FAIL(2000, fct);
+    if (gks_in_set_mode(ws, cls, num, mode, echo == GSWITCH_ECHO))
+        GKS_FAIL(300, fct);
+}
 
 #define GKS_SET_MODE(cname, fct, cls)                                                     \
     GKS_API void cname(Gint ws_id, Gint num, Gop_mode op_mode, Gecho_switch echo_switch) \
     {                                                                                     \
-        (void)op_mode, (void)echo_switch;                                                 \
-        input_entry(fct, ws_id, cls, num);                                                \
+        set_mode(fct, ws_id, cls, num, op_mode, echo_switch);                             \
     }
 GKS_SET_MODE(gset_loc_mode, GFN_SLCM, GIN_LOC)
 GKS_SET_MODE(gset_stroke_mode, GFN_SSKM, GIN_STROKE)
@@ -180,12 +439,58 @@ GKS_SET_MODE(gset_pick_mode, GFN_SPKM, GIN_PICK)
 GKS_SET_MODE(gset_string_mode, GFN_SSTM, GIN_STRING)
 #undef GKS_SET_MODE
 
-/* ---- REQUEST ... and SAMPLE ... (errors 7, 20, 25, 38, 140) ---- */
+/* ---- values out ---- */
 
 static void no_status(Gin_status *s)
 {
     if (s)
         *s = GIN_STATUS_NONE;
+}
+
+static void loc_out(const gks_in_val *v, Gloc *l)
+{
+    if (l)
+        *l = (Gloc){ v->tnr, { v->pos.x, v->pos.y } };
+}
+
+static void loc3_out(const gks_in_val *v, Gint *view_ind, Gloc3 *l)
+{
+    if (view_ind)
+        *view_ind = v->view_ind;
+    if (l)
+        *l = (Gloc3){ v->tnr, v->pos };
+}
+
+/* Stroke points into the caller's array: at most its capacity (num_points on entry). */
+static void stroke_out(const gks_in_val *v, Gstroke *s)
+{
+    if (!s)
+        return;
+    Gint cap = s->points ? s->num_points : 0, n = 0;
+    for (; n < v->n && n < cap; n++)
+        s->points[n] = (Gpoint){ v->pts[n].x, v->pts[n].y };
+    s->norm_tran_num = v->tnr;
+    s->num_points = n;
+}
+
+static void stroke3_out(const gks_in_val *v, Gint *view_ind, Gstroke3 *s)
+{
+    if (view_ind)
+        *view_ind = v->view_ind;
+    if (!s)
+        return;
+    Gint cap = s->points ? s->num_points : 0, n = 0;
+    for (; n < v->n && n < cap; n++)
+        s->points[n] = v->pts[n];
+    s->norm_tran_num = v->tnr;
+    s->num_points = n;
+}
+
+/* string: a buffer of (buffer size + 1) bytes. */
+static void string_out(const gks_in_val *v, char *string)
+{
+    if (string)
+        strcpy(string, v->str ? v->str : "");
 }
 
 static void no_stroke(Gstroke *s)
@@ -196,10 +501,34 @@ static void no_stroke(Gstroke *s)
     }
 }
 
-static void no_string(char *s)
+static void no_stroke3(Gstroke3 *s)
 {
-    if (s)
-        *s = '\0';
+    if (s) {
+        s->norm_tran_num = 0;
+        s->num_points = 0;
+    }
+}
+
+/* ---- REQUEST ---- */
+
+/* The request of device (cls, num): checks (141), then waits; *v the value. 0 or error
+ * reported. */
+static int request(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
+{
+    gks_ws *ws;
+    *v = (gks_in_val){ 0 };
+    gks_indev *d = input_entry(fct, ws_id, cls, num, &ws);
+    if (!d)
+        return -1;
+    if (d->mode != GOP_REQ) {
+        report(141, fct);
+        return -1;
+    }
+    if (gks_in_request(ws, cls, num, v)) {
+        report(300, fct);
+        return -1;
+    }
+    return 0;
 }
 
 GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc)
@@ -207,14 +536,69 @@ GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc
     no_status(in_status);
     if (loc)
         *loc = no_loc;
-    input_entry(GFN_RQLC, ws_id, GIN_LOC, loc_num);
+    gks_in_val v;
+    if (request(GFN_RQLC, ws_id, GIN_LOC, loc_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK)
+        loc_out(&v, loc);
+    gks_in_val_free(&v);
+}
+
+GKS_API void greq_loc3(Gint ws_id, Gint loc_num, Gin_status *in_status, Gint *view_ind,
+                       Gloc3 *loc)
+{
+    no_status(in_status);
+    if (view_ind)
+        *view_ind = 0;
+    if (loc)
+        *loc = (Gloc3){ 0, { 0, 0, 0 } };
+    gks_in_val v;
+    if (request(GFN_RQLC3, ws_id, GIN_LOC, loc_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK)
+        loc3_out(&v, view_ind, loc);
+    gks_in_val_free(&v);
 }
 
 GKS_API void greq_stroke(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gstroke *stroke)
 {
     no_status(in_status);
+    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
     no_stroke(stroke);
-    input_entry(GFN_RQSK, ws_id, GIN_STROKE, stroke_num);
+    gks_in_val v;
+    if (request(GFN_RQSK, ws_id, GIN_STROKE, stroke_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK && stroke) {
+        *stroke = cap;
+        stroke_out(&v, stroke);
+    }
+    gks_in_val_free(&v);
+}
+
+GKS_API void greq_stroke3(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gint *view_ind,
+                          Gstroke3 *stroke)
+{
+    no_status(in_status);
+    if (view_ind)
+        *view_ind = 0;
+    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
+    no_stroke3(stroke);
+    gks_in_val v;
+    if (request(GFN_RQSK3, ws_id, GIN_STROKE, stroke_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK && stroke) {
+        *stroke = cap;
+        stroke3_out(&v, view_ind, stroke);
+    }
+    gks_in_val_free(&v);
 }
 
 GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *value)
@@ -222,7 +606,14 @@ GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *v
     no_status(in_status);
     if (value)
         *value = 0;
-    input_entry(GFN_RQVL, ws_id, GIN_VAL, val_num);
+    gks_in_val v;
+    if (request(GFN_RQVL, ws_id, GIN_VAL, val_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK && value)
+        *value = v.val;
+    gks_in_val_free(&v);
 }
 
 GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice)
@@ -230,7 +621,14 @@ GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gin
     no_status(in_status);
     if (choice)
         *choice = 0;
-    input_entry(GFN_RQCH, ws_id, GIN_CHOICE, choice_num);
+    gks_in_val v;
+    if (request(GFN_RQCH, ws_id, GIN_CHOICE, choice_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK && choice)
+        *choice = v.choice;
+    gks_in_val_free(&v);
 }
 
 GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick)
@@ -238,34 +636,115 @@ GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *
     no_status(in_status);
     if (pick)
         *pick = no_pick;
-    input_entry(GFN_RQPK, ws_id, GIN_PICK, pick_num);
+    gks_in_val v;
+    if (request(GFN_RQPK, ws_id, GIN_PICK, pick_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK && pick)
+        *pick = v.pick;
+    gks_in_val_free(&v);
 }
 
 GKS_API void greq_string(Gint ws_id, Gint string_num, Gin_status *in_status, char *string)
 {
     no_status(in_status);
-    no_string(string);
-    input_entry(GFN_RQST, ws_id, GIN_STRING, string_num);
+    if (string)
+        *string = '\0';
+    gks_in_val v;
+    if (request(GFN_RQST, ws_id, GIN_STRING, string_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (v.status == GIN_STATUS_OK)
+        string_out(&v, string);
+    gks_in_val_free(&v);
+}
+
+/* ---- SAMPLE ---- */
+
+static int sample(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
+{
+    gks_ws *ws;
+    *v = (gks_in_val){ 0 };
+    gks_indev *d = input_entry(fct, ws_id, cls, num, &ws);
+    if (!d)
+        return -1;
+    if (d->mode != GOP_SAMPLE) {
+        report(142, fct);
+        return -1;
+    }
+    if (gks_in_sample(ws, cls, num, v)) {
+        report(300, fct);
+        return -1;
+    }
+    return 0;
 }
 
 GKS_API void gsample_loc(Gint ws_id, Gint loc_num, Gloc *loc)
 {
     if (loc)
         *loc = no_loc;
-    input_entry(GFN_SMLC, ws_id, GIN_LOC, loc_num);
+    gks_in_val v;
+    if (sample(GFN_SMLC, ws_id, GIN_LOC, loc_num, &v))
+        return;
+    loc_out(&v, loc);
+    gks_in_val_free(&v);
+}
+
+GKS_API void gsample_loc3(Gint ws_id, Gint loc_num, Gint *view_ind, Gloc3 *loc)
+{
+    if (view_ind)
+        *view_ind = 0;
+    if (loc)
+        *loc = (Gloc3){ 0, { 0, 0, 0 } };
+    gks_in_val v;
+    if (sample(GFN_SMLC3, ws_id, GIN_LOC, loc_num, &v))
+        return;
+    loc3_out(&v, view_ind, loc);
+    gks_in_val_free(&v);
 }
 
 GKS_API void gsample_stroke(Gint ws_id, Gint stroke_num, Gstroke *stroke)
 {
+    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
     no_stroke(stroke);
-    input_entry(GFN_SMSK, ws_id, GIN_STROKE, stroke_num);
+    gks_in_val v;
+    if (sample(GFN_SMSK, ws_id, GIN_STROKE, stroke_num, &v))
+        return;
+    if (stroke) {
+        *stroke = cap;
+        stroke_out(&v, stroke);
+    }
+    gks_in_val_free(&v);
+}
+
+GKS_API void gsample_stroke3(Gint ws_id, Gint stroke_num, Gint *view_ind, Gstroke3 *stroke)
+{
+    if (view_ind)
+        *view_ind = 0;
+    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
+    no_stroke3(stroke);
+    gks_in_val v;
+    if (sample(GFN_SMSK3, ws_id, GIN_STROKE, stroke_num, &v))
+        return;
+    if (stroke) {
+        *stroke = cap;
+        stroke3_out(&v, view_ind, stroke);
+    }
+    gks_in_val_free(&v);
 }
 
 GKS_API void gsample_val(Gint ws_id, Gint val_num, Gfloat *value)
 {
     if (value)
         *value = 0;
-    input_entry(GFN_SMVL, ws_id, GIN_VAL, val_num);
+    gks_in_val v;
+    if (sample(GFN_SMVL, ws_id, GIN_VAL, val_num, &v))
+        return;
+    if (value)
+        *value = v.val;
+    gks_in_val_free(&v);
 }
 
 GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice)
@@ -273,7 +752,14 @@ GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, 
     no_status(in_status);
     if (choice)
         *choice = 0;
-    input_entry(GFN_SMCH, ws_id, GIN_CHOICE, choice_num);
+    gks_in_val v;
+    if (sample(GFN_SMCH, ws_id, GIN_CHOICE, choice_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (choice && v.status == GIN_STATUS_OK)
+        *choice = v.choice;
+    gks_in_val_free(&v);
 }
 
 GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick)
@@ -281,19 +767,33 @@ GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpic
     no_status(in_status);
     if (pick)
         *pick = no_pick;
-    input_entry(GFN_SMPK, ws_id, GIN_PICK, pick_num);
+    gks_in_val v;
+    if (sample(GFN_SMPK, ws_id, GIN_PICK, pick_num, &v))
+        return;
+    if (in_status)
+        *in_status = v.status;
+    if (pick && v.status == GIN_STATUS_OK)
+        *pick = v.pick;
+    gks_in_val_free(&v);
 }
 
 GKS_API void gsample_string(Gint ws_id, Gint string_num, char *string)
 {
-    no_string(string);
-    input_entry(GFN_SMST, ws_id, GIN_STRING, string_num);
+    if (string)
+        *string = '\0';
+    gks_in_val v;
+    if (sample(GFN_SMST, ws_id, GIN_STRING, string_num, &v))
+        return;
+    string_out(&v, string);
+    gks_in_val_free(&v);
 }
 
 /* ---- event input ---- */
 
 GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint *in_num)
 {
+    Gint w = 0, n = 0;
+    Gin_class c = GIN_NONE;
     if (ws_id)
         *ws_id = 0;
     if (in_class)
@@ -302,35 +802,92 @@ GKS_API void gawait_event(Gfloat timeout, Gint *ws_id, Gin_class *in_class, Gint
         *in_num = 0;
     if (gks_check_state(GFN_WAIT))
         return;
-    if (!isfinite(timeout) || timeout < 0)
+    if (!(timeout >= 0) || !isfinite(timeout))
         GKS_FAIL(151, GFN_WAIT);
-    /* The queue is empty and no device is in EVENT mode: nothing can arrive within the
-     * timeout, so the result (class NONE) is returned without waiting. */
+    int e = gks_in_await(timeout, &w, &c, &n);
+    if (ws_id)
+        *ws_id = w;
+    if (in_class)
+        *in_class = c;
+    if (in_num)
+        *in_num = n;
+    if (e)
+        report(e, GFN_WAIT);
 }
 
 GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num)
 {
-    input_entry(GFN_FLUSH, ws_id, in_class, in_num);
+    if (gks_check_state(GFN_FLUSH))
+        return;
+    gks_ws *ws = NULL;
+    int e = device_error(ws_id, in_class, in_num, &ws);
+    if (e)
+        GKS_FAIL(e, GFN_FLUSH);
+    gks_in_flush(ws_id, in_class, in_num);
+}
+
+/* The current event report's value of class cls, or NULL with 7/150 reported. */
+static const gks_in_val *get_entry(int fctid, Gin_class cls)
+{
+    if (gks_check_state(fctid))
+        return NULL;
+    const gks_in_val *v = gks_in_current(cls);
+    if (!v)
+        report(150, fctid);
+    return v;
 }
 
 GKS_API void gget_loc(Gloc *loc)
 {
     if (loc)
         *loc = no_loc;
-    get_entry(GFN_GTLC);
+    const gks_in_val *v = get_entry(GFN_GTLC, GIN_LOC);
+    if (v)
+        loc_out(v, loc);
+}
+
+GKS_API void gget_loc3(Gint *view_ind, Gloc3 *loc)
+{
+    if (view_ind)
+        *view_ind = 0;
+    if (loc)
+        *loc = (Gloc3){ 0, { 0, 0, 0 } };
+    const gks_in_val *v = get_entry(GFN_GTLC3, GIN_LOC);
+    if (v)
+        loc3_out(v, view_ind, loc);
 }
 
 GKS_API void gget_stroke(Gstroke *stroke)
 {
+    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
     no_stroke(stroke);
-    get_entry(GFN_GTSK);
+    const gks_in_val *v = get_entry(GFN_GTSK, GIN_STROKE);
+    if (v && stroke) {
+        *stroke = cap;
+        stroke_out(v, stroke);
+    }
+}
+
+GKS_API void gget_stroke3(Gint *view_ind, Gstroke3 *stroke)
+{
+    if (view_ind)
+        *view_ind = 0;
+    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
+    no_stroke3(stroke);
+    const gks_in_val *v = get_entry(GFN_GTSK3, GIN_STROKE);
+    if (v && stroke) {
+        *stroke = cap;
+        stroke3_out(v, view_ind, stroke);
+    }
 }
 
 GKS_API void gget_val(Gfloat *value)
 {
     if (value)
         *value = 0;
-    get_entry(GFN_GTVL);
+    const gks_in_val *v = get_entry(GFN_GTVL, GIN_VAL);
+    if (v && value)
+        *value = v->val;
 }
 
 GKS_API void gget_choice(Gin_status *in_status, Gint *choice)
@@ -338,7 +895,13 @@ GKS_API void gget_choice(Gin_status *in_status, Gint *choice)
     no_status(in_status);
     if (choice)
         *choice = 0;
-    get_entry(GFN_GTCH);
+    const gks_in_val *v = get_entry(GFN_GTCH, GIN_CHOICE);
+    if (!v)
+        return;
+    if (in_status)
+        *in_status = v->status;
+    if (choice && v->status == GIN_STATUS_OK)
+        *choice = v->choice;
 }
 
 GKS_API void gget_pick(Gin_status *in_status, Gpick *pick)
@@ -346,92 +909,366 @@ GKS_API void gget_pick(Gin_status *in_status, Gpick *pick)
     no_status(in_status);
     if (pick)
         *pick = no_pick;
-    get_entry(GFN_GTPK);
+    const gks_in_val *v = get_entry(GFN_GTPK, GIN_PICK);
+    if (!v)
+        return;
+    if (in_status)
+        *in_status = v->status;
+    if (pick && v->status == GIN_STATUS_OK)
+        *pick = v->pick;
 }
 
 GKS_API void gget_string(char *string)
 {
-    no_string(string);
-    get_entry(GFN_GTST);
+    if (string)
+        *string = '\0';
+    const gks_in_val *v = get_entry(GFN_GTST, GIN_STRING);
+    if (v)
+        string_out(v, string);
 }
 
 /* ---- inquiries (never call ERROR HANDLING; nothing but *err_ind written on error) ---- */
 
+/* Device state inquiries: 7, 20, 25, 38, 140; the device or NULL. */
+static const gks_indev *inq_device(Gint ws_id, Gin_class cls, Gint num, Gint *err_ind)
+{
+    Gint e = gks_inq_state(GKS_S_WSOPEN);
+    gks_ws *ws = NULL;
+    if (!e)
+        e = device_error(ws_id, cls, num, &ws);
+    set_err(err_ind, e);
+    return e ? NULL : gks_in_dev(ws, cls, num);
+}
+
+/* The type of returned values (SET or REALIZED): 2000 if neither. */
+static int bad_type(Ginq_type t, Gint *err_ind)
+{
+    if ((unsigned)t <= GINQ_REALIZED)
+        return 0;
+    set_err(err_ind, 2000);
+    return 1;
+}
+
+static Gin_dev_st dev_st(const gks_indev *d)
+{
+    return (Gin_dev_st){ d->mode, d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO, d->pet,
+                         { d->echo_vol.x_min, d->echo_vol.x_max, d->echo_vol.y_min,
+                           d->echo_vol.y_max },
+                         d->rec };
+}
+
+/* SET and REALIZED values are the same: every initial value is representable. */
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st)
 {
-    (void)type, (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_LOC, loc_num));
+    const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    st->dev = dev_st(d);
+    loc_out(&d->init, &st->init_loc);
+}
+
+GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind,
+                          Gloc_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    st->op_mode = d->mode;
+    st->echo_switch = d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;
+    st->pet = d->pet;
+    st->echo_vol = d->echo_vol;
+    st->in_data = d->rec;
+    loc3_out(&d->init, &st->init_view_ind, &st->init_loc);
 }
 
 GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                             Gstroke_st *st)
 {
-    (void)type, (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_STROKE, stroke_num));
+    const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    st->dev = dev_st(d);
+    st->in_buf_size = d->buf_size;
+    stroke_out(&d->init, &st->init_stroke);
+}
+
+GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
+                             Gstroke_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    st->op_mode = d->mode;
+    st->echo_switch = d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;
+    st->pet = d->pet;
+    st->echo_vol = d->echo_vol;
+    st->in_data = d->rec;
+    st->in_buf_size = d->buf_size;
+    stroke3_out(&d->init, &st->init_view_ind, &st->init_stroke);
 }
 
 GKS_API void ginq_val_st(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st *st)
 {
-    (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_VAL, val_num));
+    const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
+    if (!d || !st)
+        return;
+    st->dev = dev_st(d);
+    st->init_value = d->init.val;
+    st->low_value = d->low;
+    st->high_value = d->high;
 }
 
 GKS_API void ginq_choice_st(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st *st)
 {
-    (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_CHOICE, choice_num));
+    const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
+    if (!d || !st)
+        return;
+    st->dev = dev_st(d);
+    st->init_status = d->init.status;
+    st->init_choice = d->init.choice;
 }
 
 GKS_API void ginq_pick_st(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
                           Gpick_st *st)
 {
-    (void)type, (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_PICK, pick_num));
+    const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    st->dev = dev_st(d);
+    st->init_status = d->init.status;
+    st->init_pick = d->init.pick;
 }
 
 GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st *st)
 {
-    (void)st;
-    set_err(err_ind, inq_device(ws_id, GIN_STRING, string_num));
+    const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
+    if (!d || !st)
+        return;
+    st->dev = dev_st(d);
+    st->in_buf_size = d->buf_size;
+    st->init_cur_pos = d->cur_pos;
+    const char *s = d->init.str ? d->init.str : "";
+    if (st->init_string && st->init_string_size > 0) {
+        size_t n = strlen(s);
+        if (n >= st->init_string_size)
+            n = st->init_string_size - 1;
+        memcpy(st->init_string, s, n);
+        st->init_string[n] = '\0';
+    }
+}
+
+/* The device state 3 common part: mode, echo, pet, echo volume, record. */
+#define DEV_ST3(st, d)                                                                     \
+    do {                                                                                   \
+        (st)->op_mode = (d)->mode;                                                         \
+        (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;                    \
+        (st)->pet = (d)->pet;                                                              \
+        (st)->echo_vol = (d)->echo_vol;                                                    \
+        (st)->in_data = (d)->rec;                                                          \
+    } while (0)
+
+GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
+    if (!d || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_value = d->init.val;
+    st->low_value = d->low;
+    st->high_value = d->high;
+}
+
+GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
+    if (!d || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_status = d->init.status;
+    st->init_choice = d->init.choice;
+}
+
+GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
+                           Gpick_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
+    if (!d || bad_type(type, err_ind) || !st)
+        return;
+    DEV_ST3(st, d);
+    st->init_status = d->init.status;
+    st->init_pick = d->init.pick;
+}
+
+GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st)
+{
+    const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
+    if (!d || !st)
+        return;
+    Gstring_st s2 = { .init_string = st->init_string, .init_string_size = st->init_string_size };
+    ginq_string_st(ws_id, string_num, err_ind, &s2);
+    DEV_ST3(st, d);
+    st->in_buf_size = s2.in_buf_size;
+    st->init_cur_pos = s2.init_cur_pos;
+}
+#undef DEV_ST3
+
+/* Default-data inquiries: 8, 22, 23, 38, 140; fills the common part. */
+static int inq_default(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in *def,
+                       gks_indev *d)
+{
+    Gint e = gks_inq_state(GKS_S_OPEN);
+    const gks_ws_desc *desc = NULL;
+    if (!e)
+        e = type_device_error(ws_type, cls, num, &desc);
+    set_err(err_ind, e);
+    if (e)
+        return e;
+    gks_in_dev_default(desc, cls, d);
+    if (def) {
+        Gint np = desc->in->max_pet[cls - GIN_LOC], cap = def->pets.ints ? def->pets.num_ints : 0;
+        for (Gint i = 0; i < np && i < cap; i++)
+            def->pets.ints[i] = i + 1;
+        def->pets.num_ints = np;
+        def->echo_area = (Glimit){ d->echo_vol.x_min, d->echo_vol.x_max, d->echo_vol.y_min,
+                                   d->echo_vol.y_max };
+        def->in_data = (Gin_data){ 0 };
+    }
+    return 0;
 }
 
 GKS_API void ginq_def_loc_data(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_LOC, loc_num));
+    gks_indev d;
+    if (!inq_default(ws_type, GIN_LOC, loc_num, err_ind, def ? &def->dev : NULL, &d) && def)
+        def->loc_pos = (Gpoint){ d.init.pos.x, d.init.pos.y };
+}
+
+GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def)
+{
+    gks_indev d;
+    Gdef_in dv = { 0 };
+    if (def)
+        dv.pets = def->pets;
+    if (inq_default(ws_type, GIN_LOC, loc_num, err_ind, &dv, &d) || !def)
+        return;
+    def->pets.num_ints = dv.pets.num_ints;
+    def->echo_vol = d.echo_vol;
+    def->in_data = dv.in_data;
+    def->loc_pos = d.init.pos;
 }
 
 GKS_API void ginq_def_stroke_data(Gint ws_type, Gint stroke_num, Gint *err_ind,
                                   Gdef_stroke *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_STROKE, stroke_num));
+    gks_indev d;
+    if (!inq_default(ws_type, GIN_STROKE, stroke_num, err_ind, def ? &def->dev : NULL, &d) &&
+        def) {
+        def->max_buf_size = GKS_IN_STROKE_MAX;
+        def->buf_size = d.buf_size;
+    }
+}
+
+GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
+                                   Gdef_stroke3 *def)
+{
+    gks_indev d;
+    Gdef_in dv = { 0 };
+    if (def)
+        dv.pets = def->pets;
+    if (inq_default(ws_type, GIN_STROKE, stroke_num, err_ind, &dv, &d) || !def)
+        return;
+    def->pets.num_ints = dv.pets.num_ints;
+    def->echo_vol = d.echo_vol;
+    def->in_data = dv.in_data;
+    def->max_buf_size = GKS_IN_STROKE_MAX;
+    def->buf_size = d.buf_size;
 }
 
 GKS_API void ginq_def_val_data(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_VAL, val_num));
+    gks_indev d;
+    if (!inq_default(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d) && def) {
+        def->value = d.init.val;
+        def->low_value = d.low;
+        def->high_value = d.high;
+    }
 }
 
 GKS_API void ginq_def_choice_data(Gint ws_type, Gint choice_num, Gint *err_ind,
                                   Gdef_choice *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_CHOICE, choice_num));
+    gks_indev d;
+    if (!inq_default(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d) &&
+        def)
+        def->max_choices = gks_driver_for_type(ws_type)->desc->in->max_choices;
 }
 
 GKS_API void ginq_def_pick_data(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_PICK, pick_num));
+    gks_indev d;
+    inq_default(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
 }
 
 GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
                                   Gdef_string *def)
 {
-    (void)def;
-    set_err(err_ind, inq_type_device(ws_type, GIN_STRING, string_num));
+    gks_indev d;
+    if (!inq_default(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d) &&
+        def) {
+        def->max_buf_size = GKS_IN_STRING_MAX;
+        def->buf_size = d.buf_size;
+    }
+}
+
+/* The 3-D default data: the 2-D inquiry plus the echo volume. */
+static void def3(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in3 *def,
+                 gks_indev *d)
+{
+    Gdef_in dv = { 0 };
+    if (def)
+        dv.pets = def->pets;
+    if (inq_default(ws_type, cls, num, err_ind, &dv, d) || !def)
+        return;
+    def->pets.num_ints = dv.pets.num_ints;
+    def->echo_vol = d->echo_vol;
+    def->in_data = dv.in_data;
+}
+
+GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind) {
+        def->value = d.init.val;
+        def->low_value = d.low;
+        def->high_value = d.high;
+    }
+}
+
+GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
+                                   Gdef_choice3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind)
+        def->max_choices = gks_driver_for_type(ws_type)->desc->in->max_choices;
+}
+
+GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
+}
+
+GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
+                                   Gdef_string3 *def)
+{
+    gks_indev d;
+    def3(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d);
+    if (def && !*err_ind) {
+        def->max_buf_size = GKS_IN_STRING_MAX;
+        def->buf_size = d.buf_size;
+    }
 }
 
 GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
@@ -447,17 +1284,28 @@ GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
     set_err(err_ind, e);
     if (e || !num_in)
         return;
-    *num_in = (Gnum_in){ num_devices(d->desc, GIN_LOC), num_devices(d->desc, GIN_STROKE),
-                         num_devices(d->desc, GIN_VAL), num_devices(d->desc, GIN_CHOICE),
-                         num_devices(d->desc, GIN_PICK), num_devices(d->desc, GIN_STRING) };
+    const gks_in_desc *in = d->desc->in;
+    *num_in = (Gnum_in){ gks_in_num_devices(in, GIN_LOC), gks_in_num_devices(in, GIN_STROKE),
+                         gks_in_num_devices(in, GIN_VAL), gks_in_num_devices(in, GIN_CHOICE),
+                         gks_in_num_devices(in, GIN_PICK), gks_in_num_devices(in, GIN_STRING) };
 }
 
 GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint *in_num)
 {
-    (void)ws_id, (void)in_class, (void)in_num;
     Gint e = gks_inq_state(GKS_S_WSOPEN);
-    /* The queue is always empty, so it has not overflowed since GKS was opened. */
-    set_err(err_ind, e ? e : 148);
+    Gint w = 0, n = 0;
+    Gin_class c = GIN_NONE;
+    if (!e)
+        e = gks_in_overflow(&w, &c, &n);
+    set_err(err_ind, e);
+    if (e)
+        return;
+    if (ws_id)
+        *ws_id = w;
+    if (in_class)
+        *in_class = c;
+    if (in_num)
+        *in_num = n;
 }
 
 GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_events)
@@ -465,5 +1313,5 @@ GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_event
     Gint e = gks_inq_state(GKS_S_WSOPEN);
     set_err(err_ind, e);
     if (!e && simult_events)
-        *simult_events = GSIMULT_NO_MORE;
+        *simult_events = gks_in_more_simult() ? GSIMULT_MORE : GSIMULT_NO_MORE;
 }

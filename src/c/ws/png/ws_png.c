@@ -303,11 +303,11 @@ static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
 
 #define PNG_DESC(TYPE, NAME, SIZE)                                                   \
     {                                                                                \
-        .type = TYPE, .name = NAME, .cat = GCAT_OUT, .cls = GCLASS_RASTER,           \
+        .type = TYPE, .name = NAME, .cat = GCAT_OUTIN, .cls = GCLASS_RASTER,           \
         .dc_units = GDC_OTHER, .dc_x = SIZE, .dc_y = SIZE, .raster_x = SIZE,         \
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
-        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster,                        \
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster, .in = &gks_in_desc_std, \
         .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) |               \
                        (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_PAINTER) |                \
                        (1u << GHLHSR_RAYTRACE),                                         \
