@@ -9,6 +9,7 @@
 #include "gks_binding.h"
 #include "gks_error.h"
 #include "gks_mf_record.h"
+#include "gks_par.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -44,9 +45,14 @@ static void open_gks(const char *err_name, int open_file)
     gks_context *c = gks_ctx();
     if (gks_check_state(GFN_OPKS))
         return;
+    gks_par_start(NULL); /* MPI build under mpirun: MPI up on every rank (docs/MPI.md) */
     FILE *fp = NULL;
     if (open_file && err_name && *err_name) {
-        fp = fopen(err_name, "a");
+        char *path = NULL; /* MPI rank R > 0: err_name.R */
+        if (gks_par_rank() > 0 && !(path = gks_par_rank_path(err_name)))
+            GKS_FAIL(300, GFN_OPKS);
+        fp = fopen(path ? path : err_name, "a");
+        gks_free(path);
         if (!fp)
             GKS_FAIL(200, GFN_OPKS);
     }

@@ -14,6 +14,11 @@
 #include "ws_raytrace.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
+#include "ws_mpi.h"
+#ifdef GKS_HAVE_MPI
+#include "gks_par.h"
+#include <stdio.h>
+#endif
 #include <limits.h>
 #include <math.h>
 #include <pthread.h>
@@ -48,6 +53,7 @@ struct ws_rt {
     size_t n_rgb, cap_rgb;   /* counted in floats */
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
+    int share_tiles;         /* the next frames' tiles are shared by the MPI ranks */
 };
 
 /* Sample rays per coverage batch (bounds the temporary memory of ws_rt_render). */
@@ -79,6 +85,8 @@ int ws_rt_count(const ws_rt *r) { return (int)r->n_recs; }
 void ws_rt_set_clip_secondary(ws_rt *r, int on) { r->opts.clip_secondary = on != 0; }
 
 void ws_rt_options(const ws_rt *r, rt_render_options *o) { *o = r->opts; }
+
+void ws_rt_set_share_tiles(ws_rt *r, int on) { r->share_tiles = on != 0; }
 
 void ws_rt_last_stats(const ws_rt *r, rt_stats *st) { *st = r->last; }
 
@@ -701,8 +709,11 @@ static void stats_add(rt_stats *a, const rt_stats *b)
 /* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
  * sets *traced when the tracer ran. Returns 0 or 300. */
 static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
-                       gks_raster_fb *fb, rt_stats *st, int *traced)
+                       gks_raster_fb *fb, rt_stats *st, int *traced, int *fault)
 {
+#ifndef GKS_HAVE_MPI
+    (void)fault; /* only a lost MPI rank is a fault */
+#endif
     const Gview_rep3 *v = &ws->views[vi];
     double box[6];
     if (!display_volume(ws, v, box))
@@ -738,6 +749,17 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
     const char *env = getenv("GKS3D_RT_PROGRESS");
     if (env && strcmp(env, "1") == 0)
         o.progress = 1;
+    int assemble = 1; /* this process composes the traced pixels (rank 0 when shared) */
+#ifdef GKS_HAVE_MPI
+    int serialized = 0;
+    rt_mpi_link *link = r->share_tiles ? ws_mpi_link(&serialized) : NULL;
+    rt_mpi_job mj;
+    if (link) {
+        if (!serialized)
+            o.threads = 1; /* MPI calls from the calling thread only */
+        assemble = link->rank == 0;
+    }
+#endif
     size_t n = (size_t)w * (size_t)h;
     float *rgb = gks_alloc_array(n, 3 * sizeof(float));
     unsigned short *cnt = gks_alloc_array(n, sizeof *cnt);
@@ -749,7 +771,7 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
     }
     /* Over a rectangle that is still all background the traced colour is the answer
      * (T = a*H + (1-a)*bg): coverage is needed only over other content. */
-    if (all_background(fb, ix0, ix1, iy0, iy1, bg)) {
+    if (!assemble || all_background(fb, ix0, ix1, iy0, iy1, bg)) {
         per = 1;
         for (size_t k = 0; k < n; k++)
             cnt[k] = 1;
@@ -758,13 +780,41 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
         if (err)
             goto done;
     }
+#ifdef GKS_HAVE_MPI
+    if (link) {
+        long nt = o.threads > 0 ? o.threads : sysconf(_SC_NPROCESSORS_ONLN);
+        o.tiles = rt_mpi_job_start(&mj, link, nt > 0 && nt < 256 ? (int)nt : 1);
+    }
+#endif
     int rr = rt_render(sc, &cam, &o, rgb, &s);
+#ifdef GKS_HAVE_MPI
+    if (link) {
+        const char *rep = getenv("GKS3D_MPI_REPORT");
+        if (rep && strcmp(rep, "1") == 0)
+            fprintf(stderr, "gks3d: MPI rank %d of %d: frame %u: %ld of %d tiles traced here, "
+                    "%ld bytes sent, %ld received\n", link->rank, link->size, mj.seq,
+                    mj.tiles_here, mj.ntiles, mj.sent_bytes, mj.recv_bytes);
+    }
+    if (link && rt_mpi_job_finish(&mj)) {
+        /* a lost rank: on rank 0 the picture is still complete (its tiles were traced
+           here); the error is reported after the frame is written */
+        fprintf(stderr, "gks3d: MPI rank %d: %s\n", link->rank, mj.msg);
+        gks_par_lost();
+        *fault = 305;
+    }
+    if (rr == RT_ERR_HOOK) {
+        err = 305;
+        goto done;
+    }
+#endif
     if (rr != RT_OK) {
         err = gks_err_of_rt(rr);
         goto done;
     }
     stats_add(st, &s);
     *traced = 1;
+    if (!assemble)
+        goto done; /* the other ranks' pixels are rank 0's to compose */
     /* rt rows are top-first; framebuffer rows bottom-up, ss x ss samples per pixel. The
      * traced colour T = a*H + (1-a)*bg for coverage a: the pixel becomes a*clamp(H) + (1-a)*F
      * over the framebuffer's F (exact for unjittered samples). */
@@ -804,17 +854,17 @@ int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_
         used[r->recs[k].view_ind] = 1;
     rt_stats sum;
     memset(&sum, 0, sizeof sum);
-    int traced = 0;
+    int traced = 0, fault = 0;
     for (int vi = 0; vi <= GKS_MAX_VIEW_IND; vi++) {
         if (!used[vi])
             continue;
-        int err = render_view(r, ws, vi, wsm, fb, &sum, &traced);
+        int err = render_view(r, ws, vi, wsm, fb, &sum, &traced, &fault);
         if (err)
             return err;
     }
     if (traced)
         r->last = sum;
-    return 0;
+    return fault;
 }
 
 /* ---- ESCAPEs ------------------------------------------------------------------------- */
