@@ -308,7 +308,8 @@ static int gks_only;
 static int row(const char *name, int walk, double box, size_t n)
 {
     work w = { .walk = walk, .n = n, .box = box };
-    double tg, to = 0, wg, wo = 0, ug;
+    double tg, to = 0, wg, wo = 0, ug, uo = 0;
+    (void)uo; /* used only with the OSMesa comparison */
     long mg, mo = 0;
     if (child_run(w, 0, &tg, &wg, &ug, &mg)) {
         printf("%-7s %9zu  GKS failed\n", name, n);
@@ -317,7 +318,6 @@ static int row(const char *name, int walk, double box, size_t n)
     printf("%-6s %8zu  GKS %7.3f s (%7.3f) upd %5.3f %7.1f ns/prim %6.1f MiB", name, n, tg,
            wg, ug, 1e9 * tg / n, mg / 1024.0);
 #ifdef HAVE_OSMESA
-    double uo = 0; /* llvmpipe's PNG time: only measured when OSMesa is there */
     if (gks_only)
         ;
     else if (child_run(w, 1, &to, &wo, &uo, &mo) == 0)
