@@ -137,9 +137,21 @@ FAPI void FNAME(gpm3, GPM3)(const fint *n, const freal *px, const freal *py, con
     free(l.points);
 }
 
+/* TEXT's string: an embedded CHAR(0) would end the C string and silently shorten the
+ * text, so it becomes DEL (127), a code the core rejects with 101 in the standard's
+ * order of checks (issue 20: GTX('AB'//CHAR(0)//'CD') is 101, not "AB"). */
+static char *text_str(const char *s, size_t len, Gint fctid)
+{
+    char *t = fstr(s, len, fctid);
+    for (size_t i = 0; t && i < len; i++)
+        if (t[i] == '\0')
+            t[i] = 127;
+    return t;
+}
+
 static void text_n(freal px, freal py, const char *s, size_t len)
 {
-    char *t = fstr(s, len, GFN_TX);
+    char *t = text_str(s, len, GFN_TX);
     if (!t)
         return;
     Gpoint p = { px, py };
@@ -165,7 +177,7 @@ FAPI void FNAME(gtxs, GTXS)(const freal *px, const freal *py, const fint *lstr,
 FAPI void FNAME(gtx3, GTX3)(const freal *px, const freal *py, const freal *pz, const freal *tdx,
                             const freal *tdy, const freal *tdz, const char *str, size_t len)
 {
-    char *t = fstr(str, len, GFN_TX3);
+    char *t = text_str(str, len, GFN_TX3);
     if (!t)
         return;
     Gpoint3 p = { *px, *py, *pz };
@@ -705,7 +717,7 @@ INDS(gqeedi, GQEEDI, ginq_list_edge_inds)
 static void extent_n(fint wkid, freal px, freal py, const char *s, size_t len, fint *errind,
                      freal *cpx, freal *cpy, freal *tx, freal *ty)
 {
-    char *t = fstr(s, len, GFN_TX);
+    char *t = text_str(s, len, GFN_TX);
     if (!t) {
         *errind = 300;
         return;
@@ -749,7 +761,7 @@ FAPI void FNAME(gqtxx3, GQTXX3)(const fint *wkid, const freal *px, const freal *
                                 freal *cpy, freal *cpz, freal *tx, freal *ty, freal *tz,
                                 size_t len)
 {
-    char *t = fstr(str, len, GFN_TX3);
+    char *t = text_str(str, len, GFN_TX3);
     if (!t) {
         *errind = 300;
         return;
