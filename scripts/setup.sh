@@ -4,7 +4,8 @@
 # only when something has to be installed. Needs root (or sudo) only in that case.
 set -euo pipefail
 
-packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev)
+packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
+          libx11-dev xvfb xdotool x11-apps) # X11 workstation and its tests (optional)
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
