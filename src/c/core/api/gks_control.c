@@ -8,6 +8,7 @@
 #include "gks_binding.h"
 #include "gks_error.h"
 #include "gks_mf_record.h"
+#include "gks_par.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -43,9 +44,14 @@ static void open_gks(const char *err_name, int open_file)
     gks_context *c = gks_ctx();
     if (gks_check_state(GFN_OPKS))
         return;
+    gks_par_start(NULL); /* MPI build under mpirun: MPI up on every rank (docs/MPI.md) */
     FILE *fp = NULL;
     if (open_file && err_name && *err_name) {
-        fp = fopen(err_name, "a");
+        char *path = NULL; /* MPI rank R > 0: err_name.R */
+        if (gks_par_rank() > 0 && !(path = gks_par_rank_path(err_name)))
+            GKS_FAIL(300, GFN_OPKS);
+        fp = fopen(path ? path : err_name, "a");
+        gks_free(path);
         if (!fp)
             GKS_FAIL(200, GFN_OPKS);
     }
@@ -152,6 +158,9 @@ GKS_API void gclose_ws(Gint ws_id)
     if (ws->state == GWS_ACTIVE)
         GKS_FAIL(29, GFN_CLWK);
     int err = ws->drv->update ? ws->drv->update(ws) : 0;
+    int ferr = ws->drv->finish ? ws->drv->finish(ws) : 0;
+    if (!err)
+        err = ferr;
     if (ws->drv->close)
         ws->drv->close(ws);
     gks_segment_ws_closed(ws_id);
@@ -324,7 +333,8 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
         return;
     }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
-    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
+    if ((func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION) &&
+        func_id != GESC_MI_ALLOW_ESCAPES)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)
         GKS_FAIL(182, GFN_ESC);

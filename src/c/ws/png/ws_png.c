@@ -25,6 +25,8 @@
 #include "ws_driver.h"
 #include "ws_png_render.h"
 #include "ws_raytrace.h"
+#include "ws_mpi.h"
+#include "gks_par.h"
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
@@ -47,6 +49,7 @@ typedef struct png_ws {
     int compression;    /* PNG compression: GKS_RASTER_PNG_FAST or a zlib level 1..9 */
     ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
     png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
+    int mpi_frames;     /* MPI run: whole frames to ranks (1) or tiles of each frame (0) */
 } png_ws;
 
 static char *base_from_conn(const char *conn)
@@ -98,6 +101,7 @@ static int png_open(gks_ws *ws)
     p->frame = 1;
     p->ss = 1;
     p->compression = GKS_RASTER_PNG_FAST;
+    p->mpi_frames = gks_par_frames_default();
     ws->priv = p;
     return 0;
 }
@@ -176,11 +180,25 @@ static int png_update(gks_ws *ws)
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
+    /* MPI run (ws_mpi.h): this rank may trace a share of the frame, all of it, or none,
+       and only one rank writes it */
+    const int writes = ws_mpi_writes(p->mpi_frames, p->frame);
+    const int shares = ws_mpi_shares_tiles(p->mpi_frames);
+    ws_rt_set_share_tiles(p->rt, shares);
+    int fault = 0;
     double wsm[4][4];
-    if (ws_rt_count(p->rt) > 0 && ws_matrix(ws, wsm) == 0) {
+    if ((writes || shares) && ws_rt_count(p->rt) > 0 && ws_matrix(ws, wsm) == 0) {
         int e = ws_rt_render(p->rt, ws, (const double (*)[4])wsm, fb);
-        if (e)
+        if (e == 305)
+            fault = e; /* a lost rank: rank 0's frame is complete all the same */
+        else if (e)
             return e;
+    }
+    if (!writes) { /* another rank writes this frame */
+        p->dirty = 0;
+        p->written_any = 1;
+        p->frame_written = 1;
+        return fault;
     }
     gks_raster_fb *pic;
     if (ws_png_render_compose(p->render, ws, fb, &pic))
@@ -200,7 +218,7 @@ static int png_update(gks_ws *ws)
     p->dirty = 0;
     p->written_any = 1;
     p->frame_written = 1;
-    return 0;
+    return fault;
 }
 
 /* NPC3 -> image pixels and depth: workstation window -> viewport (DC), minus the

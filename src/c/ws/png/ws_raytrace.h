@@ -20,8 +20,9 @@ void ws_rt_free(ws_rt *r);
 void ws_rt_reset(ws_rt *r);
 /* Number of recorded tracer primitives (a clipped CELL ARRAY may record several). */
 int ws_rt_count(const ws_rt *r);
-/* Shadow/reflection/refraction rays limited to the display volume (1) or not (0). */
-void ws_rt_set_clip_secondary(ws_rt *r, int on);
+/* The tiles of the next frames are shared by the ranks of an MPI run (on) or traced here
+ * alone (off, the default); ws_mpi.h. Without the MPI build: no effect. */
+void ws_rt_set_share_tiles(ws_rt *r, int on);
 /* The render options the next picture uses (ESCAPE settings; the environment variable
  * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
 void ws_rt_options(const ws_rt *r, rt_render_options *o);
@@ -43,6 +44,8 @@ int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim);
  * (view clip volume where on, intersected with the workstation window). A pixel is composed
  * over fb by the fraction of its sample rays that hit a primitive (0: fb unchanged). wsm:
  * NPC3 -> image pixels (x right, y up, pixel (i,j) centre at (i+.5, j+.5)). Returns 0 or
- * 300 (storage). */
+ * 300 (storage). Shared tiles (MPI): on ranks other than 0 fb is left as it is; 305 when a
+ * rank was lost -- on rank 0 the frame is complete all the same (the lost rank's tiles are
+ * traced here), elsewhere nothing was composed. */
 int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_fb *fb);
 #endif
