@@ -38,8 +38,8 @@ int main(int argc, char **argv)
     }
     if (argc > 1) {
         Gint id = 1;
-        Gescape_in_data in = { 1, &id, 0, NULL, strlen(argv[1]), argv[1] };
-        gescape(GESC_INPUT_SCRIPT, &in, NULL);
+        Gescape_in_data in = { { 1, &id, 0, NULL, strlen(argv[1]), argv[1] } };
+        gescape(GESC_INPUT_SCRIPT, &in, NULL, NULL);
     }
     gactivate_ws(1);
     Glimit win = { 0, 1, 0, 1 }, vp = { 0, 800, 0, 800 };
@@ -52,8 +52,8 @@ int main(int argc, char **argv)
     gset_hlhsr_mode(1, GHLHSR_ZBUFFER);
     fig_scene_setup(FIG_SCENE_BOARD, vpn);
     Gint ints[3] = { 1, 4, 0 };
-    Gescape_in_data samples = { 3, ints, 0, NULL, 0, NULL };
-    gescape(GESC_RT_SAMPLES, &samples, NULL); /* 2 x 2 samples per pixel when tracing */
+    Gescape_in_data samples = { { 3, ints, 0, NULL, 0, NULL } };
+    gescape(GESC_RT_SAMPLES, &samples, NULL, NULL); /* 2 x 2 samples per pixel when tracing */
     gcreate_seg(1);
     fig_scene_draw(FIG_SCENE_BOARD);
     gclose_seg();
@@ -96,8 +96,8 @@ int main(int argc, char **argv)
             char name[32];
             snprintf(name, sizeof name, "interactive-%03d", ++frame);
             Gint id = 1;
-            Gescape_in_data fn = { 1, &id, 0, NULL, strlen(name), name };
-            gescape(GESC_SET_FILE_NAME, &fn, NULL);
+            Gescape_in_data fn = { { 1, &id, 0, NULL, strlen(name), name } };
+            gescape(GESC_SET_FILE_NAME, &fn, NULL, NULL);
         }
         gredraw_all_seg_ws(1); /* the segment with the new view or HLHSR mode */
         gupd_ws(1, GFLAG_PERFORM);
