@@ -24,6 +24,13 @@ extern "C" {
 #define GKS_API
 #endif
 
+/* ESCAPE of a metafile input workstation (docs/METAFILE.md, "Untrusted input"): ints[0] the MI
+ * workstation, ints[1] 1: INTERPRET ITEM of items read from it performs every recorded
+ * ESCAPE as recorded; 0 (the default): only the picture settings listed there, with the
+ * ray-tracing sample count and depth capped; file names, threads, progress output and the
+ * other identifiers are refused (error 180). */
+enum { GESC_MI_ALLOW_ESCAPES = -140 };
+
 /* ---------------------------------------------------------------------------------
  * Basic types
  * --------------------------------------------------------------------------------- */

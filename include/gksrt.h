@@ -104,6 +104,17 @@ RT_API int rt_scene_add_light(rt_scene *sc, const rt_light *l);
 
 /* ---- Scene ------------------------------------------------------------------------------- */
 
+/* Forgets the scene's lights (surfaces keep their masks). Lights are used by rt_render only:
+ * adding or clearing them does not un-commit the scene. */
+RT_API void rt_scene_clear_lights(rt_scene *sc);
+/* Replaces the light mask of surface surf (does not un-commit). RT_ERR_ARG for a bad id. */
+RT_API int rt_scene_set_surface_lights(rt_scene *sc, int surf, uint64_t mask);
+/* Number of primitive ids handed out so far (also those a commit drops). */
+RT_API int rt_scene_count(const rt_scene *sc);
+/* Removes the primitives of id >= n (0 <= n <= rt_scene_count), e.g. to undo a partly
+ * recorded item; un-commits. RT_ERR_ARG for a bad n. */
+RT_API int rt_scene_truncate(rt_scene *sc, int n);
+
 /* New empty scene, NULL if out of memory. */
 RT_API rt_scene *rt_scene_new(void);
 /* Frees a scene (NULL allowed). */
@@ -146,6 +157,12 @@ typedef struct rt_build_options {
                              (docs/RAYTRACING.md; scenes seen obliquely);
                              1: always VRC3 axes. grid_res forces VRC3 axes. Results do not
                              depend on the frame (grid == brute force bit for bit). */
+    int ncull;            /* 0..6: primitives whose every vertex lies outside one of the planes
+                             cull[k] (a*x+b*y+c*z+d >= 0 inside) by more than cull_eps are left
+                             out of the committed scene (the input keeps them), e.g. the
+                             camera's clipping planes when secondary rays are clipped */
+    double cull[6][4];
+    double cull_eps;
 } rt_build_options;
 
 /* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default
@@ -338,6 +355,11 @@ RT_API void rt_render_options_default(rt_render_options *o);
  * RT_ERR_ARG for bad options, RT_ERR_NOMEM. Never writes NaN/Inf. */
 RT_API int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats);
+/* rt_render, and with cover not NULL the coverage of each pixel (width*height counts, row 0 =
+ * top): how many of its rays hit a primitive as eye rays, out of 4 with corner rays (its 4
+ * corners), else out of opts->samples (its samples as traced, jittered or not). */
+RT_API int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+                           float *rgb, unsigned short *cover, rt_stats *stats);
 
 #ifdef __cplusplus
 }

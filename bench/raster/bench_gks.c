@@ -307,7 +307,8 @@ static int gks_only;
 static int row(const char *name, int walk, double box, size_t n)
 {
     work w = { .walk = walk, .n = n, .box = box };
-    double tg, to = 0, wg, wo = 0, ug, uo;
+    double tg, to = 0, wg, wo = 0, ug, uo = 0;
+    (void)uo; /* used only with the OSMesa comparison */
     long mg, mo = 0;
     if (child_run(w, 0, &tg, &wg, &ug, &mg)) {
         printf("%-7s %9zu  GKS failed\n", name, n);

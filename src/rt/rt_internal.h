@@ -67,6 +67,7 @@ typedef struct rt_prim {
 /* raw input polygon / cell array kept until commit */
 typedef struct rt_in_prim {
     int kind;           /* RT_KIND_POLY or RT_KIND_CELL */
+    int id;             /* primitive id */
     int front, back;
     size_t xyz0;        /* first double (poly: all loops; cell: P,Q,R) */
     size_t loop0;       /* poly: first loop count */
@@ -115,7 +116,14 @@ struct rt_scene {
     /* input */
     rt_surface *surf; size_t nsurf, capsurf;
     rt_light light[RT_MAX_LIGHTS]; int nlights;
-    rt_in_prim *in; size_t nin, capin;
+    rt_in_prim *in; size_t nin, capin;     /* polygons other than triangles, cell arrays */
+    /* triangles (single-loop polygons of 3 vertices) as given, in id order: the committed
+       triangles are these (tri == in_tri) unless commit culls (then a copy) */
+    rt_tri *in_tri; size_t nintri, capintri;
+    int32_t *in_tri_sf;               /* front, back surface per triangle */
+    uint32_t *in_tri_id;              /* primitive id per triangle */
+    size_t capintri_sf, capintri_id;
+    size_t nids;                      /* primitive ids handed out (all kinds) */
     double *in_xyz; size_t nxyz, capxyz;
     int *in_loops; size_t nloopsin, caploopsin;
     float *in_rgb; size_t nrgb, caprgb;
@@ -123,6 +131,7 @@ struct rt_scene {
     int committed;
     rt_prim *prim; size_t nprim;
     rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
+    int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
     rt_poly *poly; size_t npoly;
     rt_cell *cell; size_t ncell;

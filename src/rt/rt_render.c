@@ -88,6 +88,8 @@ typedef struct rt_job {
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
     rt_lbuf lbuf[RT_MAX_LIGHTS]; /* shadow-ray candidates per light (ok = 0: walk the grid) */
+    unsigned short *cover_out; /* NULL, or per pixel: its eye rays that hit (rt_render_cover) */
+    uint8_t *corner_hit;       /* corner mode with cover_out: per corner ray, 1 if it hit */
     int tiles_x, ntiles;
     atomic_int next;
     atomic_int done;
@@ -105,7 +107,9 @@ struct rt_frame {
 };
 
 /* Tile payload: RT_PAYLOAD_COUNTERS uint64 ray counters, then RGB floats per ray of the tile,
-   row-major (in corner mode the corner rays, before averaging). */
+   row-major (in corner mode the corner rays, before averaging), then, when rt_render_cover
+   was asked for coverage, one uint16 per ray: its eye-ray hits (corner mode: 0/1 of the
+   corner ray; else of the pixel's samples). */
 #define RT_PAYLOAD_COUNTERS 7
 
 /* Shadow-ray blocker cache, one per (depth, light) and thread: the opaque primitives that
@@ -135,6 +139,7 @@ typedef struct rt_worker {
     rt_ctx ctx;
     rt_scache *shadow_cache; /* [depth * nlights + light] */
     rt_stats st;
+    int eye_hit;             /* the latest eye ray hit a primitive */
     int err;
     unsigned char *payload;  /* with a tile hook: one tile's payload */
 } rt_worker;
@@ -382,8 +387,10 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     double t;
     long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
                   : rt_trace_nearest(sc, &w->ctx, &r, &t);
-    if (depth == 1)
+    if (depth == 1) {
         w->st.eye_hits += i >= 0;
+        w->eye_hit = i >= 0;
+    }
     if (i < 0)
         return;
     const rt_prim *p = &sc->prim[i];
@@ -502,6 +509,7 @@ static void rt_eye(rt_worker *w, double px, double py, double out[3])
     const rt_job *job = w->job;
     rt_ray ray;
     w->st.eye_rays++;
+    w->eye_hit = 0;
     if (rt_camera_ray(job->cam, px, py, &ray) != RT_OK) {
         for (int c = 0; c < 3; c++)
             out[c] = job->o.background[c];
@@ -766,6 +774,7 @@ static void rt_tile(rt_worker *w, int tile)
             for (int x = x0; x < x1; x++) {
                 const int k = slot[x - x0];
                 w->st.eye_rays++;
+                w->eye_hit = 0;
                 if (k >= 0 && ok[k]) {
                     const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
                     rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
@@ -782,6 +791,10 @@ static void rt_tile(rt_worker *w, int tile)
                 }
                 for (int c = 0; c < 3; c++)
                     dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
+                if (job->corner_hit)
+                    job->corner_hit[row + (size_t)x] = (uint8_t)w->eye_hit;
+                else if (job->cover_out)
+                    job->cover_out[row + (size_t)x] = (unsigned short)w->eye_hit;
             }
         }
         return;
@@ -789,6 +802,7 @@ static void rt_tile(rt_worker *w, int tile)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double acc[3] = {0, 0, 0}, col[3];
+            int hits = 0;
             uint64_t seed = rt_mix(((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
             for (int b = 0; b < m; b++)
                 for (int a = 0; a < m; a++) {
@@ -801,7 +815,10 @@ static void rt_tile(rt_worker *w, int tile)
                     rt_eye(w, x + (a + ja) / m, y + (b + jb) / m, col);
                     for (int c = 0; c < 3; c++)
                         acc[c] += col[c];
+                    hits += w->eye_hit;
                 }
+            if (job->cover_out)
+                job->cover_out[(size_t)y * (size_t)job->gw + (size_t)x] = (unsigned short)hits;
             float *dst = job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
             for (int c = 0; c < 3; c++) {
                 double v = acc[c] / (double)(m * m);
@@ -846,7 +863,24 @@ static size_t rt_tile_rect(const rt_job *job, int t, int *x0, int *x1, int *y0, 
     *x1 = *x0 + RT_TILE < job->gw ? *x0 + RT_TILE : job->gw;
     *y1 = *y0 + RT_TILE < job->gh ? *y0 + RT_TILE : job->gh;
     return RT_PAYLOAD_COUNTERS * sizeof(uint64_t) +
-           (size_t)(*x1 - *x0) * (size_t)(*y1 - *y0) * 3 * sizeof(float);
+           (size_t)(*x1 - *x0) * (size_t)(*y1 - *y0) *
+               (3 * sizeof(float) + (job->cover_out ? sizeof(uint16_t) : 0));
+}
+
+/* ray (x, y)'s eye-ray hits as a payload keeps them (job->cover_out set) */
+static uint16_t rt_cover_get(const rt_job *job, int x, int y)
+{
+    const size_t k = (size_t)y * (size_t)job->gw + (size_t)x;
+    return job->corner_hit ? job->corner_hit[k] : job->cover_out[k];
+}
+
+static void rt_cover_set(const rt_job *job, int x, int y, uint16_t v)
+{
+    const size_t k = (size_t)y * (size_t)job->gw + (size_t)x;
+    if (job->corner_hit)
+        job->corner_hit[k] = v != 0;
+    else
+        job->cover_out[k] = v <= (uint16_t)(job->m * job->m) ? v : (uint16_t)(job->m * job->m);
 }
 
 /* where ray (x, y) of the grid is kept until the frame is resolved */
@@ -883,6 +917,11 @@ static size_t rt_tile_pack(rt_worker *w, int t, const rt_stats *before)
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++, p += 3 * sizeof(float))
             memcpy(p, rt_ray_slot(w->job, x, y), 3 * sizeof(float));
+    for (int y = y0; w->job->cover_out && y < y1; y++)
+        for (int x = x0; x < x1; x++, p += sizeof(uint16_t)) {
+            const uint16_t v = rt_cover_get(w->job, x, y);
+            memcpy(p, &v, sizeof v);
+        }
     return bytes;
 }
 
@@ -904,6 +943,12 @@ int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes)
             float *dst = rt_ray_slot(job, x, y);
             for (int k = 0; k < 3; k++)
                 dst[k] = isfinite(v[k]) ? v[k] : 0.0f; /* never NaN/Inf in the picture */
+        }
+    for (int y = y0; job->cover_out && y < y1; y++)
+        for (int x = x0; x < x1; x++, p += sizeof(uint16_t)) {
+            uint16_t v;
+            memcpy(&v, p, sizeof v);
+            rt_cover_set(job, x, y, v);
         }
     rt_stats *r = &job->remote;
     r->eye_rays += c[0];
@@ -1005,6 +1050,23 @@ static void rt_job_lbufs_free(rt_job *job)
 int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats)
 {
+    return rt_render_cover(sc, cam, opts, rgb, NULL, stats);
+}
+
+/* cover[y*W + x] = corner hits of corners (x,y), (x+1,y), (x,y+1), (x+1,y+1) */
+static void rt_corner_cover(const rt_job *job)
+{
+    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height, G = W + 1;
+    const uint8_t *h = job->corner_hit;
+    for (size_t y = 0; y < H; y++)
+        for (size_t x = 0; x < W; x++)
+            job->cover_out[y * W + x] = (unsigned short)(h[y * G + x] + h[y * G + x + 1] +
+                                                         h[(y + 1) * G + x] + h[(y + 1) * G + x + 1]);
+}
+
+int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
+                    float *rgb, unsigned short *cover, rt_stats *stats)
+{
     if (!sc || !cam || !rgb)
         return RT_ERR_ARG;
     if (!sc->committed)
@@ -1037,10 +1099,16 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     job.m = m;
     job.gw = cam->width + (o->corner_rays ? 1 : 0);
     job.gh = cam->height + (o->corner_rays ? 1 : 0);
+    job.cover_out = cover;
     if (o->corner_rays) {
         job.edge = rt_alloc_array((size_t)job.gw + (size_t)job.gh - 1, 3 * sizeof(float));
-        if (!job.edge)
+        if (cover)
+            job.corner_hit = rt_alloc_array((size_t)job.gw, (size_t)job.gh);
+        if (!job.edge || (cover && !job.corner_hit)) {
+            free(job.edge);
+            free(job.corner_hit);
             return RT_ERR_NOMEM;
+        }
     }
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
         const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
@@ -1107,6 +1175,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
         free(w);
         free(th);
         free(job.edge);
+        free(job.corner_hit);
         free(job.cover);
         free(job.cand_off);
         free(job.cand);
@@ -1134,6 +1203,8 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     pthread_mutex_destroy(&job.lock);
     if (o->corner_rays && whole && rc == RT_OK)
         rt_corner_average(&job);
+    if (job.corner_hit && whole && rc == RT_OK)
+        rt_corner_cover(&job);
     rt_stats st = job.remote;
     for (int k = 0; k < nt; k++) {
         st.eye_rays += w[k].st.eye_rays;
@@ -1159,6 +1230,7 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     free(w);
     free(th);
     free(job.edge);
+    free(job.corner_hit);
     free(job.cover);
     free(job.cand_off);
     free(job.cand);

@@ -47,7 +47,9 @@ rt_scene *rt_scene_new(void)
 static void rt_scene_uncommit(rt_scene *sc)
 {
     free(sc->prim); sc->prim = NULL; sc->nprim = 0;
-    free(sc->tri); sc->tri = NULL; sc->ntri = 0;
+    if (sc->tri_owned)
+        free(sc->tri);
+    sc->tri = NULL; sc->ntri = 0; sc->tri_owned = 0;
     free(sc->quad); sc->quad = NULL; sc->nquad = 0;
     free(sc->poly); sc->poly = NULL; sc->npoly = 0;
     free(sc->cell); sc->cell = NULL; sc->ncell = 0;
@@ -67,6 +69,9 @@ void rt_scene_free(rt_scene *sc)
     rt_scene_uncommit(sc);
     free(sc->surf);
     free(sc->in);
+    free(sc->in_tri);
+    free(sc->in_tri_sf);
+    free(sc->in_tri_id);
     free(sc->in_xyz);
     free(sc->in_loops);
     free(sc->in_rgb);
@@ -144,8 +149,45 @@ int rt_scene_add_light(rt_scene *sc, const rt_light *l)
                 d->direction[i] = l->direction[i] / n;
         }
     }
-    sc->committed = 0;
     return sc->nlights++;
+}
+
+void rt_scene_clear_lights(rt_scene *sc)
+{
+    if (sc)
+        sc->nlights = 0;
+}
+
+int rt_scene_set_surface_lights(rt_scene *sc, int surf, uint64_t mask)
+{
+    if (!sc || surf < 0 || (size_t)surf >= sc->nsurf)
+        return RT_ERR_ARG;
+    sc->surf[surf].light_mask = mask;
+    return RT_OK;
+}
+
+int rt_scene_count(const rt_scene *sc)
+{
+    return sc ? (int)sc->nids : 0;
+}
+
+int rt_scene_truncate(rt_scene *sc, int n)
+{
+    if (!sc || n < 0 || (size_t)n > sc->nids)
+        return RT_ERR_ARG;
+    rt_scene_uncommit(sc);
+    while (sc->nintri > 0 && sc->in_tri_id[sc->nintri - 1] >= (uint32_t)n)
+        sc->nintri--;
+    while (sc->nin > 0 && sc->in[sc->nin - 1].id >= n) {
+        const rt_in_prim *p = &sc->in[--sc->nin];
+        sc->nxyz = p->xyz0;
+        if (p->kind == RT_KIND_CELL)
+            sc->nrgb = p->rgb0;
+        else
+            sc->nloopsin = p->loop0;
+    }
+    sc->nids = (size_t)n;
+    return RT_OK;
 }
 
 static int rt_surface_ok(const rt_scene *sc, int s)
@@ -168,8 +210,22 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
         if (nv > (size_t)UINT32_MAX / 4)
             return RT_ERR_LIMIT;
     }
-    if (sc->nin >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
+    if (sc->nids >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
         return RT_ERR_LIMIT;
+    if (nloops == 1 && nv == 3) { /* a triangle: kept as the committed scene will trace it */
+        if (!rt_grow((void **)&sc->in_tri, &sc->capintri, sc->nintri + 1, sizeof *sc->in_tri) ||
+            !rt_grow((void **)&sc->in_tri_sf, &sc->capintri_sf, 2 * (sc->nintri + 1),
+                     sizeof *sc->in_tri_sf) ||
+            !rt_grow((void **)&sc->in_tri_id, &sc->capintri_id, sc->nintri + 1,
+                     sizeof *sc->in_tri_id))
+            return RT_ERR_NOMEM;
+        memcpy(sc->in_tri[sc->nintri].v, xyz, sizeof sc->in_tri[0].v);
+        sc->in_tri_sf[2 * sc->nintri] = front_surface;
+        sc->in_tri_sf[2 * sc->nintri + 1] = back_surface;
+        sc->in_tri_id[sc->nintri++] = (uint32_t)sc->nids;
+        sc->committed = 0;
+        return (int)sc->nids++;
+    }
     if (!rt_grow((void **)&sc->in, &sc->capin, sc->nin + 1, sizeof *sc->in) ||
         !rt_grow((void **)&sc->in_xyz, &sc->capxyz, sc->nxyz + 3 * nv, sizeof(double)) ||
         !rt_grow((void **)&sc->in_loops, &sc->caploopsin, sc->nloopsin + (size_t)nloops,
@@ -177,6 +233,7 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
         return RT_ERR_NOMEM;
     rt_in_prim *p = &sc->in[sc->nin];
     p->kind = RT_KIND_POLY;
+    p->id = (int)sc->nids;
     p->front = front_surface;
     p->back = back_surface;
     p->xyz0 = sc->nxyz;
@@ -189,7 +246,8 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
     sc->nxyz += 3 * nv;
     sc->nloopsin += (size_t)nloops;
     sc->committed = 0;
-    return (int)sc->nin++;
+    sc->nin++;
+    return (int)sc->nids++;
 }
 
 int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
@@ -205,7 +263,7 @@ int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], 
     for (size_t i = 0; i < 3 * ncol; i++)
         if (!isfinite(rgb[i]))
             return RT_ERR_ARG;
-    if (sc->nin >= INT_MAX)
+    if (sc->nids >= INT_MAX)
         return RT_ERR_LIMIT;
     if (!rt_grow((void **)&sc->in, &sc->capin, sc->nin + 1, sizeof *sc->in) ||
         !rt_grow((void **)&sc->in_xyz, &sc->capxyz, sc->nxyz + 9, sizeof(double)) ||
@@ -213,6 +271,7 @@ int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], 
         return RT_ERR_NOMEM;
     rt_in_prim *p = &sc->in[sc->nin];
     p->kind = RT_KIND_CELL;
+    p->id = (int)sc->nids;
     p->front = front_surface;
     p->back = back_surface;
     p->xyz0 = sc->nxyz;
@@ -228,7 +287,8 @@ int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], 
     sc->nxyz += 9;
     sc->nrgb += 3 * ncol;
     sc->committed = 0;
-    return (int)sc->nin++;
+    sc->nin++;
+    return (int)sc->nids++;
 }
 
 /* ---- commit ---- */
@@ -333,19 +393,124 @@ static void rt_bbox_add(double bb[6], const double p[3])
     }
 }
 
-static int rt_commit_prims(rt_scene *sc)
+/* 1 if every one of the nv points v (and, for a cell array P, Q, R, its fourth corner
+   P + Q - R) lies outside one of the cull planes of o by more than its margin */
+static int rt_culled(const rt_build_options *o, const double *v, size_t nv, int cell)
+{
+    double s[3];
+    size_t n = cell ? 4 : nv;
+    for (int f = 0; f < o->ncull; f++) {
+        const double *pl = o->cull[f];
+        int out = 1;
+        for (size_t i = 0; i < n && out; i++) {
+            const double *q = v + 3 * i;
+            if (cell && i == 3) {
+                for (int k = 0; k < 3; k++)
+                    s[k] = v[k] + v[3 + k] - v[6 + k];
+                q = s;
+            }
+            out = pl[0] * q[0] + pl[1] * q[1] + pl[2] * q[2] + pl[3] < -o->cull_eps;
+        }
+        if (out)
+            return 1;
+    }
+    return 0;
+}
+
+/* bounding box pb and centroid c (relative to the box corner: robust for large offsets) of
+   the nv points v; 0 if a point is not sane or the extent *ext is zero or not finite */
+static int rt_points_frame(const double *v, size_t nv, double pb[6], double c[3], double *ext)
+{
+    for (int j = 0; j < 3; j++) {
+        pb[j] = INFINITY;
+        pb[3 + j] = -INFINITY;
+        c[j] = 0.0;
+    }
+    for (size_t i = 0; i < nv; i++) {
+        if (!sane3(v + 3 * i))
+            return 0;
+        rt_bbox_add(pb, v + 3 * i);
+    }
+    *ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
+    if (!(*ext > 0.0) || !isfinite(*ext))
+        return 0;
+    for (size_t i = 0; i < nv; i++)
+        for (int j = 0; j < 3; j++)
+            c[j] += (v[3 * i + j] - pb[j]) / (double)nv;
+    for (int j = 0; j < 3; j++)
+        c[j] += pb[j];
+    return 1;
+}
+
+static void rt_prim_init(const rt_scene *sc, rt_prim *pr, int id, int front, int back)
+{
+    pr->id = id;
+    pr->surf[0] = front;
+    pr->surf[1] = back;
+    pr->opaque = sc->surf[front].transparency == 0.0 && sc->surf[back].transparency == 0.0;
+}
+
+/* Triangles first, in id order: the committed triangles are the input's (degenerate ones
+   removed from it for good) unless o culls, which commits a copy of the kept ones. */
+static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
+{
+    const int cull = o && o->ncull > 0;
+    sc->tri = sc->in_tri;
+    if (cull) {
+        sc->tri = rt_alloc_array(sc->nintri, sizeof *sc->tri);
+        if (!sc->tri)
+            return RT_ERR_NOMEM;
+        sc->tri_owned = 1;
+    }
+    static const int three = 3;
+    size_t keep = 0; /* without culling: input triangles kept (compacted in place) */
+    for (size_t k = 0; k < sc->nintri; k++) {
+        const double *v = &sc->in_tri[k].v[0][0];
+        double pb[6], c[3], ext, nrm[3];
+        if (!rt_points_frame(v, 3, pb, c, &ext) ||
+            !rt_poly_normal(v, 3, &three, 1, c, ext, nrm))
+            continue; /* degenerate: never traced */
+        if (!cull) {
+            sc->in_tri[keep] = sc->in_tri[k];
+            sc->in_tri_sf[2 * keep] = sc->in_tri_sf[2 * k];
+            sc->in_tri_sf[2 * keep + 1] = sc->in_tri_sf[2 * k + 1];
+            sc->in_tri_id[keep++] = sc->in_tri_id[k];
+        } else if (rt_culled(o, v, 3, 0)) {
+            continue;
+        } else {
+            sc->tri[sc->ntri] = sc->in_tri[k];
+        }
+        rt_prim *pr = &sc->prim[sc->nprim];
+        rt_prim_init(sc, pr, (int)sc->in_tri_id[k], sc->in_tri_sf[2 * k], sc->in_tri_sf[2 * k + 1]);
+        memcpy(pr->ng, nrm, sizeof pr->ng);
+        pr->kind = RT_KIND_TRI;
+        pr->data = (uint32_t)sc->ntri++;
+        for (int i = 0; i < 3; i++)
+            rt_bbox_add(bb, v + 3 * i);
+        sc->nprim++;
+    }
+    if (!cull)
+        sc->nintri = keep;
+    return RT_OK;
+}
+
+static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
 {
     size_t n = sc->nin;
-    sc->prim = rt_alloc_array(n, sizeof *sc->prim);
-    sc->tri = rt_alloc_array(n, sizeof *sc->tri);
+    sc->prim = rt_alloc_array(sc->nintri + n, sizeof *sc->prim);
     sc->quad = rt_alloc_array(n, sizeof *sc->quad);
     sc->poly = rt_alloc_array(n, sizeof *sc->poly);
     sc->cell = rt_alloc_array(n, sizeof *sc->cell);
     sc->uv = rt_alloc_array(sc->nxyz / 3 * 2, sizeof(double));
     sc->loops = rt_alloc_array(sc->nloopsin, sizeof(uint32_t));
-    if (!sc->prim || !sc->tri || !sc->quad || !sc->poly || !sc->cell || !sc->uv || !sc->loops)
+    if (!sc->prim || !sc->quad || !sc->poly || !sc->cell || !sc->uv || !sc->loops)
         return RT_ERR_NOMEM;
     double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    int rc = rt_commit_tris(sc, o, bb);
+    if (rc != RT_OK)
+        return rc;
+    const int cull = o && o->ncull > 0;
+    const size_t first = sc->nprim; /* the other kinds from here */
     for (size_t id = 0; id < n; id++) {
         const rt_in_prim *in = &sc->in[id];
         const double *v = sc->in_xyz + in->xyz0;
@@ -355,32 +520,13 @@ static int rt_commit_prims(rt_scene *sc)
         else
             for (int k = 0; k < in->nloops; k++)
                 nv += (size_t)sc->in_loops[in->loop0 + (size_t)k];
-        int ok = 1;
-        double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-        double c[3] = {0, 0, 0};
-        for (size_t i = 0; i < nv && ok; i++) {
-            if (!sane3(v + 3 * i)) {
-                ok = 0;
-                break;
-            }
-            rt_bbox_add(pb, v + 3 * i);
-        }
-        if (!ok)
+        if (cull && rt_culled(o, v, nv, in->kind == RT_KIND_CELL))
             continue;
-        double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
-        if (!(ext > 0.0) || !isfinite(ext))
+        double pb[6], c[3], ext;
+        if (!rt_points_frame(v, nv, pb, c, &ext))
             continue;
-        /* centroid relative to the box corner (robust for large offsets) */
-        for (size_t i = 0; i < nv; i++)
-            for (int j = 0; j < 3; j++)
-                c[j] += (v[3 * i + j] - pb[j]) / (double)nv;
-        for (int j = 0; j < 3; j++)
-            c[j] += pb[j];
         rt_prim *pr = &sc->prim[sc->nprim];
-        pr->id = (int)id;
-        pr->surf[0] = in->front;
-        pr->surf[1] = in->back;
-        pr->opaque = sc->surf[in->front].transparency == 0.0 && sc->surf[in->back].transparency == 0.0;
+        rt_prim_init(sc, pr, in->id, in->front, in->back);
         if (in->kind == RT_KIND_CELL) {
             const double *P = v, *Q = v + 3, *R = v + 6;
             rt_cell *ce = &sc->cell[sc->ncell];
@@ -437,16 +583,6 @@ static int rt_commit_prims(rt_scene *sc)
             sc->nprim++;
             continue;
         }
-        if (in->nloops == 1 && nv == 3) {
-            rt_tri *t = &sc->tri[sc->ntri];
-            memcpy(t->v, v, 9 * sizeof(double));
-            pr->kind = RT_KIND_TRI;
-            pr->data = (uint32_t)sc->ntri++;
-            for (int i = 0; i < 3; i++)
-                rt_bbox_add(bb, v + 3 * i);
-            sc->nprim++;
-            continue;
-        }
         rt_poly *po = &sc->poly[sc->npoly];
         memcpy(po->n, nrm, sizeof po->n);
         po->d = nrm[0] * c[0] + nrm[1] * c[1] + nrm[2] * c[2];
@@ -475,22 +611,22 @@ static int rt_commit_prims(rt_scene *sc)
         pr->data = (uint32_t)sc->npoly++;
         sc->nprim++;
     }
-    /* stable partition: triangles, then quads, then the rest, so that the prim index alone
-       selects the fast paths (i < ntri: tri[i]; i < ntri + nquad: quad[i - ntri]) */
-    rt_prim *tmp = rt_alloc_array(sc->nprim, sizeof *tmp);
+    /* stable partition of the other kinds: quads, then the rest, so that the prim index
+       alone selects the fast paths (i < ntri: tri[i]; i < ntri + nquad: quad[i - ntri]) */
+    const size_t nrest = sc->nprim - first;
+    rt_prim *tmp = rt_alloc_array(nrest, sizeof *tmp);
     if (!tmp)
         return RT_ERR_NOMEM;
-    size_t a = 0, b = sc->ntri, c2 = sc->ntri + sc->nquad;
-    for (size_t i = 0; i < sc->nprim; i++) {
-        if (sc->prim[i].kind == RT_KIND_TRI)
-            tmp[a++] = sc->prim[i];
-        else if (sc->prim[i].kind == RT_KIND_QUAD)
-            tmp[b++] = sc->prim[i];
+    size_t qa = 0, qb = sc->nquad;
+    for (size_t i = first; i < sc->nprim; i++) {
+        if (sc->prim[i].kind == RT_KIND_QUAD)
+            tmp[qa++] = sc->prim[i];
         else
-            tmp[c2++] = sc->prim[i];
+            tmp[qb++] = sc->prim[i];
     }
-    free(sc->prim);
-    sc->prim = tmp;
+    if (nrest)
+        memcpy(sc->prim + first, tmp, nrest * sizeof *tmp);
+    free(tmp);
     if (sc->nprim == 0)
         for (int i = 0; i < 6; i++)
             bb[i] = 0.0;
@@ -666,7 +802,7 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         return RT_ERR_ARG;
     double t0 = rt_now();
     rt_scene_uncommit(sc);
-    int rc = rt_commit_prims(sc);
+    int rc = rt_commit_prims(sc, opts);
     if (rc == RT_OK)
         rc = rt_poly_slabs(sc);
     if (rc == RT_OK)

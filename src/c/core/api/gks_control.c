@@ -158,6 +158,9 @@ GKS_API void gclose_ws(Gint ws_id)
     if (ws->state == GWS_ACTIVE)
         GKS_FAIL(29, GFN_CLWK);
     int err = ws->drv->update ? ws->drv->update(ws) : 0;
+    int ferr = ws->drv->finish ? ws->drv->finish(ws) : 0;
+    if (!err)
+        err = ferr;
     if (ws->drv->close)
         ws->drv->close(ws);
     gks_segment_ws_closed(ws_id);
@@ -330,7 +333,8 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
         return;
     }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
-    if (func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION)
+    if ((func_id > GESC_SET_FILE_NAME || func_id < GESC_PNG_COMPRESSION) &&
+        func_id != GESC_MI_ALLOW_ESCAPES)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)
         GKS_FAIL(182, GFN_ESC);

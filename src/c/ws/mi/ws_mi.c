@@ -76,12 +76,26 @@ static void mi_close(gks_ws *ws)
     ws->priv = NULL;
 }
 
+/* GESC_MI_ALLOW_ESCAPES: ints[1] 0/1. */
+static int mi_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    (void)out;
+    gks_mf_in *m = ws->priv;
+    if (func_id != GESC_MI_ALLOW_ESCAPES)
+        return 180;
+    if (in->num_ints < 2 || (in->ints[1] != 0 && in->ints[1] != 1))
+        return 182;
+    m->allow_escapes = in->ints[1];
+    return 0;
+}
+
 const gks_ws_driver gks_ws_mi_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mi_desc,
     .file = gks_mf_file,
     .open = mi_open,
     .close = mi_close,
+    .escape = mi_escape,
 };
 
 /* ---------------------------------------------------------------- reading */
@@ -229,6 +243,7 @@ static Gpoint3 *d_points(dec *d, long n, int dim)
 typedef struct {
     dec d;
     gks_norm_override *xf; /* the MI's interpretation state (or a local default) */
+    int allow_escapes;     /* the MI's GESC_MI_ALLOW_ESCAPES (0 without an MI) */
 } interp;
 
 /* Runs a primitive function with the recorded normalization and clipping volume. */
@@ -441,6 +456,38 @@ static void i_message(interp *ip)
     gks_free(s);
 }
 
+/* Caps on what an untrusted metafile may ask of a ray-traced picture (docs/METAFILE.md). */
+#define MI_CAP_RT_SAMPLES 16
+#define MI_CAP_RT_MAX_DEPTH 16
+
+/* Whether a recorded ESCAPE may be performed: everything when the application allowed it
+ * (GESC_MI_ALLOW_ESCAPES); otherwise the picture settings only, the sample count and ray
+ * depth capped in place. A metafile is untrusted input: it may not choose where the viewer
+ * writes, how many threads it starts, or print to its standard error. 0 or 180. */
+static int escape_policy(const interp *ip, int func, Gint *ints, long ni)
+{
+    if (ip->allow_escapes)
+        return 0;
+    switch (func) {
+    case GESC_RT_SAMPLES:
+        if (ni >= 2 && ints[1] > MI_CAP_RT_SAMPLES)
+            ints[1] = MI_CAP_RT_SAMPLES;
+        return 0;
+    case GESC_RT_MAX_DEPTH:
+        if (ni >= 2 && ints[1] > MI_CAP_RT_MAX_DEPTH)
+            ints[1] = MI_CAP_RT_MAX_DEPTH;
+        return 0;
+    case GESC_RT_CLIP_SECONDARY:
+    case GESC_RT_CUTOFF:
+    case GESC_RT_SPD:
+    case GESC_PNG_SUPERSAMPLE:
+    case GESC_PNG_COMPRESSION:
+        return 0;
+    default: /* file names, threads, progress, statistics, and anything newer */
+        return 180;
+    }
+}
+
 /* ESCAPE: function identification, integers (the first, the workstation identifier, is
  * replaced by each active workstation's), reals, string. */
 static void i_escape(interp *ip)
@@ -473,6 +520,8 @@ static void i_escape(interp *ip)
         d->err = 165;
     if (!d->err && gksm_cur_left(&d->c) != 0)
         d->err = 165;
+    if (!d->err)
+        d->err = escape_policy(ip, func, ints, ni);
     if (!d->err) {
         Gescape_in_data in = { (Gint)ni, ints, (Gint)nr, reals, n, s };
         EACH_WS((ints[0] = ws_, gescape(func, &in, NULL)));
@@ -842,7 +891,7 @@ GKS_API void ginterpret_item(Gint type, Gint length, const char *data)
     gksm_in fmt = { .iw = 11, .rw = 24, .ri = 1, .zero = 0, .one = 1 };
     gks_norm_override local;
     xf_default(&local);
-    interp ip = { .xf = m ? &m->xf : &local };
+    interp ip = { .xf = m ? &m->xf : &local, .allow_escapes = m ? m->allow_escapes : 0 };
     gksm_cur_init(&ip.d.c, m ? &m->in : &fmt, data ? data : "", (size_t)length);
     int err = perform(&ip, type);
     if (err)

@@ -20,43 +20,40 @@
 #endif
 #include <limits.h>
 #include <math.h>
-#include <pthread.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
-enum { REC_POLYGON, REC_CELLS };
-
-typedef struct rt_rec {
-    int kind;                /* REC_* */
-    int n_loops, loop_off;   /* polygon: loop counts at loops[loop_off..] */
-    int n_points, pt_off;    /* xyz at xyz[3*pt_off..]; cells: P, Q, R */
-    int nx, ny;              /* cells: colours at rgb[3*rgb_off..] */
-    size_t rgb_off;
-    Grgb colour;             /* polygon diffuse colour */
+/* The attributes a pair of tracer surfaces is made of (consecutive areas of one attribute
+ * setting share one pair). */
+typedef struct rt_attr {
+    Grgb colour;             /* diffuse colour */
     Garea_props props[2];
     int refl_eq[2];
-    uint64_t light_mask;
-    int view_ind;
-} rt_rec;
+    uint64_t light_mask;     /* GKS numbering: bit i-1 = light index i */
+} rt_attr;
+
+/* The recording of one view: its tracer scene, filled as the primitives arrive (VRC3), and
+ * the GKS light mask of each of its surfaces (mapped to the scene's lights when traced). */
+typedef struct rt_view_rec {
+    rt_scene *sc;
+    rt_attr last;            /* attributes of the latest surfaces f, b (valid if f >= 0) */
+    int f, b;
+    uint64_t *smask;         /* per surface id */
+    size_t nsmask, capsmask;
+} rt_view_rec;
 
 struct ws_rt {
-    rt_rec *recs;
-    size_t n_recs, cap_recs;
-    int *loops;
-    size_t n_loops, cap_loops;
-    double *xyz;             /* 3 per point, VRC3 */
-    size_t n_pts, cap_pts;   /* counted in doubles */
-    float *rgb;              /* cell colours */
-    size_t n_rgb, cap_rgb;   /* counted in floats */
+    rt_view_rec view[GKS_MAX_VIEW_IND + 1];
+    size_t count;            /* tracer primitives recorded */
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
     int share_tiles;         /* the next frames' tiles are shared by the MPI ranks */
 };
 
-/* Sample rays per coverage batch (bounds the temporary memory of ws_rt_render). */
-#define COVER_BATCH 16384
+/* Points transformed on the stack up to this many (larger areas use the heap). */
+#define STACK_POINTS 32
 
 ws_rt *ws_rt_new(void)
 {
@@ -66,46 +63,32 @@ ws_rt *ws_rt_new(void)
     return r;
 }
 
+void ws_rt_reset(ws_rt *r)
+{
+    for (int v = 0; v <= GKS_MAX_VIEW_IND; v++) {
+        rt_view_rec *vr = &r->view[v];
+        rt_scene_free(vr->sc);
+        gks_free(vr->smask);
+        memset(vr, 0, sizeof *vr);
+    }
+    r->count = 0;
+}
+
 void ws_rt_free(ws_rt *r)
 {
     if (!r)
         return;
-    gks_free(r->recs);
-    gks_free(r->loops);
-    gks_free(r->xyz);
-    gks_free(r->rgb);
+    ws_rt_reset(r);
     gks_free(r);
 }
 
-void ws_rt_reset(ws_rt *r) { r->n_recs = r->n_loops = r->n_pts = r->n_rgb = 0; }
-
-int ws_rt_count(const ws_rt *r) { return (int)r->n_recs; }
-
-void ws_rt_set_clip_secondary(ws_rt *r, int on) { r->opts.clip_secondary = on != 0; }
+int ws_rt_count(const ws_rt *r) { return r->count > INT_MAX ? INT_MAX : (int)r->count; }
 
 void ws_rt_options(const ws_rt *r, rt_render_options *o) { *o = r->opts; }
 
 void ws_rt_set_share_tiles(ws_rt *r, int on) { r->share_tiles = on != 0; }
 
 void ws_rt_last_stats(const ws_rt *r, rt_stats *st) { *st = r->last; }
-
-/* Makes room for need more elements of size sz in *arr (count n, capacity *cap). */
-static int reserve(void **arr, size_t n, size_t need, size_t *cap, size_t sz)
-{
-    if (need > ((size_t)INT32_MAX) - n)
-        return 300;
-    if (n + need <= *cap)
-        return 0;
-    size_t c = *cap ? *cap : 16;
-    while (c < n + need)
-        c *= 2;
-    void *p = gks_realloc_array(*arr, c, sz);
-    if (!p)
-        return 300;
-    *arr = p;
-    *cap = c;
-    return 0;
-}
 
 static int clamp_view(int v) { return v >= 0 && v <= GKS_MAX_VIEW_IND ? v : 0; }
 
@@ -125,65 +108,147 @@ static void xf_dir(const Gmatrix3 m, double x, double y, double z, double o[3])
         o[i] = m[i][0] * x + m[i][1] * y + m[i][2] * z;
 }
 
-/* The attributes every record of prim shares. */
-static rt_rec rec_base(const gks_prim *prim, int kind)
+/* The attributes of prim. */
+static rt_attr attr_of(const gks_prim *prim)
 {
-    rt_rec rec = { .kind = kind, .colour = prim->colour,
-                   .refl_eq = { prim->refl_eq[0], prim->refl_eq[1] },
-                   .light_mask = prim->light_mask, .view_ind = clamp_view(prim->view_ind) };
-    rec.props[0] = prim->area_props[0];
-    rec.props[1] = prim->area_props[1];
-    return rec;
+    rt_attr a = { .colour = prim->colour, .refl_eq = { prim->refl_eq[0], prim->refl_eq[1] },
+                  .light_mask = prim->light_mask };
+    a.props[0] = prim->area_props[0];
+    a.props[1] = prim->area_props[1];
+    return a;
 }
 
-/* Appends a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each). */
-static int push_polygon(ws_rt *r, const gks_ws *ws, rt_rec rec, int n_loops, const int *counts,
-                        size_t n_pts, const double *xyz)
+static int same_attr(const rt_attr *a, const rt_attr *b)
 {
-    if (reserve((void **)&r->recs, r->n_recs, 1, &r->cap_recs, sizeof *r->recs) ||
-        reserve((void **)&r->loops, r->n_loops, (size_t)n_loops, &r->cap_loops,
-                sizeof *r->loops) ||
-        reserve((void **)&r->xyz, r->n_pts, 3 * n_pts, &r->cap_pts, sizeof *r->xyz))
-        return 300;
-    const Gview_rep3 *v = &ws->views[rec.view_ind];
-    rec.kind = REC_POLYGON;
-    rec.n_loops = n_loops;
-    rec.loop_off = (int)r->n_loops;
-    rec.n_points = (int)n_pts;
-    rec.pt_off = (int)(r->n_pts / 3);
-    memcpy(r->loops + r->n_loops, counts, (size_t)n_loops * sizeof(int));
-    for (size_t i = 0; i < n_pts; i++)
-        xf_point(v->ori_matrix, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2],
-                 r->xyz + r->n_pts + 3 * i);
-    r->recs[r->n_recs++] = rec;
-    r->n_loops += (size_t)n_loops;
-    r->n_pts += 3 * n_pts;
+    return a->colour.red == b->colour.red && a->colour.green == b->colour.green &&
+           a->colour.blue == b->colour.blue && a->refl_eq[0] == b->refl_eq[0] &&
+           a->refl_eq[1] == b->refl_eq[1] && a->light_mask == b->light_mask &&
+           memcmp(&a->props[0], &b->props[0], sizeof a->props) == 0;
+}
+
+/* Tracer surface of one side of attributes a (light mask set when traced). */
+static void surface_of(const rt_attr *a, int side, rt_surface *s)
+{
+    const Garea_props *p = &a->props[side];
+    rt_surface_default(s);
+    s->refl_eq = a->refl_eq[side] - 1;
+    if (s->refl_eq < RT_REFL_NONE || s->refl_eq > RT_REFL_SPECULAR)
+        s->refl_eq = RT_REFL_NONE;
+    s->ka = p->ambient_coef;
+    s->kd = p->diffuse_coef;
+    s->ks = p->specular_coef;
+    s->diffuse[0] = a->colour.red;
+    s->diffuse[1] = a->colour.green;
+    s->diffuse[2] = a->colour.blue;
+    s->specular[0] = p->specular_colr.red;
+    s->specular[1] = p->specular_colr.green;
+    s->specular[2] = p->specular_colr.blue;
+    s->spec_exp = p->specular_exp;
+    s->transparency = p->transpar_coef;
+    s->refr_index = p->refr_index;
+    s->light_mask = 0;
+}
+
+/* The GKS error for a tracer result: storage (RT_ERR_NOMEM, RT_ERR_LIMIT: an
+ * implementation limit on items) is 300; data the tracer cannot use (RT_ERR_SINGULAR,
+ * RT_ERR_ARG, RT_ERR_STATE) is 308, arithmetic error. */
+static int gks_err_of_rt(int rc)
+{
+    if (rc >= 0)
+        return 0;
+    return rc == RT_ERR_NOMEM || rc == RT_ERR_LIMIT ? 300 : 308;
+}
+
+static int note_surface(rt_view_rec *vr, int id, uint64_t mask)
+{
+    if ((size_t)id >= vr->capsmask) {
+        size_t c = vr->capsmask ? 2 * vr->capsmask : 16;
+        while (c <= (size_t)id)
+            c *= 2;
+        uint64_t *p = gks_realloc_array(vr->smask, c, sizeof *p);
+        if (!p)
+            return 300;
+        vr->smask = p;
+        vr->capsmask = c;
+    }
+    vr->smask[id] = mask;
+    if ((size_t)id >= vr->nsmask)
+        vr->nsmask = (size_t)id + 1;
     return 0;
 }
 
-/* Appends a cell array P, Q, R (NDC3) of nx x ny colours, row j at cells[j*stride]. */
-static int push_cells(ws_rt *r, const gks_ws *ws, rt_rec rec, const double P[3],
+/* The scene of view vi and the surfaces of attributes a in it (created when they differ from
+ * the latest ones); *vrp NULL when the surfaces are not usable. Returns 0 or 300. */
+static int view_surfaces(ws_rt *r, int vi, const rt_attr *a, rt_view_rec **vrp)
+{
+    rt_view_rec *vr = &r->view[vi];
+    *vrp = NULL;
+    if (!vr->sc) {
+        vr->sc = rt_scene_new();
+        if (!vr->sc)
+            return 300;
+        vr->f = vr->b = -1;
+    }
+    if (vr->f < 0 || !same_attr(&vr->last, a)) {
+        rt_surface s;
+        surface_of(a, 0, &s);
+        int f = rt_scene_add_surface(vr->sc, &s);
+        surface_of(a, 1, &s);
+        int b = rt_scene_add_surface(vr->sc, &s);
+        if (f < 0 || b < 0) /* values are checked at SET: only storage fails here */
+            return gks_err_of_rt(f < 0 ? f : b);
+        if (note_surface(vr, f, a->light_mask) || note_surface(vr, b, a->light_mask))
+            return 300;
+        vr->last = *a;
+        vr->f = f;
+        vr->b = b;
+    }
+    *vrp = vr;
+    return 0;
+}
+
+/* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
+ * overwritten with their VRC3 images) in view vi. */
+static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, int n_loops,
+                        const int *counts, size_t n_pts, double *xyz)
+{
+    rt_view_rec *vr;
+    int e = view_surfaces(r, vi, a, &vr);
+    if (e || !vr)
+        return e;
+    const Gview_rep3 *v = &ws->views[vi];
+    for (size_t i = 0; i < n_pts; i++) {
+        double *q = xyz + 3 * i;
+        xf_point(v->ori_matrix, q[0], q[1], q[2], q);
+    }
+    int id = rt_scene_add_polygon(vr->sc, n_loops, counts, xyz, vr->f, vr->b);
+    if (id < 0)
+        return gks_err_of_rt(id);
+    r->count++;
+    return 0;
+}
+
+/* Records a cell array P, Q, R (NDC3) of nx x ny colours, row j at cells[j*stride]. */
+static int push_cells(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, const double P[3],
                       const double Q[3], const double R[3], int nx, int ny, const Grgb *cells,
                       size_t stride)
 {
     size_t nc = (size_t)nx * (size_t)ny;
     if (nc > (size_t)INT32_MAX / 3)
         return 300;
-    if (reserve((void **)&r->recs, r->n_recs, 1, &r->cap_recs, sizeof *r->recs) ||
-        reserve((void **)&r->xyz, r->n_pts, 9, &r->cap_pts, sizeof *r->xyz) ||
-        reserve((void **)&r->rgb, r->n_rgb, 3 * nc, &r->cap_rgb, sizeof *r->rgb))
+    rt_view_rec *vr;
+    int e = view_surfaces(r, vi, a, &vr);
+    if (e || !vr)
+        return e;
+    float *rgb = gks_alloc_array(nc, 3 * sizeof *rgb);
+    if (!rgb)
         return 300;
-    const Gview_rep3 *v = &ws->views[rec.view_ind];
-    rec.kind = REC_CELLS;
-    rec.n_points = 3;
-    rec.pt_off = (int)(r->n_pts / 3);
-    rec.nx = nx;
-    rec.ny = ny;
-    rec.rgb_off = r->n_rgb / 3;
-    const double *c[3] = { P, Q, R };
+    const Gview_rep3 *v = &ws->views[vi];
+    double c[3][3];
+    const double *in[3] = { P, Q, R };
     for (int k = 0; k < 3; k++)
-        xf_point(v->ori_matrix, c[k][0], c[k][1], c[k][2], r->xyz + r->n_pts + 3 * (size_t)k);
-    float *d = r->rgb + r->n_rgb;
+        xf_point(v->ori_matrix, in[k][0], in[k][1], in[k][2], c[k]);
+    float *d = rgb;
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
             const Grgb *s = &cells[(size_t)j * stride + (size_t)i];
@@ -193,9 +258,11 @@ static int push_cells(ws_rt *r, const gks_ws *ws, rt_rec rec, const double P[3],
             d[2] = isfinite(s->blue) ? (float)s->blue : 0.0f;
             d += 3;
         }
-    r->recs[r->n_recs++] = rec;
-    r->n_pts += 9;
-    r->n_rgb += 3 * nc;
+    int id = rt_scene_add_cell_array(vr->sc, c[0], c[1], c[2], nx, ny, rgb, vr->f, vr->b);
+    gks_free(rgb);
+    if (id < 0)
+        return gks_err_of_rt(id);
+    r->count++;
     return 0;
 }
 
@@ -211,13 +278,15 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     }
     if (total != (size_t)prim->n_points)
         return 0; /* inconsistent record: nothing traceable */
-    int *counts = gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
-    double *xyz = gks_alloc_array((size_t)prim->n_points, 3 * sizeof *xyz);
-    if (!counts || !xyz) {
-        gks_free(counts);
-        gks_free(xyz);
-        return 300;
-    }
+    double sxyz[3 * STACK_POINTS];
+    int scounts[4];
+    int *counts = (size_t)prim->n_loops <= sizeof scounts / sizeof scounts[0]
+                      ? scounts
+                      : gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
+    double *xyz = total <= STACK_POINTS ? sxyz : gks_alloc_array(total, 3 * sizeof *xyz);
+    int err = 300;
+    if (!counts || !xyz)
+        goto done;
     /* Loops of fewer than 3 points enclose nothing (even-odd rule): left out. */
     int nl = 0;
     size_t np = 0, src = 0;
@@ -235,9 +304,13 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         }
         src += m;
     }
-    int err = nl ? push_polygon(r, ws, rec_base(prim, REC_POLYGON), nl, counts, np, xyz) : 0;
-    gks_free(counts);
-    gks_free(xyz);
+    rt_attr a = attr_of(prim);
+    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz) : 0;
+done:
+    if (counts != scounts)
+        gks_free(counts);
+    if (xyz != sxyz)
+        gks_free(xyz);
     return err;
 }
 
@@ -289,7 +362,8 @@ static int record_cells_clipped(ws_rt *r, const gks_ws *ws, const gks_prim *prim
 {
     const double *b = prim->clip_box;
     int nx = prim->cell_nx, ny = prim->cell_ny;
-    rt_rec base = rec_base(prim, REC_CELLS);
+    const rt_attr base = attr_of(prim);
+    const int vi = clamp_view(prim->view_ind);
     for (int j = 0; j < ny; j++) {
         int run = -1;
         for (int i = 0; i <= nx; i++) {
@@ -310,7 +384,7 @@ static int record_cells_clipped(ws_rt *r, const gks_ws *ws, const gks_prim *prim
                 cell_corner(P, U, V, nx, ny, run, j, p0);
                 cell_corner(P, U, V, nx, ny, i, j, r0);
                 cell_corner(P, U, V, nx, ny, i, j + 1, q0);
-                int e = push_cells(r, ws, base, p0, q0, r0, i - run, 1,
+                int e = push_cells(r, ws, &base, vi, p0, q0, r0, i - run, 1,
                                    prim->cells + (size_t)j * (size_t)nx + (size_t)run,
                                    (size_t)nx);
                 if (e)
@@ -324,9 +398,9 @@ static int record_cells_clipped(ws_rt *r, const gks_ws *ws, const gks_prim *prim
             int n = clip_to_box(poly, 4, b);
             if (n < 3)
                 continue;
-            rt_rec rec = base;
-            rec.colour = prim->cells[(size_t)j * (size_t)nx + (size_t)i];
-            int e = push_polygon(r, ws, rec, 1, &n, (size_t)n, &poly[0][0]);
+            rt_attr a = base;
+            a.colour = prim->cells[(size_t)j * (size_t)nx + (size_t)i];
+            int e = push_polygon(r, ws, &a, vi, 1, &n, (size_t)n, &poly[0][0]);
             if (e)
                 return e;
         }
@@ -356,8 +430,11 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     const double *b = prim->clip_box;
     if (!prim->clip ||
         (inside_box(P, b) && inside_box(Q, b) && inside_box(R, b) && inside_box(S, b)))
-        return push_cells(r, ws, rec_base(prim, REC_CELLS), P, Q, R, nx, ny, prim->cells,
+    {
+        const rt_attr a = attr_of(prim);
+        return push_cells(r, ws, &a, clamp_view(prim->view_ind), P, Q, R, nx, ny, prim->cells,
                           (size_t)nx);
+    }
     if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
         return 0; /* empty or NaN clip box: nothing visible */
     return record_cells_clipped(r, ws, prim, P, U, V);
@@ -365,41 +442,20 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
-    size_t n_recs = r->n_recs, n_loops = r->n_loops, n_pts = r->n_pts, n_rgb = r->n_rgb;
+    rt_view_rec *vr = &r->view[clamp_view(prim->view_ind)];
+    const int n0 = rt_scene_count(vr->sc);
+    const size_t count = r->count;
     int err = 0;
     if (prim->kind == GKS_PRIM_FILL_AREA)
         err = record_fill_area(r, ws, prim);
     else if (prim->kind == GKS_PRIM_CELL_ARRAY)
         err = record_cells(r, ws, prim);
-    if (err) { /* as if the call never happened */
-        r->n_recs = n_recs;
-        r->n_loops = n_loops;
-        r->n_pts = n_pts;
-        r->n_rgb = n_rgb;
+    if (err && vr->sc) { /* as if the call never happened (a clipped cell array records
+                            several primitives) */
+        rt_scene_truncate(vr->sc, n0);
+        r->count = count;
     }
     return err;
-}
-
-static void surface_of(const rt_rec *rec, int side, uint64_t mask, rt_surface *s)
-{
-    const Garea_props *p = &rec->props[side];
-    rt_surface_default(s);
-    s->refl_eq = rec->refl_eq[side] - 1;
-    if (s->refl_eq < RT_REFL_NONE || s->refl_eq > RT_REFL_SPECULAR)
-        s->refl_eq = RT_REFL_NONE;
-    s->ka = p->ambient_coef;
-    s->kd = p->diffuse_coef;
-    s->ks = p->specular_coef;
-    s->diffuse[0] = rec->colour.red;
-    s->diffuse[1] = rec->colour.green;
-    s->diffuse[2] = rec->colour.blue;
-    s->specular[0] = p->specular_colr.red;
-    s->specular[1] = p->specular_colr.green;
-    s->specular[2] = p->specular_colr.blue;
-    s->spec_exp = p->specular_exp;
-    s->transparency = p->transpar_coef;
-    s->refr_index = p->refr_index;
-    s->light_mask = mask;
 }
 
 static void light_of(const Glight_src_rep *g, const Gmatrix3 ori, rt_light *l)
@@ -417,96 +473,19 @@ static void light_of(const Glight_src_rep *g, const Gmatrix3 ori, rt_light *l)
     l->spread = g->spread_angle;
 }
 
-/* The surfaces of the previous record, reused while records share their attributes
- * (consecutive areas of one attribute setting: one surface pair, not one per area). */
-typedef struct surf_cache {
-    const rt_rec *rec;
-    uint64_t mask;
-    int f, b;
-} surf_cache;
-
-static int same_surfaces(const rt_rec *a, const rt_rec *b)
+/* Makes view vi's scene ready to trace: the workstation's lights its surfaces use (in
+ * ascending light index; those the tracer rejects left out), the surfaces' masks in the
+ * scene's light numbering, and the commit; with cull (clipped secondary rays) primitives
+ * entirely outside cull's display volume are left out. Returns 0 or 300. */
+static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cull)
 {
-    return a->colour.red == b->colour.red && a->colour.green == b->colour.green &&
-           a->colour.blue == b->colour.blue && a->refl_eq[0] == b->refl_eq[0] &&
-           a->refl_eq[1] == b->refl_eq[1] &&
-           memcmp(&a->props[0], &b->props[0], sizeof a->props) == 0;
-}
-
-/* The GKS error for a tracer result: storage (RT_ERR_NOMEM, RT_ERR_LIMIT: an
- * implementation limit on items) is 300; data the tracer cannot use (RT_ERR_SINGULAR,
- * RT_ERR_ARG, RT_ERR_STATE) is 308, arithmetic error. */
-static int gks_err_of_rt(int rc)
-{
-    if (rc >= 0)
-        return 0;
-    return rc == RT_ERR_NOMEM || rc == RT_ERR_LIMIT ? 300 : 308;
-}
-
-/* Adds record rec (of view vi, lights mask in the scene's numbering) to sc. Returns 0 or 300. */
-static int add_rec(rt_scene *sc, const ws_rt *r, const rt_rec *rec, uint64_t mask,
-                   surf_cache *cache)
-{
-    int f = cache->f, b = cache->b;
-    if (!cache->rec || cache->mask != mask || !same_surfaces(cache->rec, rec)) {
-        rt_surface s;
-        surface_of(rec, 0, mask, &s);
-        f = rt_scene_add_surface(sc, &s);
-        surface_of(rec, 1, mask, &s);
-        b = rt_scene_add_surface(sc, &s);
-        if (f < 0 || b < 0) /* values are checked at SET: only storage fails here */
-            return gks_err_of_rt(f < 0 ? f : b);
-        *cache = (surf_cache){ rec, mask, f, b };
-    }
-    const double *xyz = r->xyz + 3 * (size_t)rec->pt_off;
-    int id = rec->kind == REC_CELLS
-                 ? rt_scene_add_cell_array(sc, xyz, xyz + 3, xyz + 6, rec->nx, rec->ny,
-                                           r->rgb + 3 * rec->rgb_off, f, b)
-                 : rt_scene_add_polygon(sc, rec->n_loops, r->loops + rec->loop_off, xyz, f, b);
-    return gks_err_of_rt(id);
-}
-
-/* 1 if every vertex of rec lies outside one clipping plane of cam (beyond the tracer's
- * clip tolerance): with clipped secondary rays no ray can reach it. */
-static int outside_volume(const ws_rt *r, const rt_rec *rec, const rt_camera *cam)
-{
-    const double *xyz = r->xyz + 3 * (size_t)rec->pt_off;
-    double s[3];
-    int n = rec->kind == REC_CELLS ? 4 : rec->n_points;
-    double eps = 2e-9 * cam->scale;
-    for (int f = 0; f < 6; f++) {
-        const double *pl = cam->plane[f];
-        int out = 1;
-        for (int i = 0; i < n && out; i++) {
-            const double *v = xyz + 3 * (size_t)i;
-            if (i == 3 && rec->kind == REC_CELLS) { /* the fourth corner P + Q - R */
-                for (int k = 0; k < 3; k++)
-                    s[k] = xyz[k] + xyz[3 + k] - xyz[6 + k];
-                v = s;
-            }
-            out = pl[0] * v[0] + pl[1] * v[1] + pl[2] * v[2] + pl[3] < -eps;
-        }
-        if (out)
-            return 1;
-    }
-    return 0;
-}
-
-/* Builds the scene of view vi; with cull (clipped secondary rays) primitives entirely
- * outside cam's display volume are left out. Returns 0, 300; *out NULL when nothing is
- * traceable. */
-static int build_scene(const ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cull,
-                       rt_scene **out)
-{
-    *out = NULL;
-    rt_scene *sc = rt_scene_new();
-    if (!sc)
-        return 300;
+    rt_view_rec *vr = &r->view[vi];
+    rt_scene *sc = vr->sc;
     const Gmatrix3 *ori = &ws->views[vi].ori_matrix;
     uint64_t used = 0;
-    for (size_t k = 0; k < r->n_recs; k++)
-        if (r->recs[k].view_ind == vi)
-            used |= r->recs[k].light_mask;
+    for (size_t k = 0; k < vr->nsmask; k++)
+        used |= vr->smask[k];
+    rt_scene_clear_lights(sc);
     int bit[GKS_MAX_LIGHT_IND];
     for (int i = 0; i < GKS_MAX_LIGHT_IND; i++) {
         bit[i] = -1;
@@ -515,34 +494,26 @@ static int build_scene(const ws_rt *r, const gks_ws *ws, int vi, const rt_camera
         rt_light l;
         light_of(&ws->lights[i], *ori, &l);
         int id = rt_scene_add_light(sc, &l);
-        if (id == RT_ERR_NOMEM) {
-            rt_scene_free(sc);
+        if (id == RT_ERR_NOMEM)
             return 300;
-        }
         bit[i] = id; /* < 0: rejected by the tracer, left out */
     }
-    surf_cache cache = { NULL, 0, -1, -1 };
-    for (size_t k = 0; k < r->n_recs; k++) {
-        const rt_rec *rec = &r->recs[k];
-        if (rec->view_ind != vi || (cull && outside_volume(r, rec, cull)))
-            continue;
+    for (size_t k = 0; k < vr->nsmask; k++) {
         uint64_t mask = 0;
         for (int i = 0; i < GKS_MAX_LIGHT_IND; i++)
-            if (((rec->light_mask >> i) & 1) && bit[i] >= 0)
+            if (((vr->smask[k] >> i) & 1) && bit[i] >= 0)
                 mask |= (uint64_t)1 << bit[i];
-        int err = add_rec(sc, r, rec, mask, &cache);
-        if (err) {
-            rt_scene_free(sc);
-            return err;
-        }
+        rt_scene_set_surface_lights(sc, (int)k, mask);
     }
-    int rc = rt_scene_commit(sc, NULL);
-    if (rc != RT_OK) {
-        rt_scene_free(sc);
-        return gks_err_of_rt(rc);
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = -1; /* defaults */
+    if (cull) {
+        bo.ncull = 6;
+        memcpy(bo.cull, cull->plane, sizeof bo.cull);
+        bo.cull_eps = 2e-9 * cull->scale;
     }
-    *out = sc;
-    return 0;
+    return gks_err_of_rt(rt_scene_commit(sc, &bo));
 }
 
 /* Display volume of view v: clip limits where on, intersected with the ws window. */
@@ -560,118 +531,6 @@ static int display_volume(const gks_ws *ws, const Gview_rep3 *v, double b[6])
     if (v->front_clip == GIND_CLIP)
         b[5] = fmin(b[5], v->clip_limit.z_max);
     return b[0] < b[1] && b[2] < b[3] && b[4] < b[5];
-}
-
-/* Coverage of the eye rays: sample k of the raster (pixel-major strata centres, or corner
- * k of the (w+1) x (h+1) corner grid in SPD mode) hit a primitive. */
-typedef struct cover_job {
-    const rt_scene *sc;
-    const rt_camera *cam;
-    int m, corners;
-    size_t k0, k1;          /* this thread's samples [k0, k1) */
-    unsigned short *cnt;    /* strata: hits per pixel (ranges start on pixel boundaries) */
-    unsigned char *corner;  /* SPD: hit flag per corner */
-    int err;
-} cover_job;
-
-static void *cover_run(void *arg)
-{
-    cover_job *j = arg;
-    const rt_camera *cam = j->cam;
-    size_t w = (size_t)cam->width, gw = w + 1, mm = (size_t)j->m * (size_t)j->m;
-    rt_ray *rays = gks_alloc_array(COVER_BATCH, sizeof *rays);
-    rt_hit *hits = gks_alloc_array(COVER_BATCH, sizeof *hits);
-    if (!rays || !hits)
-        j->err = 300;
-    for (size_t k0 = j->k0; k0 < j->k1 && !j->err; k0 += COVER_BATCH) {
-        size_t nb = j->k1 - k0 < COVER_BATCH ? j->k1 - k0 : COVER_BATCH;
-        for (size_t q = 0; q < nb; q++) {
-            size_t k = k0 + q;
-            double px, py;
-            if (j->corners) {
-                px = (double)(k % gw);
-                py = (double)(k / gw);
-            } else {
-                size_t pix = k / mm, s = k % mm;
-                int a = (int)(s % (size_t)j->m), b = (int)(s / (size_t)j->m);
-                /* the same expression as rt_render's sample positions */
-                px = (int)(pix % w) + (a + 0.5) / j->m;
-                py = (int)(pix / w) + (b + 0.5) / j->m;
-            }
-            if (rt_camera_ray(cam, px, py, &rays[q]) != RT_OK)
-                rays[q] = (rt_ray){ .tmin = 1, .tmax = 0 };
-        }
-        int rc = rt_intersect(j->sc, nb, rays, hits);
-        if (rc != RT_OK) {
-            j->err = gks_err_of_rt(rc);
-            break;
-        }
-        for (size_t q = 0; q < nb; q++) {
-            if (j->corners)
-                j->corner[k0 + q] = hits[q].prim >= 0;
-            else if (hits[q].prim >= 0)
-                j->cnt[(k0 + q) / mm]++;
-        }
-    }
-    gks_free(rays);
-    gks_free(hits);
-    return NULL;
-}
-
-/* Coverage of each pixel of cam's raster: cnt[row*w + c] = number of its sample rays (the
- * strata centres rt_render uses without jitter, or its 4 corner rays in SPD mode) that hit a
- * primitive; *per = samples per pixel. Traced by up to o->threads threads (0: online CPUs),
- * each on whole pixel rows. Returns 0 or 300. */
-static int coverage(const rt_scene *sc, const rt_camera *cam, const rt_render_options *o,
-                    unsigned short *cnt, int *per)
-{
-    int w = cam->width, h = cam->height;
-    int m = 1;
-    while (m * m < o->samples)
-        m++;
-    int corners = o->corner_rays != 0;
-    size_t mm = (size_t)m * (size_t)m;
-    size_t gw = corners ? (size_t)w + 1 : (size_t)w, gh = corners ? (size_t)h + 1 : (size_t)h;
-    size_t row = gw * (corners ? 1 : mm); /* samples per row of rays */
-    *per = corners ? 4 : (int)mm;
-    memset(cnt, 0, (size_t)w * (size_t)h * sizeof *cnt);
-    unsigned char *corner = corners ? gks_alloc_array(gw, gh) : NULL;
-    if (corners && !corner)
-        return 300;
-    long nt = o->threads > 0 ? o->threads : sysconf(_SC_NPROCESSORS_ONLN);
-    if (nt < 1)
-        nt = 1;
-    if (nt > 64)
-        nt = 64;
-    if ((size_t)nt > gh)
-        nt = (long)gh;
-    cover_job jobs[64];
-    pthread_t th[64];
-    int started[64] = { 0 };
-    for (long t = 0; t < nt; t++) {
-        jobs[t] = (cover_job){ .sc = sc, .cam = cam, .m = m, .corners = corners,
-                               .k0 = gh * (size_t)t / (size_t)nt * row,
-                               .k1 = gh * (size_t)(t + 1) / (size_t)nt * row, .cnt = cnt,
-                               .corner = corner };
-        if (t > 0)
-            started[t] = pthread_create(&th[t], NULL, cover_run, &jobs[t]) == 0;
-    }
-    cover_run(&jobs[0]);
-    int err = jobs[0].err;
-    for (long t = 1; t < nt; t++) {
-        if (started[t])
-            pthread_join(th[t], NULL);
-        else
-            cover_run(&jobs[t]); /* no thread: same result on this one */
-        err = err ? err : jobs[t].err;
-    }
-    for (size_t y = 0; corners && !err && y < (size_t)h; y++)
-        for (size_t x = 0; x < (size_t)w; x++)
-            cnt[y * (size_t)w + x] = (unsigned short)(corner[y * gw + x] + corner[y * gw + x + 1] +
-                                                      corner[(y + 1) * gw + x] +
-                                                      corner[(y + 1) * gw + x + 1]);
-    gks_free(corner);
-    return err;
 }
 
 /* 1 if every sample of fb's pixels [ix0,ix1) x [iy0,iy1) has colour bg. */
@@ -697,6 +556,8 @@ static void stats_add(rt_stats *a, const rt_stats *b)
     a->shadow_rays += b->shadow_rays;
     a->reflection_rays += b->reflection_rays;
     a->refraction_rays += b->refraction_rays;
+    a->shadow_lbuf += b->shadow_lbuf;
+    a->shadow_walks += b->shadow_walks;
     a->grid_cells += b->grid_cells;
     a->grid_refs += b->grid_refs;
     a->prims += b->prims;
@@ -707,7 +568,7 @@ static void stats_add(rt_stats *a, const rt_stats *b)
 
 /* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
  * sets *traced when the tracer ran. Returns 0 or 300. */
-static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
+static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
                        gks_raster_fb *fb, rt_stats *st, int *traced, int *fault)
 {
 #ifndef GKS_HAVE_MPI
@@ -737,9 +598,9 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
     if (rt_camera_from_view(&cam, v->map_matrix, nb, w, h) != RT_OK)
         return 0; /* singular mapping: nothing visible */
 
-    rt_scene *sc;
-    int err = build_scene(r, ws, vi, r->opts.clip_secondary ? &cam : NULL, &sc);
-    if (err || !sc)
+    rt_scene *sc = r->view[vi].sc;
+    int err = prepare_scene(r, ws, vi, r->opts.clip_secondary ? &cam : NULL);
+    if (err)
         return err;
     rt_render_options o = r->opts;
     /* rays that leave the scene see the workstation's background (colour index 0) */
@@ -770,14 +631,14 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
     }
     /* Over a rectangle that is still all background the traced colour is the answer
      * (T = a*H + (1-a)*bg): coverage is needed only over other content. */
-    if (!assemble || all_background(fb, ix0, ix1, iy0, iy1, bg)) {
-        per = 1;
+    /* The same decision on every MPI rank (the annotations are the same): the tiles'
+     * payloads, which carry the coverage when it is asked for, agree. */
+    const int need_cover = !all_background(fb, ix0, ix1, iy0, iy1, bg);
+    if (!need_cover) {
         for (size_t k = 0; k < n; k++)
             cnt[k] = 1;
     } else {
-        err = coverage(sc, &cam, &o, cnt, &per);
-        if (err)
-            goto done;
+        per = o.corner_rays ? 4 : o.samples;
     }
 #ifdef GKS_HAVE_MPI
     if (link) {
@@ -785,7 +646,8 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
         o.tiles = rt_mpi_job_start(&mj, link, nt > 0 && nt < 256 ? (int)nt : 1);
     }
 #endif
-    int rr = rt_render(sc, &cam, &o, rgb, &s);
+    int rr = need_cover ? rt_render_cover(sc, &cam, &o, rgb, cnt, &s)
+                        : rt_render(sc, &cam, &o, rgb, &s);
 #ifdef GKS_HAVE_MPI
     if (link) {
         const char *rep = getenv("GKS3D_MPI_REPORT");
@@ -840,22 +702,18 @@ static int render_view(const ws_rt *r, const gks_ws *ws, int vi, const double ws
 done:
     gks_free(rgb);
     gks_free(cnt);
-    rt_scene_free(sc);
     return err;
 }
 
 int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_fb *fb)
 {
-    if (!r->n_recs)
+    if (!r->count)
         return 0;
-    unsigned char used[GKS_MAX_VIEW_IND + 1] = { 0 };
-    for (size_t k = 0; k < r->n_recs; k++)
-        used[r->recs[k].view_ind] = 1;
     rt_stats sum;
     memset(&sum, 0, sizeof sum);
     int traced = 0, fault = 0;
     for (int vi = 0; vi <= GKS_MAX_VIEW_IND; vi++) {
-        if (!used[vi])
+        if (rt_scene_count(r->view[vi].sc) == 0)
             continue;
         int err = render_view(r, ws, vi, wsm, fb, &sum, &traced, &fault);
         if (err)

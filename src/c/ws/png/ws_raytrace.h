@@ -23,8 +23,6 @@ int ws_rt_count(const ws_rt *r);
 /* The tiles of the next frames are shared by the ranks of an MPI run (on) or traced here
  * alone (off, the default); ws_mpi.h. Without the MPI build: no effect. */
 void ws_rt_set_share_tiles(ws_rt *r, int on);
-/* Shadow/reflection/refraction rays limited to the display volume (1) or not (0). */
-void ws_rt_set_clip_secondary(ws_rt *r, int on);
 /* The render options the next picture uses (ESCAPE settings; the environment variable
  * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
 void ws_rt_options(const ws_rt *r, rt_render_options *o);
