@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_control.c -- control functions (ISO 7942 5.2): OPEN/CLOSE GKS, OPEN/CLOSE/ACTIVATE/
  * DEACTIVATE/CLEAR/UPDATE WORKSTATION, REDRAW ALL SEGMENTS ON WORKSTATION, SET DEFERRAL
@@ -47,7 +48,11 @@ static void open_gks(const char *err_name, int open_file)
         return;
     gks_par_start(NULL); /* MPI build under mpirun: MPI up on every rank (docs/MPI.md) */
     FILE *fp = NULL;
-    if (open_file && err_name && *err_name) {
+    /* "stdout" and "stderr" name the streams (NCAR's C programs pass "stdout"), not files
+     * of that name; stderr is the default error file anyway. */
+    if (open_file && err_name && strcmp(err_name, "stdout") == 0)
+        fp = stdout;
+    else if (open_file && err_name && *err_name && strcmp(err_name, "stderr") != 0) {
         char *path = NULL; /* MPI rank R > 0: err_name.R */
         if (gks_par_rank() > 0 && !(path = gks_par_rank_path(err_name)))
             GKS_FAIL(300, GFN_OPKS);
@@ -63,7 +68,7 @@ static void open_gks(const char *err_name, int open_file)
         gks_free(sl);
         gks_free(segs);
         gks_free(name);
-        if (fp)
+        if (fp && fp != stdout)
             fclose(fp);
         GKS_FAIL(300, GFN_OPKS);
     }
@@ -93,7 +98,7 @@ GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit)
 static void close_gks(gks_context *c)
 {
     gks_world_changed(); /* every state list is gone */
-    if (c->err.fp)
+    if (c->err.fp && c->err.fp != stdout)
         fclose(c->err.fp);
     c->err.fp = NULL;
     gks_free(c->sl->err_file);
