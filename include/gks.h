@@ -143,7 +143,9 @@ enum {
     GWS_TYPE_PDF = 110,       /* PDF file, one page per frame */
     GWS_TYPE_SVG = 111,       /* SVG file per frame (named like the PNG frames) */
     GWS_TYPE_PS = 112,        /* PostScript file, one page per frame */
-    GWS_TYPE_EPS = 113        /* EPS file per frame */
+    GWS_TYPE_EPS = 113,       /* EPS file per frame */
+    GWS_TYPE_X11 = 210        /* category OUTIN, interactive X11 window, 800x800 pixels;
+                                 only in builds with GKS_WITH_X11 (else error 23) */
 };
 
 /* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the

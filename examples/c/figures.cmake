@@ -11,3 +11,7 @@ target_link_libraries(surface_c PRIVATE gks3d_shared m)
 # A RAL-style 2-D plot: axes, labels, curves, markers, hatch, pattern, cell array.
 add_executable(plot2d_c ${CMAKE_CURRENT_LIST_DIR}/plot2d.c)
 target_link_libraries(plot2d_c PRIVATE gks3d_shared m)
+# The interactive example: Fig. 3 in a window (X11), click to turn, 1 to ray trace.
+add_executable(interactive_c ${CMAKE_CURRENT_LIST_DIR}/interactive.c ${CMAKE_CURRENT_LIST_DIR}/fig_scene.c)
+target_link_libraries(interactive_c PRIVATE gks3d_shared m)
+target_compile_definitions(interactive_c PRIVATE _DEFAULT_SOURCE)
