@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # fuzz.sh -- fuzz the untrusted-input readers with libFuzzer for a fixed budget.
 #   scripts/fuzz.sh [seconds per target, default 60]
 # Installs clang and its libFuzzer runtime from Debian if missing, builds each target with
@@ -22,21 +23,36 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 
 out=build-fuzz
-mkdir -p "$out"
+mkdir -p "$out/include"
+# gks.h includes the version header that CMake generates; make it the same way here.
+version=$(sed -n 's/^project(gks3d VERSION \([0-9]*\)\.\([0-9]*\)\.\([0-9]*\).*/\1 \2 \3/p' CMakeLists.txt)
+read -r vmajor vminor vpatch <<<"$version"
+sed -e "s/@PROJECT_VERSION_MAJOR@/$vmajor/" -e "s/@PROJECT_VERSION_MINOR@/$vminor/" \
+    -e "s/@PROJECT_VERSION_PATCH@/$vpatch/" -e "s/@PROJECT_VERSION@/$vmajor.$vminor.$vpatch/" \
+    include/gks3d_version.h.in >"$out/include/gks3d_version.h"
 # Every folder of src/c is a module with its headers next to its sources (src/c/CMakeLists.txt).
 incs=()
 while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
-flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude)
+# float-cast-overflow and pointer-overflow named explicitly: gcc's UBSan leaves them out
+# (an out-of-range double -> int cast, NULL + 0), clang checks them when asked.
+flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-overflow
+       -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
+       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude -I"$out/include")
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).
 mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' | sort)
 clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthread -lm \
     -o "$out/fuzz_mi"
+# The state machine: random call sequences through the whole library.
+clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_state.c "${lib_srcs[@]}" -lpng -lpthread -lm \
+    -o "$out/fuzz_state"
+# The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
+clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
+    -o "$out/fuzz_scene"
 
 status=0
-for target in gksm mi; do
+for target in gksm mi state scene; do
     work="$out/corpus_$target"
     rm -rf "$work"
     cp -r "tests/fuzz/corpus_$target" "$work"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_driver.h -- workstation drivers behind one small interface (cairo/netCDF style):
  * one static const table per workstation type, designated initialisers, NULL = not
@@ -137,6 +138,11 @@ struct gks_ws_driver {
     /* Returns 0 or a GKS error number (26: cannot be opened, 300: storage). */
     int (*open)(gks_ws *ws);
     void (*close)(gks_ws *ws);
+    /* CLOSE WORKSTATION, after update and before close: write what ends the output (a
+     * metafile's END item) and close the file, checking every result. Returns 0 or 303
+     * (a loss not reported before). NULL: nothing to finish. EMERGENCY CLOSE GKS does not
+     * call it: close must then end what it can without reporting. */
+    int (*finish)(gks_ws *ws);
     /* Start a new frame (the display surface is cleared). */
     int (*clear)(gks_ws *ws);
     /* Make the picture current: e.g. write the frame's file. */

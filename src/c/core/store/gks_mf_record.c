@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_record.c -- metafile output: the recording hooks the core calls (gks_mf_record.h) and WRITE
  * ITEM TO GKSM. Each hook writes one item to every active MO workstation (or to the
@@ -49,6 +50,43 @@ int gks_mf_file(const gks_ws *ws, char **path)
 static gks_mf_out *mo_of(gks_ws *ws)
 {
     return ws && ws->drv->desc->cat == GCAT_MO ? ws->priv : NULL;
+}
+
+/* The active MO workstation at open-list position i that still writes (not lost), or NULL. */
+static gks_mf_out *active_mo(const gks_context *c, int i)
+{
+    gks_mf_out *o = c->ws[i]->state == GWS_ACTIVE ? mo_of(c->ws[i]) : NULL;
+    return o && !o->lost ? o : NULL;
+}
+
+/* The errors of one recorded item, one per MO workstation at most: every MO receives the
+ * item whatever happened to the others, and the errors are reported after the loop. */
+typedef struct {
+    int n;
+    int err[GKS_MAX_OPEN_WS];
+} mf_errs;
+
+/* Notes the outcome of an item on o: a write failure (303) marks o lost, so that its loss is
+ * reported once and nothing more is written to the broken file; 300 and 161 are noted each
+ * time (the item was not written, the file itself is intact). */
+static void note(mf_errs *e, gks_mf_out *o, int err)
+{
+    if (!err)
+        return;
+    if (err == 303)
+        o->lost = 1;
+    if (e->n < GKS_MAX_OPEN_WS)
+        e->err[e->n++] = err;
+}
+
+/* Reports the noted errors. Returns 1 if the world is unchanged (gks_error_report), 0 as
+ * soon as the handler changed it (the remaining errors are then not reported). */
+GKS_MUST_CHECK static int report(const mf_errs *e, int fctid)
+{
+    for (int i = 0; i < e->n; i++)
+        if (!gks_error_report(e->err[i], fctid))
+            return 0;
+    return 1;
 }
 
 /* Writes the record under construction as item `item`; 0, 300 or 303. */
@@ -110,29 +148,30 @@ static int put_fmt(gks_mf_out *o, int item, const char *fmt, va_list ap)
 int gks_mf_rec(int fctid, int item, const char *fmt, ...)
 {
     gks_context *c = gks_ctx();
-    int err = 0;
-    for (int i = 0; i < c->sl->n_open && !err; i++) {
-        gks_mf_out *o = c->ws[i]->state == GWS_ACTIVE ? mo_of(c->ws[i]) : NULL;
+    mf_errs e = { 0 };
+    for (int i = 0; i < c->sl->n_open; i++) {
+        gks_mf_out *o = active_mo(c, i);
         if (!o)
             continue;
         va_list ap;
         va_start(ap, fmt);
-        err = put_fmt(o, item, fmt, ap);
+        note(&e, o, put_fmt(o, item, fmt, ap));
         va_end(ap);
     }
-    return !err || gks_error_report(err, fctid);
+    return report(&e, fctid);
 }
 
 int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
 {
     gks_mf_out *o = mo_of(gks_ws_lookup(ws_id));
-    if (!o)
+    if (!o || o->lost)
         return 1;
     va_list ap;
     va_start(ap, fmt);
-    int err = put_fmt(o, item, fmt, ap);
+    mf_errs e = { 0 };
+    note(&e, o, put_fmt(o, item, fmt, ap));
     va_end(ap);
-    return !err || gks_error_report(err, fctid);
+    return report(&e, fctid);
 }
 
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
@@ -140,6 +179,8 @@ int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
     gks_mf_out *o = mo_of(ws);
     if (!o)
         return 0;
+    if (o->lost)
+        return 1;
     int ni = in->num_ints > 0 && in->ints ? in->num_ints : 0;
     int nr = in->num_floats > 0 && in->floats ? in->num_floats : 0;
     gksm_rec_clear(&o->rec);
@@ -151,9 +192,10 @@ int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
     for (int i = 0; i < nr; i++)
         gksm_rec_real(&o->rec, in->floats[i]);
     gksm_rec_str(&o->rec, in->str ? in->str : "", in->str ? in->str_len : 0);
-    int err = put(o, GKSM_ITEM_ESCAPE);
-    if (err && gks_error_report(err, fctid)) {
-    } /* the caller returns: the ESCAPE was for this MO */
+    mf_errs e = { 0 };
+    note(&e, o, put(o, GKSM_ITEM_ESCAPE));
+    if (report(&e, fctid)) {
+    } /* the caller returns either way: the ESCAPE was for this MO */
     return 1;
 }
 
@@ -386,16 +428,19 @@ static int write_cells(gks_mf_out *o, const gks_mf_prim *p)
 int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 {
     gks_context *c = gks_ctx();
-    int err = 0;
-    for (int i = 0; i < c->sl->n_open && !err; i++) {
-        gks_mf_out *o = c->ws[i]->state == GWS_ACTIVE ? mo_of(c->ws[i]) : NULL;
+    mf_errs e = { 0 };
+    for (int i = 0; i < c->sl->n_open; i++) {
+        gks_mf_out *o = active_mo(c, i);
         if (!o)
             continue;
-        err = sync_attrs(o, &c->sl->attrs);
+        int err = sync_attrs(o, &c->sl->attrs);
         if (!err)
             err = sync_xform(o, p);
-        if (err)
-            break;
+        if (err) {
+            o->synced = 0; /* what was written is unknown: write everything next time */
+            note(&e, o, err);
+            continue;
+        }
         o->last = c->sl->attrs;
         o->synced = 1;
         switch (p->item) {
@@ -414,13 +459,17 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
             err = write_cells(o, p);
             break;
         }
+        note(&e, o, err);
     }
-    return !err || gks_error_report(err, fctid);
+    return report(&e, fctid);
 }
 
 /* ---------------------------------------------------------------- WRITE ITEM TO GKSM */
-GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
+GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const Gitem_data *item_data)
 {
+    /* The record's characters (docs/METAFILE.md: records stay character-coded). */
+    const char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    size_t have = item_data ? item_data->data.impl_dep.size : 0;
     if (gks_check_state(GFN_WITM))
         return;
     if (ws_id < 0)
@@ -435,11 +484,14 @@ GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
         GKS_FAIL(32, GFN_WITM);
     if (type < GKSM_ITEM_USER_MIN || type > 999)
         GKS_FAIL(160, GFN_WITM);
-    if (length < 0 || (length > 0 && !data))
+    if (length < 0 || (length > 0 && (!data || (size_t)length > have)))
         GKS_FAIL(161, GFN_WITM);
+    if (o->lost)
+        return; /* the loss was reported once */
     gksm_rec_clear(&o->rec);
     gksm_rec_raw(&o->rec, data, (size_t)length);
-    int err = put(o, type);
-    if (err)
-        GKS_FAIL(err, GFN_WITM);
+    mf_errs e = { 0 };
+    note(&e, o, put(o, type));
+    if (report(&e, GFN_WITM)) {
+    } /* the last action: returning is right either way */
 }

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_record.h -- the GKS metafile workstations: recording at the API level (the core calls a
  * one-line hook from each function the metafile records; the hook writes an item to every
@@ -87,6 +88,7 @@ typedef struct gks_mf_prim {
 /* Output state of an MO workstation (ws->priv of ws_mo.c). */
 typedef struct gks_mf_out {
     FILE *fp;
+    int lost;                  /* a write failed (reported once): nothing more is written */
     gksm_rec rec;              /* reused data record */
     int synced;                /* `last`, norm, box, clip_on hold what was written */
     gks_cur_attrs last;
@@ -99,6 +101,7 @@ typedef struct gks_mf_out {
  * interpretation state of the items read from it (recorded normalization, clipping). */
 typedef struct gks_mf_in {
     FILE *fp;
+    int allow_escapes;         /* GESC_MI_ALLOW_ESCAPES: 1 performs every recorded ESCAPE */
     gksm_in in;
     gks_norm_override xf;
 } gks_mf_in;

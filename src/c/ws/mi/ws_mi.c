@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_mi.c -- the GKS metafile input workstation (type GWS_TYPE_MI, category MI) and the
  * metafile input functions GET ITEM TYPE FROM GKSM, READ ITEM FROM GKSM and INTERPRET
@@ -76,12 +77,26 @@ static void mi_close(gks_ws *ws)
     ws->priv = NULL;
 }
 
+/* GESC_MI_ALLOW_ESCAPES: ints[1] 0/1. */
+static int mi_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    (void)out;
+    gks_mf_in *m = ws->priv;
+    if (func_id != GESC_MI_ALLOW_ESCAPES)
+        return 180;
+    if (in->num_ints < 2 || (in->ints[1] != 0 && in->ints[1] != 1))
+        return 182;
+    m->allow_escapes = in->ints[1];
+    return 0;
+}
+
 const gks_ws_driver gks_ws_mi_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mi_desc,
     .file = gks_mf_file,
     .open = mi_open,
     .close = mi_close,
+    .escape = mi_escape,
 };
 
 /* ---------------------------------------------------------------- reading */
@@ -118,17 +133,30 @@ GKS_API void gget_item_type(Gint ws_id, Gint *type, Gint *length)
         *length = (Gint)len;
 }
 
-GKS_API void gread_item(Gint ws_id, Gint max_length, char *data)
+GKS_API void gread_item(Gint ws_id, Gint max_length, Gitem_data *item_data)
 {
     gks_mf_in *m = mi_checked(GFN_RDITM, ws_id);
     if (!m)
         return;
+    char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    int type = 0;
+    size_t length = 0;
+    int perr = gksm_in_peek(&m->in, &type, &length);
+    if (!perr && length > INT_MAX)
+        perr = 163;
+    if (perr)
+        GKS_FAIL(perr, GFN_RDITM);
     if (max_length < 0 || (max_length > 0 && !data))
         GKS_FAIL(166, GFN_RDITM);
     size_t got;
     int err = gksm_in_read(&m->in, data, (size_t)max_length, &got);
     if (err)
         GKS_FAIL(err, GFN_RDITM);
+    if (item_data) {
+        item_data->type = type;
+        item_data->length = (Gint)length;
+        item_data->data.impl_dep.size = got;
+    }
     gks_ctx()->sl->mf_last_mi = ws_id + 1;
 }
 
@@ -229,6 +257,7 @@ static Gpoint3 *d_points(dec *d, long n, int dim)
 typedef struct {
     dec d;
     gks_norm_override *xf; /* the MI's interpretation state (or a local default) */
+    int allow_escapes;     /* the MI's GESC_MI_ALLOW_ESCAPES (0 without an MI) */
 } interp;
 
 /* Runs a primitive function with the recorded normalization and clipping volume. */
@@ -441,6 +470,38 @@ static void i_message(interp *ip)
     gks_free(s);
 }
 
+/* Caps on what an untrusted metafile may ask of a ray-traced picture (docs/METAFILE.md). */
+#define MI_CAP_RT_SAMPLES 16
+#define MI_CAP_RT_MAX_DEPTH 16
+
+/* Whether a recorded ESCAPE may be performed: everything when the application allowed it
+ * (GESC_MI_ALLOW_ESCAPES); otherwise the picture settings only, the sample count and ray
+ * depth capped in place. A metafile is untrusted input: it may not choose where the viewer
+ * writes, how many threads it starts, or print to its standard error. 0 or 180. */
+static int escape_policy(const interp *ip, int func, Gint *ints, long ni)
+{
+    if (ip->allow_escapes)
+        return 0;
+    switch (func) {
+    case GESC_RT_SAMPLES:
+        if (ni >= 2 && ints[1] > MI_CAP_RT_SAMPLES)
+            ints[1] = MI_CAP_RT_SAMPLES;
+        return 0;
+    case GESC_RT_MAX_DEPTH:
+        if (ni >= 2 && ints[1] > MI_CAP_RT_MAX_DEPTH)
+            ints[1] = MI_CAP_RT_MAX_DEPTH;
+        return 0;
+    case GESC_RT_CLIP_SECONDARY:
+    case GESC_RT_CUTOFF:
+    case GESC_RT_SPD:
+    case GESC_PNG_SUPERSAMPLE:
+    case GESC_PNG_COMPRESSION:
+        return 0;
+    default: /* file names, threads, progress, statistics, and anything newer */
+        return 180;
+    }
+}
+
 /* ESCAPE: function identification, integers (the first, the workstation identifier, is
  * replaced by each active workstation's), reals, string. */
 static void i_escape(interp *ip)
@@ -473,9 +534,11 @@ static void i_escape(interp *ip)
         d->err = 165;
     if (!d->err && gksm_cur_left(&d->c) != 0)
         d->err = 165;
+    if (!d->err)
+        d->err = escape_policy(ip, func, ints, ni);
     if (!d->err) {
-        Gescape_in_data in = { (Gint)ni, ints, (Gint)nr, reals, n, s };
-        EACH_WS((ints[0] = ws_, gescape(func, &in, NULL)));
+        Gescape_in_data in = { { (Gint)ni, ints, (Gint)nr, reals, n, s } };
+        EACH_WS((ints[0] = ws_, gescape(func, &in, NULL, NULL)));
     }
     gks_free(ints);
     gks_free(reals);
@@ -639,7 +702,7 @@ static int perform(interp *ip, int type)
     case GKSM_ITEM_FILL_COLR: if (fixed(ip, "i", iv, rv)) gset_fill_colr_ind(iv[0]); break;
     case GKSM_ITEM_PAT_SIZE_NDC: /* RAL: width and height vectors */
         if (fixed(ip, "rrrr", iv, rv))
-            gset_pat_size(&(Gvec){ hypot(rv[0], rv[1]), hypot(rv[2], rv[3]) });
+            gset_pat_size(hypot(rv[0], rv[1]), hypot(rv[2], rv[3]));
         break;
     case GKSM_ITEM_PAT_REF_NDC:
         if (fixed(ip, "rr", iv, rv))
@@ -730,7 +793,7 @@ static int perform(interp *ip, int type)
         break;
     case GKSM_ITEM_PAT_SIZE:
         if (fixed(ip, "rr", iv, rv))
-            gset_pat_size(&(Gvec){ rv[0], rv[1] });
+            gset_pat_size(rv[0], rv[1]);
         break;
     case GKSM_ITEM_CLIP_VOL3:
         if (fixed(ip, "irrrrrr", iv, rv)) {
@@ -824,11 +887,13 @@ static int perform(interp *ip, int type)
     return ip->d.err;
 }
 
-GKS_API void ginterpret_item(Gint type, Gint length, const char *data)
+GKS_API void ginterpret_item(Gint type, Gint length, const Gitem_data *item_data)
 {
     if (gks_check_state(GFN_IITM))
         return;
-    if (length < 0 || (length > 0 && !data))
+    const char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    size_t have = item_data ? item_data->data.impl_dep.size : 0;
+    if (length < 0 || (length > 0 && (!data || (size_t)length > have)))
         GKS_FAIL(161, GFN_IITM);
     if (type < 0)
         GKS_FAIL(164, GFN_IITM);
@@ -842,7 +907,7 @@ GKS_API void ginterpret_item(Gint type, Gint length, const char *data)
     gksm_in fmt = { .iw = 11, .rw = 24, .ri = 1, .zero = 0, .one = 1 };
     gks_norm_override local;
     xf_default(&local);
-    interp ip = { .xf = m ? &m->xf : &local };
+    interp ip = { .xf = m ? &m->xf : &local, .allow_escapes = m ? m->allow_escapes : 0 };
     gksm_cur_init(&ip.d.c, m ? &m->in : &fmt, data ? data : "", (size_t)length);
     int err = perform(&ip, type);
     if (err)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_mo.c -- the GKS metafile output workstation (type GWS_TYPE_MO, category MO). The
  * connection identifier is the file name; OPEN WORKSTATION writes the file header, CLOSE
@@ -54,24 +55,55 @@ static int mo_open(gks_ws *ws)
     return 0;
 }
 
+/* Writes the END item and closes the file. 0, or 303 when a write or fclose failed. */
+static int mo_end(gks_mf_out *o)
+{
+    int err = 0;
+    if (!o->lost) {
+        gksm_rec_clear(&o->rec);
+        err = gksm_write_item(o->fp, GKSM_ITEM_END, &o->rec) != 0;
+    }
+    err |= fclose(o->fp) != 0;
+    o->fp = NULL;
+    return err ? 303 : 0;
+}
+
+/* CLOSE WORKSTATION: the END item and the file's close are checked; a loss is reported
+ * once per workstation (not again when an earlier item already reported it). */
+static int mo_finish(gks_ws *ws)
+{
+    gks_mf_out *o = ws->priv;
+    if (!o || !o->fp)
+        return 0;
+    int was_lost = o->lost;
+    int err = mo_end(o);
+    return err && !was_lost ? err : 0;
+}
+
+/* Frees the workstation; after EMERGENCY CLOSE GKS (no finish) ends the file unchecked. */
 static void mo_close(gks_ws *ws)
 {
     gks_mf_out *o = ws->priv;
     if (!o)
         return;
-    gksm_rec_clear(&o->rec);
-    gksm_write_item(o->fp, GKSM_ITEM_END, &o->rec);
-    fclose(o->fp);
+    if (o->fp)
+        (void)mo_end(o);
     gksm_rec_free(&o->rec);
     gks_free(o);
     ws->priv = NULL;
 }
 
-/* UPDATE WORKSTATION (and CLOSE, before close): the items so far reach the file. */
+/* UPDATE WORKSTATION (and CLOSE, before finish): the items so far reach the file. A failure
+ * is reported once: it marks the workstation lost. */
 static int mo_update(gks_ws *ws)
 {
     gks_mf_out *o = ws->priv;
-    return fflush(o->fp) == 0 && !ferror(o->fp) ? 0 : 303;
+    if (o->lost)
+        return 0;
+    if (fflush(o->fp) == 0 && !ferror(o->fp))
+        return 0;
+    o->lost = 1;
+    return 303;
 }
 
 const gks_ws_driver gks_ws_mo_driver = {
@@ -80,5 +112,6 @@ const gks_ws_driver gks_ws_mo_driver = {
     .file = gks_mf_file,
     .open = mo_open,
     .close = mo_close,
+    .finish = mo_finish,
     .update = mo_update,
 };
