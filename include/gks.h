@@ -137,7 +137,9 @@ enum {
     GWS_TYPE_NULL = 99,       /* category OUTPUT: accepts everything, draws nothing */
     GWS_TYPE_PNG = 100,       /* category OUTIN, raster, 1024x1024 pixel display space;
                                  input from scripts (docs/INPUT.md) */
-    GWS_TYPE_PNG_LARGE = 101  /* category OUTIN, raster, 8192x8192 pixel display space */
+    GWS_TYPE_PNG_LARGE = 101, /* category OUTIN, raster, 8192x8192 pixel display space */
+    GWS_TYPE_X11 = 210        /* category OUTIN, interactive X11 window, 800x800 pixels;
+                                 only in builds with GKS_WITH_X11 (else error 23) */
 };
 
 /* Function identifications passed to ERROR HANDLING: the standard's numbers (0..108, the

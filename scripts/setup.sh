@@ -6,6 +6,7 @@
 set -euo pipefail
 
 packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
+          libx11-dev xvfb xdotool x11-apps # X11 workstation and its tests (optional)
           libopenmpi-dev openmpi-bin) # OpenMPI: the optional MPI build and its test (docs/MPI.md)
 missing=()
 for p in "${packages[@]}"; do

@@ -17,6 +17,7 @@
 #include "gks_binding.h"
 #include "gks_fortran.h"
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -749,4 +750,420 @@ FAPI void FNAME(gqsim, GQSIM)(fint *errind, fint *flag)
     ginq_more_simult_events(errind, &f);
     if (!*errind)
         *flag = f;
+}
+
+/* ---- GPREC / GUREC: the data record format of this implementation ----
+ *
+ * A packed record is a character stream laid over DATREC(1..LDR), element after element
+ * (LEN(DATREC(1)) characters each), blank-padded at the end: the counts IL, RL, SL as
+ * I11, the IL integers as I11, the RL reals as E16.8, the SL string lengths as I11, then
+ * the strings' characters. The stream starts with "GKSR" so GUREC can tell a packed
+ * record from other text (2003). */
+
+#define REC_MAGIC "GKSR"
+
+typedef struct { char *buf; size_t n, cap; } rec_stream;
+
+static int rec_put(rec_stream *s, const char *text, size_t n)
+{
+    if (s->n + n > s->cap)
+        return -1;
+    memcpy(s->buf + s->n, text, n);
+    s->n += n;
+    return 0;
+}
+
+static int rec_int(rec_stream *s, long v)
+{
+    char t[16];
+    snprintf(t, sizeof t, "%11ld", v);
+    return rec_put(s, t, 11);
+}
+
+/* GPREC(IL, IA, RL, RA, SL, LSTR, STR, MLDR, ERRIND, LDR, DATREC): STR(SL) strings of
+ * LEN(STR) characters, the first LSTR(i) of each used. ERRIND 2001 if the record does
+ * not fit into MLDR elements, 2003 for negative counts or lengths beyond LEN(STR). */
+FAPI void FNAME(gprec, GPREC)(const fint *il, const fint *ia, const fint *rl, const freal *ra,
+                              const fint *sl, const fint *lstr, const char *str,
+                              const fint *mldr, fint *errind, fint *ldr, char *datrec,
+                              size_t str_len, size_t datrec_len)
+{
+    *ldr = 0;
+    if (*il < 0 || *rl < 0 || *sl < 0) {
+        *errind = 2003;
+        return;
+    }
+    for (fint i = 0; i < *sl; i++)
+        if (lstr[i] < 0 || (size_t)lstr[i] > str_len) {
+            *errind = 2003;
+            return;
+        }
+    rec_stream s = { datrec, 0, *mldr > 0 ? (size_t)*mldr * datrec_len : 0 };
+    int bad = rec_put(&s, REC_MAGIC, 4) || rec_int(&s, *il) || rec_int(&s, *rl) ||
+              rec_int(&s, *sl);
+    for (fint i = 0; !bad && i < *il; i++)
+        bad = rec_int(&s, ia[i]);
+    for (fint i = 0; !bad && i < *rl; i++) {
+        char t[24];
+        snprintf(t, sizeof t, "%16.8E", (double)ra[i]);
+        bad = rec_put(&s, t, 16);
+    }
+    for (fint i = 0; !bad && i < *sl; i++)
+        bad = rec_int(&s, lstr[i]);
+    for (fint i = 0; !bad && i < *sl; i++)
+        bad = rec_put(&s, str + (size_t)i * str_len, (size_t)lstr[i]);
+    if (bad) {
+        *errind = 2001;
+        return;
+    }
+    size_t used = datrec_len ? (s.n + datrec_len - 1) / datrec_len : 0;
+    memset(datrec + s.n, ' ', used * datrec_len - s.n);
+    *ldr = (fint)used;
+    *errind = 0;
+}
+
+static int rec_get_int(const char **p, const char *end, long *v)
+{
+    if (end - *p < 11)
+        return -1;
+    char t[12], *e;
+    memcpy(t, *p, 11);
+    t[11] = '\0';
+    *v = strtol(t, &e, 10);
+    while (*e == ' ')
+        e++;
+    if (e == t || *e)
+        return -1;
+    *p += 11;
+    return 0;
+}
+
+/* GUREC(LDR, DATREC, IIL, IRL, ISL, ERRIND, IL, IA, RL, RA, SL, LSTR, STR): IIL, IRL, ISL
+ * are the sizes of IA, RA, STR/LSTR; IL, RL, SL the counts in the record (at most the
+ * sizes are stored: ERRIND 2001 if any count exceeds its size, a string its LEN).
+ * ERRIND 2003 if DATREC is no record packed by GPREC. */
+FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *iil,
+                              const fint *irl, const fint *isl, fint *errind, fint *il,
+                              fint *ia, fint *rl, freal *ra, fint *sl, fint *lstr, char *str,
+                              size_t datrec_len, size_t str_len)
+{
+    const char *p = datrec, *end = datrec + (*ldr > 0 ? (size_t)*ldr * datrec_len : 0);
+    long n[3];
+    *il = *rl = *sl = 0;
+    if (end - p < 4 || memcmp(p, REC_MAGIC, 4) != 0) {
+        *errind = 2003;
+        return;
+    }
+    p += 4;
+    for (int k = 0; k < 3; k++)
+        if (rec_get_int(&p, end, &n[k]) || n[k] < 0 || n[k] > 1000000) {
+            *errind = 2003;
+            return;
+        }
+    fint e = 0;
+    for (long i = 0; i < n[0]; i++) {
+        long v;
+        if (rec_get_int(&p, end, &v)) {
+            *errind = 2003;
+            return;
+        }
+        if (i < *iil)
+            ia[i] = (fint)v;
+    }
+    for (long i = 0; i < n[1]; i++) {
+        if (end - p < 16) {
+            *errind = 2003;
+            return;
+        }
+        char t[17], *q;
+        memcpy(t, p, 16);
+        t[16] = '\0';
+        double v = strtod(t, &q);
+        if (q == t) {
+            *errind = 2003;
+            return;
+        }
+        p += 16;
+        if (i < *irl)
+            ra[i] = (freal)v;
+    }
+    long lens[64];
+    if (n[2] > 64) {
+        *errind = 2003;
+        return;
+    }
+    for (long i = 0; i < n[2]; i++)
+        if (rec_get_int(&p, end, &lens[i]) || lens[i] < 0) {
+            *errind = 2003;
+            return;
+        }
+    for (long i = 0; i < n[2]; i++) {
+        if (end - p < lens[i]) {
+            *errind = 2003;
+            return;
+        }
+        if (i < *isl) {
+            size_t k = (size_t)lens[i] < str_len ? (size_t)lens[i] : str_len;
+            memcpy(str + (size_t)i * str_len, p, k);
+            memset(str + (size_t)i * str_len + k, ' ', str_len - k);
+            lstr[i] = (fint)k;
+            if ((size_t)lens[i] > str_len)
+                e = 2001;
+        }
+        p += lens[i];
+    }
+    if (n[0] > *iil || n[1] > *irl || n[2] > *isl)
+        e = 2001;
+    *il = (fint)n[0];
+    *rl = (fint)n[1];
+    *sl = (fint)n[2];
+    *errind = e;
+}
+
+/* ---- GKS-3D input (ISO 8806-1 style names; argument lists in bindings/fortran/README.md)
+ * EVOL(6) = XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX of the echo volume (DC3). ---- */
+
+static Glimit3 evol_in(const freal *v)
+{
+    return (Glimit3){ v[0], v[1], v[2], v[3], v[4], v[5] };
+}
+
+static void evol_out(const Glimit3 *l, freal *v)
+{
+    v[0] = (freal)l->x_min; v[1] = (freal)l->x_max; v[2] = (freal)l->y_min;
+    v[3] = (freal)l->y_max; v[4] = (freal)l->z_min; v[5] = (freal)l->z_max;
+}
+
+/* GINLC3(WKID, LCDNR, VIEWI, TNR, PX, PY, PZ, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(ginlc3, GINLC3)(const fint *wkid, const fint *lcdnr, const fint *viewi,
+                                const fint *tnr, const freal *px, const freal *py,
+                                const freal *pz, const fint *pet, const freal *evol,
+                                const fint *ldr, const char *datrec, size_t datrec_len)
+{
+    Gloc3 l = { *tnr, { *px, *py, *pz } };
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_loc3(*wkid, *lcdnr, *viewi, &l, *pet, &e, &d);
+}
+
+/* GINSK3(WKID, SKDNR, VIEWI, TNR, N, PXA, PYA, PZA, PET, EVOL, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(ginsk3, GINSK3)(const fint *wkid, const fint *skdnr, const fint *viewi,
+                                const fint *tnr, const fint *n, const freal *pxa,
+                                const freal *pya, const freal *pza, const fint *pet,
+                                const freal *evol, const fint *buflen, const fint *ldr,
+                                const char *datrec, size_t datrec_len)
+{
+    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    if (*n > 0 && !p) {
+        report_nomem(GFN_INSK3);
+        return;
+    }
+    for (fint i = 0; i < *n; i++)
+        p[i] = (Gpoint3){ pxa[i], pya[i], pza[i] };
+    Gstroke3 s = { *tnr, *n, p };
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_stroke3(*wkid, *skdnr, *viewi, &s, *pet, &e, *buflen, &d);
+    free(p);
+}
+
+/* GINVL3(WKID, VLDNR, IVAL, PET, EVOL, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(ginvl3, GINVL3)(const fint *wkid, const fint *vldnr, const freal *ival,
+                                const fint *pet, const freal *evol, const freal *loval,
+                                const freal *hival, const fint *ldr, const char *datrec,
+                                size_t datrec_len)
+{
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_val3(*wkid, *vldnr, *ival, *pet, &e, *loval, *hival, &d);
+}
+
+/* GINCH3(WKID, CHDNR, ISTAT, ICHNR, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(ginch3, GINCH3)(const fint *wkid, const fint *chdnr, const fint *istat,
+                                const fint *ichnr, const fint *pet, const freal *evol,
+                                const fint *ldr, const char *datrec, size_t datrec_len)
+{
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_choice3(*wkid, *chdnr, (Gin_status)*istat, *ichnr, *pet, &e, &d);
+}
+
+/* GINPK3(WKID, PCDNR, ISTAT, ISGNA, IPCID, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(ginpk3, GINPK3)(const fint *wkid, const fint *pcdnr, const fint *istat,
+                                const fint *isgna, const fint *ipcid, const fint *pet,
+                                const freal *evol, const fint *ldr, const char *datrec,
+                                size_t datrec_len)
+{
+    Gpick p = { *isgna, *ipcid };
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_pick3(*wkid, *pcdnr, (Gin_status)*istat, &p, *pet, &e, &d);
+}
+
+/* GINST3(WKID, STDNR, LSTR, ISTR, PET, EVOL, BUFLEN, INIPOS, LDR, DATREC) */
+FAPI void FNAME(ginst3, GINST3)(const fint *wkid, const fint *stdnr, const fint *lstr,
+                                const char *istr, const fint *pet, const freal *evol,
+                                const fint *buflen, const fint *inipos, const fint *ldr,
+                                const char *datrec, size_t istr_len, size_t datrec_len)
+{
+    size_t n = *lstr > 0 ? (size_t)*lstr : 0;
+    if (n > istr_len)
+        n = istr_len;
+    char *s = str_buffer(n, GFN_INST3);
+    if (!s)
+        return;
+    memcpy(s, istr, n);
+    s[n] = '\0';
+    Glimit3 e = evol_in(evol);
+    Gin_data d = record_in(*ldr, datrec, datrec_len);
+    ginit_string3(*wkid, *stdnr, s, *pet, &e, *buflen, *inipos, &d);
+    free(s);
+}
+
+/* GRQLC3(WKID, LCDNR, STAT, VIEWI, TNR, PX, PY, PZ) */
+FAPI void FNAME(grqlc3, GRQLC3)(const fint *wkid, const fint *lcdnr, fint *stat, fint *viewi,
+                                fint *tnr, freal *px, freal *py, freal *pz)
+{
+    Gin_status st;
+    Gloc3 l;
+    greq_loc3(*wkid, *lcdnr, &st, viewi, &l);
+    *stat = st;
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+    *pz = (freal)l.position.z;
+}
+
+/* A stroke 3 into Fortran arrays of size n. */
+static void stroke3_out(const Gstroke3 *s, fint n, fint *tnr, fint *np, freal *px, freal *py,
+                        freal *pz)
+{
+    *tnr = s->norm_tran_num;
+    *np = s->num_points;
+    for (fint i = 0; i < s->num_points && i < n && s->points; i++) {
+        px[i] = (freal)s->points[i].x;
+        py[i] = (freal)s->points[i].y;
+        pz[i] = (freal)s->points[i].z;
+    }
+}
+
+/* GRQSK3(WKID, SKDNR, N, STAT, VIEWI, TNR, NP, PXA, PYA, PZA) */
+FAPI void FNAME(grqsk3, GRQSK3)(const fint *wkid, const fint *skdnr, const fint *n, fint *stat,
+                                fint *viewi, fint *tnr, fint *np, freal *pxa, freal *pya,
+                                freal *pza)
+{
+    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    if (*n > 0 && !p) {
+        report_nomem(GFN_RQSK3);
+        return;
+    }
+    Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
+    Gin_status st;
+    greq_stroke3(*wkid, *skdnr, &st, viewi, &s);
+    *stat = st;
+    stroke3_out(&s, *n, tnr, np, pxa, pya, pza);
+    free(p);
+}
+
+/* GSMLC3(WKID, LCDNR, VIEWI, TNR, PX, PY, PZ) */
+FAPI void FNAME(gsmlc3, GSMLC3)(const fint *wkid, const fint *lcdnr, fint *viewi, fint *tnr,
+                                freal *px, freal *py, freal *pz)
+{
+    Gloc3 l;
+    gsample_loc3(*wkid, *lcdnr, viewi, &l);
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+    *pz = (freal)l.position.z;
+}
+
+/* GSMSK3(WKID, SKDNR, N, VIEWI, TNR, NP, PXA, PYA, PZA) */
+FAPI void FNAME(gsmsk3, GSMSK3)(const fint *wkid, const fint *skdnr, const fint *n,
+                                fint *viewi, fint *tnr, fint *np, freal *pxa, freal *pya,
+                                freal *pza)
+{
+    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    if (*n > 0 && !p) {
+        report_nomem(GFN_SMSK3);
+        return;
+    }
+    Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
+    gsample_stroke3(*wkid, *skdnr, viewi, &s);
+    stroke3_out(&s, *n, tnr, np, pxa, pya, pza);
+    free(p);
+}
+
+/* GGTLC3(VIEWI, TNR, PX, PY, PZ) */
+FAPI void FNAME(ggtlc3, GGTLC3)(fint *viewi, fint *tnr, freal *px, freal *py, freal *pz)
+{
+    Gloc3 l;
+    gget_loc3(viewi, &l);
+    *tnr = l.norm_tran_num;
+    *px = (freal)l.position.x;
+    *py = (freal)l.position.y;
+    *pz = (freal)l.position.z;
+}
+
+/* GGTSK3(N, VIEWI, TNR, NP, PXA, PYA, PZA) */
+FAPI void FNAME(ggtsk3, GGTSK3)(const fint *n, fint *viewi, fint *tnr, fint *np, freal *pxa,
+                                freal *pya, freal *pza)
+{
+    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    if (*n > 0 && !p) {
+        report_nomem(GFN_GTSK3);
+        return;
+    }
+    Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
+    gget_stroke3(viewi, &s);
+    stroke3_out(&s, *n, tnr, np, pxa, pya, pza);
+    free(p);
+}
+
+/* GQLCS3(WKID, LCDNR, TYPE, MLDR, ERRIND, MODE, ESW, VIEWI, TNR, PX, PY, PZ, PET, EVOL,
+ * LDR, DATREC) */
+FAPI void FNAME(gqlcs3, GQLCS3)(const fint *wkid, const fint *lcdnr, const fint *type,
+                                const fint *mldr, fint *errind, fint *mode, fint *esw,
+                                fint *viewi, fint *tnr, freal *px, freal *py, freal *pz,
+                                fint *pet, freal *evol, fint *ldr, char *datrec,
+                                size_t datrec_len)
+{
+    Gloc_st3 s = { 0 };
+    ginq_loc_st3(*wkid, *lcdnr, (Ginq_type)*type, errind, &s);
+    if (*errind)
+        return;
+    *mode = s.op_mode;
+    *esw = s.echo_switch;
+    *pet = s.pet;
+    *viewi = s.init_view_ind;
+    *tnr = s.init_loc.norm_tran_num;
+    *px = (freal)s.init_loc.position.x;
+    *py = (freal)s.init_loc.position.y;
+    *pz = (freal)s.init_loc.position.z;
+    evol_out(&s.echo_vol, evol);
+    *errind = record_out(&s.in_data, *mldr, ldr, datrec, datrec_len);
+}
+
+/* GQDLC3(WTYPE, LCDNR, N, MLDR, ERRIND, DPX, DPY, DPZ, OL, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(gqdlc3, GQDLC3)(const fint *wtype, const fint *lcdnr, const fint *n,
+                                const fint *mldr, fint *errind, freal *dpx, freal *dpy,
+                                freal *dpz, fint *ol, fint *pet, freal *evol, fint *ldr,
+                                char *datrec, size_t datrec_len)
+{
+    Gdef_in d2 = { 0 };
+    if (pets_buffer(&d2, *n)) {
+        *errind = 300;
+        return;
+    }
+    Gdef_loc3 s = { .pets = d2.pets };
+    ginq_def_loc_data3(*wtype, *lcdnr, errind, &s);
+    if (!*errind) {
+        *dpx = (freal)s.loc_pos.x;
+        *dpy = (freal)s.loc_pos.y;
+        *dpz = (freal)s.loc_pos.z;
+        evol_out(&s.echo_vol, evol);
+        freal earea[4];
+        d2 = (Gdef_in){ s.pets, { 0, 0, 0, 0 }, s.in_data };
+        *errind = def_out(&d2, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    }
+    free(s.pets.ints);
 }

@@ -140,14 +140,22 @@ static void round_matrix(Gmatrix3 m)
             m[i][j] = (real)m[i][j]; /* the Fortran binding returns REAL matrices */
 }
 
+/* View 1 with view plane normal vpn (the paper's camera: FIG_VPN). */
+static void view_vpn(const real *clip, const real *vpn_in);
+
 /* View 1: the paper's camera above the front right of the board; clip limits per scene. */
 static void view(const real *clip)
+{
+    view_vpn(clip, FIG_VPN);
+}
+
+static void view_vpn(const real *clip, const real *vpn_in)
 {
     Gint err = 0;
     Gview_rep3 v = { .clip_limit = { clip[0], clip[1], clip[2], clip[3], clip[4], clip[5] },
                      .xy_clip = GIND_CLIP, .back_clip = GIND_CLIP, .front_clip = GIND_CLIP };
     Gpoint3 vrp = { FIG_VRP[0], FIG_VRP[1], FIG_VRP[2] };
-    Gvec3 vpn = { FIG_VPN[0], FIG_VPN[1], FIG_VPN[2] };
+    Gvec3 vpn = { vpn_in[0], vpn_in[1], vpn_in[2] };
     Gvec3 vup = { FIG_VUP[0], FIG_VUP[1], FIG_VUP[2] };
     geval_view_ori_matrix3(&vrp, &vpn, &vup, GCOORD_NDC, &err, v.ori_matrix);
     Gview_map3 map = { { FIG_WINDOW[0], FIG_WINDOW[1], FIG_WINDOW[2], FIG_WINDOW[3] },
@@ -259,4 +267,38 @@ int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
     picture(base, size, main_mode, scene, clip_secondary);
     gclose_gks();
     return n_errors ? 1 : 0;
+}
+
+void fig_scene_setup(int scene, const float vpn[3])
+{
+    static const real white[3] = { 1.0f, 1.0f, 1.0f }, origin[3] = { 0.0f, 0.0f, 0.0f };
+    colour(0, 0.1f, 0.11f, 0.14f);
+    colour(2, 0.85f, 0.15f, 0.1f);
+    colour(8, 0.9f, 0.9f, 0.85f);
+    colour(9, 0.15f, 0.2f, 0.45f);
+    colour(10, 0.75f, 0.75f, 0.8f);
+    colour(11, 0.8f, 0.95f, 0.9f);
+    colour(12, 0.9f, 0.6f, 0.15f);
+    colour(13, 0.3f, 0.3f, 0.3f);
+    fig_scene_view(scene, vpn);
+    light(2, GLIGHT_AMBIENT, FIG_AMBIENT, origin);
+    light(3, GLIGHT_POSITIONAL, white, scene == FIG_SCENE_FAN ? FIG_LAMP_FAN : FIG_LAMP_BOARD);
+    gset_view_ind(1);
+    gset_fill_int_style(GSTYLE_SOLID);
+    Gint on[2] = { 2, 3 };
+    Gint_list act = { 2, on }, deact = { 0, NULL };
+    gset_light_src_state(&act, &deact);
+}
+
+void fig_scene_view(int scene, const float vpn[3])
+{
+    view_vpn(scene == FIG_SCENE_FAN ? FIG_CLIP_FAN : FIG_CLIP_BOARD, vpn);
+}
+
+void fig_scene_draw(int scene)
+{
+    if (scene == FIG_SCENE_FAN)
+        scene_fan();
+    else
+        scene_board(scene == FIG_SCENE_BOARD);
 }

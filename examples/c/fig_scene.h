@@ -71,4 +71,11 @@ static const float FIG_HUB_DIR[6][2] = {
 int fig_run(int argc, char **argv, const char *name, int scene, int main_mode,
             int clip_secondary);
 
+/* For interactive programs on workstation 1 (examples/c/interactive.c): colours, view 1
+ * with view plane normal vpn, lights and area attributes; the view alone; the scene's
+ * primitives (into the open segment, if any). */
+void fig_scene_setup(int scene, const float vpn[3]);
+void fig_scene_view(int scene, const float vpn[3]);
+void fig_scene_draw(int scene);
+
 #endif

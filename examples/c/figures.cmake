@@ -8,3 +8,7 @@ endforeach()
 # A scientist's surface z = f(x, y) above a mirror (twin of examples/f77/surface.f).
 add_executable(surface_c ${CMAKE_CURRENT_LIST_DIR}/surface.c)
 target_link_libraries(surface_c PRIVATE gks3d_shared m)
+# The interactive example: Fig. 3 in a window (X11), click to turn, 1 to ray trace.
+add_executable(interactive_c ${CMAKE_CURRENT_LIST_DIR}/interactive.c ${CMAKE_CURRENT_LIST_DIR}/fig_scene.c)
+target_link_libraries(interactive_c PRIVATE gks3d_shared m)
+target_compile_definitions(interactive_c PRIVATE _DEFAULT_SOURCE)

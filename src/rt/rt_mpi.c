@@ -27,10 +27,12 @@ enum { T_FREE = 0, T_GRANTED = 1, T_HERE = 2, T_DONE = 3 };
 #define NSEND ((int)(sizeof ((rt_mpi_job *)0)->send_req / sizeof(MPI_Request)))
 #define QCAP ((int)(sizeof ((rt_mpi_job *)0)->queue / sizeof(int)))
 
-static void nap(void)
+static void nap(rt_mpi_job *j)
 {
     struct timespec ts = {0, 50000}; /* 50 us between polls: a waiting rank yields its core */
+    double t0 = rt_now();
     nanosleep(&ts, NULL);
+    j->wait_seconds += rt_now() - t0;
 }
 
 int rt_mpi_link_init(rt_mpi_link *l, MPI_Comm comm, double timeout)
@@ -109,8 +111,18 @@ static int grant(rt_mpi_job *j, int k, int want)
     return MPI_Send(msg, 3, MPI_INT, k, TAG_GRANT, l->comm) == MPI_SUCCESS ? 0 : -1;
 }
 
+static int serve_(rt_mpi_job *j);
+
 /* handles every message waiting; 0 or -1 (MPI failure, bad tile) */
 static int serve(rt_mpi_job *j)
+{
+    double t0 = rt_now();
+    int rc = serve_(j);
+    j->serve_seconds += rt_now() - t0;
+    return rc;
+}
+
+static int serve_(rt_mpi_job *j)
 {
     rt_mpi_link *l = j->l;
     for (;;) {
@@ -237,7 +249,7 @@ static int r0_next(void *u)
         if (remote_out(j) == 0)
             return -1; /* the rest is in progress here */
         check_silent(j);
-        nap();
+        nap(j);
     }
 }
 
@@ -268,7 +280,7 @@ static int r0_end(void *u, rt_frame *f)
                 fault(j, k, "rank %d did not take part in frame %u within %.0f s: found lost "
                       "(could it not open its workstation?)", k, j->seq, j->l->timeout);
             else
-                nap();
+                nap(j);
         }
     }
     return 1;
@@ -320,7 +332,7 @@ static int take_grant(rt_mpi_job *j, int block)
                   j->l->timeout, j->seq);
             return -1;
         }
-        nap();
+        nap(j);
     }
 }
 
@@ -372,7 +384,7 @@ static int send_wait(rt_mpi_job *j, int s)
                   j->l->timeout, j->seq);
             return -1;
         }
-        nap();
+        nap(j);
     }
 }
 

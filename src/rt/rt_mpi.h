@@ -71,6 +71,9 @@ typedef struct rt_mpi_job {
     int fault;               /* a rank was lost or timed out in this frame */
     char msg[256];           /* what happened (one line) */
     long sent_bytes, recv_bytes, tiles_here;
+    double serve_seconds;    /* rank 0: receiving and storing tiles, answering requests */
+    double wait_seconds;     /* waiting (rank 0: for the last remote tiles or ranks; other
+                                ranks: for a grant, for their sends) */
 } rt_mpi_job;
 
 /* Prepares j for one frame on link l and returns the hook for rt_render_options.tiles

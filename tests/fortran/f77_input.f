@@ -1,10 +1,10 @@
 C     SPDX-License-Identifier: MIT
       PROGRAM INPUT
 !     The REQUEST LOCATOR sequence of a legacy interactive program run
-!     on a gks3d workstation (category OUTPUT, no input devices): every
+!     on a workstation without input devices (category OUTPUT): every
 !     input routine links, reports the standard's error to the
 !     program's GERHND and leaves status NONE; the inquiries report
-!     through ERRIND only; AWAIT EVENT returns class NONE at once.
+!     through ERRIND only.
       INCLUDE 'GKS_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER N, ERRS(40), FCTS(40), FILS(40)

@@ -3,7 +3,7 @@ C     SPDX-License-Identifier: MIT
 !     List inquiry semantics (N = 0 count, 1-based N, out of range
 !     2002) and the other wrappers' argument conversion.
       INCLUDE 'GKS_PAR'
-      INTEGER NFAIL, IERR, NUM, ITYP, IOL, IWK, I1, I2, I3, I4
+      INTEGER NFAIL, IERR, NUM, ITYP, IOL, IWK, I1, I2, I3, I4, NTYP
       REAL W(4), V(4), R1, R2, R3, CW(4), RV(4), CV(4)
       CHARACTER*80 IDR(3), ODR(1)
       LOGICAL EX
@@ -19,10 +19,14 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
       CALL CHKI('GQLVKS level', I1, GL2C, NFAIL)
 !     available workstation types: 99, 100, 101, 3 (WISS), 2 (MO), 4 (MI)
+!     and 210 (X11) in builds with GKS_WITH_X11 (NTYP)
+      CALL GQWKCA(210, IERR, I1)
+      NTYP = 6
+      IF (IERR .EQ. 0) NTYP = 7
       ITYP = -7
       CALL GQEWK(0, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(0) errind', IERR, 0, NFAIL)
-      CALL CHKI('GQEWK(0) number', NUM, 6, NFAIL)
+      CALL CHKI('GQEWK(0) number', NUM, NTYP, NFAIL)
       CALL CHKI('GQEWK(0) untouched', ITYP, -7, NFAIL)
       CALL GQEWK(1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(1)', ITYP, GWSNUL, NFAIL)
@@ -35,9 +39,9 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQEWK(5) MO', ITYP, GWSMO, NFAIL)
       CALL GQEWK(6, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(6) MI', ITYP, GWSMI, NFAIL)
-      CALL GQEWK(7, IERR, NUM, ITYP)
+      CALL GQEWK(NTYP + 1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(7) errind', IERR, 2002, NFAIL)
-      CALL CHKI('GQEWK(7) number', NUM, 6, NFAIL)
+      CALL CHKI('GQEWK(7) number', NUM, NTYP, NFAIL)
       CALL GQEWK(-1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(-1) errind', IERR, 2002, NFAIL)
 !     open workstations 7 (CONID 5) and 3, activate 3

@@ -14,6 +14,9 @@ static const gks_ws_driver *const driver_list[] = {
     &gks_ws_wiss_driver,
     &gks_ws_mo_driver,
     &gks_ws_mi_driver,
+#ifdef GKS_HAVE_X11
+    &gks_ws_x11_driver, /* GKS_WITH_X11 */
+#endif
 };
 
 static const gks_desc_table desc_table = {
