@@ -215,11 +215,11 @@ static void test_every_allocation(void **u)
                      k, first_err);
         failed_runs += n_errors > 0;
     }
-    /* Most allocations are checked; a few (scratch buffers whose failure only degrades a
-     * driver's speed) may pass unnoticed. */
+    /* Every failed allocation is reported (a run whose k lies beyond its own allocation
+     * count, because a file left by an earlier run changes the count, reports none). */
     print_message("fault injection: %ld allocations, %ld runs reported an error\n", total,
                   failed_runs);
-    assert_true(failed_runs > total / 2);
+    assert_true(failed_runs >= total * 9 / 10);
 }
 
 static void test_every_write(void **u)

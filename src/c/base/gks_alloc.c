@@ -1,21 +1,26 @@
 /* SPDX-License-Identifier: MIT */
 #include "gks_alloc.h"
 #include "gks_export.h"
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* Failure injection state: the only mutable file-level state besides the context; it
- * exists for the tests (SQLite test_malloc style) and costs one branch per allocation. */
-static long fail_countdown; /* 0 = off; k = the kth allocation from now fails */
-static long alloc_count;
+ * exists for the tests (SQLite test_malloc style) and costs one branch per allocation.
+ * Atomic: the tracer's worker threads allocate through this funnel too. */
+static atomic_long fail_countdown; /* 0 = off; k = the kth allocation from now fails */
+static atomic_long alloc_count;
 
 static int injected_failure(void)
 {
-    alloc_count++;
-    if (fail_countdown <= 0)
-        return 0;
-    return --fail_countdown == 0;
+    atomic_fetch_add_explicit(&alloc_count, 1, memory_order_relaxed);
+    long c = atomic_load_explicit(&fail_countdown, memory_order_relaxed);
+    while (c > 0) /* exactly one allocation takes the countdown from 1 to 0 */
+        if (atomic_compare_exchange_weak_explicit(&fail_countdown, &c, c - 1,
+                                                  memory_order_relaxed, memory_order_relaxed))
+            return c == 1;
+    return 0;
 }
 
 static int size_ok(size_t n, size_t size, size_t *bytes)
@@ -75,10 +80,10 @@ void gks_free(void *p)
 
 GKS_TEST_API void gks_alloc_fail_after(long n)
 {
-    fail_countdown = n > 0 ? n : 0;
+    atomic_store(&fail_countdown, n > 0 ? n : 0);
 }
 
 GKS_TEST_API long gks_alloc_count(void)
 {
-    return alloc_count;
+    return atomic_load(&alloc_count);
 }

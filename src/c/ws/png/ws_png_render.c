@@ -269,8 +269,8 @@ typedef struct build {
     gks_raster_stroke st;     /* stroke state across chunks drawn at once */
 } build;
 
-static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
-                     gks_raster_stroke *st);
+static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
+                    gks_raster_stroke *st);
 
 /* Appends an attribute entry unless equal to the last one; sets *idx. */
 static int attr_push(png_render *r, const rattr *a, size_t *idx)
@@ -376,10 +376,12 @@ static int add_pieces(build *b, const Gpoint3 *p, size_t n, int closed, rec *rc)
             t.pt = pt0;
             t.cnt = cnt0;
             t.n_fill = (int)(r->n_cnt - cnt0);
-            draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
+            int de = draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
             r->n_pt = pt0;
             r->n_cnt = cnt0;
             rc->n_fill = 0;
+            if (de)
+                return de;
         }
     }
     return 0;
@@ -569,12 +571,12 @@ static int rec_finish(build *b, rec *rc, size_t pt0, size_t cnt0, size_t attr0, 
         return 0;
     }
     gks_raster_stroke st = { 0 };
-    draw_rec(r, b->fb, rc, immediate_mode(b->ws), &st);
+    int de = draw_rec(r, b->fb, rc, immediate_mode(b->ws), &st);
     r->n_pt = pt0;
     r->n_cnt = cnt0;
     r->n_attr = attr0;
     r->n_fl = fl0;
-    return 0;
+    return de;
 }
 
 static int build_area(build *b, const gks_prim *prim, int retain)
@@ -794,25 +796,39 @@ int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const
 }
 
 /* --- drawing records --------------------------------------------------------------------- */
-/* Pieces of a line record, counts cnt[0..n-1] from pts (negative = continues). */
-static void draw_pieces(gks_raster_fb *fb, const gks_raster_pt *pts, const int *cnt, int n,
-                        const gks_raster_line *la, gks_raster_stroke *st)
+/* The first storage failure of the raster calls of a record (e keeps the first). */
+static int nomem(int e, int raster_rc)
+{
+    return e ? e : raster_rc == GKS_RASTER_E_NOMEM ? 300 : 0;
+}
+
+/* e, or v when e is 0 (the first of two GKS error numbers). */
+static int first_err(int e, int v)
+{
+    return e ? e : v;
+}
+
+/* Pieces of a line record, counts cnt[0..n-1] from pts (negative = continues). 0 or 300. */
+static int draw_pieces(gks_raster_fb *fb, const gks_raster_pt *pts, const int *cnt, int n,
+                       const gks_raster_line *la, gks_raster_stroke *st)
 {
     size_t off = 0;
+    int e = 0;
     for (int k = 0; k < n; k++) {
         int c = cnt[k] < 0 ? -cnt[k] : cnt[k];
         if (cnt[k] >= 0)
             *st = (gks_raster_stroke){ 0 };
-        gks_raster_polyline_cont(fb, (size_t)c, pts + off, la, st);
+        e = nomem(e, gks_raster_polyline_cont(fb, (size_t)c, pts + off, la, st));
         off += (size_t)c;
     }
+    return e;
 }
 
 /* Draws a record. how: DRAW_PLAIN (no depth), DRAW_ZTEST (depth test; edges of areas
  * with the slope bias), DRAW_HL_AREAS (areas into the depth buffer only, nothing else),
  * DRAW_HL_LINES (everything but area interiors, depth-tested; areas as outlines). */
-static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
-                     gks_raster_stroke *st)
+static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
+                    gks_raster_stroke *st)
 {
     const rattr *a = &r->attrs[rc->attr];
     const gks_raster_pt *pts = r->pts + rc->pt;
@@ -824,33 +840,34 @@ static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
                            .zbias = how == DRAW_HL_LINES ? rc->zbias : 0.0f };
     if (rc->kind == REC_LINE) {
         if (how != DRAW_HL_AREAS)
-            draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
-        return;
+            return draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
+        return 0;
     }
     if (rc->kind == REC_MARKER) {
         if (how == DRAW_HL_AREAS)
-            return;
+            return 0;
         size_t off = 0;
+        int e = 0;
         for (int k = 0; k < rc->n_fill; k++) {
-            gks_raster_markers(fb, (size_t)cnt[k], pts + off, a->marker_type, a->marker_size,
-                               &la);
+            e = nomem(e, gks_raster_markers(fb, (size_t)cnt[k], pts + off, a->marker_type,
+                                            a->marker_size, &la));
             off += (size_t)cnt[k];
         }
-        return;
+        return e;
     }
     if (rc->kind == REC_CELL) {
         if (how == DRAW_HL_AREAS)
-            return;
+            return 0;
         gks_raster_fill f = { .zmode = zm };
-        gks_raster_cell_array_clipped(fb, &pts[0], &pts[1], &pts[2], a->nx, a->ny,
-                                      r->fl + a->fl, &f, rc->n_fill, cnt, pts + 3);
-        return;
+        return nomem(0, gks_raster_cell_array_clipped(fb, &pts[0], &pts[1], &pts[2], a->nx,
+                                                      a->ny, r->fl + a->fl, &f, rc->n_fill,
+                                                      cnt, pts + 3));
     }
     /* area: interior, then boundary (HOLLOW) and edges */
     size_t n_fill_pts = 0;
     for (int k = 0; k < rc->n_fill; k++)
         n_fill_pts += (size_t)cnt[k];
-    int outline = how == DRAW_HL_LINES;
+    int outline = how == DRAW_HL_LINES, e = 0;
     if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS)) {
         gks_raster_fill f = { .style = a->style == STYLE_HOLLOW ? GKS_RASTER_SOLID
                                                                 : (gks_raster_style)a->style,
@@ -866,23 +883,23 @@ static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
             memcpy(f.pat_u, a->geo + 2, 2 * sizeof(double));
             memcpy(f.pat_v, a->geo + 4, 2 * sizeof(double));
         }
-        gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f);
+        e = nomem(e, gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f));
     }
     if (how == DRAW_HL_AREAS)
-        return;
+        return e;
     if (!rc->outlined && outline) { /* retained before the mode became hidden line: */
         const gks_raster_pt *q = pts;    /* the clipped loops as outlines */
         la.zbias = rc->zbias;
         for (int k = 0; k < rc->n_fill; q += cnt[k], k++) {
             gks_raster_stroke ls = { 0 };
             gks_raster_pt close[2] = { q[cnt[k] - 1], q[0] };
-            gks_raster_polyline_cont(fb, (size_t)cnt[k], q, &la, &ls);
-            gks_raster_polyline_cont(fb, 2, close, &la, &ls);
+            e = nomem(e, gks_raster_polyline_cont(fb, (size_t)cnt[k], q, &la, &ls));
+            e = nomem(e, gks_raster_polyline_cont(fb, 2, close, &la, &ls));
         }
-        return;
+        return e;
     }
     if (rc->n_edge == 0)
-        return;
+        return e;
     la.zbias = zm == GKS_RASTER_Z_NONE ? 0.0f : rc->zbias;
     if (a->edge) {
         la.rgb[0] = a->edge_rgb[0];
@@ -891,10 +908,10 @@ static void draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
         la.type = a->edgetype;
         la.width = a->edgewidth;
     } else if (a->style != STYLE_HOLLOW && !outline) {
-        return; /* outlines were built for another mode */
+        return e; /* outlines were built for another mode */
     }
     gks_raster_stroke es = { 0 };
-    draw_pieces(fb, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, &la, &es);
+    return first_err(e, draw_pieces(fb, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, &la, &es));
 }
 
 typedef struct key_idx { double key; size_t idx; } key_idx;
@@ -940,7 +957,7 @@ static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
     size_t ns = (size_t)fb->w * (size_t)fb->h;
     memcpy(c->rgb, fb->rgb, 3 * ns * sizeof *c->rgb);
     memcpy(c->z, fb->z, ns * sizeof *c->z);
-    int mode = ws->hlhsr_mode;
+    int mode = ws->hlhsr_mode, e = 0; /* the first storage failure: the picture lacks it */
     size_t n = 0;
     key_idx *ki = NULL;
     if (mode == GHLHSR_PAINTER) {
@@ -955,7 +972,7 @@ static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
         qsort(ki, n, sizeof *ki, cmp_key);
         for (size_t i = 0; i < n; i++) {
             gks_raster_stroke st = { 0 };
-            draw_rec(r, c, &r->recs[ki[i].idx], DRAW_PLAIN, &st);
+            e = first_err(e, draw_rec(r, c, &r->recs[ki[i].idx], DRAW_PLAIN, &st));
         }
         gks_free(ki);
     } else if (mode == GHLHSR_HIDDEN_LINE) {
@@ -963,22 +980,23 @@ static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
             for (size_t i = 0; i < r->n_rec; i++) {
                 gks_raster_stroke st = { 0 };
                 if (!r->recs[i].overlay)
-                    draw_rec(r, c, &r->recs[i], pass ? DRAW_HL_LINES : DRAW_HL_AREAS, &st);
+                    e = first_err(e, draw_rec(r, c, &r->recs[i],
+                                              pass ? DRAW_HL_LINES : DRAW_HL_AREAS, &st));
             }
     } else { /* retained under another mode, the mode changed within the frame */
         for (size_t i = 0; i < r->n_rec; i++) {
             gks_raster_stroke st = { 0 };
             if (!r->recs[i].overlay)
-                draw_rec(r, c, &r->recs[i], immediate_mode(ws), &st);
+                e = first_err(e, draw_rec(r, c, &r->recs[i], immediate_mode(ws), &st));
         }
     }
     for (size_t i = 0; i < r->n_rec && overlays; i++) {
         gks_raster_stroke st = { 0 };
         if (r->recs[i].overlay)
-            draw_rec(r, c, &r->recs[i], DRAW_PLAIN, &st);
+            e = first_err(e, draw_rec(r, c, &r->recs[i], DRAW_PLAIN, &st));
     }
     *out = c;
-    return 0;
+    return e;
 }
 
 int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim)

@@ -1,0 +1,50 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# The large-scene curve of issue 21: bench/scale/scale for 10^4 ... 2*10^7 triangles (one FILL
+# AREA 3 each, ray traced at 1024^2 with a shadow), each in its own process, with 2 threads,
+# then 4*10^6 with 1 thread for the whole-frame speed-up; prints each goal's figure against
+# its goal. Usage: bench/scale/run.sh [--quick] [--no-build] [BUILD_DIR]
+#   --quick: up to 10^6 (and the speed-up at 10^6).  BUILD_DIR default build-scale (Release).
+set -e
+quick=0; build=1; dir=build-scale
+for a in "$@"; do
+  case "$a" in
+    --quick) quick=1 ;;
+    --no-build) build=0 ;;
+    *) dir=$a ;;
+  esac
+done
+src=$(cd "$(dirname "$0")/../.." && pwd)
+if [ $build = 1 ]; then
+  cmake -S "$src" -B "$dir" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake --build "$dir" -j2 --target scale > /dev/null
+fi
+bin=$(cd "$dir" && pwd)/bench/scale/scale
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+if [ $quick = 1 ]; then series="10000 100000 1000000"; big=1000000; sp=1000000
+else series="10000 100000 1000000 4000000 10000000 20000000"; big=10000000; sp=4000000; fi
+echo "# bench/scale/run.sh $* -- $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) CPUs"
+echo "# each row: one process (cold: first frame), 2 threads; load = 1-min load average before"
+for n in $series; do
+  load=$(cut -d' ' -f1 /proc/loadavg)
+  line=$(cd "$out" && "$bin" "$n" -t 2 -o "$out/s.png")
+  echo "$line load=$load" | tee -a "$out/rows"
+done
+load=$(cut -d' ' -f1 /proc/loadavg)
+one=$(cd "$out" && "$bin" "$sp" -t 1 -o "$out/s1.png")
+echo "$one threads=1 load=$load"
+cmp -s "$out/s1.png" "$out/s.png" || [ $sp != "${series##* }" ] || echo "# pictures of 1 and 2 threads differ!"
+awk -v big="$big" -v sp="$sp" -v one="$one" '
+function val(s, k,   i, a, n) { n = split(s, a, " "); for (i = 1; i <= n; i++) if (index(a[i], k "=") == 1) return substr(a[i], length(k) + 2); return "" }
+{ n = val($0, "n"); t[n] = val($0, "total"); r[n] = val($0, "rss"); b[n] = val($0, "B/tri"); last = n; c[n] = val($0, "us/call"); u[n] = val($0, "cpu"); l[n] = val($0, "load") }
+END {
+  for (k in t) if (k + 0 >= big * 0.99 && k + 0 <= big * 1.01) kb = k;
+  for (k in t) if (k + 0 >= sp * 0.99 && k + 0 <= sp * 1.01) ks = k;
+  printf "goal  10^7-class frame wall, 2 threads: %.2f s at n=%s (goal <= 6 s; process CPU %s s, load %s): %s\n", t[kb], kb, u[kb], l[kb], (t[kb] + 0 <= 6 ? "met" : "NOT met");
+  printf "goal  peak RSS: %.0f MiB at n=%s (goal <= 2048 MiB): %s\n", r[kb], kb, (r[kb] + 0 <= 2048 ? "met" : "NOT met");
+  t1 = val(one, "total");
+  printf "goal  whole-frame speed-up 1 -> 2 threads at n=%s: %.2f (goal >= 1.8): %s\n", ks, t1 / t[ks], (t1 / t[ks] >= 1.8 ? "met" : "NOT met");
+  printf "goal  GKS call chain: %s us per FILL AREA 3 at n=%s (goal <= 0.25): %s\n", c[kb], kb, (c[kb] + 0 <= 0.25 ? "met" : "NOT met");
+  printf "info  bytes per triangle resident at n=%s: %s; largest scene in 23 GB by that: %.2g triangles\n", last, b[last], 23e9 / b[last];
+}' "$out/rows"
