@@ -95,16 +95,31 @@ typedef struct {
     Gint_size size_raster;
 } Gdisp_space_size;
 
-/* ESCAPE data records: an integer array, a real array and a string. */
-typedef struct {
-    Gint num_ints;   const Gint *ints;
-    Gint num_floats; const Gfloat *floats;
-    size_t str_len;  const char *str;
+/* ESCAPE data records (ISO 8651-4: a union with one member per escape; escape_r1 ... for
+ * registered, escape_u1 ... for implementation-specific escapes). Every escape of this
+ * library takes the same record, the anonymous first member: an integer array, a real
+ * array and a string; the Gdata members exist for source compatibility and are never
+ * read. Output records live in the application's Gstore (gescape). */
+typedef union {
+    struct {
+        Gint num_ints;   const Gint *ints;
+        Gint num_floats; const Gfloat *floats;
+        size_t str_len;  const char *str;
+    };
+    Gdata escape_r1;
+    Gdata escape_u1;
 } Gescape_in_data;
-typedef struct {
-    Gint num_ints;   Gint *ints;      /* capacity in, count out */
-    Gint num_floats; Gfloat *floats;  /* capacity in, count out */
+typedef union {
+    struct {
+        Gint num_ints;   Gint *ints;      /* capacity in, count out (driver side) */
+        Gint num_floats; Gfloat *floats;  /* capacity in, count out (driver side) */
+    };
+    Gdata escape_r1;
+    Gdata escape_u1;
 } Gescape_out_data;
+/* Storage for results whose size only GKS knows (ISO 8651-4 3.9): gcreate_store,
+ * gdel_store; each call a store is passed to frees what it held before. */
+typedef struct gks_store_rec *Gstore;
 
 /* ERROR HANDLING procedure type: (error number, function identification, error file). */
 typedef void (*Gerr_handler)(Gint err_num, Gint func_num, const char *err_file);
@@ -157,29 +172,50 @@ GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag);
 GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mode);
 /* MESSAGE. Errors: 7, 20, 25, 36. */
 GKS_API void gmessage(Gint ws_id, const char *msg);
-/* ESCAPE. func_id: one of the GESC_* identifiers below. Errors: 8, 180, 181, 182. */
-GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out);
+/* ESCAPE (ISO 8651-4): func_id one of the GESC_* identifiers below. An escape that
+ * returns data (GESC_RT_STATS) puts it into *store_data (created by gcreate_store) and
+ * sets *out_data to it; for the others store_data and out_data may be NULL (*out_data is
+ * set to NULL). Errors: 8, 180, 181, 182, 300. */
+GKS_API void gescape(Gint func_id, const Gescape_in_data *in_data, Gstore *store_data,
+                     Gescape_out_data **out_data);
 /* EMERGENCY CLOSE GKS: callable in any state, never reports an error. */
 GKS_API void gemergency_close_gks(void);
 
-/* GKS metafile (GKSM) functions; format and item types in docs/METAFILE.md. Item data
- * records are character strings in the metafile's own field format.
- * WRITE ITEM TO GKSM: a user item (type 101..999) of `length` characters on the active MO
- * workstation ws_id. Errors: 5, 20, 25, 30, 32, 160 (type not > 100), 161 (length < 0). */
-GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data);
+/* GKS metafile (GKSM) functions; format and item types in docs/METAFILE.md.
+ * Item data record (ISO 8651-4 Gitem_data). This implementation keeps every record in
+ * the metafile's own character form: data.impl_dep holds its characters (size = number
+ * of characters, data = the characters, no terminating NUL needed); the decoded members
+ * of the standard's union are not used. */
+typedef struct {
+    Gint type;                         /* item type */
+    Gint length;                       /* item data record length */
+    union {
+        Gctrl_flag clear_ws;
+        Gupd_regen_flag upd_ws;
+        struct { Gdefer_mode defer_mode; Girg_mode irg_mode; } defer_st;
+        Gdata gdp_unsupp;
+        Gdata impl_dep;                /* this implementation: the record's characters */
+    } data;
+} Gitem_data;
+/* WRITE ITEM TO GKSM: a user item (type 101..999) of `length` characters
+ * (item_data->data.impl_dep) on the active MO workstation ws_id. Errors: 5, 20, 25, 30,
+ * 32, 160 (type not > 100), 161 (length < 0 or more than impl_dep.size). */
+GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const Gitem_data *item_data);
 /* GET ITEM TYPE FROM GKSM: type and data record length of the MI's current item.
  * Errors: 7, 20, 25, 34, 162 (no item left), 163 (item invalid). */
 GKS_API void gget_item_type(Gint ws_id, Gint *type, Gint *length);
-/* READ ITEM FROM GKSM: stores the first min(max_length, length) characters of the current
- * item's data record in data (a longer record is truncated) and makes the next item
- * current. Errors: 7, 20, 25, 34, 162, 163, 166 (max_length < 0, or > 0 with no data). */
-GKS_API void gread_item(Gint ws_id, Gint max_length, char *data);
+/* READ ITEM FROM GKSM: item_data->data.impl_dep.data is the caller's buffer; it receives
+ * the first min(max_length, length) characters of the current item's record
+ * (impl_dep.size = that count; type and length set) and the next item becomes current.
+ * Errors: 7, 20, 25, 34, 162, 163, 166 (max_length < 0, or > 0 with no buffer). */
+GKS_API void gread_item(Gint ws_id, Gint max_length, Gitem_data *item_data);
 /* INTERPRET ITEM: performs the recorded function (primitives in NDC3 with the recorded
  * normalization and clipping volume; workstation items on every active workstation),
- * decoding the record in the field format of the MI the last item was read from.
- * Errors: 7, 161 (length < 0), 164 (not a GKS item type), 165 (record invalid for the
- * type), 167 (user item), and those of the function performed. */
-GKS_API void ginterpret_item(Gint type, Gint length, const char *data);
+ * decoding the record (item_data->data.impl_dep, `length` characters) in the field
+ * format of the MI the last item was read from. Errors: 7, 161 (length < 0 or more than
+ * impl_dep.size), 164 (not a GKS item type), 165 (record invalid for the type), 167 (user
+ * item), and those of the function performed. */
+GKS_API void ginterpret_item(Gint type, Gint length, const Gitem_data *item_data);
 
 /* ESCAPE function identifiers of this implementation (negative = implementation specific,
  * as the standard reserves). Data records: ints[0] = workstation identifier, then as listed. */
@@ -316,7 +352,12 @@ typedef struct {
     Gint num_char_expans; Gfloat min_char_expan, max_char_expan;
     Gint num_pred_inds;
 } Gtext_facs;
-typedef struct { Gint_list int_styles; Gint_list hatch_styles; Gint num_pred_inds; } Gfill_facs;
+typedef struct {
+    Gint num_int_styles;
+    Gfill_int_style int_style[4];  /* the available interior styles */
+    Gint_list hatch_styles;        /* capacity: hatch_length; count out */
+    Gint num_pred_inds;
+} Gfill_facs;
 typedef struct {
     Gint_list types; Gint num_widths; Gfloat nom_width, min_width, max_width; Gint num_pred_inds;
 } Gedge_facs;
@@ -377,7 +418,7 @@ GKS_API void gset_text_align(const Gtext_align *text_align); /* 2000 */
 GKS_API void gset_fill_ind(Gint fill_ind);                  /* 80 */
 GKS_API void gset_fill_int_style(Gfill_int_style style);    /* 2000 */
 GKS_API void gset_fill_style_ind(Gint style_ind);           /* 84: index 0 */
-GKS_API void gset_pat_size(const Gvec *pat_size);           /* 87: width or height <= 0 */
+GKS_API void gset_pat_size(Gdouble x_size, Gdouble y_size); /* 87: width or height <= 0 */
 /* SET PATTERN REFERENCE POINT: also resets the pattern reference vectors to (1,0,0),
  * (0,1,0) and z to 0 (the GKS-3D meaning of the 2-D function). Errors: 8, 308. */
 GKS_API void gset_pat_ref_point(const Gpoint *ref_point);
@@ -431,7 +472,7 @@ GKS_API void ginq_text_align(Gint *err_ind, Gtext_align *text_align);
 GKS_API void ginq_fill_ind(Gint *err_ind, Gint *fill_ind);
 GKS_API void ginq_fill_int_style(Gint *err_ind, Gfill_int_style *fill_int_style);
 GKS_API void ginq_fill_style_ind(Gint *err_ind, Gint *fill_style_ind);
-GKS_API void ginq_pat_size(Gint *err_ind, Gvec *pat_size);
+GKS_API void ginq_pat_size(Gint *err_ind, Gdouble *x_size, Gdouble *y_size);
 GKS_API void ginq_pat_ref_point(Gint *err_ind, Gpoint *ref_point);
 GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *ref_point, Gvec3 vecs[2]);
 GKS_API void ginq_asfs(Gint *err_ind, Gasfs *asfs);
@@ -454,9 +495,9 @@ GKS_API void ginq_marker_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind
 GKS_API void ginq_text_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gtext_bundle *rep);
 GKS_API void ginq_fill_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gfill_bundle *rep);
 GKS_API void ginq_edge_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gedge_bundle *rep);
-/* Pattern: rep->colr_array has room for cap entries; rep->dims receives the pattern's
- * size; 2001 if cap < size_x * size_y (dims still set). */
-GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gint cap, Gint *err_ind, Gpat_rep *rep);
+/* Pattern (ISO 8651-4): *pat_rep points into *store (gcreate_store), which holds the
+ * representation and its colour array until the store is used again or deleted. */
+GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gstore *store, Gint *err_ind, Gpat_rep **pat_rep);
 /* Lists of defined indices, ascending (INQUIRE LIST OF ... INDICES). */
 GKS_API void ginq_list_line_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
 GKS_API void ginq_list_marker_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *inds, Gint *length_list);
@@ -476,10 +517,9 @@ GKS_API void ginq_text_extent3(Gint ws_id, const Gpoint3 *pos, const Gvec3 dir[2
 GKS_API void ginq_line_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gline_facs *facs, Gint *length_list);
 GKS_API void ginq_marker_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gmarker_facs *facs, Gint *length_list);
 GKS_API void ginq_text_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gtext_facs *facs, Gint *length_list);
-/* Fill area facilities: the two lists (interior styles, hatch styles) share the
- * capacity and start position; *length_list is the interior style count and
- * *length_hatch the hatch style count. */
-GKS_API void ginq_fill_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gfill_facs *facs, Gint *length_list, Gint *length_hatch);
+/* Fill area facilities (ISO 8651-4): all interior styles; the hatch styles from
+ * hatch_start_pos (capacity hatch_length); *act_hatch_length = their number. */
+GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_pos, Gint *err_ind, Gfill_facs *facs, Gint *act_hatch_length);
 GKS_API void ginq_pat_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_inds);
 GKS_API void ginq_edge_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gedge_facs *facs, Gint *length_list);
 GKS_API void ginq_pred_line_rep(Gint ws_type, Gint ind, Gint *err_ind, Gline_bundle *rep);
@@ -487,8 +527,8 @@ GKS_API void ginq_pred_marker_rep(Gint ws_type, Gint ind, Gint *err_ind, Gmarker
 GKS_API void ginq_pred_text_rep(Gint ws_type, Gint ind, Gint *err_ind, Gtext_bundle *rep);
 GKS_API void ginq_pred_fill_rep(Gint ws_type, Gint ind, Gint *err_ind, Gfill_bundle *rep);
 GKS_API void ginq_pred_edge_rep(Gint ws_type, Gint ind, Gint *err_ind, Gedge_bundle *rep);
-/* Predefined pattern: as ginq_pat_rep (cap, 2001). */
-GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gint cap, Gint *err_ind, Gpat_rep *rep);
+/* Predefined pattern: as ginq_pat_rep (Gstore). */
+GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gstore *store, Gint *err_ind, Gpat_rep **pat_rep);
 GKS_API void ginq_max_ws_st_tables(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables *lengths);
 /* INQUIRE LIST OF AVAILABLE GENERALIZED DRAWING PRIMITIVES: always empty here. */
 GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint num_elems_appl_list, Gint start_pos, Gint *err_ind, Gint_list *gdps, Gint *length_list);
@@ -647,10 +687,10 @@ GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *e
                                Gint_list *open_ws, Gint *length_list);
 GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                  Gint_list *active_ws, Gint *length_list);
-/* INQUIRE WORKSTATION CONNECTION AND TYPE: conn_id receives at most conn_size bytes
- * (NUL-terminated, truncated if needed); *conn_len the full length. */
-GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char *conn_id,
-                               size_t *conn_len, Gint *ws_type);
+/* INQUIRE WORKSTATION CONNECTION AND TYPE (ISO 8651-4): conn_id receives at most
+ * string_length bytes, NUL-terminated (truncated if needed). */
+GKS_API void ginq_ws_conn_type(Gint ws_id, Gint string_length, Gint *err_ind, char *conn_id,
+                               Gint *ws_type);
 GKS_API void ginq_ws_st(Gint ws_id, Gint *err_ind, Gws_st *ws_st);
 GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer_mode,
                                    Girg_mode *irg_mode, Gdisp_space_empty *disp_empty,
@@ -767,9 +807,6 @@ GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris);
  * table entries. Types and argument lists as ISO 8651-4 (NCAR's published header);
  * the GKS-3D forms append their entries (docs/BINDING.md).
  * --------------------------------------------------------------------------------- */
-/* Storage for inquiries whose results have a size only GKS knows (ISO 8651-4 3.9).
- * A store is reused (and its previous contents freed) by each call it is passed to. */
-typedef struct gks_store_rec *Gstore;
 /* CREATE STORE: *store receives a new, empty store. Errors (in *err_ind): 300. */
 GKS_API void gcreate_store(Gint *err_ind, Gstore *store);
 /* DELETE STORE: frees the store and what it holds (NULL is ignored). */

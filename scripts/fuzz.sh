@@ -26,7 +26,10 @@ mkdir -p "$out"
 # Every folder of src/c is a module with its headers next to its sources (src/c/CMakeLists.txt).
 incs=()
 while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
-flags=(-g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
+# float-cast-overflow and pointer-overflow named explicitly: gcc's UBSan leaves them out
+# (an out-of-range double -> int cast, NULL + 0), clang checks them when asked.
+flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-overflow
+       -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
        -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude)
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
@@ -34,9 +37,15 @@ clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c
 mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' | sort)
 clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthread -lm \
     -o "$out/fuzz_mi"
+# The state machine: random call sequences through the whole library.
+clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_state.c "${lib_srcs[@]}" -lpng -lpthread -lm \
+    -o "$out/fuzz_state"
+# The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
+clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
+    -o "$out/fuzz_scene"
 
 status=0
-for target in gksm mi; do
+for target in gksm mi state scene; do
     work="$out/corpus_$target"
     rm -rf "$work"
     cp -r "tests/fuzz/corpus_$target" "$work"

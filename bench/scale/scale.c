@@ -44,7 +44,7 @@ static void escape_int(int id, int ws, int v)
 {
     Gint ints[2] = { ws, v };
     Gescape_in_data in = { .num_ints = 2, .ints = ints };
-    gescape(id, &in, NULL);
+    gescape(id, &in, NULL, NULL);
 }
 
 int main(int argc, char **argv)
@@ -142,12 +142,18 @@ int main(int argc, char **argv)
     double w1 = wall();
     gupd_ws(1, GFLAG_PERFORM);
     double w2 = wall();
-    Gint ints[8] = { 0 };
     Gfloat fl[2] = { 0 };
-    Gint inw[1] = { 1 };
+    Gint inw[1] = { 1 }, serr;
     Gescape_in_data sin_ = { .num_ints = 1, .ints = inw };
-    Gescape_out_data sout = { .num_ints = 8, .ints = ints, .num_floats = 2, .floats = fl };
-    gescape(GESC_RT_STATS, &sin_, &sout);
+    Gstore store = NULL;
+    Gescape_out_data *sout = NULL;
+    gcreate_store(&serr, &store);
+    gescape(GESC_RT_STATS, &sin_, &store, &sout);
+    if (sout && sout->num_floats >= 2) {
+        fl[0] = sout->floats[0];
+        fl[1] = sout->floats[1];
+    }
+    gdel_store(store);
     gdeactivate_ws(1);
     gclose_ws(1);
     gclose_gks();

@@ -232,8 +232,7 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
     (void)odr_len;
     if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
         return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
-    Gescape_in_data in = { 0, NULL, 0, NULL, 0, NULL };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
+    Gescape_in_data in = { { 0, NULL, 0, NULL, 0, NULL } };
     fint nrec = *lidr;
     long ws = 0;
     Gint wsid = 0;
@@ -260,7 +259,7 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         in.str = name;
         in.str_len = total;
     }
-    gescape(*fctid, &in, &out);
+    gescape(*fctid, &in, NULL, NULL);
     free(name);
 }
 
@@ -391,14 +390,13 @@ FAPI void FNAME(gqmntn, GQMNTN)(fint *errind, fint *maxtnr)
 FAPI void FNAME(gqwkc, GQWKC)(const fint *wkid, fint *errind, fint *conid, fint *wtype)
 {
     char conn[32] = "";
-    size_t len = 0;
     Gint t = 0;
     long v = -1;
-    ginq_ws_conn_type(*wkid, sizeof conn, errind, conn, &len, &t);
+    ginq_ws_conn_type(*wkid, (Gint)sizeof conn, errind, conn, &t);
     if (*errind)
         return;
-    if (len >= sizeof conn || parse_int(conn, strlen(conn), &v))
-        v = -1;
+    if (strlen(conn) >= sizeof conn - 1 || parse_int(conn, strlen(conn), &v))
+        v = -1; /* a longer identifier is no integer CONID */
     *conid = (fint)v;
     *wtype = t;
 }

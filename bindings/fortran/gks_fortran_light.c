@@ -216,13 +216,12 @@ int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len)
         return 0;
     }
     Gint ints[3] = { 0, 0, 0 };
-    Gescape_in_data in = { 0, ints, 0, NULL, 0, NULL };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
+    Gescape_in_data in = { { 0, ints, 0, NULL, 0, NULL } };
     int ok = lidr >= 1 && idr_len >= 20;
     for (int i = 0; ok && i <= nvals; i++)
         ok = !i10_field(idr, idr_len, i, &ints[i]);
     if (ok)
         in.num_ints = nvals + 1;
-    gescape(fctid, &in, &out);
+    gescape(fctid, &in, NULL, NULL);
     return 1;
 }

@@ -19,11 +19,19 @@ static Gint fitting(fint len, fint ldr, size_t elem_len)
     return len >= 0 && (size_t)len > capacity(ldr, elem_len) ? -1 : len;
 }
 
+/* DATREC's characters as a Gitem_data record (the core keeps records character-coded). */
+static Gitem_data item_of(const char *rec, size_t n)
+{
+    Gitem_data d = { .data.impl_dep = { n, (void *)rec } };
+    return d;
+}
+
 /* GWITM(WKID, TYPE, IDRL, LDR, DATREC) */
 FAPI void FNAME(gwitm, GWITM)(const fint *wkid, const fint *type, const fint *idrl,
                               const fint *ldr, const char *datrec, size_t datrec_len)
 {
-    gwrite_item(*wkid, *type, fitting(*idrl, *ldr, datrec_len), datrec);
+    Gitem_data d = item_of(datrec, capacity(*ldr, datrec_len));
+    gwrite_item(*wkid, *type, fitting(*idrl, *ldr, datrec_len), &d);
 }
 
 /* GGTITM(WKID, TYPE, IDRL) */
@@ -46,12 +54,14 @@ FAPI void FNAME(grditm, GRDITM)(const fint *wkid, const fint *midrl, const fint 
     Gint max = *midrl;
     if (max > 0 && (size_t)max > cap)
         max = (Gint)cap;
-    gread_item(*wkid, max, cap ? datrec : NULL);
+    Gitem_data d = item_of(cap ? datrec : NULL, cap);
+    gread_item(*wkid, max, &d);
 }
 
 /* GIITM(TYPE, IDRL, LDR, DATREC) */
 FAPI void FNAME(giitm, GIITM)(const fint *type, const fint *idrl, const fint *ldr,
                               const char *datrec, size_t datrec_len)
 {
-    ginterpret_item(*type, fitting(*idrl, *ldr, datrec_len), datrec);
+    Gitem_data d = item_of(datrec, capacity(*ldr, datrec_len));
+    ginterpret_item(*type, fitting(*idrl, *ldr, datrec_len), &d);
 }

@@ -136,9 +136,21 @@ FAPI void FNAME(gpm3, GPM3)(const fint *n, const freal *px, const freal *py, con
     free(l.points);
 }
 
+/* TEXT's string: an embedded CHAR(0) would end the C string and silently shorten the
+ * text, so it becomes DEL (127), a code the core rejects with 101 in the standard's
+ * order of checks (issue 20: GTX('AB'//CHAR(0)//'CD') is 101, not "AB"). */
+static char *text_str(const char *s, size_t len, Gint fctid)
+{
+    char *t = fstr(s, len, fctid);
+    for (size_t i = 0; t && i < len; i++)
+        if (t[i] == '\0')
+            t[i] = 127;
+    return t;
+}
+
 static void text_n(freal px, freal py, const char *s, size_t len)
 {
-    char *t = fstr(s, len, GFN_TX);
+    char *t = text_str(s, len, GFN_TX);
     if (!t)
         return;
     Gpoint p = { px, py };
@@ -164,7 +176,7 @@ FAPI void FNAME(gtxs, GTXS)(const freal *px, const freal *py, const fint *lstr,
 FAPI void FNAME(gtx3, GTX3)(const freal *px, const freal *py, const freal *pz, const freal *tdx,
                             const freal *tdy, const freal *tdz, const char *str, size_t len)
 {
-    char *t = fstr(str, len, GFN_TX3);
+    char *t = text_str(str, len, GFN_TX3);
     if (!t)
         return;
     Gpoint3 p = { *px, *py, *pz };
@@ -338,8 +350,7 @@ FAPI void FNAME(gstxal, GSTXAL)(const fint *h, const fint *v)
 
 FAPI void FNAME(gspa, GSPA)(const freal *szx, const freal *szy)
 {
-    Gvec v = { *szx, *szy };
-    gset_pat_size(&v);
+    gset_pat_size(*szx, *szy);
 }
 
 FAPI void FNAME(gsparf, GSPARF)(const freal *x, const freal *y)
@@ -512,19 +523,15 @@ FAPI void FNAME(gqtxal, GQTXAL)(fint *errind, fint *h, fint *v)
  * along the first two coordinates of the pattern reference vectors). */
 FAPI void FNAME(gqpa, GQPA)(fint *errind, freal *pwx, freal *pwy, freal *phx, freal *phy)
 {
-    Gvec sz;
-    Gpoint3 p;
-    Gvec3 v[2];
-    ginq_pat_size(errind, &sz);
+    Gvec w, h;
+    ginq_pat_width_vec(errind, &w);
     if (*errind)
         return;
-    ginq_pat_ref_point_vecs(errind, &p, v);
-    double l0 = sqrt(v[0].delta_x * v[0].delta_x + v[0].delta_y * v[0].delta_y + v[0].delta_z * v[0].delta_z);
-    double l1 = sqrt(v[1].delta_x * v[1].delta_x + v[1].delta_y * v[1].delta_y + v[1].delta_z * v[1].delta_z);
-    *pwx = (freal)(sz.delta_x * v[0].delta_x / l0);
-    *pwy = (freal)(sz.delta_x * v[0].delta_y / l0);
-    *phx = (freal)(sz.delta_y * v[1].delta_x / l1);
-    *phy = (freal)(sz.delta_y * v[1].delta_y / l1);
+    ginq_pat_ht_vec(errind, &h);
+    *pwx = (freal)w.delta_x;
+    *pwy = (freal)w.delta_y;
+    *phx = (freal)h.delta_x;
+    *phy = (freal)h.delta_y;
 }
 
 FAPI void FNAME(gqparf, GQPARF)(fint *errind, freal *x, freal *y)
@@ -655,22 +662,20 @@ static void pattern_out(const Gpat_rep *r, fint nmx, fint mmx, fint *errind, fin
             parray[(size_t)i + (size_t)j * (size_t)nmx] = r->colr_array[(size_t)j * (size_t)*n + (size_t)i];
 }
 
-#define PAT_CAP (256 * 256)
-
 /* GQPAR(WKID, PAI, TYPE, NMX, MMX, ERRIND, N, M, PARRAY(NMX, MMX)) */
 FAPI void FNAME(gqpar, GQPAR)(const fint *wkid, const fint *pai, const fint *type,
                               const fint *nmx, const fint *mmx, fint *errind, fint *n, fint *m,
                               fint *parray)
 {
-    Gpat_rep r = { { 0, 0 }, alloc_array(PAT_CAP, sizeof(Gint)) };
-    if (!r.colr_array) {
-        *errind = 300;
+    Gstore st = NULL;
+    Gpat_rep *r = NULL;
+    gcreate_store(errind, &st);
+    if (*errind)
         return;
-    }
-    ginq_pat_rep(*wkid, *pai, (Ginq_type)*type, PAT_CAP, errind, &r);
+    ginq_pat_rep(*wkid, *pai, (Ginq_type)*type, &st, errind, &r);
     if (!*errind)
-        pattern_out(&r, *nmx, *mmx, errind, n, m, parray);
-    free(r.colr_array);
+        pattern_out(r, *nmx, *mmx, errind, n, m, parray);
+    gdel_store(st);
 }
 
 /* List of defined indices: N = element wanted (1-based), N = 0 only the count. */
@@ -704,7 +709,7 @@ INDS(gqeedi, GQEEDI, ginq_list_edge_inds)
 static void extent_n(fint wkid, freal px, freal py, const char *s, size_t len, fint *errind,
                      freal *cpx, freal *cpy, freal *tx, freal *ty)
 {
-    char *t = fstr(s, len, GFN_TX);
+    char *t = text_str(s, len, GFN_TX);
     if (!t) {
         *errind = 300;
         return;
@@ -748,7 +753,7 @@ FAPI void FNAME(gqtxx3, GQTXX3)(const fint *wkid, const freal *px, const freal *
                                 freal *cpy, freal *cpz, freal *tx, freal *ty, freal *tz,
                                 size_t len)
 {
-    char *t = fstr(str, len, GFN_TX3);
+    char *t = text_str(str, len, GFN_TX3);
     if (!t) {
         *errind = 300;
         return;
@@ -862,20 +867,20 @@ FAPI void FNAME(gqtxf, GQTXF)(const fint *wtype, const fint *n, fint *errind, fi
 FAPI void FNAME(gqfaf, GQFAF)(const fint *wtype, const fint *ni, const fint *nh, fint *errind,
                               fint *nis, fint *is, fint *nhs, fint *hs, fint *npfai)
 {
-    Gint vi[64], vh[64], li = 0, lh = 0;
-    Gfill_facs f = { { 0, vi }, { 0, vh }, 0 };
-    ginq_fill_facs(*wtype, 64, 0, errind, &f, &li, &lh);
+    Gint vh[64], lh = 0;
+    Gfill_facs f = { .hatch_styles = { 0, vh } };
+    ginq_fill_facs(*wtype, 64, 0, errind, &f, &lh);
     if (*errind)
         return;
-    *nis = li;
+    *nis = f.num_int_styles;
     *nhs = lh;
     *npfai = f.num_pred_inds;
-    if (*ni < 0 || *ni > f.int_styles.num_ints || *nh < 0 || *nh > f.hatch_styles.num_ints) {
+    if (*ni < 0 || *ni > f.num_int_styles || *nh < 0 || *nh > f.hatch_styles.num_ints) {
         *errind = 2002;
         return;
     }
     if (*ni > 0)
-        *is = vi[*ni - 1];
+        *is = (fint)f.int_style[*ni - 1];
     if (*nh > 0)
         *hs = vh[*nh - 1];
 }
@@ -973,15 +978,15 @@ FAPI void FNAME(gqpedr, GQPEDR)(const fint *wtype, const fint *edi, fint *errind
 FAPI void FNAME(gqppar, GQPPAR)(const fint *wtype, const fint *pai, const fint *nmx,
                                 const fint *mmx, fint *errind, fint *n, fint *m, fint *parray)
 {
-    Gpat_rep r = { { 0, 0 }, alloc_array(PAT_CAP, sizeof(Gint)) };
-    if (!r.colr_array) {
-        *errind = 300;
+    Gstore st = NULL;
+    Gpat_rep *r = NULL;
+    gcreate_store(errind, &st);
+    if (*errind)
         return;
-    }
-    ginq_pred_pat_rep(*wtype, *pai, PAT_CAP, errind, &r);
+    ginq_pred_pat_rep(*wtype, *pai, &st, errind, &r);
     if (!*errind)
-        pattern_out(&r, *nmx, *mmx, errind, n, m, parray);
-    free(r.colr_array);
+        pattern_out(r, *nmx, *mmx, errind, n, m, parray);
+    gdel_store(st);
 }
 
 /* GQLWK(WTYPE, ERRIND, MPLBTE, MPMBTE, MTXBTE, MFABTE, MPAI, MCOLI) */

@@ -170,9 +170,8 @@ static void light(int ind, int type, const real *colr, const real *pos)
 static void escape_ints(int func, int n, Gint v1, Gint v2)
 {
     Gint ints[3] = { WS, v1, v2 };
-    Gescape_in_data in = { n + 1, ints, 0, NULL, 0, NULL };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
-    gescape(func, &in, &out);
+    Gescape_in_data in = { { n + 1, ints, 0, NULL, 0, NULL } };
+    gescape(func, &in, NULL, NULL);
 }
 
 /* One picture: file base name, viewport size in pixels, HLHSR mode. 0 = written,
@@ -181,9 +180,8 @@ static int picture(const char *base, int size, int mode, int scene, int clip_sec
 {
     static const real white[3] = { 1.0f, 1.0f, 1.0f }, origin[3] = { 0.0f, 0.0f, 0.0f };
     gopen_ws(WS, "1", GWS_TYPE_PNG);
-    Gescape_in_data in = { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
-    gescape(GESC_SET_FILE_NAME, &in, &out);
+    Gescape_in_data in = { { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base } };
+    gescape(GESC_SET_FILE_NAME, &in, NULL, NULL);
     last_error = 0;
     gset_hlhsr_mode(WS, mode);
     if (last_error == 511) {

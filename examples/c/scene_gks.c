@@ -119,7 +119,7 @@ static void escape_int(Gint func, Gint a, Gint b, int nb)
 {
     Gint ints[3] = { WS, a, b };
     Gescape_in_data in = { .num_ints = nb ? 3 : 2, .ints = ints };
-    gescape(func, &in, NULL);
+    gescape(func, &in, NULL, NULL);
 }
 
 static int setup_lights(const scene_io_light *lights, size_t n, double ambient, int *clamped,
@@ -255,7 +255,7 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
         Gint ints[1] = { WS };
         Gfloat zero[1] = { 0 };
         Gescape_in_data in = { .num_ints = 1, .ints = ints, .num_floats = 1, .floats = zero };
-        gescape(GESC_RT_CUTOFF, &in, NULL);
+        gescape(GESC_RT_CUTOFF, &in, NULL, NULL);
     }
     if (opt->depth > 0 || opt->spd)
         escape_int(GESC_RT_MAX_DEPTH, opt->depth > 0 ? opt->depth : 5, 0, 0);
@@ -285,22 +285,23 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
     res->draw_s = t1 - t0;
     res->frame_s = t2 - t1;
 
-    Gint si[8] = { 0 };
-    Gfloat sf[2] = { 0 };
     Gint ints[1] = { WS };
     Gescape_in_data in = { .num_ints = 1, .ints = ints };
-    Gescape_out_data out = { 8, si, 2, sf };
-    Gint in_h, before, after;
+    Gstore store = NULL;
+    Gescape_out_data *out = NULL;
+    Gint in_h, before, after, serr;
+    gcreate_store(&serr, &store);
     ginq_err_st(&in_h, &before);
-    gescape(GESC_RT_STATS, &in, &out);
+    gescape(GESC_RT_STATS, &in, &store, &out);
     ginq_err_st(&in_h, &after);
-    if (out.num_ints == 8 && out.num_floats == 2) {
+    if (out && out->num_ints == 8 && out->num_floats == 2) {
         res->have_stats = 1;
         for (int k = 0; k < 8; k++)
-            res->stats[k] = si[k];
-        res->build_s = sf[0];
-        res->render_s = sf[1];
+            res->stats[k] = out->ints[k];
+        res->build_s = out->floats[0];
+        res->render_s = out->floats[1];
     }
+    gdel_store(store);
     gdeactivate_ws(WS);
     gclose_ws(WS);
     Gint last = 0;

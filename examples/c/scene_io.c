@@ -456,8 +456,10 @@ static int sio_nff_view(sio_reader *r)
                          a[0] == floor(a[0]) && a[1] == floor(a[1])))
                 rc = sio_fail(r, SCENE_IO_ERR_SYNTAX,
                               "resolution %g %g: need two integers in 1..65536", a[0], a[1]);
-            v.res_x = (int)a[0];
-            v.res_y = (int)a[1];
+            if (!rc) { /* converted only once in range (an out-of-range cast is UB) */
+                v.res_x = (int)a[0];
+                v.res_y = (int)a[1];
+            }
             break;
         }
         if (!rc)

@@ -35,9 +35,8 @@ static void round_matrix(Gmatrix3 m)
 
 static void escape_ints(int func, int n, const Gint *ints)
 {
-    Gescape_in_data in = { n, ints, 0, NULL, 0, NULL };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
-    gescape(func, &in, &out);
+    Gescape_in_data in = { { n, ints, 0, NULL, 0, NULL } };
+    gescape(func, &in, NULL, NULL);
 }
 
 static void area_props(real amb, real dif, real spec, real spexp)
@@ -51,9 +50,8 @@ static void picture(const char *base, int size, int mode, const real *x, const r
                     real z[N + 1][N + 1])
 {
     gopen_ws(WS, "1", GWS_TYPE_PNG);
-    Gescape_in_data in = { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base };
-    Gescape_out_data out = { 0, NULL, 0, NULL };
-    gescape(GESC_SET_FILE_NAME, &in, &out);
+    Gescape_in_data in = { { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base } };
+    gescape(GESC_SET_FILE_NAME, &in, NULL, NULL);
     gset_hlhsr_mode(WS, mode);
     gactivate_ws(WS);
     Glimit win = { 0.0f, 1.0f, 0.0f, 1.0f }, vp = { 0.0f, (real)size, 0.0f, (real)size };

@@ -153,7 +153,7 @@ static void test_attr_sets(void **state)
     gopen_gks(NULL, 0);
     gset_char_ht(0.05);
     gset_char_up_vec(&(Gvec){ -1, 0 });
-    gset_pat_size(&(Gvec){ 0.2, 0.3 });
+    gset_pat_size(0.2, 0.3);
     gset_pat_ref_point(&(Gpoint){ 0.4, 0.6 });
     gset_fill_ind(3);
     ginq_cur_prim_attrs(&e, &p);

@@ -44,7 +44,7 @@ static void test_defaults(void **state)
     Gfill_int_style is;
     ginq_fill_int_style(&e, &is); assert_int_equal(is, GSTYLE_HOLLOW);
     ginq_fill_style_ind(&e, &i); assert_int_equal(i, 1);
-    ginq_pat_size(&e, &v); assert_true(v.delta_x == 1 && v.delta_y == 1);
+    ginq_pat_size(&e, &v.delta_x, &v.delta_y); assert_true(v.delta_x == 1 && v.delta_y == 1);
     Gpoint3 rp;
     Gvec3 rv[2];
     ginq_pat_ref_point_vecs(&e, &rp, rv);
@@ -108,8 +108,8 @@ static void test_individual_round_trips(void **state)
     ginq_fill_int_style(&e, &is); assert_int_equal(is, GSTYLE_HATCH);
     gset_fill_style_ind(-4); ginq_fill_style_ind(&e, &i); assert_int_equal(i, -4);
     gset_fill_colr_ind(3); ginq_fill_colr_ind(&e, &i); assert_int_equal(i, 3);
-    Gvec ps = { 0.1, 0.2 };
-    gset_pat_size(&ps); ginq_pat_size(&e, &v); assert_true(v.delta_x == 0.1 && v.delta_y == 0.2);
+    gset_pat_size(0.1, 0.2); ginq_pat_size(&e, &v.delta_x, &v.delta_y);
+    assert_true(v.delta_x == 0.1 && v.delta_y == 0.2);
     Gpoint3 rp3 = { 1, 2, 3 }, rq;
     Gvec3 rv[2] = { { 0, 0, 2 }, { 0, 1, 0 } }, rw[2];
     gset_pat_ref_point_vecs(&rp3, rv);
@@ -184,8 +184,7 @@ static void test_setter_errors(void **state)
     gset_fill_int_style((Gfill_int_style)4); expect_error(2000, GFN_SFAIS);
     gset_fill_style_ind(0); expect_error(84, GFN_SFASI);
     gset_fill_colr_ind(-1); expect_error(92, GFN_SFACI);
-    Gvec ps = { 0, 1 };
-    gset_pat_size(&ps); expect_error(87, GFN_SPA);
+    gset_pat_size(0, 1); expect_error(87, GFN_SPA);
     Gpoint pn = { NAN, 0 };
     gset_pat_ref_point(&pn); expect_error(308, GFN_SPARF);
     Gpoint3 p3 = { 0, 0, 0 };
@@ -281,20 +280,22 @@ static void test_representations(void **state)
     ginq_edge_rep(1, 5, GINQ_SET, &e, &eg); assert_int_equal(e, 501);
     gset_edge_rep(1, 0, &eb); expect_error(500, GFN_SEDR);
     /* Pattern. */
-    Gint pc[6] = { 1, 2, 3, 4, 5, 6 }, got[6];
-    Gpat_rep pr = { { 3, 2 }, pc }, pg = { { 0, 0 }, got };
+    Gint pc[6] = { 1, 2, 3, 4, 5, 6 };
+    Gpat_rep pr = { { 3, 2 }, pc }, *pg = NULL;
     gset_pat_rep(1, 5, &pr);
     expect_no_error();
-    ginq_pat_rep(1, 5, GINQ_SET, 6, &e, &pg);
+    Gstore st = NULL;
+    gcreate_store(&e, &st);
+    ginq_pat_rep(1, 5, GINQ_SET, &st, &e, &pg);
     assert_int_equal(e, 0);
-    assert_true(pg.dims.size_x == 3 && pg.dims.size_y == 2);
-    assert_memory_equal(got, pc, sizeof pc);
-    ginq_pat_rep(1, 5, GINQ_REALIZED, 6, &e, &pg);
-    assert_true(got[0] == 1 && got[1] == 1); /* colour 2 undefined on the null ws -> 1 */
-    ginq_pat_rep(1, 5, GINQ_SET, 5, &e, &pg);
-    assert_int_equal(e, 2001);
-    assert_int_equal(pg.dims.size_x, 3);
-    ginq_pat_rep(1, 6, GINQ_SET, 6, &e, &pg); assert_int_equal(e, 88);
+    assert_true(pg->dims.size_x == 3 && pg->dims.size_y == 2);
+    assert_memory_equal(pg->colr_array, pc, sizeof pc);
+    ginq_pat_rep(1, 5, GINQ_REALIZED, &st, &e, &pg); /* the store is reused */
+    assert_true(pg->colr_array[0] == 1 && pg->colr_array[1] == 1); /* colour 2 undefined -> 1 */
+    ginq_pat_rep(1, 5, GINQ_SET, NULL, &e, &pg);
+    assert_int_equal(e, 2003); /* no store */
+    ginq_pat_rep(1, 6, GINQ_SET, &st, &e, &pg); assert_int_equal(e, 88);
+    gdel_store(st);
     Gpat_rep pbad = { { 0, 2 }, pc };
     gset_pat_rep(1, 5, &pbad); expect_error(91, GFN_SPAR);
     pc[3] = -1;
@@ -340,11 +341,12 @@ static void test_description_tables(void **state)
     assert_int_equal(len, 3);
     assert_true(fp[2].font == 1 && fp[2].prec == GPREC_STROKE);
     Gint hs[16];
-    Gfill_facs ff = { { 0, buf }, { 0, hs }, 0 };
+    Gfill_facs ff = { .hatch_styles = { 0, hs } };
     Gint lh;
-    ginq_fill_facs(GWS_TYPE_PNG, 16, 0, &e, &ff, &len, &lh);
+    ginq_fill_facs(GWS_TYPE_PNG, 16, 0, &e, &ff, &lh);
     assert_int_equal(e, 0);
-    assert_int_equal(len, 4);
+    assert_int_equal(ff.num_int_styles, 4);
+    assert_int_equal(ff.int_style[3], GSTYLE_HATCH);
     assert_int_equal(lh, 12);
     assert_int_equal(hs[11], -12);
     Gint np;
@@ -372,15 +374,19 @@ static void test_description_tables(void **state)
     ginq_pred_fill_rep(GWS_TYPE_PNG, 9, &e, &fb); assert_int_equal(e, 82);
     Gedge_bundle eb;
     ginq_pred_edge_rep(GWS_TYPE_PNG, 9, &e, &eb); assert_int_equal(e, 502);
-    Gint pc[16];
-    Gpat_rep pr = { { 0, 0 }, pc };
-    ginq_pred_pat_rep(GWS_TYPE_PNG, 1, 16, &e, &pr);
+    Gstore st = NULL;
+    Gpat_rep *pr = NULL;
+    gcreate_store(&e, &st);
+    ginq_pred_pat_rep(GWS_TYPE_PNG, 1, &st, &e, &pr);
     assert_int_equal(e, 0);
-    assert_true(pr.dims.size_x == 2 && pr.dims.size_y == 2 && pc[0] == 1 && pc[1] == 0);
-    ginq_pred_pat_rep(GWS_TYPE_PNG, 2, 4, &e, &pr);
-    assert_int_equal(e, 2001);
-    ginq_pred_pat_rep(GWS_TYPE_PNG, 4, 16, &e, &pr);
+    assert_true(pr->dims.size_x == 2 && pr->dims.size_y == 2 && pr->colr_array[0] == 1 &&
+                pr->colr_array[1] == 0);
+    ginq_pred_pat_rep(GWS_TYPE_PNG, 2, &st, &e, &pr);
+    assert_int_equal(e, 0);
+    assert_int_equal(pr->dims.size_x * pr->dims.size_y, 16);
+    ginq_pred_pat_rep(GWS_TYPE_PNG, 4, &st, &e, &pr);
     assert_int_equal(e, 89);
+    gdel_store(st);
     Gmax_ws_st_tables mt;
     ginq_max_ws_st_tables(GWS_TYPE_PNG, &e, &mt);
     assert_true(e == 0 && mt.line_bundles == 20 && mt.colr_reps == 256 && mt.edge_bundles == 20);
@@ -471,8 +477,7 @@ static void test_asf_resolution_at_driver(void **state)
     gset_asfs(&a);
     gset_fill_int_style(GSTYLE_PAT);
     gset_fill_style_ind(1);
-    Gvec ps = { 0.1, 0.2 };
-    gset_pat_size(&ps);
+    gset_pat_size(0.1, 0.2);
     Gpoint rp = { 0.3, 0.4 };
     gset_pat_ref_point(&rp);
     gfill_area(&l);

@@ -98,8 +98,8 @@ static void test_transformation_and_output_arguments(void **u)
     Gpoint_list one = { 1, p }, two = { 2, p };
     EXPECT_ERROR(gpolyline(&one), 100, GFN_PL);
     EXPECT_ERROR(gfill_area(&two), 100, GFN_FA);
-    EXPECT_ERROR(gescape(12345, NULL, NULL), 180, GFN_ESC);
-    EXPECT_ERROR(gescape(GESC_SET_FILE_NAME, NULL, NULL), 182, GFN_ESC);
+    EXPECT_ERROR(gescape(12345, NULL, NULL, NULL), 180, GFN_ESC);
+    EXPECT_ERROR(gescape(GESC_SET_FILE_NAME, NULL, NULL, NULL), 182, GFN_ESC);
     /* hostile coordinates: no error, no crash */
     Gpoint h[3] = { { 0, 0 }, { 1e300, -1e300 }, { 0.0 / 0.0, 1 } };
     Gpoint_list hl = { 3, h };
@@ -141,11 +141,9 @@ static void test_inquiries(void **u)
     ginq_ws_st(1, &err, &st);
     assert_int_equal(err, 25);
     char conn[4];
-    size_t clen;
     Gint type;
-    ginq_ws_conn_type(3, sizeof conn, &err, conn, &clen, &type);
+    ginq_ws_conn_type(3, (Gint)sizeof conn, &err, conn, &type);
     assert_int_equal(err, 0);
-    assert_int_equal(clen, 7);
     assert_string_equal(conn, "pic"); /* truncated to the buffer */
     assert_int_equal(type, GWS_TYPE_NULL);
     Gws_cat cat;

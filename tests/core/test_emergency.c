@@ -23,6 +23,7 @@
 #include <sys/resource.h>
 #include <cmocka.h>
 #include <gks.h>
+#include "item_util.h"
 
 void gks_alloc_fail_after(long n);
 long gks_alloc_count(void);
@@ -147,8 +148,8 @@ static void workload(void)
         gget_item_type(6, &type, &len);
         if (type <= 0 || len < 0 || len > (Gint)sizeof buf)
             break;
-        gread_item(6, (Gint)sizeof buf, buf);
-        ginterpret_item(type, len, buf);
+        gread_item(6, (Gint)sizeof buf, RBUF(buf));
+        ginterpret_item(type, len, ITEMN(buf, len));
     }
     gdeactivate_ws(7);
     gclose_ws(7);

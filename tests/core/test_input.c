@@ -163,9 +163,8 @@ static void test_every_category_is_38(void **unused)
     const Gws_cat cats[4] = { GCAT_OUT, GCAT_WISS, GCAT_MO, GCAT_MI };
     for (int k = 0; k < 4; k++) {
         Gint type;
-        size_t len;
         char conn[64];
-        ginq_ws_conn_type(ids[k], sizeof conn, &err, conn, &len, &type);
+        ginq_ws_conn_type(ids[k], (Gint)sizeof conn, &err, conn, &type);
         ginq_ws_cat(type, &err, &cat);
         assert_int_equal(cat, cats[k]);
         expect_all(ids[k], 38);

@@ -38,8 +38,8 @@ static void open_with_script(const char *script)
     gactivate_ws(WS);
     write_script("input_script.txt", script);
     Gint id = WS;
-    Gescape_in_data in = { 1, &id, 0, NULL, 16, "input_script.txt" };
-    gescape(GESC_INPUT_SCRIPT, &in, NULL);
+    Gescape_in_data in = { { 1, &id, 0, NULL, 16, "input_script.txt" } };
+    gescape(GESC_INPUT_SCRIPT, &in, NULL, NULL);
     assert_int_equal(n_captured, 0);
 }
 
@@ -189,8 +189,8 @@ static void test_class_mode_pet(void **u)
                     }
                     write_script("input_script.txt", class_line[cls - GIN_LOC]);
                     Gint id = WS;
-                    Gescape_in_data in = { 1, &id, 0, NULL, 16, "input_script.txt" };
-                    gescape(GESC_INPUT_SCRIPT, &in, NULL);
+                    Gescape_in_data in = { { 1, &id, 0, NULL, 16, "input_script.txt" } };
+                    gescape(GESC_INPUT_SCRIPT, &in, NULL, NULL);
                     init_dev(cls, pet);
                     set_mode(cls, m, echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO);
                     assert_int_equal(n_captured, 0);
@@ -702,9 +702,9 @@ static void test_env_and_escape(void **u)
     greq_choice(1, 1, &st, &c);
     assert_true(st == GIN_STATUS_OK && c == 5);
     Gint id = 2;
-    Gescape_in_data in = { 1, &id, 0, NULL, 12, "no/such/file" };
+    Gescape_in_data in = { { 1, &id, 0, NULL, 12, "no/such/file" } };
     n_captured = 0;
-    gescape(GESC_INPUT_SCRIPT, &in, NULL);
+    gescape(GESC_INPUT_SCRIPT, &in, NULL, NULL);
     assert_int_equal(last_err(), 182);
     reset_gks();
 }

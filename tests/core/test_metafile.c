@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <cmocka.h>
 #include "core_util.h"
+#include "item_util.h"
 #include "png_util.h"
 
 enum { WS_OUT = 1, WS_MO = 2, WS_MI = 3, WS_NULL = 4 };
@@ -40,7 +41,7 @@ static void scene_2d(Gint ws)
     Gcolr_rep c2 = { { 1, 0, 0 } }, c3 = { { 0, 0.6, 0 } }, c4 = { { 0, 0, 1 } },
               c5 = { { 0.9, 0.8, 0.1 } }, c6 = { { 0.3, 0.3, 0.3 } };
     Gint ss[2] = { ws, 2 }; /* anti-aliasing by 2 x 2 supersampling */
-    gescape(GESC_PNG_SUPERSAMPLE, &(Gescape_in_data){ 2, ss, 0, NULL, 0, NULL }, NULL);
+    gescape(GESC_PNG_SUPERSAMPLE, &(Gescape_in_data){ { 2, ss, 0, NULL, 0, NULL } }, NULL, NULL);
     gset_ws_win(ws, &(Glimit){ 0, 1, 0, 0.98 });
     gset_ws_vp(ws, &(Glimit){ 0, 1000, 0, 980 });
     gset_colr_rep(ws, 2, &c2);
@@ -81,7 +82,7 @@ static void scene_2d(Gint ws)
     gfill_area(&(Gpoint_list){ 3, tri });
     gset_fill_int_style(GSTYLE_PAT);
     gset_fill_style_ind(1);
-    gset_pat_size(&(Gvec){ 0.05, 0.04 });
+    gset_pat_size(0.05, 0.04);
     gset_pat_ref_point(&(Gpoint){ 0.35, 0.05 });
     gfill_area(&(Gpoint_list){ 4, sq });
     gset_fill_ind(3);
@@ -261,7 +262,7 @@ static int interpret_all(Gint mi, int *last_err)
             break;
         }
         buf = realloc(buf, (size_t)len + 1);
-        gread_item(mi, len, buf);
+        gread_item(mi, len, ITEMN(buf, len));
         if (n_captured != before) {
             *last_err = captured[before].err;
             break;
@@ -271,7 +272,7 @@ static int interpret_all(Gint mi, int *last_err)
             break;
         if (type > 100)
             continue;
-        ginterpret_item(type, len, buf);
+        ginterpret_item(type, len, ITEMN(buf, len));
     }
     free(buf);
     return items;
@@ -465,21 +466,21 @@ static void test_user_items(void **u)
     open_all();
     gopen_ws(WS_MO, "mf_user.gksm", GWS_TYPE_MO);
     gopen_ws(WS_NULL, NULL, GWS_TYPE_NULL);
-    gwrite_item(WS_MO, 150, 5, "hello"); /* no workstation active: state error */
+    gwrite_item(WS_MO, 150, 5, ITEM("hello")); /* no workstation active: state error */
     gactivate_ws(WS_NULL);
-    gwrite_item(WS_MO, 150, 5, "hello"); /* the MO is not active */
+    gwrite_item(WS_MO, 150, 5, ITEM("hello")); /* the MO is not active */
     assert_int_equal(n_captured, 2);
     assert_int_equal(captured[0].err, 5);
     assert_int_equal(captured[1].err, 30);
     gactivate_ws(WS_MO);
     capture_reset();
-    gwrite_item(WS_NULL, 150, 5, "hello");
-    gwrite_item(WS_MO, 100, 5, "hello");
-    gwrite_item(WS_MO, 0, 5, "hello");
-    gwrite_item(WS_MO, 150, -1, "hello");
-    gwrite_item(WS_MO, 150, 3, NULL);
-    gwrite_item(-1, 150, 3, "abc");
-    gwrite_item(9, 150, 3, "abc");
+    gwrite_item(WS_NULL, 150, 5, ITEM("hello"));
+    gwrite_item(WS_MO, 100, 5, ITEM("hello"));
+    gwrite_item(WS_MO, 0, 5, ITEM("hello"));
+    gwrite_item(WS_MO, 150, -1, ITEM("hello"));
+    gwrite_item(WS_MO, 150, 3, ITEMN(NULL, 0));
+    gwrite_item(-1, 150, 3, ITEM("abc"));
+    gwrite_item(9, 150, 3, ITEM("abc"));
     assert_int_equal(n_captured, 7);
     const int want[7] = { 32, 160, 160, 161, 161, 20, 25 };
     for (int i = 0; i < 7; i++) {
@@ -487,8 +488,8 @@ static void test_user_items(void **u)
         assert_int_equal(captured[i].fct, GFN_WITM);
     }
     capture_reset();
-    gwrite_item(WS_MO, 150, 5, "hello");
-    gwrite_item(WS_MO, 999, 0, "");
+    gwrite_item(WS_MO, 150, 5, ITEM("hello"));
+    gwrite_item(WS_MO, 999, 0, ITEM(""));
     gdeactivate_ws(WS_MO);
     gclose_ws(WS_MO);
     gopen_ws(WS_MI, "mf_user.gksm", GWS_TYPE_MI);
@@ -499,22 +500,22 @@ static void test_user_items(void **u)
     assert_int_equal(len, 5);
     gget_item_type(WS_MI, &type, &len); /* the same item again */
     assert_int_equal(type, 150);
-    gread_item(WS_MI, 3, buf);           /* truncated to 3 characters */
+    gread_item(WS_MI, 3, RBUF(buf));           /* truncated to 3 characters */
     assert_string_equal(buf, "hel");
     gget_item_type(WS_MI, &type, &len);
     assert_int_equal(type, 999);
     assert_int_equal(len, 0);
-    ginterpret_item(150, 5, "hello");
+    ginterpret_item(150, 5, ITEM("hello"));
     assert_int_equal(n_captured, 1);
     assert_int_equal(captured[0].err, 167);
     assert_int_equal(captured[0].fct, GFN_IITM);
-    gread_item(WS_MI, 0, NULL);
+    gread_item(WS_MI, 0, ITEMN(NULL, 0));
     gget_item_type(WS_MI, &type, &len);
     assert_int_equal(type, 0);
-    gread_item(WS_MI, 0, NULL);
+    gread_item(WS_MI, 0, ITEMN(NULL, 0));
     capture_reset();
     gget_item_type(WS_MI, &type, &len);
-    gread_item(WS_MI, 0, NULL);
+    gread_item(WS_MI, 0, ITEMN(NULL, 0));
     assert_int_equal(n_captured, 2);
     assert_int_equal(captured[0].err, 162);
     assert_int_equal(captured[1].err, 162);
@@ -543,9 +544,9 @@ static void test_errors(void **u)
     Gint type, len;
     char buf[8];
     gget_item_type(WS_NULL, &type, &len);
-    gread_item(WS_NULL, 8, buf);
-    gread_item(WS_MI, -1, buf);
-    gread_item(WS_MI, 8, NULL);
+    gread_item(WS_NULL, 8, RBUF(buf));
+    gread_item(WS_MI, -1, RBUF(buf));
+    gread_item(WS_MI, 8, ITEMN(NULL, 0));
     gget_item_type(-3, &type, &len);
     gget_item_type(12, &type, &len);
     const int want[6] = { 34, 34, 166, 166, 20, 25 };
@@ -554,18 +555,18 @@ static void test_errors(void **u)
         assert_int_equal(captured[i].err, want[i]);
     capture_reset();
     /* INTERPRET ITEM: 161, 164, 165, 167 (the MI's format: I = 11, R = 24) */
-    ginterpret_item(22, -1, "x");
-    ginterpret_item(22, 4, NULL);
-    ginterpret_item(-5, 0, "");
-    ginterpret_item(10, 0, "");
-    ginterpret_item(77, 0, "");
-    ginterpret_item(22, 3, "abc");            /* not an integer field */
-    ginterpret_item(22, 22, "          2          3"); /* a field too many */
-    ginterpret_item(23, 11, "          2");  /* a real field expected */
-    ginterpret_item(17, 11, "  999999999");  /* absurd count for the record */
-    ginterpret_item(17, 11, "         -4");
-    ginterpret_item(64, 11, "          7");  /* clipping volume: record incomplete */
-    ginterpret_item(101, 0, "");
+    ginterpret_item(22, -1, ITEM("x"));
+    ginterpret_item(22, 4, ITEMN(NULL, 0));
+    ginterpret_item(-5, 0, ITEM(""));
+    ginterpret_item(10, 0, ITEM(""));
+    ginterpret_item(77, 0, ITEM(""));
+    ginterpret_item(22, 3, ITEM("abc"));            /* not an integer field */
+    ginterpret_item(22, 22, ITEM("          2          3")); /* a field too many */
+    ginterpret_item(23, 11, ITEM("          2"));  /* a real field expected */
+    ginterpret_item(17, 11, ITEM("  999999999"));  /* absurd count for the record */
+    ginterpret_item(17, 11, ITEM("         -4"));
+    ginterpret_item(64, 11, ITEM("          7"));  /* clipping volume: record incomplete */
+    ginterpret_item(101, 0, ITEM(""));
     const int want2[12] = { 161, 161, 164, 164, 164, 165, 165, 165, 165, 165, 165, 167 };
     assert_int_equal(n_captured, 12);
     for (int i = 0; i < 12; i++) {
@@ -574,7 +575,7 @@ static void test_errors(void **u)
     }
     capture_reset();
     /* an interpreted function reports its own errors: linetype 0 is error 63 */
-    ginterpret_item(22, 11, "          0");
+    ginterpret_item(22, 11, ITEM("          0"));
     assert_int_equal(n_captured, 1);
     assert_int_equal(captured[0].err, 63);
     assert_int_equal(captured[0].fct, GFN_SLN);

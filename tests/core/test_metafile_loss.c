@@ -25,6 +25,7 @@
 #include <cmocka.h>
 #include <string.h>
 #include "core_util.h"
+#include "item_util.h"
 
 enum { WS_A = 1, WS_B = 2, WS_MI = 3, WS_PNG = 4 };
 
@@ -177,11 +178,11 @@ static void write_hostile_escapes(const char *path)
     gactivate_ws(WS_A);
     Gint name[1] = { WS_A };
     const char *evil = "loss_escaped_name";
-    gescape(GESC_SET_FILE_NAME, &(Gescape_in_data){ 1, name, 0, NULL, strlen(evil), evil },
-            NULL);
+    gescape(GESC_SET_FILE_NAME, &(Gescape_in_data){ { 1, name, 0, NULL, strlen(evil), evil } },
+            NULL, NULL);
     Gint samples[3] = { WS_A, 256, 0 }, threads[2] = { WS_A, 256 };
-    gescape(GESC_RT_SAMPLES, &(Gescape_in_data){ 3, samples, 0, NULL, 0, NULL }, NULL);
-    gescape(GESC_RT_THREADS, &(Gescape_in_data){ 2, threads, 0, NULL, 0, NULL }, NULL);
+    gescape(GESC_RT_SAMPLES, &(Gescape_in_data){ { 3, samples, 0, NULL, 0, NULL } }, NULL, NULL);
+    gescape(GESC_RT_THREADS, &(Gescape_in_data){ { 2, threads, 0, NULL, 0, NULL } }, NULL, NULL);
     Gpoint sq[4] = { { 0.2, 0.2 }, { 0.8, 0.2 }, { 0.8, 0.8 }, { 0.2, 0.8 } };
     gset_fill_int_style(GSTYLE_SOLID);
     gfill_area(&(Gpoint_list){ 4, sq });
@@ -204,7 +205,7 @@ static long interpret_all(const char *path, const char *png, int allow)
     gopen_ws(WS_MI, path, GWS_TYPE_MI);
     if (allow) {
         Gint a[2] = { WS_MI, 1 };
-        gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ 2, a, 0, NULL, 0, NULL }, NULL);
+        gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ { 2, a, 0, NULL, 0, NULL } }, NULL, NULL);
     }
     assert_int_equal(n_captured, 0);
     for (;;) {
@@ -215,15 +216,19 @@ static long interpret_all(const char *path, const char *png, int allow)
             break;
         char *data = malloc((size_t)len + 1);
         assert_non_null(data);
-        gread_item(WS_MI, len, data);
-        ginterpret_item(type, len, data);
+        gread_item(WS_MI, len, ITEMN(data, len));
+        ginterpret_item(type, len, ITEMN(data, len));
         free(data);
     }
     gupd_ws(WS_PNG, GFLAG_PERFORM);
-    Gint d[1] = { WS_PNG }, oi[8] = { 0 };
-    Gfloat of[2];
-    Gescape_out_data out = { 8, oi, 2, of };
-    gescape(GESC_RT_STATS, &(Gescape_in_data){ 1, d, 0, NULL, 0, NULL }, &out);
+    Gint d[1] = { WS_PNG }, oi[8] = { 0 }, serr;
+    Gstore store = NULL;
+    Gescape_out_data *out = NULL;
+    gcreate_store(&serr, &store);
+    gescape(GESC_RT_STATS, &(Gescape_in_data){ { 1, d, 0, NULL, 0, NULL } }, &store, &out);
+    if (out)
+        memcpy(oi, out->ints, sizeof oi);
+    gdel_store(store);
     gclose_ws(WS_MI);
     gdeactivate_ws(WS_PNG);
     gclose_ws(WS_PNG);
@@ -269,9 +274,9 @@ static void test_allow_escape_errors(void **u)
     gopen_ws(WS_MI, "loss_escapes.gksm", GWS_TYPE_MI);
     gopen_ws(WS_B, NULL, GWS_TYPE_NULL);
     Gint bad[2] = { WS_MI, 2 }, other[2] = { WS_B, 1 }, short1[1] = { WS_MI };
-    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ 2, bad, 0, NULL, 0, NULL }, NULL);
-    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ 1, short1, 0, NULL, 0, NULL }, NULL);
-    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ 2, other, 0, NULL, 0, NULL }, NULL);
+    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ { 2, bad, 0, NULL, 0, NULL } }, NULL, NULL);
+    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ { 1, short1, 0, NULL, 0, NULL } }, NULL, NULL);
+    gescape(GESC_MI_ALLOW_ESCAPES, &(Gescape_in_data){ { 2, other, 0, NULL, 0, NULL } }, NULL, NULL);
     assert_int_equal(n_captured, 3);
     assert_int_equal(captured[0].err, 182);
     assert_int_equal(captured[1].err, 182);

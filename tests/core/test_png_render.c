@@ -902,10 +902,10 @@ static void test_e2e_antialias(void **u)
     e2e_open("t_e2e_aa", 20, 20);
     Gint ints[2] = { 1, 4 };
     Gescape_in_data in = { .num_ints = 2, .ints = ints };
-    gescape(GESC_PNG_SUPERSAMPLE, &in, NULL);
+    gescape(GESC_PNG_SUPERSAMPLE, &in, NULL, NULL);
     assert_int_equal(e2e_err, 0);
     ints[1] = 0;
-    gescape(GESC_PNG_SUPERSAMPLE, &in, NULL);
+    gescape(GESC_PNG_SUPERSAMPLE, &in, NULL, NULL);
     assert_int_equal(e2e_err, 182);
     e2e_err = 0;
     gset_fill_int_style(GSTYLE_SOLID);
@@ -929,7 +929,7 @@ static long e2e_scene_size(const char *name, int compression, image *img)
     if (compression >= 0) {
         Gint ints[2] = { 1, compression };
         Gescape_in_data in = { .num_ints = 2, .ints = ints };
-        gescape(GESC_PNG_COMPRESSION, &in, NULL);
+        gescape(GESC_PNG_COMPRESSION, &in, NULL, NULL);
         assert_int_equal(e2e_err, 0);
     }
     gset_fill_int_style(GSTYLE_SOLID);
@@ -967,19 +967,19 @@ static void test_e2e_compression(void **u)
     e2e_open("t_e2e_zbad", 8, 8);
     Gint ints[2] = { 1, 10 };
     Gescape_in_data in = { .num_ints = 2, .ints = ints };
-    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    gescape(GESC_PNG_COMPRESSION, &in, NULL, NULL);
     assert_int_equal(e2e_err, 182);
     e2e_err = 0;
     ints[1] = -1;
-    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    gescape(GESC_PNG_COMPRESSION, &in, NULL, NULL);
     assert_int_equal(e2e_err, 182);
     e2e_err = 0;
     in.num_ints = 1;
-    gescape(GESC_PNG_COMPRESSION, &in, NULL);
+    gescape(GESC_PNG_COMPRESSION, &in, NULL, NULL);
     assert_int_equal(e2e_err, 182);
     e2e_err = 0;
     in.num_ints = 2;
-    gescape(GESC_PNG_COMPRESSION - 1, &in, NULL);
+    gescape(GESC_PNG_COMPRESSION - 1, &in, NULL, NULL);
     assert_int_equal(e2e_err, 180);
     e2e_err = 0;
     image img;

@@ -89,9 +89,9 @@ static void test_frames_and_names(void **u)
     gpolyline(&ll);
     gupd_ws(1, GFLAG_PERFORM); /* writes frame 2 */
     Gint ws = 1;
-    Gescape_in_data in = { 1, &ws, 0, NULL, 9, "t_renamed" };
+    Gescape_in_data in = { { 1, &ws, 0, NULL, 9, "t_renamed" } };
     gclear_ws(1, GFLAG_ALWAYS);
-    gescape(GESC_SET_FILE_NAME, &in, NULL);
+    gescape(GESC_SET_FILE_NAME, &in, NULL, NULL);
     gpolyline(&ll);
     gdeactivate_ws(1);
     gclose_ws(1);              /* writes frame 3 under the new name */

@@ -49,8 +49,8 @@ static void plain_sampling(int ws)
     Gint ints[2] = { ws, 1 };
     Gfloat zero[1] = { 0.0 };
     Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
-    gescape(GESC_RT_SAMPLES, &in, NULL);
-    gescape(GESC_RT_CUTOFF, &in, NULL);
+    gescape(GESC_RT_SAMPLES, &in, NULL, NULL);
+    gescape(GESC_RT_CUTOFF, &in, NULL, NULL);
 }
 
 /* A 64 x 64 PNG workstation in HLHSR mode `mode` with the workstation's defaults. */
@@ -395,11 +395,11 @@ static void test_errors(void **u)
 
     /* ESCAPE: clipped secondary rays; the null workstation does not support it. */
     Gint d[2] = { 1, 1 };
-    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
-    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL), 180, GFN_ESC);
-    EXPECT(gescape(-999, &in, NULL), 180, GFN_ESC);
-    Gescape_in_data short_rec = { 0, d, 0, NULL, 0, NULL };
-    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &short_rec, NULL), 182, GFN_ESC);
+    Gescape_in_data in = { { 2, d, 0, NULL, 0, NULL } };
+    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL, NULL), 180, GFN_ESC);
+    EXPECT(gescape(-999, &in, NULL, NULL), 180, GFN_ESC);
+    Gescape_in_data short_rec = { { 0, d, 0, NULL, 0, NULL } };
+    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &short_rec, NULL, NULL), 182, GFN_ESC);
     /* SET HLHSR MODE 4 is refused by the null workstation. */
     EXPECT(gset_hlhsr_mode(1, GHLHSR_RAYTRACE), 511, GFN_SHRM);
     gdeactivate_ws(1);
@@ -415,12 +415,12 @@ static void test_escape_png(void **u)
     gopen_gks(NULL, 0);
     open_png(1, "t_rt_esc.png", GHLHSR_RAYTRACE);
     Gint d[2] = { 1, 1 };
-    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
+    Gescape_in_data in = { { 2, d, 0, NULL, 0, NULL } };
     d[1] = 2; /* a bad record on a workstation that supports the escape: 182, no effect */
-    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL), 182, GFN_ESC);
+    EXPECT(gescape(GESC_RT_CLIP_SECONDARY, &in, NULL, NULL), 182, GFN_ESC);
     d[1] = 1;
     n_captured = 0;
-    gescape(GESC_RT_CLIP_SECONDARY, &in, NULL);
+    gescape(GESC_RT_CLIP_SECONDARY, &in, NULL, NULL);
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, 0, -1 }, { 1, 0 }, 0, 1 };
     gset_light_src_rep(1, 2, &l);
     Grgb c = { 0.5, 0.5, 0.5 };
@@ -446,9 +446,9 @@ static int esc_ints(int fid, int ws, int n, const Gint *v)
     Gint d[4] = { ws, 0, 0, 0 };
     for (int k = 0; k < n && k < 3; k++)
         d[k + 1] = v[k];
-    Gescape_in_data in = { n + 1, d, 0, NULL, 0, NULL };
+    Gescape_in_data in = { { n + 1, d, 0, NULL, 0, NULL } };
     n_captured = 0;
-    gescape(fid, &in, NULL);
+    gescape(fid, &in, NULL, NULL);
     return n_captured ? captured[0].err : 0;
 }
 
@@ -457,9 +457,9 @@ static int esc1(int fid, int ws, Gint v) { return esc_ints(fid, ws, 1, &v); }
 static int esc_cutoff(int ws, Gfloat c)
 {
     Gint d[1] = { ws };
-    Gescape_in_data in = { 1, d, 1, &c, 0, NULL };
+    Gescape_in_data in = { { 1, d, 1, &c, 0, NULL } };
     n_captured = 0;
-    gescape(GESC_RT_CUTOFF, &in, NULL);
+    gescape(GESC_RT_CUTOFF, &in, NULL, NULL);
     return n_captured ? captured[0].err : 0;
 }
 
@@ -468,13 +468,21 @@ typedef struct { Gint i[8]; Gfloat f[2]; } rt_stat_rec;
 static void get_stats(int ws, rt_stat_rec *s)
 {
     Gint d[1] = { ws };
-    Gescape_in_data in = { 1, d, 0, NULL, 0, NULL };
-    Gescape_out_data out = { 8, s->i, 2, s->f };
+    Gescape_in_data in = { { 1, d, 0, NULL, 0, NULL } };
+    Gstore store = NULL;
+    Gescape_out_data *out = NULL;
+    Gint e;
+    gcreate_store(&e, &store);
+    assert_int_equal(e, 0);
     n_captured = 0;
-    gescape(GESC_RT_STATS, &in, &out);
+    gescape(GESC_RT_STATS, &in, &store, &out);
     no_errors();
-    assert_int_equal(out.num_ints, 8);
-    assert_int_equal(out.num_floats, 2);
+    assert_non_null(out);
+    assert_int_equal(out->num_ints, 8);
+    assert_int_equal(out->num_floats, 2);
+    memcpy(s->i, out->ints, sizeof s->i);
+    memcpy(s->f, out->floats, sizeof s->f);
+    gdel_store(store);
 }
 
 enum { ST_EYE, ST_HIT, ST_REFL, ST_REFR, ST_SHADOW, ST_CELLS, ST_REFS, ST_PRIMS };
@@ -514,15 +522,15 @@ static void test_default_sampling(void **u)
     free(img.rgb);
     /* one centre ray per pixel, then corner rays again */
     Gint d[2] = { 1, 1 };
-    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
-    gescape(GESC_RT_SAMPLES, &in, NULL);
+    Gescape_in_data in = { { 2, d, 0, NULL, 0, NULL } };
+    gescape(GESC_RT_SAMPLES, &in, NULL, NULL);
     gclear_ws(1, GFLAG_ALWAYS);
     square(0.2, 0.8, 0.5);
     gupd_ws(1, GFLAG_PERFORM);
     get_stats(1, &s);
     assert_int_equal(s.i[ST_EYE], 64 * 64);
     assert_int_equal(s.i[ST_HIT], 38 * 38);
-    gescape(GESC_RT_SPD, &in, NULL);
+    gescape(GESC_RT_SPD, &in, NULL, NULL);
     gclear_ws(1, GFLAG_ALWAYS);
     square(0.2, 0.8, 0.5);
     gupd_ws(1, GFLAG_PERFORM);
@@ -546,15 +554,10 @@ static void test_stats_counts(void **u)
     get_stats(1, &s); /* nothing traced yet: zeros */
     for (int k = 0; k < 8; k++)
         assert_int_equal(s.i[k], 0);
-    /* capacity below 8 ints / 2 floats: 182 */
-    Gint d[1] = { 1 }, oi[8];
-    Gfloat of[2];
-    Gescape_in_data in = { 1, d, 0, NULL, 0, NULL };
-    Gescape_out_data small = { 7, oi, 2, of };
-    EXPECT(gescape(GESC_RT_STATS, &in, &small), 182, GFN_ESC);
-    small = (Gescape_out_data){ 8, oi, 1, of };
-    EXPECT(gescape(GESC_RT_STATS, &in, &small), 182, GFN_ESC);
-    EXPECT(gescape(GESC_RT_STATS, &in, NULL), 182, GFN_ESC);
+    /* no store for the output record: 182 */
+    Gint d[1] = { 1 };
+    Gescape_in_data in = { { 1, d, 0, NULL, 0, NULL } };
+    EXPECT(gescape(GESC_RT_STATS, &in, NULL, NULL), 182, GFN_ESC);
     n_captured = 0;
 
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, 0, -1 }, { 1, 0 }, 0, 1 };
@@ -662,8 +665,8 @@ static void test_depth_mirror(void **u)
     assert_int_equal(esc1(GESC_RT_MAX_DEPTH, 2, 0), 182);
     assert_int_equal(esc1(GESC_RT_MAX_DEPTH, 2, 65), 182);
     Gint d[1] = { 2 };
-    Gescape_in_data in = { 1, d, 0, NULL, 0, NULL };
-    EXPECT(gescape(GESC_RT_MAX_DEPTH, &in, NULL), 182, GFN_ESC);
+    Gescape_in_data in = { { 1, d, 0, NULL, 0, NULL } };
+    EXPECT(gescape(GESC_RT_MAX_DEPTH, &in, NULL, NULL), 182, GFN_ESC);
     n_captured = 0;
     gdeactivate_ws(2);
     mirror_scene(1, 0, 0); /* default depth 5 */
@@ -816,8 +819,8 @@ static void test_cutoff(void **u)
     assert_int_equal(esc_cutoff(1, 1.0), 182);
     assert_int_equal(esc_cutoff(1, NAN), 182);
     Gint d[1] = { 1 };
-    Gescape_in_data nofl = { 1, d, 0, NULL, 0, NULL };
-    EXPECT(gescape(GESC_RT_CUTOFF, &nofl, NULL), 182, GFN_ESC);
+    Gescape_in_data nofl = { { 1, d, 0, NULL, 0, NULL } };
+    EXPECT(gescape(GESC_RT_CUTOFF, &nofl, NULL, NULL), 182, GFN_ESC);
     n_captured = 0;
     Garea_props sp = { 0, 1, 0.5, { 1, 1, 1 }, 10, 0, 1 };
     gset_area_props(&sp);
@@ -1217,13 +1220,13 @@ static void test_escape_records(void **u)
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         Gint d[3] = { 1, bad[k].v[0], bad[k].v[1] };
-        Gescape_in_data in = { bad[k].n, d, 0, NULL, 0, NULL };
+        Gescape_in_data in = { { bad[k].n, d, 0, NULL, 0, NULL } };
         assert_int_equal(ws_rt_escape(r, bad[k].id, &in, NULL), 182);
     }
     Gint d[3] = { 1, 1, 0 };
-    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
+    Gescape_in_data in = { { 2, d, 0, NULL, 0, NULL } };
     Gfloat f[1] = { 0.5 };
-    Gescape_in_data fin = { 1, d, 1, f, 0, NULL };
+    Gescape_in_data fin = { { 1, d, 1, f, 0, NULL } };
     assert_int_equal(ws_rt_escape(r, GESC_RT_CUTOFF, &in, NULL), 182); /* no float */
     f[0] = 1.5;
     assert_int_equal(ws_rt_escape(r, GESC_RT_CUTOFF, &fin, NULL), 182);
@@ -1232,7 +1235,10 @@ static void test_escape_records(void **u)
     assert_int_equal(ws_rt_escape(r, GESC_RT_SPD - 1, &in, NULL), 180);
     Gint oi[8];
     Gfloat of[2];
-    Gescape_out_data out = { 8, oi, 2, of };
+    Gescape_out_data out = { { 8, oi, 2, of } }, small = { { 7, oi, 2, of } };
+    assert_int_equal(ws_rt_escape(r, GESC_RT_STATS, &in, &small), 182); /* room < 8 ints */
+    small.num_ints = 8, small.num_floats = 1;
+    assert_int_equal(ws_rt_escape(r, GESC_RT_STATS, &in, &small), 182); /* < 2 reals */
     assert_int_equal(ws_rt_escape(r, GESC_RT_STATS, &in, &out), 0); /* zeros, untouched opts */
     ws_rt_options(r, &o);
     assert_memory_equal(&o, &def, sizeof o);
@@ -1405,7 +1411,7 @@ static double shade_vs_trace(gks_ws *ws, const gks_prim *p, int px, int py, Grgb
     *preview = ws_shade_apply(&sh, &p->colour);
     ws_rt *r = rt_new_plain();
     Gint d[2] = { 1, 1 }; /* depth 1: local shading only (no mirrored background) */
-    Gescape_in_data in = { 2, d, 0, NULL, 0, NULL };
+    Gescape_in_data in = { { 2, d, 0, NULL, 0, NULL } };
     assert_int_equal(ws_rt_escape(r, GESC_RT_MAX_DEPTH, &in, NULL), 0);
     assert_int_equal(ws_rt_record(r, ws, p), 0);
     gks_raster_fb *fb = white_fb();

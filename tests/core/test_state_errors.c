@@ -10,6 +10,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include "core_util.h"
+#include "item_util.h"
 
 enum { GKSM_TEST_ITEM_LINETYPE = 22 }; /* docs/METAFILE.md */
 
@@ -31,8 +32,8 @@ static void c_MSG(void) { gmessage(1, "hello"); }
 static void c_ESC(void)
 {
     Gint ws = 1;
-    Gescape_in_data in = { 1, &ws, 0, NULL, 1, "x" };
-    gescape(GESC_SET_FILE_NAME, &in, NULL);
+    Gescape_in_data in = { { 1, &ws, 0, NULL, 1, "x" } };
+    gescape(GESC_SET_FILE_NAME, &in, NULL, NULL);
 }
 static void c_PL(void) { gpolyline(&list3); }
 static void c_FA(void) { gfill_area(&list3); }
@@ -158,7 +159,7 @@ static void c_STXAL(void) { Gtext_align a = { GHOR_CTR, GVERT_HALF }; gset_text_
 static void c_SFAI(void) { gset_fill_ind(2); }
 static void c_SFAIS(void) { gset_fill_int_style(GSTYLE_SOLID); }
 static void c_SFASI(void) { gset_fill_style_ind(2); }
-static void c_SPA(void) { Gvec v = { 0.1, 0.2 }; gset_pat_size(&v); }
+static void c_SPA(void) { gset_pat_size(0.1, 0.2); }
 static void c_SPARF(void) { Gpoint p = { 0.1, 0.2 }; gset_pat_ref_point(&p); }
 static void c_SASF(void) { Gasfs a = { 0 }; gset_asfs(&a); }
 static void c_SPKID(void) { gset_pick_id(3); }
@@ -247,10 +248,10 @@ static void c_INSG3(void)
     const Gtran_matrix3 m = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
     ginsert_seg3(1, m);
 }
-static void c_WITM(void) { gwrite_item(1, 101, 2, "ab"); }
+static void c_WITM(void) { gwrite_item(1, 101, 2, ITEM("ab")); }
 static void c_GTITM(void) { Gint t, l; gget_item_type(1, &t, &l); }
-static void c_RDITM(void) { char buf[4]; gread_item(1, 4, buf); }
-static void c_IITM(void) { ginterpret_item(GKSM_TEST_ITEM_LINETYPE, 11, "          2"); }
+static void c_RDITM(void) { char buf[4]; gread_item(1, 4, RBUF(buf)); }
+static void c_IITM(void) { ginterpret_item(GKSM_TEST_ITEM_LINETYPE, 11, ITEM("          2")); }
 
 /* Input (gks_input.c): ws 1 is of category OUTPUT, so the allowed states give 38. */
 static const Glimit earea = { 0, 100, 0, 100 };

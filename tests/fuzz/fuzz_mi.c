@@ -16,6 +16,9 @@
 #include <unistd.h>
 #include <gks.h>
 
+/* A Gitem_data record of n characters at s (include/gks.h: impl_dep holds them). */
+#define ITEMN(s, n) (&(Gitem_data){ .data.impl_dep = { (size_t)(n), (void *)(s) } })
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 static int n_errors; /* errors reported by the current input (the handler has no context) */
@@ -62,10 +65,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (!b)
             break;
         buf = b;
-        gread_item(2, len, buf);
+        gread_item(2, len, ITEMN(buf, len));
         if (n_errors || type == 0)
             break;
-        ginterpret_item(type, len, buf);
+        ginterpret_item(type, len, ITEMN(buf, len));
         n_errors = 0; /* interpretation errors are expected: go on with the next item */
     }
     free(buf);

@@ -117,14 +117,13 @@ GKS_API void gset_text_align(const Gtext_align *al)
     ATTRS()->text_align = *al;
 }
 
-GKS_API void gset_pat_size(const Gvec *sz)
+GKS_API void gset_pat_size(Gdouble x_size, Gdouble y_size)
 {
     if (gks_check_state(GFN_SPA))
         return;
-    if (!sz || !(sz->delta_x > 0) || !(sz->delta_y > 0) || !isfinite(sz->delta_x) ||
-        !isfinite(sz->delta_y))
+    if (!(x_size > 0) || !(y_size > 0) || !isfinite(x_size) || !isfinite(y_size))
         GKS_FAIL(87, GFN_SPA);
-    ATTRS()->pat_size = *sz;
+    ATTRS()->pat_size = (Gvec){ x_size, y_size };
 }
 
 GKS_API void gset_pat_ref_point(const Gpoint *p)

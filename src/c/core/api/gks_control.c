@@ -7,6 +7,7 @@
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
+#include "gks_store.h"
 #include "gks_mf_record.h"
 #include "gks_par.h"
 #include "gks_seg_store.h"
@@ -321,8 +322,16 @@ GKS_API void gmessage(Gint ws_id, const char *msg)
         GKS_FAIL(err, GFN_MSG);
 }
 
-GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
+/* The escapes that return data (their output record is placed in the caller's store). */
+static int escape_has_output(Gint func_id) { return func_id == GESC_RT_STATS; }
+
+#define GKS_ESC_OUT_CAP 64 /* integers and reals an escape may return */
+
+GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data,
+                     Gescape_out_data **out_data)
 {
+    if (out_data)
+        *out_data = NULL;
     if (gks_check_state(GFN_ESC))
         return;
     if (func_id == GESC_INPUT_SCRIPT) { /* the core's: input devices are the core's */
@@ -345,9 +354,23 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *
         GKS_FAIL(182, GFN_ESC);
     if (gks_mf_escape(GFN_ESC, ws, func_id, in))
         return; /* addressed to an MO workstation: recorded (or its failure reported) */
+    Gescape_out_data *out = NULL;
+    if (escape_has_output(func_id) && store_data && *store_data) {
+        /* One block in the store: the record, then its integer and real arrays. */
+        size_t n = sizeof *out + GKS_ESC_OUT_CAP * (sizeof(Gint) + sizeof(Gfloat));
+        out = gks_store_alloc(*store_data, 1, n);
+        if (!out)
+            GKS_FAIL(300, GFN_ESC);
+        out->num_ints = GKS_ESC_OUT_CAP;
+        out->ints = (Gint *)(out + 1);
+        out->num_floats = GKS_ESC_OUT_CAP;
+        out->floats = (Gfloat *)(out->ints + GKS_ESC_OUT_CAP);
+    }
     int err = ws->drv->escape ? ws->drv->escape(ws, func_id, in, out) : 180;
     if (err)
         GKS_FAIL(err, GFN_ESC);
+    if (out_data)
+        *out_data = out;
 }
 
 GKS_API void gemergency_close_gks(void)

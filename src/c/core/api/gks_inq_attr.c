@@ -6,6 +6,7 @@
  */
 #include "gks_attr.h"
 #include "gks_error.h"
+#include "gks_store.h"
 #include "gks_state.h"
 #include "gks_text_layout.h"
 #include "gks_ws.h"
@@ -45,7 +46,15 @@ GKS_API void ginq_fill_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->fill_ind); }
 GKS_API void ginq_fill_int_style(Gint *err_ind, Gfill_int_style *v) { INQ_CUR(v, a->fill_int_style); }
 GKS_API void ginq_fill_style_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->fill_style_ind); }
 GKS_API void ginq_fill_colr_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->fill_colr_ind); }
-GKS_API void ginq_pat_size(Gint *err_ind, Gvec *v) { INQ_CUR(v, a->pat_size); }
+GKS_API void ginq_pat_size(Gint *err_ind, Gdouble *x_size, Gdouble *y_size)
+{
+    Gvec v;
+    INQ_CUR(&v, a->pat_size);
+    if (*err_ind)
+        return;
+    *x_size = v.delta_x;
+    *y_size = v.delta_y;
+}
 GKS_API void ginq_pick_id(Gint *err_ind, Gint *v) { INQ_CUR(v, a->pick_id); }
 GKS_API void ginq_hlhsr_id(Gint *err_ind, Gint *v) { INQ_CUR(v, a->hlhsr_id); }
 GKS_API void ginq_edge_flag(Gint *err_ind, Gedge_flag *v) { INQ_CUR(v, a->edge_flag); }
@@ -194,18 +203,27 @@ GKS_API void ginq_edge_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, 
 
 /* Copy a pattern (nx x ny indices) into rep (capacity cap): 2001 if too small. realize:
  * replace undefined colour indices of ws by 1 (ws may be NULL for predefined ones). */
-static int put_pattern(const gks_ws *ws, int nx, int ny, const int *colr, Gint cap, Gpat_rep *rep)
+/* A pattern into the application's store (ISO 8651-4): the Gpat_rep and its colour array
+ * in one block; *out points at it. 2003 without a store, 300 when memory is exhausted. */
+static int put_pattern(const gks_ws *ws, int nx, int ny, const int *colr, Gstore *store,
+                       Gpat_rep **out)
 {
-    rep->dims = (Gint_size){ nx, ny };
+    if (!store || !*store || !out)
+        return 2003;
     size_t n = (size_t)nx * (size_t)ny;
-    if (cap < 0 || (size_t)cap < n || !rep->colr_array)
-        return 2001;
+    Gpat_rep *rep = gks_store_alloc(*store, 1, sizeof *rep + n * sizeof(Gint));
+    if (!rep)
+        return 300;
+    rep->dims = (Gint_size){ nx, ny };
+    rep->colr_array = (Gint *)(rep + 1);
     for (size_t i = 0; i < n; i++)
         rep->colr_array[i] = ws ? gks_attr_colr_ind(ws, colr[i]) : colr[i];
+    *out = rep;
     return 0;
 }
 
-GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gint cap, Gint *err_ind, Gpat_rep *rep)
+GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gstore *store, Gint *err_ind,
+                          Gpat_rep **rep)
 {
     gks_ws *ws = rep_ws(ws_id, ind, type, 85, err_ind);
     if (!ws)
@@ -215,7 +233,7 @@ GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gint cap, Gint *
         return;
     }
     *err_ind = put_pattern(type == GINQ_REALIZED ? ws : NULL, ws->pat_rep[ind].nx,
-                           ws->pat_rep[ind].ny, ws->pat_rep[ind].colr, cap, rep);
+                           ws->pat_rep[ind].ny, ws->pat_rep[ind].colr, store, rep);
 }
 
 /* List of defined indices of a bundle table. */
@@ -427,19 +445,20 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     f->num_pred_inds = t->n_pred_text;
 }
 
-GKS_API void ginq_fill_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
-                            Gfill_facs *f, Gint *length_list, Gint *length_hatch)
+GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_pos,
+                            Gint *err_ind, Gfill_facs *f, Gint *act_hatch_length)
 {
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->int_styles, t->n_int_styles, cap, start, &f->int_styles, length_list);
+    *err_ind = copy_ints(t->hatch_styles, t->n_hatch_styles, hatch_length, hatch_start_pos,
+                         &f->hatch_styles, act_hatch_length);
     if (*err_ind)
         return;
-    *err_ind = copy_ints(t->hatch_styles, t->n_hatch_styles, cap, start, &f->hatch_styles,
-                         length_hatch);
-    if (*err_ind)
-        return;
+    int n = t->n_int_styles < 4 ? t->n_int_styles : 4;
+    f->num_int_styles = n;
+    for (int i = 0; i < n; i++)
+        f->int_style[i] = (Gfill_int_style)t->int_styles[i];
     f->num_pred_inds = t->n_pred_fill;
 }
 
@@ -491,7 +510,8 @@ PRED_INQ(ginq_pred_text_rep, Gtext_bundle, n_pred_text, pred_text, 72, 74)
 PRED_INQ(ginq_pred_fill_rep, Gfill_bundle, n_pred_fill, pred_fill, 80, 82)
 PRED_INQ(ginq_pred_edge_rep, Gedge_bundle, n_pred_edge, pred_edge, 500, 502)
 
-GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gint cap, Gint *err_ind, Gpat_rep *rep)
+GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gstore *store, Gint *err_ind,
+                               Gpat_rep **rep)
 {
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
@@ -499,7 +519,7 @@ GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gint cap, Gint *err_ind, 
     *err_ind = pred_index(ind, t->n_pred_pat, 85, 89);
     if (!*err_ind)
         *err_ind = put_pattern(NULL, t->pred_pat[ind - 1].nx, t->pred_pat[ind - 1].ny,
-                               t->pred_pat[ind - 1].colr, cap, rep);
+                               t->pred_pat[ind - 1].colr, store, rep);
 }
 
 GKS_API void ginq_max_ws_st_tables(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables *l)

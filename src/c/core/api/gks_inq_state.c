@@ -112,17 +112,15 @@ GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint 
                          active_ws, length_list);
 }
 
-GKS_API void ginq_ws_conn_type(Gint ws_id, size_t conn_size, Gint *err_ind, char *conn_id,
-                               size_t *conn_len, Gint *ws_type)
+GKS_API void ginq_ws_conn_type(Gint ws_id, Gint string_length, Gint *err_ind, char *conn_id,
+                               Gint *ws_type)
 {
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
     size_t len = strlen(ws->conn_id);
-    if (conn_len)
-        *conn_len = len;
-    if (conn_id && conn_size > 0) {
-        size_t k = len < conn_size - 1 ? len : conn_size - 1;
+    if (conn_id && string_length > 0) {
+        size_t k = len < (size_t)string_length - 1 ? len : (size_t)string_length - 1;
         memcpy(conn_id, ws->conn_id, k);
         conn_id[k] = '\0';
     }

@@ -223,7 +223,7 @@ GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
     Gvec sz;
     Gpoint3 p;
     Gvec3 r[2];
-    ginq_pat_size(err_ind, &sz);
+    ginq_pat_size(err_ind, &sz.delta_x, &sz.delta_y);
     if (*err_ind)
         return;
     ginq_pat_ref_point_vecs(err_ind, &p, r);
@@ -237,7 +237,7 @@ GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *v)
     Gvec sz;
     Gpoint3 p;
     Gvec3 r[2];
-    ginq_pat_size(err_ind, &sz);
+    ginq_pat_size(err_ind, &sz.delta_x, &sz.delta_y);
     if (*err_ind)
         return;
     ginq_pat_ref_point_vecs(err_ind, &p, r);

@@ -464,8 +464,11 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 }
 
 /* ---------------------------------------------------------------- WRITE ITEM TO GKSM */
-GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
+GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const Gitem_data *item_data)
 {
+    /* The record's characters (docs/METAFILE.md: records stay character-coded). */
+    const char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    size_t have = item_data ? item_data->data.impl_dep.size : 0;
     if (gks_check_state(GFN_WITM))
         return;
     if (ws_id < 0)
@@ -480,7 +483,7 @@ GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const char *data)
         GKS_FAIL(32, GFN_WITM);
     if (type < GKSM_ITEM_USER_MIN || type > 999)
         GKS_FAIL(160, GFN_WITM);
-    if (length < 0 || (length > 0 && !data))
+    if (length < 0 || (length > 0 && (!data || (size_t)length > have)))
         GKS_FAIL(161, GFN_WITM);
     if (o->lost)
         return; /* the loss was reported once */

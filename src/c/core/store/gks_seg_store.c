@@ -156,7 +156,8 @@ void gks_seg_get(const gks_segment *s, size_t i, gks_seg_prim *p)
     const gks_seg_rec *r = &s->rec[i];
     *p = (gks_seg_prim){ .kind = r->kind, .n_loops = r->n_loops ? r->n_loops : 1,
                          .loop_counts = r->n_loops ? s->ints + r->loops_off : NULL,
-                         .n_points = r->n_points, .pts = s->pts + r->pts_off,
+                         .n_points = r->n_points,
+                         .pts = s->pts ? s->pts + r->pts_off : NULL, /* no NULL + 0 */
                          .cell_p = r->cell_p, .cell_q = r->cell_q, .cell_r = r->cell_r,
                          .cell_nx = r->cell_nx, .cell_ny = r->cell_ny,
                          .cell_colr = r->cell_nx ? s->ints + r->cells_off : NULL,

@@ -132,17 +132,30 @@ GKS_API void gget_item_type(Gint ws_id, Gint *type, Gint *length)
         *length = (Gint)len;
 }
 
-GKS_API void gread_item(Gint ws_id, Gint max_length, char *data)
+GKS_API void gread_item(Gint ws_id, Gint max_length, Gitem_data *item_data)
 {
     gks_mf_in *m = mi_checked(GFN_RDITM, ws_id);
     if (!m)
         return;
+    char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    int type = 0;
+    size_t length = 0;
+    int perr = gksm_in_peek(&m->in, &type, &length);
+    if (!perr && length > INT_MAX)
+        perr = 163;
+    if (perr)
+        GKS_FAIL(perr, GFN_RDITM);
     if (max_length < 0 || (max_length > 0 && !data))
         GKS_FAIL(166, GFN_RDITM);
     size_t got;
     int err = gksm_in_read(&m->in, data, (size_t)max_length, &got);
     if (err)
         GKS_FAIL(err, GFN_RDITM);
+    if (item_data) {
+        item_data->type = type;
+        item_data->length = (Gint)length;
+        item_data->data.impl_dep.size = got;
+    }
     gks_ctx()->sl->mf_last_mi = ws_id + 1;
 }
 
@@ -523,8 +536,8 @@ static void i_escape(interp *ip)
     if (!d->err)
         d->err = escape_policy(ip, func, ints, ni);
     if (!d->err) {
-        Gescape_in_data in = { (Gint)ni, ints, (Gint)nr, reals, n, s };
-        EACH_WS((ints[0] = ws_, gescape(func, &in, NULL)));
+        Gescape_in_data in = { { (Gint)ni, ints, (Gint)nr, reals, n, s } };
+        EACH_WS((ints[0] = ws_, gescape(func, &in, NULL, NULL)));
     }
     gks_free(ints);
     gks_free(reals);
@@ -694,7 +707,7 @@ static int perform(interp *ip, int type)
     case GKSM_ITEM_FILL_COLR: if (fixed(ip, "i", iv, rv)) gset_fill_colr_ind(iv[0]); break;
     case GKSM_ITEM_PAT_SIZE_NDC: /* RAL: width and height vectors */
         if (fixed(ip, "rrrr", iv, rv))
-            gset_pat_size(&(Gvec){ hypot(rv[0], rv[1]), hypot(rv[2], rv[3]) });
+            gset_pat_size(hypot(rv[0], rv[1]), hypot(rv[2], rv[3]));
         break;
     case GKSM_ITEM_PAT_REF_NDC:
         if (fixed(ip, "rr", iv, rv))
@@ -785,7 +798,7 @@ static int perform(interp *ip, int type)
         break;
     case GKSM_ITEM_PAT_SIZE:
         if (fixed(ip, "rr", iv, rv))
-            gset_pat_size(&(Gvec){ rv[0], rv[1] });
+            gset_pat_size(rv[0], rv[1]);
         break;
     case GKSM_ITEM_CLIP_VOL3:
         if (fixed(ip, "irrrrrr", iv, rv)) {
@@ -879,11 +892,13 @@ static int perform(interp *ip, int type)
     return ip->d.err;
 }
 
-GKS_API void ginterpret_item(Gint type, Gint length, const char *data)
+GKS_API void ginterpret_item(Gint type, Gint length, const Gitem_data *item_data)
 {
     if (gks_check_state(GFN_IITM))
         return;
-    if (length < 0 || (length > 0 && !data))
+    const char *data = item_data ? item_data->data.impl_dep.data : NULL;
+    size_t have = item_data ? item_data->data.impl_dep.size : 0;
+    if (length < 0 || (length > 0 && (!data || (size_t)length > have)))
         GKS_FAIL(161, GFN_IITM);
     if (type < 0)
         GKS_FAIL(164, GFN_IITM);
