@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks.h -- C binding of the gks3d library: GKS-3D (ISO 8805) in the style of the
  * ISO 8651-4 GKS C binding.
@@ -13,6 +14,8 @@
 #define GKS3D_GKS_H
 
 #include <stddef.h>
+
+#include "gks3d_version.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -146,6 +149,12 @@ enum {
 #undef GKS_FN
     GFN_COUNT_DUMMY_
 };
+
+/* The version of the library loaded at run time, GKS3D_VERSION_ENCODE(major, minor, patch),
+ * to compare with GKS3D_VERSION of the headers compiled against (gks3d_version.h). Not an
+ * ISO function: callable in every operating state, reports no error; each pointer may be
+ * NULL. */
+GKS_API int gks3d_version(int *major, int *minor, int *patch);
 
 /* ---------------------------------------------------------------------------------
  * Control functions

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # fuzz.sh -- fuzz the untrusted-input readers with libFuzzer for a fixed budget.
 #   scripts/fuzz.sh [seconds per target, default 60]
 # Installs clang and its libFuzzer runtime from Debian if missing, builds each target with
@@ -22,7 +23,13 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 
 out=build-fuzz
-mkdir -p "$out"
+mkdir -p "$out/include"
+# gks.h includes the version header that CMake generates; make it the same way here.
+version=$(sed -n 's/^project(gks3d VERSION \([0-9]*\)\.\([0-9]*\)\.\([0-9]*\).*/\1 \2 \3/p' CMakeLists.txt)
+read -r vmajor vminor vpatch <<<"$version"
+sed -e "s/@PROJECT_VERSION_MAJOR@/$vmajor/" -e "s/@PROJECT_VERSION_MINOR@/$vminor/" \
+    -e "s/@PROJECT_VERSION_PATCH@/$vpatch/" -e "s/@PROJECT_VERSION@/$vmajor.$vminor.$vpatch/" \
+    include/gks3d_version.h.in >"$out/include/gks3d_version.h"
 # Every folder of src/c is a module with its headers next to its sources (src/c/CMakeLists.txt).
 incs=()
 while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
@@ -30,7 +37,7 @@ while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
 # (an out-of-range double -> int cast, NULL + 0), clang checks them when asked.
 flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-overflow
        -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
-       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude)
+       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude -I"$out/include")
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # run-examples.sh -- set up, build (Release, ./build), run the example programs in
 # build/pictures and print the absolute paths of the PNG files they wrote.
 #
 # The paper's pictures (Fig. 2-5) and the surface example run through the C binding into
 # build/pictures and through the Fortran 77 binding into build/pictures/f77; the script
-# checks that both wrote byte-identical files. The NFF/OFF viewers run on the scenes of
-# ../shared/data when that directory exists. Any other example program runs without
-# arguments; one that needs arguments is reported and skipped.
+# checks that both wrote byte-identical files. The NFF/OFF viewers run on the SPD teapot and
+# the bunny mesh of tests/data (gzip-compressed, see tests/data/README.md). Any other example
+# program runs without arguments; one that needs arguments is reported and skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -54,15 +55,11 @@ for prog in hello_c hello_f77 checkerboard_c; do
     run "$out" "$prog" || status=1
 done
 
-# Scene viewers on the shared data (beside the checkout), when present.
-data=$root/../shared/data
-if [ -f "$data/spd/teapot.nff" ]; then
-    run "$out" nff_view --size 384x384 "$data/spd/teapot.nff" "$out/teapot.png" || status=1
-fi
-if [ -f "$data/meshes/bunny00.off" ]; then
-    run "$out" mesh_view --size 384x384 --ground "$data/meshes/bunny00.off" "$out/bunny.png" ||
-        status=1
-fi
+# Scene viewers on the project's test data.
+data=$root/tests/data
+run "$out" nff_view --size 384x384 "$data/spd/teapot.nff.gz" "$out/teapot.png" || status=1
+run "$out" mesh_view --size 384x384 --ground "$data/meshes/bunny00.off.gz" "$out/bunny.png" ||
+    status=1
 
 # Anything else under build/examples: without arguments, skipped when it needs some.
 known=" ${twins[*]/%/_c} ${twins[*]/%/_f77} hello_c hello_f77 checkerboard_c nff_view mesh_view "

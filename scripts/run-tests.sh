@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
-# run-tests.sh -- set up, then run the whole test suite twice:
-#   ./build-test  Debug, -DGKS_WERROR=ON
+# SPDX-License-Identifier: MIT
+# run-tests.sh -- set up, then run the whole test suite three times:
+#   ./build-test  Debug, -DGKS_WERROR=ON, benchmarks built too (not run)
+#   ./build-min   Debug, -DGKS_WERROR=ON, every optional dependency off (each GKS_WITH_*
+#                 option, the Fortran binding included), benchmarks off; then the benchmarks
+#                 are built there as well, so that their code without any peer compiles
 #   ./build-asan  Debug, -DGKS_WERROR=ON -DGKS_SANITIZE=ON (AddressSanitizer + UBSan,
 #                 LeakSanitizer on when it works here, see below)
 # then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
@@ -11,9 +15,23 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh
 
 echo "=== run-tests: Debug build with -Werror (build-test)"
-cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF
+cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
+      -DGKS_BUILD_BENCHMARKS=ON
 cmake --build build-test -j2
 ctest --test-dir build-test --output-on-failure -j2
+
+# Every GKS_WITH_* option that the project defines (read from the cache, so that a new
+# optional dependency is switched off here without editing this script).
+off=()
+while IFS= read -r name; do off+=("-D$name=OFF"); done < <(
+    sed -n 's/^\(GKS_WITH_[A-Z0-9_]*\):BOOL=.*/\1/p' build-test/CMakeCache.txt | sort)
+echo "=== run-tests: every optional dependency off (build-min): ${off[*]}"
+cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
+      -DGKS_BUILD_BENCHMARKS=OFF "${off[@]}"
+cmake --build build-min -j2
+ctest --test-dir build-min --output-on-failure -j2
+cmake -S . -B build-min -DGKS_BUILD_BENCHMARKS=ON >/dev/null
+cmake --build build-min -j2
 
 echo "=== run-tests: sanitizer build (build-asan)"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=ON

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # setup-bench.sh -- installs the peer renderers and gnuplot used by bench/compare and
 # bench/speed_error, from Debian packages only (nothing built or installed by hand):
 #   libembree-dev    Embree 3 (rtcIntersect1 / rtcOccluded1), headers + library

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # setup.sh -- install the build and test dependencies on Debian 12 (idempotent).
 # Installs only what is missing, with apt-get (non-interactive); runs `apt-get update`
 # only when something has to be installed. Needs root (or sudo) only in that case.

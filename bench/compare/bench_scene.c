@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench_scene.c -- see bench_scene.h */
 #include "bench_scene.h"
 #include "scene_io.h"

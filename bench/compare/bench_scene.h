@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_scene.h -- scene set-up shared by bench/compare and bench/speed_error (not part of
  * the library): reads an NFF / OFF / PLY file with scene_io, moves it into view reference

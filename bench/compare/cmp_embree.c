@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * cmp_embree -- ours (rt_intersect / rt_occluded) vs Embree 3 (rtcIntersect1 / rtcOccluded1),
  * one thread, the same rays, same run.

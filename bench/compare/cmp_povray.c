@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * cmp_povray -- one mesh scene, ours vs POV-Ray 3.7, one thread, same run.
  *   cmp_povray POVRAY_EXE OUTDIR mesh.off [SIZE]

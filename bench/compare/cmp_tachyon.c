@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * cmp_tachyon -- SPD scenes, ours vs Tachyon, one thread, same run.
  *   cmp_tachyon TACHYON_EXE OUTDIR scene.nff...

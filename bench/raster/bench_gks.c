@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_gks.c -- the output pipeline through the whole GKS call path (issue 3,
  * Performance): a PNG workstation of 1024 x 1024 pixels in HLHSR mode z-buffer, one

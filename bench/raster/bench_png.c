@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_png.c -- PNG encoding cost of the PNG workstation's compression settings
  * (ESCAPE GESC_PNG_COMPRESSION): each input PNG is decoded once, then written with the

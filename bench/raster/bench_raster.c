@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench_raster.c -- timings of the raster module at 1024 x 1024, single thread:
  *   tri16   10^6 random z-buffered triangles, vertices within a 16 px box

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_gallery.c -- renders every primitive and style of the raster module into one
  * picture for visual inspection: the stroke font, hatch styles, pattern, cell array,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_bench -- loads an NFF (SPD) or OFF scene, renders it with gksrt and reports frame time
  * and Mrays/s.
@@ -60,7 +61,7 @@ int main(int argc, char **argv)
     }
     rtu_mesh m;
     size_t n = strlen(path);
-    int isoff = n > 4 && !strcmp(path + n - 4, ".off");
+    int isoff = (n > 4 && !strcmp(path + n - 4, ".off")) || (n > 7 && !strcmp(path + n - 7, ".off.gz"));
     if ((isoff ? rtu_load_off(path, &m) : rtu_load_nff(path, &m)) != 0) {
         fprintf(stderr, "cannot load %s\n", path);
         return 1;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_leak -- closed-mesh leak probe at full size (issue "Numerical stability: hard cases",
  * item 1) and, with -primary, primary-ray speed; both side by side with Embree 3 when built

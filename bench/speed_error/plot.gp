@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # plot.gp -- log-log plot of error (RMSE against the reference) vs render time, one panel per
 # scene, with the Pareto front; reads the CSV written by speed_error.
 #   gnuplot -e "csv='docs/speed_error.csv'; out='docs/speed_error.png'; scenes='gears mount bunny'" plot.gp

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # run.sh -- speed against error of the gksrt render settings (issue 7): renders the
 # references and all settings for SPD gears, SPD mount and the bunny mesh (with a mirror
 # weight ks 0.3 so that depth and cut-off matter), writes docs/speed_error.csv, the log-log
@@ -18,17 +19,30 @@ for a in "$@"; do
     --no-build) DO_BUILD=0 ;;
     --quick) QUICK=1 ;;
     -h | --help)
-        sed -n '2,10p' "$0"
+        sed -n '3,11p' "$0"
         exit 0
         ;;
     *) BUILD=$a ;;
     esac
 done
 [ -n "$BUILD" ] || BUILD="$SRC/build-compare"
-DATA=${GKS_DATA:-"$SRC/../shared/data"}
+# The scenes and meshes are stored gzip-compressed in tests/data; the peers read plain
+# files, so they are inflated once into BUILD_DIR/data (GKS_DATA=dir: use plain files there).
+if [ -n "${GKS_DATA:-}" ]; then
+    DATA=$GKS_DATA
+else
+    DATA="$BUILD/data"
+    for gz in "$SRC"/tests/data/spd/*.gz "$SRC"/tests/data/meshes/*.gz; do
+        sub=$(basename "$(dirname "$gz")")
+        plain="$DATA/$sub/$(basename "$gz" .gz)"
+        [ -s "$plain" ] && continue
+        mkdir -p "$DATA/$sub"
+        gzip -dc "$gz" >"$plain.part" && mv "$plain.part" "$plain"
+    done
+fi
 
 if [ "$DO_BUILD" -eq 1 ]; then
-    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DGKS_BUILD_BENCHMARKS=ON >/dev/null
     cmake --build "$BUILD" --target speed_error -j2 >/dev/null
 fi
 EXE="$BUILD/bench/speed_error/speed_error"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * speed_error -- speed against error of the gksrt render settings (issue 7).
  *   speed_error [-s SIZE] [-ref-spp N] [-ref-depth D] [-ref-threads T] [-reps R] [-csv FILE]

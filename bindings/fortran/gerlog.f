@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       SUBROUTINE GERLOG(ERRNR, FCTID, ERRFIL)
 !     ERROR LOGGING (ISO 8651-1): writes the error number, the function
 !     name and the standard message as one line to unit ERRFIL.

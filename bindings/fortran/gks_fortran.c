@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran.c -- the FORTRAN 77 binding (ISO 8651-1 names) as thin C wrappers over the
  * C binding (gks.h). Each entry point dereferences its arguments, converts REAL to double

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran.h -- what the Fortran 77 binding's C files share: the name mangling, the
  * Fortran scalar types and the list-inquiry helper.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_input.c -- FORTRAN 77 binding of the input functions (ISO 8651-1 names and
  * argument lists, as in RAL GKS libraries/gks/base, e.g. gqsts.f): GINLC GINSK GINVL

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_light.c -- FORTRAN 77 entry points of the lighting functions (PHIGS PLUS
  * semantics added to GKS-3D, paper section 5) and their inquiries, as thin wrappers over

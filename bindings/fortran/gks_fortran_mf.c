@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_mf.c -- FORTRAN 77 binding of the GKS metafile functions (ISO 8651-1):
  * GWITM, GGTITM, GRDITM, GIITM. The item data record is DATREC, an array of LDR (MLDR)

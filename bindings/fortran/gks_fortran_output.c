@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_output.c -- FORTRAN 77 binding of the output primitives, primitive
  * attributes, representations and their inquiries (ISO 8651-1 names; GKS-3D names from

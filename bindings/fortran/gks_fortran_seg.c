@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_seg.c -- Fortran 77 entry points of the segment functions and their
  * inquiries (ISO 8651-1 names; GSSGT3 and GQSGA3 take the GKS-3D 3x4 matrix). Matrices are

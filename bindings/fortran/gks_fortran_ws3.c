@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_fortran_ws3.c -- Fortran 77 entry points of the input priority functions and the
  * workstation transformation 3: GSVPIP(TNR, RTNR, RELPRI), GQENTN(N, ERRIND, OL, SNTRAN),

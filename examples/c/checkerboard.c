@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * checkerboard.c -- the paper's first scene (Urban & Haberstroh, Fig. 2 and 3) through the
  * C binding: a checkerboard with a mirror standing on it and a red tile floating above it,

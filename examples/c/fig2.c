@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig2.c -- Fig. 2: the checkerboard scene drawn the conventional GKS way: HLHSR mode
  * z-buffer, no lighting model (reflectance equation NONE: flat colours).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig3.c -- Fig. 3: the same scene ray traced: positional light, shadows, mirror, glass block.
  * Usage: fig3_c [SIZE [PREFIX]] (fig_scene.h); writes PREFIXfig3.png and the previews

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig4.c -- Fig. 4: the ventilator above the board, its far half cut off by the view clip
  * in NPC3, ray traced with secondary rays NOT clipped: the clipped part still casts its shadow.

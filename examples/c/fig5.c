@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig5.c -- Fig. 5: as Fig. 4, with secondary rays clipped to the display volume
  * (ESCAPE GESC_RT_CLIP_SECONDARY): no shadow from the clipped part.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig_scene.c -- the paper's pictures (Fig. 2-5) through the C binding: scenes, workstation
  * set-up and the preview-then-render loop shared by fig2.c ... fig5.c. The Fortran 77

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fig_scene.h -- the scenes of the paper's pictures (Urban & Haberstroh 1992, Fig. 2-5) for
  * the C example programs fig2.c ... fig5.c (examples/c/fig_scene.c) and the image tests

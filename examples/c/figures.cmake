@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The paper's pictures (Fig. 2-5) through the C binding; included by examples/CMakeLists.txt.
 # Fortran twins: examples/f77 (fig2_f77 ... fig5_f77, byte-identical PNG files).
 foreach(n 2 3 4 5)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* hello.c -- the smallest GKS program: a filled triangle and a polyline frame on a PNG
  * workstation. Writes hello_c.png in the current directory. */
 #include <gks.h>

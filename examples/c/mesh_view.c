@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mesh_view.c -- ray traces an OFF or PLY triangle mesh (ASCII, optionally gzip'd) through
  * the GKS-3D C binding.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * nff_view.c -- ray traces an NFF scene (Haines' Neutral File Format, the SPD scenes)
  * through the GKS-3D C binding.
@@ -31,7 +32,7 @@
  * Ambient light: none by default (NFF has no ambient term; the SPD statistics do not depend
  * on it); --ambient A adds a white ambient light of intensity A.
  *
- * --spd follows the SPD testing procedure (../shared/data/README.md): rays at the pixel
+ * --spd follows the SPD testing procedure (tests/data/README.md): rays at the pixel
  * corners ((w+1)x(h+1) eye rays for a w x h image, i.e. 513x513 for the SPD's 512x512),
  * maximum depth 5, no adaptive cut-off; after the frame it prints
  *   rays eye=<n> eye_hit=<n> reflect=<n> refract=<n> shadow=<n>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene_gks.c -- scene_io scenes drawn through the GKS-3D C binding; see scene_gks.h.
  */

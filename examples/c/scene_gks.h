@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene_gks.h -- draws scene_io scenes through the GKS-3D C binding on a ray-tracing PNG
  * workstation (shared by the examples nff_view and mesh_view).

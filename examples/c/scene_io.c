@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene_io.c -- NFF, OFF and PLY (ASCII, optionally gzip'd) readers; see scene_io.h.
  *

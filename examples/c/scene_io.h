@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene_io.h -- reader of scene files for the examples and benchmarks (target scene_io).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * surface.c -- C twin of examples/f77/surface.f (same calls, same single-precision numbers,
  * byte-identical PNG files): the surface z = f(x, y) of a damped ripple on a 32 x 32 grid,

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM FIG2
 C     Fig. 2: the checkerboard scene drawn the conventional GKS way:
 C     HLHSR mode z-buffer, no lighting model (flat colours).

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM FIG3
 C     Fig. 3: the same scene ray traced: positional light, shadows,
 C     a mirror and a glass block.

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM FIG4
 C     Fig. 4: the ventilator, its far half cut off by the view clip,
 C     ray traced, secondary rays NOT clipped: it still casts its shadow.

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM FIG5
 C     Fig. 5: as Fig. 4 with secondary rays clipped (ESCAPE GESRCS):
 C     no shadow from the clipped part.

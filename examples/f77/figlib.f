@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
 C     figlib.f -- the paper's pictures (Urban & Haberstroh 1992,
 C     Fig. 2-5) through the FORTRAN 77 binding: scenes, workstation
 C     set-up and the preview-then-render loop shared by fig2.f ...

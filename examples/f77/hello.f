@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM HELLO
 !     gks3d FORTRAN 77 example: a red filled triangle and a blue
 !     polyline (a closed square) on a PNG workstation. CONID 1 writes the file gks1.png.

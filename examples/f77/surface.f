@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM SURFAC
 C     A scientist's picture: the surface z = f(x, y) of a damped ripple
 C     on a 32 x 32 grid, each grid cell emitted as FILL AREA 3 (split

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_alloc.c -- the allocation funnel of gksrt: every size multiplication overflow-checked.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_build.c -- construction of the uniform grid in flat CSR arrays (cell offsets +
  * reference array, no per-cell allocation) with a second level in crowded cells.

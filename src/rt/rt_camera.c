@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_camera.c -- camera recovery from the view mapping matrix (Urban & Haberstroh, section 3):
  * the display volume's corners are mapped through the INVERSE view mapping matrix into VRC3;

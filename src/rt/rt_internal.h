@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_internal.h -- private data of the gksrt ray tracer. Not for applications.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_lbuf.c -- light buffers: per light, the primitives that can lie between it and a point.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_prim.h -- ray/primitive intersection tests (inline, shared by the traversal).
  * Private to src/rt.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_render.c -- shading (PHIGS PLUS reflectance equations, shadows, mirror reflection,
  * refraction with Fresnel weighting) and the tiled multi-threaded frame loop.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_scene.c -- scene building: surfaces, lights, polygons, cell arrays, commit
  * (degenerate primitives dropped, planes and projections precomputed, grid built).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_trace.c -- 3D-DDA traversal of the two-level uniform grid and the batch ray API.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cap_fixture.h -- the fixture shared by the primitive and attribute tests: GKS open with
  * one active null workstation (id 1), primitive capture on, default transformation (WC =
  * NDC unit square, clipping on); and exact error expectations. Include after cmocka.h,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # check_symbols.sh LIB LIST -- the shared library exports exactly the intended symbols
 # (the public API of gks.h, the binding and test hooks): nothing internal leaks.
 set -eu

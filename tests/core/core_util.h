@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* core_util.h -- shared helpers of the core tests: a capturing error handler, driving
  * GKS into an operating state, and a snapshot of the state lists. */
 #ifndef CORE_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* png_util.h -- reading a workstation's PNG back for pixel checks in the core tests. */
 #ifndef PNG_UTIL_H
 #define PNG_UTIL_H

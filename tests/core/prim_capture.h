@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* prim_capture.h -- the core tests' view of what drivers receive: a hook (exported test
  * API gks_test_set_prim_hook) records deep copies of the primitives the core dispatches,
  * so tests can assert on resolved attributes, clipped points and loop structure. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_attrs.c -- primitive attributes: defaults, setter/inquiry round trips, every
  * argument error (and the value unchanged after it), workstation representations (SET

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_control.c -- argument errors of the control, transformation and output functions
  * (standard error numbers, no other effect), inquiry error indicators, the error file

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_metafile.c -- the GKS metafile workstations (MO, MI): round trips (a scene drawn on
  * a PNG workstation directly and the same scene written to a metafile, then interpreted

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_png_render.c -- the PNG workstation's rendering (ws_png.c, ws_png_render.c) at the
  * driver level: gks_prim values handed to gks_ws_png_driver on a workstation state list

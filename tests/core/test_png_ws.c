@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_png_ws.c -- the PNG workstation: image size from the workstation viewport, exact
  * pixel colours (no tolerance: solid fills without anti-aliasing are exact), clipping at

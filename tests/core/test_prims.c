@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_prims.c -- output primitives as the drivers receive them (through the core's test
  * hook): marker clipping by centres, polyline breaking at non-finite points, TEXT (3)

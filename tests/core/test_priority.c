@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_priority.c -- SET VIEWPORT INPUT PRIORITY and SET VIEW TRANSFORMATION INPUT
  * PRIORITY (orderings and their inquiries, errors), SET WORKSTATION WINDOW 3 / VIEWPORT 3

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_raytrace.c -- lighting functions and HLHSR mode 4 (ray tracing) on the PNG
  * workstation: exact Lambert shading, a shadow where geometry puts it, silhouettes equal

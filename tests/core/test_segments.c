@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_segments.c -- segments through the C binding on PNG workstations: the operating
  * state machine, every segment error number, the inquiries, and the picture after

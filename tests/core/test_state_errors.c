@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_state_errors.c -- table-driven: every function of gks_functions.def (GKS_FN rows)
  * is called in every reachable operating state; where the state is not allowed, exactly

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_utility.c -- the utility functions through the C binding: hand-computed matrices,
  * the coordinate switch (WC mapped by the current normalization transformation), and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_nff_view.c -- end-to-end runs of the examples nff_view and mesh_view:
  *   test_nff_view NFF_VIEW MESH_VIEW TETRA_NFF WORKDIR

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_scene_io.c -- unit tests of the NFF/OFF/PLY reader (examples/c/scene_io.c):
  * every keyword with known values, and a table of malformed inputs, each with the error

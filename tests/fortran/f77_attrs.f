@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM ATTRS
 !     Output primitives, attributes, representations and their
 !     inquiries through the FORTRAN 77 binding (gks_fortran_output.c).

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       SUBROUTINE CHKI(WHAT, GOT, WANT, NFAIL)
 !     Test helper: counts and reports an integer mismatch.
       CHARACTER*(*) WHAT

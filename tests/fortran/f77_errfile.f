@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM ERRFIL
 !     Provokes errors with the library's default GERHND/GERLOG writing
 !     to unit 22; the C checker compares the file line by line.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * f77_errfile_check.c -- runs f77_errfile (default GERHND -> GERLOG on unit 22) and
  * compares f77_errors.txt line by line with the expected "GKS ERROR n in NAME: message".

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM OWNHND
 !     A program's own GERHND replaces the library's: it must receive
 !     every error with the right ERRNR, FCTID and ERRFIL (unit 0 while

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM INPUT
 !     The REQUEST LOCATOR sequence of a legacy interactive program run
 !     on a gks3d workstation (category OUTPUT, no input devices): every

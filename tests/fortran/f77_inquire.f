@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM INQ
 !     List inquiry semantics (N = 0 count, 1-based N, out of range
 !     2002) and the other wrappers' argument conversion.

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM LIGHT
 !     The lighting extension of the Fortran binding: GSAPR, GSBAPR,
 !     GSRFEQ, GSBRFQ, GSLSR, GSLSS round-tripped through GQAPR, GQBAPR,

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM MFILE
 !     The GKS metafile through the Fortran binding: GWITM writes a user
 !     item to an MO workstation (CONID 31: file gks31.gksm), a polyline

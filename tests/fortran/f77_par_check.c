@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * f77_par_check.c -- runs the generated Fortran program that prints NAME=value for every
  * PARAMETER of GKS_PAR and GKSE_PAR and compares each with the C binding's enumerations

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: MIT
 ! The INCLUDE files compile in free form too.
 program parfree
   implicit none

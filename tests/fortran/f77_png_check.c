@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * f77_png_check.c -- runs examples/f77/hello (hello_f77) in the current directory and checks
  * gks1.png: 1024x1024 (PNG workstation display space, default workstation viewport), a red

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM SEGS
 !     Segment functions through the Fortran binding: the state
 !     machine, errors reported to GERHND, attributes round trip

@@ -1,3 +1,4 @@
+C     SPDX-License-Identifier: MIT
       PROGRAM VIEW3
 !     The GKS-3D slice through the Fortran binding: GEVVWM (VUP before
 !     VPN), GEVPJM, GSVWR, GSVWI, GSHRM, GFA3, GEVTM. Prints PASS or the

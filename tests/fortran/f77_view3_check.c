@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * f77_view3_check -- runs f77_view3 (the GKS-3D slice through the Fortran binding), requires
  * its "F77 VIEW3 PASS" line, then checks gks3.png pixel by pixel (exact: z-buffered flat

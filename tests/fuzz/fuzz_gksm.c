@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_gksm.c -- fuzz target for the GKS metafile reader (untrusted input): the bytes are a
  * metafile; read the header and every item, decoding each data record as integers, reals

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_mi.c -- fuzz target for the metafile input workstation (untrusted input): the bytes
  * are opened as a GKS metafile (MI workstation, through an anonymous memory file), and

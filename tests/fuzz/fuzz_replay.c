@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * fuzz_replay.c -- runs a libFuzzer target over files given on the command line (the
  * committed corpus), without libFuzzer: a regression test for every input ever found.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_gksm.c -- the GKS metafile codec: exact round trips of integers, reals and strings,
  * reading RAL-format files, and untrusted input (truncation, bad headers, wrong lengths,

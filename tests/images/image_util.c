@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image_util.c -- see image_util.h. */
 #include "image_util.h"
 #include <png.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* image_util.h -- PNG reading/writing, comparison with a tolerance and diff pictures for the
  * image regression tests (tests/images). */
 #ifndef IMAGE_UTIL_H

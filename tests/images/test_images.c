@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_images.c -- image regression tests of the example programs (examples/c/fig*.c,
  * surface.c and their Fortran twins in examples/f77).

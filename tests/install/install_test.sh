@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # install_test.sh MODE BUILD_DIR WORK_DIR SANITIZE_FLAGS
 # Tests of the installed gks3d package. MODE:
 #   install   cmake --install BUILD_DIR --prefix WORK_DIR/prefix (fresh)
@@ -35,9 +36,11 @@ case $mode in
 install)
     rm -rf "$prefix"
     cmake --install "$build" --prefix "$prefix" >"$work/install.log" 2>&1 || { cat "$work/install.log"; exit 1; }
-    for f in include/gks3d/gks.h include/gks3d/gks_functions.def include/gks3d/gksrt.h; do
+    for f in include/gks3d/gks.h include/gks3d/gks_functions.def include/gks3d/gks3d_version.h; do
         [ -f "$prefix/$f" ] || { echo "missing $f"; exit 1; }
     done
+    # The tracer's header is internal (src/rt/gksrt.h): never installed.
+    [ ! -e "$prefix/include/gks3d/gksrt.h" ] || { echo "gksrt.h is installed"; exit 1; }
     ls "$prefix"/lib*/libgks3d.a "$prefix"/lib*/libgks3d.so* "$prefix"/lib*/cmake/gks3d/gks3dConfig.cmake \
        "$prefix"/lib*/pkgconfig/gks3d.pc >/dev/null
     # libgks3d.a must be self-contained: objects of the internal modules are inside.
@@ -48,6 +51,7 @@ install)
 cmake-c)
     consumer consumer_c
     cd "$work/consumer_c"
+    ./consumer_default "$work/consumer_c/default.png"
     ./consumer_shared "$work/consumer_c/shared.png"
     ./consumer_static "$work/consumer_c/static.png"
     # The static executable must not need libgks3d.so.
@@ -57,7 +61,34 @@ pkgconfig)
     export PKG_CONFIG_PATH
     flags=$(pkg-config --cflags --libs gks3d)
     echo "pkg-config --cflags --libs gks3d: $flags"
+    # A consumer gets only gks3d's own flags (the .pc file is relocatable, so the paths are
+    # relative to its directory); libpng's flags go to static links only.
+    seen=""
+    for f in $flags; do
+        case $f in
+        -I*/include/gks3d) seen="${seen}I" ;;
+        -L*/lib) seen="${seen}L" ;;
+        -lgks3d) seen="${seen}l" ;;
+        *) echo "pkg-config gks3d: unexpected flag $f for a shared consumer"; exit 1 ;;
+        esac
+    done
+    [ "$seen" = ILl ] || { echo "pkg-config gks3d: expected -I.../include/gks3d -L.../lib -lgks3d"; exit 1; }
+    sflags=$(pkg-config --static --libs gks3d)
+    echo "pkg-config --static --libs gks3d: $sflags"
+    case " $sflags " in
+    *" -lpng"*" -lz "*) ;;
+    *) echo "pkg-config --static gks3d: libpng and zlib missing"; exit 1 ;;
+    esac
     mkdir -p "$work/pkgconfig"
+    # libgks3d.a with the flags of --static, the system libraries as usual.
+    slibs=$(echo " $sflags " | sed 's/ -lgks3d / -Wl,-Bstatic -lgks3d -Wl,-Bdynamic /')
+    # shellcheck disable=SC2086
+    ${CC:-cc} $sanflags -std=c11 -o "$work/pkgconfig/consumer_static" "$here/consumer_c/consumer.c" \
+        $(pkg-config --cflags gks3d) $slibs
+    "$work/pkgconfig/consumer_static" "$work/pkgconfig/pc_static.png"
+    if ldd "$work/pkgconfig/consumer_static" | grep -q libgks3d; then
+        echo "pkg-config static consumer uses libgks3d.so"; exit 1
+    fi
     # shellcheck disable=SC2086
     ${CC:-cc} $sanflags -std=c11 -o "$work/pkgconfig/consumer" "$here/consumer_c/consumer.c" $flags
     "$work/pkgconfig/consumer" "$work/pkgconfig/pc.png"

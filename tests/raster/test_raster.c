@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_raster.c -- raster module: exact coverage against an independent even-odd
  * point-in-polygon test, watertight shared edges, holes, depth buffer, linetypes,

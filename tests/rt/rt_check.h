@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_check.h -- small shared test helpers (header-only) for the gksrt tests */
 #ifndef GKS3D_RT_CHECK_H
 #define GKS3D_RT_CHECK_H

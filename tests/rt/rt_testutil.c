@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* rt_testutil.c -- see rt_testutil.h */
 #include "rt_testutil.h"
 
@@ -5,6 +6,31 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
+
+/* The test data (tests/data) is stored gzip-compressed; gzopen also reads plain files.
+ * The data is inflated into an anonymous temporary file so that the loaders below can use
+ * stdio's scanning. NULL if the file cannot be read. */
+static FILE *open_data(const char *path)
+{
+    gzFile gz = gzopen(path, "rb");
+    if (!gz)
+        return NULL;
+    FILE *f = tmpfile();
+    char buf[1 << 16];
+    int n = 0;
+    while (f && (n = gzread(gz, buf, sizeof buf)) > 0)
+        if (fwrite(buf, 1, (size_t)n, f) != (size_t)n)
+            n = -1;
+    if (gzclose(gz) != Z_OK || n < 0) {
+        if (f)
+            fclose(f);
+        return NULL;
+    }
+    if (f)
+        rewind(f);
+    return f;
+}
 
 void rtu_view_matrix(const rtu_view *v, double m[4][4])
 {
@@ -145,7 +171,7 @@ static int add_poly(rtu_mesh *m, caps *c, int n, const int *ix, int surf)
 int rtu_load_off(const char *path, rtu_mesh *m)
 {
     memset(m, 0, sizeof *m);
-    FILE *f = fopen(path, "r");
+    FILE *f = open_data(path);
     if (!f)
         return -1;
     char hdr[64];
@@ -184,7 +210,7 @@ fail:
 int rtu_load_nff(const char *path, rtu_mesh *m)
 {
     memset(m, 0, sizeof *m);
-    FILE *f = fopen(path, "r");
+    FILE *f = open_data(path);
     if (!f)
         return -1;
     caps c = {0};

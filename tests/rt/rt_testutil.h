@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_testutil.h -- helpers for the gksrt tests and benchmark (not part of the library):
  * view mapping matrices from the formulas of BINDINGS.md 3.3, a view orientation matrix,
- * and tiny OFF / NFF loaders.
+ * and tiny OFF / NFF loaders (plain or gzip-compressed files).
  */
 #ifndef GKS3D_RT_TESTUTIL_H
 #define GKS3D_RT_TESTUTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_camera.c -- camera recovery from view mapping matrices (paper section 3):
  * parallel, perspective and oblique matrices built from the closed forms of BINDINGS.md 3.3;

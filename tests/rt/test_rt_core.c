@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_core.c -- the grid traversal against brute force under the build settings the
  * defaults do not exercise, and the small mailbox of nearest / any-hit rays.

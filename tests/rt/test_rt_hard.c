@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_hard.c -- numerical stability of the gksrt ray tracer on hard cases (issue
  * "Numerical stability: hard cases", items 1-10). Each test counts what it checks and asserts
  * the count (misses, self-hits, mismatches, non-finite pixels: required 0):
- *  1 closed-mesh leak probe (../shared/data/meshes/ OFF files: rays at every vertex, every edge
+ *  1 closed-mesh leak probe (tests/data/meshes/ OFF files: rays at every vertex, every edge
  *    midpoint, plus random directions; the full 10^6 random rays: bench/rt/rt_leak),
  *  2 shared diagonal at offsets 0, 1e3, 1e6,  3 re-intersection at scales 1e-3..1e6 and the
  *    89/89.9/89.99 degree shadow-acne sweep (also translated by 1e6),  4 axis-aligned box room
@@ -228,9 +229,9 @@ static void leak_probe(const char *path)
 static void test_leak_probe(void **state)
 {
     (void)state;
-    leak_probe(RT_DATA_DIR "/meshes/fandisk_large.off");
-    leak_probe(RT_DATA_DIR "/meshes/armadillo.off");
-    leak_probe(RT_DATA_DIR "/meshes/bunny00.off");
+    leak_probe(RT_DATA_DIR "/meshes/fandisk_large.off.gz");
+    leak_probe(RT_DATA_DIR "/meshes/armadillo.off.gz");
+    leak_probe(RT_DATA_DIR "/meshes/bunny00.off.gz");
 }
 
 /* ---- 2: shared diagonal at offsets 0, 1e3, 1e6 ---- */
@@ -566,7 +567,7 @@ static void test_rotated_grid(void **state)
 {
     (void)state;
     rtu_mesh m;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff", &m), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff.gz", &m), 0);
     double vo[4][4];
     rtu_lookat(m.from, m.at, m.up, vo);
     rtu_mesh_transform(&m, vo);
@@ -1008,7 +1009,7 @@ static void test_polygons(void **state)
     bad += poly_check("concave quad at 1e6", 1, &n4, hugev, 1e-6, 0);
     /* the 144-vertex polygons of SPD gears (in their own coordinates: horizontal) */
     rtu_mesh m;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff", &m), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff.gz", &m), 0);
     size_t off = 0;
     int ngear = 0;
     double *buf = malloc(3 * 144 * sizeof *buf);
@@ -1034,7 +1035,7 @@ static void test_gears_polygons(void **state)
 {
     (void)state;
     rtu_mesh m;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff", &m), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff.gz", &m), 0);
     rt_scene *sc = rt_scene_new();
     int s = surf_plain(sc);
     int *first = malloc((size_t)m.np * sizeof *first);
@@ -1131,7 +1132,7 @@ static void test_teapot_stadium(void **state)
 {
     (void)state;
     rtu_mesh m;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/teapot.nff", &m), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/teapot.nff.gz", &m), 0);
     rt_scene *sc = rt_scene_new();
     int s = surf_plain(sc);
     m.nsurfs = 0; /* one plain surface for all */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_isect.c -- ray/primitive intersection and the grid: watertightness (closed mesh,
  * shared diagonals at growing offsets), grid == brute force bit for bit (walls exactly on cell
@@ -45,7 +46,7 @@ static void test_watertight_mesh(void **state)
 {
     (void)state;
     rtu_mesh m;
-    assert_int_equal(rtu_load_off(RT_DATA_DIR "/meshes/fandisk_large.off", &m), 0);
+    assert_int_equal(rtu_load_off(RT_DATA_DIR "/meshes/fandisk_large.off.gz", &m), 0);
     rt_scene *sc = rt_scene_new();
     int s = add_surface(sc);
     assert_int_equal(rtu_mesh_add(&m, sc, s), 0);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_lbuf.c -- light buffers (rt_lbuf.c): shadow rays that test a per-light candidate
  * list instead of walking the grid must give the walk's answers. Each scene is rendered with
@@ -281,7 +282,7 @@ static void test_gears(void **state)
 {
     (void)state;
     rtu_mesh m;
-    if (rtu_load_nff(RT_DATA_DIR "/spd/gears.nff", &m) != 0) {
+    if (rtu_load_nff(RT_DATA_DIR "/spd/gears.nff.gz", &m) != 0) {
         fprintf(stderr, "gears.nff not found under %s\n", RT_DATA_DIR);
         fail();
     }

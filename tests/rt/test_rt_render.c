@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_render.c -- analytic pictures: Lambert values, positional/spot lights, a shadow
  * rectangle, a mirror, Snell's shift through a glass slab, total internal reflection and the
@@ -554,7 +555,7 @@ static void test_threads(void **state)
 {
     (void)state;
     rtu_mesh mesh;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff", &mesh), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", &mesh), 0);
     double vo[4][4], bb[6];
     rtu_lookat(mesh.from, mesh.at, mesh.up, vo);
     rtu_mesh_transform(&mesh, vo);

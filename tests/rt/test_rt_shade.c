@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_rt_shade.c -- the frame loop against an independent evaluation through the public ray
  * API: rt_camera_ray bit for bit equal to the direct formula (NPC point through the inverse

@@ -92,7 +92,7 @@ static void proc_free(proc *p)
 static rt_scene *mount(rt_camera *cam)
 {
     rtu_mesh mesh;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff", &mesh), 0);
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", &mesh), 0);
     double vo[4][4], bb[6];
     rtu_lookat(mesh.from, mesh.at, mesh.up, vo);
     rtu_mesh_transform(&mesh, vo);

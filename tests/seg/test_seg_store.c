@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_seg_store.c -- segment storage: what is appended comes back bit-identical, the
  * drawing order follows priority then creation, memory grows linearly with content, and a

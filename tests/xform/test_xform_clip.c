@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_xform_clip.c -- homogeneous clipping: lines (Liang–Barsky), polylines, polygons with
  * several loops (Sutherland–Hodgman): pieces inside, lengths/areas preserved, the even-odd

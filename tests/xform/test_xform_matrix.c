@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_xform_matrix.c -- 4x4 utilities, inversion, conversions and composition,
  * EVALUATE / ACCUMULATE TRANSFORMATION MATRIX (3-D and 2-D), normalization and workstation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_xform_view.c -- view orientation and view mapping (BINDINGS.md §3.2, §3.3):
  * hand-computed matrices, the standard's defining properties on random and PVT-style

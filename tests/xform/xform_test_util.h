@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_test_util.h -- small helpers for the gks_xform tests (cmocka).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "gks_alloc.h"
 #include "gks_export.h"
 #include <stdint.h>

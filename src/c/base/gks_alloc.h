@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_alloc.h -- the one allocation funnel of the library: overflow-checked sizes and,
  * in test builds, failure injection (fail the Nth allocation) to check that a failed

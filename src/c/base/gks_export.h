@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_export.h -- symbol visibility. The library builds with -fvisibility=hidden; the
  * public API is marked GKS_API in gks.h; hooks used only by the tests are GKS_TEST_API.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_private.h -- guard for the library's internal headers: they are not part of the
  * installed interface and refuse to be included by applications.

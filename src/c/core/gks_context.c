@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_context.c -- the process's GKS context and the GKS description table.
  */

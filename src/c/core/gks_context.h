@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_context.h -- the root object holding the standard's tables: the GKS description
  * table (const), the GKS state list (exists while GKS is open), the error state list and

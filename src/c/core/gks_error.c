@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_error.c -- error table, the one report function, ERROR HANDLING and ERROR LOGGING.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_error.h -- the one error path: every function that detects an error calls
  * gks_error_report(), which sets the error state, calls the current ERROR HANDLING

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_state.h -- operating states as masks, and the standard's state error numbers.
  */

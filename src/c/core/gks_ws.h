@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_ws.h -- workstation state lists: creation/destruction and the common argument
  * checks of workstation functions (errors 20, 25, 31..39 in the standard's order).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster.h -- the raster module of the PNG workstation (internal, not installed).
  *

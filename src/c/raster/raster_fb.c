@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_fb.c -- framebuffer: creation, clearing and the box-filter resolve to 8 bits.
  */

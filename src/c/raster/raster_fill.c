@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_fill.c -- scan conversion of areas: even-odd polygons with holes, the triangle
  * fast path and cell arrays, with depth from the polygon's plane and solid, hatch,

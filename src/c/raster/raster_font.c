@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_font.c -- the compiled-in stroke font: a simplex sans for ASCII 32..126 drawn
  * for this library on an integer grid (cap height 21, x-height 14, base line 0,

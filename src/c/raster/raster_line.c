@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_line.c -- polylines (thin Bresenham fast path; wide lines as quads with round
  * joins), GKS linetypes continued across vertices, and polymarkers.

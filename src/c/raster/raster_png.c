@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_png.c -- PNG output and input through libpng. libpng reports errors by
  * longjmp; every object that must be released after a jump is kept in a struct that

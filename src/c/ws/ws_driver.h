@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_driver.h -- workstation drivers behind one small interface (cairo/netCDF style):
  * one static const table per workstation type, designated initialisers, NULL = not

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_wdt.c -- the output facilities and predefined bundles of the raster workstations.
  * The raster module draws linetypes 1..4, marker types 1..5, hatch styles -1..-12,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_wdt.h -- the output part of workstation description tables (ISO 7942 6.2): lists
  * of supported linetypes, marker types, text fonts and precisions, interior and hatch

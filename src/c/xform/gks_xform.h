@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_xform.h -- pure transformation and clipping math of the GKS-3D pipeline (internal).
  *

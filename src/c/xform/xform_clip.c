@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_clip.c -- clipping in homogeneous coordinates, before the division by w:
  * Liang–Barsky for lines and polylines, re-entrant Sutherland–Hodgman for polygons with

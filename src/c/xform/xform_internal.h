@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_internal.h -- helpers shared by the xform sources only.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_matrix.c -- 4x4 / 3x4 / 2x3 matrix utilities, normalization and workstation
  * transformations, pipeline composition. Pure functions (see gks_xform.h).

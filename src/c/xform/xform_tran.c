@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_tran.c -- EVALUATE / ACCUMULATE TRANSFORMATION MATRIX (3-D and 2-D): segment and
  * insert transformations built from fixed point, shift, rotation and scale.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * xform_view.c -- view orientation and view mapping matrices (EVALUATE VIEW ORIENTATION
  * MATRIX 3, EVALUATE VIEW MAPPING MATRIX 3 and their 2-D forms), camera recovery.

@@ -1,5 +1,7 @@
+/* SPDX-License-Identifier: MIT */
 /* consumer.c -- an installed-library consumer: draws on a PNG workstation, then checks
- * that the file argv[1] was written as a PNG of the workstation viewport size (200x100).
+ * that the file argv[1] was written as a PNG of the workstation viewport size (200x100),
+ * and that the library loaded is the version of the installed headers.
  * Exit status 0 only if GKS reported no error and the file header is right. */
 #include <gks.h>
 #include <stdio.h>
@@ -32,6 +34,15 @@ int main(int argc, char **argv)
 
     if (argc != 2)
         return 2;
+    int major = -1, minor = -1, patch = -1;
+    int version = gks3d_version(&major, &minor, &patch);
+    if (version != GKS3D_VERSION || major != GKS3D_VERSION_MAJOR || minor != GKS3D_VERSION_MINOR ||
+        patch != GKS3D_VERSION_PATCH || gks3d_version(NULL, NULL, NULL) != version) {
+        fprintf(stderr, "consumer: library version %d (%d.%d.%d), headers %s (%d)\n", version,
+                major, minor, patch, GKS3D_VERSION_STRING, GKS3D_VERSION);
+        return 1;
+    }
+    printf("consumer: gks3d %s, library and headers agree\n", GKS3D_VERSION_STRING);
     remove(argv[1]);
     gset_err_hand(count_errors, NULL);
     gopen_gks(NULL, 0);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_attr.c -- primitive attributes (ISO 7942 5.4; GKS-3D edge, pattern and HLHSR
  * attributes): the individual setters, the aspect source flags, the workstation

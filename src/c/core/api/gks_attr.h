@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_attr.h -- attribute resolution for one workstation (ISO 7942 4.4.4-4.4.8): each
  * aspect comes from the current individual value or, by its aspect source flag, from

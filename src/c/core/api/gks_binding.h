@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_binding.h -- entry points the Fortran binding needs beyond the ISO C names.
  * Exported (default visibility) but not part of the installed C interface.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_inq_attr.c -- inquiries of the output attributes: current primitive attributes
  * (GKS state list), workstation bundle tables (SET and REALIZED values), the output

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_inq_state.c -- inquiry functions. They never call ERROR HANDLING: the error
  * indicator receives the error number (state errors as the function's class requires:

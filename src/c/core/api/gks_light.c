@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_light.c -- lighting functions (PHIGS PLUS semantics added to GKS-3D, paper section 5):
  * SET (BACK) AREA PROPERTIES, SET (BACK) REFLECTANCE EQUATION, SET LIGHT SOURCE

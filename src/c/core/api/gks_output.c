@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_output.c -- output primitives (ISO 7942 5.3 and their GKS-3D forms): POLYLINE (3),
  * POLYMARKER (3), TEXT (3), FILL AREA (3), FILL AREA SET (3), CELL ARRAY (3),

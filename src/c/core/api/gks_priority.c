@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_priority.c -- input priority orderings: SET VIEWPORT INPUT PRIORITY (normalization
  * transformations, GKS state list) and SET VIEW TRANSFORMATION INPUT PRIORITY (view

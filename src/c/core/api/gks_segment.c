@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_segment.c -- segment functions (ISO 7942 5.7, GKS-3D SET SEGMENT TRANSFORMATION 3)
  * and their inquiries. The content lives in the segment store (gks_seg_store.h); primitives

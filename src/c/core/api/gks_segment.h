@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_segment.h -- the segment functions' links to the rest of the core: workstation
  * closing/clearing and regeneration. The store itself is gks_seg_store.h.

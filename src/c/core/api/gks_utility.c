@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_utility.c -- utility functions: EVALUATE/ACCUMULATE TRANSFORMATION MATRIX (2-D and
  * 3), EVALUATE VIEW ORIENTATION MATRIX 3, EVALUATE VIEW MAPPING MATRIX 3. The math is

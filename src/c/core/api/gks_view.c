@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_view.c -- GKS-3D viewing and HLHSR functions: SET WINDOW 3, SET VIEWPORT 3,
  * SET VIEW INDEX, SET VIEW REPRESENTATION 3, SET HLHSR MODE, and their inquiries.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_text_layout.c -- TEXT (3) layout with the compiled-in stroke font.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_text_layout.h -- TEXT (3) layout: turns a string into polyline strokes of the compiled-in
  * stroke font (src/c/raster) in WC3, honouring character height, expansion factor,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_codec.c -- GKS metafile codec (see gks_mf_codec.h for the format).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_codec.h -- the GKS metafile (GKSM, ISO 7942 Annex E) codec, character-coded as RAL GKS
  * writes it: a 90-character file header, then items "header + data record". No GKS state:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_record.c -- metafile output: the recording hooks the core calls (gks_mf_record.h) and WRITE
  * ITEM TO GKSM. Each hook writes one item to every active MO workstation (or to the

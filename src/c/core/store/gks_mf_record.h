@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_mf_record.h -- the GKS metafile workstations: recording at the API level (the core calls a
  * one-line hook from each function the metafile records; the hook writes an item to every

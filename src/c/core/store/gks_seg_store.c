@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_seg_store.c -- segment storage (see gks_seg_store.h).
  */

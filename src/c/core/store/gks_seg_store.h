@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * gks_seg_store.h -- segment storage (ISO 7942 4.7, 6.7): named segments holding their
  * primitives in NDC3, before segment transformation and clipping, with the attributes

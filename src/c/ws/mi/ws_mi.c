@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_mi.c -- the GKS metafile input workstation (type GWS_TYPE_MI, category MI) and the
  * metafile input functions GET ITEM TYPE FROM GKSM, READ ITEM FROM GKSM and INTERPRET

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_mo.c -- the GKS metafile output workstation (type GWS_TYPE_MO, category MO). The
  * connection identifier is the file name; OPEN WORKSTATION writes the file header, CLOSE

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_null.c -- the null workstation (type 99): category OUTPUT, accepts everything and
  * draws nothing; for batch runs and tests that need an open, active workstation.

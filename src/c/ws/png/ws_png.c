@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_png.c -- the PNG workstation (types 100 and 101): category OUTPUT, raster, display
  * space 1024x1024 (type 100) or 8192x8192 (type 101) pixels; DC unit = one pixel.

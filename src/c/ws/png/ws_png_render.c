@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_png_render.c -- primitives of the PNG workstation through the view pipeline into the
  * raster module, and the classic HLHSR modes (see ws_png_render.h).

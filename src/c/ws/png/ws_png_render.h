@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_png_render.h -- the classic renderers of the PNG workstation (internal): the view
  * pipeline of a primitive (NDC3 -> NPC3 -> clip -> DC, per view cached for the frame),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_raytrace.c -- HLHSR mode GHLHSR_RAYTRACE (paper sections 3 and 5) for the PNG
  * workstation. Area primitives (FILL AREA, FILL AREA SET, CELL ARRAY) are not rasterized but

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_raytrace.h -- HLHSR mode GHLHSR_RAYTRACE for raster workstations: FILL AREA, FILL AREA
  * SET and CELL ARRAY primitives are recorded in VRC3 and traced with gksrt when the frame is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_shade.c -- flat shading of planar areas (ws_shade.h): the ray tracer's local shading
  * (src/rt/rt_render.c, rt_shade_lights) without shadow rays, at the vertex centroid:

@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_shade.h -- flat (per-facet) shading of planar areas for the classic HLHSR modes, with
  * the PHIGS PLUS reflectance equations, area properties and light sources (issue 5: "so a
  * previewed picture and the ray-traced one agree in local lighting"). The formulas are the ray
- * tracer's local shading (include/gksrt.h, comment above rt_render) without shadows and
+ * tracer's local shading (src/rt/gksrt.h, comment above rt_render) without shadows and
  * without secondary rays, evaluated once per area at the vertex centroid, in VRC3 like the
  * tracer: points, lights and the eye go through the view orientation matrix of the area's view.
  */

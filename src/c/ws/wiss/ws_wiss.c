@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * ws_wiss.c -- Workstation Independent Segment Storage (type GWS_TYPE_WISS, category
  * WISS): a workstation that only stores segments (the core's segment store does the

@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: MIT */
 /*
- * gksrt.h -- standalone grid ray tracer of the gks3d library (target gksrt).
+ * gksrt.h -- the grid ray tracer of the gks3d library (target gksrt; internal, not installed).
  *
  * Works in view reference coordinates (VRC3), as in Urban & Haberstroh, "Ray Tracing and
  * Graphics Standards" (1992): the caller transforms its area primitives into VRC3, the camera
@@ -20,13 +21,12 @@
 #ifndef GKS3D_GKSRT_H
 #define GKS3D_GKSRT_H
 
-/* Symbols of the public API stay visible when the library is built with hidden
- * visibility (it is folded into libgks3d). */
-#if defined(__GNUC__)
-#define RT_API __attribute__((visibility("default")))
-#else
+/* The tracer is internal to gks3d: this header is not installed and the library exports
+ * none of its symbols (built with hidden visibility; RT_API marks the interface between the
+ * tracer and the rest of the library only). It is not a public API because its option and
+ * statistics structs are still changing and carry no size or version field; a public
+ * tracer API would be a new, versioned one (docs/RAYTRACING.md). */
 #define RT_API
-#endif
 
 #include <stddef.h>
 #include <stdint.h>
