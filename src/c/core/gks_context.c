@@ -69,15 +69,6 @@ gks_ws *gks_wiss(void)
     return NULL;
 }
 
-int gks_ws_is_active(int ws_id)
-{
-    gks_state_list *sl = context.sl;
-    for (int i = 0; sl && i < sl->n_active; i++)
-        if (sl->active_ws[i] == ws_id)
-            return 1;
-    return 0;
-}
-
 int gks_cur_norm_matrix(double m[3][4])
 {
     const gks_norm_tran *t = &context.sl->tran[context.sl->cur_tnr];

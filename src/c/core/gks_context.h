@@ -151,6 +151,4 @@ const gks_ws_driver *gks_driver_for_type(int ws_type);
 /* The open WISS workstation, or NULL. */
 gks_ws *gks_wiss(void);
 
-/* Whether ws_id is in the set of active workstations. */
-int gks_ws_is_active(int ws_id);
 #endif

@@ -546,10 +546,16 @@ static void i_escape(interp *ip)
 
 /* Items whose data record is a fixed list of fields: decoded into iv/rv by `fmt` (i, r),
  * complete and nothing left over, then performed. */
-static int fixed(interp *ip, const char *fmt, int *iv, double *rv)
+#define FIXED_MAX_INTS 8   /* the most integers of a fixed item (VIEW REPRESENTATION 3: 4) */
+#define FIXED_MAX_REALS 48 /* the most reals (VIEW REPRESENTATION 3: 38) */
+static int fixed(interp *ip, const char *fmt, int iv[FIXED_MAX_INTS], double rv[FIXED_MAX_REALS])
 {
     int ni = 0, nr = 0;
     for (const char *f = fmt; *f; f++) {
+        if (*f == 'i' ? ni == FIXED_MAX_INTS : nr == FIXED_MAX_REALS) {
+            ip->d.err = 165; /* a format beyond the arrays: never written past them */
+            return 0;
+        }
         if (*f == 'i')
             iv[ni++] = d_int(&ip->d);
         else
@@ -599,8 +605,8 @@ static void i_asf(interp *ip)
 /* Performs item `type`; returns 0, 164 (no such GKS item) or the decoding error. */
 static int perform(interp *ip, int type)
 {
-    int iv[8] = { 0 };
-    double rv[48] = { 0 };
+    int iv[FIXED_MAX_INTS] = { 0 };
+    double rv[FIXED_MAX_REALS] = { 0 };
     switch (type) {
     case GKSM_ITEM_END:
         break;
