@@ -41,8 +41,9 @@ flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-ov
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).
-# rt_mpi.c is built only with MPI (src/rt/CMakeLists.txt); the fuzz builds go without it.
-mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' -not -name rt_mpi.c | sort)
+# rt_mpi.c (MPI), ws_cairo.c and ws_x11.c (cairo, X11) are optional drivers built only when
+# found (src/rt, src/c/ws CMake); the fuzz builds go without them, as the driver list allows.
+mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' -not -name rt_mpi.c -not -name ws_cairo.c -not -name ws_x11.c | sort)
 clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthread -lm \
     -o "$out/fuzz_mi"
 # The state machine: random call sequences through the whole library.
