@@ -568,3 +568,28 @@ int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, in
         }
     return 0;
 }
+
+int rtu_load_scene_vrc(const char *path, rtu_mesh *m, double bb[6])
+{
+    size_t n = strlen(path);
+    int isoff = (n > 4 && !strcmp(path + n - 4, ".off")) || (n > 7 && !strcmp(path + n - 7, ".off.gz"));
+    if ((isoff ? rtu_load_off(path, m) : rtu_load_nff(path, m)) != 0)
+        return -1;
+    rtu_mesh_bbox(m, bb);
+    if (!m->has_view) {
+        double c[3] = {0.5 * (bb[0] + bb[3]), 0.5 * (bb[1] + bb[4]), 0.5 * (bb[2] + bb[5])};
+        double r = 0.5 * sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                              (bb[5] - bb[2]) * (bb[5] - bb[2]));
+        memcpy(m->at, c, sizeof c);
+        memcpy(m->from, c, sizeof c);
+        m->from[2] += 3.0 * r;
+        m->up[1] = 1.0;
+        m->angle = 40.0;
+        m->hither = 0.01 * r;
+    }
+    double vo[4][4];
+    rtu_lookat(m->from, m->at, m->up, vo);
+    rtu_mesh_transform(m, vo);
+    rtu_mesh_bbox(m, bb);
+    return 0;
+}

@@ -62,6 +62,10 @@ void rtu_mesh_transform(rtu_mesh *m, const double vo[4][4]);
 int rtu_mesh_add(const rtu_mesh *m, rt_scene *sc, int default_surface);
 /* bounding box lo xyz hi xyz */
 void rtu_mesh_bbox(const rtu_mesh *m, double bb[6]);
+/* The benchmarks' scene: an OFF (.off, .off.gz) or NFF file, viewed from its own NFF view or,
+ * when it has none, from 3 bounding radii along +z; transformed into VRC3. bb receives the box
+ * in VRC3. 0 on success (m then owned by the caller), -1 when the file cannot be loaded. */
+int rtu_load_scene_vrc(const char *path, rtu_mesh *m, double bb[6]);
 
 /* perspective camera for an NFF view: scene must already be in VRC3 (eye at origin looking
  * down -n); fills the view so that the whole bbox lies between front and back planes. */
