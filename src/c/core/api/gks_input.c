@@ -16,6 +16,7 @@
  * Output arguments are set to "no input" before any check (REQUEST: status NONE), so a
  * caller never reads stale values.
  */
+#include "gks_legacy.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_indev.h"
@@ -61,7 +62,7 @@ static int device_error(Gint ws_id, Gin_class cls, Gint dev, gks_ws **out)
 /* Workstation type and device of the default-data inquiries: 22, 23, 38, 140. */
 static int type_device_error(Gint ws_type, Gin_class cls, Gint dev, const gks_ws_desc **out)
 {
-    if (ws_type <= 0)
+    if (gks_ws_type_map(ws_type) <= 0)
         return 22;
     const gks_ws_driver *d = gks_driver_for_type(ws_type);
     if (!d)
@@ -1275,7 +1276,7 @@ GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
 {
     Gint e = gks_inq_state(GKS_S_OPEN);
     const gks_ws_driver *d = NULL;
-    if (!e && ws_type <= 0)
+    if (!e && gks_ws_type_map(ws_type) <= 0)
         e = 22;
     if (!e && !(d = gks_driver_for_type(ws_type)))
         e = 23;

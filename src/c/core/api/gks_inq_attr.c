@@ -5,6 +5,7 @@
  * facilities and predefined bundles of workstation description tables, and INQUIRE TEXT
  * EXTENT (3). They never call ERROR HANDLING; nothing but *err_ind is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_store.h"
@@ -359,7 +360,7 @@ static const gks_wdt_output *inq_out_type(Gint ws_type, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }

@@ -5,6 +5,7 @@
  * 8 for the GKS state list, 7 for workstation state lists, 0 for description tables that
  * are available in every state except GKCL (8)), and nothing else is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_error.h"
 #include "gks_state.h"
 #include "gks_ws.h"
@@ -44,7 +45,7 @@ static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }

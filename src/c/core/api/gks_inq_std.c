@@ -7,6 +7,7 @@
  * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
  * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_store.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
@@ -53,7 +54,7 @@ static const gks_ws_desc *desc_of(Gint ws_type, int out, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }
