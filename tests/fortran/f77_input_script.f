@@ -6,6 +6,7 @@ C     SPDX-License-Identifier: MIT
 !     GWAIT/GGTVL, an exhausted script (status NONE at once), the
 !     3-D state and default inquiries, and GPREC/GUREC round trips.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NFAIL, ISTAT, ITNR, NP, ICH, LOSTR, IVW, IERR, LDR, I
       INTEGER IWK, ICL, IDNR, MODE, IESW, IPET, IOL
       INTEGER IA(3), JA(3), LSTR(2), JSTR(2), IL, RL, SL
