@@ -633,6 +633,7 @@ GKS_API void gset_back_int_shad_meth(Gint method) { set_shad(GFN_SBISM, 1, metho
 
 GKS_API void ginq_int_shad_meth(Gint *err_ind, Gint *front, Gint *back)
 {
+    GKS_INQ_ARGS(err_ind, front, back);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (front)
