@@ -74,6 +74,7 @@ typedef struct gks_cur_attrs {
     Garea_props area_props[2];  /* front, back (SET (BACK) AREA PROPERTIES) */
     int refl_eq[2];             /* front, back reflectance equation, GREFL_* */
     uint64_t light_mask;        /* bit i-1: light source index i is active */
+    int int_shad[2];            /* front, back interior shading method, GSHAD_* */
 } gks_cur_attrs;
 
 typedef struct gks_norm_tran {
@@ -145,7 +146,8 @@ gks_context *gks_ctx(void);
 /* Workstation state list of open workstation ws_id, or NULL. */
 gks_ws *gks_ws_lookup(int ws_id);
 
-/* Driver of workstation type ws_type, or NULL if the type does not exist. */
+/* Driver of workstation type ws_type as the application gave it (GKS3D_WS_TYPES applied,
+ * gks_legacy.h), or NULL if the type does not exist. */
 const gks_ws_driver *gks_driver_for_type(int ws_type);
 
 /* The open WISS workstation, or NULL. */
