@@ -1,4 +1,5 @@
 /* SPDX-License-Identifier: MIT */
+#define _POSIX_C_SOURCE 200809L /* stat */
 /*
  * gks_fortran.c -- the FORTRAN 77 binding (ISO 8651-1 names) as thin C wrappers over the
  * C binding (gks.h). Each entry point dereferences its arguments, converts REAL to double
@@ -22,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 
 /* The Fortran ERROR HANDLING subroutine (gerhnd.f or the application's own). */
@@ -164,12 +166,71 @@ FAPI void FNAME(gopks, GOPKS)(const fint *errfil, const fint *bufa)
 FAPI void FNAME(gclks, GCLKS)(void) { gclose_gks(); }
 FAPI void FNAME(geclks, GECLKS)(void) { gemergency_close_gks(); }
 
-/* GOPWK(WKID, CONID, WTYPE): the integer CONID is passed as its decimal text. */
+/* The Fortran side's INQUIRE of a unit's file name (gkunam.f). */
+extern void FNAME(gkunam, GKUNAM)(const fint *unit, char *name, fint *nlen, size_t name_len);
+
+#define UNIT_NAME_MAX 4096
+
+/* The regular file the program OPENed unit u on, into name (UNIT_NAME_MAX + 2 bytes);
+ * 0 = none (unit not open or unnamed, a preconnected stream, a device, a name too long). */
+static int unit_file(fint u, char *name)
+{
+    fint n = 0;
+    FNAME(gkunam, GKUNAM)(&u, name, &n, UNIT_NAME_MAX + 1);
+    if (n <= 0 || n > UNIT_NAME_MAX) /* n = UNIT_NAME_MAX + 1: the name did not fit */
+        return 0;
+    name[n] = '\0';
+    if (!strcmp(name, "stdin") || !strcmp(name, "stdout") || !strcmp(name, "stderr"))
+        return 0; /* gfortran's names of the preconnected units 5, 6, 0 */
+    struct stat st;
+    return stat(name, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/* Workstations opened on a unit's file, so that GQWKC answers the unit: slot = (wkid,
+ * unit, file name); valid while that workstation's connection identifier is the name. */
+static struct {
+    fint wkid, unit;
+    char *name;
+} unit_ws[16];
+
+static void unit_remember(fint wkid, fint unit, const char *name)
+{
+    int k = -1;
+    for (int i = 0; i < 16; i++)
+        if (unit_ws[i].name && unit_ws[i].wkid == wkid)
+            k = i;
+    for (int i = 0; k < 0 && i < 16; i++)
+        if (!unit_ws[i].name)
+            k = i;
+    if (k < 0)
+        k = 0; /* more than 16 remembered: the oldest slot goes */
+    free(unit_ws[k].name);
+    unit_ws[k].name = str_dup_n(name, strlen(name));
+    unit_ws[k].wkid = wkid;
+    unit_ws[k].unit = unit;
+}
+
+/* The unit GOPWK took workstation wkid's connection identifier conn from, or -1. */
+static fint unit_recall(fint wkid, const char *conn)
+{
+    for (int i = 0; i < 16; i++)
+        if (unit_ws[i].name && unit_ws[i].wkid == wkid && !strcmp(unit_ws[i].name, conn))
+            return unit_ws[i].unit;
+    return -1;
+}
+
+/* GOPWK(WKID, CONID, WTYPE): CONID is a Fortran unit. When the program OPENed that unit
+ * on a regular file, the workstation uses that file (RAL's metafile programs); otherwise
+ * CONID is passed as its decimal text (MO/MI: gksN.gksm). The unit itself is left alone. */
 FAPI void FNAME(gopwk, GOPWK)(const fint *wkid, const fint *conid, const fint *wtype)
 {
     char conn[16];
+    char name[UNIT_NAME_MAX + 2];
     snprintf(conn, sizeof conn, "%d", *conid);
-    gopen_ws(*wkid, conn, *wtype);
+    int named = unit_file(*conid, name);
+    gopen_ws(*wkid, named ? name : conn, *wtype);
+    if (named)
+        unit_remember(*wkid, *conid, name);
 }
 
 FAPI void FNAME(gclwk, GCLWK)(const fint *wkid) { gclose_ws(*wkid); }
@@ -390,14 +451,14 @@ FAPI void FNAME(gqmntn, GQMNTN)(fint *errind, fint *maxtnr)
  * integer; -1 when it is not one (a workstation opened from C with a file name). */
 FAPI void FNAME(gqwkc, GQWKC)(const fint *wkid, fint *errind, fint *conid, fint *wtype)
 {
-    char conn[32] = "";
+    char conn[UNIT_NAME_MAX + 2] = "";
     Gint t = 0;
     long v = -1;
     ginq_ws_conn_type(*wkid, (Gint)sizeof conn, errind, conn, &t);
     if (*errind)
         return;
     if (strlen(conn) >= sizeof conn - 1 || parse_int(conn, strlen(conn), &v))
-        v = -1; /* a longer identifier is no integer CONID */
+        v = unit_recall(*wkid, conn); /* a file name: the unit GOPWK found it on, or -1 */
     *conid = (fint)v;
     *wtype = t;
 }

@@ -96,9 +96,9 @@ FAPI void FNAME(gslss, GSLSS)(const fint *nact, const fint *act, const fint *nde
 FAPI void FNAME(gqapr, GQAPR)(fint *errind, freal *ambc, freal *difc, freal *specc,
                               freal *spcol, freal *spexp, freal *transc, freal *refri)
 {
-    Garea_props f;
+    Garea_props f, unused; /* both outputs are required (a NULL one is 2003) */
     memset(&f, 0, sizeof f);
-    ginq_area_props(errind, &f, NULL);
+    ginq_area_props(errind, &f, &unused);
     if (!*errind)
         put_props(&f, ambc, difc, specc, spcol, spexp, transc, refri);
 }
@@ -106,9 +106,9 @@ FAPI void FNAME(gqapr, GQAPR)(fint *errind, freal *ambc, freal *difc, freal *spe
 FAPI void FNAME(gqbapr, GQBAPR)(fint *errind, freal *ambc, freal *difc, freal *specc,
                                 freal *spcol, freal *spexp, freal *transc, freal *refri)
 {
-    Garea_props b;
+    Garea_props b, unused; /* both outputs are required (a NULL one is 2003) */
     memset(&b, 0, sizeof b);
-    ginq_area_props(errind, NULL, &b);
+    ginq_area_props(errind, &unused, &b);
     if (!*errind)
         put_props(&b, ambc, difc, specc, spcol, spexp, transc, refri);
 }

@@ -6,6 +6,7 @@
 #include "ws_driver.h"
 #include "gks_xform.h"
 #include "gks_mf_record.h"
+#include "gks_legacy.h"
 
 static const gks_ws_driver *const driver_list[] = {
     &gks_ws_null_driver,
@@ -54,6 +55,7 @@ gks_ws *gks_ws_lookup(int ws_id)
 
 const gks_ws_driver *gks_driver_for_type(int ws_type)
 {
+    ws_type = gks_ws_type_map(ws_type);
     for (int i = 0; i < desc_table.n_ws_types; i++)
         if (driver_list[i]->desc->type == ws_type)
             return driver_list[i];

@@ -145,7 +145,8 @@ gks_context *gks_ctx(void);
 /* Workstation state list of open workstation ws_id, or NULL. */
 gks_ws *gks_ws_lookup(int ws_id);
 
-/* Driver of workstation type ws_type, or NULL if the type does not exist. */
+/* Driver of workstation type ws_type as the application gave it (GKS3D_WS_TYPES applied,
+ * gks_legacy.h), or NULL if the type does not exist. */
 const gks_ws_driver *gks_driver_for_type(int ws_type);
 
 /* The open WISS workstation, or NULL. */

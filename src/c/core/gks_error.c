@@ -98,6 +98,18 @@ int gks_inq_begin(Gint *err_ind, unsigned mask)
     return *err_ind;
 }
 
+int gks_inq_args(Gint *err_ind, int n, const void *const *p)
+{
+    if (!err_ind)
+        return 1;
+    for (int i = 0; i < n; i++)
+        if (!p[i]) {
+            *err_ind = 2003; /* a NULL pointer argument (docs/ERRORS.md) */
+            return 1;
+        }
+    return 0;
+}
+
 int gks_inq_state(unsigned mask)
 {
     return (mask & (1u << gks_ctx()->op_st)) ? 0 : gks_state_error_for(mask);

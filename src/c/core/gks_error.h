@@ -43,6 +43,18 @@ int gks_inq_state(unsigned mask);
  * indicator returns -1 (the inquiry has nowhere to answer and does nothing). */
 int gks_inq_begin(Gint *err_ind, unsigned mask);
 
+/* Inquiry entry for pointer arguments (issue 20 I), the first statement of every ginq_*:
+ * returns 1 when the inquiry must return at once, because err_ind is NULL (nothing is
+ * written) or one of the n pointers p is NULL (*err_ind = 2003, in every state). */
+int gks_inq_args(Gint *err_ind, int n, const void *const *p);
+#define GKS_INQ_ARGS(err_ind, ...)                                                         \
+    do {                                                                                   \
+        const void *const gks_inq_p_[] = { __VA_ARGS__ };                                  \
+        if (gks_inq_args((err_ind), (int)(sizeof gks_inq_p_ / sizeof gks_inq_p_[0]),       \
+                         gks_inq_p_))                                                      \
+            return;                                                                        \
+    } while (0)
+
 /* Report as the caller's last action and return (from a void function / with `val`):
  * returning is right whatever the handler did. */
 #define GKS_FAIL(err, fct)                                                                 \

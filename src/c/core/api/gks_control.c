@@ -5,6 +5,7 @@
  * STATE, MESSAGE, ESCAPE, EMERGENCY CLOSE GKS. Each entry point: state check, argument
  * checks in the standard's order (error -> report, no other effect), then the work.
  */
+#include "gks_legacy.h"
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
@@ -30,6 +31,8 @@ static void init_state_list(gks_state_list *sl)
         sl->attrs.refl_eq[k] = GREFL_NONE;
     }
     sl->attrs.light_mask = 0;
+    for (int i = 0; i < GKS_N_ASF; i++)
+        sl->attrs.asf[i] = gks_legacy_asf(); /* GKS3D_ASF (legacy programs) */
     for (int i = 0; i <= GKS_MAX_NORM_TRAN; i++) {
         sl->tran_pri[i] = i; /* 0 highest, then ascending numbers (ISO 7942 6.4) */
         sl->tran[i].win = (Glimit3){ 0, 1, 0, 1, 0, 1 };
@@ -72,6 +75,7 @@ static void open_gks(const char *err_name, int open_file)
             fclose(fp);
         GKS_FAIL(300, GFN_OPKS);
     }
+    gks_legacy_load(); /* GKS3D_WS_TYPES, GKS3D_ASF */
     init_state_list(sl);
     gks_seg_store_init(segs);
     sl->segs = segs;
@@ -128,7 +132,7 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
         GKS_FAIL(24, GFN_OPWK);
     if (conn_id && strnlen(conn_id, MAX_CONN_LEN + 1) > MAX_CONN_LEN)
         GKS_FAIL(21, GFN_OPWK);
-    if (ws_type <= 0)
+    if (gks_ws_type_map(ws_type) <= 0)
         GKS_FAIL(22, GFN_OPWK);
     const gks_ws_driver *drv = gks_driver_for_type(ws_type);
     if (!drv)

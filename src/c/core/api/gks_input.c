@@ -16,6 +16,7 @@
  * Output arguments are set to "no input" before any check (REQUEST: status NONE), so a
  * caller never reads stale values.
  */
+#include "gks_legacy.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_indev.h"
@@ -61,7 +62,7 @@ static int device_error(Gint ws_id, Gin_class cls, Gint dev, gks_ws **out)
 /* Workstation type and device of the default-data inquiries: 22, 23, 38, 140. */
 static int type_device_error(Gint ws_type, Gin_class cls, Gint dev, const gks_ws_desc **out)
 {
-    if (ws_type <= 0)
+    if (gks_ws_type_map(ws_type) <= 0)
         return 22;
     const gks_ws_driver *d = gks_driver_for_type(ws_type);
     if (!d)
@@ -960,6 +961,7 @@ static Gin_dev_st dev_st(const gks_indev *d)
 /* SET and REALIZED values are the same: every initial value is representable. */
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -970,6 +972,7 @@ GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind
 GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind,
                           Gloc_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -984,6 +987,7 @@ GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_in
 GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                             Gstroke_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -995,6 +999,7 @@ GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *e
 GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
                              Gstroke_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -1009,6 +1014,7 @@ GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *
 
 GKS_API void ginq_val_st(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
     if (!d || !st)
         return;
@@ -1020,6 +1026,7 @@ GKS_API void ginq_val_st(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st *st)
 
 GKS_API void ginq_choice_st(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
     if (!d || !st)
         return;
@@ -1031,6 +1038,7 @@ GKS_API void ginq_choice_st(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_
 GKS_API void ginq_pick_st(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
                           Gpick_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -1041,6 +1049,7 @@ GKS_API void ginq_pick_st(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_i
 
 GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
     if (!d || !st)
         return;
@@ -1069,6 +1078,7 @@ GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_
 
 GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
     if (!d || !st)
         return;
@@ -1080,6 +1090,7 @@ GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
 
 GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
     if (!d || !st)
         return;
@@ -1091,6 +1102,7 @@ GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice
 GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
                            Gpick_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
@@ -1101,6 +1113,7 @@ GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_
 
 GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st)
 {
+    GKS_INQ_ARGS(err_ind, st);
     const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
     if (!d || !st)
         return;
@@ -1138,6 +1151,7 @@ static int inq_default(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gde
 
 GKS_API void ginq_def_loc_data(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     if (!inq_default(ws_type, GIN_LOC, loc_num, err_ind, def ? &def->dev : NULL, &d) && def)
         def->loc_pos = (Gpoint){ d.init.pos.x, d.init.pos.y };
@@ -1145,6 +1159,7 @@ GKS_API void ginq_def_loc_data(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_l
 
 GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     Gdef_in dv = { 0 };
     if (def)
@@ -1160,6 +1175,7 @@ GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_
 GKS_API void ginq_def_stroke_data(Gint ws_type, Gint stroke_num, Gint *err_ind,
                                   Gdef_stroke *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     if (!inq_default(ws_type, GIN_STROKE, stroke_num, err_ind, def ? &def->dev : NULL, &d) &&
         def) {
@@ -1171,6 +1187,7 @@ GKS_API void ginq_def_stroke_data(Gint ws_type, Gint stroke_num, Gint *err_ind,
 GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
                                    Gdef_stroke3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     Gdef_in dv = { 0 };
     if (def)
@@ -1186,6 +1203,7 @@ GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
 
 GKS_API void ginq_def_val_data(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     if (!inq_default(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d) && def) {
         def->value = d.init.val;
@@ -1197,6 +1215,7 @@ GKS_API void ginq_def_val_data(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_v
 GKS_API void ginq_def_choice_data(Gint ws_type, Gint choice_num, Gint *err_ind,
                                   Gdef_choice *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     if (!inq_default(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d) &&
         def)
@@ -1205,6 +1224,7 @@ GKS_API void ginq_def_choice_data(Gint ws_type, Gint choice_num, Gint *err_ind,
 
 GKS_API void ginq_def_pick_data(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     inq_default(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
 }
@@ -1212,6 +1232,7 @@ GKS_API void ginq_def_pick_data(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef
 GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
                                   Gdef_string *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     if (!inq_default(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d) &&
         def) {
@@ -1236,6 +1257,7 @@ static void def3(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in3 
 
 GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     def3(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d);
     if (def && !*err_ind) {
@@ -1248,6 +1270,7 @@ GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_
 GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
                                    Gdef_choice3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     def3(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d);
     if (def && !*err_ind)
@@ -1256,6 +1279,7 @@ GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
 
 GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     def3(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
 }
@@ -1263,6 +1287,7 @@ GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gde
 GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
                                    Gdef_string3 *def)
 {
+    GKS_INQ_ARGS(err_ind, def);
     gks_indev d;
     def3(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d);
     if (def && !*err_ind) {
@@ -1273,9 +1298,10 @@ GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
 
 GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
 {
+    GKS_INQ_ARGS(err_ind, num_in);
     Gint e = gks_inq_state(GKS_S_OPEN);
     const gks_ws_driver *d = NULL;
-    if (!e && ws_type <= 0)
+    if (!e && gks_ws_type_map(ws_type) <= 0)
         e = 22;
     if (!e && !(d = gks_driver_for_type(ws_type)))
         e = 23;
@@ -1292,6 +1318,7 @@ GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
 
 GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint *in_num)
 {
+    GKS_INQ_ARGS(err_ind, ws_id, in_class, in_num);
     Gint e = gks_inq_state(GKS_S_WSOPEN);
     Gint w = 0, n = 0;
     Gin_class c = GIN_NONE;
@@ -1310,6 +1337,7 @@ GKS_API void ginq_in_overf(Gint *err_ind, Gint *ws_id, Gin_class *in_class, Gint
 
 GKS_API void ginq_more_simult_events(Gint *err_ind, Gsimult_events *simult_events)
 {
+    GKS_INQ_ARGS(err_ind, simult_events);
     Gint e = gks_inq_state(GKS_S_WSOPEN);
     set_err(err_ind, e);
     if (!e && simult_events)

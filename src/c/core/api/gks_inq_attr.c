@@ -5,6 +5,7 @@
  * facilities and predefined bundles of workstation description tables, and INQUIRE TEXT
  * EXTENT (3). They never call ERROR HANDLING; nothing but *err_ind is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_store.h"
@@ -18,6 +19,7 @@
 /* Body of a current-attribute inquiry: error 8 unless GKS is open. */
 #define INQ_CUR(OUT, EXPR)                                                            \
     do {                                                                              \
+        GKS_INQ_ARGS(err_ind, OUT);                                                   \
         *err_ind = gks_inq_state(GKS_S_OPEN);                                         \
         if (!*err_ind) {                                                              \
             const gks_cur_attrs *a = &gks_ctx()->sl->attrs;                           \
@@ -49,6 +51,7 @@ GKS_API void ginq_fill_style_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->fill_st
 GKS_API void ginq_fill_colr_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->fill_colr_ind); }
 GKS_API void ginq_pat_size(Gint *err_ind, Gdouble *x_size, Gdouble *y_size)
 {
+    GKS_INQ_ARGS(err_ind, x_size, y_size);
     Gvec v;
     INQ_CUR(&v, a->pat_size);
     if (*err_ind)
@@ -66,6 +69,7 @@ GKS_API void ginq_edge_ind(Gint *err_ind, Gint *v) { INQ_CUR(v, a->edge_ind); }
 
 GKS_API void ginq_char_base_vec(Gint *err_ind, Gvec *v)
 {
+    GKS_INQ_ARGS(err_ind, v);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const Gvec *u = &gks_ctx()->sl->attrs.char_up_vec;
@@ -75,12 +79,14 @@ GKS_API void ginq_char_base_vec(Gint *err_ind, Gvec *v)
 
 GKS_API void ginq_pat_ref_point(Gint *err_ind, Gpoint *v)
 {
+    GKS_INQ_ARGS(err_ind, v);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *v = (Gpoint){ gks_ctx()->sl->attrs.pat_ref_point.x, gks_ctx()->sl->attrs.pat_ref_point.y };
 }
 
 GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *p, Gvec3 vecs[2])
 {
+    GKS_INQ_ARGS(err_ind, p, vecs);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_cur_attrs *a = &gks_ctx()->sl->attrs;
@@ -91,6 +97,7 @@ GKS_API void ginq_pat_ref_point_vecs(Gint *err_ind, Gpoint3 *p, Gvec3 vecs[2])
 
 GKS_API void ginq_asfs3(Gint *err_ind, Gasfs3 *s)
 {
+    GKS_INQ_ARGS(err_ind, s);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const Gasf *f = gks_ctx()->sl->attrs.asf;
@@ -104,6 +111,7 @@ GKS_API void ginq_asfs3(Gint *err_ind, Gasfs3 *s)
 
 GKS_API void ginq_asfs(Gint *err_ind, Gasfs *s)
 {
+    GKS_INQ_ARGS(err_ind, s);
     Gasfs3 s3;
     ginq_asfs3(err_ind, &s3);
     if (!*err_ind)
@@ -129,6 +137,7 @@ static gks_ws *rep_ws(Gint ws_id, Gint ind, Ginq_type type, int err_bad_ind, Gin
 
 GKS_API void ginq_line_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gline_bundle *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 60, err_ind);
     if (!ws)
         return;
@@ -144,6 +153,7 @@ GKS_API void ginq_line_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, 
 
 GKS_API void ginq_marker_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gmarker_bundle *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 66, err_ind);
     if (!ws)
         return;
@@ -159,6 +169,7 @@ GKS_API void ginq_marker_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind
 
 GKS_API void ginq_text_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gtext_bundle *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 72, err_ind);
     if (!ws)
         return;
@@ -174,6 +185,7 @@ GKS_API void ginq_text_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, 
 
 GKS_API void ginq_fill_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gfill_bundle *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 80, err_ind);
     if (!ws)
         return;
@@ -189,6 +201,7 @@ GKS_API void ginq_fill_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, 
 
 GKS_API void ginq_edge_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gedge_bundle *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 500, err_ind);
     if (!ws)
         return;
@@ -226,6 +239,7 @@ static int put_pattern(const gks_ws *ws, int nx, int ny, const int *colr, Gstore
 GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gstore *store, Gint *err_ind,
                           Gpat_rep **rep)
 {
+    GKS_INQ_ARGS(err_ind, store, rep);
     gks_ws *ws = rep_ws(ws_id, ind, type, 85, err_ind);
     if (!ws)
         return;
@@ -280,6 +294,7 @@ static const unsigned char *def_edge(const gks_ws *ws) { return ws->edge_def; }
     GKS_API void NAME(Gint ws_id, Gint cap, Gint start, Gint *err_ind, Gint_list *inds, \
                       Gint *length_list)                                                 \
     {                                                                                    \
+        GKS_INQ_ARGS(err_ind, inds, length_list);                                        \
         list_inds(ws_id, DEF, cap, start, err_ind, inds, length_list);                   \
     }
 LIST_INQ(ginq_list_line_inds, def_line)
@@ -323,6 +338,7 @@ static void text_extent_any(Gint ws_id, const double pos[3], const double d0[3],
 GKS_API void ginq_text_extent(Gint ws_id, const Gpoint *pos, const char *str, Gint *err_ind,
                               Gtext_extent *extent)
 {
+    GKS_INQ_ARGS(err_ind, pos, str, extent);
     double c[4][3], cc[3];
     const double p[3] = { pos ? pos->x : 0, pos ? pos->y : 0, 0 };
     text_extent_any(ws_id, p, (const double[3]){ 1, 0, 0 }, (const double[3]){ 0, 1, 0 },
@@ -337,6 +353,7 @@ GKS_API void ginq_text_extent(Gint ws_id, const Gpoint *pos, const char *str, Gi
 GKS_API void ginq_text_extent3(Gint ws_id, const Gpoint3 *pos, const Gvec3 dir[2],
                                const char *str, Gint *err_ind, Gtext_extent3 *extent)
 {
+    GKS_INQ_ARGS(err_ind, pos, dir, str, extent);
     double c[4][3], cc[3];
     const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, pos ? pos->z : NAN };
     double d0[3] = { 1, 0, 0 }, d1[3] = { 0, 1, 0 };
@@ -359,7 +376,7 @@ static const gks_wdt_output *inq_out_type(Gint ws_type, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }
@@ -393,6 +410,7 @@ static int copy_ints(const int *list, int n, Gint cap, Gint start, Gint_list *ou
 GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                             Gline_facs *f, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, f, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -409,6 +427,7 @@ GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
 GKS_API void ginq_marker_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                               Gmarker_facs *f, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, f, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -425,6 +444,7 @@ GKS_API void ginq_marker_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
 GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                             Gtext_facs *f, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, f, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -449,6 +469,7 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
 GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_pos,
                             Gint *err_ind, Gfill_facs *f, Gint *act_hatch_length)
 {
+    GKS_INQ_ARGS(err_ind, f, act_hatch_length);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -465,6 +486,7 @@ GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_po
 
 GKS_API void ginq_pat_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_inds)
 {
+    GKS_INQ_ARGS(err_ind, num_pred_inds);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (t)
         *num_pred_inds = t->n_pred_pat;
@@ -473,6 +495,7 @@ GKS_API void ginq_pat_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_inds)
 GKS_API void ginq_edge_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                             Gedge_facs *f, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, f, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -498,6 +521,7 @@ static int pred_index(Gint ind, int n, int bad_ind, int not_pred)
 #define PRED_INQ(NAME, TYPE, N, TABLE, BAD, NOTPRED)                                     \
     GKS_API void NAME(Gint ws_type, Gint ind, Gint *err_ind, TYPE *rep)                  \
     {                                                                                    \
+        GKS_INQ_ARGS(err_ind, rep);                                                      \
         const gks_wdt_output *t = inq_out_type(ws_type, err_ind);                        \
         if (!t)                                                                          \
             return;                                                                      \
@@ -514,6 +538,7 @@ PRED_INQ(ginq_pred_edge_rep, Gedge_bundle, n_pred_edge, pred_edge, 500, 502)
 GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gstore *store, Gint *err_ind,
                                Gpat_rep **rep)
 {
+    GKS_INQ_ARGS(err_ind, store, rep);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -525,6 +550,7 @@ GKS_API void ginq_pred_pat_rep(Gint ws_type, Gint ind, Gstore *store, Gint *err_
 
 GKS_API void ginq_max_ws_st_tables(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables *l)
 {
+    GKS_INQ_ARGS(err_ind, l);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
@@ -536,6 +562,7 @@ GKS_API void ginq_max_ws_st_tables(Gint ws_type, Gint *err_ind, Gmax_ws_st_table
 GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                                   Gint_list *gdps, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, gdps, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (t)
         *err_ind = copy_ints(NULL, 0, cap, start, gdps, length_list);

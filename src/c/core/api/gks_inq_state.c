@@ -5,6 +5,7 @@
  * 8 for the GKS state list, 7 for workstation state lists, 0 for description tables that
  * are available in every state except GKCL (8)), and nothing else is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_error.h"
 #include "gks_state.h"
 #include "gks_ws.h"
@@ -44,7 +45,7 @@ static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }
@@ -64,6 +65,7 @@ GKS_API void ginq_op_st(Gop_st *op_st)
 
 GKS_API void ginq_level_gks(Gint *err_ind, Glevel *level)
 {
+    GKS_INQ_ARGS(err_ind, level);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *level = gks_ctx()->desc->level;
 }
@@ -71,6 +73,7 @@ GKS_API void ginq_level_gks(Gint *err_ind, Glevel *level)
 GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                       Gint_list *ws_types, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, ws_types, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_desc_table *d = gks_ctx()->desc;
@@ -83,12 +86,14 @@ GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, 
 
 GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num)
 {
+    GKS_INQ_ARGS(err_ind, ws_max_num);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *ws_max_num = gks_ctx()->desc->max_nums;
 }
 
 GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num)
 {
+    GKS_INQ_ARGS(err_ind, max_norm_tran_num);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *max_norm_tran_num = gks_ctx()->desc->max_norm_tran;
 }
@@ -96,6 +101,7 @@ GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num)
 GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                Gint_list *open_ws, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, open_ws, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
@@ -106,6 +112,7 @@ GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *e
 GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                  Gint_list *active_ws, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, active_ws, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
@@ -116,6 +123,7 @@ GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint 
 GKS_API void ginq_ws_conn_type(Gint ws_id, Gint string_length, Gint *err_ind, char *conn_id,
                                Gint *ws_type)
 {
+    GKS_INQ_ARGS(err_ind, conn_id, ws_type);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -131,6 +139,7 @@ GKS_API void ginq_ws_conn_type(Gint ws_id, Gint string_length, Gint *err_ind, ch
 
 GKS_API void ginq_ws_st(Gint ws_id, Gint *err_ind, Gws_st *ws_st)
 {
+    GKS_INQ_ARGS(err_ind, ws_st);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (ws)
         *ws_st = ws->state;
@@ -140,6 +149,7 @@ GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer
                                    Girg_mode *irg_mode, Gdisp_space_empty *disp_empty,
                                    Gnew_frame_nec_upd *new_frame)
 {
+    GKS_INQ_ARGS(err_ind, defer_mode, irg_mode, disp_empty, new_frame);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -151,6 +161,7 @@ GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer
 
 GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 {
+    GKS_INQ_ARGS(err_ind, cat);
     const gks_ws_desc *d = inq_type(ws_type, err_ind);
     if (d)
         *cat = d->cat;
@@ -158,6 +169,7 @@ GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 
 GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 {
+    GKS_INQ_ARGS(err_ind, ws_class);
     const gks_ws_desc *d = inq_type(ws_type, err_ind);
     if (!d)
         return;
@@ -170,6 +182,7 @@ GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 
 GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size)
 {
+    GKS_INQ_ARGS(err_ind, disp_size);
     const gks_ws_desc *d = inq_type(ws_type, err_ind);
     if (!d)
         return;
@@ -184,12 +197,14 @@ GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size 
 
 GKS_API void ginq_cur_norm_tran_num(Gint *err_ind, Gint *norm_tran_num)
 {
+    GKS_INQ_ARGS(err_ind, norm_tran_num);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *norm_tran_num = gks_ctx()->sl->cur_tnr;
 }
 
 GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
 {
+    GKS_INQ_ARGS(err_ind, norm_tran);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (num < 0 || num > GKS_MAX_NORM_TRAN) {
@@ -203,6 +218,7 @@ GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
 
 GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
 {
+    GKS_INQ_ARGS(err_ind, clip);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
@@ -214,6 +230,7 @@ GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
 GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
                            Gcolr_rep *colr_rep)
 {
+    GKS_INQ_ARGS(err_ind, colr_rep);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -237,6 +254,7 @@ GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
                           Glimit *req_ws_win, Glimit *cur_ws_win,
                           Glimit *req_ws_vp, Glimit *cur_ws_vp)
 {
+    GKS_INQ_ARGS(err_ind, ws_tran_upd_st, req_ws_win, cur_ws_win, req_ws_vp, cur_ws_vp);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;

@@ -7,6 +7,7 @@
  * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
  * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
  */
+#include "gks_legacy.h"
 #include "gks_store.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
@@ -53,7 +54,7 @@ static const gks_ws_desc *desc_of(Gint ws_type, int out, Gint *err)
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
         return NULL;
-    if (ws_type <= 0) {
+    if (gks_ws_type_map(ws_type) <= 0) {
         *err = 22;
         return NULL;
     }
@@ -71,6 +72,7 @@ static const gks_ws_desc *desc_of(Gint ws_type, int out, Gint *err)
 
 GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs)
 {
+    GKS_INQ_ARGS(err_ind, colr_facs);
     const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
     if (d)
         *colr_facs = (Gcolr_facs){ d->n_colr, d->colr_avail, d->n_pred_colr };
@@ -78,6 +80,7 @@ GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs)
 
 GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep *colr_rep)
 {
+    GKS_INQ_ARGS(err_ind, colr_rep);
     const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
     if (!d)
         return;
@@ -99,6 +102,7 @@ GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep
  * primitives, so a changed picture needs a regeneration: IRG throughout. */
 GKS_API void ginq_dyn_mod_ws_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs *dyn_mod)
 {
+    GKS_INQ_ARGS(err_ind, dyn_mod);
     if (desc_of(ws_type, 1, err_ind))
         *dyn_mod = (Gdyn_mod_ws_attrs){ GDYN_IRG, GDYN_IRG, GDYN_IRG, GDYN_IRG,
                                         GDYN_IRG, GDYN_IRG, GDYN_IRG };
@@ -106,6 +110,7 @@ GKS_API void ginq_dyn_mod_ws_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attr
 
 GKS_API void ginq_dyn_mod_ws_attrs3(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs3 *dyn_mod)
 {
+    GKS_INQ_ARGS(err_ind, dyn_mod);
     Gdyn_mod_ws_attrs a;
     ginq_dyn_mod_ws_attrs(ws_type, err_ind, &a);
     if (!*err_ind)
@@ -115,6 +120,7 @@ GKS_API void ginq_dyn_mod_ws_attrs3(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_att
 GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_defer_mode,
                                 Girg_mode *def_irg_mode)
 {
+    GKS_INQ_ARGS(err_ind, def_defer_mode, def_irg_mode);
     const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
     if (!d)
         return;
@@ -127,6 +133,7 @@ GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_de
  * deletion need a regeneration; primitives added to an open segment are drawn at once. */
 GKS_API void ginq_dyn_mod_seg_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_seg_attrs *dyn_mod)
 {
+    GKS_INQ_ARGS(err_ind, dyn_mod);
     if (desc_of(ws_type, 1, err_ind))
         *dyn_mod = (Gdyn_mod_seg_attrs){ .tran = GDYN_IRG, .appear = GDYN_IRG,
                                          .disappear = GDYN_IRG, .highl = GDYN_IMM,
@@ -136,6 +143,7 @@ GKS_API void ginq_dyn_mod_seg_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_seg_at
 
 GKS_API void ginq_disp_space_size3(Gint ws_type, Gint *err_ind, Gdisp_space_size3 *disp_size)
 {
+    GKS_INQ_ARGS(err_ind, disp_size);
     Gdisp_space_size s;
     ginq_disp_space_size(ws_type, err_ind, &s);
     if (*err_ind)
@@ -147,6 +155,7 @@ GKS_API void ginq_disp_space_size3(Gint ws_type, Gint *err_ind, Gdisp_space_size
 
 GKS_API void ginq_max_ws_st_tables3(Gint ws_type, Gint *err_ind, Gmax_ws_st_tables3 *l)
 {
+    GKS_INQ_ARGS(err_ind, l);
     Gmax_ws_st_tables t;
     ginq_max_ws_st_tables(ws_type, err_ind, &t);
     if (*err_ind)
@@ -159,12 +168,14 @@ GKS_API void ginq_max_ws_st_tables3(Gint ws_type, Gint *err_ind, Gmax_ws_st_tabl
 /* View 0 is the only predefined view (identity matrices, clip limits the NPC cube). */
 GKS_API void ginq_view_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_views)
 {
+    GKS_INQ_ARGS(err_ind, num_pred_views);
     if (desc_of(ws_type, 1, err_ind))
         *num_pred_views = 1;
 }
 
 GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gview_rep3 *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     if (!desc_of(ws_type, 1, err_ind))
         return;
     if (view_ind < 0) {
@@ -204,6 +215,7 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
                              Gint *err_ind, Gint_list *hlhsr_ids, Gint *length_ids,
                              Gint_list *hlhsr_modes, Gint *length_modes)
 {
+    GKS_INQ_ARGS(err_ind, hlhsr_ids, length_ids, hlhsr_modes, length_modes);
     const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
     if (!d)
         return;
@@ -220,6 +232,7 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
 /* ------------------------------------------------------------ GKS state list values */
 GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
 {
+    GKS_INQ_ARGS(err_ind, v);
     Gvec sz;
     Gpoint3 p;
     Gvec3 r[2];
@@ -234,6 +247,7 @@ GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
 
 GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *v)
 {
+    GKS_INQ_ARGS(err_ind, v);
     Gvec sz;
     Gpoint3 p;
     Gvec3 r[2];
@@ -248,6 +262,7 @@ GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *v)
 
 GKS_API void ginq_cur_prim_attrs(Gint *err_ind, Gprim_attrs *p)
 {
+    GKS_INQ_ARGS(err_ind, p);
     *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
@@ -267,6 +282,7 @@ GKS_API void ginq_cur_prim_attrs(Gint *err_ind, Gprim_attrs *p)
 
 GKS_API void ginq_cur_prim_attrs3(Gint *err_ind, Gprim_attrs3 *p)
 {
+    GKS_INQ_ARGS(err_ind, p);
     Gprim_attrs b;
     ginq_cur_prim_attrs(err_ind, &b);
     if (*err_ind)
@@ -278,6 +294,7 @@ GKS_API void ginq_cur_prim_attrs3(Gint *err_ind, Gprim_attrs3 *p)
 
 GKS_API void ginq_cur_indiv_attrs(Gint *err_ind, Gindiv_attrs *p)
 {
+    GKS_INQ_ARGS(err_ind, p);
     *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
@@ -297,6 +314,7 @@ GKS_API void ginq_cur_indiv_attrs(Gint *err_ind, Gindiv_attrs *p)
 
 GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *p)
 {
+    GKS_INQ_ARGS(err_ind, p);
     Gindiv_attrs b;
     ginq_cur_indiv_attrs(err_ind, &b);
     if (*err_ind)
@@ -311,6 +329,7 @@ GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *p)
 
 GKS_API void ginq_norm_tran3(Gint num, Gint *err_ind, Gtran3 *norm_tran)
 {
+    GKS_INQ_ARGS(err_ind, norm_tran);
     *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
@@ -324,6 +343,7 @@ GKS_API void ginq_norm_tran3(Gint num, Gint *err_ind, Gtran3 *norm_tran)
 
 GKS_API void ginq_clip3(Gint *err_ind, Gclip3 *clip)
 {
+    GKS_INQ_ARGS(err_ind, clip);
     *err_ind = gks_inq_state(GKS_S_OPEN);
     if (*err_ind)
         return;
@@ -333,6 +353,7 @@ GKS_API void ginq_clip3(Gint *err_ind, Gclip3 *clip)
 
 GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs)
 {
+    GKS_INQ_ARGS(err_ind, attrs);
     Gseg_attrs3 a;
     ginq_seg_attrs3(seg_name, err_ind, &a);
     if (*err_ind)
@@ -364,6 +385,7 @@ static gks_ws *out_ws(Gint ws_id, Gint *err)
 GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
                                  Gint *err_ind, Gint_list *colr_inds, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, colr_inds, length_list);
     gks_ws *ws = out_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -388,6 +410,7 @@ GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint star
 GKS_API void ginq_list_avail_gdps3(Gint ws_type, Gint num_elems_appl_list, Gint start_pos,
                                    Gint *err_ind, Gint_list *gdps, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, gdps, length_list);
     ginq_list_avail_gdps(ws_type, num_elems_appl_list, start_pos, err_ind, gdps, length_list);
 }
 
@@ -413,11 +436,13 @@ static void gdp_attrs(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gat
 
 GKS_API void ginq_gdp(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[4])
 {
+    GKS_INQ_ARGS(err_ind, num_attr, attr);
     gdp_attrs(ws_type, gdp, err_ind, num_attr, attr, 4);
 }
 
 GKS_API void ginq_gdp3(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs attr[5])
 {
+    GKS_INQ_ARGS(err_ind, num_attr, attr);
     gdp_attrs(ws_type, gdp, err_ind, num_attr, attr, 5);
 }
 
@@ -499,6 +524,7 @@ static Gint colour_index(const gks_ws *ws, int rgb)
 
 GKS_API void ginq_pixel_array_dims(Gint ws_id, const Grect *rect, Gint *err_ind, Gint_size *dims)
 {
+    GKS_INQ_ARGS(err_ind, rect, dims);
     gks_ws *ws = pixel_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -518,6 +544,7 @@ GKS_API void ginq_pixel_array(Gint ws_id, const Gpoint *pixel_loc, const Gint_si
                               Gpres_inval *pres_inval, Gint_list *pixel_array,
                               Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, pixel_loc, dims, pres_inval, pixel_array, length_list);
     gks_ws *ws = pixel_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -569,6 +596,7 @@ GKS_API void ginq_pixel_array(Gint ws_id, const Gpoint *pixel_loc, const Gint_si
 
 GKS_API void ginq_pixel(Gint ws_id, const Gpoint *pixel_loc, Gint *err_ind, Gint *colr_ind)
 {
+    GKS_INQ_ARGS(err_ind, pixel_loc, colr_ind);
     gks_ws *ws = pixel_ws(ws_id, err_ind);
     if (!ws)
         return;

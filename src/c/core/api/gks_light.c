@@ -126,6 +126,7 @@ GKS_API void gset_light_src_state(const Gint_list *activate, const Gint_list *de
 
 GKS_API void ginq_area_props(Gint *err_ind, Garea_props *front, Garea_props *back)
 {
+    GKS_INQ_ARGS(err_ind, front, back);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (front)
@@ -136,6 +137,7 @@ GKS_API void ginq_area_props(Gint *err_ind, Garea_props *front, Garea_props *bac
 
 GKS_API void ginq_refl_eq(Gint *err_ind, Gint *front, Gint *back)
 {
+    GKS_INQ_ARGS(err_ind, front, back);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (front)
@@ -146,6 +148,7 @@ GKS_API void ginq_refl_eq(Gint *err_ind, Gint *front, Gint *back)
 
 GKS_API void ginq_light_src_rep(Gint ws_id, Gint light_ind, Gint *err_ind, Glight_src_rep *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -164,6 +167,7 @@ GKS_API void ginq_light_src_rep(Gint ws_id, Gint light_ind, Gint *err_ind, Gligh
 GKS_API void ginq_light_src_state(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                   Gint_list *active, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, active, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     uint64_t m = gks_ctx()->sl->attrs.light_mask;

@@ -1271,6 +1271,7 @@ GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
                            Glimit3 *req_ws_win, Glimit3 *cur_ws_win, Glimit3 *req_ws_vp,
                            Glimit3 *cur_ws_vp)
 {
+    GKS_INQ_ARGS(err_ind, ws_tran_upd_st, req_ws_win, cur_ws_win, req_ws_vp, cur_ws_vp);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;

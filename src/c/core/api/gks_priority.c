@@ -58,6 +58,7 @@ GKS_API void gset_vp_in_pri(Gint tran_num, Gint ref_tran_num, Grel_pri rel_pri)
 GKS_API void ginq_list_norm_tran_nums(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                       Gint_list *list, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, list, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     *err_ind = copy_out(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1, num_elems_appl_list,
@@ -84,6 +85,7 @@ GKS_API void gset_view_tran_in_pri(Gint ws_id, Gint view_ind, Gint ref_view_ind,
 GKS_API void ginq_list_view_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
                                  Gint *err_ind, Gint_list *list, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, list, length_list);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;

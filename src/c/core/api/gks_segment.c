@@ -398,6 +398,7 @@ void gks_segment_ws_closed(int ws_id)
 GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                 Gint_list *seg_names, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, seg_names, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_seg_store *st = store();
@@ -416,6 +417,7 @@ GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *
 
 GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
 {
+    GKS_INQ_ARGS(err_ind, seg_name);
     if (gks_inq_begin(err_ind, GKS_S_SGOP))
         return;
     *seg_name = gks_ctx()->sl->open_seg;
@@ -423,6 +425,7 @@ GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
 
 GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs)
 {
+    GKS_INQ_ARGS(err_ind, attrs);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (seg_name < 1) {
@@ -445,6 +448,7 @@ GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs)
 GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
                                    Gint *err_ind, Gint_list *seg_names, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, seg_names, length_list);
     if (!gks_inq_ws(ws_id, err_ind))
         return;
     const gks_seg_store *st = store();
@@ -466,6 +470,7 @@ GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint st
 GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
                                 Gint *err_ind, Gint_list *ws_ids, Gint *length_list)
 {
+    GKS_INQ_ARGS(err_ind, ws_ids, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     if (seg_name < 1) {
@@ -491,6 +496,7 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
 {
+    GKS_INQ_ARGS(err_ind, num_seg_pris);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_ws_driver *drv = gks_driver_for_type(ws_type);

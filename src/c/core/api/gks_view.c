@@ -103,12 +103,14 @@ GKS_API void gset_hlhsr_mode(Gint ws_id, Gint mode)
 
 GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind)
 {
+    GKS_INQ_ARGS(err_ind, view_ind);
     if (!gks_inq_begin(err_ind, GKS_S_OPEN))
         *view_ind = gks_ctx()->sl->attrs.view_ind;
 }
 
 GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3 *rep)
 {
+    GKS_INQ_ARGS(err_ind, rep);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
@@ -121,6 +123,7 @@ GKS_API void ginq_view_rep3(Gint ws_id, Gint view_ind, Gint *err_ind, Gview_rep3
 
 GKS_API void ginq_hlhsr_mode(Gint ws_id, Gint *err_ind, Gint *mode)
 {
+    GKS_INQ_ARGS(err_ind, mode);
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
