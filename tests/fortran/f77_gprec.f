@@ -7,6 +7,7 @@ C     SPDX-License-Identifier: MIT
 !     lengths, in f77_gprec_xgks.f), 32 integers in 4 elements of 80;
 !     and the packed menu accepted by GINCH (prompt/echo type 3).
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NFAIL, IERR, LDR, IL, RL, SL, I, IA(32), JA(32)
       INTEGER LSTR(3), JSTR(3), LCH2(2), IMODE, IESW, ISTAT, ICH, IPET
       REAL RA(1), SA(1), EAREA(4)
