@@ -23,6 +23,7 @@
 #include "gks_export.h"
 #include "gks_gdp.h"
 #include "gks_mf_record.h"
+#include "gks_output_int.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -34,17 +35,6 @@
 #include <string.h>
 
 /* ------------------------------------------------------------------ normalization */
-typedef struct {
-    double m[3][4];            /* source -> NDC3 after the segment transformation */
-    double n[3][4];            /* WC3 -> NDC3 (normalization only; what segments store) */
-    double pn[3][4];           /* source -> NDC3 before the segment transformation: n, or
-                                  the identity for INTERPRET ITEM's NDC3 points */
-    double pat[3][4];          /* WC3 -> final NDC3 for pattern boxes */
-    gks_xform_clip clip;       /* in NDC3 (w = 1) */
-    int clip_on;
-    double box[6];             /* the clipping volume: the viewport 3 when created */
-    gks_segment *seg;          /* the open segment (current state only), else NULL */
-} norm_ctx;
 
 /* The open segment, or NULL. */
 static gks_segment *open_segment(void)
@@ -121,14 +111,6 @@ static GKS_MUST_CHECK int mf_out(int fctid, const norm_ctx *nc, gks_mf_prim p)
 }
 
 /* ------------------------------------------------------------------ targets */
-/* Where a primitive goes: the active workstations with the current attributes, or one
- * workstation with a segment's stored binding (regeneration). */
-typedef struct {
-    const gks_cur_attrs *a;
-    double pat_m[3][4];        /* WC3 -> final NDC3, for pattern boxes */
-    gks_ws *only;              /* regeneration target; NULL: the active workstations */
-    int k, done;
-} target;
 
 static void target_current(target *t, const norm_ctx *nc)
 {
@@ -304,6 +286,8 @@ static void prim_common(gks_prim *p, const gks_cur_attrs *a)
     p->refl_eq[0] = a->refl_eq[0];
     p->refl_eq[1] = a->refl_eq[1];
     p->light_mask = a->light_mask;
+    p->shading[0] = a->int_shad[0];
+    p->shading[1] = a->int_shad[1];
 }
 
 /* Test hook (exported for the tests only): every primitive a driver receives is first
@@ -1280,3 +1264,15 @@ GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
     *req_ws_vp = ws->req_vp;
     *cur_ws_vp = ws->cur_vp;
 }
+
+/* ------------------------------------------------------------------ internal interface */
+/* For the primitives with data (gks_output_data.c): gks_output_int.h. */
+int gks_out_norm_setup(norm_ctx *nc) { return norm_setup(nc); }
+int gks_out_norm_from(norm_ctx *nc, const double m[3][4], const double box[6], int clip_on)
+{
+    return norm_from(nc, m, box, clip_on);
+}
+void gks_out_target_current(target *t, const norm_ctx *nc) { target_current(t, nc); }
+gks_ws *gks_out_next_ws(target *t) { return next_ws(t); }
+int gks_out_send(gks_ws *ws, const gks_prim *p) { return send(ws, p); }
+void gks_out_prim_common(gks_prim *p, const gks_cur_attrs *a) { prim_common(p, a); }
