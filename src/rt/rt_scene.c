@@ -59,6 +59,7 @@ static void rt_scene_uncommit(rt_scene *sc)
     free(sc->slab_off); sc->slab_off = NULL; sc->nslab_off = 0;
     free(sc->edges); sc->edges = NULL; sc->nedges = 0;
     rt_grid_free(&sc->grid);
+    free(sc->prim_vd); sc->prim_vd = NULL;
     sc->use_grid = 0;
     sc->committed = 0;
 }
@@ -76,6 +77,11 @@ void rt_scene_free(rt_scene *sc)
     free(sc->in_xyz);
     free(sc->in_loops);
     free(sc->in_rgb);
+    free(sc->vd);
+    free(sc->vd_xyz);
+    free(sc->vd_n);
+    free(sc->vd_c);
+    free(sc->vd_loops);
     free(sc);
 }
 
@@ -186,6 +192,11 @@ int rt_scene_truncate(rt_scene *sc, int n)
             sc->nrgb = p->rgb0;
         else
             sc->nloopsin = p->loop0;
+    }
+    while (sc->nvd > 0 && sc->vd[sc->nvd - 1].id >= (uint32_t)n) {
+        const rt_vd *r = &sc->vd[--sc->nvd];
+        sc->nvdv = r->v0;
+        sc->nvdl = r->loop0;
     }
     sc->nids = (size_t)n;
     return RT_OK;
@@ -808,6 +819,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         rc = rt_poly_slabs(sc);
     if (rc == RT_OK)
         rc = rt_grid_build(sc, opts);
+    if (rc == RT_OK)
+        rc = rt_vd_commit(sc);
     if (rc != RT_OK) {
         rt_scene_uncommit(sc);
         return rc;
@@ -818,6 +831,9 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                        sc->nuv * 2 * sizeof(double) + sc->nloops * sizeof(uint32_t) +
                        sc->nslab_off * sizeof(size_t) + sc->nedges * 4 * sizeof(double) +
                        sc->nrgb * sizeof(float) +
+                       (sc->prim_vd ? sc->nprim * sizeof(uint32_t) + sc->nvd * sizeof *sc->vd +
+                                          sc->nvdv * (3 * sizeof(double) + 6 * sizeof(float))
+                                    : 0) +
                        (sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
                                         sc->grid.nsrefs) * sizeof(uint32_t) +
                                            sc->grid.nsubs * sizeof(rt_subgrid) +
