@@ -16,9 +16,7 @@ static int fin3(const double v[3])
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
 }
 
-/* geometry coordinates beyond this magnitude are dropped at commit (no overflow in tests) */
-#define RT_COORD_MAX 1e100
-
+/* geometry coordinates beyond RT_COORD_MAX (gksrt.h) are dropped at commit */
 static int sane3(const double v[3])
 {
     return fin3(v) && fabs(v[0]) <= RT_COORD_MAX && fabs(v[1]) <= RT_COORD_MAX &&
