@@ -755,12 +755,24 @@ FAPI void FNAME(gqsim, GQSIM)(fint *errind, fint *flag)
 /* ---- GPREC / GUREC: the data record format of this implementation ----
  *
  * A packed record is a character stream laid over DATREC(1..LDR), element after element
- * (LEN(DATREC(1)) characters each), blank-padded at the end: the counts IL, RL, SL as
- * I11, the IL integers as I11, the RL reals as E16.8, the SL string lengths as I11, then
- * the strings' characters. The stream starts with "GKSR" so GUREC can tell a packed
- * record from other text (2003). */
+ * (LEN(DATREC(1)) characters each), blank-padded at the end: "GKSR", the counts IL, RL,
+ * SL, the IL integers, the RL reals (9 significant digits: a REAL round-trips) and the SL
+ * string lengths, each as decimal text ended by ',', then the strings' characters. The
+ * magic lets GUREC tell a packed record from other text (2003); decimal text keeps it
+ * printable and small (gksdemo packs 32 integers into 4 elements of 80).
+ *
+ * Two forms of legacy call are accepted (docs/INPUT.md "Data records from Fortran"):
+ * - STR as one string holding the SL strings one after the other (xgks's GPREC and its
+ *   gksdemo.f: MENU = 'CONTINUERETURN', LSTR = 8, 6) instead of the standard's array
+ *   STR(SL): taken when SL > 1, the lengths add up to at most LEN(STR) and STR(1) is not
+ *   blank after its first LSTR(1) characters (an array element is blank-padded there);
+ * - a CHARACTER actual argument for LSTR when SL = 0 (gksdemo: GPREC(0,IA,0,EMPTRP,0,
+ *   DUMMYA,CHAR,...)): it shifts the hidden lengths, so the one received for DATREC is
+ *   that of STR. With SL = 0 a DATREC length below 80 is not trusted: the standard's
+ *   CHARACTER*80 is used. */
 
 #define REC_MAGIC "GKSR"
+#define REC_ELEM_STD 80 /* ISO 8651-1: DATREC is CHARACTER*80 */
 
 typedef struct { char *buf; size_t n, cap; } rec_stream;
 
@@ -775,9 +787,25 @@ static int rec_put(rec_stream *s, const char *text, size_t n)
 
 static int rec_int(rec_stream *s, long v)
 {
-    char t[16];
-    snprintf(t, sizeof t, "%11ld", v);
-    return rec_put(s, t, 11);
+    char t[24];
+    int k = snprintf(t, sizeof t, "%ld,", v);
+    return rec_put(s, t, (size_t)k);
+}
+
+/* Whether STR holds the SL strings one after another (see above); lengths checked. */
+static int str_concatenated(fint sl, const fint *lstr, const char *str, size_t str_len)
+{
+    size_t sum = 0;
+    if (sl < 2)
+        return 0;
+    for (fint i = 0; i < sl; i++)
+        sum += (size_t)lstr[i];
+    if (sum > str_len)
+        return 0;
+    for (size_t k = (size_t)lstr[0]; k < sum; k++)
+        if (str[k] != ' ')
+            return 1;
+    return 0;
 }
 
 /* GPREC(IL, IA, RL, RA, SL, LSTR, STR, MLDR, ERRIND, LDR, DATREC): STR(SL) strings of
@@ -798,43 +826,72 @@ FAPI void FNAME(gprec, GPREC)(const fint *il, const fint *ia, const fint *rl, co
             *errind = 2003;
             return;
         }
-    rec_stream s = { datrec, 0, *mldr > 0 ? (size_t)*mldr * datrec_len : 0 };
+    size_t elem = (*sl == 0 && datrec_len < REC_ELEM_STD) ? REC_ELEM_STD : datrec_len;
+    rec_stream s = { datrec, 0, *mldr > 0 ? (size_t)*mldr * elem : 0 };
     int bad = rec_put(&s, REC_MAGIC, 4) || rec_int(&s, *il) || rec_int(&s, *rl) ||
               rec_int(&s, *sl);
     for (fint i = 0; !bad && i < *il; i++)
         bad = rec_int(&s, ia[i]);
     for (fint i = 0; !bad && i < *rl; i++) {
-        char t[24];
-        snprintf(t, sizeof t, "%16.8E", (double)ra[i]);
-        bad = rec_put(&s, t, 16);
+        char t[32];
+        int k = snprintf(t, sizeof t, "%.9g,", (double)ra[i]);
+        bad = rec_put(&s, t, (size_t)k);
     }
     for (fint i = 0; !bad && i < *sl; i++)
         bad = rec_int(&s, lstr[i]);
-    for (fint i = 0; !bad && i < *sl; i++)
-        bad = rec_put(&s, str + (size_t)i * str_len, (size_t)lstr[i]);
+    int concat = !bad && str_concatenated(*sl, lstr, str, str_len);
+    size_t at = 0;
+    for (fint i = 0; !bad && i < *sl; i++) {
+        const char *from = concat ? str + at : str + (size_t)i * str_len;
+        bad = rec_put(&s, from, (size_t)lstr[i]);
+        at += (size_t)lstr[i];
+    }
     if (bad) {
         *errind = 2001;
         return;
     }
-    size_t used = datrec_len ? (s.n + datrec_len - 1) / datrec_len : 0;
-    memset(datrec + s.n, ' ', used * datrec_len - s.n);
+    size_t used = elem ? (s.n + elem - 1) / elem : 0;
+    memset(datrec + s.n, ' ', used * elem - s.n);
     *ldr = (fint)used;
     *errind = 0;
 }
 
-static int rec_get_int(const char **p, const char *end, long *v)
+/* A decimal ended by ',' at *p (before end); -1 if there is none. */
+static int rec_get_long(const char **p, const char *end, long *v)
 {
-    if (end - *p < 11)
+    char t[32];
+    size_t n = 0;
+    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
+        t[n] = (*p)[n];
+        n++;
+    }
+    if (n == 0 || *p + n >= end || (*p)[n] != ',')
         return -1;
-    char t[12], *e;
-    memcpy(t, *p, 11);
-    t[11] = '\0';
+    t[n] = '\0';
+    char *e;
     *v = strtol(t, &e, 10);
-    while (*e == ' ')
-        e++;
-    if (e == t || *e)
+    if (*e)
         return -1;
-    *p += 11;
+    *p += n + 1;
+    return 0;
+}
+
+static int rec_get_real(const char **p, const char *end, double *v)
+{
+    char t[40];
+    size_t n = 0;
+    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
+        t[n] = (*p)[n];
+        n++;
+    }
+    if (n == 0 || *p + n >= end || (*p)[n] != ',')
+        return -1;
+    t[n] = '\0';
+    char *e;
+    *v = strtod(t, &e);
+    if (*e)
+        return -1;
+    *p += n + 1;
     return 0;
 }
 
@@ -856,14 +913,14 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
     }
     p += 4;
     for (int k = 0; k < 3; k++)
-        if (rec_get_int(&p, end, &n[k]) || n[k] < 0 || n[k] > 1000000) {
+        if (rec_get_long(&p, end, &n[k]) || n[k] < 0 || n[k] > 1000000) {
             *errind = 2003;
             return;
         }
     fint e = 0;
     for (long i = 0; i < n[0]; i++) {
         long v;
-        if (rec_get_int(&p, end, &v)) {
+        if (rec_get_long(&p, end, &v)) {
             *errind = 2003;
             return;
         }
@@ -871,19 +928,11 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
             ia[i] = (fint)v;
     }
     for (long i = 0; i < n[1]; i++) {
-        if (end - p < 16) {
+        double v;
+        if (rec_get_real(&p, end, &v)) {
             *errind = 2003;
             return;
         }
-        char t[17], *q;
-        memcpy(t, p, 16);
-        t[16] = '\0';
-        double v = strtod(t, &q);
-        if (q == t) {
-            *errind = 2003;
-            return;
-        }
-        p += 16;
         if (i < *irl)
             ra[i] = (freal)v;
     }
@@ -893,7 +942,7 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
         return;
     }
     for (long i = 0; i < n[2]; i++)
-        if (rec_get_int(&p, end, &lens[i]) || lens[i] < 0) {
+        if (rec_get_long(&p, end, &lens[i]) || lens[i] < 0) {
             *errind = 2003;
             return;
         }

@@ -28,6 +28,7 @@ C     reported an error, 2 for bad arguments.
       CHARACTER*(*) NAME
       INTEGER SCENE, MMODE, CLIPSR
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NMODES
       PARAMETER (NMODES=4)
       INTEGER MODES(NMODES), SIZE, IOS, M, NP, NBLEN, WTYPE
@@ -92,6 +93,7 @@ C     nominal unit in the place of a pixel), HLHSR mode MODE.
       INTEGER SIZE, MODE, SCENE, CLIPSR, WTYPE
       REAL SIDE
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER WS
       PARAMETER (WS=1)
       INTEGER LASTE, NERRS
@@ -170,6 +172,7 @@ C     View 1: the paper's camera above the front right of the board;
 C     the ventilator scene clips NPC3 y above 0.7 (its far half).
       INTEGER WS, SCENE
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER ERR
       REAL VWM(4,4), PRM(4,4), PRVP(6), CLIPB(6), CLIPF(6)
       DATA PRVP /0.0, 1.0, 0.0, 1.0, 0.0, 1.0/
@@ -248,6 +251,7 @@ C     floating above it and a glass block (refraction index 1.5); lit
 C     (Fig. 3) or in flat colours, without the lighting model (Fig. 2).
       LOGICAL LIT
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       REAL X0, Y0, Z0, A, H
       PARAMETER (X0=0.55, Y0=0.102, Z0=0.5, A=0.2, H=0.12)
       IF (LIT) THEN
@@ -281,6 +285,7 @@ C     Fig. 4/5: board and a horizontal ventilator above it: five
 C     blades (quadrilaterals from radius R0 to R1, corner directions
 C     tabulated as cosine and sine) and a hexagonal hub.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       REAL CX, CY, CZ, R0, R1
       PARAMETER (CX=0.5, CY=0.55, CZ=0.5, R0=0.06, R1=0.34)
       REAL DIR(2,4,5), HUB(2,6), X(6), Y(6), Z(6), R

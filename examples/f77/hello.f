@@ -3,6 +3,7 @@ C     SPDX-License-Identifier: MIT
 !     gks3d FORTRAN 77 example: a red filled triangle and a blue
 !     polyline (a closed square) on a PNG workstation. CONID 1 writes the file gks1.png.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER WKID, CONID
       PARAMETER (WKID=1, CONID=1)
       REAL TX(3), TY(3), LX(5), LY(5)

@@ -13,6 +13,7 @@ C     pixels, 24..2048, default 480; TYPE png (default), pdf, svg, ps or
 C     eps); writes PREFIXsurface_zbuffer.png and PREFIXsurface.png (or
 C     .pdf ...). C twin: examples/c/surface.c (same files).
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER N
       PARAMETER (N=32)
       REAL X(N+1), Y(N+1), Z(N+1,N+1), R2
@@ -75,6 +76,7 @@ C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
       INTEGER SIZE, MODE, N
       REAL X(N+1), Y(N+1), Z(N+1,N+1)
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER WS, NC
       PARAMETER (WS=1, NC=16)
       INTEGER I, J, K, C, LODR, NB, NBLEN, ACT(2), DEACT(1)

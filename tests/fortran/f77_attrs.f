@@ -6,6 +6,7 @@ C     SPDX-License-Identifier: MIT
 !     Prints F77 ATTRS PASS or the failing checks.
       IMPLICIT NONE
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER LASTER, LASTF, NERR
       COMMON /ERRS/ LASTER, LASTF, NERR

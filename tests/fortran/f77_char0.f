@@ -4,6 +4,7 @@ C     SPDX-License-Identifier: MIT
 !     must not end there and draw "AB" silently); the same text without
 !     it draws with no error.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER N, ERRS(20), FCTS(20), FILS(20)
       COMMON /ERRREC/ N, ERRS, FCTS, FILS

@@ -3,6 +3,7 @@ C     SPDX-License-Identifier: MIT
 !     Provokes errors with the library's default GERHND/GERLOG writing
 !     to unit 22; the C checker compares the file line by line.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       OPEN (22, FILE='f77_errors.txt', STATUS='REPLACE')
       CALL GOPKS(22, -1)
       CALL GOPWK(1, 1, 12345)

@@ -4,6 +4,7 @@ C     SPDX-License-Identifier: MIT
 !     every error with the right ERRNR, FCTID and ERRFIL (unit 0 while
 !     GKS is closed).
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER N, ERRS(20), FCTS(20), FILS(20)
       COMMON /ERRREC/ N, ERRS, FCTS, FILS

@@ -6,6 +6,7 @@ C     SPDX-License-Identifier: MIT
 !     program's GERHND and leaves status NONE; the inquiries report
 !     through ERRIND only.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER N, ERRS(40), FCTS(40), FILS(40)
       COMMON /ERRREC/ N, ERRS, FCTS, FILS

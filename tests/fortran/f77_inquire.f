@@ -3,6 +3,7 @@ C     SPDX-License-Identifier: MIT
 !     List inquiry semantics (N = 0 count, 1-based N, out of range
 !     2002) and the other wrappers' argument conversion.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NFAIL, IERR, NUM, ITYP, IOL, IWK, I1, I2, I3, I4, NTYP
       REAL W(4), V(4), R1, R2, R3, CW(4), RV(4), CV(4)
       CHARACTER*80 IDR(3), ODR(1)

@@ -7,6 +7,7 @@ C     SPDX-License-Identifier: MIT
 !     the integer ray-tracing ESCAPE records of GESC.
       IMPLICIT NONE
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER LASTE, LASTF, NERR
       COMMON /LASTER/ LASTE, LASTF, NERR
@@ -86,7 +87,7 @@ C     SPDX-License-Identifier: MIT
       CALL GSRFEQ(5)
       CALL CHKER('GSRFEQ 5', 524, ESRFEQ, NFAIL)
       CALL GSBRFQ(0)
-      CALL CHKER('GSBRFQ 0', 524, ESBRFEQ, NFAIL)
+      CALL CHKER('GSBRFQ 0', 524, ESBRFQ, NFAIL)
       CALL GQRFEQ(ERR, F, B)
       CALL CHKI('RFEQ kept', F, GRAMDS, NFAIL)
       CALL CHKI('BRFEQ kept', B, GRAMB, NFAIL)

@@ -7,6 +7,7 @@ C     SPDX-License-Identifier: MIT
 !     (the current linetype becomes 3 again). Errors 160, 161, 34, 167,
 !     162 reach the program's own GERHND.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER N, ERRS(20), FCTS(20)
       COMMON /ERRREC/ N, ERRS, FCTS

@@ -4,6 +4,7 @@ C     SPDX-License-Identifier: MIT
 !     machine, errors reported to GERHND, attributes round trip
 !     (GSSGT3 / GQSGA3, GSSGT / GQSGA), list inquiries.
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NFAIL, IERR, I1, IOL, IVIS, IHIL, IDET, I, J
       REAL SM(3,4), SG(3,4), S2(2,3), G2(2,3), PRI
       REAL W6(6), R6(6), C6(6), V6(6), D6(6)

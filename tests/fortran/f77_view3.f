@@ -5,6 +5,7 @@ C     SPDX-License-Identifier: MIT
 !     failing checks; the C checker then verifies the z-buffered PNG.
       IMPLICIT NONE
       INCLUDE 'GKS_PAR'
+      INCLUDE 'GKS3D_PAR'
       INTEGER NFAIL, ERR, I, J
       REAL VWM(4,4), PRM(4,4), VCLP(6), PRVP(6), MOUT(2,3)
       REAL AX(4), AY(4), AZ(4), BX(4), BY(4), BZ(4)
