@@ -413,6 +413,7 @@ static void test_huge_coordinates_traced(void **u)
     expect_errors(0, 0);
     int covered = 0;
     int d = n_differ("h_big_zb.png", "h_big_rt.png", &covered);
+    printf("huge coordinates: %d of %d covered pixels differ\n", d, covered);
     if (covered < 1500 || d > covered / 100)
         fail_msg("%d of %d covered pixels differ", d, covered);
     open_png64(3, "h_big_rt.png", GHLHSR_RAYTRACE);
@@ -424,6 +425,41 @@ static void test_huge_coordinates_traced(void **u)
     n_captured = 0;
     unlink("h_big_zb.png");
     unlink("h_big_rt.png");
+}
+
+/* A self-intersecting FILL AREA 3 big enough for the tracer's point-in-polygon grid (a
+ * star of 1201 edges each nearly a diameter, winding 500 times around the centre): the
+ * ray-traced picture equals the z-buffer picture (both even-odd at the pixel centres),
+ * but for pixels whose centre lies within rounding of an edge (at most 0.5 %). */
+static void test_big_star_traced_as_classic(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png64(1, "h_star_zb.png", GHLHSR_ZBUFFER);
+    open_png64(2, "h_star_rt.png", GHLHSR_RAYTRACE);
+    gset_fill_int_style(GSTYLE_SOLID);
+    gset_fill_colr_ind(2);
+    enum { N = 1201, K = 500 };
+    static Gpoint3 p[N];
+    for (int i = 0; i < N; i++) {
+        double a = 6.283185307179586 * (double)((i * K) % N) / N;
+        p[i] = (Gpoint3){ 0.5 + 0.45 * cos(a), 0.5 + 0.45 * sin(a), 0.5 };
+    }
+    gfill_area3(&(Gpoint_list3){ N, p });
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gclose_gks();
+    expect_errors(0, 0);
+    int covered = 0;
+    int d = n_differ("h_star_zb.png", "h_star_rt.png", &covered);
+    printf("big star: %d of %d covered pixels differ\n", d, covered);
+    if (covered < 500 || covered > 4000 || d > 64 * 64 / 200)
+        fail_msg("%d pixels differ, %d covered", d, covered);
+    unlink("h_star_zb.png");
+    unlink("h_star_rt.png");
 }
 
 /* The eight functions that crashed on a NULL argument (issue 20 I) now report 2003;
@@ -496,6 +532,7 @@ int main(void)
         cmocka_unit_test(test_nonfinite_segment_transformation),
         cmocka_unit_test(test_null_arguments),
         cmocka_unit_test(test_huge_coordinates_traced),
+        cmocka_unit_test(test_big_star_traced_as_classic),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
