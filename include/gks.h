@@ -413,8 +413,17 @@ GKS_API void gfill_area_set3(const Gpoint_list_list3 *point_list_list);
  * P, Q, R. Errors: 5, 91 (a dimension < 1 or no array). */
 GKS_API void gcell_array(const Grect *rect, const Gpat_rep *colr_array);
 GKS_API void gcell_array3(const Gparal *paral, const Gpat_rep *colr_array);
-/* GENERALIZED DRAWING PRIMITIVE (3): this implementation has no GDP.
- * Errors: 5, 100 (negative count or no points), 102 (every identifier). */
+/* GENERALIZED DRAWING PRIMITIVE (3): RAL GKS's GDPs (points on the curve) and an ellipse;
+ * every output workstation type lists them (docs/BINDING.md, "GDPs"). The data record is
+ * not used (may be NULL). Errors: 5, 100 (negative count, no points, or a count the GDP
+ * does not take), 102 (not a GDP of this implementation). */
+enum {
+    GGDP_ARC = -1,    /* P1, P2, P3 on a circle: the arc P1 -> P2 -> P3 (polyline) */
+    GGDP_CHORD = -2,  /* that arc closed by the chord P3 P1 (fill area) */
+    GGDP_PIE = -3,    /* the sector: centre, P1 ... P3 (fill area) */
+    GGDP_CIRCLE = -4, /* 3 points on the circle, or centre and one point (fill area) */
+    GGDP_ELLIPSE = -5 /* centre, ends of two conjugate semi-diameters (fill area) */
+};
 GKS_API void ggdp(const Gpoint_list *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
 GKS_API void ggdp3(const Gpoint_list3 *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
 
@@ -692,6 +701,60 @@ GKS_API void ginq_light_src_rep(Gint ws_id, Gint light_ind, Gint *err_ind, Gligh
 /* Active light indices in ascending order (list convention of the other list inquiries). */
 GKS_API void ginq_light_src_state(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                   Gint_list *active, Gint *length_list);
+
+/* ---------------------------------------------------------------------------------
+ * Primitives with data and interior shading methods (PHIGS PLUS, ISO 9592-4, added to
+ * GKS-3D; docs/BINDING.md). Each facet may carry a colour and a normal, each vertex a
+ * colour and a normal, chosen by the facet and vertex flags (PHIGS PLUS values). Colours
+ * are of one colour type per call: GCOLR_INDIRECT (an index into the workstation's colour
+ * table, resolved per workstation like every GKS colour index) or GCOLR_RGB (direct, each
+ * component in [0,1]). Points and normals are in WC3; normals transform with the inverse
+ * transpose of the normalization (and segment) transformation and are renormalised. A
+ * facet colour replaces the fill area colour; vertex colours are interpolated under
+ * GSHAD_COLR, vertex normals under GSHAD_NORM (SET INTERIOR SHADING METHOD). Arrays the
+ * flags do not select are not read (may be NULL).
+ * --------------------------------------------------------------------------------- */
+enum { GFACET_NONE = 0, GFACET_COLR = 1, GFACET_NORM = 2, GFACET_COLR_NORM = 3 };
+enum { GVERT_COORD = 0, GVERT_COORD_COLR = 1, GVERT_COORD_NORM = 2, GVERT_COORD_COLR_NORM = 3 };
+enum { GCOLR_INDIRECT = 0, GCOLR_RGB = 1 };
+/* Interior shading methods: none (flat), colour interpolation (Gouraud), normal
+ * interpolation (Phong). PHIGS PLUS numbers its normal interpolation 4 (3 is DOT
+ * PRODUCT, not offered here); this extension numbers the three methods 1..3. */
+enum { GSHAD_NONE = 1, GSHAD_COLR = 2, GSHAD_NORM = 3 };
+
+/* A colour value of a data record (PHIGS PLUS Pcoval): ind for GCOLR_INDIRECT, rgb for
+ * GCOLR_RGB. */
+typedef union { Gint ind; Grgb rgb; } Gcoval;
+/* Facet data (PHIGS PLUS Pfacet_data3 as a struct): colr read when the facet flag has
+ * colour, norm when it has a normal. */
+typedef struct { Gcoval colr; Gvec3 norm; } Gfacet_data3;
+/* Vertex data (PHIGS PLUS Pfacet_vdata_list3 as parallel arrays): num_vertices points;
+ * colrs and norms (num_vertices each) read when the vertex flag selects them. */
+typedef struct {
+    Gint num_vertices;
+    Gpoint3 *points;
+    Gcoval *colrs;
+    Gvec3 *norms;
+} Gfacet_vdata3;
+/* A list of index lists: the loops (fill area set) of one set of SET OF FILL AREA SET 3
+ * WITH DATA, each loop a list of 0-based vertex indices. */
+typedef struct { Gint num_lists; Gint_list *lists; } Gint_list_list;
+
+/* Errors of the primitives with data (after the state error 5): 100 (fewer than 3
+ * vertices in a loop, no loop, quadrilateral mesh dimensions < 2, or a NULL points
+ * array), 2000 (facet flag, vertex flag or colour type out of range), 2003 (a NULL
+ * record or an array the flags select is NULL), 92 (a colour index < 0), 96 (an RGB
+ * component outside [0,1] or not finite), 904 (a vertex index out of range; PHIGS 504).
+ * A facet with a non-finite point is not drawn (as FILL AREA 3); a zero or non-finite
+ * normal is dropped (the facet is drawn without vertex normals, or facet normal). */
+/* FILL AREA 3 WITH DATA: one facet, fdata (may be NULL when fflag = GFACET_NONE). */
+GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
+                              const Gfacet_vdata3 *vdata);
+/* SET (BACK) INTERIOR SHADING METHOD: GSHAD_*. Errors: 8, 523 (not 1..3; PHIGS 123). */
+GKS_API void gset_int_shad_meth(Gint method);
+GKS_API void gset_back_int_shad_meth(Gint method);
+/* INQUIRE INTERIOR SHADING METHODS: the current front and back methods. Errors: 8. */
+GKS_API void ginq_int_shad_meth(Gint *err_ind, Gint *front, Gint *back);
 
 /* ---------------------------------------------------------------------------------
  * Inquiry functions: never call the error handler; *err_ind receives the error number

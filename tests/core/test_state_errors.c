@@ -117,6 +117,10 @@ static void c_SAPR(void) { gset_area_props(&props); }
 static void c_SBAPR(void) { gset_back_area_props(&props); }
 static void c_SRFEQ(void) { gset_refl_eq(GREFL_AMB_DIFF); }
 static void c_SBRFEQ(void) { gset_back_refl_eq(GREFL_AMB_DIFF); }
+static const Gfacet_vdata3 vd3 = { 3, (Gpoint3 *)tri3, NULL, NULL };
+static void c_FA3D(void) { gfill_area3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, &vd3); }
+static void c_SISM(void) { gset_int_shad_meth(GSHAD_COLR); }
+static void c_SBISM(void) { gset_back_int_shad_meth(GSHAD_NORM); }
 static void c_SLSR(void)
 {
     Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, 0, -1 }, { 1, 0 }, 0, 1 };

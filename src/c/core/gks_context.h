@@ -74,6 +74,7 @@ typedef struct gks_cur_attrs {
     Garea_props area_props[2];  /* front, back (SET (BACK) AREA PROPERTIES) */
     int refl_eq[2];             /* front, back reflectance equation, GREFL_* */
     uint64_t light_mask;        /* bit i-1: light source index i is active */
+    int int_shad[2];            /* front, back interior shading method, GSHAD_* */
 } gks_cur_attrs;
 
 typedef struct gks_norm_tran {

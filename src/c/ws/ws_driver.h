@@ -88,6 +88,18 @@ typedef struct gks_prim {
     Garea_props area_props[2]; /* front, back area properties (lighting) */
     int refl_eq[2];           /* front, back reflectance equation, GREFL_* */
     uint64_t light_mask;      /* bit i-1: light source index i is active */
+    /* FILL AREA primitives with data (FILL AREA (SET) 3 WITH DATA; triangle strips,
+     * quadrilateral meshes and sets of fill area sets arrive as one FILL AREA per facet):
+     * per-vertex unit normals in NDC3 (inverse transpose of the point transformation,
+     * renormalised) and colours resolved for this workstation, n_points each in the
+     * order of pts (all loops), NULL = none; the facet normal (unit, NDC3) when
+     * has_fnormal; clipping interpolated both at new vertices. A facet colour is already
+     * in colour. All zero/NULL for the other primitives. */
+    const Gvec3 *vnormals;
+    const Grgb *vcolours;
+    int has_fnormal;
+    Gvec3 fnormal;
+    int shading[2];           /* front, back interior shading method, GSHAD_* (1..3) */
 } gks_prim;
 
 /* Workstation state list (ISO 7942 6.6): owned by the core, created at OPEN WORKSTATION. */

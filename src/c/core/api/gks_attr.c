@@ -17,6 +17,7 @@
 
 void gks_attr_init(gks_cur_attrs *a)
 {
+    a->int_shad[0] = a->int_shad[1] = GSHAD_NONE;
     a->line_ind = a->marker_ind = a->text_ind = a->fill_ind = a->edge_ind = 1;
     a->linetype = 1;
     a->linewidth = 1.0;

@@ -243,13 +243,14 @@ static int far_clip_box(const gks_ws *ws, const Gview_rep3 *v, double cb[6])
     return h > 0.0;
 }
 
-/* Sutherland-Hodgman clip of the loops (counts, n_loops; points xyz) to box cb: the even-odd
- * interior inside the box is kept (the parts outside are replaced by paths on the box).
- * Interpolation in long double, whose range holds the difference of two doubles. Returns
- * the new points (gks_alloc'ed) with their counts in *out_counts (loops of fewer than 3
- * points left out) and *out_loops; NULL + *out_loops 0 if nothing is left; NULL + 300. */
-static double *clip_loops(const double *xyz, const int *counts, int n_loops, const double cb[6],
-                          int **out_counts, int *out_loops, int *err)
+/* Sutherland-Hodgman clip of the loops (counts, n_loops; points of st doubles, xyz first, then
+ * vertex data interpolated alike) to box cb: the even-odd interior inside the box is kept
+ * (the parts outside are replaced by paths on the box). Interpolation in long double, whose
+ * range holds the difference of two doubles. Returns the new points (gks_alloc'ed) with
+ * their counts in *out_counts (loops of fewer than 3 points left out) and *out_loops; NULL
+ * + *out_loops 0 if nothing is left; NULL + 300. */
+static double *clip_loops(const double *xyz, size_t st, const int *counts, int n_loops,
+                          const double cb[6], int **out_counts, int *out_loops, int *err)
 {
     double *res = NULL, *a = NULL, *b = NULL;
     int *rc = gks_alloc_array((size_t)n_loops, sizeof *rc);
@@ -260,32 +261,32 @@ static double *clip_loops(const double *xyz, const int *counts, int n_loops, con
     if (!rc)
         return NULL;
     const double *src = xyz;
-    for (int k = 0; k < n_loops; src += 3 * (size_t)counts[k], k++) {
+    for (int k = 0; k < n_loops; src += st * (size_t)counts[k], k++) {
         size_t m = (size_t)counts[k];
         gks_free(a);
-        a = gks_alloc_array(m, 3 * sizeof *a);
+        a = gks_alloc_array(m, st * sizeof *a);
         if (!a)
             goto fail;
-        memcpy(a, src, m * 3 * sizeof *a);
+        memcpy(a, src, m * st * sizeof *a);
         for (int f = 0; f < 6 && m >= 3; f++) {
             const int j = f % 3, upper = f >= 3;
             const double L = cb[f];
-            b = gks_alloc_array(2 * m, 3 * sizeof *b); /* a half-space clip: <= 2m points */
+            b = gks_alloc_array(2 * m, st * sizeof *b); /* a half-space clip: <= 2m points */
             if (!b)
                 goto fail;
             size_t o = 0;
             for (size_t i = 0; i < m; i++) {
-                const double *p = a + 3 * i, *q = a + 3 * ((i + 1) % m);
+                const double *p = a + st * i, *q = a + st * ((i + 1) % m);
                 const int pin = upper ? p[j] <= L : p[j] >= L;
                 const int qin = upper ? q[j] <= L : q[j] >= L;
                 if (pin)
-                    memcpy(b + 3 * o++, p, 3 * sizeof *b);
+                    memcpy(b + st * o++, p, st * sizeof *b);
                 if (pin != qin) {
                     long double t = ((long double)L - p[j]) / ((long double)q[j] - p[j]);
-                    for (int c = 0; c < 3; c++)
-                        b[3 * o + c] =
+                    for (size_t c = 0; c < st; c++)
+                        b[st * o + c] =
                             (double)(p[c] + t * ((long double)q[c] - (long double)p[c]));
-                    b[3 * o + j] = L;
+                    b[st * o + j] = L;
                     o++;
                 }
             }
@@ -298,12 +299,12 @@ static double *clip_loops(const double *xyz, const int *counts, int n_loops, con
             continue;
         if (nres + m > capres) {
             capres = 2 * (nres + m);
-            double *nr = gks_realloc_array(res, capres, 3 * sizeof *res);
+            double *nr = gks_realloc_array(res, capres, st * sizeof *res);
             if (!nr)
                 goto fail;
             res = nr;
         }
-        memcpy(res + 3 * nres, a, m * 3 * sizeof *a);
+        memcpy(res + st * nres, a, m * st * sizeof *a);
         nres += m;
         rc[nl++] = (int)m;
     }
@@ -325,10 +326,86 @@ fail:
     return NULL;
 }
 
+/* The matrix that carries normals through the linear part A of m: the cofactor matrix of A
+ * (det(A) A^-T), with the sign of det(A) so that it keeps their sense; normals are
+ * renormalised after it. */
+static void normal_matrix(const Gmatrix3 m, double c[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            c[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+        }
+    const double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2];
+    if (det < 0)
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                c[i][j] = -c[i][j];
+}
+
+/* A polygon (VRC3 points xyz, vertex data vd) beyond the tracer's coordinate range, clipped
+ * to far_clip_box with its vertex data (normals renormalised) and recorded. 0, 300 or 308
+ * (docs/RAYTRACING.md, "Coordinate range"). */
+static int push_far_polygon(ws_rt *r, const gks_ws *ws, rt_view_rec *vr, const Gview_rep3 *v,
+                            int n_loops, const int *counts, size_t n_pts, const double *xyz,
+                            const rt_vertex_data *vd)
+{
+    double cb[6];
+    if (!far_clip_box(ws, v, cb))
+        return 308;
+    const size_t st = 3 + (vd->normals ? 3 : 0) + (vd->colours ? 3 : 0);
+    double *pk = gks_alloc_array(n_pts, st * sizeof *pk);
+    if (!pk)
+        return 300;
+    for (size_t i = 0; i < n_pts; i++) {
+        double *d = pk + st * i;
+        memcpy(d, xyz + 3 * i, 3 * sizeof *d);
+        if (vd->normals)
+            memcpy(d + 3, vd->normals + 3 * i, 3 * sizeof *d);
+        if (vd->colours)
+            memcpy(d + st - 3, vd->colours + 3 * i, 3 * sizeof *d);
+    }
+    int *cc = NULL, nc = 0, err = 0;
+    double *cp = clip_loops(pk, st, counts, n_loops, cb, &cc, &nc, &err);
+    gks_free(pk);
+    if (err || !cp)
+        return err; /* 300, or nothing near the display volume: nothing to trace */
+    size_t m = 0;
+    for (int k = 0; k < nc; k++)
+        m += (size_t)cc[k];
+    double *cx = gks_alloc_array(m, 9 * sizeof *cx);
+    int id = RT_ERR_NOMEM;
+    if (cx) {
+        double *cn = vd->normals ? cx + 3 * m : NULL, *ccol = vd->colours ? cx + 6 * m : NULL;
+        for (size_t i = 0; i < m; i++) {
+            const double *d = cp + st * i;
+            memcpy(cx + 3 * i, d, 3 * sizeof *cx);
+            if (cn) {
+                const double l = sqrt(d[3] * d[3] + d[4] * d[4] + d[5] * d[5]);
+                for (int k = 0; k < 3; k++)
+                    cn[3 * i + k] = l > 0 && isfinite(l) ? d[3 + k] / l : 0.0;
+            }
+            if (ccol)
+                memcpy(ccol + 3 * i, d + st - 3, 3 * sizeof *ccol);
+        }
+        const rt_vertex_data cvd = { cn, ccol };
+        id = rt_scene_add_polygon_data(vr->sc, nc, cc, cx, &cvd, vr->f, vr->b);
+    }
+    gks_free(cx);
+    gks_free(cp);
+    gks_free(cc);
+    if (id < 0)
+        return gks_err_of_rt(id);
+    r->count++;
+    return 0;
+}
+
 /* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
- * overwritten with their VRC3 images) in view vi. */
+ * overwritten with their VRC3 images) in view vi; vn (NDC3 unit normals) and vc (colours),
+ * 3 doubles per point each, or NULL; vn is overwritten with the VRC3 normals. */
 static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, int n_loops,
-                        const int *counts, size_t n_pts, double *xyz)
+                        const int *counts, size_t n_pts, double *xyz, double *vn,
+                        const double *vc)
 {
     rt_view_rec *vr;
     int e = view_surfaces(r, vi, a, &vr);
@@ -339,28 +416,27 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
         double *q = xyz + 3 * i;
         xf_point(v->ori_matrix, q[0], q[1], q[2], q);
     }
+    if (vn) {
+        double c[3][3];
+        normal_matrix(v->ori_matrix, c);
+        for (size_t i = 0; i < n_pts; i++) {
+            double *q = vn + 3 * i, o[3];
+            for (int k = 0; k < 3; k++)
+                o[k] = c[k][0] * q[0] + c[k][1] * q[1] + c[k][2] * q[2];
+            const double l = sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+            for (int k = 0; k < 3; k++) /* a degenerate normal adds nothing (rt_vertex_data) */
+                q[k] = l > 0 && isfinite(l) ? o[k] / l : 0.0;
+        }
+    }
+    const rt_vertex_data vd = { vn, vc };
     /* Beyond the tracer's range (it would drop the polygon, the classic modes draw it):
      * clipped to a box around the display volume. Other polygons go in unchanged. */
     double big = 0.0;
     for (size_t i = 0; i < 3 * n_pts; i++)
         big = fmax(big, fabs(xyz[i]));
-    if (big > RT_COORD_MAX) {
-        double cb[6];
-        if (!far_clip_box(ws, v, cb))
-            return 308; /* docs/RAYTRACING.md, "Coordinate range" */
-        int *cc = NULL, nc = 0, err = 0;
-        double *cxyz = clip_loops(xyz, counts, n_loops, cb, &cc, &nc, &err);
-        if (err || !cxyz)
-            return err; /* 300, or nothing near the display volume: nothing to trace */
-        int id = rt_scene_add_polygon(vr->sc, nc, cc, cxyz, vr->f, vr->b);
-        gks_free(cxyz);
-        gks_free(cc);
-        if (id < 0)
-            return gks_err_of_rt(id);
-        r->count++;
-        return 0;
-    }
-    int id = rt_scene_add_polygon(vr->sc, n_loops, counts, xyz, vr->f, vr->b);
+    if (big > RT_COORD_MAX)
+        return push_far_polygon(r, ws, vr, v, n_loops, counts, n_pts, xyz, &vd);
+    int id = rt_scene_add_polygon_data(vr->sc, n_loops, counts, xyz, &vd, vr->f, vr->b);
     if (id < 0)
         return gks_err_of_rt(id);
     r->count++;
@@ -425,14 +501,21 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     }
     if (total != (size_t)prim->n_points)
         return 0; /* inconsistent record: nothing traceable */
-    double sxyz[3 * STACK_POINTS];
+    /* Interior shading method COLOUR or NORMAL on either side: the vertex colours and
+     * normals are interpolated and shaded per ray (the tracer's equivalent of both methods;
+     * docs/RAYTRACING.md); NONE: the facet's colour and plane. */
+    const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
+    const int has_n = smooth && prim->vnormals, has_c = smooth && prim->vcolours;
+    double sxyz[3 * STACK_POINTS], sn[3 * STACK_POINTS], sc[3 * STACK_POINTS];
     int scounts[4];
     int *counts = (size_t)prim->n_loops <= sizeof scounts / sizeof scounts[0]
                       ? scounts
                       : gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
     double *xyz = total <= STACK_POINTS ? sxyz : gks_alloc_array(total, 3 * sizeof *xyz);
+    double *vn = !has_n ? NULL : total <= STACK_POINTS ? sn : gks_alloc_array(total, 3 * sizeof *vn);
+    double *vc = !has_c ? NULL : total <= STACK_POINTS ? sc : gks_alloc_array(total, 3 * sizeof *vc);
     int err = 300;
-    if (!counts || !xyz)
+    if (!counts || !xyz || (has_n && !vn) || (has_c && !vc))
         goto done;
     /* Loops of fewer than 3 points enclose nothing (even-odd rule): left out. */
     int nl = 0;
@@ -446,18 +529,35 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
                 xyz[3 * np] = p->x;
                 xyz[3 * np + 1] = p->y;
                 xyz[3 * np + 2] = p->z;
+                if (vn) {
+                    const Gvec3 *q = &prim->vnormals[src + i];
+                    vn[3 * np] = q->delta_x;
+                    vn[3 * np + 1] = q->delta_y;
+                    vn[3 * np + 2] = q->delta_z;
+                }
+                if (vc) {
+                    const Grgb *q = &prim->vcolours[src + i];
+                    vc[3 * np] = q->red;
+                    vc[3 * np + 1] = q->green;
+                    vc[3 * np + 2] = q->blue;
+                }
                 np++;
             }
         }
         src += m;
     }
     rt_attr a = attr_of(prim);
-    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz) : 0;
+    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz, vn, vc)
+             : 0;
 done:
     if (counts != scounts)
         gks_free(counts);
     if (xyz != sxyz)
         gks_free(xyz);
+    if (vn != sn)
+        gks_free(vn);
+    if (vc != sc)
+        gks_free(vc);
     return err;
 }
 
@@ -547,7 +647,7 @@ static int record_cells_clipped(ws_rt *r, const gks_ws *ws, const gks_prim *prim
                 continue;
             rt_attr a = base;
             a.colour = prim->cells[(size_t)j * (size_t)nx + (size_t)i];
-            int e = push_polygon(r, ws, &a, vi, 1, &n, (size_t)n, &poly[0][0]);
+            int e = push_polygon(r, ws, &a, vi, 1, &n, (size_t)n, &poly[0][0], NULL, NULL);
             if (e)
                 return e;
         }
@@ -655,6 +755,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
     rt_build_options bo;
     memset(&bo, 0, sizeof bo);
     bo.brute_threshold = -1; /* defaults */
+    bo.threads = r->opts.threads; /* the build on the frame's threads (GESC_RT_THREADS) */
     if (cull) {
         bo.ncull = 6;
         memcpy(bo.cull, cull->plane, sizeof bo.cull);
