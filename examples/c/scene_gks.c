@@ -165,9 +165,14 @@ static void set_material(const scene_io_material *m, Gint colr_ind, int *clamped
 
 /* FILL AREA 3 for every polygon of s; pts has room for the largest polygon. The colour
  * representations must be set before: attributes are bound when a primitive is created. */
-static void draw_scene(const scene_io_scene *s, Gpoint3 *pts, palette *pal, int *clamped)
+static void draw_scene(const scene_io_scene *s, Gpoint3 *pts, Gvec3 *nrm, palette *pal,
+                       int *clamped)
 {
     uint32_t cur = UINT32_MAX;
+    if (nrm) {
+        gset_int_shad_meth(GSHAD_NORM);
+        gset_back_int_shad_meth(GSHAD_NORM);
+    }
     for (size_t i = 0; i < s->num_polygons; i++) {
         uint32_t m = s->poly_material[i];
         if (m != cur && m < s->num_materials) {
@@ -180,6 +185,19 @@ static void draw_scene(const scene_io_scene *s, Gpoint3 *pts, palette *pal, int 
         for (int k = 0; k < nv; k++) {
             const double *v = s->vertices + 3 * (size_t)idx[k];
             pts[k] = (Gpoint3){ v[0], v[1], v[2] };
+        }
+        int with = 0; /* every vertex has a non-zero normal */
+        for (int k = 0; nrm && k < nv; k++) {
+            const double *q = s->normals + 3 * (size_t)idx[k];
+            nrm[k] = (Gvec3){ q[0], q[1], q[2] };
+            with = k == 0 ? 1 : with;
+            if (q[0] == 0 && q[1] == 0 && q[2] == 0)
+                with = -1;
+        }
+        if (with > 0) {
+            Gfacet_vdata3 vd = { nv, pts, NULL, nrm };
+            gfill_area3_data(GFACET_NONE, GVERT_COORD_NORM, GCOLR_INDIRECT, NULL, &vd);
+            continue;
         }
         Gpoint_list3 l = { nv, pts };
         gfill_area3(&l);
@@ -217,8 +235,12 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
     if (npoly == 0)
         return fail(err, err_size, "the scene has no polygons");
     Gpoint3 *pts = maxv <= SIZE_MAX / sizeof *pts ? malloc(maxv * sizeof *pts) : NULL;
-    if (!pts)
+    Gvec3 *nrm = opt->smooth && maxv <= SIZE_MAX / sizeof *nrm ? malloc(maxv * sizeof *nrm) : NULL;
+    if (!pts || (opt->smooth && !nrm)) {
+        free(pts);
+        free(nrm);
         return fail(err, err_size, "out of memory");
+    }
 
     double t0 = now_s();
     double ax = 1, ay = 1;
@@ -232,6 +254,7 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
     if (make_view(view, far_distance(scenes, n, view), ax, ay, &rep, err, err_size)) {
         gclose_gks();
         free(pts);
+        free(nrm);
         return -1;
     }
     gopen_ws(WS, png_path, type);
@@ -279,7 +302,7 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
      * write the empty frame 1 first) */
     gredraw_all_seg_ws(WS);
     for (int k = 0; k < n && !rc; k++)
-        draw_scene(scenes[k], pts, &pal, &clamped);
+        draw_scene(scenes[k], pts, scenes[k]->normals ? nrm : NULL, &pal, &clamped);
     double t1 = now_s();
     gupd_ws(WS, GFLAG_PERFORM);
     double t2 = now_s();
@@ -309,6 +332,7 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
     ginq_err_st(&in_h, &last);
     gclose_gks();
     free(pts);
+    free(nrm);
     if (!opt->quiet && clamped)
         fprintf(stderr, "warning: colours or coefficients outside [0,1] were clamped\n");
     if (!opt->quiet && pal.overflow)

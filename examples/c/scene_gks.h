@@ -35,6 +35,9 @@ typedef struct scene_gks_options {
     int depth;        /* 0: default (5 with spd); else 1..64 */
     double ambient;   /* ambient light intensity in [0,1] */
     int quiet;        /* 1: no warnings on stderr */
+    int smooth;       /* 1: polygons whose vertices carry normals (NFF "pp", or normals a
+                         mesh reader computed) as FILL AREA 3 WITH DATA, interior shading
+                         method NORMAL (interpolated); 0: every polygon flat */
 } scene_gks_options;
 
 typedef struct scene_gks_result {

@@ -5,9 +5,12 @@
  * each cell two FILL AREA 3 triangles coloured by height, ray traced above a mirror plane.
  * The data stay in the scientist's coordinates: SET WINDOW 3 / SET VIEWPORT 3 map them to
  * NDC3 and the view's up vector is the z axis. A z-buffer preview at a third of the size
- * comes first. Usage: surface_c [SIZE [PREFIX [png|pdf|svg|ps|eps]]] (24..2048, default
- * 480; the vector types draw a side of SIZE x 0.2 mm); writes
- * PREFIXsurface_zbuffer.png and PREFIXsurface.png.
+ * comes first. Then the same surface drawn WITH DATA (FILL AREA 3 WITH DATA, interior shading
+ * method normal interpolation): vertex colours by height and vertex normals from the analytic
+ * gradient, so that it is shaded smooth. Usage: surface_c [SIZE [PREFIX [png|pdf|svg|ps|eps]]]
+ * (24..2048, default 480; the vector types draw a side of SIZE x 0.2 mm); writes
+ * PREFIXsurface_zbuffer.png, PREFIXsurface.png, PREFIXsurface_smooth_zbuffer.png and
+ * PREFIXsurface_smooth.png.
  */
 #include <gks.h>
 #include <math.h>
@@ -50,8 +53,33 @@ static void area_props(real amb, real dif, real spec, real spexp)
 
 static Gint ws_type = GWS_TYPE_PNG; /* or a vector type (third argument) */
 
+/* The colour of height h: the colour map 16..31 (below) as a continuous function. */
+static Grgb height_colour(real h)
+{
+    real t = (h + 0.8f) / 1.6f;
+    t = t < 0.0f ? 0.0f : t > 1.0f ? 1.0f : t;
+    Grgb c = { 0.15f + 0.8f * t, 0.3f + 0.5f * (1.0f - fabsf(2.0f * t - 1.0f)), 0.85f - 0.75f * t };
+    return c;
+}
+
+/* One triangle WITH DATA: vertex colours by height, vertex normals (-fx, -fy, 1) from the
+ * analytic gradient of f. */
+static void fill3_data(const real *x, const real *y, const real *z, const real (*g)[2])
+{
+    Gpoint3 p[3];
+    Gcoval c[3];
+    Gvec3 n[3];
+    for (int i = 0; i < 3; i++) {
+        p[i] = (Gpoint3){ x[i], y[i], z[i] };
+        c[i].rgb = height_colour(z[i]);
+        n[i] = (Gvec3){ -g[i][0], -g[i][1], 1.0f };
+    }
+    Gfacet_vdata3 vd = { 3, p, c, n };
+    gfill_area3_data(GFACET_NONE, GVERT_COORD_COLR_NORM, GCOLR_RGB, NULL, &vd);
+}
+
 static void picture(const char *base, int size, int mode, const real *x, const real *y,
-                    real z[N + 1][N + 1])
+                    real z[N + 1][N + 1], real g[N + 1][N + 1][2])
 {
     gopen_ws(WS, "1", ws_type);
     Gescape_in_data in = { { 1, (Gint[]){ WS }, 0, NULL, strlen(base), base } };
@@ -112,10 +140,30 @@ static void picture(const char *base, int size, int mode, const real *x, const r
     real px[4] = { -2.5f, 2.5f, 2.5f, -2.5f }, py[4] = { -2.5f, -2.5f, 2.5f, 2.5f },
          pz[4] = { -1.2f, -1.2f, -1.2f, -1.2f };
     fill3(4, px, py, pz);
-    /* the surface: two triangles per grid cell, colour by mean height */
+    /* the surface: two triangles per grid cell, colour by mean height (flat), or with
+       vertex data (g given: colours by height and normals from the gradient, interpolated) */
     area_props(0.7f, 0.8f, 0.3f, 30.0f);
+    if (g) {
+        gset_int_shad_meth(GSHAD_NORM);
+        gset_back_int_shad_meth(GSHAD_NORM);
+    }
     for (int j = 0; j < N; j++)
         for (int i = 0; i < N; i++) {
+            if (g) {
+                real tx[3] = { x[i], x[i + 1], x[i + 1] }, ty[3] = { y[j], y[j], y[j + 1] },
+                     tz[3] = { z[j][i], z[j][i + 1], z[j + 1][i + 1] };
+                const real tg[3][2] = { { g[j][i][0], g[j][i][1] },
+                                        { g[j][i + 1][0], g[j][i + 1][1] },
+                                        { g[j + 1][i + 1][0], g[j + 1][i + 1][1] } };
+                fill3_data(tx, ty, tz, tg);
+                real ux[3] = { x[i], x[i + 1], x[i] }, uy[3] = { y[j], y[j + 1], y[j + 1] },
+                     uz[3] = { z[j][i], z[j + 1][i + 1], z[j + 1][i] };
+                const real ug[3][2] = { { g[j][i][0], g[j][i][1] },
+                                        { g[j + 1][i + 1][0], g[j + 1][i + 1][1] },
+                                        { g[j + 1][i][0], g[j + 1][i][1] } };
+                fill3_data(ux, uy, uz, ug);
+                continue;
+            }
             real zm = 0.25f * (((z[j][i] + z[j][i + 1]) + z[j + 1][i + 1]) + z[j + 1][i]);
             int c = (int)((zm + 0.8f) / 1.6f * (real)NC);
             gset_fill_colr_ind(16 + (c < 0 ? 0 : c > NC - 1 ? NC - 1 : c));
@@ -165,17 +213,29 @@ int main(int argc, char **argv)
         x[i] = -2.0f + 4.0f * (real)i / (real)N;
         y[i] = x[i];
     }
+    static real g[N + 1][N + 1][2]; /* the gradient (df/dx, df/dy) */
     for (int j = 0; j <= N; j++)
         for (int i = 0; i <= N; i++) {
             real r2 = x[i] * x[i] + y[j] * y[j];
-            z[j][i] = 0.8f * cosf(2.5f * sqrtf(r2)) * expf(-0.25f * r2);
+            real r = sqrtf(r2);
+            z[j][i] = 0.8f * cosf(2.5f * r) * expf(-0.25f * r2);
+            /* (df/dr) / r = 0.8 exp(-r^2/4) (-2.5 sin(2.5 r) / r - 0.5 cos(2.5 r)), with
+               sin(2.5 r) / r -> 2.5 at r = 0; df/dx = x (df/dr) / r */
+            real s = r > 0.0f ? -2.5f * sinf(2.5f * r) / r : -6.25f;
+            real dr = 0.8f * expf(-0.25f * r2) * (s - 0.5f * cosf(2.5f * r));
+            g[j][i][0] = dr * x[i];
+            g[j][i][1] = dr * y[j];
         }
     char base[256];
     gopen_gks(NULL, 0);
     snprintf(base, sizeof base, "%ssurface_zbuffer", prefix);
-    picture(base, size / 3, GHLHSR_ZBUFFER, x, y, z);
+    picture(base, size / 3, GHLHSR_ZBUFFER, x, y, z, NULL);
     snprintf(base, sizeof base, "%ssurface", prefix);
-    picture(base, size, GHLHSR_RAYTRACE, x, y, z);
+    picture(base, size, GHLHSR_RAYTRACE, x, y, z, NULL);
+    snprintf(base, sizeof base, "%ssurface_smooth_zbuffer", prefix);
+    picture(base, size / 3, GHLHSR_ZBUFFER, x, y, z, g);
+    snprintf(base, sizeof base, "%ssurface_smooth", prefix);
+    picture(base, size, GHLHSR_RAYTRACE, x, y, z, g);
     gclose_gks();
     return 0;
 }

@@ -132,6 +132,27 @@ RT_API void rt_scene_free(rt_scene *sc);
 RT_API int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
                          int front_surface, int back_surface);
 
+/* Per-vertex data of a smooth area (PHIGS PLUS primitives WITH DATA), for
+ * rt_scene_add_polygon_data. Either pointer may be NULL. */
+typedef struct rt_vertex_data {
+    const double *normals;  /* 3 per vertex, VRC3, pointing to the side the vertex normal data
+                               calls outside (normalised here; a zero normal adds nothing) */
+    const double *colours;  /* 3 per vertex, RGB in [0,1]: replaces the surface's diffuse colour */
+} rt_vertex_data;
+
+/* rt_scene_add_polygon with per-vertex normals and/or colours (vd NULL or both pointers NULL:
+ * exactly rt_scene_add_polygon). At a hit, the data are interpolated: triangles by barycentric
+ * coordinates, other polygons (every loop of a set) by mean value coordinates (Hormann and
+ * Floater 2006) in the plane, which are linear along every edge, so that neighbouring areas
+ * sharing an edge's vertex data agree along it. The interpolated normal shades, reflects and
+ * refracts (rt_render_options.smooth); the geometric plane still decides which side is hit and
+ * where secondary rays start. If the interpolated normal points to the other side of the plane
+ * than the front (vertex normals against the loop's winding), it is turned around.
+ * RT_ERR_ARG also for non-finite normals or colours. */
+RT_API int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_counts,
+                                     const double *xyz, const rt_vertex_data *vd,
+                                     int front_surface, int back_surface);
+
 /* GKS CELL ARRAY 3 in VRC3: parallelogram with corners P, R, Q and P + Q - R (P and Q
  * diagonally opposite, R a third corner). Columns i = 0..nx-1 run from P towards R, rows
  * j = 0..ny-1 from R towards Q; cell (i,j) colour is rgb[3*(j*nx + i) + 0..2] (nearest
@@ -163,6 +184,8 @@ typedef struct rt_build_options {
                              camera's clipping planes when secondary rays are clipped */
     double cull[6][4];
     double cull_eps;
+    int threads;          /* threads of the commit and grid build: 0 = online CPUs; the
+                             committed scene is identical for any count */
 } rt_build_options;
 
 /* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default
@@ -264,6 +287,16 @@ RT_API int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray
 
 enum { RT_FRESNEL_EXACT = 0, RT_FRESNEL_SCHLICK = 1, RT_FRESNEL_NONE = 2 };
 
+/* How interpolated vertex normals are used (docs/RAYTRACING.md, "Smooth areas"):
+ * ROBUST: shadow rays start from Hanika's point (2021, "Hacking the shadow terminator": the
+ *   hit point moved onto the interpolated tangent planes of the vertices, where that lies
+ *   above the plane), and the shading normal is adapted so that the mirror direction of the
+ *   viewer stays above the geometric surface (Keller et al. 2017, Iray), refracted directions
+ *   are kept below it;
+ * NAIVE: the interpolated normal as it is, shadow rays from the hit point (for comparison);
+ * FLAT: vertex normals ignored (geometric normal), vertex colours still interpolated. */
+enum { RT_SMOOTH_ROBUST = 0, RT_SMOOTH_NAIVE = 1, RT_SMOOTH_FLAT = 2 };
+
 typedef struct rt_stats {
     uint64_t eye_rays, eye_hits, shadow_rays, reflection_rays, refraction_rays;
     uint64_t shadow_lbuf;             /* shadow rays answered from a light buffer's list */
@@ -327,11 +360,12 @@ typedef struct rt_render_options {
     rt_progress_fn progress_fn;  /* optional, called by one thread at a time; may be NULL */
     void *progress_user;
     const rt_tile_hook *tiles;   /* NULL: every tile traced here (default) */
+    int smooth;             /* RT_SMOOTH_* for areas with vertex normals */
 } rt_render_options;
 
 /* Defaults (on the speed/error Pareto front of bench/speed_error): corner rays (samples 1, no
  * jitter, used when corner_rays is set to 0), depth 5, cut-off 0.01, threads 0, exact Fresnel,
- * clip_secondary 0, light buffers, black background, no progress. */
+ * clip_secondary 0, light buffers, black background, no progress, RT_SMOOTH_ROBUST. */
 RT_API void rt_render_options_default(rt_render_options *o);
 
 /* Shading of a hit (front or back surface by the side hit; the normal is turned to face the ray):

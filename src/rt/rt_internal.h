@@ -20,6 +20,21 @@ void *rt_realloc_array(void *p, size_t n, size_t size);
 /* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
 int rt_grow(void **p, size_t *cap, size_t need, size_t es);
 
+/* ---- fork-join loops (rt_par.c) ---- */
+#define RT_PAR_MAX 64 /* threads at most */
+typedef void (*rt_par_fn)(void *arg, int k, int n);
+/* threads for a request as rt_build_options.threads takes it (0: online CPUs), >= 1 */
+int rt_par_threads(int requested);
+/* fn(arg, k, n) for k = 0 .. n-1 on up to n threads (k = 0 on the caller); returns when all
+   are done. Parts must not depend on which thread runs them. */
+void rt_par_run(int n, rt_par_fn fn, void *arg);
+/* [*lo, *hi) of part k of n of 0 .. count-1 */
+static inline void rt_par_range(size_t count, int k, int n, size_t *lo, size_t *hi)
+{
+    *lo = count / (size_t)n * (size_t)k + (count % (size_t)n < (size_t)k ? count % (size_t)n : (size_t)k);
+    *hi = *lo + count / (size_t)n + ((size_t)k < count % (size_t)n);
+}
+
 /* ---- primitives ---- */
 enum { RT_KIND_TRI = 0, RT_KIND_POLY = 1, RT_KIND_CELL = 2, RT_KIND_QUAD = 3 };
 
@@ -77,6 +92,18 @@ typedef struct rt_in_prim {
     size_t rgb0;        /* cell: first float of colours in in_rgb */
 } rt_in_prim;
 
+/* per-vertex data of one smooth area (rt_scene_add_polygon_data), in id order */
+typedef struct rt_vd {
+    uint32_t id;        /* primitive id */
+    uint32_t nv;        /* vertices (all loops) */
+    uint32_t nloops;
+    uint8_t has_n, has_c;
+    size_t v0;          /* first vertex in vd_xyz (3 doubles), vd_n, vd_c (3 floats each) */
+    size_t loop0;       /* first loop count in vd_loops */
+} rt_vd;
+
+#define RT_NO_VD UINT32_MAX
+
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */
 typedef struct rt_box {
     double lo[3], hi[3], cw[3], inv_cw[3];
@@ -128,8 +155,13 @@ struct rt_scene {
     double *in_xyz; size_t nxyz, capxyz;
     int *in_loops; size_t nloopsin, caploopsin;
     float *in_rgb; size_t nrgb, caprgb;
+    rt_vd *vd; size_t nvd, capvd;     /* smooth areas' vertex data */
+    double *vd_xyz; float *vd_n, *vd_c; size_t nvdv, capvdxyz, capvdn, capvdc;
+    int *vd_loops; size_t nvdl, capvdl;
     /* committed */
     int committed;
+    uint32_t *prim_vd;                /* per committed prim: its rt_vd or RT_NO_VD; NULL
+                                         when the scene has no vertex data */
     rt_prim *prim; size_t nprim;
     rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
@@ -234,6 +266,15 @@ void rt_lbuf_free(rt_lbuf *lb);
    cannot be hit), 0 if no primitive can be hit, -1 if the ray must walk the grid */
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb);
+
+/* ---- smooth areas (rt_smooth.c) ---- */
+/* Interpolation at point P of committed primitive i (front normal ng): 0 if i has no vertex
+ * data. Otherwise bit 1: n (unit, front side) is the interpolated normal, ps Hanika's
+ * shadow point (= P where it would lie below the plane); bit 2: rgb the interpolated colour. */
+int rt_smooth_at(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
+                 double n[3], double ps[3], double rgb[3]);
+/* rt_vd_commit: per committed primitive its record (sc->prim_vd); RT_ERR_NOMEM */
+int rt_vd_commit(rt_scene *sc);
 
 /* cell array colour at point p (on the plane) */
 void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3]);

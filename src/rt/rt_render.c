@@ -251,9 +251,11 @@ static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double 
     rt_trace(w, o, d, 0.0, INFINITY, depth, weight, 1, from, NULL, out);
 }
 
+/* P the hit point, N the shading normal (facing the ray); shadow rays start at Ps + eps Ng
+   (Ng the geometric normal facing the ray; Ps = P except for smooth areas) */
 static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3], const double P[3],
-                            const double N[3], const double d[3], double eps, int depth,
-                            long from, double out[3])
+                            const double N[3], const double Ps[3], const double Ng[3],
+                            const double d[3], double eps, int depth, long from, double out[3])
 {
     const rt_scene *sc = w->job->sc;
     const rt_job *job = w->job;
@@ -301,7 +303,7 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         /* shadow ray */
         double o[3];
         for (int c = 0; c < 3; c++)
-            o[c] = P[c] + eps * N[c];
+            o[c] = Ps[c] + eps * Ng[c];
         double t0 = 0.0, t1 = l->type == RT_LIGHT_DIRECTIONAL ? INFINITY : dist * (1.0 - 1e-12) - eps;
         w->st.shadow_rays++;
         double T = 0.0;
@@ -368,6 +370,70 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
     }
 }
 
+/* the margin by which adapted directions stay off the geometric plane: 1/100 of the
+   viewer's cosine (the direction mirrored in the plane itself has the full cosine) */
+static double rt_bend_margin(double cos_g)
+{
+    return 0.01 * cos_g;
+}
+
+/* refracted direction T kept below the plane of N (facing the viewer, cosine cos_g) */
+static void rt_keep_below(double T[3], const double N[3], double cos_g)
+{
+    const double lo = rt_bend_margin(cos_g), q = -dot3(T, N);
+    if (q >= lo)
+        return;
+    for (int c = 0; c < 3; c++)
+        T[c] -= (lo - q) * N[c];
+    double l = sqrt(dot3(T, T));
+    for (int c = 0; c < 3; c++)
+        T[c] /= l;
+}
+
+/* The shading normal of a smooth area's hit (docs/RAYTRACING.md, "Smooth areas"): Ns, the
+   interpolated front normal, turned with the side hit; ROBUST: adapted so that the viewer's
+   mirror direction R stays above the plane of N (the geometric normal facing the ray) by
+   rt_bend_margin: R is lifted to that elevation and Ns becomes the half vector of the viewer
+   and R (Keller et al. 2017); Ps, Hanika's shadow point, where it lies above the plane. NAIVE:
+   Ns only turned, Ps = P. */
+static void rt_smooth_normal(int mode, int side, const double P[3], const double N[3],
+                             const double d[3], double Ns[3], double Ps[3])
+{
+    if (side)
+        for (int c = 0; c < 3; c++)
+            Ns[c] = -Ns[c];
+    if (mode != RT_SMOOTH_ROBUST) {
+        memcpy(Ps, P, 3 * sizeof *Ps);
+        return;
+    }
+    double up = 0.0;
+    for (int c = 0; c < 3; c++)
+        up += (Ps[c] - P[c]) * N[c];
+    if (!(up > 0.0))
+        memcpy(Ps, P, 3 * sizeof *Ps);
+    const double cos_g = -dot3(N, d), cv = -dot3(Ns, d);
+    const double lo = rt_bend_margin(cos_g);
+    double R[3];
+    for (int c = 0; c < 3; c++)
+        R[c] = d[c] + 2.0 * cv * Ns[c];
+    const double q = dot3(R, N);
+    if (q >= lo)
+        return;
+    for (int c = 0; c < 3; c++)
+        R[c] += (lo - q) * N[c];
+    double l = sqrt(dot3(R, R));
+    double H[3];
+    for (int c = 0; c < 3; c++)
+        H[c] = R[c] / l - d[c];
+    l = sqrt(dot3(H, H));
+    if (!(l > 0.0) || !isfinite(l)) {
+        memcpy(Ns, N, 3 * sizeof *Ns);
+        return;
+    }
+    for (int c = 0; c < 3; c++)
+        Ns[c] = H[c] / l;
+}
+
 /* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
    cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
@@ -408,12 +474,21 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
         rt_cell_color(sc, &sc->cell[p->data], P, Od);
     else
         memcpy(Od, s->diffuse, sizeof Od);
+    /* smooth areas: the shading normal Ns and the shadow rays' start Ps (rt_smooth.c) */
+    double Ns[3], Ps[3], Oi[3];
+    const int sm = sc->prim_vd ? rt_smooth_at(sc, (size_t)i, P, p->ng, Ns, Ps, Oi) : 0;
+    const int smooth = (sm & 1) && job->o.smooth != RT_SMOOTH_FLAT;
+    if (sm & 2)
+        memcpy(Od, Oi, sizeof Od);
+    if (smooth)
+        rt_smooth_normal(job->o.smooth, side, P, N, d, Ns, Ps);
+    const double *Nsh = smooth ? Ns : N, *Psh = smooth ? Ps : P;
     double eps = rt_eps(sc, P, t);
     if (s->refl_eq == RT_REFL_NONE) {
         memcpy(out, Od, sizeof Od);
     } else {
         out[0] = out[1] = out[2] = 0.0;
-        rt_shade_lights(w, s, Od, P, N, d, eps, depth, i, out);
+        rt_shade_lights(w, s, Od, P, Nsh, Psh, N, d, eps, depth, i, out);
     }
     if (depth >= job->o.max_depth)
         return;
@@ -421,7 +496,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (s->refl_eq == RT_REFL_SPECULAR)
         for (int c = 0; c < 3; c++)
             wr[c] = s->ks * s->specular[c];
-    double cos_i = -dot3(N, d);
+    double cos_i = -dot3(Nsh, d);
     if (cos_i > 1.0)
         cos_i = 1.0;
     double T[3] = {0, 0, 0};
@@ -443,10 +518,12 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
                 double cos_t = sqrt(1.0 - sin2t);
                 F = rt_fresnel(job->o.fresnel, cos_i, cos_t, n1, n2);
                 for (int c = 0; c < 3; c++)
-                    T[c] = eta * d[c] + (eta * cos_i - cos_t) * N[c];
+                    T[c] = eta * d[c] + (eta * cos_i - cos_t) * Nsh[c];
                 double l = sqrt(dot3(T, T));
                 for (int c = 0; c < 3; c++)
                     T[c] /= l;
+                if (smooth && job->o.smooth == RT_SMOOTH_ROBUST)
+                    rt_keep_below(T, N, -dot3(N, d));
                 refract = 1;
             }
         }
@@ -458,7 +535,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (wrm > 0.0 && !(job->o.cutoff > 0.0 && weight * wrm < job->o.cutoff)) {
         double R[3], col[3];
         for (int c = 0; c < 3; c++)
-            R[c] = d[c] + 2.0 * cos_i * N[c];
+            R[c] = d[c] + 2.0 * cos_i * Nsh[c];
         double l = sqrt(dot3(R, R));
         for (int c = 0; c < 3; c++)
             R[c] /= l;

@@ -369,6 +369,12 @@ static void test_description_tables(void **state)
     Gtext_bundle tb;
     ginq_pred_text_rep(GWS_TYPE_PNG, 3, &e, &tb);
     assert_true(e == 0 && tb.text_font_prec.prec == GPREC_STROKE);
+    /* RAL's CONCOL draws three lines in text bundles 1, 2, 3 and expects three colours. */
+    for (Gint i = 1; i <= 5; i++) {
+        ginq_pred_text_rep(GWS_TYPE_PNG, i, &e, &tb);
+        assert_int_equal(e, 0);
+        assert_int_equal(tb.colr_ind, i);
+    }
     Gfill_bundle fb;
     ginq_pred_fill_rep(GWS_TYPE_PNG, 4, &e, &fb);
     assert_true(e == 0 && fb.int_style == GSTYLE_HATCH && fb.style_ind == -1);

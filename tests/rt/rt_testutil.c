@@ -545,16 +545,24 @@ void rtu_options_plain(rt_render_options *o)
 
 int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, int s)
 {
+    return rtu_add_sphere_data(sc, c, r, nu, nv, s, 0);
+}
+
+int rtu_add_sphere_data(rt_scene *sc, const double c[3], double r, int nu, int nv, int s,
+                        int normals)
+{
     for (int j = 0; j < nv; j++)
         for (int i = 0; i < nu; i++) {
-            double p[4][3];
+            double p[4][3], q[4][3];
             for (int k = 0; k < 4; k++) {
                 const int ii = i + (k == 1 || k == 2), jj = j + (k >= 2);
                 const double pi = 3.14159265358979323846; /* M_PI is not ISO C */
                 const double th = pi * jj / nv, ph = 2 * pi * (ii % nu) / nu;
-                p[k][0] = c[0] + r * sin(th) * cos(ph);
-                p[k][1] = c[1] + r * sin(th) * sin(ph);
-                p[k][2] = c[2] + r * cos(th);
+                q[k][0] = sin(th) * cos(ph);
+                q[k][1] = sin(th) * sin(ph);
+                q[k][2] = cos(th);
+                for (int a = 0; a < 3; a++)
+                    p[k][a] = c[a] + r * q[k][a];
             }
             for (int t = 0; t < 2; t++) { /* (0, 1, 2) and (0, 2, 3), none at a pole */
                 if ((t == 0 && j == 0) || (t == 1 && j == nv - 1))
@@ -562,7 +570,10 @@ int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, in
                 const int n = 3;
                 const double v[9] = {p[0][0], p[0][1], p[0][2], p[1 + t][0], p[1 + t][1],
                                      p[1 + t][2], p[2 + t][0], p[2 + t][1], p[2 + t][2]};
-                if (rt_scene_add_polygon(sc, 1, &n, v, s, s) < 0)
+                const double w[9] = {q[0][0], q[0][1], q[0][2], q[1 + t][0], q[1 + t][1],
+                                     q[1 + t][2], q[2 + t][0], q[2 + t][1], q[2 + t][2]};
+                const rt_vertex_data vd = {w, NULL};
+                if (rt_scene_add_polygon_data(sc, 1, &n, v, normals ? &vd : NULL, s, s) < 0)
                     return -1;
             }
         }

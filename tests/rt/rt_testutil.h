@@ -82,6 +82,9 @@ void rtu_rand_dir(uint64_t *state, double d[3]);
  * single triangles), both sides surface s: vertex (i, j) = c + r (sin th cos ph, sin th sin ph,
  * cos th), th = pi j / nv, ph = 2 pi i / nu. 0 on success. */
 int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, int s);
+/* the same, with normals != 0 the sphere's own (exact) normals at the vertices */
+int rtu_add_sphere_data(rt_scene *sc, const double c[3], double r, int nu, int nv, int s,
+                        int normals);
 
 /* A point certified inside the closed mesh m (already added to the committed scene sc):
  * found behind a face along its normal, half-way to the next surface, and accepted when 16

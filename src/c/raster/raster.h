@@ -123,6 +123,27 @@ int gks_raster_fill_area(gks_raster_fb *fb, int n_loops, const int *counts,
 int gks_raster_triangles(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
                          const float *rgb, const gks_raster_fill *fill);
 
+/* Smooth areas (interior shading methods COLOUR and NORMAL): per-vertex attributes, n
+ * floats per point (3 <= n <= GKS_RASTER_VATTR_MAX), interpolated perspective-correct (with
+ * the vertices' 1/w, w their homogeneous clip coordinate: attribute/w and 1/w are linear in
+ * the screen). A sample's colour is shade(user, attributes) when shade is set, else the first
+ * three attributes; clamped to [0,1]. */
+#define GKS_RASTER_VATTR_MAX 12
+typedef void (*gks_raster_shade_fn)(void *user, const float *attr, float rgb[3]);
+typedef struct gks_raster_vattr {
+    int n;
+    const float *v;            /* n per point */
+    const double *invw;        /* 1/w per point, > 0 */
+    gks_raster_shade_fn shade; /* NULL: attributes 0..2 are the colour */
+    void *user;
+} gks_raster_vattr;
+
+/* One CONVEX loop of n points (fan from point 0), coverage and depth as
+ * gks_raster_fill_area's triangles; fill supplies zmode and zbias and must be SOLID.
+ * E_ARG on NULL, n < 3, a bad attribute description, non-finite points or 1/w <= 0. */
+int gks_raster_fill_smooth(gks_raster_fb *fb, int n, const gks_raster_pt *pts,
+                           const gks_raster_vattr *va, const gks_raster_fill *fill);
+
 /* CELL ARRAY 3 (after projection): the parallelogram with corner o, i-direction edge
  * o->pu and j-direction edge o->pv is divided into nx x ny cells; cell (i, j) has
  * colour rgb[3*(j*nx + i)] and covers o + [i/nx,(i+1)/nx](pu-o) + [j/ny,(j+1)/ny](pv-o).

@@ -22,7 +22,7 @@
 #define RASTER_AVX2 1 /* an AVX2 variant of the depth-tested span, chosen at run time */
 #endif
 
-enum { PAINT_SOLID, PAINT_HATCH, PAINT_PATTERN, PAINT_CELL };
+enum { PAINT_SOLID, PAINT_HATCH, PAINT_PATTERN, PAINT_CELL, PAINT_SMOOTH };
 
 typedef struct paint {
     gks_raster_fb *fb;
@@ -38,6 +38,10 @@ typedef struct paint {
     const float *cells;
     int avx2;                     /* CPU has AVX2: use span_solid_z_avx2 */
     int bounded;                  /* cell: skip samples outside the parallelogram */
+    /* smooth: the current triangle's vertices (sample coordinates), 1/w and attributes */
+    double sv[3][2], sdet, sw[3];
+    const float *sa[3];
+    const gks_raster_vattr *va;
 } paint;
 
 typedef struct edge {
@@ -127,6 +131,30 @@ static int paint_colour(const paint *p, int i, int r, float c[3])
         if (!on)
             return 0;
         c[0] = p->rgb[0]; c[1] = p->rgb[1]; c[2] = p->rgb[2];
+        return 1;
+    }
+    if (p->kind == PAINT_SMOOTH) {
+        /* screen-space barycentric coordinates, then perspective-correct ones: attributes
+           over w and 1/w are linear in the screen */
+        const double x = i + 0.5, y = r + 0.5;
+        double b[3], sum = 0.0;
+        for (int k = 0; k < 3; k++) {
+            const double *u = p->sv[(k + 1) % 3], *v = p->sv[(k + 2) % 3];
+            b[k] = ((u[0] - x) * (v[1] - y) - (u[1] - y) * (v[0] - x)) / p->sdet * p->sw[k];
+            sum += b[k];
+        }
+        if (!(fabs(sum) > 0.0))
+            return 0;
+        float at[GKS_RASTER_VATTR_MAX];
+        const int n = p->va->n;
+        for (int j = 0; j < n; j++)
+            at[j] = (float)((b[0] * p->sa[0][j] + b[1] * p->sa[1][j] + b[2] * p->sa[2][j]) / sum);
+        if (p->va->shade)
+            p->va->shade(p->va->user, at, c);
+        else {
+            c[0] = at[0]; c[1] = at[1]; c[2] = at[2];
+        }
+        c[0] = clamp01(c[0]); c[1] = clamp01(c[1]); c[2] = clamp01(c[2]);
         return 1;
     }
     double x = i + 0.5 - p->ox, y = r + 0.5 - p->oy;
@@ -454,6 +482,42 @@ int gks_raster_triangles(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts,
             for (int k = 0; k < 3; k++)
                 p.rgb[k] = clamp01(rgb[3 * t + k]);
         tri_load(v, pts + 3 * t, fb->ss);
+        tri_draw(&p, v, 1);
+    }
+    return GKS_RASTER_OK;
+}
+
+int gks_raster_fill_smooth(gks_raster_fb *fb, int n, const gks_raster_pt *pts,
+                           const gks_raster_vattr *va, const gks_raster_fill *fill)
+{
+    if (!fb || !fill || !pts || !va || !va->v || !va->invw || n < 3 || va->n < 3 ||
+        va->n > GKS_RASTER_VATTR_MAX || fill->style != GKS_RASTER_SOLID)
+        return GKS_RASTER_E_ARG;
+    paint p;
+    int rc = paint_init(&p, fb, fill);
+    if (rc != GKS_RASTER_OK)
+        return rc;
+    if (!pts_finite(pts, (size_t)n))
+        return GKS_RASTER_E_ARG;
+    for (int k = 0; k < n; k++)
+        if (!isfinite(va->invw[k]) || !(va->invw[k] > 0.0))
+            return GKS_RASTER_E_ARG;
+    p.kind = PAINT_SMOOTH;
+    p.va = va;
+    const double s = fb->ss;
+    for (int t = 1; t + 1 < n; t++) { /* fan from vertex 0 (a convex loop) */
+        const int id[3] = {0, t, t + 1};
+        double v[3][3];
+        for (int k = 0; k < 3; k++) {
+            v[k][0] = p.sv[k][0] = pts[id[k]].x * s;
+            v[k][1] = p.sv[k][1] = pts[id[k]].y * s;
+            v[k][2] = pts[id[k]].z;
+            p.sw[k] = va->invw[id[k]];
+            p.sa[k] = va->v + (size_t)va->n * (size_t)id[k];
+        }
+        p.sdet = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0]);
+        if (!(fabs(p.sdet) > 0.0) || !isfinite(p.sdet))
+            continue;
         tri_draw(&p, v, 1);
     }
     return GKS_RASTER_OK;

@@ -22,12 +22,14 @@ static const Gline_bundle pred_line[] = {
 static const Gmarker_bundle pred_marker[] = {
     { 1, 1.0, 1 }, { 2, 1.0, 1 }, { 3, 1.0, 1 }, { 4, 1.0, 1 }, { 5, 1.0, 1 },
 };
+/* Text bundle i has colour index i: programs written for colour devices (RAL's CONCOL,
+ * COLREP) tell their lines of text apart by text index alone. */
 static const Gtext_bundle pred_text[] = {
     { { 1, GPREC_STRING }, 1.0, 0.0, 1 },
-    { { 1, GPREC_CHAR }, 1.0, 0.0, 1 },
-    { { 1, GPREC_STROKE }, 1.0, 0.0, 1 },
-    { { 1, GPREC_STROKE }, 0.8, 0.2, 1 },
-    { { 1, GPREC_STROKE }, 1.5, 0.0, 1 },
+    { { 1, GPREC_CHAR }, 1.0, 0.0, 2 },
+    { { 1, GPREC_STROKE }, 1.0, 0.0, 3 },
+    { { 1, GPREC_STROKE }, 0.8, 0.2, 4 },
+    { { 1, GPREC_STROKE }, 1.5, 0.0, 5 },
 };
 static const Gfill_bundle pred_fill[] = {
     { GSTYLE_HOLLOW, 1, 1 }, { GSTYLE_SOLID, 1, 1 }, { GSTYLE_PAT, 1, 1 },

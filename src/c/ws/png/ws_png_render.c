@@ -21,7 +21,9 @@
 
 enum { CHUNK = 4096 };
 enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL };
-enum { STYLE_HOLLOW = -1 };
+enum { STYLE_HOLLOW = -1, STYLE_SMOOTH = -2 }; /* SMOOTH: per-vertex attributes (fl, nx floats
+                                                  per point, the last 1/w; ny: shading context
+                                                  or -1) */
 
 /* Attributes of a record (shared by consecutive records with equal values). */
 typedef struct rattr {
@@ -94,6 +96,8 @@ struct png_render {
     gks_raster_pt *vis;    /* ws_png_render_walk: visible runs of a piece */
     size_t cap_vis;
     view_cache views[GKS_MAX_VIEW_IND + 1];
+    ws_shade_ctx *ctx;     /* shading contexts of smooth areas with normal interpolation */
+    size_t n_ctx, cap_ctx;
 };
 
 /* --- growable arrays ------------------------------------------------------------------ */
@@ -156,12 +160,13 @@ void ws_png_render_free(png_render *r)
     gks_raster_fb_free(r->composed);
     gks_raster_fb_free(r->depth);
     gks_free(r->vis);
+    gks_free(r->ctx);
     gks_free(r);
 }
 
 void ws_png_render_reset(png_render *r)
 {
-    r->n_rec = r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_retained = 0;
+    r->n_rec = r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_retained = r->n_ctx = 0;
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
         r->views[v].valid = 0;
 }
@@ -579,6 +584,115 @@ static int rec_finish(build *b, rec *rc, size_t pt0, size_t cnt0, size_t attr0, 
     return de;
 }
 
+/* 1 if the n points (DC) form a strictly convex loop (either orientation) */
+static int dc_convex(const gks_raster_pt *q, int n)
+{
+    int sg = 0;
+    for (int i = 0; i < n; i++) {
+        const gks_raster_pt *a = &q[i], *c = &q[(i + 1) % n], *d = &q[(i + 2) % n];
+        double x = (c->x - a->x) * (d->y - c->y) - (c->y - a->y) * (d->x - c->x);
+        int t = x > 0 ? 1 : x < 0 ? -1 : 0;
+        if (t == 0 || (sg && t != sg))
+            return 0;
+        sg = t;
+    }
+    return 1;
+}
+
+static int ctx_equal(const ws_shade_ctx *a, const ws_shade_ctx *b)
+{
+    return a->persp == b->persp && a->nl == b->nl && !memcmp(a->eye, b->eye, sizeof a->eye) &&
+           !memcmp(a->eq, b->eq, sizeof a->eq) && !memcmp(a->pr, b->pr, sizeof a->pr) &&
+           !memcmp(a->l, b->l, (size_t)a->nl * sizeof a->l[0]);
+}
+
+/* Normal interpolation, per sample: attributes Od, N, P (VRC3) of a smooth area. */
+static void phong_sample(void *user, const float *at, float rgb[3])
+{
+    double od[3] = { at[0], at[1], at[2] }, N[3] = { at[3], at[4], at[5] },
+           P[3] = { at[6], at[7], at[8] };
+    double l = sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+    if (!(l > 0) || !isfinite(l)) {
+        rgb[0] = (float)od[0], rgb[1] = (float)od[1], rgb[2] = (float)od[2];
+        return;
+    }
+    for (int k = 0; k < 3; k++)
+        N[k] /= l;
+    ws_shade_point(user, P, N, od, rgb);
+}
+
+/* An area with vertex data and interior shading method COLOUR or NORMAL (on either side),
+ * solid, of one convex loop inside the clip region: its per-vertex attributes into the float
+ * list and a->style = STYLE_SMOOTH. COLOUR (or no vertex normals): the colours shaded at the
+ * vertices (with their normals, else the facet's), interpolated; NORMAL with normals: Od, N
+ * and P interpolated and shaded per sample. 0: set up, 1: drawn flat instead, 300. */
+static int smooth_setup(build *b, const gks_prim *prim, rattr *a)
+{
+    png_render *r = b->r;
+    const int meth = prim->shading[0] > prim->shading[1] ? prim->shading[0] : prim->shading[1];
+    const int n = prim->n_points;
+    if (meth <= GSHAD_NONE || (!prim->vnormals && !prim->vcolours) || prim->n_loops != 1 ||
+        n < 3 || prim->loop_counts[0] != n || a->style != GKS_RASTER_SOLID ||
+        b->ws->hlhsr_mode == GHLHSR_HIDDEN_LINE)
+        return 1;
+    if (GROW(r, h, cap_h, (size_t)n) || GROW(r, pts, cap_pt, r->n_pt + (size_t)n))
+        return 300;
+    for (int i = 0; i < n; i++)
+        to_h(b->v, &prim->pts[i], r->h[i]);
+    if (!all_inside(&b->v->clip, r->h, (size_t)n))
+        return 1;
+    gks_raster_pt *q = r->pts + r->n_pt; /* scratch: add_loops writes the same points */
+    for (int i = 0; i < n; i++)
+        if (!to_dc(b->v, r->h[i], &q[i]) || !(fabs(r->h[i][3]) > 0))
+            return 1;
+    if (!dc_convex(q, n))
+        return 1;
+    const int phong = meth == GSHAD_NORM && prim->vnormals;
+    const int nat = phong ? 9 : 3, per = nat + 1;
+    ws_shade_ctx ctx;
+    const int lit = !ws_shade_ctx_init(b->ws, prim, &ctx);
+    ws_shade flat;
+    ws_shade_area(b->ws, prim, &flat);
+    if (GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)n))
+        return 300;
+    float *f = r->fl + r->n_fl;
+    for (int i = 0; i < n; i++, f += per) {
+        const Grgb *c = prim->vcolours ? &prim->vcolours[i] : &prim->colour;
+        double od[3] = { c->red, c->green, c->blue }, P[3], N[3];
+        ws_shade_vrc_point(b->ws, prim, &prim->pts[i], P);
+        const int hasn = prim->vnormals && ws_shade_vrc_normal(b->ws, prim, &prim->vnormals[i], N);
+        if (phong) {
+            for (int k = 0; k < 3; k++) {
+                f[k] = (float)od[k];
+                f[3 + k] = hasn ? (float)N[k] : 0.0f;
+                f[6 + k] = (float)P[k];
+            }
+        } else if (hasn && lit) {
+            ws_shade_point(&ctx, P, N, od, f);
+        } else {
+            Grgb g = ws_shade_apply(&flat, c);
+            f[0] = (float)g.red, f[1] = (float)g.green, f[2] = (float)g.blue;
+        }
+        f[nat] = (float)(1.0 / fabs(r->h[i][3]));
+    }
+    a->style = STYLE_SMOOTH;
+    a->fl = r->n_fl;
+    a->nx = per;
+    a->ny = -1;
+    r->n_fl += (size_t)per * (size_t)n;
+    if (phong && lit) {
+        if (!r->n_ctx || !ctx_equal(&r->ctx[r->n_ctx - 1], &ctx)) {
+            if (GROW(r, ctx, cap_ctx, r->n_ctx + 1))
+                return 300;
+            r->ctx[r->n_ctx++] = ctx;
+        }
+        a->ny = (int)(r->n_ctx - 1);
+    } else if (phong) { /* no usable eye: the vertex colours interpolated */
+        a->ny = -1;
+    }
+    return 0;
+}
+
 static int build_area(build *b, const gks_prim *prim, int retain)
 {
     png_render *r = b->r;
@@ -611,6 +725,11 @@ static int build_area(build *b, const gks_prim *prim, int retain)
         a.edge_rgb[0] = (float)pa->edge_colour.red;
         a.edge_rgb[1] = (float)pa->edge_colour.green;
         a.edge_rgb[2] = (float)pa->edge_colour.blue;
+    }
+    if (prim->vnormals || prim->vcolours) {
+        int se = smooth_setup(b, prim, &a);
+        if (se == 300)
+            return 300;
     }
     int e = attr_push(r, &a, &rc.attr);
     if (!e && prim->n_points >= 3)
@@ -868,9 +987,35 @@ static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
     for (int k = 0; k < rc->n_fill; k++)
         n_fill_pts += (size_t)cnt[k];
     int outline = how == DRAW_HL_LINES, e = 0;
-    if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS)) {
-        gks_raster_fill f = { .style = a->style == STYLE_HOLLOW ? GKS_RASTER_SOLID
-                                                                : (gks_raster_style)a->style,
+    if (rc->n_fill == 1 && !outline && a->style == STYLE_SMOOTH && how != DRAW_HL_AREAS &&
+        cnt[0] >= 3) {
+        const int per = a->nx, nat = per - 1;
+        double iw[64], *invw = cnt[0] <= 64 ? iw : gks_alloc_array((size_t)cnt[0], sizeof *invw);
+        float *at = gks_alloc_array((size_t)cnt[0] * (size_t)nat, sizeof *at);
+        if (!invw || !at) {
+            if (invw != iw)
+                gks_free(invw);
+            gks_free(at);
+            return 300;
+        }
+        const float *src = r->fl + a->fl;
+        for (int i = 0; i < cnt[0]; i++) {
+            memcpy(at + (size_t)i * (size_t)nat, src + (size_t)i * (size_t)per,
+                   (size_t)nat * sizeof *at);
+            invw[i] = src[(size_t)i * (size_t)per + (size_t)nat];
+        }
+        gks_raster_vattr va = { .n = nat, .v = at, .invw = invw,
+                                .shade = a->ny >= 0 ? phong_sample : NULL,
+                                .user = a->ny >= 0 ? &r->ctx[a->ny] : NULL };
+        gks_raster_fill f = { .style = GKS_RASTER_SOLID, .zmode = zm };
+        e = nomem(e, gks_raster_fill_smooth(fb, cnt[0], pts, &va, &f));
+        if (invw != iw)
+            gks_free(invw);
+        gks_free(at);
+    } else if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS)) {
+        gks_raster_fill f = { .style = a->style == STYLE_HOLLOW || a->style == STYLE_SMOOTH
+                                           ? GKS_RASTER_SOLID
+                                           : (gks_raster_style)a->style,
                               .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] },
                               .hatch = a->hatch, .zmode = zm };
         if (how == DRAW_HL_AREAS)

@@ -208,10 +208,29 @@ static int view_surfaces(ws_rt *r, int vi, const rt_attr *a, rt_view_rec **vrp)
     return 0;
 }
 
+/* The matrix that carries normals through the linear part A of m: the cofactor matrix of A
+ * (det(A) A^-T), with the sign of det(A) so that it keeps their sense; normals are
+ * renormalised after it. */
+static void normal_matrix(const Gmatrix3 m, double c[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            c[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+        }
+    const double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2];
+    if (det < 0)
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                c[i][j] = -c[i][j];
+}
+
 /* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
- * overwritten with their VRC3 images) in view vi. */
+ * overwritten with their VRC3 images) in view vi; vn (NDC3 unit normals) and vc (colours),
+ * 3 doubles per point each, or NULL; vn is overwritten with the VRC3 normals. */
 static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, int n_loops,
-                        const int *counts, size_t n_pts, double *xyz)
+                        const int *counts, size_t n_pts, double *xyz, double *vn,
+                        const double *vc)
 {
     rt_view_rec *vr;
     int e = view_surfaces(r, vi, a, &vr);
@@ -222,7 +241,20 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
         double *q = xyz + 3 * i;
         xf_point(v->ori_matrix, q[0], q[1], q[2], q);
     }
-    int id = rt_scene_add_polygon(vr->sc, n_loops, counts, xyz, vr->f, vr->b);
+    if (vn) {
+        double c[3][3];
+        normal_matrix(v->ori_matrix, c);
+        for (size_t i = 0; i < n_pts; i++) {
+            double *q = vn + 3 * i, o[3];
+            for (int k = 0; k < 3; k++)
+                o[k] = c[k][0] * q[0] + c[k][1] * q[1] + c[k][2] * q[2];
+            const double l = sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+            for (int k = 0; k < 3; k++) /* a degenerate normal adds nothing (rt_vertex_data) */
+                q[k] = l > 0 && isfinite(l) ? o[k] / l : 0.0;
+        }
+    }
+    const rt_vertex_data vd = { vn, vc };
+    int id = rt_scene_add_polygon_data(vr->sc, n_loops, counts, xyz, &vd, vr->f, vr->b);
     if (id < 0)
         return gks_err_of_rt(id);
     r->count++;
@@ -279,14 +311,21 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     }
     if (total != (size_t)prim->n_points)
         return 0; /* inconsistent record: nothing traceable */
-    double sxyz[3 * STACK_POINTS];
+    /* Interior shading method COLOUR or NORMAL on either side: the vertex colours and
+     * normals are interpolated and shaded per ray (the tracer's equivalent of both methods;
+     * docs/RAYTRACING.md); NONE: the facet's colour and plane. */
+    const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
+    const int has_n = smooth && prim->vnormals, has_c = smooth && prim->vcolours;
+    double sxyz[3 * STACK_POINTS], sn[3 * STACK_POINTS], sc[3 * STACK_POINTS];
     int scounts[4];
     int *counts = (size_t)prim->n_loops <= sizeof scounts / sizeof scounts[0]
                       ? scounts
                       : gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
     double *xyz = total <= STACK_POINTS ? sxyz : gks_alloc_array(total, 3 * sizeof *xyz);
+    double *vn = !has_n ? NULL : total <= STACK_POINTS ? sn : gks_alloc_array(total, 3 * sizeof *vn);
+    double *vc = !has_c ? NULL : total <= STACK_POINTS ? sc : gks_alloc_array(total, 3 * sizeof *vc);
     int err = 300;
-    if (!counts || !xyz)
+    if (!counts || !xyz || (has_n && !vn) || (has_c && !vc))
         goto done;
     /* Loops of fewer than 3 points enclose nothing (even-odd rule): left out. */
     int nl = 0;
@@ -300,18 +339,35 @@ static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
                 xyz[3 * np] = p->x;
                 xyz[3 * np + 1] = p->y;
                 xyz[3 * np + 2] = p->z;
+                if (vn) {
+                    const Gvec3 *q = &prim->vnormals[src + i];
+                    vn[3 * np] = q->delta_x;
+                    vn[3 * np + 1] = q->delta_y;
+                    vn[3 * np + 2] = q->delta_z;
+                }
+                if (vc) {
+                    const Grgb *q = &prim->vcolours[src + i];
+                    vc[3 * np] = q->red;
+                    vc[3 * np + 1] = q->green;
+                    vc[3 * np + 2] = q->blue;
+                }
                 np++;
             }
         }
         src += m;
     }
     rt_attr a = attr_of(prim);
-    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz) : 0;
+    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz, vn, vc)
+             : 0;
 done:
     if (counts != scounts)
         gks_free(counts);
     if (xyz != sxyz)
         gks_free(xyz);
+    if (vn != sn)
+        gks_free(vn);
+    if (vc != sc)
+        gks_free(vc);
     return err;
 }
 
@@ -401,7 +457,7 @@ static int record_cells_clipped(ws_rt *r, const gks_ws *ws, const gks_prim *prim
                 continue;
             rt_attr a = base;
             a.colour = prim->cells[(size_t)j * (size_t)nx + (size_t)i];
-            int e = push_polygon(r, ws, &a, vi, 1, &n, (size_t)n, &poly[0][0]);
+            int e = push_polygon(r, ws, &a, vi, 1, &n, (size_t)n, &poly[0][0], NULL, NULL);
             if (e)
                 return e;
         }
@@ -509,6 +565,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
     rt_build_options bo;
     memset(&bo, 0, sizeof bo);
     bo.brute_threshold = -1; /* defaults */
+    bo.threads = r->opts.threads; /* the build on the frame's threads (GESC_RT_THREADS) */
     if (cull) {
         bo.ncull = 6;
         memcpy(bo.cull, cull->plane, sizeof bo.cull);

@@ -100,7 +100,7 @@ static int facet_normal(const double (*v)[3], size_t nv, const int *counts, int 
 }
 
 /* A light of the table in VRC3, validated as gksrt does; 0 if the tracer would reject it. */
-typedef struct { int type; double col[3], pos[3], dir[3], c1, c2, conc, spread; } vlight;
+typedef ws_vlight vlight;
 
 static int light_vrc(const Glight_src_rep *g, const Gmatrix3 ori, vlight *l)
 {
@@ -296,4 +296,79 @@ Grgb ws_shade_apply(const ws_shade *sh, const Grgb *od)
     return (Grgb){ clamp01(sh->mul[0] * od->red + sh->add[0]),
                    clamp01(sh->mul[1] * od->green + sh->add[1]),
                    clamp01(sh->mul[2] * od->blue + sh->add[2]) };
+}
+
+static const Gview_rep3 *view_of(const gks_ws *ws, const gks_prim *prim)
+{
+    int vi = prim->view_ind >= 0 && prim->view_ind <= GKS_MAX_VIEW_IND ? prim->view_ind : 0;
+    return &ws->views[vi];
+}
+
+void ws_shade_vrc_point(const gks_ws *ws, const gks_prim *prim, const Gpoint3 *p, double o[3])
+{
+    xf_point(view_of(ws, prim)->ori_matrix, p->x, p->y, p->z, o);
+}
+
+int ws_shade_vrc_normal(const gks_ws *ws, const gks_prim *prim, const Gvec3 *n, double o[3])
+{
+    const Gmatrix3 *m = &view_of(ws, prim)->ori_matrix;
+    double c[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            c[i][j] = (*m)[i1][j1] * (*m)[i2][j2] - (*m)[i1][j2] * (*m)[i2][j1];
+        }
+    const double det = (*m)[0][0] * c[0][0] + (*m)[0][1] * c[0][1] + (*m)[0][2] * c[0][2];
+    const double sg = det < 0 ? -1 : 1;
+    for (int k = 0; k < 3; k++)
+        o[k] = sg * (c[k][0] * n->delta_x + c[k][1] * n->delta_y + c[k][2] * n->delta_z);
+    return finite3(o) && unit3(o);
+}
+
+int ws_shade_ctx_init(const gks_ws *ws, const gks_prim *prim, ws_shade_ctx *c)
+{
+    memset(c, 0, sizeof *c);
+    const Gview_rep3 *view = view_of(ws, prim);
+    if (gks_xform_view_camera(view->map_matrix, c->eye, &c->persp))
+        return 1;
+    if (!c->persp && !unit3(c->eye))
+        return 1;
+    for (int s = 0; s < 2; s++) {
+        c->eq[s] = prim->refl_eq[s];
+        c->pr[s] = prim->area_props[s];
+    }
+    for (int i = 0; i < GKS_MAX_LIGHT_IND; i++) {
+        if (!((prim->light_mask >> i) & 1) || !ws->light_defined[i])
+            continue;
+        if (light_vrc(&ws->lights[i], view->ori_matrix, &c->l[c->nl]))
+            c->nl++;
+    }
+    return 0;
+}
+
+void ws_shade_point(const ws_shade_ctx *c, const double P[3], const double N[3],
+                    const double od[3], float out[3])
+{
+    double E[3], n[3] = { N[0], N[1], N[2] };
+    for (int k = 0; k < 3; k++)
+        E[k] = c->persp ? c->eye[k] - P[k] : c->eye[k];
+    int side = 0;
+    if (unit3(E) && dot3(n, E) < 0) {
+        side = 1;
+        for (int k = 0; k < 3; k++)
+            n[k] = -n[k];
+    }
+    const int eq = c->eq[side];
+    if (eq <= GREFL_NONE || eq > GREFL_AMB_DIFF_SPEC) {
+        for (int k = 0; k < 3; k++)
+            out[k] = (float)clamp01(od[k]);
+        return;
+    }
+    ws_shade sh;
+    for (int k = 0; k < 3; k++)
+        sh.mul[k] = sh.add[k] = 0;
+    for (int i = 0; i < c->nl; i++)
+        add_light(&sh, &c->l[i], eq, &c->pr[side], P, n, E);
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)clamp01(sh.mul[k] * od[k] + sh.add[k]);
 }

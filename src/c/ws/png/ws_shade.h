@@ -31,4 +31,27 @@ int ws_shade_area(const gks_ws *ws, const gks_prim *prim, ws_shade *sh);
 
 /* The shaded colour of diffuse colour od: clamp(mul*od + add) into [0,1] (NaN -> 0). */
 Grgb ws_shade_apply(const ws_shade *sh, const Grgb *od);
+
+/* Shading at points of a smooth area (interior shading methods COLOUR and NORMAL): the same
+ * equations at point P with normal N, both in VRC3 of the area's view. */
+typedef struct { int type; double col[3], pos[3], dir[3], c1, c2, conc, spread; } ws_vlight;
+typedef struct ws_shade_ctx {
+    int persp;
+    double eye[3];           /* VRC3 eye point (persp) or unit direction towards the eye */
+    int eq[2];
+    Garea_props pr[2];
+    int nl;
+    ws_vlight l[GKS_MAX_LIGHT_IND];
+} ws_shade_ctx;
+
+/* The context of prim on ws; 1 if its view has no usable eye (then flat colours). */
+int ws_shade_ctx_init(const gks_ws *ws, const gks_prim *prim, ws_shade_ctx *c);
+/* The colour at P with unit front normal N (turned to the eye's side, which selects the
+ * front or back properties) of diffuse colour od, clamped to [0,1]. */
+void ws_shade_point(const ws_shade_ctx *c, const double P[3], const double N[3],
+                    const double od[3], float out[3]);
+/* The view orientation of prim's view: NDC3 point -> VRC3, and NDC3 normal -> VRC3 (by the
+ * cofactor matrix, renormalised; 0 for a degenerate normal). */
+void ws_shade_vrc_point(const gks_ws *ws, const gks_prim *prim, const Gpoint3 *p, double o[3]);
+int ws_shade_vrc_normal(const gks_ws *ws, const gks_prim *prim, const Gvec3 *n, double o[3]);
 #endif
