@@ -21,6 +21,7 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_export.h"
+#include "gks_gdp.h"
 #include "gks_mf_record.h"
 #include "gks_output_int.h"
 #include "gks_seg_store.h"
@@ -321,19 +322,23 @@ static void prim_common(gks_prim *p, const gks_cur_attrs *a)
     p->shading[1] = a->int_shad[1];
 }
 
-/* Test hook (exported for the tests only): every primitive a driver receives is first
- * passed to hook (NULL = none). */
+#ifdef GKS_FAULT_INJECTION
+/* Test hook, only in the test build of the modules (gks3d_test): every primitive a
+ * driver receives is first passed to hook (NULL = none). */
 GKS_TEST_API void gks_test_set_prim_hook(gks_prim_hook hook, void *ctx)
 {
     gks_ctx()->prim_hook = hook;
     gks_ctx()->prim_hook_ctx = ctx;
 }
+#endif
 
 static int send(gks_ws *ws, const gks_prim *p)
 {
+#ifdef GKS_FAULT_INJECTION
     gks_context *c = gks_ctx();
     if (c->prim_hook)
         c->prim_hook(c->prim_hook_ctx, ws->id, p);
+#endif
     if (!ws->drv->primitive)
         return 0;
     int err = ws->drv->primitive(ws, p);
@@ -1085,29 +1090,31 @@ int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
     return err;
 }
 
-/* ------------------------------------------------------------------ GDP */
-/* No GDP exists in this implementation: after the state and point checks every
- * identifier is invalid (102). */
-static void gdp_any(int fctid, int n, const void *pts, Gint gdp_id)
+/* ------------------------------------------------------------------ GDP (gks_gdp.c) */
+/* A GDP's tessellation, in WC3, through the POLYLINE and FILL AREA paths (segments and
+ * the metafile record what is drawn). The caller did the state and argument checks. */
+void gks_output_polyline_d3(int fctid, size_t n, const double (*p)[3])
 {
-    (void)gdp_id;
-    if (gks_check_state(fctid))
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        GKS_FAIL(308, fctid);
+    pt_src s = { NULL, NULL, p };
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
+    if (!mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = n, .d3 = p }))
         return;
-    if (n < 0 || (n > 0 && !pts))
-        GKS_FAIL(100, fctid);
-    GKS_FAIL(102, fctid);
+    int err = record(&nc, &sp, &s, n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polyline(&nc, &s, n, &t);
+    if (err)
+        GKS_FAIL(err, fctid);
 }
 
-GKS_API void ggdp(const Gpoint_list *l, Gint gdp_id, const Ggdp_data *data)
+void gks_output_area_d3(int fctid, size_t n, const double (*p)[3])
 {
-    (void)data;
-    gdp_any(GFN_GDP, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
-}
-
-GKS_API void ggdp3(const Gpoint_list3 *l, Gint gdp_id, const Ggdp_data *data)
-{
-    (void)data;
-    gdp_any(GFN_GDP3, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+    pt_src s = { NULL, NULL, p };
+    output_area(fctid, 1, &n, &s, 0);
 }
 
 /* ------------------------------------------------------------------ colour table */
