@@ -343,17 +343,16 @@ static void hatch(cairo_t *cr, const ws_render_item *it)
     cairo_restore(cr);
 }
 
+/* The markers of an item as path (type 1, the dot: filled discs; the others: strokes). */
 static void markers(cairo_t *cr, const ws_render_item *it)
 {
     const gks_raster_pt *p = it->pts;
     double r = 0.5 * it->marker_size, d = r * sqrt(0.5);
-    set_line(cr, it, 1, it->width);
     for (int k = 0; k < it->n_loops; k++)
         for (int i = 0; i < it->counts[k]; i++, p++) {
             if (it->marker_type == 1) { /* the smallest dot: one nominal unit */
                 cairo_new_sub_path(cr);
                 cairo_arc(cr, p->x, p->y, 0.5 * it->unit, 0, 2 * VEC_PI);
-                cairo_fill(cr);
                 continue;
             }
             if (it->marker_type == 4) {
@@ -374,15 +373,74 @@ static void markers(cairo_t *cr, const ws_render_item *it)
                 cairo_line_to(cr, p->x + d, p->y - d);
             }
         }
-    cairo_stroke(cr);
+}
+
+/* The drawing of a page. Consecutive line items, and consecutive marker items, with equal
+ * attributes are drawn as one path with one stroke (dots: one fill): text arrives as one
+ * item per stroke of the font and hidden-line output as one item per visible run, and an
+ * operation per item costs cairo a graphics state and the file an operator each (SVG a
+ * <path> element with its whole style), which made 10^5-primitive plots slow
+ * (docs/bench/vector.md). The colours are opaque, so one operation on the union paints
+ * what the operations one after another paint; the dash pattern restarts at every
+ * subpath, as it did at every item. Areas are not merged: their even-odd interiors would
+ * cancel where two overlap. */
+typedef struct vec_draw {
+    cairo_t *cr;
+    int open;              /* a path is pending for the attributes below */
+    ws_item_kind kind;     /* WS_ITEM_LINE or WS_ITEM_MARKERS */
+    float rgb[3];
+    int linetype, marker_type;
+    double width, unit;
+} vec_draw;
+
+static void vec_flush(vec_draw *d)
+{
+    if (!d->open)
+        return;
+    if (d->kind == WS_ITEM_MARKERS && d->marker_type == 1) {
+        cairo_set_fill_rule(d->cr, CAIRO_FILL_RULE_WINDING); /* discs may overlap */
+        cairo_fill(d->cr);
+    } else {
+        cairo_stroke(d->cr);
+    }
+    d->open = 0;
+}
+
+/* Starts the pending path for it, unless the open one has its attributes. */
+static void vec_group(vec_draw *d, const ws_render_item *it, int linetype, int marker_type)
+{
+    if (d->open && d->kind == it->kind && d->linetype == linetype &&
+        d->marker_type == marker_type && d->width == it->width && d->unit == it->unit &&
+        memcmp(d->rgb, it->rgb, sizeof d->rgb) == 0)
+        return;
+    vec_flush(d);
+    cairo_set_source_rgb(d->cr, it->rgb[0], it->rgb[1], it->rgb[2]);
+    set_line(d->cr, it, linetype, it->width);
+    d->open = 1;
+    d->kind = it->kind;
+    memcpy(d->rgb, it->rgb, sizeof d->rgb);
+    d->linetype = linetype;
+    d->marker_type = marker_type;
+    d->width = it->width;
+    d->unit = it->unit;
 }
 
 static int vec_item(void *ctx, const ws_render_item *it)
 {
-    cairo_t *cr = ctx;
-    cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
+    vec_draw *d = ctx;
+    cairo_t *cr = d->cr;
     switch (it->kind) {
+    case WS_ITEM_LINE:
+        vec_group(d, it, it->linetype, 0);
+        path_loops(cr, it, 0);
+        break;
+    case WS_ITEM_MARKERS:
+        vec_group(d, it, 1, it->marker_type);
+        markers(cr, it);
+        break;
     case WS_ITEM_AREA:
+        vec_flush(d);
+        cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
         path_loops(cr, it, 1);
         if (it->style == GKS_RASTER_HATCH) {
@@ -396,15 +454,9 @@ static int vec_item(void *ctx, const ws_render_item *it)
             cairo_fill(cr);
         }
         break;
-    case WS_ITEM_LINE:
-        set_line(cr, it, it->linetype, it->width);
-        path_loops(cr, it, 0);
-        cairo_stroke(cr);
-        break;
-    case WS_ITEM_MARKERS:
-        markers(cr, it);
-        break;
     case WS_ITEM_CELLS: {
+        vec_flush(d);
+        cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
         path_loops(cr, it, 1);
         const gks_raster_pt *o = &it->cell_o, *u = &it->cell_u, *w = &it->cell_v;
@@ -522,9 +574,12 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
         cairo_fill(cr);
         cairo_pattern_destroy(pat);
     }
-    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, cr);
+    vec_draw d = { .cr = cr };
+    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
+    vec_flush(&d);
     if (!e)
-        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, cr); /* overlays */
+        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
+    vec_flush(&d);
     if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         e = 300;
     return e;
