@@ -120,6 +120,11 @@ RT_API rt_scene *rt_scene_new(void);
 /* Frees a scene (NULL allowed). */
 RT_API void rt_scene_free(rt_scene *sc);
 
+/* Coordinate range: a primitive with a vertex coordinate of magnitude above RT_COORD_MAX is
+ * dropped at commit (products of such coordinates would overflow in the intersection
+ * tests). The GKS workstation clips larger polygons before they get here. */
+#define RT_COORD_MAX 1e100
+
 /* GKS FILL AREA (nloops = 1) / FILL AREA SET (nloops > 1) in VRC3: loop k has loop_counts[k]
  * vertices, xyz holds all vertices of all loops consecutively (x,y,z each). Interior by the
  * even-odd rule over all loops; concave, self-intersecting, repeated or collinear vertices and
@@ -340,6 +345,13 @@ typedef struct rt_tile_hook {
  * count in the frame's stats). Only from inside the hook's callbacks. RT_ERR_ARG for a bad
  * tile, size or payload. */
 RT_API int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes);
+/* A tile's colours for a preview while the frame forms (e.g. from rt_tile_hook.done): its
+ * rectangle of the ray grid, rect = x0, x1, y0, y1 (rows from the top; in corner-ray mode
+ * the (w+1) x (h+1) corner rays), and 3 floats per ray, row-major, into rgb (room for
+ * 16 x 16 rays): the values before corner averaging and coverage. RT_ERR_ARG for a bad tile
+ * or size. */
+RT_API int rt_frame_tile_rgb(const rt_frame *f, int tile, const void *payload, size_t bytes,
+                             int rect[4], float *rgb);
 
 typedef struct rt_render_options {
     int samples;            /* per pixel: 1, 4, 9, 16, ... (perfect square, stratified) */
