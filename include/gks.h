@@ -413,8 +413,17 @@ GKS_API void gfill_area_set3(const Gpoint_list_list3 *point_list_list);
  * P, Q, R. Errors: 5, 91 (a dimension < 1 or no array). */
 GKS_API void gcell_array(const Grect *rect, const Gpat_rep *colr_array);
 GKS_API void gcell_array3(const Gparal *paral, const Gpat_rep *colr_array);
-/* GENERALIZED DRAWING PRIMITIVE (3): this implementation has no GDP.
- * Errors: 5, 100 (negative count or no points), 102 (every identifier). */
+/* GENERALIZED DRAWING PRIMITIVE (3): RAL GKS's GDPs (points on the curve) and an ellipse;
+ * every output workstation type lists them (docs/BINDING.md, "GDPs"). The data record is
+ * not used (may be NULL). Errors: 5, 100 (negative count, no points, or a count the GDP
+ * does not take), 102 (not a GDP of this implementation). */
+enum {
+    GGDP_ARC = -1,    /* P1, P2, P3 on a circle: the arc P1 -> P2 -> P3 (polyline) */
+    GGDP_CHORD = -2,  /* that arc closed by the chord P3 P1 (fill area) */
+    GGDP_PIE = -3,    /* the sector: centre, P1 ... P3 (fill area) */
+    GGDP_CIRCLE = -4, /* 3 points on the circle, or centre and one point (fill area) */
+    GGDP_ELLIPSE = -5 /* centre, ends of two conjugate semi-diameters (fill area) */
+};
 GKS_API void ggdp(const Gpoint_list *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
 GKS_API void ggdp3(const Gpoint_list3 *point_list, Gint gdp_id, const Ggdp_data *gdp_data);
 

@@ -275,7 +275,8 @@ FAPI void FNAME(gca3, GCA3)(const freal *px, const freal *py, const freal *pz, c
 }
 
 /* GGDP(N, PX, PY, PRIMID, LDR, DATREC) / GGDP3(N, PX, PY, PZ, PRIMID, LDR, DATREC):
- * no GDP exists here, so the data record is not decoded (the core reports 102). */
+ * the GDPs of this implementation (GARC ... GELLIP in GKS3D_PAR) take no data, so the
+ * data record is not decoded. */
 FAPI void FNAME(ggdp, GGDP)(const fint *n, const freal *px, const freal *py, const fint *primid,
                             const fint *ldr, const char *datrec, size_t len)
 {
@@ -1006,32 +1007,31 @@ FAPI void FNAME(gqlwk, GQLWK)(const fint *wtype, fint *errind, fint *mpl, fint *
     *mcoli = t.colr_reps;
 }
 
-/* GQEGDP(WTYPE, N, ERRIND, NGDP, GDPL): this implementation has no GDP (NGDP = 0). */
+/* GQEGDP(WTYPE, N, ERRIND, NGDP, GDPL): the N-th available GDP (N = 0: count only). */
 FAPI void FNAME(gqegdp, GQEGDP)(const fint *wtype, const fint *n, fint *errind, fint *ngdp,
                                 fint *gdpl)
 {
-    Gint len = 0;
-    Gint_list l = { 0, NULL };
-    ginq_list_avail_gdps(*wtype, 0, 0, errind, &l, &len);
-    if (*errind)
-        return;
-    *ngdp = len;
-    if (*n < 0 || *n > len)
-        *errind = 2002;
-    (void)gdpl;
+    Gint v = 0, len = 0;
+    Gint_list l = { 0, &v };
+    ginq_list_avail_gdps(*wtype, *n > 0 ? 1 : 0, *n > 0 ? *n - 1 : (*n == 0 ? 0 : -1),
+                         errind, &l, &len);
+    if (*errind == 0 || *errind == 2002)
+        *ngdp = len;
+    if (*errind == 0 && *n > 0)
+        *gdpl = v;
 }
 
-/* GQGDP(WTYPE, GDP, ERRIND, NBND, BNDL): every GDP identifier gives ERRIND 41 (after the
- * workstation type checks of INQUIRE LIST OF AVAILABLE GDPs). */
+/* GQGDP(WTYPE, GDP, ERRIND, NBND, BNDL(4)): the bundles a GDP uses (GPLATT = 0 ...
+ * GFAATT = 3); ERRIND 41 for a GDP the type cannot generate. */
 FAPI void FNAME(gqgdp, GQGDP)(const fint *wtype, const fint *gdp, fint *errind, fint *nbnd,
                               fint *bndl)
 {
-    Gint len = 0;
-    Gint_list l = { 0, NULL };
-    (void)gdp; (void)bndl;
-    ginq_list_avail_gdps(*wtype, 0, 0, errind, &l, &len);
+    Gint n = 0;
+    Gattrs a[4];
+    ginq_gdp(*wtype, *gdp, errind, &n, a);
     if (*errind)
         return;
-    *nbnd = 0;
-    *errind = 41;
+    *nbnd = n;
+    for (Gint i = 0; i < n; i++)
+        bndl[i] = (fint)a[i];
 }

@@ -184,6 +184,8 @@ typedef struct rt_build_options {
                              camera's clipping planes when secondary rays are clipped */
     double cull[6][4];
     double cull_eps;
+    int threads;          /* threads of the commit and grid build: 0 = online CPUs; the
+                             committed scene is identical for any count */
 } rt_build_options;
 
 /* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default

@@ -158,21 +158,37 @@ typedef struct rt_pair {
     uint32_t cell, prim;
 } rt_pair;
 
+/* one thread's build scratch: its (cell, primitive) pairs in primitive order, and with cnt
+   (parallel top level) the number of its pairs per cell */
 typedef struct rt_build {
     rt_pair *pairs;
     size_t npairs, cap;
     rt_clipbuf cb;
     double *pts;
     size_t cappts;
+    uint32_t *cnt;
 } rt_build;
+
+static void rt_build_free(rt_build *b)
+{
+    free(b->cb.a);
+    free(b->cb.b);
+    free(b->pts);
+    free(b->pairs);
+    free(b->cnt);
+    memset(b, 0, sizeof *b);
+}
 
 static int rt_build_push(rt_build *b, size_t cell, size_t prim)
 {
-    if (!rt_grow((void **)&b->pairs, &b->cap, b->npairs + 1, sizeof *b->pairs))
+    if (b->npairs == b->cap &&
+        !rt_grow((void **)&b->pairs, &b->cap, b->npairs + 1, sizeof *b->pairs))
         return 0;
     b->pairs[b->npairs].cell = (uint32_t)cell;
     b->pairs[b->npairs].prim = (uint32_t)prim;
     b->npairs++;
+    if (b->cnt)
+        b->cnt[cell]++;
     return 1;
 }
 
@@ -219,6 +235,10 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
    rt_prim_vertex's, into the build's scratch */
 static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
 {
+    if (p->kind == RT_KIND_TRI && b->cappts >= 9) { /* the common case, without calls */
+        memcpy(b->pts, sc->tri[p->data].v, 9 * sizeof(double));
+        return 3;
+    }
     const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);
     if (!rt_grow((void **)&b->pts, &b->cappts, 3 * nv, sizeof(double))) {
         *err = 1;
@@ -229,8 +249,15 @@ static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, 
     return nv;
 }
 
-static void rt_pts_bbox(const double *pts, size_t npts, double bb[6])
+static inline void rt_pts_bbox(const double *pts, size_t npts, double bb[6])
 {
+    if (npts == 3) { /* triangles: the loop below unrolled (same values) */
+        for (int i = 0; i < 3; i++) {
+            bb[i] = rt_dmin(rt_dmin(pts[i], pts[3 + i]), pts[6 + i]);
+            bb[3 + i] = rt_dmax(rt_dmax(pts[i], pts[3 + i]), pts[6 + i]);
+        }
+        return;
+    }
     for (int i = 0; i < 3; i++) {
         bb[i] = INFINITY;
         bb[3 + i] = -INFINITY;
@@ -354,6 +381,91 @@ static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], dou
     }
 }
 
+/* Triangle t (edges e, normal n as rt_tri_box takes them) against the cells c0 .. c1 of g
+ * (at most RT_SPAN per axis), pushing (base + cell, prim) for each cell it overlaps: the same
+ * decisions as rt_tri_box cell by cell, bit for bit, with every product that depends on one
+ * axis's cell only (vertex offsets from the cell centre, their products with the edge and
+ * normal components, the radii's terms) computed once per axis and cell row; a cell then
+ * costs the subtractions, additions and comparisons of the test. 0: no memory. */
+enum { RT_SPAN = 32 };
+
+typedef struct rt_axis_cell {
+    double v[3];     /* t->v[k][a] - centre */
+    double ev[3][3]; /* [i][k]: e[i][b] * v[k] for the other axis b used with a (see below) */
+    double ew[3][3]; /* [i][k]: e[i][b'] * v[k], the second other axis */
+    double hr[3][2]; /* [i][0]: h * |e[i][b]|, [i][1]: h * |e[i][b']| */
+    double nv, nh;   /* n[a] * v[0], h * |n[a]| */
+    int sep;         /* the box face of this axis separates */
+} rt_axis_cell;
+
+static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
+                        const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
+                        size_t prim)
+{
+    rt_axis_cell ac[3][RT_SPAN];
+    for (int a = 0; a < 3; a++) {
+        const int b1 = (a + 1) % 3, b2 = (a + 2) % 3;
+        for (int q = c0[a]; q <= c1[a]; q++) {
+            rt_axis_cell *x = &ac[a][q - c0[a]];
+            const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
+            const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
+            const double bc = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+            for (int k = 0; k < 3; k++)
+                x->v[k] = t->v[k][a] - bc;
+            x->sep = rt_sep(x->v[0], x->v[1], x->v[2], h);
+            x->nv = n[a] * x->v[0];
+            x->nh = h * fabs(n[a]);
+            for (int i = 0; i < 3; i++) {
+                for (int k = 0; k < 3; k++) {
+                    x->ev[i][k] = e[i][b1] * x->v[k];
+                    x->ew[i][k] = e[i][b2] * x->v[k];
+                }
+                x->hr[i][0] = h * fabs(e[i][b1]);
+                x->hr[i][1] = h * fabs(e[i][b2]);
+            }
+        }
+    }
+    /* rt_tri_box's edge tests, with (X, Y, Z) the axes 0, 1, 2 and b1 = a + 1, b2 = a + 2:
+       X: ey * vz - ez * vy, h_y * |e_z| + h_z * |e_y|: ey*vz is ac[2].ew (b2 of 2 is 1),
+          ez*vy is ac[1].ev (b1 of 1 is 2); h_y|e_z| is ac[1].hr[0], h_z|e_y| ac[2].hr[1]
+       Y: ez * vx - ex * vz, h_x |e_z| + h_z |e_x|: ez*vx ac[0].ew, ex*vz ac[2].ev;
+          h_x|e_z| ac[0].hr[1], h_z|e_x| ac[2].hr[0]
+       Z: ex * vy - ey * vx, h_x |e_y| + h_y |e_x|: ex*vy ac[1].ew, ey*vx ac[0].ev;
+          h_x|e_y| ac[0].hr[0], h_y|e_x| ac[1].hr[1] */
+    int c[3];
+    for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++) {
+        const rt_axis_cell *z = &ac[2][c[2] - c0[2]];
+        if (z->sep)
+            continue;
+        for (c[1] = c0[1]; c[1] <= c1[1]; c[1]++) {
+            const rt_axis_cell *y = &ac[1][c[1] - c0[1]];
+            if (y->sep)
+                continue;
+            for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
+                const rt_axis_cell *x = &ac[0][c[0] - c0[0]];
+                if (x->sep)
+                    continue;
+                const double pd = x->nv + y->nv + z->nv;
+                if (fabs(pd) > x->nh + y->nh + z->nh)
+                    continue;
+                int hit = 1;
+                for (int i = 0; i < 3 && hit; i++) {
+                    if (rt_sep(z->ew[i][0] - y->ev[i][0], z->ew[i][1] - y->ev[i][1],
+                               z->ew[i][2] - y->ev[i][2], y->hr[i][0] + z->hr[i][1]) ||
+                        rt_sep(x->ew[i][0] - z->ev[i][0], x->ew[i][1] - z->ev[i][1],
+                               x->ew[i][2] - z->ev[i][2], x->hr[i][1] + z->hr[i][0]) ||
+                        rt_sep(y->ew[i][0] - x->ev[i][0], y->ew[i][1] - x->ev[i][1],
+                               y->ew[i][2] - x->ev[i][2], x->hr[i][0] + y->hr[i][1]))
+                        hit = 0;
+                }
+                if (hit && !rt_build_push(b, base + rt_cell_index(g, c), prim))
+                    return 0;
+            }
+        }
+    }
+    return 1;
+}
+
 /* adds (base + cell, i) for every cell of box g whose eps-enlarged box the surface of
    primitive i overlaps; geometry is taken into the grid frame of sc first */
 static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
@@ -394,6 +506,25 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         tn[1] = te[0][2] * te[1][0] - te[0][0] * te[1][2];
         tn[2] = te[0][0] * te[1][1] - te[0][1] * te[1][0];
     }
+    if (p->kind == RT_KIND_TRI && !single && c1[0] - c0[0] < RT_SPAN &&
+        c1[1] - c0[1] < RT_SPAN && c1[2] - c0[2] < RT_SPAN) {
+        if (!rt_tri_cells(&tri, te, tn, g, c0, c1, eps, b, base, i))
+            *err = 1;
+        return;
+    }
+    /* the cell boxes by axis (rt_cell_box's values) when the range is short */
+    double alo[3][RT_SPAN], ahi[3][RT_SPAN], abc[3][RT_SPAN], ah[3][RT_SPAN];
+    const int by_axis = !single && c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
+                        c1[2] - c0[2] < RT_SPAN;
+    for (int a = 0; a < 3 && by_axis; a++)
+        for (int q = c0[a]; q <= c1[a]; q++) {
+            const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
+            const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
+            alo[a][q - c0[a]] = lo;
+            ahi[a][q - c0[a]] = hi;
+            abc[a][q - c0[a]] = 0.5 * (lo + hi);
+            ah[a][q - c0[a]] = 0.5 * (hi - lo);
+        }
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
@@ -401,10 +532,20 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
                 int hit = single;
                 if (!hit) {
                     double lo[3], hi[3], bc[3], h[3];
-                    rt_cell_box(g, c, eps, lo, hi);
-                    for (int a = 0; a < 3; a++) {
-                        bc[a] = 0.5 * (lo[a] + hi[a]);
-                        h[a] = 0.5 * (hi[a] - lo[a]);
+                    if (by_axis) {
+                        for (int a = 0; a < 3; a++) {
+                            const int q = c[a] - c0[a];
+                            lo[a] = alo[a][q];
+                            hi[a] = ahi[a][q];
+                            bc[a] = abc[a][q];
+                            h[a] = ah[a][q];
+                        }
+                    } else {
+                        rt_cell_box(g, c, eps, lo, hi);
+                        for (int a = 0; a < 3; a++) {
+                            bc[a] = 0.5 * (lo[a] + hi[a]);
+                            h[a] = 0.5 * (hi[a] - lo[a]);
+                        }
                     }
                     if (p->kind == RT_KIND_TRI) {
                         hit = rt_tri_box(&tri, te, tn, bc, h);
@@ -451,6 +592,98 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
     return RT_OK;
 }
 
+/* The top level in nt parts of consecutive primitives, one per thread, each with its pairs
+ * and its count of them per cell; the counts give each part's place in every cell's list
+ * (after the parts before it), so the parts scatter their references in parallel into the
+ * arrays one part would give. */
+typedef struct rt_top_job {
+    const rt_scene *sc;
+    rt_build *b; /* per part */
+    int err[RT_PAR_MAX];
+    double eps;
+    uint32_t *refs;
+} rt_top_job;
+
+static void rt_top_insert(void *arg, int k, int n)
+{
+    rt_top_job *j = arg;
+    const rt_grid *g = &j->sc->grid;
+    rt_build *b = &j->b[k];
+    size_t lo, hi;
+    rt_par_range(j->sc->nprim, k, n, &lo, &hi);
+    b->npairs = 0;
+    if (n > 1 && !(b->cnt = rt_calloc_array(g->ncells, sizeof(uint32_t)))) {
+        j->err[k] = 1;
+        return;
+    }
+    int err = 0;
+    for (size_t i = lo; i < hi && !err; i++)
+        rt_insert(j->sc, b, i, &g->b, 0, j->eps, &err);
+    j->err[k] = err;
+}
+
+static void rt_top_scatter(void *arg, int k, int n)
+{
+    (void)n;
+    rt_top_job *j = arg;
+    rt_build *b = &j->b[k];
+    uint32_t *at = b->cnt;
+    for (size_t q = 0; q < b->npairs; q++)
+        j->refs[at[b->pairs[q].cell]++] = b->pairs[q].prim;
+}
+
+static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
+{
+    rt_grid *g = &sc->grid;
+    /* per-part counts cost 4 B per cell and part: only where cells do not outnumber
+       primitives (always with the default resolution rule) */
+    if ((double)g->ncells > (double)sc->nprim + 65536.0)
+        nt = 1;
+    rt_top_job job;
+    memset(&job, 0, sizeof job);
+    job.sc = sc;
+    job.b = bs;
+    job.eps = eps;
+    rt_par_run(nt, rt_top_insert, &job);
+    int rc = RT_OK;
+    size_t total = 0;
+    for (int k = 0; k < nt; k++) {
+        if (job.err[k])
+            rc = RT_ERR_NOMEM;
+        total += bs[k].npairs;
+    }
+    if (rc == RT_OK && total > UINT32_MAX - 1)
+        rc = RT_ERR_LIMIT;
+    if (rc == RT_OK && nt == 1) {
+        g->nrefs = total;
+        rc = rt_csr(&bs[0], g->ncells, &g->off, &g->refs);
+    } else if (rc == RT_OK) {
+        g->off = rt_alloc_array(g->ncells + 1, sizeof(uint32_t));
+        g->refs = job.refs = rt_alloc_array(total, sizeof(uint32_t));
+        if (!g->off || !g->refs)
+            rc = RT_ERR_NOMEM;
+        uint32_t run = 0;
+        for (size_t c = 0; c < g->ncells && rc == RT_OK; c++) {
+            g->off[c] = run;
+            for (int k = 0; k < nt; k++) {
+                const uint32_t m = bs[k].cnt[c];
+                bs[k].cnt[c] = run;
+                run += m;
+            }
+        }
+        if (rc == RT_OK) {
+            g->off[g->ncells] = run;
+            g->nrefs = total;
+            rt_par_run(nt, rt_top_scatter, &job);
+        }
+    }
+    for (int k = 0; k < nt; k++) {
+        free(bs[k].cnt);
+        bs[k].cnt = NULL;
+    }
+    return rc;
+}
+
 /* Second level (measured: docs/bench/rt_tuning.md). A top cell holding more than RT_SUB_MIN references is
  * split into "large" primitives (their part inside the cell spans at least half the cell in
  * two axes: floors, walls crossing the cell) that stay in the top cell's list, and the rest,
@@ -471,7 +704,140 @@ static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6]
     rt_pts_bbox(b->pts, npts, bb);
 }
 
-static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_factor, int sub_min)
+/* The second level in parts of consecutive top cells (about equal references each), one
+ * per thread: part k makes the grids of its cells with cells and references counted from its
+ * own first ones; the parts are then laid out one after the other in cell order, which gives
+ * the arrays one part would give. */
+typedef struct rt_sub_part {
+    size_t c0, c1;       /* top cells [c0, c1) */
+    rt_subgrid *subs;    /* its grids (first: counted from its first sub cell) */
+    size_t nsubs, total; /* grids, their cells */
+    size_t sub0, cell0, ref0; /* its first grid, sub cell and reference in the grid's arrays */
+    int err;             /* 1: no memory, 2: too many cells */
+} rt_sub_part;
+
+typedef struct rt_sub_job {
+    rt_scene *sc;
+    rt_build *b;         /* per part */
+    rt_sub_part *part;
+    uint8_t *keep;       /* per top reference: stays in the top cell's list */
+    double eps, sub_factor;
+    int sub_min;
+} rt_sub_job;
+
+static void rt_sub_cells(void *arg, int k, int n)
+{
+    (void)n;
+    rt_sub_job *j = arg;
+    rt_sub_part *pt = &j->part[k];
+    rt_build *b = &j->b[k];
+    rt_scene *sc = j->sc;
+    rt_grid *g = &sc->grid;
+    const double eps = j->eps;
+    const uint32_t sub_min = (uint32_t)j->sub_min;
+    uint8_t *keep = j->keep;
+    b->npairs = 0;
+    size_t ns = 0;
+    for (size_t ci = pt->c0; ci < pt->c1; ci++)
+        ns += g->off[ci + 1] - g->off[ci] > sub_min;
+    pt->subs = rt_alloc_array(ns ? ns : 1, sizeof(rt_subgrid));
+    if (!pt->subs) {
+        pt->err = 1;
+        return;
+    }
+    size_t total = 0;
+    int err = 0;
+    const size_t n0 = (size_t)g->b.n[0], n01 = n0 * (size_t)g->b.n[1];
+    for (size_t ci = pt->c0; ci < pt->c1 && !err; ci++) {
+        uint32_t cnt = g->off[ci + 1] - g->off[ci];
+        g->sub[ci] = -1;
+        if (cnt <= sub_min)
+            continue;
+        const int c[3] = {(int)(ci % n0), (int)(ci % n01 / n0), (int)(ci / n01)};
+        double lo[3], hi[3], sb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+        /* the enlarged cell box: the top-level walk places a ray in this cell when
+           it is within rounding of it (a point on a cell plane computed as 2e-16
+           beyond 0 is in the cell by its index), and a ray with a direction
+           component exactly 0 is then clipped to the sub box exactly: clipped to the
+           cell box itself, the second-level grid was skipped for it */
+        rt_cell_box(&g->b, c, eps, lo, hi);
+        uint32_t nsmall = 0;
+        for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++) {
+            double bb[6];
+            rt_prim_gbox(sc, b, g->refs[r], bb, &err);
+            int span = 0;
+            for (int a = 0; a < 3; a++) {
+                bb[a] = rt_dmax(bb[a] - eps, lo[a]);
+                bb[3 + a] = rt_dmin(bb[3 + a] + eps, hi[a]);
+                span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
+            }
+            keep[r] = span >= 2;
+            if (keep[r])
+                continue;
+            nsmall++;
+            for (int a = 0; a < 3; a++) {
+                sb[a] = rt_dmin(sb[a], bb[a]);
+                sb[3 + a] = rt_dmax(sb[3 + a], bb[3 + a]);
+            }
+        }
+        if (nsmall <= sub_min || err) {
+            for (uint32_t r = g->off[ci]; r < g->off[ci + 1]; r++)
+                keep[r] = 1;
+            continue;
+        }
+        rt_subgrid *sg = &pt->subs[pt->nsubs];
+        g->sub[ci] = (int32_t)pt->nsubs++;
+        for (int a = 0; a < 3; a++) { /* sub box: the small parts, at least eps thick */
+            double mid = 0.5 * (sb[a] + sb[3 + a]);
+            sg->b.lo[a] = rt_dmax(lo[a], rt_dmin(sb[a], mid - eps));
+            sg->b.hi[a] = rt_dmin(hi[a], rt_dmax(sb[3 + a], mid + eps));
+        }
+        rt_box_resolution(&sg->b, j->sub_factor * nsmall, 32);
+        rt_box_finish(&sg->b);
+        size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+        if (total + nc > UINT32_MAX - 1) {
+            err = 2;
+            break;
+        }
+        sg->first = (uint32_t)total;
+        for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
+            if (!keep[r])
+                rt_insert(sc, b, g->refs[r], &sg->b, total, eps, &err);
+        total += nc;
+    }
+    pt->total = total;
+    pt->err = err;
+}
+
+/* part k's pairs into the grid's sub-cell CSR arrays at its place (its cells' entries of
+   soff serve as counts, then as cursors; the entry after its last cell is the next part's) */
+static void rt_sub_csr(void *arg, int k, int n)
+{
+    (void)n;
+    rt_sub_job *j = arg;
+    const rt_sub_part *pt = &j->part[k];
+    const rt_build *b = &j->b[k];
+    rt_grid *g = &j->sc->grid;
+    uint32_t *off = g->soff + pt->cell0, *refs = g->srefs;
+    memset(off, 0, pt->total * sizeof *off);
+    for (size_t q = 0; q < b->npairs; q++)
+        off[b->pairs[q].cell]++;
+    uint32_t run = (uint32_t)pt->ref0;
+    for (size_t c = 0; c < pt->total; c++) {
+        const uint32_t m = off[c];
+        off[c] = run;
+        run += m;
+    }
+    for (size_t q = 0; q < b->npairs; q++)
+        refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+    for (size_t c = pt->total; c > 1; c--) /* off[c] is now the start of c + 1 */
+        off[c - 1] = off[c - 2];
+    if (pt->total > 0)
+        off[0] = (uint32_t)pt->ref0;
+}
+
+static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
+                             int sub_min)
 {
     rt_grid *g = &sc->grid;
     size_t nsub = 0;
@@ -479,77 +845,71 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
         nsub += g->off[ci + 1] - g->off[ci] > (uint32_t)sub_min;
     if (nsub == 0)
         return RT_OK;
+    if ((size_t)nt > g->ncells)
+        nt = 1;
     g->sub = rt_alloc_array(g->ncells, sizeof(int32_t));
-    g->subs = rt_alloc_array(nsub, sizeof(rt_subgrid));
-    uint8_t *keep = rt_alloc_array(g->nrefs, 1); /* stays in the top cell's list */
-    if (!g->sub || !g->subs || !keep) {
+    uint8_t *keep = rt_alloc_array(g->nrefs, 1);
+    rt_sub_part part[RT_PAR_MAX];
+    memset(part, 0, sizeof part);
+    if (!g->sub || !keep) {
         free(keep);
         return RT_ERR_NOMEM;
     }
     memset(keep, 1, g->nrefs);
-    b->npairs = 0;
-    size_t total = 0;
+    for (int k = 0; k < nt; k++) { /* cells [c0, c1) from the first cell at k/nt of the refs */
+        const uint64_t want = (uint64_t)g->nrefs * (uint64_t)k / (uint64_t)nt;
+        size_t l = 0, h = g->ncells;
+        while (l < h) {
+            size_t m = l + (h - l) / 2;
+            if (g->off[m] < want)
+                l = m + 1;
+            else
+                h = m;
+        }
+        part[k].c0 = k == 0 ? 0 : l;
+        if (k > 0)
+            part[k - 1].c1 = part[k].c0;
+    }
+    part[nt - 1].c1 = g->ncells;
+    rt_sub_job job = {sc, bs, part, keep, eps, sub_factor, sub_min};
+    rt_par_run(nt, rt_sub_cells, &job);
     int err = 0;
-    int c[3];
-    for (c[2] = 0; c[2] < g->b.n[2]; c[2]++)
-        for (c[1] = 0; c[1] < g->b.n[1]; c[1]++)
-            for (c[0] = 0; c[0] < g->b.n[0] && !err; c[0]++) {
-                size_t ci = rt_cell_index(&g->b, c);
-                uint32_t cnt = g->off[ci + 1] - g->off[ci];
-                g->sub[ci] = -1;
-                if (cnt <= (uint32_t)sub_min)
-                    continue;
-                double lo[3], hi[3], sb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-                /* the enlarged cell box: the top-level walk places a ray in this cell when
-                   it is within rounding of it (a point on a cell plane computed as 2e-16
-                   beyond 0 is in the cell by its index), and a ray with a direction
-                   component exactly 0 is then clipped to the sub box exactly: clipped to the
-                   cell box itself, the second-level grid was skipped for it */
-                rt_cell_box(&g->b, c, eps, lo, hi);
-                uint32_t nsmall = 0;
-                for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++) {
-                    double bb[6];
-                    rt_prim_gbox(sc, b, g->refs[k], bb, &err);
-                    int span = 0;
-                    for (int a = 0; a < 3; a++) {
-                        bb[a] = rt_dmax(bb[a] - eps, lo[a]);
-                        bb[3 + a] = rt_dmin(bb[3 + a] + eps, hi[a]);
-                        span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
-                    }
-                    keep[k] = span >= 2;
-                    if (keep[k])
-                        continue;
-                    nsmall++;
-                    for (int a = 0; a < 3; a++) {
-                        sb[a] = rt_dmin(sb[a], bb[a]);
-                        sb[3 + a] = rt_dmax(sb[3 + a], bb[3 + a]);
-                    }
-                }
-                if (nsmall <= (uint32_t)sub_min || err) {
-                    for (uint32_t k = g->off[ci]; k < g->off[ci + 1]; k++)
-                        keep[k] = 1;
-                    continue;
-                }
-                rt_subgrid *sg = &g->subs[g->nsubs];
-                g->sub[ci] = (int32_t)g->nsubs++;
-                for (int a = 0; a < 3; a++) { /* sub box: the small parts, at least eps thick */
-                    double mid = 0.5 * (sb[a] + sb[3 + a]);
-                    sg->b.lo[a] = rt_dmax(lo[a], rt_dmin(sb[a], mid - eps));
-                    sg->b.hi[a] = rt_dmin(hi[a], rt_dmax(sb[3 + a], mid + eps));
-                }
-                rt_box_resolution(&sg->b, sub_factor * nsmall, 32);
-                rt_box_finish(&sg->b);
-                size_t n = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
-                if (total + n > UINT32_MAX - 1) {
-                    err = 2;
-                    break;
-                }
-                sg->first = (uint32_t)total;
-                for (uint32_t k = g->off[ci]; k < g->off[ci + 1] && !err; k++)
-                    if (!keep[k])
-                        rt_insert(sc, b, g->refs[k], &sg->b, total, eps, &err);
-                total += n;
+    size_t nsubs = 0, total = 0, nref = 0;
+    for (int k = 0; k < nt; k++) {
+        if (part[k].err && !err)
+            err = part[k].err;
+        part[k].sub0 = nsubs;
+        part[k].cell0 = total;
+        part[k].ref0 = nref;
+        nsubs += part[k].nsubs;
+        total += part[k].total;
+        nref += bs[k].npairs;
+    }
+    if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
+        err = 2;
+    if (!err) {
+        g->subs = rt_alloc_array(nsubs ? nsubs : 1, sizeof(rt_subgrid));
+        g->soff = rt_alloc_array(total + 1, sizeof(uint32_t));
+        g->srefs = rt_alloc_array(nref, sizeof(uint32_t));
+        if (!g->subs || !g->soff || !g->srefs)
+            err = 1;
+    }
+    if (!err) {
+        for (int k = 0; k < nt; k++) {
+            for (size_t q = 0; q < part[k].nsubs; q++) {
+                g->subs[part[k].sub0 + q] = part[k].subs[q];
+                g->subs[part[k].sub0 + q].first += (uint32_t)part[k].cell0;
             }
+            for (size_t ci = part[k].c0; ci < part[k].c1 && part[k].sub0; ci++)
+                if (g->sub[ci] >= 0)
+                    g->sub[ci] += (int32_t)part[k].sub0;
+        }
+        g->nsubs = nsubs;
+        g->soff[total] = (uint32_t)nref;
+        rt_par_run(nt, rt_sub_csr, &job);
+    }
+    for (int k = 0; k < nt; k++)
+        free(part[k].subs);
     if (!err) { /* top lists: only what stays (compacted in place) */
         uint32_t w = 0;
         for (size_t ci = 0; ci < g->ncells; ci++) {
@@ -565,11 +925,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *b, double eps, double sub_f
     free(keep);
     if (err)
         return err == 2 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
-    if (b->npairs > UINT32_MAX - 1)
-        return RT_ERR_LIMIT;
     g->nsubcells = total;
-    g->nsrefs = b->npairs;
-    return rt_csr(b, total, &g->soff, &g->srefs);
+    g->nsrefs = nref;
+    return RT_OK;
 }
 
 /* Empty-space distance of the top level (rt_grid.dist): exact Chebyshev distance to the
@@ -827,16 +1185,20 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     rt_grid *g = &sc->grid;
     int explicit_res = o && o->grid_res[0] > 0 && o->grid_res[1] > 0 && o->grid_res[2] > 0 &&
                        o->grid_res[0] <= 1024 && o->grid_res[1] <= 1024 && o->grid_res[2] <= 1024;
-    rt_build b;
-    memset(&b, 0, sizeof b);
+    /* threads: at most one per 4096 primitives (the scene is the same for any number) */
+    int nt = rt_par_threads(o ? o->threads : 0);
+    if ((size_t)nt > sc->nprim / 4096 + 1)
+        nt = (int)(sc->nprim / 4096 + 1);
+    rt_build bs[RT_PAR_MAX];
+    memset(bs, 0, sizeof bs);
     double fb[6];
     memcpy(fb, sc->bbox, sizeof fb);
     int rc = RT_OK;
     g->rotated = 0;
     if (!explicit_res && !(o && o->grid_frame == 1)) {
-        rc = rt_choose_frame(sc, &b);
+        rc = rt_choose_frame(sc, &bs[0]);
         if (rc == RT_OK && g->rotated)
-            rc = rt_frame_box(sc, &b, 1, fb);
+            rc = rt_frame_box(sc, &bs[0], 1, fb);
     }
     double mx = 0.0;
     for (int a = 0; a < 3; a++)
@@ -863,17 +1225,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
     const double eps = 1e-9 * (sc->scale + mx);
-    int err = rc != RT_OK;
-    for (size_t i = 0; i < sc->nprim && !err; i++)
-        rt_insert(sc, &b, i, &g->b, 0, eps, &err);
-    if (rc == RT_OK && err)
-        rc = RT_ERR_NOMEM;
-    if (rc == RT_OK && b.npairs > UINT32_MAX - 1)
-        rc = RT_ERR_LIMIT;
-    if (rc == RT_OK) {
-        g->nrefs = b.npairs;
-        rc = rt_csr(&b, g->ncells, &g->off, &g->refs);
-    }
+    if (rc == RT_OK)
+        rc = rt_top_level(sc, bs, nt, eps);
     int sub_min = o && o->sub_min > 0 ? o->sub_min : RT_SUB_MIN;
     double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor
                         : (double)sc->nprim > RT_GRID_KNEE ? RT_SUB_FACTOR_LARGE : RT_SUB_FACTOR;
@@ -887,27 +1240,18 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         free(g->off);
         free(g->refs);
         g->off = g->refs = NULL;
-        b.npairs = 0;
         rt_box_resolution(&g->b, RT_UNIFORM_FACTOR * (double)sc->nprim, 512);
         rt_box_finish(&g->b);
         g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
-        for (size_t i = 0; i < sc->nprim && !err; i++)
-            rt_insert(sc, &b, i, &g->b, 0, eps, &err);
-        rc = err ? RT_ERR_NOMEM : (b.npairs > UINT32_MAX - 1 ? RT_ERR_LIMIT : RT_OK);
-        if (rc == RT_OK) {
-            g->nrefs = b.npairs;
-            rc = rt_csr(&b, g->ncells, &g->off, &g->refs);
-        }
+        rc = rt_top_level(sc, bs, nt, eps);
         no_subgrids = 1;
     }
     if (rc == RT_OK && !no_subgrids)
-        rc = rt_build_subgrids(sc, &b, eps, sub_factor, sub_min);
+        rc = rt_build_subgrids(sc, bs, nt, eps, sub_factor, sub_min);
     if (rc == RT_OK)
         rc = rt_empty_distance(g);
-    free(b.cb.a);
-    free(b.cb.b);
-    free(b.pts);
-    free(b.pairs);
+    for (int k = 0; k < nt; k++)
+        rt_build_free(&bs[k]);
     if (rc != RT_OK) {
         rt_grid_free(g);
         return rc;

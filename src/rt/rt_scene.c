@@ -423,7 +423,55 @@ static void rt_prim_init(const rt_scene *sc, rt_prim *pr, int id, int front, int
 }
 
 /* Triangles first, in id order: the committed triangles are the input's (degenerate ones
-   removed from it for good) unless o culls, which commits a copy of the kept ones. */
+   removed from it for good) unless o culls, which commits a copy of the kept ones. In nt parts
+   of consecutive triangles (threads): each part writes the primitive records of its triangles
+   at their input places (kind RT_KIND_NONE: left out); only when some are left out a serial
+   pass closes the gaps, so the result is the same for any nt. */
+#define RT_KIND_NONE 255
+
+typedef struct rt_tri_job {
+    rt_scene *sc;
+    const rt_build_options *o;
+    double bb[RT_PAR_MAX][6];
+    size_t kept[RT_PAR_MAX];
+} rt_tri_job;
+
+static void rt_commit_tri_part(void *arg, int part, int nparts)
+{
+    rt_tri_job *j = arg;
+    rt_scene *sc = j->sc;
+    const rt_build_options *o = j->o;
+    const int cull = o && o->ncull > 0;
+    static const int three = 3;
+    double *bb = j->bb[part];
+    size_t lo, hi, kept = 0;
+    rt_par_range(sc->nintri, part, nparts, &lo, &hi);
+    for (int i = 0; i < 3; i++) {
+        bb[i] = INFINITY;
+        bb[3 + i] = -INFINITY;
+    }
+    for (size_t k = lo; k < hi; k++) {
+        const double *v = &sc->in_tri[k].v[0][0];
+        rt_prim *pr = &sc->prim[k];
+        double pb[6], c[3], ext, nrm[3];
+        if (!rt_points_frame(v, 3, pb, c, &ext) ||
+            !rt_poly_normal(v, 3, &three, 1, c, ext, nrm) || (cull && rt_culled(o, v, 3, 0))) {
+            pr->kind = RT_KIND_NONE; /* degenerate: never traced; or culled */
+            continue;
+        }
+        if (cull)
+            sc->tri[k] = sc->in_tri[k];
+        rt_prim_init(sc, pr, (int)sc->in_tri_id[k], sc->in_tri_sf[2 * k], sc->in_tri_sf[2 * k + 1]);
+        memcpy(pr->ng, nrm, sizeof pr->ng);
+        pr->kind = RT_KIND_TRI;
+        pr->data = (uint32_t)k;
+        for (int i = 0; i < 3; i++)
+            rt_bbox_add(bb, v + 3 * i);
+        kept++;
+    }
+    j->kept[part] = kept;
+}
+
 static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
 {
     const int cull = o && o->ncull > 0;
@@ -434,35 +482,47 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
             return RT_ERR_NOMEM;
         sc->tri_owned = 1;
     }
-    static const int three = 3;
-    size_t keep = 0; /* without culling: input triangles kept (compacted in place) */
-    for (size_t k = 0; k < sc->nintri; k++) {
-        const double *v = &sc->in_tri[k].v[0][0];
-        double pb[6], c[3], ext, nrm[3];
-        if (!rt_points_frame(v, 3, pb, c, &ext) ||
-            !rt_poly_normal(v, 3, &three, 1, c, ext, nrm))
-            continue; /* degenerate: never traced */
-        if (!cull) {
-            sc->in_tri[keep] = sc->in_tri[k];
-            sc->in_tri_sf[2 * keep] = sc->in_tri_sf[2 * k];
-            sc->in_tri_sf[2 * keep + 1] = sc->in_tri_sf[2 * k + 1];
-            sc->in_tri_id[keep++] = sc->in_tri_id[k];
-        } else if (rt_culled(o, v, 3, 0)) {
-            continue;
-        } else {
-            sc->tri[sc->ntri] = sc->in_tri[k];
+    int nt = rt_par_threads(o ? o->threads : 0);
+    if ((size_t)nt > sc->nintri / 16384 + 1)
+        nt = (int)(sc->nintri / 16384 + 1);
+    rt_tri_job *j = rt_alloc_array(1, sizeof *j);
+    if (!j)
+        return RT_ERR_NOMEM;
+    j->sc = sc;
+    j->o = o;
+    rt_par_run(nt, rt_commit_tri_part, j);
+    size_t kept = 0;
+    for (int k = 0; k < nt; k++) {
+        kept += j->kept[k];
+        for (int i = 0; i < 3; i++) {
+            if (j->bb[k][i] < bb[i])
+                bb[i] = j->bb[k][i];
+            if (j->bb[k][3 + i] > bb[3 + i])
+                bb[3 + i] = j->bb[k][3 + i];
         }
-        rt_prim *pr = &sc->prim[sc->nprim];
-        rt_prim_init(sc, pr, (int)sc->in_tri_id[k], sc->in_tri_sf[2 * k], sc->in_tri_sf[2 * k + 1]);
-        memcpy(pr->ng, nrm, sizeof pr->ng);
-        pr->kind = RT_KIND_TRI;
-        pr->data = (uint32_t)sc->ntri++;
-        for (int i = 0; i < 3; i++)
-            rt_bbox_add(bb, v + 3 * i);
-        sc->nprim++;
     }
+    free(j);
+    if (kept < sc->nintri) { /* close the gaps, in order */
+        size_t w = 0;
+        for (size_t k = 0; k < sc->nintri; k++) {
+            if (sc->prim[k].kind == RT_KIND_NONE)
+                continue;
+            sc->prim[w] = sc->prim[k];
+            sc->prim[w].data = (uint32_t)w;
+            if (cull) {
+                sc->tri[w] = sc->tri[k];
+            } else {
+                sc->in_tri[w] = sc->in_tri[k];
+                sc->in_tri_sf[2 * w] = sc->in_tri_sf[2 * k];
+                sc->in_tri_sf[2 * w + 1] = sc->in_tri_sf[2 * k + 1];
+                sc->in_tri_id[w] = sc->in_tri_id[k];
+            }
+            w++;
+        }
+    }
+    sc->ntri = sc->nprim = kept;
     if (!cull)
-        sc->nintri = keep;
+        sc->nintri = kept;
     return RT_OK;
 }
 

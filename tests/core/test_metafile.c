@@ -674,7 +674,7 @@ static void test_storage_overflow(void **u)
 {
     (void)u;
     int saw300 = 0, clean = 0;
-    for (long k = 1; k < 400 && !clean; k += 3) {
+    for (long k = 1; k < 400 && !clean; k += 2) {
         open_all();
         gopen_ws(WS_MO, "mf_nomem.gksm", GWS_TYPE_MO);
         gactivate_ws(WS_MO);

@@ -509,14 +509,16 @@ static void test_gdp(void **state)
     ggdp(&neg, 1, NULL);
     expect_error(100, GFN_GDP);
     Gpoint_list3 l3 = { 0, NULL };
-    ggdp3(&l3, -3, NULL);
+    ggdp3(&l3, -7, NULL);
     expect_error(102, GFN_GDP3);
+    ggdp3(&l3, GGDP_PIE, NULL); /* a GDP of this library (tests/bindings/test_gdp.c) */
+    expect_error(100, GFN_GDP3);
     assert_int_equal(cap.n, 0);
     Gint err, len;
     Gint_list gl = { 0, NULL };
     ginq_list_avail_gdps(GWS_TYPE_PNG, 0, 0, &err, &gl, &len);
     assert_int_equal(err, 0);
-    assert_int_equal(len, 0);
+    assert_int_equal(len, 5);
 }
 
 /* ------------------------------------------------------------------ pixels (PNG ws) */

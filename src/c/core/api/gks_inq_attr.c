@@ -8,6 +8,7 @@
 #include "gks_legacy.h"
 #include "gks_attr.h"
 #include "gks_error.h"
+#include "gks_gdp.h"
 #include "gks_store.h"
 #include "gks_state.h"
 #include "gks_text_layout.h"
@@ -564,6 +565,8 @@ GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint cap, Gint start, Gint *err_
 {
     GKS_INQ_ARGS(err_ind, gdps, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
+    const Gint *ids = NULL;
+    int n = gks_gdp_list(&ids); /* every output workstation draws the core's GDPs */
     if (t)
-        *err_ind = copy_ints(NULL, 0, cap, start, gdps, length_list);
+        *err_ind = copy_ints(ids, n, cap, start, gdps, length_list);
 }

@@ -7,6 +7,7 @@
  * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
  * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
  */
+#include "gks_gdp.h"
 #include "gks_legacy.h"
 #include "gks_store.h"
 #include "gks_alloc.h"
@@ -414,7 +415,7 @@ GKS_API void ginq_list_avail_gdps3(Gint ws_type, Gint num_elems_appl_list, Gint 
     ginq_list_avail_gdps(ws_type, num_elems_appl_list, start_pos, err_ind, gdps, length_list);
 }
 
-/* The attribute bundles of a GDP: 41 when ws_type cannot generate it (every GDP here). */
+/* The attribute bundles of a GDP: 41 when ws_type cannot generate it. */
 static void gdp_attrs(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gattrs *attr,
                       int max)
 {
@@ -425,10 +426,11 @@ static void gdp_attrs(Gint ws_type, Gint gdp, Gint *err_ind, Gint *num_attr, Gat
         return;
     for (int i = 0; i < l.num_ints; i++)
         if (buf[i] == gdp) {
-            /* GDPs of this library are areas drawn with the fill area bundle. */
-            *num_attr = 1;
-            attr[0] = GATTR_FILL;
-            (void)max;
+            Gattrs a[2];
+            int k = gks_gdp_attrs(gdp, max == 5, a);
+            for (int j = 0; j < k && j < max; j++)
+                attr[j] = a[j];
+            *num_attr = k;
             return;
         }
     *err_ind = 41;

@@ -21,6 +21,7 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_export.h"
+#include "gks_gdp.h"
 #include "gks_mf_record.h"
 #include "gks_output_int.h"
 #include "gks_seg_store.h"
@@ -64,26 +65,48 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
  * primitive (context norm_override, gks_mf_record.h), the recorded normalization and clipping
  * volume replace the current ones, and NDC3 points enter through the identity.
  * 0, or 308 if the normalization cannot be represented (gks_xform_norm_tran3). */
+/* The last current-state context and what it was made from (the current window and
+ * viewport 3, clipping indicator, open segment and its transformation): a primitive drawn
+ * under the same settings takes it as it is instead of making it again (a FILL AREA 3 per
+ * triangle spent a fifth of its call on this). Compared by value, so no setting function
+ * needs to know of it; not used while INTERPRET ITEM overrides the context. */
+static struct {
+    int valid;
+    double w[6], v[6];
+    int clip_on;
+    const gks_segment *seg;
+    double stran[3][4];
+    norm_ctx nc;
+} norm_cache;
+
 static int norm_setup(norm_ctx *nc)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
     const gks_context *c = gks_ctx();
     const gks_state_list *sl = c->sl;
     const gks_norm_override *ov = c->norm_override;
-    double n[3][4], box[6];
+    double n[3][4], box[6], w[6];
     int clip_on;
+    gks_segment *seg = open_segment();
     if (ov) {
         memcpy(n, ov->norm, sizeof n);
         memcpy(box, ov->box, sizeof box);
         clip_on = ov->clip_on;
     } else {
-        if (gks_cur_norm_matrix(n))
-            return 308;
+        gks_limit3_array(&sl->tran[sl->cur_tnr].win, w);
         gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
         clip_on = sl->clip_ind == GIND_CLIP;
+        if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
+            memcmp(norm_cache.w, w, sizeof w) == 0 && memcmp(norm_cache.v, box, sizeof box) == 0 &&
+            (!seg || memcmp(norm_cache.stran, seg->tran, sizeof norm_cache.stran) == 0)) {
+            *nc = norm_cache.nc;
+            return 0;
+        }
+        norm_cache.valid = 0;
+        if (gks_xform_norm_tran3(w, box, n)) /* gks_cur_norm_matrix */
+            return 308;
     }
     const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
-    gks_segment *seg = open_segment();
     if (norm_from(nc, pm, box, clip_on))
         return 308;
     nc->seg = seg;
@@ -92,6 +115,16 @@ static int norm_setup(norm_ctx *nc)
     if (seg) {
         gks_xform_mat34_multiply(seg->tran, pm, nc->m);
         gks_xform_mat34_multiply(seg->tran, n, nc->pat);
+    }
+    if (!ov) {
+        memcpy(norm_cache.w, w, sizeof w);
+        memcpy(norm_cache.v, box, sizeof box);
+        norm_cache.clip_on = clip_on;
+        norm_cache.seg = seg;
+        if (seg)
+            memcpy(norm_cache.stran, seg->tran, sizeof norm_cache.stran);
+        norm_cache.nc = *nc;
+        norm_cache.valid = 1;
     }
     return 0;
 }
@@ -664,11 +697,15 @@ done:
 /* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
  * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
  * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
+#define AREA_SMALL 16 /* areas up to this many points and loops use stack buffers */
+
 static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
                      const pt_src *s, int is_set, target *t)
 {
-    Gpoint3 *pts = gks_alloc_array(n, sizeof *pts);
-    int *counts = gks_alloc_array(nloops, sizeof *counts);
+    Gpoint3 pts_small[AREA_SMALL];
+    int counts_small[AREA_SMALL];
+    Gpoint3 *pts = n <= AREA_SMALL ? pts_small : gks_alloc_array(n, sizeof *pts);
+    int *counts = nloops <= AREA_SMALL ? counts_small : gks_alloc_array(nloops, sizeof *counts);
     int err = 0, inside = 1;
     if (!pts || !counts) {
         err = 300;
@@ -689,8 +726,10 @@ static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_
     else
         err = clip_area(nc, nloops, cnt, n, pts, is_set, t);
 done:
-    gks_free(pts);
-    gks_free(counts);
+    if (pts != pts_small)
+        gks_free(pts);
+    if (counts != counts_small)
+        gks_free(counts);
     return err;
 }
 
@@ -711,7 +750,8 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
                               .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
                               .d3 = s->d3 }))
         return;
-    int *icnt = gks_alloc_array(nloops, sizeof *icnt);
+    int icnt_small[AREA_SMALL];
+    int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
     if (!icnt)
         GKS_FAIL(300, fctid);
     for (size_t k = 0; k < nloops; k++)
@@ -719,7 +759,8 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
     gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
                         .n_loops = (int)nloops, .loop_counts = icnt };
     int err = record(&nc, &sp, s, n);
-    gks_free(icnt);
+    if (icnt != icnt_small)
+        gks_free(icnt);
     target t;
     target_current(&t, &nc);
     if (!err)
@@ -1045,29 +1086,31 @@ int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
     return err;
 }
 
-/* ------------------------------------------------------------------ GDP */
-/* No GDP exists in this implementation: after the state and point checks every
- * identifier is invalid (102). */
-static void gdp_any(int fctid, int n, const void *pts, Gint gdp_id)
+/* ------------------------------------------------------------------ GDP (gks_gdp.c) */
+/* A GDP's tessellation, in WC3, through the POLYLINE and FILL AREA paths (segments and
+ * the metafile record what is drawn). The caller did the state and argument checks. */
+void gks_output_polyline_d3(int fctid, size_t n, const double (*p)[3])
 {
-    (void)gdp_id;
-    if (gks_check_state(fctid))
+    norm_ctx nc;
+    if (norm_setup(&nc))
+        GKS_FAIL(308, fctid);
+    pt_src s = { NULL, NULL, p };
+    gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
+    if (!mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = n, .d3 = p }))
         return;
-    if (n < 0 || (n > 0 && !pts))
-        GKS_FAIL(100, fctid);
-    GKS_FAIL(102, fctid);
+    int err = record(&nc, &sp, &s, n);
+    target t;
+    target_current(&t, &nc);
+    if (!err)
+        err = emit_polyline(&nc, &s, n, &t);
+    if (err)
+        GKS_FAIL(err, fctid);
 }
 
-GKS_API void ggdp(const Gpoint_list *l, Gint gdp_id, const Ggdp_data *data)
+void gks_output_area_d3(int fctid, size_t n, const double (*p)[3])
 {
-    (void)data;
-    gdp_any(GFN_GDP, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
-}
-
-GKS_API void ggdp3(const Gpoint_list3 *l, Gint gdp_id, const Ggdp_data *data)
-{
-    (void)data;
-    gdp_any(GFN_GDP3, l ? l->num_points : -1, l ? (const void *)l->points : NULL, gdp_id);
+    pt_src s = { NULL, NULL, p };
+    output_area(fctid, 1, &n, &s, 0);
 }
 
 /* ------------------------------------------------------------------ colour table */

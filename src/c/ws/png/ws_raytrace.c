@@ -565,6 +565,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
     rt_build_options bo;
     memset(&bo, 0, sizeof bo);
     bo.brute_threshold = -1; /* defaults */
+    bo.threads = r->opts.threads; /* the build on the frame's threads (GESC_RT_THREADS) */
     if (cull) {
         bo.ncull = 6;
         memcpy(bo.cull, cull->plane, sizeof bo.cull);
