@@ -37,7 +37,8 @@ while IFS= read -r d; do incs+=("-I$d"); done < <(find src/c -type d | sort)
 # (an out-of-range double -> int cast, NULL + 0), clang checks them when asked.
 flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-overflow
        -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
-       -DGKS3D_BUILDING -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude -I"$out/include")
+       -DGKS3D_BUILDING -DGKS_FAULT_INJECTION -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude
+       -I"$out/include") # GKS_FAULT_INJECTION: the test hooks (fuzz_state fails allocations)
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).

@@ -85,6 +85,22 @@ static char *str_buffer(size_t len, Gint fctid)
     return b;
 }
 
+/* A buffer for a string the core returns (REQUEST, SAMPLE, GET STRING): the C functions
+ * write the whole input string, up to the device's buffer size, which may exceed
+ * LEN(STR) (str_len); fill_fstr then truncates. 1024 = the largest string buffer of any
+ * device (GKS_IN_STRING_MAX, docs/INPUT.md). */
+#define STRING_RESULT_MAX 1024
+
+static char *result_buffer(size_t str_len, Gint fctid)
+{
+    return str_buffer(str_len > STRING_RESULT_MAX ? str_len : STRING_RESULT_MAX, fctid);
+}
+
+/* The stroke state inquiries ask the core with room for the largest initial stroke
+ * (GKS_IN_STROKE_MAX points) so that NP is the stroke's size and ERRIND 2001 tells that
+ * N is too small (the C functions fill at most the capacity given). */
+#define STROKE_INQ_MAX 1024
+
 /* Points buffer of capacity n (none for n <= 0). Returns -1 when out of memory, with 300
  * reported for fctid unless fctid < 0 (inquiries report through ERRIND). */
 static int stroke_buffer(Gstroke *s, fint n, Gint fctid)
@@ -288,7 +304,7 @@ FAPI void FNAME(grqst, GRQST)(const fint *wkid, const fint *stdnr, fint *stat, f
                               char *str, size_t str_len)
 {
     Gin_status s = GIN_STATUS_NONE;
-    char *b = str_buffer(str_len, GFN_RQST);
+    char *b = result_buffer(str_len, GFN_RQST);
     if (b)
         greq_string(*wkid, *stdnr, &s, b);
     *stat = s;
@@ -356,7 +372,7 @@ FAPI void FNAME(gsmpk, GSMPK)(const fint *wkid, const fint *pcdnr, fint *stat, f
 FAPI void FNAME(gsmst, GSMST)(const fint *wkid, const fint *stdnr, fint *lostr, char *str,
                               size_t str_len)
 {
-    char *b = str_buffer(str_len, GFN_SMST);
+    char *b = result_buffer(str_len, GFN_SMST);
     if (b)
         gsample_string(*wkid, *stdnr, b);
     *lostr = fill_fstr(b ? b : "", str, str_len);
@@ -436,7 +452,7 @@ FAPI void FNAME(ggtpk, GGTPK)(fint *stat, fint *sgna, fint *pcid)
 /* GGTST(LOSTR, STR) */
 FAPI void FNAME(ggtst, GGTST)(fint *lostr, char *str, size_t str_len)
 {
-    char *b = str_buffer(str_len, GFN_GTST);
+    char *b = result_buffer(str_len, GFN_GTST);
     if (b)
         gget_string(b);
     *lostr = fill_fstr(b ? b : "", str, str_len);
@@ -484,7 +500,7 @@ FAPI void FNAME(gqsks, GQSKS)(const fint *wkid, const fint *skdnr, const fint *t
                               size_t datrec_len)
 {
     Gstroke_st s = { 0 };
-    if (stroke_buffer(&s.init_stroke, *n, -1)) {
+    if (stroke_buffer(&s.init_stroke, *n > STROKE_INQ_MAX ? *n : STROKE_INQ_MAX, -1)) {
         *errind = 300;
         return;
     }
@@ -1215,4 +1231,285 @@ FAPI void FNAME(gqdlc3, GQDLC3)(const fint *wtype, const fint *lcdnr, const fint
         *errind = def_out(&d2, *n, *mldr, ol, pet, earea, ldr, datrec, datrec_len);
     }
     free(s.pets.ints);
+}
+
+/* GQSKS3(WKID, SKDNR, TYPE, N, MLDR, ERRIND, MODE, ESW, VIEWI, TNR, NP, PXA, PYA, PZA, PET,
+ *        EVOL, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqsks3, GQSKS3)(const fint *wkid, const fint *skdnr, const fint *type,
+                                const fint *n, const fint *mldr, fint *errind, fint *mode,
+                                fint *esw, fint *viewi, fint *tnr, fint *np, freal *pxa,
+                                freal *pya, freal *pza, fint *pet, freal *evol, fint *buflen,
+                                fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gstroke_st3 s = { 0 };
+    s.init_stroke.num_points = *n > STROKE_INQ_MAX ? *n : STROKE_INQ_MAX;
+    if (!(s.init_stroke.points =
+              alloc_array((size_t)s.init_stroke.num_points, sizeof(Gpoint3)))) {
+        *errind = 300;
+        return;
+    }
+    ginq_stroke_st3(*wkid, *skdnr, (Ginq_type)*type, errind, &s);
+    if (!*errind) {
+        *mode = s.op_mode;
+        *esw = s.echo_switch;
+        *pet = s.pet;
+        *viewi = s.init_view_ind;
+        *buflen = s.in_buf_size;
+        stroke3_out(&s.init_stroke, *n, tnr, np, pxa, pya, pza);
+        evol_out(&s.echo_vol, evol);
+        *errind = record_out(&s.in_data, *mldr, ldr, datrec, datrec_len);
+        if (!*errind && *np > *n)
+            *errind = 2001;
+    }
+    free(s.init_stroke.points);
+}
+
+/* The outputs common to the 3-D device state inquiries; returns ERRIND (0 or 2001). */
+#define DEV3_OUT(s)                                                                      \
+    (*mode = (s).op_mode, *esw = (s).echo_switch, *pet = (s).pet,                        \
+     evol_out(&(s).echo_vol, evol), record_out(&(s).in_data, *mldr, ldr, datrec, datrec_len))
+
+/* GQVLS3(WKID, VLDNR, MLDR, ERRIND, MODE, ESW, IVAL, PET, EVOL, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(gqvls3, GQVLS3)(const fint *wkid, const fint *vldnr, const fint *mldr,
+                                fint *errind, fint *mode, fint *esw, freal *ival, fint *pet,
+                                freal *evol, freal *loval, freal *hival, fint *ldr,
+                                char *datrec, size_t datrec_len)
+{
+    Gval_st3 s = { 0 };
+    ginq_val_st3(*wkid, *vldnr, errind, &s);
+    if (*errind)
+        return;
+    *ival = (freal)s.init_value;
+    *loval = (freal)s.low_value;
+    *hival = (freal)s.high_value;
+    *errind = DEV3_OUT(s);
+}
+
+/* GQCHS3(WKID, CHDNR, MLDR, ERRIND, MODE, ESW, ISTAT, ICHNR, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(gqchs3, GQCHS3)(const fint *wkid, const fint *chdnr, const fint *mldr,
+                                fint *errind, fint *mode, fint *esw, fint *istat, fint *ichnr,
+                                fint *pet, freal *evol, fint *ldr, char *datrec,
+                                size_t datrec_len)
+{
+    Gchoice_st3 s = { 0 };
+    ginq_choice_st3(*wkid, *chdnr, errind, &s);
+    if (*errind)
+        return;
+    *istat = s.init_status;
+    *ichnr = s.init_choice;
+    *errind = DEV3_OUT(s);
+}
+
+/* GQPKS3(WKID, PCDNR, TYPE, MLDR, ERRIND, MODE, ESW, ISTAT, ISGNA, IPCID, PET, EVOL, LDR,
+ *        DATREC) */
+FAPI void FNAME(gqpks3, GQPKS3)(const fint *wkid, const fint *pcdnr, const fint *type,
+                                const fint *mldr, fint *errind, fint *mode, fint *esw,
+                                fint *istat, fint *isgna, fint *ipcid, fint *pet, freal *evol,
+                                fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gpick_st3 s = { 0 };
+    ginq_pick_st3(*wkid, *pcdnr, (Ginq_type)*type, errind, &s);
+    if (*errind)
+        return;
+    *istat = s.init_status;
+    *isgna = s.init_pick.seg_name;
+    *ipcid = s.init_pick.pick_id;
+    *errind = DEV3_OUT(s);
+}
+
+/* GQSTS3(WKID, STDNR, MLDR, ERRIND, MODE, ESW, LOSTR, ISTR, PET, EVOL, BUFLEN, INIPOS, LDR,
+ *        DATREC) -- as GQSTS */
+FAPI void FNAME(gqsts3, GQSTS3)(const fint *wkid, const fint *stdnr, const fint *mldr,
+                                fint *errind, fint *mode, fint *esw, fint *lostr, char *istr,
+                                fint *pet, freal *evol, fint *buflen, fint *inipos,
+                                fint *ldr, char *datrec, size_t istr_len, size_t datrec_len)
+{
+    Gstring_st3 s = { 0 };
+    s.init_string = istr_len < SIZE_MAX ? alloc_array(istr_len + 1, 1) : NULL;
+    if (!s.init_string) {
+        *errind = 300;
+        return;
+    }
+    s.init_string[0] = '\0';
+    s.init_string_size = istr_len + 1;
+    ginq_string_st3(*wkid, *stdnr, errind, &s);
+    if (!*errind) {
+        *lostr = fill_fstr(s.init_string, istr, istr_len);
+        *buflen = s.in_buf_size;
+        *inipos = s.init_cur_pos;
+        *errind = DEV3_OUT(s);
+    }
+    free(s.init_string);
+}
+#undef DEV3_OUT
+
+/* The outputs common to the 3-D default-data inquiries (as def_out, echo volume). */
+static fint def3_out(const Gint_list *pets, const Glimit3 *vol, const Gin_data *rec, fint n,
+                     fint mldr, fint *ol, fint *pet, freal *evol, fint *ldr, char *datrec,
+                     size_t datrec_len)
+{
+    freal earea[4];
+    Gdef_in d = { *pets, { 0, 0, 0, 0 }, *rec };
+    fint e = def_out(&d, n, mldr, ol, pet, earea, ldr, datrec, datrec_len);
+    if (e != 2002)
+        evol_out(vol, evol);
+    return e;
+}
+
+/* Room for the first n prompt/echo types of a 3-D default-data inquiry; -1: no memory. */
+static int pets3_buffer(Gint_list *pets, fint n)
+{
+    Gdef_in d;
+    int r = pets_buffer(&d, n);
+    *pets = d.pets;
+    return r;
+}
+
+/* GQDSK3(WTYPE, SKDNR, N, MLDR, ERRIND, DBUFSK, OL, PET, EVOL, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqdsk3, GQDSK3)(const fint *wtype, const fint *skdnr, const fint *n,
+                                const fint *mldr, fint *errind, fint *dbufsk, fint *ol,
+                                fint *pet, freal *evol, fint *buflen, fint *ldr, char *datrec,
+                                size_t datrec_len)
+{
+    Gdef_stroke3 s = { 0 };
+    if (pets3_buffer(&s.pets, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_stroke_data3(*wtype, *skdnr, errind, &s);
+    if (!*errind) {
+        *dbufsk = s.max_buf_size;
+        *buflen = s.buf_size;
+        *errind = def3_out(&s.pets, &s.echo_vol, &s.in_data, *n, *mldr, ol, pet, evol, ldr,
+                           datrec, datrec_len);
+    }
+    free(s.pets.ints);
+}
+
+/* GQDVL3(WTYPE, VLDNR, N, MLDR, ERRIND, DVAL, OL, PET, EVOL, LOVAL, HIVAL, LDR, DATREC) */
+FAPI void FNAME(gqdvl3, GQDVL3)(const fint *wtype, const fint *vldnr, const fint *n,
+                                const fint *mldr, fint *errind, freal *dval, fint *ol,
+                                fint *pet, freal *evol, freal *loval, freal *hival, fint *ldr,
+                                char *datrec, size_t datrec_len)
+{
+    Gdef_val3 s = { 0 };
+    if (pets3_buffer(&s.dev.pets, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_val_data3(*wtype, *vldnr, errind, &s);
+    if (!*errind) {
+        *dval = (freal)s.value;
+        *loval = (freal)s.low_value;
+        *hival = (freal)s.high_value;
+        *errind = def3_out(&s.dev.pets, &s.dev.echo_vol, &s.dev.in_data, *n, *mldr, ol, pet,
+                           evol, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDCH3(WTYPE, CHDNR, N, MLDR, ERRIND, MALT, OL, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(gqdch3, GQDCH3)(const fint *wtype, const fint *chdnr, const fint *n,
+                                const fint *mldr, fint *errind, fint *malt, fint *ol,
+                                fint *pet, freal *evol, fint *ldr, char *datrec,
+                                size_t datrec_len)
+{
+    Gdef_choice3 s = { 0 };
+    if (pets3_buffer(&s.dev.pets, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_choice_data3(*wtype, *chdnr, errind, &s);
+    if (!*errind) {
+        *malt = s.max_choices;
+        *errind = def3_out(&s.dev.pets, &s.dev.echo_vol, &s.dev.in_data, *n, *mldr, ol, pet,
+                           evol, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* GQDPK3(WTYPE, PCDNR, N, MLDR, ERRIND, OL, PET, EVOL, LDR, DATREC) */
+FAPI void FNAME(gqdpk3, GQDPK3)(const fint *wtype, const fint *pcdnr, const fint *n,
+                                const fint *mldr, fint *errind, fint *ol, fint *pet,
+                                freal *evol, fint *ldr, char *datrec, size_t datrec_len)
+{
+    Gdef_in3 s = { 0 };
+    if (pets3_buffer(&s.pets, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_pick_data3(*wtype, *pcdnr, errind, &s);
+    if (!*errind)
+        *errind = def3_out(&s.pets, &s.echo_vol, &s.in_data, *n, *mldr, ol, pet, evol, ldr,
+                           datrec, datrec_len);
+    free(s.pets.ints);
+}
+
+/* GQDST3(WTYPE, STDNR, N, MLDR, ERRIND, MBUFF, OL, PET, EVOL, BUFLEN, LDR, DATREC) */
+FAPI void FNAME(gqdst3, GQDST3)(const fint *wtype, const fint *stdnr, const fint *n,
+                                const fint *mldr, fint *errind, fint *mbuff, fint *ol,
+                                fint *pet, freal *evol, fint *buflen, fint *ldr, char *datrec,
+                                size_t datrec_len)
+{
+    Gdef_string3 s = { 0 };
+    if (pets3_buffer(&s.dev.pets, *n)) {
+        *errind = 300;
+        return;
+    }
+    ginq_def_string_data3(*wtype, *stdnr, errind, &s);
+    if (!*errind) {
+        *mbuff = s.max_buf_size;
+        *buflen = s.buf_size;
+        *errind = def3_out(&s.dev.pets, &s.dev.echo_vol, &s.dev.in_data, *n, *mldr, ol, pet,
+                           evol, ldr, datrec, datrec_len);
+    }
+    free(s.dev.pets.ints);
+}
+
+/* ---- The FORTRAN 77 subset forms of the string functions (ISO 8651-1 3.4: for
+ * compilers without CHARACTER*(*), STR declared CHARACTER*80 by the program). Their
+ * argument lists are those of the full forms, which already carry the lengths
+ * explicitly (LSTR in, LOSTR out); the characters' count is taken from the CHARACTER
+ * passed, as there. ---- */
+
+/* GINSTS(WKID, STDNR, LSTR, ISTR, PET, XMIN, XMAX, YMIN, YMAX, BUFLEN, INIPOS, LDR, DATREC) */
+FAPI void FNAME(ginsts, GINSTS)(const fint *wkid, const fint *stdnr, const fint *lstr,
+                                const char *istr, const fint *pet, const freal *xmin,
+                                const freal *xmax, const freal *ymin, const freal *ymax,
+                                const fint *buflen, const fint *inipos, const fint *ldr,
+                                const char *datrec, size_t istr_len, size_t datrec_len)
+{
+    FNAME(ginst, GINST)(wkid, stdnr, lstr, istr, pet, xmin, xmax, ymin, ymax, buflen, inipos,
+                        ldr, datrec, istr_len, datrec_len);
+}
+
+/* GRQSTS(WKID, STDNR, STAT, LOSTR, STR) */
+FAPI void FNAME(grqsts, GRQSTS)(const fint *wkid, const fint *stdnr, fint *stat, fint *lostr,
+                                char *str, size_t str_len)
+{
+    FNAME(grqst, GRQST)(wkid, stdnr, stat, lostr, str, str_len);
+}
+
+/* GSMSTS(WKID, STDNR, LOSTR, STR) */
+FAPI void FNAME(gsmsts, GSMSTS)(const fint *wkid, const fint *stdnr, fint *lostr, char *str,
+                                size_t str_len)
+{
+    FNAME(gsmst, GSMST)(wkid, stdnr, lostr, str, str_len);
+}
+
+/* GGTSTS(LOSTR, STR) */
+FAPI void FNAME(ggtsts, GGTSTS)(fint *lostr, char *str, size_t str_len)
+{
+    FNAME(ggtst, GGTST)(lostr, str, str_len);
+}
+
+/* GQSTSS(WKID, STDNR, MLDR, ERRIND, MODE, ESW, LOSTR, ISTR, PET, EAREA, BUFLEN, INIPOS, LDR,
+ *        DATREC) */
+FAPI void FNAME(gqstss, GQSTSS)(const fint *wkid, const fint *stdnr, const fint *mldr,
+                                fint *errind, fint *mode, fint *esw, fint *lostr, char *istr,
+                                fint *pet, freal *earea, fint *buflen, fint *inipos,
+                                fint *ldr, char *datrec, size_t istr_len, size_t datrec_len)
+{
+    FNAME(gqsts, GQSTS)(wkid, stdnr, mldr, errind, mode, esw, lostr, istr, pet, earea, buflen,
+                        inipos, ldr, datrec, istr_len, datrec_len);
 }

@@ -611,6 +611,23 @@ static void test_init_checks_and_inquiries(void **u)
     ginq_loc_st3(WS, 2, GINQ_REALIZED, &err, &l3);
     assert_int_equal(err, 0);
     assert_float_equal(l3.echo_vol.z_max, 1, 0);
+    /* STROKE 3 state: the initial stroke, capped at the caller's capacity */
+    Gpoint3 ip[2] = { { 0.1, 0.2, 0.3 }, { 0.4, 0.5, 0.6 } }, op[2];
+    Gstroke3 is3 = { 0, 2, ip };
+    Glimit3 ev = { 0, 512, 0, 256, 0, 0.5 };
+    ginit_stroke3(WS, 2, 0, &is3, 1, &ev, 40, NULL);
+    Gstroke_st3 k3 = { .init_stroke = { 0, 1, op } };
+    ginq_stroke_st3(WS, 2, GINQ_SET, &err, &k3);
+    assert_int_equal(err, 0);
+    assert_true(k3.in_buf_size == 40 && k3.init_stroke.num_points == 1 && k3.pet == 1);
+    assert_float_equal(op[0].z, 0.3, 1e-12);
+    assert_float_equal(k3.echo_vol.y_max, 256, 0);
+    k3.init_stroke = (Gstroke3){ 0, 2, op };
+    ginq_stroke_st3(WS, 2, GINQ_REALIZED, &err, &k3);
+    assert_true(err == 0 && k3.init_stroke.num_points == 2);
+    assert_float_equal(op[1].y, 0.5, 1e-12);
+    ginq_stroke_st3(WS, 2, (Ginq_type)9, &err, &k3);
+    assert_int_equal(err, 2000);
     char buf[8];
     Gstring_st ss = { .init_string = buf, .init_string_size = sizeof buf };
     ginq_string_st(WS, 2, &err, &ss);

@@ -3,6 +3,7 @@
 # install_test.sh MODE BUILD_DIR WORK_DIR SANITIZE_FLAGS
 # Tests of the installed gks3d package. MODE:
 #   install   cmake --install BUILD_DIR --prefix WORK_DIR/prefix (fresh)
+#   symbols   tests/core/check_symbols.sh --installed on it (exports, hooks, RUNPATH, version)
 #   cmake-c   configure, build and run tests/install/consumer_c via find_package(gks3d)
 #   pkgconfig compile consumer_c/consumer.c with `pkg-config --cflags --libs gks3d`, run it
 #   fortran   configure, build and run tests/install/consumer_f77 via find_package(gks3d)
@@ -43,11 +44,16 @@ install)
     [ ! -e "$prefix/include/gks3d/gksrt.h" ] || { echo "gksrt.h is installed"; exit 1; }
     ls "$prefix"/lib*/libgks3d.a "$prefix"/lib*/libgks3d.so* "$prefix"/lib*/cmake/gks3d/gks3dConfig.cmake \
        "$prefix"/lib*/pkgconfig/gks3d.pc >/dev/null
-    # libgks3d.a must be self-contained: objects of the internal modules are inside.
-    for o in xform_matrix raster_fb rt_trace; do
-        ar t "$prefix"/lib*/libgks3d.a | grep -q "^$o" || { echo "libgks3d.a lacks $o"; exit 1; }
+    # libgks3d.a must be self-contained: the code of the internal modules is inside (as
+    # local names of its one prelinked object), and none of it is left undefined.
+    a=$(ls "$prefix"/lib*/libgks3d.a | head -1)
+    for f in gks_xform_ gks_raster_ rt_ ws_ gks_mf_; do
+        nm "$a" | grep -q " t $f" || { echo "libgks3d.a lacks the code of ${f}*"; exit 1; }
+        if nm -u "$a" | grep -q " U $f"; then echo "libgks3d.a needs ${f}* from outside"; exit 1; fi
     done
     echo "installed into $prefix" ;;
+symbols)
+    sh "$here/../core/check_symbols.sh" --installed "$here/../core/exported_symbols.txt" "$prefix" ;;
 cmake-c)
     consumer consumer_c
     cd "$work/consumer_c"

@@ -6,8 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Failure injection state: the only mutable file-level state besides the context; it
- * exists for the tests (SQLite test_malloc style) and costs one branch per allocation.
+#ifdef GKS_FAULT_INJECTION
+/* Failure injection state (SQLite test_malloc style), only in the test build of the
+ * modules (gks3d_test, src/c/CMakeLists.txt); the installed libraries have none.
  * Atomic: the tracer's worker threads allocate through this funnel too. */
 static atomic_long fail_countdown; /* 0 = off; k = the kth allocation from now fails */
 static atomic_long alloc_count;
@@ -22,6 +23,9 @@ static int injected_failure(void)
             return c == 1;
     return 0;
 }
+#else
+static int injected_failure(void) { return 0; }
+#endif
 
 static int size_ok(size_t n, size_t size, size_t *bytes)
 {
@@ -78,6 +82,7 @@ void gks_free(void *p)
     free(p);
 }
 
+#ifdef GKS_FAULT_INJECTION
 GKS_TEST_API void gks_alloc_fail_after(long n)
 {
     atomic_store(&fail_countdown, n > 0 ? n : 0);
@@ -87,3 +92,4 @@ GKS_TEST_API long gks_alloc_count(void)
 {
     return atomic_load(&alloc_count);
 }
+#endif

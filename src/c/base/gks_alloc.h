@@ -22,8 +22,10 @@ char *gks_strdup(const char *s);
 char *gks_strndup(const char *s, size_t n);
 void gks_free(void *p);
 
-/* Test hook: make the Nth allocation from now fail (0 = never). Returns nothing; the
- * counter can be read with gks_alloc_count(). Exported for the tests only. */
+#ifdef GKS_FAULT_INJECTION
+/* Test hooks, only in the test build of the modules (gks3d_test): make the Nth allocation
+ * from now fail (0 = never); gks_alloc_count() counts the allocations made so far. */
 void gks_alloc_fail_after(long n);
 long gks_alloc_count(void);
+#endif
 #endif

@@ -322,19 +322,23 @@ static void prim_common(gks_prim *p, const gks_cur_attrs *a)
     p->shading[1] = a->int_shad[1];
 }
 
-/* Test hook (exported for the tests only): every primitive a driver receives is first
- * passed to hook (NULL = none). */
+#ifdef GKS_FAULT_INJECTION
+/* Test hook, only in the test build of the modules (gks3d_test): every primitive a
+ * driver receives is first passed to hook (NULL = none). */
 GKS_TEST_API void gks_test_set_prim_hook(gks_prim_hook hook, void *ctx)
 {
     gks_ctx()->prim_hook = hook;
     gks_ctx()->prim_hook_ctx = ctx;
 }
+#endif
 
 static int send(gks_ws *ws, const gks_prim *p)
 {
+#ifdef GKS_FAULT_INJECTION
     gks_context *c = gks_ctx();
     if (c->prim_hook)
         c->prim_hook(c->prim_hook_ctx, ws->id, p);
+#endif
     if (!ws->drv->primitive)
         return 0;
     int err = ws->drv->primitive(ws, p);
