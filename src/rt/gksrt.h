@@ -120,6 +120,11 @@ RT_API rt_scene *rt_scene_new(void);
 /* Frees a scene (NULL allowed). */
 RT_API void rt_scene_free(rt_scene *sc);
 
+/* Coordinate range: a primitive with a vertex coordinate of magnitude above RT_COORD_MAX is
+ * dropped at commit (products of such coordinates would overflow in the intersection
+ * tests). The GKS workstation clips larger polygons before they get here. */
+#define RT_COORD_MAX 1e100
+
 /* GKS FILL AREA (nloops = 1) / FILL AREA SET (nloops > 1) in VRC3: loop k has loop_counts[k]
  * vertices, xyz holds all vertices of all loops consecutively (x,y,z each). Interior by the
  * even-odd rule over all loops; concave, self-intersecting, repeated or collinear vertices and

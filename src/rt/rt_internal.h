@@ -10,6 +10,7 @@
 #endif
 
 #include "gksrt.h"
+#include "rt_polygon.h"
 #include <stddef.h>
 #include <stdint.h>
 
@@ -60,6 +61,7 @@ typedef struct rt_poly {
     int cin;            /* ... in which every point has this even-odd parity */
     uint32_t nslab;     /* horizontal slabs over [vmin,vmax]; edge lists per slab */
     size_t slab0;       /* first entry in scene slab_off (nslab + 1 entries) */
+    uint32_t pgrid;     /* 1 + index in scene pgrid (a big polygon's grid, rt_polygon.h), 0 */
 } rt_poly;
 
 typedef struct rt_cell {
@@ -172,6 +174,7 @@ struct rt_scene {
     uint32_t *loops; size_t nloops;   /* loop vertex counts of committed polygons */
     size_t *slab_off; size_t nslab_off; /* per polygon slab: first edge in edges */
     double *edges; size_t nedges;     /* (qu, qv, au, av) per edge per slab */
+    rt_pgrid *pgrid;                  /* per polygon (npoly), for those with pgrid != 0 */
     int use_grid;
     rt_grid grid;
     double bbox[6];                   /* lo xyz, hi xyz of kept primitives */

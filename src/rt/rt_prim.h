@@ -116,6 +116,12 @@ static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_p
         *tout = t;
         return 1;
     }
+    if (p->pgrid) { /* a big polygon: its point-in-polygon grid, the same rule */
+        if (!rt_pgrid_parity(&sc->pgrid[p->pgrid - 1], pu, pv))
+            return 0;
+        *tout = t;
+        return 1;
+    }
     uint32_t s = 0;
     if (p->nslab > 1) {
         double f = (pv - p->vmin) * p->inv_h;

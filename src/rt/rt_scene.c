@@ -17,9 +17,7 @@ static int fin3(const double v[3])
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
 }
 
-/* geometry coordinates beyond this magnitude are dropped at commit (no overflow in tests) */
-#define RT_COORD_MAX 1e100
-
+/* geometry coordinates beyond RT_COORD_MAX (gksrt.h) are dropped at commit */
 static int sane3(const double v[3])
 {
     return fin3(v) && fabs(v[0]) <= RT_COORD_MAX && fabs(v[1]) <= RT_COORD_MAX &&
@@ -48,6 +46,9 @@ rt_scene *rt_scene_new(void)
 
 static void rt_scene_uncommit(rt_scene *sc)
 {
+    for (size_t k = 0; sc->pgrid && k < sc->npoly; k++)
+        rt_pgrid_free(&sc->pgrid[k]);
+    free(sc->pgrid); sc->pgrid = NULL;
     free(sc->prim); sc->prim = NULL; sc->nprim = 0;
     if (sc->tri_owned)
         free(sc->tri);
@@ -773,6 +774,23 @@ static int rt_poly_slabs(rt_scene *sc)
                 break;
             ns /= 2;
         }
+        /* a big polygon whose slabs stay crowded (long edges, many turns): its grid */
+        p->pgrid = 0;
+        if (nv >= RT_PGRID_MIN_EDGES && entries > 64 * ns) {
+            if (!sc->pgrid)
+                sc->pgrid = rt_calloc_array(sc->npoly, sizeof *sc->pgrid);
+            if (!sc->pgrid)
+                return RT_ERR_NOMEM;
+            if (rt_pgrid_build(&sc->pgrid[k], sc->uv + 2 * (size_t)p->uv0,
+                               sc->loops + p->loop0, p->nloops, p->umin, p->umax, p->vmin,
+                               p->vmax) == 0) {
+                p->pgrid = (uint32_t)k + 1;
+                ns = 1;
+                p->nslab = 1;
+                p->inv_h = 0.0;
+                entries = 0;
+            }
+        }
         p->slab0 = nslab_tot;
         nslab_tot += ns + 1;
         nedge_tot += entries;
@@ -790,7 +808,7 @@ static int rt_poly_slabs(rt_scene *sc)
             so[s] = 0;
         for (int pass = 0; pass < 2; pass++) {
             const double *lu = sc->uv + 2 * (size_t)p->uv0;
-            for (uint32_t l = 0; l < p->nloops; l++) {
+            for (uint32_t l = 0; l < (p->pgrid ? 0 : p->nloops); l++) {
                 uint32_t m = sc->loops[p->loop0 + l];
                 const double *q = lu + 2 * (size_t)(m - 1);
                 for (uint32_t i = 0; i < m; i++) {
@@ -860,6 +878,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                                            (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
                                            (sc->grid.dist ? sc->grid.ncells * sizeof(uint8_t) : 0)
                                      : 0);
+    for (size_t k = 0; sc->pgrid && k < sc->npoly; k++)
+        sc->memory_bytes += rt_pgrid_bytes(&sc->pgrid[k]);
     sc->build_seconds = rt_now() - t0;
     sc->committed = 1;
     return RT_OK;

@@ -179,6 +179,24 @@ static char *usable_file(const char *path, int write, int *err)
     return c;
 }
 
+/* 1 if an open workstation other than self writes or reads the file canon (its file at
+ * OPEN or one it claimed later). */
+static int file_in_use(const gks_ws *self, const char *canon)
+{
+    const gks_context *c = gks_ctx();
+    for (int i = 0; c->sl && i < c->sl->n_open; i++) {
+        const gks_ws *o = c->ws[i];
+        if (o == self)
+            continue;
+        if (o->file && strcmp(o->file, canon) == 0)
+            return 1;
+        for (int k = 0; k < o->n_files; k++)
+            if (strcmp(o->files[k], canon) == 0)
+                return 1;
+    }
+    return 0;
+}
+
 int gks_ws_file_check(gks_ws *ws)
 {
     if (!ws->drv->file)
@@ -195,13 +213,42 @@ int gks_ws_file_check(gks_ws *ws)
     gks_free(path);
     if (!canon)
         return err;
-    const gks_context *c = gks_ctx();
-    for (int i = 0; c->sl && i < c->sl->n_open; i++)
-        if (c->ws[i]->file && strcmp(c->ws[i]->file, canon) == 0) {
-            gks_free(canon);
-            return 21; /* the connection (its file) is in use by another workstation */
-        }
+    if (file_in_use(ws, canon)) {
+        gks_free(canon);
+        return 21; /* the connection (its file) is in use by another workstation */
+    }
     ws->file = canon;
+    return 0;
+}
+
+int gks_ws_file_claim(gks_ws *ws, const char *path)
+{
+    int err;
+    char *canon = usable_file(path, 1, &err);
+    if (!canon)
+        return err;
+    int own = ws->file && strcmp(ws->file, canon) == 0;
+    for (int k = 0; !own && k < ws->n_files; k++)
+        own = strcmp(ws->files[k], canon) == 0;
+    if (own) {
+        gks_free(canon);
+        return 0;
+    }
+    if (file_in_use(ws, canon)) {
+        gks_free(canon);
+        return 21;
+    }
+    if (ws->n_files == ws->cap_files) {
+        int cap = ws->cap_files ? 2 * ws->cap_files : 4;
+        char **f = cap > 0 ? gks_realloc_array(ws->files, (size_t)cap, sizeof *f) : NULL;
+        if (!f) {
+            gks_free(canon);
+            return 300;
+        }
+        ws->files = f;
+        ws->cap_files = cap;
+    }
+    ws->files[ws->n_files++] = canon;
     return 0;
 }
 
@@ -212,6 +259,9 @@ void gks_ws_destroy(gks_ws *ws)
     gks_in_ws_close(ws);
     gks_free(ws->conn_id);
     gks_free(ws->file);
+    for (int k = 0; k < ws->n_files; k++)
+        gks_free(ws->files[k]);
+    gks_free(ws->files);
     gks_free(ws->colr);
     gks_free(ws->colr_defined);
     for (int i = 0; i <= GKS_WDT_MAX_BUNDLES; i++)

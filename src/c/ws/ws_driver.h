@@ -107,6 +107,8 @@ struct gks_ws {
     int id;
     char *conn_id;
     char *file;                   /* canonical path of the file it writes/reads, or NULL */
+    char **files;                 /* canonical paths of the other files it wrote or will */
+    int n_files, cap_files;       /* write (later frames, ESCAPE file names): gks_ws_file_claim */
     const gks_ws_driver *drv;
     Gws_st state;
     Gdefer_mode defer_mode;
@@ -188,4 +190,10 @@ extern const gks_ws_driver gks_ws_svg_driver;
 extern const gks_ws_driver gks_ws_ps_driver;
 extern const gks_ws_driver gks_ws_eps_driver;
 #endif
+/* A file workstation is about to create or replace the file `path` (a frame after the first,
+ * a name an ESCAPE set; frame 1 of the name opened may be passed too). 0 if no other open
+ * workstation writes or reads that file (canonical paths compared, as at OPEN); its path is
+ * then ws's for as long as ws is open. 21 if another one uses it (nothing is written), 26
+ * if it is not a regular file or cannot be created, 300. Implemented in core (gks_ws.c). */
+int gks_ws_file_claim(gks_ws *ws, const char *path);
 #endif

@@ -576,12 +576,18 @@ static int page_emit(vec_ws *v)
 }
 
 /* SVG / EPS: the frame's file. */
-static int file_write(vec_ws *v)
+static int file_write(gks_ws *ws, vec_ws *v)
 {
     double w = v->snap.w_pt, h = v->snap.h_pt;
     char *path = gks_ws_file_frame(v->base, v->frame, vec_ext[v->fmt]);
     if (!path)
         return 300;
+    /* a later frame's name may be another workstation's file: 21, nothing written */
+    int c = gks_ws_file_claim(ws, path);
+    if (c) {
+        gks_free(path);
+        return c;
+    }
     cairo_surface_t *s;
     vec_buf b = { 0 };
     if (v->fmt == VEC_SVG) {
@@ -616,7 +622,7 @@ static int vec_update(gks_ws *ws)
         return 0;
     int e = snap_take(ws, v);
     if (!e && (v->fmt == VEC_SVG || v->fmt == VEC_EPS))
-        e = file_write(v);
+        e = file_write(ws, v);
     if (e)
         return e;
     v->dirty = 0;
@@ -747,8 +753,15 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
     char *b = gks_strndup(in->str, in->str_len);
-    if (!b)
-        return 300;
+    /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
+    int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
+    char *f = b ? gks_ws_file_frame(b, fr, vec_ext[v->fmt]) : NULL;
+    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
+    gks_free(f);
+    if (e) {
+        gks_free(b);
+        return e;
+    }
     gks_free(v->base);
     v->base = b;
     return 0;
@@ -773,14 +786,27 @@ static const gks_ws_desc svg_desc = VEC_DESC(GWS_TYPE_SVG, "svg");
 static const gks_ws_desc ps_desc = VEC_DESC(GWS_TYPE_PS, "ps");
 static const gks_ws_desc eps_desc = VEC_DESC(GWS_TYPE_EPS, "eps");
 
-#define VEC_DRIVER(DESC, OPEN)                                                         \
+/* The file of frame 1 (OPEN WORKSTATION's check that no other workstation uses it: 21). */
+static int vec_file_fmt(const gks_ws *ws, vec_format fmt, char **path)
+{
+    char *b = gks_ws_file_base(ws->conn_id, vec_ext[fmt]);
+    *path = b ? gks_ws_file_frame(b, 1, vec_ext[fmt]) : NULL;
+    gks_free(b);
+    return *path ? 0 : 300;
+}
+static int pdf_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_PDF, p); }
+static int svg_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_SVG, p); }
+static int ps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_PS, p); }
+static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EPS, p); }
+
+#define VEC_DRIVER(DESC, OPEN, FILE)                                                   \
     {                                                                                  \
-        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN,                 \
+        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN, .file = FILE,   \
         .close = vec_close, .clear = vec_clear, .update = vec_update,                  \
         .primitive = vec_primitive, .message = vec_message, .escape = vec_escape,      \
     }
 
-const gks_ws_driver gks_ws_pdf_driver = VEC_DRIVER(pdf_desc, pdf_open);
-const gks_ws_driver gks_ws_svg_driver = VEC_DRIVER(svg_desc, svg_open);
-const gks_ws_driver gks_ws_ps_driver = VEC_DRIVER(ps_desc, ps_open);
-const gks_ws_driver gks_ws_eps_driver = VEC_DRIVER(eps_desc, eps_open);
+const gks_ws_driver gks_ws_pdf_driver = VEC_DRIVER(pdf_desc, pdf_open, pdf_file);
+const gks_ws_driver gks_ws_svg_driver = VEC_DRIVER(svg_desc, svg_open, svg_file);
+const gks_ws_driver gks_ws_ps_driver = VEC_DRIVER(ps_desc, ps_open, ps_file);
+const gks_ws_driver gks_ws_eps_driver = VEC_DRIVER(eps_desc, eps_open, eps_file);

@@ -186,6 +186,12 @@ static int png_update(gks_ws *ws)
     char *path = gks_ws_file_frame(p->base, p->frame, ".png");
     if (!path)
         return 300;
+    /* a later frame's name, or one an ESCAPE set, may be another workstation's file */
+    int c = gks_ws_file_claim(ws, path);
+    if (c) {
+        gks_free(path);
+        return c;
+    }
     int r = gks_raster_fb_write_png(pic, path, p->compression);
     gks_free(path);
     if (r != GKS_RASTER_OK)
@@ -215,8 +221,9 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
         return 300;
     if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
         (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY)) {
-        if (ws_rt_record(p->rt, ws, prim))
-            return 300;
+        int e = ws_rt_record(p->rt, ws, prim); /* 300, or 308 (coordinate range) */
+        if (e)
+            return e;
         p->dirty = 1;
         return 0;
     }
@@ -260,8 +267,13 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
     char *b = gks_strndup(in->str, in->str_len);
-    if (!b)
-        return 300;
+    char *f = b ? gks_ws_file_frame(b, p->frame, ".png") : NULL;
+    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
+    gks_free(f);
+    if (e) {
+        gks_free(b);
+        return e;
+    }
     gks_free(p->base);
     p->base = b;
     return 0;

@@ -208,6 +208,124 @@ static int view_surfaces(ws_rt *r, int vi, const rt_attr *a, rt_view_rec **vrp)
     return 0;
 }
 
+static int display_volume(const gks_ws *ws, const Gview_rep3 *v, double b[6]);
+
+/* The box (lo xyz, hi xyz) to which the polygons of view v beyond the tracer's coordinate
+ * range are clipped: the display volume's VRC3 box enlarged 1000 times about its centre
+ * (so reflections still see the polygon around it). 0 if that box is itself out of range
+ * (a view mapping of enormous scale) or the view shows nothing. */
+static int far_clip_box(const gks_ws *ws, const Gview_rep3 *v, double cb[6])
+{
+    double b[6], inv[4][4];
+    if (!display_volume(ws, v, b) || gks_xform_invert(v->map_matrix, inv))
+        return 0;
+    double lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (int k = 0; k < 8; k++) {
+        const double c[3] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)] };
+        double q[3];
+        if (!(gks_xform_point(inv, c, q) != 0.0))
+            return 0;
+        for (int j = 0; j < 3; j++) {
+            lo[j] = fmin(lo[j], q[j]);
+            hi[j] = fmax(hi[j], q[j]);
+        }
+    }
+    double h = 0.0;
+    for (int j = 0; j < 3; j++)
+        h = fmax(h, 0.5 * (hi[j] - lo[j]));
+    for (int j = 0; j < 3; j++) {
+        double c = 0.5 * (lo[j] + hi[j]);
+        cb[j] = c - 1000.0 * h;
+        cb[3 + j] = c + 1000.0 * h;
+        if (!(fabs(cb[j]) <= 0.25 * RT_COORD_MAX && fabs(cb[3 + j]) <= 0.25 * RT_COORD_MAX))
+            return 0;
+    }
+    return h > 0.0;
+}
+
+/* Sutherland-Hodgman clip of the loops (counts, n_loops; points of st doubles, xyz first, then
+ * vertex data interpolated alike) to box cb: the even-odd interior inside the box is kept
+ * (the parts outside are replaced by paths on the box). Interpolation in long double, whose
+ * range holds the difference of two doubles. Returns the new points (gks_alloc'ed) with
+ * their counts in *out_counts (loops of fewer than 3 points left out) and *out_loops; NULL
+ * + *out_loops 0 if nothing is left; NULL + 300. */
+static double *clip_loops(const double *xyz, size_t st, const int *counts, int n_loops,
+                          const double cb[6], int **out_counts, int *out_loops, int *err)
+{
+    double *res = NULL, *a = NULL, *b = NULL;
+    int *rc = gks_alloc_array((size_t)n_loops, sizeof *rc);
+    size_t nres = 0, capres = 0;
+    int nl = 0;
+    *err = 300;
+    *out_loops = 0;
+    if (!rc)
+        return NULL;
+    const double *src = xyz;
+    for (int k = 0; k < n_loops; src += st * (size_t)counts[k], k++) {
+        size_t m = (size_t)counts[k];
+        gks_free(a);
+        a = gks_alloc_array(m, st * sizeof *a);
+        if (!a)
+            goto fail;
+        memcpy(a, src, m * st * sizeof *a);
+        for (int f = 0; f < 6 && m >= 3; f++) {
+            const int j = f % 3, upper = f >= 3;
+            const double L = cb[f];
+            b = gks_alloc_array(2 * m, st * sizeof *b); /* a half-space clip: <= 2m points */
+            if (!b)
+                goto fail;
+            size_t o = 0;
+            for (size_t i = 0; i < m; i++) {
+                const double *p = a + st * i, *q = a + st * ((i + 1) % m);
+                const int pin = upper ? p[j] <= L : p[j] >= L;
+                const int qin = upper ? q[j] <= L : q[j] >= L;
+                if (pin)
+                    memcpy(b + st * o++, p, st * sizeof *b);
+                if (pin != qin) {
+                    long double t = ((long double)L - p[j]) / ((long double)q[j] - p[j]);
+                    for (size_t c = 0; c < st; c++)
+                        b[st * o + c] =
+                            (double)(p[c] + t * ((long double)q[c] - (long double)p[c]));
+                    b[st * o + j] = L;
+                    o++;
+                }
+            }
+            gks_free(a);
+            a = b;
+            b = NULL;
+            m = o;
+        }
+        if (m < 3)
+            continue;
+        if (nres + m > capres) {
+            capres = 2 * (nres + m);
+            double *nr = gks_realloc_array(res, capres, st * sizeof *res);
+            if (!nr)
+                goto fail;
+            res = nr;
+        }
+        memcpy(res + st * nres, a, m * st * sizeof *a);
+        nres += m;
+        rc[nl++] = (int)m;
+    }
+    gks_free(a);
+    *err = 0;
+    if (nl == 0) {
+        gks_free(rc);
+        gks_free(res);
+        return NULL;
+    }
+    *out_counts = rc;
+    *out_loops = nl;
+    return res;
+fail:
+    gks_free(a);
+    gks_free(b);
+    gks_free(res);
+    gks_free(rc);
+    return NULL;
+}
+
 /* The matrix that carries normals through the linear part A of m: the cofactor matrix of A
  * (det(A) A^-T), with the sign of det(A) so that it keeps their sense; normals are
  * renormalised after it. */
@@ -223,6 +341,63 @@ static void normal_matrix(const Gmatrix3 m, double c[3][3])
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
                 c[i][j] = -c[i][j];
+}
+
+/* A polygon (VRC3 points xyz, vertex data vd) beyond the tracer's coordinate range, clipped
+ * to far_clip_box with its vertex data (normals renormalised) and recorded. 0, 300 or 308
+ * (docs/RAYTRACING.md, "Coordinate range"). */
+static int push_far_polygon(ws_rt *r, const gks_ws *ws, rt_view_rec *vr, const Gview_rep3 *v,
+                            int n_loops, const int *counts, size_t n_pts, const double *xyz,
+                            const rt_vertex_data *vd)
+{
+    double cb[6];
+    if (!far_clip_box(ws, v, cb))
+        return 308;
+    const size_t st = 3 + (vd->normals ? 3 : 0) + (vd->colours ? 3 : 0);
+    double *pk = gks_alloc_array(n_pts, st * sizeof *pk);
+    if (!pk)
+        return 300;
+    for (size_t i = 0; i < n_pts; i++) {
+        double *d = pk + st * i;
+        memcpy(d, xyz + 3 * i, 3 * sizeof *d);
+        if (vd->normals)
+            memcpy(d + 3, vd->normals + 3 * i, 3 * sizeof *d);
+        if (vd->colours)
+            memcpy(d + st - 3, vd->colours + 3 * i, 3 * sizeof *d);
+    }
+    int *cc = NULL, nc = 0, err = 0;
+    double *cp = clip_loops(pk, st, counts, n_loops, cb, &cc, &nc, &err);
+    gks_free(pk);
+    if (err || !cp)
+        return err; /* 300, or nothing near the display volume: nothing to trace */
+    size_t m = 0;
+    for (int k = 0; k < nc; k++)
+        m += (size_t)cc[k];
+    double *cx = gks_alloc_array(m, 9 * sizeof *cx);
+    int id = RT_ERR_NOMEM;
+    if (cx) {
+        double *cn = vd->normals ? cx + 3 * m : NULL, *ccol = vd->colours ? cx + 6 * m : NULL;
+        for (size_t i = 0; i < m; i++) {
+            const double *d = cp + st * i;
+            memcpy(cx + 3 * i, d, 3 * sizeof *cx);
+            if (cn) {
+                const double l = sqrt(d[3] * d[3] + d[4] * d[4] + d[5] * d[5]);
+                for (int k = 0; k < 3; k++)
+                    cn[3 * i + k] = l > 0 && isfinite(l) ? d[3 + k] / l : 0.0;
+            }
+            if (ccol)
+                memcpy(ccol + 3 * i, d + st - 3, 3 * sizeof *ccol);
+        }
+        const rt_vertex_data cvd = { cn, ccol };
+        id = rt_scene_add_polygon_data(vr->sc, nc, cc, cx, &cvd, vr->f, vr->b);
+    }
+    gks_free(cx);
+    gks_free(cp);
+    gks_free(cc);
+    if (id < 0)
+        return gks_err_of_rt(id);
+    r->count++;
+    return 0;
 }
 
 /* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
@@ -254,6 +429,13 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
         }
     }
     const rt_vertex_data vd = { vn, vc };
+    /* Beyond the tracer's range (it would drop the polygon, the classic modes draw it):
+     * clipped to a box around the display volume. Other polygons go in unchanged. */
+    double big = 0.0;
+    for (size_t i = 0; i < 3 * n_pts; i++)
+        big = fmax(big, fabs(xyz[i]));
+    if (big > RT_COORD_MAX)
+        return push_far_polygon(r, ws, vr, v, n_loops, counts, n_pts, xyz, &vd);
     int id = rt_scene_add_polygon_data(vr->sc, n_loops, counts, xyz, &vd, vr->f, vr->b);
     if (id < 0)
         return gks_err_of_rt(id);
@@ -281,6 +463,14 @@ static int push_cells(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, cons
     const double *in[3] = { P, Q, R };
     for (int k = 0; k < 3; k++)
         xf_point(v->ori_matrix, in[k][0], in[k][1], in[k][2], c[k]);
+    /* a cell array beyond the tracer's coordinate range (its fourth corner P + Q - R
+     * included) is not clipped: 308 instead of a silent omission (docs/RAYTRACING.md) */
+    for (int k = 0; k < 3; k++)
+        if (!(fabs(c[0][k]) <= 0.5 * RT_COORD_MAX && fabs(c[1][k]) <= 0.5 * RT_COORD_MAX &&
+              fabs(c[2][k]) <= 0.5 * RT_COORD_MAX)) {
+            gks_free(rgb);
+            return 308;
+        }
     float *d = rgb;
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) {
