@@ -16,7 +16,8 @@
  * SIZE x SIZE pixels (default 256) with rt_render_options_default (corner rays; their mirror
  * rays see only the background or the surface itself), one thread. Time: process CPU of
  * commit (grid build) + rt_render, best of R (default 3). Error: RMSE over all pixels and
- * channels of the clamped linear RGB, PSNR, largest channel error. Prints a table and the
+ * channels of the clamped linear RGB, PSNR, largest channel error, and the RMSE over the
+ * pixels both pictures cover fully (the shading away from the outline). Prints a table and the
  * coarsest interpolated mesh whose RMSE is below the finest flat one's; -csv appends rows in
  * the columns of speed_error's CSV (scene "sphere-tess"/"surface-tess", label "8f"/"8i",
  * ssim empty); -o writes DIR/<scene>_<N><f|i>.ppm and DIR/<scene>_ref.ppm.
@@ -131,7 +132,7 @@ static rt_scene *build(const scene_def *d, int N, int normals)
 }
 
 /* the exact sphere along one ray (VRC3; the sphere's centre is the VRC3 image of 0) */
-static void exact_sphere(const scene_def *d, const rt_ray *r, double out[3])
+static int exact_sphere(const scene_def *d, const rt_ray *r, double out[3])
 {
     double c[3], o[3];
     const double zero[3] = {0, 0, 0};
@@ -142,10 +143,10 @@ static void exact_sphere(const scene_def *d, const rt_ray *r, double out[3])
     double cc = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - 1.0;
     out[0] = out[1] = out[2] = 0.0;
     if (b * b - cc < 0.0)
-        return;
+        return 0;
     double t = -b - sqrt(b * b - cc);
     if (t < r->tmin || t > r->tmax)
-        return;
+        return 0;
     double N[3], P[3];
     for (int k = 0; k < 3; k++) {
         N[k] = o[k] + t * r->dir[k];
@@ -173,30 +174,36 @@ static void exact_sphere(const scene_def *d, const rt_ray *r, double out[3])
         out[k] = s->ka * s->diffuse[k] * d->light[0].color[k] +
                  (nl > 0.0 ? att * l->color[k] * (s->kd * s->diffuse[k] * nl + sp * s->specular[k])
                            : 0.0);
+    return 1;
 }
 
 /* the exact sphere with the renderer's corner rays: each pixel the mean of its 4 corners */
-static void exact_image(const scene_def *d, const rt_camera *cam, float *rgb)
+static void exact_image(const scene_def *d, const rt_camera *cam, float *rgb,
+                        unsigned short *cover)
 {
     const int w = cam->width, h = cam->height;
     double *cr = calloc((size_t)(w + 1) * (h + 1) * 3, sizeof *cr);
-    if (!cr)
+    unsigned char *hit = calloc((size_t)(w + 1) * (h + 1), 1);
+    if (!cr || !hit)
         exit(1);
     for (int y = 0; y <= h; y++)
         for (int x = 0; x <= w; x++) {
             rt_ray r;
+            const size_t c = (size_t)y * (w + 1) + x;
             if (rt_camera_ray(cam, x, y, &r) == RT_OK)
-                exact_sphere(d, &r, cr + 3 * ((size_t)y * (w + 1) + x));
+                hit[c] = (unsigned char)exact_sphere(d, &r, cr + 3 * c);
         }
     for (int y = 0; y < h; y++)
         for (int x = 0; x < w; x++)
             for (int k = 0; k < 3; k++) {
                 const size_t a = (size_t)y * (w + 1) + x, b = a + (size_t)(w + 1);
+                cover[(size_t)y * w + x] = (unsigned short)(hit[a] + hit[a + 1] + hit[b] + hit[b + 1]);
                 rgb[3 * ((size_t)y * w + x) + k] =
                     (float)(0.25 * (cr[3 * a + k] + cr[3 * (a + 1) + k] + cr[3 * b + k] +
                                     cr[3 * (b + 1) + k]));
             }
     free(cr);
+    free(hit);
 }
 
 static void write_ppm(const char *path, const float *rgb, int w, int h)
@@ -212,7 +219,7 @@ static void write_ppm(const char *path, const float *rgb, int w, int h)
 
 /* time (commit + render, best of reps) and picture of the N x N mesh */
 static double run(const scene_def *d, const rt_camera *cam, int N, int normals, int reps,
-                  float *rgb, rt_stats *st)
+                  float *rgb, unsigned short *cover, rt_stats *st)
 {
     double best = INFINITY;
     for (int r = 0; r < reps; r++) {
@@ -225,7 +232,7 @@ static double run(const scene_def *d, const rt_camera *cam, int N, int normals, 
         rt_render_options_default(&o);
         o.threads = 1;
         double t0 = cpu_now();
-        if (rt_scene_commit(sc, NULL) != RT_OK || rt_render(sc, cam, &o, rgb, st) != RT_OK) {
+        if (rt_scene_commit(sc, NULL) != RT_OK || rt_render_cover(sc, cam, &o, rgb, cover, st) != RT_OK) {
             fprintf(stderr, "tess_error: render failed\n");
             exit(1);
         }
@@ -235,16 +242,26 @@ static double run(const scene_def *d, const rt_camera *cam, int N, int normals, 
     return best;
 }
 
-static void errors(const float *a, const float *ref, size_t n, double *rmse, double *mx)
+/* RMSE and largest error over all n pixels, and the RMSE over the pixels that both pictures
+   cover fully (all 4 corner rays hit: away from the outline) */
+static void errors(const float *a, const float *ref, const unsigned short *ca,
+                   const unsigned short *cr, size_t n, double *rmse, double *mx, double *inner)
 {
-    double se = 0.0;
+    double se = 0.0, si = 0.0;
+    size_t ni = 0;
     *mx = 0.0;
-    for (size_t i = 0; i < n; i++) {
-        double e = clamp01(a[i]) - clamp01(ref[i]);
-        se += e * e;
-        *mx = fmax(*mx, fabs(e));
-    }
-    *rmse = sqrt(se / (double)n);
+    for (size_t p = 0; p < n; p++)
+        for (int k = 0; k < 3; k++) {
+            double e = clamp01(a[3 * p + k]) - clamp01(ref[3 * p + k]);
+            se += e * e;
+            *mx = fmax(*mx, fabs(e));
+            if (ca[p] == 4 && cr[p] == 4) {
+                si += e * e;
+                ni++;
+            }
+        }
+    *rmse = sqrt(se / (double)(3 * n));
+    *inner = sqrt(si / (double)(ni ? ni : 1));
 }
 
 int main(int argc, char **argv)
@@ -277,7 +294,8 @@ int main(int argc, char **argv)
     }
     const size_t np = 3 * (size_t)size * size;
     float *ref = malloc(np * sizeof *ref), *img = malloc(np * sizeof *img);
-    if (!ref || !img)
+    unsigned short *cref = malloc(np / 3 * sizeof *cref), *cimg = malloc(np / 3 * sizeof *cimg);
+    if (!ref || !img || !cref || !cimg)
         return 1;
     for (int which = 0; which < 2; which++) {
         scene_def d;
@@ -314,35 +332,40 @@ int main(int argc, char **argv)
         rt_stats st;
         double tref = 0.0;
         if (d.sphere)
-            exact_image(&d, &cam, ref);
+            exact_image(&d, &cam, ref, cref);
         else
-            tref = run(&d, &cam, refn, 1, 1, ref, &st);
+            tref = run(&d, &cam, refn, 1, 1, ref, cref, &st);
         char path[1024];
         if (dir) {
             snprintf(path, sizeof path, "%s/%s_ref.ppm", dir, d.name);
             write_ppm(path, ref, size, size);
         }
-        printf("# %s: %d x %d pixels, reference %s\n", d.name, size, size,
-               d.sphere ? "the exact sphere (corner rays)" : "");
-        if (!d.sphere)
-            printf("#   (reference: %d x %d quads interpolated, %.2f s)\n", refn, refn, tref);
-        printf("%-6s %-13s %10s %10s %9s %9s %12s\n", "quads", "shading", "time_s", "rmse",
-               "psnr_db", "max_err", "triangles");
-        double flat_finest = INFINITY;
-        int coarsest = 0;
+        if (d.sphere)
+            printf("# %s: %d x %d pixels, reference the exact sphere (corner rays)\n", d.name,
+                   size, size);
+        else
+            printf("# %s: %d x %d pixels, reference %d x %d quads interpolated (%.2f s)\n",
+                   d.name, size, size, refn, refn, tref);
+        printf("%-6s %-13s %10s %10s %9s %9s %11s %10s\n", "quads", "shading", "time_s", "rmse",
+               "psnr_db", "max_err", "rmse_inside", "triangles");
+        double flat_finest = INFINITY, flat_finest_in = INFINITY;
+        int coarsest = 0, coarsest_in = 0;
         double cr_rmse = 0.0, cr_time = 0.0, ff_time = 0.0;
         for (int shade = 0; shade < 2; shade++)
             for (int N = 8; N <= 256; N *= 2) {
-                double t = run(&d, &cam, N, shade, reps, img, &st), rmse, mx;
-                errors(img, ref, np, &rmse, &mx);
+                double t = run(&d, &cam, N, shade, reps, img, cimg, &st), rmse, mx, inner;
+                errors(img, ref, cimg, cref, np / 3, &rmse, &mx, &inner);
                 double psnr = rmse > 0.0 ? 20.0 * log10(1.0 / rmse) : INFINITY;
-                printf("%3dx%-3d %-13s %10.4f %10.3e %9.2f %9.4f %12llu\n", N, N,
-                       shade ? "interpolated" : "flat", t, rmse, psnr, mx,
+                printf("%3dx%-3d %-13s %10.4f %10.3e %9.2f %9.4f %11.3e %10llu\n", N, N,
+                       shade ? "interpolated" : "flat", t, rmse, psnr, mx, inner,
                        (unsigned long long)st.prims);
                 if (!shade && N == 256) {
                     flat_finest = rmse;
+                    flat_finest_in = inner;
                     ff_time = t;
                 }
+                if (shade && !coarsest_in && inner < flat_finest_in)
+                    coarsest_in = N;
                 if (shade && !coarsest && rmse < flat_finest) {
                     coarsest = N;
                     cr_rmse = rmse;
@@ -368,10 +391,15 @@ int main(int argc, char **argv)
                    d.name, flat_finest, ff_time, coarsest, coarsest, cr_rmse, cr_time);
         else
             printf("# %s: no interpolated mesh beats the finest flat one\n", d.name);
+        if (coarsest_in)
+            printf("# %s: inside the outline (rmse_inside %.3e for 256x256 flat): %dx%d\n",
+                   d.name, flat_finest_in, coarsest_in, coarsest_in);
     }
     if (out)
         fclose(out);
     free(ref);
     free(img);
+    free(cref);
+    free(cimg);
     return 0;
 }
