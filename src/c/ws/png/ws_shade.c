@@ -254,18 +254,11 @@ void ws_shade_vrc_point(const gks_ws *ws, const gks_prim *prim, const Gpoint3 *p
 
 int ws_shade_vrc_normal(const gks_ws *ws, const gks_prim *prim, const Gvec3 *n, double o[3])
 {
-    const Gmatrix3 *m = &view_of(ws, prim)->ori_matrix;
-    double c[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            c[i][j] = (*m)[i1][j1] * (*m)[i2][j2] - (*m)[i1][j2] * (*m)[i2][j1];
-        }
-    const double det = (*m)[0][0] * c[0][0] + (*m)[0][1] * c[0][1] + (*m)[0][2] * c[0][2];
-    const double sg = det < 0 ? -1 : 1;
-    for (int k = 0; k < 3; k++)
-        o[k] = sg * (c[k][0] * n->delta_x + c[k][1] * n->delta_y + c[k][2] * n->delta_z);
-    return finite3(o) && unit3(o);
+    double nm[3][3];
+    const double v[3] = { n->delta_x, n->delta_y, n->delta_z };
+    o[0] = o[1] = o[2] = 0;
+    return !gks_xform_normal_matrix(view_of(ws, prim)->ori_matrix, nm) &&
+           gks_xform_normal(nm, v, o);
 }
 
 int ws_shade_ctx_init(const gks_ws *ws, const gks_prim *prim, ws_shade_ctx *c)
