@@ -345,6 +345,13 @@ typedef struct rt_tile_hook {
  * count in the frame's stats). Only from inside the hook's callbacks. RT_ERR_ARG for a bad
  * tile, size or payload. */
 RT_API int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes);
+/* A tile's colours for a preview while the frame forms (e.g. from rt_tile_hook.done): its
+ * rectangle of the ray grid, rect = x0, x1, y0, y1 (rows from the top; in corner-ray mode
+ * the (w+1) x (h+1) corner rays), and 3 floats per ray, row-major, into rgb (room for
+ * 16 x 16 rays): the values before corner averaging and coverage. RT_ERR_ARG for a bad tile
+ * or size. */
+RT_API int rt_frame_tile_rgb(const rt_frame *f, int tile, const void *payload, size_t bytes,
+                             int rect[4], float *rgb);
 
 typedef struct rt_render_options {
     int samples;            /* per pixel: 1, 4, 9, 16, ... (perfect square, stratified) */

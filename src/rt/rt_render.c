@@ -1003,6 +1003,20 @@ static size_t rt_tile_pack(rt_worker *w, int t, const rt_stats *before)
     return bytes;
 }
 
+int rt_frame_tile_rgb(const rt_frame *f, int tile, const void *payload, size_t bytes,
+                      int rect[4], float *rgb)
+{
+    if (!f || !f->job || !payload || !rect || !rgb || tile < 0 || tile >= f->job->ntiles)
+        return RT_ERR_ARG;
+    int x0, x1, y0, y1;
+    if (bytes != rt_tile_rect(f->job, tile, &x0, &x1, &y0, &y1))
+        return RT_ERR_ARG;
+    rect[0] = x0, rect[1] = x1, rect[2] = y0, rect[3] = y1;
+    memcpy(rgb, (const unsigned char *)payload + RT_PAYLOAD_COUNTERS * sizeof(uint64_t),
+           (size_t)(x1 - x0) * (size_t)(y1 - y0) * 3 * sizeof(float));
+    return RT_OK;
+}
+
 int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes)
 {
     if (!f || !f->job || !payload || tile < 0 || tile >= f->job->ntiles)

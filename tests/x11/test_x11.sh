@@ -1,9 +1,10 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # Runs x11_input interactively under Xvfb, driven by xdotool; skipped (exit 77) with a
-# message when Xvfb or xdotool is missing. Usage: test_x11.sh <x11_input> <workdir>
+# message when Xvfb or xdotool is missing. Usage: test_x11.sh <x11_input> <workdir> <xpeek>
 prog=$1
 dir=$2
+peek=$3
 for t in Xvfb xdotool; do
     if ! command -v $t >/dev/null 2>&1; then
         echo "SKIP: $t not installed (scripts/setup.sh installs it)"
@@ -11,16 +12,21 @@ for t in Xvfb xdotool; do
     fi
 done
 mkdir -p "$dir" && cd "$dir" || exit 1
-# A free display number: one whose lock file does not exist.
-n=40
-while [ -e /tmp/.X$n-lock ]; do n=$((n + 1)); done
-Xvfb :$n -screen 0 1024x1024x24 -nolisten tcp >xvfb.log 2>&1 &
+# Xvfb picks a free display itself and writes its number (-displayfd): no race with
+# other X servers started at the same time (parallel tests, other users).
+rm -f display.txt
+Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
 xpid=$!
 trap 'kill $xpid 2>/dev/null' EXIT
-export DISPLAY=:$n
+i=0
+while [ ! -s display.txt ]; do
+    i=$((i + 1)); [ $i -gt 100 ] && { echo "SKIP: Xvfb did not start"; exit 77; }
+    sleep 0.1
+done
+export DISPLAY=:$(cat display.txt)
 i=0
 while ! xdotool getmouselocation >/dev/null 2>&1; do
-    i=$((i + 1)); [ $i -gt 50 ] && { echo "SKIP: Xvfb did not start"; exit 77; }
+    i=$((i + 1)); [ $i -gt 50 ] && { echo "SKIP: Xvfb did not answer"; exit 77; }
     sleep 0.1
 done
 "$prog" interactive >out.txt 2>&1 &
@@ -42,6 +48,45 @@ xdotool type --window "$w" gks
 xdotool key --window "$w" Return
 sleep 0.3
 xdotool key --window "$w" Escape
+# wait for a line of the program's output
+wait_for() {
+    i=0
+    while ! grep -q "$1" out.txt 2>/dev/null; do
+        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: no $1"; exit 1; }
+        sleep 0.1
+    done
+}
+# The menu of CHOICE prompt/echo type 3, drawn at the echo area's top right: check the
+# prompt line's and the menu's colours, then click item 2.
+wait_for MENU
+sleep 0.5
+c=$("$peek" "$w" 400 5 720 135)
+set -- $c
+[ "$1" = ffffcc ] || echo "FAIL: prompt line colour $1"
+[ "$2" = f0f0f0 ] || echo "FAIL: menu colour $2"
+xdotool mousemove --window "$w" 740 129 click 1
+sleep 0.3
+# The valuator slider: a click at 3/4 of the track, Return.
+xdotool mousemove --window "$w" 615 311 click 1
+sleep 0.3
+xdotool key --window "$w" Return
+sleep 0.3
+# A stroke dragged with button 1.
+xdotool mousemove --window "$w" 100 700 mousedown 1
+for p in "150 675" "200 650" "250 625" "300 600"; do
+    sleep 0.1
+    xdotool mousemove --window "$w" $p
+done
+sleep 0.1
+xdotool mouseup 1
+# The traced square (colour 3, green, lit) is in the window; outside it the background.
+wait_for TRACED
+sleep 0.5
+c=$("$peek" "$w" 400 400 100 700)
+set -- $c
+[ "$1" != ffffff ] && [ "$1" != 000000 ] || echo "FAIL: traced square pixel $1"
+echo "traced pixels: $c"
+xdotool key --window "$w" 1
 i=0
 while kill -0 $ppid 2>/dev/null; do
     i=$((i + 1)); [ $i -gt 100 ] && { kill $ppid; cat out.txt; echo "FAIL: hung"; exit 1; }

@@ -4,7 +4,9 @@
  * WORKSTATION reports 26 and the workstation is not open. "interactive" (run by
  * test_x11.sh under Xvfb, driven by xdotool): a detectable square in segment 1 is shown,
  * then REQUEST LOCATOR, PICK, CHOICE and STRING take the mouse clicks and keys the script
- * sends; the values are checked against the positions clicked.
+ * sends; the values are checked against the positions clicked. Then the echoes: a CHOICE
+ * menu (prompt/echo type 3) clicked, the VALUATOR slider clicked, a STROKE dragged, and a
+ * ray-traced picture whose pixels the script reads (xpeek).
  */
 #include <gks.h>
 #include <math.h>
@@ -89,6 +91,43 @@ int main(int argc, char **argv)
     greq_loc(1, 1, &s, &l); /* Escape: break */
     printf("break %d\n", s);
     CHECK(s == GIN_STATUS_NONE);
+
+    /* CHOICE prompt/echo type 3: a menu of the record's labels at the echo area's top
+     * right (window x 716..780, items 20 high from y 99); the script clicks item 2. */
+    Gin_data menu = { 0, NULL, 0, NULL, 17, "alpha\0beta\0gamma" };
+    Glimit ea = { 400, 780, 100, 700 };
+    ginit_choice(1, 1, GIN_STATUS_OK, 1, 3, &ea, &menu);
+    printf("MENU\n");
+    fflush(stdout);
+    greq_choice(1, 1, &s, &c);
+    printf("menu %d %d\n", s, c);
+    CHECK(s == GIN_STATUS_OK && c == 2);
+    /* VALUATOR: the slider (track x 390..690 at y 311); a click at 3/4, then Return. */
+    Glimit ev = { 100, 700, 100, 500 };
+    ginit_val(1, 1, 0.5, 1, &ev, 0, 10, NULL);
+    Gfloat v;
+    greq_val(1, 1, &s, &v);
+    printf("valuator %d %.3f\n", s, v);
+    CHECK(s == GIN_STATUS_OK && fabs(v - 7.5) < 0.05);
+    /* STROKE by a drag: press at window (100, 700), move, release at (300, 600). */
+    Gpoint pts[64];
+    Gstroke sk = { 0, 64, pts };
+    greq_stroke(1, 1, &s, &sk);
+    printf("stroke %d %d\n", s, sk.num_points);
+    CHECK(s == GIN_STATUS_OK && sk.num_points >= 3 &&
+          fabs(pts[0].x - 100.5 / 800) < 1e-6 && fabs(pts[0].y - 99.5 / 800) < 1e-6 &&
+          fabs(pts[sk.num_points - 1].x - 300.5 / 800) < 1e-6);
+    /* Ray tracing in the window: the square again, traced tile by tile; then the script
+     * looks at the window's pixels and ends with a key (CHOICE). */
+    gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+    gclear_ws(1, GFLAG_ALWAYS);
+    gset_fill_colr_ind(3);
+    gfill_area(&pl);
+    gupd_ws(1, GFLAG_PERFORM);
+    printf("TRACED\n");
+    fflush(stdout);
+    greq_choice(1, 1, &s, &c);
+    CHECK(s == GIN_STATUS_OK);
     gdeactivate_ws(1);
     gclose_ws(1);
     gclose_gks();

@@ -814,7 +814,7 @@ static void active_list(gks_ws *ws, Gin_class rcls, int rnum, gks_in_active *a)
             gks_in_active_dev *x = &a->dev[a->n++];
             *x = (gks_in_active_dev){ cls, i + 1, d->mode, d->echo, d->pet, d->echo_vol,
                                       { 0, 0, 0 }, d->init.val, d->low, d->high,
-                                      ws->in->desc->max_choices, d->buf_size };
+                                      ws->in->desc->max_choices, d->buf_size, d->rec };
             if (have_m && (cls == GIN_LOC || cls == GIN_STROKE)) {
                 /* The initial position's NDC3 by its transformation, then NPC (view
                  * 0 if the view is gone) and DC. */
@@ -1063,4 +1063,64 @@ int gks_in_overflow(Gint *ws_id, Gin_class *cls, Gint *num)
 int gks_in_more_simult(void)
 {
     return 0; /* every trigger of this implementation belongs to one device */
+}
+
+/* One decimal ended by ',' at *p (before end), as GPREC writes them; -1 if none. */
+static int rec_long(const char **p, const char *end, long *v)
+{
+    char t[24];
+    size_t n = 0;
+    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
+        t[n] = (*p)[n];
+        n++;
+    }
+    if (n == 0 || *p + n >= end || (*p)[n] != ',')
+        return -1;
+    t[n] = '\0';
+    char *e;
+    *v = strtol(t, &e, 10);
+    *p += n + 1;
+    return *e ? -1 : 0;
+}
+
+int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
+{
+    const char *p = r->str, *end = r->str ? r->str + r->str_len : NULL;
+    int k = 0;
+    if (!p || r->str_len == 0 || max <= 0)
+        return 0;
+    if (r->str_len >= 4 && memcmp(p, "GKSR", 4) == 0) {
+        long n[3], lens[64];
+        p += 4;
+        for (int i = 0; i < 3; i++)
+            if (rec_long(&p, end, &n[i]) || n[i] < 0 || n[i] > 100000)
+                return 0;
+        for (long i = 0; i < n[0] + n[1]; i++) /* integers, reals: skipped */
+            while (p < end && *p++ != ',')
+                ;
+        if (n[2] > 64)
+            n[2] = 64;
+        for (long i = 0; i < n[2]; i++)
+            if (rec_long(&p, end, &lens[i]) || lens[i] < 0)
+                return 0;
+        for (long i = 0; i < n[2] && end - p >= lens[i]; i++) {
+            if (k < max) {
+                lab[k] = p;
+                len[k++] = (int)lens[i];
+            }
+            p += lens[i];
+        }
+        return k;
+    }
+    while (p < end && k < max) {
+        const char *q = p;
+        while (q < end && *q != '\0' && *q != '\n')
+            q++;
+        if (q > p) {
+            lab[k] = p;
+            len[k++] = (int)(q - p);
+        }
+        p = q + 1;
+    }
+    return k;
 }

@@ -75,7 +75,14 @@ typedef struct gks_in_active_dev {
     double val, low, high;    /* valuator: current value and range */
     int max_choice;
     int str_buf;              /* string buffer size */
+    Gin_data rec;             /* the device's data record (valid during the input call) */
 } gks_in_active_dev;
+
+/* The labels of a CHOICE menu (prompt/echo type 3) in data record r: the strings of a
+ * record packed by the Fortran binding's GPREC ("GKSR", bindings/fortran), or else r->str
+ * cut at NUL and newline characters. Up to max labels: lab[k] points into r, len[k] its
+ * length. Returns the number found (0: none). */
+int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max);
 
 typedef struct gks_in_active {
     int n;

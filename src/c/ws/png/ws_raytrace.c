@@ -51,7 +51,66 @@ struct ws_rt {
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
     int share_tiles;         /* the next frames' tiles are shared by the MPI ranks */
+    ws_rt_tile_fn tile_fn;   /* preview of each traced tile, or NULL */
+    void *tile_user;
 };
+
+void ws_rt_set_tile_fn(ws_rt *r, ws_rt_tile_fn fn, void *user)
+{
+    r->tile_fn = fn;
+    r->tile_user = user;
+}
+
+/* The tile hook of a preview: every tile traced here, in order; each one's colours go to
+ * tile_fn as framebuffer pixels (ray (x, y) of the grid shows as pixel (x, y), the extra
+ * corner rays of the last column and row are left out). Callbacks run one at a time. */
+typedef struct tile_preview {
+    ws_rt *r;
+    rt_frame *f;
+    int next, ntiles, ix0, iy1, w, h;
+    float ray[16 * 16 * 3], px[16 * 16 * 3];
+} tile_preview;
+
+static int preview_begin(void *user, rt_frame *f, int ntiles, size_t max_tile_bytes)
+{
+    (void)max_tile_bytes;
+    ((tile_preview *)user)->f = f;
+    ((tile_preview *)user)->ntiles = ntiles;
+    return 0;
+}
+
+static int preview_next(void *user)
+{
+    tile_preview *t = user;
+    return t->next < t->ntiles ? t->next++ : -1;
+}
+
+static int preview_done(void *user, int tile, const void *payload, size_t bytes)
+{
+    tile_preview *t = user;
+    int rc[4];
+    if (rt_frame_tile_rgb(t->f, tile, payload, bytes, rc, t->ray) != RT_OK)
+        return 0; /* no preview of this tile; the frame is still right */
+    int rw = rc[1] - rc[0], x1 = rc[1] < t->w ? rc[1] : t->w, y1 = rc[3] < t->h ? rc[3] : t->h;
+    int w = x1 - rc[0], h = y1 - rc[2];
+    if (w <= 0 || h <= 0)
+        return 0;
+    for (int y = rc[2]; y < y1; y++) /* grid rows top-first -> preview rows bottom-up */
+        for (int x = rc[0]; x < x1; x++)
+            for (int q = 0; q < 3; q++) {
+                float v = t->ray[3 * ((size_t)(y - rc[2]) * rw + (x - rc[0])) + q];
+                t->px[3 * ((size_t)(y1 - 1 - y) * w + (x - rc[0])) + q] =
+                    v > 0 ? (v < 1 ? v : 1) : 0;
+            }
+    t->r->tile_fn(t->r->tile_user, t->ix0 + rc[0], t->iy1 - y1, w, h, t->px);
+    return 0;
+}
+
+static int preview_end(void *user, rt_frame *f)
+{
+    (void)user, (void)f;
+    return 1;
+}
 
 /* Points transformed on the stack up to this many (larger areas use the heap). */
 #define STACK_POINTS 32
@@ -894,8 +953,16 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
         o.tiles = rt_mpi_job_start(&mj, link, nt > 0 && nt < 256 ? (int)nt : 1);
     }
 #endif
+    tile_preview *tp = NULL;
+    rt_tile_hook th;
+    if (r->tile_fn && !o.tiles && (tp = gks_calloc_array(1, sizeof *tp))) {
+        *tp = (tile_preview){ .r = r, .ix0 = ix0, .iy1 = iy1, .w = w, .h = h };
+        th = (rt_tile_hook){ tp, preview_begin, preview_next, preview_done, preview_end };
+        o.tiles = &th;
+    }
     int rr = need_cover ? rt_render_cover(sc, &cam, &o, rgb, cnt, &s)
                         : rt_render(sc, &cam, &o, rgb, &s);
+    gks_free(tp);
 #ifdef GKS_HAVE_MPI
     if (link) {
         const char *rep = getenv("GKS3D_MPI_REPORT");

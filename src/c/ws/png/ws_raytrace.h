@@ -24,6 +24,13 @@ int ws_rt_count(const ws_rt *r);
 /* The tiles of the next frames are shared by the ranks of an MPI run (on) or traced here
  * alone (off, the default); ws_mpi.h. Without the MPI build: no effect. */
 void ws_rt_set_share_tiles(ws_rt *r, int on);
+/* Called after each traced tile with its pixels, so that a window can show the picture as
+ * it forms (not with tiles shared by MPI ranks): framebuffer pixels [i0, i0 + w) x
+ * [j0, j0 + h) (j bottom-up as in the framebuffer), rgb w x h colours clamped to [0, 1],
+ * rows bottom-up. A preview: the traced colours before coverage; the frame written into
+ * the framebuffer afterwards is the picture. NULL fn: none (the default). */
+typedef void (*ws_rt_tile_fn)(void *user, int i0, int j0, int w, int h, const float *rgb);
+void ws_rt_set_tile_fn(ws_rt *r, ws_rt_tile_fn fn, void *user);
 /* The render options the next picture uses (ESCAPE settings; the environment variable
  * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
 void ws_rt_options(const ws_rt *r, rt_render_options *o);

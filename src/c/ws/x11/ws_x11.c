@@ -4,7 +4,8 @@
  * display space 800 x 800 pixels, DC unit = one pixel, y up). Output goes through the
  * PNG workstation's renderers (ws_png_render.h for the classic HLHSR modes, ws_raytrace.h
  * for ray tracing) into a framebuffer that UPDATE WORKSTATION (and every input wait)
- * shows in the window; an Expose event redraws from the shown picture.
+ * shows in the window; ray-traced views appear tile by tile as they are traced; an Expose
+ * event redraws from the shown picture.
  *
  * Connection identifier: an X display name ("" or a Fortran unit number: $DISPLAY).
  * No display: OPEN WORKSTATION reports 26 and nothing else happens. The window is opened
@@ -12,15 +13,21 @@
  *
  * Physical input devices (the core maps them to logical devices; docs/INPUT.md):
  *   mouse button 1 press   LOCATOR and PICK trigger at the pointer position;
- *                          STROKE: press adds a point, button 3 ends the stroke
- *   keys 1..9              CHOICE number; 0: no choice
- *   keys + / -             VALUATOR up / down a tenth of its range, Return triggers
+ *                          STROKE: a press adds a point, dragging adds points along the
+ *                          way and its release ends the stroke; button 3 ends it too
+ *   keys 1..9              CHOICE number; 0: no choice; with a menu: a click on an item
+ *   keys + / -, slider     VALUATOR up / down a tenth of its range or a click on the
+ *                          slider; Return triggers (SAMPLE/EVENT: every change)
  *   typed text + Return    STRING
  *   Escape                 break of the device a REQUEST waits for
- * Which logical device a press goes to: the one a REQUEST waits for, else the first
- * device in SAMPLE or EVENT mode of a class the action serves. Prompt and echo: the
- * window title names the device taking input; locator echo is the pointer (crosshair
- * cursor).
+ * Which logical device an action goes to: the one a REQUEST waits for, else the first
+ * device in SAMPLE or EVENT mode of a class the action serves.
+ * Prompt and echo (devices with echo on), drawn over the picture: a prompt line at the top
+ * (device, keys, the text typed, the last MESSAGE); CHOICE type 3: a menu of the record's
+ * labels (gks_in_menu_labels; numbers when there are none); VALUATOR: a slider; STROKE: the
+ * points so far and a rubber band to the pointer; LOCATOR type 4 / 5: a rubber line /
+ * rectangle from the initial position; PICK: the aperture square at the pointer; the
+ * pointer is a crosshair.
  */
 #include "gks_alloc.h"
 #include "gks_xform.h"
@@ -36,6 +43,7 @@
 #include <math.h>
 #include <poll.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define X11_SIZE 800
@@ -45,10 +53,25 @@ static const Grgb x11_colours[8] = {
     { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 },
 };
 
+/* Geometry of the overlay (window pixels). */
+#define BAR_H 18      /* prompt line */
+#define ITEM_H 20     /* menu item */
+#define SLIDER_W 300
+#define MAX_ITEMS 32
+#define APERTURE 8    /* half side of the pick aperture square (0.01 NPC of 800) */
+
 typedef struct x11_ws {
     Display *dpy;
     Window win;
     GC gc;
+    XFontStruct *font;
+    gks_in_active act;        /* the devices taking input during the current input call */
+    int have_act;
+    char msg[128];            /* last MESSAGE */
+    int mx, my, in_win;       /* pointer (window pixels) */
+    int dragging;             /* stroke: button 1 held since a press */
+    int menu_x, menu_y, menu_w, menu_n; /* the menu drawn (items top-down) */
+    int slider_x, slider_y;   /* the slider track's left end, middle */
     XImage *img;              /* the picture shown (window size, 32-bit TrueColor) */
     int w, h;
     gks_raster_fb *fb;
@@ -90,11 +113,164 @@ static gks_raster_fb *x11_fb(gks_ws *ws)
     return x->fb;
 }
 
+static void overlay(x11_ws *x);
+
 static void x11_blit(x11_ws *x)
 {
     if (x->img)
         XPutImage(x->dpy, x->win, x->gc, x->img, 0, 0, 0, 0, (unsigned)x->w, (unsigned)x->h);
+    overlay(x);
     XFlush(x->dpy);
+}
+
+/* Window pixel of a DC position. */
+static int wx_of(double dc_x) { return (int)floor(dc_x); }
+static int wy_of(const x11_ws *x, double dc_y) { return x->h - 1 - (int)floor(dc_y); }
+
+static void text_at(x11_ws *x, int px, int py, const char *t, int n)
+{
+    XDrawString(x->dpy, x->win, x->gc, px, py, t, n);
+}
+
+static int text_w(const x11_ws *x, const char *t, int n)
+{
+    return x->font ? XTextWidth(x->font, t, n) : 6 * n;
+}
+
+/* The echo area's top-right corner in window pixels (whole window if it is empty). */
+static void echo_corner(const x11_ws *x, const gks_in_active_dev *d, int *rx, int *ty)
+{
+    int r = wx_of(d->echo_vol.x_max), t = wy_of(x, d->echo_vol.y_max);
+    *rx = r > x->w - 4 || r < 40 ? x->w - 4 : r;
+    *ty = t < BAR_H + 4 ? BAR_H + 4 : t;
+}
+
+static const char *const class_names[] = { "", "LOCATOR", "STROKE", "VALUATOR", "CHOICE",
+                                           "PICK", "STRING" };
+
+/* Prompt line, menu, slider, rubber bands and aperture of the devices taking input. */
+static void overlay(x11_ws *x)
+{
+    x->menu_n = 0;
+    x->slider_x = -1;
+    if (!x->have_act && !x->msg[0])
+        return;
+    const gks_in_active *a = &x->act;
+    char t[256];
+    int n = 0;
+    if (x->have_act && a->request >= 0) {
+        const gks_in_active_dev *d = &a->dev[a->request];
+        static const char *const how[] = { "", "click", "click points, drag; button 3 ends",
+                                           "+/- or slider, Return", "keys 1-9 or menu",
+                                           "click a segment", "type, Return" };
+        n = snprintf(t, sizeof t, "REQUEST %s %d: %s; Esc breaks", class_names[d->cls],
+                     d->num, how[d->cls]);
+        if (d->cls == GIN_STRING && n < (int)sizeof t)
+            n += snprintf(t + n, sizeof t - (size_t)n, "  > %.*s_", x->ntext, x->text);
+        if (d->cls == GIN_VAL && n < (int)sizeof t)
+            n += snprintf(t + n, sizeof t - (size_t)n, "  = %g", x->have_val ? x->val : d->val);
+    } else if (x->have_act && a->n > 0) {
+        n = snprintf(t, sizeof t, "%s %d taking input", class_names[a->dev[0].cls],
+                     a->dev[0].num);
+    }
+    if (x->msg[0] && n < (int)sizeof t)
+        n += snprintf(t + n, sizeof t - (size_t)n, "%s%s", n ? "   | " : "", x->msg);
+    if (n > (int)sizeof t - 1)
+        n = (int)sizeof t - 1;
+    XSetForeground(x->dpy, x->gc, 0xffffcc);
+    XFillRectangle(x->dpy, x->win, x->gc, 0, 0, (unsigned)x->w, BAR_H);
+    XSetForeground(x->dpy, x->gc, 0x000000);
+    text_at(x, 4, BAR_H - 5, t, n);
+    for (int i = 0; x->have_act && i < a->n; i++) {
+        const gks_in_active_dev *d = &a->dev[i];
+        if (!d->echo)
+            continue;
+        if (d->cls == GIN_CHOICE && d->pet == 3 && !x->menu_n) {
+            const char *lab[MAX_ITEMS];
+            int len[MAX_ITEMS];
+            int k = gks_in_menu_labels(&d->rec, lab, len, MAX_ITEMS);
+            char num[MAX_ITEMS][4];
+            if (k == 0)
+                for (; k < d->max_choice && k < MAX_ITEMS; k++) {
+                    len[k] = snprintf(num[k], sizeof num[k], "%d", k + 1);
+                    lab[k] = num[k];
+                }
+            int wmax = 0;
+            for (int j = 0; j < k; j++)
+                if (text_w(x, lab[j], len[j]) > wmax)
+                    wmax = text_w(x, lab[j], len[j]);
+            int rx, ty;
+            echo_corner(x, d, &rx, &ty);
+            x->menu_w = wmax + 34;
+            x->menu_x = rx - x->menu_w;
+            x->menu_y = ty;
+            x->menu_n = k;
+            XSetForeground(x->dpy, x->gc, 0xf0f0f0);
+            XFillRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
+                           (unsigned)(k * ITEM_H));
+            for (int j = 0; j < k; j++) {
+                int iy = ty + j * ITEM_H;
+                int hot = x->in_win && x->mx >= x->menu_x && x->mx < rx && x->my >= iy &&
+                          x->my < iy + ITEM_H;
+                XSetForeground(x->dpy, x->gc, hot ? 0x3060c0 : 0xf0f0f0);
+                XFillRectangle(x->dpy, x->win, x->gc, x->menu_x + 1, iy + 1,
+                               (unsigned)x->menu_w - 2, ITEM_H - 2);
+                XSetForeground(x->dpy, x->gc, hot ? 0xffffff : 0x000000);
+                char nb[8];
+                int nn = snprintf(nb, sizeof nb, "%d", j + 1);
+                text_at(x, x->menu_x + 6, iy + ITEM_H - 6, nb, nn);
+                text_at(x, x->menu_x + 28, iy + ITEM_H - 6, lab[j], len[j]);
+            }
+            XSetForeground(x->dpy, x->gc, 0x000000);
+            XDrawRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
+                           (unsigned)(k * ITEM_H));
+        } else if (d->cls == GIN_VAL && x->slider_x < 0) {
+            int rx, ty;
+            echo_corner(x, d, &rx, &ty);
+            x->slider_x = rx - SLIDER_W - 10;
+            x->slider_y = ty + 12;
+            double v = x->have_val ? x->val : d->val;
+            double f = d->high > d->low ? (v - d->low) / (d->high - d->low) : 0;
+            int kx = x->slider_x + (int)lround(f * SLIDER_W);
+            XSetForeground(x->dpy, x->gc, 0xf0f0f0);
+            XFillRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
+            XSetForeground(x->dpy, x->gc, 0x000000);
+            XDrawRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
+            XDrawLine(x->dpy, x->win, x->gc, x->slider_x, x->slider_y, x->slider_x + SLIDER_W,
+                      x->slider_y);
+            XSetForeground(x->dpy, x->gc, 0x3060c0);
+            XFillRectangle(x->dpy, x->win, x->gc, kx - 4, x->slider_y - 8, 9, 17);
+            XSetForeground(x->dpy, x->gc, 0x000000);
+            char vt[64];
+            int vn = snprintf(vt, sizeof vt, "%g  [%g, %g]", v, d->low, d->high);
+            text_at(x, x->slider_x, ty + 36, vt, vn);
+        } else if (d->cls == GIN_STROKE && (x->npts > 0)) {
+            XSetForeground(x->dpy, x->gc, 0xd00000);
+            for (int j = 0; j < x->npts; j++) {
+                int px = wx_of(x->pts[j][0]), py = wy_of(x, x->pts[j][1]);
+                XDrawRectangle(x->dpy, x->win, x->gc, px - 2, py - 2, 4, 4);
+                if (j > 0)
+                    XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[j - 1][0]),
+                              wy_of(x, x->pts[j - 1][1]), px, py);
+            }
+            if (x->in_win)
+                XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[x->npts - 1][0]),
+                          wy_of(x, x->pts[x->npts - 1][1]), x->mx, x->my);
+        } else if (d->cls == GIN_LOC && (d->pet == 4 || d->pet == 5) && x->in_win) {
+            int ix = wx_of(d->init_dc[0]), iy = wy_of(x, d->init_dc[1]);
+            XSetForeground(x->dpy, x->gc, 0xd00000);
+            if (d->pet == 4)
+                XDrawLine(x->dpy, x->win, x->gc, ix, iy, x->mx, x->my);
+            else
+                XDrawRectangle(x->dpy, x->win, x->gc, ix < x->mx ? ix : x->mx,
+                               iy < x->my ? iy : x->my, (unsigned)abs(x->mx - ix),
+                               (unsigned)abs(x->my - iy));
+        } else if (d->cls == GIN_PICK && x->in_win) {
+            XSetForeground(x->dpy, x->gc, 0xd00000);
+            XDrawRectangle(x->dpy, x->win, x->gc, x->mx - APERTURE, x->my - APERTURE,
+                           2 * APERTURE, 2 * APERTURE);
+        }
+    }
 }
 
 /* Copies picture pic into the window image (viewport origin at the window's lower left)
@@ -130,6 +306,7 @@ static int x11_open(gks_ws *ws)
     int digits = 1;
     for (const char *c = name; *c; c++)
         digits &= isdigit((unsigned char)*c) != 0;
+    XInitThreads(); /* the tracer's threads show tiles (one at a time, under its lock) */
     Display *dpy = XOpenDisplay(digits ? NULL : name);
     if (!dpy)
         return 26;
@@ -160,9 +337,13 @@ static int x11_open(gks_ws *ws)
     x->win = XCreateSimpleWindow(dpy, RootWindow(dpy, scr), 0, 0, (unsigned)x->w,
                                  (unsigned)x->h, 0, BlackPixel(dpy, scr), WhitePixel(dpy, scr));
     XStoreName(dpy, x->win, "gks3d");
-    XSelectInput(dpy, x->win, ExposureMask | ButtonPressMask | KeyPressMask | StructureNotifyMask);
+    XSelectInput(dpy, x->win, ExposureMask | ButtonPressMask | ButtonReleaseMask |
+                                  PointerMotionMask | EnterWindowMask | LeaveWindowMask |
+                                  KeyPressMask | StructureNotifyMask);
     XDefineCursor(dpy, x->win, XCreateFontCursor(dpy, XC_crosshair));
     x->gc = XCreateGC(dpy, x->win, 0, NULL);
+    if ((x->font = XLoadQueryFont(dpy, "fixed")))
+        XSetFont(dpy, x->gc, x->font->fid);
     x->img = XCreateImage(dpy, vis, (unsigned)DefaultDepth(dpy, scr), ZPixmap, 0, data,
                           (unsigned)x->w, (unsigned)x->h, 32, 0);
     for (int j = 0; j < x->h; j++)
@@ -183,6 +364,8 @@ static void x11_close(gks_ws *ws)
     if (!x)
         return;
     XDestroyImage(x->img); /* frees its data */
+    if (x->font)
+        XFreeFont(x->dpy, x->font);
     XFreeGC(x->dpy, x->gc);
     XDestroyWindow(x->dpy, x->win);
     XCloseDisplay(x->dpy);
@@ -204,6 +387,31 @@ static int x11_clear(gks_ws *ws)
     return x11_fb(ws) ? 0 : 300;
 }
 
+/* A traced tile shown at once (ws_rt_tile_fn): the window shows the picture forming. */
+static void x11_tile(void *user, int i0, int j0, int w, int h, const float *rgb)
+{
+    gks_ws *ws = user;
+    x11_ws *x = ws->priv;
+    int ox = (int)ws->cur_vp.x_min, oy = (int)ws->cur_vp.y_min;
+    int wx0 = ox + i0, wy0 = x->h - (oy + j0 + h);
+    for (int j = 0; j < h; j++)
+        for (int i = 0; i < w; i++) {
+            int wx = wx0 + i, wy = x->h - 1 - (oy + j0 + j);
+            if (wx < 0 || wx >= x->w || wy < 0 || wy >= x->h)
+                continue;
+            const float *c = rgb + 3 * ((size_t)j * w + i);
+            XPutPixel(x->img, wx, wy,
+                      ((unsigned long)lround(c[0] * 255) << 16) |
+                          ((unsigned long)lround(c[1] * 255) << 8) |
+                          (unsigned long)lround(c[2] * 255));
+        }
+    if (wx0 < x->w && wy0 < x->h && wx0 + w > 0 && wy0 + h > 0) {
+        XPutImage(x->dpy, x->win, x->gc, x->img, wx0 < 0 ? 0 : wx0, wy0 < 0 ? 0 : wy0,
+                  wx0 < 0 ? 0 : wx0, wy0 < 0 ? 0 : wy0, (unsigned)w, (unsigned)h);
+        XFlush(x->dpy);
+    }
+}
+
 /* Shows the frame: ray-traced areas traced first, retained primitives composed. */
 static int x11_update(gks_ws *ws)
 {
@@ -213,6 +421,7 @@ static int x11_update(gks_ws *ws)
         return 300;
     double m[4][4];
     if (ws_rt_count(x->rt) > 0 && x11_ws_matrix(ws, m) == 0) {
+        ws_rt_set_tile_fn(x->rt, x11_tile, ws);
         int e = ws_rt_render(x->rt, ws, (const double (*)[4])m, fb);
         if (e)
             return e;
@@ -240,8 +449,9 @@ static int x11_primitive(gks_ws *ws, const gks_prim *prim)
 static int x11_message(gks_ws *ws, const char *msg)
 {
     x11_ws *x = ws->priv;
+    snprintf(x->msg, sizeof x->msg, "%s", msg);
     XStoreName(x->dpy, x->win, msg);
-    XFlush(x->dpy);
+    x11_blit(x);
     return 0;
 }
 
@@ -267,15 +477,37 @@ static int target(const gks_in_active *a, unsigned classes)
 
 static void prompt(x11_ws *x, const gks_in_active *a)
 {
-    static const char *const names[] = { "", "LOCATOR", "STROKE", "VALUATOR", "CHOICE",
-                                         "PICK", "STRING" };
     char t[96];
     if (a->request >= 0)
-        snprintf(t, sizeof t, "gks3d: REQUEST %s %d", names[a->dev[a->request].cls],
+        snprintf(t, sizeof t, "gks3d: REQUEST %s %d", class_names[a->dev[a->request].cls],
                  a->dev[a->request].num);
     else
         snprintf(t, sizeof t, "gks3d");
     XStoreName(x->dpy, x->win, t);
+}
+
+/* The stroke being entered as a raw event of device k; 1. */
+static int stroke_event(x11_ws *x, const gks_in_active *a, int k, gks_in_raw *ev)
+{
+    *ev = (gks_in_raw){ .cls = GIN_STROKE, .num = a->dev[k].num, .n = x->npts,
+                        .pts = (const double (*)[3])x->pts };
+    x->npts = 0;
+    x->dragging = 0;
+    return 1;
+}
+
+/* The valuator value at window x position px on the slider of device d. */
+static double slider_value(const x11_ws *x, const gks_in_active_dev *d, int px)
+{
+    double f = (double)(px - x->slider_x) / SLIDER_W;
+    f = f < 0 ? 0 : f > 1 ? 1 : f;
+    return d->low + f * (d->high - d->low);
+}
+
+static int on_slider(const x11_ws *x, int px, int py)
+{
+    return x->slider_x >= 0 && px >= x->slider_x - 8 && px <= x->slider_x + SLIDER_W + 8 &&
+           py >= x->slider_y - 12 && py <= x->slider_y + 28;
 }
 
 /* One X event -> a raw event (1), or nothing (0). */
@@ -283,11 +515,62 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
 {
     x11_ws *x = ws->priv;
     if (e->type == Expose) {
+        if (e->xexpose.count == 0)
+            x11_blit(x);
+        return 0;
+    }
+    if (e->type == EnterNotify || e->type == LeaveNotify) {
+        x->in_win = e->type == EnterNotify;
         x11_blit(x);
+        return 0;
+    }
+    if (e->type == MotionNotify) {
+        while (XCheckTypedWindowEvent(x->dpy, x->win, MotionNotify, e)) /* the latest */
+            ;
+        x->mx = e->xmotion.x;
+        x->my = e->xmotion.y;
+        x->in_win = 1;
+        int ks = target(a, 1u << GIN_STROKE), kv = target(a, 1u << GIN_VAL);
+        if (x->dragging && ks >= 0 && x->npts > 0 && x->npts < GKS_IN_STROKE_MAX) {
+            double dc[3] = { x->mx + 0.5, x->h - x->my - 0.5, 0 };
+            double dx = dc[0] - x->pts[x->npts - 1][0], dy = dc[1] - x->pts[x->npts - 1][1];
+            if (dx * dx + dy * dy >= 36) /* a point every 6 pixels of the drag */
+                memcpy(x->pts[x->npts++], dc, sizeof dc);
+        }
+        if (kv >= 0 && (e->xmotion.state & Button1Mask) && on_slider(x, x->mx, x->my)) {
+            x->val = slider_value(x, &a->dev[kv], x->mx);
+            x->have_val = 1;
+        }
+        x11_blit(x); /* rubber bands, aperture, menu highlight follow the pointer */
+        return 0;
+    }
+    if (e->type == ButtonRelease) {
+        int ks = target(a, 1u << GIN_STROKE);
+        if (e->xbutton.button == Button1 && x->dragging && ks >= 0 && x->npts > 1)
+            return stroke_event(x, a, ks, ev); /* the end of a drag */
+        x->dragging = 0;
         return 0;
     }
     if (e->type == ButtonPress) {
         double dc[3] = { e->xbutton.x + 0.5, x->h - e->xbutton.y - 0.5, 0 };
+        int px = e->xbutton.x, py = e->xbutton.y;
+        int kc = target(a, 1u << GIN_CHOICE), kv = target(a, 1u << GIN_VAL);
+        if (e->xbutton.button == Button1 && kc >= 0 && x->menu_n > 0 && px >= x->menu_x &&
+            px < x->menu_x + x->menu_w && py >= x->menu_y && py < x->menu_y + x->menu_n * ITEM_H) {
+            *ev = (gks_in_raw){ .cls = GIN_CHOICE, .num = a->dev[kc].num,
+                                .choice = (py - x->menu_y) / ITEM_H + 1 };
+            return 1;
+        }
+        if (e->xbutton.button == Button1 && kv >= 0 && on_slider(x, px, py)) {
+            x->val = slider_value(x, &a->dev[kv], px);
+            x->have_val = 1;
+            x11_blit(x);
+            if (a->dev[kv].mode == GOP_REQ)
+                return 0; /* Return triggers */
+            *ev = (gks_in_raw){ .cls = GIN_VAL, .num = a->dev[kv].num, .val = x->val };
+            x->have_val = 0; /* the next input starts from the device's value */
+            return 1;
+        }
         int k = target(a, (1u << GIN_LOC) | (1u << GIN_PICK) | (1u << GIN_STROKE));
         if (k < 0)
             return 0;
@@ -295,16 +578,16 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
         if (ev->cls == GIN_STROKE) {
             if (e->xbutton.button == Button1 && x->npts < GKS_IN_STROKE_MAX) {
                 memcpy(x->pts[x->npts++], dc, sizeof dc);
+                x->dragging = 1;
+                x11_blit(x);
                 return 0;
             }
             if (x->npts == 0)
                 return 0;
-            ev->n = x->npts;
-            x->npts = 0;
-        } else {
-            memcpy(x->pts[0], dc, sizeof dc);
-            ev->n = 1;
+            return stroke_event(x, a, k, ev);
         }
+        memcpy(x->pts[0], dc, sizeof dc);
+        ev->n = 1;
         ev->pts = (const double (*)[3])x->pts;
         return 1;
     }
@@ -316,6 +599,8 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
     if (sym == XK_Escape && a->request >= 0) {
         *ev = (gks_in_raw){ .cls = a->dev[a->request].cls, .num = a->dev[a->request].num,
                             .brk = 1 };
+        x->npts = 0;
+        x->dragging = 0;
         return 1;
     }
     int ks = target(a, 1u << GIN_STRING), kc = target(a, 1u << GIN_CHOICE),
@@ -331,6 +616,7 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
             x->ntext--;
         else if (n == 1 && isprint((unsigned char)buf[0]) && x->ntext < a->dev[ks].str_buf)
             x->text[x->ntext++] = buf[0];
+        x11_blit(x); /* the prompt line shows the text typed */
         return 0;
     }
     if (kc >= 0 && n == 1 && buf[0] >= '0' && buf[0] <= '9') {
@@ -347,12 +633,14 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
         if (n == 1 && (buf[0] == '+' || buf[0] == '-')) {
             x->val += buf[0] == '+' ? step : -step;
             x->val = x->val < d->low ? d->low : x->val > d->high ? d->high : x->val;
+            x11_blit(x);
             if (d->mode == GOP_REQ)
                 return 0;
         } else if (sym != XK_Return) {
             return 0;
         }
         *ev = (gks_in_raw){ .cls = GIN_VAL, .num = d->num, .val = x->val };
+        x->have_val = 0;
         return 1;
     }
     return 0;
@@ -361,16 +649,26 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
 static int x11_input(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev)
 {
     x11_ws *x = ws->priv;
-    if (x->dirty && x11_update(ws))
-        return -1;
+    x->act = *act;
+    x->have_act = 1;
+    if (x->dirty) {
+        if (x11_update(ws))
+            return -1;
+    } else {
+        x11_blit(x);
+    }
     prompt(x, act);
     int ms = timeout > 0 ? (int)ceil(timeout * 1000) : 0;
     for (;;) {
         while (XPending(x->dpy)) {
             XEvent e;
             XNextEvent(x->dpy, &e);
-            if (translate(ws, act, &e, ev))
+            if (translate(ws, act, &e, ev)) {
+                x->have_act = 0;
+                if (act->request >= 0)
+                    x11_blit(x); /* the REQUEST's prompt and echo go */
                 return 1;
+            }
         }
         struct pollfd p = { ConnectionNumber(x->dpy), POLLIN, 0 };
         if (ms <= 0 || poll(&p, 1, ms) <= 0)
