@@ -275,7 +275,8 @@ int bs_load(const char *path, const bs_options *opt, bs_scene *s, char *err, siz
     }
     scene_io_free(&io);
     double t0 = bs_process_cpu(), w0 = bs_wall();
-    rc = rt_scene_commit(s->rt, opt->build);
+    const rt_build_options one = {.brute_threshold = -1, .threads = 1}; /* the defaults, 1 thread */
+    rc = rt_scene_commit(s->rt, opt->build ? opt->build : &one);
     s->commit_seconds = bs_process_cpu() - t0;
     s->commit_wall = bs_wall() - w0;
     if (rc != RT_OK)

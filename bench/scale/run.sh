@@ -16,7 +16,7 @@ for a in "$@"; do
 done
 src=$(cd "$(dirname "$0")/../.." && pwd)
 if [ $build = 1 ]; then
-  cmake -S "$src" -B "$dir" -DCMAKE_BUILD_TYPE=Release > /dev/null
+  cmake -S "$src" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DGKS_BUILD_BENCHMARKS=ON > /dev/null
   cmake --build "$dir" -j2 --target scale > /dev/null
 fi
 bin=$(cd "$dir" && pwd)/bench/scale/scale
