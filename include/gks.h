@@ -750,6 +750,29 @@ typedef struct { Gint num_lists; Gint_list *lists; } Gint_list_list;
 /* FILL AREA 3 WITH DATA: one facet, fdata (may be NULL when fflag = GFACET_NONE). */
 GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
                               const Gfacet_vdata3 *vdata);
+/* FILL AREA SET 3 WITH DATA: one facet of num_sets loops, vdata[k] the k-th loop (PHIGS
+ * PLUS's edge data flag and edge data are not taken: edges follow the edge attributes, as
+ * for FILL AREA SET 3). */
+GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
+                                  const Gfacet_data3 *fdata, Gint num_sets,
+                                  const Gfacet_vdata3 *vdata);
+/* TRIANGLE STRIP 3 WITH DATA: n = vdata->num_vertices >= 3 vertices, n - 2 triangles
+ * (i, i+1, i+2), odd i reversed so that all keep the first one's orientation; fdata has
+ * n - 2 records. */
+GKS_API void gtri_strip3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
+                              const Gfacet_vdata3 *vdata);
+/* QUADRILATERAL MESH 3 WITH DATA: dim->size_x * dim->size_y vertices (each >= 2; vertex
+ * (i, j) at vdata->points[j * size_x + i], num_vertices must equal the product, else 100),
+ * (size_x - 1) * (size_y - 1) quadrilaterals (i,j), (i+1,j), (i+1,j+1), (i,j+1) with their
+ * fdata records in the same order. */
+GKS_API void gquad_mesh3_data(Gint fflag, Gint vflag, Gint colr_type, const Gint_size *dim,
+                              const Gfacet_data3 *fdata, const Gfacet_vdata3 *vdata);
+/* SET OF FILL AREA SET 3 WITH DATA: num_sets facets sharing the vertices of vdata; set k
+ * is vlist[k], its loops lists of 0-based vertex indices (904 when out of range); fdata
+ * has num_sets records. */
+GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type, Gint num_sets,
+                                         const Gfacet_data3 *fdata, const Gint_list_list *vlist,
+                                         const Gfacet_vdata3 *vdata);
 /* SET (BACK) INTERIOR SHADING METHOD: GSHAD_*. Errors: 8, 523 (not 1..3; PHIGS 123). */
 GKS_API void gset_int_shad_meth(Gint method);
 GKS_API void gset_back_int_shad_meth(Gint method);

@@ -239,6 +239,78 @@ static void scene_light(Gint ws)
     gfill_area3(&(Gpoint_list3){ 3, wall });
 }
 
+/* Every primitive with data, each flag combination's kind, colours by index and RGB, under
+ * a non-uniform normalization, partly clipped at the viewport, some in a segment with a
+ * non-uniform segment transformation; z-buffer, colour interpolation in front. */
+static void scene_data(Gint ws)
+{
+    Glimit3 w = { 0, 2, 0, 1, 0, 1 }, v = { 0.05, 0.95, 0.05, 0.95, 0, 1 };
+    gset_win3(1, &w);
+    gset_vp3(1, &v);
+    gsel_norm_tran(1);
+    gset_hlhsr_mode(ws, GHLHSR_ZBUFFER);
+    Gcolr_rep c2 = { { 0.8, 0.3, 0.1 } }, c3 = { { 0.1, 0.6, 0.9 } };
+    gset_colr_rep(ws, 2, &c2);
+    gset_colr_rep(ws, 3, &c3);
+    gset_fill_int_style(GSTYLE_SOLID);
+    gset_int_shad_meth(GSHAD_COLR);
+    gset_back_int_shad_meth(GSHAD_NORM);
+    /* FILL AREA 3 WITH DATA: vertex RGB and normals, a facet normal; crosses x = 2. */
+    Gpoint3 p1[3] = { { 0.1, 0.1, 0.5 }, { 2.4, 0.2, 0.5 }, { 0.5, 0.5, 0.6 } };
+    Gcoval c1[3] = { { .rgb = { 1, 0, 0 } }, { .rgb = { 0, 1, 0 } }, { .rgb = { 0, 0, 1 } } };
+    Gvec3 n1[3] = { { 0, 0, 1 }, { 0.3, 0, 1 }, { 0, 0.3, 1 } };
+    Gfacet_data3 f1 = { .norm = { 0, 0, 1 } };
+    gfill_area3_data(GFACET_NORM, GVERT_COORD_COLR_NORM, GCOLR_RGB, &f1,
+                     &(Gfacet_vdata3){ 3, p1, c1, n1 });
+    /* FILL AREA SET 3 WITH DATA: a square with a hole, vertex colour indices, facet colour. */
+    Gpoint3 outer[4] = { { 1.0, 0.55, 0.3 }, { 1.9, 0.55, 0.3 }, { 1.9, 0.95, 0.3 },
+                         { 1.0, 0.95, 0.3 } };
+    Gpoint3 hole[3] = { { 1.2, 0.6, 0.3 }, { 1.6, 0.6, 0.3 }, { 1.4, 0.8, 0.3 } };
+    Gcoval ci4[4] = { { .ind = 2 }, { .ind = 3 }, { .ind = 1 }, { .ind = 2 } };
+    Gcoval ci3[3] = { { .ind = 3 }, { .ind = 3 }, { .ind = 2 } };
+    Gfacet_vdata3 loops[2] = { { 4, outer, ci4, NULL }, { 3, hole, ci3, NULL } };
+    Gfacet_data3 f2 = { .colr = { .ind = 3 } };
+    gset_edge_flag(GEDGE_ON);
+    gfill_area_set3_data(GFACET_COLR, GVERT_COORD_COLR, GCOLR_INDIRECT, &f2, 2, loops);
+    gset_edge_flag(GEDGE_OFF);
+    /* TRIANGLE STRIP 3 WITH DATA: facet RGB colours and normals. */
+    Gpoint3 ps[6] = { { 0.1, 0.6, 0.2 }, { 0.2, 0.95, 0.25 }, { 0.35, 0.6, 0.3 },
+                      { 0.45, 0.95, 0.35 }, { 0.6, 0.6, 0.4 }, { 0.7, 0.95, 0.45 } };
+    Gfacet_data3 fs[4] = { { .colr = { .rgb = { 1, 1, 0 } }, .norm = { 0, 0, 1 } },
+                           { .colr = { .rgb = { 0, 1, 1 } }, .norm = { 0, 1, 1 } },
+                           { .colr = { .rgb = { 1, 0, 1 } }, .norm = { 1, 0, 1 } },
+                           { .colr = { .rgb = { 0.5, 0.5, 0.5 } }, .norm = { 0, 0, -1 } } };
+    gtri_strip3_data(GFACET_COLR_NORM, GVERT_COORD, GCOLR_RGB, fs,
+                     &(Gfacet_vdata3){ 6, ps, NULL, NULL });
+    /* In a segment with a non-uniform transformation: QUADRILATERAL MESH 3 WITH DATA
+     * (vertex normals, vertex colour indices) and SET OF FILL AREA SET 3 WITH DATA. */
+    gcreate_seg(7);
+    Gpoint3 pm[12];
+    Gvec3 nm[12];
+    Gcoval cm[12];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 4; i++) {
+            pm[j * 4 + i] = (Gpoint3){ 0.9 + 0.15 * i, 0.1 + 0.12 * j, 0.4 + 0.05 * i * j };
+            nm[j * 4 + i] = (Gvec3){ 0.2 * i - 0.3, 0.1 * j, 1 };
+            cm[j * 4 + i].ind = 1 + (i + j) % 3;
+        }
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD_COLR_NORM, GCOLR_INDIRECT, &(Gint_size){ 4, 3 },
+                     NULL, &(Gfacet_vdata3){ 12, pm, cm, nm });
+    Gpoint3 pv[5] = { { 1.5, 0.1, 0.7 }, { 1.9, 0.1, 0.7 }, { 1.9, 0.45, 0.7 },
+                      { 1.5, 0.45, 0.7 }, { 1.7, 0.3, 0.9 } };
+    Gint a0[3] = { 0, 1, 4 }, a1[3] = { 1, 2, 4 }, a2[4] = { 2, 3, 0, 4 };
+    Gint_list l0[1] = { { 3, a0 } }, l1[2] = { { 3, a1 }, { 4, a2 } };
+    Gint_list_list sets[2] = { { 1, l0 }, { 2, l1 } };
+    Gfacet_data3 fo[2] = { { .norm = { 0, -1, 1 } }, { .norm = { 1, 1, 1 } } };
+    Gcoval co[5] = { { .rgb = { 1, 0.5, 0 } }, { .rgb = { 0, 0.5, 1 } }, { .rgb = { 1, 1, 1 } },
+                     { .rgb = { 0.2, 0.2, 0.2 } }, { .rgb = { 0, 1, 0 } } };
+    gset_of_fill_area_set3_data(GFACET_NORM, GVERT_COORD_COLR, GCOLR_RGB, 2, fo, sets,
+                                &(Gfacet_vdata3){ 5, pv, co, NULL });
+    gclose_seg();
+    Gtran_matrix3 m = { { 1.2, 0, 0, -0.1 }, { 0, 0.6, 0, 0.05 }, { 0, 0, 1, 0 } };
+    gset_seg_tran3(7, m);
+}
+
 /* ---------------------------------------------------------------- helpers */
 static void open_all(void)
 {
@@ -356,6 +428,68 @@ static void test_round_trip_2d(void **u) { (void)u; round_trip(scene_2d, "2d"); 
 static void test_round_trip_segments(void **u) { (void)u; round_trip(scene_segments, "seg"); }
 static void test_round_trip_3d(void **u) { (void)u; round_trip(scene_3d, "3d"); }
 static void test_round_trip_light(void **u) { (void)u; round_trip(scene_light, "light"); }
+static void test_round_trip_data(void **u) { (void)u; round_trip(scene_data, "data"); }
+
+/* The items of the primitives with data (and shading methods) of a metafile, in order:
+ * type and record characters, one string per item. */
+static int data_items(const char *gksm, char **out, int max)
+{
+    gopen_ws(WS_MI, gksm, GWS_TYPE_MI);
+    int n = 0;
+    for (;;) {
+        Gint type = -1, len = -1;
+        gget_item_type(WS_MI, &type, &len);
+        if (n_captured || type == 0)
+            break;
+        char *buf = calloc((size_t)len + 8, 1);
+        gread_item(WS_MI, len, ITEMN(buf + 4, len));
+        if ((type >= 76 && type <= 80) || type == 86) {
+            snprintf(buf, 4, "%03d", type);
+            buf[3] = ':';
+            if (n < max)
+                out[n++] = buf;
+            else
+                free(buf);
+        } else {
+            free(buf);
+        }
+    }
+    gclose_ws(WS_MI);
+    return n;
+}
+
+/* Interpreting a metafile onto an MO writes the same primitive-with-data items again. */
+static void test_data_items_equal(void **u)
+{
+    (void)u;
+    draw_metafile(scene_data, "mf_data_a.gksm");
+    open_all();
+    gopen_ws(WS_MO, "mf_data_b.gksm", GWS_TYPE_MO);
+    gactivate_ws(WS_MO);
+    gopen_ws(WS_MI, "mf_data_a.gksm", GWS_TYPE_MI);
+    int err, items = interpret_all(WS_MI, &err);
+    assert_int_equal(err, 0);
+    assert_true(items > 10);
+    gclose_ws(WS_MI);
+    gdeactivate_ws(WS_MO);
+    gclose_ws(WS_MO);
+    assert_int_equal(n_captured, 0);
+    char *a[64], *b[64];
+    int na = data_items("mf_data_a.gksm", a, 64), nb = data_items("mf_data_b.gksm", b, 64);
+    assert_int_equal(n_captured, 0);
+    assert_int_equal(na, nb);
+    assert_true(na >= 7); /* 5 primitives, 2 shading methods */
+    int kinds = 0;
+    for (int i = 0; i < na; i++) {
+        if (strcmp(a[i], b[i]))
+            fail_msg("item %d differs:\n%.80s\n%.80s", i, a[i], b[i]);
+        kinds |= 1 << (atoi(a[i]) - 76);
+        free(a[i]);
+        free(b[i]);
+    }
+    assert_int_equal(kinds & 0x1f, 0x1f);
+    gclose_gks();
+}
 
 /* A metafile in RAL GKS's own field widths (H=1, T=3, L=7, I=4, R=9, reals F9.6) with RAL's
  * 2-D items draws what the same functions draw directly in NDC (transformation 0). */
@@ -560,7 +694,7 @@ static void test_errors(void **u)
     ginterpret_item(22, 4, ITEMN(NULL, 0));
     ginterpret_item(-5, 0, ITEM(""));
     ginterpret_item(10, 0, ITEM(""));
-    ginterpret_item(77, 0, ITEM(""));
+    ginterpret_item(87, 0, ITEM(""));
     ginterpret_item(22, 3, ITEM("abc"));            /* not an integer field */
     ginterpret_item(22, 22, ITEM("          2          3")); /* a field too many */
     ginterpret_item(23, 11, ITEM("          2"));  /* a real field expected */
@@ -715,6 +849,8 @@ int main(void)
         cmocka_unit_test(test_mo_layout),
         cmocka_unit_test(test_round_trip_2d),
         cmocka_unit_test(test_round_trip_segments),
+        cmocka_unit_test(test_round_trip_data),
+        cmocka_unit_test(test_data_items_equal),
         cmocka_unit_test(test_round_trip_3d),
         cmocka_unit_test(test_round_trip_light),
         cmocka_unit_test(test_ral_items),

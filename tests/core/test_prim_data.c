@@ -36,8 +36,7 @@ static int n_rec;
 static void hook(void *ctx, int ws_id, const gks_prim *p)
 {
     (void)ctx;
-    (void)ws_id;
-    if (n_rec >= DMAX_PRIMS)
+    if (ws_id != 1 || n_rec >= DMAX_PRIMS) /* workstation 1 only (not a WISS) */
         return;
     dprim *r = &rec[n_rec++];
     memset(r, 0, sizeof *r);
@@ -316,6 +315,190 @@ static void test_errors(void **state)
     expect_error(5, GFN_FA3D);
 }
 
+
+/* Segments: a stored primitive with data redrawn through a non-uniform segment
+ * transformation S (x * 2, y * 0.5) gets its normals through S's inverse transpose, then
+ * renormalised: n = (1, 1, 0)/sqrt 2 becomes (0.5, 2, 0)/|.|; the points through S. INSERT
+ * SEGMENT with a non-uniform matrix likewise (into the open segment and drawn). */
+static void test_segment_normals_nonuniform(void **state)
+{
+    (void)state;
+    Gpoint3 p[3] = { { 0.2, 0.6, 0.5 }, { 0.4, 0.4, 0.5 }, { 0.3, 0.5, 0.9 } };
+    const double s = sqrt(0.5);
+    Gvec3 n[3] = { { s, s, 0 }, { s, s, 0 }, { 0, 0, 1 } };
+    Gfacet_data3 fd = { .norm = { s, s, 0 } };
+    gopen_ws(2, NULL, GWS_TYPE_WISS);
+    gactivate_ws(2);
+    gcreate_seg(1);
+    gfill_area3_data(GFACET_NORM, GVERT_COORD_NORM, GCOLR_INDIRECT, &fd,
+                     &(Gfacet_vdata3){ 3, p, NULL, n });
+    gclose_seg();
+    expect_no_error();
+    assert_int_equal(n_rec, 1);
+    Gtran_matrix3 m = { { 2, 0, 0, -0.2 }, { 0, 0.5, 0, 0.1 }, { 0, 0, 1, 0 } };
+    gset_seg_tran3(1, m);
+    n_rec = 0;
+    gredraw_all_seg_ws(1);
+    expect_no_error();
+    assert_int_equal(n_rec, 1);
+    const gks_prim *r = &rec[0].p;
+    assert_non_null(r->vnormals);
+    assert_true(r->has_fnormal);
+    double e[3] = { 0.5, 2, 0 };
+    unit3(e);
+    near3(r->vnormals[0].delta_x, r->vnormals[0].delta_y, r->vnormals[0].delta_z, e[0], e[1],
+          e[2], 1e-15);
+    near3(r->vnormals[1].delta_x, r->vnormals[1].delta_y, r->vnormals[1].delta_z, e[0], e[1],
+          e[2], 1e-15);
+    near3(r->vnormals[2].delta_x, r->vnormals[2].delta_y, r->vnormals[2].delta_z, 0, 0, 1,
+          1e-15);
+    near3(r->fnormal.delta_x, r->fnormal.delta_y, r->fnormal.delta_z, e[0], e[1], e[2], 1e-15);
+    near3(r->pts[0].x, r->pts[0].y, r->pts[0].z, 0.2, 0.4, 0.5, 1e-15);
+    /* The normal is perpendicular to the transformed edge p0 -> p1. */
+    double ex = r->pts[1].x - r->pts[0].x, ey = r->pts[1].y - r->pts[0].y;
+    assert_true(fabs(ex * r->fnormal.delta_x + ey * r->fnormal.delta_y) < 1e-15);
+    /* INSERT SEGMENT with a non-uniform matrix: x * 0.5, y * 3 (after S). */
+    Gtran_matrix3 ins = { { 0.5, 0, 0, 0.1 }, { 0, 3, 0, -0.8 }, { 0, 0, 1, 0 } };
+    gcreate_seg(2);
+    n_rec = 0;
+    ginsert_seg3(1, ins);
+    gclose_seg();
+    expect_no_error();
+    assert_int_equal(n_rec, 1);
+    double e2[3] = { 0.5 / 0.5, 2 / 3.0, 0 }; /* (S then ins)^-T n ~ (0.5 / 0.5, 2 / 3, 0) */
+    unit3(e2);
+    near3(rec[0].p.vnormals[0].delta_x, rec[0].p.vnormals[0].delta_y,
+          rec[0].p.vnormals[0].delta_z, e2[0], e2[1], e2[2], 1e-15);
+    /* Segment 2 holds the inserted primitive mapped by S then ins: redrawn unchanged. */
+    gset_vis(1, GSEG_INVIS);
+    n_rec = 0;
+    gredraw_all_seg_ws(1);
+    expect_no_error();
+    assert_int_equal(n_rec, 1);
+    near3(rec[0].p.vnormals[0].delta_x, rec[0].p.vnormals[0].delta_y,
+          rec[0].p.vnormals[0].delta_z, e2[0], e2[1], e2[2], 1e-15);
+    near3(rec[0].p.pts[0].x, rec[0].p.pts[0].y, rec[0].p.pts[0].z, 0.2, 0.4, 0.5, 1e-15);
+}
+
+/* The other primitives with data: their facets as drivers receive them. */
+static void test_strip_mesh_sets(void **state)
+{
+    (void)state;
+    Gpoint3 p[6] = { { 0.1, 0.1, 0.5 }, { 0.1, 0.3, 0.5 }, { 0.3, 0.1, 0.5 },
+                     { 0.3, 0.3, 0.5 }, { 0.5, 0.1, 0.5 }, { 0.5, 0.3, 0.5 } };
+    Gcoval c[6];
+    for (int i = 0; i < 6; i++)
+        c[i].rgb = (Grgb){ i / 5.0, 0, 1 - i / 5.0 };
+    Gfacet_data3 fd[4] = { { .colr = { .ind = 1 } }, { .colr = { .ind = 0 } },
+                           { .colr = { .ind = 1 } }, { .colr = { .ind = 0 } } };
+    gtri_strip3_data(GFACET_COLR, GVERT_COORD, GCOLR_INDIRECT, fd,
+                     &(Gfacet_vdata3){ 6, p, NULL, NULL });
+    expect_no_error();
+    assert_int_equal(n_rec, 4);
+    /* Triangle 1 is (2, 1, 3): reversed, keeping the orientation of triangle 0. */
+    assert_true(rec[1].p.pts[0].x == 0.3 && rec[1].p.pts[0].y == 0.1);
+    assert_true(rec[1].p.pts[1].x == 0.1 && rec[1].p.pts[1].y == 0.3);
+    for (int i = 0; i < 4; i++) {
+        const Gpoint3 *q = rec[i].p.pts;
+        double z = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
+        assert_true(z > 0 || z < 0);
+        if (i > 0) {
+            const Gpoint3 *q0 = rec[0].p.pts;
+            double z0 = (q0[1].x - q0[0].x) * (q0[2].y - q0[0].y) -
+                        (q0[1].y - q0[0].y) * (q0[2].x - q0[0].x);
+            assert_true((z > 0) == (z0 > 0));
+        }
+    }
+    /* Quadrilateral mesh 3 x 2: two quadrilaterals (i,j), (i+1,j), (i+1,j+1), (i,j+1). */
+    n_rec = 0;
+    Gpoint3 m[6] = { { 0.1, 0.1, 0.5 }, { 0.2, 0.1, 0.5 }, { 0.3, 0.1, 0.5 },
+                     { 0.1, 0.2, 0.5 }, { 0.2, 0.2, 0.5 }, { 0.3, 0.2, 0.5 } };
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD_COLR, GCOLR_RGB, &(Gint_size){ 3, 2 }, NULL,
+                     &(Gfacet_vdata3){ 6, m, c, NULL });
+    expect_no_error();
+    assert_int_equal(n_rec, 2);
+    assert_int_equal(rec[1].p.n_points, 4);
+    assert_true(rec[1].p.pts[0].x == 0.2 && rec[1].p.pts[2].x == 0.3 && rec[1].p.pts[2].y == 0.2);
+    near3(rec[1].p.vcolours[3].red, rec[1].p.vcolours[3].green, rec[1].p.vcolours[3].blue,
+          c[4].rgb.red, 0, c[4].rgb.blue, 0);
+    /* Set of fill area sets: set 1 has two loops, edges as FILL AREA SET. */
+    n_rec = 0;
+    gset_edge_flag(GEDGE_ON);
+    Gint a0[3] = { 0, 2, 1 }, a1[4] = { 0, 4, 5, 1 }, a2[3] = { 2, 4, 3 };
+    Gint_list l0[1] = { { 3, a0 } }, l1[2] = { { 4, a1 }, { 3, a2 } };
+    Gint_list_list sets[2] = { { 1, l0 }, { 2, l1 } };
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 2, NULL, sets,
+                                &(Gfacet_vdata3){ 6, p, NULL, NULL });
+    expect_no_error();
+    assert_int_equal(n_rec, 2);
+    assert_int_equal(rec[1].p.n_loops, 2);
+    assert_int_equal(rec[1].p.loop_counts[0], 4);
+    assert_int_equal(rec[1].p.loop_counts[1], 3);
+    assert_int_equal(rec[1].p.attrs.edge_flag, 1);
+    assert_true(rec[1].p.pts[4].x == 0.3 && rec[1].p.pts[4].y == 0.1);
+    /* Fill area set with data: one facet, the loops in order. */
+    n_rec = 0;
+    Gfacet_vdata3 loops[2] = { { 3, p, NULL, NULL }, { 3, p + 3, NULL, NULL } };
+    gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, 2, loops);
+    expect_no_error();
+    assert_int_equal(n_rec, 1);
+    assert_int_equal(rec[0].p.n_loops, 2);
+    assert_int_equal(rec[0].p.n_points, 6);
+    assert_int_equal(rec[0].p.attrs.edge_flag, 1);
+}
+
+/* Errors of the other primitives. */
+static void test_errors_others(void **state)
+{
+    (void)state;
+    Gpoint3 p[4] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.1, 0.9, 0.5 }, { 0.9, 0.9, 0.5 } };
+    Gfacet_vdata3 v4 = { 4, p, NULL, NULL }, v2 = { 2, p, NULL, NULL };
+    gtri_strip3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, &v2);
+    expect_error(100, GFN_TS3D);
+    gtri_strip3_data(GFACET_NORM, GVERT_COORD, GCOLR_RGB, NULL, &v4);
+    expect_error(2003, GFN_TS3D);
+    gtri_strip3_data(GFACET_NONE, GVERT_COORD, 7, NULL, &v4);
+    expect_error(2000, GFN_TS3D);
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, &(Gint_size){ 2, 1 }, NULL, &v4);
+    expect_error(100, GFN_QM3D);
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, &(Gint_size){ 3, 2 }, NULL, &v4);
+    expect_error(100, GFN_QM3D); /* 6 vertices required, 4 given */
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, NULL, &v4);
+    expect_error(2003, GFN_QM3D);
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, &(Gint_size){ 65536, 65536 }, NULL,
+                     &v4);
+    expect_error(100, GFN_QM3D);
+    Gfacet_data3 bad = { .colr = { .ind = -3 } };
+    Gfacet_data3 fd1[1] = { { .colr = { .ind = 1 } } };
+    gquad_mesh3_data(GFACET_COLR, GVERT_COORD, GCOLR_INDIRECT, &(Gint_size){ 2, 2 }, &bad, &v4);
+    expect_error(92, GFN_QM3D);
+    gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, 0, &v4);
+    expect_error(100, GFN_FAS3D);
+    gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, 2,
+                         (Gfacet_vdata3[]){ v4, v2 });
+    expect_error(100, GFN_FAS3D);
+    gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, NULL, 1, NULL);
+    expect_error(2003, GFN_FAS3D);
+    Gint a[3] = { 0, 1, 4 }, b[2] = { 0, 1 }, c[3] = { 0, 1, -1 };
+    Gint_list la = { 3, a }, lb = { 2, b }, lc = { 3, c };
+    Gint_list_list sa = { 1, &la }, sb = { 1, &lb }, sc = { 1, &lc }, s0 = { 0, NULL };
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sa, &v4);
+    expect_error(904, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sc, &v4);
+    expect_error(904, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sb, &v4);
+    expect_error(100, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &s0, &v4);
+    expect_error(100, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 0, NULL, &sa, &v4);
+    expect_error(100, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, NULL, &v4);
+    expect_error(2003, GFN_SFAS3D);
+    gset_of_fill_area_set3_data(GFACET_COLR, GVERT_COORD, GCOLR_INDIRECT, 1, fd1, &sa, &v4);
+    expect_error(904, GFN_SFAS3D);
+    assert_int_equal(n_rec, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -324,6 +507,9 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_clip_interpolates, setup, teardown),
         cmocka_unit_test_setup_teardown(test_shading_methods, setup, teardown),
         cmocka_unit_test_setup_teardown(test_errors, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_segment_normals_nonuniform, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_strip_mesh_sets, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_errors_others, setup, teardown),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     free(rec);

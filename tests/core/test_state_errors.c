@@ -117,8 +117,18 @@ static void c_SAPR(void) { gset_area_props(&props); }
 static void c_SBAPR(void) { gset_back_area_props(&props); }
 static void c_SRFEQ(void) { gset_refl_eq(GREFL_AMB_DIFF); }
 static void c_SBRFEQ(void) { gset_back_refl_eq(GREFL_AMB_DIFF); }
+static const Gpoint3 quad4[4] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.1, 0.9, 0.5 }, { 0.9, 0.9, 0.5 } };
 static const Gfacet_vdata3 vd3 = { 3, (Gpoint3 *)tri3, NULL, NULL };
 static void c_FA3D(void) { gfill_area3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, &vd3); }
+static const Gfacet_vdata3 vd4 = { 4, (Gpoint3 *)quad4, NULL, NULL };
+static const Gint_size dim22 = { 2, 2 };
+static Gint idx3[3] = { 0, 1, 2 };
+static Gint_list loop3 = { 3, idx3 };
+static const Gint_list_list set1 = { 1, &loop3 };
+static void c_FAS3D(void) { gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, 1, &vd3); }
+static void c_TS3D(void) { gtri_strip3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, &vd4); }
+static void c_QM3D(void) { gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, &dim22, NULL, &vd4); }
+static void c_SFAS3D(void) { gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, 1, NULL, &set1, &vd3); }
 static void c_SISM(void) { gset_int_shad_meth(GSHAD_COLR); }
 static void c_SBISM(void) { gset_back_int_shad_meth(GSHAD_NORM); }
 static void c_SLSR(void)

@@ -23,6 +23,7 @@
 #include "gks_export.h"
 #include "gks_gdp.h"
 #include "gks_mf_record.h"
+#include "gks_output_data.h"
 #include "gks_output_int.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
@@ -988,6 +989,8 @@ static int emit_stored(target *t, const double S[3][4], const double box[6], int
                                    { sp->cell_r.x, sp->cell_r.y, sp->cell_r.z } };
         return emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, t);
     }
+    case GKS_SEG_AREA_DATA:
+        return gks_area_data_emit_stored(&nc, sp, t);
     }
     return 0;
 }
@@ -1080,7 +1083,9 @@ int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
     for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
         gks_seg_prim sp;
         gks_seg_get(seg, k, &sp);
-        if (open)
+        if (open && sp.kind == GKS_SEG_AREA_DATA)
+            err = gks_area_data_insert(open, (const double (*)[4])M, &cur, &sp);
+        else if (open)
             err = insert_record(open, (const double (*)[4])M, &cur, &sp);
         target t;
         target_current(&t, &cur);

@@ -17,6 +17,7 @@
 #include "gks_attr.h"
 #include "gks_error.h"
 #include "gks_export.h"
+#include "gks_mf_record.h"
 #include "gks_output_data.h"
 #include "gks_output_int.h"
 #include "gks_state.h"
@@ -38,55 +39,6 @@ static int colrs_ok(int ctype, const Gcoval *c, size_t n)
         if (ctype == GCOLR_INDIRECT && c[i].ind < 0)
             return 92;
         if (ctype == GCOLR_RGB && !rgb_ok(&c[i].rgb))
-            return 96;
-    }
-    return 0;
-}
-
-int gks_area_data_check(const gks_area_data *d)
-{
-    if (d->fflag < GFACET_NONE || d->fflag > GFACET_COLR_NORM || d->vflag < GVERT_COORD ||
-        d->vflag > GVERT_COORD_COLR_NORM || d->ctype < GCOLR_INDIRECT || d->ctype > GCOLR_RGB)
-        return 2000;
-    if (d->n_facets < 1 || d->n_verts < 3 || d->n_verts > INT32_MAX || d->n_facets > INT32_MAX ||
-        d->n_loops > INT32_MAX || d->n_idx > INT32_MAX)
-        return 100;
-    if (!d->pts || !d->facet_loops || !d->loop_counts || !d->idx)
-        return 2003;
-    int vc = d->vflag & GVERT_COORD_COLR, vn = d->vflag & GVERT_COORD_NORM;
-    int fc = d->fflag & GFACET_COLR, fn = d->fflag & GFACET_NORM;
-    if ((vc && (d->ctype == GCOLR_RGB ? !d->vrgb : !d->vci)) || (vn && !d->vnorm) ||
-        (fc && (d->ctype == GCOLR_RGB ? !d->frgb : !d->fci)) || (fn && !d->fnorm))
-        return 2003;
-    size_t loops = 0, nidx = 0;
-    for (size_t f = 0; f < d->n_facets; f++) {
-        if (d->facet_loops[f] < 1 || (size_t)d->facet_loops[f] > d->n_loops - loops)
-            return 100;
-        for (int k = 0; k < d->facet_loops[f]; k++) {
-            int c = d->loop_counts[loops + (size_t)k];
-            if (c < 3 || (size_t)c > d->n_idx - nidx)
-                return 100;
-            nidx += (size_t)c;
-        }
-        loops += (size_t)d->facet_loops[f];
-    }
-    if (loops != d->n_loops || nidx != d->n_idx)
-        return 100;
-    for (size_t i = 0; i < d->n_idx; i++)
-        if (d->idx[i] < 0 || (size_t)d->idx[i] >= d->n_verts)
-            return 904;
-    for (size_t i = 0; i < d->n_verts; i++) {
-        if (vc && d->ctype == GCOLR_INDIRECT && d->vci[i] < 0)
-            return 92;
-        if (vc && d->ctype == GCOLR_RGB &&
-            !rgb_ok(&(Grgb){ d->vrgb[i][0], d->vrgb[i][1], d->vrgb[i][2] }))
-            return 96;
-    }
-    for (size_t f = 0; f < d->n_facets; f++) {
-        if (fc && d->ctype == GCOLR_INDIRECT && d->fci[f] < 0)
-            return 92;
-        if (fc && d->ctype == GCOLR_RGB &&
-            !rgb_ok(&(Grgb){ d->frgb[f][0], d->frgb[f][1], d->frgb[f][2] }))
             return 96;
     }
     return 0;
@@ -450,18 +402,295 @@ int gks_area_data_emit(const norm_ctx *nc, const gks_area_data *d, int is_set, t
     return err;
 }
 
-/* ------------------------------------------------------------------ output */
-/* Checks d, then draws it (and, in later steps of this file's history, stores it). */
-static void output_data(int fctid, const gks_area_data *d, int is_set)
+/* ------------------------------------------------------------------ storage */
+/* d mapped to NDC3 by pn for the segment store and the metafile (gks_area_data.h): points
+ * by pn, normals by its inverse transpose, not normalised (so that an identity map, as
+ * at INTERPRET ITEM, reproduces them exactly); a non-finite normal becomes 0 (dropped when
+ * drawn, as the non-finite one would be), a facet with a non-finite point is left out
+ * (it is not drawn). Owns its arrays; n_facets 0: nothing to keep. */
+typedef struct {
+    gks_area_data d;
+    double (*pts)[3], (*vn)[3], (*fn)[3], (*frgb)[3];
+    int *ints, *fci;
+} ndc_data;
+
+static void ndc_free(ndc_data *o)
+{
+    gks_free(o->pts);
+    gks_free(o->vn);
+    gks_free(o->fn);
+    gks_free(o->frgb);
+    gks_free(o->ints);
+    gks_free(o->fci);
+}
+
+static void map_raw_normal(const double nm[3][3], int ok, const double v[3], double o[3])
+{
+    for (int i = 0; i < 3; i++)
+        o[i] = ok ? nm[i][0] * v[0] + nm[i][1] * v[1] + nm[i][2] * v[2] : 0.0;
+    if (!(isfinite(o[0]) && isfinite(o[1]) && isfinite(o[2])))
+        o[0] = o[1] = o[2] = 0.0;
+}
+
+static int to_ndc_data(const double pn[3][4], const gks_area_data *d, ndc_data *o)
+{
+    memset(o, 0, sizeof *o);
+    o->d = *d;
+    size_t nv = d->n_verts, nf = d->n_facets;
+    o->pts = gks_alloc_array(nv, sizeof *o->pts);
+    o->ints = gks_alloc_array(nf + d->n_loops + d->n_idx + 1, sizeof *o->ints);
+    if (!o->pts || !o->ints)
+        return 300;
+    unsigned char *bad = gks_alloc_array(nv, 1);
+    if (!bad)
+        return 300;
+    for (size_t i = 0; i < nv; i++) {
+        gks_xform_mat34_point(pn, d->pts[i], o->pts[i]);
+        bad[i] = !(isfinite(o->pts[i][0]) && isfinite(o->pts[i][1]) && isfinite(o->pts[i][2]));
+        if (bad[i])
+            o->pts[i][0] = o->pts[i][1] = o->pts[i][2] = 0.0; /* referenced by no facet kept */
+    }
+    double nm[3][3];
+    int nm_ok = normal_matrix(pn, nm) == 0;
+    if (d->vnorm) {
+        if (!(o->vn = gks_alloc_array(nv, sizeof *o->vn))) {
+            gks_free(bad);
+            return 300;
+        }
+        for (size_t i = 0; i < nv; i++)
+            map_raw_normal(nm, nm_ok, d->vnorm[i], o->vn[i]);
+        o->d.vnorm = (const double (*)[3])o->vn;
+    }
+    int fcr = (d->fflag & GFACET_COLR) && d->ctype == GCOLR_RGB;
+    int fci = (d->fflag & GFACET_COLR) && d->ctype == GCOLR_INDIRECT;
+    if ((d->fnorm && !(o->fn = gks_alloc_array(nf, sizeof *o->fn))) ||
+        (fcr && !(o->frgb = gks_alloc_array(nf, sizeof *o->frgb))) ||
+        (fci && !(o->fci = gks_alloc_array(nf, sizeof *o->fci)))) {
+        gks_free(bad);
+        return 300;
+    }
+    /* The facets kept, compacted: loops per facet, counts, indices, facet data. */
+    int *fl = o->ints, *lc = o->ints + nf, *ix = o->ints + nf + d->n_loops;
+    size_t kf = 0, kl = 0, ki = 0, l0 = 0, i0 = 0;
+    for (size_t f = 0; f < nf; f++) {
+        size_t nl = (size_t)d->facet_loops[f], n = 0;
+        for (size_t k = 0; k < nl; k++)
+            n += (size_t)d->loop_counts[l0 + k];
+        int keep = 1;
+        for (size_t i = 0; i < n && keep; i++)
+            keep = !bad[d->idx[i0 + i]];
+        if (keep) {
+            fl[kf] = (int)nl;
+            memcpy(lc + kl, d->loop_counts + l0, nl * sizeof *lc);
+            memcpy(ix + ki, d->idx + i0, n * sizeof *ix);
+            if (o->fn)
+                map_raw_normal(nm, nm_ok, d->fnorm[f], o->fn[kf]);
+            if (fcr)
+                memcpy(o->frgb[kf], d->frgb[f], sizeof o->frgb[kf]);
+            if (fci)
+                o->fci[kf] = d->fci[f];
+            kf++;
+            kl += nl;
+            ki += n;
+        }
+        l0 += nl;
+        i0 += n;
+    }
+    gks_free(bad);
+    /* Compact the three index lists into one another's place (they shrank). */
+    memmove(o->ints + kf, lc, kl * sizeof *lc);
+    memmove(o->ints + kf + kl, ix, ki * sizeof *ix);
+    o->d.pts = (const double (*)[3])o->pts;
+    o->d.n_facets = kf;
+    o->d.n_loops = kl;
+    o->d.n_idx = ki;
+    o->d.facet_loops = o->ints;
+    o->d.loop_counts = o->ints + kf;
+    o->d.idx = o->ints + kf + kl;
+    o->d.fnorm = (const double (*)[3])o->fn;
+    o->d.frgb = (const double (*)[3])o->frgb;
+    o->d.fci = o->fci;
+    return 0;
+}
+
+/* The packed form of d with the item number first (segment store). */
+static int pack_store(int item, const gks_area_data *d, int **ints, size_t *ni,
+                      Gpoint3 **tri, size_t *nt)
+{
+    size_t a, t;
+    if (gks_area_data_sizes(d, &a, &t) || a >= INT32_MAX)
+        return 300;
+    *ints = gks_alloc_array(a + 1, sizeof **ints);
+    double (*tt)[3] = gks_alloc_array(t ? t : 1, sizeof *tt);
+    *tri = gks_alloc_array(t ? t : 1, sizeof **tri);
+    if (!*ints || !tt || !*tri) {
+        gks_free(tt);
+        return 300;
+    }
+    (*ints)[0] = item;
+    gks_area_data_pack(d, *ints + 1, tt);
+    for (size_t i = 0; i < t; i++)
+        (*tri)[i] = (Gpoint3){ tt[i][0], tt[i][1], tt[i][2] };
+    gks_free(tt);
+    *ni = a + 1;
+    *nt = t;
+    return 0;
+}
+
+/* Appends d (NDC3) to seg with the bound attributes and normalization, the clipping
+ * volume (clip_on, box). 0, 300 or 301. */
+static int store(gks_segment *seg, int item, const gks_area_data *d, const gks_seg_bound *b,
+                 int clip_on, const double box[6])
+{
+    int *ints = NULL;
+    Gpoint3 *tri = NULL;
+    size_t ni = 0, nt = 0;
+    int err = pack_store(item, d, &ints, &ni, &tri, &nt);
+    if (!err) {
+        gks_seg_prim sp = { .kind = GKS_SEG_AREA_DATA, .n_loops = 1, .n_points = (int)nt,
+                            .pts = tri, .dints = ints, .n_dints = (int)ni, .bound = b,
+                            .clip = clip_on };
+        memcpy(sp.clip_box, box, sizeof sp.clip_box);
+        err = gks_seg_append(seg, &sp);
+    }
+    gks_free(ints);
+    gks_free(tri);
+    return err;
+}
+
+/* The metafile item of d (NDC3): the packed form, integers then reals. */
+static int mf_write(int fctid, int item, const norm_ctx *nc, const gks_area_data *d)
+{
+    size_t a, t;
+    if (gks_area_data_sizes(d, &a, &t))
+        return gks_error_report(300, fctid);
+    int *ints = gks_alloc_array(a, sizeof *ints);
+    double (*tri)[3] = gks_alloc_array(t ? t : 1, sizeof *tri);
+    if (!ints || !tri) {
+        gks_free(ints);
+        gks_free(tri);
+        return gks_error_report(300, fctid);
+    }
+    gks_area_data_pack(d, ints, tri);
+    gks_mf_prim p = { .item = item, .pn = (const double (*)[4])nc->pn,
+                      .norm = (const double (*)[4])nc->n, .box = nc->box,
+                      .clip_on = nc->clip_on, .dints = ints, .n_dints = a,
+                      .dreals = &tri[0][0], .n_dreals = 3 * t };
+    int ok = gks_mf_prim_write(fctid, &p);
+    gks_free(ints);
+    gks_free(tri);
+    return ok;
+}
+
+static int item_is_set(int item) { return item != GKSM_ITEM_FILL_AREA3_DATA; }
+
+/* Checks d, then records (metafile), stores (open segment) and draws it. */
+static void output_data(int fctid, int item, const gks_area_data *d)
 {
     norm_ctx nc;
     if (gks_out_norm_setup(&nc))
         GKS_FAIL(308, fctid);
+    int err = 0;
+    if (gks_mf_on() || nc.seg) {
+        ndc_data o;
+        err = to_ndc_data((const double (*)[4])nc.pn, d, &o);
+        if (!err && o.d.n_facets > 0 && gks_mf_on() && !mf_write(fctid, item, &nc, &o.d)) {
+            ndc_free(&o);
+            return; /* the error handler changed the world */
+        }
+        if (!err && o.d.n_facets > 0 && nc.seg) {
+            gks_seg_bound *b = gks_alloc_array(1, sizeof *b);
+            if (!b) {
+                err = 300;
+            } else {
+                memset(b, 0, sizeof *b); /* padding: snapshots are compared bytewise */
+                b->attrs = gks_ctx()->sl->attrs;
+                memcpy(b->norm, nc.n, sizeof b->norm);
+                err = store(nc.seg, item, &o.d, b, nc.clip_on, nc.box);
+                gks_free(b);
+            }
+        }
+        ndc_free(&o);
+    }
     target t;
     gks_out_target_current(&t, &nc);
-    int err = gks_area_data_emit(&nc, d, is_set, &t);
+    if (!err)
+        err = gks_area_data_emit(&nc, d, item_is_set(item), &t);
     if (err)
         GKS_FAIL(err, fctid);
+}
+
+/* Unpacks a stored primitive with data (its triples copied into *tri). 0, -1 or 300. */
+static int unpack_stored(const gks_seg_prim *sp, gks_area_data *d, double (**tri)[3], int *item)
+{
+    size_t nt = sp->n_points > 0 ? (size_t)sp->n_points : 0;
+    *tri = gks_alloc_array(nt ? nt : 1, sizeof **tri);
+    if (!*tri)
+        return 300;
+    for (size_t i = 0; i < nt; i++) {
+        (*tri)[i][0] = sp->pts[i].x; (*tri)[i][1] = sp->pts[i].y; (*tri)[i][2] = sp->pts[i].z;
+    }
+    if (sp->n_dints < 1)
+        return -1;
+    *item = sp->dints[0];
+    return gks_area_data_unpack(sp->dints + 1, (size_t)sp->n_dints - 1,
+                                (const double (*)[3]) * tri, nt, d);
+}
+
+int gks_area_data_emit_stored(const norm_ctx *nc, const gks_seg_prim *sp, target *t)
+{
+    gks_area_data d;
+    double (*tri)[3] = NULL;
+    int item = 0;
+    int r = unpack_stored(sp, &d, &tri, &item);
+    int err = r == 300 ? 300 : 0;
+    if (r == 0)
+        err = gks_area_data_emit(nc, &d, item_is_set(item), t);
+    gks_free(tri);
+    return err;
+}
+
+int gks_area_data_insert(gks_segment *open, const double M[3][4], const norm_ctx *cur,
+                         const gks_seg_prim *sp)
+{
+    gks_area_data d;
+    double (*tri)[3] = NULL;
+    int item = 0;
+    int r = unpack_stored(sp, &d, &tri, &item);
+    int err = r == 300 ? 300 : 0;
+    if (r == 0) {
+        ndc_data o;
+        gks_seg_bound *b = gks_alloc_array(1, sizeof *b);
+        err = b ? to_ndc_data(M, &d, &o) : 300;
+        if (b && !err) {
+            *b = *sp->bound;
+            gks_xform_mat34_multiply(M, sp->bound->norm, b->norm);
+            if (o.d.n_facets > 0)
+                err = store(open, item, &o.d, b, cur->clip_on, cur->box);
+        }
+        if (b)
+            ndc_free(&o);
+        gks_free(b);
+    }
+    gks_free(tri);
+    return err;
+}
+
+/* INTERPRET ITEM (ws_mi.c) of a primitive with data: d in NDC3 (the MI's normalization
+ * override in effect). */
+void gks_area_data_perform(int item, const gks_area_data *d)
+{
+    int fctid = item == GKSM_ITEM_FILL_AREA3_DATA       ? GFN_FA3D
+                : item == GKSM_ITEM_FILL_AREA_SET3_DATA ? GFN_FAS3D
+                : item == GKSM_ITEM_TRI_STRIP3_DATA     ? GFN_TS3D
+                : item == GKSM_ITEM_QUAD_MESH3_DATA     ? GFN_QM3D
+                                                        : GFN_SFAS3D;
+    if (gks_check_state(fctid))
+        return;
+    int err = gks_area_data_check(d);
+    if (err)
+        GKS_FAIL(err, fctid);
+    output_data(fctid, item, d);
 }
 
 /* The vertex arrays of v as double triples (points, normals, colours). */
@@ -580,42 +809,267 @@ static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf,
     return 0;
 }
 
+/* The index structure of a call, built into one int array (freed by the caller). */
+typedef struct {
+    int *ints;
+    size_t n;
+} ibuf;
+
+/* d->facet_loops, loop_counts and idx for nf facets, nl loops and ni indices: 0 or 300. */
+static int index_alloc(gks_area_data *d, size_t nf, size_t nl, size_t ni, ibuf *b)
+{
+    if (nf > INT32_MAX || nl > INT32_MAX || ni > INT32_MAX || nf + nl > SIZE_MAX - ni)
+        return 300;
+    b->ints = gks_alloc_array(nf + nl + ni, sizeof *b->ints);
+    if (!b->ints)
+        return 300;
+    d->n_facets = nf;
+    d->n_loops = nl;
+    d->n_idx = ni;
+    d->facet_loops = b->ints;
+    d->loop_counts = b->ints + nf;
+    d->idx = b->ints + nf + nl;
+    return 0;
+}
+
+/* The writable views of index_alloc's arrays. */
+#define FL(b) ((b)->ints)
+#define LC(b, d) ((b)->ints + (d)->n_facets)
+#define IX(b, d) ((b)->ints + (d)->n_facets + (d)->n_loops)
+
+/* Checks (the flags and arrays, then the structure), draws and frees. */
+static void finish(int fctid, int item, int err, gks_area_data *d, ibuf *b, wc_arrays *w)
+{
+    if (!err)
+        err = gks_area_data_check(d);
+    if (!err)
+        output_data(fctid, item, d);
+    gks_free(b->ints);
+    wc_free(w);
+    if (err)
+        GKS_FAIL(err, fctid);
+}
+
 GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
                               const Gfacet_vdata3 *vdata)
 {
     if (gks_check_state(GFN_FA3D))
         return;
-    wc_arrays w;
-    memset(&w, 0, sizeof w);
-    gks_area_data d;
-    memset(&d, 0, sizeof d);
+    wc_arrays w = { 0 };
+    gks_area_data d = { 0 };
+    ibuf b = { 0 };
     int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
     if (!err)
         err = take_fdata(fflag, colr_type, fdata, 1, &w, &d);
-    int *ints = NULL;
+    if (!err)
+        err = index_alloc(&d, 1, 1, d.n_verts, &b);
     if (!err) {
-        size_t n = d.n_verts;
-        ints = gks_alloc_array(n + 2, sizeof *ints);
-        if (!ints || n > INT32_MAX)
+        FL(&b)[0] = 1;
+        LC(&b, &d)[0] = (int)d.n_verts;
+        for (size_t i = 0; i < d.n_verts; i++)
+            IX(&b, &d)[i] = (int)i;
+    }
+    finish(GFN_FA3D, GKSM_ITEM_FILL_AREA3_DATA, err, &d, &b, &w);
+}
+
+GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
+                                  const Gfacet_data3 *fdata, Gint num_sets,
+                                  const Gfacet_vdata3 *vdata)
+{
+    if (gks_check_state(GFN_FAS3D))
+        return;
+    wc_arrays w = { 0 };
+    gks_area_data d = { 0 };
+    ibuf b = { 0 };
+    int err = 0;
+    /* The loops are copied into one vertex record. */
+    Gfacet_vdata3 all = { 0, NULL, NULL, NULL };
+    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
+        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
+        err = 2000;
+    else if (num_sets < 1 || !vdata)
+        err = num_sets < 1 ? 100 : 2003;
+    size_t total = 0;
+    for (Gint k = 0; !err && k < num_sets; k++) {
+        const Gfacet_vdata3 *v = &vdata[k];
+        if (v->num_vertices < 3 || !v->points)
+            err = 100;
+        else if (((vflag & GVERT_COORD_COLR) && !v->colrs) ||
+                 ((vflag & GVERT_COORD_NORM) && !v->norms))
+            err = 2003;
+        else if ((size_t)v->num_vertices > (size_t)INT32_MAX - total)
+            err = 300;
+        else
+            total += (size_t)v->num_vertices;
+    }
+    if (!err) {
+        all.num_vertices = (Gint)total;
+        all.points = gks_alloc_array(total, sizeof *all.points);
+        all.colrs = gks_alloc_array(total, sizeof *all.colrs);
+        all.norms = gks_alloc_array(total, sizeof *all.norms);
+        if (!all.points || !all.colrs || !all.norms)
             err = 300;
     }
     if (!err) {
-        ints[0] = 1;                  /* one loop */
-        ints[1] = (int)d.n_verts;     /* of all vertices */
-        for (size_t i = 0; i < d.n_verts; i++)
-            ints[2 + i] = (int)i;
-        d.n_facets = 1;
-        d.n_loops = 1;
-        d.n_idx = d.n_verts;
-        d.facet_loops = ints;
-        d.loop_counts = ints + 1;
-        d.idx = ints + 2;
-        output_data(GFN_FA3D, &d, 0);
+        size_t off = 0;
+        for (Gint k = 0; k < num_sets; k++) {
+            const Gfacet_vdata3 *v = &vdata[k];
+            size_t c = (size_t)v->num_vertices;
+            memcpy(all.points + off, v->points, c * sizeof *v->points);
+            if (vflag & GVERT_COORD_COLR)
+                memcpy(all.colrs + off, v->colrs, c * sizeof *v->colrs);
+            if (vflag & GVERT_COORD_NORM)
+                memcpy(all.norms + off, v->norms, c * sizeof *v->norms);
+            off += c;
+        }
+        err = take_vdata(fflag, vflag, colr_type, &all, 3, &w, &d);
     }
-    gks_free(ints);
-    wc_free(&w);
-    if (err)
-        GKS_FAIL(err, GFN_FA3D);
+    if (!err)
+        err = take_fdata(fflag, colr_type, fdata, 1, &w, &d);
+    if (!err)
+        err = index_alloc(&d, 1, (size_t)num_sets, total, &b);
+    if (!err) {
+        FL(&b)[0] = num_sets;
+        for (Gint k = 0; k < num_sets; k++)
+            LC(&b, &d)[k] = vdata[k].num_vertices;
+        for (size_t i = 0; i < total; i++)
+            IX(&b, &d)[i] = (int)i;
+    }
+    gks_free(all.points);
+    gks_free(all.colrs);
+    gks_free(all.norms);
+    finish(GFN_FAS3D, GKSM_ITEM_FILL_AREA_SET3_DATA, err, &d, &b, &w);
+}
+
+GKS_API void gtri_strip3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
+                              const Gfacet_vdata3 *vdata)
+{
+    if (gks_check_state(GFN_TS3D))
+        return;
+    wc_arrays w = { 0 };
+    gks_area_data d = { 0 };
+    ibuf b = { 0 };
+    int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
+    size_t nt = err ? 0 : d.n_verts - 2;
+    if (!err)
+        err = take_fdata(fflag, colr_type, fdata, nt, &w, &d);
+    if (!err && nt > SIZE_MAX / 4)
+        err = 300;
+    if (!err)
+        err = index_alloc(&d, nt, nt, 3 * nt, &b);
+    for (size_t i = 0; !err && i < nt; i++) {
+        /* Triangle i is (i, i+1, i+2), every other one reversed (i+1, i, i+2): all
+         * triangles of the strip keep the orientation of the first. */
+        int *t = IX(&b, &d) + 3 * i;
+        FL(&b)[i] = 1;
+        LC(&b, &d)[i] = 3;
+        t[0] = (int)(i % 2 ? i + 1 : i);
+        t[1] = (int)(i % 2 ? i : i + 1);
+        t[2] = (int)(i + 2);
+    }
+    finish(GFN_TS3D, GKSM_ITEM_TRI_STRIP3_DATA, err, &d, &b, &w);
+}
+
+GKS_API void gquad_mesh3_data(Gint fflag, Gint vflag, Gint colr_type, const Gint_size *dim,
+                              const Gfacet_data3 *fdata, const Gfacet_vdata3 *vdata)
+{
+    if (gks_check_state(GFN_QM3D))
+        return;
+    wc_arrays w = { 0 };
+    gks_area_data d = { 0 };
+    ibuf b = { 0 };
+    int err = 0;
+    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
+        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
+        err = 2000;
+    else if (!dim || !vdata)
+        err = 2003;
+    else if (dim->size_x < 2 || dim->size_y < 2 ||
+             (size_t)dim->size_x * (size_t)dim->size_y > (size_t)INT32_MAX / 4 ||
+             vdata->num_vertices != dim->size_x * dim->size_y)
+        err = 100;
+    size_t mx = err ? 0 : (size_t)dim->size_x, my = err ? 0 : (size_t)dim->size_y;
+    size_t nq = (mx - 1) * (my - 1);
+    if (!err)
+        err = take_vdata(fflag, vflag, colr_type, vdata, 4, &w, &d);
+    if (!err)
+        err = take_fdata(fflag, colr_type, fdata, nq, &w, &d);
+    if (!err)
+        err = index_alloc(&d, nq, nq, 4 * nq, &b);
+    for (size_t j = 0; !err && j + 1 < my; j++)
+        for (size_t i = 0; i + 1 < mx; i++) {
+            /* Quadrilateral (i, j): vertices (i,j), (i+1,j), (i+1,j+1), (i,j+1); vertex
+             * (i, j) is vdata[j * size_x + i], facets in the same order. */
+            size_t q = j * (mx - 1) + i;
+            int *t = IX(&b, &d) + 4 * q;
+            FL(&b)[q] = 1;
+            LC(&b, &d)[q] = 4;
+            t[0] = (int)(j * mx + i);
+            t[1] = (int)(j * mx + i + 1);
+            t[2] = (int)((j + 1) * mx + i + 1);
+            t[3] = (int)((j + 1) * mx + i);
+        }
+    finish(GFN_QM3D, GKSM_ITEM_QUAD_MESH3_DATA, err, &d, &b, &w);
+}
+
+GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type, Gint num_sets,
+                                         const Gfacet_data3 *fdata, const Gint_list_list *vlist,
+                                         const Gfacet_vdata3 *vdata)
+{
+    if (gks_check_state(GFN_SFAS3D))
+        return;
+    wc_arrays w = { 0 };
+    gks_area_data d = { 0 };
+    ibuf b = { 0 };
+    int err = 0;
+    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
+        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
+        err = 2000;
+    else if (num_sets < 1)
+        err = 100;
+    else if (!vlist || !vdata)
+        err = 2003;
+    size_t nl = 0, ni = 0;
+    for (Gint k = 0; !err && k < num_sets; k++) {
+        const Gint_list_list *s = &vlist[k];
+        if (s->num_lists < 1)
+            err = 100;
+        else if (!s->lists)
+            err = 2003;
+        for (Gint l = 0; !err && l < s->num_lists; l++) {
+            if (s->lists[l].num_ints < 3)
+                err = 100;
+            else if (!s->lists[l].ints)
+                err = 2003;
+            else if ((size_t)s->lists[l].num_ints > (size_t)INT32_MAX - ni)
+                err = 300;
+            else
+                ni += (size_t)s->lists[l].num_ints;
+        }
+        if (!err && nl >= (size_t)INT32_MAX - (size_t)s->num_lists)
+            err = 300;
+        nl += err ? 0 : (size_t)s->num_lists;
+    }
+    if (!err)
+        err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
+    if (!err)
+        err = take_fdata(fflag, colr_type, fdata, (size_t)num_sets, &w, &d);
+    if (!err)
+        err = index_alloc(&d, (size_t)num_sets, nl, ni, &b);
+    if (!err) {
+        size_t l0 = 0, i0 = 0;
+        for (Gint k = 0; k < num_sets; k++) {
+            const Gint_list_list *s = &vlist[k];
+            FL(&b)[k] = s->num_lists;
+            for (Gint l = 0; l < s->num_lists; l++) {
+                LC(&b, &d)[l0++] = s->lists[l].num_ints;
+                memcpy(IX(&b, &d) + i0, s->lists[l].ints,
+                       (size_t)s->lists[l].num_ints * sizeof(int));
+                i0 += (size_t)s->lists[l].num_ints;
+            }
+        }
+    }
+    finish(GFN_SFAS3D, GKSM_ITEM_SOFAS3_DATA, err, &d, &b, &w);
 }
 
 /* ------------------------------------------------------------------ shading methods */

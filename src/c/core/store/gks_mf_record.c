@@ -291,6 +291,8 @@ static int sync_attrs(gks_mf_out *o, const gks_cur_attrs *a)
             err = props_item(o, s, &a->area_props[s]);
         if (!err && (all || a->refl_eq[s] != l->refl_eq[s]))
             err = put_nums(o, GKSM_ITEM_REFL_EQ, 2, (const long[]){ s, a->refl_eq[s] }, 0, NULL);
+        if (!err && (all || a->int_shad[s] != l->int_shad[s]))
+            err = put_nums(o, GKSM_ITEM_INT_SHAD, 2, (const long[]){ s, a->int_shad[s] }, 0, NULL);
     }
     if (!err && (all || a->light_mask != l->light_mask))
         err = light_state_item(o, a->light_mask);
@@ -425,6 +427,17 @@ static int write_cells(gks_mf_out *o, const gks_mf_prim *p)
     return put(o, p->item);
 }
 
+/* A primitive with data: its packed form (gks_area_data.h), integers then reals. */
+static int write_data(gks_mf_out *o, const gks_mf_prim *p)
+{
+    gksm_rec_clear(&o->rec);
+    for (size_t i = 0; i < p->n_dints; i++)
+        gksm_rec_int(&o->rec, p->dints[i]);
+    for (size_t i = 0; i < p->n_dreals; i++)
+        gksm_rec_real(&o->rec, p->dreals[i]);
+    return put(o, p->item);
+}
+
 int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 {
     gks_context *c = gks_ctx();
@@ -454,6 +467,13 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
             break;
         case GKSM_ITEM_TEXT3:
             err = write_text(o, p);
+            break;
+        case GKSM_ITEM_FILL_AREA3_DATA:
+        case GKSM_ITEM_FILL_AREA_SET3_DATA:
+        case GKSM_ITEM_TRI_STRIP3_DATA:
+        case GKSM_ITEM_QUAD_MESH3_DATA:
+        case GKSM_ITEM_SOFAS3_DATA:
+            err = write_data(o, p);
             break;
         default:
             err = write_cells(o, p);

@@ -47,6 +47,9 @@ enum {
     GKSM_ITEM_REFL_EQ = 69, GKSM_ITEM_LIGHT_STATE = 70, GKSM_ITEM_WS_WIN = 71,
     GKSM_ITEM_WS_VP = 72, GKSM_ITEM_WS_WIN3 = 73, GKSM_ITEM_WS_VP3 = 74,
     GKSM_ITEM_LIGHT_REP = 75,
+    GKSM_ITEM_FILL_AREA3_DATA = 76, GKSM_ITEM_FILL_AREA_SET3_DATA = 77,
+    GKSM_ITEM_TRI_STRIP3_DATA = 78, GKSM_ITEM_QUAD_MESH3_DATA = 79,
+    GKSM_ITEM_SOFAS3_DATA = 80, GKSM_ITEM_INT_SHAD = 86,
     GKSM_ITEM_CREATE_SEG = 81, GKSM_ITEM_CLOSE_SEG = 82, GKSM_ITEM_RENAME_SEG = 83,
     GKSM_ITEM_DEL_SEG = 84, GKSM_ITEM_SEG_TRAN3 = 85, GKSM_ITEM_SEG_TRAN = 91,
     GKSM_ITEM_VIS = 92, GKSM_ITEM_HIGHL = 93, GKSM_ITEM_SEG_PRI = 94, GKSM_ITEM_DET = 95,
@@ -83,6 +86,10 @@ typedef struct gks_mf_prim {
     const char *str;           /* TEXT 3: points = position, two direction vectors (WC3) */
     int nx, ny;                /* CELL ARRAY 3: points = P, Q, R; nx*ny colour indices */
     const Gint *colr;
+    const int *dints;          /* primitives with data: the packed form (gks_area_data.h) */
+    size_t n_dints;
+    const double *dreals;
+    size_t n_dreals;
 } gks_mf_prim;
 
 /* Output state of an MO workstation (ws->priv of ws_mo.c). */
@@ -126,6 +133,13 @@ static inline int gks_mf_on(void)
 
 /* ACTIVATE / DEACTIVATE WORKSTATION: recount the active MO workstations. */
 void gks_mf_recount(void);
+
+/* INTERPRET ITEM of a primitive with data (item GKSM_ITEM_*_DATA, d in NDC3, with the
+ * MI's normalization override in effect): performed as the function that wrote it (its
+ * state check, gks_area_data_check's errors). Defined by the output pipeline
+ * (core/api/gks_output_data.c). */
+#include "gks_area_data.h"
+void gks_area_data_perform(int item, const gks_area_data *d);
 
 /* ---- hooks: each writes one item (errors 300, 303 reported for fctid). Each returns
  * what gks_error_report returned (1 when nothing was reported): on 0 the caller returns at

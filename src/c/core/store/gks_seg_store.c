@@ -9,8 +9,8 @@
 
 struct gks_seg_rec {
     gks_seg_kind kind;
-    int n_loops, n_points, cell_nx, cell_ny, clip, str_len;
-    size_t pts_off, loops_off, cells_off, bound_ind, str_off;
+    int n_loops, n_points, cell_nx, cell_ny, clip, str_len, n_dints;
+    size_t pts_off, loops_off, cells_off, bound_ind, str_off, dints_off;
     Gpoint3 cell_p, cell_q, cell_r;
     double clip_box[6];
 };
@@ -105,6 +105,7 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
     size_t n_pts = p->n_points > 0 ? (size_t)p->n_points : 0;
     size_t n_loops = p->kind == GKS_SEG_FILL_AREA_SET && p->n_loops > 0 ? (size_t)p->n_loops : 0;
     size_t n_cells = 0, n_chars = p->kind == GKS_SEG_TEXT && p->str_len > 0 ? (size_t)p->str_len : 0;
+    size_t n_dints = p->kind == GKS_SEG_AREA_DATA && p->n_dints > 0 ? (size_t)p->n_dints : 0;
     if (p->kind == GKS_SEG_CELL_ARRAY && p->cell_nx > 0 && p->cell_ny > 0) {
         if ((size_t)p->cell_nx > SIZE_MAX / (size_t)p->cell_ny)
             return 301;
@@ -115,7 +116,9 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
     /* Reserve everything first: on failure nothing has changed. */
     if (reserve((void **)&s->rec, &s->n_rec, &s->cap_rec, 1, sizeof *s->rec) ||
         reserve((void **)&s->pts, &s->n_pts, &s->cap_pts, n_pts, sizeof *s->pts) ||
-        reserve((void **)&s->ints, &s->n_ints, &s->cap_ints, n_loops + n_cells, sizeof *s->ints) ||
+        n_cells > SIZE_MAX / 2 - n_loops || n_dints > SIZE_MAX / 2 - n_loops - n_cells ||
+        reserve((void **)&s->ints, &s->n_ints, &s->cap_ints, n_loops + n_cells + n_dints,
+                sizeof *s->ints) ||
         reserve((void **)&s->chars, &s->n_chars, &s->cap_chars, n_chars, 1) ||
         (!share && reserve((void **)&s->bound, &s->n_bound, &s->cap_bound, 1, sizeof *s->bound)))
         return 301;
@@ -123,7 +126,9 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
     *r = (gks_seg_rec){ .kind = p->kind, .n_loops = (int)n_loops, .n_points = (int)n_pts,
                         .clip = p->clip, .pts_off = s->n_pts, .loops_off = s->n_ints,
                         .cells_off = s->n_ints + n_loops, .str_off = s->n_chars,
-                        .str_len = (int)n_chars, .cell_p = p->cell_p, .cell_q = p->cell_q,
+                        .str_len = (int)n_chars, .n_dints = (int)n_dints,
+                        .dints_off = s->n_ints + n_loops + n_cells,
+                        .cell_p = p->cell_p, .cell_q = p->cell_q,
                         .cell_r = p->cell_r };
     if (n_cells) {
         r->cell_nx = p->cell_nx;
@@ -137,7 +142,9 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
         memcpy(s->ints + s->n_ints, p->loop_counts, n_loops * sizeof *s->ints);
     if (n_cells)
         memcpy(s->ints + s->n_ints + n_loops, p->cell_colr, n_cells * sizeof *s->ints);
-    s->n_ints += n_loops + n_cells;
+    if (n_dints)
+        memcpy(s->ints + s->n_ints + n_loops + n_cells, p->dints, n_dints * sizeof *s->ints);
+    s->n_ints += n_loops + n_cells + n_dints;
     if (n_chars)
         memcpy(s->chars + s->n_chars, p->str, n_chars);
     s->n_chars += n_chars;
@@ -164,6 +171,8 @@ void gks_seg_get(const gks_segment *s, size_t i, gks_seg_prim *p)
                          .cell_colr = r->cell_nx ? s->ints + r->cells_off : NULL,
                          .str = r->str_len ? s->chars + r->str_off : NULL,
                          .str_len = r->str_len, .bound = &s->bound[r->bound_ind],
+                         .dints = r->n_dints ? s->ints + r->dints_off : NULL,
+                         .n_dints = r->n_dints,
                          .clip = r->clip };
     memcpy(p->clip_box, r->clip_box, sizeof p->clip_box);
 }

@@ -19,7 +19,8 @@
 /* What a stored primitive is: the output function that created it. */
 typedef enum {
     GKS_SEG_POLYLINE, GKS_SEG_POLYMARKER, GKS_SEG_TEXT, GKS_SEG_FILL_AREA,
-    GKS_SEG_FILL_AREA_SET, GKS_SEG_CELL_ARRAY
+    GKS_SEG_FILL_AREA_SET, GKS_SEG_CELL_ARRAY,
+    GKS_SEG_AREA_DATA            /* a primitive with data (gks_area_data.h) */
 } gks_seg_kind;
 
 /* The attributes bound to a primitive and the normalization transformation it was
@@ -43,6 +44,10 @@ typedef struct gks_seg_prim {
     const int *cell_colr;        /* colour indices, cell_nx * cell_ny */
     const char *str;             /* TEXT: the string (str_len bytes, not terminated) */
     int str_len;
+    /* GKS_SEG_AREA_DATA: the item number, then the integers of gks_area_data_pack; pts
+     * (n_points) are its triples (points, normals, colours). */
+    const int *dints;
+    int n_dints;
     const gks_seg_bound *bound;  /* attributes and normalization */
     int clip;                    /* 1: clip_box bound (viewport 3 with clipping on) */
     double clip_box[6];

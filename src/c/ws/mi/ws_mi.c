@@ -351,6 +351,44 @@ static void i_fill_area_set(interp *ip)
     gks_free(lists);
 }
 
+/* A primitive with data: its packed form (gks_area_data.h), the header's counts checked
+ * against what is left of the record before anything is allocated. */
+static void i_data(interp *ip, int type)
+{
+    dec *d = &ip->d;
+    int hdr[GKS_AREA_DATA_HEADER];
+    for (int k = 0; k < GKS_AREA_DATA_HEADER; k++)
+        hdr[k] = d_int(d);
+    size_t ni = 0, nt = 0;
+    if (!d->err && gks_area_data_packed_sizes(hdr, &ni, &nt))
+        d->err = 165;
+    if (d->err)
+        return;
+    size_t more = ni - GKS_AREA_DATA_HEADER, left = gksm_cur_left(&d->c);
+    size_t wi = field_w(d, 'i'), wr = field_w(d, 'r');
+    if (more > left / wi || nt > (left - more * wi) / (3 * wr)) {
+        d->err = 165;
+        return;
+    }
+    int *ints = gks_alloc_array(ni, sizeof *ints);
+    double (*tri)[3] = gks_alloc_array(nt ? nt : 1, sizeof *tri);
+    if (!ints || !tri)
+        d->err = 300;
+    for (size_t k = 0; !d->err && k < ni; k++)
+        ints[k] = k < GKS_AREA_DATA_HEADER ? hdr[k] : d_int(d);
+    for (size_t i = 0; !d->err && i < nt; i++)
+        d_reals(d, tri[i], 3);
+    if (!d->err && gksm_cur_left(&d->c) != 0)
+        d->err = 165;
+    gks_area_data a;
+    if (!d->err && gks_area_data_unpack(ints, ni, (const double (*)[3])tri, nt, &a))
+        d->err = 165;
+    if (!d->err)
+        WITH_XF(ip, 1, gks_area_data_perform(type, &a));
+    gks_free(ints);
+    gks_free(tri);
+}
+
 static void i_text(interp *ip, int three)
 {
     dec *d = &ip->d;
@@ -646,6 +684,23 @@ static int perform(interp *ip, int type)
         break;
     case GKSM_ITEM_FILL_AREA_SET3:
         i_fill_area_set(ip);
+        break;
+    case GKSM_ITEM_FILL_AREA3_DATA:
+    case GKSM_ITEM_FILL_AREA_SET3_DATA:
+    case GKSM_ITEM_TRI_STRIP3_DATA:
+    case GKSM_ITEM_QUAD_MESH3_DATA:
+    case GKSM_ITEM_SOFAS3_DATA:
+        i_data(ip, type);
+        break;
+    case GKSM_ITEM_INT_SHAD:
+        if (fixed(ip, "ii", iv, rv)) {
+            if (iv[0] == 0)
+                gset_int_shad_meth(iv[1]);
+            else if (iv[0] == 1)
+                gset_back_int_shad_meth(iv[1]);
+            else
+                return 165;
+        }
         break;
     case GKSM_ITEM_POLYLINE:
         i_points(ip, 2, gpolyline3, 2);
