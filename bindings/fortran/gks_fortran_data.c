@@ -204,7 +204,7 @@ FAPI void FNAME(gsfa3d, GSFA3D)(const fint *fflag, const fint *vflag, const fint
     fint ns = *nsets > 0 ? *nsets : 0;
     frec r;
     if (take(*fflag, *vflag, *ctype, *nv, ns, fci, fcr, fn, px, py, pz, vci, vcr, vn, &r,
-             GFN_SFAS3D))
+             GFN_SFA3D))
         return;
     /* Count the loops and indices (a bad count: the core reports 100 on a 0 list). */
     size_t nl = 0, ni = 0;
@@ -229,7 +229,7 @@ FAPI void FNAME(gsfa3d, GSFA3D)(const fint *fflag, const fint *vflag, const fint
         free(lists);
         free(ind);
         frec_free(&r);
-        gks_binding_error(300, GFN_SFAS3D);
+        gks_binding_error(300, GFN_SFA3D);
         return;
     }
     if (bad) {

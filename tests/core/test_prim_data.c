@@ -483,19 +483,19 @@ static void test_errors_others(void **state)
     Gint_list la = { 3, a }, lb = { 2, b }, lc = { 3, c };
     Gint_list_list sa = { 1, &la }, sb = { 1, &lb }, sc = { 1, &lc }, s0 = { 0, NULL };
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sa, &v4);
-    expect_error(904, GFN_SFAS3D);
+    expect_error(904, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sc, &v4);
-    expect_error(904, GFN_SFAS3D);
+    expect_error(904, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &sb, &v4);
-    expect_error(100, GFN_SFAS3D);
+    expect_error(100, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, &s0, &v4);
-    expect_error(100, GFN_SFAS3D);
+    expect_error(100, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 0, NULL, &sa, &v4);
-    expect_error(100, GFN_SFAS3D);
+    expect_error(100, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_RGB, 1, NULL, NULL, &v4);
-    expect_error(2003, GFN_SFAS3D);
+    expect_error(2003, GFN_SFA3D);
     gset_of_fill_area_set3_data(GFACET_COLR, GVERT_COORD, GCOLR_INDIRECT, 1, fd1, &sa, &v4);
-    expect_error(904, GFN_SFAS3D);
+    expect_error(904, GFN_SFA3D);
     assert_int_equal(n_rec, 0);
 }
 

@@ -128,7 +128,7 @@ static const Gint_list_list set1 = { 1, &loop3 };
 static void c_FAS3D(void) { gfill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, 1, &vd3); }
 static void c_TS3D(void) { gtri_strip3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, NULL, &vd4); }
 static void c_QM3D(void) { gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, &dim22, NULL, &vd4); }
-static void c_SFAS3D(void) { gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, 1, NULL, &set1, &vd3); }
+static void c_SFA3D(void) { gset_of_fill_area_set3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, 1, NULL, &set1, &vd3); }
 static void c_SISM(void) { gset_int_shad_meth(GSHAD_COLR); }
 static void c_SBISM(void) { gset_back_int_shad_meth(GSHAD_NORM); }
 static void c_SLSR(void)

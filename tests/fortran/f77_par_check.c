@@ -90,12 +90,9 @@ int main(int argc, char **argv)
         return 2;
     }
     size_t n = sizeof table / sizeof table[0];
-    for (size_t i = 0; i < n; i++) { /* Fortran names have at most 6 characters: GSBRFQ */
+    for (size_t i = 0; i < n; i++) /* Fortran names have at most 6 characters: GSBRFQ */
         if (strcmp(table[i].name, "ESBRFEQ") == 0)
             table[i].name = "ESBRFQ";
-        if (strcmp(table[i].name, "ESFAS3D") == 0)
-            table[i].name = "ESFA3D";
-    }
     int fails = 0, lines = 0;
     char line[256];
     while (fgets(line, sizeof line, p)) {

@@ -5,7 +5,8 @@
 # are C (.c .h .def), Fortran (.f .f90 .inc), CMake (CMakeLists.txt .cmake .cmake.in),
 # pkg-config templates (.pc.in), shell (.sh, .ci/run), Python (.py) and gnuplot (.gp).
 # tests/data (third-party data with its own terms) is not source and is skipped.
-# Files are those known to git when SOURCE_DIR is a git checkout, else all files found.
+# Files are those known to git when SOURCE_DIR is a git checkout, else all files found;
+# CMake build trees inside the source tree (any folder holding a CMakeCache.txt) are skipped.
 # Prints every offending file and exits 1 when there is one.
 set -eu
 src=${1:-$(cd "$(dirname "$0")/../.." && pwd)}
@@ -17,8 +18,16 @@ else
     list() { find . -path ./.git -prune -o -path './build*' -prune -o -type f -print | sed 's|^\./||'; }
 fi
 tmp=$(mktemp)
-trap 'rm -f "$tmp"' EXIT
+builds=$(mktemp)
+trap 'rm -f "$tmp" "$builds"' EXIT
+find . -path ./.git -prune -o -name CMakeCache.txt -type f -print |
+    sed 's|^\./||; s|CMakeCache\.txt$||' >"$builds"
 list | while IFS= read -r f; do
+    skip=0
+    while IFS= read -r b; do
+        [ -n "$b" ] && case $f in "$b"*) skip=1; break ;; esac
+    done <"$builds"
+    [ "$skip" = 0 ] || continue
     case $f in
     tests/data/*) continue ;;
     *.c | *.h | *.def | *.f | *.f90 | *.inc | CMakeLists.txt | */CMakeLists.txt | *.cmake | \

@@ -684,7 +684,7 @@ void gks_area_data_perform(int item, const gks_area_data *d)
                 : item == GKSM_ITEM_FILL_AREA_SET3_DATA ? GFN_FAS3D
                 : item == GKSM_ITEM_TRI_STRIP3_DATA     ? GFN_TS3D
                 : item == GKSM_ITEM_QUAD_MESH3_DATA     ? GFN_QM3D
-                                                        : GFN_SFAS3D;
+                                                        : GFN_SFA3D;
     if (gks_check_state(fctid))
         return;
     int err = gks_area_data_check(d);
@@ -1016,7 +1016,7 @@ GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
                                          const Gfacet_data3 *fdata, const Gint_list_list *vlist,
                                          const Gfacet_vdata3 *vdata)
 {
-    if (gks_check_state(GFN_SFAS3D))
+    if (gks_check_state(GFN_SFA3D))
         return;
     wc_arrays w = { 0 };
     gks_area_data d = { 0 };
@@ -1069,7 +1069,7 @@ GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
             }
         }
     }
-    finish(GFN_SFAS3D, GKSM_ITEM_SOFAS3_DATA, err, &d, &b, &w);
+    finish(GFN_SFA3D, GKSM_ITEM_SOFAS3_DATA, err, &d, &b, &w);
 }
 
 /* ------------------------------------------------------------------ shading methods */

@@ -233,13 +233,15 @@ static void path_loops(cairo_t *cr, const ws_render_item *it, int closed)
 }
 
 /* Dashes of the raster module (raster.h) in nominal units times max(1, width). */
-static void set_line(cairo_t *cr, const ws_render_item *it, int type, double width)
+/* k: user space units per raster pixel (1 in pixel space, the page's points per pixel in
+ * device space, see vec_draw). */
+static void set_line(cairo_t *cr, const ws_render_item *it, int type, double width, double k)
 {
     double w = width > it->unit ? width : it->unit;
-    cairo_set_line_width(cr, w);
+    cairo_set_line_width(cr, w * k);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-    double s = it->unit * (w / it->unit > 1.0 ? w / it->unit : 1.0);
+    double s = k * it->unit * (w / it->unit > 1.0 ? w / it->unit : 1.0);
     double d[4];
     int n = 0;
     if (type == 2) {
@@ -343,46 +345,152 @@ static void hatch(cairo_t *cr, const ws_render_item *it)
     cairo_restore(cr);
 }
 
-static void markers(cairo_t *cr, const ws_render_item *it)
+/* The raster pixels (x right, y up) -> the page's device space (points, y down) of the
+ * line and marker paths (vec_draw). */
+typedef struct vec_xf { double k, h; } vec_xf;
+
+/* The line loops of an item as path in device space. */
+static void path_lines(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
 {
     const gks_raster_pt *p = it->pts;
-    double r = 0.5 * it->marker_size, d = r * sqrt(0.5);
-    set_line(cr, it, 1, it->width);
-    for (int k = 0; k < it->n_loops; k++)
-        for (int i = 0; i < it->counts[k]; i++, p++) {
+    double k = t->k, h = t->h;
+    for (int j = 0; j < it->n_loops; j++) {
+        int c = it->counts[j];
+        int cont = c < 0;
+        if (cont)
+            c = -c;
+        for (int i = 0; i < c; i++) {
+            if (i == 0 && cont)
+                continue; /* the previous piece's last point */
+            if (i == 0)
+                cairo_move_to(cr, k * p[i].x, h - k * p[i].y);
+            else
+                cairo_line_to(cr, k * p[i].x, h - k * p[i].y);
+        }
+        p += c;
+    }
+}
+
+/* The markers of an item as path in device space (type 1, the dot: filled discs; the
+ * others: strokes). */
+static void markers(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
+{
+    const gks_raster_pt *p = it->pts;
+    double k = t->k, h = t->h;
+    double r = 0.5 * it->marker_size * k, d = r * sqrt(0.5), dot = 0.5 * it->unit * k;
+    for (int j = 0; j < it->n_loops; j++)
+        for (int i = 0; i < it->counts[j]; i++, p++) {
+            double x = k * p->x, y = h - k * p->y;
             if (it->marker_type == 1) { /* the smallest dot: one nominal unit */
                 cairo_new_sub_path(cr);
-                cairo_arc(cr, p->x, p->y, 0.5 * it->unit, 0, 2 * VEC_PI);
-                cairo_fill(cr);
+                cairo_arc(cr, x, y, dot, 0, 2 * VEC_PI);
                 continue;
             }
             if (it->marker_type == 4) {
                 cairo_new_sub_path(cr);
-                cairo_arc(cr, p->x, p->y, r, 0, 2 * VEC_PI);
+                cairo_arc(cr, x, y, r, 0, 2 * VEC_PI);
                 continue;
             }
             if (it->marker_type == 2 || it->marker_type == 3) {
-                cairo_move_to(cr, p->x - r, p->y);
-                cairo_line_to(cr, p->x + r, p->y);
-                cairo_move_to(cr, p->x, p->y - r);
-                cairo_line_to(cr, p->x, p->y + r);
+                cairo_move_to(cr, x - r, y);
+                cairo_line_to(cr, x + r, y);
+                cairo_move_to(cr, x, y - r);
+                cairo_line_to(cr, x, y + r);
             }
             if (it->marker_type == 3 || it->marker_type == 5) {
-                cairo_move_to(cr, p->x - d, p->y - d);
-                cairo_line_to(cr, p->x + d, p->y + d);
-                cairo_move_to(cr, p->x - d, p->y + d);
-                cairo_line_to(cr, p->x + d, p->y - d);
+                cairo_move_to(cr, x - d, y - d);
+                cairo_line_to(cr, x + d, y + d);
+                cairo_move_to(cr, x - d, y + d);
+                cairo_line_to(cr, x + d, y - d);
             }
         }
-    cairo_stroke(cr);
+}
+
+/* The drawing of a page. Consecutive line items, and consecutive marker items, with equal
+ * attributes are drawn as one path with one stroke (dots: one fill): text arrives as one
+ * item per stroke of the font and hidden-line output as one item per visible run, and an
+ * operation per item costs cairo a graphics state and the file an operator each (SVG a
+ * <path> element with its whole style), which made 10^5-primitive plots slow
+ * (docs/bench/vector.md). The colours are opaque, so one operation on the union paints
+ * what the operations one after another paint; the dash pattern restarts at every
+ * subpath, as it did at every item. Areas are not merged: their even-odd interiors would
+ * cancel where two overlap.
+ * Lines and markers are drawn in the page's device space (identity matrix, coordinates
+ * transformed here): in a scaled and flipped user space cairo transforms every point to
+ * device space and back, and PDF wraps every stroke in a matrix of its own. Areas, cell
+ * arrays and hatches are drawn in raster pixels (the matrix pix). */
+typedef struct vec_draw {
+    cairo_t *cr;
+    cairo_matrix_t pix;    /* raster pixels, y up -> device space */
+    vec_xf xf;             /* the same for the line and marker paths */
+    int device;            /* the current matrix is the identity (else pix) */
+    int open;              /* a path is pending for the attributes below */
+    ws_item_kind kind;     /* WS_ITEM_LINE or WS_ITEM_MARKERS */
+    float rgb[3];
+    int linetype, marker_type;
+    double width, unit;
+} vec_draw;
+
+static void vec_flush(vec_draw *d)
+{
+    if (!d->open)
+        return;
+    if (d->kind == WS_ITEM_MARKERS && d->marker_type == 1) {
+        cairo_set_fill_rule(d->cr, CAIRO_FILL_RULE_WINDING); /* discs may overlap */
+        cairo_fill(d->cr);
+    } else {
+        cairo_stroke(d->cr);
+    }
+    d->open = 0;
+}
+
+/* Starts the pending path for it, unless the open one has its attributes. */
+static void vec_group(vec_draw *d, const ws_render_item *it, int linetype, int marker_type)
+{
+    if (d->open && d->kind == it->kind && d->linetype == linetype &&
+        d->marker_type == marker_type && d->width == it->width && d->unit == it->unit &&
+        memcmp(d->rgb, it->rgb, sizeof d->rgb) == 0)
+        return;
+    vec_flush(d);
+    if (!d->device) {
+        cairo_identity_matrix(d->cr);
+        d->device = 1;
+    }
+    cairo_set_source_rgb(d->cr, it->rgb[0], it->rgb[1], it->rgb[2]);
+    set_line(d->cr, it, linetype, it->width, d->xf.k);
+    d->open = 1;
+    d->kind = it->kind;
+    memcpy(d->rgb, it->rgb, sizeof d->rgb);
+    d->linetype = linetype;
+    d->marker_type = marker_type;
+    d->width = it->width;
+    d->unit = it->unit;
 }
 
 static int vec_item(void *ctx, const ws_render_item *it)
 {
-    cairo_t *cr = ctx;
-    cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
+    vec_draw *d = ctx;
+    cairo_t *cr = d->cr;
+    switch (it->kind) {
+    case WS_ITEM_LINE:
+        vec_group(d, it, it->linetype, 0);
+        path_lines(cr, it, &d->xf);
+        return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
+    case WS_ITEM_MARKERS:
+        vec_group(d, it, 1, it->marker_type);
+        markers(cr, it, &d->xf);
+        return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
+    default:
+        break;
+    }
+    vec_flush(d);
+    if (d->device) {
+        cairo_set_matrix(cr, &d->pix);
+        d->device = 0;
+    }
     switch (it->kind) {
     case WS_ITEM_AREA:
+        cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
         path_loops(cr, it, 1);
         if (it->style == GKS_RASTER_HATCH) {
@@ -396,15 +504,8 @@ static int vec_item(void *ctx, const ws_render_item *it)
             cairo_fill(cr);
         }
         break;
-    case WS_ITEM_LINE:
-        set_line(cr, it, it->linetype, it->width);
-        path_loops(cr, it, 0);
-        cairo_stroke(cr);
-        break;
-    case WS_ITEM_MARKERS:
-        markers(cr, it);
-        break;
     case WS_ITEM_CELLS: {
+        cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
         path_loops(cr, it, 1);
         const gks_raster_pt *o = &it->cell_o, *u = &it->cell_u, *w = &it->cell_v;
@@ -414,6 +515,8 @@ static int vec_item(void *ctx, const ws_render_item *it)
         paint_image(cr, it->rgb_list, it->nx, it->ny, &m, CAIRO_EXTEND_PAD);
         break;
     }
+    default:
+        break;
     }
     return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
 }
@@ -522,9 +625,13 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
         cairo_fill(cr);
         cairo_pattern_destroy(pat);
     }
-    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, cr);
+    vec_draw d = { .cr = cr, .xf = { k, s->h_pt } };
+    cairo_get_matrix(cr, &d.pix);
+    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
+    vec_flush(&d);
     if (!e)
-        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, cr); /* overlays */
+        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
+    vec_flush(&d);
     if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         e = 300;
     return e;
