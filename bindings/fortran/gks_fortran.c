@@ -278,9 +278,9 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
     message_n(*wkid, mess, n < mess_len ? n : mess_len);
 }
 
-/* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). Escape -101 (set file name): IDR(1) holds the
- * workstation identifier in columns 1-10 (I10), IDR(2..LIDR) the file name, each record
- * blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
+/* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). Escapes -101 (set file name) and -130 (input
+ * script, docs/INPUT.md): IDR(1) holds the workstation identifier in columns 1-10 (I10),
+ * IDR(2..LIDR) the file name, each record blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
  * No escape available from Fortran returns data, so MLODR, LODR and ODR are not
  * touched (a program may pass constants there, as NCAR's fgke03 does). */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
@@ -299,8 +299,8 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
     long ws = 0;
     Gint wsid = 0;
     char *name = NULL;
-    if (*fctid == GESC_SET_FILE_NAME && nrec >= 2 && idr_len > 0 &&
-        !parse_int(idr, idr_len < 10 ? idr_len : 10, &ws)) {
+    if ((*fctid == GESC_SET_FILE_NAME || *fctid == GESC_INPUT_SCRIPT) && nrec >= 2 &&
+        idr_len > 0 && !parse_int(idr, idr_len < 10 ? idr_len : 10, &ws)) {
         wsid = (Gint)ws;
         size_t total = 0;
         size_t nr = (size_t)(nrec - 1);

@@ -58,8 +58,16 @@ wait_for() {
 }
 # The menu of CHOICE prompt/echo type 3, drawn at the echo area's top right: check the
 # prompt line's and the menu's colours, then click item 2.
+# the window's title names the REQUEST once its prompt and echo are drawn
+wait_title() {
+    i=0
+    while [ "$(xdotool getwindowname "$w" 2>/dev/null)" != "gks3d: REQUEST $1" ]; do
+        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: no REQUEST $1"; exit 1; }
+        sleep 0.1
+    done
+}
 wait_for MENU
-sleep 0.5
+wait_title "CHOICE 1"
 c=$("$peek" "$w" 400 5 720 135)
 set -- $c
 [ "$1" = ffffcc ] || echo "FAIL: prompt line colour $1"
@@ -81,7 +89,7 @@ sleep 0.1
 xdotool mouseup 1
 # The traced square (colour 3, green, lit) is in the window; outside it the background.
 wait_for TRACED
-sleep 0.5
+wait_title "CHOICE 1"
 c=$("$peek" "$w" 400 400 100 700)
 set -- $c
 [ "$1" != ffffff ] && [ "$1" != 000000 ] || echo "FAIL: traced square pixel $1"
