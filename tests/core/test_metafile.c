@@ -799,6 +799,74 @@ static void test_hostile(void **u)
     }
 }
 
+/* The primitives with data from an untrusted file: truncated at many lengths, corrupted,
+ * and well-formed items with absurd counts or indices: never a crash nor a leak (the
+ * sanitizer build), errors only as the standard's numbers. */
+static void test_hostile_data(void **u)
+{
+    (void)u;
+    draw_metafile(scene_data, "mf_hostile_dsrc.gksm");
+    size_t n;
+    char *s = slurp("mf_hostile_dsrc.gksm", &n);
+    for (size_t k = 90; k < n; k += 29) {
+        spit("mf_hostile.gksm", s, k);
+        int e = run_hostile("mf_hostile.gksm");
+        assert_true(e == 0 || e == 162 || e == 163);
+    }
+    const char junk[] = { 'X', '9', '-', ' ', '\0', '\n', '.', 'e', '7' };
+    for (size_t k = 90; k < n; k += 17) {
+        char save = s[k];
+        s[k] = junk[k % sizeof junk];
+        spit("mf_hostile.gksm", s, n);
+        run_hostile("mf_hostile.gksm");
+        s[k] = save;
+    }
+    free(s);
+    /* Records of item 76..80: header ints (then as many fields as given). */
+    static const long recs[][12] = {
+        { 7, 0, 0, 0, 2147483647, 1, 1, 3 },        /* vertices beyond the record */
+        { 7, 0, 0, 0, 3, 1, 1, -3 },                /* negative count */
+        { 7, 9, 0, 0, 3, 1, 1, 3 },                 /* facet flag out of range */
+        { 7, 0, 0, 0, 3, 2147483647, 2147483647, 2147483647 },
+        { 10, 0, 0, 0, 3, 1, 1, 3, 1, 3, 0 },       /* record incomplete */
+    };
+    char hdr[91];
+    snprintf(hdr, sizeof hdr, "GKSM%-40s%-8s%2d%2d%2d%2d%2d%2d%2d%2d%11d%11d", "hostile",
+             "26/11/24", 1, 4, 3, 10, 11, 24, 1, 1, 0, 1);
+    for (int item = 76; item <= 80; item++)
+        for (size_t i = 0; i < sizeof recs / sizeof recs[0]; i++) {
+            char buf[512];
+            int nf = (int)recs[i][0], m = snprintf(buf, sizeof buf, "%sGKSM%3d%10d", hdr, item,
+                                                   11 * nf);
+            for (int f = 1; f <= nf; f++)
+                m += snprintf(buf + m, sizeof buf - (size_t)m, "%11ld", recs[i][f]);
+            spit("mf_hostile.gksm", buf, (size_t)m);
+            int e = run_hostile("mf_hostile.gksm");
+            assert_true(e == 0 || e == 162 || e == 163);
+        }
+    /* A well-formed triangle whose index is out of range: 904 of the function performed. */
+    open_all();
+    gopen_ws(WS_NULL, NULL, GWS_TYPE_NULL);
+    gactivate_ws(WS_NULL);
+    char rec[512];
+    int m = 0;
+    const long ints[10] = { 0, 0, 0, 3, 1, 1, 3, 1, 3, 0 };
+    for (int f = 0; f < 10; f++)
+        m += snprintf(rec + m, sizeof rec - (size_t)m, "%11ld", ints[f]);
+    const long idx[3] = { 0, 1, 5 };
+    m -= 11; /* replace the last index field and add the other two */
+    for (int f = 0; f < 3; f++)
+        m += snprintf(rec + m, sizeof rec - (size_t)m, "%11ld", idx[f]);
+    for (int p = 0; p < 9; p++)
+        m += snprintf(rec + m, sizeof rec - (size_t)m, "%24.16e", 0.25 * (p % 4));
+    capture_reset();
+    ginterpret_item(76, m, ITEMN(rec, m));
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 904);
+    assert_int_equal(captured[0].fct, GFN_FA3D);
+    gemergency_close_gks();
+}
+
 void gks_alloc_fail_after(long n); /* test hook of gks_alloc.c */
 
 /* Fail the 1st, 2nd, ... allocation while writing and while interpreting a metafile:
@@ -851,6 +919,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_segments),
         cmocka_unit_test(test_round_trip_data),
         cmocka_unit_test(test_data_items_equal),
+        cmocka_unit_test(test_hostile_data),
         cmocka_unit_test(test_round_trip_3d),
         cmocka_unit_test(test_round_trip_light),
         cmocka_unit_test(test_ral_items),
