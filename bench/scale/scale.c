@@ -15,7 +15,9 @@
  * OPEN WORKSTATION to the last FILL AREA 3), update (wall s of UPDATE WORKSTATION: transfer,
  * build, render, composition and the PNG file), build and render (the tracer's own seconds,
  * ESCAPE GESC_RT_STATS), total (wall s of both), cpu (process CPU s), rss (peak resident MiB,
- * getrusage), B/tri (peak resident bytes per triangle), us/call (calls / n).
+ * getrusage), B/tri (peak resident bytes per triangle), us/call (calls / n); calls_cpu and
+ * update_cpu: process CPU s of the two phases (all threads), cpu_us/call: calls_cpu / n (the
+ * calls run on one thread: under load a better estimate of an idle machine's us/call).
  * bench/scale/run.sh runs the series and prints the goals.
  */
 #include <gks.h>
@@ -81,7 +83,7 @@ int main(int argc, char **argv)
                                        0.55 + r * sin(th) * sin(ph) };
         }
 
-    double w0 = wall();
+    double w0 = wall(), c0 = cpu();
     gopen_gks(NULL, 0);
     gopen_ws(1, out, GWS_TYPE_PNG);
     gactivate_ws(1);
@@ -139,9 +141,9 @@ int main(int argc, char **argv)
             }
         }
     free(g);
-    double w1 = wall();
+    double w1 = wall(), c1 = cpu();
     gupd_ws(1, GFLAG_PERFORM);
-    double w2 = wall();
+    double w2 = wall(), c2 = cpu();
     Gfloat fl[2] = { 0 };
     Gint inw[1] = { 1 }, serr;
     Gescape_in_data sin_ = { .num_ints = 1, .ints = inw };
@@ -162,8 +164,10 @@ int main(int argc, char **argv)
     getrusage(RUSAGE_SELF, &ru);
     double rss = (double)ru.ru_maxrss * 1024.0;
     printf("n=%ld calls=%.3f update=%.3f build=%.3f render=%.3f total=%.3f close=%.3f "
-           "cpu=%.2f rss=%.1f B/tri=%.0f us/call=%.3f\n",
+           "cpu=%.2f rss=%.1f B/tri=%.0f us/call=%.3f calls_cpu=%.3f update_cpu=%.3f "
+           "cpu_us/call=%.3f\n",
            drawn, w1 - w0, w2 - w1, fl[0], fl[1], w2 - w0, w3 - w2, cpu(), rss / 1048576.0,
-           rss / (double)drawn, 1e6 * (w1 - w0) / (double)drawn);
+           rss / (double)drawn, 1e6 * (w1 - w0) / (double)drawn, c1 - c0, c2 - c1,
+           1e6 * (c1 - c0) / (double)drawn);
     return 0;
 }

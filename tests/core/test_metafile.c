@@ -911,6 +911,31 @@ static void test_storage_overflow(void **u)
     assert_true(saw300 >= 10);
 }
 
+/* The primitives with data under storage overflow: every allocation of the data scene
+ * (recorded on an MO, stored in a segment, drawn on a null workstation) failed in turn:
+ * error 300, never a crash or a leak, until a run needs no failing allocation. */
+static void test_storage_overflow_data(void **u)
+{
+    (void)u;
+    int saw300 = 0, clean = 0;
+    for (long k = 1; k < 3000 && !clean; k++) {
+        open_all();
+        gopen_ws(WS_MO, "mf_nomem_d.gksm", GWS_TYPE_MO);
+        gactivate_ws(WS_MO);
+        gopen_ws(WS_NULL, NULL, GWS_TYPE_NULL);
+        gactivate_ws(WS_NULL);
+        gks_alloc_fail_after(k);
+        scene_data(WS_MO);
+        gks_alloc_fail_after(0);
+        clean = n_captured == 0;
+        for (int i = 0; i < n_captured && i < MAX_CAPTURED; i++)
+            saw300 += captured[i].err == 300;
+        reset_gks();
+    }
+    assert_true(clean);
+    assert_true(saw300 >= 10);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -920,6 +945,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_data),
         cmocka_unit_test(test_data_items_equal),
         cmocka_unit_test(test_hostile_data),
+        cmocka_unit_test(test_storage_overflow_data),
         cmocka_unit_test(test_round_trip_3d),
         cmocka_unit_test(test_round_trip_light),
         cmocka_unit_test(test_ral_items),
