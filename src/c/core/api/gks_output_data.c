@@ -138,6 +138,8 @@ static int clip_pass(const cvert *in, size_t n, int axis, int side, const double
                 r.c[k] = a->c[k] + t * (b->c[k] - a->c[k]);
             }
             r.p[axis] = lim;
+            if (!(isfinite(r.p[0]) && isfinite(r.p[1]) && isfinite(r.p[2])))
+                continue; /* overflow near DBL_MAX (as clip_segment): the vertex is dropped */
             double len = sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
             if (len > 0 && isfinite(len))
                 for (int k = 0; k < 3; k++)
