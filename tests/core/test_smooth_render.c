@@ -2,8 +2,8 @@
 /*
  * test_smooth_render.c -- areas WITH DATA through the PNG workstation (issue 19): a sphere of
  * 48 x 24 lat-long triangles drawn with FILL AREA 3 WITH DATA (exact vertex normals, interior
- * shading method NORMAL) reproduces the exact sphere's Lambert shading in the ray-traced and
- * in the z-buffer mode; drawn flat (FILL AREA 3) it does not. The same through a view
+ * shading method NORMAL) reproduces the exact sphere's Lambert shading in the ray-traced, the
+ * z-buffer and the painter mode; drawn flat (FILL AREA 3) it does not. The same through a view
  * orientation that scales y by 1/2: the picture is then the ellipsoid's, whose normals are
  * the sphere's through the inverse transpose (the drivers' normal transformation), lit by the
  * light's direction through the same orientation.
@@ -167,7 +167,9 @@ static void check(int mode, int squash)
 {
     double smooth = picture(mode, 1, squash), flat = picture(mode, 0, squash);
     print_message("%s%s: largest error smooth %.4f (%.1f/255), flat %.4f\n",
-                  mode == GHLHSR_RAYTRACE ? "ray traced" : "z-buffer",
+                  mode == GHLHSR_RAYTRACE ? "ray traced"
+                  : mode == GHLHSR_ZBUFFER ? "z-buffer"
+                                           : "painter",
                   squash ? ", y scaled by 1/2" : "", smooth, smooth * 255, flat);
     assert_true(smooth <= TOL);
     assert_true(flat > TOL);
@@ -175,6 +177,7 @@ static void check(int mode, int squash)
 
 static void test_raytrace(void **u) { (void)u; check(GHLHSR_RAYTRACE, 0); }
 static void test_zbuffer(void **u) { (void)u; check(GHLHSR_ZBUFFER, 0); }
+static void test_painter(void **u) { (void)u; check(GHLHSR_PAINTER, 0); }
 static void test_raytrace_squashed(void **u) { (void)u; check(GHLHSR_RAYTRACE, 1); }
 static void test_zbuffer_squashed(void **u) { (void)u; check(GHLHSR_ZBUFFER, 1); }
 
@@ -183,6 +186,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_raytrace),
         cmocka_unit_test(test_zbuffer),
+        cmocka_unit_test(test_painter),
         cmocka_unit_test(test_raytrace_squashed),
         cmocka_unit_test(test_zbuffer_squashed),
     };
