@@ -7,14 +7,15 @@
  * adapted so that reflections stay above the surface), and the exact sphere evaluated pixel by
  * pixel (ray/sphere intersection, the same reflectance equation, no secondary rays: a convex
  * sphere alone neither shadows nor reflects itself).
- *   rt_smooth [-s SIZE] [-nu NU] [-nv NV] [-spec] [-reps R] [-o PREFIX]
+ *   rt_smooth [-s SIZE] [-nu NU] [-nv NV] [-spec] [-reps R] [-o PREFIX] [-only flat|naive|robust]
  * Unit sphere, orthographic view along -z, an ambient light 0.1 and a directional light from
  * the upper right behind the viewer's side, so that the terminator crosses the picture.
  * -spec adds a specular term (ks 0.6, exponent 20) and with it mirror reflection rays.
  * Prints per mode: RMSE and largest channel error over the pixels every mode and the sphere
  * cover (clamped linear RGB), the RMSE in the terminator band (analytic N.L in [0, 0.25]),
  * and the CPU time of rt_render (one thread, best of R). -o writes PREFIX{flat,naive,robust,
- * exact}.ppm.
+ * exact}.ppm. -only renders that mode alone, once, and prints nothing (for instruction counts:
+ * valgrind --tool=callgrind rt_smooth -only robust).
  */
 #include "gksrt.h"
 #include "rt_testutil.h"
@@ -49,7 +50,16 @@ int main(int argc, char **argv)
 {
     int size = 256, nu = 16, nv = 8, spec = 0, reps = 3;
     const char *prefix = NULL;
+    int only = -1;
     for (int a = 1; a < argc; a++) {
+        if (!strcmp(argv[a], "-only") && a + 1 < argc) {
+            a++;
+            only = !strcmp(argv[a], "flat") ? 0 : !strcmp(argv[a], "naive") ? 1
+                                                : !strcmp(argv[a], "robust") ? 2 : -2;
+            if (only == -2)
+                return 2;
+            continue;
+        }
         if (!strcmp(argv[a], "-s") && a + 1 < argc)
             size = atoi(argv[++a]);
         else if (!strcmp(argv[a], "-nu") && a + 1 < argc)
@@ -120,6 +130,8 @@ int main(int argc, char **argv)
     static const int modes[3] = {RT_SMOOTH_FLAT, RT_SMOOTH_NAIVE, RT_SMOOTH_ROBUST};
     double secs[3];
     for (int k = 0; k < 3; k++) {
+        if (only >= 0 && k != only)
+            continue;
         rt_render_options o;
         rtu_options_plain(&o);
         o.threads = 1;
@@ -132,6 +144,8 @@ int main(int argc, char **argv)
             secs[k] = fmin(secs[k], cpu_now() - t0);
         }
     }
+    if (only >= 0)
+        return 0;
     /* the exact sphere */
     double L[3] = {-ldir[0], -ldir[1], -ldir[2]};
     double ll = sqrt(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]);

@@ -3,7 +3,9 @@
 # run.sh -- speed against error of the gksrt render settings (issue 7): renders the
 # references and all settings for SPD gears, SPD mount and the bunny mesh (with a mirror
 # weight ks 0.3 so that depth and cut-off matter), writes docs/speed_error.csv, the log-log
-# plot docs/speed_error.png (gnuplot) and the log docs/bench/speed_error.txt.
+# plot docs/speed_error.png (gnuplot) and the log docs/bench/speed_error.txt; then the
+# tessellation rows (tess_error: a sphere and the surface example's function at 8^2 ... 256^2
+# quads, flat and with interpolated normals), appended to the CSV, the log and the plot.
 #   bench/speed_error/run.sh [--no-build] [--quick] [BUILD_DIR]
 # --quick: 64x64, 4x4-spp reference, 1 repetition (a smoke test; writes into BUILD_DIR only).
 # Takes about 10 minutes (pinned to one core, see below), most of it the 256x256, 16x16-spp
@@ -19,7 +21,7 @@ for a in "$@"; do
     --no-build) DO_BUILD=0 ;;
     --quick) QUICK=1 ;;
     -h | --help)
-        sed -n '3,11p' "$0"
+        sed -n '3,14p' "$0"
         exit 0
         ;;
     *) BUILD=$a ;;
@@ -43,7 +45,7 @@ fi
 
 if [ "$DO_BUILD" -eq 1 ]; then
     cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DGKS_BUILD_BENCHMARKS=ON >/dev/null
-    cmake --build "$BUILD" --target speed_error -j2 >/dev/null
+    cmake --build "$BUILD" --target speed_error tess_error -j2 >/dev/null
 fi
 EXE="$BUILD/bench/speed_error/speed_error"
 [ -x "$EXE" ] || {
@@ -76,9 +78,17 @@ fi
     # shellcheck disable=SC2086 # argument lists split on purpose
     $PIN "$EXE" $ARGS -csv "$CSV" $SCENES
 } | tee "$DOCS/bench/speed_error.txt"
+TESS="$BUILD/bench/speed_error/tess_error"
+if [ "$QUICK" -eq 1 ]; then
+    TARGS="-s 64 -ref 256 -reps 1"
+else
+    TARGS="-s 256 -ref 1024 -reps 5"
+fi
+# shellcheck disable=SC2086 # argument lists split on purpose
+$PIN "$TESS" $TARGS -csv "$CSV" | tee -a "$DOCS/bench/speed_error.txt"
 
 if command -v gnuplot >/dev/null 2>&1; then
-    gnuplot -e "csv='$CSV'; out='$DOCS/speed_error.png'; scenes='gears mount bunny'" \
+    gnuplot -e "csv='$CSV'; out='$DOCS/speed_error.png'; scenes='gears mount bunny'; tscenes='sphere-tess surface-tess'" \
         "$SRC/bench/speed_error/plot.gp"
     echo "plot: $DOCS/speed_error.png"
 else

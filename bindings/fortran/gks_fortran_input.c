@@ -5,10 +5,11 @@
  * GINCH GINPK GINST, GSLCM GSSKM GSVLM GSCHM GSPKM GSSTM, GRQLC GRQSK GRQVL GRQCH GRQPK
  * GRQST, GSMLC GSMSK GSMVL GSMCH GSMPK GSMST, GWAIT GFLUSH, GGTLC GGTSK GGTVL GGTCH
  * GGTPK GGTST, GQLCS GQSKS GQVLS GQCHS GQPKS GQSTS, GQDLC GQDSK GQDVL GQDCH GQDPK GQDST,
- * GQLI, GQIQOV, GQSIM.
+ * GQLI, GQIQOV, GQSIM; GPREC, GUREC; the 3-D forms GINLC3 ... GQDST3; the subset string
+ * forms GINSTS GRQSTS GSMSTS GGTSTS GQSTSS (argument lists: docs/INPUT.md).
  *
- * Thin wrappers over gks_input.c (which reports the errors: no workstation of gks3d has
- * input devices, see docs/BINDING.md "Input functions"). Enumerations pass unchanged
+ * Thin wrappers over gks_input.c (which makes the standard's checks and reports the
+ * errors; the input model: docs/INPUT.md). Enumerations pass unchanged
  * (GNONE/GOK/GNCHOI, GREQU/GSAMPL/GEVENT, GNECHO/GECHO, GNCLAS..GSTRIN have the C values).
  * Data records DATREC(LDR) are CHARACTER arrays passed to C as their LDR * LEN(DATREC(1))
  * characters; inquiries return the record's characters the same way. Output strings are

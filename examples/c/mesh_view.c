@@ -4,7 +4,7 @@
  * the GKS-3D C binding.
  *
  *   mesh_view [--threads N] [--samples N] [--depth N] [--size WxH] [--ground] [--stats]
- *             [--ambient A] [--azimuth DEG] mesh.off|mesh.ply[.gz] out.png
+ *             [--ambient A] [--azimuth DEG] [--normals area|angle] mesh.off|mesh.ply[.gz] out.png
  *
  * Sampling: the workstation's default (rays at the pixel corners, each pixel the mean of its
  * four; cut-off 0.01) unless --samples N asks for N stratified samples per pixel.
@@ -17,6 +17,8 @@
  * floor (Kd 0.8, Ks 0.3) under the mesh, four bounding radii wide, which receives its
  * shadow and reflection. Background: a dark blue. Default size 512x512.
  * --stats prints the two statistics lines of nff_view.
+ * --normals computes vertex normals from the faces (scene_io_vertex_normals: area- or
+ * angle-weighted) and draws the faces WITH DATA, interior shading method NORMAL (smooth).
  */
 #include "scene_gks.h"
 #include "scene_io.h"
@@ -29,7 +31,8 @@
 static void usage(void)
 {
     fprintf(stderr, "usage: mesh_view [--threads N] [--samples N] [--depth N] [--size WxH]\n"
-                    "                 [--ground] [--stats] [--ambient A] [--azimuth DEG] mesh out.png\n");
+                    "                 [--ground] [--stats] [--ambient A] [--azimuth DEG]\n"
+                    "                 [--normals area|angle] mesh out.png\n");
 }
 
 int main(int argc, char **argv)
@@ -38,7 +41,7 @@ int main(int argc, char **argv)
     scene_io_options io;
     scene_io_options_default(&io);
     io.warn = scene_gks_warn_stderr;
-    int stats = 0, ground = 0, w = 512, h = 512;
+    int stats = 0, ground = 0, w = 512, h = 512, normals = -1;
     double azimuth = 0;
     const char *pos[2];
     int npos = 0;
@@ -49,6 +52,9 @@ int main(int argc, char **argv)
             stats = 1;
         } else if (strcmp(a, "--ground") == 0) {
             ground = 1;
+        } else if (strcmp(a, "--normals") == 0 && v) {
+            normals = strcmp(v, "area") == 0 ? 0 : strcmp(v, "angle") == 0 ? 1 : -2;
+            bad = normals < 0, i++;
         } else if (strcmp(a, "--threads") == 0 && v) {
             bad = scene_gks_int_arg(v, 0, 256, &go.threads), i++;
         } else if (strcmp(a, "--samples") == 0 && v) {
@@ -85,6 +91,14 @@ int main(int argc, char **argv)
     if (scene_io_load(pos[0], SCENE_IO_AUTO, &io, &s, err, sizeof err) != SCENE_IO_OK) {
         fprintf(stderr, "mesh_view: %s\n", err);
         return 2;
+    }
+    if (normals >= 0) {
+        if (scene_io_vertex_normals(&s, normals) != SCENE_IO_OK) {
+            fprintf(stderr, "mesh_view: out of memory\n");
+            scene_io_free(&s);
+            return 2;
+        }
+        go.smooth = 1;
     }
     scene_io_view view;
     double lo[3], hi[3];

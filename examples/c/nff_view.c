@@ -4,7 +4,7 @@
  * through the GKS-3D C binding.
  *
  *   nff_view [--threads N] [--spd] [--stats] [--samples N] [--depth N] [--ambient A]
- *            [--tessellate N] [--size WxH] [--smooth] scene.nff[.gz] out.png
+ *            [--tessellate N] [--size WxH] [--smooth] [--zbuffer] scene.nff[.gz] out.png
  *
  * --threads N: tracer threads (0 = all CPUs); --samples N: N = m*m stratified samples per
  * pixel (1..256) instead of the workstation's default (rays at the pixel corners, each pixel
@@ -28,6 +28,7 @@
  *   p  FILL AREA 3 exactly as given (concave polygons included)
  *   pp FILL AREA 3 of the patch polygon (triangles in the SPD), flat; with --smooth FILL AREA
  *      3 WITH DATA with the patch's vertex normals, interior shading method NORMAL
+ * --zbuffer: HLHSR mode z-buffer instead of ray tracing (local shading, no shadows)
  *   s, c  no such GKS primitives: skipped with a warning, or tessellated into FILL AREA 3s
  *      with --tessellate N (N segments around)
  * Ambient light: none by default (NFF has no ambient term; the SPD statistics do not depend
@@ -54,7 +55,7 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: nff_view [--threads N] [--spd] [--stats] [--samples N] [--depth N]\n"
-            "                [--ambient A] [--tessellate N] [--size WxH] [--smooth]\n"
+            "                [--ambient A] [--tessellate N] [--size WxH] [--smooth] [--zbuffer]\n"
             "                scene.nff out.png\n");
 }
 
@@ -84,6 +85,8 @@ int main(int argc, char **argv)
             bad = scene_gks_int_arg(v, 3, 1024, &io.tessellate), i++;
         } else if (strcmp(a, "--smooth") == 0) {
             go.smooth = 1;
+        } else if (strcmp(a, "--zbuffer") == 0) {
+            go.zbuffer = 1;
         } else if (strcmp(a, "--ambient") == 0 && v) {
             bad = scene_gks_real_arg(v, 0, 1, &go.ambient), i++;
         } else if (strcmp(a, "--size") == 0 && v) {

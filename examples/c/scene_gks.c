@@ -262,7 +262,9 @@ int scene_gks_render(const scene_io_scene *const *scenes, int n, const scene_io_
     Glimit win = { 0, ax, 0, ay }, vp = { 0, view->res_x, 0, view->res_y };
     gset_ws_win(WS, &win);
     gset_ws_vp(WS, &vp);
-    gset_hlhsr_mode(WS, GHLHSR_RAYTRACE);
+    gset_hlhsr_mode(WS, opt->zbuffer ? GHLHSR_ZBUFFER : GHLHSR_RAYTRACE);
+    if (opt->zbuffer) /* the tracer fills every area; the z-buffer by the interior style */
+        gset_fill_int_style(GSTYLE_SOLID);
     gset_view_rep3(WS, VIEW, &rep);
     gset_view_ind(VIEW);
     gset_clip_ind(GIND_NO_CLIP);

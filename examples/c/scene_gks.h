@@ -38,6 +38,8 @@ typedef struct scene_gks_options {
     int smooth;       /* 1: polygons whose vertices carry normals (NFF "pp", or normals a
                          mesh reader computed) as FILL AREA 3 WITH DATA, interior shading
                          method NORMAL (interpolated); 0: every polygon flat */
+    int zbuffer;      /* 1: HLHSR mode z-buffer instead of ray tracing (a preview: local
+                         shading only, no ray statistics) */
 } scene_gks_options;
 
 typedef struct scene_gks_result {

@@ -1249,6 +1249,61 @@ int scene_io_bounds(const scene_io_scene *s, double lo[3], double hi[3])
     return 1;
 }
 
+int scene_io_vertex_normals(scene_io_scene *s, int angle_weighted)
+{
+    if (!s || (s->num_polygons && (!s->poly_start || !s->poly_nverts || !s->poly_verts)))
+        return SCENE_IO_ERR_ARG;
+    if (s->num_vertices > SIZE_MAX / (3 * sizeof(double)))
+        return SCENE_IO_ERR_NOMEM;
+    double *n = calloc(s->num_vertices ? s->num_vertices : 1, 3 * sizeof(double));
+    if (!n)
+        return SCENE_IO_ERR_NOMEM;
+    for (size_t p = 0; p < s->num_polygons; p++) {
+        const uint32_t *ix = s->poly_verts + s->poly_start[p];
+        const size_t m = (size_t)s->poly_nverts[p];
+        double f[3] = { 0, 0, 0 };
+        for (size_t i = 0; i < m; i++) { /* Newell: 2 x area x unit normal */
+            const double *a = s->vertices + 3 * (size_t)ix[i];
+            const double *b = s->vertices + 3 * (size_t)ix[(i + 1) % m];
+            f[0] += (a[1] - b[1]) * (a[2] + b[2]);
+            f[1] += (a[2] - b[2]) * (a[0] + b[0]);
+            f[2] += (a[0] - b[0]) * (a[1] + b[1]);
+        }
+        double fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        if (!(fl > 0) || !isfinite(fl))
+            continue;
+        for (size_t i = 0; i < m; i++) {
+            double w = 1;
+            if (angle_weighted) {
+                const double *a = s->vertices + 3 * (size_t)ix[(i + m - 1) % m];
+                const double *v = s->vertices + 3 * (size_t)ix[i];
+                const double *b = s->vertices + 3 * (size_t)ix[(i + 1) % m];
+                double u[3], t[3], uu = 0, tt = 0, ut = 0;
+                for (int k = 0; k < 3; k++) {
+                    u[k] = a[k] - v[k];
+                    t[k] = b[k] - v[k];
+                    uu += u[k] * u[k];
+                    tt += t[k] * t[k];
+                    ut += u[k] * t[k];
+                }
+                double c = uu > 0 && tt > 0 ? ut / sqrt(uu * tt) : 1;
+                w = acos(c < -1 ? -1 : c > 1 ? 1 : c) / fl;
+            }
+            double *q = n + 3 * (size_t)ix[i];
+            for (int k = 0; k < 3; k++)
+                q[k] += w * f[k];
+        }
+    }
+    for (size_t i = 0; i < s->num_vertices; i++) {
+        double *q = n + 3 * i, l = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        for (int k = 0; k < 3; k++)
+            q[k] = l > 0 && isfinite(l) ? q[k] / l : 0;
+    }
+    free(s->normals);
+    s->normals = n;
+    return SCENE_IO_OK;
+}
+
 int scene_io_frame_view(const scene_io_scene *s, double angle, int res_x, int res_y,
                         scene_io_view *v)
 {

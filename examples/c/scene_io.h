@@ -157,6 +157,14 @@ void scene_io_free(scene_io_scene *s);
  * has no polygon (lo/hi then untouched). */
 int scene_io_bounds(const scene_io_scene *s, double lo[3], double hi[3]);
 
+/* Vertex normals computed from the faces (replacing s->normals): each polygon's Newell
+ * normal added to its vertices, weighted by the polygon's area (angle_weighted 0) or, unit
+ * length, by the polygon's angle at the vertex (angle_weighted 1: Thuermer and Wuethrich
+ * 1998, independent of how a surface is cut into polygons), then normalised; (0,0,0) where
+ * they cancel. Shared vertices (OFF, PLY) get smooth normals across their faces, creases
+ * included. Returns SCENE_IO_OK, SCENE_IO_ERR_ARG (NULL), SCENE_IO_ERR_NOMEM. */
+int scene_io_vertex_normals(scene_io_scene *s, int angle_weighted);
+
 /* A default camera for scenes without a view (meshes): up = +y, looking at the bounding-box
  * centre from the direction (0.6, 0.5, 1) (front, above, right), at the distance at which
  * the bounding sphere just fills the angle-degree field of view; hither at 1/100 of that

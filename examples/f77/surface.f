@@ -7,16 +7,22 @@ C     height, ray traced above a mirror plane that shows its underside.
 C     The data stay in the scientist's own coordinates: SET WINDOW 3
 C     and SET VIEWPORT 3 map them to NDC3, and the view's up vector is
 C     the z axis. A z-buffer preview at a third of the size comes first.
+C     Then the same surface drawn WITH DATA (FILL AREA 3 WITH DATA,
+C     interior shading method normal interpolation): vertex colours by
+C     height and vertex normals from the analytic gradient, so that it
+C     is shaded smooth.
 C
 C     Usage: surface_f77 [SIZE [PREFIX [TYPE]]] (SIZE = viewport in
 C     pixels, 24..2048, default 480; TYPE png (default), pdf, svg, ps or
-C     eps); writes PREFIXsurface_zbuffer.png and PREFIXsurface.png (or
+C     eps); writes PREFIXsurface_zbuffer.png, PREFIXsurface.png,
+C     PREFIXsurface_smooth_zbuffer.png and PREFIXsurface_smooth.png (or
 C     .pdf ...). C twin: examples/c/surface.c (same files).
       INCLUDE 'GKS_PAR'
       INCLUDE 'GKS3D_PAR'
       INTEGER N
       PARAMETER (N=32)
-      REAL X(N+1), Y(N+1), Z(N+1,N+1), R2
+      REAL X(N+1), Y(N+1), Z(N+1,N+1), R2, R, S, DR
+      REAL G(2,N+1,N+1)
       INTEGER I, J, SIZE, IOS, NP, NBLEN, WTYPE
       CHARACTER*256 ARG, PREFIX
       COMMON /SURTYP/ WTYPE
@@ -60,21 +66,39 @@ C     the heights would no longer match the C twin's cosf and expf.
          DO 20 I = 1, N + 1
             R2 = X(I) * X(I) + Y(J) * Y(J)
             Z(I,J) = 0.8 * COS(2.5 * SQRT(R2)) * EXP(-0.25 * R2)
+C           the gradient: (df/dr) / r = 0.8 exp(-r^2/4) (-2.5 sin(2.5 r)
+C           / r - 0.5 cos(2.5 r)), sin(2.5 r) / r -> 2.5 at r = 0
+            R = SQRT(R2)
+            IF (R .GT. 0.0) THEN
+               S = -2.5 * SIN(2.5 * R) / R
+            ELSE
+               S = -6.25
+            END IF
+            DR = 0.8 * EXP(-0.25 * R2) * (S - 0.5 * COS(2.5 * R))
+            G(1,I,J) = DR * X(I)
+            G(2,I,J) = DR * Y(J)
    20    CONTINUE
    30 CONTINUE
       CALL GOPKS(6, -1)
       CALL SURPIC(PREFIX(1:NP) // 'surface_zbuffer', SIZE / 3, GHZBUF,
-     +            N, X, Y, Z)
-      CALL SURPIC(PREFIX(1:NP) // 'surface', SIZE, GHRAYT, N, X, Y, Z)
+     +            N, X, Y, Z, G, 0)
+      CALL SURPIC(PREFIX(1:NP) // 'surface', SIZE, GHRAYT, N, X, Y, Z,
+     +            G, 0)
+      CALL SURPIC(PREFIX(1:NP) // 'surface_smooth_zbuffer', SIZE / 3,
+     +            GHZBUF, N, X, Y, Z, G, 1)
+      CALL SURPIC(PREFIX(1:NP) // 'surface_smooth', SIZE, GHRAYT, N, X,
+     +            Y, Z, G, 1)
       CALL GCLKS
       END
 
-      SUBROUTINE SURPIC(BASE, SIZE, MODE, N, X, Y, Z)
+      SUBROUTINE SURPIC(BASE, SIZE, MODE, N, X, Y, Z, G, SMOOTH)
 C     One picture of the surface on workstation 1: file BASE.png,
-C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
+C     viewport SIZE x SIZE pixels, HLHSR mode MODE; SMOOTH = 1: the
+C     triangles WITH DATA (vertex colours by height, normals from the
+C     gradient G), shading method normal interpolation.
       CHARACTER*(*) BASE
-      INTEGER SIZE, MODE, N
-      REAL X(N+1), Y(N+1), Z(N+1,N+1)
+      INTEGER SIZE, MODE, N, SMOOTH
+      REAL X(N+1), Y(N+1), Z(N+1,N+1), G(2,N+1,N+1)
       INCLUDE 'GKS_PAR'
       INCLUDE 'GKS3D_PAR'
       INTEGER WS, NC
@@ -83,6 +107,8 @@ C     viewport SIZE x SIZE pixels, HLHSR mode MODE.
       REAL WN(6), VP(6), PRVP(6), CLIP(6), VWM(4,4), PRM(4,4)
       REAL WHITE(3), AMB(3), LAMP(3), ORIGIN(3), DIRN(3), ATT(2)
       REAL T, PX(4), PY(4), PZ(4), ZM
+      REAL VCR(3,3), VN(3,3), FCR(3), FN(3)
+      INTEGER VCI(3), FCI(1), II(3), JJ(3), V
       CHARACTER*80 IDR(4), ODR(1)
       INTEGER ERR, WTYPE
       REAL SIDE
@@ -156,10 +182,42 @@ C     the mirror plane below the surface
    15 CONTINUE
       CALL GFA3(4, PX, PY, PZ)
 C     the surface: two triangles per grid cell, colour by mean height
+C     (flat), or with vertex data (SMOOTH = 1)
       CALL GSAPR(0.7, 0.8, 0.3, WHITE, 30.0, 0.0, 1.0)
       CALL GSBAPR(0.7, 0.8, 0.3, WHITE, 30.0, 0.0, 1.0)
+      IF (SMOOTH .EQ. 1) THEN
+         CALL GSISM(GSHNOR)
+         CALL GSBISM(GSHNOR)
+      END IF
       DO 30 J = 1, N
          DO 20 I = 1, N
+            IF (SMOOTH .EQ. 1) THEN
+C              (i,j) (i+1,j) (i+1,j+1), then (i,j) (i+1,j+1) (i,j+1)
+               DO 18 K = 1, 2
+                  II(1) = I
+                  JJ(1) = J
+                  II(2) = I + 1
+                  JJ(2) = J
+                  II(3) = I + 1
+                  JJ(3) = J + 1
+                  IF (K .EQ. 2) THEN
+                     JJ(2) = J + 1
+                     II(3) = I
+                  END IF
+                  DO 17 V = 1, 3
+                     PX(V) = X(II(V))
+                     PY(V) = Y(JJ(V))
+                     PZ(V) = Z(II(V),JJ(V))
+                     CALL SURCOL(PZ(V), VCR(1,V))
+                     VN(1,V) = -G(1,II(V),JJ(V))
+                     VN(2,V) = -G(2,II(V),JJ(V))
+                     VN(3,V) = 1.0
+   17             CONTINUE
+                  CALL GFA3D(GFNONE, GVCONO, GCRGB, 3, FCI, FCR, FN,
+     +                       PX, PY, PZ, VCI, VCR, VN)
+   18          CONTINUE
+               GO TO 20
+            END IF
             ZM = 0.25 * (((Z(I,J) + Z(I+1,J)) + Z(I+1,J+1)) + Z(I,J+1))
             C = INT((ZM + 0.8) / 1.6 * REAL(NC))
             CALL GSFACI(16 + MAX(0, MIN(NC - 1, C)))
@@ -184,6 +242,17 @@ C     the surface: two triangles per grid cell, colour by mean height
    30 CONTINUE
       CALL GDAWK(WS)
       CALL GCLWK(WS)
+      END
+
+      SUBROUTINE SURCOL(H, RGB)
+C     The colour of height H: the colour map 16..31 as a continuous
+C     function.
+      REAL H, RGB(3), T
+      T = (H + 0.8) / 1.6
+      T = MAX(0.0, MIN(1.0, T))
+      RGB(1) = 0.15 + 0.8 * T
+      RGB(2) = 0.3 + 0.5 * (1.0 - ABS(2.0 * T - 1.0))
+      RGB(3) = 0.85 - 0.75 * T
       END
 
       INTEGER FUNCTION NBLEN(S)

@@ -39,6 +39,7 @@
 #define _DEFAULT_SOURCE 1 /* madvise */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_shade.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -270,36 +271,11 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         }
         if (s->refl_eq < RT_REFL_DIFFUSE)
             continue;
-        double L[3], dist = INFINITY;
-        if (l->type == RT_LIGHT_DIRECTIONAL) {
-            for (int c = 0; c < 3; c++)
-                L[c] = -l->direction[c];
-        } else {
-            for (int c = 0; c < 3; c++)
-                L[c] = l->position[c] - P[c];
-            /* light surely behind the surface, found before the square root and divisions:
-               N.L computed below is then < 0 as well (both dot products have relative errors
-               ~1e-16 of S = sum |N_c L_c|, far below the margin 1e-12 S; S > 1e-250 |L| keeps
-               the terms N_c L_c / dist out of the subnormal range where errors are absolute) */
-            double nl = dot3(N, L);
-            double S = fabs(N[0] * L[0]) + fabs(N[1] * L[1]) + fabs(N[2] * L[2]);
-            if (nl < -1e-12 * S && S > 1e-250 * rt_absmax3(L))
-                continue;
-            dist = sqrt(dot3(L, L));
-            if (!(dist > 0.0))
-                continue;
-            for (int c = 0; c < 3; c++)
-                L[c] /= dist;
-        }
-        double NL = dot3(N, L);
-        if (!(NL > 0.0))
+        rt_light_term lt; /* rt_shade.h, shared with the classic modes */
+        if (!rt_light_term_at(l, P, N, &lt))
             continue;
-        double ca = 0.0; /* spot: cosine to the axis */
-        if (l->type == RT_LIGHT_SPOT) {
-            ca = -dot3(L, l->direction);
-            if (ca < cos(l->spread) || !(ca > 0.0))
-                continue;
-        }
+        const double *L = lt.L;
+        const double dist = lt.dist;
         /* shadow ray */
         double o[3];
         for (int c = 0; c < 3; c++)
@@ -350,23 +326,14 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         if (T == 0.0)
             continue;
         /* attenuation and spot factor only for light that arrives */
-        double att = 1.0, spot = 1.0;
-        if (l->type != RT_LIGHT_DIRECTIONAL)
-            att = 1.0 / (l->c1 + l->c2 * dist);
-        if (l->type == RT_LIGHT_SPOT)
-            spot = pow(ca, l->concentration);
-        double f = T * att * spot;
+        double f = T * rt_light_att(l, &lt) * rt_light_spot(l, &lt);
         double spec = 0.0;
         if (s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0) {
-            double R[3];
-            for (int c = 0; c < 3; c++)
-                R[c] = 2.0 * NL * N[c] - L[c];
-            double RE = -dot3(R, d);
-            if (RE > 0.0)
-                spec = s->ks * pow(RE, s->spec_exp);
+            const double E[3] = {-d[0], -d[1], -d[2]};
+            spec = rt_spec_term(N, &lt, E, s->ks, s->spec_exp);
         }
         for (int c = 0; c < 3; c++)
-            out[c] += f * l->color[c] * (s->kd * Od[c] * NL + spec * s->specular[c]);
+            out[c] += f * l->color[c] * (s->kd * Od[c] * lt.NL + spec * s->specular[c]);
     }
 }
 

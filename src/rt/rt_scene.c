@@ -5,6 +5,7 @@
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_shade.h"
 
 #include <limits.h>
 #include <math.h>
@@ -330,52 +331,11 @@ static void rt_cross(const double a[3], const double b[3], double r[3])
     r[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* plane normal of a polygon (all loops): Newell, or for self-cancelling outlines (bow tie)
- * the largest fan cross product. 0 if degenerate. */
+/* plane normal of a polygon (all loops): the shared Newell normal (rt_shade.h) */
 static int rt_poly_normal(const double *v, size_t nv, const int *counts, int nloops,
                           const double c[3], double ext, double n[3])
 {
-    n[0] = n[1] = n[2] = 0.0;
-    size_t base = 0;
-    for (int k = 0; k < nloops; k++) {
-        size_t m = (size_t)counts[k];
-        for (size_t i = 0; i < m; i++) {
-            const double *a = v + 3 * (base + i), *b = v + 3 * (base + (i + 1) % m);
-            double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
-            double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
-            n[0] += (ay - by) * (az + bz);
-            n[1] += (az - bz) * (ax + bx);
-            n[2] += (ax - bx) * (ay + by);
-        }
-        base += m;
-    }
-    double tol = 1e-12 * ext * ext;
-    double len = rt_len3(n);
-    if (len > tol && isfinite(len)) {
-        for (int i = 0; i < 3; i++)
-            n[i] /= len;
-        return 1;
-    }
-    /* fallback: largest cross product (v_i - v_0) x (v_{i+1} - v_0) */
-    double best = 0.0, bn[3] = {0, 0, 0};
-    for (size_t i = 1; i + 1 < nv; i++) {
-        double e1[3], e2[3], x[3];
-        for (int j = 0; j < 3; j++) {
-            e1[j] = v[3 * i + j] - v[j];
-            e2[j] = v[3 * (i + 1) + j] - v[j];
-        }
-        rt_cross(e1, e2, x);
-        double l = rt_len3(x);
-        if (l > best) {
-            best = l;
-            memcpy(bn, x, sizeof bn);
-        }
-    }
-    if (!(best > tol) || !isfinite(best))
-        return 0;
-    for (int i = 0; i < 3; i++)
-        n[i] = bn[i] / best;
-    return 1;
+    return rt_newell_normal(v, nv, counts, nloops, c, ext, n);
 }
 
 /* planar (within 1e-12 of the size) and strictly convex 4-gon */

@@ -113,17 +113,23 @@ typedef struct rt_acc {
     double w, n[3], c[3], ps[3];
 } rt_acc;
 
-static void rt_acc_add(rt_acc *a, const rt_scene *sc, const rt_vd *r, size_t j, double w,
-                       const double P[3])
+static inline void rt_acc_add(rt_acc *a, const rt_scene *sc, const rt_vd *r, size_t j, double w,
+                              const double P[3])
 {
-    const double *x = sc->vd_xyz + 3 * (r->v0 + j);
-    const float *n = sc->vd_n + 3 * (r->v0 + j), *c = sc->vd_c + 3 * (r->v0 + j);
-    const double h = (P[0] - x[0]) * n[0] + (P[1] - x[1]) * n[1] + (P[2] - x[2]) * n[2];
     a->w += w;
-    for (int k = 0; k < 3; k++) {
-        a->n[k] += w * n[k];
-        a->c[k] += w * c[k];
-        a->ps[k] += w * (P[k] - h * n[k]);
+    if (r->has_n) {
+        const double *x = sc->vd_xyz + 3 * (r->v0 + j);
+        const float *n = sc->vd_n + 3 * (r->v0 + j);
+        const double h = (P[0] - x[0]) * n[0] + (P[1] - x[1]) * n[1] + (P[2] - x[2]) * n[2];
+        for (int k = 0; k < 3; k++) {
+            a->n[k] += w * n[k];
+            a->ps[k] += w * (P[k] - h * n[k]);
+        }
+    }
+    if (r->has_c) {
+        const float *c = sc->vd_c + 3 * (r->v0 + j);
+        for (int k = 0; k < 3; k++)
+            a->c[k] += w * c[k];
     }
 }
 

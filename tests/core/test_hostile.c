@@ -462,6 +462,48 @@ static void test_big_star_traced_as_classic(void **u)
     unlink("h_star_rt.png");
 }
 
+/* A segment holding only a cell array (no points at all: the store once formed NULL + 0 for
+ * its points, undefined behaviour that clang's pointer-overflow sanitizer of the UBSan and
+ * fuzz builds reports) is regenerated, transformed and inserted: the cell array is drawn
+ * at the transformed place, nothing else happens. */
+static void test_segment_of_only_a_cell_array(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png64(1, "h_cellseg.png", GHLHSR_NONE);
+    gopen_ws(2, NULL, GWS_TYPE_WISS); /* INSERT SEGMENT reads segments from the WISS */
+    gactivate_ws(2);
+    gcreate_seg(1);
+    Gint cells[1] = { 2 };
+    Grect r = { { 0.1, 0.1 }, { 0.3, 0.3 } };
+    gcell_array(&r, &(Gpat_rep){ { 1, 1 }, cells });
+    gclose_seg();
+    gredraw_all_seg_ws(1);
+    const Gtran_matrix m = { { 1, 0, 0.5 }, { 0, 1, 0.5 } };
+    gset_seg_tran(1, m); /* implicit regeneration */
+    gupd_ws(1, GFLAG_PERFORM);
+    gcreate_seg(2);
+    const Gtran_matrix id = { { 1, 0, 0 }, { 0, 1, 0 } };
+    ginsert_seg(1, id);
+    gclose_seg();
+    gredraw_all_seg_ws(1);
+    expect_errors(0, 0);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gclose_gks();
+    expect_errors(0, 0);
+    image img;
+    assert_true(read_png("h_cellseg.png", &img));
+    const unsigned char *in = px(&img, 38, 38), *out = px(&img, 12, 12);
+    assert_true(in[0] == 255 && in[1] == 0 && in[2] == 0); /* red cell, moved by (0.5, 0.5) */
+    assert_true(out[0] == 255 && out[1] == 255 && out[2] == 255);
+    free(img.rgb);
+    unlink("h_cellseg.png");
+}
+
 /* The eight functions that crashed on a NULL argument (issue 20 I) now report 2003;
  * inquiries with a NULL error indicator return without effect. */
 static void test_null_arguments(void **u)
@@ -533,6 +575,7 @@ int main(void)
         cmocka_unit_test(test_null_arguments),
         cmocka_unit_test(test_huge_coordinates_traced),
         cmocka_unit_test(test_big_star_traced_as_classic),
+        cmocka_unit_test(test_segment_of_only_a_cell_array),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

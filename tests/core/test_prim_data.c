@@ -499,6 +499,40 @@ static void test_errors_others(void **state)
     assert_int_equal(n_rec, 0);
 }
 
+/* Hostile coordinates: huge but finite points clipped at the viewport never give a driver
+ * a non-finite coordinate, normal or colour. */
+static void test_hostile_coordinates(void **state)
+{
+    (void)state;
+    const double big = 1.5e308;
+    Gpoint3 p[4] = { { -big, 0.5, 0.5 }, { big, 0.4, 0.5 }, { 0.5, big, -big }, { 0.5, 0.5, 0.5 } };
+    Gcoval c[4] = { { .rgb = { 1, 0, 0 } }, { .rgb = { 0, 1, 0 } }, { .rgb = { 0, 0, 1 } },
+                    { .rgb = { 1, 1, 1 } } };
+    Gvec3 n[4] = { { 1e300, 0, 1 }, { 0, -1e300, 1 }, { 0, 0, 1 }, { 1e-300, 0, 0 } };
+    for (int k = 0; k < 2; k++) {
+        gset_clip_ind(k ? GIND_NO_CLIP : GIND_CLIP);
+        gfill_area3_data(GFACET_NONE, GVERT_COORD_COLR_NORM, GCOLR_RGB, NULL,
+                         &(Gfacet_vdata3){ 4, p, c, n });
+        gtri_strip3_data(GFACET_NONE, GVERT_COORD_COLR_NORM, GCOLR_RGB, NULL,
+                         &(Gfacet_vdata3){ 4, p, c, n });
+    }
+    expect_no_error();
+    assert_true(n_rec >= 4); /* clipped and unclipped, area and strip */
+    for (int i = 0; i < n_rec; i++) {
+        const gks_prim *r = &rec[i].p;
+        for (int j = 0; j < r->n_points && j < DMAX_PTS; j++) {
+            assert_true(isfinite(r->pts[j].x) && isfinite(r->pts[j].y) && isfinite(r->pts[j].z));
+            if (r->vnormals) {
+                double l = hypot(hypot(r->vnormals[j].delta_x, r->vnormals[j].delta_y),
+                                 r->vnormals[j].delta_z);
+                assert_true(fabs(l - 1) < 1e-12);
+            }
+            if (r->vcolours)
+                assert_true(r->vcolours[j].red >= 0 && r->vcolours[j].red <= 1);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -510,6 +544,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_segment_normals_nonuniform, setup, teardown),
         cmocka_unit_test_setup_teardown(test_strip_mesh_sets, setup, teardown),
         cmocka_unit_test_setup_teardown(test_errors_others, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_hostile_coordinates, setup, teardown),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     free(rec);

@@ -67,7 +67,7 @@ static const example EXAMPLES[] = {
     { "fig3", 5, { "fig3", "fig3_none", "fig3_hiddenline", "fig3_zbuffer", "fig3_painter" } },
     { "fig4", 5, { "fig4", "fig4_none", "fig4_hiddenline", "fig4_zbuffer", "fig4_painter" } },
     { "fig5", 5, { "fig5", "fig5_none", "fig5_hiddenline", "fig5_zbuffer", "fig5_painter" } },
-    { "surface", 2, { "surface", "surface_zbuffer" } },
+    { "surface", 4, { "surface", "surface_zbuffer", "surface_smooth", "surface_smooth_zbuffer" } },
 };
 enum { N_EXAMPLES = sizeof EXAMPLES / sizeof EXAMPLES[0] };
 

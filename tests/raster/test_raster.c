@@ -932,9 +932,72 @@ static void test_cell_array_clipped(void **state)
     gks_raster_fb_free(b);
 }
 
+/* gks_raster_fill_smooth: a quad on the tilted plane Z = 2 + X/2 (X, Y in [-1,1]) seen
+ * through the projection s = 8 + 12 (X, Y)/Z with 1/w = 1/Z; attributes linear in X and Y
+ * (colour ((X+1)/2, (Y+1)/2, 1/2)). Perspective-correct interpolation reproduces them exactly
+ * at every sample, whichever fan triangle it falls in: tolerance 2e-6 (float attributes and
+ * colour); interpolating linearly in the screen would be off by more than 0.02 here. The
+ * samples covered are exactly those gks_raster_fill_area covers. */
+static void test_smooth_perspective(void **state)
+{
+    (void)state;
+    const double X[4] = {-1, 1, 1, -1}, Y[4] = {-1, -1, 1, 1};
+    gks_raster_pt q[4];
+    double invw[4];
+    float at[12];
+    for (int k = 0; k < 4; k++) {
+        double Z = 2 + 0.5 * X[k];
+        q[k] = (gks_raster_pt){8 + 12 * X[k] / Z, 8 + 12 * Y[k] / Z, 0.5};
+        invw[k] = 1 / Z;
+        at[3 * k] = (float)((X[k] + 1) / 2);
+        at[3 * k + 1] = (float)((Y[k] + 1) / 2);
+        at[3 * k + 2] = 0.5f;
+    }
+    gks_raster_fb *a = gks_raster_fb_create(16, 16, 1), *b = gks_raster_fb_create(16, 16, 1);
+    assert_non_null(a);
+    assert_non_null(b);
+    const float black[3] = {0, 0, 0};
+    gks_raster_fb_clear(a, black);
+    gks_raster_fb_clear(b, black);
+    gks_raster_vattr va = {.n = 3, .v = at, .invw = invw};
+    gks_raster_fill f = solid(WHITE, GKS_RASTER_Z_NONE);
+    assert_int_equal(gks_raster_fill_smooth(a, 4, q, &va, &f), GKS_RASTER_OK);
+    const int four = 4;
+    assert_int_equal(gks_raster_fill_area(b, 1, &four, q, &f), GKS_RASTER_OK);
+    double worst = 0, affine = 0;
+    int n = 0;
+    for (int j = 0; j < 16; j++)
+        for (int i = 0; i < 16; i++) {
+            assert_int_equal(lit(a, i, j), lit(b, i, j));
+            if (!lit(b, i, j))
+                continue;
+            double u = (i + 0.5 - 8) / 12, v = (j + 0.5 - 8) / 12;
+            double Z = 2 / (1 - 0.5 * u), Xp = u * Z, Yp = v * Z;
+            const float *c = px(a, i, j);
+            worst = fmax(worst, fabs(c[0] - (Xp + 1) / 2));
+            worst = fmax(worst, fabs(c[1] - (Yp + 1) / 2));
+            worst = fmax(worst, fabs(c[2] - 0.5));
+            /* screen-linear along x: from the left edge (X = -1) to the right (X = 1) */
+            double xl = 8 + 12 * -1 / 1.5, xr = 8 + 12 * 1 / 2.5;
+            affine = fmax(affine, fabs((i + 0.5 - xl) / (xr - xl) - (Xp + 1) / 2));
+            n++;
+        }
+    assert_true(n > 50);
+    assert_true(worst <= 2e-6);
+    assert_true(affine > 0.02);
+    /* bad arguments draw nothing */
+    const double bad[4] = {1, 0, 1, 1};
+    gks_raster_vattr vb = {.n = 3, .v = at, .invw = bad};
+    assert_int_equal(gks_raster_fill_smooth(a, 4, q, &vb, &f), GKS_RASTER_E_ARG);
+    assert_int_equal(gks_raster_fill_smooth(a, 2, q, &va, &f), GKS_RASTER_E_ARG);
+    gks_raster_fb_free(a);
+    gks_raster_fb_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_smooth_perspective),
         cmocka_unit_test(test_fb_create),      cmocka_unit_test(test_coverage_random),
         cmocka_unit_test(test_shared_edges),   cmocka_unit_test(test_holes),
         cmocka_unit_test(test_zbuffer),        cmocka_unit_test(test_nonplanar),

@@ -79,14 +79,14 @@ static void check(const double *uv, const uint32_t *counts, uint32_t nloops, int
     } while (0)
     for (int k = 0; k < nrand; k++)
         Q(b[0] + (b[1] - b[0]) * rnd(), b[2] + (b[3] - b[2]) * rnd());
-    for (size_t i = 0; i < nv; i += 1 + nv / 2000) { /* vertices, edge midpoints, neighbours */
+    for (size_t i = 0; i < nv; i += 1 + nv / 500) { /* vertices, edge midpoints, neighbours */
         size_t j = (i + 1) % nv;
         Q(uv[2 * i], uv[2 * i + 1]);
         Q(0.5 * (uv[2 * i] + uv[2 * j]), 0.5 * (uv[2 * i + 1] + uv[2 * j + 1]));
         Q(nextafter(uv[2 * i], INFINITY), uv[2 * i + 1]);
         Q(uv[2 * i], nextafter(uv[2 * i + 1], -INFINITY));
     }
-    for (int k = 0; k < 2000; k++) { /* the grid's lines and corners */
+    for (int k = 0; k < 600; k++) { /* the grid's lines and corners */
         int i = (int)(rnd() * (g.gu + 1)), j = (int)(rnd() * (g.gv + 1));
         if (i > g.gu) i = g.gu;
         if (j > g.gv) j = g.gv;
@@ -115,23 +115,23 @@ static void star(double *uv, uint32_t n, uint32_t k)
 static void test_stars(void **u)
 {
     (void)u;
-    uint32_t n = 4001; /* prime */
+    uint32_t n = 2003; /* prime */
     double *uv = malloc(2 * sizeof(double) * n);
     assert_non_null(uv);
     star(uv, n, n / 2 - 1);
-    check(uv, &n, 1, 50000, "star n/2-1");
+    check(uv, &n, 1, 15000, "star n/2-1");
     star(uv, n, 7);
-    check(uv, &n, 1, 50000, "star 7 turns");
+    check(uv, &n, 1, 15000, "star 7 turns");
     uint32_t m = 1201;
     star(uv, m, 500);
-    check(uv, &m, 1, 50000, "star 1201/500");
+    check(uv, &m, 1, 15000, "star 1201/500");
     free(uv);
 }
 
 static void test_spiral_and_random(void **u)
 {
     (void)u;
-    uint32_t n = 8000;
+    uint32_t n = 4000;
     double *uv = malloc(2 * sizeof(double) * n);
     assert_non_null(uv);
     for (uint32_t i = 0; i < n; i++) {
@@ -139,10 +139,10 @@ static void test_spiral_and_random(void **u)
         uv[2 * i] = 3.0 + r * cos(a);
         uv[2 * i + 1] = -2.0 + r * sin(a);
     }
-    check(uv, &n, 1, 50000, "spiral 40 turns");
+    check(uv, &n, 1, 15000, "spiral 40 turns");
     for (uint32_t i = 0; i < 2 * n; i++)
         uv[i] = 100.0 * rnd();
-    check(uv, &n, 1, 50000, "random chords");
+    check(uv, &n, 1, 15000, "random chords");
     free(uv);
 }
 
@@ -167,7 +167,7 @@ static void test_lattice(void **u)
                 y = abs(y + step) % 48;
         }
     }
-    check(uv, counts, 2, 50000, "lattice, two loops");
+    check(uv, counts, 2, 15000, "lattice, two loops");
     free(uv);
 }
 

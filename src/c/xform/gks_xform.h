@@ -86,6 +86,13 @@ double gks_xform_point(const double m[4][4], const double p[3], double out[3]);
 /* Transform the direction d = (x,y,z,0) by the upper-left 3x3 block (no division). */
 void gks_xform_direction(const double m[4][4], const double d[3], double out[3]);
 
+/* Normals through the upper-left 3x3 block A of m: nm = sign(det A) cof(A) / max|cof(A)|, the
+ * inverse transpose up to a positive factor (normals are renormalised after it). -1 when A
+ * is singular or not finite, else 0. */
+int gks_xform_normal_matrix(const double m[4][4], double nm[3][3]);
+/* nm v normalised into out; 0 (out zero) if that is not a finite non-zero vector, else 1. */
+int gks_xform_normal(const double nm[3][3], const double v[3], double out[3]);
+
 /* ---- Conversions and composition (xform_matrix.c) ------------------------------------ */
 
 /* 3x4 segment/insert matrix → 4x4 (last row 0 0 0 1). */

@@ -138,6 +138,46 @@ void gks_xform_direction(const double m[4][4], const double d[3], double out[3])
     memcpy(out, t, sizeof t);
 }
 
+int gks_xform_normal_matrix(const double m[4][4], double nm[3][3])
+{
+    double c[3][3]; /* cofactors: inverse transpose = cofactor matrix / det */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            c[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+        }
+    double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2];
+    if (!isfinite(det) || det == 0.0)
+        return -1;
+    double s = det > 0 ? 1.0 : -1.0, mx = 0.0; /* the sign keeps the sense of p x q */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            mx = fmax(mx, fabs(c[i][j]));
+    if (!(mx > 0.0) || !isfinite(mx))
+        return -1;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            nm[i][j] = s * c[i][j] / mx;
+    return 0;
+}
+
+int gks_xform_normal(const double nm[3][3], const double v[3], double out[3])
+{
+    double r[3], mx = 0.0;
+    for (int i = 0; i < 3; i++) {
+        r[i] = nm[i][0] * v[0] + nm[i][1] * v[1] + nm[i][2] * v[2];
+        mx = fmax(mx, fabs(r[i]));
+    }
+    out[0] = out[1] = out[2] = 0.0;
+    if (!(mx > 0.0) || !isfinite(mx))
+        return 0;
+    double a = r[0] / mx, b = r[1] / mx, c = r[2] / mx, l = sqrt(a * a + b * b + c * c);
+    out[0] = a / l;
+    out[1] = b / l;
+    out[2] = c / l;
+    return 1;
+}
+
 void gks_xform_mat34_to_mat4(const double m[3][4], double r[4][4])
 {
     for (int i = 0; i < 3; i++)

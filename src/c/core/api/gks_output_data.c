@@ -138,6 +138,8 @@ static int clip_pass(const cvert *in, size_t n, int axis, int side, const double
                 r.c[k] = a->c[k] + t * (b->c[k] - a->c[k]);
             }
             r.p[axis] = lim;
+            if (!(isfinite(r.p[0]) && isfinite(r.p[1]) && isfinite(r.p[2])))
+                continue; /* overflow near DBL_MAX (as clip_segment): the vertex is dropped */
             double len = sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
             if (len > 0 && isfinite(len))
                 for (int k = 0; k < 3; k++)
@@ -249,8 +251,8 @@ static int out_reserve(facet_buf *b, size_t m, size_t nl)
 }
 
 /* Sends facet f (loops from loop0, indices from idx0) to ws. */
-static int send_facet(gks_ws *ws, target *t, const norm_ctx *nc, const mapped *mp, size_t f,
-                      size_t loop0, size_t idx0, facet_buf *b)
+static int send_facet(gks_ws *ws, const gks_prim *tpl, const norm_ctx *nc, const mapped *mp,
+                      size_t f, size_t loop0, size_t idx0, facet_buf *b)
 {
     const gks_area_data *d = mp->d;
     size_t nl = (size_t)d->facet_loops[f], nv = 0;
@@ -314,13 +316,11 @@ static int send_facet(gks_ws *ws, target *t, const norm_ctx *nc, const mapped *m
     }
     if (nlo == 0 || m > INT32_MAX)
         return 0;
-    gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = (int)nlo, .loop_counts = b->counts,
-                   .n_points = (int)m, .pts = b->pts };
-    Grgb *pat = NULL;
-    gks_out_prim_common(&p, t->a);
-    int err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &p, &pat);
-    if (!mp->is_set)
-        p.attrs.edge_flag = 0; /* GKS-3D edges belong to the area sets */
+    gks_prim p = *tpl; /* the workstation's resolved attributes */
+    p.n_loops = (int)nlo;
+    p.loop_counts = b->counts;
+    p.n_points = (int)m;
+    p.pts = b->pts;
     if (d->fflag & GFACET_COLR)
         p.colour = colr_of(ws, d->ctype, d->frgb, d->fci, f);
     if (mp->fn && mp->fnok[f]) {
@@ -329,10 +329,7 @@ static int send_facet(gks_ws *ws, target *t, const norm_ctx *nc, const mapped *m
     }
     p.vnormals = use_n ? b->vn : NULL;
     p.vcolours = use_c ? b->vc : NULL;
-    if (!err)
-        err = gks_out_send(ws, &p);
-    gks_free(pat);
-    return err;
+    return gks_out_send(ws, &p);
 }
 
 /* Maps d's points by nc->m and its normals by the inverse transpose. */
@@ -389,13 +386,21 @@ int gks_area_data_emit(const norm_ctx *nc, const gks_area_data *d, int is_set, t
     int err = map_data(nc, d, is_set, &mp);
     gks_ws *ws;
     while (!err && (ws = gks_out_next_ws(t))) {
+        /* The attributes are resolved once per workstation, the facets share them. */
+        gks_prim tpl = { .kind = GKS_PRIM_FILL_AREA, .n_loops = 1 };
+        Grgb *pat = NULL;
+        gks_out_prim_common(&tpl, t->a);
+        err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &tpl, &pat);
+        if (!is_set)
+            tpl.attrs.edge_flag = 0; /* GKS-3D edges belong to the area sets */
         size_t loop0 = 0, idx0 = 0;
         for (size_t f = 0; f < d->n_facets && !err; f++) {
-            err = send_facet(ws, t, nc, &mp, f, loop0, idx0, &b);
+            err = send_facet(ws, &tpl, nc, &mp, f, loop0, idx0, &b);
             for (int k = 0; k < d->facet_loops[f]; k++)
                 idx0 += (size_t)d->loop_counts[loop0 + (size_t)k];
             loop0 += (size_t)d->facet_loops[f];
         }
+        gks_free(pat);
     }
     mapped_free(&mp);
     facet_buf_free(&b);

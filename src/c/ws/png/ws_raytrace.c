@@ -385,23 +385,6 @@ fail:
     return NULL;
 }
 
-/* The matrix that carries normals through the linear part A of m: the cofactor matrix of A
- * (det(A) A^-T), with the sign of det(A) so that it keeps their sense; normals are
- * renormalised after it. */
-static void normal_matrix(const Gmatrix3 m, double c[3][3])
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            c[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
-        }
-    const double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2];
-    if (det < 0)
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++)
-                c[i][j] = -c[i][j];
-}
-
 /* A polygon (VRC3 points xyz, vertex data vd) beyond the tracer's coordinate range, clipped
  * to far_clip_box with its vertex data (normals renormalised) and recorded. 0, 300 or 308
  * (docs/RAYTRACING.md, "Coordinate range"). */
@@ -461,7 +444,8 @@ static int push_far_polygon(ws_rt *r, const gks_ws *ws, rt_view_rec *vr, const G
 
 /* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
  * overwritten with their VRC3 images) in view vi; vn (NDC3 unit normals) and vc (colours),
- * 3 doubles per point each, or NULL; vn is overwritten with the VRC3 normals. */
+ * 3 doubles per point each, or NULL; vn is overwritten with the VRC3 normals (the inverse
+ * transpose of the view orientation, renormalised). */
 static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, int n_loops,
                         const int *counts, size_t n_pts, double *xyz, double *vn,
                         const double *vc)
@@ -475,17 +459,12 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
         double *q = xyz + 3 * i;
         xf_point(v->ori_matrix, q[0], q[1], q[2], q);
     }
-    if (vn) {
-        double c[3][3];
-        normal_matrix(v->ori_matrix, c);
-        for (size_t i = 0; i < n_pts; i++) {
-            double *q = vn + 3 * i, o[3];
-            for (int k = 0; k < 3; k++)
-                o[k] = c[k][0] * q[0] + c[k][1] * q[1] + c[k][2] * q[2];
-            const double l = sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
-            for (int k = 0; k < 3; k++) /* a degenerate normal adds nothing (rt_vertex_data) */
-                q[k] = l > 0 && isfinite(l) ? o[k] / l : 0.0;
-        }
+    double nm[3][3];
+    if (vn && gks_xform_normal_matrix(v->ori_matrix, nm))
+        vn = NULL; /* a singular view orientation: no usable normals */
+    for (size_t i = 0; vn && i < n_pts; i++) { /* a degenerate normal adds nothing */
+        double *q = vn + 3 * i;
+        gks_xform_normal(nm, q, q);
     }
     const rt_vertex_data vd = { vn, vc };
     /* Beyond the tracer's range (it would drop the polygon, the classic modes draw it):

@@ -1,13 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * ws_shade.c -- flat shading of planar areas (ws_shade.h): the ray tracer's local shading
- * (src/rt/rt_render.c, rt_shade_lights) without shadow rays, at the vertex centroid:
+ * (src/rt/rt_shade.h, the Newell normal and the per-light terms both use) without shadow
+ * rays, at the vertex centroid:
  *   I = sum(ambient) ka*Od*La + sum(other) att*spot*[kd*Od*Lc*max(0,N.L) + ks*Cs*Lc*max(0,R.E)^se]
  * (specular term for AMB_DIFF_SPEC only), N the facet normal turned towards the eye, E the unit
  * vector towards the eye, att = 1/(c1 + c2*d), spot = cos^concentration inside the spread.
  * Lights are validated as gksrt validates them (a light the tracer rejects is left out here too).
  */
 #include "ws_shade.h"
+#include "rt_shade.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include <math.h>
@@ -53,133 +55,74 @@ static int finite3(const double v[3])
 }
 
 /* Newell normal (all loops) about the centroid c, or for self-cancelling outlines the largest
- * fan cross product, as gksrt chooses the front side. 0 if degenerate. */
+ * fan cross product: the tracer's front side (rt_newell_normal, shared). 0 if degenerate. */
 static int facet_normal(const double (*v)[3], size_t nv, const int *counts, int nloops,
                         const double c[3], double n[3])
 {
-    n[0] = n[1] = n[2] = 0;
     double ext = 0;
     for (size_t i = 0; i < nv; i++)
         for (int k = 0; k < 3; k++)
             ext = fmax(ext, fabs(v[i][k] - c[k]));
-    size_t base = 0;
-    for (int l = 0; l < nloops; l++) {
-        size_t m = (size_t)counts[l];
-        for (size_t i = 0; i < m; i++) {
-            const double *a = v[base + i], *b = v[base + (i + 1) % m];
-            double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
-            double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
-            n[0] += (ay - by) * (az + bz);
-            n[1] += (az - bz) * (ax + bx);
-            n[2] += (ax - bx) * (ay + by);
-        }
-        base += m;
-    }
-    double tol = 1e-12 * ext * ext;
-    if (sqrt(dot3(n, n)) > tol && unit3(n))
-        return 1;
-    double best = 0, bn[3] = { 0, 0, 0 };
-    for (size_t i = 1; i + 1 < nv; i++) {
-        double e1[3], e2[3];
-        for (int k = 0; k < 3; k++) {
-            e1[k] = v[i][k] - v[0][k];
-            e2[k] = v[i + 1][k] - v[0][k];
-        }
-        double x[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                        e1[0] * e2[1] - e1[1] * e2[0] };
-        double l = sqrt(dot3(x, x));
-        if (l > best) {
-            best = l;
-            memcpy(bn, x, sizeof bn);
-        }
-    }
-    if (!(best > tol) || !isfinite(best))
-        return 0;
-    memcpy(n, bn, sizeof bn);
-    return unit3(n);
+    return rt_newell_normal(&v[0][0], nv, counts, nloops, c, ext, n);
 }
 
 /* A light of the table in VRC3, validated as gksrt does; 0 if the tracer would reject it. */
-typedef ws_vlight vlight;
+typedef rt_light vlight;
 
 static int light_vrc(const Glight_src_rep *g, const Gmatrix3 ori, vlight *l)
 {
+    memset(l, 0, sizeof *l);
     l->type = g->type;
-    l->col[0] = g->colr.red;
-    l->col[1] = g->colr.green;
-    l->col[2] = g->colr.blue;
-    xf_point(ori, g->pos.x, g->pos.y, g->pos.z, l->pos);
-    xf_dir(ori, g->dir.delta_x, g->dir.delta_y, g->dir.delta_z, l->dir);
+    l->color[0] = g->colr.red;
+    l->color[1] = g->colr.green;
+    l->color[2] = g->colr.blue;
+    xf_point(ori, g->pos.x, g->pos.y, g->pos.z, l->position);
+    xf_dir(ori, g->dir.delta_x, g->dir.delta_y, g->dir.delta_z, l->direction);
     l->c1 = g->atten[0];
     l->c2 = g->atten[1];
-    l->conc = g->conc_exp;
+    l->concentration = g->conc_exp;
     l->spread = g->spread_angle;
-    if (l->type < GLIGHT_AMBIENT || l->type > GLIGHT_SPOT || !finite3(l->col) ||
-        l->col[0] < 0 || l->col[1] < 0 || l->col[2] < 0)
+    if (l->type < GLIGHT_AMBIENT || l->type > GLIGHT_SPOT || !finite3(l->color) ||
+        l->color[0] < 0 || l->color[1] < 0 || l->color[2] < 0)
         return 0;
     if ((l->type == GLIGHT_DIRECTIONAL || l->type == GLIGHT_SPOT) &&
-        (!finite3(l->dir) || !unit3(l->dir)))
+        (!finite3(l->direction) || !unit3(l->direction)))
         return 0;
     if ((l->type == GLIGHT_POSITIONAL || l->type == GLIGHT_SPOT) &&
-        (!finite3(l->pos) || !isfinite(l->c1) || !isfinite(l->c2) || l->c1 < 0 || l->c2 < 0 ||
-         !(l->c1 + l->c2 > 0)))
+        (!finite3(l->position) || !isfinite(l->c1) || !isfinite(l->c2) || l->c1 < 0 ||
+         l->c2 < 0 || !(l->c1 + l->c2 > 0)))
         return 0;
     if (l->type == GLIGHT_SPOT &&
-        (!isfinite(l->conc) || l->conc < 0 || !isfinite(l->spread) || l->spread <= 0 ||
-         l->spread > SHADE_PI + 1e-12))
+        (!isfinite(l->concentration) || l->concentration < 0 || !isfinite(l->spread) ||
+         l->spread <= 0 || l->spread > SHADE_PI + 1e-12))
         return 0;
     return 1;
 }
 
-/* Adds light l's contribution at point P with normal N (facing the eye E) to sh. */
+/* Adds light l's contribution at point P with normal N (facing the eye E) to sh: the tracer's
+ * per-light terms (rt_shade.h) without the shadow ray. */
 static void add_light(ws_shade *sh, const vlight *l, int eq, const Garea_props *pr,
                       const double P[3], const double N[3], const double E[3])
 {
     if (l->type == GLIGHT_AMBIENT) {
         for (int c = 0; c < 3; c++)
-            sh->mul[c] += pr->ambient_coef * l->col[c];
+            sh->mul[c] += pr->ambient_coef * l->color[c];
         return;
     }
     if (eq < GREFL_AMB_DIFF)
         return;
-    double L[3], dist = INFINITY;
-    if (l->type == GLIGHT_DIRECTIONAL) {
-        for (int c = 0; c < 3; c++)
-            L[c] = -l->dir[c];
-    } else {
-        for (int c = 0; c < 3; c++)
-            L[c] = l->pos[c] - P[c];
-        dist = sqrt(dot3(L, L));
-        if (!(dist > 0) || !isfinite(dist))
-            return;
-        for (int c = 0; c < 3; c++)
-            L[c] /= dist;
-    }
-    double NL = dot3(N, L);
-    if (!(NL > 0))
+    rt_light_term t;
+    if (!rt_light_term_at(l, P, N, &t))
         return;
-    double f = 1;
-    if (l->type != GLIGHT_DIRECTIONAL)
-        f = 1 / (l->c1 + l->c2 * dist);
-    if (l->type == GLIGHT_SPOT) {
-        double ca = -dot3(L, l->dir);
-        if (ca < cos(l->spread) || !(ca > 0))
-            return;
-        f *= pow(ca, l->conc);
-    }
+    double f = rt_light_att(l, &t);
+    f *= rt_light_spot(l, &t);
     double spec = 0;
-    if (eq == GREFL_AMB_DIFF_SPEC && pr->specular_coef > 0) {
-        double R[3];
-        for (int c = 0; c < 3; c++)
-            R[c] = 2 * NL * N[c] - L[c];
-        double RE = dot3(R, E);
-        if (RE > 0)
-            spec = pr->specular_coef * pow(RE, pr->specular_exp);
-    }
+    if (eq == GREFL_AMB_DIFF_SPEC && pr->specular_coef > 0)
+        spec = rt_spec_term(N, &t, E, pr->specular_coef, pr->specular_exp);
     const double cs[3] = { pr->specular_colr.red, pr->specular_colr.green, pr->specular_colr.blue };
     for (int c = 0; c < 3; c++) {
-        sh->mul[c] += f * l->col[c] * pr->diffuse_coef * NL;
-        sh->add[c] += f * l->col[c] * spec * cs[c];
+        sh->mul[c] += f * l->color[c] * pr->diffuse_coef * t.NL;
+        sh->add[c] += f * l->color[c] * spec * cs[c];
     }
 }
 
@@ -311,18 +254,11 @@ void ws_shade_vrc_point(const gks_ws *ws, const gks_prim *prim, const Gpoint3 *p
 
 int ws_shade_vrc_normal(const gks_ws *ws, const gks_prim *prim, const Gvec3 *n, double o[3])
 {
-    const Gmatrix3 *m = &view_of(ws, prim)->ori_matrix;
-    double c[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            c[i][j] = (*m)[i1][j1] * (*m)[i2][j2] - (*m)[i1][j2] * (*m)[i2][j1];
-        }
-    const double det = (*m)[0][0] * c[0][0] + (*m)[0][1] * c[0][1] + (*m)[0][2] * c[0][2];
-    const double sg = det < 0 ? -1 : 1;
-    for (int k = 0; k < 3; k++)
-        o[k] = sg * (c[k][0] * n->delta_x + c[k][1] * n->delta_y + c[k][2] * n->delta_z);
-    return finite3(o) && unit3(o);
+    double nm[3][3];
+    const double v[3] = { n->delta_x, n->delta_y, n->delta_z };
+    o[0] = o[1] = o[2] = 0;
+    return !gks_xform_normal_matrix(view_of(ws, prim)->ori_matrix, nm) &&
+           gks_xform_normal(nm, v, o);
 }
 
 int ws_shade_ctx_init(const gks_ws *ws, const gks_prim *prim, ws_shade_ctx *c)

@@ -10,6 +10,7 @@
 #ifndef WS_SHADE_H
 #define WS_SHADE_H
 #include "ws_driver.h"
+#include "gksrt.h"
 
 /* Flat shading of one area as an affine map of its diffuse colour Od:
  * colour = clamp(mul * Od + add, 0, 1) per component. mul/add do not depend on Od, so one
@@ -34,14 +35,13 @@ Grgb ws_shade_apply(const ws_shade *sh, const Grgb *od);
 
 /* Shading at points of a smooth area (interior shading methods COLOUR and NORMAL): the same
  * equations at point P with normal N, both in VRC3 of the area's view. */
-typedef struct { int type; double col[3], pos[3], dir[3], c1, c2, conc, spread; } ws_vlight;
 typedef struct ws_shade_ctx {
     int persp;
     double eye[3];           /* VRC3 eye point (persp) or unit direction towards the eye */
     int eq[2];
     Garea_props pr[2];
     int nl;
-    ws_vlight l[GKS_MAX_LIGHT_IND];
+    rt_light l[GKS_MAX_LIGHT_IND];   /* VRC3 */
 } ws_shade_ctx;
 
 /* The context of prim on ws; 1 if its view has no usable eye (then flat colours). */
