@@ -3,8 +3,7 @@
  * gks_priority.c -- input priority orderings: SET VIEWPORT INPUT PRIORITY (normalization
  * transformations, GKS state list) and SET VIEW TRANSFORMATION INPUT PRIORITY (view
  * indices, workstation state list), with their list inquiries. The orderings decide which
- * transformation maps a LOCATOR/STROKE position back; this implementation has no input
- * devices yet (input level a), so they are stored and inquirable only.
+ * transformation maps a LOCATOR/STROKE position back (gks_indev.c reads them).
  */
 #include "gks_error.h"
 #include "gks_state.h"
