@@ -33,7 +33,7 @@ done
 ppid=$!
 i=0
 while ! grep -q READY out.txt 2>/dev/null; do
-    i=$((i + 1)); [ $i -gt 100 ] && { cat out.txt; echo "FAIL: no window"; exit 1; }
+    i=$((i + 1)); [ $i -gt 400 ] && { cat out.txt; echo "FAIL: no window"; exit 1; }
     sleep 0.1
 done
 w=$(xdotool search --sync --name gks3d | head -1)
