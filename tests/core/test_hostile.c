@@ -504,6 +504,49 @@ static void test_segment_of_only_a_cell_array(void **u)
     unlink("h_cellseg.png");
 }
 
+/* test hooks of the test build (gks3d_test): fail the Nth allocation from now */
+void gks_alloc_fail_after(long n);
+long gks_alloc_count(void);
+
+static void far_areas(void)
+{
+    Gpoint3 q[4] = { { 0.05, -1e300, 0.6 }, { 1e250, -1e300, 0.6 }, { 1e250, 0.1, 0.6 },
+                     { 0.05, 0.1, 0.6 } };
+    gfill_area3(&(Gpoint_list3){ 4, q });
+    Gpoint3 a[4] = { { 0.1, 0.1, 0.5 }, { 1e200, 0.1, 0.5 }, { 1e200, 0.9, 0.5 }, { 0.1, 0.9, 0.5 } };
+    Gpoint3 b[3] = { { 0.2, 0.2, 0.5 }, { 0.4, 0.2, 0.5 }, { 0.3, 1e180, 0.5 } };
+    Gpoint_list3 loops[2] = { { 4, a }, { 3, b } };
+    gfill_area_set3(&(Gpoint_list_list3){ 2, loops });
+}
+
+/* The clip of far areas with every one of its allocations failing in turn: 300 at most,
+ * no other error, nothing crashes or leaks (ASan build). */
+static void test_huge_coordinates_alloc_failures(void **u)
+{
+    (void)u;
+    long total = 0;
+    for (long k = 0; k <= total + 1; k++) {
+        reset_gks();
+        gopen_gks(NULL, 0);
+        open_png64(1, "h_big_fail.png", GHLHSR_RAYTRACE);
+        gset_clip_ind(GIND_NO_CLIP);
+        long before = gks_alloc_count();
+        gks_alloc_fail_after(k);
+        far_areas();
+        gks_alloc_fail_after(0);
+        if (k == 0)
+            total = gks_alloc_count() - before;
+        for (int i = 0; i < n_captured && i < MAX_CAPTURED; i++)
+            if (captured[i].err != 300)
+                fail_msg("allocation %ld of %ld: error %d", k, total, captured[i].err);
+        n_captured = 0;
+        gclose_gks();
+        n_captured = 0;
+    }
+    assert_true(total > 4);
+    unlink("h_big_fail.png");
+}
+
 /* The eight functions that crashed on a NULL argument (issue 20 I) now report 2003;
  * inquiries with a NULL error indicator return without effect. */
 static void test_null_arguments(void **u)
@@ -574,6 +617,7 @@ int main(void)
         cmocka_unit_test(test_nonfinite_segment_transformation),
         cmocka_unit_test(test_null_arguments),
         cmocka_unit_test(test_huge_coordinates_traced),
+        cmocka_unit_test(test_huge_coordinates_alloc_failures),
         cmocka_unit_test(test_big_star_traced_as_classic),
         cmocka_unit_test(test_segment_of_only_a_cell_array),
     };
