@@ -54,12 +54,22 @@ xdotool mousemove --window "$w" 200 600 click 1
 wait_title "PICK 1"
 sleep 0.3
 before=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+# poll (a loaded machine delays the redraw): until the pixels are $1 or 5 s passed
+peek_until() {
+    i=0
+    while :; do
+        got=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+        [ "$got" = "$1" ] && break
+        i=$((i + 1)); [ $i -gt 50 ] && break
+        sleep 0.1
+    done
+}
 xdotool mousemove --window "$w" 400 400
-sleep 0.5
-hover=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+peek_until "00c0ff ff0000 "
+hover=$got
 xdotool mousemove --window "$w" 600 150
-sleep 0.5
-after=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+peek_until "$before"
+after=$got
 echo "pick echo pixels: before $before hovering $hover after $after"
 set -- $hover
 [ "$1" = 00c0ff ] || echo "FAIL: pick echo: edge pixel $1 while hovering"
