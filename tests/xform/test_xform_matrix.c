@@ -425,6 +425,26 @@ static void test_ws_tran3(void **state)
     xt_traps_off();
 }
 
+/* Normals map with the inverse transpose (non-uniform scale), renormalised; a singular
+ * matrix, a zero or a non-finite result is refused (0) with a zero vector. */
+static void test_normal(void **state)
+{
+    (void)state;
+    double m[4][4] = { { 2, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } };
+    double nm[3][3], o[3];
+    assert_int_equal(gks_xform_normal_matrix(m, nm), 0);
+    /* the plane x + y = 1 scaled by 2 in x is x/2 + y = 1: normal (1, 2, 0)/sqrt(5) */
+    assert_int_equal(gks_xform_normal(nm, (double[3]){ 1, 1, 0 }, o), 1);
+    assert_true(fabs(o[0] - 1 / sqrt(5.0)) < 1e-15 && fabs(o[1] - 2 / sqrt(5.0)) < 1e-15);
+    assert_true(o[2] == 0.0);
+    assert_int_equal(gks_xform_normal(nm, (double[3]){ 0, 0, 0 }, o), 0);
+    assert_int_equal(gks_xform_normal(nm, (double[3]){ NAN, 1, 0 }, o), 0);
+    assert_true(o[0] == 0.0 && o[1] == 0.0 && o[2] == 0.0);
+    assert_int_equal(gks_xform_normal(nm, (double[3]){ INFINITY, 1, 0 }, o), 0);
+    m[1][1] = 0;
+    assert_int_equal(gks_xform_normal_matrix(m, nm), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -437,6 +457,7 @@ int main(void)
         cmocka_unit_test(test_accumulate),
         cmocka_unit_test(test_norm_tran3),
         cmocka_unit_test(test_ws_tran3),
+        cmocka_unit_test(test_normal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

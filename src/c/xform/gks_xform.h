@@ -90,7 +90,8 @@ void gks_xform_direction(const double m[4][4], const double d[3], double out[3])
  * inverse transpose up to a positive factor (normals are renormalised after it). -1 when A
  * is singular or not finite, else 0. */
 int gks_xform_normal_matrix(const double m[4][4], double nm[3][3]);
-/* nm v normalised into out; 0 (out zero) if that is not a finite non-zero vector, else 1. */
+/* nm v normalised into out (which may be v); 0 (out zero) if that is not a finite non-zero
+ * vector, else 1. */
 int gks_xform_normal(const double nm[3][3], const double v[3], double out[3]);
 
 /* ---- Conversions and composition (xform_matrix.c) ------------------------------------ */

@@ -164,12 +164,14 @@ int gks_xform_normal_matrix(const double m[4][4], double nm[3][3])
 int gks_xform_normal(const double nm[3][3], const double v[3], double out[3])
 {
     double r[3], mx = 0.0;
-    for (int i = 0; i < 3; i++) {
+    int finite = 1;
+    for (int i = 0; i < 3; i++) { /* all of v is read before out is written: out may be v */
         r[i] = nm[i][0] * v[0] + nm[i][1] * v[1] + nm[i][2] * v[2];
+        finite &= isfinite(r[i]) != 0; /* fmax would pass a NaN over */
         mx = fmax(mx, fabs(r[i]));
     }
     out[0] = out[1] = out[2] = 0.0;
-    if (!(mx > 0.0) || !isfinite(mx))
+    if (!finite || !(mx > 0.0))
         return 0;
     double a = r[0] / mx, b = r[1] / mx, c = r[2] / mx, l = sqrt(a * a + b * b + c * c);
     out[0] = a / l;

@@ -46,51 +46,18 @@ static int colrs_ok(int ctype, const Gcoval *c, size_t n)
 
 /* ------------------------------------------------------------------ transformation */
 /* The inverse transpose of m's linear part (normals), scaled by its largest element;
- * 0, or -1 when singular or not finite. */
+ * 0, or -1 when singular or not finite (src/c/xform). */
 static int normal_matrix(const double m[3][4], double nm[3][3])
 {
-    double c[3][3]; /* cofactors: inverse transpose = cofactor matrix / det */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            c[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
-        }
-    double det = m[0][0] * c[0][0] + m[0][1] * c[0][1] + m[0][2] * c[0][2];
-    if (!isfinite(det) || det == 0.0)
-        return -1;
-    double s = det > 0 ? 1.0 : -1.0; /* the sign keeps orientation: n maps like p x q */
-    double mx = 0.0;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            mx = fmax(mx, fabs(c[i][j]));
-    if (!(mx > 0.0) || !isfinite(mx))
-        return -1;
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            nm[i][j] = s * c[i][j] / mx;
-    return 0;
+    double m4[4][4];
+    gks_xform_mat34_to_mat4(m, m4);
+    return gks_xform_normal_matrix(m4, nm);
 }
 
 /* nm * v normalised into o; 1 if the result is a finite unit vector. */
 static int map_normal(const double nm[3][3], const double v[3], double o[3])
 {
-    double r[3], len = 0.0;
-    for (int i = 0; i < 3; i++) {
-        r[i] = nm[i][0] * v[0] + nm[i][1] * v[1] + nm[i][2] * v[2];
-        if (!isfinite(r[i]))
-            return 0;
-    }
-    double mx = fmax(fabs(r[0]), fmax(fabs(r[1]), fabs(r[2])));
-    if (!(mx > 0.0))
-        return 0;
-    for (int i = 0; i < 3; i++) {
-        r[i] /= mx; /* no overflow in the squares */
-        len += r[i] * r[i];
-    }
-    len = sqrt(len);
-    for (int i = 0; i < 3; i++)
-        o[i] = r[i] / len;
-    return 1;
+    return gks_xform_normal(nm, v, o);
 }
 
 /* ------------------------------------------------------------------ clipping */
