@@ -60,8 +60,11 @@ for target in gksm mi state scene; do
     rm -rf "$work"
     cp -r "tests/fuzz/corpus_$target" "$work"
     echo "fuzz: $target for ${budget}s"
-    if ! "$out/fuzz_$target" -max_total_time="$budget" -max_len=65536 -timeout=10 \
-            -rss_limit_mb=2048 -artifact_prefix="$out/$target-" "$work" 2>"$out/$target.log"; then
+    # run in a scratch folder: fuzz_state's workstations write files relative to it
+    mkdir -p "$out/run_$target"
+    if ! (cd "$out/run_$target" && "../fuzz_$target" -max_total_time="$budget" -max_len=65536 \
+            -timeout=10 -rss_limit_mb=2048 -artifact_prefix="../$target-" "../corpus_$target" \
+            2>"../$target.log"); then
         tail -40 "$out/$target.log"
         for a in "$out/$target-"*; do
             [ -e "$a" ] || continue

@@ -28,6 +28,7 @@
 #include "ws_png_render.h"
 #include "raster.h"
 #include "png_util.h"
+#include "gks_alloc.h"
 
 /* The reference images: tests/core/ref next to this source file. */
 static void ref_path(char *buf, size_t n, const char *name)
@@ -79,6 +80,9 @@ static void ws_finish(gks_ws *ws, image *img)
     ws->drv->close(ws);
     assert_true(read_png(path, img));
     unlink(path);
+    for (int k = 0; k < ws->n_files; k++) /* frame files claimed by png_update */
+        gks_free(ws->files[k]);
+    gks_free(ws->files);
     free(ws->colr);
     free(ws->conn_id);
     free(ws);

@@ -550,12 +550,89 @@ static void test_bad_input(void **state)
     rt_scene_free(NULL);
 }
 
+/* The commit on several threads (rt_build_options.threads) gives the scene of one thread:
+ * the same grid statistics and, bit for bit, the same hits. 30000 small random triangles (so
+ * the build splits into parts), a large quad and polygon crossing many cells, and a few
+ * degenerate triangles (dropped at commit: the serial gap-closing pass). */
+static void test_threads_same_scene(void **state)
+{
+    (void)state;
+    enum { NT = 30000, NR = 20000, NS = 3 };
+    rt_scene *sc[NS];
+    rt_grid_info gi[NS];
+    rt_hit *h[NS];
+    const int threads[NS] = {1, 2, 3};
+    rt_ray *rays = malloc(NR * sizeof *rays);
+    assert_non_null(rays);
+    for (int s = 0; s < NS; s++) {
+        sc[s] = rt_scene_new();
+        assert_non_null(sc[s]);
+        rt_surface su;
+        rt_surface_default(&su);
+        int sid = rt_scene_add_surface(sc[s], &su);
+        assert_true(sid >= 0);
+        rng_state = 4242;
+        const int three = 3, four = 4;
+        for (int t = 0; t < NT; t++) {
+            double c[3] = {rnd(), rnd(), rnd()}, v[9];
+            for (int k = 0; k < 3; k++)
+                for (int i = 0; i < 3; i++)
+                    v[3 * k + i] = t % 1000 == 7 ? c[i] : c[i] + 0.04 * (rnd() - 0.5);
+            assert_true(rt_scene_add_polygon(sc[s], 1, &three, v, sid, sid) >= 0 || t % 1000 == 7);
+        }
+        const double quad[12] = {-0.1, -0.1, 0.5, 1.1, -0.1, 0.45, 1.1, 1.1, 0.45, -0.1, 1.1, 0.5};
+        const double poly[15] = {0.5, -0.1, -0.1, 0.55, 1.1, -0.1, 0.5, 1.2, 0.6, 0.45, 0.6, 1.1,
+                                 0.5, -0.1, 1.1};
+        const int five = 5;
+        assert_true(rt_scene_add_polygon(sc[s], 1, &four, quad, sid, sid) >= 0);
+        assert_true(rt_scene_add_polygon(sc[s], 1, &five, poly, sid, sid) >= 0);
+        rt_build_options o = {.brute_threshold = -1, .threads = threads[s]};
+        assert_int_equal(rt_scene_commit(sc[s], &o), RT_OK);
+        assert_int_equal(rt_scene_grid_info(sc[s], &gi[s]), RT_OK);
+        h[s] = malloc(NR * sizeof *h[s]);
+        assert_non_null(h[s]);
+    }
+    rng_state = 77;
+    for (int k = 0; k < NR; k++) {
+        double o[3], d[3];
+        for (int i = 0; i < 3; i++) {
+            o[i] = 1.4 * rnd() - 0.2;
+            d[i] = 2 * rnd() - 1;
+        }
+        ray_set(&rays[k], o[0], o[1], o[2], d[0], d[1], d[2]);
+    }
+    int nhit = 0;
+    for (int s = 0; s < NS; s++)
+        assert_int_equal(rt_intersect(sc[s], NR, rays, h[s]), RT_OK);
+    for (int s = 1; s < NS; s++) {
+        assert_true(gi[s].prims == gi[0].prims && gi[s].cells == gi[0].cells &&
+                    gi[s].refs == gi[0].refs && gi[s].subgrids == gi[0].subgrids &&
+                    gi[s].subcells == gi[0].subcells && gi[s].subrefs == gi[0].subrefs &&
+                    gi[s].empty_cells == gi[0].empty_cells &&
+                    gi[s].max_leaf_refs == gi[0].max_leaf_refs && gi[s].rotated == gi[0].rotated);
+        for (int k = 0; k < NR; k++) {
+            assert_int_equal(h[s][k].prim, h[0][k].prim);
+            assert_memory_equal(&h[s][k].t, &h[0][k].t, sizeof h[0][k].t);
+            nhit += s == 1 && h[0][k].prim >= 0;
+        }
+    }
+    assert_true(gi[0].prims < NT + 2); /* the degenerate ones were dropped */
+    assert_true(gi[0].subgrids > 0);   /* the second level was built in parts */
+    assert_true(nhit > NR / 10);
+    for (int s = 0; s < NS; s++) {
+        free(h[s]);
+        rt_scene_free(sc[s]);
+    }
+    free(rays);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_watertight_mesh), cmocka_unit_test(test_shared_diagonal),
         cmocka_unit_test(test_grid_equals_brute), cmocka_unit_test(test_even_odd),
         cmocka_unit_test(test_big_polygons), cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_threads_same_scene),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

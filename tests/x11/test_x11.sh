@@ -33,12 +33,50 @@ done
 ppid=$!
 i=0
 while ! grep -q READY out.txt 2>/dev/null; do
-    i=$((i + 1)); [ $i -gt 100 ] && { cat out.txt; echo "FAIL: no window"; exit 1; }
+    i=$((i + 1)); [ $i -gt 400 ] && { cat out.txt; echo "FAIL: no window"; exit 1; }
     sleep 0.1
 done
 w=$(xdotool search --sync --name gks3d | head -1)
+# the window's title names the REQUEST once its prompt and echo are drawn
+wait_title() {
+    i=0
+    while [ "$(xdotool getwindowname "$w" 2>/dev/null)" != "gks3d: REQUEST $1" ]; do
+        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: no REQUEST $1"; exit 1; }
+        sleep 0.1
+    done
+}
 xdotool mousemove --window "$w" 200 600 click 1
+# PICK echo (prompt/echo type 1): while the pointer is over the detectable square
+# (window pixels 320..480 each way, filled red), its outline is drawn 3 pixels wide in
+# the highlight colour 00c0ff; away from it the picture is restored. Checked: a pixel on
+# the left edge (320, 400) and one inside (350, 450), which stays red (exact colours:
+# the overlay is drawn with Xlib, no anti-aliasing).
+wait_title "PICK 1"
 sleep 0.3
+before=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+# poll (a loaded machine delays the redraw): until the pixels are $1 or 5 s passed
+peek_until() {
+    i=0
+    while :; do
+        got=$("$peek" "$w" 320 400 350 450 | tr '\n' ' ')
+        [ "$got" = "$1" ] && break
+        i=$((i + 1)); [ $i -gt 50 ] && break
+        sleep 0.1
+    done
+}
+xdotool mousemove --window "$w" 400 400
+peek_until "00c0ff ff0000 "
+hover=$got
+xdotool mousemove --window "$w" 600 150
+peek_until "$before"
+after=$got
+echo "pick echo pixels: before $before hovering $hover after $after"
+set -- $hover
+[ "$1" = 00c0ff ] || echo "FAIL: pick echo: edge pixel $1 while hovering"
+[ "$2" = ff0000 ] || echo "FAIL: pick echo: inside pixel $2 while hovering"
+[ "$before" = "$after" ] || echo "FAIL: pick echo: picture not restored"
+set -- $before
+[ "$1" != 00c0ff ] || echo "FAIL: pick echo: edge highlighted before hovering"
 xdotool mousemove --window "$w" 400 400 click 1
 sleep 0.3
 xdotool windowfocus --sync "$w" 2>/dev/null
@@ -58,14 +96,6 @@ wait_for() {
 }
 # The menu of CHOICE prompt/echo type 3, drawn at the echo area's top right: check the
 # prompt line's and the menu's colours, then click item 2.
-# the window's title names the REQUEST once its prompt and echo are drawn
-wait_title() {
-    i=0
-    while [ "$(xdotool getwindowname "$w" 2>/dev/null)" != "gks3d: REQUEST $1" ]; do
-        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: no REQUEST $1"; exit 1; }
-        sleep 0.1
-    done
-}
 wait_for MENU
 wait_title "CHOICE 1"
 c=$("$peek" "$w" 400 5 720 135)

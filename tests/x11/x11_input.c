@@ -3,7 +3,8 @@
  * x11_input.c -- the X11 workstation (GWS_TYPE_X11). "nodisplay": with no display OPEN
  * WORKSTATION reports 26 and the workstation is not open. "interactive" (run by
  * test_x11.sh under Xvfb, driven by xdotool): a detectable square in segment 1 is shown,
- * then REQUEST LOCATOR, PICK, CHOICE and STRING take the mouse clicks and keys the script
+ * then REQUEST LOCATOR, PICK (its echo highlights the square under the pointer, checked
+ * by the script's pixel reads), CHOICE and STRING take the mouse clicks and keys the script
  * sends; the values are checked against the positions clicked. Then the echoes: a CHOICE
  * menu (prompt/echo type 3) clicked, the VALUATOR slider clicked, a STROKE dragged, and a
  * ray-traced picture whose pixels the script reads (xpeek).

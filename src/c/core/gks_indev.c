@@ -629,8 +629,11 @@ static double seg_dist(const double a[2], const double b[2], const double q[2])
 /* Does primitive p of segment s, as ws shows it (segment transformation, view), pass
  * within the aperture of the NPC point q? Areas: q inside (even-odd over all loops) or
  * near an edge; lines: near a segment; markers and text: near a point. */
-static int prim_hit(const gks_ws *ws, const gks_segment *s, const gks_seg_prim *p,
-                    const double q[2])
+/* Primitive p of segment s as ws shows it, in NPC: its points (NDC3 through the segment
+ * transformation and the primitive's view; a cell array's four corners; a text's
+ * position), allocated, n of them in *n (NULL: none or no storage). */
+static double (*prim_npc(const gks_ws *ws, const gks_segment *s, const gks_seg_prim *p,
+                         int *n))[3]
 {
     int vi = p->bound->attrs.view_ind;
     if (vi < 0 || vi > GKS_MAX_VIEW_IND)
@@ -641,35 +644,53 @@ static int prim_hit(const gks_ws *ws, const gks_segment *s, const gks_seg_prim *
     gks_xform_multiply((const double (*)[4])vm, (const double (*)[4])seg4, m);
     int npts = p->n_points;
     const Gpoint3 *src = p->pts;
-    Gpoint3 cell[4];
+    Gpoint3 one[4];
     if (p->kind == GKS_SEG_CELL_ARRAY) {
         Gpoint3 pp = p->cell_p, qq = p->cell_q, rr = p->cell_r;
-        cell[0] = pp;
-        cell[1] = rr;
-        cell[2] = qq;
-        cell[3] = (Gpoint3){ pp.x + qq.x - rr.x, pp.y + qq.y - rr.y, pp.z + qq.z - rr.z };
-        src = cell;
+        one[0] = pp;
+        one[1] = rr;
+        one[2] = qq;
+        one[3] = (Gpoint3){ pp.x + qq.x - rr.x, pp.y + qq.y - rr.y, pp.z + qq.z - rr.z };
+        src = one;
         npts = 4;
     } else if (p->kind == GKS_SEG_TEXT) {
-        npts = 0; /* pts[0] is in WC3: map it by the bound normalization */
-        double w[3] = { p->pts[0].x, p->pts[0].y, p->pts[0].z }, n3[3], a[3];
+        if (npts < 1 || !p->pts)
+            return NULL;
+        /* pts[0] is in WC3: map it by the bound normalization */
+        double w[3] = { p->pts[0].x, p->pts[0].y, p->pts[0].z }, n3[3];
         gks_xform_mat34_point((const double (*)[4])p->bound->norm, w, n3);
-        gks_xform_point((const double (*)[4])m, n3, a);
+        one[0] = (Gpoint3){ n3[0], n3[1], n3[2] };
+        src = one;
+        npts = 1;
+    }
+    *n = 0;
+    if (npts <= 0 || !src)
+        return NULL;
+    double (*xy)[3] = gks_alloc_array((size_t)npts, sizeof *xy);
+    if (!xy)
+        return NULL;
+    for (int i = 0; i < npts; i++) {
+        double a[3] = { src[i].x, src[i].y, src[i].z };
+        gks_xform_point((const double (*)[4])m, a, xy[i]);
+    }
+    *n = npts;
+    return xy;
+}
+
+static int prim_hit(const gks_ws *ws, const gks_segment *s, const gks_seg_prim *p,
+                    const double q[2])
+{
+    int npts;
+    double (*xy)[3] = prim_npc(ws, s, p, &npts);
+    if (!xy)
+        return 0;
+    if (p->kind == GKS_SEG_TEXT) {
         /* Text: anywhere within a character height of its position. */
         double r = p->bound->attrs.char_ht > PICK_APERTURE ? p->bound->attrs.char_ht
                                                              : PICK_APERTURE;
-        return fabs(a[0] - q[0]) <= r * 4 && fabs(a[1] - q[1]) <= r;
-    }
-    if (npts <= 0)
-        return 0;
-    double (*xy)[2] = gks_alloc_array((size_t)npts, sizeof *xy);
-    if (!xy)
-        return 0;
-    for (int i = 0; i < npts; i++) {
-        double a[3] = { src[i].x, src[i].y, src[i].z }, b[3];
-        gks_xform_point((const double (*)[4])m, a, b);
-        xy[i][0] = b[0];
-        xy[i][1] = b[1];
+        int hit = fabs(xy[0][0] - q[0]) <= r * 4 && fabs(xy[0][1] - q[1]) <= r;
+        gks_free(xy);
+        return hit;
     }
     int hit = 0;
     if (p->kind == GKS_SEG_POLYMARKER) {
@@ -731,6 +752,62 @@ static int pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
     }
     gks_free(order);
     return found;
+}
+
+int gks_in_pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
+{
+    return ws && out ? pick_at(ws, dc, out) : 0;
+}
+
+int gks_in_seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_fn fn,
+                       void *user)
+{
+    const gks_seg_store *st = gks_ctx()->sl->segs;
+    double win[6], vp[6], m[4][4];
+    if (!ws || !fn || !st)
+        return 0;
+    gks_limit3_array(&ws->cur_win, win);
+    gks_limit3_array(&ws->cur_vp, vp);
+    if (gks_xform_ws_tran3(win, vp, m))
+        return 0;
+    const gks_segment *s = gks_seg_find(st, seg);
+    if (!s || !s->vis || !gks_seg_on_ws(s, ws->id))
+        return 0;
+    int drawn = 0;
+    for (size_t i = 0; i < gks_seg_count(s); i++) {
+        gks_seg_prim p;
+        gks_seg_get(s, i, &p);
+        if (pick_id >= 0 && p.bound->attrs.pick_id != pick_id)
+            continue;
+        int n;
+        double (*xy)[3] = prim_npc(ws, s, &p, &n);
+        if (!xy)
+            continue;
+        for (int j = 0; j < n; j++) {
+            double dc[3];
+            gks_xform_point((const double (*)[4])m, xy[j], dc);
+            xy[j][0] = dc[0];
+            xy[j][1] = dc[1];
+            xy[j][2] = dc[2];
+        }
+        gks_in_outline_kind kind = p.kind == GKS_SEG_POLYLINE     ? GKS_IN_OUTLINE_LINE
+                                   : p.kind == GKS_SEG_POLYMARKER ? GKS_IN_OUTLINE_POINTS
+                                   : p.kind == GKS_SEG_TEXT       ? GKS_IN_OUTLINE_POINTS
+                                                                  : GKS_IN_OUTLINE_AREA;
+        if (kind == GKS_IN_OUTLINE_AREA && p.kind != GKS_SEG_CELL_ARRAY && p.loop_counts &&
+            p.n_loops > 0) {
+            int at = 0;
+            for (int l = 0; l < p.n_loops && at + p.loop_counts[l] <= n; l++) {
+                fn(user, kind, p.loop_counts[l], (const double (*)[3])(xy + at));
+                at += p.loop_counts[l];
+            }
+        } else {
+            fn(user, kind, n, (const double (*)[3])xy);
+        }
+        drawn++;
+        gks_free(xy);
+    }
+    return drawn;
 }
 
 /* The logical value of raw event r for device d. Returns 1 (a value), 0 (the event

@@ -84,6 +84,25 @@ typedef struct gks_in_active_dev {
  * length. Returns the number found (0: none). */
 int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max);
 
+/* PICK echo support for interactive drivers. gks_in_pick_at: the segment and pick
+ * identifier a PICK at DC position dc of ws would return (1), or 0 when nothing is hit.
+ * gks_in_seg_outline: the primitives of segment seg as ws shows them, in DC3 (segment
+ * transformation, view, workstation transformation), only those with pick identifier
+ * pick_id unless it is negative; fn gets a polyline's points, each loop of an area (fill
+ * area (set), cell array corners), or a marker set's / a text's positions. Returns the
+ * number of primitives passed (0: segment absent, invisible or not on ws). */
+typedef enum {
+    GKS_IN_OUTLINE_LINE,
+    GKS_IN_OUTLINE_AREA,
+    GKS_IN_OUTLINE_POINTS
+} gks_in_outline_kind;
+typedef void (*gks_in_outline_fn)(void *user, gks_in_outline_kind kind, int n,
+                                  const double (*dc)[3]);
+struct gks_ws;
+int gks_in_pick_at(const struct gks_ws *ws, const double dc[3], Gpick *out);
+int gks_in_seg_outline(const struct gks_ws *ws, Gint seg, Gint pick_id,
+                       gks_in_outline_fn fn, void *user);
+
 typedef struct gks_in_active {
     int n;
     int request;              /* index of the device a REQUEST waits for, -1 none */

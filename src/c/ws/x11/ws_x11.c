@@ -26,8 +26,9 @@
  * (device, keys, the text typed, the last MESSAGE); CHOICE type 3: a menu of the record's
  * labels (gks_in_menu_labels; numbers when there are none); VALUATOR: a slider; STROKE: the
  * points so far and a rubber band to the pointer; LOCATOR type 4 / 5: a rubber line /
- * rectangle from the initial position; PICK: the aperture square at the pointer; the
- * pointer is a crosshair.
+ * rectangle from the initial position; PICK: the aperture square at the pointer and the
+ * segment a trigger there would pick, outlined in the highlight colour; the pointer is a
+ * crosshair.
  */
 #include "gks_alloc.h"
 #include "gks_xform.h"
@@ -59,8 +60,10 @@ static const Grgb x11_colours[8] = {
 #define SLIDER_W 300
 #define MAX_ITEMS 32
 #define APERTURE 8    /* half side of the pick aperture square (0.01 NPC of 800) */
+#define HIGHLIGHT 0x00c0ff /* pick echo: the segment under the pointer */
 
 typedef struct x11_ws {
+    const gks_ws *ws;         /* the workstation (pick echo asks the core about it) */
     Display *dpy;
     Window win;
     GC gc;
@@ -143,6 +146,51 @@ static void echo_corner(const x11_ws *x, const gks_in_active_dev *d, int *rx, in
     int r = wx_of(d->echo_vol.x_max), t = wy_of(x, d->echo_vol.y_max);
     *rx = r > x->w - 4 || r < 40 ? x->w - 4 : r;
     *ty = t < BAR_H + 4 ? BAR_H + 4 : t;
+}
+
+/* Pick echo (gks_in_outline_fn): a primitive of the segment under the pointer drawn over
+ * the picture in the highlight colour, 3 pixels wide: lines, area loops, a square at each
+ * marker or text position. */
+/* A window coordinate for Xlib's 16-bit points (far outside the window: clamped). */
+static short xcoord(double v)
+{
+    v = floor(v);
+    return (short)(v < -8192 ? -8192 : v > 8192 ? 8192 : isfinite(v) ? v : 0);
+}
+
+static void outline_prim(void *user, gks_in_outline_kind kind, int n, const double (*dc)[3])
+{
+    x11_ws *x = user;
+    XPoint *pt = n > 0 ? gks_alloc_array((size_t)n + 1, sizeof *pt) : NULL;
+    if (!pt)
+        return;
+    for (int i = 0; i < n; i++)
+        pt[i] = (XPoint){ xcoord(dc[i][0]), xcoord(x->h - 1 - floor(dc[i][1])) };
+    if (kind == GKS_IN_OUTLINE_POINTS) {
+        for (int i = 0; i < n; i++)
+            XDrawRectangle(x->dpy, x->win, x->gc, pt[i].x - 4, pt[i].y - 4, 8, 8);
+    } else {
+        int k = n;
+        if (kind == GKS_IN_OUTLINE_AREA && n > 2)
+            pt[k++] = pt[0]; /* close the loop */
+        if (k > 1)
+            XDrawLines(x->dpy, x->win, x->gc, pt, k, CoordModeOrigin);
+    }
+    gks_free(pt);
+}
+
+/* PICK prompt/echo: the segment a trigger at the pointer would pick, highlighted (types 1
+ * and 3: the whole segment; type 2: its primitives with the picked pick identifier). */
+static void pick_echo(x11_ws *x, const gks_in_active_dev *d)
+{
+    double dc[3] = { x->mx + 0.5, x->h - x->my - 0.5, 0 };
+    Gpick p;
+    if (!gks_in_pick_at(x->ws, dc, &p))
+        return;
+    XSetForeground(x->dpy, x->gc, HIGHLIGHT);
+    XSetLineAttributes(x->dpy, x->gc, 3, LineSolid, CapRound, JoinRound);
+    gks_in_seg_outline(x->ws, p.seg_name, d->pet == 2 ? p.pick_id : -1, outline_prim, x);
+    XSetLineAttributes(x->dpy, x->gc, 0, LineSolid, CapButt, JoinMiter);
 }
 
 static const char *const class_names[] = { "", "LOCATOR", "STROKE", "VALUATOR", "CHOICE",
@@ -266,6 +314,7 @@ static void overlay(x11_ws *x)
                                iy < x->my ? iy : x->my, (unsigned)abs(x->mx - ix),
                                (unsigned)abs(x->my - iy));
         } else if (d->cls == GIN_PICK && x->in_win) {
+            pick_echo(x, d);
             XSetForeground(x->dpy, x->gc, 0xd00000);
             XDrawRectangle(x->dpy, x->win, x->gc, x->mx - APERTURE, x->my - APERTURE,
                            2 * APERTURE, 2 * APERTURE);
@@ -321,6 +370,7 @@ static int x11_open(gks_ws *ws)
         XCloseDisplay(dpy);
         return 300;
     }
+    x->ws = ws;
     x->dpy = dpy;
     x->w = x->h = X11_SIZE;
     x->render = ws_png_render_new();
