@@ -72,7 +72,11 @@ static void sphere(int with_data)
 
 /* Draws the sphere on a 96 x 96 PNG in `mode`; squash: view 1 scales y by 1/2 about 0.5.
  * Returns the largest error over the compared pixels. */
-static double picture(int mode, int with_data, int squash)
+/* XCLIP: the view's xy clip at x = XCLIP (NPC), through the sphere (centre 0.5, radius R):
+ * facets crossing it are clipped, and must stay smooth up to the boundary. */
+static const double XCLIP = 0.63;
+
+static double picture(int mode, int with_data, int squash, int clip)
 {
     const char *file = "t_smooth_render.png";
     unlink(file);
@@ -95,6 +99,10 @@ static double picture(int mode, int with_data, int squash)
     for (int a = 0; a < 4; a++)
         for (int b = 0; b < 4; b++)
             v.ori_matrix[a][b] = v.map_matrix[a][b] = a == b;
+    if (clip) {
+        v.clip_limit.x_max = XCLIP;
+        v.xy_clip = GIND_CLIP;
+    }
     if (squash) {
         v.ori_matrix[1][1] = 0.5;
         v.ori_matrix[1][3] = 0.25;
@@ -140,7 +148,7 @@ static double picture(int mode, int with_data, int squash)
         for (int x = 0; x < SZ; x++) {
             double dx = (x + 0.5) / SZ - 0.5, dy = (y + 0.5) / SZ - 0.5;
             double q = 1 - (dx / R) * (dx / R) - (dy / b) * (dy / b);
-            if (q <= 0)
+            if (q <= 0 || (clip && (x + 1.0) / SZ > XCLIP)) /* pixels wholly inside */
                 continue;
             double dz = R * sqrt(q);
             double N[3] = { dx / (R * R), dy / (b * b), dz / (R * R) };
@@ -157,29 +165,32 @@ static double picture(int mode, int with_data, int squash)
             }
             n++;
         }
-    assert_true(n > SZ * SZ / (squash ? 8 : 4));
+    assert_true(n > SZ * SZ / (squash || clip ? 8 : 4));
     free(img.rgb);
     remove(file);
     return worst;
 }
 
-static void check(int mode, int squash)
+static void check(int mode, int squash, int clip)
 {
-    double smooth = picture(mode, 1, squash), flat = picture(mode, 0, squash);
+    double smooth = picture(mode, 1, squash, clip), flat = picture(mode, 0, squash, clip);
     print_message("%s%s: largest error smooth %.4f (%.1f/255), flat %.4f\n",
                   mode == GHLHSR_RAYTRACE ? "ray traced"
                   : mode == GHLHSR_ZBUFFER ? "z-buffer"
                                            : "painter",
-                  squash ? ", y scaled by 1/2" : "", smooth, smooth * 255, flat);
+                  squash ? ", y scaled by 1/2" : clip ? ", xy-clipped" : "", smooth, smooth * 255, flat);
     assert_true(smooth <= TOL);
     assert_true(flat > TOL);
 }
 
-static void test_raytrace(void **u) { (void)u; check(GHLHSR_RAYTRACE, 0); }
-static void test_zbuffer(void **u) { (void)u; check(GHLHSR_ZBUFFER, 0); }
-static void test_painter(void **u) { (void)u; check(GHLHSR_PAINTER, 0); }
-static void test_raytrace_squashed(void **u) { (void)u; check(GHLHSR_RAYTRACE, 1); }
-static void test_zbuffer_squashed(void **u) { (void)u; check(GHLHSR_ZBUFFER, 1); }
+static void test_raytrace(void **u) { (void)u; check(GHLHSR_RAYTRACE, 0, 0); }
+static void test_zbuffer(void **u) { (void)u; check(GHLHSR_ZBUFFER, 0, 0); }
+static void test_painter(void **u) { (void)u; check(GHLHSR_PAINTER, 0, 0); }
+/* the same tolerance across the clip boundary (old code: flat facets along it) */
+static void test_zbuffer_clipped(void **u) { (void)u; check(GHLHSR_ZBUFFER, 0, 1); }
+static void test_painter_clipped(void **u) { (void)u; check(GHLHSR_PAINTER, 0, 1); }
+static void test_raytrace_squashed(void **u) { (void)u; check(GHLHSR_RAYTRACE, 1, 0); }
+static void test_zbuffer_squashed(void **u) { (void)u; check(GHLHSR_ZBUFFER, 1, 0); }
 
 int main(void)
 {
@@ -189,6 +200,8 @@ int main(void)
         cmocka_unit_test(test_painter),
         cmocka_unit_test(test_raytrace_squashed),
         cmocka_unit_test(test_zbuffer_squashed),
+        cmocka_unit_test(test_zbuffer_clipped),
+        cmocka_unit_test(test_painter_clipped),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -621,12 +621,69 @@ static void phong_sample(void *user, const float *at, float rgb[3])
     ws_shade_point(user, P, N, od, rgb);
 }
 
+/* One clip stage of a smooth loop (Sutherland-Hodgman): vertices of m doubles, the
+ * homogeneous point first and then the attributes, all carried with the same parameter t
+ * (linear in clip space, so the perspective divide after clipping stays correct). k: the
+ * constraint (0 is w >= wmin when wmin > 0). Returns the output count, -1 past cap. */
+static int smooth_clip_stage(const gks_xform_clip *c, int k, const double *in, int n, int m,
+                             double *out, int cap)
+{
+    int o = 0;
+    for (int i = 0; i < n; i++) {
+        const double *p = in + (size_t)((i + n - 1) % n) * (size_t)m, *q = in + (size_t)i * (size_t)m;
+        double dp, dq;
+        if (c->wmin > 0.0 && k == 0) {
+            dp = p[3] - c->wmin, dq = q[3] - c->wmin;
+        } else {
+            const double *pl = c->p[c->wmin > 0.0 ? k - 1 : k];
+            dp = pl[0] * p[0] + pl[1] * p[1] + pl[2] * p[2] + pl[3] * p[3];
+            dq = pl[0] * q[0] + pl[1] * q[1] + pl[2] * q[2] + pl[3] * q[3];
+        }
+        if (!isfinite(dp) || !isfinite(dq))
+            return -1;
+        if ((dp < 0 && dq > 0) || (dp > 0 && dq < 0)) { /* from the nearer end, as cross4 */
+            if (o >= cap)
+                return -1;
+            const double *a0 = fabs(dp) <= fabs(dq) ? p : q, *a1 = a0 == p ? q : p;
+            const double t = a0 == p ? dp / (dp - dq) : dq / (dq - dp);
+            for (int j = 0; j < m; j++)
+                out[(size_t)o * (size_t)m + (size_t)j] = a0[j] + t * (a1[j] - a0[j]);
+            o++;
+        }
+        if (dq >= 0) {
+            if (o >= cap)
+                return -1;
+            memcpy(out + (size_t)o * (size_t)m, q, (size_t)m * sizeof *q);
+            o++;
+        }
+    }
+    return o;
+}
+
+/* 1 if the n DC points turn one way only (collinear and repeated points from clipping
+ * allowed), i.e. fan-fillable as a convex loop. */
+static int dc_convex_loose(const gks_raster_pt *q, int n)
+{
+    int sg = 0;
+    for (int i = 0; i < n; i++) {
+        const gks_raster_pt *a = &q[i], *c = &q[(i + 1) % n], *d = &q[(i + 2) % n];
+        double x = (c->x - a->x) * (d->y - c->y) - (c->y - a->y) * (d->x - c->x);
+        int t = x > 0 ? 1 : x < 0 ? -1 : 0;
+        if (sg && t && t != sg)
+            return 0;
+        if (t)
+            sg = t;
+    }
+    return sg != 0;
+}
+
 /* An area with vertex data and interior shading method COLOUR or NORMAL (on either side),
- * solid, of one convex loop inside the clip region: its per-vertex attributes into the float
- * list and a->style = STYLE_SMOOTH. COLOUR (or no vertex normals): the colours shaded at the
- * vertices (with their normals, else the facet's), interpolated; NORMAL with normals: Od, N
- * and P interpolated and shaded per sample. 0: set up, 1: drawn flat instead, 300. */
-static int smooth_setup(build *b, const gks_prim *prim, rattr *a)
+ * solid, of one convex loop: its per-vertex attributes into the float list and a->style =
+ * STYLE_SMOOTH; a loop crossing the clip region is clipped here with its attributes.
+ * COLOUR (or no vertex normals): the colours shaded at the vertices (with their normals, else the facet's), interpolated; NORMAL with normals: Od, N
+ * and P interpolated and shaded per sample. 0: set up (add_loops adds the points), 2: set up
+ * with the clipped loop added to rc, 1: drawn flat instead, 300. */
+static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
 {
     png_render *r = b->r;
     const int meth = prim->shading[0] > prim->shading[1] ? prim->shading[0] : prim->shading[1];
@@ -639,14 +696,15 @@ static int smooth_setup(build *b, const gks_prim *prim, rattr *a)
         return 300;
     for (int i = 0; i < n; i++)
         to_h(b->v, &prim->pts[i], r->h[i]);
-    if (!all_inside(&b->v->clip, r->h, (size_t)n))
-        return 1;
+    const int whole = all_inside(&b->v->clip, r->h, (size_t)n);
     gks_raster_pt *q = r->pts + r->n_pt; /* scratch: add_loops writes the same points */
-    for (int i = 0; i < n; i++)
-        if (!to_dc(b->v, r->h[i], &q[i]) || !(fabs(r->h[i][3]) > 0))
+    if (whole) {
+        for (int i = 0; i < n; i++)
+            if (!to_dc(b->v, r->h[i], &q[i]) || !(fabs(r->h[i][3]) > 0))
+                return 1;
+        if (!dc_convex(q, n))
             return 1;
-    if (!dc_convex(q, n))
-        return 1;
+    }
     const int phong = meth == GSHAD_NORM && prim->vnormals;
     const int nat = phong ? 9 : 3, per = nat + 1;
     ws_shade_ctx ctx;
@@ -675,11 +733,47 @@ static int smooth_setup(build *b, const gks_prim *prim, rattr *a)
         }
         f[nat] = (float)(1.0 / fabs(r->h[i][3]));
     }
+    int cnt = n;
+    if (!whole) { /* clipped: the loop and its attributes cut by every constraint */
+        const int m = 4 + nat, ks = b->v->clip.n + (b->v->clip.wmin > 0.0 ? 1 : 0);
+        const int cap = n + ks + 1; /* a convex loop gains at most one point per plane */
+        double *va = gks_alloc_array((size_t)cap * 2, (size_t)m * sizeof *va);
+        if (!va)
+            return 300;
+        double *in = va, *out = va + (size_t)cap * (size_t)m;
+        for (int i = 0; i < n; i++) {
+            memcpy(in + (size_t)i * (size_t)m, r->h[i], 4 * sizeof *in);
+            for (int j = 0; j < nat; j++)
+                in[(size_t)i * (size_t)m + 4 + (size_t)j] = r->fl[r->n_fl + (size_t)i * (size_t)per + (size_t)j];
+        }
+        for (int k = 0; k < ks && cnt >= 3; k++) {
+            cnt = smooth_clip_stage(&b->v->clip, k, in, cnt, m, out, cap);
+            double *t = in;
+            in = out, out = t;
+        }
+        int ok = cnt >= 3 && !GROW(r, pts, cap_pt, r->n_pt + (size_t)cnt) &&
+                 !GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)cnt);
+        q = r->pts + r->n_pt;
+        for (int i = 0; ok && i < cnt; i++)
+            ok = in[(size_t)i * (size_t)m + 3] > 0 && to_dc(b->v, in + (size_t)i * (size_t)m, &q[i]);
+        ok = ok && dc_convex_loose(q, cnt);
+        for (int i = 0; ok && i < cnt; i++) {
+            float *g = r->fl + r->n_fl + (size_t)i * (size_t)per;
+            for (int j = 0; j < nat; j++)
+                g[j] = (float)in[(size_t)i * (size_t)m + 4 + (size_t)j];
+            g[nat] = (float)(1.0 / in[(size_t)i * (size_t)m + 3]);
+        }
+        gks_free(va);
+        if (!ok || count_push(r, cnt))
+            return ok ? 300 : 1;
+        r->n_pt += (size_t)cnt;
+        rc->n_fill++;
+    }
     a->style = STYLE_SMOOTH;
     a->fl = r->n_fl;
     a->nx = per;
     a->ny = -1;
-    r->n_fl += (size_t)per * (size_t)n;
+    r->n_fl += (size_t)per * (size_t)cnt;
     if (phong && lit) {
         if (!r->n_ctx || !ctx_equal(&r->ctx[r->n_ctx - 1], &ctx)) {
             if (GROW(r, ctx, cap_ctx, r->n_ctx + 1))
@@ -690,7 +784,7 @@ static int smooth_setup(build *b, const gks_prim *prim, rattr *a)
     } else if (phong) { /* no usable eye: the vertex colours interpolated */
         a->ny = -1;
     }
-    return 0;
+    return whole ? 0 : 2;
 }
 
 static int build_area(build *b, const gks_prim *prim, int retain)
@@ -726,13 +820,14 @@ static int build_area(build *b, const gks_prim *prim, int retain)
         a.edge_rgb[1] = (float)pa->edge_colour.green;
         a.edge_rgb[2] = (float)pa->edge_colour.blue;
     }
+    int se = 1;
     if (prim->vnormals || prim->vcolours) {
-        int se = smooth_setup(b, prim, &a);
+        se = smooth_setup(b, prim, &a, &rc);
         if (se == 300)
             return 300;
     }
     int e = attr_push(r, &a, &rc.attr);
-    if (!e && prim->n_points >= 3)
+    if (!e && prim->n_points >= 3 && se != 2)
         e = add_loops(b, prim->pts, prim->n_loops, prim->loop_counts, &b->v->clip, &rc);
     if (e)
         return e;
