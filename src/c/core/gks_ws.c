@@ -3,6 +3,7 @@
 #include "gks_ws.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
+#include "ws_file.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdlib.h>
@@ -249,6 +250,22 @@ int gks_ws_file_claim(gks_ws *ws, const char *path)
         ws->cap_files = cap;
     }
     ws->files[ws->n_files++] = canon;
+    return 0;
+}
+
+int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
+                       char **base)
+{
+    char *b = gks_strndup(name, len);
+    char *f = b ? gks_ws_file_frame(b, frame, ext) : NULL;
+    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
+    gks_free(f);
+    if (e) {
+        gks_free(b);
+        return e;
+    }
+    gks_free(*base);
+    *base = b;
     return 0;
 }
 

@@ -859,19 +859,9 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return ws_rt_escape(v->rt, func_id, in, out);
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
-    char *b = gks_strndup(in->str, in->str_len);
     /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
     int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
-    char *f = b ? gks_ws_file_frame(b, fr, vec_ext[v->fmt]) : NULL;
-    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
-    gks_free(f);
-    if (e) {
-        gks_free(b);
-        return e;
-    }
-    gks_free(v->base);
-    v->base = b;
-    return 0;
+    return gks_ws_file_rename(ws, in->str, in->str_len, fr, vec_ext[v->fmt], &v->base);
 }
 
 #define VEC_HLHSR                                                                      \

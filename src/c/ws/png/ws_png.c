@@ -266,17 +266,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return ws_rt_escape(p->rt, func_id, in, out);
     if (func_id != GESC_SET_FILE_NAME)
         return 180;
-    char *b = gks_strndup(in->str, in->str_len);
-    char *f = b ? gks_ws_file_frame(b, p->frame, ".png") : NULL;
-    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
-    gks_free(f);
-    if (e) {
-        gks_free(b);
-        return e;
-    }
-    gks_free(p->base);
-    p->base = b;
-    return 0;
+    return gks_ws_file_rename(ws, in->str, in->str_len, p->frame, ".png", &p->base);
 }
 
 /* Pixel readback: the composed picture (retained primitives drawn over the immediate
