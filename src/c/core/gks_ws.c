@@ -222,6 +222,15 @@ int gks_ws_file_check(gks_ws *ws)
     return 0;
 }
 
+int gks_ws_file_taken(const gks_ws *ws, const char *path)
+{
+    int err;
+    char *canon = usable_file(path, 1, &err);
+    int taken = canon && file_in_use(ws, canon);
+    gks_free(canon);
+    return taken;
+}
+
 int gks_ws_file_claim(gks_ws *ws, const char *path)
 {
     int err;

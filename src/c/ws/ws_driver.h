@@ -196,6 +196,8 @@ extern const gks_ws_driver gks_ws_eps_driver;
  * then ws's for as long as ws is open. 21 if another one uses it (nothing is written), 26
  * if it is not a regular file or cannot be created, 300. Implemented in core (gks_ws.c). */
 int gks_ws_file_claim(gks_ws *ws, const char *path);
+/* 1 if another open workstation writes (or wrote, in this opening) the file path. */
+int gks_ws_file_taken(const gks_ws *ws, const char *path);
 /* ESCAPE "set file name": the base name name[0..len) replaces *base (gks_alloc'd) when the
  * file of its frame `frame` (extension ext) can be claimed as above; 0, 21, 26 or 300, and
  * *base unchanged on error. Implemented in core (gks_ws.c). */
