@@ -265,23 +265,11 @@ static void list_inds(Gint ws_id, const unsigned char *(*def)(const gks_ws *), G
         return;
     }
     const unsigned char *d = def(ws);
-    int n = 0;
+    gks_list_out w = gks_list_begin(out, cap, start);
     for (int i = 1; i <= GKS_WDT_MAX_BUNDLES; i++)
-        n += d[i] != 0;
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0, pos = 0;
-    for (int i = 1; i <= GKS_WDT_MAX_BUNDLES; i++) {
-        if (!d[i])
-            continue;
-        if (pos++ >= start && k < cap && out && out->ints)
-            out->ints[k++] = i;
-    }
-    if (out)
-        out->num_ints = k;
+        if (d[i])
+            gks_list_put(&w, i);
+    *err_ind = gks_list_end(&w, len);
 }
 
 static const unsigned char *def_line(const gks_ws *ws) { return ws->line_def; }
@@ -393,21 +381,6 @@ static const gks_wdt_output *inq_out_type(Gint ws_type, Gint *err)
     return d->desc->out ? d->desc->out : &gks_wdt_raster;
 }
 
-/* Copy list[start..] into out (capacity cap); 2002 when start is outside. */
-static int copy_ints(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    if (len)
-        *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                             Gline_facs *f, Gint *length_list)
 {
@@ -415,7 +388,7 @@ GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->linetypes, t->n_linetypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->linetypes, t->n_linetypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_widths = t->n_linewidths;
@@ -432,7 +405,7 @@ GKS_API void ginq_marker_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->markertypes, t->n_markertypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->markertypes, t->n_markertypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_sizes = t->n_markersizes;
@@ -450,10 +423,8 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     if (!t)
         return;
     *length_list = t->n_font_precs;
-    if (start < 0 || (start >= t->n_font_precs && !(start == 0 && t->n_font_precs == 0))) {
-        *err_ind = 2002;
+    if ((*err_ind = gks_list_start(start, t->n_font_precs)))
         return;
-    }
     int k = 0;
     for (int i = start; i < t->n_font_precs && k < cap && f->font_precs; i++)
         f->font_precs[k++] = t->font_precs[i];
@@ -474,7 +445,7 @@ GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_po
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->hatch_styles, t->n_hatch_styles, hatch_length, hatch_start_pos,
+    *err_ind = gks_list_copy(t->hatch_styles, t->n_hatch_styles, hatch_length, hatch_start_pos,
                          &f->hatch_styles, act_hatch_length);
     if (*err_ind)
         return;
@@ -500,7 +471,7 @@ GKS_API void ginq_edge_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->edgetypes, t->n_edgetypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->edgetypes, t->n_edgetypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_widths = t->n_edgewidths;
@@ -568,5 +539,5 @@ GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint cap, Gint start, Gint *err_
     const Gint *ids = NULL;
     int n = gks_gdp_list(&ids); /* every output workstation draws the core's GDPs */
     if (t)
-        *err_ind = copy_ints(ids, n, cap, start, gdps, length_list);
+        *err_ind = gks_list_copy(ids, n, cap, start, gdps, length_list);
 }

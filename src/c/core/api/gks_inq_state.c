@@ -11,20 +11,6 @@
 #include "gks_ws.h"
 #include <string.h>
 
-/* Copy list[start..] into out (capacity cap). Errors: 2002 when start is outside. */
-static int copy_list(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
 {
     if (gks_inq_begin(err, GKS_S_WSOPEN))
@@ -81,7 +67,7 @@ GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, 
     int n = d->n_ws_types < 16 ? d->n_ws_types : 16;
     for (int i = 0; i < n; i++)
         types[i] = d->ws_types[i]->desc->type;
-    *err_ind = copy_list(types, n, num_elems_appl_list, start_pos, ws_types, length_list);
+    *err_ind = gks_list_copy(types, n, num_elems_appl_list, start_pos, ws_types, length_list);
 }
 
 GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num)
@@ -105,7 +91,7 @@ GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *e
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = copy_list(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
+    *err_ind = gks_list_copy(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
                          length_list);
 }
 
@@ -116,7 +102,7 @@ GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint 
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = copy_list(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
+    *err_ind = gks_list_copy(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
                          active_ws, length_list);
 }
 

@@ -194,21 +194,6 @@ GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gvie
     rep->xy_clip = rep->back_clip = rep->front_clip = GIND_CLIP;
 }
 
-/* Copy the part of list[0..n) from start into out (capacity cap): 2002 if start is
- * outside the list. */
-static int copy_part(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 /* HLHSR identifiers: every value is accepted and passed to the drivers, none selects a
  * method of its own: the list holds the default 0. Modes: those of the description
  * table (SET HLHSR MODE accepts them). */
@@ -225,8 +210,8 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
         if (d->hlhsr_modes & (1u << m))
             modes[n++] = m;
     static const int ids[1] = { 0 };
-    Gint e1 = copy_part(ids, 1, num_elems_appl_list, start_pos, hlhsr_ids, length_ids);
-    Gint e2 = copy_part(modes, n, num_elems_appl_list, start_pos, hlhsr_modes, length_modes);
+    Gint e1 = gks_list_copy(ids, 1, num_elems_appl_list, start_pos, hlhsr_ids, length_ids);
+    Gint e2 = gks_list_copy(modes, n, num_elems_appl_list, start_pos, hlhsr_modes, length_modes);
     *err_ind = e1 ? e1 : e2;
 }
 
@@ -390,21 +375,11 @@ GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint star
     gks_ws *ws = out_ws(ws_id, err_ind);
     if (!ws)
         return;
-    int n = 0, k = 0, nc = ws->drv->desc->n_colr;
-    for (int i = 0; i < nc; i++) {
-        if (!ws->colr_defined[i])
-            continue;
-        if (n >= start_pos && k < num_elems_appl_list && colr_inds && colr_inds->ints)
-            colr_inds->ints[k++] = i;
-        n++;
-    }
-    *length_list = n;
-    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    if (colr_inds)
-        colr_inds->num_ints = k;
+    gks_list_out w = gks_list_begin(colr_inds, num_elems_appl_list, start_pos);
+    for (int i = 0; i < ws->drv->desc->n_colr; i++)
+        if (ws->colr_defined[i])
+            gks_list_put(&w, i);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 /* ------------------------------------------------------------------------ GDPs */

@@ -402,17 +402,10 @@ GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_seg_store *st = store();
-    *length_list = (Gint)st->n;
-    if (start_pos < 0 || (start_pos >= (Gint)st->n && !(start_pos == 0 && st->n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0;
-    for (size_t i = (size_t)start_pos; i < st->n && k < num_elems_appl_list && seg_names &&
-                                       seg_names->ints; i++)
-        seg_names->ints[k++] = st->seg[i]->name;
-    if (seg_names)
-        seg_names->num_ints = k;
+    gks_list_out w = gks_list_begin(seg_names, num_elems_appl_list, start_pos);
+    for (size_t i = 0; i < st->n; i++)
+        gks_list_put(&w, st->seg[i]->name);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
@@ -452,19 +445,11 @@ GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint st
     if (!gks_inq_ws(ws_id, err_ind))
         return;
     const gks_seg_store *st = store();
-    int n = 0, k = 0;
-    for (size_t i = 0; i < st->n; i++) {
-        if (!gks_seg_on_ws(st->seg[i], ws_id))
-            continue;
-        if (n >= start_pos && k < num_elems_appl_list && seg_names && seg_names->ints)
-            seg_names->ints[k++] = st->seg[i]->name;
-        n++;
-    }
-    *length_list = n;
-    if (seg_names)
-        seg_names->num_ints = k;
-    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0)))
-        *err_ind = 2002;
+    gks_list_out w = gks_list_begin(seg_names, num_elems_appl_list, start_pos);
+    for (size_t i = 0; i < st->n; i++)
+        if (gks_seg_on_ws(st->seg[i], ws_id))
+            gks_list_put(&w, st->seg[i]->name);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
@@ -482,16 +467,7 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
         *err_ind = 122;
         return;
     }
-    *length_list = s->n_ws;
-    if (start_pos < 0 || (start_pos >= s->n_ws && !(start_pos == 0 && s->n_ws == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0;
-    for (int i = start_pos; i < s->n_ws && k < num_elems_appl_list && ws_ids && ws_ids->ints; i++)
-        ws_ids->ints[k++] = s->ws[i];
-    if (ws_ids)
-        ws_ids->num_ints = k;
+    *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids, length_list);
 }
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
