@@ -12,6 +12,7 @@
  * line is consumed only when its device is taking input (docs/INPUT.md).
  */
 #include "gks_indev.h"
+#include "gks_binding.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_seg_store.h"
@@ -223,7 +224,7 @@ struct gks_in_script {
     int eof;
     gks_in_raw ev;
     double (*pts)[3];         /* its points */
-    int cap_pts;
+    size_t cap_pts;
     char str[GKS_IN_STRING_MAX + 1];
 };
 
@@ -264,16 +265,10 @@ static const struct { const char *word; Gin_class cls; int dim; } script_words[]
 
 static int add_point(struct gks_in_script *s, const double p[3])
 {
-    if (s->ev.n == s->cap_pts) {
-        int cap = s->cap_pts ? 2 * s->cap_pts : 16;
-        if (cap > GKS_IN_STROKE_MAX)
-            return -1;
-        double (*np)[3] = gks_realloc_array(s->pts, (size_t)cap, sizeof *np);
-        if (!np)
-            return -1;
-        s->pts = np;
-        s->cap_pts = cap;
-    }
+    if (s->ev.n >= GKS_IN_STROKE_MAX)
+        return -1;
+    if (gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
+        return -1;
     memcpy(s->pts[s->ev.n++], p, sizeof s->pts[0]);
     return 0;
 }
@@ -1142,22 +1137,51 @@ int gks_in_more_simult(void)
     return 0; /* every trigger of this implementation belongs to one device */
 }
 
-/* One decimal ended by ',' at *p (before end), as GPREC writes them; -1 if none. */
-static int rec_long(const char **p, const char *end, long *v)
+/* The next field of a packed record: its text (ended by ',' before end) into t[size],
+ * the cursor moved past the ','; -1 when there is none or it does not fit. */
+static int rec_field(gks_rec_reader *r, char *t, size_t size)
 {
-    char t[24];
     size_t n = 0;
-    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
-        t[n] = (*p)[n];
+    while (r->p + n < r->end && r->p[n] != ',' && n < size - 1) {
+        t[n] = r->p[n];
         n++;
     }
-    if (n == 0 || *p + n >= end || (*p)[n] != ',')
+    if (n == 0 || r->p + n >= r->end || r->p[n] != ',')
         return -1;
     t[n] = '\0';
-    char *e;
+    r->p += n + 1;
+    return 0;
+}
+
+GKS_API int gks_rec_long(gks_rec_reader *r, long *v)
+{
+    char t[32], *e;
+    if (rec_field(r, t, sizeof t))
+        return -1;
     *v = strtol(t, &e, 10);
-    *p += n + 1;
     return *e ? -1 : 0;
+}
+
+GKS_API int gks_rec_real(gks_rec_reader *r, double *v)
+{
+    char t[40], *e;
+    if (rec_field(r, t, sizeof t))
+        return -1;
+    *v = strtod(t, &e);
+    return *e ? -1 : 0;
+}
+
+GKS_API int gks_rec_begin(gks_rec_reader *r, const char *buf, size_t len)
+{
+    *r = (gks_rec_reader){ buf, buf ? buf + len : NULL, 0, 0, 0 };
+    if (!buf || len < 4 || memcmp(buf, "GKSR", 4) != 0)
+        return -1;
+    r->p += 4;
+    long *n[3] = { &r->il, &r->rl, &r->sl };
+    for (int i = 0; i < 3; i++)
+        if (gks_rec_long(r, n[i]) || *n[i] < 0 || *n[i] > GKS_REC_MAX_COUNT)
+            return -1;
+    return 0;
 }
 
 int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
@@ -1166,26 +1190,23 @@ int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
     int k = 0;
     if (!p || r->str_len == 0 || max <= 0)
         return 0;
+    gks_rec_reader rd;
     if (r->str_len >= 4 && memcmp(p, "GKSR", 4) == 0) {
-        long n[3], lens[64];
-        p += 4;
-        for (int i = 0; i < 3; i++)
-            if (rec_long(&p, end, &n[i]) || n[i] < 0 || n[i] > 100000)
-                return 0;
-        for (long i = 0; i < n[0] + n[1]; i++) /* integers, reals: skipped */
-            while (p < end && *p++ != ',')
+        if (gks_rec_begin(&rd, p, r->str_len))
+            return 0;
+        long lens[64], ns = rd.sl > 64 ? 64 : rd.sl;
+        for (long i = 0; i < rd.il + rd.rl; i++) /* integers, reals: skipped */
+            while (rd.p < rd.end && *rd.p++ != ',')
                 ;
-        if (n[2] > 64)
-            n[2] = 64;
-        for (long i = 0; i < n[2]; i++)
-            if (rec_long(&p, end, &lens[i]) || lens[i] < 0)
+        for (long i = 0; i < ns; i++)
+            if (gks_rec_long(&rd, &lens[i]) || lens[i] < 0)
                 return 0;
-        for (long i = 0; i < n[2] && end - p >= lens[i]; i++) {
+        for (long i = 0; i < ns && rd.end - rd.p >= lens[i]; i++) {
             if (k < max) {
-                lab[k] = p;
+                lab[k] = rd.p;
                 len[k++] = (int)lens[i];
             }
-            p += lens[i];
+            rd.p += lens[i];
         }
         return k;
     }
