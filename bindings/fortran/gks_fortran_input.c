@@ -16,6 +16,7 @@
  * blank-padded; output arrays get at most their declared size (N).
  */
 #include "gks_binding.h"
+#include "gks_rec.h"
 #include "gks_fortran.h"
 #include <stdint.h>
 #include <stdio.h>

@@ -12,7 +12,6 @@
  * line is consumed only when its device is taking input (docs/INPUT.md).
  */
 #include "gks_indev.h"
-#include "gks_binding.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_seg_store.h"
@@ -24,12 +23,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-const gks_in_desc gks_in_desc_std = {
-    .n_dev = { 2, 2, 2, 2, 2, 2 },
-    .max_pet = { 6, 4, 3, 3, 3, 1 },
-    .max_choices = 9,
-};
 
 /* Pick aperture: half the side of the square around the pick position, in NPC. */
 #define PICK_APERTURE 0.01
@@ -265,9 +258,8 @@ static const struct { const char *word; Gin_class cls; int dim; } script_words[]
 
 static int add_point(struct gks_in_script *s, const double p[3])
 {
-    if (s->ev.n >= GKS_IN_STROKE_MAX)
-        return -1;
-    if (gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
+    if (s->ev.n >= GKS_IN_STROKE_MAX ||
+        gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
         return -1;
     memcpy(s->pts[s->ev.n++], p, sizeof s->pts[0]);
     return 0;
@@ -749,12 +741,14 @@ static int pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
     return found;
 }
 
-int gks_in_pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
+/* gks_in_active.pick_at */
+static int seg_pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
 {
     return ws && out ? pick_at(ws, dc, out) : 0;
 }
 
-int gks_in_seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_fn fn,
+/* gks_in_active.seg_outline */
+static int seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_fn fn,
                        void *user)
 {
     const gks_seg_store *st = gks_ctx()->sl->segs;
@@ -870,6 +864,8 @@ static void active_list(gks_ws *ws, Gin_class rcls, int rnum, gks_in_active *a)
 {
     a->n = 0;
     a->request = -1;
+    a->pick_at = seg_pick_at;
+    a->seg_outline = seg_outline;
     double win[6], vp[6], m[4][4];
     gks_limit3_array(&ws->cur_win, win);
     gks_limit3_array(&ws->cur_vp, vp);
@@ -1135,90 +1131,4 @@ int gks_in_overflow(Gint *ws_id, Gin_class *cls, Gint *num)
 int gks_in_more_simult(void)
 {
     return 0; /* every trigger of this implementation belongs to one device */
-}
-
-/* The next field of a packed record: its text (ended by ',' before end) into t[size],
- * the cursor moved past the ','; -1 when there is none or it does not fit. */
-static int rec_field(gks_rec_reader *r, char *t, size_t size)
-{
-    size_t n = 0;
-    while (r->p + n < r->end && r->p[n] != ',' && n < size - 1) {
-        t[n] = r->p[n];
-        n++;
-    }
-    if (n == 0 || r->p + n >= r->end || r->p[n] != ',')
-        return -1;
-    t[n] = '\0';
-    r->p += n + 1;
-    return 0;
-}
-
-GKS_API int gks_rec_long(gks_rec_reader *r, long *v)
-{
-    char t[32], *e;
-    if (rec_field(r, t, sizeof t))
-        return -1;
-    *v = strtol(t, &e, 10);
-    return *e ? -1 : 0;
-}
-
-GKS_API int gks_rec_real(gks_rec_reader *r, double *v)
-{
-    char t[40], *e;
-    if (rec_field(r, t, sizeof t))
-        return -1;
-    *v = strtod(t, &e);
-    return *e ? -1 : 0;
-}
-
-GKS_API int gks_rec_begin(gks_rec_reader *r, const char *buf, size_t len)
-{
-    *r = (gks_rec_reader){ buf, buf ? buf + len : NULL, 0, 0, 0 };
-    if (!buf || len < 4 || memcmp(buf, "GKSR", 4) != 0)
-        return -1;
-    r->p += 4;
-    long *n[3] = { &r->il, &r->rl, &r->sl };
-    for (int i = 0; i < 3; i++)
-        if (gks_rec_long(r, n[i]) || *n[i] < 0 || *n[i] > GKS_REC_MAX_COUNT)
-            return -1;
-    return 0;
-}
-
-int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
-{
-    const char *p = r->str, *end = r->str ? r->str + r->str_len : NULL;
-    int k = 0;
-    if (!p || r->str_len == 0 || max <= 0)
-        return 0;
-    gks_rec_reader rd;
-    if (r->str_len >= 4 && memcmp(p, "GKSR", 4) == 0) {
-        if (gks_rec_begin(&rd, p, r->str_len))
-            return 0;
-        long lens[64], ns = rd.sl > 64 ? 64 : rd.sl;
-        for (long i = 0; i < rd.il + rd.rl; i++) /* integers, reals: skipped */
-            while (rd.p < rd.end && *rd.p++ != ',')
-                ;
-        for (long i = 0; i < ns; i++)
-            if (gks_rec_long(&rd, &lens[i]) || lens[i] < 0)
-                return 0;
-        for (long i = 0; i < ns && rd.end - rd.p >= lens[i]; i++) {
-            if (k < max) {
-                lab[k] = rd.p;
-                len[k++] = (int)lens[i];
-            }
-            rd.p += lens[i];
-        }
-        return k;
-    }
-    while (p < end && k < max) {
-        const char *q = p;
-        while (q < end && *q != '\0' && *q != '\n')
-            q++;
-        if (q > p) {
-            lab[k] = p;
-            len[k++] = (int)(q - p);
-        }
-        p = q + 1;
-    }
-    return k;
 }
