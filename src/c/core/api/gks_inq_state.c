@@ -25,8 +25,17 @@ gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
     return ws;
 }
 
-/* Workstation description table of a type: error 8, 22, 23. */
-static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
+gks_ws *gks_inq_out_ws(Gint ws_id, Gint *err)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err);
+    if (!ws)
+        return NULL;
+    Gws_cat c = ws->drv->desc->cat;
+    *err = c == GCAT_MI ? 33 : c == GCAT_IN ? 35 : c == GCAT_WISS ? 36 : 0;
+    return *err ? NULL : ws;
+}
+
+const gks_ws_desc *gks_inq_ws_type(Gint ws_type, int out, Gint *err)
 {
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
@@ -38,6 +47,10 @@ static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
     const gks_ws_driver *d = gks_driver_for_type(ws_type);
     if (!d) {
         *err = 23;
+        return NULL;
+    }
+    if (out && d->desc->cat != GCAT_OUT && d->desc->cat != GCAT_OUTIN) {
+        *err = 39;
         return NULL;
     }
     return d->desc;
@@ -148,7 +161,7 @@ GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer
 GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 {
     GKS_INQ_ARGS(err_ind, cat);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (d)
         *cat = d->cat;
 }
@@ -156,7 +169,7 @@ GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 {
     GKS_INQ_ARGS(err_ind, ws_class);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (!d)
         return;
     if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {
@@ -169,7 +182,7 @@ GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size)
 {
     GKS_INQ_ARGS(err_ind, disp_size);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (!d)
         return;
     if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {

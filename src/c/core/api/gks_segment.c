@@ -70,9 +70,11 @@ static void seg_delete(int name)
     gks_world_changed();
 }
 
-/* Common checks of the functions naming an existing segment: 120, 122. */
+/* Entry of a function on an existing segment: the state check, then 120, 122. */
 static gks_segment *existing(int fctid, Gint name)
 {
+    if (gks_check_state(fctid))
+        return NULL;
     if (name < 1)
         GKS_FAIL_RET(120, fctid, NULL);
     gks_segment *s = gks_seg_find(store(), name);
@@ -130,8 +132,6 @@ GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
 
 GKS_API void gdel_seg(Gint seg_name)
 {
-    if (gks_check_state(GFN_DSG))
-        return;
     gks_segment *s = existing(GFN_DSG, seg_name);
     if (!s)
         return;
@@ -179,8 +179,6 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    if (gks_check_state(GFN_SSGT3))
-        return;
     gks_segment *s = existing(GFN_SSGT3, seg_name);
     if (!s)
         return;
@@ -199,8 +197,6 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    if (gks_check_state(GFN_SSGT))
-        return;
     gks_segment *s = existing(GFN_SSGT, seg_name);
     if (!s)
         return;
@@ -219,8 +215,6 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 
 GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
 {
-    if (gks_check_state(GFN_SVIS))
-        return;
     gks_segment *s = existing(GFN_SVIS, seg_name);
     if (!s)
         return;
@@ -237,8 +231,6 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
 
 GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
 {
-    if (gks_check_state(GFN_SHLIT))
-        return;
     gks_segment *s = existing(GFN_SHLIT, seg_name);
     if (!s)
         return;
@@ -250,8 +242,6 @@ GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
 
 GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
 {
-    if (gks_check_state(GFN_SSGP))
-        return;
     gks_segment *s = existing(GFN_SSGP, seg_name);
     if (!s)
         return;
@@ -268,8 +258,6 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
 
 GKS_API void gset_det(Gint seg_name, Gseg_det det)
 {
-    if (gks_check_state(GFN_SDTEC))
-        return;
     gks_segment *s = existing(GFN_SDTEC, seg_name);
     if (!s)
         return;
