@@ -392,7 +392,7 @@ static gks_ws *pixel_ws(Gint ws_id, Gint *err)
  * relative). 0 or 308. */
 static int wc_to_pixel(const gks_ws *ws, const Gpoint *p, double *x, double *y)
 {
-    double n[3][4], win[6], m[4][4];
+    double n[3][4], m[4][4];
     if (gks_cur_norm_matrix(n))
         return 308;
     double h[4] = { n[0][0] * p->x + n[0][1] * p->y + n[0][3],
@@ -408,10 +408,7 @@ static int wc_to_pixel(const gks_ws *ws, const Gpoint *p, double *x, double *y)
                v->map_matrix[i][2] * t[2] + v->map_matrix[i][3] * t[3];
     if (u[3] == 0 || !isfinite(u[3]))
         return 308;
-    gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
-                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
-    if (gks_xform_ws_tran3(win, vp, m))
+    if (gks_ws_pixel_matrix(ws, 1.0, m))
         return 308;
     double q[3] = { u[0] / u[3], u[1] / u[3], u[2] / u[3] };
     *x = m[0][0] * q[0] + m[0][1] * q[1] + m[0][2] * q[2] + m[0][3];
