@@ -19,8 +19,8 @@
  *   surface (into the mesh), t in [0, inf);
  * - in-box misses: origin uniform on the sphere of twice the mesh box's half diagonal around
  *   its centre, aimed at a point uniform in the box (the ray enters the box), t in [0, inf);
- *   of these candidates the first IBOX_RAYS that ours misses are kept (the set is defined by
- *   ours; Embree's hits on it are reported as disagreement).
+ *   of these candidates the first min(RES^2, IBOX_RAYS) that ours misses are kept (the set is
+ *   defined by ours; Embree's hits on it are reported as disagreement).
  * Mesh build: rt_scene_commit of the loaded scene again (default options, 1 thread) and
  * rtcCommitScene, process CPU time, best of 5; memory as in the build series.
  * Agreement: both miss, or both hit the same triangle with |t_ours - t_embree| <= TOL_T *
@@ -400,16 +400,16 @@ static int cmd_rays(int res, int nfiles, char **files)
             fails++;
             continue;
         }
-        size_t n = (size_t)res * res, nb = n > IBOX_RAYS ? n : IBOX_RAYS;
+        size_t n = (size_t)res * res, nbox = n < IBOX_RAYS ? n : IBOX_RAYS;
         rt_ray *rays = bs_alloc(n, sizeof *rays);
         rt_ray *srays = bs_alloc(n, sizeof *srays);
         rt_ray *irays = bs_alloc(n, sizeof *irays);
-        rt_ray *brays = bs_alloc(IBOX_RAYS, sizeof *brays);
-        rt_ray *cand = bs_alloc(IBOX_RAYS, sizeof *cand);
-        rt_hit *hits = bs_alloc(nb, sizeof *hits);
-        rt_hit *ihits = bs_alloc(nb, sizeof *ihits);
+        rt_ray *brays = bs_alloc(nbox, sizeof *brays);
+        rt_ray *cand = bs_alloc(nbox, sizeof *cand);
+        rt_hit *hits = bs_alloc(n, sizeof *hits);
+        rt_hit *ihits = bs_alloc(n, sizeof *ihits);
         unsigned char *occ = bs_alloc(n, 1);
-        em_res er = {bs_alloc(nb, sizeof(int)), bs_alloc(nb, sizeof(float)), bs_alloc(n, 1)};
+        em_res er = {bs_alloc(n, sizeof(int)), bs_alloc(n, sizeof(float)), bs_alloc(n, 1)};
         long long mem0 = atomic_load(&mem.bytes);
         RTCScene esc = em_scene(dev, s.verts_vrc, s.nverts, s.tris, s.ntris);
         if (!rays || !srays || !irays || !brays || !cand || !hits || !ihits || !occ || !er.prim || !er.t ||
@@ -461,7 +461,7 @@ static int cmd_rays(int res, int nfiles, char **files)
 
         /* incoherent rays: from inside the mesh, and in-box misses */
         const size_t ni = make_inside_rays(rays, hits, n, irays);
-        const size_t nm = make_ibox_rays(&s, IBOX_RAYS, brays, cand, ihits);
+        const size_t nm = make_ibox_rays(&s, nbox, brays, cand, ihits);
         double oi = 1e30, ei = 1e30, om = 1e30, em = 1e30;
         for (int r = 0; r < REPS; r++) {
             if (ni) {
