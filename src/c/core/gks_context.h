@@ -123,7 +123,6 @@ typedef struct gks_context {
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
-    const struct gks_norm_override *norm_override; /* INTERPRET ITEM (gks_output.c) */
 } gks_context;
 
 /* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
