@@ -254,15 +254,15 @@ int gks_mf_user_item(int fctid, gks_ws *ws, int type, const char *data, size_t l
 
 /* ---------------------------------------------------------------- attribute sync */
 /* The current primitive attributes recorded one item per entry (the ATTR rows of the item
- * table, in their order): a gks_cur_attrs field laid out as the item's format, n ints or
- * n reals. */
+ * table, in their order): the n ints or n reals the item's format names, from a
+ * gks_cur_attrs field on (PATTERN REFERENCE POINT AND VECTORS: the point and the two
+ * vectors after it). */
 typedef struct {
     int item;
-    size_t off, size;
+    size_t off;
 } attr_field;
 
-#define GKSM_ATTR_ROW_ATTR(name, key) { GKSM_ITEM_##name, offsetof(gks_cur_attrs, key),          \
-                                        sizeof(((gks_cur_attrs *)0)->key) },
+#define GKSM_ATTR_ROW_ATTR(name, key) { GKSM_ITEM_##name, offsetof(gks_cur_attrs, key) },
 #define GKSM_ATTR_ROW_REC_WS(name, key)
 #define GKSM_ATTR_ROW_REC_ALL(name, key)
 #define GKSM_ATTR_ROW_REC_OWN(name, key)
@@ -287,14 +287,22 @@ _Static_assert(offsetof(gks_cur_attrs, pat_ref_vec) ==
                "pattern reference point and vectors must be contiguous");
 
 /* The item of field f: its format says how many ints or reals (the ATTR rows are one kind). */
+/* The bytes of field f: n ints or n reals as its item's format says. */
+static size_t field_size(const attr_field *f, int *n, char *k)
+{
+    int arr;
+    gksm_fmt_next(gksm_item_fmt(f->item), n, k, &arr);
+    return (size_t)*n * (*k == 'i' ? sizeof(int) : sizeof(double));
+}
+
 static int field_item(const mo_t *o, const attr_field *f, const gks_cur_attrs *a)
 {
     const char *base = (const char *)a + f->off;
     gksm_rec *r = &o->m->rec;
-    int n, arr;
+    int n;
     char k;
     gksm_rec_clear(r);
-    gksm_fmt_next(gksm_item_fmt(f->item), &n, &k, &arr);
+    field_size(f, &n, &k);
     for (int j = 0; j < n; j++) {
         if (k == 'i') {
             int v;
@@ -335,7 +343,10 @@ static int sync_attrs(const mo_t *o, const gks_cur_attrs *a)
     const gks_cur_attrs *l = &o->m->last;
     for (size_t i = 0; i < sizeof attr_fields / sizeof attr_fields[0] && !err; i++) {
         const attr_field *f = &attr_fields[i];
-        if (all || memcmp((const char *)a + f->off, (const char *)l + f->off, f->size) != 0)
+        int n;
+        char k;
+        size_t sz = field_size(f, &n, &k);
+        if (all || memcmp((const char *)a + f->off, (const char *)l + f->off, sz) != 0)
             err = field_item(o, f, a);
     }
     for (int s = 0; s < 2 && !err; s++) {
