@@ -2,8 +2,8 @@
 /*
  * gks_output.c -- output primitives (ISO 7942 5.3 and their GKS-3D forms): POLYLINE (3),
  * POLYMARKER (3), TEXT (3), FILL AREA (3), FILL AREA SET (3), CELL ARRAY (3),
- * GENERALIZED DRAWING PRIMITIVE (3); SET COLOUR REPRESENTATION; the normalization and
- * workstation transformation settings.
+ * GENERALIZED DRAWING PRIMITIVE (3). The transformations they go through are set in
+ * gks_transform.c.
  *
  * Each primitive: state check, argument checks (standard order), then the
  * workstation-independent stages: WC3 -> NDC3 by the current normalization
@@ -744,10 +744,13 @@ static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_
         err = 300;
         goto done;
     }
+    const double (*m)[4] = (const double (*)[4])nc->m;
     for (size_t i = 0; i < n; i++) {
-        double wc[3], h[4];
+        double wc[3], h[3];
         src_get(s, i, wc);
-        if (!to_ndc(nc, wc, h))
+        for (int k = 0; k < 3; k++) /* to_ndc inline (the same operations) */
+            h[k] = m[k][0] * wc[0] + m[k][1] * wc[1] + m[k][2] * wc[2] + m[k][3];
+        if (!(isfinite(h[0]) && isfinite(h[1]) && isfinite(h[2])))
             goto done; /* a non-finite vertex: the area is not drawn */
         inside = inside && point_visible(nc, h);
         pts[i] = (Gpoint3){ h[0], h[1], h[2] };
@@ -783,17 +786,20 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
                               .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
                               .d3 = s->d3 }))
         return;
-    int icnt_small[AREA_SMALL];
-    int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
-    if (!icnt)
-        GKS_FAIL(300, fctid);
-    for (size_t k = 0; k < nloops; k++)
-        icnt[k] = (int)cnt[k];
-    gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
-                        .n_loops = (int)nloops, .loop_counts = icnt };
-    int err = record(&nc, &sp, s, n);
-    if (icnt != icnt_small)
-        gks_free(icnt);
+    int err = 0;
+    if (nc.seg) { /* stored in the open segment */
+        int icnt_small[AREA_SMALL];
+        int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
+        if (!icnt)
+            GKS_FAIL(300, fctid);
+        for (size_t k = 0; k < nloops; k++)
+            icnt[k] = (int)cnt[k];
+        gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
+                            .n_loops = (int)nloops, .loop_counts = icnt };
+        err = record(&nc, &sp, s, n);
+        if (icnt != icnt_small)
+            gks_free(icnt);
+    }
     target t;
     target_current(&t, &nc);
     if (!err)
@@ -1171,197 +1177,6 @@ void gks_output_area_d3(int fctid, size_t n, const double (*p)[3])
 {
     pt_src s = { NULL, NULL, p };
     output_area(fctid, 1, &n, &s, 0, NULL);
-}
-
-/* ------------------------------------------------------------------ colour table */
-GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
-{
-    if (gks_check_state(GFN_SCR))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SCR, ws_id,
-                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    if (colr_ind < 0 || colr_ind >= ws->drv->desc->n_colr)
-        GKS_FAIL(93, GFN_SCR);
-    if (!colr_rep)
-        GKS_FAIL(96, GFN_SCR);
-    const Grgb *c = &colr_rep->rgb;
-    if (!(c->red >= 0 && c->red <= 1 && c->green >= 0 && c->green <= 1 && c->blue >= 0 &&
-          c->blue <= 1))
-        GKS_FAIL(96, GFN_SCR);
-    ws->colr[colr_ind] = *c;
-    ws->colr_defined[colr_ind] = 1;
-    GKS_MF_WS(SCR, ws_id, colr_ind, c->red, c->green, c->blue);
-}
-
-/* --- Normalization transformations ------------------------------------------------ */
-static int rect_valid(const Glimit *r)
-{
-    return r && isfinite(r->x_min) && isfinite(r->x_max) && isfinite(r->y_min) &&
-           isfinite(r->y_max) && r->x_min < r->x_max && r->y_min < r->y_max;
-}
-
-GKS_API void gset_win(Gint tran_num, const Glimit *win)
-{
-    if (gks_check_state(GFN_SWN))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SWN);
-    if (!rect_valid(win))
-        GKS_FAIL(51, GFN_SWN);
-    Glimit3 *w = &gks_ctx()->sl->tran[tran_num].win;
-    w->x_min = win->x_min; w->x_max = win->x_max;
-    w->y_min = win->y_min; w->y_max = win->y_max;
-}
-
-GKS_API void gset_vp(Gint tran_num, const Glimit *vp)
-{
-    if (gks_check_state(GFN_SVP))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SVP);
-    if (!rect_valid(vp))
-        GKS_FAIL(51, GFN_SVP);
-    if (vp->x_min < 0 || vp->x_max > 1 || vp->y_min < 0 || vp->y_max > 1)
-        GKS_FAIL(52, GFN_SVP);
-    Glimit3 *v = &gks_ctx()->sl->tran[tran_num].vp;
-    v->x_min = vp->x_min; v->x_max = vp->x_max;
-    v->y_min = vp->y_min; v->y_max = vp->y_max;
-}
-
-GKS_API void gsel_norm_tran(Gint tran_num)
-{
-    if (gks_check_state(GFN_SELNT))
-        return;
-    if (tran_num < 0 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SELNT);
-    gks_ctx()->sl->cur_tnr = tran_num;
-}
-
-GKS_API void gset_clip_ind(Gclip_ind clip_ind)
-{
-    if (gks_check_state(GFN_SCLIP))
-        return;
-    if (clip_ind != GIND_CLIP && clip_ind != GIND_NO_CLIP)
-        GKS_FAIL(2000, GFN_SCLIP);
-    gks_ctx()->sl->clip_ind = clip_ind;
-}
-
-/* --- Workstation transformation ------------------------------------------------------ */
-/* Requested values become current at once when the display surface is empty, else at
- * the next regeneration (UPDATE with PERFORM, CLEAR, or at once if implicit
- * regeneration is allowed). */
-static int ws_tran_changed(gks_ws *ws)
-{
-    if (ws->disp_empty == GDISP_EMPTY) {
-        ws->cur_win = ws->req_win;
-        ws->cur_vp = ws->req_vp;
-        return ws->drv->clear ? ws->drv->clear(ws) : 0;
-    }
-    ws->tran_upd_st = GUPD_PEND;
-    ws->new_frame = GNEW_YES;
-    return ws->irg_mode == GIRG_ALLOWED ? gks_ws_regenerate(ws) : 0;
-}
-
-GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
-{
-    if (gks_check_state(GFN_SWKWN))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKWN, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    if (!rect_valid(ws_win))
-        GKS_FAIL(51, GFN_SWKWN);
-    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1)
-        GKS_FAIL(53, GFN_SWKWN);
-    ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
-    ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
-    GKS_MF_WS(SWKWN, ws_id, &ws_win->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKWN);
-}
-
-GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
-{
-    if (gks_check_state(GFN_SWKVP))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKVP, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    if (!rect_valid(ws_vp))
-        GKS_FAIL(51, GFN_SWKVP);
-    const gks_ws_desc *d = ws->drv->desc;
-    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 || ws_vp->y_max > d->dc_y)
-        GKS_FAIL(54, GFN_SWKVP);
-    ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
-    ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
-    GKS_MF_WS(SWKVP, ws_id, &ws_vp->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKVP);
-}
-
-static int box3_valid(const Glimit3 *b)
-{
-    return b && b->x_min < b->x_max && b->y_min < b->y_max && b->z_min <= b->z_max &&
-           isfinite(b->x_min) && isfinite(b->x_max) && isfinite(b->y_min) &&
-           isfinite(b->y_max) && isfinite(b->z_min) && isfinite(b->z_max);
-}
-
-GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
-{
-    if (gks_check_state(GFN_SWKW3))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKW3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    if (!box3_valid(ws_win))
-        GKS_FAIL(51, GFN_SWKW3);
-    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1 ||
-        ws_win->z_min < 0 || ws_win->z_max > 1)
-        GKS_FAIL(53, GFN_SWKW3);
-    ws->req_win = *ws_win;
-    GKS_MF_WS(SWKW3, ws_id, &ws_win->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKW3);
-}
-
-GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
-{
-    if (gks_check_state(GFN_SWKV3))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKV3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    if (!box3_valid(ws_vp))
-        GKS_FAIL(51, GFN_SWKV3);
-    const gks_ws_desc *d = ws->drv->desc;
-    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 ||
-        ws_vp->y_max > d->dc_y || ws_vp->z_min < 0 || ws_vp->z_max > 1)
-        GKS_FAIL(54, GFN_SWKV3);
-    ws->req_vp = *ws_vp;
-    GKS_MF_WS(SWKV3, ws_id, &ws_vp->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKV3);
-}
-
-GKS_API void ginq_ws_tran3(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
-                           Glimit3 *req_ws_win, Glimit3 *cur_ws_win, Glimit3 *req_ws_vp,
-                           Glimit3 *cur_ws_vp)
-{
-    GKS_INQ_ARGS(err_ind, ws_tran_upd_st, req_ws_win, cur_ws_win, req_ws_vp, cur_ws_vp);
-    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
-    if (!ws)
-        return;
-    *ws_tran_upd_st = ws->tran_upd_st;
-    *req_ws_win = ws->req_win;
-    *cur_ws_win = ws->cur_win;
-    *req_ws_vp = ws->req_vp;
-    *cur_ws_vp = ws->cur_vp;
 }
 
 /* ------------------------------------------------------------------ internal interface */
