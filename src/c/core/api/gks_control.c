@@ -14,6 +14,7 @@
 #include "gks_par.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
+#include "gks_replay.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include <stdio.h>

@@ -983,166 +983,6 @@ void gks_output_rec_cell_array3(const gks_rec_xf *xf, const Gparal *par, const G
     cell_array3_any(par, ca, xf);
 }
 
-/* ------------------------------------------------------------------ stored primitives */
-/* A stored primitive (NDC3 geometry; TEXT in WC3 through its bound normalization) sent
- * to the target through the affine map S (NDC3 -> NDC3) and clipped at box when clip_on. */
-static int emit_stored(target *t, const double S[3][4], const double box[6], int clip_on,
-                       const gks_seg_prim *sp)
-{
-    norm_ctx nc;
-    double sn[3][4];
-    gks_xform_mat34_multiply(S, sp->bound->norm, sn); /* WC3 -> final NDC3 */
-    if (norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
-        return 0;
-    t->a = &sp->bound->attrs;
-    memcpy(t->pat_m, sn, sizeof sn);
-    pt_src s = { NULL, sp->pts, NULL };
-    size_t n = (size_t)sp->n_points;
-    switch (sp->kind) {
-    case GKS_SEG_POLYLINE:
-        return emit_polyline(&nc, &s, n, t);
-    case GKS_SEG_POLYMARKER:
-        return emit_polymarker(&nc, &s, n, t);
-    case GKS_SEG_TEXT: {
-        if (n != 3 || sp->str_len < 1)
-            return 0;
-        char *str = gks_strndup(sp->str, (size_t)sp->str_len);
-        if (!str)
-            return 300;
-        const double pos[3] = { sp->pts[0].x, sp->pts[0].y, sp->pts[0].z };
-        const double d0[3] = { sp->pts[1].x, sp->pts[1].y, sp->pts[1].z };
-        const double d1[3] = { sp->pts[2].x, sp->pts[2].y, sp->pts[2].z };
-        int err = emit_text(&nc, pos, d0, d1, str, t);
-        gks_free(str);
-        return err;
-    }
-    case GKS_SEG_FILL_AREA:
-    case GKS_SEG_FILL_AREA_SET: {
-        size_t nl = (size_t)sp->n_loops;
-        size_t *cnt = gks_alloc_array(nl, sizeof *cnt);
-        if (!cnt)
-            return 300;
-        if (sp->loop_counts)
-            for (size_t k = 0; k < nl; k++)
-                cnt[k] = (size_t)sp->loop_counts[k];
-        else
-            cnt[0] = n;
-        int err = emit_area(&nc, nl, cnt, n, &s, sp->kind == GKS_SEG_FILL_AREA_SET, t);
-        gks_free(cnt);
-        return err;
-    }
-    case GKS_SEG_CELL_ARRAY: {
-        const double pqr[3][3] = { { sp->cell_p.x, sp->cell_p.y, sp->cell_p.z },
-                                   { sp->cell_q.x, sp->cell_q.y, sp->cell_q.z },
-                                   { sp->cell_r.x, sp->cell_r.y, sp->cell_r.z } };
-        return emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, t);
-    }
-    case GKS_SEG_AREA_DATA:
-        return gks_area_data_emit_stored(&nc, sp, t);
-    }
-    return 0;
-}
-
-int gks_output_draw_segment(gks_ws *ws, const gks_segment *seg)
-{
-    int err = 0;
-    for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
-        gks_seg_prim sp;
-        gks_seg_get(seg, k, &sp);
-        target t = { .only = ws };
-        err = emit_stored(&t, (const double (*)[4])seg->tran, sp.clip_box, sp.clip, &sp);
-    }
-    return err;
-}
-
-int gks_output_redraw_segments(gks_ws *ws)
-{
-    const gks_seg_store *st = gks_ctx()->sl->segs;
-    if (st->n == 0)
-        return 0;
-    gks_segment **order = gks_alloc_array(st->n, sizeof *order);
-    if (!order)
-        return 300;
-    size_t n = gks_seg_draw_order(st, ws->id, order);
-    int err = 0;
-    for (size_t i = 0; i < n && !err; i++)
-        if (order[i]->vis)
-            err = gks_output_draw_segment(ws, order[i]);
-    gks_free(order);
-    return err;
-}
-
-/* One stored primitive of an inserted segment, mapped by M (segment transformation, then
- * insert transformation), stored into the open segment as a new primitive with the current
- * clipping volume. */
-static int insert_record(gks_segment *open, const double M[3][4], const norm_ctx *cur,
-                         const gks_seg_prim *sp)
-{
-    gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
-    size_t n = (size_t)sp->n_points;
-    Gpoint3 *pts = gks_alloc_array(n ? n : 1, sizeof *pts);
-    int err = 0;
-    if (!bound || !pts) {
-        err = 300;
-        goto done;
-    }
-    *bound = *sp->bound;
-    gks_xform_mat34_multiply(M, sp->bound->norm, bound->norm);
-    for (size_t i = 0; i < n; i++) {
-        double p[3] = { sp->pts[i].x, sp->pts[i].y, sp->pts[i].z }, o[3];
-        if (sp->kind == GKS_SEG_TEXT)
-            memcpy(o, p, sizeof o); /* WC3: the new normalization carries M */
-        else
-            gks_xform_mat34_point(M, p, o);
-        pts[i] = (Gpoint3){ o[0], o[1], o[2] };
-    }
-    gks_seg_prim np = *sp;
-    np.pts = pts;
-    np.bound = bound;
-    np.clip = cur->clip_on;
-    memcpy(np.clip_box, cur->box, sizeof np.clip_box);
-    const Gpoint3 *c[3] = { &sp->cell_p, &sp->cell_q, &sp->cell_r };
-    Gpoint3 *d[3] = { &np.cell_p, &np.cell_q, &np.cell_r };
-    for (int k = 0; k < 3; k++) {
-        double p[3] = { c[k]->x, c[k]->y, c[k]->z }, o[3];
-        gks_xform_mat34_point(M, p, o);
-        *d[k] = (Gpoint3){ o[0], o[1], o[2] };
-    }
-    err = gks_seg_append(open, &np);
-done:
-    gks_free(bound);
-    gks_free(pts);
-    return err;
-}
-
-int gks_output_insert_segment(const gks_segment *seg, const double ins[3][4])
-{
-    norm_ctx cur;
-    if (norm_setup(&cur))
-        return 308;
-    double M[3][4], total[3][4];
-    gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
-    gks_segment *open = cur.seg;
-    if (open)
-        gks_xform_mat34_multiply(open->tran, M, total);
-    else
-        memcpy(total, M, sizeof total);
-    int err = 0;
-    for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
-        gks_seg_prim sp;
-        gks_seg_get(seg, k, &sp);
-        if (open && sp.kind == GKS_SEG_AREA_DATA)
-            err = gks_area_data_insert(open, (const double (*)[4])M, &cur, &sp);
-        else if (open)
-            err = insert_record(open, (const double (*)[4])M, &cur, &sp);
-        target t;
-        target_current(&t, &cur);
-        if (!err)
-            err = emit_stored(&t, (const double (*)[4])total, cur.box, cur.clip_on, &sp);
-    }
-    return err;
-}
-
 /* ------------------------------------------------------------------ GDP (gks_gdp.c) */
 /* A GDP's tessellation, in WC3, through the POLYLINE and FILL AREA paths (segments and
  * the metafile record what is drawn). The caller did the state and argument checks. */
@@ -1181,3 +1021,30 @@ void gks_out_target_current(target *t, const norm_ctx *nc) { target_current(t, n
 gks_ws *gks_out_next_ws(target *t) { return next_ws(t); }
 int gks_out_send(gks_ws *ws, const gks_prim *p) { return send(ws, p); }
 void gks_out_prim_common(gks_prim *p, const gks_cur_attrs *a) { prim_common(p, a); }
+/* For segment replay (gks_replay.c): the stages of each primitive kind, on NDC3 points. */
+int gks_out_emit_polyline(const norm_ctx *nc, const Gpoint3 *pts, size_t n, target *t)
+{
+    pt_src s = { NULL, pts, NULL };
+    return emit_polyline(nc, &s, n, t);
+}
+int gks_out_emit_polymarker(const norm_ctx *nc, const Gpoint3 *pts, size_t n, target *t)
+{
+    pt_src s = { NULL, pts, NULL };
+    return emit_polymarker(nc, &s, n, t);
+}
+int gks_out_emit_text(const norm_ctx *nc, const double pos[3], const double d0[3],
+                      const double d1[3], const char *str, target *t)
+{
+    return emit_text(nc, pos, d0, d1, str, t);
+}
+int gks_out_emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                      const Gpoint3 *pts, int is_set, target *t)
+{
+    pt_src s = { NULL, pts, NULL };
+    return emit_area(nc, nloops, cnt, n, &s, is_set, t);
+}
+int gks_out_emit_cell_array(const norm_ctx *nc, const double pqr[3][3], int nx, int ny,
+                            const Gint *colr, target *t)
+{
+    return emit_cell_array(nc, pqr, nx, ny, colr, t);
+}

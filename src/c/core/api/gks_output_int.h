@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * gks_output_int.h -- the output pipeline's stages shared by gks_output.c (the ISO
- * primitives) and gks_output_data.c (the PHIGS PLUS primitives with data): the
- * normalization/clipping context of a primitive, its target workstations and the send to
- * a driver (with the test hook). Internal to core/api.
+ * primitives), gks_output_data.c (the PHIGS PLUS primitives with data) and gks_replay.c
+ * (segment replay): the normalization/clipping context of a primitive, its target
+ * workstations, the stages of each primitive kind and the send to a driver (with the test
+ * hook). Internal to core/api.
  */
 #ifndef GKS_OUTPUT_INT_H
 #define GKS_OUTPUT_INT_H
@@ -45,4 +46,15 @@ gks_ws *gks_out_next_ws(target *t);
 void gks_out_prim_common(gks_prim *p, const gks_cur_attrs *a);
 /* Hands p to ws's driver (after the test hook). 0 or the driver's error. */
 int gks_out_send(gks_ws *ws, const gks_prim *p);
+/* Each primitive kind from NDC3 points (before the segment transformation of nc) through
+ * clipping, segment recording and dispatch to t's workstations; TEXT from its WC3 position
+ * and direction vectors. 0 or a GKS error number. */
+int gks_out_emit_polyline(const norm_ctx *nc, const Gpoint3 *pts, size_t n, target *t);
+int gks_out_emit_polymarker(const norm_ctx *nc, const Gpoint3 *pts, size_t n, target *t);
+int gks_out_emit_text(const norm_ctx *nc, const double pos[3], const double d0[3],
+                      const double d1[3], const char *str, target *t);
+int gks_out_emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_t n,
+                      const Gpoint3 *pts, int is_set, target *t);
+int gks_out_emit_cell_array(const norm_ctx *nc, const double pqr[3][3], int nx, int ny,
+                            const Gint *colr, target *t);
 #endif

@@ -3,7 +3,7 @@
  * gks_segment.c -- segment functions (ISO 7942 5.7, GKS-3D SET SEGMENT TRANSFORMATION 3)
  * and their inquiries. The content lives in the segment store (gks_seg_store.h); primitives
  * enter it from the output pipeline while a segment is open, and leave it again through
- * gks_output_redraw_segments (regeneration, REDRAW ALL SEGMENTS ON WORKSTATION).
+ * segment replay (gks_replay.c: regeneration, REDRAW ALL SEGMENTS ON WORKSTATION).
  *
  * Picture changes: this PNG-file implementation cannot modify a picture dynamically, so a
  * change that affects a workstation's picture (segment transformation, visibility,
@@ -16,6 +16,7 @@
 #include "gks_mf_record.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
+#include "gks_replay.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
@@ -306,7 +307,7 @@ GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
         return; /* already stored there: nothing to do */
     if (gks_seg_ws_add(s, ws_id))
         GKS_FAIL(301, GFN_ASGWK);
-    int err = s->vis ? gks_output_draw_segment(ws, s) : 0;
+    int err = s->vis ? gks_replay_segment(ws, s) : 0;
     if (err)
         GKS_FAIL(err, GFN_ASGWK);
 }
@@ -329,7 +330,7 @@ GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
     gks_segment *s = on_wiss(GFN_CSGWK, wiss, seg_name);
     if (!s)
         return;
-    int err = gks_output_draw_segment(ws, s);
+    int err = gks_replay_segment(ws, s);
     if (err)
         GKS_FAIL(err, GFN_CSGWK);
 }
@@ -350,7 +351,7 @@ static void insert_any(int fctid, Gint seg_name, const double m[3][4])
         GKS_FAIL(2003, fctid);
     if (!finite_n(&m[0][0], 12))
         GKS_FAIL(308, fctid);
-    int err = gks_output_insert_segment(s, m);
+    int err = gks_replay_insert(s, m);
     if (err)
         GKS_FAIL(err, fctid);
 }
@@ -474,14 +475,4 @@ GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
     }
     /* Priorities are kept as given (doubles): 0 means "a continuous range". */
     *num_seg_pris = 0;
-}
-
-int gks_ws_regenerate(gks_ws *ws)
-{
-    /* The picture being replaced is discarded, not written: a regeneration is a new
-     * version of the same frame (primitives outside segments are lost, as ISO 7942 says). */
-    int err = gks_ws_new_frame(ws);
-    if (!err)
-        err = gks_output_redraw_segments(ws);
-    return err;
 }

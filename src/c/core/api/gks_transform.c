@@ -10,7 +10,7 @@
  */
 #include "gks_error.h"
 #include "gks_mf_record.h"
-#include "gks_segment.h"
+#include "gks_replay.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"

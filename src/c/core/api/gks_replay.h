@@ -1,0 +1,31 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * gks_replay.h -- segment replay (gks_replay.c): stored primitives sent again through the
+ * output pipeline, for regeneration and the segment functions.
+ */
+#ifndef GKS_REPLAY_H
+#define GKS_REPLAY_H
+#include "gks_private.h"
+#include "gks_context.h"
+#include "gks_seg_store.h"
+
+/* Regeneration of ws: a pending workstation transformation applied, the display surface
+ * cleared (the picture being replaced is not written) and every visible segment stored
+ * on ws redrawn in priority order. Returns 0 or a GKS error number. */
+int gks_ws_regenerate(gks_ws *ws);
+
+/* Redraws the visible segments stored on ws (priority order, each through its segment
+ * transformation and its primitives' clipping volumes) onto the current frame. Returns 0
+ * or a GKS error number. */
+int gks_replay_segments(gks_ws *ws);
+/* Draws segment seg's primitives (through its transformation and their clipping volumes)
+ * onto ws's current frame, whatever its visibility (COPY SEGMENT TO WORKSTATION,
+ * ASSOCIATE). Returns 0 or a GKS error number. */
+int gks_replay_segment(gks_ws *ws, const gks_segment *seg);
+
+/* INSERT SEGMENT: seg's primitives, mapped by its segment transformation and then by ins,
+ * enter the output stream as new primitives: stored into the open segment (if any) with
+ * the current clipping volume, and drawn on the active workstations. Returns 0 or a GKS
+ * error number. */
+int gks_replay_insert(const gks_segment *seg, const double ins[3][4]);
+#endif
