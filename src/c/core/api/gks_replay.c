@@ -148,7 +148,7 @@ done:
 int gks_replay_insert(const gks_segment *seg, const double ins[3][4])
 {
     norm_ctx cur;
-    if (gks_out_norm_setup(&cur))
+    if (gks_out_norm_setup(&cur, NULL))
         return 308;
     double M[3][4], total[3][4];
     gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
