@@ -692,7 +692,13 @@ static int vec_item(void *ctx, const ws_render_item *it)
         cairo_matrix_t m;
         cairo_matrix_init(&m, (u->x - o->x) / it->nx, (u->y - o->y) / it->nx,
                           (w->x - o->x) / it->ny, (w->y - o->y) / it->ny, o->x, o->y);
-        paint_image(cr, it->rgb_list, it->nx, it->ny, &m, CAIRO_EXTEND_PAD);
+        /* PAD keeps the edge cells' colour up to the clipped boundary; cairo 1.16's
+         * PostScript surface pads such an image by an amount that varies from run to run
+         * (plot2d.eps: 2 different files in 8 runs of one binary), so PS and EPS take
+         * the image unpadded (the loops lie inside it: only edge anti-aliasing differs) */
+        paint_image(cr, it->rgb_list, it->nx, it->ny, &m,
+                    d->v->fmt == VEC_PS || d->v->fmt == VEC_EPS ? CAIRO_EXTEND_NONE
+                                                                : CAIRO_EXTEND_PAD);
         break;
     }
     default:
