@@ -407,6 +407,21 @@ RT_API int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_o
 RT_API int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
                            float *rgb, unsigned short *cover, rt_stats *stats);
 
+/* Ordered background work on the tracer's thread pool (rt_pool.c): items pushed to an
+ * rt_serial are passed to fn(user, item) one at a time, in push order, on a pool worker while
+ * the pushing thread goes on (the GKS workstation records areas into its scene this way).
+ * At most 8 items wait: a push beyond that runs the oldest on the pusher. fn must not block
+ * on the pusher. rt_serial_new returns NULL when threads (0: online CPUs) is below 2 or on
+ * storage failure: the caller then does the work itself. rt_serial_drain returns when every
+ * pushed item has run (its effects are then visible to the caller); rt_serial_free drains
+ * and frees (NULL allowed). */
+typedef struct rt_serial rt_serial;
+typedef void (*rt_serial_fn)(void *user, void *item);
+RT_API rt_serial *rt_serial_new(int threads, rt_serial_fn fn, void *user);
+RT_API void rt_serial_push(rt_serial *s, void *item);
+RT_API void rt_serial_drain(rt_serial *s);
+RT_API void rt_serial_free(rt_serial *s);
+
 #ifdef __cplusplus
 }
 #endif

@@ -21,13 +21,13 @@ void *rt_realloc_array(void *p, size_t n, size_t size);
 /* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
 int rt_grow(void **p, size_t *cap, size_t need, size_t es);
 
-/* ---- fork-join loops (rt_par.c) ---- */
+/* ---- the thread pool (rt_pool.c): fork-join loops ---- */
 #define RT_PAR_MAX 64 /* threads at most */
 typedef void (*rt_par_fn)(void *arg, int k, int n);
-/* threads for a request as rt_build_options.threads takes it (0: online CPUs), >= 1 */
+/* threads for a request as rt_build_options.threads takes it (0: online CPUs), 1 .. RT_PAR_MAX */
 int rt_par_threads(int requested);
-/* fn(arg, k, n) for k = 0 .. n-1 on up to n threads (k = 0 on the caller); returns when all
-   are done. Parts must not depend on which thread runs them. */
+/* fn(arg, k, n) for k = 0 .. n-1 on up to n threads of the pool (k = 0 on the caller); returns
+   when all are done. Parts must not depend on which thread runs them. */
 void rt_par_run(int n, rt_par_fn fn, void *arg);
 /* [*lo, *hi) of part k of n of 0 .. count-1 */
 static inline void rt_par_range(size_t count, int k, int n, size_t *lo, size_t *hi)

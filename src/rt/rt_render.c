@@ -54,7 +54,6 @@
 
 #define RT_TILE 16
 #define RT_MAX_DEPTH 64
-#define RT_MAX_THREADS 256
 _Static_assert(RT_TILE <= RT_CAM_ROW, "a tile row is one batch of camera rays");
 
 void rt_render_options_default(rt_render_options *o)
@@ -1056,9 +1055,8 @@ static void rt_progress(rt_job *job, uint64_t rays)
     pthread_mutex_unlock(&job->lock);
 }
 
-static void *rt_work(void *arg)
+static void rt_work(rt_worker *w)
 {
-    rt_worker *w = arg;
     rt_job *job = w->job;
     for (;;) {
         int t = job->hook ? rt_hook_next(job) : atomic_fetch_add(&job->next, 1);
@@ -1081,7 +1079,14 @@ static void *rt_work(void *arg)
         rt_progress(job, w->st.eye_rays + w->st.shadow_rays + w->st.reflection_rays +
                              w->st.refraction_rays - before);
     }
-    return NULL;
+}
+
+/* part k of the frame's rt_par_run: worker k takes tiles until none is left (the tiles a
+   worker gets do not change the picture) */
+static void rt_work_part(void *arg, int k, int n)
+{
+    (void)n;
+    rt_work((rt_worker *)arg + k);
 }
 
 /* light buffers (rt_lbuf.c) for the lights of the scene, when asked for and when they pay:
@@ -1191,18 +1196,11 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     rt_frame frame = {&job};
     int tx0, tx1, ty0, ty1; /* tile 0 is a largest tile */
     const size_t max_payload = rt_tile_rect(&job, 0, &tx0, &tx1, &ty0, &ty1);
-    int nt = o->threads;
-    if (nt == 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        nt = n > 0 ? (int)n : 1;
-    }
-    if (nt > RT_MAX_THREADS)
-        nt = RT_MAX_THREADS;
+    int nt = rt_par_threads(o->threads);
     if (nt > job.ntiles)
         nt = job.ntiles;
     rt_worker *w = rt_calloc_array((size_t)nt, sizeof *w);
-    pthread_t *th = rt_calloc_array((size_t)nt, sizeof *th);
-    if (!w || !th)
+    if (!w)
         rc = RT_ERR_NOMEM;
     size_t ncache = (size_t)(o->max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
     for (int k = 0; k < nt && rc == RT_OK; k++) {
@@ -1232,7 +1230,6 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
             free(w[k].payload);
         }
         free(w);
-        free(th);
         free(job.edge);
         free(job.corner_hit);
         free(job.cover);
@@ -1243,15 +1240,7 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     }
     pthread_mutex_init(&job.lock, NULL);
     rt_prefault(rgb, (size_t)cam->width * (size_t)cam->height * 3 * sizeof(float));
-    int started = 1;
-    for (int k = 1; k < nt; k++) {
-        if (pthread_create(&th[k], NULL, rt_work, &w[k]) != 0)
-            break; /* fewer threads: same picture */
-        started++;
-    }
-    rt_work(&w[0]);
-    for (int k = 1; k < started; k++)
-        pthread_join(th[k], NULL);
+    rt_par_run(nt, rt_work_part, w); /* the pool's threads (rt_pool.c): tiles by a counter */
     int whole = 1; /* the frame is complete here */
     if (job.hook) {
         int e = job.hook->end ? job.hook->end(job.hook->user, &frame) : 1;
@@ -1287,7 +1276,6 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     if (stats)
         *stats = st;
     free(w);
-    free(th);
     free(job.edge);
     free(job.corner_hit);
     free(job.cover);

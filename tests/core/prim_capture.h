@@ -5,7 +5,7 @@
 #ifndef PRIM_CAPTURE_H
 #define PRIM_CAPTURE_H
 #define GKS3D_BUILDING 1
-#include "ws_driver.h"
+#include "gks_context.h" /* gks_prim_hook, and ws_driver.h */
 #undef GKS3D_BUILDING
 #include <math.h>
 #include <stdlib.h>

@@ -25,6 +25,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 #include "ws_driver.h"
+#include "gks_ws.h" /* gks_ws_core_host: the file claims of a workstation */
 #include "ws_png_render.h"
 #include "raster.h"
 #include "png_util.h"
@@ -50,6 +51,7 @@ static gks_ws *ws_new(const char *name, int w, int h, int mode)
     ws->id = 1;
     ws->conn_id = strdup(name);
     ws->drv = &gks_ws_png_driver;
+    ws->host = &gks_ws_core_host;
     ws->state = GWS_ACTIVE;
     ws->cur_win = ws->req_win = (Glimit3){ 0, 1, 0, (double)h / w, 0, 1 };
     ws->cur_vp = ws->req_vp = (Glimit3){ 0, w, 0, h, 0, 1 };

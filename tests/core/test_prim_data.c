@@ -11,7 +11,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #define GKS3D_BUILDING 1
-#include "ws_driver.h"
+#include "gks_context.h" /* gks_prim_hook, and ws_driver.h */
 #undef GKS3D_BUILDING
 #include "core_util.h"
 #include <math.h>

@@ -3,7 +3,7 @@
  * gks_context.c -- the process's GKS context and the GKS description table.
  */
 #include "gks_context.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include "gks_xform.h"
 #include "gks_mf_record.h"
 #include "gks_legacy.h"

@@ -9,15 +9,13 @@
 #define GKS_CONTEXT_H
 #include "gks_private.h"
 #include "gks.h"
+#include "ws_driver.h" /* gks_ws, gks_ws_driver, gks_limit3_array */
 #include <stdint.h>
 #include <stdio.h>
 
 #define GKS_MAX_OPEN_WS 16
 #define GKS_MAX_ACTIVE_WS 16
 #define GKS_MAX_NORM_TRAN 31 /* transformations 0..31; 0 is the unity transformation */
-
-typedef struct gks_ws gks_ws;
-typedef struct gks_ws_driver gks_ws_driver;
 
 /* GKS description table (ISO 7942 6.3), constant. */
 typedef struct gks_desc_table {
@@ -125,13 +123,6 @@ typedef struct gks_context {
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
     const struct gks_norm_override *norm_override; /* INTERPRET ITEM (gks_output.c) */
 } gks_context;
-
-/* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
-static inline void gks_limit3_array(const Glimit3 *l, double b[6])
-{
-    b[0] = l->x_min; b[1] = l->x_max; b[2] = l->y_min;
-    b[3] = l->y_max; b[4] = l->z_min; b[5] = l->z_max;
-}
 
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.
  * Returns 0 or 308 (degenerate or non-finite window/viewport). GKS must be open. */

@@ -24,12 +24,6 @@
 #include <string.h>
 #include <time.h>
 
-const gks_in_desc gks_in_desc_std = {
-    .n_dev = { 2, 2, 2, 2, 2, 2 },
-    .max_pet = { 6, 4, 3, 3, 3, 1 },
-    .max_choices = 9,
-};
-
 /* Pick aperture: half the side of the square around the pick position, in NPC. */
 #define PICK_APERTURE 0.01
 
@@ -754,12 +748,14 @@ static int pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
     return found;
 }
 
-int gks_in_pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
+/* gks_in_active.pick_at */
+static int seg_pick_at(const gks_ws *ws, const double dc[3], Gpick *out)
 {
     return ws && out ? pick_at(ws, dc, out) : 0;
 }
 
-int gks_in_seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_fn fn,
+/* gks_in_active.seg_outline */
+static int seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_fn fn,
                        void *user)
 {
     const gks_seg_store *st = gks_ctx()->sl->segs;
@@ -875,6 +871,8 @@ static void active_list(gks_ws *ws, Gin_class rcls, int rnum, gks_in_active *a)
 {
     a->n = 0;
     a->request = -1;
+    a->pick_at = seg_pick_at;
+    a->seg_outline = seg_outline;
     double win[6], vp[6], m[4][4];
     gks_limit3_array(&ws->cur_win, win);
     gks_limit3_array(&ws->cur_vp, vp);
@@ -1140,64 +1138,4 @@ int gks_in_overflow(Gint *ws_id, Gin_class *cls, Gint *num)
 int gks_in_more_simult(void)
 {
     return 0; /* every trigger of this implementation belongs to one device */
-}
-
-/* One decimal ended by ',' at *p (before end), as GPREC writes them; -1 if none. */
-static int rec_long(const char **p, const char *end, long *v)
-{
-    char t[24];
-    size_t n = 0;
-    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
-        t[n] = (*p)[n];
-        n++;
-    }
-    if (n == 0 || *p + n >= end || (*p)[n] != ',')
-        return -1;
-    t[n] = '\0';
-    char *e;
-    *v = strtol(t, &e, 10);
-    *p += n + 1;
-    return *e ? -1 : 0;
-}
-
-int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
-{
-    const char *p = r->str, *end = r->str ? r->str + r->str_len : NULL;
-    int k = 0;
-    if (!p || r->str_len == 0 || max <= 0)
-        return 0;
-    if (r->str_len >= 4 && memcmp(p, "GKSR", 4) == 0) {
-        long n[3], lens[64];
-        p += 4;
-        for (int i = 0; i < 3; i++)
-            if (rec_long(&p, end, &n[i]) || n[i] < 0 || n[i] > 100000)
-                return 0;
-        for (long i = 0; i < n[0] + n[1]; i++) /* integers, reals: skipped */
-            while (p < end && *p++ != ',')
-                ;
-        if (n[2] > 64)
-            n[2] = 64;
-        for (long i = 0; i < n[2]; i++)
-            if (rec_long(&p, end, &lens[i]) || lens[i] < 0)
-                return 0;
-        for (long i = 0; i < n[2] && end - p >= lens[i]; i++) {
-            if (k < max) {
-                lab[k] = p;
-                len[k++] = (int)lens[i];
-            }
-            p += lens[i];
-        }
-        return k;
-    }
-    while (p < end && k < max) {
-        const char *q = p;
-        while (q < end && *q != '\0' && *q != '\n')
-            q++;
-        if (q > p) {
-            lab[k] = p;
-            len[k++] = (int)(q - p);
-        }
-        p = q + 1;
-    }
-    return k;
 }

@@ -74,6 +74,9 @@ static int init_bundles(gks_ws *ws, const gks_wdt_output *t)
     return 0;
 }
 
+static int file_claim(gks_ws *ws, const char *path);
+const gks_ws_host gks_ws_core_host = { .file_claim = file_claim };
+
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
 {
     const gks_ws_desc *d = drv->desc;
@@ -82,6 +85,7 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
         return NULL;
     ws->id = ws_id;
     ws->drv = drv;
+    ws->host = &gks_ws_core_host;
     ws->conn_id = gks_strdup(conn_id ? conn_id : "");
     int n = d->n_colr > 0 ? d->n_colr : 1;
     ws->colr = gks_calloc_array((size_t)n, sizeof *ws->colr);
@@ -222,7 +226,8 @@ int gks_ws_file_check(gks_ws *ws)
     return 0;
 }
 
-int gks_ws_file_claim(gks_ws *ws, const char *path)
+/* gks_ws_host.file_claim */
+static int file_claim(gks_ws *ws, const char *path)
 {
     int err;
     char *canon = usable_file(path, 1, &err);
@@ -250,22 +255,6 @@ int gks_ws_file_claim(gks_ws *ws, const char *path)
         ws->cap_files = cap;
     }
     ws->files[ws->n_files++] = canon;
-    return 0;
-}
-
-int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
-                       char **base)
-{
-    char *b = gks_strndup(name, len);
-    char *f = b ? gks_ws_file_frame(b, frame, ext) : NULL;
-    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
-    gks_free(f);
-    if (e) {
-        gks_free(b);
-        return e;
-    }
-    gks_free(*base);
-    *base = b;
     return 0;
 }
 

@@ -7,6 +7,8 @@
 #define GKS_WS_H
 #include "gks_private.h"
 #include "ws_driver.h"
+#include "gks_context.h"
+#include "gks_indev.h" /* the input part of the state list, ws->in */
 
 /* Category restrictions a function places on its workstation argument. */
 enum {
@@ -29,6 +31,8 @@ gks_ws *gks_inq_ws(Gint ws_id, Gint *err);
  * deferral from the description table). NULL on storage overflow. */
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv);
 void gks_ws_destroy(gks_ws *ws);
+/* The services gks_ws_create gives every workstation (ws->host). */
+extern const gks_ws_host gks_ws_core_host;
 
 /* OPEN WORKSTATION's file check, before the driver opens anything: the driver's file
  * (drv->file) must be a regular file or not exist yet in a writable directory (MI: an

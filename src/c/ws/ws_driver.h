@@ -4,16 +4,40 @@
  * one static const table per workstation type, designated initialisers, NULL = not
  * supported (the core supplies the default). The core decides legality and resolves
  * attributes; a driver receives primitives in NDC3 with resolved colours and only draws.
+ * This header and ws_input.h are all a driver knows of the core: it includes no header of
+ * src/c/core, and what it may ask of the core goes through gks_ws.host and
+ * gks_in_active (the CMake modules of the drivers do not see src/c/core).
  */
 #ifndef WS_DRIVER_H
 #define WS_DRIVER_H
 #include "gks_private.h"
 #include "gks.h"
-#include "gks_context.h"
 #include "ws_wdt.h"
-#include "gks_indev.h"
+#include "ws_input.h"
+#include <stddef.h>
+#include <stdint.h>
 
 #define GKS_WS_DRIVER_VERSION 1
+
+typedef struct gks_ws gks_ws;
+typedef struct gks_ws_driver gks_ws_driver;
+
+/* A GKS 3-D limit as the six numbers xmin, xmax, ymin, ymax, zmin, zmax. */
+static inline void gks_limit3_array(const Glimit3 *l, double b[6])
+{
+    b[0] = l->x_min; b[1] = l->x_max; b[2] = l->y_min;
+    b[3] = l->y_max; b[4] = l->z_min; b[5] = l->z_max;
+}
+
+/* What the core does for a driver on request (set at OPEN WORKSTATION, gks_ws.c).
+ * file_claim: a file workstation is about to create or replace the file `path` (a frame
+ * after the first, a name an ESCAPE set; frame 1 of the name opened may be passed too).
+ * 0 if no other open workstation writes or reads that file (canonical paths compared, as
+ * at OPEN); its path is then ws's for as long as ws is open. 21 if another one uses it
+ * (nothing is written), 26 if it is not a regular file or cannot be created, 300. */
+typedef struct gks_ws_host {
+    int (*file_claim)(gks_ws *ws, const char *path);
+} gks_ws_host;
 
 /* Workstation description table (ISO 7942 6.2): constant per workstation type. */
 typedef struct gks_ws_desc {
@@ -150,7 +174,8 @@ struct gks_ws {
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
-    gks_in_ws *in;                /* input device state lists (core), NULL = no input */
+    const gks_ws_host *host;      /* the core's services (above) */
+    struct gks_in_ws *in;         /* input device state lists (core's), NULL = no input */
     /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
      * when entry i is defined. Initialised from the description table's predefined
      * bundles at OPEN WORKSTATION. Pattern colour arrays are owned (gks_alloc). */
@@ -217,15 +242,14 @@ extern const gks_ws_driver gks_ws_svg_driver;
 extern const gks_ws_driver gks_ws_ps_driver;
 extern const gks_ws_driver gks_ws_eps_driver;
 #endif
-/* A file workstation is about to create or replace the file `path` (a frame after the first,
- * a name an ESCAPE set; frame 1 of the name opened may be passed too). 0 if no other open
- * workstation writes or reads that file (canonical paths compared, as at OPEN); its path is
- * then ws's for as long as ws is open. 21 if another one uses it (nothing is written), 26
- * if it is not a regular file or cannot be created, 300. Implemented in core (gks_ws.c). */
-int gks_ws_file_claim(gks_ws *ws, const char *path);
+/* gks_ws_host.file_claim of ws's core. */
+static inline int gks_ws_file_claim(gks_ws *ws, const char *path)
+{
+    return ws->host->file_claim(ws, path);
+}
 /* ESCAPE "set file name": the base name name[0..len) replaces *base (gks_alloc'd) when the
  * file of its frame `frame` (extension ext) can be claimed as above; 0, 21, 26 or 300, and
- * *base unchanged on error. Implemented in core (gks_ws.c). */
+ * *base unchanged on error (ws_file.c). */
 int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
                        char **base);
 #endif

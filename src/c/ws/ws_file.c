@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_file.c -- file names of the file workstations (ws_file.h).
+ * ws_file.c -- file names of the file workstations (ws_file.h) and the ESCAPE that sets one
+ * (gks_ws_file_rename, ws_driver.h).
  */
 #include "ws_file.h"
+#include "ws_driver.h"
 #include "gks_alloc.h"
 #include <ctype.h>
 #include <stdio.h>
@@ -38,4 +40,20 @@ char *gks_ws_file_frame(const char *base, int frame, const char *ext)
     else
         snprintf(path, n, "%s-%03d%s", base, frame, ext);
     return path;
+}
+
+int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
+                       char **base)
+{
+    char *b = gks_strndup(name, len);
+    char *f = b ? gks_ws_file_frame(b, frame, ext) : NULL;
+    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
+    gks_free(f);
+    if (e) {
+        gks_free(b);
+        return e;
+    }
+    gks_free(*base);
+    *base = b;
+    return 0;
 }

@@ -10,7 +10,7 @@
 #ifndef GKS_ATTR_H
 #define GKS_ATTR_H
 #include "gks_private.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include "gks_text_layout.h"
 
 /* The workstation's output description table (never NULL). */

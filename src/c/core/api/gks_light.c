@@ -9,7 +9,7 @@
 #include "gks_mf_record.h"
 #include "gks_state.h"
 #include "gks_ws.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include <math.h>
 
 static int unit_ok(double v) { return isfinite(v) && v >= 0 && v <= 1; }

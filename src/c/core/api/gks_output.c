@@ -730,10 +730,13 @@ static int emit_area(const norm_ctx *nc, size_t nloops, const size_t *cnt, size_
         err = 300;
         goto done;
     }
+    const double (*m)[4] = (const double (*)[4])nc->m;
     for (size_t i = 0; i < n; i++) {
-        double wc[3], h[4];
+        double wc[3], h[3];
         src_get(s, i, wc);
-        if (!to_ndc(nc, wc, h))
+        for (int k = 0; k < 3; k++) /* to_ndc inline (the same operations) */
+            h[k] = m[k][0] * wc[0] + m[k][1] * wc[1] + m[k][2] * wc[2] + m[k][3];
+        if (!(isfinite(h[0]) && isfinite(h[1]) && isfinite(h[2])))
             goto done; /* a non-finite vertex: the area is not drawn */
         inside = inside && point_visible(nc, h);
         pts[i] = (Gpoint3){ h[0], h[1], h[2] };
@@ -769,17 +772,20 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
                               .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
                               .d3 = s->d3 }))
         return;
-    int icnt_small[AREA_SMALL];
-    int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
-    if (!icnt)
-        GKS_FAIL(300, fctid);
-    for (size_t k = 0; k < nloops; k++)
-        icnt[k] = (int)cnt[k];
-    gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
-                        .n_loops = (int)nloops, .loop_counts = icnt };
-    int err = record(&nc, &sp, s, n);
-    if (icnt != icnt_small)
-        gks_free(icnt);
+    int err = 0;
+    if (nc.seg) { /* stored in the open segment */
+        int icnt_small[AREA_SMALL];
+        int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
+        if (!icnt)
+            GKS_FAIL(300, fctid);
+        for (size_t k = 0; k < nloops; k++)
+            icnt[k] = (int)cnt[k];
+        gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
+                            .n_loops = (int)nloops, .loop_counts = icnt };
+        err = record(&nc, &sp, s, n);
+        if (icnt != icnt_small)
+            gks_free(icnt);
+    }
     target t;
     target_current(&t, &nc);
     if (!err)

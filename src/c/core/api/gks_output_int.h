@@ -10,7 +10,7 @@
 #include "gks_private.h"
 #include "gks_seg_store.h"
 #include "gks_xform.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 
 typedef struct {
     double m[3][4];            /* source -> NDC3 after the segment transformation */

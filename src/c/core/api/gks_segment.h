@@ -6,7 +6,7 @@
 #ifndef GKS_SEGMENT_H
 #define GKS_SEGMENT_H
 #include "gks_private.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include "gks_seg_store.h"
 
 /* CLOSE WORKSTATION / CLEAR WORKSTATION: the segments stored on ws_id are removed from

@@ -9,7 +9,7 @@
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_state.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>

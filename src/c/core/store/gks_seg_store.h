@@ -13,7 +13,7 @@
 #ifndef GKS_SEG_H
 #define GKS_SEG_H
 #include "gks_private.h"
-#include "ws_driver.h"
+#include "gks_context.h"
 #include <stddef.h>
 
 /* What a stored primitive is: the output function that created it. */

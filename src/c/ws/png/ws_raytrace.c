@@ -20,6 +20,7 @@
 #include <stdio.h>
 #endif
 #include <limits.h>
+#include <stdatomic.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -45,9 +46,34 @@ typedef struct rt_view_rec {
     size_t nsmask, capsmask;
 } rt_view_rec;
 
+/* Asynchronous recording (see ws_rt_record): a block of records, each a rec_head and then
+ * REC_ATTR: an rt_attr (the following areas' attributes, view vi);
+ * REC_POLY: n_loops ints (padded to 8 bytes) and n_pts VRC3 points (3 doubles each). */
+#define REC_BLOCK_BYTES ((size_t)256 * 1024)
+enum { REC_ATTR = 1, REC_POLY = 2 };
+typedef struct rec_head {
+    int kind, vi, n_loops, n_pts;
+} rec_head;
+typedef struct rec_block {
+    size_t used;
+    _Alignas(double) unsigned char data[REC_BLOCK_BYTES];
+} rec_block;
+
 struct ws_rt {
     rt_view_rec view[GKS_MAX_VIEW_IND + 1];
-    size_t count;            /* tracer primitives recorded */
+    size_t count;            /* tracer primitives recorded (or queued) */
+    /* asynchronous recording: the queue (NULL: off), the block being filled, the attributes
+     * and view of the latest REC_ATTR queued (aview -1: none); the worker's side: the view
+     * record its areas go to (NULL: their surfaces failed), the first error and the areas
+     * lost since the last ws_rt_sync */
+    rt_serial *queue;
+    rec_block *blk;
+    rt_attr alast;
+    int aview;
+    int qtried;              /* rt_serial_new was asked (and said NULL: off) */
+    rt_view_rec *wvr;
+    atomic_int werr;
+    size_t wlost;
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
     int share_tiles;         /* the next frames' tiles are shared by the MPI ranks */
@@ -118,13 +144,46 @@ static int preview_end(void *user, rt_frame *f)
 ws_rt *ws_rt_new(void)
 {
     ws_rt *r = gks_calloc_array(1, sizeof(ws_rt));
-    if (r)
+    if (r) {
         rt_render_options_default(&r->opts);
+        r->aview = -1;
+    }
     return r;
+}
+
+/* Waits until every queued area is in its scene (the scenes are then as if each area had
+ * been recorded at its call). Returns the first error of the worker since the last sync
+ * (300 or 308) or 0; its areas are not counted. */
+static int ws_rt_sync(ws_rt *r)
+{
+    if (r->queue) {
+        if (r->blk && r->blk->used) {
+            rt_serial_push(r->queue, r->blk);
+            r->blk = NULL;
+        }
+        rt_serial_drain(r->queue);
+        r->count -= r->wlost;
+        r->wlost = 0;
+        r->aview = -1; /* the synchronous path may change the views' latest surfaces */
+        r->wvr = NULL;
+    }
+    return atomic_exchange(&r->werr, 0);
+}
+
+/* Stops the asynchronous recording (after a sync); it starts again at the next area. */
+static void queue_stop(ws_rt *r)
+{
+    atomic_store(&r->werr, ws_rt_sync(r)); /* a worker's error stays to be reported */
+    rt_serial_free(r->queue);
+    r->queue = NULL;
+    r->qtried = 0;
+    gks_free(r->blk);
+    r->blk = NULL;
 }
 
 void ws_rt_reset(ws_rt *r)
 {
+    queue_stop(r);
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++) {
         rt_view_rec *vr = &r->view[v];
         rt_scene_free(vr->sc);
@@ -132,6 +191,7 @@ void ws_rt_reset(ws_rt *r)
         memset(vr, 0, sizeof *vr);
     }
     r->count = 0;
+    atomic_store(&r->werr, 0);
 }
 
 void ws_rt_free(ws_rt *r)
@@ -160,6 +220,29 @@ static void xf_point(const Gmatrix3 m, double x, double y, double z, double o[3]
         w = 1;
     for (int i = 0; i < 3; i++)
         o[i] = (m[i][0] * x + m[i][1] * y + m[i][2] * z + m[i][3]) / w;
+}
+
+/* Whether m's last row is (0, 0, 0, 1) (the usual view orientation): then xf_point's w is 1
+ * for every point (0 times a finite coordinate is 0; a non-finite one gives NaN, which it
+ * also takes as 1), and xf_points gives the same values without the divisions. */
+static int xf_affine(const Gmatrix3 m)
+{
+    return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1;
+}
+
+/* xf_point of n points p (3 doubles each) into o (may be p). */
+static void xf_points(const Gmatrix3 m, const double *p, size_t n, double *o)
+{
+    if (!xf_affine(m)) {
+        for (size_t i = 0; i < n; i++)
+            xf_point(m, p[3 * i], p[3 * i + 1], p[3 * i + 2], o + 3 * i);
+        return;
+    }
+    for (size_t i = 0; i < n; i++) {
+        const double x = p[3 * i], y = p[3 * i + 1], z = p[3 * i + 2];
+        for (int k = 0; k < 3; k++)
+            o[3 * i + k] = m[k][0] * x + m[k][1] * y + m[k][2] * z + m[k][3];
+    }
 }
 
 static void xf_dir(const Gmatrix3 m, double x, double y, double z, double o[3])
@@ -442,6 +525,16 @@ static int push_far_polygon(ws_rt *r, const gks_ws *ws, rt_view_rec *vr, const G
     return 0;
 }
 
+/* The largest |v[i]| of n values (NaN ignored, as fmax does). */
+static double max_abs(const double *v, size_t n)
+{
+    double big = 0.0;
+    for (size_t i = 0; i < n; i++)
+        if (fabs(v[i]) > big)
+            big = fabs(v[i]);
+    return big;
+}
+
 /* Records a polygon of n_loops loops (counts >= 3) with NDC3 points xyz (3 doubles each;
  * overwritten with their VRC3 images) in view vi; vn (NDC3 unit normals) and vc (colours),
  * 3 doubles per point each, or NULL; vn is overwritten with the VRC3 normals (the inverse
@@ -455,10 +548,7 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
     if (e || !vr)
         return e;
     const Gview_rep3 *v = &ws->views[vi];
-    for (size_t i = 0; i < n_pts; i++) {
-        double *q = xyz + 3 * i;
-        xf_point(v->ori_matrix, q[0], q[1], q[2], q);
-    }
+    xf_points(v->ori_matrix, xyz, n_pts, xyz);
     double nm[3][3];
     if (vn && gks_xform_normal_matrix(v->ori_matrix, nm))
         vn = NULL; /* a singular view orientation: no usable normals */
@@ -469,10 +559,7 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
     const rt_vertex_data vd = { vn, vc };
     /* Beyond the tracer's range (it would drop the polygon, the classic modes draw it):
      * clipped to a box around the display volume. Other polygons go in unchanged. */
-    double big = 0.0;
-    for (size_t i = 0; i < 3 * n_pts; i++)
-        big = fmax(big, fabs(xyz[i]));
-    if (big > RT_COORD_MAX)
+    if (max_abs(xyz, 3 * n_pts) > RT_COORD_MAX)
         return push_far_polygon(r, ws, vr, v, n_loops, counts, n_pts, xyz, &vd);
     int id = rt_scene_add_polygon_data(vr->sc, n_loops, counts, xyz, &vd, vr->f, vr->b);
     if (id < 0)
@@ -725,8 +812,153 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     return record_cells_clipped(r, ws, prim, P, U, V);
 }
 
+/* ---- asynchronous recording ---------------------------------------------------------- */
+
+static size_t rec_pad(size_t n) { return (n + 7) & ~(size_t)7; }
+
+/* The worker's side: the records of block item into the views' scenes. rt_serial runs the
+ * blocks one at a time in queue order, so the scenes get the areas in call order, with the
+ * surfaces the synchronous path would have made. */
+static void rec_run(void *user, void *item)
+{
+    ws_rt *r = user;
+    rec_block *b = item;
+    size_t off = 0;
+    while (off < b->used) {
+        const rec_head *h = (const rec_head *)(const void *)(b->data + off);
+        off += sizeof *h;
+        int e = 0;
+        if (h->kind == REC_ATTR) {
+            rt_attr a;
+            memcpy(&a, b->data + off, sizeof a);
+            off += rec_pad(sizeof a);
+            e = view_surfaces(r, h->vi, &a, &r->wvr);
+        } else {
+            const int *counts = (const int *)(const void *)(b->data + off);
+            off += rec_pad((size_t)h->n_loops * sizeof(int));
+            const double *xyz = (const double *)(const void *)(b->data + off);
+            off += (size_t)h->n_pts * 3 * sizeof(double);
+            rt_view_rec *vr = r->wvr;
+            int id = vr ? rt_scene_add_polygon(vr->sc, h->n_loops, counts, xyz, vr->f, vr->b)
+                        : RT_ERR_NOMEM;
+            if (id < 0) {
+                e = gks_err_of_rt(id);
+                r->wlost++;
+            }
+        }
+        int none = 0;
+        if (e)
+            atomic_compare_exchange_strong(&r->werr, &none, e);
+    }
+    gks_free(b);
+}
+
+/* The asynchronous path of a FILL AREA (SET) without vertex data: its loops of 3 or more
+ * points go to VRC3 here, on the caller's thread, into the block being filled; a full block
+ * goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records it
+ * synchronously, which also drops what this path would drop) or 300. */
+static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
+{
+    if (!r->queue) {
+        if (r->qtried)
+            return 0;
+        r->qtried = 1;
+        r->queue = rt_serial_new(r->opts.threads, rec_run, r);
+        if (!r->queue)
+            return 0; /* one thread (or no storage for the queue): synchronous */
+    }
+    const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
+    if ((smooth && (prim->vnormals || prim->vcolours)) || prim->n_points < 3 ||
+        prim->n_loops < 1 || !prim->loop_counts || !prim->pts)
+        return 0;
+    size_t total = 0, np = 0;
+    int nl = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        int m = prim->loop_counts[k];
+        if (m < 0)
+            return 0;
+        total += (size_t)m;
+        if (m >= 3) {
+            nl++;
+            np += (size_t)m;
+        }
+    }
+    if (total != (size_t)prim->n_points || nl == 0)
+        return 0;
+    const size_t attr_bytes = sizeof(rec_head) + rec_pad(sizeof(rt_attr));
+    const size_t cbytes = rec_pad((size_t)nl * sizeof(int));
+    if (np > REC_BLOCK_BYTES / 24 || sizeof(rec_head) + cbytes + 24 * np + attr_bytes > REC_BLOCK_BYTES)
+        return 0; /* a large area: synchronous */
+    const size_t need = sizeof(rec_head) + cbytes + 24 * np;
+    const int vi = clamp_view(prim->view_ind);
+    const rt_attr a = attr_of(prim);
+    const int new_attr = r->aview != vi || !same_attr(&r->alast, &a);
+    const size_t abytes = new_attr ? attr_bytes : 0;
+    if (r->blk && r->blk->used + abytes + need > REC_BLOCK_BYTES) {
+        rt_serial_push(r->queue, r->blk);
+        r->blk = NULL;
+    }
+    if (!r->blk) {
+        r->blk = gks_alloc_array(1, sizeof *r->blk);
+        if (!r->blk)
+            return 300;
+        r->blk->used = 0;
+    }
+    unsigned char *at = r->blk->data + r->blk->used;
+    rec_head *h = (rec_head *)(void *)(at + abytes);
+    int *counts = (int *)(void *)(h + 1);
+    double *xyz = (double *)(void *)((unsigned char *)counts + cbytes);
+    const Gmatrix3 *ori = &ws->views[vi].ori_matrix;
+    size_t src = 0, q = 0;
+    nl = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        if (m >= 3) {
+            counts[nl++] = (int)m;
+            for (size_t i = 0; i < m; i++, q += 3) {
+                const Gpoint3 *p = &prim->pts[src + i];
+                xyz[q] = p->x;
+                xyz[q + 1] = p->y;
+                xyz[q + 2] = p->z;
+            }
+        }
+        src += m;
+    }
+    xf_points(*ori, xyz, np, xyz);
+    if (max_abs(xyz, 3 * np) > RT_COORD_MAX)
+        return 0; /* beyond the tracer's range: the synchronous path clips it */
+    if (new_attr) {
+        *(rec_head *)(void *)at = (rec_head){ REC_ATTR, vi, 0, 0 };
+        memcpy(at + sizeof(rec_head), &a, sizeof a);
+        r->alast = a;
+        r->aview = vi;
+    }
+    *h = (rec_head){ REC_POLY, vi, nl, (int)np };
+    r->blk->used += abytes + need;
+    r->count++;
+    return 1;
+}
+
+/* With two or more threads (GESC_RT_THREADS; 0: online CPUs) a FILL AREA (SET) without vertex
+ * data goes to the asynchronous recording (queue_fill_area): a worker of the tracer's thread
+ * pool adds it to its view's scene while the application goes on. Everything else (cell
+ * arrays, smooth areas, areas beyond the coordinate range, large areas), UPDATE, the ESCAPEs
+ * and the reset first wait for the queued areas (ws_rt_sync), so every scene holds the same
+ * primitives in the same order as with one thread. The checks that decide an area's fate
+ * are made here at the call; only a storage failure of the worker comes later: it is reported
+ * (300) by the next area or frame of this workstation, that area not recorded. */
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
+    if (prim->kind == GKS_PRIM_FILL_AREA) {
+        if (atomic_load_explicit(&r->werr, memory_order_relaxed))
+            return ws_rt_sync(r);
+        int q = queue_fill_area(r, ws, prim);
+        if (q)
+            return q == 1 ? 0 : q;
+    }
+    int se = ws_rt_sync(r);
+    if (se)
+        return se;
     rt_view_rec *vr = &r->view[clamp_view(prim->view_ind)];
     const int n0 = rt_scene_count(vr->sc);
     const size_t count = r->count;
@@ -1001,6 +1233,9 @@ done:
 
 int ws_rt_render(ws_rt *r, const gks_ws *ws, const double wsm[4][4], gks_raster_fb *fb)
 {
+    int se = ws_rt_sync(r);
+    if (se)
+        return se;
     if (!r->count)
         return 0;
     rt_stats sum;
@@ -1069,6 +1304,7 @@ static int escape_samples(ws_rt *r, const Gescape_in_data *in)
 
 int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
+    queue_stop(r); /* queued areas in; the queue follows the (new) thread count */
     if (func_id > GESC_RT_CLIP_SECONDARY || func_id < GESC_RT_SPD)
         return 180;
     if (func_id == GESC_RT_STATS)

@@ -185,11 +185,11 @@ static void pick_echo(x11_ws *x, const gks_in_active_dev *d)
 {
     double dc[3] = { x->mx + 0.5, x->h - x->my - 0.5, 0 };
     Gpick p;
-    if (!gks_in_pick_at(x->ws, dc, &p))
+    if (!x->act.pick_at || !x->act.pick_at(x->ws, dc, &p))
         return;
     XSetForeground(x->dpy, x->gc, HIGHLIGHT);
     XSetLineAttributes(x->dpy, x->gc, 3, LineSolid, CapRound, JoinRound);
-    gks_in_seg_outline(x->ws, p.seg_name, d->pet == 2 ? p.pick_id : -1, outline_prim, x);
+    x->act.seg_outline(x->ws, p.seg_name, d->pet == 2 ? p.pick_id : -1, outline_prim, x);
     XSetLineAttributes(x->dpy, x->gc, 0, LineSolid, CapButt, JoinMiter);
 }
 
