@@ -2,7 +2,7 @@
 /*
  * gks_attr.c -- primitive attributes (ISO 7942 5.4; GKS-3D edge, pattern and HLHSR
  * attributes): the individual setters, the aspect source flags, the workstation
- * representations (SET ... REPRESENTATION) and the resolution of attributes for one
+ * representations (SET ... REPRESENTATION, SET COLOUR REPRESENTATION) and the resolution of attributes for one
  * workstation at dispatch (gks_attr.h).
  */
 #include "gks_attr.h"
@@ -371,6 +371,28 @@ GKS_API void gset_edge_rep(Gint ws_id, Gint ind, const Gedge_bundle *rep)
     ws->edge_def[ind] = 1;
     GKS_MF_WS(GFN_SEDR, ws_id, GKSM_ITEM_EDGE_REP, "iiiri",
               ind, rep->flag, rep->type, rep->width, rep->colr_ind);
+}
+
+GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
+{
+    if (gks_check_state(GFN_SCR))
+        return;
+    gks_ws *ws = gks_ws_checked(GFN_SCR, ws_id,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return;
+    if (colr_ind < 0 || colr_ind >= ws->drv->desc->n_colr)
+        GKS_FAIL(93, GFN_SCR);
+    if (!colr_rep)
+        GKS_FAIL(96, GFN_SCR);
+    const Grgb *c = &colr_rep->rgb;
+    if (!(c->red >= 0 && c->red <= 1 && c->green >= 0 && c->green <= 1 && c->blue >= 0 &&
+          c->blue <= 1))
+        GKS_FAIL(96, GFN_SCR);
+    ws->colr[colr_ind] = *c;
+    ws->colr_defined[colr_ind] = 1;
+    GKS_MF_WS(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green,
+              c->blue);
 }
 
 /* ---------------------------------------------------------------- resolution */

@@ -195,37 +195,8 @@ GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size 
     disp_size->size_raster = (Gint_size){ d->raster_x, d->raster_y };
 }
 
-GKS_API void ginq_cur_norm_tran_num(Gint *err_ind, Gint *norm_tran_num)
-{
-    GKS_INQ_ARGS(err_ind, norm_tran_num);
-    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
-        *norm_tran_num = gks_ctx()->sl->cur_tnr;
-}
 
-GKS_API void ginq_norm_tran(Gint num, Gint *err_ind, Gtran *norm_tran)
-{
-    GKS_INQ_ARGS(err_ind, norm_tran);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    if (num < 0 || num > GKS_MAX_NORM_TRAN) {
-        *err_ind = 50;
-        return;
-    }
-    const gks_norm_tran *t = &gks_ctx()->sl->tran[num];
-    norm_tran->win = (Glimit){ t->win.x_min, t->win.x_max, t->win.y_min, t->win.y_max };
-    norm_tran->vp = (Glimit){ t->vp.x_min, t->vp.x_max, t->vp.y_min, t->vp.y_max };
-}
 
-GKS_API void ginq_clip(Gint *err_ind, Gclip *clip)
-{
-    GKS_INQ_ARGS(err_ind, clip);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    const gks_state_list *sl = gks_ctx()->sl;
-    const Glimit3 *v = &sl->tran[sl->cur_tnr].vp;
-    clip->clip_ind = sl->clip_ind;
-    clip->clip_rect = (Glimit){ v->x_min, v->x_max, v->y_min, v->y_max };
-}
 
 GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
                            Gcolr_rep *colr_rep)
@@ -250,19 +221,3 @@ GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_
     colr_rep->rgb = c;
 }
 
-GKS_API void ginq_ws_tran(Gint ws_id, Gint *err_ind, Gupd_st *ws_tran_upd_st,
-                          Glimit *req_ws_win, Glimit *cur_ws_win,
-                          Glimit *req_ws_vp, Glimit *cur_ws_vp)
-{
-    GKS_INQ_ARGS(err_ind, ws_tran_upd_st, req_ws_win, cur_ws_win, req_ws_vp, cur_ws_vp);
-    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
-    if (!ws)
-        return;
-#define XY(l) ((Glimit){ (l).x_min, (l).x_max, (l).y_min, (l).y_max })
-    *ws_tran_upd_st = ws->tran_upd_st;
-    *req_ws_win = XY(ws->req_win);
-    *cur_ws_win = XY(ws->cur_win);
-    *req_ws_vp = XY(ws->req_vp);
-    *cur_ws_vp = XY(ws->cur_vp);
-#undef XY
-}

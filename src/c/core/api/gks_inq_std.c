@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * gks_inq_std.c -- the remaining inquiry functions of ISO 7942 and ISO 8805 in their
- * ISO 8651-4 form: current attribute sets, pattern vectors, 3-D normalization and
- * clipping, colour facilities and indices, dynamic modification and default deferral
- * entries of the description tables, GKS-3D view and HLHSR facilities, GDP entries,
+ * ISO 8651-4 form: current attribute sets, pattern vectors, colour facilities and
+ * indices, dynamic modification and default deferral entries of the description tables, GKS-3D view and HLHSR facilities, GDP entries,
  * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
  * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
  */
@@ -328,29 +327,7 @@ GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *p)
     *p = r;
 }
 
-GKS_API void ginq_norm_tran3(Gint num, Gint *err_ind, Gtran3 *norm_tran)
-{
-    GKS_INQ_ARGS(err_ind, norm_tran);
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
-        return;
-    if (num < 0 || num > GKS_MAX_NORM_TRAN) {
-        *err_ind = 50;
-        return;
-    }
-    const gks_norm_tran *t = &gks_ctx()->sl->tran[num];
-    *norm_tran = (Gtran3){ t->win, t->vp };
-}
 
-GKS_API void ginq_clip3(Gint *err_ind, Gclip3 *clip)
-{
-    GKS_INQ_ARGS(err_ind, clip);
-    *err_ind = gks_inq_state(GKS_S_OPEN);
-    if (*err_ind)
-        return;
-    const gks_state_list *sl = gks_ctx()->sl;
-    *clip = (Gclip3){ sl->clip_ind, sl->tran[sl->cur_tnr].vp };
-}
 
 GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs)
 {

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_view.c -- GKS-3D viewing and HLHSR functions: SET WINDOW 3, SET VIEWPORT 3,
- * SET VIEW INDEX, SET VIEW REPRESENTATION 3, SET HLHSR MODE, and their inquiries.
+ * gks_view.c -- GKS-3D viewing and HLHSR functions: SET VIEW INDEX, SET VIEW
+ * REPRESENTATION 3, SET HLHSR MODE, and their inquiries (SET WINDOW 3 and SET VIEWPORT 3
+ * are in gks_transform.c).
  */
 #include "gks_error.h"
 #include "gks_mf_record.h"
@@ -10,36 +11,7 @@
 #include "gks_xform.h"
 #include <math.h>
 
-GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
-{
-    double b[6];
-    if (gks_check_state(GFN_SW3))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SW3);
-    if (!win)
-        GKS_FAIL(51, GFN_SW3);
-    gks_limit3_array(win, b);
-    if (gks_xform_check_window3(b))
-        GKS_FAIL(51, GFN_SW3);
-    gks_ctx()->sl->tran[tran_num].win = *win;
-}
 
-GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
-{
-    double b[6];
-    if (gks_check_state(GFN_SV3))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SV3);
-    if (!vp)
-        GKS_FAIL(51, GFN_SV3);
-    gks_limit3_array(vp, b);
-    int err = gks_xform_check_viewport3(b); /* 51, then 52 */
-    if (err)
-        GKS_FAIL(err, GFN_SV3);
-    gks_ctx()->sl->tran[tran_num].vp = *vp;
-}
 
 GKS_API void gset_view_ind(Gint view_ind)
 {
