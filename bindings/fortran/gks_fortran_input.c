@@ -16,6 +16,7 @@
  * blank-padded; output arrays get at most their declared size (N).
  */
 #include "gks_binding.h"
+#include "gks_rec.h"
 #include "gks_fortran.h"
 #include <stdint.h>
 #include <stdio.h>
@@ -873,45 +874,6 @@ FAPI void FNAME(gprec, GPREC)(const fint *il, const fint *ia, const fint *rl, co
     *errind = 0;
 }
 
-/* A decimal ended by ',' at *p (before end); -1 if there is none. */
-static int rec_get_long(const char **p, const char *end, long *v)
-{
-    char t[32];
-    size_t n = 0;
-    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
-        t[n] = (*p)[n];
-        n++;
-    }
-    if (n == 0 || *p + n >= end || (*p)[n] != ',')
-        return -1;
-    t[n] = '\0';
-    char *e;
-    *v = strtol(t, &e, 10);
-    if (*e)
-        return -1;
-    *p += n + 1;
-    return 0;
-}
-
-static int rec_get_real(const char **p, const char *end, double *v)
-{
-    char t[40];
-    size_t n = 0;
-    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
-        t[n] = (*p)[n];
-        n++;
-    }
-    if (n == 0 || *p + n >= end || (*p)[n] != ',')
-        return -1;
-    t[n] = '\0';
-    char *e;
-    *v = strtod(t, &e);
-    if (*e)
-        return -1;
-    *p += n + 1;
-    return 0;
-}
-
 /* GUREC(LDR, DATREC, IIL, IRL, ISL, ERRIND, IL, IA, RL, RA, SL, LSTR, STR): IIL, IRL, ISL
  * are the sizes of IA, RA, STR/LSTR; IL, RL, SL the counts in the record (at most the
  * sizes are stored: ERRIND 2001 if any count exceeds its size, a string its LEN).
@@ -921,23 +883,17 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
                               fint *ia, fint *rl, freal *ra, fint *sl, fint *lstr, char *str,
                               size_t datrec_len, size_t str_len)
 {
-    const char *p = datrec, *end = datrec + (*ldr > 0 ? (size_t)*ldr * datrec_len : 0);
-    long n[3];
+    gks_rec_reader r;
     *il = *rl = *sl = 0;
-    if (end - p < 4 || memcmp(p, REC_MAGIC, 4) != 0) {
+    if (gks_rec_begin(&r, datrec, *ldr > 0 ? (size_t)*ldr * datrec_len : 0)) {
         *errind = 2003;
         return;
     }
-    p += 4;
-    for (int k = 0; k < 3; k++)
-        if (rec_get_long(&p, end, &n[k]) || n[k] < 0 || n[k] > 1000000) {
-            *errind = 2003;
-            return;
-        }
+    long n[3] = { r.il, r.rl, r.sl };
     fint e = 0;
     for (long i = 0; i < n[0]; i++) {
         long v;
-        if (rec_get_long(&p, end, &v)) {
+        if (gks_rec_long(&r, &v)) {
             *errind = 2003;
             return;
         }
@@ -946,7 +902,7 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
     }
     for (long i = 0; i < n[1]; i++) {
         double v;
-        if (rec_get_real(&p, end, &v)) {
+        if (gks_rec_real(&r, &v)) {
             *errind = 2003;
             return;
         }
@@ -959,24 +915,24 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
         return;
     }
     for (long i = 0; i < n[2]; i++)
-        if (rec_get_long(&p, end, &lens[i]) || lens[i] < 0) {
+        if (gks_rec_long(&r, &lens[i]) || lens[i] < 0) {
             *errind = 2003;
             return;
         }
     for (long i = 0; i < n[2]; i++) {
-        if (end - p < lens[i]) {
+        if (r.end - r.p < lens[i]) {
             *errind = 2003;
             return;
         }
         if (i < *isl) {
             size_t k = (size_t)lens[i] < str_len ? (size_t)lens[i] : str_len;
-            memcpy(str + (size_t)i * str_len, p, k);
+            memcpy(str + (size_t)i * str_len, r.p, k);
             memset(str + (size_t)i * str_len + k, ' ', str_len - k);
             lstr[i] = (fint)k;
             if ((size_t)lens[i] > str_len)
                 e = 2001;
         }
-        p += lens[i];
+        r.p += lens[i];
     }
     if (n[0] > *iil || n[1] > *irl || n[2] > *isl)
         e = 2001;

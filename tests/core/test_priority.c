@@ -112,12 +112,57 @@ static void test_ws_window3(void **u)
     reset_gks();
 }
 
+/* The priority lists answer by the one list rule of the other list inquiries (they had a
+ * copier of their own that refused start 0 on an empty list): part from the 0-based start,
+ * as much as the application's list holds, the whole length; 2002 for a start outside.
+ * An empty list (here: no segments) accepts start 0. */
+static void test_list_rule(void **u)
+{
+    (void)u;
+    enter_state(GST_WSOP);
+    Gint buf[4] = { -1, -1, -1, -1 }, err = -1, len = -1;
+    Gint_list l = { 0, buf };
+    ginq_list_norm_tran_nums(2, 30, &err, &l, &len); /* the last two of 32 */
+    assert_int_equal(err, 0);
+    assert_int_equal(len, 32);
+    assert_int_equal(l.num_ints, 2);
+    assert_int_equal(buf[0], 30);
+    assert_int_equal(buf[1], 31);
+    assert_int_equal(buf[2], -1);
+    ginq_list_norm_tran_nums(4, 32, &err, &l, &len);
+    assert_int_equal(err, 2002);
+    ginq_list_norm_tran_nums(4, -1, &err, &l, &len);
+    assert_int_equal(err, 2002);
+    ginq_list_view_inds(1, 1, GKS_MAX_VIEW_IND, &err, &l, &len);
+    assert_int_equal(err, 0);
+    assert_int_equal(len, GKS_MAX_VIEW_IND + 1);
+    assert_int_equal(l.num_ints, 1);
+    assert_int_equal(buf[0], GKS_MAX_VIEW_IND);
+    ginq_list_view_inds(1, 1, GKS_MAX_VIEW_IND + 1, &err, &l, &len);
+    assert_int_equal(err, 2002);
+    l.num_ints = -1;
+    ginq_set_seg_names(4, 0, &err, &l, &len); /* empty: start 0 gives the length */
+    assert_int_equal(err, 0);
+    assert_int_equal(len, 0);
+    assert_int_equal(l.num_ints, 0);
+    ginq_set_seg_names(4, 1, &err, &l, &len);
+    assert_int_equal(err, 2002);
+    ginq_set_seg_names_ws(1, 4, 0, &err, &l, &len);
+    assert_int_equal(err, 0);
+    assert_int_equal(len, 0);
+    ginq_set_seg_names_ws(1, 4, 1, &err, &l, &len);
+    assert_int_equal(err, 2002);
+    assert_int_equal(n_captured, 0); /* inquiries report nothing */
+    reset_gks();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_viewport_priority),
         cmocka_unit_test(test_view_priority),
         cmocka_unit_test(test_ws_window3),
+        cmocka_unit_test(test_list_rule),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -61,6 +61,23 @@ void *gks_realloc_array(void *p, size_t n, size_t size)
     return realloc(p, bytes);
 }
 
+int gks_grow(void *arrp, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap)
+        return 0;
+    void *p; /* *arrp is a T *: copied as bytes, not read through a void ** */
+    memcpy(&p, arrp, sizeof p);
+    size_t c = *cap > 0 ? *cap : 16;
+    while (c < need)
+        c = c > SIZE_MAX / 2 ? need : 2 * c;
+    void *q = gks_realloc_array(p, c, size);
+    if (!q)
+        return 300;
+    memcpy(arrp, &q, sizeof q);
+    *cap = c;
+    return 0;
+}
+
 char *gks_strndup(const char *s, size_t n)
 {
     size_t len = strnlen(s, n);

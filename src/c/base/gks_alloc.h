@@ -16,6 +16,11 @@ void *gks_alloc_array(size_t n, size_t size);
 void *gks_calloc_array(size_t n, size_t size);
 /* realloc(p, n * size) with overflow check; on failure p is untouched and NULL returned. */
 void *gks_realloc_array(void *p, size_t n, size_t size);
+/* The one growable-array step. arrp is the address of an array pointer (T **) whose array
+ * has room for *cap elements of size: when need > *cap it is reallocated, the capacity
+ * doubling from 16 until it holds need. 0 on success; 300 (storage overflow) on size
+ * overflow or exhaustion, the array and *cap then untouched. */
+int gks_grow(void *arrp, size_t *cap, size_t need, size_t size);
 /* strdup through the funnel. */
 char *gks_strdup(const char *s);
 /* strndup through the funnel (copies at most n bytes, always terminates). */

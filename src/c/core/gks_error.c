@@ -6,6 +6,7 @@
 #include "gks_binding.h"
 #include "gks_context.h"
 #include "gks_state.h"
+#include <limits.h>
 #include <stdio.h>
 
 typedef struct { int num; const char *msg; } err_entry;
@@ -96,6 +97,43 @@ int gks_inq_begin(Gint *err_ind, unsigned mask)
         return -1;
     *err_ind = gks_inq_state(mask);
     return *err_ind;
+}
+
+int gks_list_start(Gint start, Gint n)
+{
+    return start < 0 || (start >= n && !(start == 0 && n == 0)) ? 2002 : 0;
+}
+
+gks_list_out gks_list_begin(Gint_list *out, Gint cap, Gint start)
+{
+    return (gks_list_out){ .dst = out ? out->ints : NULL, .num = out ? &out->num_ints : NULL,
+                           .cap = cap, .start = start };
+}
+
+void gks_list_put(gks_list_out *w, Gint v)
+{
+    if (w->start >= 0 && w->n >= w->start && w->k < w->cap && w->dst)
+        w->dst[w->k++] = v;
+    if (w->n < INT_MAX)
+        w->n++;
+}
+
+int gks_list_end(gks_list_out *w, Gint *len)
+{
+    if (len)
+        *len = w->n;
+    int e = gks_list_start(w->start, w->n);
+    if (!e && w->num)
+        *w->num = w->k;
+    return e;
+}
+
+int gks_list_copy(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
+{
+    gks_list_out w = gks_list_begin(out, cap, start);
+    for (int i = 0; i < n; i++)
+        gks_list_put(&w, list[i]);
+    return gks_list_end(&w, len);
 }
 
 int gks_inq_args(Gint *err_ind, int n, const void *const *p)

@@ -55,6 +55,26 @@ int gks_inq_args(Gint *err_ind, int n, const void *const *p);
             return;                                                                        \
     } while (0)
 
+/* The list rule of every list inquiry (docs/BINDING.md): the answer is the part of the
+ * list from the 0-based start position, as much as the application's list holds, and the
+ * list's length. A start position outside a list of n elements is 2002, except that an
+ * empty list accepts start 0 (only its length is returned). Returns 0 or 2002. */
+int gks_list_start(Gint start, Gint n);
+
+/* A list answer written element by element (lists filtered from a table): put every
+ * element in order, then end. Elements from position start are stored in dst (room for
+ * cap; dst may be NULL) and counted in *num (if num is not NULL). */
+typedef struct {
+    Gint *dst, *num;
+    Gint cap, start, n, k;
+} gks_list_out;
+gks_list_out gks_list_begin(Gint_list *out, Gint cap, Gint start);
+void gks_list_put(gks_list_out *w, Gint v);
+/* *len = the elements put; the stored count to *num; returns gks_list_start(start, n). */
+int gks_list_end(gks_list_out *w, Gint *len);
+/* The whole list[0..n) answered under the list rule: gks_list_end of putting each. */
+int gks_list_copy(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len);
+
 /* Report as the caller's last action and return (from a void function / with `val`):
  * returning is right whatever the handler did. */
 #define GKS_FAIL(err, fct)                                                                 \

@@ -217,7 +217,7 @@ struct gks_in_script {
     int eof;
     gks_in_raw ev;
     double (*pts)[3];         /* its points */
-    int cap_pts;
+    size_t cap_pts;
     char str[GKS_IN_STRING_MAX + 1];
 };
 
@@ -258,16 +258,9 @@ static const struct { const char *word; Gin_class cls; int dim; } script_words[]
 
 static int add_point(struct gks_in_script *s, const double p[3])
 {
-    if (s->ev.n == s->cap_pts) {
-        int cap = s->cap_pts ? 2 * s->cap_pts : 16;
-        if (cap > GKS_IN_STROKE_MAX)
-            return -1;
-        double (*np)[3] = gks_realloc_array(s->pts, (size_t)cap, sizeof *np);
-        if (!np)
-            return -1;
-        s->pts = np;
-        s->cap_pts = cap;
-    }
+    if (s->ev.n >= GKS_IN_STROKE_MAX ||
+        gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
+        return -1;
     memcpy(s->pts[s->ev.n++], p, sizeof s->pts[0]);
     return 0;
 }

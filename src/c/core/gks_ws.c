@@ -244,15 +244,10 @@ static int file_claim(gks_ws *ws, const char *path)
         gks_free(canon);
         return 21;
     }
-    if (ws->n_files == ws->cap_files) {
-        int cap = ws->cap_files ? 2 * ws->cap_files : 4;
-        char **f = cap > 0 ? gks_realloc_array(ws->files, (size_t)cap, sizeof *f) : NULL;
-        if (!f) {
-            gks_free(canon);
-            return 300;
-        }
-        ws->files = f;
-        ws->cap_files = cap;
+    if (ws->n_files == INT_MAX ||
+        gks_grow(&ws->files, &ws->cap_files, (size_t)ws->n_files + 1, sizeof *ws->files)) {
+        gks_free(canon);
+        return 300;
     }
     ws->files[ws->n_files++] = canon;
     return 0;

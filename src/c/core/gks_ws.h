@@ -26,6 +26,13 @@ gks_ws *gks_ws_checked(int fctid, int ws_id, unsigned cat_flags);
  * *err set to 7 (state), 20 (invalid id) or 25 (not open); NULL when err is NULL. Never
  * calls the handler. */
 gks_ws *gks_inq_ws(Gint ws_id, Gint *err);
+/* gks_inq_ws for the inquiries of an output workstation's tables: also 33 (MI), 35 (INPUT),
+ * 36 (WISS). */
+gks_ws *gks_inq_out_ws(Gint ws_id, Gint *err);
+/* For inquiries of a workstation description table: the table of ws_type, or NULL with
+ * *err set to 8 (state), 22 (invalid type), 23 (type does not exist) and, with out = 1,
+ * 39 (not of category OUTPUT or OUTIN). */
+const gks_ws_desc *gks_inq_ws_type(Gint ws_type, int out, Gint *err);
 
 /* Create the state list of a workstation being opened (colour table, transformation,
  * deferral from the description table). NULL on storage overflow. */

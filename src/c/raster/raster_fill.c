@@ -726,7 +726,8 @@ int gks_raster_fill_area(gks_raster_fb *fb, int n_loops, const int *counts,
 
 /* Cell array paint and plane of the parallelogram; 0 when it is degenerate. */
 static int cell_setup(paint *p, const gks_raster_pt *o, const gks_raster_pt *pu,
-                      const gks_raster_pt *pv, int nx, int ny, const float *rgb, double *zw)
+                      const gks_raster_pt *pv, int nx, int ny, const float *rgb, double *zw,
+                      double uv[4])
 {
     double s = p->fb->ss;
     p->kind = PAINT_CELL;
@@ -737,6 +738,7 @@ static int cell_setup(paint *p, const gks_raster_pt *o, const gks_raster_pt *pu,
     p->oy = o->y * s;
     double ux = (pu->x - o->x) * s, uy = (pu->y - o->y) * s;
     double vx = (pv->x - o->x) * s, vy = (pv->y - o->y) * s;
+    uv[0] = ux, uv[1] = uy, uv[2] = vx, uv[3] = vy;
     if (!basis_inverse(ux, uy, vx, vy, p->m))
         return 0;
     double uz = pu->z - o->z, vz = pv->z - o->z;
@@ -745,6 +747,17 @@ static int cell_setup(paint *p, const gks_raster_pt *o, const gks_raster_pt *pu,
               fmin(fmin(o->z, pu->z), fmin(pv->z, *zw)),
               fmax(fmax(o->z, pu->z), fmax(pv->z, *zw)));
     return 1;
+}
+
+/* A cell array paints solid cells: of fill only the z mode and bias count. */
+static int cell_paint_init(paint *p, gks_raster_fb *fb, const gks_raster_fill *fill)
+{
+    gks_raster_fill f = {.style = GKS_RASTER_SOLID};
+    if (fill) {
+        f.zmode = fill->zmode;
+        f.zbias = fill->zbias;
+    }
+    return paint_init(p, fb, &f);
 }
 
 int gks_raster_cell_array_clipped(gks_raster_fb *fb, const gks_raster_pt *o,
@@ -762,20 +775,15 @@ int gks_raster_cell_array_clipped(gks_raster_fb *fb, const gks_raster_pt *o,
     }
     if (total && !pts)
         return GKS_RASTER_E_ARG;
-    gks_raster_fill f = {.style = GKS_RASTER_SOLID};
-    if (fill) {
-        f.zmode = fill->zmode;
-        f.zbias = fill->zbias;
-    }
     paint p;
-    int rc = paint_init(&p, fb, &f);
+    int rc = cell_paint_init(&p, fb, fill);
     if (rc != GKS_RASTER_OK)
         return rc;
     if (!pts_finite(o, 1) || !pts_finite(pu, 1) || !pts_finite(pv, 1) ||
         !pts_finite(pts, total))
         return GKS_RASTER_E_ARG;
-    double zw;
-    if (total < 3 || !cell_setup(&p, o, pu, pv, nx, ny, rgb, &zw))
+    double zw, uv[4];
+    if (total < 3 || !cell_setup(&p, o, pu, pv, nx, ny, rgb, &zw, uv))
         return GKS_RASTER_OK;
     p.bounded = 1;
     return polygon_draw(&p, n_loops, counts, pts);
@@ -787,32 +795,16 @@ int gks_raster_cell_array(gks_raster_fb *fb, const gks_raster_pt *o,
 {
     if (!fb || !o || !pu || !pv || !rgb || nx < 1 || ny < 1)
         return GKS_RASTER_E_ARG;
-    gks_raster_fill f = {.style = GKS_RASTER_SOLID};
-    if (fill) {
-        f.zmode = fill->zmode;
-        f.zbias = fill->zbias;
-    }
     paint p;
-    int rc = paint_init(&p, fb, &f);
+    int rc = cell_paint_init(&p, fb, fill);
     if (rc != GKS_RASTER_OK)
         return rc;
     if (!pts_finite(o, 1) || !pts_finite(pu, 1) || !pts_finite(pv, 1))
         return GKS_RASTER_E_ARG;
-    double s = fb->ss;
-    p.kind = PAINT_CELL;
-    p.nx = nx;
-    p.ny = ny;
-    p.cells = rgb;
-    p.ox = o->x * s;
-    p.oy = o->y * s;
-    double ux = (pu->x - o->x) * s, uy = (pu->y - o->y) * s;
-    double vx = (pv->x - o->x) * s, vy = (pv->y - o->y) * s;
-    if (!basis_inverse(ux, uy, vx, vy, p.m))
+    double zw, uv[4];
+    if (!cell_setup(&p, o, pu, pv, nx, ny, rgb, &zw, uv))
         return GKS_RASTER_OK; /* degenerate: covers no sample centre */
-    double uz = pu->z - o->z, vz = pv->z - o->z;
-    double zw = o->z + uz + vz;
-    plane_set(&p, p.ox, p.oy, o->z, uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx,
-              fmin(fmin(o->z, pu->z), fmin(pv->z, zw)), fmax(fmax(o->z, pu->z), fmax(pv->z, zw)));
+    double ux = uv[0], uy = uv[1], vx = uv[2], vy = uv[3];
     double t1[3][3] = {{p.ox, p.oy, o->z}, {p.ox + ux, p.oy + uy, pu->z},
                        {p.ox + ux + vx, p.oy + uy + vy, zw}};
     double t2[3][3] = {{p.ox, p.oy, o->z}, {p.ox + ux + vx, p.oy + uy + vy, zw},

@@ -156,7 +156,8 @@ struct gks_ws {
     char *conn_id;
     char *file;                   /* canonical path of the file it writes/reads, or NULL */
     char **files;                 /* canonical paths of the other files it wrote or will */
-    int n_files, cap_files;       /* write (later frames, ESCAPE file names): gks_ws_file_claim */
+    int n_files;                  /* write (later frames, ESCAPE file names): gks_ws_file_claim */
+    size_t cap_files;
     const gks_ws_driver *drv;
     Gws_st state;
     Gdefer_mode defer_mode;

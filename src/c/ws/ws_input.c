@@ -4,6 +4,7 @@
  * labels of a data record (ws_input.h).
  */
 #include "ws_input.h"
+#include "gks_rec.h"
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,24 +14,6 @@ const gks_in_desc gks_in_desc_std = {
     .max_choices = 9,
 };
 
-/* One decimal ended by ',' at *p (before end), as GPREC writes them; -1 if none. */
-static int rec_long(const char **p, const char *end, long *v)
-{
-    char t[24];
-    size_t n = 0;
-    while (*p + n < end && (*p)[n] != ',' && n < sizeof t - 1) {
-        t[n] = (*p)[n];
-        n++;
-    }
-    if (n == 0 || *p + n >= end || (*p)[n] != ',')
-        return -1;
-    t[n] = '\0';
-    char *e;
-    *v = strtol(t, &e, 10);
-    *p += n + 1;
-    return *e ? -1 : 0;
-}
-
 int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
 {
     const char *p = r->str, *end = r->str ? r->str + r->str_len : NULL;
@@ -38,25 +21,22 @@ int gks_in_menu_labels(const Gin_data *r, const char **lab, int *len, int max)
     if (!p || r->str_len == 0 || max <= 0)
         return 0;
     if (r->str_len >= 4 && memcmp(p, "GKSR", 4) == 0) {
-        long n[3], lens[64];
-        p += 4;
-        for (int i = 0; i < 3; i++)
-            if (rec_long(&p, end, &n[i]) || n[i] < 0 || n[i] > 100000)
-                return 0;
-        for (long i = 0; i < n[0] + n[1]; i++) /* integers, reals: skipped */
-            while (p < end && *p++ != ',')
+        gks_rec_reader rd;
+        if (gks_rec_begin(&rd, p, r->str_len))
+            return 0;
+        long lens[64], ns = rd.sl > 64 ? 64 : rd.sl;
+        for (long i = 0; i < rd.il + rd.rl; i++) /* integers, reals: skipped */
+            while (rd.p < rd.end && *rd.p++ != ',')
                 ;
-        if (n[2] > 64)
-            n[2] = 64;
-        for (long i = 0; i < n[2]; i++)
-            if (rec_long(&p, end, &lens[i]) || lens[i] < 0)
+        for (long i = 0; i < ns; i++)
+            if (gks_rec_long(&rd, &lens[i]) || lens[i] < 0)
                 return 0;
-        for (long i = 0; i < n[2] && end - p >= lens[i]; i++) {
+        for (long i = 0; i < ns && rd.end - rd.p >= lens[i]; i++) {
             if (k < max) {
-                lab[k] = p;
+                lab[k] = rd.p;
                 len[k++] = (int)lens[i];
             }
-            p += lens[i];
+            rd.p += lens[i];
         }
         return k;
     }

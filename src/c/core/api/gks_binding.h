@@ -16,4 +16,5 @@ GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit);
  * arguments), reported through the core's one error path (gks_error_report): the error
  * state is set and the handler called like for any other error. */
 GKS_API void gks_binding_error(int err_num, int fctid);
+
 #endif

@@ -510,284 +510,188 @@ static void no_stroke3(Gstroke3 *s)
     }
 }
 
-/* ---- REQUEST ---- */
+/* ---- REQUEST, SAMPLE, GET: one path for every class ---- */
 
-/* The request of device (cls, num): checks (141), then waits; *v the value. 0 or error
- * reported. */
-static int request(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
+/* Where a REQUEST, SAMPLE or GET answer goes: the caller's pointers (NULL where the function
+ * has none or the caller passed none). status: the input status, which a REQUEST always
+ * has and a SAMPLE or GET of CHOICE or PICK; with it (checked) a value is written only
+ * when the status is OK. Before the input every value is set to "none". */
+typedef struct {
+    int checked;
+    Gin_status *status;
+    Gint *view_ind;
+    Gloc *loc;
+    Gloc3 *loc3;
+    Gstroke *stroke;
+    Gstroke3 *stroke3;
+    Gint cap; /* the stroke's capacity on entry */
+    Gfloat *val;
+    Gint *choice;
+    Gpick *pick;
+    char *string;
+} in_dest;
+
+static void dest_clear(in_dest *o)
 {
-    gks_ws *ws;
-    *v = (gks_in_val){ 0 };
-    gks_indev *d = input_entry(fct, ws_id, cls, num, &ws);
-    if (!d)
-        return -1;
-    if (d->mode != GOP_REQ) {
-        report(141, fct);
-        return -1;
+    no_status(o->status);
+    if (o->view_ind)
+        *o->view_ind = 0;
+    if (o->loc)
+        *o->loc = no_loc;
+    if (o->loc3)
+        *o->loc3 = (Gloc3){ 0, { 0, 0, 0 } };
+    if (o->stroke) {
+        o->cap = o->stroke->num_points;
+        no_stroke(o->stroke);
     }
-    if (gks_in_request(ws, cls, num, v)) {
-        report(300, fct);
-        return -1;
+    if (o->stroke3) {
+        o->cap = o->stroke3->num_points;
+        no_stroke3(o->stroke3);
     }
-    return 0;
+    if (o->val)
+        *o->val = 0;
+    if (o->choice)
+        *o->choice = 0;
+    if (o->pick)
+        *o->pick = no_pick;
+    if (o->string)
+        *o->string = '\0';
 }
 
-GKS_API void greq_loc(Gint ws_id, Gint loc_num, Gin_status *in_status, Gloc *loc)
+static void dest_put(const gks_in_val *v, in_dest *o)
 {
-    no_status(in_status);
-    if (loc)
-        *loc = no_loc;
-    gks_in_val v;
-    if (request(GFN_RQLC, ws_id, GIN_LOC, loc_num, &v))
+    if (o->status)
+        *o->status = v->status;
+    if (o->checked && v->status != GIN_STATUS_OK)
         return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK)
-        loc_out(&v, loc);
+    if (o->loc)
+        loc_out(v, o->loc);
+    if (o->loc3)
+        loc3_out(v, o->view_ind, o->loc3);
+    if (o->stroke) {
+        o->stroke->num_points = o->cap; /* stroke_out's capacity */
+        stroke_out(v, o->stroke);
+    }
+    if (o->stroke3) {
+        o->stroke3->num_points = o->cap;
+        stroke3_out(v, o->view_ind, o->stroke3);
+    }
+    if (o->val)
+        *o->val = v->val;
+    if (o->choice)
+        *o->choice = v->choice;
+    if (o->pick)
+        *o->pick = v->pick;
+    string_out(v, o->string);
+}
+
+/* REQUEST (mode GOP_REQ, else 141) or SAMPLE (GOP_SAMPLE, else 142) of device (cls, num)
+ * into o; errors reported. */
+static void take(int fct, Gint ws_id, Gin_class cls, Gint num, Gop_mode mode, in_dest o)
+{
+    dest_clear(&o);
+    gks_ws *ws;
+    gks_indev *d = input_entry(fct, ws_id, cls, num, &ws);
+    if (!d)
+        return;
+    if (d->mode != mode) {
+        report(mode == GOP_REQ ? 141 : 142, fct);
+        return;
+    }
+    gks_in_val v = { 0 };
+    if ((mode == GOP_REQ ? gks_in_request : gks_in_sample)(ws, cls, num, &v))
+        report(300, fct);
+    else
+        dest_put(&v, &o);
     gks_in_val_free(&v);
 }
 
-GKS_API void greq_loc3(Gint ws_id, Gint loc_num, Gin_status *in_status, Gint *view_ind,
+#define REQ(fct, cls, ...) take(fct, ws_id, cls, num, GOP_REQ, (in_dest){ .checked = 1, __VA_ARGS__ })
+#define SMP(fct, cls, ...) take(fct, ws_id, cls, num, GOP_SAMPLE, (in_dest){ __VA_ARGS__ })
+
+GKS_API void greq_loc(Gint ws_id, Gint num, Gin_status *in_status, Gloc *loc)
+{
+    REQ(GFN_RQLC, GIN_LOC, .status = in_status, .loc = loc);
+}
+
+GKS_API void greq_loc3(Gint ws_id, Gint num, Gin_status *in_status, Gint *view_ind,
                        Gloc3 *loc)
 {
-    no_status(in_status);
-    if (view_ind)
-        *view_ind = 0;
-    if (loc)
-        *loc = (Gloc3){ 0, { 0, 0, 0 } };
-    gks_in_val v;
-    if (request(GFN_RQLC3, ws_id, GIN_LOC, loc_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK)
-        loc3_out(&v, view_ind, loc);
-    gks_in_val_free(&v);
+    REQ(GFN_RQLC3, GIN_LOC, .status = in_status, .view_ind = view_ind, .loc3 = loc);
 }
 
-GKS_API void greq_stroke(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gstroke *stroke)
+GKS_API void greq_stroke(Gint ws_id, Gint num, Gin_status *in_status, Gstroke *stroke)
 {
-    no_status(in_status);
-    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
-    no_stroke(stroke);
-    gks_in_val v;
-    if (request(GFN_RQSK, ws_id, GIN_STROKE, stroke_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK && stroke) {
-        *stroke = cap;
-        stroke_out(&v, stroke);
-    }
-    gks_in_val_free(&v);
+    REQ(GFN_RQSK, GIN_STROKE, .status = in_status, .stroke = stroke);
 }
 
-GKS_API void greq_stroke3(Gint ws_id, Gint stroke_num, Gin_status *in_status, Gint *view_ind,
+GKS_API void greq_stroke3(Gint ws_id, Gint num, Gin_status *in_status, Gint *view_ind,
                           Gstroke3 *stroke)
 {
-    no_status(in_status);
-    if (view_ind)
-        *view_ind = 0;
-    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
-    no_stroke3(stroke);
-    gks_in_val v;
-    if (request(GFN_RQSK3, ws_id, GIN_STROKE, stroke_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK && stroke) {
-        *stroke = cap;
-        stroke3_out(&v, view_ind, stroke);
-    }
-    gks_in_val_free(&v);
+    REQ(GFN_RQSK3, GIN_STROKE, .status = in_status, .view_ind = view_ind, .stroke3 = stroke);
 }
 
-GKS_API void greq_val(Gint ws_id, Gint val_num, Gin_status *in_status, Gfloat *value)
+GKS_API void greq_val(Gint ws_id, Gint num, Gin_status *in_status, Gfloat *value)
 {
-    no_status(in_status);
-    if (value)
-        *value = 0;
-    gks_in_val v;
-    if (request(GFN_RQVL, ws_id, GIN_VAL, val_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK && value)
-        *value = v.val;
-    gks_in_val_free(&v);
+    REQ(GFN_RQVL, GIN_VAL, .status = in_status, .val = value);
 }
 
-GKS_API void greq_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice)
+GKS_API void greq_choice(Gint ws_id, Gint num, Gin_status *in_status, Gint *choice)
 {
-    no_status(in_status);
-    if (choice)
-        *choice = 0;
-    gks_in_val v;
-    if (request(GFN_RQCH, ws_id, GIN_CHOICE, choice_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK && choice)
-        *choice = v.choice;
-    gks_in_val_free(&v);
+    REQ(GFN_RQCH, GIN_CHOICE, .status = in_status, .choice = choice);
 }
 
-GKS_API void greq_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick)
+GKS_API void greq_pick(Gint ws_id, Gint num, Gin_status *in_status, Gpick *pick)
 {
-    no_status(in_status);
-    if (pick)
-        *pick = no_pick;
-    gks_in_val v;
-    if (request(GFN_RQPK, ws_id, GIN_PICK, pick_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK && pick)
-        *pick = v.pick;
-    gks_in_val_free(&v);
+    REQ(GFN_RQPK, GIN_PICK, .status = in_status, .pick = pick);
 }
 
-GKS_API void greq_string(Gint ws_id, Gint string_num, Gin_status *in_status, char *string)
+GKS_API void greq_string(Gint ws_id, Gint num, Gin_status *in_status, char *string)
 {
-    no_status(in_status);
-    if (string)
-        *string = '\0';
-    gks_in_val v;
-    if (request(GFN_RQST, ws_id, GIN_STRING, string_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (v.status == GIN_STATUS_OK)
-        string_out(&v, string);
-    gks_in_val_free(&v);
+    REQ(GFN_RQST, GIN_STRING, .status = in_status, .string = string);
 }
 
-/* ---- SAMPLE ---- */
-
-static int sample(int fct, Gint ws_id, Gin_class cls, Gint num, gks_in_val *v)
+GKS_API void gsample_loc(Gint ws_id, Gint num, Gloc *loc)
 {
-    gks_ws *ws;
-    *v = (gks_in_val){ 0 };
-    gks_indev *d = input_entry(fct, ws_id, cls, num, &ws);
-    if (!d)
-        return -1;
-    if (d->mode != GOP_SAMPLE) {
-        report(142, fct);
-        return -1;
-    }
-    if (gks_in_sample(ws, cls, num, v)) {
-        report(300, fct);
-        return -1;
-    }
-    return 0;
+    SMP(GFN_SMLC, GIN_LOC, .loc = loc);
 }
 
-GKS_API void gsample_loc(Gint ws_id, Gint loc_num, Gloc *loc)
+GKS_API void gsample_loc3(Gint ws_id, Gint num, Gint *view_ind, Gloc3 *loc)
 {
-    if (loc)
-        *loc = no_loc;
-    gks_in_val v;
-    if (sample(GFN_SMLC, ws_id, GIN_LOC, loc_num, &v))
-        return;
-    loc_out(&v, loc);
-    gks_in_val_free(&v);
+    SMP(GFN_SMLC3, GIN_LOC, .view_ind = view_ind, .loc3 = loc);
 }
 
-GKS_API void gsample_loc3(Gint ws_id, Gint loc_num, Gint *view_ind, Gloc3 *loc)
+GKS_API void gsample_stroke(Gint ws_id, Gint num, Gstroke *stroke)
 {
-    if (view_ind)
-        *view_ind = 0;
-    if (loc)
-        *loc = (Gloc3){ 0, { 0, 0, 0 } };
-    gks_in_val v;
-    if (sample(GFN_SMLC3, ws_id, GIN_LOC, loc_num, &v))
-        return;
-    loc3_out(&v, view_ind, loc);
-    gks_in_val_free(&v);
+    SMP(GFN_SMSK, GIN_STROKE, .stroke = stroke);
 }
 
-GKS_API void gsample_stroke(Gint ws_id, Gint stroke_num, Gstroke *stroke)
+GKS_API void gsample_stroke3(Gint ws_id, Gint num, Gint *view_ind, Gstroke3 *stroke)
 {
-    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
-    no_stroke(stroke);
-    gks_in_val v;
-    if (sample(GFN_SMSK, ws_id, GIN_STROKE, stroke_num, &v))
-        return;
-    if (stroke) {
-        *stroke = cap;
-        stroke_out(&v, stroke);
-    }
-    gks_in_val_free(&v);
+    SMP(GFN_SMSK3, GIN_STROKE, .view_ind = view_ind, .stroke3 = stroke);
 }
 
-GKS_API void gsample_stroke3(Gint ws_id, Gint stroke_num, Gint *view_ind, Gstroke3 *stroke)
+GKS_API void gsample_val(Gint ws_id, Gint num, Gfloat *value)
 {
-    if (view_ind)
-        *view_ind = 0;
-    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
-    no_stroke3(stroke);
-    gks_in_val v;
-    if (sample(GFN_SMSK3, ws_id, GIN_STROKE, stroke_num, &v))
-        return;
-    if (stroke) {
-        *stroke = cap;
-        stroke3_out(&v, view_ind, stroke);
-    }
-    gks_in_val_free(&v);
+    SMP(GFN_SMVL, GIN_VAL, .val = value);
 }
 
-GKS_API void gsample_val(Gint ws_id, Gint val_num, Gfloat *value)
+GKS_API void gsample_choice(Gint ws_id, Gint num, Gin_status *in_status, Gint *choice)
 {
-    if (value)
-        *value = 0;
-    gks_in_val v;
-    if (sample(GFN_SMVL, ws_id, GIN_VAL, val_num, &v))
-        return;
-    if (value)
-        *value = v.val;
-    gks_in_val_free(&v);
+    SMP(GFN_SMCH, GIN_CHOICE, .checked = 1, .status = in_status, .choice = choice);
 }
 
-GKS_API void gsample_choice(Gint ws_id, Gint choice_num, Gin_status *in_status, Gint *choice)
+GKS_API void gsample_pick(Gint ws_id, Gint num, Gin_status *in_status, Gpick *pick)
 {
-    no_status(in_status);
-    if (choice)
-        *choice = 0;
-    gks_in_val v;
-    if (sample(GFN_SMCH, ws_id, GIN_CHOICE, choice_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (choice && v.status == GIN_STATUS_OK)
-        *choice = v.choice;
-    gks_in_val_free(&v);
+    SMP(GFN_SMPK, GIN_PICK, .checked = 1, .status = in_status, .pick = pick);
 }
 
-GKS_API void gsample_pick(Gint ws_id, Gint pick_num, Gin_status *in_status, Gpick *pick)
+GKS_API void gsample_string(Gint ws_id, Gint num, char *string)
 {
-    no_status(in_status);
-    if (pick)
-        *pick = no_pick;
-    gks_in_val v;
-    if (sample(GFN_SMPK, ws_id, GIN_PICK, pick_num, &v))
-        return;
-    if (in_status)
-        *in_status = v.status;
-    if (pick && v.status == GIN_STATUS_OK)
-        *pick = v.pick;
-    gks_in_val_free(&v);
+    SMP(GFN_SMST, GIN_STRING, .string = string);
 }
-
-GKS_API void gsample_string(Gint ws_id, Gint string_num, char *string)
-{
-    if (string)
-        *string = '\0';
-    gks_in_val v;
-    if (sample(GFN_SMST, ws_id, GIN_STRING, string_num, &v))
-        return;
-    string_out(&v, string);
-    gks_in_val_free(&v);
-}
+#undef REQ
+#undef SMP
 
 /* ---- event input ---- */
 
@@ -827,105 +731,57 @@ GKS_API void gflush_events(Gint ws_id, Gin_class in_class, Gint in_num)
     gks_in_flush(ws_id, in_class, in_num);
 }
 
-/* The current event report's value of class cls, or NULL with 7/150 reported. */
-static const gks_in_val *get_entry(int fctid, Gin_class cls)
+/* GET: the current event report's value of class cls into o, or 7/150 reported. */
+static void get(int fctid, Gin_class cls, in_dest o)
 {
+    dest_clear(&o);
     if (gks_check_state(fctid))
-        return NULL;
+        return;
     const gks_in_val *v = gks_in_current(cls);
-    if (!v)
+    if (v)
+        dest_put(v, &o);
+    else
         report(150, fctid);
-    return v;
 }
 
 GKS_API void gget_loc(Gloc *loc)
 {
-    if (loc)
-        *loc = no_loc;
-    const gks_in_val *v = get_entry(GFN_GTLC, GIN_LOC);
-    if (v)
-        loc_out(v, loc);
+    get(GFN_GTLC, GIN_LOC, (in_dest){ .loc = loc });
 }
 
 GKS_API void gget_loc3(Gint *view_ind, Gloc3 *loc)
 {
-    if (view_ind)
-        *view_ind = 0;
-    if (loc)
-        *loc = (Gloc3){ 0, { 0, 0, 0 } };
-    const gks_in_val *v = get_entry(GFN_GTLC3, GIN_LOC);
-    if (v)
-        loc3_out(v, view_ind, loc);
+    get(GFN_GTLC3, GIN_LOC, (in_dest){ .view_ind = view_ind, .loc3 = loc });
 }
 
 GKS_API void gget_stroke(Gstroke *stroke)
 {
-    Gstroke cap = stroke ? *stroke : (Gstroke){ 0 };
-    no_stroke(stroke);
-    const gks_in_val *v = get_entry(GFN_GTSK, GIN_STROKE);
-    if (v && stroke) {
-        *stroke = cap;
-        stroke_out(v, stroke);
-    }
+    get(GFN_GTSK, GIN_STROKE, (in_dest){ .stroke = stroke });
 }
 
 GKS_API void gget_stroke3(Gint *view_ind, Gstroke3 *stroke)
 {
-    if (view_ind)
-        *view_ind = 0;
-    Gstroke3 cap = stroke ? *stroke : (Gstroke3){ 0 };
-    no_stroke3(stroke);
-    const gks_in_val *v = get_entry(GFN_GTSK3, GIN_STROKE);
-    if (v && stroke) {
-        *stroke = cap;
-        stroke3_out(v, view_ind, stroke);
-    }
+    get(GFN_GTSK3, GIN_STROKE, (in_dest){ .view_ind = view_ind, .stroke3 = stroke });
 }
 
 GKS_API void gget_val(Gfloat *value)
 {
-    if (value)
-        *value = 0;
-    const gks_in_val *v = get_entry(GFN_GTVL, GIN_VAL);
-    if (v && value)
-        *value = v->val;
+    get(GFN_GTVL, GIN_VAL, (in_dest){ .val = value });
 }
 
 GKS_API void gget_choice(Gin_status *in_status, Gint *choice)
 {
-    no_status(in_status);
-    if (choice)
-        *choice = 0;
-    const gks_in_val *v = get_entry(GFN_GTCH, GIN_CHOICE);
-    if (!v)
-        return;
-    if (in_status)
-        *in_status = v->status;
-    if (choice && v->status == GIN_STATUS_OK)
-        *choice = v->choice;
+    get(GFN_GTCH, GIN_CHOICE, (in_dest){ .checked = 1, .status = in_status, .choice = choice });
 }
 
 GKS_API void gget_pick(Gin_status *in_status, Gpick *pick)
 {
-    no_status(in_status);
-    if (pick)
-        *pick = no_pick;
-    const gks_in_val *v = get_entry(GFN_GTPK, GIN_PICK);
-    if (!v)
-        return;
-    if (in_status)
-        *in_status = v->status;
-    if (pick && v->status == GIN_STATUS_OK)
-        *pick = v->pick;
+    get(GFN_GTPK, GIN_PICK, (in_dest){ .checked = 1, .status = in_status, .pick = pick });
 }
 
 GKS_API void gget_string(char *string)
 {
-    if (string)
-        *string = '\0';
-    const gks_in_val *v = get_entry(GFN_GTST, GIN_STRING);
-    if (v)
-        string_out(v, string);
+    get(GFN_GTST, GIN_STRING, (in_dest){ .string = string });
 }
 
 /* ---- inquiries (never call ERROR HANDLING; nothing but *err_ind written on error) ---- */

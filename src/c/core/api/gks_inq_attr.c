@@ -124,11 +124,9 @@ GKS_API void ginq_asfs(Gint *err_ind, Gasfs *s)
  * as SET ... REPRESENTATION); the index range (err_ind_bad) and the type (2000). */
 static gks_ws *rep_ws(Gint ws_id, Gint ind, Ginq_type type, int err_bad_ind, Gint *err)
 {
-    gks_ws *ws = gks_inq_ws(ws_id, err);
+    gks_ws *ws = gks_inq_out_ws(ws_id, err);
     if (!ws)
         return NULL;
-    Gws_cat cat = ws->drv->desc->cat;
-    *err = cat == GCAT_MI ? 33 : cat == GCAT_IN ? 35 : cat == GCAT_WISS ? 36 : 0;
     if (!*err && (ind < 1 || ind > gks_attr_wdt(ws)->max_bundles || ind > GKS_WDT_MAX_BUNDLES))
         *err = err_bad_ind;
     if (!*err && type != GINQ_SET && type != GINQ_REALIZED)
@@ -136,85 +134,28 @@ static gks_ws *rep_ws(Gint ws_id, Gint ind, Ginq_type type, int err_bad_ind, Gin
     return *err ? NULL : ws;
 }
 
-GKS_API void ginq_line_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gline_bundle *rep)
-{
-    GKS_INQ_ARGS(err_ind, rep);
-    gks_ws *ws = rep_ws(ws_id, ind, type, 60, err_ind);
-    if (!ws)
-        return;
-    if (!ws->line_def[ind]) {
-        *err_ind = 61;
-        return;
+/* The representation inquiries: rep_ws's checks, then the undefined index (err_undef),
+ * then the SET value or the REALIZED one (gks_attr_realize_*). */
+#define REP_INQ(NAME, BUNDLE, KIND, ERR_BAD, ERR_UNDEF)                                  \
+    GKS_API void NAME(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, BUNDLE *rep) \
+    {                                                                                    \
+        GKS_INQ_ARGS(err_ind, rep);                                                      \
+        gks_ws *ws = rep_ws(ws_id, ind, type, ERR_BAD, err_ind);                         \
+        if (!ws)                                                                         \
+            return;                                                                      \
+        if (!ws->KIND##_def[ind])                                                        \
+            *err_ind = ERR_UNDEF;                                                        \
+        else if (type == GINQ_REALIZED)                                                  \
+            gks_attr_realize_##KIND(ws, &ws->KIND##_rep[ind], rep);                      \
+        else                                                                             \
+            *rep = ws->KIND##_rep[ind];                                                  \
     }
-    if (type == GINQ_REALIZED)
-        gks_attr_realize_line(ws, &ws->line_rep[ind], rep);
-    else
-        *rep = ws->line_rep[ind];
-}
-
-GKS_API void ginq_marker_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gmarker_bundle *rep)
-{
-    GKS_INQ_ARGS(err_ind, rep);
-    gks_ws *ws = rep_ws(ws_id, ind, type, 66, err_ind);
-    if (!ws)
-        return;
-    if (!ws->marker_def[ind]) {
-        *err_ind = 67;
-        return;
-    }
-    if (type == GINQ_REALIZED)
-        gks_attr_realize_marker(ws, &ws->marker_rep[ind], rep);
-    else
-        *rep = ws->marker_rep[ind];
-}
-
-GKS_API void ginq_text_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gtext_bundle *rep)
-{
-    GKS_INQ_ARGS(err_ind, rep);
-    gks_ws *ws = rep_ws(ws_id, ind, type, 72, err_ind);
-    if (!ws)
-        return;
-    if (!ws->text_def[ind]) {
-        *err_ind = 73;
-        return;
-    }
-    if (type == GINQ_REALIZED)
-        gks_attr_realize_text(ws, &ws->text_rep[ind], rep);
-    else
-        *rep = ws->text_rep[ind];
-}
-
-GKS_API void ginq_fill_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gfill_bundle *rep)
-{
-    GKS_INQ_ARGS(err_ind, rep);
-    gks_ws *ws = rep_ws(ws_id, ind, type, 80, err_ind);
-    if (!ws)
-        return;
-    if (!ws->fill_def[ind]) {
-        *err_ind = 81;
-        return;
-    }
-    if (type == GINQ_REALIZED)
-        gks_attr_realize_fill(ws, &ws->fill_rep[ind], rep);
-    else
-        *rep = ws->fill_rep[ind];
-}
-
-GKS_API void ginq_edge_rep(Gint ws_id, Gint ind, Ginq_type type, Gint *err_ind, Gedge_bundle *rep)
-{
-    GKS_INQ_ARGS(err_ind, rep);
-    gks_ws *ws = rep_ws(ws_id, ind, type, 500, err_ind);
-    if (!ws)
-        return;
-    if (!ws->edge_def[ind]) {
-        *err_ind = 501;
-        return;
-    }
-    if (type == GINQ_REALIZED)
-        gks_attr_realize_edge(ws, &ws->edge_rep[ind], rep);
-    else
-        *rep = ws->edge_rep[ind];
-}
+REP_INQ(ginq_line_rep, Gline_bundle, line, 60, 61)
+REP_INQ(ginq_marker_rep, Gmarker_bundle, marker, 66, 67)
+REP_INQ(ginq_text_rep, Gtext_bundle, text, 72, 73)
+REP_INQ(ginq_fill_rep, Gfill_bundle, fill, 80, 81)
+REP_INQ(ginq_edge_rep, Gedge_bundle, edge, 500, 501)
+#undef REP_INQ
 
 /* Copy a pattern (nx x ny indices) into rep (capacity cap): 2001 if too small. realize:
  * replace undefined colour indices of ws by 1 (ws may be NULL for predefined ones). */
@@ -256,32 +197,15 @@ GKS_API void ginq_pat_rep(Gint ws_id, Gint ind, Ginq_type type, Gstore *store, G
 static void list_inds(Gint ws_id, const unsigned char *(*def)(const gks_ws *), Gint cap,
                       Gint start, Gint *err_ind, Gint_list *out, Gint *len)
 {
-    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
     if (!ws)
         return;
-    Gws_cat cat = ws->drv->desc->cat;
-    if (cat == GCAT_MI || cat == GCAT_IN || cat == GCAT_WISS) {
-        *err_ind = cat == GCAT_MI ? 33 : cat == GCAT_IN ? 35 : 36;
-        return;
-    }
     const unsigned char *d = def(ws);
-    int n = 0;
+    gks_list_out w = gks_list_begin(out, cap, start);
     for (int i = 1; i <= GKS_WDT_MAX_BUNDLES; i++)
-        n += d[i] != 0;
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0, pos = 0;
-    for (int i = 1; i <= GKS_WDT_MAX_BUNDLES; i++) {
-        if (!d[i])
-            continue;
-        if (pos++ >= start && k < cap && out && out->ints)
-            out->ints[k++] = i;
-    }
-    if (out)
-        out->num_ints = k;
+        if (d[i])
+            gks_list_put(&w, i);
+    *err_ind = gks_list_end(&w, len);
 }
 
 static const unsigned char *def_line(const gks_ws *ws) { return ws->line_def; }
@@ -374,38 +298,10 @@ GKS_API void ginq_text_extent3(Gint ws_id, const Gpoint3 *pos, const Gvec3 dir[2
 /* The output description table of a workstation type: 8, 22, 23, 39. */
 static const gks_wdt_output *inq_out_type(Gint ws_type, Gint *err)
 {
-    *err = gks_inq_state(GKS_S_OPEN);
-    if (*err)
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err);
+    if (!d)
         return NULL;
-    if (gks_ws_type_map(ws_type) <= 0) {
-        *err = 22;
-        return NULL;
-    }
-    const gks_ws_driver *d = gks_driver_for_type(ws_type);
-    if (!d) {
-        *err = 23;
-        return NULL;
-    }
-    if (d->desc->cat != GCAT_OUT && d->desc->cat != GCAT_OUTIN) {
-        *err = 39;
-        return NULL;
-    }
-    return d->desc->out ? d->desc->out : &gks_wdt_raster;
-}
-
-/* Copy list[start..] into out (capacity cap); 2002 when start is outside. */
-static int copy_ints(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    if (len)
-        *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
+    return d->out ? d->out : &gks_wdt_raster;
 }
 
 GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
@@ -415,7 +311,7 @@ GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->linetypes, t->n_linetypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->linetypes, t->n_linetypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_widths = t->n_linewidths;
@@ -432,7 +328,7 @@ GKS_API void ginq_marker_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->markertypes, t->n_markertypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->markertypes, t->n_markertypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_sizes = t->n_markersizes;
@@ -450,10 +346,8 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     if (!t)
         return;
     *length_list = t->n_font_precs;
-    if (start < 0 || (start >= t->n_font_precs && !(start == 0 && t->n_font_precs == 0))) {
-        *err_ind = 2002;
+    if ((*err_ind = gks_list_start(start, t->n_font_precs)))
         return;
-    }
     int k = 0;
     for (int i = start; i < t->n_font_precs && k < cap && f->font_precs; i++)
         f->font_precs[k++] = t->font_precs[i];
@@ -474,7 +368,7 @@ GKS_API void ginq_fill_facs(Gint ws_type, Gint hatch_length, Gint hatch_start_po
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->hatch_styles, t->n_hatch_styles, hatch_length, hatch_start_pos,
+    *err_ind = gks_list_copy(t->hatch_styles, t->n_hatch_styles, hatch_length, hatch_start_pos,
                          &f->hatch_styles, act_hatch_length);
     if (*err_ind)
         return;
@@ -500,7 +394,7 @@ GKS_API void ginq_edge_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = copy_ints(t->edgetypes, t->n_edgetypes, cap, start, &f->types, length_list);
+    *err_ind = gks_list_copy(t->edgetypes, t->n_edgetypes, cap, start, &f->types, length_list);
     if (*err_ind)
         return;
     f->num_widths = t->n_edgewidths;
@@ -568,5 +462,5 @@ GKS_API void ginq_list_avail_gdps(Gint ws_type, Gint cap, Gint start, Gint *err_
     const Gint *ids = NULL;
     int n = gks_gdp_list(&ids); /* every output workstation draws the core's GDPs */
     if (t)
-        *err_ind = copy_ints(ids, n, cap, start, gdps, length_list);
+        *err_ind = gks_list_copy(ids, n, cap, start, gdps, length_list);
 }

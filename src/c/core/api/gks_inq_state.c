@@ -11,20 +11,6 @@
 #include "gks_ws.h"
 #include <string.h>
 
-/* Copy list[start..] into out (capacity cap). Errors: 2002 when start is outside. */
-static int copy_list(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
 {
     if (gks_inq_begin(err, GKS_S_WSOPEN))
@@ -39,8 +25,17 @@ gks_ws *gks_inq_ws(Gint ws_id, Gint *err)
     return ws;
 }
 
-/* Workstation description table of a type: error 8, 22, 23. */
-static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
+gks_ws *gks_inq_out_ws(Gint ws_id, Gint *err)
+{
+    gks_ws *ws = gks_inq_ws(ws_id, err);
+    if (!ws)
+        return NULL;
+    Gws_cat c = ws->drv->desc->cat;
+    *err = c == GCAT_MI ? 33 : c == GCAT_IN ? 35 : c == GCAT_WISS ? 36 : 0;
+    return *err ? NULL : ws;
+}
+
+const gks_ws_desc *gks_inq_ws_type(Gint ws_type, int out, Gint *err)
 {
     *err = gks_inq_state(GKS_S_OPEN);
     if (*err)
@@ -52,6 +47,10 @@ static const gks_ws_desc *inq_type(Gint ws_type, Gint *err)
     const gks_ws_driver *d = gks_driver_for_type(ws_type);
     if (!d) {
         *err = 23;
+        return NULL;
+    }
+    if (out && d->desc->cat != GCAT_OUT && d->desc->cat != GCAT_OUTIN) {
+        *err = 39;
         return NULL;
     }
     return d->desc;
@@ -81,7 +80,7 @@ GKS_API void ginq_list_avail_ws_types(Gint num_elems_appl_list, Gint start_pos, 
     int n = d->n_ws_types < 16 ? d->n_ws_types : 16;
     for (int i = 0; i < n; i++)
         types[i] = d->ws_types[i]->desc->type;
-    *err_ind = copy_list(types, n, num_elems_appl_list, start_pos, ws_types, length_list);
+    *err_ind = gks_list_copy(types, n, num_elems_appl_list, start_pos, ws_types, length_list);
 }
 
 GKS_API void ginq_ws_max_nums(Gint *err_ind, Gws_max_nums *ws_max_num)
@@ -105,7 +104,7 @@ GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *e
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = copy_list(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
+    *err_ind = gks_list_copy(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
                          length_list);
 }
 
@@ -116,7 +115,7 @@ GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint 
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = copy_list(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
+    *err_ind = gks_list_copy(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
                          active_ws, length_list);
 }
 
@@ -162,7 +161,7 @@ GKS_API void ginq_ws_defer_upd_sts(Gint ws_id, Gint *err_ind, Gdefer_mode *defer
 GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 {
     GKS_INQ_ARGS(err_ind, cat);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (d)
         *cat = d->cat;
 }
@@ -170,7 +169,7 @@ GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 {
     GKS_INQ_ARGS(err_ind, ws_class);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (!d)
         return;
     if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {
@@ -183,7 +182,7 @@ GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size)
 {
     GKS_INQ_ARGS(err_ind, disp_size);
-    const gks_ws_desc *d = inq_type(ws_type, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
     if (!d)
         return;
     if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {

@@ -48,32 +48,11 @@ void *gks_store_alloc(Gstore store, size_t n, size_t size)
 }
 
 /* ------------------------------------------------------------- description tables */
-/* Description table of ws_type: 8, 22, 23; with out = 1 also 39 (not OUTPUT/OUTIN). */
-static const gks_ws_desc *desc_of(Gint ws_type, int out, Gint *err)
-{
-    *err = gks_inq_state(GKS_S_OPEN);
-    if (*err)
-        return NULL;
-    if (gks_ws_type_map(ws_type) <= 0) {
-        *err = 22;
-        return NULL;
-    }
-    const gks_ws_driver *d = gks_driver_for_type(ws_type);
-    if (!d) {
-        *err = 23;
-        return NULL;
-    }
-    if (out && d->desc->cat != GCAT_OUT && d->desc->cat != GCAT_OUTIN) {
-        *err = 39;
-        return NULL;
-    }
-    return d->desc;
-}
 
 GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs)
 {
     GKS_INQ_ARGS(err_ind, colr_facs);
-    const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err_ind);
     if (d)
         *colr_facs = (Gcolr_facs){ d->n_colr, d->colr_avail, d->n_pred_colr };
 }
@@ -81,7 +60,7 @@ GKS_API void ginq_colr_facs(Gint ws_type, Gint *err_ind, Gcolr_facs *colr_facs)
 GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep *colr_rep)
 {
     GKS_INQ_ARGS(err_ind, colr_rep);
-    const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err_ind);
     if (!d)
         return;
     if (ind < 0) {
@@ -103,7 +82,7 @@ GKS_API void ginq_pred_colr_rep(Gint ws_type, Gint ind, Gint *err_ind, Gcolr_rep
 GKS_API void ginq_dyn_mod_ws_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_ws_attrs *dyn_mod)
 {
     GKS_INQ_ARGS(err_ind, dyn_mod);
-    if (desc_of(ws_type, 1, err_ind))
+    if (gks_inq_ws_type(ws_type, 1, err_ind))
         *dyn_mod = (Gdyn_mod_ws_attrs){ GDYN_IRG, GDYN_IRG, GDYN_IRG, GDYN_IRG,
                                         GDYN_IRG, GDYN_IRG, GDYN_IRG };
 }
@@ -121,7 +100,7 @@ GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_de
                                 Girg_mode *def_irg_mode)
 {
     GKS_INQ_ARGS(err_ind, def_defer_mode, def_irg_mode);
-    const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err_ind);
     if (!d)
         return;
     *def_defer_mode = d->default_defer;
@@ -134,7 +113,7 @@ GKS_API void ginq_def_defer_sts(Gint ws_type, Gint *err_ind, Gdefer_mode *def_de
 GKS_API void ginq_dyn_mod_seg_attrs(Gint ws_type, Gint *err_ind, Gdyn_mod_seg_attrs *dyn_mod)
 {
     GKS_INQ_ARGS(err_ind, dyn_mod);
-    if (desc_of(ws_type, 1, err_ind))
+    if (gks_inq_ws_type(ws_type, 1, err_ind))
         *dyn_mod = (Gdyn_mod_seg_attrs){ .tran = GDYN_IRG, .appear = GDYN_IRG,
                                          .disappear = GDYN_IRG, .highl = GDYN_IMM,
                                          .pri = GDYN_IRG, .add_prim = GDYN_IMM,
@@ -169,14 +148,14 @@ GKS_API void ginq_max_ws_st_tables3(Gint ws_type, Gint *err_ind, Gmax_ws_st_tabl
 GKS_API void ginq_view_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_views)
 {
     GKS_INQ_ARGS(err_ind, num_pred_views);
-    if (desc_of(ws_type, 1, err_ind))
+    if (gks_inq_ws_type(ws_type, 1, err_ind))
         *num_pred_views = 1;
 }
 
 GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gview_rep3 *rep)
 {
     GKS_INQ_ARGS(err_ind, rep);
-    if (!desc_of(ws_type, 1, err_ind))
+    if (!gks_inq_ws_type(ws_type, 1, err_ind))
         return;
     if (view_ind < 0) {
         *err_ind = 514;
@@ -193,21 +172,6 @@ GKS_API void ginq_pred_view_rep(Gint ws_type, Gint view_ind, Gint *err_ind, Gvie
     rep->xy_clip = rep->back_clip = rep->front_clip = GIND_CLIP;
 }
 
-/* Copy the part of list[0..n) from start into out (capacity cap): 2002 if start is
- * outside the list. */
-static int copy_part(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    *len = n;
-    if (start < 0 || (start >= n && !(start == 0 && n == 0)))
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 /* HLHSR identifiers: every value is accepted and passed to the drivers, none selects a
  * method of its own: the list holds the default 0. Modes: those of the description
  * table (SET HLHSR MODE accepts them). */
@@ -216,7 +180,7 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
                              Gint_list *hlhsr_modes, Gint *length_modes)
 {
     GKS_INQ_ARGS(err_ind, hlhsr_ids, length_ids, hlhsr_modes, length_modes);
-    const gks_ws_desc *d = desc_of(ws_type, 1, err_ind);
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err_ind);
     if (!d)
         return;
     int modes[32], n = 0;
@@ -224,8 +188,8 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
         if (d->hlhsr_modes & (1u << m))
             modes[n++] = m;
     static const int ids[1] = { 0 };
-    Gint e1 = copy_part(ids, 1, num_elems_appl_list, start_pos, hlhsr_ids, length_ids);
-    Gint e2 = copy_part(modes, n, num_elems_appl_list, start_pos, hlhsr_modes, length_modes);
+    Gint e1 = gks_list_copy(ids, 1, num_elems_appl_list, start_pos, hlhsr_ids, length_ids);
+    Gint e2 = gks_list_copy(modes, n, num_elems_appl_list, start_pos, hlhsr_modes, length_modes);
     *err_ind = e1 ? e1 : e2;
 }
 
@@ -350,38 +314,19 @@ GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs)
 
 /* --------------------------------------------------------------- workstation lists */
 /* Workstation of an output inquiry: 7, 20, 25, then 33 (MI) / 35 (INPUT) / 36 (WISS). */
-static gks_ws *out_ws(Gint ws_id, Gint *err)
-{
-    gks_ws *ws = gks_inq_ws(ws_id, err);
-    if (!ws)
-        return NULL;
-    Gws_cat c = ws->drv->desc->cat;
-    *err = c == GCAT_MI ? 33 : c == GCAT_IN ? 35 : c == GCAT_WISS ? 36 : 0;
-    return *err ? NULL : ws;
-}
 
 GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
                                  Gint *err_ind, Gint_list *colr_inds, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, colr_inds, length_list);
-    gks_ws *ws = out_ws(ws_id, err_ind);
+    gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
     if (!ws)
         return;
-    int n = 0, k = 0, nc = ws->drv->desc->n_colr;
-    for (int i = 0; i < nc; i++) {
-        if (!ws->colr_defined[i])
-            continue;
-        if (n >= start_pos && k < num_elems_appl_list && colr_inds && colr_inds->ints)
-            colr_inds->ints[k++] = i;
-        n++;
-    }
-    *length_list = n;
-    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    if (colr_inds)
-        colr_inds->num_ints = k;
+    gks_list_out w = gks_list_begin(colr_inds, num_elems_appl_list, start_pos);
+    for (int i = 0; i < ws->drv->desc->n_colr; i++)
+        if (ws->colr_defined[i])
+            gks_list_put(&w, i);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 /* ------------------------------------------------------------------------ GDPs */

@@ -171,23 +171,9 @@ GKS_API void ginq_light_src_state(Gint num_elems_appl_list, Gint start_pos, Gint
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     uint64_t m = gks_ctx()->sl->attrs.light_mask;
-    int n = 0;
+    gks_list_out w = gks_list_begin(active, num_elems_appl_list, start_pos);
     for (int i = 0; i < GKS_MAX_LIGHT_IND; i++)
-        n += (m >> i) & 1;
-    *length_list = n;
-    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0, pos = 0;
-    for (int i = 0; i < GKS_MAX_LIGHT_IND; i++) {
-        if (!((m >> i) & 1))
-            continue;
-        if (pos++ < start_pos)
-            continue;
-        if (k < num_elems_appl_list && active && active->ints)
-            active->ints[k++] = i + 1;
-    }
-    if (active)
-        active->num_ints = k;
+        if ((m >> i) & 1)
+            gks_list_put(&w, i + 1);
+    *err_ind = gks_list_end(&w, length_list);
 }

@@ -197,14 +197,8 @@ static void pieces_free(pieces *b)
 
 static int push_pt(pieces *b, const double h[4])
 {
-    if (b->n == b->cap) {
-        size_t cap = b->cap ? 2 * b->cap : 256;
-        Gpoint3 *p = gks_realloc_array(b->pts, cap, sizeof *p);
-        if (!p)
-            return 300;
-        b->pts = p;
-        b->cap = cap;
-    }
+    if (gks_grow(&b->pts, &b->cap, b->n + 1, sizeof *b->pts))
+        return 300;
     if (b->np == 0 || b->len[b->np - 1] == INT32_MAX)
         return 300;
     b->pts[b->n++] = (Gpoint3){ h[0], h[1], h[2] };
@@ -214,14 +208,8 @@ static int push_pt(pieces *b, const double h[4])
 
 static int new_piece(pieces *b)
 {
-    if (b->np == b->capp) {
-        size_t cap = b->capp ? 2 * b->capp : 16;
-        int *l = gks_realloc_array(b->len, cap, sizeof *l);
-        if (!l)
-            return 300;
-        b->len = l;
-        b->capp = cap;
-    }
+    if (gks_grow(&b->len, &b->capp, b->np + 1, sizeof *b->len))
+        return 300;
     b->len[b->np++] = 0;
     return 0;
 }

@@ -71,14 +71,8 @@ typedef struct {
 
 static int cbuf_push(cbuf *b, const cvert *v)
 {
-    if (b->n == b->cap) {
-        size_t cap = b->cap ? 2 * b->cap : 64;
-        cvert *a = gks_realloc_array(b->v, cap, sizeof *a);
-        if (!a)
-            return 300;
-        b->v = a;
-        b->cap = cap;
-    }
+    if (gks_grow(&b->v, &b->cap, b->n + 1, sizeof *b->v))
+        return 300;
     b->v[b->n++] = *v;
     return 0;
 }
@@ -189,32 +183,16 @@ static void facet_buf_free(facet_buf *b)
     memset(b, 0, sizeof *b);
 }
 
-static int grow(void **a, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap)
-        return 0;
-    size_t c = *cap ? *cap : 64;
-    while (c < need)
-        c *= 2;
-    void *n = gks_realloc_array(*a, c, size);
-    if (!n)
-        return 300;
-    *a = n;
-    *cap = c;
-    return 0;
-}
-
 /* Output arrays for m vertices and nl loops. */
 static int out_reserve(facet_buf *b, size_t m, size_t nl)
 {
     size_t c1 = b->cap_out, c2 = b->cap_out, c3 = b->cap_out;
-    if (grow((void **)&b->pts, &c1, m, sizeof *b->pts) ||
-        grow((void **)&b->vn, &c2, m, sizeof *b->vn) ||
-        grow((void **)&b->vc, &c3, m, sizeof *b->vc))
+    if (gks_grow(&b->pts, &c1, m, sizeof *b->pts) || gks_grow(&b->vn, &c2, m, sizeof *b->vn) ||
+        gks_grow(&b->vc, &c3, m, sizeof *b->vc))
         return 300;
     if (c1 > b->cap_out) /* all three grew to the same capacity */
         b->cap_out = c1;
-    return grow((void **)&b->counts, &b->cap_counts, nl, sizeof *b->counts);
+    return gks_grow(&b->counts, &b->cap_counts, nl, sizeof *b->counts);
 }
 
 /* Sends facet f (loops from loop0, indices from idx0) to ws. */
@@ -226,7 +204,7 @@ static int send_facet(gks_ws *ws, const gks_prim *tpl, const norm_ctx *nc, const
     for (size_t k = 0; k < nl; k++)
         nv += (size_t)d->loop_counts[loop0 + k];
     int use_n = mp->n != NULL, use_c = (d->vflag & GVERT_COORD_COLR) != 0, inside = 1;
-    if (grow((void **)&b->v, &b->cap, nv, sizeof *b->v))
+    if (gks_grow(&b->v, &b->cap, nv, sizeof *b->v))
         return 300;
     for (size_t i = 0; i < nv; i++) {
         size_t j = (size_t)d->idx[idx0 + i];

@@ -27,20 +27,6 @@ static void reorder(int *list, int n, int a, int ref, int higher)
     list[at] = a;
 }
 
-/* The list convention of the other list inquiries. */
-static int copy_out(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len)
-{
-    *len = n;
-    if (start < 0 || start >= n)
-        return 2002;
-    int k = 0;
-    for (int i = start; i < n && k < cap && out && out->ints; i++)
-        out->ints[k++] = list[i];
-    if (out)
-        out->num_ints = k;
-    return 0;
-}
-
 GKS_API void gset_vp_in_pri(Gint tran_num, Gint ref_tran_num, Grel_pri rel_pri)
 {
     if (gks_check_state(GFN_SVPIP))
@@ -60,7 +46,7 @@ GKS_API void ginq_list_norm_tran_nums(Gint num_elems_appl_list, Gint start_pos, 
     GKS_INQ_ARGS(err_ind, list, length_list);
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
-    *err_ind = copy_out(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1, num_elems_appl_list,
+    *err_ind = gks_list_copy(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1, num_elems_appl_list,
                         start_pos, list, length_list);
 }
 
@@ -88,6 +74,6 @@ GKS_API void ginq_list_view_inds(Gint ws_id, Gint num_elems_appl_list, Gint star
     gks_ws *ws = gks_inq_ws(ws_id, err_ind);
     if (!ws)
         return;
-    *err_ind = copy_out(ws->view_pri, GKS_MAX_VIEW_IND + 1, num_elems_appl_list, start_pos,
+    *err_ind = gks_list_copy(ws->view_pri, GKS_MAX_VIEW_IND + 1, num_elems_appl_list, start_pos,
                         list, length_list);
 }

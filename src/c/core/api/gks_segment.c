@@ -70,9 +70,11 @@ static void seg_delete(int name)
     gks_world_changed();
 }
 
-/* Common checks of the functions naming an existing segment: 120, 122. */
+/* Entry of a function on an existing segment: the state check, then 120, 122. */
 static gks_segment *existing(int fctid, Gint name)
 {
+    if (gks_check_state(fctid))
+        return NULL;
     if (name < 1)
         GKS_FAIL_RET(120, fctid, NULL);
     gks_segment *s = gks_seg_find(store(), name);
@@ -130,8 +132,6 @@ GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
 
 GKS_API void gdel_seg(Gint seg_name)
 {
-    if (gks_check_state(GFN_DSG))
-        return;
     gks_segment *s = existing(GFN_DSG, seg_name);
     if (!s)
         return;
@@ -179,8 +179,6 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    if (gks_check_state(GFN_SSGT3))
-        return;
     gks_segment *s = existing(GFN_SSGT3, seg_name);
     if (!s)
         return;
@@ -199,8 +197,6 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    if (gks_check_state(GFN_SSGT))
-        return;
     gks_segment *s = existing(GFN_SSGT, seg_name);
     if (!s)
         return;
@@ -219,8 +215,6 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 
 GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
 {
-    if (gks_check_state(GFN_SVIS))
-        return;
     gks_segment *s = existing(GFN_SVIS, seg_name);
     if (!s)
         return;
@@ -237,8 +231,6 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
 
 GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
 {
-    if (gks_check_state(GFN_SHLIT))
-        return;
     gks_segment *s = existing(GFN_SHLIT, seg_name);
     if (!s)
         return;
@@ -250,8 +242,6 @@ GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
 
 GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
 {
-    if (gks_check_state(GFN_SSGP))
-        return;
     gks_segment *s = existing(GFN_SSGP, seg_name);
     if (!s)
         return;
@@ -268,8 +258,6 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
 
 GKS_API void gset_det(Gint seg_name, Gseg_det det)
 {
-    if (gks_check_state(GFN_SDTEC))
-        return;
     gks_segment *s = existing(GFN_SDTEC, seg_name);
     if (!s)
         return;
@@ -402,17 +390,10 @@ GKS_API void ginq_set_seg_names(Gint num_elems_appl_list, Gint start_pos, Gint *
     if (gks_inq_begin(err_ind, GKS_S_OPEN))
         return;
     const gks_seg_store *st = store();
-    *length_list = (Gint)st->n;
-    if (start_pos < 0 || (start_pos >= (Gint)st->n && !(start_pos == 0 && st->n == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0;
-    for (size_t i = (size_t)start_pos; i < st->n && k < num_elems_appl_list && seg_names &&
-                                       seg_names->ints; i++)
-        seg_names->ints[k++] = st->seg[i]->name;
-    if (seg_names)
-        seg_names->num_ints = k;
+    gks_list_out w = gks_list_begin(seg_names, num_elems_appl_list, start_pos);
+    for (size_t i = 0; i < st->n; i++)
+        gks_list_put(&w, st->seg[i]->name);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
@@ -452,19 +433,11 @@ GKS_API void ginq_set_seg_names_ws(Gint ws_id, Gint num_elems_appl_list, Gint st
     if (!gks_inq_ws(ws_id, err_ind))
         return;
     const gks_seg_store *st = store();
-    int n = 0, k = 0;
-    for (size_t i = 0; i < st->n; i++) {
-        if (!gks_seg_on_ws(st->seg[i], ws_id))
-            continue;
-        if (n >= start_pos && k < num_elems_appl_list && seg_names && seg_names->ints)
-            seg_names->ints[k++] = st->seg[i]->name;
-        n++;
-    }
-    *length_list = n;
-    if (seg_names)
-        seg_names->num_ints = k;
-    if (start_pos < 0 || (start_pos >= n && !(start_pos == 0 && n == 0)))
-        *err_ind = 2002;
+    gks_list_out w = gks_list_begin(seg_names, num_elems_appl_list, start_pos);
+    for (size_t i = 0; i < st->n; i++)
+        if (gks_seg_on_ws(st->seg[i], ws_id))
+            gks_list_put(&w, st->seg[i]->name);
+    *err_ind = gks_list_end(&w, length_list);
 }
 
 GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint start_pos,
@@ -482,16 +455,7 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
         *err_ind = 122;
         return;
     }
-    *length_list = s->n_ws;
-    if (start_pos < 0 || (start_pos >= s->n_ws && !(start_pos == 0 && s->n_ws == 0))) {
-        *err_ind = 2002;
-        return;
-    }
-    int k = 0;
-    for (int i = start_pos; i < s->n_ws && k < num_elems_appl_list && ws_ids && ws_ids->ints; i++)
-        ws_ids->ints[k++] = s->ws[i];
-    if (ws_ids)
-        ws_ids->num_ints = k;
+    *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids, length_list);
 }
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)

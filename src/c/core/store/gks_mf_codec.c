@@ -47,18 +47,10 @@ static char *rec_grow(gksm_rec *r, size_t extra)
         r->failed = 1;
         return NULL;
     }
-    size_t need = r->len + extra + 1; /* + the terminator snprintf writes */
-    if (need > r->cap) {
-        size_t cap = r->cap ? r->cap : 256;
-        while (cap < need)
-            cap = cap > SIZE_MAX / 2 ? need : 2 * cap;
-        char *b = gks_realloc_array(r->buf, cap, 1);
-        if (!b) {
-            r->failed = 1;
-            return NULL;
-        }
-        r->buf = b;
-        r->cap = cap;
+    /* + the terminator snprintf writes */
+    if (gks_grow(&r->buf, &r->cap, r->len + extra + 1, 1)) {
+        r->failed = 1;
+        return NULL;
     }
     return r->buf + r->len;
 }

@@ -51,14 +51,8 @@ gks_segment *gks_seg_find(const gks_seg_store *st, int name)
 
 gks_segment *gks_seg_create(gks_seg_store *st, int name)
 {
-    if (st->n == st->cap) {
-        size_t cap = st->cap ? 2 * st->cap : 16;
-        gks_segment **a = gks_realloc_array(st->seg, cap, sizeof *a);
-        if (!a)
-            return NULL;
-        st->seg = a;
-        st->cap = cap;
-    }
+    if (gks_grow(&st->seg, &st->cap, st->n + 1, sizeof *st->seg))
+        return NULL;
     gks_segment *s = gks_calloc_array(1, sizeof *s);
     if (!s)
         return NULL;
@@ -83,21 +77,11 @@ void gks_seg_delete(gks_seg_store *st, int name)
 }
 
 /* Makes room for `extra` more elements of `size` in *a (count *n, capacity *cap). */
-static int reserve(void **a, size_t *n, size_t *cap, size_t extra, size_t size)
+static int reserve(void *a, size_t *n, size_t *cap, size_t extra, size_t size)
 {
     if (extra > SIZE_MAX / 2 - *n)
         return 301;
-    if (*n + extra <= *cap)
-        return 0;
-    size_t c = *cap ? *cap : 16;
-    while (c < *n + extra)
-        c *= 2;
-    void *b = gks_realloc_array(*a, c, size);
-    if (!b)
-        return 301;
-    *a = b;
-    *cap = c;
-    return 0;
+    return gks_grow(a, cap, *n + extra, size) ? 301 : 0;
 }
 
 int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
@@ -114,13 +98,13 @@ int gks_seg_append(gks_segment *s, const gks_seg_prim *p)
     int share = s->n_bound > 0 &&
                 memcmp(&s->bound[s->n_bound - 1], p->bound, sizeof *p->bound) == 0;
     /* Reserve everything first: on failure nothing has changed. */
-    if (reserve((void **)&s->rec, &s->n_rec, &s->cap_rec, 1, sizeof *s->rec) ||
-        reserve((void **)&s->pts, &s->n_pts, &s->cap_pts, n_pts, sizeof *s->pts) ||
+    if (reserve(&s->rec, &s->n_rec, &s->cap_rec, 1, sizeof *s->rec) ||
+        reserve(&s->pts, &s->n_pts, &s->cap_pts, n_pts, sizeof *s->pts) ||
         n_cells > SIZE_MAX / 2 - n_loops || n_dints > SIZE_MAX / 2 - n_loops - n_cells ||
-        reserve((void **)&s->ints, &s->n_ints, &s->cap_ints, n_loops + n_cells + n_dints,
+        reserve(&s->ints, &s->n_ints, &s->cap_ints, n_loops + n_cells + n_dints,
                 sizeof *s->ints) ||
-        reserve((void **)&s->chars, &s->n_chars, &s->cap_chars, n_chars, 1) ||
-        (!share && reserve((void **)&s->bound, &s->n_bound, &s->cap_bound, 1, sizeof *s->bound)))
+        reserve(&s->chars, &s->n_chars, &s->cap_chars, n_chars, 1) ||
+        (!share && reserve(&s->bound, &s->n_bound, &s->cap_bound, 1, sizeof *s->bound)))
         return 301;
     gks_seg_rec *r = &s->rec[s->n_rec++];
     *r = (gks_seg_rec){ .kind = p->kind, .n_loops = (int)n_loops, .n_points = (int)n_pts,

@@ -101,26 +101,9 @@ struct png_render {
 };
 
 /* --- growable arrays ------------------------------------------------------------------ */
-/* p grown to at least need elements (geometric growth); on failure p is kept and
- * *fail = 300. */
-static void *grow(void *p, size_t *cap, size_t need, size_t size, int *fail)
-{
-    *fail = 0;
-    if (need <= *cap)
-        return p;
-    size_t c = *cap ? *cap : 64;
-    while (c < need)
-        c = c > SIZE_MAX / 2 ? need : 2 * c;
-    void *q = gks_realloc_array(p, c, size);
-    if (!q) {
-        *fail = 300;
-        return p;
-    }
-    *cap = c;
-    return q;
-}
+/* gks_grow on r->arr, its error kept in r->fail. */
 #define GROW(r, arr, cap, need) \
-    ((r)->arr = grow((r)->arr, &(r)->cap, (need), sizeof *(r)->arr, &(r)->fail), (r)->fail)
+    ((r)->fail = gks_grow(&(r)->arr, &(r)->cap, (need), sizeof *(r)->arr))
 
 png_render *ws_png_render_new(void)
 {
