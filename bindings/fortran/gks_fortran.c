@@ -76,14 +76,12 @@ __attribute__((constructor)) static void gks_fortran_init(void)
     install_handler();
 }
 
-/* Out of memory inside the binding: report error 300 through the current handler. */
-static void report_nomem(Gint fctid)
+void gks_f77_nomem(Gint fctid)
 {
     gks_binding_error(300, fctid);
 }
 
-/* The binding's one allocation funnel: n * size bytes, overflow checked; NULL on failure. */
-static void *alloc_array(size_t n, size_t size)
+void *gks_f77_alloc(size_t n, size_t size)
 {
     if (size != 0 && n > SIZE_MAX / size)
         return NULL;
@@ -103,7 +101,7 @@ static char *str_dup_n(const char *s, size_t len)
 {
     if (len == SIZE_MAX)
         return NULL;
-    char *p = alloc_array(len + 1, 1);
+    char *p = gks_f77_alloc(len + 1, 1);
     if (!p)
         return NULL;
     if (len)
@@ -112,12 +110,11 @@ static char *str_dup_n(const char *s, size_t len)
     return p;
 }
 
-/* Blank-padded copy of a C string into a Fortran CHARACTER; returns the copied length. */
-static fint fill_fstr(const char *src, char *dst, size_t dlen)
+fint gks_f77_fill_str(const char *src, char *dst, size_t dlen)
 {
-    size_t n = strlen(src);
-    if (n > dlen)
-        n = dlen;
+    size_t n = 0;
+    while (n < dlen && src[n])
+        n++;
     memcpy(dst, src, n);
     memset(dst + n, ' ', dlen - n);
     return (fint)n;
@@ -130,8 +127,8 @@ static int make_points(fint n, const freal *px, const freal *py, Gpoint_list *pl
     pl->points = NULL;
     if (n <= 0)
         return 0;
-    if (!(pl->points = alloc_array((size_t)n, sizeof(Gpoint)))) {
-        report_nomem(fctid);
+    if (!(pl->points = gks_f77_alloc((size_t)n, sizeof(Gpoint)))) {
+        gks_f77_nomem(fctid);
         return -1;
     }
     for (fint i = 0; i < n; i++) {
@@ -257,7 +254,7 @@ static void message_n(fint wkid, const char *mess, size_t len)
 {
     char *s = str_dup_n(mess, trimmed(mess, len));
     if (!s) {
-        report_nomem(GFN_MSG);
+        gks_f77_nomem(GFN_MSG);
         return;
     }
     gmessage(wkid, s);
@@ -305,8 +302,8 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         size_t total = 0;
         size_t nr = (size_t)(nrec - 1);
         size_t cap = nr < SIZE_MAX / idr_len ? nr * idr_len : SIZE_MAX;
-        if (cap == SIZE_MAX || !(name = alloc_array(cap + 1, 1))) {
-            report_nomem(GFN_ESC);
+        if (cap == SIZE_MAX || !(name = gks_f77_alloc(cap + 1, 1))) {
+            gks_f77_nomem(GFN_ESC);
             return;
         }
         for (fint r = 1; r < nrec; r++) {
@@ -569,13 +566,13 @@ FAPI void FNAME(gqwkt, GQWKT)(const fint *wkid, fint *errind, fint *tus, freal *
  * LNAME = its length (0 if unknown). Not part of ISO 8651-1. */
 FAPI void FNAME(gkfnam, GKFNAM)(const fint *fctid, char *name, fint *lname, size_t name_len)
 {
-    *lname = fill_fstr(gks_function_name(*fctid), name, name_len);
+    *lname = gks_f77_fill_str(gks_function_name(*fctid), name, name_len);
 }
 
 /* GKEMSG(ERRNR, MSG, LMSG): the standard message of an error number, blank-padded. */
 FAPI void FNAME(gkemsg, GKEMSG)(const fint *errnr, char *msg, fint *lmsg, size_t msg_len)
 {
-    *lmsg = fill_fstr(gks_error_message(*errnr), msg, msg_len);
+    *lmsg = gks_f77_fill_str(gks_error_message(*errnr), msg, msg_len);
 }
 
 /* ------------------------------------------------- GKS-3D output and viewing */
@@ -590,8 +587,8 @@ static int make_points3(fint n, const freal *px, const freal *py, const freal *p
     pl->points = NULL;
     if (n <= 0)
         return 0;
-    if (!(pl->points = alloc_array((size_t)n, sizeof(Gpoint3)))) {
-        report_nomem(fctid);
+    if (!(pl->points = gks_f77_alloc((size_t)n, sizeof(Gpoint3)))) {
+        gks_f77_nomem(fctid);
         return -1;
     }
     for (fint i = 0; i < n; i++)

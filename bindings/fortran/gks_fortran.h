@@ -14,6 +14,16 @@
 typedef int fint;
 typedef float freal;
 
+/* The binding's one allocation funnel: n * size bytes, overflow checked (at least one
+ * byte, so NULL always means failure); NULL on failure. */
+void *gks_f77_alloc(size_t n, size_t size);
+/* Storage overflow inside the binding: error 300 for fctid through the core's error path
+ * (gks_binding_error). */
+void gks_f77_nomem(Gint fctid);
+
+/* Blank-padded copy of a C string into a CHARACTER*(dlen); returns the copied length. */
+fint gks_f77_fill_str(const char *src, char *dst, size_t dlen);
+
 /* A C list inquiry (num_elems_appl_list, start_pos, err_ind, list, length). */
 typedef void (*gks_f77_list_inq)(Gint, Gint, Gint *, Gint_list *, Gint *);
 

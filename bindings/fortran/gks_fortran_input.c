@@ -23,20 +23,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Report error 300 (storage overflow in the binding) through the current handler. */
-static void report_nomem(Gint fctid)
-{
-    gks_binding_error(300, fctid);
-}
-
-/* n * size bytes, overflow checked; NULL on failure. */
-static void *alloc_array(size_t n, size_t size)
-{
-    if (size != 0 && n > SIZE_MAX / size)
-        return NULL;
-    return malloc(n * size > 0 ? n * size : 1);
-}
-
 static Glimit echo_area(const freal *xmin, const freal *xmax, const freal *ymin,
                         const freal *ymax)
 {
@@ -65,23 +51,12 @@ static fint record_out(const Gin_data *r, fint mldr, fint *ldr, char *datrec, si
     return 0;
 }
 
-/* Blank-padded copy of a C string into a CHARACTER; returns the copied length. */
-static fint fill_fstr(const char *src, char *dst, size_t dlen)
-{
-    size_t n = 0;
-    while (n < dlen && src[n])
-        n++;
-    memcpy(dst, src, n);
-    memset(dst + n, ' ', dlen - n);
-    return (fint)n;
-}
-
 /* A C string buffer for a CHARACTER*(len) output ("" on entry); NULL: 300 reported. */
 static char *str_buffer(size_t len, Gint fctid)
 {
-    char *b = len < SIZE_MAX ? alloc_array(len + 1, 1) : NULL;
+    char *b = len < SIZE_MAX ? gks_f77_alloc(len + 1, 1) : NULL;
     if (!b)
-        report_nomem(fctid);
+        gks_f77_nomem(fctid);
     else
         b[0] = '\0';
     return b;
@@ -110,9 +85,9 @@ static int stroke_buffer(Gstroke *s, fint n, Gint fctid)
     *s = (Gstroke){ 0, n > 0 ? n : 0, NULL };
     if (n <= 0)
         return 0;
-    if (!(s->points = alloc_array((size_t)n, sizeof *s->points))) {
+    if (!(s->points = gks_f77_alloc((size_t)n, sizeof *s->points))) {
         if (fctid >= 0)
-            report_nomem(fctid);
+            gks_f77_nomem(fctid);
         return -1;
     }
     return 0;
@@ -310,7 +285,7 @@ FAPI void FNAME(grqst, GRQST)(const fint *wkid, const fint *stdnr, fint *stat, f
     if (b)
         greq_string(*wkid, *stdnr, &s, b);
     *stat = s;
-    *lostr = fill_fstr(b ? b : "", str, str_len);
+    *lostr = gks_f77_fill_str(b ? b : "", str, str_len);
     free(b);
 }
 
@@ -377,7 +352,7 @@ FAPI void FNAME(gsmst, GSMST)(const fint *wkid, const fint *stdnr, fint *lostr, 
     char *b = result_buffer(str_len, GFN_SMST);
     if (b)
         gsample_string(*wkid, *stdnr, b);
-    *lostr = fill_fstr(b ? b : "", str, str_len);
+    *lostr = gks_f77_fill_str(b ? b : "", str, str_len);
     free(b);
 }
 
@@ -457,7 +432,7 @@ FAPI void FNAME(ggtst, GGTST)(fint *lostr, char *str, size_t str_len)
     char *b = result_buffer(str_len, GFN_GTST);
     if (b)
         gget_string(b);
-    *lostr = fill_fstr(b ? b : "", str, str_len);
+    *lostr = gks_f77_fill_str(b ? b : "", str, str_len);
     free(b);
 }
 
@@ -573,7 +548,7 @@ FAPI void FNAME(gqsts, GQSTS)(const fint *wkid, const fint *stdnr, const fint *m
                               char *datrec, size_t istr_len, size_t datrec_len)
 {
     Gstring_st s = { 0 };
-    s.init_string = istr_len < SIZE_MAX ? alloc_array(istr_len + 1, 1) : NULL;
+    s.init_string = istr_len < SIZE_MAX ? gks_f77_alloc(istr_len + 1, 1) : NULL;
     if (!s.init_string) {
         *errind = 300;
         return;
@@ -582,7 +557,7 @@ FAPI void FNAME(gqsts, GQSTS)(const fint *wkid, const fint *stdnr, const fint *m
     s.init_string_size = istr_len + 1;
     ginq_string_st(*wkid, *stdnr, errind, &s);
     if (!*errind) {
-        *lostr = fill_fstr(s.init_string, istr, istr_len);
+        *lostr = gks_f77_fill_str(s.init_string, istr, istr_len);
         *buflen = s.in_buf_size;
         *inipos = s.init_cur_pos;
         *errind = dev_out(&s.dev, *mldr, mode, esw, pet, earea, ldr, datrec, datrec_len);
@@ -611,7 +586,7 @@ static fint def_out(const Gdef_in *d, fint n, fint mldr, fint *ol, fint *pet, fr
 static int pets_buffer(Gdef_in *d, fint n)
 {
     d->pets = (Gint_list){ n > 0 ? n : 0, NULL };
-    if (n > 0 && !(d->pets.ints = alloc_array((size_t)n, sizeof(Gint))))
+    if (n > 0 && !(d->pets.ints = gks_f77_alloc((size_t)n, sizeof(Gint))))
         return -1;
     return 0;
 }
@@ -975,9 +950,9 @@ FAPI void FNAME(ginsk3, GINSK3)(const fint *wkid, const fint *skdnr, const fint 
                                 const freal *evol, const fint *buflen, const fint *ldr,
                                 const char *datrec, size_t datrec_len)
 {
-    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    Gpoint3 *p = *n > 0 ? gks_f77_alloc((size_t)*n, sizeof *p) : NULL;
     if (*n > 0 && !p) {
-        report_nomem(GFN_INSK3);
+        gks_f77_nomem(GFN_INSK3);
         return;
     }
     for (fint i = 0; i < *n; i++)
@@ -1074,9 +1049,9 @@ FAPI void FNAME(grqsk3, GRQSK3)(const fint *wkid, const fint *skdnr, const fint 
                                 fint *viewi, fint *tnr, fint *np, freal *pxa, freal *pya,
                                 freal *pza)
 {
-    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    Gpoint3 *p = *n > 0 ? gks_f77_alloc((size_t)*n, sizeof *p) : NULL;
     if (*n > 0 && !p) {
-        report_nomem(GFN_RQSK3);
+        gks_f77_nomem(GFN_RQSK3);
         return;
     }
     Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
@@ -1104,9 +1079,9 @@ FAPI void FNAME(gsmsk3, GSMSK3)(const fint *wkid, const fint *skdnr, const fint 
                                 fint *viewi, fint *tnr, fint *np, freal *pxa, freal *pya,
                                 freal *pza)
 {
-    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    Gpoint3 *p = *n > 0 ? gks_f77_alloc((size_t)*n, sizeof *p) : NULL;
     if (*n > 0 && !p) {
-        report_nomem(GFN_SMSK3);
+        gks_f77_nomem(GFN_SMSK3);
         return;
     }
     Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
@@ -1130,9 +1105,9 @@ FAPI void FNAME(ggtlc3, GGTLC3)(fint *viewi, fint *tnr, freal *px, freal *py, fr
 FAPI void FNAME(ggtsk3, GGTSK3)(const fint *n, fint *viewi, fint *tnr, fint *np, freal *pxa,
                                 freal *pya, freal *pza)
 {
-    Gpoint3 *p = *n > 0 ? alloc_array((size_t)*n, sizeof *p) : NULL;
+    Gpoint3 *p = *n > 0 ? gks_f77_alloc((size_t)*n, sizeof *p) : NULL;
     if (*n > 0 && !p) {
-        report_nomem(GFN_GTSK3);
+        gks_f77_nomem(GFN_GTSK3);
         return;
     }
     Gstroke3 s = { 0, *n > 0 ? *n : 0, p };
@@ -1201,7 +1176,7 @@ FAPI void FNAME(gqsks3, GQSKS3)(const fint *wkid, const fint *skdnr, const fint 
     Gstroke_st3 s = { 0 };
     s.init_stroke.num_points = *n > STROKE_INQ_MAX ? *n : STROKE_INQ_MAX;
     if (!(s.init_stroke.points =
-              alloc_array((size_t)s.init_stroke.num_points, sizeof(Gpoint3)))) {
+              gks_f77_alloc((size_t)s.init_stroke.num_points, sizeof(Gpoint3)))) {
         *errind = 300;
         return;
     }
@@ -1282,7 +1257,7 @@ FAPI void FNAME(gqsts3, GQSTS3)(const fint *wkid, const fint *stdnr, const fint 
                                 fint *ldr, char *datrec, size_t istr_len, size_t datrec_len)
 {
     Gstring_st3 s = { 0 };
-    s.init_string = istr_len < SIZE_MAX ? alloc_array(istr_len + 1, 1) : NULL;
+    s.init_string = istr_len < SIZE_MAX ? gks_f77_alloc(istr_len + 1, 1) : NULL;
     if (!s.init_string) {
         *errind = 300;
         return;
@@ -1291,7 +1266,7 @@ FAPI void FNAME(gqsts3, GQSTS3)(const fint *wkid, const fint *stdnr, const fint 
     s.init_string_size = istr_len + 1;
     ginq_string_st3(*wkid, *stdnr, errind, &s);
     if (!*errind) {
-        *lostr = fill_fstr(s.init_string, istr, istr_len);
+        *lostr = gks_f77_fill_str(s.init_string, istr, istr_len);
         *buflen = s.in_buf_size;
         *inipos = s.init_cur_pos;
         *errind = DEV3_OUT(s);

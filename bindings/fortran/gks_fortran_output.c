@@ -8,44 +8,23 @@
  * convert outputs. CHARACTER arguments take a size_t hidden length after all explicit
  * arguments; text keeps its trailing blanks. Conventions as gks_fortran.c.
  */
-#include "gks.h"
 #include "gks_binding.h"
-#include "FC.h"
+#include "gks_fortran.h"
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define FAPI __attribute__((visibility("default")))
-#define FNAME(lower, UPPER) FC_GLOBAL(lower, UPPER)
-
-typedef int fint;
-typedef float freal;
-
 /* ------------------------------------------------------------------ helpers */
-/* Report error 300 (storage overflow in the binding) through the current handler. */
-static void report_nomem(Gint fctid)
-{
-    gks_binding_error(300, fctid);
-}
-
-/* n * size bytes, overflow checked; NULL on failure. */
-static void *alloc_array(size_t n, size_t size)
-{
-    if (size != 0 && n > SIZE_MAX / size)
-        return NULL;
-    return malloc(n * size > 0 ? n * size : 1);
-}
-
 /* NUL-terminated copy of the first len characters of a text string; NULL: reported 300.
  * Not trimmed: a CHARACTER text has its full declared length in ISO 8651-1, so the
  * trailing blanks of 'HOURS ' are drawn and measured (TEXT, INQUIRE TEXT EXTENT). File
  * names and connection identifiers are trimmed elsewhere (gks_fortran.c). */
 static char *fstr(const char *s, size_t len, Gint fctid)
 {
-    char *p = len < SIZE_MAX ? alloc_array(len + 1, 1) : NULL;
+    char *p = len < SIZE_MAX ? gks_f77_alloc(len + 1, 1) : NULL;
     if (!p) {
-        report_nomem(fctid);
+        gks_f77_nomem(fctid);
         return NULL;
     }
     memcpy(p, s, len);
@@ -61,8 +40,8 @@ static int points2(fint n, const freal *px, const freal *py, Gpoint_list *l, Gin
     l->points = NULL;
     if (n <= 0)
         return 0;
-    if (!(l->points = alloc_array((size_t)n, sizeof *l->points))) {
-        report_nomem(fctid);
+    if (!(l->points = gks_f77_alloc((size_t)n, sizeof *l->points))) {
+        gks_f77_nomem(fctid);
         return -1;
     }
     for (fint i = 0; i < n; i++)
@@ -77,8 +56,8 @@ static int points3(fint n, const freal *px, const freal *py, const freal *pz, Gp
     l->points = NULL;
     if (n <= 0)
         return 0;
-    if (!(l->points = alloc_array((size_t)n, sizeof *l->points))) {
-        report_nomem(fctid);
+    if (!(l->points = gks_f77_alloc((size_t)n, sizeof *l->points))) {
+        gks_f77_nomem(fctid);
         return -1;
     }
     for (fint i = 0; i < n; i++)
@@ -97,9 +76,9 @@ static int sub_array(fint dimx, fint dimy, fint isc, fint isr, fint dx, fint dy,
     if (dx < 1 || dy < 1 || isc < 1 || isr < 1 || dimx < 1 || dimy < 1 ||
         isc - 1 > dimx - dx || isr - 1 > dimy - dy)
         return 0;
-    rep->colr_array = alloc_array((size_t)dx * (size_t)dy, sizeof(Gint));
+    rep->colr_array = gks_f77_alloc((size_t)dx * (size_t)dy, sizeof(Gint));
     if (!rep->colr_array) {
-        report_nomem(fctid);
+        gks_f77_nomem(fctid);
         return -1;
     }
     for (fint j = 0; j < dy; j++)
@@ -199,14 +178,14 @@ static void fill_set(fint nptr, const fint *ptr, const freal *px, const freal *p
             gfill_area_set(&(Gpoint_list_list){ 0, NULL });
         return;
     }
-    Gpoint_list *l2 = pz ? NULL : alloc_array((size_t)nptr, sizeof *l2);
-    Gpoint_list3 *l3 = pz ? alloc_array((size_t)nptr, sizeof *l3) : NULL;
+    Gpoint_list *l2 = pz ? NULL : gks_f77_alloc((size_t)nptr, sizeof *l2);
+    Gpoint_list3 *l3 = pz ? gks_f77_alloc((size_t)nptr, sizeof *l3) : NULL;
     fint total = nptr > 0 && ptr[nptr - 1] > 0 ? ptr[nptr - 1] : 0;
-    Gpoint *p2 = pz ? NULL : alloc_array((size_t)total, sizeof *p2);
-    Gpoint3 *p3 = pz ? alloc_array((size_t)total, sizeof *p3) : NULL;
+    Gpoint *p2 = pz ? NULL : gks_f77_alloc((size_t)total, sizeof *p2);
+    Gpoint3 *p3 = pz ? gks_f77_alloc((size_t)total, sizeof *p3) : NULL;
     if ((pz && (!l3 || !p3)) || (!pz && (!l2 || !p2))) {
         free(l2); free(l3); free(p2); free(p3);
-        report_nomem(fctid);
+        gks_f77_nomem(fctid);
         return;
     }
     for (fint i = 0; i < total; i++) {

@@ -6,6 +6,7 @@
  * state lists unchanged).
  */
 #include <stdarg.h>
+#include <math.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdio.h>
@@ -90,6 +91,16 @@ static void test_transformation_and_output_arguments(void **u)
     EXPECT_ERROR(gset_ws_win(1, &out), 53, GFN_SWKWN);
     Glimit big = { 0, 2000, 0, 10 };
     EXPECT_ERROR(gset_ws_vp(1, &big), 54, GFN_SWKVP);
+    /* the xform module's checks: 51 (order, NaN, NULL) before containment */
+    Glimit nan_r = { 0, NAN, 0, 1 }, bad_out = { 1.5, 0, 0, 1 };
+    EXPECT_ERROR(gset_win(1, &nan_r), 51, GFN_SWN);
+    EXPECT_ERROR(gset_win(1, NULL), 51, GFN_SWN);
+    EXPECT_ERROR(gset_vp(1, &bad_out), 51, GFN_SVP);
+    EXPECT_ERROR(gset_vp(1, &nan_r), 51, GFN_SVP);
+    EXPECT_ERROR(gset_ws_win(1, &bad_out), 51, GFN_SWKWN);
+    EXPECT_ERROR(gset_ws_win(1, NULL), 51, GFN_SWKWN);
+    EXPECT_ERROR(gset_ws_vp(1, &nan_r), 51, GFN_SWKVP);
+    EXPECT_ERROR(gset_ws_vp(1, &bad), 51, GFN_SWKVP);
     EXPECT_ERROR(gset_line_colr_ind(-1), 92, GFN_SPLCI);
     Gcolr_rep c = { { 0.5, 1.5, 0 } };
     EXPECT_ERROR(gset_colr_rep(1, 2, &c), 96, GFN_SCR);

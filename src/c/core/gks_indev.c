@@ -505,15 +505,13 @@ int gks_in_set_mode(gks_ws *ws, Gin_class cls, int num, Gop_mode mode, int echo)
 
 static int dc_to_npc(const gks_ws *ws, const double dc[3], double npc[3])
 {
-    double win[6], vp[6], m[4][4], inv[4][4];
-    gks_limit3_array(&ws->cur_win, win);
-    gks_limit3_array(&ws->cur_vp, vp);
-    if (gks_xform_ws_tran3(win, vp, m) || gks_xform_invert((const double (*)[4])m, inv))
+    double m[4][4], inv[4][4];
+    if (gks_ws_tran_matrix(ws, m) || gks_xform_invert((const double (*)[4])m, inv))
         return -1;
     gks_xform_point((const double (*)[4])inv, dc, npc);
     /* A 2-D display space has no depth: z comes back as the window's front. */
-    if (win[4] == win[5])
-        npc[2] = win[4];
+    if (ws->cur_win.z_min == ws->cur_win.z_max)
+        npc[2] = ws->cur_win.z_min;
     return 0;
 }
 
@@ -752,12 +750,8 @@ static int seg_outline(const gks_ws *ws, Gint seg, Gint pick_id, gks_in_outline_
                        void *user)
 {
     const gks_seg_store *st = gks_ctx()->sl->segs;
-    double win[6], vp[6], m[4][4];
-    if (!ws || !fn || !st)
-        return 0;
-    gks_limit3_array(&ws->cur_win, win);
-    gks_limit3_array(&ws->cur_vp, vp);
-    if (gks_xform_ws_tran3(win, vp, m))
+    double m[4][4];
+    if (!ws || !fn || !st || gks_ws_tran_matrix(ws, m))
         return 0;
     const gks_segment *s = gks_seg_find(st, seg);
     if (!s || !s->vis || !gks_seg_on_ws(s, ws->id))
@@ -866,10 +860,8 @@ static void active_list(gks_ws *ws, Gin_class rcls, int rnum, gks_in_active *a)
     a->request = -1;
     a->pick_at = seg_pick_at;
     a->seg_outline = seg_outline;
-    double win[6], vp[6], m[4][4];
-    gks_limit3_array(&ws->cur_win, win);
-    gks_limit3_array(&ws->cur_vp, vp);
-    int have_m = gks_xform_ws_tran3(win, vp, m) == 0;
+    double m[4][4];
+    int have_m = gks_ws_tran_matrix(ws, m) == 0;
     for (int c = 0; c < GKS_IN_NCLASS; c++)
         for (int i = 0; i < ws->in->desc->n_dev[c] && a->n < GKS_IN_MAX_ACTIVE; i++) {
             const gks_indev *d = &ws->in->dev[c][i];

@@ -675,18 +675,26 @@ static int quad_convex(const gks_raster_pt *q, double s)
     return pos == 4 || neg == 4;
 }
 
+/* The loops' point total into *total: 0 when n_loops < 1, a count is negative or there are
+ * points but no pts. */
+static int loops_total(int n_loops, const int *counts, const gks_raster_pt *pts, size_t *total)
+{
+    *total = 0;
+    if (n_loops < 1 || !counts)
+        return 0;
+    for (int l = 0; l < n_loops; l++) {
+        if (counts[l] < 0)
+            return 0;
+        *total += (size_t)counts[l];
+    }
+    return !*total || pts;
+}
+
 int gks_raster_fill_area(gks_raster_fb *fb, int n_loops, const int *counts,
                          const gks_raster_pt *pts, const gks_raster_fill *fill)
 {
-    if (!fb || !fill || !counts || n_loops < 1)
-        return GKS_RASTER_E_ARG;
-    size_t total = 0;
-    for (int l = 0; l < n_loops; l++) {
-        if (counts[l] < 0)
-            return GKS_RASTER_E_ARG;
-        total += (size_t)counts[l];
-    }
-    if (total && !pts)
+    size_t total;
+    if (!fb || !fill || !loops_total(n_loops, counts, pts, &total))
         return GKS_RASTER_E_ARG;
     paint p;
     int rc = paint_init(&p, fb, fill);
@@ -765,15 +773,9 @@ int gks_raster_cell_array_clipped(gks_raster_fb *fb, const gks_raster_pt *o,
                                   int ny, const float *rgb, const gks_raster_fill *fill,
                                   int n_loops, const int *counts, const gks_raster_pt *pts)
 {
-    if (!fb || !o || !pu || !pv || !rgb || nx < 1 || ny < 1 || n_loops < 1 || !counts)
-        return GKS_RASTER_E_ARG;
-    size_t total = 0;
-    for (int l = 0; l < n_loops; l++) {
-        if (counts[l] < 0)
-            return GKS_RASTER_E_ARG;
-        total += (size_t)counts[l];
-    }
-    if (total && !pts)
+    size_t total;
+    if (!fb || !o || !pu || !pv || !rgb || nx < 1 || ny < 1 ||
+        !loops_total(n_loops, counts, pts, &total))
         return GKS_RASTER_E_ARG;
     paint p;
     int rc = cell_paint_init(&p, fb, fill);

@@ -253,4 +253,10 @@ static inline int gks_ws_file_claim(gks_ws *ws, const char *path)
  * *base unchanged on error (ws_file.c). */
 int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
                        char **base);
+/* The workstation transformation of ws (current window -> current viewport, NPC3 -> DC3)
+ * as a 4x4 matrix (ws_tran.c); gks_ws_pixel_matrix maps onto the picture's pixels
+ * instead: the viewport moved to the origin and scaled by s pixels per DC unit, z onto
+ * [0,1]. 0, or gks_xform_ws_tran3's error (51, 308). */
+int gks_ws_tran_matrix(const gks_ws *ws, double m[4][4]);
+int gks_ws_pixel_matrix(const gks_ws *ws, double s, double m[4][4]);
 #endif

@@ -194,7 +194,9 @@ GKS_API void ginq_hlhsr_facs(Gint ws_type, Gint num_elems_appl_list, Gint start_
 }
 
 /* ------------------------------------------------------------ GKS state list values */
-GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
+/* The pattern width (k = 0) or height (k = 1) vector: the pattern's width or height along
+ * the direction of the k-th pattern reference vector, its x and y. */
+static void pat_vec(Gint *err_ind, Gvec *v, int k)
 {
     GKS_INQ_ARGS(err_ind, v);
     Gvec sz;
@@ -204,24 +206,20 @@ GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
     if (*err_ind)
         return;
     ginq_pat_ref_point_vecs(err_ind, &p, r);
-    double l = sqrt(r[0].delta_x * r[0].delta_x + r[0].delta_y * r[0].delta_y +
-                    r[0].delta_z * r[0].delta_z);
-    *v = (Gvec){ sz.delta_x * r[0].delta_x / l, sz.delta_x * r[0].delta_y / l };
+    double l = sqrt(r[k].delta_x * r[k].delta_x + r[k].delta_y * r[k].delta_y +
+                    r[k].delta_z * r[k].delta_z);
+    double s = k ? sz.delta_y : sz.delta_x;
+    *v = (Gvec){ s * r[k].delta_x / l, s * r[k].delta_y / l };
+}
+
+GKS_API void ginq_pat_width_vec(Gint *err_ind, Gvec *v)
+{
+    pat_vec(err_ind, v, 0);
 }
 
 GKS_API void ginq_pat_ht_vec(Gint *err_ind, Gvec *v)
 {
-    GKS_INQ_ARGS(err_ind, v);
-    Gvec sz;
-    Gpoint3 p;
-    Gvec3 r[2];
-    ginq_pat_size(err_ind, &sz.delta_x, &sz.delta_y);
-    if (*err_ind)
-        return;
-    ginq_pat_ref_point_vecs(err_ind, &p, r);
-    double l = sqrt(r[1].delta_x * r[1].delta_x + r[1].delta_y * r[1].delta_y +
-                    r[1].delta_z * r[1].delta_z);
-    *v = (Gvec){ sz.delta_y * r[1].delta_x / l, sz.delta_y * r[1].delta_y / l };
+    pat_vec(err_ind, v, 1);
 }
 
 GKS_API void ginq_cur_prim_attrs(Gint *err_ind, Gprim_attrs *p)
@@ -394,7 +392,7 @@ static gks_ws *pixel_ws(Gint ws_id, Gint *err)
  * relative). 0 or 308. */
 static int wc_to_pixel(const gks_ws *ws, const Gpoint *p, double *x, double *y)
 {
-    double n[3][4], win[6], m[4][4];
+    double n[3][4], m[4][4];
     if (gks_cur_norm_matrix(n))
         return 308;
     double h[4] = { n[0][0] * p->x + n[0][1] * p->y + n[0][3],
@@ -410,10 +408,7 @@ static int wc_to_pixel(const gks_ws *ws, const Gpoint *p, double *x, double *y)
                v->map_matrix[i][2] * t[2] + v->map_matrix[i][3] * t[3];
     if (u[3] == 0 || !isfinite(u[3]))
         return 308;
-    gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
-                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
-    if (gks_xform_ws_tran3(win, vp, m))
+    if (gks_ws_pixel_matrix(ws, 1.0, m))
         return 308;
     double q[3] = { u[0] / u[3], u[1] / u[3], u[2] / u[3] };
     *x = m[0][0] * q[0] + m[0][1] * q[1] + m[0][2] * q[2] + m[0][3];

@@ -216,8 +216,11 @@ static int new_piece(pieces *b)
 
 /* Clip the segment a-b to the viewport box (clipping on) plane by plane, each
  * intersection computed from the segment already shortened by the previous planes and
- * the clipped coordinate set exactly on the plane (so a segment from -1e30 to 1e30
- * keeps its visible part, which a single parametric interval cannot resolve).
+ * the clipped coordinate set exactly on the plane, so a segment from -1e30 to 1e30 keeps
+ * its visible part. The xform clipper (gks_xform_clip_*: the areas here, the
+ * drivers' view clip) keeps it too, computing each crossing from the nearer end, but does
+ * not put the clipped coordinate exactly on the plane; replacing this one by it may move
+ * pixels of the reference pictures and is left open.
  * Returns 1 if a part survives; *moved_a / *moved_b say whether an end was moved. */
 static int clip_segment(const norm_ctx *nc, double a[3], double b[3], int *moved_a,
                         int *moved_b)

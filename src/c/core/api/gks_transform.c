@@ -17,10 +17,18 @@
 #include <math.h>
 
 /* --- Normalization transformations ------------------------------------------------ */
-static int rect_valid(const Glimit *r)
+/* The checks are the xform module's (gks_xform_check_*); a NULL rectangle is 51. These
+ * give a 2-D rectangle as the double[4] / double[6] boxes they take. */
+static void rect4(const Glimit *r, double b[4])
 {
-    return r && isfinite(r->x_min) && isfinite(r->x_max) && isfinite(r->y_min) &&
-           isfinite(r->y_max) && r->x_min < r->x_max && r->y_min < r->y_max;
+    b[0] = r->x_min, b[1] = r->x_max, b[2] = r->y_min, b[3] = r->y_max;
+}
+
+/* A 2-D workstation window or viewport as a box with z from 0 to 0. */
+static void rect6(const Glimit *r, double b[6])
+{
+    rect4(r, b);
+    b[4] = b[5] = 0.0;
 }
 
 GKS_API void gset_win(Gint tran_num, const Glimit *win)
@@ -29,7 +37,11 @@ GKS_API void gset_win(Gint tran_num, const Glimit *win)
         return;
     if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
         GKS_FAIL(50, GFN_SWN);
-    if (!rect_valid(win))
+    double b[4];
+    if (!win)
+        GKS_FAIL(51, GFN_SWN);
+    rect4(win, b);
+    if (gks_xform_check_window(b))
         GKS_FAIL(51, GFN_SWN);
     Glimit3 *w = &gks_ctx()->sl->tran[tran_num].win;
     w->x_min = win->x_min; w->x_max = win->x_max;
@@ -42,10 +54,13 @@ GKS_API void gset_vp(Gint tran_num, const Glimit *vp)
         return;
     if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
         GKS_FAIL(50, GFN_SVP);
-    if (!rect_valid(vp))
+    double b[4];
+    if (!vp)
         GKS_FAIL(51, GFN_SVP);
-    if (vp->x_min < 0 || vp->x_max > 1 || vp->y_min < 0 || vp->y_max > 1)
-        GKS_FAIL(52, GFN_SVP);
+    rect4(vp, b);
+    int err = gks_xform_check_viewport(b); /* 51, then 52 */
+    if (err)
+        GKS_FAIL(err, GFN_SVP);
     Glimit3 *v = &gks_ctx()->sl->tran[tran_num].vp;
     v->x_min = vp->x_min; v->x_max = vp->x_max;
     v->y_min = vp->y_min; v->y_max = vp->y_max;
@@ -104,6 +119,12 @@ GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
 /* Requested values become current at once when the display surface is empty, else at
  * the next regeneration (UPDATE with PERFORM, CLEAR, or at once if implicit
  * regeneration is allowed). */
+/* The display space of ws, [0,dc_x] x [0,dc_y] x [0,1], as the xform checks take it. */
+static void display_space(const gks_ws *ws, double ds[3])
+{
+    ds[0] = ws->drv->desc->dc_x, ds[1] = ws->drv->desc->dc_y, ds[2] = 1.0;
+}
+
 static int ws_tran_changed(gks_ws *ws)
 {
     if (ws->disp_empty == GDISP_EMPTY) {
@@ -123,10 +144,13 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
     gks_ws *ws = gks_ws_checked(GFN_SWKWN, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    if (!rect_valid(ws_win))
+    double b[6];
+    if (!ws_win)
         GKS_FAIL(51, GFN_SWKWN);
-    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1)
-        GKS_FAIL(53, GFN_SWKWN);
+    rect6(ws_win, b);
+    int e = gks_xform_check_ws_window3(b); /* 51, then 53 */
+    if (e)
+        GKS_FAIL(e, GFN_SWKWN);
     ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
     ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
     GKS_MF_WS(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
@@ -142,24 +166,21 @@ GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
     gks_ws *ws = gks_ws_checked(GFN_SWKVP, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    if (!rect_valid(ws_vp))
+    double b[6];
+    if (!ws_vp)
         GKS_FAIL(51, GFN_SWKVP);
-    const gks_ws_desc *d = ws->drv->desc;
-    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 || ws_vp->y_max > d->dc_y)
-        GKS_FAIL(54, GFN_SWKVP);
+    rect6(ws_vp, b);
+    double ds[3];
+    display_space(ws, ds);
+    int e = gks_xform_check_ws_viewport3(b, ds); /* 51, then 54 */
+    if (e)
+        GKS_FAIL(e, GFN_SWKVP);
     ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
     ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
     GKS_MF_WS(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         GKS_FAIL(err, GFN_SWKVP);
-}
-
-static int box3_valid(const Glimit3 *b)
-{
-    return b && b->x_min < b->x_max && b->y_min < b->y_max && b->z_min <= b->z_max &&
-           isfinite(b->x_min) && isfinite(b->x_max) && isfinite(b->y_min) &&
-           isfinite(b->y_max) && isfinite(b->z_min) && isfinite(b->z_max);
 }
 
 GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
@@ -169,11 +190,13 @@ GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
     gks_ws *ws = gks_ws_checked(GFN_SWKW3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    if (!box3_valid(ws_win))
+    double b[6];
+    if (!ws_win)
         GKS_FAIL(51, GFN_SWKW3);
-    if (ws_win->x_min < 0 || ws_win->x_max > 1 || ws_win->y_min < 0 || ws_win->y_max > 1 ||
-        ws_win->z_min < 0 || ws_win->z_max > 1)
-        GKS_FAIL(53, GFN_SWKW3);
+    gks_limit3_array(ws_win, b);
+    int e = gks_xform_check_ws_window3(b); /* 51, then 53 */
+    if (e)
+        GKS_FAIL(e, GFN_SWKW3);
     ws->req_win = *ws_win;
     GKS_MF_WS(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
     int err = ws_tran_changed(ws);
@@ -188,12 +211,15 @@ GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
     gks_ws *ws = gks_ws_checked(GFN_SWKV3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    if (!box3_valid(ws_vp))
+    double b[6];
+    if (!ws_vp)
         GKS_FAIL(51, GFN_SWKV3);
-    const gks_ws_desc *d = ws->drv->desc;
-    if (ws_vp->x_min < 0 || ws_vp->x_max > d->dc_x || ws_vp->y_min < 0 ||
-        ws_vp->y_max > d->dc_y || ws_vp->z_min < 0 || ws_vp->z_max > 1)
-        GKS_FAIL(54, GFN_SWKV3);
+    gks_limit3_array(ws_vp, b);
+    double ds[3];
+    display_space(ws, ds);
+    int e = gks_xform_check_ws_viewport3(b, ds); /* 51, then 54 */
+    if (e)
+        GKS_FAIL(e, GFN_SWKV3);
     ws->req_vp = *ws_vp;
     GKS_MF_WS(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
     int err = ws_tran_changed(ws);

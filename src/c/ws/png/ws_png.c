@@ -206,11 +206,7 @@ static int png_update(gks_ws *ws)
  * viewport origin; DC z in [0,1], larger = nearer. */
 static int ws_matrix(const gks_ws *ws, double m[4][4])
 {
-    double win[6];
-    gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
-                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
-    return gks_xform_ws_tran3(win, vp, m);
+    return gks_ws_pixel_matrix(ws, 1.0, m);
 }
 
 static int png_primitive(gks_ws *ws, const gks_prim *prim)

@@ -178,9 +178,7 @@ static const view_cache *view_get(png_render *r, const gks_ws *ws, int vi)
     c->vp = ws->cur_vp;
     double win[6], lim[6];
     gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, (ws->cur_vp.x_max - ws->cur_vp.x_min) * r->px_per_dc, 0,
-                           (ws->cur_vp.y_max - ws->cur_vp.y_min) * r->px_per_dc, 0, 1 };
-    if (gks_xform_ws_tran3(win, vp, c->dc))
+    if (gks_ws_pixel_matrix(ws, r->px_per_dc, c->dc))
         return c;
     gks_xform_multiply(v->map_matrix, v->ori_matrix, c->npc);
     gks_limit3_array(&v->clip_limit, lim);

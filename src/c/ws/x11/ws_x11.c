@@ -91,11 +91,7 @@ typedef struct x11_ws {
 
 static int x11_ws_matrix(const gks_ws *ws, double m[4][4])
 {
-    double win[6];
-    gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, ws->cur_vp.x_max - ws->cur_vp.x_min, 0,
-                           ws->cur_vp.y_max - ws->cur_vp.y_min, 0, 1 };
-    return gks_xform_ws_tran3(win, vp, m);
+    return gks_ws_pixel_matrix(ws, 1.0, m);
 }
 
 static gks_raster_fb *x11_fb(gks_ws *ws)
