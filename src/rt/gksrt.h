@@ -359,7 +359,8 @@ typedef struct rt_render_options {
     int max_depth;          /* eye ray = depth 1; rays at depth max_depth spawn nothing (1..64) */
     double cutoff;          /* adaptive depth: no secondary ray whose weight (max over RGB of the
                                product of coefficients along the path) is below this; 0 = off */
-    int threads;            /* 0: number of online CPUs; picture identical for any count */
+    int threads;            /* 0: number of online CPUs (at most 64, the thread pool's limit);
+                               picture identical for any count */
     int fresnel;            /* RT_FRESNEL_* for transmitting surfaces */
     int clip_secondary;     /* 1: shadow/reflection/refraction rays see only the display volume */
     int corner_rays;        /* 1: (w+1)x(h+1) rays at pixel corners, pixel = mean of its 4

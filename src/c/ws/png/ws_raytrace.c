@@ -908,24 +908,31 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     rec_head *h = (rec_head *)(void *)(at + abytes);
     int *counts = (int *)(void *)(h + 1);
     double *xyz = (double *)(void *)((unsigned char *)counts + cbytes);
-    const Gmatrix3 *ori = &ws->views[vi].ori_matrix;
+    const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
+    const int affine = xf_affine(ori);
     size_t src = 0, q = 0;
+    double big = 0.0; /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
     nl = 0;
     for (int k = 0; k < prim->n_loops; k++) {
         size_t m = (size_t)prim->loop_counts[k];
         if (m >= 3) {
             counts[nl++] = (int)m;
-            for (size_t i = 0; i < m; i++, q += 3) {
+            for (size_t i = 0; i < m; i++, q += 3) { /* xf_points, one pass from the prim */
                 const Gpoint3 *p = &prim->pts[src + i];
-                xyz[q] = p->x;
-                xyz[q + 1] = p->y;
-                xyz[q + 2] = p->z;
+                double *o = xyz + q;
+                if (affine)
+                    for (int j = 0; j < 3; j++)
+                        o[j] = ori[j][0] * p->x + ori[j][1] * p->y + ori[j][2] * p->z + ori[j][3];
+                else
+                    xf_point(ori, p->x, p->y, p->z, o);
+                for (int j = 0; j < 3; j++)
+                    if (fabs(o[j]) > big)
+                        big = fabs(o[j]);
             }
         }
         src += m;
     }
-    xf_points(*ori, xyz, np, xyz);
-    if (max_abs(xyz, 3 * np) > RT_COORD_MAX)
+    if (big > RT_COORD_MAX)
         return 0; /* beyond the tracer's range: the synchronous path clips it */
     if (new_attr) {
         *(rec_head *)(void *)at = (rec_head){ REC_ATTR, vi, 0, 0 };
