@@ -1087,17 +1087,6 @@ static int chain_px(const text_chain *c, const double h[4], double px[3])
     return isfinite(px[0]) && isfinite(px[1]) && isfinite(px[2]);
 }
 
-static int clip_inside(const gks_xform_clip *c, const double h[4])
-{
-    if (!(h[3] >= c->wmin))
-        return 0;
-    for (int i = 0; i < c->n; i++)
-        if (!(c->p[i][0] * h[0] + c->p[i][1] * h[1] + c->p[i][2] * h[2] + c->p[i][3] * h[3] >=
-              0.0))
-            return 0;
-    return 1;
-}
-
 /* A vector in pixels per font unit, rounded to 2^-24 pixel so that texts of one size and
  * direction share one scaled font (one Type 3 font) whatever the rounding of their
  * positions' transformation. */
@@ -1187,7 +1176,8 @@ static int text_clip(vec_ws *v, const gks_text_prim *t, const text_chain *c,
         gks_xform_mat34_point(c->m, wc, r[k]);
         r[k][3] = 1;
         gks_xform_apply((const double (*)[4])c->npc, r[k], h);
-        all_in &= clip_inside(&box, r[k]) && clip_inside(view, h);
+        all_in &= ws_png_render_clip_inside(&box, r[k]) &&
+                  ws_png_render_clip_inside(view, h);
     }
     *n = 0;
     if (all_in)

@@ -214,8 +214,12 @@ static int to_dc(const view_cache *v, const double h[4], gks_raster_pt *q)
     return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]);
 }
 
-/* Is a homogeneous NPC point inside the clip region? */
 static int inside(const gks_xform_clip *c, const double h[4])
+{
+    return ws_png_render_clip_inside(c, h);
+}
+
+int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4])
 {
     if (!(h[3] >= c->wmin))
         return 0;

@@ -94,6 +94,8 @@ int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay);
  * pixels (x right, y up) and DC depth. 0, or -1 if the pipeline is degenerate. */
 int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4],
                        double dc[4][4], const gks_xform_clip **clip);
+/* Is homogeneous NPC point h inside clip region c (w >= wmin and every plane)? */
+int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4]);
 
 /* An item of the frame for vector back ends: points in output pixels (DC x right, y up,
  * z depth), widths and sizes in pixels, unit = pixels per nominal unit.
