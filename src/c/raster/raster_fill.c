@@ -184,6 +184,24 @@ static int paint_colour(const paint *p, int i, int r, float c[3])
     return 1;
 }
 
+/* Samples k..n-1 of a solid span with depth test, one at a time: z = zs + k*dz, the
+ * formula of the vector loops, so that their tails give the same bits. */
+static void span_solid_z_rest(float *zb, float *cb, int k, int n, float zs, float dz,
+                              float bias, const float c[3], int colour)
+{
+    for (; k < n; k++) {
+        float z = zs + (float)k * dz;
+        if (!(z + bias >= zb[k]))
+            continue;
+        if (z > zb[k])
+            zb[k] = z;
+        if (colour) {
+            float *d = cb + 3 * k;
+            d[0] = c[0]; d[1] = c[1]; d[2] = c[2];
+        }
+    }
+}
+
 /* Solid colour with depth test: 4 samples at a time (SSE2), mostly rejected early. */
 static void span_solid_z(float *zb, float *cb, int n, float zs, float dz, float bias,
                          const float c[3], int colour)
@@ -210,17 +228,7 @@ static void span_solid_z(float *zb, float *cb, int n, float zs, float dz, float 
         }
     }
 #endif
-    for (; k < n; k++) {
-        float z = zs + (float)k * dz;
-        if (!(z + bias >= zb[k]))
-            continue;
-        if (z > zb[k])
-            zb[k] = z;
-        if (colour) {
-            float *d = cb + 3 * k;
-            d[0] = c[0]; d[1] = c[1]; d[2] = c[2];
-        }
-    }
+    span_solid_z_rest(zb, cb, k, n, zs, dz, bias, c, colour);
 }
 
 #ifdef RASTER_AVX2
@@ -249,18 +257,7 @@ __attribute__((target("avx2"))) static void span_solid_z_avx2(float *zb, float *
             d[0] = c[0]; d[1] = c[1]; d[2] = c[2];
         }
     }
-    /* the rest with the same formula, z = zs + k*dz */
-    for (; k < n; k++) {
-        float z = zs + (float)k * dz;
-        if (!(z + bias >= zb[k]))
-            continue;
-        if (z > zb[k])
-            zb[k] = z;
-        if (colour) {
-            float *d = cb + 3 * k;
-            d[0] = c[0]; d[1] = c[1]; d[2] = c[2];
-        }
-    }
+    span_solid_z_rest(zb, cb, k, n, zs, dz, bias, c, colour);
 }
 #endif
 

@@ -814,6 +814,16 @@ static Gin_dev_st dev_st(const gks_indev *d)
                          d->rec };
 }
 
+/* The device state 3 common part: mode, echo, pet, echo volume, record. */
+#define DEV_ST3(st, d)                                                                     \
+    do {                                                                                   \
+        (st)->op_mode = (d)->mode;                                                         \
+        (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;                    \
+        (st)->pet = (d)->pet;                                                              \
+        (st)->echo_vol = (d)->echo_vol;                                                    \
+        (st)->in_data = (d)->rec;                                                          \
+    } while (0)
+
 /* SET and REALIZED values are the same: every initial value is representable. */
 GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st)
 {
@@ -832,11 +842,7 @@ GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_in
     const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
-    st->op_mode = d->mode;
-    st->echo_switch = d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;
-    st->pet = d->pet;
-    st->echo_vol = d->echo_vol;
-    st->in_data = d->rec;
+    DEV_ST3(st, d);
     loc3_out(&d->init, &st->init_view_ind, &st->init_loc);
 }
 
@@ -859,11 +865,7 @@ GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *
     const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
     if (!d || bad_type(type, err_ind) || !st)
         return;
-    st->op_mode = d->mode;
-    st->echo_switch = d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;
-    st->pet = d->pet;
-    st->echo_vol = d->echo_vol;
-    st->in_data = d->rec;
+    DEV_ST3(st, d);
     st->in_buf_size = d->buf_size;
     stroke3_out(&d->init, &st->init_view_ind, &st->init_stroke);
 }
@@ -921,16 +923,6 @@ GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_
         st->init_string[n] = '\0';
     }
 }
-
-/* The device state 3 common part: mode, echo, pet, echo volume, record. */
-#define DEV_ST3(st, d)                                                                     \
-    do {                                                                                   \
-        (st)->op_mode = (d)->mode;                                                         \
-        (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;                    \
-        (st)->pet = (d)->pet;                                                              \
-        (st)->echo_vol = (d)->echo_vol;                                                    \
-        (st)->in_data = (d)->rec;                                                          \
-    } while (0)
 
 GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
 {
