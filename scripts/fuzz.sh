@@ -39,7 +39,7 @@ flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-ov
        -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
        -DGKS3D_BUILDING -DGKS_FAULT_INJECTION -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude
        -I"$out/include") # GKS_FAULT_INJECTION: the test hooks (fuzz_state fails allocations)
-clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/core/store/gks_mf_codec.c src/c/base/gks_alloc.c \
+clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/ws/mf/gks_mf_codec.c src/c/base/gks_alloc.c \
     -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline).
 # rt_mpi.c (MPI), ws_cairo.c and ws_x11.c (cairo, X11) are optional drivers built only when

@@ -36,6 +36,10 @@ static inline void rt_par_range(size_t count, int k, int n, size_t *lo, size_t *
     *hi = *lo + count / (size_t)n + ((size_t)k < count % (size_t)n);
 }
 
+/* the vertices of a polygon of nloops loops (loop_counts[k] > 0 each) in *nv: RT_OK,
+   RT_ERR_ARG (a count <= 0), RT_ERR_LIMIT (too many) (rt_scene.c) */
+int rt_loops_vertices(int nloops, const int *loop_counts, size_t *nv);
+
 /* ---- primitives ---- */
 enum { RT_KIND_TRI = 0, RT_KIND_POLY = 1, RT_KIND_CELL = 2, RT_KIND_QUAD = 3 };
 

@@ -1111,6 +1111,23 @@ static void rt_job_lbufs_free(rt_job *job)
         rt_lbuf_free(&job->lbuf[li]);
 }
 
+/* frees what rt_render_cover allocated for the job and its nt workers w (w may be NULL) */
+static void rt_job_release(rt_job *job, rt_worker *w, int nt)
+{
+    for (int k = 0; w && k < nt; k++) {
+        rt_ctx_free(&w[k].ctx);
+        free(w[k].shadow_cache);
+        free(w[k].payload);
+    }
+    rt_job_lbufs_free(job);
+    free(w);
+    free(job->edge);
+    free(job->corner_hit);
+    free(job->cover);
+    free(job->cand_off);
+    free(job->cand);
+}
+
 int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
               float *rgb, rt_stats *stats)
 {
@@ -1224,18 +1241,7 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         job.hook->begin(job.hook->user, &frame, job.ntiles, max_payload) < 0)
         rc = RT_ERR_HOOK;
     if (rc != RT_OK) {
-        for (int k = 0; w && k < nt; k++) {
-            rt_ctx_free(&w[k].ctx);
-            free(w[k].shadow_cache);
-            free(w[k].payload);
-        }
-        free(w);
-        free(job.edge);
-        free(job.corner_hit);
-        free(job.cover);
-        free(job.cand_off);
-        free(job.cand);
-        rt_job_lbufs_free(&job);
+        rt_job_release(&job, w, nt);
         return rc;
     }
     pthread_mutex_init(&job.lock, NULL);
@@ -1262,11 +1268,7 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         st.refraction_rays += w[k].st.refraction_rays;
         st.shadow_lbuf += w[k].st.shadow_lbuf;
         st.shadow_walks += w[k].st.shadow_walks;
-        rt_ctx_free(&w[k].ctx);
-        free(w[k].shadow_cache);
-        free(w[k].payload);
     }
-    rt_job_lbufs_free(&job);
     st.render_seconds = rt_now() - job.t0;
     st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
     st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;
@@ -1275,11 +1277,6 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     st.memory_bytes = sc->memory_bytes;
     if (stats)
         *stats = st;
-    free(w);
-    free(job.edge);
-    free(job.corner_hit);
-    free(job.cover);
-    free(job.cand_off);
-    free(job.cand);
+    rt_job_release(&job, w, nt);
     return rc;
 }

@@ -209,6 +209,19 @@ static int rt_surface_ok(const rt_scene *sc, int s)
     return s >= 0 && (size_t)s < sc->nsurf;
 }
 
+int rt_loops_vertices(int nloops, const int *loop_counts, size_t *nv)
+{
+    *nv = 0;
+    for (int k = 0; k < nloops; k++) {
+        if (loop_counts[k] <= 0)
+            return RT_ERR_ARG;
+        *nv += (size_t)loop_counts[k];
+        if (*nv > (size_t)UINT32_MAX / 4)
+            return RT_ERR_LIMIT;
+    }
+    return RT_OK;
+}
+
 int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const double *xyz,
                          int front_surface, int back_surface)
 {
@@ -216,14 +229,10 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
         return RT_ERR_ARG;
     if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
         return RT_ERR_ARG;
-    size_t nv = 0;
-    for (int k = 0; k < nloops; k++) {
-        if (loop_counts[k] <= 0)
-            return RT_ERR_ARG;
-        nv += (size_t)loop_counts[k];
-        if (nv > (size_t)UINT32_MAX / 4)
-            return RT_ERR_LIMIT;
-    }
+    size_t nv;
+    const int lrc = rt_loops_vertices(nloops, loop_counts, &nv);
+    if (lrc != RT_OK)
+        return lrc;
     if (sc->nids >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
         return RT_ERR_LIMIT;
     if (nloops == 1 && nv == 3) { /* a triangle: kept as the committed scene will trace it */

@@ -8,22 +8,10 @@
 #include <math.h>
 #include <string.h>
 
-static inline double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static inline double absmax3(const double v[3])
-{
-    double a = fabs(v[0]), b = fabs(v[1]), c = fabs(v[2]);
-    double m = a > b ? a : b;
-    return m > c ? m : c;
-}
-
 /* length without overflow or underflow in the squares */
 static double len3(const double v[3])
 {
-    double m = absmax3(v);
+    double m = rt_sh_absmax3(v);
     if (m == 0.0 || !isfinite(m))
         return m;
     double a = v[0] / m, b = v[1] / m, c = v[2] / m;

@@ -30,14 +30,10 @@ int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_counts, 
     const int has_n = vd && vd->normals, has_c = vd && vd->colours;
     if (!sc || nloops <= 0 || !loop_counts || !xyz)
         return RT_ERR_ARG;
-    size_t nv = 0;
-    for (int k = 0; k < nloops; k++) {
-        if (loop_counts[k] <= 0)
-            return RT_ERR_ARG;
-        nv += (size_t)loop_counts[k];
-        if (nv > (size_t)UINT32_MAX / 4)
-            return RT_ERR_LIMIT;
-    }
+    size_t nv;
+    const int lrc = rt_loops_vertices(nloops, loop_counts, &nv);
+    if (lrc != RT_OK)
+        return lrc;
     if ((has_n && !fin(vd->normals, 3 * nv)) || (has_c && !fin(vd->colours, 3 * nv)))
         return RT_ERR_ARG;
     int id = rt_scene_add_polygon(sc, nloops, loop_counts, xyz, front_surface, back_surface);

@@ -540,15 +540,22 @@ static void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, 
     h->side = den > 0.0 ? 1 : 0;
 }
 
-int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+/* the checks and the traversal context of a batch call (out: its output array) */
+static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out, rt_ctx *c)
 {
-    if (!sc || (n && (!rays || !hits)))
+    if (!sc || (n && (!rays || !out)))
         return RT_ERR_ARG;
     if (!sc->committed)
         return RT_ERR_STATE;
+    return rt_ctx_init(c, sc) != RT_OK ? RT_ERR_NOMEM : RT_OK;
+}
+
+int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+{
     rt_ctx c;
-    if (rt_ctx_init(&c, sc) != RT_OK)
-        return RT_ERR_NOMEM;
+    const int rc = rt_batch_begin(sc, n, rays, hits, &c);
+    if (rc != RT_OK)
+        return rc;
     for (size_t k = 0; k < n; k++) {
         rt_rayx r;
         double t;
@@ -569,13 +576,10 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
 
 int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
 {
-    if (!sc || (n && (!rays || !occluded)))
-        return RT_ERR_ARG;
-    if (!sc->committed)
-        return RT_ERR_STATE;
     rt_ctx c;
-    if (rt_ctx_init(&c, sc) != RT_OK)
-        return RT_ERR_NOMEM;
+    const int rc = rt_batch_begin(sc, n, rays, occluded, &c);
+    if (rc != RT_OK)
+        return rc;
     for (size_t k = 0; k < n; k++) {
         rt_rayx r;
         occluded[k] = 0;

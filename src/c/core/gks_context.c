@@ -5,7 +5,7 @@
 #include "gks_context.h"
 #include "gks_context.h"
 #include "gks_xform.h"
-#include "gks_mf_record.h"
+#include "ws_driver.h"
 #include "gks_legacy.h"
 
 static const gks_ws_driver *const driver_list[] = {

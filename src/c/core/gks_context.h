@@ -121,7 +121,6 @@ typedef struct gks_context {
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
-    const struct gks_norm_override *norm_override; /* INTERPRET ITEM (gks_output.c) */
 } gks_context;
 
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "gks_ws.h"
+#include "gks_mf_record.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "ws_file.h"
@@ -258,6 +259,7 @@ void gks_ws_destroy(gks_ws *ws)
     if (!ws)
         return;
     gks_in_ws_close(ws);
+    gks_mf_ws_free(ws);
     gks_free(ws->conn_id);
     gks_free(ws->file);
     for (int k = 0; k < ws->n_files; k++)

@@ -175,6 +175,7 @@ struct gks_ws {
     Glight_src_rep lights[GKS_MAX_LIGHT_IND];      /* light source table, index i at [i-1] */
     unsigned char light_defined[GKS_MAX_LIGHT_IND];
     void *priv;                   /* the driver's own data */
+    void *mf;                     /* the core's metafile state of an MO or MI (gks_mf_record.h) */
     const gks_ws_host *host;      /* the core's services (above) */
     struct gks_in_ws *in;         /* input device state lists (core's), NULL = no input */
     /* Bundle tables (ISO 7942 6.6), index i at [i], 1..GKS_WDT_MAX_BUNDLES; *_def[i] != 0
@@ -191,6 +192,7 @@ struct gks_ws {
         edge_def[GKS_WDT_MAX_BUNDLES + 1], pat_def[GKS_WDT_MAX_BUNDLES + 1];
 };
 
+struct gksm_in; /* ws/mf/gks_mf_codec.h */
 struct gks_ws_driver {
     int version;
     const gks_ws_desc *desc;
@@ -229,6 +231,15 @@ struct gks_ws_driver {
      * (valid until the next call), 0 if none came, -1 if no event can ever come (e.g.
      * the window is gone). NULL: the type's devices are fed by input scripts only. */
     int (*input)(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev);
+    /* Metafile output (MO): writes one item, its type and data record (the fields as the
+     * core encodes them, ws/mf/gks_mf_codec.h). Returns 0, 161 (type or length beyond the
+     * format) or 303: a write failed, and from then on the driver writes nothing more and
+     * returns 0 (a loss is reported once). NULL: the type records no metafile. */
+    int (*record_item)(gks_ws *ws, int type, const char *rec, size_t len);
+    /* Metafile input (MI): the reader of its file (the items, their field format), for GET
+     * ITEM TYPE, READ ITEM and INTERPRET ITEM in the core, and in *allow_escapes whether
+     * ESCAPE GESC_MI_ALLOW_ESCAPES allowed every recorded escape. NULL: not a metafile input. */
+    struct gksm_in *(*item_reader)(gks_ws *ws, int *allow_escapes);
 };
 
 /* The compiled-in drivers. */
@@ -237,6 +248,8 @@ extern const gks_ws_driver gks_ws_png_driver;
 extern const gks_ws_driver gks_ws_png_large_driver;
 extern const gks_ws_driver gks_ws_x11_driver; /* only with GKS_WITH_X11 */
 extern const gks_ws_driver gks_ws_wiss_driver;
+extern const gks_ws_driver gks_ws_mo_driver;
+extern const gks_ws_driver gks_ws_mi_driver;
 #ifdef GKS_HAVE_CAIRO
 extern const gks_ws_driver gks_ws_pdf_driver;
 extern const gks_ws_driver gks_ws_svg_driver;

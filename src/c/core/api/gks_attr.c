@@ -243,8 +243,7 @@ GKS_API void gset_line_rep(Gint ws_id, Gint ind, const Gline_bundle *rep)
         GKS_FAIL(93, GFN_SPLR);
     ws->line_rep[ind] = *rep;
     ws->line_def[ind] = 1;
-    GKS_MF_WS(GFN_SPLR, ws_id, GKSM_ITEM_LINE_REP, "iiri",
-              ind, rep->type, rep->width, rep->colr_ind);
+    GKS_MF_WS(SPLR, ws_id, ind, rep->type, rep->width, rep->colr_ind);
 }
 
 GKS_API void gset_marker_rep(Gint ws_id, Gint ind, const Gmarker_bundle *rep)
@@ -265,8 +264,7 @@ GKS_API void gset_marker_rep(Gint ws_id, Gint ind, const Gmarker_bundle *rep)
         GKS_FAIL(93, GFN_SPMR);
     ws->marker_rep[ind] = *rep;
     ws->marker_def[ind] = 1;
-    GKS_MF_WS(GFN_SPMR, ws_id, GKSM_ITEM_MARKER_REP, "iiri",
-              ind, rep->type, rep->size, rep->colr_ind);
+    GKS_MF_WS(SPMR, ws_id, ind, rep->type, rep->size, rep->colr_ind);
 }
 
 GKS_API void gset_text_rep(Gint ws_id, Gint ind, const Gtext_bundle *rep)
@@ -290,8 +288,8 @@ GKS_API void gset_text_rep(Gint ws_id, Gint ind, const Gtext_bundle *rep)
         GKS_FAIL(93, GFN_STXR);
     ws->text_rep[ind] = *rep;
     ws->text_def[ind] = 1;
-    GKS_MF_WS(GFN_STXR, ws_id, GKSM_ITEM_TEXT_REP, "iiirri", ind, rep->text_font_prec.font,
-              rep->text_font_prec.prec, rep->char_expan, rep->char_space, rep->colr_ind);
+    GKS_MF_WS(STXR, ws_id, ind, rep->text_font_prec.font, rep->text_font_prec.prec,
+              rep->char_expan, rep->char_space, rep->colr_ind);
 }
 
 GKS_API void gset_fill_rep(Gint ws_id, Gint ind, const Gfill_bundle *rep)
@@ -316,8 +314,7 @@ GKS_API void gset_fill_rep(Gint ws_id, Gint ind, const Gfill_bundle *rep)
         GKS_FAIL(93, GFN_SFAR);
     ws->fill_rep[ind] = *rep;
     ws->fill_def[ind] = 1;
-    GKS_MF_WS(GFN_SFAR, ws_id, GKSM_ITEM_FILL_REP, "iiii",
-              ind, rep->int_style, rep->style_ind, rep->colr_ind);
+    GKS_MF_WS(SFAR, ws_id, ind, rep->int_style, rep->style_ind, rep->colr_ind);
 }
 
 GKS_API void gset_pat_rep(Gint ws_id, Gint ind, const Gpat_rep *rep)
@@ -345,8 +342,7 @@ GKS_API void gset_pat_rep(Gint ws_id, Gint ind, const Gpat_rep *rep)
     ws->pat_rep[ind].nx = rep->dims.size_x;
     ws->pat_rep[ind].ny = rep->dims.size_y;
     ws->pat_def[ind] = 1;
-    GKS_MF_WS(GFN_SPAR, ws_id, GKSM_ITEM_PAT_REP, "iiiI",
-              ind, rep->dims.size_x, rep->dims.size_y, (int)n, rep->colr_array);
+    GKS_MF_WS(SPAR, ws_id, ind, rep->dims.size_x, rep->dims.size_y, (int)n, rep->colr_array);
 }
 
 GKS_API void gset_edge_rep(Gint ws_id, Gint ind, const Gedge_bundle *rep)
@@ -369,8 +365,7 @@ GKS_API void gset_edge_rep(Gint ws_id, Gint ind, const Gedge_bundle *rep)
         GKS_FAIL(93, GFN_SEDR);
     ws->edge_rep[ind] = *rep;
     ws->edge_def[ind] = 1;
-    GKS_MF_WS(GFN_SEDR, ws_id, GKSM_ITEM_EDGE_REP, "iiiri",
-              ind, rep->flag, rep->type, rep->width, rep->colr_ind);
+    GKS_MF_WS(SEDR, ws_id, ind, rep->flag, rep->type, rep->width, rep->colr_ind);
 }
 
 GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
@@ -391,8 +386,7 @@ GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
         GKS_FAIL(96, GFN_SCR);
     ws->colr[colr_ind] = *c;
     ws->colr_defined[colr_ind] = 1;
-    GKS_MF_WS(GFN_SCR, ws_id, GKSM_ITEM_COLR_REP, "irrr", colr_ind, c->red, c->green,
-              c->blue);
+    GKS_MF_WS(SCR, ws_id, colr_ind, c->red, c->green, c->blue);
 }
 
 /* ---------------------------------------------------------------- resolution */

@@ -247,7 +247,7 @@ GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
         return;
     if (ctrl_flag != GFLAG_COND && ctrl_flag != GFLAG_ALWAYS)
         GKS_FAIL(2000, GFN_CLRWK);
-    GKS_MF_WS(GFN_CLRWK, ws_id, GKSM_ITEM_CLEAR, "i", ctrl_flag);
+    GKS_MF_WS(CLRWK, ws_id, ctrl_flag);
     if (ctrl_flag == GFLAG_COND && ws->disp_empty == GDISP_EMPTY &&
         ws->tran_upd_st == GUPD_NOT_PEND)
         return;
@@ -270,7 +270,7 @@ GKS_API void gredraw_all_seg_ws(Gint ws_id)
                                 GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    GKS_MF_WS(GFN_RSGWK, ws_id, GKSM_ITEM_REDRAW, "");
+    GKS_MF_WS0(RSGWK, ws_id);
     /* ISO 7942: apply a pending workstation transformation, clear the surface, redraw
      * all visible segments stored on the workstation. */
     int err = gks_ws_regenerate(ws);
@@ -288,7 +288,7 @@ GKS_API void gupd_ws(Gint ws_id, Gupd_regen_flag upd_regen_flag)
         return;
     if (upd_regen_flag != GFLAG_POSTPONE && upd_regen_flag != GFLAG_PERFORM)
         GKS_FAIL(2000, GFN_UWK);
-    GKS_MF_WS(GFN_UWK, ws_id, GKSM_ITEM_UPDATE, "i", upd_regen_flag);
+    GKS_MF_WS(UWK, ws_id, upd_regen_flag);
     int err = 0;
     if (upd_regen_flag == GFLAG_PERFORM && ws->new_frame == GNEW_YES)
         err = gks_ws_regenerate(ws);
@@ -310,7 +310,7 @@ GKS_API void gset_defer_st(Gint ws_id, Gdefer_mode defer_mode, Girg_mode irg_mod
         GKS_FAIL(2000, GFN_SDS);
     ws->defer_mode = defer_mode;
     ws->irg_mode = irg_mode;
-    GKS_MF_WS(GFN_SDS, ws_id, GKSM_ITEM_DEFER, "ii", defer_mode, irg_mode);
+    GKS_MF_WS(SDS, ws_id, defer_mode, irg_mode);
     if (irg_mode == GIRG_ALLOWED && ws->new_frame == GNEW_YES) {
         int err = gks_ws_regenerate(ws);
         if (err)
@@ -325,7 +325,7 @@ GKS_API void gmessage(Gint ws_id, const char *msg)
     gks_ws *ws = gks_ws_checked(GFN_MSG, ws_id, GKS_WSC_NOT_WISS);
     if (!ws)
         return;
-    GKS_MF_WS(GFN_MSG, ws_id, GKSM_ITEM_MESSAGE, "s", msg);
+    GKS_MF_WS(MSG, ws_id, msg);
     int err = ws->drv->message ? ws->drv->message(ws, msg ? msg : "") : 0;
     if (err)
         GKS_FAIL(err, GFN_MSG);

@@ -86,9 +86,8 @@ GKS_API void gset_light_src_rep(Gint ws_id, Gint light_ind, const Glight_src_rep
         GKS_FAIL(2000, GFN_SLSR);
     ws->lights[light_ind - 1] = *rep;
     ws->light_defined[light_ind - 1] = 1;
-    GKS_MF_WS(GFN_SLSR, ws_id, GKSM_ITEM_LIGHT_REP, "iiRRRRrr", light_ind, rep->type, 3,
-              &rep->colr.red, 3, &rep->pos.x, 3, &rep->dir.delta_x, 2, rep->atten,
-              rep->conc_exp, rep->spread_angle);
+    GKS_MF_WS(SLSR, ws_id, light_ind, rep->type, &rep->colr.red, &rep->pos.x,
+              &rep->dir.delta_x, rep->atten, rep->conc_exp, rep->spread_angle);
 }
 
 static int list_ok(const Gint_list *l)

@@ -25,6 +25,7 @@
 #include "gks_mf_record.h"
 #include "gks_output_data.h"
 #include "gks_output_int.h"
+#include "gks_output_rec.h"
 #include "gks_seg_store.h"
 #include "gks_segment.h"
 #include "gks_state.h"
@@ -62,9 +63,9 @@ static int norm_from(norm_ctx *nc, const double m[3][4], const double box[6], in
 
 /* The current state's context: WC3 -> NDC3 by the current normalization transformation,
  * then the open segment's transformation (if a segment is open), clipping at the current
- * viewport 3 when the clipping indicator is on. While INTERPRET ITEM performs a recorded
- * primitive (context norm_override, gks_mf_record.h), the recorded normalization and clipping
- * volume replace the current ones, and NDC3 points enter through the identity.
+ * viewport 3 when the clipping indicator is on. For a primitive INTERPRET ITEM performs
+ * (ov, the argument of the gks_output_rec_* entries), the recorded normalization and
+ * clipping volume replace the current ones, and NDC3 points enter through the identity.
  * 0, or 308 if the normalization cannot be represented (gks_xform_norm_tran3). */
 /* The last current-state context and what it was made from (the current window and
  * viewport 3, clipping indicator, open segment and its transformation): a primitive drawn
@@ -80,12 +81,10 @@ static struct {
     norm_ctx nc;
 } norm_cache;
 
-static int norm_setup(norm_ctx *nc)
+static int norm_setup_xf(norm_ctx *nc, const gks_rec_xf *ov)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
-    const gks_context *c = gks_ctx();
-    const gks_state_list *sl = c->sl;
-    const gks_norm_override *ov = c->norm_override;
+    const gks_state_list *sl = gks_ctx()->sl;
     double n[3][4], box[6], w[6];
     int clip_on;
     gks_segment *seg = open_segment();
@@ -128,6 +127,11 @@ static int norm_setup(norm_ctx *nc)
         norm_cache.valid = 1;
     }
     return 0;
+}
+
+static int norm_setup(norm_ctx *nc)
+{
+    return norm_setup_xf(nc, NULL);
 }
 
 /* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record
@@ -432,14 +436,15 @@ static int emit_polyline(const norm_ctx *nc, const pt_src *s, size_t n, target *
     return err;
 }
 
-static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
+                         const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
     if (n < 2 || (!p2 && !p3))
         GKS_FAIL(100, fctid);
     norm_ctx nc;
-    if (norm_setup(&nc))
+    if (norm_setup_xf(&nc, xf))
         GKS_FAIL(308, fctid);
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
@@ -457,12 +462,17 @@ static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
 
 GKS_API void gpolyline(const Gpoint_list *l)
 {
-    polyline_any(GFN_PL, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+    polyline_any(GFN_PL, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
 }
 
 GKS_API void gpolyline3(const Gpoint_list3 *l)
 {
-    polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+    polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
+}
+
+void gks_output_rec_polyline3(const gks_rec_xf *xf, const Gpoint_list3 *l)
+{
+    polyline_any(GFN_PL3, l->num_points, NULL, l->points, xf);
 }
 
 /* ------------------------------------------------------------------ POLYMARKER */
@@ -490,14 +500,15 @@ static int emit_polymarker(const norm_ctx *nc, const pt_src *s, size_t n, target
     return err;
 }
 
-static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
+                           const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
     if (n < 1 || (!p2 && !p3))
         GKS_FAIL(100, fctid);
     norm_ctx nc;
-    if (norm_setup(&nc))
+    if (norm_setup_xf(&nc, xf))
         GKS_FAIL(308, fctid);
     pt_src s = { p2, p3, NULL };
     gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
@@ -515,12 +526,17 @@ static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3
 
 GKS_API void gpolymarker(const Gpoint_list *l)
 {
-    polymarker_any(GFN_PM, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+    polymarker_any(GFN_PM, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
 }
 
 GKS_API void gpolymarker3(const Gpoint_list3 *l)
 {
-    polymarker_any(GFN_PM3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+    polymarker_any(GFN_PM3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
+}
+
+void gks_output_rec_polymarker3(const gks_rec_xf *xf, const Gpoint_list3 *l)
+{
+    polymarker_any(GFN_PM3, l->num_points, NULL, l->points, xf);
 }
 
 /* ------------------------------------------------------------------ TEXT */
@@ -582,14 +598,14 @@ static int emit_text(const norm_ctx *nc, const double pos[3], const double d0[3]
 }
 
 static void text_any(int fctid, const double pos[3], const double d0[3], const double d1[3],
-                     const char *str)
+                     const char *str, const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
     if (!str || gks_text_check(str))
         GKS_FAIL(101, fctid);
     norm_ctx nc;
-    if (norm_setup(&nc))
+    if (norm_setup_xf(&nc, xf))
         GKS_FAIL(308, fctid);
     const double wc[3][3] = { { pos[0], pos[1], pos[2] }, { d0[0], d0[1], d0[2] },
                               { d1[0], d1[1], d1[2] } };
@@ -611,10 +627,11 @@ static void text_any(int fctid, const double pos[3], const double d0[3], const d
 GKS_API void gtext(const Gpoint *pos, const char *str)
 {
     const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, 0 };
-    text_any(GFN_TX, p, (const double[3]){ 1, 0, 0 }, (const double[3]){ 0, 1, 0 }, str);
+    text_any(GFN_TX, p, (const double[3]){ 1, 0, 0 }, (const double[3]){ 0, 1, 0 }, str, NULL);
 }
 
-GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
+static void text3_any(const Gpoint3 *pos, const Gvec3 dir[2], const char *str,
+                      const gks_rec_xf *xf)
 {
     const double p[3] = { pos ? pos->x : NAN, pos ? pos->y : NAN, pos ? pos->z : NAN };
     double d0[3] = { NAN, NAN, NAN }, d1[3] = { NAN, NAN, NAN };
@@ -622,7 +639,18 @@ GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
         d0[0] = dir[0].delta_x; d0[1] = dir[0].delta_y; d0[2] = dir[0].delta_z;
         d1[0] = dir[1].delta_x; d1[1] = dir[1].delta_y; d1[2] = dir[1].delta_z;
     }
-    text_any(GFN_TX3, p, d0, d1, str);
+    text_any(GFN_TX3, p, d0, d1, str, xf);
+}
+
+GKS_API void gtext3(const Gpoint3 *pos, const Gvec3 dir[2], const char *str)
+{
+    text3_any(pos, dir, str, NULL);
+}
+
+void gks_output_rec_text3(const gks_rec_xf *xf, const Gpoint3 *pos, const Gvec3 dir[2],
+                          const char *str)
+{
+    text3_any(pos, dir, str, xf);
 }
 
 /* ------------------------------------------------------------------ FILL AREA (SET) */
@@ -748,10 +776,10 @@ done:
 
 /* Area after the argument checks (see emit_area). */
 static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_src *s,
-                        int is_set)
+                        int is_set, const gks_rec_xf *xf)
 {
     norm_ctx nc;
-    if (norm_setup(&nc))
+    if (norm_setup_xf(&nc, xf))
         GKS_FAIL(308, fctid);
     size_t n = 0;
     for (size_t k = 0; k < nloops; k++)
@@ -785,7 +813,8 @@ static void output_area(int fctid, size_t nloops, const size_t *cnt, const pt_sr
         GKS_FAIL(err, fctid);
 }
 
-static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
+static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
+                          const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
@@ -793,21 +822,27 @@ static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3)
         GKS_FAIL(100, fctid);
     size_t cnt = (size_t)n;
     pt_src s = { p2, p3, NULL };
-    output_area(fctid, 1, &cnt, &s, 0);
+    output_area(fctid, 1, &cnt, &s, 0, xf);
 }
 
 GKS_API void gfill_area(const Gpoint_list *l)
 {
-    fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL);
+    fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
 }
 
 GKS_API void gfill_area3(const Gpoint_list3 *l)
 {
-    fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL);
+    fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
+}
+
+void gks_output_rec_fill_area3(const gks_rec_xf *xf, const Gpoint_list3 *l)
+{
+    fill_area_any(GFN_FA3, l->num_points, NULL, l->points, xf);
 }
 
 /* FILL AREA SET (3): the loops are copied into one WC3 array. */
-static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoint_list_list3 *l3)
+static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoint_list_list3 *l3,
+                              const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
@@ -840,19 +875,24 @@ static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoin
         off += (size_t)c;
     }
     pt_src all = { NULL, NULL, (const double (*)[3])wc };
-    output_area(fctid, (size_t)nl, cnt, &all, 1);
+    output_area(fctid, (size_t)nl, cnt, &all, 1, xf);
     gks_free(cnt);
     gks_free(wc);
 }
 
 GKS_API void gfill_area_set(const Gpoint_list_list *l)
 {
-    fill_area_set_any(GFN_FAS, l, NULL);
+    fill_area_set_any(GFN_FAS, l, NULL, NULL);
 }
 
 GKS_API void gfill_area_set3(const Gpoint_list_list3 *l)
 {
-    fill_area_set_any(GFN_FAS3, NULL, l);
+    fill_area_set_any(GFN_FAS3, NULL, l, NULL);
+}
+
+void gks_output_rec_fill_area_set3(const gks_rec_xf *xf, const Gpoint_list_list3 *l)
+{
+    fill_area_set_any(GFN_FAS3, NULL, l, xf);
 }
 
 /* ------------------------------------------------------------------ CELL ARRAY */
@@ -889,14 +929,15 @@ static int emit_cell_array(const norm_ctx *nc, const double pqr[3][3], int nx, i
     return err;
 }
 
-static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca)
+static void cell_array_any(int fctid, const double pqr[3][3], const Gpat_rep *ca,
+                           const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
     if (!ca || !ca->colr_array || ca->dims.size_x < 1 || ca->dims.size_y < 1)
         GKS_FAIL(91, fctid);
     norm_ctx nc;
-    if (norm_setup(&nc))
+    if (norm_setup_xf(&nc, xf))
         GKS_FAIL(308, fctid);
     pt_src s = { NULL, NULL, pqr };
     gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = ca->dims.size_x,
@@ -931,10 +972,10 @@ GKS_API void gcell_array(const Grect *r, const Gpat_rep *ca)
         pqr[1][0] = r->q.x; pqr[1][1] = r->q.y;
         pqr[2][0] = r->q.x; pqr[2][1] = r->p.y; /* R: end of P's row (x direction) */
     }
-    cell_array_any(GFN_CA, (const double (*)[3])pqr, ca);
+    cell_array_any(GFN_CA, (const double (*)[3])pqr, ca, NULL);
 }
 
-GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
+static void cell_array3_any(const Gparal *par, const Gpat_rep *ca, const gks_rec_xf *xf)
 {
     double pqr[3][3] = { { NAN, NAN, NAN }, { NAN, NAN, NAN }, { NAN, NAN, NAN } };
     if (par) {
@@ -943,7 +984,17 @@ GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
             pqr[i][0] = v[i]->x; pqr[i][1] = v[i]->y; pqr[i][2] = v[i]->z;
         }
     }
-    cell_array_any(GFN_CA3, (const double (*)[3])pqr, ca);
+    cell_array_any(GFN_CA3, (const double (*)[3])pqr, ca, xf);
+}
+
+GKS_API void gcell_array3(const Gparal *par, const Gpat_rep *ca)
+{
+    cell_array3_any(par, ca, NULL);
+}
+
+void gks_output_rec_cell_array3(const gks_rec_xf *xf, const Gparal *par, const Gpat_rep *ca)
+{
+    cell_array3_any(par, ca, xf);
 }
 
 /* ------------------------------------------------------------------ stored primitives */
@@ -1130,12 +1181,12 @@ void gks_output_polyline_d3(int fctid, size_t n, const double (*p)[3])
 void gks_output_area_d3(int fctid, size_t n, const double (*p)[3])
 {
     pt_src s = { NULL, NULL, p };
-    output_area(fctid, 1, &n, &s, 0);
+    output_area(fctid, 1, &n, &s, 0, NULL);
 }
 
 /* ------------------------------------------------------------------ internal interface */
 /* For the primitives with data (gks_output_data.c): gks_output_int.h. */
-int gks_out_norm_setup(norm_ctx *nc) { return norm_setup(nc); }
+int gks_out_norm_setup(norm_ctx *nc, const gks_rec_xf *xf) { return norm_setup_xf(nc, xf); }
 int gks_out_norm_from(norm_ctx *nc, const double m[3][4], const double box[6], int clip_on)
 {
     return norm_from(nc, m, box, clip_on);

@@ -18,6 +18,7 @@
 #include "gks_error.h"
 #include "gks_export.h"
 #include "gks_mf_record.h"
+#include "gks_output_rec.h"
 #include "gks_output_data.h"
 #include "gks_output_int.h"
 #include "gks_state.h"
@@ -535,10 +536,10 @@ static int mf_write(int fctid, int item, const norm_ctx *nc, const gks_area_data
 static int item_is_set(int item) { return item != GKSM_ITEM_FILL_AREA3_DATA; }
 
 /* Checks d, then records (metafile), stores (open segment) and draws it. */
-static void output_data(int fctid, int item, const gks_area_data *d)
+static void output_data(int fctid, int item, const gks_area_data *d, const gks_rec_xf *xf)
 {
     norm_ctx nc;
-    if (gks_out_norm_setup(&nc))
+    if (gks_out_norm_setup(&nc, xf))
         GKS_FAIL(308, fctid);
     int err = 0;
     if (gks_mf_on() || nc.seg) {
@@ -626,9 +627,9 @@ int gks_area_data_insert(gks_segment *open, const double M[3][4], const norm_ctx
     return err;
 }
 
-/* INTERPRET ITEM (ws_mi.c) of a primitive with data: d in NDC3 (the MI's normalization
- * override in effect). */
-void gks_area_data_perform(int item, const gks_area_data *d)
+/* INTERPRET ITEM (gks_metafile.c) of a primitive with data: d in NDC3, xf the recorded
+ * normalization. */
+void gks_output_rec_data(const gks_rec_xf *xf, int item, const gks_area_data *d)
 {
     int fctid = item == GKSM_ITEM_FILL_AREA3_DATA       ? GFN_FA3D
                 : item == GKSM_ITEM_FILL_AREA_SET3_DATA ? GFN_FAS3D
@@ -640,7 +641,7 @@ void gks_area_data_perform(int item, const gks_area_data *d)
     int err = gks_area_data_check(d);
     if (err)
         GKS_FAIL(err, fctid);
-    output_data(fctid, item, d);
+    output_data(fctid, item, d, xf);
 }
 
 /* The vertex arrays of v as double triples (points, normals, colours). */
@@ -793,7 +794,7 @@ static void finish(int fctid, int item, int err, gks_area_data *d, ibuf *b, wc_a
     if (!err)
         err = gks_area_data_check(d);
     if (!err)
-        output_data(fctid, item, d);
+        output_data(fctid, item, d, NULL);
     gks_free(b->ints);
     wc_free(w);
     if (err)

@@ -34,7 +34,8 @@ typedef struct {
 } target;
 
 /* The current state's context (0 or 308), or one mapping by m clipped at box (0, -1). */
-int gks_out_norm_setup(norm_ctx *nc);
+struct gks_rec_xf; /* gks_mf_record.h: NULL = the current normalization */
+int gks_out_norm_setup(norm_ctx *nc, const struct gks_rec_xf *xf);
 int gks_out_norm_from(norm_ctx *nc, const double m[3][4], const double box[6], int clip_on);
 /* The active workstations with the current attributes (none if the open segment is
  * invisible). */

@@ -99,7 +99,7 @@ GKS_API void gcreate_seg(Gint seg_name)
         gks_seg_ws_add(s, c->sl->active_ws[i]); /* n_active <= GKS_MAX_OPEN_WS: cannot fail */
     c->sl->open_seg = seg_name;
     c->op_st = GST_SGOP;
-    GKS_MF(GFN_CRSG, GKSM_ITEM_CREATE_SEG, "i", seg_name);
+    GKS_MF(CRSG, seg_name);
 }
 
 GKS_API void gclose_seg(void)
@@ -109,7 +109,7 @@ GKS_API void gclose_seg(void)
         return;
     c->sl->open_seg = 0;
     c->op_st = GST_WSAC;
-    GKS_MF(GFN_CLSG, GKSM_ITEM_CLOSE_SEG, "");
+    GKS_MF0(CLSG);
 }
 
 GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
@@ -124,7 +124,7 @@ GKS_API void grename_seg(Gint old_seg_name, Gint new_seg_name)
     if (!s)
         GKS_FAIL(122, GFN_RENSG);
     s->name = new_seg_name;
-    GKS_MF(GFN_RENSG, GKSM_ITEM_RENAME_SEG, "ii", old_seg_name, new_seg_name);
+    GKS_MF(RENSG, old_seg_name, new_seg_name);
     gks_state_list *sl = gks_ctx()->sl;
     if (sl->open_seg == old_seg_name)
         sl->open_seg = new_seg_name;
@@ -137,7 +137,7 @@ GKS_API void gdel_seg(Gint seg_name)
         return;
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSG);
-    GKS_MF(GFN_DSG, GKSM_ITEM_DEL_SEG, "i", seg_name);
+    GKS_MF(DSG, seg_name);
     /* ISO 7942: the segment is deleted, then the pictures are regenerated without it. */
     int vis = s->vis;
     int ids[GKS_MAX_OPEN_WS], n = s->n_ws;
@@ -161,7 +161,7 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
         GKS_FAIL(123, GFN_DSGWK);
     if (gks_ctx()->sl->open_seg == seg_name)
         GKS_FAIL(125, GFN_DSGWK);
-    GKS_MF_WS(GFN_DSGWK, ws_id, GKSM_ITEM_DEL_SEG, "i", seg_name);
+    GKS_MF_WS(DSGWK, ws_id, seg_name);
     gks_seg_ws_remove(s, ws_id);
     int vis = s->vis;
     if (s->n_ws == 0) /* stored nowhere any more: the segment ceases to exist */
@@ -189,7 +189,7 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
     if (!finite_n(&tran_matrix[0][0], 12))
         GKS_FAIL(308, GFN_SSGT3);
     memcpy(s->tran, tran_matrix, sizeof s->tran);
-    GKS_MF(GFN_SSGT3, GKSM_ITEM_SEG_TRAN3, "iR", seg_name, 12, &tran_matrix[0][0]);
+    GKS_MF(SSGT3, seg_name, &tran_matrix[0][0]);
     if (s->vis)
         if (!picture_changed(s, GFN_SSGT3))
             return;
@@ -207,7 +207,7 @@ GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
     /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
      * transformation is the 3-D one with identity z row and no z coupling). */
     gks_xform_mat23_to_mat34(tran_matrix, s->tran);
-    GKS_MF(GFN_SSGT, GKSM_ITEM_SEG_TRAN, "iR", seg_name, 6, &tran_matrix[0][0]);
+    GKS_MF(SSGT, seg_name, &tran_matrix[0][0]);
     if (s->vis)
         if (!picture_changed(s, GFN_SSGT))
             return;
@@ -220,7 +220,7 @@ GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
         return;
     if (vis != GSEG_INVIS && vis != GSEG_VIS)
         GKS_FAIL(2000, GFN_SVIS);
-    GKS_MF(GFN_SVIS, GKSM_ITEM_VIS, "ii", seg_name, vis);
+    GKS_MF(SVIS, seg_name, vis);
     int v = vis == GSEG_VIS;
     if (v == s->vis)
         return;
@@ -236,7 +236,7 @@ GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
         return;
     if (highl != GSEG_NORM && highl != GSEG_HIGHL)
         GKS_FAIL(2000, GFN_SHLIT);
-    GKS_MF(GFN_SHLIT, GKSM_ITEM_HIGHL, "ii", seg_name, highl);
+    GKS_MF(SHLIT, seg_name, highl);
     s->highl = highl == GSEG_HIGHL;
 }
 
@@ -247,7 +247,7 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
         return;
     if (!(pri >= 0.0 && pri <= 1.0))
         GKS_FAIL(126, GFN_SSGP);
-    GKS_MF(GFN_SSGP, GKSM_ITEM_SEG_PRI, "ir", seg_name, pri);
+    GKS_MF(SSGP, seg_name, pri);
     if (pri == s->pri)
         return;
     s->pri = pri;
@@ -263,7 +263,7 @@ GKS_API void gset_det(Gint seg_name, Gseg_det det)
         return;
     if (det != GSEG_UNDET && det != GSEG_DET)
         GKS_FAIL(2000, GFN_SDTEC);
-    GKS_MF(GFN_SDTEC, GKSM_ITEM_DET, "ii", seg_name, det);
+    GKS_MF(SDTEC, seg_name, det);
     s->det = det == GSEG_DET;
 }
 

@@ -153,7 +153,7 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
         GKS_FAIL(e, GFN_SWKWN);
     ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
     ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
-    GKS_MF_WS(GFN_SWKWN, ws_id, GKSM_ITEM_WS_WIN, "R", 4, &ws_win->x_min);
+    GKS_MF_WS(SWKWN, ws_id, &ws_win->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         GKS_FAIL(err, GFN_SWKWN);
@@ -177,7 +177,7 @@ GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
         GKS_FAIL(e, GFN_SWKVP);
     ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
     ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
-    GKS_MF_WS(GFN_SWKVP, ws_id, GKSM_ITEM_WS_VP, "R", 4, &ws_vp->x_min);
+    GKS_MF_WS(SWKVP, ws_id, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         GKS_FAIL(err, GFN_SWKVP);
@@ -198,7 +198,7 @@ GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
     if (e)
         GKS_FAIL(e, GFN_SWKW3);
     ws->req_win = *ws_win;
-    GKS_MF_WS(GFN_SWKW3, ws_id, GKSM_ITEM_WS_WIN3, "R", 6, &ws_win->x_min);
+    GKS_MF_WS(SWKW3, ws_id, &ws_win->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         GKS_FAIL(err, GFN_SWKW3);
@@ -221,7 +221,7 @@ GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
     if (e)
         GKS_FAIL(e, GFN_SWKV3);
     ws->req_vp = *ws_vp;
-    GKS_MF_WS(GFN_SWKV3, ws_id, GKSM_ITEM_WS_VP3, "R", 6, &ws_vp->x_min);
+    GKS_MF_WS(SWKV3, ws_id, &ws_vp->x_min);
     int err = ws_tran_changed(ws);
     if (err)
         GKS_FAIL(err, GFN_SWKV3);

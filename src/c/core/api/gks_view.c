@@ -54,9 +54,8 @@ GKS_API void gset_view_rep3(Gint ws_id, Gint view_ind, const Gview_rep3 *rep)
         (unsigned)rep->front_clip > GIND_CLIP)
         GKS_FAIL(2000, GFN_SVWR);
     ws->views[view_ind] = *rep;
-    GKS_MF_WS(GFN_SVWR, ws_id, GKSM_ITEM_VIEW_REP3, "iRRRiii", view_ind, 16,
-              &rep->ori_matrix[0][0], 16, &rep->map_matrix[0][0], 6, &rep->clip_limit.x_min, rep->xy_clip,
-              rep->back_clip, rep->front_clip);
+    GKS_MF_WS(SVWR, ws_id, view_ind, &rep->ori_matrix[0][0], &rep->map_matrix[0][0],
+              &rep->clip_limit.x_min, rep->xy_clip, rep->back_clip, rep->front_clip);
 }
 
 GKS_API void gset_hlhsr_mode(Gint ws_id, Gint mode)
@@ -70,7 +69,7 @@ GKS_API void gset_hlhsr_mode(Gint ws_id, Gint mode)
     if (mode < 0 || mode > 31 || !(ws->drv->desc->hlhsr_modes & (1u << mode)))
         GKS_FAIL(511, GFN_SHRM);
     ws->hlhsr_mode = mode;
-    GKS_MF_WS(GFN_SHRM, ws_id, GKSM_ITEM_HLHSR_MODE, "i", mode);
+    GKS_MF_WS(SHRM, ws_id, mode);
 }
 
 GKS_API void ginq_view_ind(Gint *err_ind, Gint *view_ind)

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_mf_record.c -- metafile output: the recording hooks the core calls (gks_mf_record.h) and WRITE
- * ITEM TO GKSM. Each hook writes one item to every active MO workstation (or to the
- * addressed MO); a primitive is preceded by the items of the current attributes,
+ * gks_mf_record.c -- metafile output: the recording hooks the core calls (gks_mf_record.h).
+ * Each hook encodes one item, as the item table (gks_mf_items.def) describes it, and hands
+ * it to every active MO workstation's driver (or to the addressed MO) through its
+ * record_item entry; a primitive is preceded by the items of the current attributes,
  * normalization and clipping volume that changed since the MO last wrote them.
  */
 #include "gks_mf_record.h"
@@ -20,62 +21,87 @@ void gks_mf_recount(void)
     gks_context *c = gks_ctx();
     int n = 0;
     for (int i = 0; i < c->sl->n_open; i++)
-        if (c->ws[i]->state == GWS_ACTIVE && c->ws[i]->drv->desc->cat == GCAT_MO)
+        if (c->ws[i]->state == GWS_ACTIVE && gks_mf_is_mo(c->ws[i]))
             n++;
     c->sl->mf_n_mo_active = n;
 }
 
-char *gks_mf_file_name(const char *conn_id)
+/* The format of every item that has one, from the item table. */
+static const char *const item_fmts[GKSM_ITEM_USER_MIN] = {
+#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) [type] = fmt,
+#define GKSM_ALSO(key, name, kind)
+#include "gks_mf_items.def"
+#undef GKSM_ITEM
+#undef GKSM_ALSO
+};
+
+const char *gksm_item_fmt(int type)
 {
-    size_t n = strlen(conn_id);
-    int digits = n > 0;
-    for (size_t i = 0; i < n; i++)
-        digits &= conn_id[i] >= '0' && conn_id[i] <= '9';
-    if (!digits)
-        return gks_strdup(conn_id);
-    char *s = gks_alloc_array(n + 9, 1);
-    if (s)
-        snprintf(s, n + 9, "gks%s.gksm", conn_id);
-    return s;
+    return type >= 0 && type < GKSM_ITEM_USER_MIN ? item_fmts[type] : NULL;
 }
 
-int gks_mf_file(const gks_ws *ws, char **path)
+void gks_rec_xf_default(gks_rec_xf *xf)
 {
-    if (!ws->conn_id || !*ws->conn_id)
-        return 21;
-    *path = gks_mf_file_name(ws->conn_id);
-    return *path ? 0 : 300;
+    memset(xf, 0, sizeof *xf);
+    for (int i = 0; i < 3; i++)
+        xf->norm[i][i] = 1;
+    const double box[6] = { 0, 1, 0, 1, 0, 1 };
+    memcpy(xf->box, box, sizeof box);
+    xf->clip_on = 1;
 }
 
-static gks_mf_out *mo_of(gks_ws *ws)
+gks_mf_ws *gks_mf_ws_state(gks_ws *ws)
 {
-    return ws && ws->drv->desc->cat == GCAT_MO ? ws->priv : NULL;
+    if (!ws->mf) {
+        gks_mf_ws *m = gks_calloc_array(1, sizeof *m);
+        if (!m)
+            return NULL;
+        gksm_rec_init(&m->rec);
+        gks_rec_xf_default(&m->xf);
+        ws->mf = m;
+    }
+    return ws->mf;
 }
 
-/* The active MO workstation at open-list position i that still writes (not lost), or NULL. */
-static gks_mf_out *active_mo(const gks_context *c, int i)
+void gks_mf_ws_free(gks_ws *ws)
 {
-    gks_mf_out *o = c->ws[i]->state == GWS_ACTIVE ? mo_of(c->ws[i]) : NULL;
-    return o && !o->lost ? o : NULL;
+    gks_mf_ws *m = ws->mf;
+    if (!m)
+        return;
+    gksm_rec_free(&m->rec);
+    gks_free(m);
+    ws->mf = NULL;
+}
+
+/* An MO workstation being written to: its driver takes the items, m is what the core
+ * keeps for it. */
+typedef struct {
+    gks_ws *ws;
+    gks_mf_ws *m;
+} mo_t;
+
+/* ws as an MO being written to; 300 if its state cannot be made, -1 if not an MO. */
+static int mo_of(gks_ws *ws, mo_t *o)
+{
+    if (!gks_mf_is_mo(ws))
+        return -1;
+    o->ws = ws;
+    o->m = gks_mf_ws_state(ws);
+    return o->m ? 0 : 300;
 }
 
 /* The errors of one recorded item, one per MO workstation at most: every MO receives the
- * item whatever happened to the others, and the errors are reported after the loop. */
+ * item whatever happened to the others, and the errors are reported after the loop. A
+ * write failure (303) is the driver's to report once (it then writes and returns nothing
+ * more); 300 and 161 are noted each time (the item was not written, the file is intact). */
 typedef struct {
     int n;
     int err[GKS_MAX_OPEN_WS];
 } mf_errs;
 
-/* Notes the outcome of an item on o: a write failure (303) marks o lost, so that its loss is
- * reported once and nothing more is written to the broken file; 300 and 161 are noted each
- * time (the item was not written, the file itself is intact). */
-static void note(mf_errs *e, gks_mf_out *o, int err)
+static void note(mf_errs *e, int err)
 {
-    if (!err)
-        return;
-    if (err == 303)
-        o->lost = 1;
-    if (e->n < GKS_MAX_OPEN_WS)
+    if (err && e->n < GKS_MAX_OPEN_WS)
         e->err[e->n++] = err;
 }
 
@@ -89,174 +115,209 @@ GKS_MUST_CHECK static int report(const mf_errs *e, int fctid)
     return 1;
 }
 
-/* Writes the record under construction as item `item`; 0, 300 or 303. */
-static int put(gks_mf_out *o, int item)
+/* Hands the record under construction to the MO's driver as item `item`; 0, 161, 300 or 303. */
+static int put(const mo_t *o, int item)
 {
-    if (o->rec.failed)
-        return 300;
-    int err = gksm_write_item(o->fp, item, &o->rec);
-    gksm_rec_clear(&o->rec);
-    return err == 0 ? 0 : err == 161 ? 161 : 303;
+    gksm_rec *r = &o->m->rec;
+    int err = r->failed ? 300 : o->ws->drv->record_item(o->ws, item, r->buf, r->len);
+    gksm_rec_clear(r);
+    return err == 0 || err == 161 || err == 300 ? err : 303;
 }
 
-static int put_nums(gks_mf_out *o, int item, int n, const long *iv, int m, const double *rv)
+static int put_nums(const mo_t *o, int item, int n, const long *iv, int m, const double *rv)
 {
-    gksm_rec_clear(&o->rec);
+    gksm_rec *r = &o->m->rec;
+    gksm_rec_clear(r);
     for (int i = 0; i < n; i++)
-        gksm_rec_int(&o->rec, iv[i]);
+        gksm_rec_int(r, iv[i]);
     for (int i = 0; i < m; i++)
-        gksm_rec_real(&o->rec, rv[i]);
+        gksm_rec_real(r, rv[i]);
     return put(o, item);
 }
 
-/* Builds o's record from fmt (gks_mf_record.h) and writes it. */
-static int put_fmt(gks_mf_out *o, int item, const char *fmt, va_list ap)
+/* Builds o's record of item `item` from its format (gks_mf_items.def) and writes it. */
+static int put_fmt(const mo_t *o, int item, va_list ap)
 {
-    gksm_rec_clear(&o->rec);
-    for (const char *f = fmt; *f; f++) {
-        switch (*f) {
-        case 'i':
-            gksm_rec_int(&o->rec, va_arg(ap, int));
-            break;
-        case 'r':
-            gksm_rec_real(&o->rec, va_arg(ap, double));
-            break;
-        case 'I': {
-            int n = va_arg(ap, int);
+    gksm_rec *r = &o->m->rec;
+    gksm_rec_clear(r);
+    const char *f = gksm_item_fmt(item);
+    int n, arr;
+    char k;
+    while ((f = gksm_fmt_next(f, &n, &k, &arr))) {
+        if (k == 'I') {
+            n = va_arg(ap, int);
             const int *v = va_arg(ap, const int *);
-            for (int k = 0; k < n; k++)
-                gksm_rec_int(&o->rec, v[k]);
-            break;
-        }
-        case 'R': {
-            int n = va_arg(ap, int);
-            const double *v = va_arg(ap, const double *);
-            for (int k = 0; k < n; k++)
-                gksm_rec_real(&o->rec, v[k]);
-            break;
-        }
-        default: { /* 's' */
+            for (int j = 0; j < n; j++)
+                gksm_rec_int(r, v[j]);
+        } else if (k == 's') {
             const char *str = va_arg(ap, const char *);
-            gksm_rec_str(&o->rec, str ? str : "", str ? strlen(str) : 0);
-            break;
-        }
+            gksm_rec_str(r, str ? str : "", str ? strlen(str) : 0);
+        } else if (arr && k == 'i') {
+            const int *v = va_arg(ap, const int *);
+            for (int j = 0; j < n; j++)
+                gksm_rec_int(r, v[j]);
+        } else if (arr) {
+            const double *v = va_arg(ap, const double *);
+            for (int j = 0; j < n; j++)
+                gksm_rec_real(r, v[j]);
+        } else if (k == 'i') {
+            gksm_rec_int(r, va_arg(ap, int));
+        } else {
+            gksm_rec_real(r, va_arg(ap, double));
         }
     }
     return put(o, item);
 }
 
-int gks_mf_rec(int fctid, int item, const char *fmt, ...)
+int gks_mf_rec(int fctid, int item, ...)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
     for (int i = 0; i < c->sl->n_open; i++) {
-        gks_mf_out *o = active_mo(c, i);
-        if (!o)
+        mo_t o;
+        if (c->ws[i]->state != GWS_ACTIVE)
             continue;
-        va_list ap;
-        va_start(ap, fmt);
-        note(&e, o, put_fmt(o, item, fmt, ap));
-        va_end(ap);
+        int err = mo_of(c->ws[i], &o);
+        if (err < 0)
+            continue;
+        if (!err) {
+            va_list ap;
+            va_start(ap, item);
+            err = put_fmt(&o, item, ap);
+            va_end(ap);
+        }
+        note(&e, err);
     }
     return report(&e, fctid);
 }
 
-int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...)
+int gks_mf_ws_rec(int fctid, int ws_id, int item, ...)
 {
-    gks_mf_out *o = mo_of(gks_ws_lookup(ws_id));
-    if (!o || o->lost)
+    mo_t o;
+    int err = mo_of(gks_ws_lookup(ws_id), &o);
+    if (err < 0)
         return 1;
-    va_list ap;
-    va_start(ap, fmt);
+    if (!err) {
+        va_list ap;
+        va_start(ap, item);
+        err = put_fmt(&o, item, ap);
+        va_end(ap);
+    }
     mf_errs e = { 0 };
-    note(&e, o, put_fmt(o, item, fmt, ap));
-    va_end(ap);
+    note(&e, err);
     return report(&e, fctid);
 }
 
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
 {
-    gks_mf_out *o = mo_of(ws);
-    if (!o)
+    mo_t o;
+    int err = mo_of(ws, &o);
+    if (err < 0)
         return 0;
-    if (o->lost)
-        return 1;
-    int ni = in->num_ints > 0 && in->ints ? in->num_ints : 0;
-    int nr = in->num_floats > 0 && in->floats ? in->num_floats : 0;
-    gksm_rec_clear(&o->rec);
-    gksm_rec_int(&o->rec, func_id);
-    gksm_rec_int(&o->rec, ni);
-    for (int i = 0; i < ni; i++)
-        gksm_rec_int(&o->rec, in->ints[i]);
-    gksm_rec_int(&o->rec, nr);
-    for (int i = 0; i < nr; i++)
-        gksm_rec_real(&o->rec, in->floats[i]);
-    gksm_rec_str(&o->rec, in->str ? in->str : "", in->str ? in->str_len : 0);
+    if (!err) {
+        int ni = in->num_ints > 0 && in->ints ? in->num_ints : 0;
+        int nr = in->num_floats > 0 && in->floats ? in->num_floats : 0;
+        gksm_rec *r = &o.m->rec;
+        gksm_rec_clear(r);
+        gksm_rec_int(r, func_id);
+        gksm_rec_int(r, ni);
+        for (int i = 0; i < ni; i++)
+            gksm_rec_int(r, in->ints[i]);
+        gksm_rec_int(r, nr);
+        for (int i = 0; i < nr; i++)
+            gksm_rec_real(r, in->floats[i]);
+        gksm_rec_str(r, in->str ? in->str : "", in->str ? in->str_len : 0);
+        err = put(&o, GKSM_ITEM_ESCAPE);
+    }
     mf_errs e = { 0 };
-    note(&e, o, put(o, GKSM_ITEM_ESCAPE));
+    note(&e, err);
     if (report(&e, fctid)) {
     } /* the caller returns either way: the ESCAPE was for this MO */
     return 1;
 }
 
+int gks_mf_user_item(int fctid, gks_ws *ws, int type, const char *data, size_t len)
+{
+    mo_t o;
+    int err = mo_of(ws, &o);
+    if (err < 0)
+        return 1;
+    if (!err) {
+        gksm_rec_clear(&o.m->rec);
+        gksm_rec_raw(&o.m->rec, data, len);
+        err = put(&o, type);
+    }
+    mf_errs e = { 0 };
+    note(&e, err);
+    return report(&e, fctid);
+}
+
 /* ---------------------------------------------------------------- attribute sync */
-/* The current primitive attributes recorded one item per entry: n ints or n reals. */
+/* The current primitive attributes recorded one item per entry (the ATTR rows of the item
+ * table, in their order): the n ints or n reals the item's format names, from a
+ * gks_cur_attrs field on (PATTERN REFERENCE POINT AND VECTORS: the point and the two
+ * vectors after it). */
 typedef struct {
     int item;
     size_t off;
-    int n;
-    char kind; /* 'i' int (or enum), 'r' double */
 } attr_field;
 
-#define F(item, field, n, kind) { GKSM_ITEM_##item, offsetof(gks_cur_attrs, field), n, kind }
+#define GKSM_ATTR_ROW_ATTR(name, key) { GKSM_ITEM_##name, offsetof(gks_cur_attrs, key) },
+#define GKSM_ATTR_ROW_REC_WS(name, key)
+#define GKSM_ATTR_ROW_REC_ALL(name, key)
+#define GKSM_ATTR_ROW_REC_OWN(name, key)
+#define GKSM_ATTR_ROW_PRIM(name, key)
+#define GKSM_ATTR_ROW_STATE(name, key)
+#define GKSM_ATTR_ROW_READ(name, key)
 static const attr_field attr_fields[] = {
-    F(LINE_IND, line_ind, 1, 'i'),         F(LINETYPE, linetype, 1, 'i'),
-    F(LINEWIDTH, linewidth, 1, 'r'),       F(LINE_COLR, line_colr_ind, 1, 'i'),
-    F(MARKER_IND, marker_ind, 1, 'i'),     F(MARKER_TYPE, marker_type, 1, 'i'),
-    F(MARKER_SIZE, marker_size, 1, 'r'),   F(MARKER_COLR, marker_colr_ind, 1, 'i'),
-    F(TEXT_IND, text_ind, 1, 'i'),         F(TEXT_FONT_PREC, text_font_prec, 2, 'i'),
-    F(CHAR_EXPAN, char_expan, 1, 'r'),     F(CHAR_SPACE, char_space, 1, 'r'),
-    F(TEXT_COLR, text_colr_ind, 1, 'i'),   F(CHAR_HT, char_ht, 1, 'r'),
-    F(CHAR_UP, char_up_vec, 2, 'r'),       F(TEXT_PATH, text_path, 1, 'i'),
-    F(TEXT_ALIGN, text_align, 2, 'i'),     F(FILL_IND, fill_ind, 1, 'i'),
-    F(INT_STYLE, fill_int_style, 1, 'i'),  F(STYLE_IND, fill_style_ind, 1, 'i'),
-    F(FILL_COLR, fill_colr_ind, 1, 'i'),   F(PAT_SIZE, pat_size, 2, 'r'),
-    F(PAT_REF_VECS, pat_ref_point, 9, 'r'), F(ASF, asf, GKS_N_ASF, 'i'),
-    F(PICK_ID, pick_id, 1, 'i'),           F(EDGE_FLAG, edge_flag, 1, 'i'),
-    F(EDGETYPE, edgetype, 1, 'i'),         F(EDGEWIDTH, edgewidth, 1, 'r'),
-    F(EDGE_COLR, edge_colr_ind, 1, 'i'),   F(EDGE_IND, edge_ind, 1, 'i'),
-    F(VIEW_IND, view_ind, 1, 'i'),         F(HLHSR_ID, hlhsr_id, 1, 'i'),
+#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_ATTR_ROW_##kind(name, key)
+#define GKSM_ALSO(key, name, kind)
+#include "gks_mf_items.def"
+#undef GKSM_ITEM
+#undef GKSM_ALSO
 };
-#undef F
 
 /* The layouts the table relies on (ints and enums are int-sized, reals contiguous). */
 _Static_assert(sizeof(Gtext_path) == sizeof(int) && sizeof(Gasf) == sizeof(int) &&
                    sizeof(Gtext_align) == 2 * sizeof(int) &&
-                   sizeof(Gtext_font_prec) == 2 * sizeof(int),
+                   sizeof(Gtext_font_prec) == 2 * sizeof(int) && GKS_N_ASF == 17,
                "enum fields must be int-sized");
 _Static_assert(offsetof(gks_cur_attrs, pat_ref_vec) ==
                    offsetof(gks_cur_attrs, pat_ref_point) + 3 * sizeof(double),
                "pattern reference point and vectors must be contiguous");
 
-static int field_item(gks_mf_out *o, const attr_field *f, const gks_cur_attrs *a)
+/* The item of field f: its format says how many ints or reals (the ATTR rows are one kind). */
+/* The bytes of field f: n ints or n reals as its item's format says. */
+static size_t field_size(const attr_field *f, int *n, char *k)
+{
+    int arr;
+    gksm_fmt_next(gksm_item_fmt(f->item), n, k, &arr);
+    return (size_t)*n * (*k == 'i' ? sizeof(int) : sizeof(double));
+}
+
+static int field_item(const mo_t *o, const attr_field *f, const gks_cur_attrs *a)
 {
     const char *base = (const char *)a + f->off;
-    gksm_rec_clear(&o->rec);
-    for (int k = 0; k < f->n; k++) {
-        if (f->kind == 'i') {
+    gksm_rec *r = &o->m->rec;
+    int n;
+    char k;
+    gksm_rec_clear(r);
+    field_size(f, &n, &k);
+    for (int j = 0; j < n; j++) {
+        if (k == 'i') {
             int v;
-            memcpy(&v, base + (size_t)k * sizeof v, sizeof v);
-            gksm_rec_int(&o->rec, v);
+            memcpy(&v, base + (size_t)j * sizeof v, sizeof v);
+            gksm_rec_int(r, v);
         } else {
             double v;
-            memcpy(&v, base + (size_t)k * sizeof v, sizeof v);
-            gksm_rec_real(&o->rec, v);
+            memcpy(&v, base + (size_t)j * sizeof v, sizeof v);
+            gksm_rec_real(r, v);
         }
     }
     return put(o, f->item);
 }
 
-static int props_item(gks_mf_out *o, int side, const Garea_props *p)
+static int props_item(const mo_t *o, int side, const Garea_props *p)
 {
     const double r[9] = { p->ambient_coef, p->diffuse_coef, p->specular_coef,
                           p->specular_colr.red, p->specular_colr.green, p->specular_colr.blue,
@@ -264,7 +325,7 @@ static int props_item(gks_mf_out *o, int side, const Garea_props *p)
     return put_nums(o, GKSM_ITEM_AREA_PROPS, 1, (const long[]){ side }, 9, r);
 }
 
-static int light_state_item(gks_mf_out *o, uint64_t mask)
+static int light_state_item(const mo_t *o, uint64_t mask)
 {
     long on[GKS_MAX_LIGHT_IND + 1];
     int n = 0;
@@ -276,13 +337,15 @@ static int light_state_item(gks_mf_out *o, uint64_t mask)
 }
 
 /* Writes the entries of `a` that differ from what o last wrote (all when not synced). */
-static int sync_attrs(gks_mf_out *o, const gks_cur_attrs *a)
+static int sync_attrs(const mo_t *o, const gks_cur_attrs *a)
 {
-    int all = !o->synced, err = 0;
-    const gks_cur_attrs *l = &o->last;
+    int all = !o->m->synced, err = 0;
+    const gks_cur_attrs *l = &o->m->last;
     for (size_t i = 0; i < sizeof attr_fields / sizeof attr_fields[0] && !err; i++) {
         const attr_field *f = &attr_fields[i];
-        size_t sz = (size_t)f->n * (f->kind == 'i' ? sizeof(int) : sizeof(double));
+        int n;
+        char k;
+        size_t sz = field_size(f, &n, &k);
         if (all || memcmp((const char *)a + f->off, (const char *)l + f->off, sz) != 0)
             err = field_item(o, f, a);
     }
@@ -299,19 +362,19 @@ static int sync_attrs(gks_mf_out *o, const gks_cur_attrs *a)
     return err;
 }
 
-static int sync_xform(gks_mf_out *o, const gks_mf_prim *p)
+static int sync_xform(const mo_t *o, const gks_mf_prim *p)
 {
-    int all = !o->synced, err = 0;
-    if (all || memcmp(o->norm, p->norm, sizeof o->norm)) {
+    int all = !o->m->synced, err = 0;
+    if (all || memcmp(o->m->norm, p->norm, sizeof o->m->norm)) {
         double r[12];
         memcpy(r, p->norm, sizeof r);
         err = put_nums(o, GKSM_ITEM_NORM, 0, NULL, 12, r);
-        memcpy(o->norm, p->norm, sizeof o->norm);
+        memcpy(o->m->norm, p->norm, sizeof o->m->norm);
     }
-    if (!err && (all || o->clip_on != p->clip_on || memcmp(o->box, p->box, sizeof o->box))) {
+    if (!err && (all || o->m->clip_on != p->clip_on || memcmp(o->m->box, p->box, sizeof o->m->box))) {
         err = put_nums(o, GKSM_ITEM_CLIP_VOL3, 1, (const long[]){ p->clip_on }, 6, p->box);
-        memcpy(o->box, p->box, sizeof o->box);
-        o->clip_on = p->clip_on;
+        memcpy(o->m->box, p->box, sizeof o->m->box);
+        o->m->clip_on = p->clip_on;
     }
     return err;
 }
@@ -346,7 +409,7 @@ static void rec_point(gksm_rec *r, const double v[3])
 
 /* POLYLINE 3: one item per run of finite points (a non-finite point breaks the line, as
  * in the pipeline); POLYMARKER 3: the finite points. */
-static int write_points(gks_mf_out *o, const gks_mf_prim *p)
+static int write_points(const mo_t *o, const gks_mf_prim *p)
 {
     const int line = p->item == GKSM_ITEM_POLYLINE3;
     double v[3];
@@ -365,11 +428,11 @@ static int write_points(gks_mf_out *o, const gks_mf_prim *p)
         i = e;
         if (k < (line ? 2u : 1u))
             continue;
-        gksm_rec_clear(&o->rec);
-        gksm_rec_int(&o->rec, (long)k);
+        gksm_rec_clear(&o->m->rec);
+        gksm_rec_int(&o->m->rec, (long)k);
         for (size_t j = s; j < e; j++)
             if (ndc_point(p, j, v))
-                rec_point(&o->rec, v);
+                rec_point(&o->m->rec, v);
         int err = put(o, p->item);
         if (err)
             return err;
@@ -377,64 +440,64 @@ static int write_points(gks_mf_out *o, const gks_mf_prim *p)
     return 0;
 }
 
-static int write_area(gks_mf_out *o, const gks_mf_prim *p)
+static int write_area(const mo_t *o, const gks_mf_prim *p)
 {
-    gksm_rec_clear(&o->rec);
+    gksm_rec_clear(&o->m->rec);
     if (p->item == GKSM_ITEM_FILL_AREA_SET3) {
-        gksm_rec_int(&o->rec, (long)p->n_loops);
+        gksm_rec_int(&o->m->rec, (long)p->n_loops);
         for (size_t k = 0; k < p->n_loops; k++)
-            gksm_rec_int(&o->rec, (long)p->cnt[k]);
+            gksm_rec_int(&o->m->rec, (long)p->cnt[k]);
     } else {
-        gksm_rec_int(&o->rec, (long)p->n);
+        gksm_rec_int(&o->m->rec, (long)p->n);
     }
     for (size_t i = 0; i < p->n; i++) {
         double v[3];
         if (!ndc_point(p, i, v))
             return 0; /* not drawn: not recorded */
-        rec_point(&o->rec, v);
+        rec_point(&o->m->rec, v);
     }
     return put(o, p->item);
 }
 
-static int write_text(gks_mf_out *o, const gks_mf_prim *p)
+static int write_text(const mo_t *o, const gks_mf_prim *p)
 {
-    gksm_rec_clear(&o->rec);
+    gksm_rec_clear(&o->m->rec);
     for (size_t i = 0; i < 3; i++) {
         double w[3];
         src_point(p, i, w);
         if (i == 0 && !(isfinite(w[0]) && isfinite(w[1]) && isfinite(w[2])))
             return 0; /* nothing drawn */
-        rec_point(&o->rec, w);
+        rec_point(&o->m->rec, w);
     }
-    gksm_rec_str(&o->rec, p->str, strlen(p->str));
+    gksm_rec_str(&o->m->rec, p->str, strlen(p->str));
     return put(o, p->item);
 }
 
-static int write_cells(gks_mf_out *o, const gks_mf_prim *p)
+static int write_cells(const mo_t *o, const gks_mf_prim *p)
 {
-    gksm_rec_clear(&o->rec);
+    gksm_rec_clear(&o->m->rec);
     for (size_t i = 0; i < 3; i++) {
         double v[3];
         if (!ndc_point(p, i, v))
             return 0;
-        rec_point(&o->rec, v);
+        rec_point(&o->m->rec, v);
     }
-    gksm_rec_int(&o->rec, p->nx);
-    gksm_rec_int(&o->rec, p->ny);
+    gksm_rec_int(&o->m->rec, p->nx);
+    gksm_rec_int(&o->m->rec, p->ny);
     size_t n = (size_t)p->nx * (size_t)p->ny;
     for (size_t i = 0; i < n; i++)
-        gksm_rec_int(&o->rec, p->colr[i]);
+        gksm_rec_int(&o->m->rec, p->colr[i]);
     return put(o, p->item);
 }
 
 /* A primitive with data: its packed form (gks_area_data.h), integers then reals. */
-static int write_data(gks_mf_out *o, const gks_mf_prim *p)
+static int write_data(const mo_t *o, const gks_mf_prim *p)
 {
-    gksm_rec_clear(&o->rec);
+    gksm_rec_clear(&o->m->rec);
     for (size_t i = 0; i < p->n_dints; i++)
-        gksm_rec_int(&o->rec, p->dints[i]);
+        gksm_rec_int(&o->m->rec, p->dints[i]);
     for (size_t i = 0; i < p->n_dreals; i++)
-        gksm_rec_real(&o->rec, p->dreals[i]);
+        gksm_rec_real(&o->m->rec, p->dreals[i]);
     return put(o, p->item);
 }
 
@@ -443,19 +506,27 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
     for (int i = 0; i < c->sl->n_open; i++) {
-        gks_mf_out *o = active_mo(c, i);
-        if (!o)
+        mo_t mo;
+        const mo_t *o = &mo;
+        if (c->ws[i]->state != GWS_ACTIVE)
             continue;
-        int err = sync_attrs(o, &c->sl->attrs);
+        int err = mo_of(c->ws[i], &mo);
+        if (err < 0)
+            continue;
+        if (err) {
+            note(&e, err);
+            continue;
+        }
+        err = sync_attrs(o, &c->sl->attrs);
         if (!err)
             err = sync_xform(o, p);
         if (err) {
-            o->synced = 0; /* what was written is unknown: write everything next time */
-            note(&e, o, err);
+            o->m->synced = 0; /* what was written is unknown: write everything next time */
+            note(&e, err);
             continue;
         }
-        o->last = c->sl->attrs;
-        o->synced = 1;
+        o->m->last = c->sl->attrs;
+        o->m->synced = 1;
         switch (p->item) {
         case GKSM_ITEM_POLYLINE3:
         case GKSM_ITEM_POLYMARKER3:
@@ -479,39 +550,7 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
             err = write_cells(o, p);
             break;
         }
-        note(&e, o, err);
+        note(&e, err);
     }
     return report(&e, fctid);
-}
-
-/* ---------------------------------------------------------------- WRITE ITEM TO GKSM */
-GKS_API void gwrite_item(Gint ws_id, Gint type, Gint length, const Gitem_data *item_data)
-{
-    /* The record's characters (docs/METAFILE.md: records stay character-coded). */
-    const char *data = item_data ? item_data->data.impl_dep.data : NULL;
-    size_t have = item_data ? item_data->data.impl_dep.size : 0;
-    if (gks_check_state(GFN_WITM))
-        return;
-    if (ws_id < 0)
-        GKS_FAIL(20, GFN_WITM);
-    gks_ws *ws = gks_ws_lookup(ws_id);
-    if (!ws)
-        GKS_FAIL(25, GFN_WITM);
-    if (ws->state != GWS_ACTIVE)
-        GKS_FAIL(30, GFN_WITM);
-    gks_mf_out *o = mo_of(ws);
-    if (!o)
-        GKS_FAIL(32, GFN_WITM);
-    if (type < GKSM_ITEM_USER_MIN || type > 999)
-        GKS_FAIL(160, GFN_WITM);
-    if (length < 0 || (length > 0 && (!data || (size_t)length > have)))
-        GKS_FAIL(161, GFN_WITM);
-    if (o->lost)
-        return; /* the loss was reported once */
-    gksm_rec_clear(&o->rec);
-    gksm_rec_raw(&o->rec, data, (size_t)length);
-    mf_errs e = { 0 };
-    note(&e, o, put(o, type));
-    if (report(&e, GFN_WITM)) {
-    } /* the last action: returning is right either way */
 }

@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_mf_record.h -- the GKS metafile workstations: recording at the API level (the core calls a
- * one-line hook from each function the metafile records; the hook writes an item to every
- * active MO workstation, or to the addressed workstation when it is an MO) and
- * interpretation of items (INTERPRET ITEM performs the recorded function). Item numbers
- * and data records: docs/METAFILE.md. The character codec is gks_mf_codec.h.
+ * gks_mf_record.h -- the metafile as a back-end: recording at the API level (the core calls a
+ * one-line hook from each function the metafile records; the hook encodes the function's
+ * item of gks_mf_items.def and hands it to every active MO workstation, or to the addressed
+ * workstation when it is an MO, through the driver entry record_item), and the core's state
+ * of the MO and MI workstations. Interpretation: core/api/gks_metafile.c. Item numbers and
+ * data records: docs/METAFILE.md; the character codec: ws/mf/gks_mf_codec.h.
  *
  * Current primitive attributes, the normalization and the clipping volume are written
  * lazily: before each primitive, an MO writes the items of those entries that differ from
@@ -18,54 +19,19 @@
 #include "gks_context.h"
 #include "gks_error.h"
 #include "gks_mf_codec.h"
+#include "gks_mf_items.h"
+#include "ws_driver.h"
 
-/* Item types (docs/METAFILE.md). RAL GKS's table for the GKS items; GKS-3D and lighting
- * items in numbers RAL leaves free below 100. */
-enum {
-    GKSM_ITEM_END = 0, GKSM_ITEM_CLEAR = 1, GKSM_ITEM_REDRAW = 2, GKSM_ITEM_UPDATE = 3,
-    GKSM_ITEM_DEFER = 4, GKSM_ITEM_MESSAGE = 5, GKSM_ITEM_ESCAPE = 6,
-    GKSM_ITEM_TEXT3 = 7, GKSM_ITEM_CELL_ARRAY3 = 8, GKSM_ITEM_FILL_AREA_SET3 = 9,
-    GKSM_ITEM_POLYLINE = 11, GKSM_ITEM_POLYMARKER = 12, GKSM_ITEM_TEXT = 13,
-    GKSM_ITEM_FILL_AREA = 14, GKSM_ITEM_CELL_ARRAY = 15, GKSM_ITEM_GDP = 16,
-    GKSM_ITEM_POLYLINE3 = 17, GKSM_ITEM_POLYMARKER3 = 18, GKSM_ITEM_FILL_AREA3 = 19,
-    GKSM_ITEM_LINE_IND = 21, GKSM_ITEM_LINETYPE = 22, GKSM_ITEM_LINEWIDTH = 23,
-    GKSM_ITEM_LINE_COLR = 24, GKSM_ITEM_MARKER_IND = 25, GKSM_ITEM_MARKER_TYPE = 26,
-    GKSM_ITEM_MARKER_SIZE = 27, GKSM_ITEM_MARKER_COLR = 28, GKSM_ITEM_TEXT_IND = 29,
-    GKSM_ITEM_TEXT_FONT_PREC = 30, GKSM_ITEM_CHAR_EXPAN = 31, GKSM_ITEM_CHAR_SPACE = 32,
-    GKSM_ITEM_TEXT_COLR = 33, GKSM_ITEM_CHAR_VECS = 34, GKSM_ITEM_TEXT_PATH = 35,
-    GKSM_ITEM_TEXT_ALIGN = 36, GKSM_ITEM_FILL_IND = 37, GKSM_ITEM_INT_STYLE = 38,
-    GKSM_ITEM_STYLE_IND = 39, GKSM_ITEM_FILL_COLR = 40, GKSM_ITEM_PAT_SIZE_NDC = 41,
-    GKSM_ITEM_PAT_REF_NDC = 42, GKSM_ITEM_ASF = 43, GKSM_ITEM_PICK_ID = 44,
-    GKSM_ITEM_PAT_REF_VECS = 45, GKSM_ITEM_EDGE_FLAG = 46, GKSM_ITEM_EDGETYPE = 47,
-    GKSM_ITEM_EDGEWIDTH = 48, GKSM_ITEM_EDGE_COLR = 49, GKSM_ITEM_EDGE_IND = 50,
-    GKSM_ITEM_LINE_REP = 51, GKSM_ITEM_MARKER_REP = 52, GKSM_ITEM_TEXT_REP = 53,
-    GKSM_ITEM_FILL_REP = 54, GKSM_ITEM_PAT_REP = 55, GKSM_ITEM_COLR_REP = 56,
-    GKSM_ITEM_EDGE_REP = 57, GKSM_ITEM_VIEW_REP3 = 58, GKSM_ITEM_CHAR_HT = 59,
-    GKSM_ITEM_CHAR_UP = 60, GKSM_ITEM_CLIP_RECT = 61, GKSM_ITEM_NORM = 62,
-    GKSM_ITEM_PAT_SIZE = 63, GKSM_ITEM_CLIP_VOL3 = 64, GKSM_ITEM_VIEW_IND = 65,
-    GKSM_ITEM_HLHSR_ID = 66, GKSM_ITEM_HLHSR_MODE = 67, GKSM_ITEM_AREA_PROPS = 68,
-    GKSM_ITEM_REFL_EQ = 69, GKSM_ITEM_LIGHT_STATE = 70, GKSM_ITEM_WS_WIN = 71,
-    GKSM_ITEM_WS_VP = 72, GKSM_ITEM_WS_WIN3 = 73, GKSM_ITEM_WS_VP3 = 74,
-    GKSM_ITEM_LIGHT_REP = 75,
-    GKSM_ITEM_FILL_AREA3_DATA = 76, GKSM_ITEM_FILL_AREA_SET3_DATA = 77,
-    GKSM_ITEM_TRI_STRIP3_DATA = 78, GKSM_ITEM_QUAD_MESH3_DATA = 79,
-    GKSM_ITEM_SOFAS3_DATA = 80, GKSM_ITEM_INT_SHAD = 86,
-    GKSM_ITEM_CREATE_SEG = 81, GKSM_ITEM_CLOSE_SEG = 82, GKSM_ITEM_RENAME_SEG = 83,
-    GKSM_ITEM_DEL_SEG = 84, GKSM_ITEM_SEG_TRAN3 = 85, GKSM_ITEM_SEG_TRAN = 91,
-    GKSM_ITEM_VIS = 92, GKSM_ITEM_HIGHL = 93, GKSM_ITEM_SEG_PRI = 94, GKSM_ITEM_DET = 95,
-    GKSM_ITEM_USER_MIN = 101 /* user items: 101..999 */
-};
-
-/* INTERPRET ITEM's normalization for primitives (gks_output.c reads it from the context
- * while a recorded primitive is performed): points are NDC3 (ndc_pts = 1; TEXT: WC3 and
- * ndc_pts = 0), norm is the recorded WC3 -> NDC3 matrix for text geometry and pattern
- * boxes, box/clip_on the recorded clipping volume. */
-typedef struct gks_norm_override {
+/* The recorded normalization a primitive performed by INTERPRET ITEM enters the pipeline
+ * with (the argument of the gks_output_rec_* entries, gks_output_rec.h): points are NDC3
+ * (ndc_pts = 1; TEXT: WC3 and ndc_pts = 0), norm is the recorded WC3 -> NDC3 matrix for
+ * text geometry and pattern boxes, box/clip_on the recorded clipping volume. */
+typedef struct gks_rec_xf {
     double norm[3][4];
     double box[6];
     int clip_on;
     int ndc_pts;
-} gks_norm_override;
+} gks_rec_xf;
 
 /* A primitive as recorded (gks_output.c fills it after its argument checks). pn maps the
  * source points to NDC3 (before any segment transformation); norm/box/clip_on are the
@@ -92,37 +58,25 @@ typedef struct gks_mf_prim {
     size_t n_dreals;
 } gks_mf_prim;
 
-/* Output state of an MO workstation (ws->priv of ws_mo.c). */
-typedef struct gks_mf_out {
-    FILE *fp;
-    int lost;                  /* a write failed (reported once): nothing more is written */
-    gksm_rec rec;              /* reused data record */
+/* The core's metafile state of an MO or MI workstation (gks_ws.mf): for an MO what it last
+ * wrote (the lazy attribute sync) and its reused data record, for an MI the
+ * interpretation state of the items read from it (recorded normalization, clipping). */
+typedef struct gks_mf_ws {
+    gksm_rec rec;
     int synced;                /* `last`, norm, box, clip_on hold what was written */
     gks_cur_attrs last;
     double norm[3][4];
     double box[6];
     int clip_on;
-} gks_mf_out;
+    gks_rec_xf xf;             /* MI: NORMALIZATION and CLIPPING VOLUME items read */
+} gks_mf_ws;
 
-/* Input state of an MI workstation (ws->priv of ws_mi.c): the reader and the
- * interpretation state of the items read from it (recorded normalization, clipping). */
-typedef struct gks_mf_in {
-    FILE *fp;
-    int allow_escapes;         /* GESC_MI_ALLOW_ESCAPES: 1 performs every recorded ESCAPE */
-    gksm_in in;
-    gks_norm_override xf;
-} gks_mf_in;
-
-/* The metafile workstation drivers (ws_mo.c, ws_mi.c). */
-extern const gks_ws_driver gks_ws_mo_driver;
-extern const gks_ws_driver gks_ws_mi_driver;
-
-/* The metafile's file name for a connection identifier: the identifier itself, or
- * "gks<digits>.gksm" when it is all digits (a Fortran integer CONID), as the PNG
- * workstation names "gks<digits>.png". NULL on storage overflow. Free with gks_free. */
-char *gks_mf_file_name(const char *conn_id);
-/* The drivers' file entry (ws_driver.h) of MO and MI: 21 for an empty identifier. */
-int gks_mf_file(const gks_ws *ws, char **path);
+/* ws's metafile state, made at first use (identity and the NDC unit cube for an MI); NULL
+ * on storage overflow. gks_mf_ws_free (from gks_ws_destroy) frees it. */
+gks_mf_ws *gks_mf_ws_state(gks_ws *ws);
+void gks_mf_ws_free(gks_ws *ws);
+/* The interpretation state before any NORMALIZATION / CLIPPING item. */
+void gks_rec_xf_default(gks_rec_xf *xf);
 
 /* Whether any MO workstation is active (the fast-path test). */
 static inline int gks_mf_on(void)
@@ -134,41 +88,54 @@ static inline int gks_mf_on(void)
 /* ACTIVATE / DEACTIVATE WORKSTATION: recount the active MO workstations. */
 void gks_mf_recount(void);
 
-/* INTERPRET ITEM of a primitive with data (item GKSM_ITEM_*_DATA, d in NDC3, with the
- * MI's normalization override in effect): performed as the function that wrote it (its
- * state check, gks_area_data_check's errors). Defined by the output pipeline
- * (core/api/gks_output_data.c). */
-#include "gks_area_data.h"
-void gks_area_data_perform(int item, const gks_area_data *d);
-
 /* ---- hooks: each writes one item (errors 300, 303 reported for fctid). Each returns
  * what gks_error_report returned (1 when nothing was reported): on 0 the caller returns at
  * once (gks_error.h). ---- */
 /* A primitive, preceded by the attribute, normalization and clipping items that changed. */
 GKS_MUST_CHECK int gks_mf_prim_write(int fctid, const gks_mf_prim *p);
-/* An item of the active MO workstations, its data record described by fmt: 'i' an int
- * argument, 'r' a double, 'I' (int n, const int *v) n ints, 'R' (int n, const double *v)
- * n reals, 's' a string (const char *, written as count and characters). */
-GKS_MUST_CHECK int gks_mf_rec(int fctid, int item, const char *fmt, ...);
+/* The item `item` of the active MO workstations, its data record built from the arguments
+ * by the item's format (gks_mf_items.def): i an int, r a double, Nr / Ni one pointer to N
+ * doubles / ints, I an int count and a pointer to the ints, s a string. */
+GKS_MUST_CHECK int gks_mf_rec(int fctid, int item, ...);
 /* The same for a workstation-addressed function: written only when ws_id is an open MO
  * (active or not; no fast path needed: these are not per-primitive calls). */
-GKS_MUST_CHECK int gks_mf_ws_rec(int fctid, int ws_id, int item, const char *fmt, ...);
+GKS_MUST_CHECK int gks_mf_ws_rec(int fctid, int ws_id, int item, ...);
 
 /* ESCAPE addressed to workstation ws: if ws is an MO, writes the ESCAPE item (function
  * identification, integers, reals, string) and returns 1; else returns 0. */
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in);
+/* WRITE ITEM TO GKSM after its checks: the user item to the MO ws. 1, or what
+ * gks_error_report returned. */
+int gks_mf_user_item(int fctid, gks_ws *ws, int type, const char *data, size_t len);
+/* Whether ws is a metafile output (its driver takes items). */
+static inline int gks_mf_is_mo(const gks_ws *ws)
+{
+    return ws && ws->drv->record_item != NULL;
+}
 
-/* The one-line hook of a function recorded on every active MO (fast path: one test).
- * Returns from the calling void function when the error handler changed the world. */
-#define GKS_MF(fct, item, ...)                                                             \
+/* The one-line hook of function SYM (GFN_SYM), recorded on every active MO as its item of
+ * gks_mf_items.def (fast path: one test), the arguments as the item's format says. Returns
+ * from the calling void function when the error handler changed the world. GKS_MF0: an
+ * item without data. */
+#define GKS_MF(sym, ...)                                                                   \
     do {                                                                                   \
-        if (gks_mf_on() && !gks_mf_rec((fct), (item), __VA_ARGS__))                        \
+        if (gks_mf_on() && !gks_mf_rec(GFN_##sym, GKSM_FN_##sym, __VA_ARGS__))             \
+            return;                                                                        \
+    } while (0)
+#define GKS_MF0(sym)                                                                       \
+    do {                                                                                   \
+        if (gks_mf_on() && !gks_mf_rec(GFN_##sym, GKSM_FN_##sym))                          \
             return;                                                                        \
     } while (0)
 /* The same for a workstation-addressed function (gks_mf_ws_rec). */
-#define GKS_MF_WS(fct, ws_id, item, ...)                                                   \
+#define GKS_MF_WS(sym, ws_id, ...)                                                         \
     do {                                                                                   \
-        if (!gks_mf_ws_rec((fct), (ws_id), (item), __VA_ARGS__))                           \
+        if (!gks_mf_ws_rec(GFN_##sym, (ws_id), GKSM_FN_##sym, __VA_ARGS__))                \
+            return;                                                                        \
+    } while (0)
+#define GKS_MF_WS0(sym, ws_id)                                                             \
+    do {                                                                                   \
+        if (!gks_mf_ws_rec(GFN_##sym, (ws_id), GKSM_FN_##sym))                             \
             return;                                                                        \
     } while (0)
 #endif

@@ -2,12 +2,21 @@
 /*
  * ws_mo.c -- the GKS metafile output workstation (type GWS_TYPE_MO, category MO). The
  * connection identifier is the file name; OPEN WORKSTATION writes the file header, CLOSE
- * WORKSTATION the END item. The items themselves are written by the core's recording hooks
- * (gks_mf_record.c), never through the primitive interface: the driver has no drawing entries.
+ * WORKSTATION the END item. The core encodes the items (core/store/gks_mf_record.c) and
+ * hands them to record_item; the driver has no drawing entries. It owns the file: a
+ * failed write marks it lost (reported once), and nothing more is written to it.
  */
 #include "gks_alloc.h"
-#include "gks_mf_record.h"
+#include "gks_mf_codec.h"
+#include "gks_mf_file.h"
 #include "ws_driver.h"
+#include <stdio.h>
+
+/* The MO's file. */
+typedef struct {
+    FILE *fp;
+    int lost; /* a write failed (reported once): nothing more is written */
+} mo_out;
 
 static const Grgb mo_colours[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
 
@@ -31,14 +40,18 @@ static const gks_ws_desc mo_desc = {
     .out = &gks_wdt_raster,
 };
 
+static int mo_file(const gks_ws *ws, char **path)
+{
+    return gks_mf_file_path(ws->conn_id, path);
+}
+
 static int mo_open(gks_ws *ws)
 {
     if (!ws->conn_id || !*ws->conn_id)
         return 21;
-    gks_mf_out *o = gks_calloc_array(1, sizeof *o);
+    mo_out *o = gks_calloc_array(1, sizeof *o);
     if (!o)
         return 300;
-    gksm_rec_init(&o->rec);
     char *path = gks_mf_file_name(ws->conn_id);
     o->fp = path ? fopen(path, "wb") : NULL;
     gks_free(path);
@@ -56,13 +69,11 @@ static int mo_open(gks_ws *ws)
 }
 
 /* Writes the END item and closes the file. 0, or 303 when a write or fclose failed. */
-static int mo_end(gks_mf_out *o)
+static int mo_end(mo_out *o)
 {
     int err = 0;
-    if (!o->lost) {
-        gksm_rec_clear(&o->rec);
-        err = gksm_write_item(o->fp, GKSM_ITEM_END, &o->rec) != 0;
-    }
+    if (!o->lost)
+        err = gksm_write_record(o->fp, 0 /* END */, NULL, 0) != 0;
     err |= fclose(o->fp) != 0;
     o->fp = NULL;
     return err ? 303 : 0;
@@ -72,7 +83,7 @@ static int mo_end(gks_mf_out *o)
  * once per workstation (not again when an earlier item already reported it). */
 static int mo_finish(gks_ws *ws)
 {
-    gks_mf_out *o = ws->priv;
+    mo_out *o = ws->priv;
     if (!o || !o->fp)
         return 0;
     int was_lost = o->lost;
@@ -83,12 +94,11 @@ static int mo_finish(gks_ws *ws)
 /* Frees the workstation; after EMERGENCY CLOSE GKS (no finish) ends the file unchecked. */
 static void mo_close(gks_ws *ws)
 {
-    gks_mf_out *o = ws->priv;
+    mo_out *o = ws->priv;
     if (!o)
         return;
     if (o->fp)
         (void)mo_end(o);
-    gksm_rec_free(&o->rec);
     gks_free(o);
     ws->priv = NULL;
 }
@@ -97,7 +107,7 @@ static void mo_close(gks_ws *ws)
  * is reported once: it marks the workstation lost. */
 static int mo_update(gks_ws *ws)
 {
-    gks_mf_out *o = ws->priv;
+    mo_out *o = ws->priv;
     if (o->lost)
         return 0;
     if (fflush(o->fp) == 0 && !ferror(o->fp))
@@ -106,12 +116,29 @@ static int mo_update(gks_ws *ws)
     return 303;
 }
 
+/* One item from the core: 0, 161, or 303 for the first failed write (then 0: lost). */
+static int mo_record_item(gks_ws *ws, int type, const char *rec, size_t len)
+{
+    mo_out *o = ws->priv;
+    if (o->lost)
+        return 0;
+    int err = gksm_write_record(o->fp, type, rec, len);
+    if (err == 161)
+        return 161;
+    if (err) {
+        o->lost = 1;
+        return 303;
+    }
+    return 0;
+}
+
 const gks_ws_driver gks_ws_mo_driver = {
     .version = GKS_WS_DRIVER_VERSION,
     .desc = &mo_desc,
-    .file = gks_mf_file,
+    .file = mo_file,
     .open = mo_open,
     .close = mo_close,
     .finish = mo_finish,
     .update = mo_update,
+    .record_item = mo_record_item,
 };

@@ -21,6 +21,9 @@
  * limits and the bytes left in the file; nothing is allocated from a declared count. Errors
  * use the standard's numbers: 162 no item left, 163 item invalid (bad header or item
  * header, truncated data), 165 data record invalid for the item type.
+ * Users: the MO driver (writing), the MI driver (the file and its items), the core's item
+ * encoder and decoder (data records): so it lives with the drivers (ws/mf) and sees no
+ * GKS state.
  */
 #ifndef GKSM_H
 #define GKSM_H
@@ -57,6 +60,8 @@ int gksm_write_header(FILE *fp, const char *name, const char *date);
 /* Writes one item. Returns 0, -1 (write error or failed record) or 161 (type out of range
  * or record too long for the length field). */
 int gksm_write_item(FILE *fp, int type, const gksm_rec *r);
+/* The same for a record of len characters at rec. */
+int gksm_write_record(FILE *fp, int type, const char *rec, size_t len);
 
 /* ---- reading ---- */
 

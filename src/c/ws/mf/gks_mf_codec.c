@@ -116,18 +116,22 @@ int gksm_write_header(FILE *fp, const char *name, const char *date)
     return n == GKSM_HEADER_LEN ? 0 : -1;
 }
 
-int gksm_write_item(FILE *fp, int type, const gksm_rec *r)
+int gksm_write_record(FILE *fp, int type, const char *rec, size_t len)
 {
-    if (r && r->failed)
-        return -1;
-    size_t len = r ? r->len : 0;
     if (type < 0 || type > 999 || len > 9999999999ULL)
         return 161;
     if (fprintf(fp, "GKSM%*d%*zu", W_T, type, W_L, len) != W_H + W_T + W_L)
         return -1;
-    if (len && fwrite(r->buf, 1, len, fp) != len)
+    if (len && fwrite(rec, 1, len, fp) != len)
         return -1;
     return 0;
+}
+
+int gksm_write_item(FILE *fp, int type, const gksm_rec *r)
+{
+    if (r && r->failed)
+        return -1;
+    return gksm_write_record(fp, type, r ? r->buf : NULL, r ? r->len : 0);
 }
 
 /* ---------------------------------------------------------------- reading */
