@@ -268,7 +268,17 @@ enum {
     /* Scripted input (docs/INPUT.md): ints[0] ws id of an INPUT/OUTIN workstation; str =
      * name of a file of raw device events (device coordinates) that its logical input
      * devices replay from now on, replacing any script (182: unreadable file). */
-    GESC_INPUT_SCRIPT = -130
+    GESC_INPUT_SCRIPT = -130,
+    /* NCAR GKS's two escapes, accepted as they are so that NCAR's programs run unchanged
+     * (docs/COMPAT.md). Their record is NCAR's: the Gdata member escape_r1 (data, size),
+     * or from GESC the record IDR(1). */
+    GESC_NCAR_FILE_NAME = -1391, /* escape_r1: the file name (left justified, blank filled;
+                                    trailing blanks dropped) of the next workstation opened
+                                    that writes a file: it replaces that workstation's
+                                    connection identifier */
+    GESC_NCAR_PAUSE = -1396      /* escape_r1: the workstation identifier as a decimal
+                                    number (NCAR: 5 characters): NCAR pauses its X window;
+                                    here UPDATE WORKSTATION (PERFORM) of that workstation */
 };
 
 /* ---------------------------------------------------------------------------------

@@ -275,8 +275,9 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
     message_n(*wkid, mess, n < mess_len ? n : mess_len);
 }
 
-/* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). Escapes -101 (set file name) and -130 (input
- * script, docs/INPUT.md): IDR(1) holds the workstation identifier in columns 1-10 (I10),
+/* GESC(FCTID, LIDR, IDR, MLODR, LODR, ODR). NCAR's -1391 (file name of the next
+ * workstation) and -1396 (pause): IDR(1) is NCAR's record (gks.h GESC_NCAR_*).
+ * Escapes -101 (set file name) and -130 (input script, docs/INPUT.md): IDR(1) holds the workstation identifier in columns 1-10 (I10),
  * IDR(2..LIDR) the file name, each record blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
  * No escape available from Fortran returns data, so MLODR, LODR and ODR are not
  * touched (a program may pass constants there, as NCAR's fgke03 does). */
@@ -317,6 +318,10 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         in.ints = &wsid;
         in.str = name;
         in.str_len = total;
+    }
+    if ((*fctid == GESC_NCAR_FILE_NAME || *fctid == GESC_NCAR_PAUSE) && nrec >= 1) {
+        in.escape_r1.size = idr_len; /* NCAR's record: IDR(1), blank filled */
+        in.escape_r1.data = (void *)idr;
     }
     gescape(*fctid, &in, NULL, NULL);
     free(name);

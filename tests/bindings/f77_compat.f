@@ -7,6 +7,7 @@ C     failed check and ALL OK at the end when none failed.
       INTEGER NFAIL, IERR, NERR, LASTE, I1, I2, I3, LODR, IWK
       REAL CPX, CPY, TX1(4), TY1(4), TX2(4), TY2(4), R, G, B
       REAL VWM(4,4), XS(2), YS(2)
+      LOGICAL EX1, EX2, EX3
       CHARACTER*80 IDR(2), ODR(1)
       COMMON /ERRS/ NERR, LASTE
       NFAIL = 0
@@ -74,6 +75,35 @@ C     Added inquiries: colour facilities, predefined colour, indices.
       CALL CHKI('GQDDS', I1 * 10 + I2, GASAP * 10 + GSUPPD, NFAIL)
       CALL GDAWK(IWK)
       CALL GCLWK(IWK)
+C     NCAR's escapes as NCAR's fgke03 calls them: -1391 names the file
+C     of the next workstation opened (its CONID 2 would be gks2.png),
+C     twice in turn; -1396 (pause) updates the workstation named.
+      OPEN (UNIT=31, FILE='gks2.png')
+      CLOSE (31, STATUS='DELETE')
+      IDR(1) = 'f77_meta01'
+      CALL GESC(-1391, 1, IDR, 1, 1, ODR)
+      CALL GOPWK(IWK, 2, 100)
+      CALL GACWK(IWK)
+      CALL GPL(2, XS, YS)
+      WRITE (IDR(1), '(I5)') IWK
+      CALL GESC(-1396, 1, IDR, 1, 1, ODR)
+      CALL CHKI('GESC -1391, -1396', NERR, 0, NFAIL)
+      IDR(1) = '   77'
+      CALL GESC(-1396, 1, IDR, 1, 1, ODR)
+      CALL CHKI('GESC -1396 no such ws', LASTE, 182, NFAIL)
+      CALL GDAWK(IWK)
+      CALL GCLWK(IWK)
+      IDR(1) = 'f77_meta02'
+      CALL GESC(-1391, 1, IDR, 1, 1, ODR)
+      CALL GOPWK(IWK, 2, 100)
+      CALL GCLWK(IWK)
+      INQUIRE (FILE='f77_meta01.png', EXIST=EX1)
+      INQUIRE (FILE='f77_meta02.png', EXIST=EX2)
+      INQUIRE (FILE='gks2.png', EXIST=EX3)
+      IF (.NOT. EX1 .OR. .NOT. EX2 .OR. EX3) THEN
+        WRITE (*, *) 'FAIL GESC -1391 files', EX1, EX2, EX3
+        NFAIL = NFAIL + 1
+      END IF
       CALL GCLKS
       IF (NFAIL .EQ. 0) WRITE (*, '(A)') 'ALL OK'
       END

@@ -8,6 +8,8 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 static Gint last_err;
@@ -151,12 +153,71 @@ static void test_asf(void **state)
     gclose_gks();
 }
 
+/* NCAR's escapes with NCAR's record (escape_r1), as c_fgke03 and c_test12 pass it. */
+static void ncar_escape(Gint id, const char *rec)
+{
+    Gescape_in_data in;
+    char buf[80];
+    strncpy(buf, rec, sizeof buf);
+    in.escape_r1.data = buf;
+    in.escape_r1.size = strlen(rec);
+    gescape(id, &in, NULL, NULL);
+}
+
+static void test_ncar_escapes(void **state)
+{
+    (void)state;
+    open_with(NULL, NULL);
+    unlink("t_meta01.png");
+    unlink("t_meta02.png");
+    unlink("gks.png");
+    ncar_escape(GESC_NCAR_FILE_NAME, "t_meta01   "); /* blank filled, as NCAR's */
+    assert_int_equal(last_err, 0);
+    gopen_ws(1, NULL, GWS_TYPE_PNG);
+    gactivate_ws(1);
+    ncar_escape(GESC_NCAR_PAUSE, "    1");
+    assert_int_equal(last_err, 0);
+    ncar_escape(GESC_NCAR_PAUSE, "    2"); /* not open */
+    assert_int_equal(last_err, 182);
+    last_err = 0;
+    ncar_escape(GESC_NCAR_PAUSE, "1x");
+    assert_int_equal(last_err, 182);
+    last_err = 0;
+    ncar_escape(GESC_NCAR_FILE_NAME, "   ");
+    assert_int_equal(last_err, 182);
+    last_err = 0;
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    assert_int_equal(access("t_meta01.png", F_OK), 0);
+    ncar_escape(GESC_NCAR_FILE_NAME, "t_meta02");
+    gopen_ws(1, NULL, GWS_TYPE_PNG);
+    gclose_ws(1);
+    /* the name is used up: the next workstation gets its own default again */
+    gopen_ws(1, NULL, GWS_TYPE_PNG);
+    gclose_ws(1);
+    assert_int_equal(last_err, 0);
+    assert_int_equal(access("t_meta02.png", F_OK), 0);
+    assert_int_equal(access("gks.png", F_OK), 0);
+    /* a name left at CLOSE GKS is dropped at the next OPEN GKS */
+    ncar_escape(GESC_NCAR_FILE_NAME, "t_meta03");
+    gclose_gks();
+    open_with(NULL, NULL);
+    gopen_ws(1, NULL, GWS_TYPE_PNG);
+    gclose_ws(1);
+    assert_int_equal(access("t_meta03.png", F_OK), -1);
+    gclose_gks();
+    unlink("t_meta01.png");
+    unlink("t_meta02.png");
+    unlink("gks.png");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_map),
         cmocka_unit_test(test_malformed),
         cmocka_unit_test(test_asf),
+        cmocka_unit_test(test_ncar_escapes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

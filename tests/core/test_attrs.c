@@ -339,8 +339,9 @@ static void test_description_tables(void **state)
     Gtext_facs tf = { .num_font_precs = 8, .font_precs = fp };
     ginq_text_facs(GWS_TYPE_PNG, 8, 0, &e, &tf, &len);
     assert_int_equal(e, 0);
-    assert_int_equal(len, 3);
+    assert_int_equal(len, 9); /* font 1 in 3 precisions, 6 derived faces in STROKE */
     assert_true(fp[2].font == 1 && fp[2].prec == GPREC_STROKE);
+    assert_true(fp[3].font == -101 && fp[5].font == -104 && fp[7].font == -106);
     Gint hs[16];
     Gfill_facs ff = { .hatch_styles = { 0, hs } };
     Gint lh;
@@ -638,6 +639,66 @@ static void test_text_extent(void **state)
     assert_int_equal(e, 2000);
 }
 
+/* The derived stroke faces (RAL GKS's numbers): accepted in bundles, realized, measured
+ * and drawn with strokes of their own; other negative numbers still report 76. */
+static int n_strokes_of(const char *s)
+{
+    cap.n = 0;
+    gtext(&(Gpoint){ 0.1, 0.5 }, s);
+    expect_no_error();
+    return cap.n;
+}
+
+static void test_derived_fonts(void **state)
+{
+    (void)state;
+    static const int faces[] = { -101, -102, -104, -105, -106, -107 };
+    for (int i = 0; i < 6; i++) {
+        gset_text_rep(1, 2, &(Gtext_bundle){ { faces[i], GPREC_STROKE }, 1.0, 0.0, 1 });
+        expect_no_error();
+        Gint e;
+        Gtext_bundle r;
+        ginq_text_rep(1, 2, GINQ_REALIZED, &e, &r);
+        assert_true(e == 0 && r.text_font_prec.font == faces[i]);
+    }
+    gset_text_rep(1, 3, &(Gtext_bundle){ { -103, GPREC_STROKE }, 1.0, 0.0, 1 });
+    expect_error(76, GFN_STXR);
+    /* STRING precision of a derived face is available too (drawn as STROKE). */
+    gset_text_rep(1, 3, &(Gtext_bundle){ { -104, GPREC_STRING }, 1.0, 0.0, 1 });
+    expect_no_error();
+
+    gset_char_ht(0.1);
+    Gtext_extent plain, bold, serif, italic;
+    extent("HIH", &plain);
+    int n_plain = n_strokes_of("HIH"); /* H: 3 strokes, I: 1 */
+    assert_int_equal(n_plain, 7);
+    gset_text_font_prec(&(Gtext_font_prec){ -101, GPREC_STROKE });
+    assert_int_equal(n_strokes_of("HIH"), 7);
+    gset_text_font_prec(&(Gtext_font_prec){ -102, GPREC_STROKE });
+    extent("HIH", &bold);
+    assert_int_equal(n_strokes_of("HIH"), 21); /* each stroke three times */
+    /* bold advances are 1 font unit (0.1 / 21) wider per character */
+    double wp = plain.paral[1].x - plain.paral[0].x, wb = bold.paral[1].x - bold.paral[0].x;
+    assert_true(fabs(wb - (wp + 3 * 0.1 / 21.0)) < 1e-12);
+    gset_text_font_prec(&(Gtext_font_prec){ -104, GPREC_STROKE });
+    extent("HIH", &serif);
+    /* serifs at the 4 free stem ends of each H and the 2 of I */
+    assert_int_equal(n_strokes_of("HIH"), 7 + 10);
+    assert_true(fabs((serif.paral[1].x - serif.paral[0].x) - wp) < 1e-12);
+    gset_text_font_prec(&(Gtext_font_prec){ -105, GPREC_STROKE });
+    extent("HIH", &italic);
+    assert_int_equal(n_strokes_of("HIH"), 17);
+    assert_true(fabs((italic.paral[1].x - italic.paral[0].x) - wp) < 1e-12);
+    gset_text_font_prec(&(Gtext_font_prec){ -106, GPREC_STROKE });
+    assert_int_equal(n_strokes_of("HIH"), 51);
+    /* an unsupported font falls back to font 1 (ISO 7942 4.4.5) */
+    gset_text_font_prec(&(Gtext_font_prec){ -103, GPREC_STROKE });
+    expect_no_error();
+    assert_int_equal(n_strokes_of("HIH"), 7);
+    extent("HIH", &italic);
+    assert_true(fabs((italic.paral[1].x - italic.paral[0].x) - wp) < 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -649,6 +710,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_asf_resolution_at_driver, setup, teardown),
         cmocka_unit_test_setup_teardown(test_asf_in_pixels, setup, teardown),
         cmocka_unit_test_setup_teardown(test_text_extent, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_derived_fonts, setup, teardown),
     };
     int r = cmocka_run_group_tests(tests, NULL, NULL);
     cap_free();

@@ -111,6 +111,35 @@ static void test_frames_and_names(void **u)
     unlink("t_renamed-003.png");
 }
 
+/* Several workstations without a connection identifier: the first writes gks.png, each
+ * further one gks-wsW.png (W its identifier) while gks.png is taken, so none gets 21. */
+static void test_default_names(void **u)
+{
+    (void)u;
+    reset_gks();
+    const char *files[] = { "gks.png", "gks-ws2.png", "gks-ws7.png", "gks-ws3.png" };
+    for (int i = 0; i < 4; i++)
+        unlink(files[i]);
+    gopen_gks(NULL, 0);
+    gopen_ws(1, NULL, GWS_TYPE_PNG);
+    gopen_ws(2, "", GWS_TYPE_PNG);
+    gopen_ws(7, NULL, GWS_TYPE_PNG);
+    assert_int_equal(n_captured, 0);
+    gclose_ws(2);
+    gclose_ws(7);
+    gclose_ws(1);
+    /* alone again, a workstation without identifier gets gks.png as before */
+    gopen_ws(3, NULL, GWS_TYPE_PNG);
+    gclose_ws(3);
+    gclose_gks();
+    assert_int_equal(n_captured, 0);
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(access(files[i], F_OK), 0);
+        unlink(files[i]);
+    }
+    assert_int_equal(access(files[3], F_OK), -1);
+}
+
 static void test_unwritable_file(void **u)
 {
     (void)u;
@@ -251,6 +280,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fill_and_clip),
         cmocka_unit_test(test_frames_and_names),
+        cmocka_unit_test(test_default_names),
         cmocka_unit_test(test_unwritable_file),
         cmocka_unit_test(test_zbuffer_interpenetrating),
         cmocka_unit_test(test_view_representation),

@@ -162,7 +162,7 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQPLF nppli', NPP, 5, NFAIL)
       CALL GQTXF(GWSPNG, 3, ERR, N, FONT, PREC, NCHH, X, Y, NCHX, R1,
      +           R2, NPP)
-      CALL CHKI('GQTXF n', N, 3, NFAIL)
+      CALL CHKI('GQTXF n', N, 9, NFAIL)
       CALL CHKI('GQTXF prec', PREC, GSTRKP, NFAIL)
       CALL GQFAF(GWSPNG, 2, 12, ERR, NIS, IS, NHS, HS, NPP)
       CALL CHKI('GQFAF err', ERR, 0, NFAIL)
@@ -220,6 +220,28 @@ C     SPDX-License-Identifier: MIT
          WRITE (*, '(A)') 'GQTXXS: extent of A not narrower than AB'
          NFAIL = NFAIL + 1
       END IF
+!     Derived stroke fonts (RAL GKS's numbers, docs/WORKSTATIONS.md):
+!     bundles accept -104..-106, -103 reports 76; the bold -102 is one
+!     font unit (1/21 of the height) wider per character ('AB  ': 4).
+      LASTER = 0
+      CALL GSTXR(1, 4, -104, GSTRKP, 1.0, 0.0, 1)
+      CALL GSTXR(1, 5, -105, GSTRKP, 1.0, 0.0, 1)
+      CALL GSTXR(1, 6, -106, GSTRKP, 1.0, 0.0, 1)
+      CALL CHKI('GSTXR -104..-106', LASTER, 0, NFAIL)
+      CALL GSTXR(1, 6, -103, GSTRKP, 1.0, 0.0, 1)
+      CALL CHKI('GSTXR -103', LASTER, 76, NFAIL)
+      CALL GQTXR(1, 5, GREALI, ERR, FONT, PREC, X, Y, I)
+      CALL CHKI('GQTXR -105', FONT, -105, NFAIL)
+      CALL GQTXF(GWSPNG, 9, ERR, N, FONT, PREC, NCHH, X, Y, NCHX, R1,
+     +           R2, NPP)
+      CALL CHKI('GQTXF 9th', FONT, -107, NFAIL)
+      CALL GQCHH(ERR, R3)
+      CALL GQTXX(1, 0.2, 0.3, 'AB  ', ERR, CPX, CPY, TX, TY)
+      R1 = TX(2) - TX(1)
+      CALL GSTXFP(-102, GSTRKP)
+      CALL GQTXX(1, 0.2, 0.3, 'AB  ', ERR, CPX, CPY, TX, TY)
+      CALL CHKR('GQTXX bold', TX(2) - TX(1), R1 + 4.0 * R3 / 21.0,
+     +          NFAIL)
       CALL GDAWK(1)
       CALL GCLWK(1)
       CALL GCLKS

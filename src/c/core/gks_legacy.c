@@ -2,9 +2,11 @@
 /*
  * gks_legacy.c -- GKS3D_WS_TYPES and GKS3D_ASF (gks_legacy.h). The variables are parsed
  * once per OPEN GKS into this module's table; all or nothing, so a typo never maps half a
- * program's types.
+ * program's types. NCAR's escapes -1391 and -1396 (gks_legacy_escape).
  */
 #include "gks_legacy.h"
+#include "gks_alloc.h"
+#include "gks_ws.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -18,7 +20,8 @@ static struct {
     int n;
     int from[MAP_MAX], to[MAP_MAX];
     Gasf asf;
-} legacy = { 0, { 0 }, { 0 }, GASF_INDIV };
+    char *next_file; /* GESC_NCAR_FILE_NAME: the next file workstation's name */
+} legacy = { 0, { 0 }, { 0 }, GASF_INDIV, NULL };
 
 /* One decimal integer at *s (leading blanks allowed), advancing *s; 0 = ok. */
 static int parse_num(const char **s, int *out)
@@ -71,6 +74,8 @@ static int parse_map(const char *s)
 
 void gks_legacy_load(void)
 {
+    gks_free(legacy.next_file);
+    legacy.next_file = NULL;
     legacy.n = 0;
     legacy.asf = GASF_INDIV;
     const char *m = getenv("GKS3D_WS_TYPES");
@@ -99,4 +104,54 @@ int gks_ws_type_map(int ws_type)
 Gasf gks_legacy_asf(void)
 {
     return legacy.asf;
+}
+
+/* NCAR's record: escape_r1.size characters at escape_r1.data, to the first NUL, trailing
+ * blanks dropped; NULL if empty or absent (or on storage overflow: *nomem set). */
+static char *ncar_record(const Gescape_in_data *in, int *nomem)
+{
+    *nomem = 0;
+    if (!in || !in->escape_r1.data)
+        return NULL;
+    const char *d = in->escape_r1.data;
+    size_t n = strnlen(d, in->escape_r1.size);
+    while (n > 0 && (d[n - 1] == ' ' || d[n - 1] == '\t'))
+        n--;
+    size_t lead = 0;
+    while (lead < n && (d[lead] == ' ' || d[lead] == '\t'))
+        lead++;
+    if (lead == n)
+        return NULL;
+    char *s = gks_strndup(d + lead, n - lead);
+    *nomem = s == NULL;
+    return s;
+}
+
+int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, gks_ws **pause_ws)
+{
+    *pause_ws = NULL;
+    int nomem;
+    char *rec = ncar_record(in, &nomem);
+    if (!rec)
+        return nomem ? 300 : 182;
+    if (func_id == GESC_NCAR_FILE_NAME) {
+        gks_free(legacy.next_file);
+        legacy.next_file = rec;
+        return 0;
+    }
+    int id;
+    const char *p = rec;
+    if (parse_num(&p, &id) == 0 && *p == '\0')
+        *pause_ws = gks_ws_lookup(id);
+    gks_free(rec);
+    return *pause_ws ? 0 : 182;
+}
+
+char *gks_legacy_take_file_name(int writes_file)
+{
+    if (!writes_file || !legacy.next_file)
+        return NULL;
+    char *s = legacy.next_file;
+    legacy.next_file = NULL;
+    return s;
 }

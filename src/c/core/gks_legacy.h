@@ -3,6 +3,7 @@
  * gks_legacy.h -- the configuration switches for unchanged legacy programs (README,
  * "Legacy programs"): GKS3D_WS_TYPES maps foreign workstation type numbers to ours,
  * GKS3D_ASF sets the initial aspect source flags. Both are read at OPEN GKS.
+ * Also NCAR GKS's escapes -1391 (file name of the next workstation) and -1396 (pause).
  */
 #ifndef GKS_LEGACY_H
 #define GKS_LEGACY_H
@@ -18,5 +19,18 @@ int gks_ws_type_map(int ws_type);
 
 /* The initial value of every aspect source flag (GKS3D_ASF; default INDIVIDUAL). */
 Gasf gks_legacy_asf(void);
+
+/* ESCAPE GESC_NCAR_FILE_NAME / GESC_NCAR_PAUSE (gks.h) with NCAR's record in
+ * in->escape_r1: 0, or the error to report (182: record empty or absent, or naming no
+ * open workstation; 300). The name is kept until the next OPEN WORKSTATION of a file
+ * workstation (or OPEN GKS). For the pause, *pause_ws = the workstation named (the
+ * caller updates it), else NULL. */
+struct gks_ws;
+int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, struct gks_ws **pause_ws);
+
+/* At OPEN WORKSTATION: the name a GESC_NCAR_FILE_NAME escape left, for a workstation that
+ * writes a file (writes_file != 0), else NULL. The caller owns (gks_free) the string,
+ * and the name is then used up. */
+char *gks_legacy_take_file_name(int writes_file);
 
 #endif

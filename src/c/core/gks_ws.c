@@ -76,7 +76,8 @@ static int init_bundles(gks_ws *ws, const gks_wdt_output *t)
 }
 
 static int file_claim(gks_ws *ws, const char *path);
-const gks_ws_host gks_ws_core_host = { .file_claim = file_claim };
+static int file_taken(const gks_ws *ws, const char *path);
+const gks_ws_host gks_ws_core_host = { .file_claim = file_claim, .file_taken = file_taken };
 
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
 {
@@ -225,6 +226,16 @@ int gks_ws_file_check(gks_ws *ws)
     }
     ws->file = canon;
     return 0;
+}
+
+/* gks_ws_host.file_taken */
+static int file_taken(const gks_ws *ws, const char *path)
+{
+    int err;
+    char *canon = usable_file(path, 1, &err);
+    int taken = canon && file_in_use(ws, canon);
+    gks_free(canon);
+    return taken;
 }
 
 /* gks_ws_host.file_claim */

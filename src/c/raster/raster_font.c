@@ -4,8 +4,10 @@
  * for this library on an integer grid (cap height 21, x-height 14, base line 0,
  * descender -7, brackets up to 25). Each glyph is its advance width and a string of
  * polylines: points "x,y" separated by blanks, polylines separated by '|'.
+ * The bold, seriffed and italic faces (raster.h) are computed from these glyphs.
  */
 #include "raster.h"
+#include <math.h>
 #include <string.h>
 
 typedef struct glyph_def {
@@ -212,5 +214,129 @@ int gks_raster_font_glyph(int ch, gks_raster_glyph *g)
         g->n_points++;
         g->stroke_len[g->n_strokes - 1]++;
     }
+    return rc;
+}
+
+/* ---- derived faces ---------------------------------------------------------------- */
+typedef struct face {
+    int font;
+    unsigned char serif, bold, italic;
+} face;
+
+static const face faces[] = {
+    { 1, 0, 0, 0 },    { -101, 0, 0, 0 }, { -102, 0, 1, 0 }, { -104, 1, 0, 0 },
+    { -105, 1, 0, 1 }, { -106, 1, 1, 0 }, { -107, 1, 1, 1 },
+};
+#define N_FACES ((int)(sizeof faces / sizeof faces[0]))
+#define BOLD_OFFSET 1.0  /* second stroke, font units to the right */
+#define SERIF_HALF 2.0   /* half width of a serif */
+#define ITALIC_SHEAR 0.2 /* x += shear * y */
+
+static const face *face_of(int font)
+{
+    for (int i = 0; i < N_FACES; i++)
+        if (faces[i].font == font)
+            return &faces[i];
+    return NULL;
+}
+
+int gks_raster_font_has(int font)
+{
+    return face_of(font) != NULL;
+}
+
+void gks_raster_font_face_metrics(int font, gks_raster_font_metrics *m)
+{
+    gks_raster_font_metrics_get(m);
+    const face *f = face_of(font);
+    if (m && f && f->bold)
+        m->max_advance += BOLD_OFFSET;
+}
+
+/* Append a polyline of n points (xy pairs) to g; 0 if it does not fit. */
+static int add_stroke(gks_raster_glyph *g, int n, const double *xy)
+{
+    if (g->n_strokes == GKS_RASTER_GLYPH_MAX_STROKES ||
+        g->n_points + n > GKS_RASTER_GLYPH_MAX_POINTS)
+        return 0;
+    memcpy(&g->xy[2 * g->n_points], xy, sizeof(double) * 2 * (size_t)n);
+    g->stroke_len[g->n_strokes++] = n;
+    g->n_points += n;
+    return 1;
+}
+
+/* Whether (x, y), end point e of a stroke, is also another end point of the glyph's first
+ * n strokes (a junction, or the closing point of a loop): no serif there. */
+static int joins(const gks_raster_glyph *g, const int *first, int n, int e, double x,
+                 double y)
+{
+    for (int t = 0; t < n; t++) {
+        int ends[2] = { first[t], first[t] + g->stroke_len[t] - 1 };
+        for (int k = 0; k < 2; k++)
+            if (ends[k] != e && g->xy[2 * ends[k]] == x && g->xy[2 * ends[k] + 1] == y)
+                return 1;
+    }
+    return 0;
+}
+
+/* Serifs at the free ends of steep strokes on the base, x-height, cap or descender line. */
+static void add_serifs(gks_raster_glyph *g)
+{
+    static const double lines[] = { 0.0, 14.0, 21.0, -7.0 };
+    int first[GKS_RASTER_GLYPH_MAX_STROKES];
+    int n_orig = g->n_strokes;
+    for (int s = 0, off = 0; s < n_orig; s++) {
+        first[s] = off;
+        off += g->stroke_len[s];
+    }
+    for (int s = 0; s < n_orig; s++) {
+        int len = g->stroke_len[s];
+        if (len < 2)
+            continue;
+        for (int k = 0; k < 2; k++) {
+            int e = k == 0 ? first[s] : first[s] + len - 1;
+            int nb = k == 0 ? e + 1 : e - 1;
+            double x = g->xy[2 * e], y = g->xy[2 * e + 1];
+            double dx = fabs(x - g->xy[2 * nb]), dy = fabs(y - g->xy[2 * nb + 1]);
+            int on_line = 0;
+            for (int i = 0; i < 4; i++)
+                on_line |= y == lines[i];
+            if (!on_line || dy == 0 || dy < 2 * dx || joins(g, first, n_orig, e, x, y))
+                continue;
+            double x0 = fmax(0.0, x - SERIF_HALF), x1 = fmin(g->advance, x + SERIF_HALF);
+            if (x1 > x0)
+                add_stroke(g, 2, (const double[4]){ x0, y, x1, y });
+        }
+    }
+}
+
+int gks_raster_font_face_glyph(int font, int ch, gks_raster_glyph *g)
+{
+    if (!g)
+        return GKS_RASTER_E_ARG;
+    int rc = gks_raster_font_glyph(ch, g);
+    const face *f = face_of(font);
+    if (!f)
+        return GKS_RASTER_E_ARG;
+    if (f->serif)
+        add_serifs(g);
+    if (f->bold) { /* copies at BOLD_OFFSET / 2 and BOLD_OFFSET to the right */
+        int n_orig = g->n_strokes;
+        for (int c = 1; c <= 2; c++)
+            for (int s = 0, off = 0; s < n_orig; s++) {
+                double xy[2 * GKS_RASTER_GLYPH_MAX_POINTS];
+                int len = g->stroke_len[s];
+                for (int j = 0; j < len; j++) {
+                    xy[2 * j] = g->xy[2 * (off + j)] + 0.5 * c * BOLD_OFFSET;
+                    xy[2 * j + 1] = g->xy[2 * (off + j) + 1];
+                }
+                add_stroke(g, len, xy);
+                off += len;
+            }
+        g->advance += BOLD_OFFSET;
+    }
+    if (f->italic)
+        for (int j = 0; j < g->n_points; j++)
+            g->xy[2 * j] += ITALIC_SHEAR * g->xy[2 * j + 1];
     return rc;
 }

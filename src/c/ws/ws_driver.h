@@ -37,6 +37,8 @@ static inline void gks_limit3_array(const Glimit3 *l, double b[6])
  * (nothing is written), 26 if it is not a regular file or cannot be created, 300. */
 typedef struct gks_ws_host {
     int (*file_claim)(gks_ws *ws, const char *path);
+    /* 1 if another open workstation writes (or wrote, in this opening) the file path. */
+    int (*file_taken)(const gks_ws *ws, const char *path);
 } gks_ws_host;
 
 /* Workstation description table (ISO 7942 6.2): constant per workstation type. */
@@ -260,6 +262,11 @@ extern const gks_ws_driver gks_ws_eps_driver;
 static inline int gks_ws_file_claim(gks_ws *ws, const char *path)
 {
     return ws->host->file_claim(ws, path);
+}
+/* gks_ws_host.file_taken of ws's core. */
+static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
+{
+    return ws->host->file_taken(ws, path);
 }
 /* ESCAPE "set file name": the base name name[0..len) replaces *base (gks_alloc'd) when the
  * file of its frame `frame` (extension ext) can be claimed as above; 0, 21, 26 or 300, and

@@ -3,14 +3,17 @@
  * ws_wdt.c -- the output facilities and predefined bundles of the raster workstations.
  * The raster module draws linetypes 1..4, marker types 1..5, hatch styles -1..-12,
  * patterns and solid/hollow interiors; text is stroked in the core with the compiled-in
- * simplex font (font 1), so every precision of font 1 is available.
+ * simplex font (font 1) and the faces derived from it (RAL GKS's numbers -101, -102,
+ * -104 .. -107, src/c/raster/raster.h), so every precision of each is available.
  */
 #include "ws_wdt.h"
 
 static const int linetypes[] = { 1, 2, 3, 4 };
 static const int markertypes[] = { 1, 2, 3, 4, 5 };
 static const Gtext_font_prec font_precs[] = {
-    { 1, GPREC_STRING }, { 1, GPREC_CHAR }, { 1, GPREC_STROKE },
+    { 1, GPREC_STRING },     { 1, GPREC_CHAR },       { 1, GPREC_STROKE },
+    { -101, GPREC_STROKE },  { -102, GPREC_STROKE },  { -104, GPREC_STROKE },
+    { -105, GPREC_STROKE },  { -106, GPREC_STROKE },  { -107, GPREC_STROKE },
 };
 static const int int_styles[] = { GSTYLE_HOLLOW, GSTYLE_SOLID, GSTYLE_PAT, GSTYLE_HATCH };
 static const int hatch_styles[] = { -1, -2, -3, -4, -5, -6, -7, -8, -9, -10, -11, -12 };

@@ -141,7 +141,10 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
         GKS_FAIL(42, GFN_OPWK);
     if (drv->desc->cat == GCAT_WISS && gks_wiss())
         GKS_FAIL(28, GFN_OPWK);
-    gks_ws *ws = gks_ws_create(ws_id, conn_id, drv);
+    /* NCAR's ESCAPE -1391 names the next file workstation (gks_legacy.h). */
+    char *ncar_name = gks_legacy_take_file_name(drv->file != NULL);
+    gks_ws *ws = gks_ws_create(ws_id, ncar_name ? ncar_name : conn_id, drv);
+    gks_free(ncar_name);
     if (!ws)
         GKS_FAIL(300, GFN_OPWK);
     int err = gks_ws_file_check(ws);
@@ -346,6 +349,17 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
     if (func_id == GESC_INPUT_SCRIPT) { /* the core's: input devices are the core's */
         gks_ws *iws = in && in->num_ints >= 1 && in->ints ? gks_ws_lookup(in->ints[0]) : NULL;
         int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0) : 182;
+        if (e)
+            GKS_FAIL(e, GFN_ESC);
+        return;
+    }
+    if (func_id == GESC_NCAR_FILE_NAME || func_id == GESC_NCAR_PAUSE) { /* gks_legacy.h */
+        gks_ws *pws;
+        int e = gks_legacy_escape(func_id, in, &pws);
+        if (!e && pws) /* NCAR's pause: UPDATE WORKSTATION (PERFORM), nobody to wait for */
+            e = pws->new_frame == GNEW_YES ? gks_ws_regenerate(pws) : 0;
+        if (!e && pws && pws->drv->update)
+            e = pws->drv->update(pws);
         if (e)
             GKS_FAIL(e, GFN_ESC);
         return;

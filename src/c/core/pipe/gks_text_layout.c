@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_text_layout.c -- TEXT (3) layout with the compiled-in stroke font.
+ * gks_text_layout.c -- TEXT (3) layout with the compiled-in stroke fonts (the font of
+ * gks_text_attrs: font 1 or a face derived from it, src/c/raster/raster.h).
  *
  * Geometry (ISO 7942 5.4.4, applied in the text plane): the character height is the
  * font's cap height; k = char_ht / cap converts font units. Within the plane, u is the
@@ -64,14 +65,15 @@ typedef struct {
     double ref[2];          /* alignment point */
     double adv_total;       /* extent length along the path + gap (concatenation) */
     size_t n;
+    int font;               /* the face drawn */
     gks_raster_font_metrics m;
     double b[2], u[2];      /* base and up unit vectors in the plane */
 } layout;
 
-static double advance_of(int ch)
+static double advance_of(int font, int ch)
 {
     gks_raster_glyph g;
-    gks_raster_font_glyph(ch, &g);
+    gks_raster_font_face_glyph(font, ch, &g);
     return g.advance;
 }
 
@@ -83,7 +85,8 @@ static int layout_init(const gks_text_attrs *a, const char *s, layout *L)
     if (!(ul > 0) || !isfinite(ul) || !(a->char_ht > 0) || !isfinite(a->char_ht) ||
         !(a->char_expan > 0) || !isfinite(a->char_expan) || !isfinite(a->char_space))
         return -1;
-    gks_raster_font_metrics_get(&L->m);
+    L->font = gks_raster_font_has(a->font) ? a->font : 1;
+    gks_raster_font_face_metrics(L->font, &L->m);
     L->u[0] = a->up[0] / ul;
     L->u[1] = a->up[1] / ul;
     L->b[0] = L->u[1];
@@ -100,7 +103,7 @@ static int layout_init(const gks_text_attrs *a, const char *s, layout *L)
     if (horizontal) {
         double w = 0;
         for (size_t i = 0; i < n; i++)
-            w += advance_of((unsigned char)s[i]) * L->kx;
+            w += advance_of(L->font, (unsigned char)s[i]) * L->kx;
         if (n > 1)
             w += (double)(n - 1) * L->gap;
         L->box[0] = 0; L->box[1] = w; L->box[2] = bot; L->box[3] = top;
@@ -185,7 +188,7 @@ int gks_text_strokes(const gks_text_frame *f, const gks_text_attrs *a, const cha
     double pts[GKS_RASTER_GLYPH_MAX_POINTS][3];
     for (size_t i = 0; i < L.n; i++) {
         gks_raster_glyph g;
-        gks_raster_font_glyph((unsigned char)s[i], &g);
+        gks_raster_font_face_glyph(L.font, (unsigned char)s[i], &g);
         double adv = g.advance * L.kx, x0, y0;
         char_origin(a, &L, i, adv, &pen, &x0, &y0);
         int off = 0;

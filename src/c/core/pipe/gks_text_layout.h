@@ -13,7 +13,8 @@
 
 /* Resolved text attributes (after the aspect source flags and the workstation). */
 typedef struct gks_text_attrs {
-    int font;                  /* text font (the stroke font draws every font alike) */
+    int font;                  /* a stroke font of src/c/raster (gks_raster_font_has); any
+                                  other number lays out as font 1 */
     Gtext_prec prec;           /* text precision */
     double char_expan, char_space, char_ht;
     double up[2];              /* character up vector in text-plane coordinates */

@@ -444,11 +444,10 @@ static void markers(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
 
 static const cairo_user_data_key_t vec_face_key;
 
-/* The glyph of ch in the stroke font (every font number draws with it). */
+/* The glyph of ch in stroke font font (raster.h: unknown numbers draw as font 1). */
 static void glyph_of(int font, int ch, gks_raster_glyph *g)
 {
-    (void)font;
-    gks_raster_font_glyph(ch, g);
+    gks_raster_font_face_glyph(font, ch, g);
 }
 
 /* A segment of a stroke as a quadrilateral, counter-clockwise (x right, y up) like

@@ -5,8 +5,9 @@
  * The image of a frame is the current workstation viewport (its size in pixels).
  *
  * File naming (docs/WORKSTATIONS.md): the connection identifier gives a base name B:
- *   ""/NULL -> "gks";  all digits N (a Fortran CONID) -> "gksN";  "path.png" -> "path";
- *   anything else is used as is. Frame 1 is written to B.png, frame k > 1 to B-k.png
+ *   ""/NULL -> "gks", or "gks-wsW" (W = workstation identifier) when another open
+ *   workstation writes gks.png;  all digits N (a Fortran CONID) -> "gksN";
+ *   "path.png" -> "path";  anything else is used as is. Frame 1 is written to B.png, frame k > 1 to B-k.png
  *   (k with at least three digits). ESCAPE GESC_SET_FILE_NAME replaces B.
  * A frame's file is written at UPDATE WORKSTATION, CLEAR WORKSTATION and CLOSE
  * WORKSTATION when it has new content; a workstation closed without any drawing still
@@ -54,10 +55,22 @@ typedef struct png_ws {
     int mpi_frames;     /* MPI run: whole frames to ranks (1) or tiles of each frame (0) */
 } png_ws;
 
+/* The base name B (file naming above). Several workstations opened without a connection
+ * identifier (NCAR's c_test38 opens three) so get files of their own. */
+static char *png_base(const gks_ws *ws)
+{
+    const char *conn = ws->conn_id ? ws->conn_id : "";
+    if (*conn || !gks_ws_file_taken(ws, "gks.png"))
+        return gks_ws_file_base(conn, ".png");
+    char name[32];
+    snprintf(name, sizeof name, "gks-ws%d", ws->id);
+    return gks_strdup(name);
+}
+
 /* The file of frame 1 (later frames are B-k.png beside it). */
 static int png_file(const gks_ws *ws, char **path)
 {
-    char *b = gks_ws_file_base(ws->conn_id ? ws->conn_id : "", ".png");
+    char *b = png_base(ws);
     *path = b ? gks_ws_file_frame(b, 1, ".png") : NULL;
     gks_free(b);
     return *path ? 0 : 300;
@@ -68,7 +81,7 @@ static int png_open(gks_ws *ws)
     png_ws *p = gks_calloc_array(1, sizeof *p);
     if (!p)
         return 300;
-    p->base = gks_ws_file_base(ws->conn_id, ".png");
+    p->base = png_base(ws);
     p->rt = ws_rt_new();
     p->render = ws_png_render_new();
     if (!p->base || !p->rt || !p->render) {
