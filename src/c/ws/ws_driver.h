@@ -67,7 +67,7 @@ typedef struct gks_ws_desc {
  * segment transformation and clipping to the viewport (if on); attributes resolved for this
  * workstation (individual or bundled by the aspect source flags, colour indices turned into
  * colours, unsupported values replaced as the standard says). TEXT reaches drivers as
- * GKS_PRIM_POLYLINE strokes (text = 1); FILL AREA SET as GKS_PRIM_FILL_AREA with n_loops >= 1
+ * GKS_PRIM_POLYLINE strokes (text = 1) unless the driver's text entry takes it; FILL AREA SET as GKS_PRIM_FILL_AREA with n_loops >= 1
  * and the edge attributes; markers as their clip-surviving centres. */
 typedef enum {
     GKS_PRIM_POLYLINE, GKS_PRIM_FILL_AREA, GKS_PRIM_POLYMARKER, GKS_PRIM_CELL_ARRAY
@@ -127,6 +127,30 @@ typedef struct gks_prim {
     Gvec3 fnormal;
     int shading[2];           /* front, back interior shading method, GSHAD_* (1..3) */
 } gks_prim;
+
+/* TEXT (3) as text, for a driver that draws the characters itself (the optional entry
+ * `text` of gks_ws_driver). The layout types are gks_text_layout.h's (core/pipe): attrs
+ * are resolved for this workstation (font and precision, height, up vector, path,
+ * alignment, expansion factor, spacing), frame is the text plane in source coordinates
+ * (WC3), m maps them to NDC3 (normalization, then the segment transformation), and the
+ * clipping volume box (NDC3) applies when clip_on; the strokes the core would send are
+ * those of gks_text_strokes(frame, attrs, str) through m, clipped at box. */
+typedef struct gks_text_prim {
+    const char *str;                     /* printable ISO 646, not empty */
+    const struct gks_text_frame *frame;
+    const struct gks_text_attrs *attrs;
+    double m[3][4];
+    int clip_on;
+    double clip_box[6];
+    Grgb colour;                         /* text colour */
+    int hlhsr_id, pick_id, view_ind;
+} gks_text_prim;
+
+/* Results of the driver entry text besides 0 (drawn) and GKS error numbers. */
+enum {
+    GKS_WS_TEXT_STROKE = -1,  /* not drawn: the core sends the strokes (the default) */
+    GKS_WS_TEXT_CLIPPED = -2  /* nothing visible: clipped away or degenerate */
+};
 
 /* Workstation state list (ISO 7942 6.6): owned by the core, created at OPEN WORKSTATION. */
 struct gks_ws {
@@ -192,6 +216,9 @@ struct gks_ws_driver {
     /* Make the picture current: e.g. write the frame's file. */
     int (*update)(gks_ws *ws);
     int (*primitive)(gks_ws *ws, const gks_prim *prim);
+    /* TEXT (3) unstroked (gks_text_prim): 0, GKS_WS_TEXT_STROKE, GKS_WS_TEXT_CLIPPED or an
+     * error number. NULL: every TEXT reaches primitive as its strokes. */
+    int (*text)(gks_ws *ws, const gks_text_prim *t);
     int (*message)(gks_ws *ws, const char *msg);
     /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
     int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);

@@ -536,6 +536,7 @@ void gks_attr_text_layout(const gks_ws *ws, const gks_cur_attrs *a, gks_text_att
     Gtext_bundle tb;
     gks_attr_text(ws, a, &tb);
     out->font = tb.text_font_prec.font;
+    out->prec = tb.text_font_prec.prec;
     out->char_expan = tb.char_expan;
     out->char_space = tb.char_space;
     out->char_ht = a->char_ht;

@@ -573,6 +573,20 @@ static int emit_text(const norm_ctx *nc, const double pos[3], const double d0[3]
         p.attrs.text = 1;
         p.attrs.hlhsr_id = t->a->hlhsr_id;
         p.attrs.pick_id = t->a->pick_id;
+        if (ws->drv->text) { /* the driver draws the characters, or declines */
+            gks_text_prim tp = { .str = str, .frame = &f, .attrs = &ta, .clip_on = nc->clip_on,
+                                 .colour = p.colour, .hlhsr_id = p.attrs.hlhsr_id,
+                                 .pick_id = p.attrs.pick_id, .view_ind = p.view_ind };
+            memcpy(tp.m, nc->m, sizeof tp.m);
+            memcpy(tp.clip_box, nc->box, sizeof tp.clip_box);
+            int r = ws->drv->text(ws, &tp);
+            if (r == 0)
+                ws->disp_empty = GDISP_NOT_EMPTY;
+            if (r != GKS_WS_TEXT_STROKE) {
+                err = r == GKS_WS_TEXT_CLIPPED ? 0 : r;
+                continue;
+            }
+        }
         b.n = b.np = 0;
         stroke_ctx sc = { nc, &b };
         err = gks_text_strokes(&f, &ta, str, stroke_emit, &sc);

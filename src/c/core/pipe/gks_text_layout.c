@@ -210,6 +210,32 @@ int gks_text_strokes(const gks_text_frame *f, const gks_text_attrs *a, const cha
     return 0;
 }
 
+int gks_text_place(const gks_text_frame *f, const gks_text_attrs *a, const char *s,
+                   gks_text_place_fn place, void *ctx)
+{
+    layout L;
+    if (!s || layout_init(a, s, &L))
+        return 0;
+    double pen = a->path == GPATH_LEFT ? L.box[1] : 0, o[3], ox[3], oy[3], ux[3], uy[3];
+    to_wc(f, &L, L.ref[0], L.ref[1], o); /* the plane's origin: the text position */
+    to_wc(f, &L, L.ref[0] + L.kx, L.ref[1], ox);
+    to_wc(f, &L, L.ref[0], L.ref[1] + L.k, oy);
+    for (int i = 0; i < 3; i++) {
+        ux[i] = ox[i] - o[i];
+        uy[i] = oy[i] - o[i];
+    }
+    for (size_t i = 0; i < L.n; i++) {
+        int ch = (unsigned char)s[i];
+        double x0, y0, org[3];
+        char_origin(a, &L, i, advance_of(ch) * L.kx, &pen, &x0, &y0);
+        to_wc(f, &L, x0, y0, org);
+        int r = place(ctx, ch, org, ux, uy);
+        if (r)
+            return r;
+    }
+    return 0;
+}
+
 void gks_text_extent(const gks_text_frame *f, const gks_text_attrs *a, const char *s,
                      double corners[4][3], double concat[3])
 {

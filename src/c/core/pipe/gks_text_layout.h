@@ -15,6 +15,7 @@
 typedef struct gks_text_attrs {
     int font;                  /* a stroke font of src/c/raster (gks_raster_font_has); any
                                   other number lays out as font 1 */
+    Gtext_prec prec;           /* text precision */
     double char_expan, char_space, char_ht;
     double up[2];              /* character up vector in text-plane coordinates */
     Gtext_path path;
@@ -43,6 +44,19 @@ int gks_text_frame3(const double pos[3], const double d0[3], const double d1[3],
  * Nothing is emitted if the attributes are degenerate (zero up vector, height <= 0). */
 int gks_text_strokes(const gks_text_frame *f, const gks_text_attrs *a, const char *s,
                      gks_text_emit emit, void *ctx);
+
+/* Called for each character of a string laid out as gks_text_strokes lays it out: ch, the
+ * WC3 point of the glyph's font-unit origin (0, 0), and the WC3 vectors of one font unit
+ * along the glyph's x (base direction, times the expansion factor) and y (up). The stroke
+ * point (gx, gy) is org + gx * ux + gy * uy (gks_text_strokes computes the same point in
+ * another order, so equal to rounding). A non-zero return stops the layout. */
+typedef int (*gks_text_place_fn)(void *ctx, int ch, const double org[3], const double ux[3],
+                                 const double uy[3]);
+
+/* Call place for each character of s (checked with gks_text_check); 0 or place's value.
+ * Nothing is called if the attributes are degenerate (as gks_text_strokes). */
+int gks_text_place(const gks_text_frame *f, const gks_text_attrs *a, const char *s,
+                   gks_text_place_fn place, void *ctx);
 
 /* Text extent rectangle (corners lower-left, lower-right, upper-right, upper-left in the
  * text's own base/up frame) and concatenation point, in WC3. */

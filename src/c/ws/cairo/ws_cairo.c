@@ -32,6 +32,7 @@
  * equal files.
  */
 #include "gks_alloc.h"
+#include "gks_text_layout.h"
 #include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
@@ -54,6 +55,9 @@
 #define VEC_DATE_PS "Thu Jan  1 00:00:00 1970"
 #define VEC_DPI_MIN 10      /* GESC_VEC_RESOLUTION range */
 #define VEC_DPI_MAX 2400
+#define VEC_EM 32.0         /* stroke-font units per em of the user fonts */
+#define VEC_MAX_FACES 64    /* user font faces (font, expansion factor) per workstation */
+#define VEC_CLIP_MAX 32     /* points of a text's clip polygon */
 
 typedef enum { VEC_PDF, VEC_SVG, VEC_PS, VEC_EPS } vec_format;
 
@@ -78,6 +82,25 @@ typedef struct vec_snap {
     cairo_surface_t *img;  /* the raster part (z-buffer, ray tracing) or NULL */
 } vec_snap;
 
+/* TEXT as text (vec_text): a cairo user font per stroke font and expansion factor draws
+ * each glyph once per size and direction (PDF and PS: a Type 3 font, SVG: a <symbol>),
+ * as the outline of its strokes with the pen of the stroked text; a text is its glyph
+ * positions, the font's direction and size in raster pixels, and a clip polygon. */
+typedef struct vec_face {
+    int font;
+    double expan;
+    cairo_font_face_t *face;
+} vec_face;
+
+typedef struct vec_text {
+    int face;
+    double bx[2], by[2];   /* raster pixels per font unit along the glyph's x (without the
+                              expansion factor) and y (up) */
+    float rgb[3];
+    size_t g0, ng;         /* glyphs (x, y in raster pixels) */
+    size_t c0, nc;         /* clip polygon (raster pixels), nc = 0: none */
+} vec_text;
+
 typedef struct vec_ws {
     vec_format fmt;
     char *base;
@@ -96,6 +119,14 @@ typedef struct vec_ws {
     vec_buf ps;            /* PS: the document's bytes (creation date fixed at CLOSE) */
     int pages;
     int io_error;
+    vec_face faces[VEC_MAX_FACES];
+    int n_faces;
+    vec_text *texts;       /* the frame's texts, ws_png_render_keep_mark ids */
+    size_t n_texts, cap_texts;
+    cairo_glyph_t *glyphs;
+    size_t n_glyphs, cap_glyphs;
+    double (*clip)[2];
+    size_t n_clip, cap_clip;
 } vec_ws;
 
 static double px_per_m(const vec_ws *v)
@@ -406,6 +437,102 @@ static void markers(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
         }
 }
 
+/* --- TEXT as text: the user fonts -------------------------------------------------------- */
+/* The pen of the stroked text: one nominal unit (the PNG workstation's 1-pixel text
+ * strokes), in points. */
+#define VEC_PEN_PT (VEC_UNIT_M * 72.0 / VEC_INCH_M)
+
+static const cairo_user_data_key_t vec_face_key;
+
+/* The glyph of ch in stroke font font (raster.h: unknown numbers draw as font 1). */
+static void glyph_of(int font, int ch, gks_raster_glyph *g)
+{
+    gks_raster_font_face_glyph(font, ch, g);
+}
+
+/* A segment of a stroke as a quadrilateral, counter-clockwise (x right, y up) like
+ * cairo_arc, so that with the winding rule the pieces of a glyph add up. */
+static void pen_quad(cairo_t *cr, double x0, double y0, double x1, double y1, double hw)
+{
+    double dx = x1 - x0, dy = y1 - y0, l = hypot(dx, dy);
+    if (!(l > 0))
+        return;
+    double nx = -dy / l * hw, ny = dx / l * hw;
+    cairo_move_to(cr, x0 - nx, y0 - ny);
+    cairo_line_to(cr, x1 - nx, y1 - ny);
+    cairo_line_to(cr, x1 + nx, y1 + ny);
+    cairo_line_to(cr, x0 + nx, y0 + ny);
+    cairo_close_path(cr);
+}
+
+/* The glyph in em units (glyph space, y down): its strokes filled as the stroked text
+ * draws them (vec_item: solid, butt caps, round joins) with the pen, whose width in em
+ * follows from the scaled font's matrix to the page (points). */
+static cairo_status_t glyph_render(cairo_scaled_font_t *sf, unsigned long glyph, cairo_t *cr,
+                                   cairo_text_extents_t *ext)
+{
+    const vec_face *f = cairo_font_face_get_user_data(cairo_scaled_font_get_font_face(sf),
+                                                      &vec_face_key);
+    if (!f || glyph < 32 || glyph > 126)
+        return CAIRO_STATUS_USER_FONT_ERROR;
+    gks_raster_glyph g;
+    glyph_of(f->font, (int)glyph, &g);
+    cairo_matrix_t fm, ctm;
+    cairo_scaled_font_get_font_matrix(sf, &fm);
+    cairo_scaled_font_get_ctm(sf, &ctm);
+    cairo_matrix_multiply(&fm, &fm, &ctm);
+    double s = sqrt(fabs(fm.xx * fm.yy - fm.xy * fm.yx)); /* points per em */
+    if (!(s > 0) || !isfinite(s))
+        return CAIRO_STATUS_USER_FONT_ERROR;
+    double hw = 0.5 * VEC_PEN_PT / s, ex = f->expan / VEC_EM, ey = -1.0 / VEC_EM;
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    int off = 0;
+    for (int k = 0; k < g.n_strokes && k < GKS_RASTER_GLYPH_MAX_STROKES; k++) {
+        int len = g.stroke_len[k];
+        if (len < 0 || off + len > g.n_points || off + len > GKS_RASTER_GLYPH_MAX_POINTS)
+            break;
+        const double *p = g.xy + 2 * off;
+        for (int j = 0; j + 1 < len && len >= 2; j++)
+            pen_quad(cr, p[2 * j] * ex, p[2 * j + 1] * ey, p[2 * j + 2] * ex,
+                     p[2 * j + 3] * ey, hw);
+        for (int j = 1; j + 1 < len; j++) { /* round joins */
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, p[2 * j] * ex, p[2 * j + 1] * ey, hw, 0, 2 * VEC_PI);
+        }
+        off += len;
+    }
+    cairo_fill(cr);
+    ext->x_advance = g.advance * ex;
+    ext->y_advance = 0;
+    return cairo_status(cr);
+}
+
+/* The face of (font, expan), made at first use; -1 when the table is full. */
+static int face_index(vec_ws *v, int font, double expan)
+{
+    for (int i = 0; i < v->n_faces; i++)
+        if (v->faces[i].font == font && v->faces[i].expan == expan)
+            return i;
+    if (v->n_faces == VEC_MAX_FACES)
+        return -1;
+    vec_face *d = gks_alloc_array(1, sizeof *d);
+    cairo_font_face_t *f = cairo_user_font_face_create();
+    if (!d || cairo_font_face_status(f) != CAIRO_STATUS_SUCCESS) {
+        gks_free(d);
+        cairo_font_face_destroy(f);
+        return -1;
+    }
+    *d = (vec_face){ font, expan, NULL };
+    cairo_user_font_face_set_render_glyph_func(f, glyph_render);
+    if (cairo_font_face_set_user_data(f, &vec_face_key, d, gks_free) != CAIRO_STATUS_SUCCESS) {
+        gks_free(d);
+        cairo_font_face_destroy(f);
+        return -1;
+    }
+    v->faces[v->n_faces] = (vec_face){ font, expan, f };
+    return v->n_faces++;
+}
+
 /* The drawing of a page. Consecutive line items, and consecutive marker items, with equal
  * attributes are drawn as one path with one stroke (dots: one fill): text arrives as one
  * item per stroke of the font and hidden-line output as one item per visible run, and an
@@ -429,6 +556,9 @@ typedef struct vec_draw {
     float rgb[3];
     int linetype, marker_type;
     double width, unit;
+    const vec_ws *v;       /* the texts (WS_ITEM_MARK) */
+    cairo_glyph_t *tmp;    /* a text's glyphs in device space */
+    size_t cap_tmp;
 } vec_draw;
 
 static void vec_flush(vec_draw *d)
@@ -467,6 +597,53 @@ static void vec_group(vec_draw *d, const ws_render_item *it, int linetype, int m
     d->unit = it->unit;
 }
 
+/* Text i of the frame (vec_text) in device space: its glyphs with the font matrix from
+ * em to the page, inside its clip polygon. */
+static int text_draw(vec_draw *d, size_t i)
+{
+    const vec_ws *v = d->v;
+    if (i >= v->n_texts)
+        return 0;
+    const vec_text *t = &v->texts[i];
+    cairo_t *cr = d->cr;
+    double k = d->xf.k, h = d->xf.h, s = VEC_EM * k;
+    if (!d->device) {
+        cairo_identity_matrix(cr);
+        d->device = 1;
+    }
+    if (t->nc) {
+        cairo_save(cr);
+        for (size_t j = 0; j < t->nc; j++) {
+            const double *p = v->clip[t->c0 + j];
+            if (j == 0)
+                cairo_move_to(cr, k * p[0], h - k * p[1]);
+            else
+                cairo_line_to(cr, k * p[0], h - k * p[1]);
+        }
+        cairo_close_path(cr);
+        cairo_clip(cr);
+    }
+    cairo_matrix_t fm;
+    cairo_matrix_init(&fm, s * t->bx[0], -s * t->bx[1], -s * t->by[0], s * t->by[1], 0, 0);
+    cairo_set_font_face(cr, v->faces[t->face].face);
+    cairo_set_font_matrix(cr, &fm);
+    cairo_set_source_rgb(cr, t->rgb[0], t->rgb[1], t->rgb[2]);
+    if (t->ng > d->cap_tmp) {
+        cairo_glyph_t *q = gks_realloc_array(d->tmp, t->ng, sizeof *q);
+        if (!q)
+            return 300;
+        d->tmp = q;
+        d->cap_tmp = t->ng;
+    }
+    const cairo_glyph_t *g = v->glyphs + t->g0;
+    for (size_t j = 0; j < t->ng; j++) /* pixels -> device */
+        d->tmp[j] = (cairo_glyph_t){ g[j].index, k * g[j].x, h - k * g[j].y };
+    cairo_show_glyphs(cr, d->tmp, (int)t->ng);
+    if (t->nc)
+        cairo_restore(cr);
+    return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
+}
+
 static int vec_item(void *ctx, const ws_render_item *it)
 {
     vec_draw *d = ctx;
@@ -484,6 +661,8 @@ static int vec_item(void *ctx, const ws_render_item *it)
         break;
     }
     vec_flush(d);
+    if (it->kind == WS_ITEM_MARK)
+        return text_draw(d, it->mark);
     if (d->device) {
         cairo_set_matrix(cr, &d->pix);
         d->device = 0;
@@ -512,7 +691,13 @@ static int vec_item(void *ctx, const ws_render_item *it)
         cairo_matrix_t m;
         cairo_matrix_init(&m, (u->x - o->x) / it->nx, (u->y - o->y) / it->nx,
                           (w->x - o->x) / it->ny, (w->y - o->y) / it->ny, o->x, o->y);
-        paint_image(cr, it->rgb_list, it->nx, it->ny, &m, CAIRO_EXTEND_PAD);
+        /* PAD keeps the edge cells' colour up to the clipped boundary; cairo 1.16's
+         * PostScript surface pads such an image by an amount that varies from run to run
+         * (plot2d.eps: 2 different files in 8 runs of one binary), so PS and EPS take
+         * the image unpadded (the loops lie inside it: only edge anti-aliasing differs) */
+        paint_image(cr, it->rgb_list, it->nx, it->ny, &m,
+                    d->v->fmt == VEC_PS || d->v->fmt == VEC_EPS ? CAIRO_EXTEND_NONE
+                                                                : CAIRO_EXTEND_PAD);
         break;
     }
     default:
@@ -625,13 +810,19 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
         cairo_fill(cr);
         cairo_pattern_destroy(pat);
     }
-    vec_draw d = { .cr = cr, .xf = { k, s->h_pt } };
+    vec_draw d = { .cr = cr, .xf = { k, s->h_pt }, .v = v };
     cairo_get_matrix(cr, &d.pix);
+    cairo_font_options_t *fo = cairo_font_options_create(); /* glyphs where they are put */
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_set_font_options(cr, fo);
+    cairo_font_options_destroy(fo);
     int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
     vec_flush(&d);
     if (!e)
         e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
     vec_flush(&d);
+    gks_free(d.tmp);
     if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         e = 300;
     return e;
@@ -770,6 +961,7 @@ static int vec_clear(gks_ws *ws)
     ws_rt_reset(v->rt);
     ws_png_render_reset(v->vec);
     ws_png_render_reset(v->ras);
+    v->n_texts = v->n_glyphs = v->n_clip = 0;
     if (v->next_dpi != v->dpi)
         apply_dpi(v);
     gks_raster_fb_free(v->fb);
@@ -804,6 +996,11 @@ static void vec_close(gks_ws *ws)
     ws_rt_free(v->rt);
     ws_png_render_free(v->vec);
     ws_png_render_free(v->ras);
+    for (int i = 0; i < v->n_faces; i++)
+        cairo_font_face_destroy(v->faces[i].face);
+    gks_free(v->texts);
+    gks_free(v->glyphs);
+    gks_free(v->clip);
     gks_free(v->base);
     gks_free(v);
     ws->priv = NULL;
@@ -864,6 +1061,259 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     return gks_ws_file_rename(ws, in->str, in->str_len, fr, vec_ext[v->fmt], &v->base);
 }
 
+/* --- TEXT as text: the driver entry ------------------------------------------------------ */
+/* The text's way to raster pixels: source (WC3) -> NDC3 (m) -> homogeneous NPC3 (npc) ->
+ * pixels and depth (dc). */
+typedef struct text_chain {
+    const double (*m)[4];
+    double npc[4][4], dc[4][4];
+} text_chain;
+
+static void chain_h(const text_chain *c, const double wc[3], double h[4])
+{
+    double n[3];
+    gks_xform_mat34_point(c->m, wc, n);
+    gks_xform_apply((const double (*)[4])c->npc, (const double[4]){ n[0], n[1], n[2], 1 }, h);
+}
+
+/* A homogeneous NPC3 point to pixels and depth; 0 if not finite. */
+static int chain_px(const text_chain *c, const double h[4], double px[3])
+{
+    double q[3];
+    if (gks_xform_divide(h, q))
+        return 0;
+    gks_xform_point((const double (*)[4])c->dc, q, px);
+    return isfinite(px[0]) && isfinite(px[1]) && isfinite(px[2]);
+}
+
+/* A vector in pixels per font unit, rounded to 2^-24 pixel so that texts of one size and
+ * direction share one scaled font (one Type 3 font) whatever the rounding of their
+ * positions' transformation. */
+static double quantum(double x)
+{
+    return ldexp(nearbyint(ldexp(x, 24)), -24);
+}
+
+typedef struct place_ctx {
+    vec_ws *v;
+    const text_chain *c;
+    int first;
+    double bx[2], by[2];   /* pixels per font unit along ux and uy */
+    int fail;
+} place_ctx;
+
+static int place_glyph(void *ctx, int ch, const double org[3], const double ux[3],
+                       const double uy[3])
+{
+    place_ctx *p = ctx;
+    vec_ws *v = p->v;
+    double h[4], px[3];
+    chain_h(p->c, org, h);
+    if (!chain_px(p->c, h, px))
+        return 1;
+    if (p->first) { /* the glyph axes: the plane reaches the page affinely (vec_text) */
+        double a[3], b[3], qa[3], qb[3];
+        for (int i = 0; i < 3; i++) {
+            a[i] = org[i] + ux[i];
+            b[i] = org[i] + uy[i];
+        }
+        chain_h(p->c, a, h);
+        int ok = chain_px(p->c, h, qa);
+        chain_h(p->c, b, h);
+        if (!ok || !chain_px(p->c, h, qb))
+            return 1;
+        for (int i = 0; i < 2; i++) {
+            p->bx[i] = qa[i] - px[i];
+            p->by[i] = qb[i] - px[i];
+        }
+        p->first = 0;
+    }
+    if (v->n_glyphs == v->cap_glyphs) {
+        size_t c = v->cap_glyphs ? 2 * v->cap_glyphs : 1024;
+        cairo_glyph_t *g = gks_realloc_array(v->glyphs, c, sizeof *g);
+        if (!g) {
+            p->fail = 300;
+            return 1;
+        }
+        v->glyphs = g;
+        v->cap_glyphs = c;
+    }
+    v->glyphs[v->n_glyphs++] = (cairo_glyph_t){ (unsigned long)ch, px[0], px[1] };
+    return 0;
+}
+
+/* The clip polygon of a text: its extent rectangle widened by a body height on every side
+ * (no ink lies beyond), clipped by the clipping volume (clip_on) and the view's region, in
+ * pixels at v->clip + v->n_clip; *n = 0 and 0 when nothing is clipped off (no polygon
+ * needed), GKS_WS_TEXT_CLIPPED when nothing is left, 300. */
+static int text_clip(vec_ws *v, const gks_text_prim *t, const text_chain *c,
+                     const gks_xform_clip *view, size_t *n)
+{
+    double cr[4][3], cc[3], r[4][4], u1[3], u2[3];
+    gks_text_extent(t->frame, t->attrs, t->str, cr, cc);
+    double l1 = 0, l2 = 0;
+    for (int i = 0; i < 3; i++) {
+        u1[i] = cr[1][i] - cr[0][i];
+        u2[i] = cr[3][i] - cr[0][i];
+        l1 += u1[i] * u1[i];
+        l2 += u2[i] * u2[i];
+    }
+    l1 = sqrt(l1);
+    l2 = sqrt(l2);
+    if (!(l1 > 0) || !(l2 > 0))
+        return GKS_WS_TEXT_CLIPPED;
+    static const int sg[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+    gks_xform_clip box;
+    gks_xform_clip_init(&box);
+    if (t->clip_on && gks_xform_clip_add_box(&box, t->clip_box, GKS_XFORM_CLIP_ALL))
+        return GKS_WS_TEXT_CLIPPED;
+    int all_in = 1;
+    for (int k = 0; k < 4; k++) {
+        double wc[3], h[4];
+        for (int i = 0; i < 3; i++)
+            wc[i] = cr[k][i] + l2 * (sg[k][0] * u1[i] / l1 + sg[k][1] * u2[i] / l2);
+        gks_xform_mat34_point(c->m, wc, r[k]);
+        r[k][3] = 1;
+        gks_xform_apply((const double (*)[4])c->npc, r[k], h);
+        all_in &= ws_png_render_clip_inside(&box, r[k]) &&
+                  ws_png_render_clip_inside(view, h);
+    }
+    *n = 0;
+    if (all_in)
+        return 0;
+    double a[VEC_CLIP_MAX][4], b[VEC_CLIP_MAX][4];
+    size_t len = 4, m = 4;
+    memcpy(a, r, sizeof r);
+    if (box.n > 0) {
+        if (gks_xform_clip_polygon(&box, 1, &len, (const double (*)[4])a, b, VEC_CLIP_MAX,
+                                   &m, &m) || m < 3)
+            return GKS_WS_TEXT_CLIPPED;
+        memcpy(a, b, m * sizeof a[0]);
+    }
+    for (size_t i = 0; i < m; i++) {
+        double h[4];
+        gks_xform_apply((const double (*)[4])c->npc, a[i], h);
+        memcpy(a[i], h, sizeof h);
+    }
+    len = m;
+    if (gks_xform_clip_polygon(view, 1, &len, (const double (*)[4])a, b, VEC_CLIP_MAX, &m,
+                               &m) || m < 3)
+        return GKS_WS_TEXT_CLIPPED;
+    if (v->n_clip + m > v->cap_clip) {
+        size_t cap = v->cap_clip ? v->cap_clip : 256;
+        while (cap < v->n_clip + m)
+            cap *= 2;
+        double (*q)[2] = gks_realloc_array(v->clip, cap, sizeof *q);
+        if (!q)
+            return 300;
+        v->clip = q;
+        v->cap_clip = cap;
+    }
+    for (size_t i = 0; i < m; i++) {
+        double px[3];
+        if (!chain_px(c, b[i], px))
+            return GKS_WS_TEXT_CLIPPED;
+        v->clip[v->n_clip + i][0] = px[0];
+        v->clip[v->n_clip + i][1] = px[1];
+    }
+    *n = m;
+    return 0;
+}
+
+/* TEXT drawn as glyphs of the user font where that is the stroked text: HLHSR modes none,
+ * painter and ray tracing, and overlays (hlhsr_id != 0) in every mode; hidden line and
+ * z-buffer test the strokes against the depths (GKS_WS_TEXT_STROKE). The text plane must
+ * reach the page by a similarity (rotation, reflection, uniform scale: the pen stays
+ * round) after the expansion factor, which holds for 2-D text and for text planes parallel
+ * to the view plane; other planes get the strokes. Every precision (STRING, CHAR,
+ * STROKE) is drawn at STROKE precision, which the standard allows for any request: the
+ * glyphs are clipped exactly, by the clipping volume and the view's region. The painter
+ * key is the depth of the middle of the text extent. */
+static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
+{
+    vec_ws *v = ws->priv;
+    int mode = ws->hlhsr_mode;
+    if (t->hlhsr_id == 0 && (mode == GHLHSR_HIDDEN_LINE || mode == GHLHSR_ZBUFFER))
+        return GKS_WS_TEXT_STROKE;
+    text_chain c = { .m = t->m };
+    const gks_xform_clip *view;
+    if (ws_png_render_view(v->vec, ws, t->view_ind, c.npc, c.dc, &view))
+        return GKS_WS_TEXT_STROKE;
+    /* the plane's points at constant w (affine to the page), the glyph axes in pixels */
+    const gks_text_frame *f = t->frame;
+    double pts[3][3], h[3][4], px[3][3];
+    for (int i = 0; i < 3; i++) {
+        pts[0][i] = f->org[i];
+        pts[1][i] = f->org[i] + f->ex[i];
+        pts[2][i] = f->org[i] + f->ey[i];
+    }
+    for (int k = 0; k < 3; k++) {
+        chain_h(&c, pts[k], h[k]);
+        if (!chain_px(&c, h[k], px[k]))
+            return GKS_WS_TEXT_STROKE;
+    }
+    if (fabs(h[1][3] - h[0][3]) > 1e-12 * fabs(h[0][3]) ||
+        fabs(h[2][3] - h[0][3]) > 1e-12 * fabs(h[0][3]))
+        return GKS_WS_TEXT_STROKE; /* perspective across the plane */
+    const gks_text_attrs *a = t->attrs;
+    double e = a->char_expan;
+    size_t g0 = v->n_glyphs, c0 = v->n_clip, nc = 0;
+    place_ctx pc = { .v = v, .c = &c, .first = 1 };
+    int r = gks_text_place(f, a, t->str, place_glyph, &pc);
+    if (r || pc.first || !(e > 0)) {
+        v->n_glyphs = g0;
+        return pc.fail ? pc.fail : r ? GKS_WS_TEXT_STROKE : GKS_WS_TEXT_CLIPPED;
+    }
+    /* a similarity after the expansion factor: the pen stays round */
+    double bx[2] = { quantum(pc.bx[0] / e), quantum(pc.bx[1] / e) };
+    double by[2] = { quantum(pc.by[0]), quantum(pc.by[1]) };
+    double lx = hypot(bx[0], bx[1]), ly = hypot(by[0], by[1]);
+    if (!(ly > 0) || !isfinite(ly) || fabs(lx - ly) > 1e-6 * ly ||
+        fabs(bx[0] * by[0] + bx[1] * by[1]) > 1e-6 * ly * ly) {
+        v->n_glyphs = g0;
+        return GKS_WS_TEXT_STROKE;
+    }
+    r = text_clip(v, t, &c, view, &nc);
+    int fi = r ? -1 : face_index(v, a->font, e);
+    if (!r && fi < 0)
+        r = GKS_WS_TEXT_STROKE; /* more faces than the table holds */
+    if (!r && v->n_texts == v->cap_texts) {
+        size_t cap = v->cap_texts ? 2 * v->cap_texts : 256;
+        vec_text *q = gks_realloc_array(v->texts, cap, sizeof *q);
+        if (q) {
+            v->texts = q;
+            v->cap_texts = cap;
+        } else {
+            r = 300;
+        }
+    }
+    double mid[3], hm[4], pm[3] = { 0, 0, 0 };
+    if (!r && mode == GHLHSR_PAINTER) {
+        double cr[4][3], cc[3];
+        gks_text_extent(f, a, t->str, cr, cc);
+        for (int i = 0; i < 3; i++)
+            mid[i] = 0.5 * (cr[0][i] + cr[2][i]);
+        chain_h(&c, mid, hm);
+        if (!chain_px(&c, hm, pm))
+            pm[2] = 0;
+    }
+    if (!r)
+        r = ws_png_render_keep_mark(v->vec, v->n_texts, pm[2], t->hlhsr_id != 0);
+    if (r) {
+        v->n_glyphs = g0;
+        v->n_clip = c0;
+        return r;
+    }
+    vec_text *x = &v->texts[v->n_texts++];
+    *x = (vec_text){ .face = fi, .bx = { bx[0], bx[1] }, .by = { by[0], by[1] },
+                     .rgb = { (float)t->colour.red, (float)t->colour.green,
+                              (float)t->colour.blue },
+                     .g0 = g0, .ng = v->n_glyphs - g0, .c0 = c0, .nc = nc };
+    v->n_clip += nc;
+    v->dirty = 1;
+    return 0;
+}
+
 #define VEC_HLHSR                                                                      \
     ((1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) | (1u << GHLHSR_ZBUFFER) |       \
      (1u << GHLHSR_PAINTER) | (1u << GHLHSR_RAYTRACE))
@@ -900,7 +1350,8 @@ static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EP
     {                                                                                  \
         .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN, .file = FILE,   \
         .close = vec_close, .clear = vec_clear, .update = vec_update,                  \
-        .primitive = vec_primitive, .message = vec_message, .escape = vec_escape,      \
+        .primitive = vec_primitive, .text = vec_text_prim, .message = vec_message,          \
+        .escape = vec_escape,                                                          \
     }
 
 const gks_ws_driver gks_ws_pdf_driver = VEC_DRIVER(pdf_desc, pdf_open, pdf_file);

@@ -20,7 +20,7 @@
 #include <string.h>
 
 enum { CHUNK = 4096 };
-enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL };
+enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL, REC_MARK }; /* MARK: ws_png_render_keep_mark */
 enum { STYLE_HOLLOW = -1, STYLE_SMOOTH = -2 }; /* SMOOTH: per-vertex attributes (fl, nx floats
                                                   per point, the last 1/w; ny: shading context
                                                   or -1) */
@@ -214,8 +214,12 @@ static int to_dc(const view_cache *v, const double h[4], gks_raster_pt *q)
     return isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]);
 }
 
-/* Is a homogeneous NPC point inside the clip region? */
 static int inside(const gks_xform_clip *c, const double h[4])
+{
+    return ws_png_render_clip_inside(c, h);
+}
+
+int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4])
 {
     if (!(h[3] >= c->wmin))
         return 0;
@@ -1033,6 +1037,8 @@ static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
     gks_raster_line la = { .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] }, .width = a->width,
                            .type = a->linetype, .zmode = zm,
                            .zbias = how == DRAW_HL_LINES ? rc->zbias : 0.0f };
+    if (rc->kind == REC_MARK) /* the back end draws it */
+        return 0;
     if (rc->kind == REC_LINE) {
         if (how != DRAW_HL_AREAS)
             return draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
@@ -1230,6 +1236,28 @@ int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
+int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay)
+{
+    if (GROW(r, recs, cap_rec, r->n_rec + 1))
+        return 300;
+    r->recs[r->n_rec++] = (rec){ .kind = REC_MARK, .overlay = overlay != 0, .key = key,
+                                 .attr = id };
+    r->n_retained++;
+    return 0;
+}
+
+int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4],
+                       double dc[4][4], const gks_xform_clip **clip)
+{
+    const view_cache *v = view_get(r, ws, vi);
+    if (!v->ok)
+        return -1;
+    memcpy(npc, v->npc, sizeof v->npc);
+    memcpy(dc, v->dc, sizeof v->dc);
+    *clip = &v->clip;
+    return 0;
+}
+
 /* --- the frame's records for vector back ends (ws_png_render_walk) ----------------------- */
 typedef struct walk {
     png_render *r;
@@ -1349,6 +1377,14 @@ static int emit_rec(walk *w, const rec *rc, int hl)
         w->depth = NULL;
     ws_render_item it;
     int e = 0;
+    if (rc->kind == REC_MARK) {
+        memset(&it, 0, sizeof it);
+        it.kind = WS_ITEM_MARK;
+        it.mark = rc->attr;
+        e = w->emit(w->ctx, &it);
+        w->depth = depth;
+        return e;
+    }
     line_item(&it, r, rc->rgb, a->linetype, a->width);
     if (rc->kind == REC_LINE) {
         e = emit_pieces(w, &it, pts, cnt, rc->n_fill, rc->zbias);

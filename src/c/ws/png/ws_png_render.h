@@ -43,6 +43,7 @@
  */
 #ifndef WS_PNG_RENDER_H
 #define WS_PNG_RENDER_H
+#include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
 
@@ -81,6 +82,21 @@ void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit
  * end that draws the frame at UPDATE through ws_png_render_walk). */
 int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim);
 
+/* A primitive the back end draws itself (a vector driver's TEXT), kept in the frame's
+ * order: ws_png_render_walk emits it as a WS_ITEM_MARK item with mark = id in its place
+ * (painter: sorted by key, a mean DC depth; overlay: with the overlays; hidden line: with
+ * the lines, not depth-tested, so a back end should keep only what needs no test).
+ * Returns 0 or 300. */
+int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay);
+/* The view pipeline of view index vi on ws (cached for the frame): npc maps NDC3 to
+ * homogeneous NPC3, clip is the region there (view clip limits by the indicators and the
+ * workstation window; valid until the next call with other inputs), dc maps NPC3 to output
+ * pixels (x right, y up) and DC depth. 0, or -1 if the pipeline is degenerate. */
+int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4],
+                       double dc[4][4], const gks_xform_clip **clip);
+/* Is homogeneous NPC point h inside clip region c (w >= wmin and every plane)? */
+int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4]);
+
 /* An item of the frame for vector back ends: points in output pixels (DC x right, y up,
  * z depth), widths and sizes in pixels, unit = pixels per nominal unit.
  *  AREA    n_loops loops (counts[k] points) filled by the even-odd rule with style
@@ -91,8 +107,11 @@ int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim);
  *  MARKERS n_loops chunks of centres; marker_type 1..5, marker_size (diameter), width;
  *  CELLS   cell array: parallelogram cell_o, cell_u (end of the first row), cell_v (end of
  *          the first column), nx x ny colours rgb_list row-major from cell_o, drawn inside
- *          the n_loops loops (the parallelogram clipped). */
-typedef enum { WS_ITEM_AREA, WS_ITEM_LINE, WS_ITEM_MARKERS, WS_ITEM_CELLS } ws_item_kind;
+ *          the n_loops loops (the parallelogram clipped);
+ *  MARK    a record of the back end's own (ws_png_render_keep_mark), id in mark. */
+typedef enum {
+    WS_ITEM_AREA, WS_ITEM_LINE, WS_ITEM_MARKERS, WS_ITEM_CELLS, WS_ITEM_MARK
+} ws_item_kind;
 typedef struct ws_render_item {
     ws_item_kind kind;
     float rgb[3];
@@ -109,6 +128,7 @@ typedef struct ws_render_item {
     const float *rgb_list;
     double pat_geo[6];
     gks_raster_pt cell_o, cell_u, cell_v;
+    size_t mark;
 } ws_render_item;
 typedef int (*ws_render_emit)(void *ctx, const ws_render_item *it);
 /* The retained primitives of the frame as items to emit, in the order of HLHSR mode mode:
