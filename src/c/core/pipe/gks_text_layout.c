@@ -227,7 +227,7 @@ int gks_text_place(const gks_text_frame *f, const gks_text_attrs *a, const char 
     for (size_t i = 0; i < L.n; i++) {
         int ch = (unsigned char)s[i];
         double x0, y0, org[3];
-        char_origin(a, &L, i, advance_of(ch) * L.kx, &pen, &x0, &y0);
+        char_origin(a, &L, i, advance_of(L.font, ch) * L.kx, &pen, &x0, &y0);
         to_wc(f, &L, x0, y0, org);
         int r = place(ctx, ch, org, ux, uy);
         if (r)
