@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: MIT
 # run-tests.sh -- set up, then run the whole test suite three times:
 #   ./build-test  Debug, -DGKS_WERROR=ON, benchmarks built too (not run)
-#   ./build-min   Debug, -DGKS_WERROR=ON, every optional dependency off (each GKS_WITH_*
-#                 option, the Fortran binding included), benchmarks off; then the benchmarks
-#                 are built there as well, so that their code without any peer compiles
+#   ./build-min   Release (-O2, so that warnings only the optimizer finds, such as
+#                 -Wmaybe-uninitialized, fail too), -DGKS_WERROR=ON, every optional dependency
+#                 off (each GKS_WITH_* option, the Fortran binding included), benchmarks off;
+#                 then the benchmarks are built there as well, so that their code without any
+#                 peer compiles
 #   ./build-asan  Debug, -DGKS_WERROR=ON -DGKS_SANITIZE=ON (AddressSanitizer + UBSan,
 #                 LeakSanitizer on when it works here, see below)
 # then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
@@ -26,7 +28,7 @@ off=()
 while IFS= read -r name; do off+=("-D$name=OFF"); done < <(
     sed -n 's/^\(GKS_WITH_[A-Z0-9_]*\):BOOL=.*/\1/p' build-test/CMakeCache.txt | sort)
 echo "=== run-tests: every optional dependency off (build-min): ${off[*]}"
-cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
+cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Release -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_BUILD_BENCHMARKS=OFF "${off[@]}"
 cmake --build build-min -j2
 ctest --test-dir build-min --output-on-failure -j2

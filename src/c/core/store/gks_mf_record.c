@@ -286,11 +286,12 @@ _Static_assert(offsetof(gks_cur_attrs, pat_ref_vec) ==
                    offsetof(gks_cur_attrs, pat_ref_point) + 3 * sizeof(double),
                "pattern reference point and vectors must be contiguous");
 
-/* The item of field f: its format says how many ints or reals (the ATTR rows are one kind). */
 /* The bytes of field f: n ints or n reals as its item's format says. */
 static size_t field_size(const attr_field *f, int *n, char *k)
 {
     int arr;
+    *n = 0; /* an item without a format has no fields */
+    *k = 'i';
     gksm_fmt_next(gksm_item_fmt(f->item), n, k, &arr);
     return (size_t)*n * (*k == 'i' ? sizeof(int) : sizeof(double));
 }
