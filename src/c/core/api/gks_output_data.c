@@ -55,27 +55,10 @@ void gks_output_rec_data(const gks_rec_xf *xf, int item, const gks_area_data *d)
         GKS_FAIL(err, fctid);
 }
 
-/* The vertex arrays of v as double triples (points, normals, colours). */
-typedef struct {
-    double (*pts)[3], (*vn)[3], (*vrgb)[3], (*fn)[3], (*frgb)[3];
-    int *vci, *fci;
-} wc_arrays;
-
-static void wc_free(wc_arrays *w)
-{
-    gks_free(w->pts);
-    gks_free(w->vn);
-    gks_free(w->vrgb);
-    gks_free(w->fn);
-    gks_free(w->frgb);
-    gks_free(w->vci);
-    gks_free(w->fci);
-}
-
 /* Checks the flags and vertex record of a call, copies its vertex data into w and d.
  * Returns 0 or an error number. */
 static int take_vdata(Gint fflag, Gint vflag, Gint ctype, const Gfacet_vdata3 *v, size_t min_n,
-                      wc_arrays *w, gks_area_data *d)
+                      gks_area_arrays *w, gks_area_data *d)
 {
     if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
         vflag > GVERT_COORD_COLR_NORM || ctype < GCOLR_INDIRECT || ctype > GCOLR_RGB)
@@ -131,7 +114,7 @@ static int take_vdata(Gint fflag, Gint vflag, Gint ctype, const Gfacet_vdata3 *v
 }
 
 /* Checks and copies nf facet records (fdata NULL allowed when fflag is GFACET_NONE). */
-static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf, wc_arrays *w,
+static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf, gks_area_arrays *w,
                       gks_area_data *d)
 {
     if (fflag == GFACET_NONE)
@@ -200,14 +183,14 @@ static int index_alloc(gks_area_data *d, size_t nf, size_t nl, size_t ni, ibuf *
 #define IX(b, d) ((b)->ints + (d)->n_facets + (d)->n_loops)
 
 /* Checks (the flags and arrays, then the structure), draws and frees. */
-static void finish(int fctid, int item, int err, gks_area_data *d, ibuf *b, wc_arrays *w)
+static void finish(int fctid, int item, int err, gks_area_data *d, ibuf *b, gks_area_arrays *w)
 {
     if (!err)
         err = gks_area_data_check(d);
     if (!err)
         err = gks_pipe_area_data(fctid, item, d, NULL);
     gks_free(b->ints);
-    wc_free(w);
+    gks_area_arrays_free(w);
     if (err > 0)
         GKS_FAIL(err, fctid);
 }
@@ -217,7 +200,7 @@ GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfac
 {
     if (gks_check_state(GFN_FA3D))
         return;
-    wc_arrays w = { 0 };
+    gks_area_arrays w = { 0 };
     gks_area_data d = { 0 };
     ibuf b = { 0 };
     int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
@@ -240,7 +223,7 @@ GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
 {
     if (gks_check_state(GFN_FAS3D))
         return;
-    wc_arrays w = { 0 };
+    gks_area_arrays w = { 0 };
     gks_area_data d = { 0 };
     ibuf b = { 0 };
     int err = 0;
@@ -308,7 +291,7 @@ GKS_API void gtri_strip3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfac
 {
     if (gks_check_state(GFN_TS3D))
         return;
-    wc_arrays w = { 0 };
+    gks_area_arrays w = { 0 };
     gks_area_data d = { 0 };
     ibuf b = { 0 };
     int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
@@ -337,7 +320,7 @@ GKS_API void gquad_mesh3_data(Gint fflag, Gint vflag, Gint colr_type, const Gint
 {
     if (gks_check_state(GFN_QM3D))
         return;
-    wc_arrays w = { 0 };
+    gks_area_arrays w = { 0 };
     gks_area_data d = { 0 };
     ibuf b = { 0 };
     int err = 0;
@@ -380,7 +363,7 @@ GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
 {
     if (gks_check_state(GFN_SFA3D))
         return;
-    wc_arrays w = { 0 };
+    gks_area_arrays w = { 0 };
     gks_area_data d = { 0 };
     ibuf b = { 0 };
     int err = 0;

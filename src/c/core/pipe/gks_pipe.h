@@ -38,6 +38,15 @@ int gks_pipe_area(int fctid, const struct gks_rec_xf *xf, size_t nloops, const s
 /* CELL ARRAY (3): corners P, Q, R (WC3), nx * ny colour indices. */
 int gks_pipe_cell_array(int fctid, const struct gks_rec_xf *xf, const double pqr[3][3],
                         int nx, int ny, const Gint *colr);
+/* The arrays a gks_area_data points into when a caller builds one (the entry points from
+ * a call's records, the pipeline its NDC3 copy), each NULL when not used; freed together
+ * (gks_area_arrays_free). */
+typedef struct gks_area_arrays {
+    double (*pts)[3], (*vn)[3], (*vrgb)[3], (*fn)[3], (*frgb)[3];
+    int *ints, *vci, *fci;
+} gks_area_arrays;
+void gks_area_arrays_free(gks_area_arrays *a);
+
 /* A primitive with data (metafile item `item`, d checked by gks_area_data_check), in WC3
  * (xf NULL) or as recorded (gks_pipe_data.c). */
 int gks_pipe_area_data(int fctid, int item, const gks_area_data *d, const struct gks_rec_xf *xf);

@@ -80,7 +80,7 @@ static int clip_pass(const cvert *in, size_t n, int axis, int side, const double
             }
             r.p[axis] = lim;
             if (!(isfinite(r.p[0]) && isfinite(r.p[1]) && isfinite(r.p[2])))
-                continue; /* overflow near DBL_MAX (as clip_segment): the vertex is dropped */
+                continue; /* overflow near DBL_MAX: the vertex is dropped */
             double len = sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
             if (len > 0 && isfinite(len))
                 for (int k = 0; k < 3; k++)
@@ -341,18 +341,20 @@ static int data_emit(const gks_pipe_norm *nc, const gks_area_data *d, int is_set
  * (it is not drawn). Owns its arrays; n_facets 0: nothing to keep. */
 typedef struct {
     gks_area_data d;
-    double (*pts)[3], (*vn)[3], (*fn)[3], (*frgb)[3];
-    int *ints, *fci;
+    gks_area_arrays a;
 } ndc_data;
 
-static void ndc_free(ndc_data *o)
+void gks_area_arrays_free(gks_area_arrays *a)
 {
-    gks_free(o->pts);
-    gks_free(o->vn);
-    gks_free(o->fn);
-    gks_free(o->frgb);
-    gks_free(o->ints);
-    gks_free(o->fci);
+    gks_free(a->pts);
+    gks_free(a->vn);
+    gks_free(a->vrgb);
+    gks_free(a->fn);
+    gks_free(a->frgb);
+    gks_free(a->ints);
+    gks_free(a->vci);
+    gks_free(a->fci);
+    memset(a, 0, sizeof *a);
 }
 
 static void map_raw_normal(const double nm[3][3], int ok, const double v[3], double o[3])
@@ -368,40 +370,41 @@ static int to_ndc_data(const double pn[3][4], const gks_area_data *d, ndc_data *
     memset(o, 0, sizeof *o);
     o->d = *d;
     size_t nv = d->n_verts, nf = d->n_facets;
-    o->pts = gks_alloc_array(nv, sizeof *o->pts);
-    o->ints = gks_alloc_array(nf + d->n_loops + d->n_idx + 1, sizeof *o->ints);
-    if (!o->pts || !o->ints)
+    o->a.pts = gks_alloc_array(nv, sizeof *o->a.pts);
+    o->a.ints = gks_alloc_array(nf + d->n_loops + d->n_idx + 1, sizeof *o->a.ints);
+    if (!o->a.pts || !o->a.ints)
         return 300;
     unsigned char *bad = gks_alloc_array(nv, 1);
     if (!bad)
         return 300;
     for (size_t i = 0; i < nv; i++) {
-        gks_xform_mat34_point(pn, d->pts[i], o->pts[i]);
-        bad[i] = !(isfinite(o->pts[i][0]) && isfinite(o->pts[i][1]) && isfinite(o->pts[i][2]));
+        gks_xform_mat34_point(pn, d->pts[i], o->a.pts[i]);
+        double *q = o->a.pts[i];
+        bad[i] = !(isfinite(q[0]) && isfinite(q[1]) && isfinite(q[2]));
         if (bad[i])
-            o->pts[i][0] = o->pts[i][1] = o->pts[i][2] = 0.0; /* referenced by no facet kept */
+            q[0] = q[1] = q[2] = 0.0; /* referenced by no facet kept */
     }
     double nm[3][3];
     int nm_ok = normal_matrix(pn, nm) == 0;
     if (d->vnorm) {
-        if (!(o->vn = gks_alloc_array(nv, sizeof *o->vn))) {
+        if (!(o->a.vn = gks_alloc_array(nv, sizeof *o->a.vn))) {
             gks_free(bad);
             return 300;
         }
         for (size_t i = 0; i < nv; i++)
-            map_raw_normal(nm, nm_ok, d->vnorm[i], o->vn[i]);
-        o->d.vnorm = (const double (*)[3])o->vn;
+            map_raw_normal(nm, nm_ok, d->vnorm[i], o->a.vn[i]);
+        o->d.vnorm = (const double (*)[3])o->a.vn;
     }
     int fcr = (d->fflag & GFACET_COLR) && d->ctype == GCOLR_RGB;
     int fci = (d->fflag & GFACET_COLR) && d->ctype == GCOLR_INDIRECT;
-    if ((d->fnorm && !(o->fn = gks_alloc_array(nf, sizeof *o->fn))) ||
-        (fcr && !(o->frgb = gks_alloc_array(nf, sizeof *o->frgb))) ||
-        (fci && !(o->fci = gks_alloc_array(nf, sizeof *o->fci)))) {
+    if ((d->fnorm && !(o->a.fn = gks_alloc_array(nf, sizeof *o->a.fn))) ||
+        (fcr && !(o->a.frgb = gks_alloc_array(nf, sizeof *o->a.frgb))) ||
+        (fci && !(o->a.fci = gks_alloc_array(nf, sizeof *o->a.fci)))) {
         gks_free(bad);
         return 300;
     }
     /* The facets kept, compacted: loops per facet, counts, indices, facet data. */
-    int *fl = o->ints, *lc = o->ints + nf, *ix = o->ints + nf + d->n_loops;
+    int *fl = o->a.ints, *lc = o->a.ints + nf, *ix = o->a.ints + nf + d->n_loops;
     size_t kf = 0, kl = 0, ki = 0, l0 = 0, i0 = 0;
     for (size_t f = 0; f < nf; f++) {
         size_t nl = (size_t)d->facet_loops[f], n = 0;
@@ -414,12 +417,12 @@ static int to_ndc_data(const double pn[3][4], const gks_area_data *d, ndc_data *
             fl[kf] = (int)nl;
             memcpy(lc + kl, d->loop_counts + l0, nl * sizeof *lc);
             memcpy(ix + ki, d->idx + i0, n * sizeof *ix);
-            if (o->fn)
-                map_raw_normal(nm, nm_ok, d->fnorm[f], o->fn[kf]);
+            if (o->a.fn)
+                map_raw_normal(nm, nm_ok, d->fnorm[f], o->a.fn[kf]);
             if (fcr)
-                memcpy(o->frgb[kf], d->frgb[f], sizeof o->frgb[kf]);
+                memcpy(o->a.frgb[kf], d->frgb[f], sizeof o->a.frgb[kf]);
             if (fci)
-                o->fci[kf] = d->fci[f];
+                o->a.fci[kf] = d->fci[f];
             kf++;
             kl += nl;
             ki += n;
@@ -429,18 +432,18 @@ static int to_ndc_data(const double pn[3][4], const gks_area_data *d, ndc_data *
     }
     gks_free(bad);
     /* Compact the three index lists into one another's place (they shrank). */
-    memmove(o->ints + kf, lc, kl * sizeof *lc);
-    memmove(o->ints + kf + kl, ix, ki * sizeof *ix);
-    o->d.pts = (const double (*)[3])o->pts;
+    memmove(o->a.ints + kf, lc, kl * sizeof *lc);
+    memmove(o->a.ints + kf + kl, ix, ki * sizeof *ix);
+    o->d.pts = (const double (*)[3])o->a.pts;
     o->d.n_facets = kf;
     o->d.n_loops = kl;
     o->d.n_idx = ki;
-    o->d.facet_loops = o->ints;
-    o->d.loop_counts = o->ints + kf;
-    o->d.idx = o->ints + kf + kl;
-    o->d.fnorm = (const double (*)[3])o->fn;
-    o->d.frgb = (const double (*)[3])o->frgb;
-    o->d.fci = o->fci;
+    o->d.facet_loops = o->a.ints;
+    o->d.loop_counts = o->a.ints + kf;
+    o->d.idx = o->a.ints + kf + kl;
+    o->d.fnorm = (const double (*)[3])o->a.fn;
+    o->d.frgb = (const double (*)[3])o->a.frgb;
+    o->d.fci = o->a.fci;
     return 0;
 }
 
@@ -526,7 +529,7 @@ int gks_pipe_area_data(int fctid, int item, const gks_area_data *d, const gks_re
         ndc_data o;
         err = to_ndc_data((const double (*)[4])nc.pn, d, &o);
         if (!err && o.d.n_facets > 0 && gks_mf_on() && !mf_write(fctid, item, &nc, &o.d)) {
-            ndc_free(&o);
+            gks_area_arrays_free(&o.a);
             return GKS_PIPE_REPORTED; /* the error handler changed the world */
         }
         if (!err && o.d.n_facets > 0 && nc.seg) {
@@ -541,7 +544,7 @@ int gks_pipe_area_data(int fctid, int item, const gks_area_data *d, const gks_re
                 gks_free(b);
             }
         }
-        ndc_free(&o);
+        gks_area_arrays_free(&o.a);
     }
     gks_pipe_target t;
     gks_pipe_target_current(&t, &nc);
@@ -600,7 +603,7 @@ int gks_pipe_data_insert(gks_segment *open, const double M[3][4], const gks_pipe
                 err = store(open, item, &o.d, b, cur->clip_on, cur->box);
         }
         if (b)
-            ndc_free(&o);
+            gks_area_arrays_free(&o.a);
         gks_free(b);
     }
     gks_free(tri);
