@@ -96,6 +96,27 @@ static void test_clip_line(void **state)
     assert_int_equal(gks_xform_clip_line(&bad, a, b, &t0, &t1, &vis), GKS_E_ARITHMETIC);
 }
 
+/* The limit of the parametric (Liang-Barsky) clipper, and why core/pipe clips polylines at
+ * the viewport plane by plane instead (docs/ARCHITECTURE.md, "Clipping"): the visible part
+ * of a segment from x = -1e30 to x = 1e30 through the unit box lies between t = 1/2 and
+ * t = 1/2 + 5e-31, which doubles cannot tell apart, so the segment is reported invisible.
+ * The pipeline keeps it (tests/core/test_prims.c, test_polyline_huge_coordinates), and so
+ * does the rasterizer's pixel clip (tests/raster/test_raster.c, huge lines). */
+static void test_clip_line_parameter_limit(void **state)
+{
+    (void)state;
+    gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+    double t0, t1;
+    int vis = 1;
+    const double a[4] = { -1e30, 0.5, 0.5, 1 }, b[4] = { 1e30, 0.5, 0.5, 1 };
+    assert_int_equal(gks_xform_clip_line(&c, a, b, &t0, &t1, &vis), 0);
+    assert_false(vis);
+    /* 1e15 is still resolved: the visible part is t in [1/2, 1/2 + 5e-16] */
+    const double a2[4] = { -1e15, 0.5, 0.5, 1 }, b2[4] = { 1e15, 0.5, 0.5, 1 };
+    assert_int_equal(gks_xform_clip_line(&c, a2, b2, &t0, &t1, &vis), 0);
+    assert_true(vis);
+}
+
 static void test_clip_region_build(void **state)
 {
     (void)state;
@@ -687,6 +708,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_clip_line),
+        cmocka_unit_test(test_clip_line_parameter_limit),
         cmocka_unit_test(test_clip_region_build),
         cmocka_unit_test(test_clip_box_mapped),
         cmocka_unit_test(test_polyline_join),
