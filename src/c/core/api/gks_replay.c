@@ -25,7 +25,7 @@ static int emit_stored(gks_pipe_target *t, const double S[3][4], const double bo
     if (gks_pipe_norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
         return 0;
     t->a = &sp->bound->attrs;
-    memcpy(t->pat_m, sn, sizeof sn);
+    t->pat_m = (const double (*)[4])sn; /* used by the stages below only */
     size_t n = (size_t)sp->n_points;
     switch (sp->kind) {
     case GKS_SEG_POLYLINE:

@@ -316,7 +316,7 @@ static int data_emit(const gks_pipe_norm *nc, const gks_area_data *d, int is_set
         gks_prim tpl = { .kind = GKS_PRIM_FILL_AREA, .n_loops = 1 };
         Grgb *pat = NULL;
         gks_pipe_prim_common(&tpl, t->a);
-        err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &tpl, &pat);
+        err = gks_attr_prim_fill(ws, t->a, t->pat_m, &tpl, &pat);
         if (!is_set)
             tpl.attrs.edge_flag = 0; /* GKS-3D edges belong to the area sets */
         size_t loop0 = 0, idx0 = 0;
@@ -521,35 +521,36 @@ static int item_is_set(int item) { return item != GKSM_ITEM_FILL_AREA3_DATA; }
 /* Records d (metafile), stores it (open segment) and draws it. */
 int gks_pipe_area_data(int fctid, int item, const gks_area_data *d, const gks_rec_xf *xf)
 {
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
+    gks_pipe_norm buf;
+    const gks_pipe_norm *nc;
+    if (gks_pipe_norm_get(&nc, &buf, xf))
         return 308;
     int err = 0;
-    if (gks_mf_on() || nc.seg) {
+    if (gks_mf_on() || nc->seg) {
         ndc_data o;
-        err = to_ndc_data((const double (*)[4])nc.pn, d, &o);
-        if (!err && o.d.n_facets > 0 && gks_mf_on() && !mf_write(fctid, item, &nc, &o.d)) {
+        err = to_ndc_data((const double (*)[4])nc->pn, d, &o);
+        if (!err && o.d.n_facets > 0 && gks_mf_on() && !mf_write(fctid, item, nc, &o.d)) {
             gks_area_arrays_free(&o.a);
             return GKS_PIPE_REPORTED; /* the error handler changed the world */
         }
-        if (!err && o.d.n_facets > 0 && nc.seg) {
+        if (!err && o.d.n_facets > 0 && nc->seg) {
             gks_seg_bound *b = gks_alloc_array(1, sizeof *b);
             if (!b) {
                 err = 300;
             } else {
                 memset(b, 0, sizeof *b); /* padding: snapshots are compared bytewise */
                 b->attrs = gks_ctx()->sl->attrs;
-                memcpy(b->norm, nc.n, sizeof b->norm);
-                err = store(nc.seg, item, &o.d, b, nc.clip_on, nc.box);
+                memcpy(b->norm, nc->n, sizeof b->norm);
+                err = store(nc->seg, item, &o.d, b, nc->clip_on, nc->box);
                 gks_free(b);
             }
         }
         gks_area_arrays_free(&o.a);
     }
     gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
+    gks_pipe_target_current(&t, nc);
     if (!err)
-        err = data_emit(&nc, d, item_is_set(item), &t);
+        err = data_emit(nc, d, item_is_set(item), &t);
     return err;
 }
 

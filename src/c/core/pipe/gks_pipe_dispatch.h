@@ -13,18 +13,47 @@
 
 typedef struct gks_pipe_target {
     const gks_cur_attrs *a;
-    double pat_m[3][4];        /* WC3 -> final NDC3, for pattern boxes */
+    const double (*pat_m)[4];  /* WC3 -> final NDC3, for pattern boxes */
     gks_ws *only;              /* regeneration target; NULL: the active workstations */
     int k, done;
 } gks_pipe_target;
 
 /* The active workstations with the current attributes (none if the open segment of nc is
- * invisible). */
+ * invisible); t refers to nc's pattern matrix. */
 void gks_pipe_target_current(gks_pipe_target *t, const gks_pipe_norm *nc);
-/* The next workstation of the target, or NULL when there is none left. */
-gks_ws *gks_pipe_next_ws(gks_pipe_target *t);
-/* The attributes every primitive carries (view index, lighting, shading methods). */
-void gks_pipe_prim_common(gks_prim *p, const gks_cur_attrs *a);
 /* Hands p to ws's driver (after the test hook). 0 or the driver's error. */
 int gks_pipe_send(gks_ws *ws, const gks_prim *p);
+
+/* The next workstation of the target, or NULL when there is none left. Inline with the
+ * next one: they run for every primitive and workstation. */
+static inline gks_ws *gks_pipe_next_ws(gks_pipe_target *t)
+{
+    if (t->done)
+        return NULL;
+    if (t->only) {
+        t->done = 1;
+        return t->only;
+    }
+    gks_context *c = gks_ctx();
+    while (t->k < c->sl->n_open) {
+        gks_ws *ws = c->ws[t->k++];
+        if (ws->state == GWS_ACTIVE)
+            return ws;
+    }
+    t->done = 1;
+    return NULL;
+}
+
+/* The attributes every primitive carries (view index, lighting, shading methods). */
+static inline void gks_pipe_prim_common(gks_prim *p, const gks_cur_attrs *a)
+{
+    p->view_ind = a->view_ind;
+    p->area_props[0] = a->area_props[0];
+    p->area_props[1] = a->area_props[1];
+    p->refl_eq[0] = a->refl_eq[0];
+    p->refl_eq[1] = a->refl_eq[1];
+    p->light_mask = a->light_mask;
+    p->shading[0] = a->int_shad[0];
+    p->shading[1] = a->int_shad[1];
+}
 #endif

@@ -49,7 +49,7 @@ static struct {
  * transformation (if a segment is open), clipping at the current viewport 3 when the
  * clipping indicator is on. For a recorded normalization (ov), its matrix and clipping
  * volume replace the current ones, and NDC3 points enter through the identity. */
-int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *ov)
+int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec_xf *ov)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
     const gks_state_list *sl = gks_ctx()->sl;
@@ -67,7 +67,7 @@ int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *ov)
         if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
             memcmp(norm_cache.w, w, sizeof w) == 0 && memcmp(norm_cache.v, box, sizeof box) == 0 &&
             (!seg || memcmp(norm_cache.stran, seg->tran, sizeof norm_cache.stran) == 0)) {
-            *nc = norm_cache.nc;
+            *ncp = &norm_cache.nc;
             return 0;
         }
         norm_cache.valid = 0;
@@ -94,5 +94,15 @@ int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *ov)
         norm_cache.nc = *nc;
         norm_cache.valid = 1;
     }
+    *ncp = nc;
     return 0;
+}
+
+int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *xf)
+{
+    const gks_pipe_norm *p;
+    int err = gks_pipe_norm_get(&p, nc, xf);
+    if (!err && p != nc)
+        *nc = *p;
+    return err;
 }

@@ -31,6 +31,10 @@ struct gks_rec_xf; /* gks_mf_record.h: NULL = the current normalization */
 /* The context of the current state, or of the recorded normalization xf: 0, or 308 if
  * the normalization cannot be represented (gks_xform_norm_tran3). */
 int gks_pipe_norm_setup(gks_pipe_norm *nc, const struct gks_rec_xf *xf);
+/* The same without a copy: *ncp is the context the pipeline keeps for the current state
+ * (valid until the next primitive's setup) or buf, made there. 0 or 308. */
+int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *buf,
+                      const struct gks_rec_xf *xf);
 /* A context mapping by m and clipping at box (when clip_on): 0, or -1 (degenerate box). */
 int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box[6],
                        int clip_on);

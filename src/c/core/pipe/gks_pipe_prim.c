@@ -22,12 +22,11 @@
 #include <string.h>
 
 /* ------------------------------------------------------------------ records */
-/* Metafile output (gks_mf_record.h): the primitive as the active MO workstations record
- * it. 0: an error was reported and the world changed; the caller returns at once. */
+/* Metafile output (gks_mf_record.h), called when gks_mf_on(): the primitive as the active
+ * MO workstations record it. 0: an error was reported and the world changed; the caller
+ * returns at once. */
 static GKS_MUST_CHECK int mf_out(int fctid, const gks_pipe_norm *nc, gks_mf_prim p)
 {
-    if (!gks_mf_on())
-        return 1;
     p.pn = (const double (*)[4])nc->pn;
     p.norm = (const double (*)[4])nc->n;
     p.box = nc->box;
@@ -109,24 +108,6 @@ static int emit_polyline(const gks_pipe_norm *nc, const gks_pipe_src *s, size_t 
     return err;
 }
 
-int gks_pipe_polyline(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n)
-{
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
-        return 308;
-    gks_seg_prim sp = { .kind = GKS_SEG_POLYLINE, .n_loops = 1 };
-    if (!mf_out(fctid, &nc,
-                (gks_mf_prim){ .item = GKSM_ITEM_POLYLINE3, .n = n, .p2 = s->p2, .p3 = s->p3,
-                               .d3 = s->d3 }))
-        return GKS_PIPE_REPORTED;
-    int err = record(&nc, &sp, s, n);
-    gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
-    if (!err)
-        err = emit_polyline(&nc, s, n, &t);
-    return err;
-}
-
 /* ------------------------------------------------------------------ POLYMARKER */
 static int emit_polymarker(const gks_pipe_norm *nc, const gks_pipe_src *s, size_t n,
                            gks_pipe_target *t)
@@ -153,22 +134,36 @@ static int emit_polymarker(const gks_pipe_norm *nc, const gks_pipe_src *s, size_
     return err;
 }
 
+/* POLYLINE (markers 0) and POLYMARKER (markers 1) after the entry point's checks. */
+static int points_prim(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n,
+                       int markers)
+{
+    gks_pipe_norm buf;
+    const gks_pipe_norm *nc;
+    if (gks_pipe_norm_get(&nc, &buf, xf))
+        return 308;
+    gks_seg_prim sp = { .kind = markers ? GKS_SEG_POLYMARKER : GKS_SEG_POLYLINE, .n_loops = 1 };
+    if (gks_mf_on() &&
+        !mf_out(fctid, nc,
+                (gks_mf_prim){ .item = markers ? GKSM_ITEM_POLYMARKER3 : GKSM_ITEM_POLYLINE3,
+                               .n = n, .p2 = s->p2, .p3 = s->p3, .d3 = s->d3 }))
+        return GKS_PIPE_REPORTED;
+    int err = record(nc, &sp, s, n);
+    gks_pipe_target t;
+    gks_pipe_target_current(&t, nc);
+    if (!err)
+        err = markers ? emit_polymarker(nc, s, n, &t) : emit_polyline(nc, s, n, &t);
+    return err;
+}
+
+int gks_pipe_polyline(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n)
+{
+    return points_prim(fctid, xf, s, n, 0);
+}
+
 int gks_pipe_polymarker(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n)
 {
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
-        return 308;
-    gks_seg_prim sp = { .kind = GKS_SEG_POLYMARKER, .n_loops = 1 };
-    if (!mf_out(fctid, &nc,
-                (gks_mf_prim){ .item = GKSM_ITEM_POLYMARKER3, .n = n, .p2 = s->p2,
-                               .p3 = s->p3, .d3 = s->d3 }))
-        return GKS_PIPE_REPORTED;
-    int err = record(&nc, &sp, s, n);
-    gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
-    if (!err)
-        err = emit_polymarker(&nc, s, n, &t);
-    return err;
+    return points_prim(fctid, xf, s, n, 1);
 }
 
 /* ------------------------------------------------------------------ TEXT */
@@ -231,8 +226,9 @@ int gks_pipe_emit_text(const gks_pipe_norm *nc, const double pos[3], const doubl
 int gks_pipe_text(int fctid, const gks_rec_xf *xf, const double pos[3], const double d0[3],
                   const double d1[3], const char *str)
 {
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
+    gks_pipe_norm buf;
+    const gks_pipe_norm *nc;
+    if (gks_pipe_norm_get(&nc, &buf, xf))
         return 308;
     const double wc[3][3] = { { pos[0], pos[1], pos[2] }, { d0[0], d0[1], d0[2] },
                               { d1[0], d1[1], d1[2] } };
@@ -240,13 +236,14 @@ int gks_pipe_text(int fctid, const gks_rec_xf *xf, const double pos[3], const do
     size_t len = strlen(str);
     gks_seg_prim sp = { .kind = GKS_SEG_TEXT, .n_loops = 1, .str = str,
                         .str_len = len > INT32_MAX ? INT32_MAX : (int)len };
-    if (!mf_out(fctid, &nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str }))
+    if (gks_mf_on() &&
+        !mf_out(fctid, nc, (gks_mf_prim){ .item = GKSM_ITEM_TEXT3, .n = 3, .d3 = wc, .str = str }))
         return GKS_PIPE_REPORTED;
-    int err = record(&nc, &sp, &s, 3);
+    int err = record(nc, &sp, &s, 3);
     gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
+    gks_pipe_target_current(&t, nc);
     if (!err)
-        err = gks_pipe_emit_text(&nc, pos, d0, d1, str, &t);
+        err = gks_pipe_emit_text(nc, pos, d0, d1, str, &t);
     return err;
 }
 
@@ -263,7 +260,7 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
                        .n_points = m, .pts = pts };
         Grgb *pat = NULL;
         gks_pipe_prim_common(&p, t->a);
-        err = gks_attr_prim_fill(ws, t->a, (const double (*)[4])t->pat_m, &p, &pat);
+        err = gks_attr_prim_fill(ws, t->a, t->pat_m, &p, &pat);
         if (!is_set)
             p.attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
         if (!err)
@@ -323,21 +320,23 @@ done:
 int gks_pipe_area(int fctid, const gks_rec_xf *xf, size_t nloops, const size_t *cnt,
                   const gks_pipe_src *s, int is_set)
 {
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
+    gks_pipe_norm buf;
+    const gks_pipe_norm *nc;
+    if (gks_pipe_norm_get(&nc, &buf, xf))
         return 308;
     size_t n = 0;
     for (size_t k = 0; k < nloops; k++)
         n += cnt[k];
     if (n > INT32_MAX || nloops > INT32_MAX)
         return 300;
-    if (!mf_out(fctid, &nc,
+    if (gks_mf_on() &&
+        !mf_out(fctid, nc,
                 (gks_mf_prim){ .item = is_set ? GKSM_ITEM_FILL_AREA_SET3 : GKSM_ITEM_FILL_AREA3,
                                .n_loops = nloops, .cnt = cnt, .n = n, .p2 = s->p2, .p3 = s->p3,
                                .d3 = s->d3 }))
         return GKS_PIPE_REPORTED;
     int err = 0;
-    if (nc.seg) { /* stored in the open segment */
+    if (nc->seg) { /* stored in the open segment */
         int icnt_small[AREA_SMALL];
         int *icnt = nloops <= AREA_SMALL ? icnt_small : gks_alloc_array(nloops, sizeof *icnt);
         if (!icnt)
@@ -346,14 +345,14 @@ int gks_pipe_area(int fctid, const gks_rec_xf *xf, size_t nloops, const size_t *
             icnt[k] = (int)cnt[k];
         gks_seg_prim sp = { .kind = is_set ? GKS_SEG_FILL_AREA_SET : GKS_SEG_FILL_AREA,
                             .n_loops = (int)nloops, .loop_counts = icnt };
-        err = record(&nc, &sp, s, n);
+        err = record(nc, &sp, s, n);
         if (icnt != icnt_small)
             gks_free(icnt);
     }
     gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
+    gks_pipe_target_current(&t, nc);
     if (!err)
-        err = emit_area(&nc, nloops, cnt, n, s, is_set, &t);
+        err = emit_area(nc, nloops, cnt, n, s, is_set, &t);
     return err;
 }
 
@@ -393,30 +392,32 @@ int gks_pipe_emit_cell_array(const gks_pipe_norm *nc, const double pqr[3][3], in
 int gks_pipe_cell_array(int fctid, const gks_rec_xf *xf, const double pqr[3][3], int nx,
                         int ny, const Gint *colr)
 {
-    gks_pipe_norm nc;
-    if (gks_pipe_norm_setup(&nc, xf))
+    gks_pipe_norm buf;
+    const gks_pipe_norm *nc;
+    if (gks_pipe_norm_get(&nc, &buf, xf))
         return 308;
     gks_pipe_src s = { NULL, NULL, pqr };
     gks_seg_prim sp = { .kind = GKS_SEG_CELL_ARRAY, .n_loops = 1, .cell_nx = nx,
                         .cell_ny = ny, .cell_colr = colr };
     int err = 0;
-    if (!mf_out(fctid, &nc,
+    if (gks_mf_on() &&
+        !mf_out(fctid, nc,
                 (gks_mf_prim){ .item = GKSM_ITEM_CELL_ARRAY3, .n = 3, .d3 = pqr, .nx = nx,
                                .ny = ny, .colr = colr }))
         return GKS_PIPE_REPORTED;
-    if (nc.seg) { /* the corners are stored as P, Q, R in NDC3 */
+    if (nc->seg) { /* the corners are stored as P, Q, R in NDC3 */
         double o[3][3];
         for (int i = 0; i < 3; i++)
-            gks_xform_mat34_point(nc.pn, pqr[i], o[i]);
+            gks_xform_mat34_point(nc->pn, pqr[i], o[i]);
         sp.cell_p = (Gpoint3){ o[0][0], o[0][1], o[0][2] };
         sp.cell_q = (Gpoint3){ o[1][0], o[1][1], o[1][2] };
         sp.cell_r = (Gpoint3){ o[2][0], o[2][1], o[2][2] };
-        err = record(&nc, &sp, &s, 0);
+        err = record(nc, &sp, &s, 0);
     }
     gks_pipe_target t;
-    gks_pipe_target_current(&t, &nc);
+    gks_pipe_target_current(&t, nc);
     if (!err)
-        err = gks_pipe_emit_cell_array(&nc, pqr, nx, ny, colr, &t);
+        err = gks_pipe_emit_cell_array(nc, pqr, nx, ny, colr, &t);
     return err;
 }
 
