@@ -83,7 +83,7 @@ typedef struct gks_prim_attrs {
     int pat_nx, pat_ny;        /* pattern: cell counts and colours (row-major, row 0 at the */
     const Grgb *pattern;       /* reference point), NULL unless int_style == GSTYLE_PAT */
     Gpoint3 pat_ref;           /* pattern reference point and the pattern box's width and */
-    Gvec3 pat_width, pat_height; /* height vectors, all in NDC3 */
+    Gvec3 pat_width, pat_height; /* height vectors, all in NDC3 (0 unless pattern is set) */
     int edge_flag;             /* FILL AREA SET edges: 0 off, 1 on */
     int edgetype;              /* as linetype */
     double edgewidth;          /* edgewidth scale factor */

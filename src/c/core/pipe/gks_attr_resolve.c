@@ -249,8 +249,8 @@ int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[
         p->attrs.pat_nx = nx;
         p->attrs.pat_ny = ny;
         *pattern = c;
+        pattern_box(a, m, p); /* only a pattern has a box (ws_driver.h) */
     }
-    pattern_box(a, m, p);
     p->attrs.edge_flag = e.flag == GEDGE_ON;
     p->attrs.edgetype = e.type;
     p->attrs.edgewidth = e.width;

@@ -8,7 +8,21 @@
 #include "gks_context.h"
 #include "gks_mf_record.h"
 #include "gks_state.h"
+#include <stdint.h>
 #include <string.h>
+
+/* Whether n doubles are the same bit for bit (as memcmp, inline: it runs per primitive). */
+static int same_bits(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        uint64_t x, y;
+        memcpy(&x, &a[i], sizeof x);
+        memcpy(&y, &b[i], sizeof y);
+        if (x != y)
+            return 0;
+    }
+    return 1;
+}
 
 /* The open segment, or NULL. */
 static gks_segment *open_segment(void)
@@ -65,8 +79,8 @@ int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_re
         gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
         clip_on = sl->clip_ind == GIND_CLIP;
         if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
-            memcmp(norm_cache.w, w, sizeof w) == 0 && memcmp(norm_cache.v, box, sizeof box) == 0 &&
-            (!seg || memcmp(norm_cache.stran, seg->tran, sizeof norm_cache.stran) == 0)) {
+            same_bits(norm_cache.w, w, 6) && same_bits(norm_cache.v, box, 6) &&
+            (!seg || same_bits(&norm_cache.stran[0][0], &seg->tran[0][0], 12))) {
             *ncp = &norm_cache.nc;
             return 0;
         }
