@@ -4,8 +4,9 @@
 # tests/core/check_direction.cmake runs the same rules on allowed and refused examples.
 #
 #   - a driver (ws/<driver>) never sees the core's state: core, core/api, core/store; what
-#     it needs comes through ws_driver.h (core/pipe, pure stages such as text layout, it may
-#     use);
+#     it needs comes through ws_driver.h. Of core/pipe a driver drawing text itself may use
+#     the text layout (gks_text_layout.h, no GKS state); the pipeline's other headers
+#     include the core's and do not compile there;
 #   - the core (core, core/api, core/pipe, core/store) never sees a renderer or a driver:
 #     raster, ws/<driver>; it reaches the drivers through the driver table (ws) and TEXT's
 #     glyphs in font; ws/mf, the metafile format, is shared;

@@ -16,7 +16,7 @@ function(expect want rel)
   endif()
 endfunction()
 # as the tree has them
-expect(ok core/pipe core base font)
+expect(ok core/pipe core core/pipe core/store ws ws/mf base xform font)
 expect(ok core core core/api core/pipe core/store ws ws/mf base xform font)
 expect(ok core/store core ws ws/mf base xform)
 expect(ok ws/cairo ws ws/png base raster xform font core/pipe)
