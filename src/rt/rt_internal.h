@@ -20,6 +20,18 @@ void *rt_calloc_array(size_t n, size_t size);
 void *rt_realloc_array(void *p, size_t n, size_t size);
 /* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
 int rt_grow(void **p, size_t *cap, size_t need, size_t es);
+/* A growable array that never moves once it is large (beyond 4 MiB it lives in a reserved
+   range of address space and grows in place: no copy, no fresh pages for a copy); for the
+   arrays a scene's recording grows to hundreds of MB. Zero-initialised = empty. */
+typedef struct rt_big {
+    void *p;
+    size_t cap;        /* elements of size es that p holds */
+    size_t map_bytes;  /* its own mapping's size, 0: malloc'ed */
+} rt_big;
+/* room for at least need elements of size es (the same es every time): 1, or 0 (no storage;
+   the array is unchanged) */
+int rt_big_grow(rt_big *b, size_t need, size_t es);
+void rt_big_free(rt_big *b);
 
 /* ---- the thread pool (rt_pool.c): fork-join loops ---- */
 #define RT_PAR_MAX 64 /* threads at most */
@@ -153,10 +165,10 @@ struct rt_scene {
     rt_in_prim *in; size_t nin, capin;     /* polygons other than triangles, cell arrays */
     /* triangles (single-loop polygons of 3 vertices) as given, in id order: the committed
        triangles are these (tri == in_tri) unless commit culls (then a copy) */
-    rt_tri *in_tri; size_t nintri, capintri;
-    int32_t *in_tri_sf;               /* front, back surface per triangle */
-    uint32_t *in_tri_id;              /* primitive id per triangle */
-    size_t capintri_sf, capintri_id;
+    rt_big in_tri;                    /* rt_tri, nintri of them */
+    size_t nintri;
+    rt_big in_tri_sf;                 /* int32_t: front, back surface per triangle */
+    rt_big in_tri_id;                 /* uint32_t: primitive id per triangle */
     size_t nids;                      /* primitive ids handed out (all kinds) */
     double *in_xyz; size_t nxyz, capxyz;
     int *in_loops; size_t nloopsin, caploopsin;

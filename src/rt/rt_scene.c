@@ -38,6 +38,11 @@ void rt_surface_default(rt_surface *s)
     s->light_mask = ~(uint64_t)0;
 }
 
+/* the input triangles, their surfaces and ids */
+static rt_tri *in_tris(const rt_scene *sc) { return sc->in_tri.p; }
+static int32_t *in_tri_sf(const rt_scene *sc) { return sc->in_tri_sf.p; }
+static uint32_t *in_tri_id(const rt_scene *sc) { return sc->in_tri_id.p; }
+
 rt_scene *rt_scene_new(void)
 {
     rt_scene *sc = rt_calloc_array(1, sizeof *sc);
@@ -73,9 +78,9 @@ void rt_scene_free(rt_scene *sc)
     rt_scene_uncommit(sc);
     free(sc->surf);
     free(sc->in);
-    free(sc->in_tri);
-    free(sc->in_tri_sf);
-    free(sc->in_tri_id);
+    rt_big_free(&sc->in_tri);
+    rt_big_free(&sc->in_tri_sf);
+    rt_big_free(&sc->in_tri_id);
     free(sc->in_xyz);
     free(sc->in_loops);
     free(sc->in_rgb);
@@ -185,7 +190,7 @@ int rt_scene_truncate(rt_scene *sc, int n)
     if (!sc || n < 0 || (size_t)n > sc->nids)
         return RT_ERR_ARG;
     rt_scene_uncommit(sc);
-    while (sc->nintri > 0 && sc->in_tri_id[sc->nintri - 1] >= (uint32_t)n)
+    while (sc->nintri > 0 && in_tri_id(sc)[sc->nintri - 1] >= (uint32_t)n)
         sc->nintri--;
     while (sc->nin > 0 && sc->in[sc->nin - 1].id >= n) {
         const rt_in_prim *p = &sc->in[--sc->nin];
@@ -236,16 +241,14 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
     if (sc->nids >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
         return RT_ERR_LIMIT;
     if (nloops == 1 && nv == 3) { /* a triangle: kept as the committed scene will trace it */
-        if (!rt_grow((void **)&sc->in_tri, &sc->capintri, sc->nintri + 1, sizeof *sc->in_tri) ||
-            !rt_grow((void **)&sc->in_tri_sf, &sc->capintri_sf, 2 * (sc->nintri + 1),
-                     sizeof *sc->in_tri_sf) ||
-            !rt_grow((void **)&sc->in_tri_id, &sc->capintri_id, sc->nintri + 1,
-                     sizeof *sc->in_tri_id))
+        if (!rt_big_grow(&sc->in_tri, sc->nintri + 1, sizeof(rt_tri)) ||
+            !rt_big_grow(&sc->in_tri_sf, 2 * (sc->nintri + 1), sizeof(int32_t)) ||
+            !rt_big_grow(&sc->in_tri_id, sc->nintri + 1, sizeof(uint32_t)))
             return RT_ERR_NOMEM;
-        memcpy(sc->in_tri[sc->nintri].v, xyz, sizeof sc->in_tri[0].v);
-        sc->in_tri_sf[2 * sc->nintri] = front_surface;
-        sc->in_tri_sf[2 * sc->nintri + 1] = back_surface;
-        sc->in_tri_id[sc->nintri++] = (uint32_t)sc->nids;
+        memcpy(in_tris(sc)[sc->nintri].v, xyz, sizeof(rt_tri));
+        in_tri_sf(sc)[2 * sc->nintri] = front_surface;
+        in_tri_sf(sc)[2 * sc->nintri + 1] = back_surface;
+        in_tri_id(sc)[sc->nintri++] = (uint32_t)sc->nids;
         sc->committed = 0;
         return (int)sc->nids++;
     }
@@ -461,7 +464,7 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
         bb[3 + i] = -INFINITY;
     }
     for (size_t k = lo; k < hi; k++) {
-        const double *v = &sc->in_tri[k].v[0][0];
+        const double *v = &in_tris(sc)[k].v[0][0];
         rt_prim *pr = &sc->prim[k];
         double pb[6], c[3], ext, nrm[3];
         if (!rt_points_frame(v, 3, pb, c, &ext) ||
@@ -470,8 +473,8 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
             continue;
         }
         if (cull)
-            sc->tri[k] = sc->in_tri[k];
-        rt_prim_init(sc, pr, (int)sc->in_tri_id[k], sc->in_tri_sf[2 * k], sc->in_tri_sf[2 * k + 1]);
+            sc->tri[k] = in_tris(sc)[k];
+        rt_prim_init(sc, pr, (int)in_tri_id(sc)[k], in_tri_sf(sc)[2 * k], in_tri_sf(sc)[2 * k + 1]);
         memcpy(pr->ng, nrm, sizeof pr->ng);
         pr->kind = RT_KIND_TRI;
         pr->data = (uint32_t)k;
@@ -485,7 +488,7 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
 static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
 {
     const int cull = o && o->ncull > 0;
-    sc->tri = sc->in_tri;
+    sc->tri = in_tris(sc);
     if (cull) {
         sc->tri = rt_alloc_array(sc->nintri, sizeof *sc->tri);
         if (!sc->tri)
@@ -522,10 +525,10 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
             if (cull) {
                 sc->tri[w] = sc->tri[k];
             } else {
-                sc->in_tri[w] = sc->in_tri[k];
-                sc->in_tri_sf[2 * w] = sc->in_tri_sf[2 * k];
-                sc->in_tri_sf[2 * w + 1] = sc->in_tri_sf[2 * k + 1];
-                sc->in_tri_id[w] = sc->in_tri_id[k];
+                in_tris(sc)[w] = in_tris(sc)[k];
+                in_tri_sf(sc)[2 * w] = in_tri_sf(sc)[2 * k];
+                in_tri_sf(sc)[2 * w + 1] = in_tri_sf(sc)[2 * k + 1];
+                in_tri_id(sc)[w] = in_tri_id(sc)[k];
             }
             w++;
         }
