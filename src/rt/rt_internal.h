@@ -167,8 +167,12 @@ struct rt_scene {
        triangles are these (tri == in_tri) unless commit culls (then a copy) */
     rt_big in_tri;                    /* rt_tri, nintri of them */
     size_t nintri;
-    rt_big in_tri_sf;                 /* int32_t: front, back surface per triangle */
-    rt_big in_tri_id;                 /* uint32_t: primitive id per triangle */
+    rt_big in_tri_prim;               /* rt_prim per triangle, as the commit makes it (made
+                                         when the triangle is added; degenerate triangles
+                                         are not kept); the committed records are these
+                                         (prim == in_tri_prim.p) unless commit culls */
+    double tri_bb[6];                 /* box of the input triangles; ... */
+    int tri_bb_stale;                 /* ... 1: to be recomputed (after a truncation) */
     size_t nids;                      /* primitive ids handed out (all kinds) */
     double *in_xyz; size_t nxyz, capxyz;
     int *in_loops; size_t nloopsin, caploopsin;
@@ -183,6 +187,7 @@ struct rt_scene {
     rt_prim *prim; size_t nprim;
     rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
+    int prim_owned;                   /* 1: prim is allocated, 0: prim == in_tri_prim.p */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
     rt_poly *poly; size_t npoly;
     rt_cell *cell; size_t ncell;
