@@ -50,6 +50,8 @@ static const gks_wdt_pattern pred_pat[] = { { 2, 2, pat1 }, { 4, 4, pat2 }, { 3,
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
+const Grgb gks_wdt_white_black[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
+
 const gks_wdt_output gks_wdt_raster = {
     .line = { N(linetypes), linetypes, .n_sizes = 0, .nom = 1, .min = 1, .max = 256 },
     .marker = { N(markertypes), markertypes, .n_sizes = 0, .nom = 7, .min = 1, .max = 1024 },

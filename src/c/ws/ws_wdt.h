@@ -58,6 +58,8 @@ typedef struct gks_wdt_output {
 
 /* The raster workstations' table (PNG types and the null workstation). */
 extern const gks_wdt_output gks_wdt_raster;
+/* Predefined colours 0 white and 1 black (the workstations that draw nothing). */
+extern const Grgb gks_wdt_white_black[2];
 
 /* Whether v is in list[0..n-1]. */
 int gks_wdt_has(const int *list, int n, int v);
