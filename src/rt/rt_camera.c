@@ -242,45 +242,10 @@ void rt_camera_yterm(const rt_camera *cam, double py, double yt[4])
         yt[k] = cam->minv[k][1] * y;
 }
 
-int rt_camera_ray_terms(const rt_camera *cam, const double xt[4], const double yt[4], rt_ray *ray)
-{
-    const double zf = cam->box[5], zb = cam->box[4];
-    double hf[4], hb[4];
-    for (int k = 0; k < 4; k++) {
-        double xy = xt[k] + yt[k];
-        hf[k] = (xy + cam->minv[k][2] * zf) + cam->minv[k][3];
-        hb[k] = (xy + cam->minv[k][2] * zb) + cam->minv[k][3];
-    }
-    if (!(fabs(hf[3]) > 0.0) || !(fabs(hb[3]) > 0.0))
-        return RT_ERR_ARG;
-    double f[3], b[3];
-    for (int i = 0; i < 3; i++) {
-        f[i] = hf[i] / hf[3];
-        b[i] = hb[i] / hb[3];
-    }
-    /* finite f and b give a finite difference unless it overflows: the test on m covers it */
-    if (!isfinite(f[0]) || !isfinite(f[1]) || !isfinite(f[2]) || !isfinite(b[0]) ||
-        !isfinite(b[1]) || !isfinite(b[2]))
-        return RT_ERR_ARG;
-    double d[3] = {b[0] - f[0], b[1] - f[1], b[2] - f[2]};
-    double a0 = fabs(d[0]), a1 = fabs(d[1]), a2 = fabs(d[2]);
-    double m = a1 > a2 ? a1 : a2; /* no NaN here: same as fmax */
-    m = a0 > m ? a0 : m;
-    if (!(m > 0.0) || !isfinite(m))
-        return RT_ERR_ARG;
-    double u[3] = {d[0] / m, d[1] / m, d[2] / m};
-    double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int i = 0; i < 3; i++) {
-        ray->org[i] = f[i];
-        ray->dir[i] = u[i] / l;
-    }
-    ray->tmin = 0.0;
-    ray->tmax = m * l;
-    return RT_OK;
-}
-
-/* rt_camera_ray_terms for n <= RT_CAM_ROW rays of one raster row, written lane by lane (the
- * same operations per ray, so the same bits) for the compiler's vector divisions. */
+/* The primary rays of n <= RT_CAM_ROW raster points of one row, from their terms: the front
+ * and back points (x, y, zf) and (x, y, zb) through minv, divided; the ray from the front one
+ * towards the back one, unit direction, tmax their distance. Written lane by lane for the
+ * compiler's vector divisions; one ray (rt_camera_ray) takes the same path, so the same bits. */
 void rt_camera_rays_row(const rt_camera *cam, const double (*xt)[4], int n, const double yt[4],
                         rt_ray *ray, int *ok)
 {
@@ -384,5 +349,7 @@ int rt_camera_ray(const rt_camera *cam, double px, double py, rt_ray *ray)
     double xt[4], yt[4];
     rt_camera_xterm(cam, px, xt);
     rt_camera_yterm(cam, py, yt);
-    return rt_camera_ray_terms(cam, xt, yt, ray);
+    int ok;
+    rt_camera_rays_row(cam, (const double(*)[4])xt, 1, yt, ray, &ok);
+    return ok ? RT_OK : RT_ERR_ARG;
 }

@@ -290,14 +290,13 @@ double rt_now(void);
 
 /* ---- primary rays by raster row and column (rt_camera.c) ---- */
 
-/* rt_camera_ray(cam, px, py) == rt_camera_xterm(px) + rt_camera_yterm(py) +
- * rt_camera_ray_terms, bit for bit: the x terms can be computed once per raster column, the y
- * terms once per row. px, py must be finite; ray_terms returns RT_OK or RT_ERR_ARG. */
+/* rt_camera_ray(cam, px, py) == rt_camera_rays_row of rt_camera_xterm(px) and
+ * rt_camera_yterm(py), bit for bit: the x terms can be computed once per raster column, the y
+ * terms once per row. px, py must be finite. */
 void rt_camera_xterm(const rt_camera *cam, double px, double xt[4]);
 void rt_camera_yterm(const rt_camera *cam, double py, double yt[4]);
-int rt_camera_ray_terms(const rt_camera *cam, const double xt[4], const double yt[4], rt_ray *ray);
-/* rt_camera_ray_terms for the n <= RT_CAM_ROW raster points (xt[i], yt): rays (unusable
- * where ok[i] == 0) bit for bit as one by one, computed together (vector divisions). */
+/* The rays of the n <= RT_CAM_ROW raster points (xt[i], yt) (unusable where ok[i] == 0),
+ * computed together (vector divisions). */
 #define RT_CAM_ROW 16
 void rt_camera_rays_row(const rt_camera *cam, const double (*xt)[4], int n, const double yt[4],
                         rt_ray *ray, int *ok);

@@ -12,6 +12,7 @@
  * a zero direction) are left out. Documentation: docs/RAYTRACING.md.
  */
 #include "ws_raytrace.h"
+#include "ws_vrc.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_mpi.h"
@@ -212,45 +213,6 @@ void ws_rt_last_stats(const ws_rt *r, rt_stats *st) { *st = r->last; }
 
 static int clamp_view(int v) { return v >= 0 && v <= GKS_MAX_VIEW_IND ? v : 0; }
 
-/* Affine (homogeneous, divided when w != 1) point and linear direction through m. */
-static void xf_point(const Gmatrix3 m, double x, double y, double z, double o[3])
-{
-    double w = m[3][0] * x + m[3][1] * y + m[3][2] * z + m[3][3];
-    if (w == 0 || !isfinite(w))
-        w = 1;
-    for (int i = 0; i < 3; i++)
-        o[i] = (m[i][0] * x + m[i][1] * y + m[i][2] * z + m[i][3]) / w;
-}
-
-/* Whether m's last row is (0, 0, 0, 1) (the usual view orientation): then xf_point's w is 1
- * for every point (0 times a finite coordinate is 0; a non-finite one gives NaN, which it
- * also takes as 1), and xf_points gives the same values without the divisions. */
-static int xf_affine(const Gmatrix3 m)
-{
-    return m[3][0] == 0 && m[3][1] == 0 && m[3][2] == 0 && m[3][3] == 1;
-}
-
-/* xf_point of n points p (3 doubles each) into o (may be p). */
-static void xf_points(const Gmatrix3 m, const double *p, size_t n, double *o)
-{
-    if (!xf_affine(m)) {
-        for (size_t i = 0; i < n; i++)
-            xf_point(m, p[3 * i], p[3 * i + 1], p[3 * i + 2], o + 3 * i);
-        return;
-    }
-    for (size_t i = 0; i < n; i++) {
-        const double x = p[3 * i], y = p[3 * i + 1], z = p[3 * i + 2];
-        for (int k = 0; k < 3; k++)
-            o[3 * i + k] = m[k][0] * x + m[k][1] * y + m[k][2] * z + m[k][3];
-    }
-}
-
-static void xf_dir(const Gmatrix3 m, double x, double y, double z, double o[3])
-{
-    for (int i = 0; i < 3; i++)
-        o[i] = m[i][0] * x + m[i][1] * y + m[i][2] * z;
-}
-
 /* The attributes of prim. */
 static rt_attr attr_of(const gks_prim *prim)
 {
@@ -304,16 +266,8 @@ static int gks_err_of_rt(int rc)
 
 static int note_surface(rt_view_rec *vr, int id, uint64_t mask)
 {
-    if ((size_t)id >= vr->capsmask) {
-        size_t c = vr->capsmask ? 2 * vr->capsmask : 16;
-        while (c <= (size_t)id)
-            c *= 2;
-        uint64_t *p = gks_realloc_array(vr->smask, c, sizeof *p);
-        if (!p)
-            return 300;
-        vr->smask = p;
-        vr->capsmask = c;
-    }
+    if (gks_grow(&vr->smask, &vr->capsmask, (size_t)id + 1, sizeof *vr->smask))
+        return 300;
     vr->smask[id] = mask;
     if ((size_t)id >= vr->nsmask)
         vr->nsmask = (size_t)id + 1;
@@ -439,13 +393,8 @@ static double *clip_loops(const double *xyz, size_t st, const int *counts, int n
         }
         if (m < 3)
             continue;
-        if (nres + m > capres) {
-            capres = 2 * (nres + m);
-            double *nr = gks_realloc_array(res, capres, st * sizeof *res);
-            if (!nr)
-                goto fail;
-            res = nr;
-        }
+        if (gks_grow(&res, &capres, nres + m, st * sizeof *res))
+            goto fail;
         memcpy(res + st * nres, a, m * st * sizeof *a);
         nres += m;
         rc[nl++] = (int)m;
@@ -548,7 +497,7 @@ static int push_polygon(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, in
     if (e || !vr)
         return e;
     const Gview_rep3 *v = &ws->views[vi];
-    xf_points(v->ori_matrix, xyz, n_pts, xyz);
+    ws_vrc_points(v->ori_matrix, xyz, n_pts, xyz);
     double nm[3][3];
     if (vn && gks_xform_normal_matrix(v->ori_matrix, nm))
         vn = NULL; /* a singular view orientation: no usable normals */
@@ -587,7 +536,7 @@ static int push_cells(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, cons
     double c[3][3];
     const double *in[3] = { P, Q, R };
     for (int k = 0; k < 3; k++)
-        xf_point(v->ori_matrix, in[k][0], in[k][1], in[k][2], c[k]);
+        ws_vrc_point(v->ori_matrix, in[k][0], in[k][1], in[k][2], c[k]);
     /* a cell array beyond the tracer's coordinate range (its fourth corner P + Q - R
      * included) is not clipped: 308 instead of a silent omission (docs/RAYTRACING.md) */
     for (int k = 0; k < 3; k++)
@@ -909,7 +858,7 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     int *counts = (int *)(void *)(h + 1);
     double *xyz = (double *)(void *)((unsigned char *)counts + cbytes);
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
-    const int affine = xf_affine(ori);
+    const int affine = ws_vrc_affine(ori);
     size_t src = 0, q = 0;
     double big = 0.0; /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
     nl = 0;
@@ -917,14 +866,13 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         size_t m = (size_t)prim->loop_counts[k];
         if (m >= 3) {
             counts[nl++] = (int)m;
-            for (size_t i = 0; i < m; i++, q += 3) { /* xf_points, one pass from the prim */
+            for (size_t i = 0; i < m; i++, q += 3) { /* ws_vrc_points, one pass from the prim */
                 const Gpoint3 *p = &prim->pts[src + i];
                 double *o = xyz + q;
                 if (affine)
-                    for (int j = 0; j < 3; j++)
-                        o[j] = ori[j][0] * p->x + ori[j][1] * p->y + ori[j][2] * p->z + ori[j][3];
+                    ws_vrc_point_affine(ori, p->x, p->y, p->z, o);
                 else
-                    xf_point(ori, p->x, p->y, p->z, o);
+                    ws_vrc_point(ori, p->x, p->y, p->z, o);
                 for (int j = 0; j < 3; j++)
                     if (fabs(o[j]) > big)
                         big = fabs(o[j]);
@@ -982,21 +930,6 @@ int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     return err;
 }
 
-static void light_of(const Glight_src_rep *g, const Gmatrix3 ori, rt_light *l)
-{
-    memset(l, 0, sizeof *l);
-    l->type = g->type;
-    l->color[0] = g->colr.red;
-    l->color[1] = g->colr.green;
-    l->color[2] = g->colr.blue;
-    xf_point(ori, g->pos.x, g->pos.y, g->pos.z, l->position);
-    xf_dir(ori, g->dir.delta_x, g->dir.delta_y, g->dir.delta_z, l->direction);
-    l->c1 = g->atten[0];
-    l->c2 = g->atten[1];
-    l->concentration = g->conc_exp;
-    l->spread = g->spread_angle;
-}
-
 /* Makes view vi's scene ready to trace: the workstation's lights its surfaces use (in
  * ascending light index; those the tracer rejects left out), the surfaces' masks in the
  * scene's light numbering, and the commit; with cull (clipped secondary rays) primitives
@@ -1016,7 +949,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
         if (!((used >> i) & 1) || !ws->light_defined[i])
             continue;
         rt_light l;
-        light_of(&ws->lights[i], *ori, &l);
+        ws_vrc_light(&ws->lights[i], *ori, &l);
         int id = rt_scene_add_light(sc, &l);
         if (id == RT_ERR_NOMEM)
             return 300;

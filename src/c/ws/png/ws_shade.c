@@ -9,6 +9,7 @@
  * Lights are validated as gksrt validates them (a light the tracer rejects is left out here too).
  */
 #include "ws_shade.h"
+#include "ws_vrc.h"
 #include "rt_shade.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
@@ -16,21 +17,6 @@
 #include <string.h>
 
 #define SHADE_PI 3.14159265358979323846
-
-static void xf_point(const Gmatrix3 m, double x, double y, double z, double o[3])
-{
-    double w = m[3][0] * x + m[3][1] * y + m[3][2] * z + m[3][3];
-    if (w == 0 || !isfinite(w))
-        w = 1;
-    for (int i = 0; i < 3; i++)
-        o[i] = (m[i][0] * x + m[i][1] * y + m[i][2] * z + m[i][3]) / w;
-}
-
-static void xf_dir(const Gmatrix3 m, double x, double y, double z, double o[3])
-{
-    for (int i = 0; i < 3; i++)
-        o[i] = m[i][0] * x + m[i][1] * y + m[i][2] * z;
-}
 
 static double dot3(const double a[3], const double b[3])
 {
@@ -71,17 +57,7 @@ typedef rt_light vlight;
 
 static int light_vrc(const Glight_src_rep *g, const Gmatrix3 ori, vlight *l)
 {
-    memset(l, 0, sizeof *l);
-    l->type = g->type;
-    l->color[0] = g->colr.red;
-    l->color[1] = g->colr.green;
-    l->color[2] = g->colr.blue;
-    xf_point(ori, g->pos.x, g->pos.y, g->pos.z, l->position);
-    xf_dir(ori, g->dir.delta_x, g->dir.delta_y, g->dir.delta_z, l->direction);
-    l->c1 = g->atten[0];
-    l->c2 = g->atten[1];
-    l->concentration = g->conc_exp;
-    l->spread = g->spread_angle;
+    ws_vrc_light(g, ori, l);
     if (l->type < GLIGHT_AMBIENT || l->type > GLIGHT_SPOT || !finite3(l->color) ||
         l->color[0] < 0 || l->color[1] < 0 || l->color[2] < 0)
         return 0;
@@ -145,7 +121,7 @@ static int area_vertices(const gks_prim *prim, const Gmatrix3 ori, double (*v)[3
         const Gpoint3 c[4] = { *p, *r, *q, { p->x + q->x - r->x, p->y + q->y - r->y,
                                              p->z + q->z - r->z } };
         for (int i = 0; i < 4; i++)
-            xf_point(ori, c[i].x, c[i].y, c[i].z, v[i]);
+            ws_vrc_point(ori, c[i].x, c[i].y, c[i].z, v[i]);
         *nv = 4;
         *nloops = 1;
         *counts = &four;
@@ -163,7 +139,7 @@ static int area_vertices(const gks_prim *prim, const Gmatrix3 ori, double (*v)[3
     if (total != (size_t)prim->n_points)
         return 0;
     for (int i = 0; i < prim->n_points; i++)
-        xf_point(ori, prim->pts[i].x, prim->pts[i].y, prim->pts[i].z, v[i]);
+        ws_vrc_point(ori, prim->pts[i].x, prim->pts[i].y, prim->pts[i].z, v[i]);
     *nv = (size_t)prim->n_points;
     *nloops = prim->n_loops;
     *counts = prim->loop_counts;
@@ -249,7 +225,7 @@ static const Gview_rep3 *view_of(const gks_ws *ws, const gks_prim *prim)
 
 void ws_shade_vrc_point(const gks_ws *ws, const gks_prim *prim, const Gpoint3 *p, double o[3])
 {
-    xf_point(view_of(ws, prim)->ori_matrix, p->x, p->y, p->z, o);
+    ws_vrc_point(view_of(ws, prim)->ori_matrix, p->x, p->y, p->z, o);
 }
 
 int ws_shade_vrc_normal(const gks_ws *ws, const gks_prim *prim, const Gvec3 *n, double o[3])
