@@ -6,7 +6,7 @@
  * EXTENT (3). They never call ERROR HANDLING; nothing but *err_ind is written on error.
  */
 #include "gks_legacy.h"
-#include "gks_attr.h"
+#include "gks_attr_resolve.h"
 #include "gks_error.h"
 #include "gks_gdp.h"
 #include "gks_store.h"

@@ -3,36 +3,35 @@
  * gks_replay.c -- segment replay, the stage of the output pipeline that sends stored
  * primitives again: regeneration of a workstation (gks_ws_regenerate), a segment drawn
  * onto one workstation (ASSOCIATE, COPY SEGMENT TO WORKSTATION) and INSERT SEGMENT.
- * Each stored primitive goes through the same stages as a new one (gks_output_int.h,
- * gks_out_emit_*), with its segment's transformation and its bound attributes and
+ * Each stored primitive goes through the same stages as a new one (core/pipe/gks_pipe.h,
+ * gks_pipe_emit_*), with its segment's transformation and its bound attributes and
  * clipping volume. It calls the output pipeline and the segment store; neither calls it.
  */
 #include "gks_replay.h"
 #include "gks_alloc.h"
-#include "gks_output_data.h"
-#include "gks_output_int.h"
+#include "gks_pipe.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
 #include <string.h>
 
 /* A stored primitive (NDC3 geometry; TEXT in WC3 through its bound normalization) sent
  * to the target through the affine map S (NDC3 -> NDC3) and clipped at box when clip_on. */
-static int emit_stored(target *t, const double S[3][4], const double box[6], int clip_on,
-                       const gks_seg_prim *sp)
+static int emit_stored(gks_pipe_target *t, const double S[3][4], const double box[6],
+                       int clip_on, const gks_seg_prim *sp)
 {
-    norm_ctx nc;
+    gks_pipe_norm nc;
     double sn[3][4];
     gks_xform_mat34_multiply(S, sp->bound->norm, sn); /* WC3 -> final NDC3 */
-    if (gks_out_norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
+    if (gks_pipe_norm_from(&nc, sp->kind == GKS_SEG_TEXT ? (const double (*)[4])sn : S, box, clip_on))
         return 0;
     t->a = &sp->bound->attrs;
     memcpy(t->pat_m, sn, sizeof sn);
     size_t n = (size_t)sp->n_points;
     switch (sp->kind) {
     case GKS_SEG_POLYLINE:
-        return gks_out_emit_polyline(&nc, sp->pts, n, t);
+        return gks_pipe_emit_polyline(&nc, sp->pts, n, t);
     case GKS_SEG_POLYMARKER:
-        return gks_out_emit_polymarker(&nc, sp->pts, n, t);
+        return gks_pipe_emit_polymarker(&nc, sp->pts, n, t);
     case GKS_SEG_TEXT: {
         if (n != 3 || sp->str_len < 1)
             return 0;
@@ -42,7 +41,7 @@ static int emit_stored(target *t, const double S[3][4], const double box[6], int
         const double pos[3] = { sp->pts[0].x, sp->pts[0].y, sp->pts[0].z };
         const double d0[3] = { sp->pts[1].x, sp->pts[1].y, sp->pts[1].z };
         const double d1[3] = { sp->pts[2].x, sp->pts[2].y, sp->pts[2].z };
-        int err = gks_out_emit_text(&nc, pos, d0, d1, str, t);
+        int err = gks_pipe_emit_text(&nc, pos, d0, d1, str, t);
         gks_free(str);
         return err;
     }
@@ -57,7 +56,7 @@ static int emit_stored(target *t, const double S[3][4], const double box[6], int
                 cnt[k] = (size_t)sp->loop_counts[k];
         else
             cnt[0] = n;
-        int err = gks_out_emit_area(&nc, nl, cnt, n, sp->pts, sp->kind == GKS_SEG_FILL_AREA_SET, t);
+        int err = gks_pipe_emit_area(&nc, nl, cnt, n, sp->pts, sp->kind == GKS_SEG_FILL_AREA_SET, t);
         gks_free(cnt);
         return err;
     }
@@ -65,10 +64,10 @@ static int emit_stored(target *t, const double S[3][4], const double box[6], int
         const double pqr[3][3] = { { sp->cell_p.x, sp->cell_p.y, sp->cell_p.z },
                                    { sp->cell_q.x, sp->cell_q.y, sp->cell_q.z },
                                    { sp->cell_r.x, sp->cell_r.y, sp->cell_r.z } };
-        return gks_out_emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, t);
+        return gks_pipe_emit_cell_array(&nc, pqr, sp->cell_nx, sp->cell_ny, sp->cell_colr, t);
     }
     case GKS_SEG_AREA_DATA:
-        return gks_area_data_emit_stored(&nc, sp, t);
+        return gks_pipe_data_emit_stored(&nc, sp, t);
     }
     return 0;
 }
@@ -79,7 +78,7 @@ int gks_replay_segment(gks_ws *ws, const gks_segment *seg)
     for (size_t k = 0; k < gks_seg_count(seg) && !err; k++) {
         gks_seg_prim sp;
         gks_seg_get(seg, k, &sp);
-        target t = { .only = ws };
+        gks_pipe_target t = { .only = ws };
         err = emit_stored(&t, (const double (*)[4])seg->tran, sp.clip_box, sp.clip, &sp);
     }
     return err;
@@ -105,7 +104,7 @@ int gks_replay_segments(gks_ws *ws)
 /* One stored primitive of an inserted segment, mapped by M (segment transformation, then
  * insert transformation), stored into the open segment as a new primitive with the current
  * clipping volume. */
-static int insert_record(gks_segment *open, const double M[3][4], const norm_ctx *cur,
+static int insert_record(gks_segment *open, const double M[3][4], const gks_pipe_norm *cur,
                          const gks_seg_prim *sp)
 {
     gks_seg_bound *bound = gks_alloc_array(1, sizeof *bound);
@@ -147,8 +146,8 @@ done:
 
 int gks_replay_insert(const gks_segment *seg, const double ins[3][4])
 {
-    norm_ctx cur;
-    if (gks_out_norm_setup(&cur, NULL))
+    gks_pipe_norm cur;
+    if (gks_pipe_norm_setup(&cur, NULL))
         return 308;
     double M[3][4], total[3][4];
     gks_xform_mat34_multiply(ins, seg->tran, M); /* segment transformation first */
@@ -162,11 +161,11 @@ int gks_replay_insert(const gks_segment *seg, const double ins[3][4])
         gks_seg_prim sp;
         gks_seg_get(seg, k, &sp);
         if (open && sp.kind == GKS_SEG_AREA_DATA)
-            err = gks_area_data_insert(open, (const double (*)[4])M, &cur, &sp);
+            err = gks_pipe_data_insert(open, (const double (*)[4])M, &cur, &sp);
         else if (open)
             err = insert_record(open, (const double (*)[4])M, &cur, &sp);
-        target t;
-        gks_out_target_current(&t, &cur);
+        gks_pipe_target t;
+        gks_pipe_target_current(&t, &cur);
         if (!err)
             err = emit_stored(&t, (const double (*)[4])total, cur.box, cur.clip_on, &sp);
     }

@@ -1,14 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * gks_attr.h -- attribute resolution for one workstation (ISO 7942 4.4.4-4.4.8): each
- * aspect comes from the current individual value or, by its aspect source flag, from
- * the workstation's bundle of the current index (index 1 if that index is not defined);
- * then the workstation realizes it (unsupported linetype -> 1, marker type -> 3, font ->
- * 1, interior style -> HOLLOW, hatch style -> its first one, pattern index -> 1; widths
- * and sizes clamped to the workstation's range; undefined colour index -> 1).
+ * gks_attr_resolve.h -- the attribute stage of the output pipeline: attribute resolution
+ * for one workstation (ISO 7942 4.4.4-4.4.8). Each aspect comes from the current
+ * individual value or, by its aspect source flag, from the workstation's bundle of the
+ * current index (index 1 if that index is not defined); then the workstation realizes it
+ * (unsupported linetype -> 1, marker type -> 3, font -> 1, interior style -> HOLLOW,
+ * hatch style -> its first one, pattern index -> 1; widths and sizes clamped to the
+ * workstation's range; undefined colour index -> 1).
  */
-#ifndef GKS_ATTR_H
-#define GKS_ATTR_H
+#ifndef GKS_ATTR_RESOLVE_H
+#define GKS_ATTR_RESOLVE_H
 #include "gks_private.h"
 #include "gks_context.h"
 #include "gks_text_layout.h"

@@ -1,0 +1,98 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * gks_pipe_norm.c -- the normalization stage (gks_pipe_norm.h). The current state's
+ * context is kept with what it was made from and reused while those settings stay the
+ * same (a FILL AREA 3 per triangle would otherwise make it on every call).
+ */
+#include "gks_pipe_norm.h"
+#include "gks_context.h"
+#include "gks_mf_record.h"
+#include "gks_state.h"
+#include <string.h>
+
+/* The open segment, or NULL. */
+static gks_segment *open_segment(void)
+{
+    const gks_state_list *sl = gks_ctx()->sl;
+    return sl->open_seg ? gks_seg_find(sl->segs, sl->open_seg) : NULL;
+}
+
+int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box[6], int clip_on)
+{
+    memcpy(nc->m, m, sizeof nc->m);
+    memcpy(nc->n, m, sizeof nc->n);
+    memcpy(nc->pn, m, sizeof nc->pn);
+    memcpy(nc->pat, m, sizeof nc->pat);
+    memcpy(nc->box, box, sizeof nc->box);
+    nc->clip_on = clip_on;
+    nc->seg = NULL;
+    gks_xform_clip_init(&nc->clip);
+    if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
+        return -1;
+    return 0;
+}
+
+/* The last current-state context and what it was made from (the current window and
+ * viewport 3, clipping indicator, open segment and its transformation), compared by
+ * value, so no setting function needs to know of it; not used for a recorded
+ * normalization (INTERPRET ITEM). */
+static struct {
+    int valid;
+    double w[6], v[6];
+    int clip_on;
+    const gks_segment *seg;
+    double stran[3][4];
+    gks_pipe_norm nc;
+} norm_cache;
+
+/* WC3 -> NDC3 by the current normalization transformation, then the open segment's
+ * transformation (if a segment is open), clipping at the current viewport 3 when the
+ * clipping indicator is on. For a recorded normalization (ov), its matrix and clipping
+ * volume replace the current ones, and NDC3 points enter through the identity. */
+int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *ov)
+{
+    static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
+    const gks_state_list *sl = gks_ctx()->sl;
+    double n[3][4], box[6], w[6];
+    int clip_on;
+    gks_segment *seg = open_segment();
+    if (ov) {
+        memcpy(n, ov->norm, sizeof n);
+        memcpy(box, ov->box, sizeof box);
+        clip_on = ov->clip_on;
+    } else {
+        gks_limit3_array(&sl->tran[sl->cur_tnr].win, w);
+        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+        clip_on = sl->clip_ind == GIND_CLIP;
+        if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
+            memcmp(norm_cache.w, w, sizeof w) == 0 && memcmp(norm_cache.v, box, sizeof box) == 0 &&
+            (!seg || memcmp(norm_cache.stran, seg->tran, sizeof norm_cache.stran) == 0)) {
+            *nc = norm_cache.nc;
+            return 0;
+        }
+        norm_cache.valid = 0;
+        if (gks_xform_norm_tran3(w, box, n)) /* gks_cur_norm_matrix */
+            return 308;
+    }
+    const double (*pm)[4] = ov && ov->ndc_pts ? id : (const double (*)[4])n;
+    if (gks_pipe_norm_from(nc, pm, box, clip_on))
+        return 308;
+    nc->seg = seg;
+    memcpy(nc->n, n, sizeof nc->n);
+    memcpy(nc->pat, n, sizeof nc->pat);
+    if (seg) {
+        gks_xform_mat34_multiply(seg->tran, pm, nc->m);
+        gks_xform_mat34_multiply(seg->tran, n, nc->pat);
+    }
+    if (!ov) {
+        memcpy(norm_cache.w, w, sizeof w);
+        memcpy(norm_cache.v, box, sizeof box);
+        norm_cache.clip_on = clip_on;
+        norm_cache.seg = seg;
+        if (seg)
+            memcpy(norm_cache.stran, seg->tran, sizeof norm_cache.stran);
+        norm_cache.nc = *nc;
+        norm_cache.valid = 1;
+    }
+    return 0;
+}
