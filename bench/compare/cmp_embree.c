@@ -5,6 +5,9 @@
  *   cmp_embree rays RES mesh.off...   primary, shadow and incoherent Mrays/s, ratios, hit
  *                                     agreement; build time and memory of each mesh
  *   cmp_embree build                  build time and memory per primitive, 10^4 .. 10^6 triangles
+ *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
+ *                                     inside, misses; the rays below), for profilers: e.g.
+ *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
  *
  * Rays: RES x RES pixel-centre primary rays of the framing camera (rt_camera_ray, in VRC3),
  * the same rays rounded to float for Embree. Shadow rays: from every primary hit of ours
@@ -513,9 +516,11 @@ static int cmd_rays(int res, int nfiles, char **files)
         if (ours_stats(s.rt, &rs) != 0)
             fails++;
         const double omem = (double)rs.memory_bytes;
-        snprintf(bld_rows[f], sizeof bld_rows[0], "%-24s %7zu | %8.4f %8.4f %6.2f | %8.1f %8.1f %6.2f\n", base,
-                 s.ntris, ob, eb, ob / eb, omem / s.ntris, (double)emem / s.ntris,
-                 omem / (double)emem);
+        snprintf(bld_rows[f], sizeof bld_rows[0],
+                 "%-24s %7zu | %8.4f %8.4f %6.2f | %8.1f %8.1f %6.2f | %8.1f %8.1f %8.1f\n", base, s.ntris, ob,
+                 eb, ob / eb, omem / s.ntris, (double)emem / s.ntris, omem / (double)emem,
+                 (double)rs.tri_bytes / s.ntris, (double)rs.grid_bytes / s.ntris,
+                 (omem - (double)rs.tri_bytes - (double)rs.grid_bytes) / s.ntris);
     next:
         if (esc)
             rtcReleaseScene(esc);
@@ -549,9 +554,12 @@ static int cmd_rays(int res, int nfiles, char **files)
     printf("\nMesh build time and memory: rt_scene_commit (default options, 1 thread) vs rtcCommitScene, process CPU "
            "seconds, best of %d; memory as in the random-triangle series below\n",
            REPS);
-    printf("%-24s %7s | %8s %8s %6s | %8s %8s %6s\n", "mesh", "tris", "o.build", "E.build", "o/E", "o.B/tri",
-           "E.B/tri", "o/E");
-    printf("%-24s %7s | %8s %8s %6s | %8s %8s %6s\n", "", "", "s", "s", "", "", "", "");
+    printf("o.B/tri in parts (rt_stats): tri = the triangle records (rt_prim and the double vertices rt_tri), "
+           "grid = both grid levels, rest = the other scene arrays\n");
+    printf("%-24s %7s | %8s %8s %6s | %8s %8s %6s | %8s %8s %8s\n", "mesh", "tris", "o.build", "E.build", "o/E",
+           "o.B/tri", "E.B/tri", "o/E", "tri", "grid", "rest");
+    printf("%-24s %7s | %8s %8s %6s | %8s %8s %6s | %8s %8s %8s\n", "", "", "s", "s", "", "", "", "", "B/tri",
+           "B/tri", "B/tri");
     for (int f = 0; f < nfiles; f++)
         fputs(bld_rows[f], stdout);
     printf("(issue 21's goals: build o/E <= 1.5, mem o/E <= 1.0)\n");
@@ -657,6 +665,71 @@ static int cmd_build(void)
     return fails ? 1 : 0;
 }
 
+/* the one traced pass of cmd_ours (a function of its own: callgrind --toggle-collect=ours_pass) */
+__attribute__((noinline)) static void ours_pass(const rt_scene *sc, int shadow, size_t m, const rt_ray *rays,
+                                                rt_hit *hits, unsigned char *occ)
+{
+    if (shadow)
+        rt_occluded(sc, m, rays, occ);
+    else
+        rt_intersect(sc, m, rays, hits);
+}
+
+/* ours only on one ray set, traced once after the rays are made (for callgrind/perf) */
+static int cmd_ours(int res, const char *set, const char *file)
+{
+    bs_scene s;
+    char err[512];
+    bs_options opt = {.size = res};
+    if (bs_load(file, &opt, &s, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        bs_free(&s);
+        return 1;
+    }
+    size_t n = (size_t)res * res, nbox = n < IBOX_RAYS ? n : IBOX_RAYS, m = 0;
+    rt_ray *rays = bs_alloc(n, sizeof *rays), *set_rays = bs_alloc(n, sizeof *set_rays);
+    rt_ray *cand = bs_alloc(nbox, sizeof *cand);
+    rt_hit *hits = bs_alloc(n, sizeof *hits), *tmp = bs_alloc(n, sizeof *tmp);
+    unsigned char *occ = bs_alloc(n, 1);
+    int rc = 1;
+    if (!rays || !set_rays || !cand || !hits || !tmp || !occ) {
+        fprintf(stderr, "out of memory\n");
+        goto done;
+    }
+    for (int y = 0; y < res; y++)
+        for (int x = 0; x < res; x++)
+            rt_camera_ray(&s.cam, x + 0.5, y + 0.5, &rays[(size_t)y * res + x]);
+    if (strcmp(set, "primary") != 0)
+        rt_intersect(s.rt, n, rays, hits);
+    if (!strcmp(set, "primary")) {
+        memcpy(set_rays, rays, n * sizeof *rays);
+        m = n;
+    } else if (!strcmp(set, "shadow")) {
+        m = make_shadow_rays(&s, hits, n, set_rays);
+    } else if (!strcmp(set, "inside")) {
+        m = make_inside_rays(rays, hits, n, set_rays);
+    } else if (!strcmp(set, "misses")) {
+        m = make_ibox_rays(&s, nbox, set_rays, cand, tmp);
+    } else {
+        fprintf(stderr, "unknown ray set %s (primary, shadow, inside, misses)\n", set);
+        goto done;
+    }
+    double t0 = bs_thread_cpu();
+    ours_pass(s.rt, !strcmp(set, "shadow"), m, set_rays, hits, occ);
+    double t = bs_thread_cpu() - t0;
+    printf("%s %s: %zu rays, %.3f s CPU, %.2f Mrays/s (one pass)\n", file, set, m, t, t > 0 ? m / t * 1e-6 : 0.0);
+    rc = 0;
+done:
+    free(rays);
+    free(set_rays);
+    free(cand);
+    free(hits);
+    free(tmp);
+    free(occ);
+    bs_free(&s);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 4 && !strcmp(argv[1], "rays")) {
@@ -669,6 +742,14 @@ int main(int argc, char **argv)
     }
     if (argc == 2 && !strcmp(argv[1], "build"))
         return cmd_build();
-    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build\n");
+    if (argc == 5 && !strcmp(argv[1], "ours")) {
+        int res = atoi(argv[2]);
+        if (res < 1 || res > 8192) {
+            fprintf(stderr, "bad resolution\n");
+            return 2;
+        }
+        return cmd_ours(res, argv[3], argv[4]);
+    }
+    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours RES SET mesh.off\n");
     return 2;
 }

@@ -312,6 +312,9 @@ typedef struct rt_stats {
     double build_seconds;             /* commit time */
     double render_seconds;
     size_t memory_bytes;              /* scene + grid */
+    size_t tri_bytes;                 /* of memory_bytes: the triangles' records (rt_prim and
+                                         the vertices, rt_tri) */
+    size_t grid_bytes;                /* of memory_bytes: both grid levels */
 } rt_stats;
 
 typedef void (*rt_progress_fn)(void *user, int tiles_done, int tiles_total);

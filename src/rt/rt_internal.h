@@ -185,6 +185,7 @@ struct rt_scene {
     double scale;                     /* max |coordinate| of the scene box (epsilons) */
     double build_seconds;
     size_t memory_bytes;
+    size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
 
 /* ---- traversal (rt_grid.c) ---- */

@@ -1275,6 +1275,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     st.prims = sc->nprim;
     st.build_seconds = sc->build_seconds;
     st.memory_bytes = sc->memory_bytes;
+    st.tri_bytes = sc->tri_bytes;
+    st.grid_bytes = sc->grid_bytes;
     if (stats)
         *stats = st;
     rt_job_release(&job, w, nt);

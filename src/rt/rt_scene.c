@@ -872,6 +872,13 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         rt_scene_uncommit(sc);
         return rc;
     }
+    sc->tri_bytes = sc->ntri * (sizeof *sc->prim + sizeof *sc->tri);
+    sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
+                                     sc->grid.nsrefs) * sizeof(uint32_t) +
+                                        sc->grid.nsubs * sizeof(rt_subgrid) +
+                                        (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
+                                        (sc->grid.dist ? sc->grid.ncells * sizeof(uint8_t) : 0)
+                                  : 0;
     sc->memory_bytes = sizeof *sc + sc->nprim * sizeof *sc->prim + sc->ntri * sizeof *sc->tri +
                        sc->nquad * sizeof *sc->quad +
                        sc->npoly * sizeof *sc->poly + sc->ncell * sizeof *sc->cell +
@@ -881,12 +888,7 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                        (sc->prim_vd ? sc->nprim * sizeof(uint32_t) + sc->nvd * sizeof *sc->vd +
                                           sc->nvdv * (3 * sizeof(double) + 6 * sizeof(float))
                                     : 0) +
-                       (sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
-                                        sc->grid.nsrefs) * sizeof(uint32_t) +
-                                           sc->grid.nsubs * sizeof(rt_subgrid) +
-                                           (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
-                                           (sc->grid.dist ? sc->grid.ncells * sizeof(uint8_t) : 0)
-                                     : 0);
+                       sc->grid_bytes;
     for (size_t k = 0; sc->pgrid && k < sc->npoly; k++)
         sc->memory_bytes += rt_pgrid_bytes(&sc->pgrid[k]);
     sc->build_seconds = rt_now() - t0;
