@@ -18,7 +18,7 @@ static const err_entry err_table[] = {
 
 typedef struct { const char *name; unsigned states; } fn_entry;
 static const fn_entry fn_table[] = {
-#define GKS_FN(id, sym, name, states) [id] = { name, states },
+#define GKS_FN(id, sym, name, states, mf) [id] = { name, states },
 #include "gks_functions.def"
 #undef GKS_FN
 };
