@@ -134,9 +134,10 @@ static void ws_tran_changed(gks_ws *ws, int fct)
 }
 
 /* SET WORKSTATION WINDOW (3) / VIEWPORT (3): the workstation (7, 20, 25, 33, 36), then
- * box b (51; a window outside the NPC unit cube 53, a viewport outside the display
- * space 54). The workstation, or NULL after reporting. */
-static gks_ws *ws_limits_checked(int fct, Gint ws_id, const double *b, int viewport)
+ * box b of dimension dim (51; a window outside the NPC unit cube 53, a viewport outside the
+ * display space 54), then the requested window or viewport set. The workstation, or NULL
+ * after reporting. */
+static gks_ws *ws_limits_set(int fct, Gint ws_id, const double *b, int dim, int viewport)
 {
     if (gks_check_state(fct))
         return NULL;
@@ -150,16 +151,16 @@ static gks_ws *ws_limits_checked(int fct, Gint ws_id, const double *b, int viewp
                          : gks_xform_check_ws_window3(b);
     if (err)
         GKS_FAIL_RET(err, fct, NULL);
+    put_limits(viewport ? &ws->req_vp : &ws->req_win, b, dim);
     return ws;
 }
 
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
 {
     double b[6];
-    gks_ws *ws = ws_limits_checked(GFN_SWKWN, ws_id, box2(ws_win, b), 0);
+    gks_ws *ws = ws_limits_set(GFN_SWKWN, ws_id, box2(ws_win, b), 2, 0);
     if (!ws)
         return;
-    put_limits(&ws->req_win, b, 2);
     GKS_MF_WS(SWKWN, ws_id, &ws_win->x_min);
     ws_tran_changed(ws, GFN_SWKWN);
 }
@@ -167,10 +168,9 @@ GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
 {
     double b[6];
-    gks_ws *ws = ws_limits_checked(GFN_SWKVP, ws_id, box2(ws_vp, b), 1);
+    gks_ws *ws = ws_limits_set(GFN_SWKVP, ws_id, box2(ws_vp, b), 2, 1);
     if (!ws)
         return;
-    put_limits(&ws->req_vp, b, 2);
     GKS_MF_WS(SWKVP, ws_id, &ws_vp->x_min);
     ws_tran_changed(ws, GFN_SWKVP);
 }
@@ -178,10 +178,9 @@ GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
 GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
 {
     double b[6];
-    gks_ws *ws = ws_limits_checked(GFN_SWKW3, ws_id, box3(ws_win, b), 0);
+    gks_ws *ws = ws_limits_set(GFN_SWKW3, ws_id, box3(ws_win, b), 3, 0);
     if (!ws)
         return;
-    put_limits(&ws->req_win, b, 3);
     GKS_MF_WS(SWKW3, ws_id, &ws_win->x_min);
     ws_tran_changed(ws, GFN_SWKW3);
 }
@@ -189,10 +188,9 @@ GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
 GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
 {
     double b[6];
-    gks_ws *ws = ws_limits_checked(GFN_SWKV3, ws_id, box3(ws_vp, b), 1);
+    gks_ws *ws = ws_limits_set(GFN_SWKV3, ws_id, box3(ws_vp, b), 3, 1);
     if (!ws)
         return;
-    put_limits(&ws->req_vp, b, 3);
     GKS_MF_WS(SWKV3, ws_id, &ws_vp->x_min);
     ws_tran_changed(ws, GFN_SWKV3);
 }
