@@ -358,13 +358,14 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *length_list = t->n_font_precs;
-    if ((*err_ind = gks_list_start(start, t->n_font_precs)))
+    gks_list_out w = { .num = &f->num_font_precs, .cap = f->font_precs ? cap : 0, .start = start };
+    for (int i = 0; i < t->n_font_precs; i++) {
+        int k = gks_list_slot(&w);
+        if (k >= 0)
+            f->font_precs[k] = t->font_precs[i];
+    }
+    if ((*err_ind = gks_list_end(&w, length_list)))
         return;
-    int k = 0;
-    for (int i = start; i < t->n_font_precs && k < cap && f->font_precs; i++)
-        f->font_precs[k++] = t->font_precs[i];
-    f->num_font_precs = k;
     f->num_char_hts = t->n_char_hts;
     f->min_char_ht = t->min_char_ht;
     f->max_char_ht = t->max_char_ht;
