@@ -92,6 +92,20 @@ static gks_segment *existing(int fctid, Gint name)
     return s;
 }
 
+/* Entry of SET SEGMENT TRANSFORMATION (3): the segment, then 2003 for a NULL matrix and
+ * 308 for one with n elements of which one is not finite (GKS has no error of its own for
+ * it: 308, as for the other non-finite reals, docs/BINDING.md; stored it would make the
+ * segment vanish). The segment, or NULL after reporting. */
+static gks_segment *existing_tran(int fctid, Gint name, const double *m, int n)
+{
+    gks_segment *s = existing(fctid, name);
+    if (s && !m)
+        GKS_FAIL_RET(2003, fctid, NULL);
+    if (s && !finite_n(m, n))
+        GKS_FAIL_RET(308, fctid, NULL);
+    return s;
+}
+
 /* Entry of SET VISIBILITY, HIGHLIGHTING, DETECTABILITY: the segment, then 2000 for a value
  * other than off and on. The segment, or NULL after reporting. */
 static gks_segment *existing_switch(int fctid, Gint name, int v, int off, int on)
@@ -198,15 +212,10 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    gks_segment *s = existing(GFN_SSGT3, seg_name);
+    gks_segment *s =
+        existing_tran(GFN_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
     if (!s)
         return;
-    if (!tran_matrix)
-        GKS_FAIL(2003, GFN_SSGT3);
-    /* GKS has no error of its own for a non-finite matrix: 308, as for the other
-     * non-finite reals (docs/BINDING.md); stored it would make the segment vanish. */
-    if (!finite_n(&tran_matrix[0][0], 12))
-        GKS_FAIL(308, GFN_SSGT3);
     memcpy(s->tran, tran_matrix, sizeof s->tran);
     GKS_MF(SSGT3, seg_name, &tran_matrix[0][0]);
     if (s->vis)
@@ -215,13 +224,9 @@ GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    gks_segment *s = existing(GFN_SSGT, seg_name);
+    gks_segment *s = existing_tran(GFN_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
     if (!s)
         return;
-    if (!tran_matrix)
-        GKS_FAIL(2003, GFN_SSGT);
-    if (!finite_n(&tran_matrix[0][0], 6))
-        GKS_FAIL(308, GFN_SSGT);
     /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
      * transformation is the 3-D one with identity z row and no z coupling). */
     gks_xform_mat23_to_mat34(tran_matrix, s->tran);
