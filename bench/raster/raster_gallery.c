@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * raster_gallery.c -- renders every primitive and style of the raster module into one
- * picture for visual inspection: the stroke font, hatch styles, pattern, cell array,
+ * picture for visual inspection: the stroke font (src/c/font), hatch styles, pattern, cell array,
  * linetypes and widths, markers, holes, a self-intersecting star and interpenetrating
  * z-buffered triangles. Usage: raster_gallery out.png [ss]
  */
 #include "raster.h"
+#include "gks_font.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,11 +16,11 @@ static void text(gks_raster_fb *fb, const char *s, double x, double y, double sc
 {
     gks_raster_line a = {.rgb = {rgb[0], rgb[1], rgb[2]}, .width = 1, .type = 1};
     for (; *s; s++) {
-        gks_raster_glyph g;
-        gks_raster_font_glyph((unsigned char)*s, &g);
+        gks_glyph g;
+        gks_font_get_glyph(1, (unsigned char)*s, &g);
         const double *xy = g.xy;
         for (int k = 0; k < g.n_strokes; k++) {
-            gks_raster_pt p[GKS_RASTER_GLYPH_MAX_POINTS];
+            gks_raster_pt p[GKS_GLYPH_MAX_POINTS];
             for (int i = 0; i < g.stroke_len[k]; i++)
                 p[i] = (gks_raster_pt){x + scale * xy[2 * i], y + scale * xy[2 * i + 1], 0};
             gks_raster_polyline(fb, (size_t)g.stroke_len[k], p, &a);

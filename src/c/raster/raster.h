@@ -213,55 +213,6 @@ int gks_raster_polyline_cont(gks_raster_fb *fb, size_t n, const gks_raster_pt *p
 int gks_raster_markers(gks_raster_fb *fb, size_t n, const gks_raster_pt *pts, int type,
                        double size, const gks_raster_line *attr);
 
-/* --- Stroke font -------------------------------------------------------------------- */
-/* A simplex sans stroke font for printable ASCII 32..126, compiled in. Font units: base
- * line 0, cap height 21, descender -7; glyph x from 0 to its advance width.
- * Faces derived from it by rule (no further glyph data), under the font numbers RAL GKS
- * gave its Roman software fonts (Starlink SUN/83, "Fonts"):
- *      1, -101  simplex sans (the table itself)
- *   -102        bold sans: every stroke drawn three times, 0, 0.5 and 1 unit to the
- *               right; advances and the widest advance grow by 1
- *   -104        seriffed: a serif 4 units wide (clipped to the body) at each free end of
- *               a steep stroke on the base line, x-height (14), cap line or descender
- *   -105        seriffed italic: -104 sheared, x += 0.2 * y
- *   -106        seriffed bold: -104 drawn as -102
- *   -107        seriffed bold italic
- * All faces share the vertical metrics below. */
-#define GKS_RASTER_GLYPH_MAX_POINTS 400
-#define GKS_RASTER_GLYPH_MAX_STROKES 64
-
-typedef struct gks_raster_font_metrics {
-    double top;      /* 25: above accents / parentheses */
-    double cap;      /* 21 */
-    double half;     /* 10.5: half of the cap height */
-    double base;     /* 0 */
-    double bottom;   /* -7: descender */
-    double max_advance;
-} gks_raster_font_metrics;
-
-typedef struct gks_raster_glyph {
-    double advance;                        /* advance width, font units */
-    int n_strokes;                         /* polylines */
-    int n_points;
-    int stroke_len[GKS_RASTER_GLYPH_MAX_STROKES]; /* points of each polyline, in order */
-    double xy[2 * GKS_RASTER_GLYPH_MAX_POINTS];  /* x0,y0,x1,y1,... font units */
-} gks_raster_glyph;
-
-/* Font metrics of font 1 (constant). */
-void gks_raster_font_metrics_get(gks_raster_font_metrics *m);
-/* Strokes and advance of character ch in font 1. Characters outside 32..126 return E_ARG
- * and the glyph of '?' (so text layout can still proceed); E_ARG with nothing filled on
- * NULL. */
-int gks_raster_font_glyph(int ch, gks_raster_glyph *g);
-
-/* 1 if font is one of the faces above, else 0. */
-int gks_raster_font_has(int font);
-/* Metrics of font (font 1's for a font not in the list). */
-void gks_raster_font_face_metrics(int font, gks_raster_font_metrics *m);
-/* Strokes and advance of ch in font: as gks_raster_font_glyph; a font not in the list
- * returns E_ARG and the glyph of font 1. */
-int gks_raster_font_face_glyph(int font, int ch, gks_raster_glyph *g);
-
 /* --- PNG ---------------------------------------------------------------------------- */
 /* PNG compression: GKS_RASTER_PNG_FAST (0) is zlib's run-length strategy with the SUB row
  * filter -- 3 to 5 times faster to encode than libpng's defaults, files 0.9 to 2 times as

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * gks_text_layout.c -- TEXT (3) layout with the compiled-in stroke fonts (the font of
- * gks_text_attrs: font 1 or a face derived from it, src/c/raster/raster.h).
+ * gks_text_attrs: font 1 or a face derived from it, src/c/font/gks_font.h).
  *
  * Geometry (ISO 7942 5.4.4, applied in the text plane): the character height is the
  * font's cap height; k = char_ht / cap converts font units. Within the plane, u is the
@@ -17,7 +17,7 @@
  * line of the bottom one and HALF midway between them.
  */
 #include "gks_text_layout.h"
-#include "raster.h"
+#include "gks_font.h"
 #include <math.h>
 #include <string.h>
 
@@ -66,14 +66,14 @@ typedef struct {
     double adv_total;       /* extent length along the path + gap (concatenation) */
     size_t n;
     int font;               /* the face drawn */
-    gks_raster_font_metrics m;
+    gks_font_metrics m;
     double b[2], u[2];      /* base and up unit vectors in the plane */
 } layout;
 
 static double advance_of(int font, int ch)
 {
-    gks_raster_glyph g;
-    gks_raster_font_face_glyph(font, ch, &g);
+    gks_glyph g;
+    gks_font_get_glyph(font, ch, &g);
     return g.advance;
 }
 
@@ -85,8 +85,8 @@ static int layout_init(const gks_text_attrs *a, const char *s, layout *L)
     if (!(ul > 0) || !isfinite(ul) || !(a->char_ht > 0) || !isfinite(a->char_ht) ||
         !(a->char_expan > 0) || !isfinite(a->char_expan) || !isfinite(a->char_space))
         return -1;
-    L->font = gks_raster_font_has(a->font) ? a->font : 1;
-    gks_raster_font_face_metrics(L->font, &L->m);
+    L->font = gks_font_has(a->font) ? a->font : 1;
+    gks_font_get_metrics(L->font, &L->m);
     L->u[0] = a->up[0] / ul;
     L->u[1] = a->up[1] / ul;
     L->b[0] = L->u[1];
@@ -185,16 +185,16 @@ int gks_text_strokes(const gks_text_frame *f, const gks_text_attrs *a, const cha
     if (!s || layout_init(a, s, &L))
         return 0;
     double pen = a->path == GPATH_LEFT ? L.box[1] : 0;
-    double pts[GKS_RASTER_GLYPH_MAX_POINTS][3];
+    double pts[GKS_GLYPH_MAX_POINTS][3];
     for (size_t i = 0; i < L.n; i++) {
-        gks_raster_glyph g;
-        gks_raster_font_face_glyph(L.font, (unsigned char)s[i], &g);
+        gks_glyph g;
+        gks_font_get_glyph(L.font, (unsigned char)s[i], &g);
         double adv = g.advance * L.kx, x0, y0;
         char_origin(a, &L, i, adv, &pen, &x0, &y0);
         int off = 0;
-        for (int k = 0; k < g.n_strokes && k < GKS_RASTER_GLYPH_MAX_STROKES; k++) {
+        for (int k = 0; k < g.n_strokes && k < GKS_GLYPH_MAX_STROKES; k++) {
             int len = g.stroke_len[k];
-            if (len < 0 || off + len > g.n_points || off + len > GKS_RASTER_GLYPH_MAX_POINTS)
+            if (len < 0 || off + len > g.n_points || off + len > GKS_GLYPH_MAX_POINTS)
                 break;
             for (int j = 0; j < len; j++)
                 to_wc(f, &L, x0 + g.xy[2 * (off + j)] * L.kx, y0 + g.xy[2 * (off + j) + 1] * L.k,

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * gks_text_layout.h -- TEXT (3) layout: turns a string into polyline strokes of the compiled-in
- * stroke font (src/c/raster) in WC3, honouring character height, expansion factor,
+ * stroke font (src/c/font) in WC3, honouring character height, expansion factor,
  * spacing, up vector, text path and alignment, in the text plane of TEXT 3 (the x/y
  * plane for 2-D TEXT). No GKS state: the caller passes resolved attributes.
  */
@@ -13,7 +13,7 @@
 
 /* Resolved text attributes (after the aspect source flags and the workstation). */
 typedef struct gks_text_attrs {
-    int font;                  /* a stroke font of src/c/raster (gks_raster_font_has); any
+    int font;                  /* a stroke font of src/c/font (gks_font_has); any
                                   other number lays out as font 1 */
     Gtext_prec prec;           /* text precision */
     double char_expan, char_space, char_ht;

@@ -32,6 +32,7 @@
  * equal files.
  */
 #include "gks_alloc.h"
+#include "gks_font.h"
 #include "gks_text_layout.h"
 #include "gks_xform.h"
 #include "raster.h"
@@ -444,10 +445,10 @@ static void markers(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
 
 static const cairo_user_data_key_t vec_face_key;
 
-/* The glyph of ch in stroke font font (raster.h: unknown numbers draw as font 1). */
-static void glyph_of(int font, int ch, gks_raster_glyph *g)
+/* The glyph of ch in stroke font font (gks_font.h: unknown numbers draw as font 1). */
+static void glyph_of(int font, int ch, gks_glyph *g)
 {
-    gks_raster_font_face_glyph(font, ch, g);
+    gks_font_get_glyph(font, ch, g);
 }
 
 /* A segment of a stroke as a quadrilateral, counter-clockwise (x right, y up) like
@@ -475,7 +476,7 @@ static cairo_status_t glyph_render(cairo_scaled_font_t *sf, unsigned long glyph,
                                                       &vec_face_key);
     if (!f || glyph < 32 || glyph > 126)
         return CAIRO_STATUS_USER_FONT_ERROR;
-    gks_raster_glyph g;
+    gks_glyph g;
     glyph_of(f->font, (int)glyph, &g);
     cairo_matrix_t fm, ctm;
     cairo_scaled_font_get_font_matrix(sf, &fm);
@@ -487,9 +488,9 @@ static cairo_status_t glyph_render(cairo_scaled_font_t *sf, unsigned long glyph,
     double hw = 0.5 * VEC_PEN_PT / s, ex = f->expan / VEC_EM, ey = -1.0 / VEC_EM;
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     int off = 0;
-    for (int k = 0; k < g.n_strokes && k < GKS_RASTER_GLYPH_MAX_STROKES; k++) {
+    for (int k = 0; k < g.n_strokes && k < GKS_GLYPH_MAX_STROKES; k++) {
         int len = g.stroke_len[k];
-        if (len < 0 || off + len > g.n_points || off + len > GKS_RASTER_GLYPH_MAX_POINTS)
+        if (len < 0 || off + len > g.n_points || off + len > GKS_GLYPH_MAX_POINTS)
             break;
         const double *p = g.xy + 2 * off;
         for (int j = 0; j + 1 < len && len >= 2; j++)

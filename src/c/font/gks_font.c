@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_font.c -- the compiled-in stroke font: a simplex sans for ASCII 32..126 drawn
+ * gks_font.c -- the compiled-in stroke font: a simplex sans for ASCII 32..126 drawn
  * for this library on an integer grid (cap height 21, x-height 14, base line 0,
  * descender -7, brackets up to 25). Each glyph is its advance width and a string of
  * polylines: points "x,y" separated by blanks, polylines separated by '|'.
- * The bold, seriffed and italic faces (raster.h) are computed from these glyphs.
+ * The bold, seriffed and italic faces (gks_font.h) are computed from these glyphs.
  */
-#include "raster.h"
+#include "gks_font.h"
 #include <math.h>
 #include <string.h>
 
@@ -145,15 +145,14 @@ static const glyph_def font[95] = {
     /* 126 ~ */ {24, "3,7 4,10 6,11 8,11 10,10 14,8 16,7 18,7 20,8 21,11"},
 };
 
-void gks_raster_font_metrics_get(gks_raster_font_metrics *m)
+/* The metrics of the table (font 1). */
+static void base_metrics(gks_font_metrics *m)
 {
-    if (!m)
-        return;
     int adv = 0;
     for (int i = 0; i < 95; i++)
         if (font[i].advance > adv)
             adv = font[i].advance;
-    *m = (gks_raster_font_metrics){.top = 25.0, .cap = 21.0, .half = 10.5, .base = 0.0,
+    *m = (gks_font_metrics){.top = 25.0, .cap = 21.0, .half = 10.5, .base = 0.0,
                                    .bottom = -7.0, .max_advance = adv};
 }
 
@@ -170,13 +169,12 @@ static int parse_int(const char **s)
     return sign * v;
 }
 
-int gks_raster_font_glyph(int ch, gks_raster_glyph *g)
+/* The glyph of ch in the table (font 1); '?' and E_ARG for ch outside 32..126. */
+static int base_glyph(int ch, gks_glyph *g)
 {
-    if (!g)
-        return GKS_RASTER_E_ARG;
-    int rc = GKS_RASTER_OK;
+    int rc = GKS_FONT_OK;
     if (ch < 32 || ch > 126) {
-        rc = GKS_RASTER_E_ARG;
+        rc = GKS_FONT_E_ARG;
         ch = '?';
     }
     const glyph_def *d = &font[ch - 32];
@@ -184,7 +182,7 @@ int gks_raster_font_glyph(int ch, gks_raster_glyph *g)
     g->advance = d->advance;
     const char *s = d->strokes;
     int in_stroke = 0;
-    while (*s && g->n_points < GKS_RASTER_GLYPH_MAX_POINTS) {
+    while (*s && g->n_points < GKS_GLYPH_MAX_POINTS) {
         if (*s == ' ') {
             s++;
             continue;
@@ -195,7 +193,7 @@ int gks_raster_font_glyph(int ch, gks_raster_glyph *g)
             continue;
         }
         if (!in_stroke) {
-            if (g->n_strokes == GKS_RASTER_GLYPH_MAX_STROKES)
+            if (g->n_strokes == GKS_GLYPH_MAX_STROKES)
                 break;
             g->n_strokes++;
             in_stroke = 1;
@@ -240,24 +238,26 @@ static const face *face_of(int font)
     return NULL;
 }
 
-int gks_raster_font_has(int font)
+int gks_font_has(int font)
 {
     return face_of(font) != NULL;
 }
 
-void gks_raster_font_face_metrics(int font, gks_raster_font_metrics *m)
+void gks_font_get_metrics(int font, gks_font_metrics *m)
 {
-    gks_raster_font_metrics_get(m);
+    if (!m)
+        return;
+    base_metrics(m);
     const face *f = face_of(font);
-    if (m && f && f->bold)
+    if (f && f->bold)
         m->max_advance += BOLD_OFFSET;
 }
 
 /* Append a polyline of n points (xy pairs) to g; 0 if it does not fit. */
-static int add_stroke(gks_raster_glyph *g, int n, const double *xy)
+static int add_stroke(gks_glyph *g, int n, const double *xy)
 {
-    if (g->n_strokes == GKS_RASTER_GLYPH_MAX_STROKES ||
-        g->n_points + n > GKS_RASTER_GLYPH_MAX_POINTS)
+    if (g->n_strokes == GKS_GLYPH_MAX_STROKES ||
+        g->n_points + n > GKS_GLYPH_MAX_POINTS)
         return 0;
     memcpy(&g->xy[2 * g->n_points], xy, sizeof(double) * 2 * (size_t)n);
     g->stroke_len[g->n_strokes++] = n;
@@ -267,7 +267,7 @@ static int add_stroke(gks_raster_glyph *g, int n, const double *xy)
 
 /* Whether (x, y), end point e of a stroke, is also another end point of the glyph's first
  * n strokes (a junction, or the closing point of a loop): no serif there. */
-static int joins(const gks_raster_glyph *g, const int *first, int n, int e, double x,
+static int joins(const gks_glyph *g, const int *first, int n, int e, double x,
                  double y)
 {
     for (int t = 0; t < n; t++) {
@@ -280,10 +280,10 @@ static int joins(const gks_raster_glyph *g, const int *first, int n, int e, doub
 }
 
 /* Serifs at the free ends of steep strokes on the base, x-height, cap or descender line. */
-static void add_serifs(gks_raster_glyph *g)
+static void add_serifs(gks_glyph *g)
 {
     static const double lines[] = { 0.0, 14.0, 21.0, -7.0 };
-    int first[GKS_RASTER_GLYPH_MAX_STROKES];
+    int first[GKS_GLYPH_MAX_STROKES];
     int n_orig = g->n_strokes;
     for (int s = 0, off = 0; s < n_orig; s++) {
         first[s] = off;
@@ -310,21 +310,21 @@ static void add_serifs(gks_raster_glyph *g)
     }
 }
 
-int gks_raster_font_face_glyph(int font, int ch, gks_raster_glyph *g)
+int gks_font_get_glyph(int font, int ch, gks_glyph *g)
 {
     if (!g)
-        return GKS_RASTER_E_ARG;
-    int rc = gks_raster_font_glyph(ch, g);
+        return GKS_FONT_E_ARG;
+    int rc = base_glyph(ch, g);
     const face *f = face_of(font);
     if (!f)
-        return GKS_RASTER_E_ARG;
+        return GKS_FONT_E_ARG;
     if (f->serif)
         add_serifs(g);
     if (f->bold) { /* copies at BOLD_OFFSET / 2 and BOLD_OFFSET to the right */
         int n_orig = g->n_strokes;
         for (int c = 1; c <= 2; c++)
             for (int s = 0, off = 0; s < n_orig; s++) {
-                double xy[2 * GKS_RASTER_GLYPH_MAX_POINTS];
+                double xy[2 * GKS_GLYPH_MAX_POINTS];
                 int len = g->stroke_len[s];
                 for (int j = 0; j < len; j++) {
                     xy[2 * j] = g->xy[2 * (off + j)] + 0.5 * c * BOLD_OFFSET;
