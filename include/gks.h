@@ -152,7 +152,7 @@ enum {
  * RAL GKSE_PAR list); GKS-3D and this library's additions are numbered from 109 on.
  * The full list is in docs/BINDING.md. */
 enum {
-#define GKS_FN(id, sym, name, states) GFN_##sym = id,
+#define GKS_FN(id, sym, name, states, mf) GFN_##sym = id,
 #include "gks_functions.def"
 #undef GKS_FN
     GFN_COUNT_DUMMY_

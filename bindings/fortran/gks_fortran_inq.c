@@ -96,8 +96,9 @@ FAPI void FNAME(gqpxa, GQPXA)(const fint *wkid, const freal *px, const freal *py
         *errind = e;
         return;
     }
+    /* An inquiry reports storage overflow in ERRIND only (never through ERROR HANDLING). */
     size_t n = (size_t)*dx * (size_t)*dy;
-    Gint *buf = malloc(n * sizeof *buf);
+    Gint *buf = gks_f77_alloc(n, sizeof *buf);
     if (!buf) {
         *errind = 300;
         return;

@@ -18,7 +18,12 @@
 
 /* Large arrays (vertices, references, cell offsets of big meshes: tens of MB read at random
    by the traversal) are asked to live on transparent huge pages where the system does so
-   only on request (THP "madvise" mode): far fewer TLB misses. Advice only; failure ignored. */
+   only on request (THP "madvise" mode): far fewer TLB misses. Advice only; failure ignored.
+   Only the pages inside the block are advised, which leaves the block's own mapping split:
+   realloc's mremap then fails and glibc copies the block into fresh memory. That is kept on
+   purpose: on this project's Linux VM, huge pages that mremap moved to another address were
+   200 times slower to read at random afterwards (docs/bench/scale.md); arrays that grow large
+   while the scene is recorded use rt_big below, which never moves. */
 #define RT_HUGE_MIN ((size_t)4 << 20)
 
 static void rt_huge(void *p, size_t bytes)
@@ -99,4 +104,61 @@ double rt_now(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ---- arrays that do not move once large ---- */
+
+/* Address space reserved for a large rt_big at once (pages are given only when touched):
+   64 GiB, 9*10^8 triangles of 72 B. Where the system refuses it (strict overcommit, an
+   address-space limit) the array stays on malloc. */
+#define RT_BIG_RESERVE ((size_t)1 << 36)
+
+#if defined(__linux__) && defined(MAP_NORESERVE) && defined(MAP_ANONYMOUS)
+#define RT_BIG_MAP 1
+#endif
+
+int rt_big_grow(rt_big *b, size_t need, size_t es)
+{
+    size_t bytes;
+    if (need <= b->cap)
+        return 1;
+    if (!rt_mul_ok(need, es, &bytes) || es == 0)
+        return 0;
+#ifdef RT_BIG_MAP
+    if (bytes > RT_HUGE_MIN) {
+        size_t res = bytes > RT_BIG_RESERVE / 2 ? 2 * bytes : RT_BIG_RESERVE;
+        if (bytes <= SIZE_MAX / 2 && !b->map_bytes) { /* only one move: malloc -> mapping */
+            void *q = mmap(NULL, res, PROT_READ | PROT_WRITE,
+                           MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+            if (q != MAP_FAILED) {
+#ifdef MADV_HUGEPAGE
+                (void)madvise(q, res, MADV_HUGEPAGE);
+#endif
+                if (b->p && b->cap)
+                    memcpy(q, b->p, b->cap * es);
+                free(b->p);
+                b->p = q;
+                b->map_bytes = res;
+                b->cap = res / es;
+                return 1;
+            }
+        }
+        if (b->map_bytes) /* the reservation is full: a larger one is not tried */
+            return 0;
+    }
+#endif
+    return rt_grow(&b->p, &b->cap, need, es);
+}
+
+void rt_big_free(rt_big *b)
+{
+#ifdef RT_BIG_MAP
+    if (b->map_bytes)
+        (void)munmap(b->p, b->map_bytes);
+    else
+#endif
+        free(b->p);
+    b->p = NULL;
+    b->cap = 0;
+    b->map_bytes = 0;
 }

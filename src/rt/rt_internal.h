@@ -20,6 +20,18 @@ void *rt_calloc_array(size_t n, size_t size);
 void *rt_realloc_array(void *p, size_t n, size_t size);
 /* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
 int rt_grow(void **p, size_t *cap, size_t need, size_t es);
+/* A growable array that never moves once it is large (beyond 4 MiB it lives in a reserved
+   range of address space and grows in place: no copy, no fresh pages for a copy); for the
+   arrays a scene's recording grows to hundreds of MB. Zero-initialised = empty. */
+typedef struct rt_big {
+    void *p;
+    size_t cap;        /* elements of size es that p holds */
+    size_t map_bytes;  /* its own mapping's size, 0: malloc'ed */
+} rt_big;
+/* room for at least need elements of size es (the same es every time): 1, or 0 (no storage;
+   the array is unchanged) */
+int rt_big_grow(rt_big *b, size_t need, size_t es);
+void rt_big_free(rt_big *b);
 
 /* ---- the thread pool (rt_pool.c): fork-join loops ---- */
 #define RT_PAR_MAX 64 /* threads at most */
@@ -153,10 +165,14 @@ struct rt_scene {
     rt_in_prim *in; size_t nin, capin;     /* polygons other than triangles, cell arrays */
     /* triangles (single-loop polygons of 3 vertices) as given, in id order: the committed
        triangles are these (tri == in_tri) unless commit culls (then a copy) */
-    rt_tri *in_tri; size_t nintri, capintri;
-    int32_t *in_tri_sf;               /* front, back surface per triangle */
-    uint32_t *in_tri_id;              /* primitive id per triangle */
-    size_t capintri_sf, capintri_id;
+    rt_big in_tri;                    /* rt_tri, nintri of them */
+    size_t nintri;
+    rt_big in_tri_prim;               /* rt_prim per triangle, as the commit makes it (made
+                                         when the triangle is added; degenerate triangles
+                                         are not kept); the committed records are these
+                                         (prim == in_tri_prim.p) unless commit culls */
+    double tri_bb[6];                 /* box of the input triangles; ... */
+    int tri_bb_stale;                 /* ... 1: to be recomputed (after a truncation) */
     size_t nids;                      /* primitive ids handed out (all kinds) */
     double *in_xyz; size_t nxyz, capxyz;
     int *in_loops; size_t nloopsin, caploopsin;
@@ -171,6 +187,7 @@ struct rt_scene {
     rt_prim *prim; size_t nprim;
     rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
+    int prim_owned;                   /* 1: prim is allocated, 0: prim == in_tri_prim.p */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
     rt_poly *poly; size_t npoly;
     rt_cell *cell; size_t ncell;

@@ -38,9 +38,20 @@ void rt_surface_default(rt_surface *s)
     s->light_mask = ~(uint64_t)0;
 }
 
+/* the input triangles and their primitive records */
+static rt_tri *in_tris(const rt_scene *sc) { return sc->in_tri.p; }
+static rt_prim *in_tri_prims(const rt_scene *sc) { return sc->in_tri_prim.p; }
+
+static int rt_tri_prim(const rt_scene *sc, const double *v, int id, int front, int back,
+                       rt_prim *pr);
+static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6]);
+static void rt_bbox_add(double bb[6], const double p[3]);
+
 rt_scene *rt_scene_new(void)
 {
     rt_scene *sc = rt_calloc_array(1, sizeof *sc);
+    if (sc)
+        rt_tri_bbox(sc, 0, 0, sc->tri_bb);
     return sc;
 }
 
@@ -49,7 +60,9 @@ static void rt_scene_uncommit(rt_scene *sc)
     for (size_t k = 0; sc->pgrid && k < sc->npoly; k++)
         rt_pgrid_free(&sc->pgrid[k]);
     free(sc->pgrid); sc->pgrid = NULL;
-    free(sc->prim); sc->prim = NULL; sc->nprim = 0;
+    if (sc->prim_owned)
+        free(sc->prim);
+    sc->prim = NULL; sc->nprim = 0; sc->prim_owned = 0;
     if (sc->tri_owned)
         free(sc->tri);
     sc->tri = NULL; sc->ntri = 0; sc->tri_owned = 0;
@@ -73,9 +86,8 @@ void rt_scene_free(rt_scene *sc)
     rt_scene_uncommit(sc);
     free(sc->surf);
     free(sc->in);
-    free(sc->in_tri);
-    free(sc->in_tri_sf);
-    free(sc->in_tri_id);
+    rt_big_free(&sc->in_tri);
+    rt_big_free(&sc->in_tri_prim);
     free(sc->in_xyz);
     free(sc->in_loops);
     free(sc->in_rgb);
@@ -185,8 +197,10 @@ int rt_scene_truncate(rt_scene *sc, int n)
     if (!sc || n < 0 || (size_t)n > sc->nids)
         return RT_ERR_ARG;
     rt_scene_uncommit(sc);
-    while (sc->nintri > 0 && sc->in_tri_id[sc->nintri - 1] >= (uint32_t)n)
+    while (sc->nintri > 0 && in_tri_prims(sc)[sc->nintri - 1].id >= n) {
         sc->nintri--;
+        sc->tri_bb_stale = 1;
+    }
     while (sc->nin > 0 && sc->in[sc->nin - 1].id >= n) {
         const rt_in_prim *p = &sc->in[--sc->nin];
         sc->nxyz = p->xyz0;
@@ -235,17 +249,20 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
         return lrc;
     if (sc->nids >= INT_MAX || sc->nxyz + 3 * nv > (size_t)UINT32_MAX * 2)
         return RT_ERR_LIMIT;
-    if (nloops == 1 && nv == 3) { /* a triangle: kept as the committed scene will trace it */
-        if (!rt_grow((void **)&sc->in_tri, &sc->capintri, sc->nintri + 1, sizeof *sc->in_tri) ||
-            !rt_grow((void **)&sc->in_tri_sf, &sc->capintri_sf, 2 * (sc->nintri + 1),
-                     sizeof *sc->in_tri_sf) ||
-            !rt_grow((void **)&sc->in_tri_id, &sc->capintri_id, sc->nintri + 1,
-                     sizeof *sc->in_tri_id))
-            return RT_ERR_NOMEM;
-        memcpy(sc->in_tri[sc->nintri].v, xyz, sizeof sc->in_tri[0].v);
-        sc->in_tri_sf[2 * sc->nintri] = front_surface;
-        sc->in_tri_sf[2 * sc->nintri + 1] = back_surface;
-        sc->in_tri_id[sc->nintri++] = (uint32_t)sc->nids;
+    if (nloops == 1 && nv == 3) {
+        /* a triangle: kept as the committed scene will trace it, with its primitive record
+           as the commit makes it; a degenerate one (never traced) only takes its id */
+        rt_prim pr;
+        if (rt_tri_prim(sc, xyz, (int)sc->nids, front_surface, back_surface, &pr)) {
+            if (!rt_big_grow(&sc->in_tri, sc->nintri + 1, sizeof(rt_tri)) ||
+                !rt_big_grow(&sc->in_tri_prim, sc->nintri + 1, sizeof(rt_prim)))
+                return RT_ERR_NOMEM;
+            pr.data = (uint32_t)sc->nintri;
+            memcpy(in_tris(sc)[sc->nintri].v, xyz, sizeof(rt_tri));
+            in_tri_prims(sc)[sc->nintri++] = pr;
+            for (int i = 0; i < 3; i++)
+                rt_bbox_add(sc->tri_bb, xyz + 3 * i);
+        }
         sc->committed = 0;
         return (int)sc->nids++;
     }
@@ -432,11 +449,39 @@ static void rt_prim_init(const rt_scene *sc, rt_prim *pr, int id, int front, int
     pr->opaque = sc->surf[front].transparency == 0.0 && sc->surf[back].transparency == 0.0;
 }
 
-/* Triangles first, in id order: the committed triangles are the input's (degenerate ones
-   removed from it for good) unless o culls, which commits a copy of the kept ones. In nt parts
-   of consecutive triangles (threads): each part writes the primitive records of its triangles
-   at their input places (kind RT_KIND_NONE: left out); only when some are left out a serial
-   pass closes the gaps, so the result is the same for any nt. */
+/* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
+   commit traces it (data set by the caller): 0 if it is degenerate (never traced). */
+static int rt_tri_prim(const rt_scene *sc, const double *v, int id, int front, int back,
+                       rt_prim *pr)
+{
+    static const int three = 3;
+    double pb[6], c[3], ext, nrm[3];
+    if (!rt_points_frame(v, 3, pb, c, &ext) || !rt_poly_normal(v, 3, &three, 1, c, ext, nrm))
+        return 0;
+    memset(pr, 0, sizeof *pr);
+    rt_prim_init(sc, pr, id, front, back);
+    memcpy(pr->ng, nrm, sizeof pr->ng);
+    pr->kind = RT_KIND_TRI;
+    return 1;
+}
+
+/* box of the input triangles lo .. hi-1 */
+static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6])
+{
+    for (int i = 0; i < 3; i++) {
+        bb[i] = INFINITY;
+        bb[3 + i] = -INFINITY;
+    }
+    for (size_t k = lo; k < hi; k++)
+        for (int i = 0; i < 3; i++)
+            rt_bbox_add(bb, in_tris(sc)[k].v[i]);
+}
+
+/* Triangles first, in id order. Their records were made when they were added (degenerate ones
+   were not kept), so without culling the committed triangles and records are the input's.
+   With culling (o->ncull) the kept ones are copied, in nt parts of consecutive triangles
+   (threads): each part writes the records of its triangles at their input places (kind
+   RT_KIND_NONE: culled); a serial pass closes the gaps, so the result is the same for any nt. */
 #define RT_KIND_NONE 255
 
 typedef struct rt_tri_job {
@@ -451,8 +496,6 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
     rt_tri_job *j = arg;
     rt_scene *sc = j->sc;
     const rt_build_options *o = j->o;
-    const int cull = o && o->ncull > 0;
-    static const int three = 3;
     double *bb = j->bb[part];
     size_t lo, hi, kept = 0;
     rt_par_range(sc->nintri, part, nparts, &lo, &hi);
@@ -461,20 +504,14 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
         bb[3 + i] = -INFINITY;
     }
     for (size_t k = lo; k < hi; k++) {
-        const double *v = &sc->in_tri[k].v[0][0];
+        const double *v = &in_tris(sc)[k].v[0][0];
         rt_prim *pr = &sc->prim[k];
-        double pb[6], c[3], ext, nrm[3];
-        if (!rt_points_frame(v, 3, pb, c, &ext) ||
-            !rt_poly_normal(v, 3, &three, 1, c, ext, nrm) || (cull && rt_culled(o, v, 3, 0))) {
-            pr->kind = RT_KIND_NONE; /* degenerate: never traced; or culled */
+        if (rt_culled(o, v, 3, 0)) {
+            pr->kind = RT_KIND_NONE;
             continue;
         }
-        if (cull)
-            sc->tri[k] = sc->in_tri[k];
-        rt_prim_init(sc, pr, (int)sc->in_tri_id[k], sc->in_tri_sf[2 * k], sc->in_tri_sf[2 * k + 1]);
-        memcpy(pr->ng, nrm, sizeof pr->ng);
-        pr->kind = RT_KIND_TRI;
-        pr->data = (uint32_t)k;
+        sc->tri[k] = in_tris(sc)[k];
+        *pr = in_tri_prims(sc)[k];
         for (int i = 0; i < 3; i++)
             rt_bbox_add(bb, v + 3 * i);
         kept++;
@@ -482,10 +519,24 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
     j->kept[part] = kept;
 }
 
+/* the box of the input triangles, part of rt_tri_bbox's parallel recomputation */
+static void rt_tri_bbox_part(void *arg, int part, int nparts)
+{
+    rt_tri_job *j = arg;
+    size_t lo, hi;
+    rt_par_range(j->sc->nintri, part, nparts, &lo, &hi);
+    rt_tri_bbox(j->sc, lo, hi, j->bb[part]);
+}
+
 static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
 {
     const int cull = o && o->ncull > 0;
-    sc->tri = sc->in_tri;
+    sc->tri = in_tris(sc);
+    sc->ntri = sc->nprim = sc->nintri;
+    if (!cull && !sc->tri_bb_stale) {
+        memcpy(bb, sc->tri_bb, sizeof sc->tri_bb);
+        return RT_OK;
+    }
     if (cull) {
         sc->tri = rt_alloc_array(sc->nintri, sizeof *sc->tri);
         if (!sc->tri)
@@ -500,10 +551,10 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
         return RT_ERR_NOMEM;
     j->sc = sc;
     j->o = o;
-    rt_par_run(nt, rt_commit_tri_part, j);
+    rt_par_run(nt, cull ? rt_commit_tri_part : rt_tri_bbox_part, j);
     size_t kept = 0;
     for (int k = 0; k < nt; k++) {
-        kept += j->kept[k];
+        kept += cull ? j->kept[k] : 0;
         for (int i = 0; i < 3; i++) {
             if (j->bb[k][i] < bb[i])
                 bb[i] = j->bb[k][i];
@@ -512,34 +563,34 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
         }
     }
     free(j);
-    if (kept < sc->nintri) { /* close the gaps, in order */
-        size_t w = 0;
-        for (size_t k = 0; k < sc->nintri; k++) {
-            if (sc->prim[k].kind == RT_KIND_NONE)
-                continue;
-            sc->prim[w] = sc->prim[k];
-            sc->prim[w].data = (uint32_t)w;
-            if (cull) {
-                sc->tri[w] = sc->tri[k];
-            } else {
-                sc->in_tri[w] = sc->in_tri[k];
-                sc->in_tri_sf[2 * w] = sc->in_tri_sf[2 * k];
-                sc->in_tri_sf[2 * w + 1] = sc->in_tri_sf[2 * k + 1];
-                sc->in_tri_id[w] = sc->in_tri_id[k];
-            }
-            w++;
-        }
+    if (!cull) { /* the input's box, recomputed after a truncation */
+        memcpy(sc->tri_bb, bb, sizeof sc->tri_bb);
+        sc->tri_bb_stale = 0;
+        return RT_OK;
+    }
+    size_t w = 0; /* close the gaps, in order */
+    for (size_t k = 0; k < sc->nintri; k++) {
+        if (sc->prim[k].kind == RT_KIND_NONE)
+            continue;
+        sc->prim[w] = sc->prim[k];
+        sc->prim[w].data = (uint32_t)w;
+        sc->tri[w] = sc->tri[k];
+        w++;
     }
     sc->ntri = sc->nprim = kept;
-    if (!cull)
-        sc->nintri = kept;
     return RT_OK;
 }
 
 static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
 {
     size_t n = sc->nin;
-    sc->prim = rt_alloc_array(sc->nintri + n, sizeof *sc->prim);
+    const int cull = o && o->ncull > 0;
+    if (cull) {
+        sc->prim = rt_alloc_array(sc->nintri + n, sizeof *sc->prim);
+        sc->prim_owned = 1;
+    } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + n + 1, sizeof(rt_prim))) {
+        sc->prim = in_tri_prims(sc); /* the other kinds' records follow the triangles' */
+    }
     sc->quad = rt_alloc_array(n, sizeof *sc->quad);
     sc->poly = rt_alloc_array(n, sizeof *sc->poly);
     sc->cell = rt_alloc_array(n, sizeof *sc->cell);
@@ -551,7 +602,6 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
     int rc = rt_commit_tris(sc, o, bb);
     if (rc != RT_OK)
         return rc;
-    const int cull = o && o->ncull > 0;
     const size_t first = sc->nprim; /* the other kinds from here */
     for (size_t id = 0; id < n; id++) {
         const rt_in_prim *in = &sc->in[id];

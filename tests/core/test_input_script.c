@@ -700,6 +700,160 @@ static void test_init_checks_and_inquiries(void **u)
     reset_gks();
 }
 
+/* The 2-D and 3-D forms of every device state and default-data inquiry answer the same:
+ * the common part (mode, echo, pet, echo area = the volume's x and y, record) and the
+ * class part, for devices initialised away from their defaults. */
+static void assert_dev_agrees(const Gin_dev_st *d, Gop_mode m, Gecho_switch e, Gint pet,
+                              const Glimit3 *v, const Gin_data *r)
+{
+    assert_true(d->op_mode == m && d->echo_switch == e && d->pet == pet);
+    assert_true(d->echo_area.x_min == v->x_min && d->echo_area.x_max == v->x_max &&
+                d->echo_area.y_min == v->y_min && d->echo_area.y_max == v->y_max);
+    assert_true(d->in_data.num_ints == r->num_ints && d->in_data.ints == r->ints &&
+                d->in_data.str_len == r->str_len);
+}
+
+#define AGREE(st2, st3) \
+    assert_dev_agrees(&(st2).dev, (st3).op_mode, (st3).echo_switch, (st3).pet, &(st3).echo_vol, &(st3).in_data)
+#define AGREE_DEF(d2, d3)                                                                  \
+    do {                                                                                   \
+        assert_int_equal((d2).pets.num_ints, (d3).pets.num_ints);                         \
+        assert_true((d2).echo_area.x_max == (d3).echo_vol.x_max &&                         \
+                    (d2).echo_area.y_max == (d3).echo_vol.y_max);                          \
+        assert_true((d2).in_data.num_ints == 0 && (d3).in_data.num_ints == 0);            \
+    } while (0)
+
+static void test_inquiry_forms_agree(void **u)
+{
+    (void)u;
+    open_with_script("");
+    Gint ints[2] = { 4, 5 }, err2 = -1, err3 = -1;
+    Gin_data rec = { 2, ints, 0, NULL, 3, "abc" };
+    Glimit ea = { 10, 500, 20, 600 };
+    Gloc l = { 0, { 0.25, 0.75 } };
+    Gpoint sp[2] = { { 0.1, 0.2 }, { 0.3, 0.4 } };
+    Gstroke sk = { 0, 2, sp };
+    Gpick pk = { 3, 4 };
+    ginit_loc(WS, 1, &l, 3, &ea, &rec);
+    ginit_stroke(WS, 1, &sk, 2, &ea, 30, &rec);
+    ginit_val(WS, 1, 2, 2, &ea, -1, 3, &rec);
+    ginit_choice(WS, 1, GIN_STATUS_OK, 4, 2, &ea, &rec);
+    ginit_pick(WS, 1, GIN_STATUS_OK, &pk, 2, &ea, &rec);
+    ginit_string(WS, 1, "xyz", 1, &ea, 30, 2, &rec);
+    gset_loc_mode(WS, 1, GOP_EVENT, GSWITCH_NO_ECHO);
+    gset_val_mode(WS, 1, GOP_SAMPLE, GSWITCH_NO_ECHO);
+    assert_int_equal(n_captured, 0);
+
+    Gloc_st l2;
+    Gloc_st3 l3;
+    ginq_loc_st(WS, 1, GINQ_SET, &err2, &l2);
+    ginq_loc_st3(WS, 1, GINQ_SET, &err3, &l3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(l2, l3);
+    assert_true(l2.dev.op_mode == GOP_EVENT && l2.dev.pet == 3 && l3.init_view_ind == 0);
+    assert_true(l2.init_loc.position.x == l3.init_loc.position.x &&
+                l2.init_loc.position.y == l3.init_loc.position.y && l3.init_loc.position.y == 0.75);
+    Gpoint o2[4];
+    Gpoint3 o3[4];
+    Gstroke_st k2 = { .init_stroke = { 0, 4, o2 } };
+    Gstroke_st3 k3 = { .init_stroke = { 0, 4, o3 } };
+    ginq_stroke_st(WS, 1, GINQ_REALIZED, &err2, &k2);
+    ginq_stroke_st3(WS, 1, GINQ_REALIZED, &err3, &k3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(k2, k3);
+    assert_true(k2.in_buf_size == 30 && k3.in_buf_size == 30);
+    assert_true(k2.init_stroke.num_points == 2 && k3.init_stroke.num_points == 2);
+    assert_true(o2[1].y == o3[1].y && o3[1].y == (Gfloat)0.4);
+    Gval_st v2;
+    Gval_st3 v3;
+    ginq_val_st(WS, 1, &err2, &v2);
+    ginq_val_st3(WS, 1, &err3, &v3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(v2, v3);
+    assert_true(v2.init_value == 2 && v3.init_value == 2 && v2.low_value == v3.low_value &&
+                v3.low_value == -1 && v2.high_value == v3.high_value && v3.high_value == 3);
+    Gchoice_st c2;
+    Gchoice_st3 c3;
+    ginq_choice_st(WS, 1, &err2, &c2);
+    ginq_choice_st3(WS, 1, &err3, &c3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(c2, c3);
+    assert_true(c2.init_status == GIN_STATUS_OK && c3.init_status == GIN_STATUS_OK &&
+                c2.init_choice == 4 && c3.init_choice == 4);
+    Gpick_st p2;
+    Gpick_st3 p3;
+    ginq_pick_st(WS, 1, GINQ_SET, &err2, &p2);
+    ginq_pick_st3(WS, 1, GINQ_SET, &err3, &p3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(p2, p3);
+    assert_true(p2.init_pick.seg_name == 3 && p3.init_pick.seg_name == 3 &&
+                p2.init_pick.pick_id == 4 && p3.init_pick.pick_id == 4);
+    char b2[3], b3[3];
+    Gstring_st s2 = { .init_string = b2, .init_string_size = sizeof b2 };
+    Gstring_st3 s3 = { .init_string = b3, .init_string_size = sizeof b3 };
+    ginq_string_st(WS, 1, &err2, &s2);
+    ginq_string_st3(WS, 1, &err3, &s3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE(s2, s3);
+    assert_true(s2.in_buf_size == 30 && s3.in_buf_size == 30 && s2.init_cur_pos == 2 &&
+                s3.init_cur_pos == 2);
+    assert_string_equal(b2, "xy"); /* truncated to the buffer */
+    assert_string_equal(b3, "xy");
+    /* a type out of range: 2000 in both forms where the function has a type */
+    ginq_pick_st(WS, 1, (Ginq_type)5, &err2, &p2);
+    ginq_pick_st3(WS, 1, (Ginq_type)5, &err3, &p3);
+    assert_true(err2 == 2000 && err3 == 2000);
+
+    Gint pt2[2], pt3[2];
+    Gdef_loc dl2 = { .dev.pets = { 2, pt2 } };
+    Gdef_loc3 dl3 = { .pets = { 2, pt3 } };
+    ginq_def_loc_data(GWS_TYPE_PNG, 1, &err2, &dl2);
+    ginq_def_loc_data3(GWS_TYPE_PNG, 1, &err3, &dl3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(dl2.dev, dl3);
+    assert_true(pt2[1] == 2 && pt3[1] == 2 && dl2.loc_pos.x == dl3.loc_pos.x);
+    Gdef_stroke dk2 = { .dev.pets = { 2, pt2 } };
+    Gdef_stroke3 dk3 = { .pets = { 2, pt3 } };
+    ginq_def_stroke_data(GWS_TYPE_PNG, 1, &err2, &dk2);
+    ginq_def_stroke_data3(GWS_TYPE_PNG, 1, &err3, &dk3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(dk2.dev, dk3);
+    assert_true(dk2.buf_size == dk3.buf_size && dk2.max_buf_size == dk3.max_buf_size);
+    Gdef_val dv2 = { .dev.pets = { 2, pt2 } };
+    Gdef_val3 dv3 = { .dev.pets = { 2, pt3 } };
+    ginq_def_val_data(GWS_TYPE_PNG, 1, &err2, &dv2);
+    ginq_def_val_data3(GWS_TYPE_PNG, 1, &err3, &dv3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(dv2.dev, dv3.dev);
+    assert_true(dv2.value == dv3.value && dv2.low_value == dv3.low_value &&
+                dv2.high_value == dv3.high_value && dv3.high_value == 1);
+    Gdef_choice dc2 = { .dev.pets = { 2, pt2 } };
+    Gdef_choice3 dc3 = { .dev.pets = { 2, pt3 } };
+    ginq_def_choice_data(GWS_TYPE_PNG, 1, &err2, &dc2);
+    ginq_def_choice_data3(GWS_TYPE_PNG, 1, &err3, &dc3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(dc2.dev, dc3.dev);
+    assert_true(dc2.max_choices == 9 && dc3.max_choices == 9);
+    Gdef_in dp2 = { .pets = { 0, NULL } };
+    Gdef_in3 dp3 = { .pets = { 0, NULL } };
+    ginq_def_pick_data(GWS_TYPE_PNG, 1, &err2, &dp2);
+    ginq_def_pick_data3(GWS_TYPE_PNG, 1, &err3, &dp3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(dp2, dp3);
+    assert_true(dp2.pets.num_ints > 0);
+    Gdef_string ds2 = { .dev.pets = { 2, pt2 } };
+    Gdef_string3 ds3 = { .dev.pets = { 2, pt3 } };
+    ginq_def_string_data(GWS_TYPE_PNG, 1, &err2, &ds2);
+    ginq_def_string_data3(GWS_TYPE_PNG, 1, &err3, &ds3);
+    assert_true(err2 == 0 && err3 == 0);
+    AGREE_DEF(ds2.dev, ds3.dev);
+    assert_true(ds2.buf_size == 80 && ds3.buf_size == 80 && ds2.max_buf_size == ds3.max_buf_size);
+    assert_int_equal(n_captured, 0);
+    reset_gks();
+}
+#undef AGREE
+#undef AGREE_DEF
+
 /* The environment variable attaches a script to the first input workstation; ESCAPE
  * with a file that cannot be read reports 182. */
 static void test_env_and_escape(void **u)
@@ -738,6 +892,7 @@ int main(void)
         cmocka_unit_test(test_queue_overflow),
         cmocka_unit_test(test_await_timeout),
         cmocka_unit_test(test_init_checks_and_inquiries),
+        cmocka_unit_test(test_inquiry_forms_agree),
         cmocka_unit_test(test_env_and_escape),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -152,6 +152,22 @@ static void test_list_rule(void **u)
     assert_int_equal(len, 0);
     ginq_set_seg_names_ws(1, 4, 1, &err, &l, &len);
     assert_int_equal(err, 2002);
+    /* a list of another element type: the text font and precision pairs (9 on PNG) */
+    Gtext_font_prec fp[4] = { { 0, 0 }, { 0, 0 }, { 0, 0 }, { 0, 0 } };
+    Gtext_facs tf = { .num_font_precs = -1, .font_precs = fp };
+    ginq_text_facs(GWS_TYPE_PNG, 4, 7, &err, &tf, &len); /* the last two */
+    assert_int_equal(err, 0);
+    assert_int_equal(len, 9);
+    assert_int_equal(tf.num_font_precs, 2);
+    assert_true(fp[0].font == -106 && fp[2].font == 0);
+    tf.num_font_precs = -1;
+    ginq_text_facs(GWS_TYPE_PNG, 4, 9, &err, &tf, &len);
+    assert_int_equal(err, 2002);
+    assert_int_equal(len, 9);
+    assert_int_equal(tf.num_font_precs, -1); /* nothing written on error */
+    ginq_text_facs(GWS_TYPE_PNG, 0, 3, &err, &tf, &len); /* no room: the length only */
+    assert_int_equal(err, 0);
+    assert_int_equal(tf.num_font_precs, 0);
     assert_int_equal(n_captured, 0); /* inquiries report nothing */
     reset_gks();
 }

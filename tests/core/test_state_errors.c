@@ -361,7 +361,7 @@ typedef struct { void (*call)(void); unsigned states; const char *name; } row;
 #define GKS_S_WSOPEN (GKS_S_WSOP | GKS_S_WSAC | GKS_S_SGOP)
 #define GKS_S_OPEN (GKS_S_GKOP | GKS_S_WSOPEN)
 #define GKS_FN_RESERVED(id, sym, name)
-#define GKS_FN(id, sym, name, states) [id] = { c_##sym, states, name },
+#define GKS_FN(id, sym, name, states, mf) [id] = { c_##sym, states, name },
 static const row rows[] = {
 #include "gks_functions.def"
 };

@@ -72,7 +72,7 @@ static entry table[] = {
     /* ISO 8651-1 names the C binding has no enumeration for: the standard's values */
     C(GLMA, -3) C(GLMB, -2) C(GLMC, -1) C(GCURNT, 0) C(GSPEC, 1) C(GPLINE, 0) C(GFILLA, 1)
     C(GPROFF, 0) C(GPRON, 1)
-#define GKS_FN(id, sym, name, states) { "E" #sym, GFN_##sym, 0 },
+#define GKS_FN(id, sym, name, states, mf) { "E" #sym, GFN_##sym, 0 },
 #define GKS_FN_RESERVED(id, sym, name) { "E" #sym, id, 0 },
 #include "gks_functions.def"
 #undef GKS_FN

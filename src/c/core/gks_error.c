@@ -18,7 +18,7 @@ static const err_entry err_table[] = {
 
 typedef struct { const char *name; unsigned states; } fn_entry;
 static const fn_entry fn_table[] = {
-#define GKS_FN(id, sym, name, states) [id] = { name, states },
+#define GKS_FN(id, sym, name, states, mf) [id] = { name, states },
 #include "gks_functions.def"
 #undef GKS_FN
 };
@@ -106,16 +106,24 @@ int gks_list_start(Gint start, Gint n)
 
 gks_list_out gks_list_begin(Gint_list *out, Gint cap, Gint start)
 {
-    return (gks_list_out){ .dst = out ? out->ints : NULL, .num = out ? &out->num_ints : NULL,
-                           .cap = cap, .start = start };
+    Gint *dst = out ? out->ints : NULL;
+    return (gks_list_out){ .dst = dst, .num = out ? &out->num_ints : NULL,
+                           .cap = dst ? cap : 0, .start = start };
+}
+
+int gks_list_slot(gks_list_out *w)
+{
+    int k = w->start >= 0 && w->n >= w->start && w->k < w->cap ? w->k++ : -1;
+    if (w->n < INT_MAX)
+        w->n++;
+    return k;
 }
 
 void gks_list_put(gks_list_out *w, Gint v)
 {
-    if (w->start >= 0 && w->n >= w->start && w->k < w->cap && w->dst)
-        w->dst[w->k++] = v;
-    if (w->n < INT_MAX)
-        w->n++;
+    int k = gks_list_slot(w);
+    if (k >= 0)
+        w->dst[k] = v;
 }
 
 int gks_list_end(gks_list_out *w, Gint *len)

@@ -70,6 +70,9 @@ typedef struct {
 } gks_list_out;
 gks_list_out gks_list_begin(Gint_list *out, Gint cap, Gint start);
 void gks_list_put(gks_list_out *w, Gint v);
+/* The same for a list of another element type: the index in the caller's array (room for
+ * cap) at which to store the element put, or -1 when it is not stored. */
+int gks_list_slot(gks_list_out *w);
 /* *len = the elements put; the stored count to *num; returns gks_list_start(start, n). */
 int gks_list_end(gks_list_out *w, Gint *len);
 /* The whole list[0..n) answered under the list rule: gks_list_end of putting each. */

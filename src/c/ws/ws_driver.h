@@ -63,6 +63,13 @@ typedef struct gks_ws_desc {
     const struct gks_in_desc *in;
 } gks_ws_desc;
 
+/* The description-table members that the workstations which draw nothing (null, WISS, MO,
+ * MI) share: a square display space of dc DC units (and raster units), DC units OTHER,
+ * colour available, implicit regeneration allowed, deferral ASAP, the raster output
+ * table. Each table adds its colour table, predefined colours (gks_wdt_white_black) and
+ * HLHSR modes. */
+#define GKS_WS_DESC_NODRAW(type_, name_, cat_, cls_, dc_)                                      .type = (type_), .name = (name_), .cat = (cat_), .cls = (cls_), .dc_units = GDC_OTHER,      .dc_x = (dc_), .dc_y = (dc_), .raster_x = (dc_), .raster_y = (dc_),                        .colr_avail = GAVAIL_COLR, .default_irg = GIRG_ALLOWED, .default_defer = GDEFER_ASAP,      .out = &gks_wdt_raster
+
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
  * segment transformation and clipping to the viewport (if on); attributes resolved for this
  * workstation (individual or bundled by the aspect source flags, colour indices turned into

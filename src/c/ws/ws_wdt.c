@@ -50,18 +50,17 @@ static const gks_wdt_pattern pred_pat[] = { { 2, 2, pat1 }, { 4, 4, pat2 }, { 3,
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
+const Grgb gks_wdt_white_black[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
+
 const gks_wdt_output gks_wdt_raster = {
-    .n_linetypes = N(linetypes), .linetypes = linetypes,
-    .n_linewidths = 0, .nom_linewidth = 1, .min_linewidth = 1, .max_linewidth = 256,
-    .n_markertypes = N(markertypes), .markertypes = markertypes,
-    .n_markersizes = 0, .nom_markersize = 7, .min_markersize = 1, .max_markersize = 1024,
+    .line = { N(linetypes), linetypes, .n_sizes = 0, .nom = 1, .min = 1, .max = 256 },
+    .marker = { N(markertypes), markertypes, .n_sizes = 0, .nom = 7, .min = 1, .max = 1024 },
     .n_font_precs = N(font_precs), .font_precs = font_precs,
     .n_char_hts = 0, .min_char_ht = 0, .max_char_ht = 1e6,
     .n_char_expans = 0, .min_char_expan = 0, .max_char_expan = 1e6,
     .n_int_styles = N(int_styles), .int_styles = int_styles,
     .n_hatch_styles = N(hatch_styles), .hatch_styles = hatch_styles,
-    .n_edgetypes = N(linetypes), .edgetypes = linetypes,
-    .n_edgewidths = 0, .nom_edgewidth = 1, .min_edgewidth = 1, .max_edgewidth = 256,
+    .edge = { N(linetypes), linetypes, .n_sizes = 0, .nom = 1, .min = 1, .max = 256 },
     .n_pred_line = N(pred_line), .pred_line = pred_line,
     .n_pred_marker = N(pred_marker), .pred_marker = pred_marker,
     .n_pred_text = N(pred_text), .pred_text = pred_text,

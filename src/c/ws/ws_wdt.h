@@ -19,15 +19,17 @@ typedef struct gks_wdt_pattern {
     const int *colr;
 } gks_wdt_pattern;
 
+/* The facilities of polyline, polymarker and edge: the types, and the widths or sizes
+ * (count, 0: continuous; nominal, minimum, maximum in DC units, pixels). */
+typedef struct gks_wdt_sizes {
+    int n_types;
+    const int *types;
+    int n_sizes;
+    double nom, min, max;
+} gks_wdt_sizes;
+
 typedef struct gks_wdt_output {
-    int n_linetypes;
-    const int *linetypes;
-    int n_linewidths;                      /* 0: continuous */
-    double nom_linewidth, min_linewidth, max_linewidth; /* DC units (pixels) */
-    int n_markertypes;
-    const int *markertypes;
-    int n_markersizes;                     /* 0: continuous */
-    double nom_markersize, min_markersize, max_markersize;
+    gks_wdt_sizes line, marker;
     int n_font_precs;
     const Gtext_font_prec *font_precs;
     int n_char_hts;                        /* 0: continuous */
@@ -38,10 +40,7 @@ typedef struct gks_wdt_output {
     const int *int_styles;
     int n_hatch_styles;
     const int *hatch_styles;
-    int n_edgetypes;
-    const int *edgetypes;
-    int n_edgewidths;
-    double nom_edgewidth, min_edgewidth, max_edgewidth;
+    gks_wdt_sizes edge;
     int n_pred_line;
     const Gline_bundle *pred_line;         /* index i at [i-1] */
     int n_pred_marker;
@@ -59,6 +58,8 @@ typedef struct gks_wdt_output {
 
 /* The raster workstations' table (PNG types and the null workstation). */
 extern const gks_wdt_output gks_wdt_raster;
+/* Predefined colours 0 white and 1 black (the workstations that draw nothing). */
+extern const Grgb gks_wdt_white_black[2];
 
 /* Whether v is in list[0..n-1]. */
 int gks_wdt_has(const int *list, int n, int v);

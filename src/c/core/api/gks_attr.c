@@ -229,7 +229,7 @@ GKS_API void gset_line_rep(Gint ws_id, Gint ind, const Gline_bundle *rep)
         GKS_FAIL(60, GFN_SPLR);
     if (!rep || rep->type == 0)
         GKS_FAIL(63, GFN_SPLR);
-    if (!gks_wdt_has(t->linetypes, t->n_linetypes, rep->type))
+    if (!gks_wdt_has(t->line.types, t->line.n_types, rep->type))
         GKS_FAIL(64, GFN_SPLR);
     if (!(rep->width >= 0) || !isfinite(rep->width))
         GKS_FAIL(65, GFN_SPLR);
@@ -250,7 +250,7 @@ GKS_API void gset_marker_rep(Gint ws_id, Gint ind, const Gmarker_bundle *rep)
         GKS_FAIL(66, GFN_SPMR);
     if (!rep || rep->type == 0)
         GKS_FAIL(69, GFN_SPMR);
-    if (!gks_wdt_has(t->markertypes, t->n_markertypes, rep->type))
+    if (!gks_wdt_has(t->marker.types, t->marker.n_types, rep->type))
         GKS_FAIL(70, GFN_SPMR);
     if (!(rep->size >= 0) || !isfinite(rep->size))
         GKS_FAIL(71, GFN_SPMR);
@@ -351,7 +351,7 @@ GKS_API void gset_edge_rep(Gint ws_id, Gint ind, const Gedge_bundle *rep)
         GKS_FAIL(2000, GFN_SEDR);
     if (rep->type == 0)
         GKS_FAIL(63, GFN_SEDR);
-    if (!gks_wdt_has(t->edgetypes, t->n_edgetypes, rep->type))
+    if (!gks_wdt_has(t->edge.types, t->edge.n_types, rep->type))
         GKS_FAIL(64, GFN_SEDR);
     if (!(rep->width >= 0) || !isfinite(rep->width))
         GKS_FAIL(65, GFN_SEDR);

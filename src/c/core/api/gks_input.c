@@ -786,363 +786,299 @@ GKS_API void gget_string(char *string)
 
 /* ---- inquiries (never call ERROR HANDLING; nothing but *err_ind written on error) ---- */
 
-/* Device state inquiries: 7, 20, 25, 38, 140; the device or NULL. */
-static const gks_indev *inq_device(Gint ws_id, Gin_class cls, Gint num, Gint *err_ind)
+/* The device state inquiries and the default-data inquiries each run one path for the
+ * twelve 2-D and 3-D forms: the checks, then a fill function of the caller's structure.
+ * The common part is written by member name (macros: the 3-D structures have their own
+ * member lists), the class part by one macro for both forms, whose members have the same
+ * names. */
+
+static Glimit echo_area2(const Glimit3 *v)
 {
-    Gint e = gks_inq_state(GKS_S_WSOPEN);
-    gks_ws *ws = NULL;
-    if (!e)
-        e = device_error(ws_id, cls, num, &ws);
-    set_err(err_ind, e);
-    return e ? NULL : gks_in_dev(ws, cls, num);
+    return (Glimit){ v->x_min, v->x_max, v->y_min, v->y_max };
 }
 
-/* The type of returned values (SET or REALIZED): 2000 if neither. */
-static int bad_type(Ginq_type t, Gint *err_ind)
-{
-    if ((unsigned)t <= GINQ_REALIZED)
-        return 0;
-    set_err(err_ind, 2000);
-    return 1;
-}
-
-static Gin_dev_st dev_st(const gks_indev *d)
-{
-    return (Gin_dev_st){ d->mode, d->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO, d->pet,
-                         { d->echo_vol.x_min, d->echo_vol.x_max, d->echo_vol.y_min,
-                           d->echo_vol.y_max },
-                         d->rec };
-}
-
-/* The device state 3 common part: mode, echo, pet, echo volume, record. */
+/* The common part of a 3-D device state: mode, echo, pet, echo volume, record. */
 #define DEV_ST3(st, d)                                                                     \
-    do {                                                                                   \
-        (st)->op_mode = (d)->mode;                                                         \
-        (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO;                    \
-        (st)->pet = (d)->pet;                                                              \
-        (st)->echo_vol = (d)->echo_vol;                                                    \
-        (st)->in_data = (d)->rec;                                                          \
-    } while (0)
+    ((st)->op_mode = (d)->mode, (st)->echo_switch = (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO, \
+     (st)->pet = (d)->pet, (st)->echo_vol = (d)->echo_vol, (st)->in_data = (d)->rec)
+/* The same for a 2-D one (echo area: the volume's x and y). */
+#define DEV_ST(st, d)                                                                      \
+    ((st)->dev = (Gin_dev_st){ (d)->mode, (d)->echo ? GSWITCH_ECHO : GSWITCH_NO_ECHO,      \
+                               (d)->pet, echo_area2(&(d)->echo_vol), (d)->rec })
+/* The class parts. */
+#define VAL_ST(st, d)                                                                      \
+    ((st)->init_value = (d)->init.val, (st)->low_value = (d)->low, (st)->high_value = (d)->high)
+#define CHOICE_ST(st, d) ((st)->init_status = (d)->init.status, (st)->init_choice = (d)->init.choice)
+#define PICK_ST(st, d) ((st)->init_status = (d)->init.status, (st)->init_pick = (d)->init.pick)
+#define STRING_ST(st, d)                                                                   \
+    ((st)->in_buf_size = (d)->buf_size, (st)->init_cur_pos = (d)->cur_pos,                 \
+     copy_init_string(d, (st)->init_string, (st)->init_string_size))
+
+/* The initial string into the caller's buffer of size bytes (truncated, NUL-terminated). */
+static void copy_init_string(const gks_indev *d, char *buf, size_t size)
+{
+    const char *s = d->init.str ? d->init.str : "";
+    if (!buf || size == 0)
+        return;
+    size_t n = strlen(s);
+    if (n >= size)
+        n = size - 1;
+    memcpy(buf, s, n);
+    buf[n] = '\0';
+}
 
 /* SET and REALIZED values are the same: every initial value is representable. */
-GKS_API void ginq_loc_st(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind, Gloc_st *st)
+static void loc_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
-    st->dev = dev_st(d);
+    Gloc_st *st = p;
+    DEV_ST(st, d);
     loc_out(&d->init, &st->init_loc);
 }
 
-GKS_API void ginq_loc_st3(Gint ws_id, Gint loc_num, Ginq_type type, Gint *err_ind,
-                          Gloc_st3 *st)
+static void loc_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_LOC, loc_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
+    Gloc_st3 *st = p;
     DEV_ST3(st, d);
     loc3_out(&d->init, &st->init_view_ind, &st->init_loc);
 }
 
-GKS_API void ginq_stroke_st(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
-                            Gstroke_st *st)
+static void stroke_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
-    st->dev = dev_st(d);
+    Gstroke_st *st = p;
+    DEV_ST(st, d);
     st->in_buf_size = d->buf_size;
     stroke_out(&d->init, &st->init_stroke);
 }
 
-GKS_API void ginq_stroke_st3(Gint ws_id, Gint stroke_num, Ginq_type type, Gint *err_ind,
-                             Gstroke_st3 *st)
+static void stroke_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_STROKE, stroke_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
+    Gstroke_st3 *st = p;
     DEV_ST3(st, d);
     st->in_buf_size = d->buf_size;
     stroke3_out(&d->init, &st->init_view_ind, &st->init_stroke);
 }
 
-GKS_API void ginq_val_st(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st *st)
+static void val_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
-    if (!d || !st)
-        return;
-    st->dev = dev_st(d);
-    st->init_value = d->init.val;
-    st->low_value = d->low;
-    st->high_value = d->high;
+    DEV_ST((Gval_st *)p, d), VAL_ST((Gval_st *)p, d);
 }
 
-GKS_API void ginq_choice_st(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st *st)
+static void val_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
-    if (!d || !st)
-        return;
-    st->dev = dev_st(d);
-    st->init_status = d->init.status;
-    st->init_choice = d->init.choice;
+    DEV_ST3((Gval_st3 *)p, d), VAL_ST((Gval_st3 *)p, d);
 }
 
-GKS_API void ginq_pick_st(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
-                          Gpick_st *st)
+static void choice_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
-    st->dev = dev_st(d);
-    st->init_status = d->init.status;
-    st->init_pick = d->init.pick;
+    DEV_ST((Gchoice_st *)p, d), CHOICE_ST((Gchoice_st *)p, d);
 }
 
-GKS_API void ginq_string_st(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st *st)
+static void choice_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
-    if (!d || !st)
-        return;
-    st->dev = dev_st(d);
-    st->in_buf_size = d->buf_size;
-    st->init_cur_pos = d->cur_pos;
-    const char *s = d->init.str ? d->init.str : "";
-    if (st->init_string && st->init_string_size > 0) {
-        size_t n = strlen(s);
-        if (n >= st->init_string_size)
-            n = st->init_string_size - 1;
-        memcpy(st->init_string, s, n);
-        st->init_string[n] = '\0';
-    }
+    DEV_ST3((Gchoice_st3 *)p, d), CHOICE_ST((Gchoice_st3 *)p, d);
 }
 
-GKS_API void ginq_val_st3(Gint ws_id, Gint val_num, Gint *err_ind, Gval_st3 *st)
+static void pick_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_VAL, val_num, err_ind);
-    if (!d || !st)
-        return;
-    DEV_ST3(st, d);
-    st->init_value = d->init.val;
-    st->low_value = d->low;
-    st->high_value = d->high;
+    DEV_ST((Gpick_st *)p, d), PICK_ST((Gpick_st *)p, d);
 }
 
-GKS_API void ginq_choice_st3(Gint ws_id, Gint choice_num, Gint *err_ind, Gchoice_st3 *st)
+static void pick_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_CHOICE, choice_num, err_ind);
-    if (!d || !st)
-        return;
-    DEV_ST3(st, d);
-    st->init_status = d->init.status;
-    st->init_choice = d->init.choice;
+    DEV_ST3((Gpick_st3 *)p, d), PICK_ST((Gpick_st3 *)p, d);
 }
 
-GKS_API void ginq_pick_st3(Gint ws_id, Gint pick_num, Ginq_type type, Gint *err_ind,
-                           Gpick_st3 *st)
+static void string_st(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_PICK, pick_num, err_ind);
-    if (!d || bad_type(type, err_ind) || !st)
-        return;
-    DEV_ST3(st, d);
-    st->init_status = d->init.status;
-    st->init_pick = d->init.pick;
+    DEV_ST((Gstring_st *)p, d), STRING_ST((Gstring_st *)p, d);
 }
 
-GKS_API void ginq_string_st3(Gint ws_id, Gint string_num, Gint *err_ind, Gstring_st3 *st)
+static void string_st3(const gks_indev *d, void *p)
 {
-    GKS_INQ_ARGS(err_ind, st);
-    const gks_indev *d = inq_device(ws_id, GIN_STRING, string_num, err_ind);
-    if (!d || !st)
-        return;
-    Gstring_st s2 = { .init_string = st->init_string, .init_string_size = st->init_string_size };
-    ginq_string_st(ws_id, string_num, err_ind, &s2);
-    DEV_ST3(st, d);
-    st->in_buf_size = s2.in_buf_size;
-    st->init_cur_pos = s2.init_cur_pos;
+    DEV_ST3((Gstring_st3 *)p, d), STRING_ST((Gstring_st3 *)p, d);
+}
+
+/* A device state inquiry: 7, 20, 25, 38, 140, then 2000 for a type (SET or REALIZED)
+ * out of range where the function has one (typed); fill writes st unless it is NULL. */
+static void inq_st(Gint ws_id, Gin_class cls, Gint num, int typed, Ginq_type type,
+                   Gint *err_ind, void *st, void (*fill)(const gks_indev *, void *))
+{
+    Gint e = gks_inq_state(GKS_S_WSOPEN);
+    gks_ws *ws = NULL;
+    if (!e)
+        e = device_error(ws_id, cls, num, &ws);
+    if (!e && typed && (unsigned)type > GINQ_REALIZED)
+        e = 2000;
+    set_err(err_ind, e);
+    if (!e && st)
+        fill(gks_in_dev(ws, cls, num), st);
 }
 #undef DEV_ST3
+#undef DEV_ST
+#undef STRING_ST
 
-/* Default-data inquiries: 8, 22, 23, 38, 140; fills the common part. */
-static int inq_default(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in *def,
-                       gks_indev *d)
+/* The entry points: a device state inquiry with a type (SET or REALIZED) argument, and
+ * one without. */
+#define INQ_ST_TYPED(name, T, cls, fill)                                                   \
+    GKS_API void name(Gint ws_id, Gint num, Ginq_type type, Gint *err_ind, T *st)          \
+    {                                                                                      \
+        GKS_INQ_ARGS(err_ind, st);                                                         \
+        inq_st(ws_id, cls, num, 1, type, err_ind, st, fill);                               \
+    }
+#define INQ_ST(name, T, cls, fill)                                                         \
+    GKS_API void name(Gint ws_id, Gint num, Gint *err_ind, T *st)                          \
+    {                                                                                      \
+        GKS_INQ_ARGS(err_ind, st);                                                         \
+        inq_st(ws_id, cls, num, 0, GINQ_SET, err_ind, st, fill);                           \
+    }
+INQ_ST_TYPED(ginq_loc_st, Gloc_st, GIN_LOC, loc_st)
+INQ_ST_TYPED(ginq_loc_st3, Gloc_st3, GIN_LOC, loc_st3)
+INQ_ST_TYPED(ginq_stroke_st, Gstroke_st, GIN_STROKE, stroke_st)
+INQ_ST_TYPED(ginq_stroke_st3, Gstroke_st3, GIN_STROKE, stroke_st3)
+INQ_ST(ginq_val_st, Gval_st, GIN_VAL, val_st)
+INQ_ST(ginq_val_st3, Gval_st3, GIN_VAL, val_st3)
+INQ_ST(ginq_choice_st, Gchoice_st, GIN_CHOICE, choice_st)
+INQ_ST(ginq_choice_st3, Gchoice_st3, GIN_CHOICE, choice_st3)
+INQ_ST_TYPED(ginq_pick_st, Gpick_st, GIN_PICK, pick_st)
+INQ_ST_TYPED(ginq_pick_st3, Gpick_st3, GIN_PICK, pick_st3)
+INQ_ST(ginq_string_st, Gstring_st, GIN_STRING, string_st)
+INQ_ST(ginq_string_st3, Gstring_st3, GIN_STRING, string_st3)
+#undef INQ_ST_TYPED
+#undef INQ_ST
+
+/* The default data: the device as OPEN WORKSTATION of the type creates it, with the
+ * type's number of prompt/echo types and of choices. */
+typedef struct {
+    gks_indev d;
+    Gint num_pets, max_choices;
+} def_ans;
+
+/* The common part: the prompt/echo types 1 .. num_pets into the caller's list (capacity
+ * num_ints on entry, count on return), the echo area (2-D) or volume, an empty record. */
+static void put_pets(Gint_list *pets, const def_ans *a)
+{
+    Gint cap = pets->ints ? pets->num_ints : 0;
+    for (Gint i = 0; i < a->num_pets && i < cap; i++)
+        pets->ints[i] = i + 1;
+    pets->num_ints = a->num_pets;
+}
+
+#define DEF_IN(def, a)                                                                     \
+    (put_pets(&(def)->pets, a), (def)->echo_area = echo_area2(&(a)->d.echo_vol),           \
+     (def)->in_data = (Gin_data){ 0 })
+#define DEF_IN3(def, a)                                                                    \
+    (put_pets(&(def)->pets, a), (def)->echo_vol = (a)->d.echo_vol, (def)->in_data = (Gin_data){ 0 })
+/* The class parts. */
+#define DEF_BUF(def, a, max) ((def)->max_buf_size = (max), (def)->buf_size = (a)->d.buf_size)
+#define DEF_VAL(def, a)                                                                    \
+    ((def)->value = (a)->d.init.val, (def)->low_value = (a)->d.low,                        \
+     (def)->high_value = (a)->d.high)
+
+static void loc_def(const def_ans *a, void *p)
+{
+    Gdef_loc *def = p;
+    DEF_IN(&def->dev, a);
+    def->loc_pos = (Gpoint){ a->d.init.pos.x, a->d.init.pos.y };
+}
+
+static void loc_def3(const def_ans *a, void *p)
+{
+    Gdef_loc3 *def = p;
+    DEF_IN3(def, a);
+    def->loc_pos = a->d.init.pos;
+}
+
+static void stroke_def(const def_ans *a, void *p)
+{
+    DEF_IN(&((Gdef_stroke *)p)->dev, a), DEF_BUF((Gdef_stroke *)p, a, GKS_IN_STROKE_MAX);
+}
+
+static void stroke_def3(const def_ans *a, void *p)
+{
+    DEF_IN3((Gdef_stroke3 *)p, a), DEF_BUF((Gdef_stroke3 *)p, a, GKS_IN_STROKE_MAX);
+}
+
+static void val_def(const def_ans *a, void *p)
+{
+    DEF_IN(&((Gdef_val *)p)->dev, a), DEF_VAL((Gdef_val *)p, a);
+}
+
+static void val_def3(const def_ans *a, void *p)
+{
+    DEF_IN3(&((Gdef_val3 *)p)->dev, a), DEF_VAL((Gdef_val3 *)p, a);
+}
+
+static void choice_def(const def_ans *a, void *p)
+{
+    DEF_IN(&((Gdef_choice *)p)->dev, a), ((Gdef_choice *)p)->max_choices = a->max_choices;
+}
+
+static void choice_def3(const def_ans *a, void *p)
+{
+    DEF_IN3(&((Gdef_choice3 *)p)->dev, a), ((Gdef_choice3 *)p)->max_choices = a->max_choices;
+}
+
+static void pick_def(const def_ans *a, void *p)
+{
+    DEF_IN((Gdef_in *)p, a);
+}
+
+static void pick_def3(const def_ans *a, void *p)
+{
+    DEF_IN3((Gdef_in3 *)p, a);
+}
+
+static void string_def(const def_ans *a, void *p)
+{
+    DEF_IN(&((Gdef_string *)p)->dev, a), DEF_BUF((Gdef_string *)p, a, GKS_IN_STRING_MAX);
+}
+
+static void string_def3(const def_ans *a, void *p)
+{
+    DEF_IN3(&((Gdef_string3 *)p)->dev, a), DEF_BUF((Gdef_string3 *)p, a, GKS_IN_STRING_MAX);
+}
+#undef DEF_IN
+#undef DEF_IN3
+#undef DEF_BUF
+#undef DEF_VAL
+
+/* A default-data inquiry: 8, 22, 23, 38, 140; fill writes def unless it is NULL. */
+static void inq_def(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, void *def,
+                    void (*fill)(const def_ans *, void *))
 {
     Gint e = gks_inq_state(GKS_S_OPEN);
     const gks_ws_desc *desc = NULL;
     if (!e)
         e = type_device_error(ws_type, cls, num, &desc);
     set_err(err_ind, e);
-    if (e)
-        return e;
-    gks_in_dev_default(desc, cls, d);
-    if (def) {
-        Gint np = desc->in->max_pet[cls - GIN_LOC], cap = def->pets.ints ? def->pets.num_ints : 0;
-        for (Gint i = 0; i < np && i < cap; i++)
-            def->pets.ints[i] = i + 1;
-        def->pets.num_ints = np;
-        def->echo_area = (Glimit){ d->echo_vol.x_min, d->echo_vol.x_max, d->echo_vol.y_min,
-                                   d->echo_vol.y_max };
-        def->in_data = (Gin_data){ 0 };
-    }
-    return 0;
-}
-
-GKS_API void ginq_def_loc_data(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    if (!inq_default(ws_type, GIN_LOC, loc_num, err_ind, def ? &def->dev : NULL, &d) && def)
-        def->loc_pos = (Gpoint){ d.init.pos.x, d.init.pos.y };
-}
-
-GKS_API void ginq_def_loc_data3(Gint ws_type, Gint loc_num, Gint *err_ind, Gdef_loc3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    Gdef_in dv = { 0 };
-    if (def)
-        dv.pets = def->pets;
-    if (inq_default(ws_type, GIN_LOC, loc_num, err_ind, &dv, &d) || !def)
+    if (e || !def)
         return;
-    def->pets.num_ints = dv.pets.num_ints;
-    def->echo_vol = d.echo_vol;
-    def->in_data = dv.in_data;
-    def->loc_pos = d.init.pos;
+    def_ans a = { .num_pets = desc->in->max_pet[cls - GIN_LOC],
+                  .max_choices = desc->in->max_choices };
+    gks_in_dev_default(desc, cls, &a.d);
+    fill(&a, def);
 }
 
-GKS_API void ginq_def_stroke_data(Gint ws_type, Gint stroke_num, Gint *err_ind,
-                                  Gdef_stroke *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    if (!inq_default(ws_type, GIN_STROKE, stroke_num, err_ind, def ? &def->dev : NULL, &d) &&
-        def) {
-        def->max_buf_size = GKS_IN_STROKE_MAX;
-        def->buf_size = d.buf_size;
+/* The entry points. */
+#define INQ_DEF(name, T, cls, fill)                                                        \
+    GKS_API void name(Gint ws_type, Gint num, Gint *err_ind, T *def)                       \
+    {                                                                                      \
+        GKS_INQ_ARGS(err_ind, def);                                                        \
+        inq_def(ws_type, cls, num, err_ind, def, fill);                                    \
     }
-}
-
-GKS_API void ginq_def_stroke_data3(Gint ws_type, Gint stroke_num, Gint *err_ind,
-                                   Gdef_stroke3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    Gdef_in dv = { 0 };
-    if (def)
-        dv.pets = def->pets;
-    if (inq_default(ws_type, GIN_STROKE, stroke_num, err_ind, &dv, &d) || !def)
-        return;
-    def->pets.num_ints = dv.pets.num_ints;
-    def->echo_vol = d.echo_vol;
-    def->in_data = dv.in_data;
-    def->max_buf_size = GKS_IN_STROKE_MAX;
-    def->buf_size = d.buf_size;
-}
-
-GKS_API void ginq_def_val_data(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    if (!inq_default(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d) && def) {
-        def->value = d.init.val;
-        def->low_value = d.low;
-        def->high_value = d.high;
-    }
-}
-
-GKS_API void ginq_def_choice_data(Gint ws_type, Gint choice_num, Gint *err_ind,
-                                  Gdef_choice *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    if (!inq_default(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d) &&
-        def)
-        def->max_choices = gks_driver_for_type(ws_type)->desc->in->max_choices;
-}
-
-GKS_API void ginq_def_pick_data(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    inq_default(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
-}
-
-GKS_API void ginq_def_string_data(Gint ws_type, Gint string_num, Gint *err_ind,
-                                  Gdef_string *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    if (!inq_default(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d) &&
-        def) {
-        def->max_buf_size = GKS_IN_STRING_MAX;
-        def->buf_size = d.buf_size;
-    }
-}
-
-/* The 3-D default data: the 2-D inquiry plus the echo volume. */
-static void def3(Gint ws_type, Gin_class cls, Gint num, Gint *err_ind, Gdef_in3 *def,
-                 gks_indev *d)
-{
-    Gdef_in dv = { 0 };
-    if (def)
-        dv.pets = def->pets;
-    if (inq_default(ws_type, cls, num, err_ind, &dv, d) || !def)
-        return;
-    def->pets.num_ints = dv.pets.num_ints;
-    def->echo_vol = d->echo_vol;
-    def->in_data = dv.in_data;
-}
-
-GKS_API void ginq_def_val_data3(Gint ws_type, Gint val_num, Gint *err_ind, Gdef_val3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    def3(ws_type, GIN_VAL, val_num, err_ind, def ? &def->dev : NULL, &d);
-    if (def && !*err_ind) {
-        def->value = d.init.val;
-        def->low_value = d.low;
-        def->high_value = d.high;
-    }
-}
-
-GKS_API void ginq_def_choice_data3(Gint ws_type, Gint choice_num, Gint *err_ind,
-                                   Gdef_choice3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    def3(ws_type, GIN_CHOICE, choice_num, err_ind, def ? &def->dev : NULL, &d);
-    if (def && !*err_ind)
-        def->max_choices = gks_driver_for_type(ws_type)->desc->in->max_choices;
-}
-
-GKS_API void ginq_def_pick_data3(Gint ws_type, Gint pick_num, Gint *err_ind, Gdef_in3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    def3(ws_type, GIN_PICK, pick_num, err_ind, def, &d);
-}
-
-GKS_API void ginq_def_string_data3(Gint ws_type, Gint string_num, Gint *err_ind,
-                                   Gdef_string3 *def)
-{
-    GKS_INQ_ARGS(err_ind, def);
-    gks_indev d;
-    def3(ws_type, GIN_STRING, string_num, err_ind, def ? &def->dev : NULL, &d);
-    if (def && !*err_ind) {
-        def->max_buf_size = GKS_IN_STRING_MAX;
-        def->buf_size = d.buf_size;
-    }
-}
+INQ_DEF(ginq_def_loc_data, Gdef_loc, GIN_LOC, loc_def)
+INQ_DEF(ginq_def_loc_data3, Gdef_loc3, GIN_LOC, loc_def3)
+INQ_DEF(ginq_def_stroke_data, Gdef_stroke, GIN_STROKE, stroke_def)
+INQ_DEF(ginq_def_stroke_data3, Gdef_stroke3, GIN_STROKE, stroke_def3)
+INQ_DEF(ginq_def_val_data, Gdef_val, GIN_VAL, val_def)
+INQ_DEF(ginq_def_val_data3, Gdef_val3, GIN_VAL, val_def3)
+INQ_DEF(ginq_def_choice_data, Gdef_choice, GIN_CHOICE, choice_def)
+INQ_DEF(ginq_def_choice_data3, Gdef_choice3, GIN_CHOICE, choice_def3)
+INQ_DEF(ginq_def_pick_data, Gdef_in, GIN_PICK, pick_def)
+INQ_DEF(ginq_def_pick_data3, Gdef_in3, GIN_PICK, pick_def3)
+INQ_DEF(ginq_def_string_data, Gdef_string, GIN_STRING, string_def)
+INQ_DEF(ginq_def_string_data3, Gdef_string3, GIN_STRING, string_def3)
+#undef INQ_DEF
 
 GKS_API void ginq_num_avail_in(Gint ws_type, Gint *err_ind, Gnum_in *num_in)
 {

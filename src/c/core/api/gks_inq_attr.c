@@ -304,39 +304,52 @@ static const gks_wdt_output *inq_out_type(Gint ws_type, Gint *err)
     return d->out ? d->out : &gks_wdt_raster;
 }
 
-GKS_API void ginq_line_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
-                            Gline_facs *f, Gint *length_list)
+/* The polyline, polymarker and edge facilities have one form: the types under the list
+ * rule, the number of widths or sizes (0: continuous), their nominal, minimum and maximum,
+ * and the number of predefined bundles; written into the members the caller names. */
+typedef struct {
+    Gint_list *types;
+    Gint *num;
+    Gfloat *nom, *min, *max;
+    Gint *num_pred;
+} size_facs_out;
+
+enum { FACS_LINE, FACS_MARKER, FACS_EDGE };
+
+static void size_facs(Gint ws_type, int which, Gint cap, Gint start, Gint *err_ind,
+                      Gint *length_list, size_facs_out o)
 {
-    GKS_INQ_ARGS(err_ind, f, length_list);
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *err_ind = gks_list_copy(t->linetypes, t->n_linetypes, cap, start, &f->types, length_list);
+    const gks_wdt_sizes *z = which == FACS_LINE ? &t->line
+                             : which == FACS_MARKER ? &t->marker
+                                                    : &t->edge;
+    *err_ind = gks_list_copy(z->types, z->n_types, cap, start, o.types, length_list);
     if (*err_ind)
         return;
-    f->num_widths = t->n_linewidths;
-    f->nom_width = t->nom_linewidth;
-    f->min_width = t->min_linewidth;
-    f->max_width = t->max_linewidth;
-    f->num_pred_inds = t->n_pred_line;
+    *o.num = z->n_sizes;
+    *o.nom = z->nom;
+    *o.min = z->min;
+    *o.max = z->max;
+    *o.num_pred = which == FACS_LINE     ? t->n_pred_line
+                  : which == FACS_MARKER ? t->n_pred_marker
+                                         : t->n_pred_edge;
 }
 
-GKS_API void ginq_marker_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
-                              Gmarker_facs *f, Gint *length_list)
-{
-    GKS_INQ_ARGS(err_ind, f, length_list);
-    const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
-    if (!t)
-        return;
-    *err_ind = gks_list_copy(t->markertypes, t->n_markertypes, cap, start, &f->types, length_list);
-    if (*err_ind)
-        return;
-    f->num_sizes = t->n_markersizes;
-    f->nom_size = t->nom_markersize;
-    f->min_size = t->min_markersize;
-    f->max_size = t->max_markersize;
-    f->num_pred_inds = t->n_pred_marker;
-}
+#define SIZE_FACS(name, T, which, num_, nom_, min_, max_)                                \
+    GKS_API void name(Gint ws_type, Gint cap, Gint start, Gint *err_ind, T *f,           \
+                      Gint *length_list)                                                 \
+    {                                                                                    \
+        GKS_INQ_ARGS(err_ind, f, length_list);                                           \
+        size_facs(ws_type, which, cap, start, err_ind, length_list,                      \
+                  (size_facs_out){ &f->types, &f->num_, &f->nom_, &f->min_, &f->max_,    \
+                                   &f->num_pred_inds });                                 \
+    }
+SIZE_FACS(ginq_line_facs, Gline_facs, FACS_LINE, num_widths, nom_width, min_width, max_width)
+SIZE_FACS(ginq_marker_facs, Gmarker_facs, FACS_MARKER, num_sizes, nom_size, min_size, max_size)
+SIZE_FACS(ginq_edge_facs, Gedge_facs, FACS_EDGE, num_widths, nom_width, min_width, max_width)
+#undef SIZE_FACS
 
 GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
                             Gtext_facs *f, Gint *length_list)
@@ -345,13 +358,14 @@ GKS_API void ginq_text_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (!t)
         return;
-    *length_list = t->n_font_precs;
-    if ((*err_ind = gks_list_start(start, t->n_font_precs)))
+    gks_list_out w = { .num = &f->num_font_precs, .cap = f->font_precs ? cap : 0, .start = start };
+    for (int i = 0; i < t->n_font_precs; i++) {
+        int k = gks_list_slot(&w);
+        if (k >= 0)
+            f->font_precs[k] = t->font_precs[i];
+    }
+    if ((*err_ind = gks_list_end(&w, length_list)))
         return;
-    int k = 0;
-    for (int i = start; i < t->n_font_precs && k < cap && f->font_precs; i++)
-        f->font_precs[k++] = t->font_precs[i];
-    f->num_font_precs = k;
     f->num_char_hts = t->n_char_hts;
     f->min_char_ht = t->min_char_ht;
     f->max_char_ht = t->max_char_ht;
@@ -385,23 +399,6 @@ GKS_API void ginq_pat_facs(Gint ws_type, Gint *err_ind, Gint *num_pred_inds)
     const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
     if (t)
         *num_pred_inds = t->n_pred_pat;
-}
-
-GKS_API void ginq_edge_facs(Gint ws_type, Gint cap, Gint start, Gint *err_ind,
-                            Gedge_facs *f, Gint *length_list)
-{
-    GKS_INQ_ARGS(err_ind, f, length_list);
-    const gks_wdt_output *t = inq_out_type(ws_type, err_ind);
-    if (!t)
-        return;
-    *err_ind = gks_list_copy(t->edgetypes, t->n_edgetypes, cap, start, &f->types, length_list);
-    if (*err_ind)
-        return;
-    f->num_widths = t->n_edgewidths;
-    f->nom_width = t->nom_edgewidth;
-    f->min_width = t->min_edgewidth;
-    f->max_width = t->max_edgewidth;
-    f->num_pred_inds = t->n_pred_edge;
 }
 
 /* Predefined bundle i of a table with n entries: errors bad_ind (index < 1) and

@@ -97,26 +97,29 @@ GKS_API void ginq_max_norm_tran_num(Gint *err_ind, Gint *max_norm_tran_num)
         *max_norm_tran_num = gks_ctx()->desc->max_norm_tran;
 }
 
+/* INQUIRE SET OF OPEN / ACTIVE WORKSTATIONS: 8, then the list rule over the identifiers. */
+static void ws_set(int active, Gint cap, Gint start, Gint *err_ind, Gint_list *out,
+                   Gint *length_list)
+{
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
+        return;
+    const gks_state_list *sl = gks_ctx()->sl;
+    *err_ind = active ? gks_list_copy(sl->active_ws, sl->n_active, cap, start, out, length_list)
+                      : gks_list_copy(sl->open_ws, sl->n_open, cap, start, out, length_list);
+}
+
 GKS_API void ginq_set_open_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                Gint_list *open_ws, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, open_ws, length_list);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = gks_list_copy(sl->open_ws, sl->n_open, num_elems_appl_list, start_pos, open_ws,
-                         length_list);
+    ws_set(0, num_elems_appl_list, start_pos, err_ind, open_ws, length_list);
 }
 
 GKS_API void ginq_set_active_wss(Gint num_elems_appl_list, Gint start_pos, Gint *err_ind,
                                  Gint_list *active_ws, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, active_ws, length_list);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    const gks_state_list *sl = gks_ctx()->sl;
-    *err_ind = gks_list_copy(sl->active_ws, sl->n_active, num_elems_appl_list, start_pos,
-                         active_ws, length_list);
+    ws_set(1, num_elems_appl_list, start_pos, err_ind, active_ws, length_list);
 }
 
 GKS_API void ginq_ws_conn_type(Gint ws_id, Gint string_length, Gint *err_ind, char *conn_id,
@@ -169,14 +172,9 @@ GKS_API void ginq_ws_cat(Gint ws_type, Gint *err_ind, Gws_cat *cat)
 GKS_API void ginq_ws_class(Gint ws_type, Gint *err_ind, Gws_class *ws_class)
 {
     GKS_INQ_ARGS(err_ind, ws_class);
-    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 0, err_ind);
-    if (!d)
-        return;
-    if (d->cat != GCAT_OUT && d->cat != GCAT_OUTIN) {
-        *err_ind = 39;
-        return;
-    }
-    *ws_class = d->cls;
+    const gks_ws_desc *d = gks_inq_ws_type(ws_type, 1, err_ind);
+    if (d)
+        *ws_class = d->cls;
 }
 
 GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size *disp_size)
@@ -193,9 +191,6 @@ GKS_API void ginq_disp_space_size(Gint ws_type, Gint *err_ind, Gdisp_space_size 
     disp_size->size_dc = (Gfloat_size){ d->dc_x, d->dc_y };
     disp_size->size_raster = (Gint_size){ d->raster_x, d->raster_y };
 }
-
-
-
 
 GKS_API void ginq_colr_rep(Gint ws_id, Gint colr_ind, Ginq_type type, Gint *err_ind,
                            Gcolr_rep *colr_rep)

@@ -289,8 +289,6 @@ GKS_API void ginq_cur_indiv_attrs3(Gint *err_ind, Gindiv_attrs3 *p)
     *p = r;
 }
 
-
-
 GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs)
 {
     GKS_INQ_ARGS(err_ind, attrs);
@@ -311,13 +309,13 @@ GKS_API void ginq_seg_attrs(Gint seg_name, Gint *err_ind, Gseg_attrs *attrs)
 }
 
 /* --------------------------------------------------------------- workstation lists */
-/* Workstation of an output inquiry: 7, 20, 25, then 33 (MI) / 35 (INPUT) / 36 (WISS). */
-
+/* INQUIRE LIST OF COLOUR INDICES: 7, 20, 25, 33, 35, 36 (gks_inq_out_ws), then the
+ * defined indices in ascending order under the list rule. */
 GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint start_pos,
                                  Gint *err_ind, Gint_list *colr_inds, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, colr_inds, length_list);
-    gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
+    const gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
     if (!ws)
         return;
     gks_list_out w = gks_list_begin(colr_inds, num_elems_appl_list, start_pos);

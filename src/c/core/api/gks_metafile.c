@@ -152,13 +152,13 @@ static size_t field_w(const dec *d, char kind)
     return kind == 'r' && d->c.ri == 1 ? (size_t)d->c.rw : (size_t)d->c.iw;
 }
 
-/* A count that must fit `per` fields of kind `kind` each in what is left of the record
- * (so nothing is allocated beyond the record's size); -1 (err 165) if not. */
-static long d_count(dec *d, long min, size_t per, char kind)
+/* A count in [min, max] that must fit `per` fields of kind `kind` each in what is left of
+ * the record (so nothing is allocated beyond the record's size); -1 (err 165) if not. */
+static long d_count(dec *d, long min, long max, size_t per, char kind)
 {
     long n = d_long(d);
     size_t w = field_w(d, kind) * per;
-    if (d->err || n < min || (n > 0 && (size_t)n > gksm_cur_left(&d->c) / w)) {
+    if (d->err || n < min || n > max || (n > 0 && (size_t)n > gksm_cur_left(&d->c) / w)) {
         d->err = 165;
         return -1;
     }
@@ -185,14 +185,21 @@ static char *d_str(dec *d)
     return t;
 }
 
+/* A new array of n (at least 1) elements of `size` bytes, or NULL with err 300. */
+static void *d_alloc(dec *d, size_t n, size_t size)
+{
+    void *p = gks_alloc_array(n ? n : 1, size);
+    if (!p)
+        d->err = 300;
+    return p;
+}
+
 /* n points of `dim` reals each (z = 0 when dim is 2) into a new array. */
 static Gpoint3 *d_points(dec *d, long n, int dim)
 {
-    Gpoint3 *p = gks_alloc_array((size_t)(n > 0 ? n : 1), sizeof *p);
-    if (!p) {
-        d->err = 300;
+    Gpoint3 *p = d_alloc(d, (size_t)n, sizeof *p);
+    if (!p)
         return NULL;
-    }
     for (long i = 0; i < n; i++) {
         p[i].x = d_real(d);
         p[i].y = d_real(d);
@@ -256,7 +263,7 @@ static int active_targets(int ids[GKS_MAX_ACTIVE_WS])
 static void x_points(interp *ip, int dim, int item)
 {
     long min = item == GKSM_ITEM_POLYLINE3 ? 2 : item == GKSM_ITEM_POLYMARKER3 ? 1 : 3;
-    long n = d_count(&ip->d, min, (size_t)dim, 'r');
+    long n = d_count(&ip->d, min, LONG_MAX, (size_t)dim, 'r');
     if (n < 0)
         return;
     Gpoint3 *p = d_points(&ip->d, n, dim);
@@ -278,14 +285,10 @@ static void x_points(interp *ip, int dim, int item)
 static void x_fill_area_set(interp *ip)
 {
     dec *d = &ip->d;
-    long nl = d_count(d, 1, 1, 'i');
-    if (nl < 0)
+    long nl = d_count(d, 1, LONG_MAX, 1, 'i');
+    Gpoint_list3 *lists = nl < 0 ? NULL : d_alloc(d, (size_t)nl, sizeof *lists);
+    if (!lists)
         return;
-    Gpoint_list3 *lists = gks_calloc_array((size_t)nl, sizeof *lists);
-    if (!lists) {
-        d->err = 300;
-        return;
-    }
     long total = 0;
     for (long k = 0; k < nl && !d->err; k++) {
         long c = d_long(d);
@@ -334,10 +337,8 @@ static void x_data(interp *ip, int type)
         d->err = 165;
         return;
     }
-    int *ints = gks_alloc_array(ni, sizeof *ints);
-    double (*tri)[3] = gks_alloc_array(nt ? nt : 1, sizeof *tri);
-    if (!ints || !tri)
-        d->err = 300;
+    int *ints = d_alloc(d, ni, sizeof *ints);
+    double (*tri)[3] = d_alloc(d, nt, sizeof *tri);
     for (size_t k = 0; !d->err && k < ni; k++)
         ints[k] = k < GKS_AREA_DATA_HEADER ? hdr[k] : d_int(d);
     for (size_t i = 0; !d->err && i < nt; i++)
@@ -387,11 +388,9 @@ static Gint *d_index_grid(dec *d, Gint *nx_out, Gint *ny_out)
     if (d->err)
         return NULL;
     size_t n = (size_t)nx * (size_t)ny;
-    Gint *colr = gks_alloc_array(n, sizeof *colr);
-    if (!colr) {
-        d->err = 300;
+    Gint *colr = d_alloc(d, n, sizeof *colr);
+    if (!colr)
         return NULL;
-    }
     for (size_t i = 0; i < n; i++)
         colr[i] = d_int(d);
     if (!d->err && gksm_cur_left(&d->c) != 0)
@@ -438,13 +437,9 @@ static void x_pat_rep(interp *ip)
 static void x_light_state(interp *ip)
 {
     dec *d = &ip->d;
-    long n = d_count(d, 0, 1, 'i');
+    long n = d_count(d, 0, GKS_MAX_LIGHT_IND, 1, 'i');
     if (n < 0)
         return;
-    if (n > GKS_MAX_LIGHT_IND) {
-        d->err = 165;
-        return;
-    }
     Gint on[GKS_MAX_LIGHT_IND], off[GKS_MAX_LIGHT_IND];
     unsigned char is_on[GKS_MAX_LIGHT_IND + 1] = { 0 };
     for (long i = 0; i < n && !d->err; i++) {
@@ -504,24 +499,16 @@ static void x_escape(interp *ip)
 {
     dec *d = &ip->d;
     int func = d_int(d);
-    long ni = d_count(d, 1, 1, 'i');
-    Gint *ints = NULL;
+    long ni = d_count(d, 1, LONG_MAX, 1, 'i');
+    Gint *ints = ni < 0 ? NULL : d_alloc(d, (size_t)ni, sizeof *ints);
     Gfloat *reals = NULL;
-    if (ni < 0)
+    if (!ints)
         return;
-    ints = gks_alloc_array((size_t)ni, sizeof *ints);
-    if (!ints) {
-        d->err = 300;
-        return;
-    }
     for (long i = 0; i < ni; i++)
         ints[i] = d_int(d);
-    long nr = d_count(d, 0, 1, 'r');
-    if (nr >= 0) {
-        reals = gks_alloc_array((size_t)(nr > 0 ? nr : 1), sizeof *reals);
-        if (!reals)
-            d->err = 300;
-    }
+    long nr = d_count(d, 0, LONG_MAX, 1, 'r');
+    if (nr >= 0)
+        reals = d_alloc(d, (size_t)nr, sizeof *reals);
     for (long i = 0; reals && i < nr; i++)
         reals[i] = d_real(d);
     const char *s = NULL;

@@ -44,10 +44,9 @@ GKS_API void ginq_list_norm_tran_nums(Gint num_elems_appl_list, Gint start_pos, 
                                       Gint_list *list, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, list, length_list);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    *err_ind = gks_list_copy(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1, num_elems_appl_list,
-                        start_pos, list, length_list);
+    if (!gks_inq_begin(err_ind, GKS_S_OPEN))
+        *err_ind = gks_list_copy(gks_ctx()->sl->tran_pri, GKS_MAX_NORM_TRAN + 1,
+                                 num_elems_appl_list, start_pos, list, length_list);
 }
 
 GKS_API void gset_view_tran_in_pri(Gint ws_id, Gint view_ind, Gint ref_view_ind,
@@ -71,9 +70,8 @@ GKS_API void ginq_list_view_inds(Gint ws_id, Gint num_elems_appl_list, Gint star
                                  Gint *err_ind, Gint_list *list, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, list, length_list);
-    gks_ws *ws = gks_inq_ws(ws_id, err_ind);
-    if (!ws)
-        return;
-    *err_ind = gks_list_copy(ws->view_pri, GKS_MAX_VIEW_IND + 1, num_elems_appl_list, start_pos,
-                        list, length_list);
+    const gks_ws *ws = gks_inq_ws(ws_id, err_ind);
+    if (ws)
+        *err_ind = gks_list_copy(ws->view_pri, GKS_MAX_VIEW_IND + 1, num_elems_appl_list,
+                                 start_pos, list, length_list);
 }

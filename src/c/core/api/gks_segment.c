@@ -64,6 +64,14 @@ static GKS_MUST_CHECK int picture_changed(const gks_segment *s, int fctid)
     return pictures_changed(ids, s->n_ws, fctid);
 }
 
+/* A picture change as the caller's last action: whatever the handler did, the caller
+ * returns next (the GKS_MUST_CHECK of picture_changed is satisfied here, once). */
+static void shown_change(const gks_segment *s, int fctid)
+{
+    if (!picture_changed(s, fctid)) {
+    }
+}
+
 /* Segment `name` ceases to exist (pointers to it are stale: the world changes). */
 static void seg_delete(int name)
 {
@@ -81,6 +89,30 @@ static gks_segment *existing(int fctid, Gint name)
     gks_segment *s = gks_seg_find(store(), name);
     if (!s)
         GKS_FAIL_RET(122, fctid, NULL);
+    return s;
+}
+
+/* Entry of SET SEGMENT TRANSFORMATION (3): the segment, then 2003 for a NULL matrix and
+ * 308 for one with n elements of which one is not finite (GKS has no error of its own for
+ * it: 308, as for the other non-finite reals, docs/BINDING.md; stored it would make the
+ * segment vanish). The segment, or NULL after reporting. */
+static gks_segment *existing_tran(int fctid, Gint name, const double *m, int n)
+{
+    gks_segment *s = existing(fctid, name);
+    if (s && !m)
+        GKS_FAIL_RET(2003, fctid, NULL);
+    if (s && !finite_n(m, n))
+        GKS_FAIL_RET(308, fctid, NULL);
+    return s;
+}
+
+/* Entry of SET VISIBILITY, HIGHLIGHTING, DETECTABILITY: the segment, then 2000 for a value
+ * other than off and on. The segment, or NULL after reporting. */
+static gks_segment *existing_switch(int fctid, Gint name, int v, int off, int on)
+{
+    gks_segment *s = existing(fctid, name);
+    if (s && v != off && v != on)
+        GKS_FAIL_RET(2000, fctid, NULL);
     return s;
 }
 
@@ -180,63 +212,46 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    gks_segment *s = existing(GFN_SSGT3, seg_name);
+    gks_segment *s =
+        existing_tran(GFN_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
     if (!s)
         return;
-    if (!tran_matrix)
-        GKS_FAIL(2003, GFN_SSGT3);
-    /* GKS has no error of its own for a non-finite matrix: 308, as for the other
-     * non-finite reals (docs/BINDING.md); stored it would make the segment vanish. */
-    if (!finite_n(&tran_matrix[0][0], 12))
-        GKS_FAIL(308, GFN_SSGT3);
     memcpy(s->tran, tran_matrix, sizeof s->tran);
     GKS_MF(SSGT3, seg_name, &tran_matrix[0][0]);
     if (s->vis)
-        if (!picture_changed(s, GFN_SSGT3))
-            return;
+        shown_change(s, GFN_SSGT3);
 }
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    gks_segment *s = existing(GFN_SSGT, seg_name);
+    gks_segment *s = existing_tran(GFN_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
     if (!s)
         return;
-    if (!tran_matrix)
-        GKS_FAIL(2003, GFN_SSGT);
-    if (!finite_n(&tran_matrix[0][0], 6))
-        GKS_FAIL(308, GFN_SSGT);
     /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
      * transformation is the 3-D one with identity z row and no z coupling). */
     gks_xform_mat23_to_mat34(tran_matrix, s->tran);
     GKS_MF(SSGT, seg_name, &tran_matrix[0][0]);
     if (s->vis)
-        if (!picture_changed(s, GFN_SSGT))
-            return;
+        shown_change(s, GFN_SSGT);
 }
 
 GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
 {
-    gks_segment *s = existing(GFN_SVIS, seg_name);
+    gks_segment *s = existing_switch(GFN_SVIS, seg_name, vis, GSEG_INVIS, GSEG_VIS);
     if (!s)
         return;
-    if (vis != GSEG_INVIS && vis != GSEG_VIS)
-        GKS_FAIL(2000, GFN_SVIS);
     GKS_MF(SVIS, seg_name, vis);
-    int v = vis == GSEG_VIS;
-    if (v == s->vis)
-        return;
-    s->vis = v;
-    if (!picture_changed(s, GFN_SVIS))
-        return;
+    if ((vis == GSEG_VIS) != s->vis) {
+        s->vis = vis == GSEG_VIS;
+        shown_change(s, GFN_SVIS);
+    }
 }
 
 GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
 {
-    gks_segment *s = existing(GFN_SHLIT, seg_name);
+    gks_segment *s = existing_switch(GFN_SHLIT, seg_name, highl, GSEG_NORM, GSEG_HIGHL);
     if (!s)
         return;
-    if (highl != GSEG_NORM && highl != GSEG_HIGHL)
-        GKS_FAIL(2000, GFN_SHLIT);
     GKS_MF(SHLIT, seg_name, highl);
     s->highl = highl == GSEG_HIGHL;
 }
@@ -249,21 +264,18 @@ GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
     if (!(pri >= 0.0 && pri <= 1.0))
         GKS_FAIL(126, GFN_SSGP);
     GKS_MF(SSGP, seg_name, pri);
-    if (pri == s->pri)
-        return;
-    s->pri = pri;
-    if (s->vis)
-        if (!picture_changed(s, GFN_SSGP))
-            return;
+    if (pri != s->pri) {
+        s->pri = pri;
+        if (s->vis)
+            shown_change(s, GFN_SSGP);
+    }
 }
 
 GKS_API void gset_det(Gint seg_name, Gseg_det det)
 {
-    gks_segment *s = existing(GFN_SDTEC, seg_name);
+    gks_segment *s = existing_switch(GFN_SDTEC, seg_name, det, GSEG_UNDET, GSEG_DET);
     if (!s)
         return;
-    if (det != GSEG_UNDET && det != GSEG_DET)
-        GKS_FAIL(2000, GFN_SDTEC);
     GKS_MF(SDTEC, seg_name, det);
     s->det = det == GSEG_DET;
 }

@@ -17,53 +17,74 @@
 #include <math.h>
 
 /* --- Normalization transformations ------------------------------------------------ */
-/* The checks are the xform module's (gks_xform_check_*); a NULL rectangle is 51. These
- * give a 2-D rectangle as the double[4] / double[6] boxes they take. */
-static void rect4(const Glimit *r, double b[4])
+/* The checks are the xform module's (gks_xform_check_*), on a rectangle or box given as
+ * the double[6] they take: x, y, z limits; a 2-D rectangle has z from 0 to 0 (the 2-D
+ * checks read the first four). A NULL argument is 51. */
+static const double *box2(const Glimit *r, double b[6])
 {
+    if (!r)
+        return NULL;
     b[0] = r->x_min, b[1] = r->x_max, b[2] = r->y_min, b[3] = r->y_max;
+    b[4] = b[5] = 0.0;
+    return b;
 }
 
-/* A 2-D workstation window or viewport as a box with z from 0 to 0. */
-static void rect6(const Glimit *r, double b[6])
+static const double *box3(const Glimit3 *r, double b[6])
 {
-    rect4(r, b);
-    b[4] = b[5] = 0.0;
+    if (!r)
+        return NULL;
+    gks_limit3_array(r, b);
+    return b;
+}
+
+/* Limits l from box b: x and y, and z when dim is 3. */
+static void put_limits(Glimit3 *l, const double b[6], int dim)
+{
+    l->x_min = b[0], l->x_max = b[1], l->y_min = b[2], l->y_max = b[3];
+    if (dim == 3)
+        l->z_min = b[4], l->z_max = b[5];
+}
+
+/* SET WINDOW (3) / SET VIEWPORT (3) of transformation tran_num to box b of dimension dim:
+ * 50, then 51 (and 52 for a viewport outside NDC space); a 2-D rectangle keeps z. */
+static void set_norm_limits(int fct, Gint tran_num, const double *b, int dim, int viewport)
+{
+    if (gks_check_state(fct))
+        return;
+    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
+        GKS_FAIL(50, fct);
+    int err = !b        ? 51
+              : viewport ? (dim == 3 ? gks_xform_check_viewport3(b) : gks_xform_check_viewport(b))
+              : (dim == 3 ? gks_xform_check_window3(b) : gks_xform_check_window(b)) ? 51
+                                                                                     : 0;
+    if (err)
+        GKS_FAIL(err, fct);
+    gks_norm_tran *t = &gks_ctx()->sl->tran[tran_num];
+    put_limits(viewport ? &t->vp : &t->win, b, dim);
 }
 
 GKS_API void gset_win(Gint tran_num, const Glimit *win)
 {
-    if (gks_check_state(GFN_SWN))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SWN);
-    double b[4];
-    if (!win)
-        GKS_FAIL(51, GFN_SWN);
-    rect4(win, b);
-    if (gks_xform_check_window(b))
-        GKS_FAIL(51, GFN_SWN);
-    Glimit3 *w = &gks_ctx()->sl->tran[tran_num].win;
-    w->x_min = win->x_min; w->x_max = win->x_max;
-    w->y_min = win->y_min; w->y_max = win->y_max;
+    double b[6];
+    set_norm_limits(GFN_SWN, tran_num, box2(win, b), 2, 0);
 }
 
 GKS_API void gset_vp(Gint tran_num, const Glimit *vp)
 {
-    if (gks_check_state(GFN_SVP))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SVP);
-    double b[4];
-    if (!vp)
-        GKS_FAIL(51, GFN_SVP);
-    rect4(vp, b);
-    int err = gks_xform_check_viewport(b); /* 51, then 52 */
-    if (err)
-        GKS_FAIL(err, GFN_SVP);
-    Glimit3 *v = &gks_ctx()->sl->tran[tran_num].vp;
-    v->x_min = vp->x_min; v->x_max = vp->x_max;
-    v->y_min = vp->y_min; v->y_max = vp->y_max;
+    double b[6];
+    set_norm_limits(GFN_SVP, tran_num, box2(vp, b), 2, 1);
+}
+
+GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
+{
+    double b[6];
+    set_norm_limits(GFN_SW3, tran_num, box3(win, b), 3, 0);
+}
+
+GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
+{
+    double b[6];
+    set_norm_limits(GFN_SV3, tran_num, box3(vp, b), 3, 1);
 }
 
 GKS_API void gsel_norm_tran(Gint tran_num)
@@ -84,37 +105,6 @@ GKS_API void gset_clip_ind(Gclip_ind clip_ind)
     gks_ctx()->sl->clip_ind = clip_ind;
 }
 
-GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
-{
-    double b[6];
-    if (gks_check_state(GFN_SW3))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SW3);
-    if (!win)
-        GKS_FAIL(51, GFN_SW3);
-    gks_limit3_array(win, b);
-    if (gks_xform_check_window3(b))
-        GKS_FAIL(51, GFN_SW3);
-    gks_ctx()->sl->tran[tran_num].win = *win;
-}
-
-GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
-{
-    double b[6];
-    if (gks_check_state(GFN_SV3))
-        return;
-    if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
-        GKS_FAIL(50, GFN_SV3);
-    if (!vp)
-        GKS_FAIL(51, GFN_SV3);
-    gks_limit3_array(vp, b);
-    int err = gks_xform_check_viewport3(b); /* 51, then 52 */
-    if (err)
-        GKS_FAIL(err, GFN_SV3);
-    gks_ctx()->sl->tran[tran_num].vp = *vp;
-}
-
 /* --- Workstation transformation ------------------------------------------------------ */
 /* Requested values become current at once when the display surface is empty, else at
  * the next regeneration (UPDATE with PERFORM, CLEAR, or at once if implicit
@@ -125,106 +115,84 @@ static void display_space(const gks_ws *ws, double ds[3])
     ds[0] = ws->drv->desc->dc_x, ds[1] = ws->drv->desc->dc_y, ds[2] = 1.0;
 }
 
-static int ws_tran_changed(gks_ws *ws)
+/* The requested workstation window or viewport changed: current at once or pending (see
+ * above); a failed clear or regeneration is reported for fct. */
+static void ws_tran_changed(gks_ws *ws, int fct)
 {
+    int err = 0;
     if (ws->disp_empty == GDISP_EMPTY) {
         ws->cur_win = ws->req_win;
         ws->cur_vp = ws->req_vp;
-        return ws->drv->clear ? ws->drv->clear(ws) : 0;
+        err = ws->drv->clear ? ws->drv->clear(ws) : 0;
+    } else {
+        ws->tran_upd_st = GUPD_PEND;
+        ws->new_frame = GNEW_YES;
+        err = ws->irg_mode == GIRG_ALLOWED ? gks_ws_regenerate(ws) : 0;
     }
-    ws->tran_upd_st = GUPD_PEND;
-    ws->new_frame = GNEW_YES;
-    return ws->irg_mode == GIRG_ALLOWED ? gks_ws_regenerate(ws) : 0;
+    if (err)
+        GKS_FAIL(err, fct);
+}
+
+/* SET WORKSTATION WINDOW (3) / VIEWPORT (3): the workstation (7, 20, 25, 33, 36), then
+ * box b of dimension dim (51; a window outside the NPC unit cube 53, a viewport outside the
+ * display space 54), then the requested window or viewport set. The workstation, or NULL
+ * after reporting. */
+static gks_ws *ws_limits_set(int fct, Gint ws_id, const double *b, int dim, int viewport)
+{
+    if (gks_check_state(fct))
+        return NULL;
+    gks_ws *ws = gks_ws_checked(fct, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    if (!ws)
+        return NULL;
+    double ds[3];
+    display_space(ws, ds);
+    int err = !b         ? 51
+              : viewport ? gks_xform_check_ws_viewport3(b, ds)
+                         : gks_xform_check_ws_window3(b);
+    if (err)
+        GKS_FAIL_RET(err, fct, NULL);
+    put_limits(viewport ? &ws->req_vp : &ws->req_win, b, dim);
+    return ws;
 }
 
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
 {
-    if (gks_check_state(GFN_SWKWN))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKWN, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    double b[6];
+    gks_ws *ws = ws_limits_set(GFN_SWKWN, ws_id, box2(ws_win, b), 2, 0);
     if (!ws)
         return;
-    double b[6];
-    if (!ws_win)
-        GKS_FAIL(51, GFN_SWKWN);
-    rect6(ws_win, b);
-    int e = gks_xform_check_ws_window3(b); /* 51, then 53 */
-    if (e)
-        GKS_FAIL(e, GFN_SWKWN);
-    ws->req_win.x_min = ws_win->x_min; ws->req_win.x_max = ws_win->x_max;
-    ws->req_win.y_min = ws_win->y_min; ws->req_win.y_max = ws_win->y_max;
     GKS_MF_WS(SWKWN, ws_id, &ws_win->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKWN);
+    ws_tran_changed(ws, GFN_SWKWN);
 }
 
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
 {
-    if (gks_check_state(GFN_SWKVP))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKVP, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    double b[6];
+    gks_ws *ws = ws_limits_set(GFN_SWKVP, ws_id, box2(ws_vp, b), 2, 1);
     if (!ws)
         return;
-    double b[6];
-    if (!ws_vp)
-        GKS_FAIL(51, GFN_SWKVP);
-    rect6(ws_vp, b);
-    double ds[3];
-    display_space(ws, ds);
-    int e = gks_xform_check_ws_viewport3(b, ds); /* 51, then 54 */
-    if (e)
-        GKS_FAIL(e, GFN_SWKVP);
-    ws->req_vp.x_min = ws_vp->x_min; ws->req_vp.x_max = ws_vp->x_max;
-    ws->req_vp.y_min = ws_vp->y_min; ws->req_vp.y_max = ws_vp->y_max;
     GKS_MF_WS(SWKVP, ws_id, &ws_vp->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKVP);
+    ws_tran_changed(ws, GFN_SWKVP);
 }
 
 GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
 {
-    if (gks_check_state(GFN_SWKW3))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKW3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    double b[6];
+    gks_ws *ws = ws_limits_set(GFN_SWKW3, ws_id, box3(ws_win, b), 3, 0);
     if (!ws)
         return;
-    double b[6];
-    if (!ws_win)
-        GKS_FAIL(51, GFN_SWKW3);
-    gks_limit3_array(ws_win, b);
-    int e = gks_xform_check_ws_window3(b); /* 51, then 53 */
-    if (e)
-        GKS_FAIL(e, GFN_SWKW3);
-    ws->req_win = *ws_win;
     GKS_MF_WS(SWKW3, ws_id, &ws_win->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKW3);
+    ws_tran_changed(ws, GFN_SWKW3);
 }
 
 GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
 {
-    if (gks_check_state(GFN_SWKV3))
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_SWKV3, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
+    double b[6];
+    gks_ws *ws = ws_limits_set(GFN_SWKV3, ws_id, box3(ws_vp, b), 3, 1);
     if (!ws)
         return;
-    double b[6];
-    if (!ws_vp)
-        GKS_FAIL(51, GFN_SWKV3);
-    gks_limit3_array(ws_vp, b);
-    double ds[3];
-    display_space(ws, ds);
-    int e = gks_xform_check_ws_viewport3(b, ds); /* 51, then 54 */
-    if (e)
-        GKS_FAIL(e, GFN_SWKV3);
-    ws->req_vp = *ws_vp;
     GKS_MF_WS(SWKV3, ws_id, &ws_vp->x_min);
-    int err = ws_tran_changed(ws);
-    if (err)
-        GKS_FAIL(err, GFN_SWKV3);
+    ws_tran_changed(ws, GFN_SWKV3);
 }
 
 /* --- Inquiries --------------------------------------------------------------------- */

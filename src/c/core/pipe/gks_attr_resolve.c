@@ -32,31 +32,31 @@ Grgb gks_attr_colour(const gks_ws *ws, int ind)
 }
 
 /* A scale factor realized: nominal * s clamped to [min, max], back to a factor. */
-static double clamp_scale(double s, double nom, double min, double max)
+static double clamp_scale(double s, const gks_wdt_sizes *z)
 {
-    if (!(nom > 0))
+    if (!(z->nom > 0))
         return s;
-    double w = s * nom;
-    if (!(w >= min))
-        w = min;
-    if (w > max)
-        w = max;
-    return w / nom;
+    double w = s * z->nom;
+    if (!(w >= z->min))
+        w = z->min;
+    if (w > z->max)
+        w = z->max;
+    return w / z->nom;
 }
 
 void gks_attr_realize_line(const gks_ws *ws, const Gline_bundle *in, Gline_bundle *out)
 {
     const gks_wdt_output *t = gks_attr_wdt(ws);
-    out->type = gks_wdt_has(t->linetypes, t->n_linetypes, in->type) ? in->type : 1;
-    out->width = clamp_scale(in->width, t->nom_linewidth, t->min_linewidth, t->max_linewidth);
+    out->type = gks_wdt_has(t->line.types, t->line.n_types, in->type) ? in->type : 1;
+    out->width = clamp_scale(in->width, &t->line);
     out->colr_ind = gks_attr_colr_ind(ws, in->colr_ind);
 }
 
 void gks_attr_realize_marker(const gks_ws *ws, const Gmarker_bundle *in, Gmarker_bundle *out)
 {
     const gks_wdt_output *t = gks_attr_wdt(ws);
-    out->type = gks_wdt_has(t->markertypes, t->n_markertypes, in->type) ? in->type : 3;
-    out->size = clamp_scale(in->size, t->nom_markersize, t->min_markersize, t->max_markersize);
+    out->type = gks_wdt_has(t->marker.types, t->marker.n_types, in->type) ? in->type : 3;
+    out->size = clamp_scale(in->size, &t->marker);
     out->colr_ind = gks_attr_colr_ind(ws, in->colr_ind);
 }
 
@@ -97,8 +97,8 @@ void gks_attr_realize_edge(const gks_ws *ws, const Gedge_bundle *in, Gedge_bundl
 {
     const gks_wdt_output *t = gks_attr_wdt(ws);
     out->flag = in->flag == GEDGE_ON ? GEDGE_ON : GEDGE_OFF;
-    out->type = gks_wdt_has(t->edgetypes, t->n_edgetypes, in->type) ? in->type : 1;
-    out->width = clamp_scale(in->width, t->nom_edgewidth, t->min_edgewidth, t->max_edgewidth);
+    out->type = gks_wdt_has(t->edge.types, t->edge.n_types, in->type) ? in->type : 1;
+    out->width = clamp_scale(in->width, &t->edge);
     out->colr_ind = gks_attr_colr_ind(ws, in->colr_ind);
 }
 

@@ -20,19 +20,9 @@ typedef struct {
 } mi_in;
 
 static const gks_ws_desc mi_desc = {
-    .type = GWS_TYPE_MI,
-    .name = "gksm-in",
-    .cat = GCAT_MI,
-    .cls = GCLASS_OTHER,
-    .dc_units = GDC_OTHER,
-    .dc_x = 1, .dc_y = 1,
-    .raster_x = 1, .raster_y = 1,
-    .colr_avail = GAVAIL_COLR,
+    GKS_WS_DESC_NODRAW(GWS_TYPE_MI, "gksm-in", GCAT_MI, GCLASS_OTHER, 1),
     .n_colr = 1,
-    .default_irg = GIRG_ALLOWED,
-    .default_defer = GDEFER_ASAP,
     .hlhsr_modes = 1u << GHLHSR_NONE,
-    .out = &gks_wdt_raster,
 };
 
 static int mi_file(const gks_ws *ws, char **path)

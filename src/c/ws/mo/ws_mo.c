@@ -18,26 +18,14 @@ typedef struct {
     int lost; /* a write failed (reported once): nothing more is written */
 } mo_out;
 
-static const Grgb mo_colours[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
-
 static const gks_ws_desc mo_desc = {
-    .type = GWS_TYPE_MO,
-    .name = "gksm-out",
-    .cat = GCAT_MO,
-    .cls = GCLASS_OTHER,
-    .dc_units = GDC_OTHER,
-    .dc_x = 1024, .dc_y = 1024,
-    .raster_x = 1024, .raster_y = 1024,
-    .colr_avail = GAVAIL_COLR,
+    GKS_WS_DESC_NODRAW(GWS_TYPE_MO, "gksm-out", GCAT_MO, GCLASS_OTHER, 1024),
     .n_colr = 256,
     .n_pred_colr = 2,
-    .pred_colr = mo_colours,
-    .default_irg = GIRG_ALLOWED,
-    .default_defer = GDEFER_ASAP,
+    .pred_colr = gks_wdt_white_black,
     /* every mode is recorded (the interpreting workstation decides what it supports) */
     .hlhsr_modes = 1u << GHLHSR_NONE | 1u << GHLHSR_HIDDEN_LINE | 1u << GHLHSR_ZBUFFER |
                    1u << GHLHSR_PAINTER | 1u << GHLHSR_RAYTRACE,
-    .out = &gks_wdt_raster,
 };
 
 static int mo_file(const gks_ws *ws, char **path)

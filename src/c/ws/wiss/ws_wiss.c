@@ -7,24 +7,12 @@
  */
 #include "ws_driver.h"
 
-static const Grgb wiss_colours[2] = { { 1, 1, 1 }, { 0, 0, 0 } };
-
 static const gks_ws_desc wiss_desc = {
-    .type = GWS_TYPE_WISS,
-    .name = "wiss",
-    .cat = GCAT_WISS,
-    .cls = GCLASS_OTHER,
-    .dc_units = GDC_OTHER,
-    .dc_x = 1, .dc_y = 1,
-    .raster_x = 1, .raster_y = 1,
-    .colr_avail = GAVAIL_COLR,
+    GKS_WS_DESC_NODRAW(GWS_TYPE_WISS, "wiss", GCAT_WISS, GCLASS_OTHER, 1),
     .n_colr = 2,
     .n_pred_colr = 2,
-    .pred_colr = wiss_colours,
-    .default_irg = GIRG_ALLOWED,
-    .default_defer = GDEFER_ASAP,
+    .pred_colr = gks_wdt_white_black,
     .hlhsr_modes = 1u << GHLHSR_NONE,
-    .out = &gks_wdt_raster,
 };
 
 const gks_ws_driver gks_ws_wiss_driver = {
