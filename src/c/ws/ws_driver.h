@@ -280,6 +280,13 @@ static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
  * *base unchanged on error (ws_file.c). */
 int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
                        char **base);
+/* The message entry of the file workstations, which have no operator display: the message
+ * goes to standard error (ws_file.c). Returns 0. */
+int gks_ws_file_message(gks_ws *ws, const char *msg);
+/* The integer argument of a workstation's ESCAPE, ints[1] of the input data record (ints[0]
+ * is the function identifier), into *v: 0 when it is there and in [lo, hi], else 182
+ * (ws_file.c). */
+int gks_ws_escape_int(const Gescape_in_data *in, int lo, int hi, int *v);
 /* The workstation transformation of ws (current window -> current viewport, NPC3 -> DC3)
  * as a 4x4 matrix (ws_tran.c); gks_ws_pixel_matrix maps onto the picture's pixels
  * instead: the viewport moved to the origin and scaled by s pixels per DC unit, z onto

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * ws_file.c -- file names of the file workstations (ws_file.h) and the ESCAPE that sets one
- * (gks_ws_file_rename, ws_driver.h).
+ * (gks_ws_file_rename, ws_driver.h); the entries the file workstations (PNG, cairo) share:
+ * messages to standard error, the integer argument of their ESCAPEs.
  */
 #include "ws_file.h"
 #include "ws_driver.h"
@@ -40,6 +41,20 @@ char *gks_ws_file_frame(const char *base, int frame, const char *ext)
     else
         snprintf(path, n, "%s-%03d%s", base, frame, ext);
     return path;
+}
+
+int gks_ws_file_message(gks_ws *ws, const char *msg)
+{
+    fprintf(stderr, "gks3d: message for workstation %d: %s\n", ws->id, msg);
+    return 0;
+}
+
+int gks_ws_escape_int(const Gescape_in_data *in, int lo, int hi, int *v)
+{
+    if (in->num_ints < 2 || !in->ints || in->ints[1] < lo || in->ints[1] > hi)
+        return 182;
+    *v = in->ints[1];
+    return 0;
 }
 
 int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,

@@ -45,6 +45,7 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -189,17 +190,9 @@ static cairo_status_t buf_write(void *closure, const unsigned char *data, unsign
     vec_buf *b = closure;
     if (b->fail)
         return CAIRO_STATUS_WRITE_ERROR;
-    if (len > b->cap - b->n) {
-        size_t c = b->cap ? b->cap : 65536;
-        while (c - b->n < len && c <= ((size_t)-1) / 4)
-            c *= 2;
-        unsigned char *q = c - b->n >= len ? gks_realloc_array(b->p, c, 1) : NULL;
-        if (!q) { /* b->p kept and freed by its owner */
-            b->fail = 1;
-            return CAIRO_STATUS_NO_MEMORY;
-        }
-        b->p = q;
-        b->cap = c;
+    if (len > SIZE_MAX - b->n || gks_grow(&b->p, &b->cap, b->n + len, 1)) {
+        b->fail = 1; /* b->p kept and freed by its owner */
+        return CAIRO_STATUS_NO_MEMORY;
     }
     memcpy(b->p + b->n, data, len);
     b->n += len;
@@ -242,7 +235,13 @@ static int buf_save_ps(vec_buf *b, const char *path)
 }
 
 /* --- drawing items ---------------------------------------------------------------------- */
-static void path_loops(cairo_t *cr, const ws_render_item *it, int closed)
+/* The raster pixels (x right, y up) -> the page's device space (points, y down) of the
+ * line and marker paths (vec_draw). */
+typedef struct vec_xf { double k, h; } vec_xf;
+
+/* The loops of an item as path: in user space (t NULL), or in device space through t; a
+ * loop of negative count continues the previous one (its first point is that one's last). */
+static void path_loops(cairo_t *cr, const ws_render_item *it, const vec_xf *t, int closed)
 {
     const gks_raster_pt *p = it->pts;
     for (int k = 0; k < it->n_loops; k++) {
@@ -253,10 +252,15 @@ static void path_loops(cairo_t *cr, const ws_render_item *it, int closed)
         for (int i = 0; i < c; i++) {
             if (i == 0 && cont)
                 continue; /* the previous piece's last point */
+            double x = p[i].x, y = p[i].y;
+            if (t) {
+                x = t->k * p[i].x;
+                y = t->h - t->k * p[i].y;
+            }
             if (i == 0)
-                cairo_move_to(cr, p[i].x, p[i].y);
+                cairo_move_to(cr, x, y);
             else
-                cairo_line_to(cr, p[i].x, p[i].y);
+                cairo_line_to(cr, x, y);
         }
         if (closed && c > 0)
             cairo_close_path(cr);
@@ -375,32 +379,6 @@ static void hatch(cairo_t *cr, const ws_render_item *it)
     cairo_set_line_width(cr, sqrt(0.5));
     cairo_stroke(cr);
     cairo_restore(cr);
-}
-
-/* The raster pixels (x right, y up) -> the page's device space (points, y down) of the
- * line and marker paths (vec_draw). */
-typedef struct vec_xf { double k, h; } vec_xf;
-
-/* The line loops of an item as path in device space. */
-static void path_lines(cairo_t *cr, const ws_render_item *it, const vec_xf *t)
-{
-    const gks_raster_pt *p = it->pts;
-    double k = t->k, h = t->h;
-    for (int j = 0; j < it->n_loops; j++) {
-        int c = it->counts[j];
-        int cont = c < 0;
-        if (cont)
-            c = -c;
-        for (int i = 0; i < c; i++) {
-            if (i == 0 && cont)
-                continue; /* the previous piece's last point */
-            if (i == 0)
-                cairo_move_to(cr, k * p[i].x, h - k * p[i].y);
-            else
-                cairo_line_to(cr, k * p[i].x, h - k * p[i].y);
-        }
-        p += c;
-    }
 }
 
 /* The markers of an item as path in device space (type 1, the dot: filled discs; the
@@ -629,13 +607,8 @@ static int text_draw(vec_draw *d, size_t i)
     cairo_set_font_face(cr, v->faces[t->face].face);
     cairo_set_font_matrix(cr, &fm);
     cairo_set_source_rgb(cr, t->rgb[0], t->rgb[1], t->rgb[2]);
-    if (t->ng > d->cap_tmp) {
-        cairo_glyph_t *q = gks_realloc_array(d->tmp, t->ng, sizeof *q);
-        if (!q)
-            return 300;
-        d->tmp = q;
-        d->cap_tmp = t->ng;
-    }
+    if (gks_grow(&d->tmp, &d->cap_tmp, t->ng, sizeof *d->tmp))
+        return 300;
     const cairo_glyph_t *g = v->glyphs + t->g0;
     for (size_t j = 0; j < t->ng; j++) /* pixels -> device */
         d->tmp[j] = (cairo_glyph_t){ g[j].index, k * g[j].x, h - k * g[j].y };
@@ -652,7 +625,7 @@ static int vec_item(void *ctx, const ws_render_item *it)
     switch (it->kind) {
     case WS_ITEM_LINE:
         vec_group(d, it, it->linetype, 0);
-        path_lines(cr, it, &d->xf);
+        path_loops(cr, it, &d->xf, 0);
         return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
     case WS_ITEM_MARKERS:
         vec_group(d, it, 1, it->marker_type);
@@ -672,7 +645,7 @@ static int vec_item(void *ctx, const ws_render_item *it)
     case WS_ITEM_AREA:
         cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-        path_loops(cr, it, 1);
+        path_loops(cr, it, NULL, 1);
         if (it->style == GKS_RASTER_HATCH) {
             hatch(cr, it);
         } else if (it->style == GKS_RASTER_PATTERN) {
@@ -687,7 +660,7 @@ static int vec_item(void *ctx, const ws_render_item *it)
     case WS_ITEM_CELLS: {
         cairo_set_source_rgb(cr, it->rgb[0], it->rgb[1], it->rgb[2]);
         cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-        path_loops(cr, it, 1);
+        path_loops(cr, it, NULL, 1);
         const gks_raster_pt *o = &it->cell_o, *u = &it->cell_u, *w = &it->cell_v;
         cairo_matrix_t m;
         cairo_matrix_init(&m, (u->x - o->x) / it->nx, (u->y - o->y) / it->nx,
@@ -707,23 +680,14 @@ static int vec_item(void *ctx, const ws_render_item *it)
     return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
 }
 
-/* NPC3 -> raster pixels and depth (the ray tracer's wsm, as ws_png.c's). */
-static int ws_matrix(const gks_ws *ws, const vec_ws *v, double m[4][4])
-{
-    double win[6], s = px_per_m(v);
-    gks_limit3_array(&ws->cur_win, win);
-    const double vp[6] = { 0, (ws->cur_vp.x_max - ws->cur_vp.x_min) * s, 0,
-                           (ws->cur_vp.y_max - ws->cur_vp.y_min) * s, 0, 1 };
-    return gks_xform_ws_tran3(win, vp, m);
-}
-
 /* The raster part of the frame (z-buffer, ray tracing) as an image; NULL + 300 on
  * storage overflow. */
 static int raster_image(gks_ws *ws, vec_ws *v, cairo_surface_t **out)
 {
     *out = NULL;
     double wsm[4][4];
-    if (ws_rt_count(v->rt) > 0 && ws_matrix(ws, v, wsm) == 0) {
+    /* NPC3 -> raster pixels and depth: the ray tracer's wsm, as ws_png.c's */
+    if (ws_rt_count(v->rt) > 0 && gks_ws_pixel_matrix(ws, px_per_m(v), wsm) == 0) {
         int e = ws_rt_render(v->rt, ws, (const double (*)[4])wsm, v->fb);
         if (e)
             return e;
@@ -1031,20 +995,13 @@ static int vec_primitive(gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
-static int vec_message(gks_ws *ws, const char *msg)
-{
-    fprintf(stderr, "gks3d: message for workstation %d: %s\n", ws->id, msg);
-    return 0;
-}
-
 static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     vec_ws *v = ws->priv;
     if (func_id == GESC_VEC_RESOLUTION) {
-        if (in->num_ints < 2 || !in->ints || in->ints[1] < VEC_DPI_MIN ||
-            in->ints[1] > VEC_DPI_MAX)
-            return 182;
-        v->next_dpi = in->ints[1];
+        int e = gks_ws_escape_int(in, VEC_DPI_MIN, VEC_DPI_MAX, &v->next_dpi);
+        if (e)
+            return e;
         if (!v->dirty && !v->frame_written && !v->raster_used &&
             ws_png_render_retained(v->vec) == 0 && ws_png_render_retained(v->ras) == 0) {
             apply_dpi(v); /* nothing drawn yet: this frame already */
@@ -1129,15 +1086,9 @@ static int place_glyph(void *ctx, int ch, const double org[3], const double ux[3
         }
         p->first = 0;
     }
-    if (v->n_glyphs == v->cap_glyphs) {
-        size_t c = v->cap_glyphs ? 2 * v->cap_glyphs : 1024;
-        cairo_glyph_t *g = gks_realloc_array(v->glyphs, c, sizeof *g);
-        if (!g) {
-            p->fail = 300;
-            return 1;
-        }
-        v->glyphs = g;
-        v->cap_glyphs = c;
+    if (gks_grow(&v->glyphs, &v->cap_glyphs, v->n_glyphs + 1, sizeof *v->glyphs)) {
+        p->fail = 300;
+        return 1;
     }
     v->glyphs[v->n_glyphs++] = (cairo_glyph_t){ (unsigned long)ch, px[0], px[1] };
     return 0;
@@ -1200,16 +1151,8 @@ static int text_clip(vec_ws *v, const gks_text_prim *t, const text_chain *c,
     if (gks_xform_clip_polygon(view, 1, &len, (const double (*)[4])a, b, VEC_CLIP_MAX, &m,
                                &m) || m < 3)
         return GKS_WS_TEXT_CLIPPED;
-    if (v->n_clip + m > v->cap_clip) {
-        size_t cap = v->cap_clip ? v->cap_clip : 256;
-        while (cap < v->n_clip + m)
-            cap *= 2;
-        double (*q)[2] = gks_realloc_array(v->clip, cap, sizeof *q);
-        if (!q)
-            return 300;
-        v->clip = q;
-        v->cap_clip = cap;
-    }
+    if (gks_grow(&v->clip, &v->cap_clip, v->n_clip + m, sizeof *v->clip))
+        return 300;
     for (size_t i = 0; i < m; i++) {
         double px[3];
         if (!chain_px(c, b[i], px))
@@ -1278,16 +1221,8 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
     int fi = r ? -1 : face_index(v, a->font, e);
     if (!r && fi < 0)
         r = GKS_WS_TEXT_STROKE; /* more faces than the table holds */
-    if (!r && v->n_texts == v->cap_texts) {
-        size_t cap = v->cap_texts ? 2 * v->cap_texts : 256;
-        vec_text *q = gks_realloc_array(v->texts, cap, sizeof *q);
-        if (q) {
-            v->texts = q;
-            v->cap_texts = cap;
-        } else {
-            r = 300;
-        }
-    }
+    if (!r && gks_grow(&v->texts, &v->cap_texts, v->n_texts + 1, sizeof *v->texts))
+        r = 300;
     double mid[3], hm[4], pm[3] = { 0, 0, 0 };
     if (!r && mode == GHLHSR_PAINTER) {
         double cr[4][3], cc[3];
@@ -1351,7 +1286,7 @@ static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EP
     {                                                                                  \
         .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN, .file = FILE,   \
         .close = vec_close, .clear = vec_clear, .update = vec_update,                  \
-        .primitive = vec_primitive, .text = vec_text_prim, .message = vec_message,          \
+        .primitive = vec_primitive, .text = vec_text_prim, .message = gks_ws_file_message,          \
         .escape = vec_escape,                                                          \
     }
 

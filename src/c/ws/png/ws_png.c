@@ -242,20 +242,13 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
-static int png_message(gks_ws *ws, const char *msg)
-{
-    /* A file workstation has no operator display: messages go to standard error. */
-    fprintf(stderr, "gks3d: message for workstation %d: %s\n", ws->id, msg);
-    return 0;
-}
-
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     png_ws *p = ws->priv;
     if (func_id == GESC_PNG_SUPERSAMPLE) {
-        if (in->num_ints < 2 || !in->ints || in->ints[1] < 1 || in->ints[1] > 4)
-            return 182;
-        p->ss = in->ints[1];
+        int e = gks_ws_escape_int(in, 1, 4, &p->ss);
+        if (e)
+            return e;
         if (!p->dirty && !p->frame_written && ws_png_render_retained(p->render) == 0 &&
             ws_rt_count(p->rt) == 0) { /* nothing drawn yet: this frame already */
             gks_raster_fb_free(p->fb);
@@ -265,11 +258,8 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return 0;
     }
     if (func_id == GESC_PNG_COMPRESSION) {
-        if (in->num_ints < 2 || !in->ints || in->ints[1] < GKS_RASTER_PNG_FAST ||
-            in->ints[1] > GKS_RASTER_PNG_LEVEL_MAX)
-            return 182;
-        p->compression = in->ints[1];
-        return 0;
+        return gks_ws_escape_int(in, GKS_RASTER_PNG_FAST, GKS_RASTER_PNG_LEVEL_MAX,
+                                 &p->compression);
     }
     if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
         return ws_rt_escape(p->rt, func_id, in, out);
@@ -324,7 +314,7 @@ static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-larg
         .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .file = png_file,         \
         .open = png_open,                                                          \
         .close = png_close, .clear = png_clear, .update = png_update,              \
-        .primitive = png_primitive, .message = png_message, .escape = png_escape,  \
+        .primitive = png_primitive, .message = gks_ws_file_message, .escape = png_escape,  \
         .read_pixels = png_read_pixels,                                            \
     }
 
