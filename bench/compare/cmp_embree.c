@@ -717,7 +717,20 @@ static int cmd_ours(int res, const char *set, const char *file)
     double t0 = bs_thread_cpu();
     ours_pass(s.rt, !strcmp(set, "shadow"), m, set_rays, hits, occ);
     double t = bs_thread_cpu() - t0;
-    printf("%s %s: %zu rays, %.3f s CPU, %.2f Mrays/s (one pass)\n", file, set, m, t, t > 0 ? m / t * 1e-6 : 0.0);
+    /* FNV-1a over the answers (primitive and t bits, or the occluded flags): equal sums, the
+       same hits bit for bit */
+    uint64_t h = 1469598103934665603ULL;
+    for (size_t k = 0; k < m; k++) {
+        uint64_t v = (uint64_t)occ[k];
+        if (strcmp(set, "shadow") != 0) {
+            memcpy(&v, &hits[k].t, sizeof v);
+            v ^= (uint64_t)(uint32_t)hits[k].prim << 1;
+        }
+        for (int b = 0; b < 8; b++)
+            h = (h ^ ((v >> (8 * b)) & 0xFF)) * 1099511628211ULL;
+    }
+    printf("%s %s: %zu rays, %.3f s CPU, %.2f Mrays/s (one pass), answers %016llx\n", file, set, m, t,
+           t > 0 ? m / t * 1e-6 : 0.0, (unsigned long long)h);
     rc = 0;
 done:
     free(rays);
