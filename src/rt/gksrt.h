@@ -317,6 +317,26 @@ typedef struct rt_stats {
     size_t grid_bytes;                /* of memory_bytes: both grid levels */
 } rt_stats;
 
+/* *a += *b, field by field (the one sum of statistics: threads, tiles, views). */
+static inline void rt_stats_add(rt_stats *a, const rt_stats *b)
+{
+    a->eye_rays += b->eye_rays;
+    a->eye_hits += b->eye_hits;
+    a->shadow_rays += b->shadow_rays;
+    a->reflection_rays += b->reflection_rays;
+    a->refraction_rays += b->refraction_rays;
+    a->shadow_lbuf += b->shadow_lbuf;
+    a->shadow_walks += b->shadow_walks;
+    a->grid_cells += b->grid_cells;
+    a->grid_refs += b->grid_refs;
+    a->prims += b->prims;
+    a->build_seconds += b->build_seconds;
+    a->render_seconds += b->render_seconds;
+    a->memory_bytes += b->memory_bytes;
+    a->tri_bytes += b->tri_bytes;
+    a->grid_bytes += b->grid_bytes;
+}
+
 typedef void (*rt_progress_fn)(void *user, int tiles_done, int tiles_total);
 
 /* Tile distribution (docs/MPI.md): the frame's ray grid ((w+1) x (h+1) corner rays, else

@@ -20,10 +20,9 @@
    by the traversal) are asked to live on transparent huge pages where the system does so
    only on request (THP "madvise" mode): far fewer TLB misses. Advice only; failure ignored.
    Only the pages inside the block are advised, which leaves the block's own mapping split:
-   realloc's mremap then fails and glibc copies the block into fresh memory. That is kept on
-   purpose: on this project's Linux VM, huge pages that mremap moved to another address were
-   200 times slower to read at random afterwards (docs/bench/scale.md); arrays that grow large
-   while the scene is recorded use rt_big below, which never moves. */
+   realloc's mremap then fails and glibc copies the block. That is kept on purpose: huge pages
+   that mremap moved read far slower at random afterwards (docs/bench/scale.md, grow_probe);
+   arrays that grow large while the scene is recorded use rt_big below, which never moves. */
 #define RT_HUGE_MIN ((size_t)4 << 20)
 
 static void rt_huge(void *p, size_t bytes)

@@ -1260,15 +1260,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     if (job.corner_hit && whole && rc == RT_OK)
         rt_corner_cover(&job);
     rt_stats st = job.remote;
-    for (int k = 0; k < nt; k++) {
-        st.eye_rays += w[k].st.eye_rays;
-        st.eye_hits += w[k].st.eye_hits;
-        st.shadow_rays += w[k].st.shadow_rays;
-        st.reflection_rays += w[k].st.reflection_rays;
-        st.refraction_rays += w[k].st.refraction_rays;
-        st.shadow_lbuf += w[k].st.shadow_lbuf;
-        st.shadow_walks += w[k].st.shadow_walks;
-    }
+    for (int k = 0; k < nt; k++)
+        rt_stats_add(&st, &w[k].st); /* workers count rays only; the rest is set below */
     st.render_seconds = rt_now() - job.t0;
     st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
     st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;

@@ -34,10 +34,18 @@ static int normal_matrix(const double m[3][4], double nm[3][3])
     return gks_xform_normal_matrix(m4, nm);
 }
 
-/* nm * v normalised into o; 1 if the result is a finite unit vector. */
-static int map_normal(const double nm[3][3], const double v[3], double o[3])
+/* The n normals of v mapped by nm and normalised into new arrays *o, with *ok[i] = 1 where
+ * the result is a finite unit vector: 0, or 300 (the caller frees what was allocated). */
+static int map_normals(const double nm[3][3], const double (*v)[3], size_t n, double (**o)[3],
+                       unsigned char **ok)
 {
-    return gks_xform_normal(nm, v, o);
+    *o = gks_alloc_array(n, sizeof **o);
+    *ok = gks_alloc_array(n, 1);
+    if (!*o || !*ok)
+        return 300;
+    for (size_t i = 0; i < n; i++)
+        (*ok)[i] = (unsigned char)gks_xform_normal(nm, v[i], (*o)[i]);
+    return 0;
 }
 
 /* ------------------------------------------------------------------ clipping */
@@ -274,22 +282,10 @@ static int map_data(const gks_pipe_norm *nc, const gks_area_data *d, int is_set,
     }
     double nm[3][3];
     int nm_ok = normal_matrix(nc->m, nm) == 0;
-    if ((d->vflag & GVERT_COORD_NORM) && nm_ok) {
-        mp->n = gks_alloc_array(nv, sizeof *mp->n);
-        mp->nok = gks_alloc_array(nv, 1);
-        if (!mp->n || !mp->nok)
-            return 300;
-        for (size_t i = 0; i < nv; i++)
-            mp->nok[i] = (unsigned char)map_normal(nm, d->vnorm[i], mp->n[i]);
-    }
-    if ((d->fflag & GFACET_NORM) && nm_ok) {
-        mp->fn = gks_alloc_array(nf, sizeof *mp->fn);
-        mp->fnok = gks_alloc_array(nf, 1);
-        if (!mp->fn || !mp->fnok)
-            return 300;
-        for (size_t f = 0; f < nf; f++)
-            mp->fnok[f] = (unsigned char)map_normal(nm, d->fnorm[f], mp->fn[f]);
-    }
+    if ((d->vflag & GVERT_COORD_NORM) && nm_ok && map_normals(nm, d->vnorm, nv, &mp->n, &mp->nok))
+        return 300;
+    if ((d->fflag & GFACET_NORM) && nm_ok && map_normals(nm, d->fnorm, nf, &mp->fn, &mp->fnok))
+        return 300;
     return 0;
 }
 

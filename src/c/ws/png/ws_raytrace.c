@@ -1007,23 +1007,6 @@ static int all_background(const gks_raster_fb *fb, int ix0, int ix1, int iy0, in
 
 static float clampf(double v, double hi) { return !(v > 0) ? 0.0f : v > hi ? (float)hi : (float)v; }
 
-static void stats_add(rt_stats *a, const rt_stats *b)
-{
-    a->eye_rays += b->eye_rays;
-    a->eye_hits += b->eye_hits;
-    a->shadow_rays += b->shadow_rays;
-    a->reflection_rays += b->reflection_rays;
-    a->refraction_rays += b->refraction_rays;
-    a->shadow_lbuf += b->shadow_lbuf;
-    a->shadow_walks += b->shadow_walks;
-    a->grid_cells += b->grid_cells;
-    a->grid_refs += b->grid_refs;
-    a->prims += b->prims;
-    a->build_seconds += b->build_seconds;
-    a->render_seconds += b->render_seconds;
-    a->memory_bytes += b->memory_bytes;
-}
-
 /* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
  * sets *traced when the tracer ran. Returns 0 or 300. */
 static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
@@ -1138,7 +1121,7 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
         err = gks_err_of_rt(rr);
         goto done;
     }
-    stats_add(st, &s);
+    rt_stats_add(st, &s);
     *traced = 1;
     if (!assemble)
         goto done; /* the other ranks' pixels are rank 0's to compose */
