@@ -232,7 +232,8 @@ void rt_grid_dir(const rt_grid *g, const double v[3], double out[3]);
 #define RT_HBOX 256 /* entries of the small mailbox (power of 2) */
 
 typedef struct rt_ctx {
-    uint32_t *mbox;
+    uint32_t *mbox;     /* exact mailbox, nprim entries (NULL in the batch API's contexts:
+                           nearest-hit and any-hit rays only) */
     uint64_t *hbox;     /* small direct-mapped mailbox: (stamp << 32 | prim) at prim % RT_HBOX */
     uint32_t stamp;
     size_t nprim;

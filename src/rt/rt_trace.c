@@ -114,6 +114,18 @@ int rt_ctx_init(rt_ctx *c, const rt_scene *sc)
     return RT_ERR_NOMEM;
 }
 
+/* a context for nearest-hit and any-hit rays only (the batch API): the small mailbox, no
+   exact one (nprim entries, zeroed for every call: 4 B per primitive written per rt_intersect
+   call, however few its rays) */
+static int rt_ctx_init_small(rt_ctx *c)
+{
+    c->nprim = 0;
+    c->stamp = 0;
+    c->mbox = NULL;
+    c->hbox = rt_calloc_array(RT_HBOX, sizeof(uint64_t));
+    return c->hbox ? RT_OK : RT_ERR_NOMEM;
+}
+
 void rt_ctx_free(rt_ctx *c)
 {
     free(c->mbox);
@@ -125,7 +137,8 @@ void rt_ctx_free(rt_ctx *c)
 static inline uint32_t rt_ctx_next(rt_ctx *c)
 {
     if (++c->stamp == 0) {
-        memset(c->mbox, 0, c->nprim * sizeof(uint32_t));
+        if (c->mbox)
+            memset(c->mbox, 0, c->nprim * sizeof(uint32_t));
         memset(c->hbox, 0, RT_HBOX * sizeof(uint64_t));
         c->stamp = 1;
     }
@@ -140,11 +153,19 @@ typedef struct rt_dda {
     double t0, t1;
 } rt_dda;
 
-static inline double rt_dda_bound(const rt_box *g, const rt_gray *r, const int c[3], int a)
+/* the parameter where the ray crosses boundary b (0 .. n) of axis a */
+static inline double rt_dda_bound(const rt_box *g, const rt_gray *r, int b, int a)
 {
-    int b = r->d[a] > 0.0 ? c[a] + 1 : c[a];
     double x = b == g->n[a] ? g->hi[a] : g->lo[a] + (double)b * g->cw[a];
     return (x - r->o[a]) * r->invd[a];
+}
+
+/* the cell of axis a holding the ray point at t, clamped into the box */
+static inline int rt_dda_cell(const rt_box *g, const rt_gray *r, double t, int a)
+{
+    double p = r->o[a] + t * r->d[a];
+    double f = (p - g->lo[a]) * g->inv_cw[a];
+    return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
 }
 
 /* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1 (all callers): the range is
@@ -176,16 +197,14 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
     s->t0 = t0;
     s->t1 = t1;
     for (int a = 0; a < 3; a++) {
-        double p = r->o[a] + t0 * r->d[a];
-        double f = (p - g->lo[a]) * g->inv_cw[a];
-        int c = f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
+        const int c = rt_dda_cell(g, r, t0, a);
         s->c[a] = c;
         if (r->d[a] > 0.0) {
             s->step[a] = 1;
-            s->tnext[a] = rt_dda_bound(g, r, s->c, a);
+            s->tnext[a] = rt_dda_bound(g, r, c + 1, a);
         } else if (r->d[a] < 0.0) {
             s->step[a] = -1;
-            s->tnext[a] = rt_dda_bound(g, r, s->c, a);
+            s->tnext[a] = rt_dda_bound(g, r, c, a);
         } else {
             s->step[a] = 0;
             s->tnext[a] = INFINITY;
@@ -195,15 +214,8 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
 }
 
 /* empty-space jumps from top cells at distance >= RT_JUMP_MIN (rt_grid.dist); a restart
-   costs about three steps, so shorter jumps do not pay (docs/bench/rt_tuning.md) */
-#define RT_JUMP_MIN 3
-
-/* the DDA state at ray parameter t0 inside box g (after an empty-space jump) */
-static __attribute__((noinline)) void rt_dda_restart(const rt_box *g, const rt_gray *r, double t0,
-                                                     double t1, rt_dda *s)
-{
-    rt_dda_init(g, r, t0, t1, 0, s);
-}
+   costs a few steps, so shorter jumps do not pay (docs/bench/rt_tuning.md) */
+#define RT_JUMP_MIN 4
 
 static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, const rt_scene *sc, const rt_rayx *r, size_t i, int any_hit,
                                    double *T)
@@ -406,15 +418,23 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             if (isfinite(tj)) {
                 if (tj > t1)
                     return RT_WALK_CONT;
-                rt_dda_restart(g, gr, tj, t1, &s);
-                cx = s.c[0];
-                cy = s.c[1];
-                cz = s.c[2];
-                tx = s.tnext[0];
-                ty = s.tnext[1];
-                tz = s.tnext[2];
+                /* the restart of rt_dda_init (clip = 0) at tj, in registers: the same
+                   cells and boundary parameters bit for bit; an axis that does not step
+                   keeps its cell (o + t d[a] = o) */
+                if (sx) {
+                    cx = rt_dda_cell(g, gr, tj, 0);
+                    tx = rt_dda_bound(g, gr, cx + ox, 0);
+                }
+                if (sy) {
+                    cy = rt_dda_cell(g, gr, tj, 1);
+                    ty = rt_dda_bound(g, gr, cy + oy, 1);
+                }
+                if (sz) {
+                    cz = rt_dda_cell(g, gr, tj, 2);
+                    tz = rt_dda_bound(g, gr, cz + oz, 2);
+                }
                 tent = tj;
-                ci = rt_cell_index(g, s.c);
+                ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
                 continue;
             }
             goto advance;
@@ -500,6 +520,12 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     const rt_grid *g = &sc->grid;
     /* only opaque primitives: the first hit blocks, as for any-hit rays (small mailbox) */
     w.any_hit |= g->all_opaque;
+    if (!w.any_hit && !c->mbox) { /* a context without the exact mailbox: every primitive */
+        for (size_t i = 0; i < sc->nprim; i++)
+            if (i != r->skip && !rt_transmit_prim(c, sc, r, i, 0, &w.T))
+                return 0.0;
+        return w.T;
+    }
     w.stamp = rt_ctx_next(c);
     rt_gray_init(g, r, &w.gr);
     if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->sub, g->subs, g->dist, r->tmin, r->tmax, 1) ==
@@ -547,7 +573,7 @@ static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, cons
         return RT_ERR_ARG;
     if (!sc->committed)
         return RT_ERR_STATE;
-    return rt_ctx_init(c, sc) != RT_OK ? RT_ERR_NOMEM : RT_OK;
+    return rt_ctx_init_small(c);
 }
 
 int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
