@@ -65,7 +65,11 @@ expect_fail "MF_ITEM of another function's item"
 copy
 sed -i 's/MF_USER)/MF_NO)/' "$def"
 expect_fail "user items under MF_NO"
-msg="10 broken copies refused"
+# 11. SET WORKSTATION WINDOW hands its helper another function's item: it records nothing.
+copy
+sed -i 's/GKSM_FN_SWKWN/GKSM_FN_SWKVP/' "$work/src/c/core/api/gks_transform.c"
+expect_fail "item handed to a helper, but another function's"
+msg="11 broken copies refused"
 if [ -n "$cc" ]; then
     compile() {
         "$cc" -std=c11 -Wall -Wextra -Werror -DGKS3D_BUILDING -fsyntax-only \

@@ -19,72 +19,75 @@
 /* --- Normalization transformations ------------------------------------------------ */
 /* The checks are the xform module's (gks_xform_check_*), on a rectangle or box given as
  * the double[6] they take: x, y, z limits; a 2-D rectangle has z from 0 to 0 (the 2-D
- * checks read the first four). A NULL argument is 51. */
-static const double *box2(const Glimit *r, double b[6])
+ * checks read the first four). dim is 2 or 3, 0 for a NULL argument (error 51). */
+typedef struct {
+    double v[6];
+    int dim;
+} box;
+
+static box box2(const Glimit *r)
 {
-    if (!r)
-        return NULL;
-    b[0] = r->x_min, b[1] = r->x_max, b[2] = r->y_min, b[3] = r->y_max;
-    b[4] = b[5] = 0.0;
+    box b = { { 0 }, 0 };
+    if (r)
+        b = (box){ { r->x_min, r->x_max, r->y_min, r->y_max, 0.0, 0.0 }, 2 };
     return b;
 }
 
-static const double *box3(const Glimit3 *r, double b[6])
+static box box3(const Glimit3 *r)
 {
-    if (!r)
-        return NULL;
-    gks_limit3_array(r, b);
+    box b = { { 0 }, 0 };
+    if (r) {
+        gks_limit3_array(r, b.v);
+        b.dim = 3;
+    }
     return b;
 }
 
-/* Limits l from box b: x and y, and z when dim is 3. */
-static void put_limits(Glimit3 *l, const double b[6], int dim)
+/* Limits l from box b: x and y, and z when it is 3-D. */
+static void put_limits(Glimit3 *l, const box *b)
 {
-    l->x_min = b[0], l->x_max = b[1], l->y_min = b[2], l->y_max = b[3];
-    if (dim == 3)
-        l->z_min = b[4], l->z_max = b[5];
+    l->x_min = b->v[0], l->x_max = b->v[1], l->y_min = b->v[2], l->y_max = b->v[3];
+    if (b->dim == 3)
+        l->z_min = b->v[4], l->z_max = b->v[5];
 }
 
-/* SET WINDOW (3) / SET VIEWPORT (3) of transformation tran_num to box b of dimension dim:
- * 50, then 51 (and 52 for a viewport outside NDC space); a 2-D rectangle keeps z. */
-static void set_norm_limits(int fct, Gint tran_num, const double *b, int dim, int viewport)
+/* SET WINDOW (3) / SET VIEWPORT (3) of transformation tran_num to box b: 50, then 51 (and
+ * 52 for a viewport outside NDC space); a 2-D rectangle keeps z. */
+static void set_norm_limits(int fct, Gint tran_num, box b, int viewport)
 {
     if (gks_check_state(fct))
         return;
     if (tran_num < 1 || tran_num > GKS_MAX_NORM_TRAN)
         GKS_FAIL(50, fct);
-    int err = !b        ? 51
-              : viewport ? (dim == 3 ? gks_xform_check_viewport3(b) : gks_xform_check_viewport(b))
-              : (dim == 3 ? gks_xform_check_window3(b) : gks_xform_check_window(b)) ? 51
-                                                                                     : 0;
+    const double *v = b.v;
+    int err = !b.dim     ? 51
+              : viewport ? (b.dim == 3 ? gks_xform_check_viewport3(v) : gks_xform_check_viewport(v))
+              : (b.dim == 3 ? gks_xform_check_window3(v) : gks_xform_check_window(v)) ? 51
+                                                                                       : 0;
     if (err)
         GKS_FAIL(err, fct);
     gks_norm_tran *t = &gks_ctx()->sl->tran[tran_num];
-    put_limits(viewport ? &t->vp : &t->win, b, dim);
+    put_limits(viewport ? &t->vp : &t->win, &b);
 }
 
 GKS_API void gset_win(Gint tran_num, const Glimit *win)
 {
-    double b[6];
-    set_norm_limits(GFN_SWN, tran_num, box2(win, b), 2, 0);
+    set_norm_limits(GFN_SWN, tran_num, box2(win), 0);
 }
 
 GKS_API void gset_vp(Gint tran_num, const Glimit *vp)
 {
-    double b[6];
-    set_norm_limits(GFN_SVP, tran_num, box2(vp, b), 2, 1);
+    set_norm_limits(GFN_SVP, tran_num, box2(vp), 1);
 }
 
 GKS_API void gset_win3(Gint tran_num, const Glimit3 *win)
 {
-    double b[6];
-    set_norm_limits(GFN_SW3, tran_num, box3(win, b), 3, 0);
+    set_norm_limits(GFN_SW3, tran_num, box3(win), 0);
 }
 
 GKS_API void gset_vp3(Gint tran_num, const Glimit3 *vp)
 {
-    double b[6];
-    set_norm_limits(GFN_SV3, tran_num, box3(vp, b), 3, 1);
+    set_norm_limits(GFN_SV3, tran_num, box3(vp), 1);
 }
 
 GKS_API void gsel_norm_tran(Gint tran_num)
@@ -133,66 +136,48 @@ static void ws_tran_changed(gks_ws *ws, int fct)
         GKS_FAIL(err, fct);
 }
 
-/* SET WORKSTATION WINDOW (3) / VIEWPORT (3): the workstation (7, 20, 25, 33, 36), then
- * box b of dimension dim (51; a window outside the NPC unit cube 53, a viewport outside the
- * display space 54), then the requested window or viewport set. The workstation, or NULL
- * after reporting. */
-static gks_ws *ws_limits_set(int fct, Gint ws_id, const double *b, int dim, int viewport)
+/* SET WORKSTATION WINDOW (3) / VIEWPORT (3): the workstation (7, 20, 25, 33, 36), then box
+ * b (51; a window outside the NPC unit cube 53, a viewport outside the display space 54),
+ * then the requested window or viewport set, recorded on a metafile output as item
+ * mf_item, and made current or pending. */
+static void set_ws_limits(int fct, int mf_item, Gint ws_id, box b, int viewport)
 {
     if (gks_check_state(fct))
-        return NULL;
+        return;
     gks_ws *ws = gks_ws_checked(fct, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_WISS);
     if (!ws)
-        return NULL;
+        return;
     double ds[3];
     display_space(ws, ds);
-    int err = !b         ? 51
-              : viewport ? gks_xform_check_ws_viewport3(b, ds)
-                         : gks_xform_check_ws_window3(b);
+    int err = !b.dim     ? 51
+              : viewport ? gks_xform_check_ws_viewport3(b.v, ds)
+                         : gks_xform_check_ws_window3(b.v);
     if (err)
-        GKS_FAIL_RET(err, fct, NULL);
-    put_limits(viewport ? &ws->req_vp : &ws->req_win, b, dim);
-    return ws;
+        GKS_FAIL(err, fct);
+    put_limits(viewport ? &ws->req_vp : &ws->req_win, &b);
+    if (!gks_mf_ws_rec(fct, ws_id, mf_item, b.v))
+        return;
+    ws_tran_changed(ws, fct);
 }
 
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
 {
-    double b[6];
-    gks_ws *ws = ws_limits_set(GFN_SWKWN, ws_id, box2(ws_win, b), 2, 0);
-    if (!ws)
-        return;
-    GKS_MF_WS(SWKWN, ws_id, &ws_win->x_min);
-    ws_tran_changed(ws, GFN_SWKWN);
+    set_ws_limits(GFN_SWKWN, GKSM_FN_SWKWN, ws_id, box2(ws_win), 0);
 }
 
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
 {
-    double b[6];
-    gks_ws *ws = ws_limits_set(GFN_SWKVP, ws_id, box2(ws_vp, b), 2, 1);
-    if (!ws)
-        return;
-    GKS_MF_WS(SWKVP, ws_id, &ws_vp->x_min);
-    ws_tran_changed(ws, GFN_SWKVP);
+    set_ws_limits(GFN_SWKVP, GKSM_FN_SWKVP, ws_id, box2(ws_vp), 1);
 }
 
 GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
 {
-    double b[6];
-    gks_ws *ws = ws_limits_set(GFN_SWKW3, ws_id, box3(ws_win, b), 3, 0);
-    if (!ws)
-        return;
-    GKS_MF_WS(SWKW3, ws_id, &ws_win->x_min);
-    ws_tran_changed(ws, GFN_SWKW3);
+    set_ws_limits(GFN_SWKW3, GKSM_FN_SWKW3, ws_id, box3(ws_win), 0);
 }
 
 GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
 {
-    double b[6];
-    gks_ws *ws = ws_limits_set(GFN_SWKV3, ws_id, box3(ws_vp, b), 3, 1);
-    if (!ws)
-        return;
-    GKS_MF_WS(SWKV3, ws_id, &ws_vp->x_min);
-    ws_tran_changed(ws, GFN_SWKV3);
+    set_ws_limits(GFN_SWKV3, GKSM_FN_SWKV3, ws_id, box3(ws_vp), 1);
 }
 
 /* --- Inquiries --------------------------------------------------------------------- */
