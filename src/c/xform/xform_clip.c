@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * xform_clip.c -- clipping in homogeneous coordinates, before the division by w:
- * Liang–Barsky for lines and polylines, re-entrant Sutherland–Hodgman for polygons with
- * several loops. The region is an intersection of half-spaces p·X >= 0 plus w >= wmin.
+ * lines and polylines plane by plane, polygons with several loops by re-entrant
+ * Sutherland–Hodgman. The region is an intersection of
+ * half-spaces p·X >= 0 plus w >= wmin.
  */
 #include "gks_xform.h"
 #include "xform_internal.h"
@@ -106,103 +107,86 @@ static double constraint(const gks_xform_clip *c, int k, const double x[4])
     return p[0] * x[0] + p[1] * x[1] + p[2] * x[2] + p[3] * x[3];
 }
 
-/* r = a + t(b − a), exact at t = 0 and t = 1. */
-static void lerp4(const double a[4], const double b[4], double t, double r[4])
+/* r = a + t(b − a) for n values, exact at t = 0 and t = 1. */
+static void lerp_n(const double *a, const double *b, double t, double *r, size_t n)
 {
     if (t <= 0.0) {
-        memcpy(r, a, 4 * sizeof *r);
+        memcpy(r, a, n * sizeof *r);
         return;
     }
     if (t >= 1.0) {
-        memcpy(r, b, 4 * sizeof *r);
+        memcpy(r, b, n * sizeof *r);
         return;
     }
-    for (int i = 0; i < 4; i++)
+    for (size_t i = 0; i < n; i++)
         r[i] = a[i] + t * (b[i] - a[i]);
 }
 
-/* The crossing of segment a -> b with the plane of a constraint worth da at a and db at b
- * (opposite signs or one of them 0), interpolated from the end nearer to the plane (|d|
- * smaller): the step t*(far - near) then has |t| <= 1/2, so a far end at 1e30 cannot wipe
- * out the near end's coordinates (from the far end, t rounds to 1 and the "crossing" would
- * be the near vertex itself, off the plane by up to its whole distance). */
-static void cross4(const double a[4], const double b[4], double da, double db, double r[4])
+/* The crossing of segment a -> b (n values: the point, then any attributes) with the
+ * plane of a constraint worth da at a and db at b (opposite signs or one of them 0),
+ * interpolated from the end nearer to the plane (|d| smaller): the step t*(far - near)
+ * then has |t| <= 1/2, so a far end at 1e30 cannot wipe out the near end's coordinates
+ * (from the far end, t rounds to 1 and the "crossing" would be the near vertex itself,
+ * off the plane by up to its whole distance). */
+static void cross_n(const double *a, const double *b, double da, double db, double *r,
+                    size_t n)
 {
     if (fabs(da) <= fabs(db))
-        lerp4(a, b, da / (da - db), r);
+        lerp_n(a, b, da / (da - db), r, n);
     else
-        lerp4(b, a, db / (db - da), r);
+        lerp_n(b, a, db / (db - da), r, n);
 }
 
-/* A point on a segment p0 -> p1 as its parameter t from p0 and u = 1 - t from p1, each
- * computed directly (d0/(d0-d1) and d1/(d1-d0)), so that a point near either end keeps its
- * precision when the other end is far away (t = 1 - 6e-31 is 1 in double, u is not 0);
- * d: the constraint values at p0 and p1 that define the point (crossings only). */
-typedef struct seg_par {
-    double t, u;
-    double d[2];
-} seg_par;
-
-/* a before b along the segment: compared where the parameters are accurate */
-static int seg_before(const seg_par *a, const seg_par *b)
+/* Put the crossing r exactly on the plane of constraint k where that plane is a face of a
+ * box (one non-zero coefficient among x, y, z: x_i = lim·w) or the w >= wmin test, so
+ * that the clipped coordinate is the limit itself (w = 1: -(-lim)·1/1 = lim exactly). */
+static void snap(const gks_xform_clip *c, int k, double r[4])
 {
-    if (a->t <= 0.5 || b->t <= 0.5)
-        return a->t < b->t;
-    return a->u > b->u;
-}
-
-/* Liang–Barsky on a validated region: the visible part runs from *lo to *hi (0 = p0 and
- * 1 = p1 when that end is not clipped). Returns 0 / 308; *vis as documented. */
-static int clip_seg(const gks_xform_clip *c, const double p0[4], const double p1[4],
-                    seg_par *lo, seg_par *hi, int *vis)
-{
-    *lo = (seg_par){ 0.0, 1.0, { 0.0, 0.0 } };
-    *hi = (seg_par){ 1.0, 0.0, { 0.0, 0.0 } };
-    const int k = n_constraints(c);
-    *vis = 0;
-    for (int i = 0; i < k; i++) {
-        const double d0 = constraint(c, i, p0), d1 = constraint(c, i, p1);
-        if (!isfinite(d0) || !isfinite(d1) || !isfinite(d0 - d1))
-            return GKS_E_ARITHMETIC;
-        if (d0 < 0.0 && d1 < 0.0)
-            return 0;
-        if (d0 < 0.0 || d1 < 0.0) { /* crossing: d0 - d1 != 0 */
-            const seg_par x = { d0 / (d0 - d1), d1 / (d1 - d0), { d0, d1 } };
-            if (d0 < 0.0 && seg_before(lo, &x))
-                *lo = x;
-            else if (d1 < 0.0 && seg_before(&x, hi))
-                *hi = x;
+    if (c->wmin > 0.0) {
+        if (k == 0) {
+            r[3] = c->wmin;
+            return;
         }
-        if (!seg_before(lo, hi))
+        k--;
+    }
+    const double *p = c->p[k];
+    if (p[1] == 0.0 && p[2] == 0.0 && p[0] != 0.0)
+        r[0] = -p[3] * r[3] / p[0];
+    else if (p[0] == 0.0 && p[2] == 0.0 && p[1] != 0.0)
+        r[1] = -p[3] * r[3] / p[1];
+    else if (p[0] == 0.0 && p[1] == 0.0 && p[2] != 0.0)
+        r[2] = -p[3] * r[3] / p[2];
+}
+
+int gks_xform_clip_segment(const gks_xform_clip *c, double a[4], double b[4], int *moved_a,
+                           int *moved_b)
+{
+    *moved_a = *moved_b = 0;
+    if (c->n < 0 || c->n > GKS_XFORM_MAX_PLANES || !(c->wmin >= 0.0))
+        return 0; /* not a region */
+    const int k = n_constraints(c);
+    for (int i = 0; i < k; i++) {
+        const double da = constraint(c, i, a), db = constraint(c, i, b);
+        if (da < 0.0 && db < 0.0)
             return 0;
+        if (da >= 0.0 && db >= 0.0)
+            continue;
+        if (!isfinite(da) || !isfinite(db) || !isfinite(da - db))
+            return 0; /* overflow near DBL_MAX (or NaN): treated as not visible */
+        double r[4];
+        cross_n(a, b, da, db, r, 4);
+        snap(c, i, r);
+        if (!xform_finite_n(r, 4))
+            return 0;
+        if (da < 0.0) {
+            memcpy(a, r, sizeof r);
+            *moved_a = 1;
+        } else {
+            memcpy(b, r, sizeof r);
+            *moved_b = 1;
+        }
     }
-    *vis = 1;
-    return 0;
-}
-
-/* The point x: an unclipped end exactly, otherwise the crossing (cross4). */
-static void seg_point(const double p0[4], const double p1[4], const seg_par *x, double q[4])
-{
-    if (x->t <= 0.0)
-        memcpy(q, p0, 4 * sizeof *q);
-    else if (x->u <= 0.0)
-        memcpy(q, p1, 4 * sizeof *q);
-    else
-        cross4(p0, p1, x->d[0], x->d[1], q);
-}
-
-int gks_xform_clip_line(const gks_xform_clip *c, const double p0[4], const double p1[4],
-                        double *t0, double *t1, int *visible)
-{
-    if (!region_ok(c) || !xform_finite_n(p0, 4) || !xform_finite_n(p1, 4))
-        return GKS_E_ARITHMETIC;
-    seg_par lo, hi;
-    int err = clip_seg(c, p0, p1, &lo, &hi, visible);
-    if (!err && *visible) {
-        *t0 = lo.t;
-        *t1 = hi.t;
-    }
-    return err;
+    return 1;
 }
 
 int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pts)[4],
@@ -224,36 +208,28 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
     size_t no = 0, np = 0;
     int open = 0;   /* the last piece ends at pts[i] exactly (segment end not clipped) */
     for (size_t i = 0; i + 1 < n; i++) {
-        double q[4];
-        seg_par lo, hi;
-        int vis;
-        int err = clip_seg(c, pts[i], pts[i + 1], &lo, &hi, &vis);
-        if (err)
-            return err;
-        if (!vis) {
+        double a[4], b[4];
+        int ma, mb;
+        memcpy(a, pts[i], sizeof a);
+        memcpy(b, pts[i + 1], sizeof b);
+        if (!gks_xform_clip_segment(c, a, b, &ma, &mb)) {
             open = 0;
             continue;
         }
-        if (!(open && lo.t == 0.0)) {         /* start a new piece at p(lo) */
-            seg_point(pts[i], pts[i + 1], &lo, q);
-            if (!xform_finite_n(q, 4))
-                return GKS_E_ARITHMETIC;
+        if (!(open && !ma)) {                 /* start a new piece at a */
             if (no < out_cap)
-                memcpy(out[no], q, sizeof q);
+                memcpy(out[no], a, sizeof a);
             no++;
             if (np < piece_cap)
                 piece_len[np] = 1;
             np++;
         }
-        seg_point(pts[i], pts[i + 1], &hi, q); /* extend the piece to p(hi) */
-        if (!xform_finite_n(q, 4))
-            return GKS_E_ARITHMETIC;
-        if (no < out_cap)
-            memcpy(out[no], q, sizeof q);
+        if (no < out_cap)                     /* extend the piece to b */
+            memcpy(out[no], b, sizeof b);
         no++;
         if (np - 1 < piece_cap)
             piece_len[np - 1]++;
-        open = (hi.u == 0.0);
+        open = !mb;
     }
     *n_out = no;
     *n_pieces = np;
@@ -299,7 +275,7 @@ static void sh_emit_crossing(sh_ctx *x, int s, const double a[4], double da,
                              const double b[4], double db)
 {
     double q[4];
-    cross4(a, b, da, db, q);
+    cross_n(a, b, da, db, q, 4);
     sh_push(x, s + 1, q);
 }
 
