@@ -453,6 +453,67 @@ static double shoelace(size_t n, const double (*p)[4])
     xt_traps_off();
 }
 
+/* Attributes ride along: with attributes that are affine functions of the homogeneous
+ * point (what linear interpolation reproduces exactly, up to rounding), every output
+ * vertex, kept or new, carries the function's value at its own point. */
+static void test_polygon_attr(void **state)
+{
+    (void)state;
+    xt_traps_on();
+    xt_rng r = { 4242 };
+    enum { N = 9, NA = 3, CAP = 200 };
+    double pts[2 * N][4], at[2 * N][NA], out[CAP][4], oat[CAP][NA];
+    size_t len[2] = { N, N }, ol[2], no;
+    int moved = 0;
+    for (int it = 0; it < 100; it++) {
+        gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+        for (int i = 0; i < 2 * N; i++) {
+            double w = xt_uniform(&r, 0.5, 2);
+            for (int j = 0; j < 3; j++)
+                pts[i][j] = w * xt_uniform(&r, -0.7, 1.7);
+            pts[i][3] = w;
+            at[i][0] = pts[i][0];
+            at[i][1] = 2 * pts[i][1] - pts[i][2] + 3 * pts[i][3];
+            at[i][2] = -pts[i][3];
+        }
+        int e = gks_xform_clip_polygon_attr(&c, 2, len, (const double (*)[4])pts, &at[0][0],
+                                            NA, NULL, NULL, 0, ol, &no); /* counting call */
+        assert_int_equal(e, no ? GKS_E_STORAGE_OVERFLOW : 0);
+        size_t want = no;
+        assert_int_equal(gks_xform_clip_polygon_attr(&c, 2, len, (const double (*)[4])pts,
+                                                     &at[0][0], NA, out, &oat[0][0], CAP, ol,
+                                                     &no), 0);
+        assert_int_equal(no, want);
+        /* the points are those of the clipper without attributes */
+        double out0[CAP][4];
+        size_t ol0[2], no0;
+        assert_int_equal(gks_xform_clip_polygon(&c, 2, len, (const double (*)[4])pts, out0, CAP,
+                                                ol0, &no0), 0);
+        assert_int_equal(no0, no);
+        assert_memory_equal(out0, out, no * sizeof out[0]);
+        for (size_t i = 0; i < no; i++) {
+            XT_NEAR(oat[i][0], out[i][0], 1e-12);
+            XT_NEAR(oat[i][1], 2 * out[i][1] - out[i][2] + 3 * out[i][3], 1e-12);
+            XT_NEAR(oat[i][2], -out[i][3], 1e-12);
+            moved += out[i][3] != pts[0][3];
+        }
+    }
+    assert_true(moved > 100);
+    xt_traps_off();
+    /* bad arguments: too many attributes, attributes missing */
+    size_t l3 = 3;
+    gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+    double big[3 * (GKS_XFORM_CLIP_MAX_ATTR + 1)] = { 0 };
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, big,
+                                                 GKS_XFORM_CLIP_MAX_ATTR + 1, out, &oat[0][0],
+                                                 CAP, ol, &no), GKS_E_NPOINTS_INVALID);
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, NULL, 2,
+                                                 out, &oat[0][0], CAP, ol, &no),
+                     GKS_E_NPOINTS_INVALID);
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, big, 2,
+                                                 out, NULL, CAP, ol, &no), GKS_E_NPOINTS_INVALID);
+}
+
 static void test_polygon_simple(void **state)
 {
     (void)state;
@@ -762,6 +823,7 @@ int main(void)
         cmocka_unit_test(test_polyline_join),
         cmocka_unit_test(test_polyline_random),
         cmocka_unit_test(test_polygon_simple),
+        cmocka_unit_test(test_polygon_attr),
         cmocka_unit_test(test_polygon_huge),
         cmocka_unit_test(test_polygon_evenodd),
         cmocka_unit_test(test_polygon_perspective_eye),

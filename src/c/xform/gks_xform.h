@@ -345,6 +345,17 @@ int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t 
                            const double (*pts)[4], double (*out)[4], size_t out_cap,
                            size_t *out_len, size_t *n_out);
 
+/* The same with na <= GKS_XFORM_CLIP_MAX_ATTR attributes per vertex (attr: na doubles per
+ * point, e.g. a normal and a colour), interpolated at new vertices with the point's
+ * parameter; out_attr receives na doubles per output point (required when out is given
+ * and na > 0). The caller renormalises or clamps what needs it. Errors as
+ * gks_xform_clip_polygon, and 100 for na too large or attr missing. */
+#define GKS_XFORM_CLIP_MAX_ATTR 8
+int gks_xform_clip_polygon_attr(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
+                                const double (*pts)[4], const double *attr, size_t na,
+                                double (*out)[4], double *out_attr, size_t out_cap,
+                                size_t *out_len, size_t *n_out);
+
 /* Divide a homogeneous point: out = xyz/w. Errors: 308 if w <= 0 or the result is not
  * finite (after clipping with wmin > 0 this cannot happen). */
 int gks_xform_divide(const double in[4], double out[3]);

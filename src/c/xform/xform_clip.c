@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * xform_clip.c -- clipping in homogeneous coordinates, before the division by w:
- * lines and polylines plane by plane, polygons with several loops by re-entrant
- * Sutherland–Hodgman. The region is an intersection of
+ * lines and polylines plane by plane, polygons with several loops (and per-vertex
+ * attributes) by re-entrant Sutherland–Hodgman. The region is an intersection of
  * half-spaces p·X >= 0 plus w >= wmin.
  */
 #include "gks_xform.h"
@@ -238,27 +238,35 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
 
 /* ---- re-entrant Sutherland–Hodgman ---------------------------------------------------- */
 
+/* A vertex while clipping: the point, then the attributes (interpolated like the point). */
+#define SH_MAXV (4 + GKS_XFORM_CLIP_MAX_ATTR)
+
 typedef struct {
     int have_first;
-    double first[4], prev[4];
+    double first[SH_MAXV], prev[SH_MAXV];
     double first_d, prev_d;
 } sh_stage;
 
 typedef struct {
     const gks_xform_clip *c;
     int k;                                   /* number of constraints */
+    size_t nv;                               /* values per vertex: 4 + attributes */
     sh_stage st[GKS_XFORM_MAX_PLANES + 1];
     double (*out)[4];
+    double *out_attr;
     size_t cap, count;
     int bad;                                 /* a non-finite point was produced */
 } sh_ctx;
 
-static void sh_sink(sh_ctx *x, const double p[4])
+static void sh_sink(sh_ctx *x, const double *p)
 {
-    if (!xform_finite_n(p, 4))
+    if (!xform_finite_n(p, 4)) {
         x->bad = 1;
-    else if (x->count < x->cap)
+    } else if (x->count < x->cap) {
         memcpy(x->out[x->count], p, 4 * sizeof p[0]);
+        if (x->nv > 4)
+            memcpy(x->out_attr + x->count * (x->nv - 4), p + 4, (x->nv - 4) * sizeof p[0]);
+    }
     x->count++;
 }
 
@@ -269,17 +277,17 @@ static int sh_crosses(double a, double b)
     return (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
 }
 
-static void sh_push(sh_ctx *x, int s, const double p[4]);
+static void sh_push(sh_ctx *x, int s, const double *p);
 
-static void sh_emit_crossing(sh_ctx *x, int s, const double a[4], double da,
-                             const double b[4], double db)
+static void sh_emit_crossing(sh_ctx *x, int s, const double *a, double da, const double *b,
+                             double db)
 {
-    double q[4];
-    cross_n(a, b, da, db, q, 4);
+    double q[SH_MAXV];
+    cross_n(a, b, da, db, q, x->nv);
     sh_push(x, s + 1, q);
 }
 
-static void sh_push(sh_ctx *x, int s, const double p[4])
+static void sh_push(sh_ctx *x, int s, const double *p)
 {
     if (s == x->k) {
         sh_sink(x, p);
@@ -293,14 +301,14 @@ static void sh_push(sh_ctx *x, int s, const double p[4])
     }
     if (!g->have_first) {
         g->have_first = 1;
-        memcpy(g->first, p, sizeof g->first);
+        memcpy(g->first, p, x->nv * sizeof *p);
         g->first_d = d;
     } else if (sh_crosses(g->prev_d, d)) {
         sh_emit_crossing(x, s, g->prev, g->prev_d, p, d);
     }
     if (d >= 0.0)
         sh_push(x, s + 1, p);
-    memcpy(g->prev, p, sizeof g->prev);
+    memcpy(g->prev, p, x->nv * sizeof *p);
     g->prev_d = d;
 }
 
@@ -315,9 +323,10 @@ static void sh_close(sh_ctx *x, int s)
     }
 }
 
-int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
-                           const double (*pts)[4], double (*out)[4], size_t out_cap,
-                           size_t *out_len, size_t *n_out)
+int gks_xform_clip_polygon_attr(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
+                                const double (*pts)[4], const double *attr, size_t na,
+                                double (*out)[4], double *out_attr, size_t out_cap,
+                                size_t *out_len, size_t *n_out)
 {
     *n_out = 0;
     if (nloops == 0)
@@ -325,10 +334,12 @@ int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t 
     size_t total = 0;
     for (size_t l = 0; l < nloops; l++) {
         out_len[l] = 0;
-        if (loop_len[l] < 3 || loop_len[l] > ((size_t)-1) / 4 - total)
+        if (loop_len[l] < 3 || loop_len[l] > ((size_t)-1) / SH_MAXV - total)
             return GKS_E_NPOINTS_INVALID;
         total += loop_len[l];
     }
+    if (na > GKS_XFORM_CLIP_MAX_ATTR || (na > 0 && (!attr || (out && !out_attr))))
+        return GKS_E_NPOINTS_INVALID;
     if (!region_ok(c) || !xform_finite_n(&pts[0][0], total * 4))
         return GKS_E_ARITHMETIC;
 
@@ -336,13 +347,20 @@ int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t 
     memset(&x, 0, sizeof x);
     x.c = c;
     x.k = n_constraints(c);
+    x.nv = 4 + na;
     x.out = out;
+    x.out_attr = out_attr;
     x.cap = out ? out_cap : 0;
     size_t base = 0;
     for (size_t l = 0; l < nloops; l++) {
         const size_t before = x.count;
-        for (size_t i = 0; i < loop_len[l]; i++)
-            sh_push(&x, 0, pts[base + i]);
+        for (size_t i = 0; i < loop_len[l]; i++) {
+            double v[SH_MAXV];
+            memcpy(v, pts[base + i], 4 * sizeof v[0]);
+            if (na)
+                memcpy(v + 4, attr + (base + i) * na, na * sizeof v[0]);
+            sh_push(&x, 0, v);
+        }
         sh_close(&x, 0);
         base += loop_len[l];
         out_len[l] = x.count - before;
@@ -351,6 +369,14 @@ int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t 
     }
     *n_out = x.count;
     return (x.count > x.cap) ? GKS_E_STORAGE_OVERFLOW : 0;
+}
+
+int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
+                           const double (*pts)[4], double (*out)[4], size_t out_cap,
+                           size_t *out_len, size_t *n_out)
+{
+    return gks_xform_clip_polygon_attr(c, nloops, loop_len, pts, NULL, 0, out, NULL, out_cap,
+                                       out_len, n_out);
 }
 
 int gks_xform_divide(const double in[4], double out[3])
