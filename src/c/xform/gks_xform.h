@@ -265,6 +265,9 @@ typedef struct {
     int n;                                   /* planes in use, 0..GKS_XFORM_MAX_PLANES */
     double p[GKS_XFORM_MAX_PLANES][4];       /* a, b, c, d: a·x + b·y + c·z + d·w >= 0 */
     double wmin;
+    /* per plane, set by the add functions: i + 1 if only coefficient i of x, y, z (and d)
+     * is non-zero (a face of a box: evaluated and snapped on that axis alone), else 0 */
+    unsigned char axis[GKS_XFORM_MAX_PLANES];
 } gks_xform_clip;
 
 /* Default wmin set by gks_xform_clip_init: w is 1 on the back plane for matrices from

@@ -11,6 +11,18 @@
 #include <math.h>
 #include <string.h>
 
+/* The axis tag of plane p (see gks_xform_clip.axis). */
+static unsigned char plane_axis(const double p[4])
+{
+    if (p[1] == 0.0 && p[2] == 0.0 && p[0] != 0.0)
+        return 1;
+    if (p[0] == 0.0 && p[2] == 0.0 && p[1] != 0.0)
+        return 2;
+    if (p[0] == 0.0 && p[1] == 0.0 && p[2] != 0.0)
+        return 3;
+    return 0;
+}
+
 void gks_xform_clip_init(gks_xform_clip *c)
 {
     memset(c, 0, sizeof *c);
@@ -25,6 +37,7 @@ int gks_xform_clip_add_plane(gks_xform_clip *c, const double p[4])
     if (c->n < 0 || c->n >= GKS_XFORM_MAX_PLANES)
         return GKS_E_STORAGE_OVERFLOW;
     memcpy(c->p[c->n], p, sizeof c->p[0]);
+    c->axis[c->n] = plane_axis(p);
     c->n++;
     return 0;
 }
@@ -47,8 +60,10 @@ int gks_xform_clip_add_box(gks_xform_clip *c, const double box[6], unsigned flag
     for (int i = 0; i < 6; i++) {
         unsigned bit = (i < 4) ? GKS_XFORM_CLIP_XY
                                : (i == 4) ? GKS_XFORM_CLIP_BACK : GKS_XFORM_CLIP_FRONT;
-        if (flags & bit)
-            memcpy(c->p[c->n++], planes[i], sizeof planes[i]);
+        if (flags & bit) {
+            memcpy(c->p[c->n], planes[i], sizeof planes[i]);
+            c->axis[c->n++] = (unsigned char)(i / 2 + 1);
+        }
     }
     return 0;
 }
@@ -77,15 +92,21 @@ int gks_xform_clip_add_box_mapped(gks_xform_clip *c, const double box[6], unsign
             q[i][j] /= mx;
     }
     memcpy(c->p[c->n], q, (size_t)t.n * sizeof q[0]);
+    for (int i = 0; i < t.n; i++)
+        c->axis[c->n + i] = plane_axis(q[i]);
     c->n += t.n;
     return 0;
 }
 
-/* A region filled by hand must still be sane: plane count in range, finite coefficients. */
+/* A region filled by hand must still be sane: plane count in range, finite coefficients,
+ * axis tags in range. */
 static int region_ok(const gks_xform_clip *c)
 {
     if (c->n < 0 || c->n > GKS_XFORM_MAX_PLANES || !isfinite(c->wmin) || c->wmin < 0.0)
         return 0;
+    for (int i = 0; i < c->n; i++)
+        if (c->axis[i] > 3)
+            return 0;
     return xform_finite_n(&c->p[0][0], (size_t)c->n * 4);
 }
 
@@ -104,6 +125,9 @@ static double constraint(const gks_xform_clip *c, int k, const double x[4])
         k--;
     }
     const double *p = c->p[k];
+    const int a = c->axis[k];
+    if (a) /* the other terms are 0: the same value (up to the sign of a zero) */
+        return p[a - 1] * x[a - 1] + p[3] * x[3];
     return p[0] * x[0] + p[1] * x[1] + p[2] * x[2] + p[3] * x[3];
 }
 
@@ -149,13 +173,9 @@ static void snap(const gks_xform_clip *c, int k, double r[4])
         }
         k--;
     }
-    const double *p = c->p[k];
-    if (p[1] == 0.0 && p[2] == 0.0 && p[0] != 0.0)
-        r[0] = -p[3] * r[3] / p[0];
-    else if (p[0] == 0.0 && p[2] == 0.0 && p[1] != 0.0)
-        r[1] = -p[3] * r[3] / p[1];
-    else if (p[0] == 0.0 && p[1] == 0.0 && p[2] != 0.0)
-        r[2] = -p[3] * r[3] / p[2];
+    const int a = c->axis[k] - 1;
+    if (a >= 0)
+        r[a] = -c->p[k][3] * r[3] / c->p[k][a];
 }
 
 int gks_xform_clip_segment(const gks_xform_clip *c, double a[4], double b[4], int *moved_a,
@@ -279,6 +299,15 @@ static int sh_crosses(double a, double b)
 
 static void sh_push(sh_ctx *x, int s, const double *p);
 
+/* A vertex copy, of fixed size for points alone (the common case, inlined). */
+static void sh_copy(double *d, const double *p, size_t nv)
+{
+    if (nv == 4)
+        memcpy(d, p, 4 * sizeof *p);
+    else
+        memcpy(d, p, nv * sizeof *p);
+}
+
 static void sh_emit_crossing(sh_ctx *x, int s, const double *a, double da, const double *b,
                              double db)
 {
@@ -301,14 +330,14 @@ static void sh_push(sh_ctx *x, int s, const double *p)
     }
     if (!g->have_first) {
         g->have_first = 1;
-        memcpy(g->first, p, x->nv * sizeof *p);
+        sh_copy(g->first, p, x->nv);
         g->first_d = d;
     } else if (sh_crosses(g->prev_d, d)) {
         sh_emit_crossing(x, s, g->prev, g->prev_d, p, d);
     }
     if (d >= 0.0)
         sh_push(x, s + 1, p);
-    memcpy(g->prev, p, x->nv * sizeof *p);
+    sh_copy(g->prev, p, x->nv);
     g->prev_d = d;
 }
 

@@ -35,14 +35,15 @@ int gks_pipe_clip_polyline(const gks_pipe_norm *nc, const gks_pipe_src *s, size_
                            gks_pipe_pieces *b)
 {
     double prev[4] = { 0 }, cur[4], wc[3];
-    int prev_ok = 0, open = 0;
+    int prev_ok = 0, prev_in = 0, open = 0;
     for (size_t i = 0; i < n; i++) {
         gks_pipe_src_get(s, i, wc);
         int ok = gks_pipe_to_ndc(nc, wc, cur);
+        int in = ok && gks_pipe_visible(nc, cur); /* both ends in: nothing to clip */
         if (ok && prev_ok) {
             double a[4] = { prev[0], prev[1], prev[2], 1 }, e[4] = { cur[0], cur[1], cur[2], 1 };
             int ma = 0, mb = 0; /* plane by plane at the viewport 3 (gks_xform.h) */
-            int vis = !nc->clip_on || gks_xform_clip_segment(&nc->clip, a, e, &ma, &mb);
+            int vis = (in && prev_in) || gks_xform_clip_segment(&nc->clip, a, e, &ma, &mb);
             if (vis) {
                 if (!(open && !ma)) {
                     if (gks_pipe_piece_new(b) || gks_pipe_piece_push(b, a))
@@ -58,6 +59,7 @@ int gks_pipe_clip_polyline(const gks_pipe_norm *nc, const gks_pipe_src *s, size_
         if (ok)
             memcpy(prev, cur, sizeof prev);
         prev_ok = ok;
+        prev_in = in;
     }
     return 0;
 }
