@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * test_xform_clip.c -- homogeneous clipping: lines (Liang–Barsky), polylines, polygons with
+ * test_xform_clip.c -- homogeneous clipping: lines (plane by plane), polylines, polygons with
  * several loops (Sutherland–Hodgman): pieces inside, lengths/areas preserved, the even-odd
  * interior preserved, a triangle through the eye plane under perspective, bad input.
  */
@@ -26,6 +26,26 @@ static int in_box(const double p[3], const double b[6], double tol)
     return 1;
 }
 
+/* gks_xform_clip_segment on copies of a, b, the clipped part given as the parameters
+ * t0 <= t1 of the original segment (homogeneous p(t) = a + t(b − a)), recovered from the
+ * moved ends along the coordinate that changes most (an unmoved end: 0 or 1). Returns 0. */
+static int clip_line_t(const gks_xform_clip *c, const double a[4], const double b[4],
+                       double *t0, double *t1, int *vis)
+{
+    double p[4], q[4];
+    int ma, mb, j = 0;
+    memcpy(p, a, sizeof p);
+    memcpy(q, b, sizeof q);
+    *vis = gks_xform_clip_segment(c, p, q, &ma, &mb);
+    for (int i = 1; i < 4; i++)
+        if (fabs(b[i] - a[i]) > fabs(b[j] - a[j]))
+            j = i;
+    const double ab = b[j] - a[j];
+    *t0 = ma ? (p[j] - a[j]) / ab : 0.0;
+    *t1 = mb ? (q[j] - a[j]) / ab : 1.0;
+    return 0;
+}
+
 static void test_clip_line(void **state)
 {
     (void)state;
@@ -34,25 +54,28 @@ static void test_clip_line(void **state)
     double t0, t1;
     int vis;
     const double a[4] = { -1, 0.5, 0.5, 1 }, b[4] = { 2, 0.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, a, b, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&c, a, b, &t0, &t1, &vis), 0);
     assert_true(vis);
     XT_NEAR(t0, 1.0 / 3, 1e-15);
     XT_NEAR(t1, 2.0 / 3, 1e-15);
     /* the same segment with w = 2 (homogeneous scaling does not change the result) */
     const double a2[4] = { -2, 1, 1, 2 }, b2[4] = { 4, 1, 1, 2 };
-    assert_int_equal(gks_xform_clip_line(&c, a2, b2, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&c, a2, b2, &t0, &t1, &vis), 0);
     assert_true(vis);
     XT_NEAR(t0, 1.0 / 3, 1e-15);
     XT_NEAR(t1, 2.0 / 3, 1e-15);
     /* fully outside; touching a corner in one point; a zero-length segment inside */
     const double o0[4] = { 2, 2, 0.5, 1 }, o1[4] = { 3, 0.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, o0, o1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&c, o0, o1, &t0, &t1, &vis), 0);
     assert_false(vis);
+    /* touching the corner (0, 1): plane by plane, the segment keeps that one point */
     const double k0[4] = { -0.5, 0.5, 0.5, 1 }, k1[4] = { 0.5, 1.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, k0, k1, &t0, &t1, &vis), 0);
-    assert_false(vis);
+    assert_int_equal(clip_line_t(&c, k0, k1, &t0, &t1, &vis), 0);
+    assert_true(vis);
+    XT_NEAR(t0, 0.5, 0);
+    XT_NEAR(t1, 0.5, 0);
     const double z0[4] = { 0.5, 0.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, z0, z0, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&c, z0, z0, &t0, &t1, &vis), 0);
     assert_true(vis);
     XT_NEAR(t0, 0, 0);
     XT_NEAR(t1, 1, 0);
@@ -60,61 +83,86 @@ static void test_clip_line(void **state)
     gks_xform_clip cxy = box_region(unit_box, GKS_XFORM_CLIP_XY);
     assert_int_equal(cxy.n, 4);
     const double zz0[4] = { 0.5, 0.5, -3, 1 }, zz1[4] = { 0.5, 0.5, 4, 1 };
-    assert_int_equal(gks_xform_clip_line(&cxy, zz0, zz1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&cxy, zz0, zz1, &t0, &t1, &vis), 0);
     assert_true(vis);
     XT_NEAR(t0, 0, 0);
     XT_NEAR(t1, 1, 0);
     gks_xform_clip cf = box_region(unit_box, GKS_XFORM_CLIP_FRONT);   /* z <= 1 only */
-    assert_int_equal(gks_xform_clip_line(&cf, zz0, zz1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&cf, zz0, zz1, &t0, &t1, &vis), 0);
     XT_NEAR(t0, 0, 0);
     XT_NEAR(t1, 4.0 / 7, 1e-15);
     gks_xform_clip cb = box_region(unit_box, GKS_XFORM_CLIP_BACK);    /* z >= 0 only */
-    assert_int_equal(gks_xform_clip_line(&cb, zz0, zz1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&cb, zz0, zz1, &t0, &t1, &vis), 0);
     XT_NEAR(t0, 3.0 / 7, 1e-15);
     XT_NEAR(t1, 1, 0);
     /* no planes: only w >= wmin. A segment from behind the eye (w = −1) to w = 1 */
     gks_xform_clip cw;
     gks_xform_clip_init(&cw);
     const double e0[4] = { 0, 0, 0, -1 }, e1[4] = { 0, 0, 0, 1 };
-    assert_int_equal(gks_xform_clip_line(&cw, e0, e1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&cw, e0, e1, &t0, &t1, &vis), 0);
     assert_true(vis);
     assert_true(t0 > 0.5 && t0 < 0.5 + 1e-8);
     cw.wmin = 0;    /* disabled */
-    assert_int_equal(gks_xform_clip_line(&cw, e0, e1, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&cw, e0, e1, &t0, &t1, &vis), 0);
     XT_NEAR(t0, 0, 0);
-    /* bad input */
+    /* bad input (gks_xform_clip_polyline reports it as 308): nothing visible, no crash */
     const double nn[4] = { 0, NAN, 0, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, nn, b, &t0, &t1, &vis), GKS_E_ARITHMETIC);
+    const double nx[4] = { NAN, 0.5, 0.5, 1 };
+    clip_line_t(&c, nn, b, &t0, &t1, &vis);
+    assert_false(vis);
+    clip_line_t(&c, nx, b, &t0, &t1, &vis);
+    assert_false(vis);
     gks_xform_clip bad = c;
-    bad.p[2][1] = INFINITY;
-    assert_int_equal(gks_xform_clip_line(&bad, a, b, &t0, &t1, &vis), GKS_E_ARITHMETIC);
+    bad.p[0][0] = INFINITY;
+    clip_line_t(&bad, a, b, &t0, &t1, &vis);
+    assert_false(vis);
     bad = c;
     bad.n = 99;
-    assert_int_equal(gks_xform_clip_line(&bad, a, b, &t0, &t1, &vis), GKS_E_ARITHMETIC);
+    clip_line_t(&bad, a, b, &t0, &t1, &vis);
+    assert_false(vis);
     bad = c;
     bad.wmin = NAN;
-    assert_int_equal(gks_xform_clip_line(&bad, a, b, &t0, &t1, &vis), GKS_E_ARITHMETIC);
+    clip_line_t(&bad, a, b, &t0, &t1, &vis);
+    assert_false(vis);
 }
 
-/* The limit of the parametric (Liang-Barsky) clipper, and why core/pipe clips polylines at
- * the viewport plane by plane instead (docs/ARCHITECTURE.md, "Clipping"): the visible part
- * of a segment from x = -1e30 to x = 1e30 through the unit box lies between t = 1/2 and
- * t = 1/2 + 5e-31, which doubles cannot tell apart, so the segment is reported invisible.
- * The pipeline keeps it (tests/core/test_prims.c, test_polyline_huge_coordinates), and so
- * does the rasterizer's pixel clip (tests/raster/test_raster.c, huge lines). */
-static void test_clip_line_parameter_limit(void **state)
+/* Huge segments: plane by plane, each crossing from the segment the previous planes have
+ * shortened, the segment from x = -1e30 to x = 1e30 keeps its visible part, the clipped
+ * coordinates exactly on the planes (Liang-Barsky on the original segment's parameter lost
+ * it: t = 1/2 and 1/2 + 5e-31 are one double). A diagonal one keeps its other coordinates
+ * (the crossing is interpolated from the nearer end). The pipeline's polylines
+ * (tests/core/test_prims.c, test_polyline_huge_coordinates) and the rasterizer's pixel
+ * clip (tests/raster/test_raster.c, huge lines) keep them too. */
+static void test_clip_line_huge(void **state)
 {
     (void)state;
     gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
-    double t0, t1;
-    int vis = 1;
-    const double a[4] = { -1e30, 0.5, 0.5, 1 }, b[4] = { 1e30, 0.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, a, b, &t0, &t1, &vis), 0);
-    assert_false(vis);
-    /* 1e15 is still resolved: the visible part is t in [1/2, 1/2 + 5e-16] */
-    const double a2[4] = { -1e15, 0.5, 0.5, 1 }, b2[4] = { 1e15, 0.5, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&c, a2, b2, &t0, &t1, &vis), 0);
-    assert_true(vis);
+    double a[4] = { -1e30, 0.5, 0.5, 1 }, b[4] = { 1e30, 0.5, 0.5, 1 };
+    int ma, mb;
+    assert_int_equal(gks_xform_clip_segment(&c, a, b, &ma, &mb), 1);
+    assert_true(ma && mb);
+    const double ea[4] = { 0, 0.5, 0.5, 1 }, eb[4] = { 1, 0.5, 0.5, 1 };
+    assert_memory_equal(a, ea, sizeof a);
+    assert_memory_equal(b, eb, sizeof b);
+    /* the same through gks_xform_clip_polyline (the drivers' view clip) */
+    const double pl[2][4] = { { -1e30, 0.5, 0.5, 1 }, { 1e30, 0.5, 0.5, 1 } };
+    double out[2][4];
+    size_t len[1], no, np;
+    assert_int_equal(gks_xform_clip_polyline(&c, 2, pl, out, 2, len, 1, &no, &np), 0);
+    assert_int_equal(np, 1);
+    assert_memory_equal(out[0], ea, sizeof ea);
+    assert_memory_equal(out[1], eb, sizeof eb);
+    /* diagonal from (-1e30, -1e30) to (0.5, 0.2): y = 0.2 + (x - 0.5)(1e30 + 0.2)/(1e30 +
+     * 0.5), which is -0.3 at x = 0 (to 1e-30); from the far end it would come out 0 */
+    double d0[4] = { -1e30, -1e30, 0.5, 1 }, d1[4] = { 0.5, 0.2, 0.5, 1 };
+    gks_xform_clip cx;
+    gks_xform_clip_init(&cx);
+    const double xpos[4] = { 1, 0, 0, 0 };
+    assert_int_equal(gks_xform_clip_add_plane(&cx, xpos), 0);
+    assert_int_equal(gks_xform_clip_segment(&cx, d0, d1, &ma, &mb), 1);
+    assert_true(ma && !mb);
+    XT_NEAR(d0[0], 0, 0);
+    XT_NEAR(d0[1], -0.3, 1e-15);
 }
 
 static void test_clip_region_build(void **state)
@@ -148,7 +196,7 @@ static void test_clip_region_build(void **state)
     double t0, t1;
     int vis;
     const double a[4] = { -1, 0.1, 0.5, 1 }, b[4] = { 3, 0.1, 0.5, 1 };
-    assert_int_equal(gks_xform_clip_line(&two, a, b, &t0, &t1, &vis), 0);
+    assert_int_equal(clip_line_t(&two, a, b, &t0, &t1, &vis), 0);
     assert_true(vis);
     XT_NEAR(t0, 1.5 / 4, 1e-15);
     XT_NEAR(t1, 2.0 / 4, 1e-15);
@@ -186,7 +234,7 @@ static void test_clip_box_mapped(void **state)
         gks_xform_apply(m, a, ha);
         gks_xform_apply(m, b, hb);
         int vis;
-        assert_int_equal(gks_xform_clip_line(&c, ha, hb, &t0, &t1, &vis), 0);
+        assert_int_equal(clip_line_t(&c, ha, hb, &t0, &t1, &vis), 0);
         /* sample the NDC segment: visible iff in the NDC box (x, y) and in the NPC cube */
         int hits = 0;
         const int S = 400;
@@ -346,7 +394,7 @@ static void test_polyline_random(void **state)
         for (int i = 0; i + 1 < N; i++) {
             double t0, t1, q0[4], q1[4];
             int vis;
-            assert_int_equal(gks_xform_clip_line(&c, pts[i], pts[i + 1], &t0, &t1, &vis), 0);
+            assert_int_equal(clip_line_t(&c, pts[i], pts[i + 1], &t0, &t1, &vis), 0);
             int hits = 0;
             const int S = 1000;
             for (int s = 0; s < S; s++) {
@@ -403,6 +451,67 @@ static double shoelace(size_t n, const double (*p)[4])
         a += (p[j][0] / p[j][3]) * (p[i][1] / p[i][3]) - (p[i][0] / p[i][3]) * (p[j][1] / p[j][3]);
     return 0.5 * a;
     xt_traps_off();
+}
+
+/* Attributes ride along: with attributes that are affine functions of the homogeneous
+ * point (what linear interpolation reproduces exactly, up to rounding), every output
+ * vertex, kept or new, carries the function's value at its own point. */
+static void test_polygon_attr(void **state)
+{
+    (void)state;
+    xt_traps_on();
+    xt_rng r = { 4242 };
+    enum { N = 9, NA = 3, CAP = 200 };
+    double pts[2 * N][4], at[2 * N][NA], out[CAP][4], oat[CAP][NA];
+    size_t len[2] = { N, N }, ol[2], no;
+    int moved = 0;
+    for (int it = 0; it < 100; it++) {
+        gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+        for (int i = 0; i < 2 * N; i++) {
+            double w = xt_uniform(&r, 0.5, 2);
+            for (int j = 0; j < 3; j++)
+                pts[i][j] = w * xt_uniform(&r, -0.7, 1.7);
+            pts[i][3] = w;
+            at[i][0] = pts[i][0];
+            at[i][1] = 2 * pts[i][1] - pts[i][2] + 3 * pts[i][3];
+            at[i][2] = -pts[i][3];
+        }
+        int e = gks_xform_clip_polygon_attr(&c, 2, len, (const double (*)[4])pts, &at[0][0],
+                                            NA, NULL, NULL, 0, ol, &no); /* counting call */
+        assert_int_equal(e, no ? GKS_E_STORAGE_OVERFLOW : 0);
+        size_t want = no;
+        assert_int_equal(gks_xform_clip_polygon_attr(&c, 2, len, (const double (*)[4])pts,
+                                                     &at[0][0], NA, out, &oat[0][0], CAP, ol,
+                                                     &no), 0);
+        assert_int_equal(no, want);
+        /* the points are those of the clipper without attributes */
+        double out0[CAP][4];
+        size_t ol0[2], no0;
+        assert_int_equal(gks_xform_clip_polygon(&c, 2, len, (const double (*)[4])pts, out0, CAP,
+                                                ol0, &no0), 0);
+        assert_int_equal(no0, no);
+        assert_memory_equal(out0, out, no * sizeof out[0]);
+        for (size_t i = 0; i < no; i++) {
+            XT_NEAR(oat[i][0], out[i][0], 1e-12);
+            XT_NEAR(oat[i][1], 2 * out[i][1] - out[i][2] + 3 * out[i][3], 1e-12);
+            XT_NEAR(oat[i][2], -out[i][3], 1e-12);
+            moved += out[i][3] != pts[0][3];
+        }
+    }
+    assert_true(moved > 100);
+    xt_traps_off();
+    /* bad arguments: too many attributes, attributes missing */
+    size_t l3 = 3;
+    gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
+    double big[3 * (GKS_XFORM_CLIP_MAX_ATTR + 1)] = { 0 };
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, big,
+                                                 GKS_XFORM_CLIP_MAX_ATTR + 1, out, &oat[0][0],
+                                                 CAP, ol, &no), GKS_E_NPOINTS_INVALID);
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, NULL, 2,
+                                                 out, &oat[0][0], CAP, ol, &no),
+                     GKS_E_NPOINTS_INVALID);
+    assert_int_equal(gks_xform_clip_polygon_attr(&c, 1, &l3, (const double (*)[4])pts, big, 2,
+                                                 out, NULL, CAP, ol, &no), GKS_E_NPOINTS_INVALID);
 }
 
 static void test_polygon_simple(void **state)
@@ -708,12 +817,13 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_clip_line),
-        cmocka_unit_test(test_clip_line_parameter_limit),
+        cmocka_unit_test(test_clip_line_huge),
         cmocka_unit_test(test_clip_region_build),
         cmocka_unit_test(test_clip_box_mapped),
         cmocka_unit_test(test_polyline_join),
         cmocka_unit_test(test_polyline_random),
         cmocka_unit_test(test_polygon_simple),
+        cmocka_unit_test(test_polygon_attr),
         cmocka_unit_test(test_polygon_huge),
         cmocka_unit_test(test_polygon_evenodd),
         cmocka_unit_test(test_polygon_perspective_eye),

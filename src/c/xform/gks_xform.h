@@ -265,6 +265,9 @@ typedef struct {
     int n;                                   /* planes in use, 0..GKS_XFORM_MAX_PLANES */
     double p[GKS_XFORM_MAX_PLANES][4];       /* a, b, c, d: a·x + b·y + c·z + d·w >= 0 */
     double wmin;
+    /* per plane, set by the add functions: i + 1 if only coefficient i of x, y, z (and d)
+     * is non-zero (a face of a box: evaluated and snapped on that axis alone), else 0 */
+    unsigned char axis[GKS_XFORM_MAX_PLANES];
 } gks_xform_clip;
 
 /* Default wmin set by gks_xform_clip_init: w is 1 on the back plane for matrices from
@@ -303,20 +306,24 @@ int gks_xform_clip_add_box(gks_xform_clip *c, const double box[6], unsigned flag
 int gks_xform_clip_add_box_mapped(gks_xform_clip *c, const double box[6], unsigned flags,
                                   const double b_to_a[4][4]);
 
-/* Clip one segment p0→p1: on success *visible says whether a part survives, and the part
- * is p(t) = p0 + t(p1 − p0) for t in [*t0, *t1] (0 <= t0 <= t1 <= 1). A segment that only
- * touches the region in one point of a non-degenerate segment is not visible.
- * Errors: 308 (non-finite input). */
-int gks_xform_clip_line(const gks_xform_clip *c, const double p0[4], const double p1[4],
-                        double *t0, double *t1, int *visible);
+/* Clip the segment a→b in place, plane by plane (the region's constraints in order): each
+ * crossing is computed from the segment the previous planes have shortened, interpolated
+ * from its end nearer to the plane, and put exactly on the plane when that is a face of a
+ * box (gks_xform_clip_add_box) or the w test; so a segment from x = -1e30 to 1e30 keeps
+ * its visible part. Returns 1 if a part survives (a segment touching the region in one
+ * point keeps that point), 0 if not or if a crossing overflows; *moved_a / *moved_b say
+ * which end was moved. For a region built by the functions above and finite a, b (what
+ * gks_xform_clip_polyline checks once for all its segments). */
+int gks_xform_clip_segment(const gks_xform_clip *c, double a[4], double b[4], int *moved_a,
+                           int *moved_b);
 
-/* Clip a polyline of n homogeneous points (Liang–Barsky per segment). The visible pieces
- * are written one after the other to out (points, 4 doubles each), piece k having
- * piece_len[k] >= 2 points; consecutive segments that join inside the region continue the
+/* Clip a polyline of n homogeneous points (gks_xform_clip_segment per segment). The
+ * visible pieces are written one after the other to out (points, 4 doubles each), piece k
+ * having piece_len[k] >= 2 points; consecutive segments that join inside the region continue the
  * same piece. Space needed: at most 2(n − 1) points and n − 1 pieces; *n_out and *n_pieces
  * are always set to the numbers needed, so out = NULL / piece_len = NULL with zero
  * capacities (NULL counts as capacity 0) is a counting call. Errors: 100 (n < 2),
- * 308 (non-finite input or result),
+ * 308 (non-finite input; a segment whose crossing overflows is dropped),
  * 300 (out_cap or piece_cap too small; nothing beyond the capacities is written). */
 int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pts)[4],
                             double (*out)[4], size_t out_cap,
@@ -340,6 +347,17 @@ int gks_xform_clip_polyline(const gks_xform_clip *c, size_t n, const double (*pt
 int gks_xform_clip_polygon(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
                            const double (*pts)[4], double (*out)[4], size_t out_cap,
                            size_t *out_len, size_t *n_out);
+
+/* The same with na <= GKS_XFORM_CLIP_MAX_ATTR attributes per vertex (attr: na doubles per
+ * point, e.g. a normal and a colour), interpolated at new vertices with the point's
+ * parameter; out_attr receives na doubles per output point (required when out is given
+ * and na > 0). The caller renormalises or clamps what needs it. Errors as
+ * gks_xform_clip_polygon, and 100 for na too large or attr missing. */
+#define GKS_XFORM_CLIP_MAX_ATTR 8
+int gks_xform_clip_polygon_attr(const gks_xform_clip *c, size_t nloops, const size_t *loop_len,
+                                const double (*pts)[4], const double *attr, size_t na,
+                                double (*out)[4], double *out_attr, size_t out_cap,
+                                size_t *out_len, size_t *n_out);
 
 /* Divide a homogeneous point: out = xyz/w. Errors: 308 if w <= 0 or the result is not
  * finite (after clipping with wmin > 0 this cannot happen). */

@@ -31,60 +31,19 @@ int gks_pipe_piece_new(gks_pipe_pieces *b)
     return 0;
 }
 
-/* Clip the segment a-b to the viewport box (clipping on) plane by plane, each
- * intersection computed from the segment already shortened by the previous planes and
- * the clipped coordinate set exactly on the plane, so a segment from -1e30 to 1e30 keeps
- * its visible part. The xform clipper (gks_xform_clip_*: the areas here, the
- * drivers' view clip) keeps it too, computing each crossing from the nearer end, but does
- * not put the clipped coordinate exactly on the plane; replacing this one by it may move
- * pixels of the reference pictures and is left open.
- * Returns 1 if a part survives; *moved_a / *moved_b say whether an end was moved. */
-static int clip_segment(const gks_pipe_norm *nc, double a[3], double b[3], int *moved_a,
-                        int *moved_b)
-{
-    *moved_a = *moved_b = 0;
-    if (!nc->clip_on)
-        return 1;
-    for (int axis = 0; axis < 3; axis++)
-        for (int side = 0; side < 2; side++) {
-            double lim = nc->box[2 * axis + side];
-            double sg = side ? -1.0 : 1.0; /* inside: sg * (x - lim) >= 0 */
-            double da = sg * (a[axis] - lim), db = sg * (b[axis] - lim);
-            if (da < 0 && db < 0)
-                return 0;
-            if (da >= 0 && db >= 0)
-                continue;
-            double t = da / (da - db);
-            double *moved = da < 0 ? a : b;
-            const double *p = da < 0 ? a : b, *q = da < 0 ? b : a;
-            double tt = da < 0 ? t : 1.0 - t; /* from p towards q */
-            double r[3];
-            for (int k = 0; k < 3; k++)
-                r[k] = p[k] + tt * (q[k] - p[k]);
-            r[axis] = lim;
-            if (!isfinite(r[0]) || !isfinite(r[1]) || !isfinite(r[2]))
-                return 0; /* overflow near DBL_MAX: treated as not visible */
-            memcpy(moved, r, sizeof r);
-            if (da < 0)
-                *moved_a = 1;
-            else
-                *moved_b = 1;
-        }
-    return 1;
-}
-
 int gks_pipe_clip_polyline(const gks_pipe_norm *nc, const gks_pipe_src *s, size_t n,
                            gks_pipe_pieces *b)
 {
     double prev[4] = { 0 }, cur[4], wc[3];
-    int prev_ok = 0, open = 0;
+    int prev_ok = 0, prev_in = 0, open = 0;
     for (size_t i = 0; i < n; i++) {
         gks_pipe_src_get(s, i, wc);
         int ok = gks_pipe_to_ndc(nc, wc, cur);
+        int in = ok && gks_pipe_visible(nc, cur); /* both ends in: nothing to clip */
         if (ok && prev_ok) {
             double a[4] = { prev[0], prev[1], prev[2], 1 }, e[4] = { cur[0], cur[1], cur[2], 1 };
-            int ma, mb;
-            int vis = clip_segment(nc, a, e, &ma, &mb);
+            int ma = 0, mb = 0; /* plane by plane at the viewport 3 (gks_xform.h) */
+            int vis = (in && prev_in) || gks_xform_clip_segment(&nc->clip, a, e, &ma, &mb);
             if (vis) {
                 if (!(open && !ma)) {
                     if (gks_pipe_piece_new(b) || gks_pipe_piece_push(b, a))
@@ -100,6 +59,7 @@ int gks_pipe_clip_polyline(const gks_pipe_norm *nc, const gks_pipe_src *s, size_
         if (ok)
             memcpy(prev, cur, sizeof prev);
         prev_ok = ok;
+        prev_in = in;
     }
     return 0;
 }

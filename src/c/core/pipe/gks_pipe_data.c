@@ -48,86 +48,6 @@ static int map_normals(const double nm[3][3], const double (*v)[3], size_t n, do
     return 0;
 }
 
-/* ------------------------------------------------------------------ clipping */
-/* A vertex while clipping: point, normal, colour. */
-typedef struct { double p[3], n[3], c[3]; } cvert;
-
-typedef struct {
-    cvert *v;
-    size_t n, cap;
-} cbuf;
-
-static int cbuf_push(cbuf *b, const cvert *v)
-{
-    if (gks_grow(&b->v, &b->cap, b->n + 1, sizeof *b->v))
-        return 300;
-    b->v[b->n++] = *v;
-    return 0;
-}
-
-/* One Sutherland-Hodgman pass of the loop in[0..n-1] against axis/side of box into out;
- * normals and colours interpolated linearly at new vertices (normals renormalised). */
-static int clip_pass(const cvert *in, size_t n, int axis, int side, const double box[6],
-                     cbuf *out)
-{
-    double lim = box[2 * axis + side], sg = side ? -1.0 : 1.0;
-    out->n = 0;
-    for (size_t i = 0; i < n; i++) {
-        const cvert *a = &in[i], *b = &in[(i + 1) % n];
-        double da = sg * (a->p[axis] - lim), db = sg * (b->p[axis] - lim);
-        int err = 0;
-        if (da >= 0)
-            err = cbuf_push(out, a);
-        if (!err && ((da >= 0) != (db >= 0))) {
-            double t = da / (da - db);
-            cvert r;
-            for (int k = 0; k < 3; k++) {
-                r.p[k] = a->p[k] + t * (b->p[k] - a->p[k]);
-                r.n[k] = a->n[k] + t * (b->n[k] - a->n[k]);
-                r.c[k] = a->c[k] + t * (b->c[k] - a->c[k]);
-            }
-            r.p[axis] = lim;
-            if (!(isfinite(r.p[0]) && isfinite(r.p[1]) && isfinite(r.p[2])))
-                continue; /* overflow near DBL_MAX: the vertex is dropped */
-            double len = sqrt(r.n[0] * r.n[0] + r.n[1] * r.n[1] + r.n[2] * r.n[2]);
-            if (len > 0 && isfinite(len))
-                for (int k = 0; k < 3; k++)
-                    r.n[k] /= len;
-            else
-                r.n[0] = r.n[1] = r.n[2] = 0.0; /* opposite normals: none (see send) */
-            for (int k = 0; k < 3; k++)
-                r.c[k] = fmin(1.0, fmax(0.0, r.c[k]));
-            err = cbuf_push(out, &r);
-        }
-        if (err)
-            return err;
-    }
-    return 0;
-}
-
-/* Clips the loop v[0..n-1] at box; the result in *res (res->n < 3: nothing left). */
-static int clip_loop(const cvert *v, size_t n, const double box[6], cbuf *res, cbuf *tmp)
-{
-    res->n = 0;
-    for (size_t i = 0; i < n; i++)
-        if (cbuf_push(res, &v[i]))
-            return 300;
-    for (int axis = 0; axis < 3; axis++)
-        for (int side = 0; side < 2; side++) {
-            int err = clip_pass(res->v, res->n, axis, side, box, tmp);
-            if (err)
-                return err;
-            cbuf t = *res;
-            *res = *tmp;
-            *tmp = t;
-            if (res->n < 3) {
-                res->n = 0;
-                return 0;
-            }
-        }
-    return 0;
-}
-
 /* ------------------------------------------------------------------ emission */
 /* The primitive's vertices in final NDC3, valid flags per vertex. */
 typedef struct {
@@ -147,11 +67,17 @@ static Grgb colr_of(const gks_ws *ws, int ctype, const double (*rgb)[3], const i
     return gks_attr_colour(ws, ci[k]);
 }
 
-/* Scratch space of one facet for one workstation. */
+/* Scratch space of one facet for one workstation: its vertices as homogeneous NDC3 points
+ * with their attributes (normal, colour: what clipping interpolates), the clipped loops,
+ * and the arrays sent to the driver. */
+enum { NATTR = 6 };
 typedef struct {
-    cvert *v;                  /* the facet's vertices, loop after loop */
+    double (*h)[4], (*at)[NATTR];
     size_t cap;
-    cbuf res, tmp;
+    double (*ch)[4], (*cat)[NATTR];
+    size_t ccap;
+    size_t *lens;              /* loop lengths in, then out */
+    size_t cap_lens;
     Gpoint3 *pts;
     Gvec3 *vn;
     Grgb *vc;
@@ -161,9 +87,11 @@ typedef struct {
 
 static void facet_buf_free(facet_buf *b)
 {
-    gks_free(b->v);
-    gks_free(b->res.v);
-    gks_free(b->tmp.v);
+    gks_free(b->h);
+    gks_free(b->at);
+    gks_free(b->ch);
+    gks_free(b->cat);
+    gks_free(b->lens);
     gks_free(b->pts);
     gks_free(b->vn);
     gks_free(b->vc);
@@ -171,16 +99,41 @@ static void facet_buf_free(facet_buf *b)
     memset(b, 0, sizeof *b);
 }
 
+/* Arrays of m vertices (c1, c2: element counts, grown together to one capacity *cap). */
+static int grow_pair(void *p1, size_t s1, void *p2, size_t s2, size_t *cap, size_t m)
+{
+    size_t c1 = *cap, c2 = *cap;
+    if (gks_grow(p1, &c1, m, s1) || gks_grow(p2, &c2, m, s2))
+        return 300;
+    if (c1 > *cap) /* both grew to the same capacity */
+        *cap = c1;
+    return 0;
+}
+
 /* Output arrays for m vertices and nl loops. */
 static int out_reserve(facet_buf *b, size_t m, size_t nl)
 {
-    size_t c1 = b->cap_out, c2 = b->cap_out, c3 = b->cap_out;
-    if (gks_grow(&b->pts, &c1, m, sizeof *b->pts) || gks_grow(&b->vn, &c2, m, sizeof *b->vn) ||
-        gks_grow(&b->vc, &c3, m, sizeof *b->vc))
+    size_t c3 = b->cap_out;
+    if (gks_grow(&b->vc, &c3, m, sizeof *b->vc) ||
+        grow_pair(&b->pts, sizeof *b->pts, &b->vn, sizeof *b->vn, &b->cap_out, m))
         return 300;
-    if (c1 > b->cap_out) /* all three grew to the same capacity */
-        b->cap_out = c1;
     return gks_grow(&b->counts, &b->cap_counts, nl, sizeof *b->counts);
+}
+
+/* The facet's nl loops (b->lens, nv vertices in b->h, b->at) clipped at nc's region into
+ * b->ch, b->cat, b->lens: 0 (*n_out vertices), 300, or -1 (not drawn: an overflow). */
+static int clip_facet(const gks_pipe_norm *nc, size_t nl, facet_buf *b, size_t *n_out)
+{
+    for (int pass = 0; pass < 2; pass++) {
+        int r = gks_xform_clip_polygon_attr(&nc->clip, nl, b->lens, (const double (*)[4])b->h,
+                                            &b->at[0][0], NATTR, b->ch, &b->cat[0][0],
+                                            b->ch ? b->ccap : 0, b->lens + nl, n_out);
+        if (r != 300 || pass == 1)
+            return r == 0 ? 0 : -1;
+        if (grow_pair(&b->ch, sizeof *b->ch, &b->cat, sizeof *b->cat, &b->ccap, *n_out))
+            return 300;
+    }
+    return -1;
 }
 
 /* Sends facet f (loops from loop0, indices from idx0) to ws. */
@@ -192,57 +145,72 @@ static int send_facet(gks_ws *ws, const gks_prim *tpl, const gks_pipe_norm *nc, 
     for (size_t k = 0; k < nl; k++)
         nv += (size_t)d->loop_counts[loop0 + k];
     int use_n = mp->n != NULL, use_c = (d->vflag & GVERT_COORD_COLR) != 0, inside = 1;
-    if (gks_grow(&b->v, &b->cap, nv, sizeof *b->v))
+    if (grow_pair(&b->h, sizeof *b->h, &b->at, sizeof *b->at, &b->cap, nv) ||
+        gks_grow(&b->lens, &b->cap_lens, 2 * nl, sizeof *b->lens))
         return 300;
     for (size_t i = 0; i < nv; i++) {
         size_t j = (size_t)d->idx[idx0 + i];
         if (!mp->pok[j])
             return 0; /* a non-finite point: the facet is not drawn */
-        cvert *v = &b->v[i];
-        memcpy(v->p, mp->p[j], sizeof v->p);
+        double *h = b->h[i], *n = b->at[i], *c = b->at[i] + 3;
+        memcpy(h, mp->p[j], 3 * sizeof *h);
+        h[3] = 1.0;
         if (use_n && !mp->nok[j])
             use_n = 0; /* a degenerate normal: the facet has no vertex normals */
         if (use_n)
-            memcpy(v->n, mp->n[j], sizeof v->n);
+            memcpy(n, mp->n[j], 3 * sizeof *n);
         else
-            v->n[0] = v->n[1] = v->n[2] = 0.0;
+            n[0] = n[1] = n[2] = 0.0;
         if (use_c) {
-            Grgb c = colr_of(ws, d->ctype, d->vrgb, d->vci, j);
-            v->c[0] = c.red; v->c[1] = c.green; v->c[2] = c.blue;
+            Grgb cv = colr_of(ws, d->ctype, d->vrgb, d->vci, j);
+            c[0] = cv.red; c[1] = cv.green; c[2] = cv.blue;
         } else {
-            v->c[0] = v->c[1] = v->c[2] = 0.0;
+            c[0] = c[1] = c[2] = 0.0;
         }
         if (nc->clip_on)
             for (int k = 0; k < 3; k++)
-                inside = inside && v->p[k] >= nc->box[2 * k] && v->p[k] <= nc->box[2 * k + 1];
+                inside = inside && h[k] >= nc->box[2 * k] && h[k] <= nc->box[2 * k + 1];
     }
-    /* The facet's loops, clipped when not inside. */
+    /* The facet's loops, clipped when not inside (loops left with < 3 points dropped). */
+    for (size_t k = 0; k < nl; k++)
+        b->lens[k] = b->lens[nl + k] = (size_t)d->loop_counts[loop0 + k];
+    const double (*vh)[4] = (const double (*)[4])b->h, (*va)[NATTR] = (const double (*)[NATTR])b->at;
+    if (!inside) {
+        size_t n_out;
+        int err = clip_facet(nc, nl, b, &n_out);
+        if (err)
+            return err > 0 ? err : 0;
+        vh = (const double (*)[4])b->ch;
+        va = (const double (*)[NATTR])b->cat;
+    }
     size_t m = 0, off = 0, nlo = 0;
     if (out_reserve(b, nv, nl))
         return 300;
     for (size_t k = 0; k < nl; k++) {
-        size_t c = (size_t)d->loop_counts[loop0 + k];
-        const cvert *lv = b->v + off;
-        size_t lc = c;
-        off += c;
-        if (!inside) {
-            int err = clip_loop(lv, c, nc->box, &b->res, &b->tmp);
-            if (err)
-                return err;
-            lv = b->res.v;
-            lc = b->res.n;
-            if (lc < 3)
-                continue;
-        }
+        size_t lc = b->lens[nl + k];
+        const double (*lh)[4] = vh + off, (*la)[NATTR] = va + off;
+        off += lc;
+        if (!inside && lc < 3)
+            continue;
         if (lc > INT32_MAX || out_reserve(b, m + lc, nl))
             return 300;
         for (size_t i = 0; i < lc; i++) {
-            const cvert *v = &lv[i];
-            b->pts[m + i] = (Gpoint3){ v->p[0], v->p[1], v->p[2] };
-            b->vn[m + i] = (Gvec3){ v->n[0], v->n[1], v->n[2] };
-            if (use_n && v->n[0] == 0.0 && v->n[1] == 0.0 && v->n[2] == 0.0)
+            double n[3] = { la[i][0], la[i][1], la[i][2] }, c[3] = { la[i][3], la[i][4], la[i][5] };
+            if (!inside) { /* interpolated: normals renormalised, colours clamped */
+                double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                if (len > 0 && isfinite(len))
+                    for (int j = 0; j < 3; j++)
+                        n[j] /= len;
+                else
+                    n[0] = n[1] = n[2] = 0.0; /* opposite normals: none (below) */
+                for (int j = 0; j < 3; j++)
+                    c[j] = fmin(1.0, fmax(0.0, c[j]));
+            }
+            b->pts[m + i] = (Gpoint3){ lh[i][0], lh[i][1], lh[i][2] };
+            b->vn[m + i] = (Gvec3){ n[0], n[1], n[2] };
+            if (use_n && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
                 use_n = 0; /* interpolated between opposite normals */
-            b->vc[m + i] = (Grgb){ v->c[0], v->c[1], v->c[2] };
+            b->vc[m + i] = (Grgb){ c[0], c[1], c[2] };
         }
         b->counts[nlo++] = (int)lc;
         m += lc;

@@ -48,6 +48,7 @@ int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box
     nc->clip_on = clip_on;
     nc->seg = NULL;
     gks_xform_clip_init(&nc->clip);
+    nc->clip.wmin = 0.0; /* NDC3 points have w = 1: no eye plane to keep off */
     if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
         return -1;
     return 0;
