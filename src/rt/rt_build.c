@@ -1263,6 +1263,47 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     return RT_OK;
 }
 
+/* FNV-1a (64 bit) over n bytes, continuing from h */
+static uint64_t rt_fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t k = 0; k < n; k++)
+        h = (h ^ c[k]) * 0x100000001b3ULL;
+    return h;
+}
+
+static uint64_t rt_fnv_box(uint64_t h, const rt_box *b)
+{
+    h = rt_fnv(h, b->lo, sizeof b->lo);
+    h = rt_fnv(h, b->hi, sizeof b->hi);
+    return rt_fnv(h, b->n, sizeof b->n);
+}
+
+/* the committed grid's hash (rt_grid_info.hash): field by field, no padding bytes */
+static uint64_t rt_grid_hash(const rt_grid *g)
+{
+    uint64_t h = 0xcbf29ce484222325ULL;
+    h = rt_fnv(h, &g->rotated, sizeof g->rotated);
+    if (g->rotated) {
+        h = rt_fnv(h, g->R, sizeof g->R);
+        h = rt_fnv(h, g->c, sizeof g->c);
+    }
+    h = rt_fnv_box(h, &g->b);
+    h = rt_fnv(h, g->off, (g->ncells + 1) * sizeof *g->off);
+    h = rt_fnv(h, g->refs, g->nrefs * sizeof *g->refs);
+    h = rt_fnv(h, g->dist, g->ncells);
+    const int has_sub = g->sub != NULL;
+    h = rt_fnv(h, &has_sub, sizeof has_sub);
+    if (!has_sub)
+        return h;
+    h = rt_fnv(h, g->sub, g->ncells * sizeof *g->sub);
+    for (size_t k = 0; k < g->nsubs; k++) {
+        h = rt_fnv_box(h, &g->subs[k].b);
+        h = rt_fnv(h, &g->subs[k].first, sizeof g->subs[k].first);
+    }
+    h = rt_fnv(h, g->soff, (g->nsubcells + 1) * sizeof *g->soff);
+    return rt_fnv(h, g->srefs, g->nsrefs * sizeof *g->srefs);
+}
 
 int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
 {
@@ -1303,5 +1344,6 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
         }
     }
     gi->volume_fill = filled;
+    gi->hash = rt_grid_hash(g);
     return RT_OK;
 }
