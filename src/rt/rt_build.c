@@ -677,9 +677,12 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
             rt_par_run(nt, rt_top_scatter, &job);
         }
     }
-    for (int k = 0; k < nt; k++) {
+    for (int k = 0; k < nt; k++) { /* the second level needs one grid's pairs at a time */
         free(bs[k].cnt);
         bs[k].cnt = NULL;
+        free(bs[k].pairs);
+        bs[k].pairs = NULL;
+        bs[k].npairs = bs[k].cap = 0;
     }
     return rc;
 }
@@ -707,11 +710,16 @@ static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6]
 /* The second level in parts of consecutive top cells (about equal references each), one
  * per thread: part k makes the grids of its cells with cells and references counted from its
  * own first ones; the parts are then laid out one after the other in cell order, which gives
- * the arrays one part would give. */
+ * the arrays one part would give. Each grid's (cell, primitive) pairs are sorted into the
+ * part's own cell offsets and references as soon as the grid is made (the pair scratch holds
+ * one grid's pairs only); the parts' arrays never move (rt_big) and are copied into place. */
 typedef struct rt_sub_part {
     size_t c0, c1;       /* top cells [c0, c1) */
     rt_subgrid *subs;    /* its grids (first: counted from its first sub cell) */
     size_t nsubs, total; /* grids, their cells */
+    rt_big off, refs;    /* uint32: per sub cell its first reference (counted from the part's
+                            first), the references; total and nref of them */
+    size_t nref;
     size_t sub0, cell0, ref0; /* its first grid, sub cell and reference in the grid's arrays */
     int err;             /* 1: no memory, 2: too many cells */
 } rt_sub_part;
@@ -800,40 +808,54 @@ static void rt_sub_cells(void *arg, int k, int n)
             break;
         }
         sg->first = (uint32_t)total;
+        b->npairs = 0;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
             if (!keep[r])
-                rt_insert(sc, b, g->refs[r], &sg->b, total, eps, &err);
+                rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, &err);
+        if (!err && pt->nref + b->npairs > UINT32_MAX - 1)
+            err = 2;
+        if (!err && (!rt_big_grow(&pt->off, total + nc, sizeof(uint32_t)) ||
+                     !rt_big_grow(&pt->refs, pt->nref + b->npairs, sizeof(uint32_t))))
+            err = 1;
+        if (err)
+            break;
+        /* this grid's pairs into CSR (stable: reference order kept within a cell); its
+           entries of off serve as counts, then as cursors */
+        uint32_t *off = (uint32_t *)pt->off.p + total, *refs = pt->refs.p;
+        memset(off, 0, nc * sizeof *off);
+        for (size_t q = 0; q < b->npairs; q++)
+            off[b->pairs[q].cell]++;
+        uint32_t run = (uint32_t)pt->nref;
+        for (size_t c = 0; c < nc; c++) {
+            const uint32_t m = off[c];
+            off[c] = run;
+            run += m;
+        }
+        for (size_t q = 0; q < b->npairs; q++)
+            refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+        for (size_t c = nc; c > 1; c--) /* off[c - 1] is now the start of c */
+            off[c - 1] = off[c - 2];
+        off[0] = (uint32_t)pt->nref;
+        pt->nref = run;
         total += nc;
     }
     pt->total = total;
     pt->err = err;
 }
 
-/* part k's pairs into the grid's sub-cell CSR arrays at its place (its cells' entries of
-   soff serve as counts, then as cursors; the entry after its last cell is the next part's) */
-static void rt_sub_csr(void *arg, int k, int n)
+/* part k's cell offsets and references into the grid's arrays at its place */
+static void rt_sub_place(void *arg, int k, int n)
 {
     (void)n;
     rt_sub_job *j = arg;
     const rt_sub_part *pt = &j->part[k];
-    const rt_build *b = &j->b[k];
     rt_grid *g = &j->sc->grid;
-    uint32_t *off = g->soff + pt->cell0, *refs = g->srefs;
-    memset(off, 0, pt->total * sizeof *off);
-    for (size_t q = 0; q < b->npairs; q++)
-        off[b->pairs[q].cell]++;
-    uint32_t run = (uint32_t)pt->ref0;
-    for (size_t c = 0; c < pt->total; c++) {
-        const uint32_t m = off[c];
-        off[c] = run;
-        run += m;
-    }
-    for (size_t q = 0; q < b->npairs; q++)
-        refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
-    for (size_t c = pt->total; c > 1; c--) /* off[c] is now the start of c + 1 */
-        off[c - 1] = off[c - 2];
-    if (pt->total > 0)
-        off[0] = (uint32_t)pt->ref0;
+    const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
+    uint32_t *to = g->soff + pt->cell0;
+    for (size_t c = 0; c < pt->total; c++)
+        to[c] = off[c] + r0;
+    if (pt->nref)
+        memcpy(g->srefs + pt->ref0, pt->refs.p, pt->nref * sizeof(uint32_t));
 }
 
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
@@ -883,7 +905,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         part[k].ref0 = nref;
         nsubs += part[k].nsubs;
         total += part[k].total;
-        nref += bs[k].npairs;
+        nref += part[k].nref;
     }
     if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
         err = 2;
@@ -906,10 +928,13 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         }
         g->nsubs = nsubs;
         g->soff[total] = (uint32_t)nref;
-        rt_par_run(nt, rt_sub_csr, &job);
+        rt_par_run(nt, rt_sub_place, &job);
     }
-    for (int k = 0; k < nt; k++)
+    for (int k = 0; k < nt; k++) {
         free(part[k].subs);
+        rt_big_free(&part[k].off);
+        rt_big_free(&part[k].refs);
+    }
     if (!err) { /* top lists: only what stays (compacted in place) */
         uint32_t w = 0;
         for (size_t ci = 0; ci < g->ncells; ci++) {
