@@ -27,58 +27,64 @@ static void report(int fctid, int err)
         GKS_FAIL(err, fctid);
 }
 
-/* ------------------------------------------------------------------ POLYLINE */
-static void polyline_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
-                         const gks_rec_xf *xf)
+/* ------------------------------------------------------------ POLYLINE, POLYMARKER, FILL AREA */
+/* The point-list primitives: their function ids (2-D, 3-D), the fewest points they take
+ * (fewer: 100) and their pipeline entry. */
+typedef struct {
+    int fct2, fct3, min;
+    int (*draw)(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n);
+} point_prim;
+
+static int pipe_fill_area(int fctid, const gks_rec_xf *xf, const gks_pipe_src *s, size_t n)
+{
+    return gks_pipe_area(fctid, xf, 1, &n, s, 0);
+}
+
+static const point_prim PL = { GFN_PL, GFN_PL3, 2, gks_pipe_polyline };
+static const point_prim PM = { GFN_PM, GFN_PM3, 1, gks_pipe_polymarker };
+static const point_prim FA = { GFN_FA, GFN_FA3, 3, pipe_fill_area };
+
+static void points_any(const point_prim *k, int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
+                       const gks_rec_xf *xf)
 {
     if (gks_check_state(fctid))
         return;
-    if (n < 2 || (!p2 && !p3))
+    if (n < k->min || (!p2 && !p3))
         GKS_FAIL(100, fctid);
     gks_pipe_src s = { p2, p3, NULL };
-    report(fctid, gks_pipe_polyline(fctid, xf, &s, (size_t)n));
+    report(fctid, k->draw(fctid, xf, &s, (size_t)n));
 }
 
-GKS_API void gpolyline(const Gpoint_list *l)
+/* The 2-D, 3-D and INTERPRET ITEM (xf the recorded normalization) forms. */
+static void points2(const point_prim *k, const Gpoint_list *l)
 {
-    polyline_any(GFN_PL, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
+    points_any(k, k->fct2, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
 }
 
-GKS_API void gpolyline3(const Gpoint_list3 *l)
+static void points3(const point_prim *k, const Gpoint_list3 *l, const gks_rec_xf *xf)
 {
-    polyline_any(GFN_PL3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
+    points_any(k, k->fct3, l ? l->num_points : 0, NULL, l ? l->points : NULL, xf);
 }
 
+GKS_API void gpolyline(const Gpoint_list *l) { points2(&PL, l); }
+GKS_API void gpolyline3(const Gpoint_list3 *l) { points3(&PL, l, NULL); }
 void gks_output_rec_polyline3(const gks_rec_xf *xf, const Gpoint_list3 *l)
 {
-    polyline_any(GFN_PL3, l->num_points, NULL, l->points, xf);
+    points3(&PL, l, xf);
 }
 
-/* ------------------------------------------------------------------ POLYMARKER */
-static void polymarker_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
-                           const gks_rec_xf *xf)
-{
-    if (gks_check_state(fctid))
-        return;
-    if (n < 1 || (!p2 && !p3))
-        GKS_FAIL(100, fctid);
-    gks_pipe_src s = { p2, p3, NULL };
-    report(fctid, gks_pipe_polymarker(fctid, xf, &s, (size_t)n));
-}
-
-GKS_API void gpolymarker(const Gpoint_list *l)
-{
-    polymarker_any(GFN_PM, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
-}
-
-GKS_API void gpolymarker3(const Gpoint_list3 *l)
-{
-    polymarker_any(GFN_PM3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
-}
-
+GKS_API void gpolymarker(const Gpoint_list *l) { points2(&PM, l); }
+GKS_API void gpolymarker3(const Gpoint_list3 *l) { points3(&PM, l, NULL); }
 void gks_output_rec_polymarker3(const gks_rec_xf *xf, const Gpoint_list3 *l)
 {
-    polymarker_any(GFN_PM3, l->num_points, NULL, l->points, xf);
+    points3(&PM, l, xf);
+}
+
+GKS_API void gfill_area(const Gpoint_list *l) { points2(&FA, l); }
+GKS_API void gfill_area3(const Gpoint_list3 *l) { points3(&FA, l, NULL); }
+void gks_output_rec_fill_area3(const gks_rec_xf *xf, const Gpoint_list3 *l)
+{
+    points3(&FA, l, xf);
 }
 
 /* ------------------------------------------------------------------ TEXT */
@@ -121,34 +127,7 @@ void gks_output_rec_text3(const gks_rec_xf *xf, const Gpoint3 *pos, const Gvec3 
     text3_any(pos, dir, str, xf);
 }
 
-/* ------------------------------------------------------------------ FILL AREA (SET) */
-static void fill_area_any(int fctid, int n, const Gpoint *p2, const Gpoint3 *p3,
-                          const gks_rec_xf *xf)
-{
-    if (gks_check_state(fctid))
-        return;
-    if (n < 3 || (!p2 && !p3))
-        GKS_FAIL(100, fctid);
-    size_t cnt = (size_t)n;
-    gks_pipe_src s = { p2, p3, NULL };
-    report(fctid, gks_pipe_area(fctid, xf, 1, &cnt, &s, 0));
-}
-
-GKS_API void gfill_area(const Gpoint_list *l)
-{
-    fill_area_any(GFN_FA, l ? l->num_points : 0, l ? l->points : NULL, NULL, NULL);
-}
-
-GKS_API void gfill_area3(const Gpoint_list3 *l)
-{
-    fill_area_any(GFN_FA3, l ? l->num_points : 0, NULL, l ? l->points : NULL, NULL);
-}
-
-void gks_output_rec_fill_area3(const gks_rec_xf *xf, const Gpoint_list3 *l)
-{
-    fill_area_any(GFN_FA3, l->num_points, NULL, l->points, xf);
-}
-
+/* ------------------------------------------------------------------ FILL AREA SET */
 /* FILL AREA SET (3): the loops are copied into one WC3 array. */
 static void fill_area_set_any(int fctid, const Gpoint_list_list *l2, const Gpoint_list_list3 *l3,
                               const gks_rec_xf *xf)

@@ -55,40 +55,66 @@ void gks_output_rec_data(const gks_rec_xf *xf, int item, const gks_area_data *d)
         GKS_FAIL(err, fctid);
 }
 
-/* Checks the flags and vertex record of a call, copies its vertex data into w and d.
- * Returns 0 or an error number. */
-static int take_vdata(Gint fflag, Gint vflag, Gint ctype, const Gfacet_vdata3 *v, size_t min_n,
-                      gks_area_arrays *w, gks_area_data *d)
+/* One call's canonical form under construction: the data, the arrays copied for it, its
+ * index ints, and the first error met (each step below does nothing once err is set). */
+typedef struct {
+    int fctid, item, err;
+    gks_area_data d;
+    gks_area_arrays w;
+    int *ints;
+} job;
+
+/* The start of every entry: 1 when the state check failed (reported, nothing to do);
+ * else 0, with the flags checked (2000) and kept in the job's data. */
+static int begin(job *j, int fctid, int item, Gint fflag, Gint vflag, Gint ctype)
 {
+    *j = (job){ .fctid = fctid, .item = item };
+    if (gks_check_state(fctid))
+        return 1;
     if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
         vflag > GVERT_COORD_COLR_NORM || ctype < GCOLR_INDIRECT || ctype > GCOLR_RGB)
-        return 2000;
-    if (!v)
-        return 2003;
-    if (v->num_vertices < 0 || (size_t)v->num_vertices < min_n || !v->points)
-        return 100;
-    size_t n = (size_t)v->num_vertices;
-    if (((vflag & GVERT_COORD_COLR) && !v->colrs) || ((vflag & GVERT_COORD_NORM) && !v->norms))
-        return 2003;
-    if (vflag & GVERT_COORD_COLR) {
-        int e = colrs_ok(ctype, v->colrs, n);
-        if (e)
-            return e;
+        j->err = 2000;
+    j->d.fflag = fflag;
+    j->d.vflag = vflag;
+    j->d.ctype = ctype;
+    return 0;
+}
+
+/* Checks the vertex record of a call (at least min_n vertices) and copies its data. */
+static void take_vdata(job *j, const Gfacet_vdata3 *v, size_t min_n)
+{
+    gks_area_data *d = &j->d;
+    gks_area_arrays *w = &j->w;
+    Gint vflag = d->vflag, ctype = d->ctype;
+    if (j->err)
+        return;
+    if (!v) {
+        j->err = 2003;
+        return;
     }
-    d->fflag = fflag;
-    d->vflag = vflag;
-    d->ctype = ctype;
+    if (v->num_vertices < 0 || (size_t)v->num_vertices < min_n || !v->points) {
+        j->err = 100;
+        return;
+    }
+    size_t n = (size_t)v->num_vertices;
+    if (((vflag & GVERT_COORD_COLR) && !v->colrs) || ((vflag & GVERT_COORD_NORM) && !v->norms)) {
+        j->err = 2003;
+        return;
+    }
+    if ((vflag & GVERT_COORD_COLR) && (j->err = colrs_ok(ctype, v->colrs, n)))
+        return;
     d->n_verts = n;
+    j->err = 300;
     w->pts = gks_alloc_array(n, sizeof *w->pts);
     if (!w->pts)
-        return 300;
+        return;
     for (size_t i = 0; i < n; i++) {
         w->pts[i][0] = v->points[i].x; w->pts[i][1] = v->points[i].y; w->pts[i][2] = v->points[i].z;
     }
     d->pts = (const double (*)[3])w->pts;
     if (vflag & GVERT_COORD_NORM) {
         if (!(w->vn = gks_alloc_array(n, sizeof *w->vn)))
-            return 300;
+            return;
         for (size_t i = 0; i < n; i++) {
             w->vn[i][0] = v->norms[i].delta_x; w->vn[i][1] = v->norms[i].delta_y;
             w->vn[i][2] = v->norms[i].delta_z;
@@ -97,7 +123,7 @@ static int take_vdata(Gint fflag, Gint vflag, Gint ctype, const Gfacet_vdata3 *v
     }
     if ((vflag & GVERT_COORD_COLR) && ctype == GCOLR_RGB) {
         if (!(w->vrgb = gks_alloc_array(n, sizeof *w->vrgb)))
-            return 300;
+            return;
         for (size_t i = 0; i < n; i++) {
             w->vrgb[i][0] = v->colrs[i].rgb.red; w->vrgb[i][1] = v->colrs[i].rgb.green;
             w->vrgb[i][2] = v->colrs[i].rgb.blue;
@@ -105,31 +131,33 @@ static int take_vdata(Gint fflag, Gint vflag, Gint ctype, const Gfacet_vdata3 *v
         d->vrgb = (const double (*)[3])w->vrgb;
     } else if (vflag & GVERT_COORD_COLR) {
         if (!(w->vci = gks_alloc_array(n, sizeof *w->vci)))
-            return 300;
+            return;
         for (size_t i = 0; i < n; i++)
             w->vci[i] = v->colrs[i].ind;
         d->vci = w->vci;
     }
-    return 0;
+    j->err = 0;
 }
 
-/* Checks and copies nf facet records (fdata NULL allowed when fflag is GFACET_NONE). */
-static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf, gks_area_arrays *w,
-                      gks_area_data *d)
+/* Checks and copies nf facet records (fd NULL allowed when fflag is GFACET_NONE). */
+static void take_fdata(job *j, const Gfacet_data3 *fd, size_t nf)
 {
-    if (fflag == GFACET_NONE)
-        return 0;
-    if (!fd)
-        return 2003;
+    gks_area_data *d = &j->d;
+    gks_area_arrays *w = &j->w;
+    Gint fflag = d->fflag, ctype = d->ctype;
+    if (j->err || fflag == GFACET_NONE)
+        return;
+    if (!fd) {
+        j->err = 2003;
+        return;
+    }
     for (size_t f = 0; f < nf; f++)
-        if (fflag & GFACET_COLR) {
-            int e = colrs_ok(ctype, &fd[f].colr, 1);
-            if (e)
-                return e;
-        }
+        if ((fflag & GFACET_COLR) && (j->err = colrs_ok(ctype, &fd[f].colr, 1)))
+            return;
+    j->err = 300;
     if (fflag & GFACET_NORM) {
         if (!(w->fn = gks_alloc_array(nf, sizeof *w->fn)))
-            return 300;
+            return;
         for (size_t f = 0; f < nf; f++) {
             w->fn[f][0] = fd[f].norm.delta_x; w->fn[f][1] = fd[f].norm.delta_y;
             w->fn[f][2] = fd[f].norm.delta_z;
@@ -138,7 +166,7 @@ static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf,
     }
     if ((fflag & GFACET_COLR) && ctype == GCOLR_RGB) {
         if (!(w->frgb = gks_alloc_array(nf, sizeof *w->frgb)))
-            return 300;
+            return;
         for (size_t f = 0; f < nf; f++) {
             w->frgb[f][0] = fd[f].colr.rgb.red; w->frgb[f][1] = fd[f].colr.rgb.green;
             w->frgb[f][2] = fd[f].colr.rgb.blue;
@@ -146,116 +174,86 @@ static int take_fdata(Gint fflag, Gint ctype, const Gfacet_data3 *fd, size_t nf,
         d->frgb = (const double (*)[3])w->frgb;
     } else if (fflag & GFACET_COLR) {
         if (!(w->fci = gks_alloc_array(nf, sizeof *w->fci)))
-            return 300;
+            return;
         for (size_t f = 0; f < nf; f++)
             w->fci[f] = fd[f].colr.ind;
         d->fci = w->fci;
     }
-    return 0;
+    j->err = 0;
 }
 
-/* The index structure of a call, built into one int array (freed by the caller). */
-typedef struct {
-    int *ints;
-    size_t n;
-} ibuf;
-
-/* d->facet_loops, loop_counts and idx for nf facets, nl loops and ni indices: 0 or 300. */
-static int index_alloc(gks_area_data *d, size_t nf, size_t nl, size_t ni, ibuf *b)
+/* The facets of the call: its nf facet records are checked and copied, then its index
+ * structure is allocated in one int array, facet_loops, loop_counts and idx for nf
+ * facets, nl loops and ni indices (300 when they do not fit). */
+static void facets(job *j, const Gfacet_data3 *fd, size_t nf, size_t nl, size_t ni)
 {
-    if (nf > INT32_MAX || nl > INT32_MAX || ni > INT32_MAX || nf + nl > SIZE_MAX - ni)
-        return 300;
-    b->ints = gks_alloc_array(nf + nl + ni, sizeof *b->ints);
-    if (!b->ints)
-        return 300;
+    gks_area_data *d = &j->d;
+    take_fdata(j, fd, nf);
+    if (j->err)
+        return;
+    if (nf > INT32_MAX || nl > INT32_MAX || ni > INT32_MAX || nf + nl > SIZE_MAX - ni ||
+        !(j->ints = gks_alloc_array(nf + nl + ni, sizeof *j->ints))) {
+        j->err = 300;
+        return;
+    }
     d->n_facets = nf;
     d->n_loops = nl;
     d->n_idx = ni;
-    d->facet_loops = b->ints;
-    d->loop_counts = b->ints + nf;
-    d->idx = b->ints + nf + nl;
-    return 0;
+    d->facet_loops = j->ints;
+    d->loop_counts = j->ints + nf;
+    d->idx = j->ints + nf + nl;
 }
 
-/* The writable views of index_alloc's arrays. */
-#define FL(b) ((b)->ints)
-#define LC(b, d) ((b)->ints + (d)->n_facets)
-#define IX(b, d) ((b)->ints + (d)->n_facets + (d)->n_loops)
+/* The writable views of the arrays facets() allocates. */
+#define FL(j) ((j)->ints)
+#define LC(j) ((j)->ints + (j)->d.n_facets)
+#define IX(j) ((j)->ints + (j)->d.n_facets + (j)->d.n_loops)
 
-/* Checks (the flags and arrays, then the structure), draws and frees. */
-static void finish(int fctid, int item, int err, gks_area_data *d, ibuf *b, gks_area_arrays *w)
+/* Checks (the flags and arrays, then the structure), draws, reports and frees. */
+static void finish(job *j)
 {
+    int err = j->err;
     if (!err)
-        err = gks_area_data_check(d);
+        err = gks_area_data_check(&j->d);
     if (!err)
-        err = gks_pipe_area_data(fctid, item, d, NULL);
-    gks_free(b->ints);
-    gks_area_arrays_free(w);
+        err = gks_pipe_area_data(j->fctid, j->item, &j->d, NULL);
+    gks_free(j->ints);
+    gks_area_arrays_free(&j->w);
     if (err > 0)
-        GKS_FAIL(err, fctid);
+        GKS_FAIL(err, j->fctid);
 }
 
-GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
-                              const Gfacet_vdata3 *vdata)
+/* One facet of num_sets loops, vdata[k] the k-th, in the order given: FILL AREA SET 3 WITH
+ * DATA, and FILL AREA 3 WITH DATA as its one-loop case. Several loops are first copied
+ * into one vertex record. */
+static void loops_facet(job *j, Gint num_sets, const Gfacet_vdata3 *vdata, const Gfacet_data3 *fd)
 {
-    if (gks_check_state(GFN_FA3D))
-        return;
-    gks_area_arrays w = { 0 };
-    gks_area_data d = { 0 };
-    ibuf b = { 0 };
-    int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
-    if (!err)
-        err = take_fdata(fflag, colr_type, fdata, 1, &w, &d);
-    if (!err)
-        err = index_alloc(&d, 1, 1, d.n_verts, &b);
-    if (!err) {
-        FL(&b)[0] = 1;
-        LC(&b, &d)[0] = (int)d.n_verts;
-        for (size_t i = 0; i < d.n_verts; i++)
-            IX(&b, &d)[i] = (int)i;
-    }
-    finish(GFN_FA3D, GKSM_ITEM_FILL_AREA3_DATA, err, &d, &b, &w);
-}
-
-GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
-                                  const Gfacet_data3 *fdata, Gint num_sets,
-                                  const Gfacet_vdata3 *vdata)
-{
-    if (gks_check_state(GFN_FAS3D))
-        return;
-    gks_area_arrays w = { 0 };
-    gks_area_data d = { 0 };
-    ibuf b = { 0 };
-    int err = 0;
-    /* The loops are copied into one vertex record. */
+    Gint vflag = j->d.vflag;
     Gfacet_vdata3 all = { 0, NULL, NULL, NULL };
-    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
-        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
-        err = 2000;
-    else if (num_sets < 1 || !vdata)
-        err = num_sets < 1 ? 100 : 2003;
+    if (!j->err && (num_sets < 1 || !vdata))
+        j->err = num_sets < 1 ? 100 : 2003;
     size_t total = 0;
-    for (Gint k = 0; !err && k < num_sets; k++) {
+    for (Gint k = 0; !j->err && num_sets > 1 && k < num_sets; k++) {
         const Gfacet_vdata3 *v = &vdata[k];
         if (v->num_vertices < 3 || !v->points)
-            err = 100;
+            j->err = 100;
         else if (((vflag & GVERT_COORD_COLR) && !v->colrs) ||
                  ((vflag & GVERT_COORD_NORM) && !v->norms))
-            err = 2003;
+            j->err = 2003;
         else if ((size_t)v->num_vertices > (size_t)INT32_MAX - total)
-            err = 300;
+            j->err = 300;
         else
             total += (size_t)v->num_vertices;
     }
-    if (!err) {
+    if (!j->err && num_sets > 1) {
         all.num_vertices = (Gint)total;
         all.points = gks_alloc_array(total, sizeof *all.points);
         all.colrs = gks_alloc_array(total, sizeof *all.colrs);
         all.norms = gks_alloc_array(total, sizeof *all.norms);
         if (!all.points || !all.colrs || !all.norms)
-            err = 300;
+            j->err = 300;
     }
-    if (!err) {
+    if (!j->err && num_sets > 1) {
         size_t off = 0;
         for (Gint k = 0; k < num_sets; k++) {
             const Gfacet_vdata3 *v = &vdata[k];
@@ -267,154 +265,143 @@ GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
                 memcpy(all.norms + off, v->norms, c * sizeof *v->norms);
             off += c;
         }
-        err = take_vdata(fflag, vflag, colr_type, &all, 3, &w, &d);
     }
-    if (!err)
-        err = take_fdata(fflag, colr_type, fdata, 1, &w, &d);
-    if (!err)
-        err = index_alloc(&d, 1, (size_t)num_sets, total, &b);
-    if (!err) {
-        FL(&b)[0] = num_sets;
-        for (Gint k = 0; k < num_sets; k++)
-            LC(&b, &d)[k] = vdata[k].num_vertices;
-        for (size_t i = 0; i < total; i++)
-            IX(&b, &d)[i] = (int)i;
-    }
+    take_vdata(j, num_sets > 1 ? &all : vdata, 3);
     gks_free(all.points);
     gks_free(all.colrs);
     gks_free(all.norms);
-    finish(GFN_FAS3D, GKSM_ITEM_FILL_AREA_SET3_DATA, err, &d, &b, &w);
+    facets(j, fd, 1, (size_t)num_sets, j->d.n_verts);
+    if (!j->err) {
+        FL(j)[0] = num_sets;
+        for (Gint k = 0; k < num_sets; k++)
+            LC(j)[k] = vdata[k].num_vertices;
+        for (size_t i = 0; i < j->d.n_verts; i++)
+            IX(j)[i] = (int)i;
+    }
+    finish(j);
+}
+
+GKS_API void gfill_area3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
+                              const Gfacet_vdata3 *vdata)
+{
+    job j;
+    if (!begin(&j, GFN_FA3D, GKSM_ITEM_FILL_AREA3_DATA, fflag, vflag, colr_type))
+        loops_facet(&j, 1, vdata, fdata);
+}
+
+GKS_API void gfill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
+                                  const Gfacet_data3 *fdata, Gint num_sets,
+                                  const Gfacet_vdata3 *vdata)
+{
+    job j;
+    if (!begin(&j, GFN_FAS3D, GKSM_ITEM_FILL_AREA_SET3_DATA, fflag, vflag, colr_type))
+        loops_facet(&j, num_sets, vdata, fdata);
 }
 
 GKS_API void gtri_strip3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfacet_data3 *fdata,
                               const Gfacet_vdata3 *vdata)
 {
-    if (gks_check_state(GFN_TS3D))
+    job j;
+    if (begin(&j, GFN_TS3D, GKSM_ITEM_TRI_STRIP3_DATA, fflag, vflag, colr_type))
         return;
-    gks_area_arrays w = { 0 };
-    gks_area_data d = { 0 };
-    ibuf b = { 0 };
-    int err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
-    size_t nt = err ? 0 : d.n_verts - 2;
-    if (!err)
-        err = take_fdata(fflag, colr_type, fdata, nt, &w, &d);
-    if (!err && nt > SIZE_MAX / 4)
-        err = 300;
-    if (!err)
-        err = index_alloc(&d, nt, nt, 3 * nt, &b);
-    for (size_t i = 0; !err && i < nt; i++) {
+    take_vdata(&j, vdata, 3);
+    size_t nt = j.err ? 0 : j.d.n_verts - 2;
+    if (!j.err && nt > SIZE_MAX / 4)
+        j.err = 300;
+    facets(&j, fdata, nt, nt, 3 * nt);
+    for (size_t i = 0; !j.err && i < nt; i++) {
         /* Triangle i is (i, i+1, i+2), every other one reversed (i+1, i, i+2): all
          * triangles of the strip keep the orientation of the first. */
-        int *t = IX(&b, &d) + 3 * i;
-        FL(&b)[i] = 1;
-        LC(&b, &d)[i] = 3;
+        int *t = IX(&j) + 3 * i;
+        FL(&j)[i] = 1;
+        LC(&j)[i] = 3;
         t[0] = (int)(i % 2 ? i + 1 : i);
         t[1] = (int)(i % 2 ? i : i + 1);
         t[2] = (int)(i + 2);
     }
-    finish(GFN_TS3D, GKSM_ITEM_TRI_STRIP3_DATA, err, &d, &b, &w);
+    finish(&j);
 }
 
 GKS_API void gquad_mesh3_data(Gint fflag, Gint vflag, Gint colr_type, const Gint_size *dim,
                               const Gfacet_data3 *fdata, const Gfacet_vdata3 *vdata)
 {
-    if (gks_check_state(GFN_QM3D))
+    job j;
+    if (begin(&j, GFN_QM3D, GKSM_ITEM_QUAD_MESH3_DATA, fflag, vflag, colr_type))
         return;
-    gks_area_arrays w = { 0 };
-    gks_area_data d = { 0 };
-    ibuf b = { 0 };
-    int err = 0;
-    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
-        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
-        err = 2000;
-    else if (!dim || !vdata)
-        err = 2003;
-    else if (dim->size_x < 2 || dim->size_y < 2 ||
-             (size_t)dim->size_x * (size_t)dim->size_y > (size_t)INT32_MAX / 4 ||
-             vdata->num_vertices != dim->size_x * dim->size_y)
-        err = 100;
-    size_t mx = err ? 0 : (size_t)dim->size_x, my = err ? 0 : (size_t)dim->size_y;
+    if (!j.err && (!dim || !vdata))
+        j.err = 2003;
+    else if (!j.err && (dim->size_x < 2 || dim->size_y < 2 ||
+                        (size_t)dim->size_x * (size_t)dim->size_y > (size_t)INT32_MAX / 4 ||
+                        vdata->num_vertices != dim->size_x * dim->size_y))
+        j.err = 100;
+    size_t mx = j.err ? 0 : (size_t)dim->size_x, my = j.err ? 0 : (size_t)dim->size_y;
     size_t nq = (mx - 1) * (my - 1);
-    if (!err)
-        err = take_vdata(fflag, vflag, colr_type, vdata, 4, &w, &d);
-    if (!err)
-        err = take_fdata(fflag, colr_type, fdata, nq, &w, &d);
-    if (!err)
-        err = index_alloc(&d, nq, nq, 4 * nq, &b);
-    for (size_t j = 0; !err && j + 1 < my; j++)
+    take_vdata(&j, vdata, 4);
+    facets(&j, fdata, nq, nq, 4 * nq);
+    for (size_t y = 0; !j.err && y + 1 < my; y++)
         for (size_t i = 0; i + 1 < mx; i++) {
-            /* Quadrilateral (i, j): vertices (i,j), (i+1,j), (i+1,j+1), (i,j+1); vertex
-             * (i, j) is vdata[j * size_x + i], facets in the same order. */
-            size_t q = j * (mx - 1) + i;
-            int *t = IX(&b, &d) + 4 * q;
-            FL(&b)[q] = 1;
-            LC(&b, &d)[q] = 4;
-            t[0] = (int)(j * mx + i);
-            t[1] = (int)(j * mx + i + 1);
-            t[2] = (int)((j + 1) * mx + i + 1);
-            t[3] = (int)((j + 1) * mx + i);
+            /* Quadrilateral (i, y): vertices (i,y), (i+1,y), (i+1,y+1), (i,y+1); vertex
+             * (i, y) is vdata[y * size_x + i], facets in the same order. */
+            size_t q = y * (mx - 1) + i;
+            int *t = IX(&j) + 4 * q;
+            FL(&j)[q] = 1;
+            LC(&j)[q] = 4;
+            t[0] = (int)(y * mx + i);
+            t[1] = (int)(y * mx + i + 1);
+            t[2] = (int)((y + 1) * mx + i + 1);
+            t[3] = (int)((y + 1) * mx + i);
         }
-    finish(GFN_QM3D, GKSM_ITEM_QUAD_MESH3_DATA, err, &d, &b, &w);
+    finish(&j);
 }
 
 GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type, Gint num_sets,
                                          const Gfacet_data3 *fdata, const Gint_list_list *vlist,
                                          const Gfacet_vdata3 *vdata)
 {
-    if (gks_check_state(GFN_SFA3D))
+    job j;
+    if (begin(&j, GFN_SFA3D, GKSM_ITEM_SOFAS3_DATA, fflag, vflag, colr_type))
         return;
-    gks_area_arrays w = { 0 };
-    gks_area_data d = { 0 };
-    ibuf b = { 0 };
-    int err = 0;
-    if (fflag < GFACET_NONE || fflag > GFACET_COLR_NORM || vflag < GVERT_COORD ||
-        vflag > GVERT_COORD_COLR_NORM || colr_type < GCOLR_INDIRECT || colr_type > GCOLR_RGB)
-        err = 2000;
-    else if (num_sets < 1)
-        err = 100;
-    else if (!vlist || !vdata)
-        err = 2003;
+    if (!j.err && num_sets < 1)
+        j.err = 100;
+    else if (!j.err && (!vlist || !vdata))
+        j.err = 2003;
     size_t nl = 0, ni = 0;
-    for (Gint k = 0; !err && k < num_sets; k++) {
+    for (Gint k = 0; !j.err && k < num_sets; k++) {
         const Gint_list_list *s = &vlist[k];
         if (s->num_lists < 1)
-            err = 100;
+            j.err = 100;
         else if (!s->lists)
-            err = 2003;
-        for (Gint l = 0; !err && l < s->num_lists; l++) {
+            j.err = 2003;
+        for (Gint l = 0; !j.err && l < s->num_lists; l++) {
             if (s->lists[l].num_ints < 3)
-                err = 100;
+                j.err = 100;
             else if (!s->lists[l].ints)
-                err = 2003;
+                j.err = 2003;
             else if ((size_t)s->lists[l].num_ints > (size_t)INT32_MAX - ni)
-                err = 300;
+                j.err = 300;
             else
                 ni += (size_t)s->lists[l].num_ints;
         }
-        if (!err && nl >= (size_t)INT32_MAX - (size_t)s->num_lists)
-            err = 300;
-        nl += err ? 0 : (size_t)s->num_lists;
+        if (!j.err && nl >= (size_t)INT32_MAX - (size_t)s->num_lists)
+            j.err = 300;
+        nl += j.err ? 0 : (size_t)s->num_lists;
     }
-    if (!err)
-        err = take_vdata(fflag, vflag, colr_type, vdata, 3, &w, &d);
-    if (!err)
-        err = take_fdata(fflag, colr_type, fdata, (size_t)num_sets, &w, &d);
-    if (!err)
-        err = index_alloc(&d, (size_t)num_sets, nl, ni, &b);
-    if (!err) {
+    take_vdata(&j, vdata, 3);
+    facets(&j, fdata, (size_t)num_sets, nl, ni);
+    if (!j.err) {
         size_t l0 = 0, i0 = 0;
         for (Gint k = 0; k < num_sets; k++) {
             const Gint_list_list *s = &vlist[k];
-            FL(&b)[k] = s->num_lists;
+            FL(&j)[k] = s->num_lists;
             for (Gint l = 0; l < s->num_lists; l++) {
-                LC(&b, &d)[l0++] = s->lists[l].num_ints;
-                memcpy(IX(&b, &d) + i0, s->lists[l].ints,
+                LC(&j)[l0++] = s->lists[l].num_ints;
+                memcpy(IX(&j) + i0, s->lists[l].ints,
                        (size_t)s->lists[l].num_ints * sizeof(int));
                 i0 += (size_t)s->lists[l].num_ints;
             }
         }
     }
-    finish(GFN_SFA3D, GKSM_ITEM_SOFAS3_DATA, err, &d, &b, &w);
+    finish(&j);
 }
 
 /* ------------------------------------------------------------------ shading methods */
