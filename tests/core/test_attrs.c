@@ -534,6 +534,109 @@ static void test_asf_resolution_at_driver(void **state)
     remove("test_attrs_asf.png");
 }
 
+/* The pipeline keeps an area's resolved attributes per workstation while the current
+ * attributes and the workstation tables stay the same (gks_area_memo): each kind of change
+ * below must reach the next area. Workstations 2 and 18 share a slot of the memo (the
+ * identifier modulo 16). */
+static void test_area_attrs_kept_and_renewed(void **state)
+{
+    (void)state;
+    gopen_ws(2, "test_attrs_memo2", GWS_TYPE_PNG);
+    gactivate_ws(2);
+    gdeactivate_ws(1);
+    Gpoint p[3] = { { 0.1, 0.1 }, { 0.9, 0.1 }, { 0.5, 0.9 } };
+    Gpoint_list l = { 3, p };
+    Gpoint_list_list set = { 1, &l };
+    gset_fill_int_style(GSTYLE_SOLID);
+    gset_fill_colr_ind(2);
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 0, 0 }));
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 0, 0 }));
+    assert_int_equal(last()->n_points, 3);
+    /* the colour table */
+    gset_colr_rep(2, 2, &(Gcolr_rep){ { 0.25, 0.5, 0.75 } });
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 0.25, 0.5, 0.75 }));
+    /* an individual attribute */
+    gset_fill_colr_ind(3);
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 0, 1, 0 }));
+    /* a bundle under a bundled aspect, then the bundle changed */
+    Gasfs a;
+    memset(&a, 0, sizeof a);
+    for (Gasf *f = &a.linetype; f <= &a.fill_colr_ind; f++)
+        *f = GASF_INDIV;
+    a.fill_colr_ind = GASF_BUNDLED;
+    gset_asfs(&a);
+    Gfill_bundle fb = { GSTYLE_SOLID, 1, 4 };
+    gset_fill_rep(2, 6, &fb);
+    gset_fill_ind(6);
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 0, 0, 1 }));
+    fb.colr_ind = 5;
+    gset_fill_rep(2, 6, &fb);
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 1, 0 }));
+    /* edges: FILL AREA SET has them, FILL AREA with the same attributes not */
+    gset_edge_flag(GEDGE_ON);
+    gfill_area_set(&set);
+    assert_int_equal(last()->attrs.edge_flag, 1);
+    gfill_area(&l);
+    assert_int_equal(last()->attrs.edge_flag, 0);
+    gfill_area_set(&set);
+    assert_int_equal(last()->attrs.edge_flag, 1);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 1, 0 }));
+    /* attributes every primitive carries */
+    gset_hlhsr_id(9);
+    gfill_area(&l);
+    assert_int_equal(last()->attrs.hlhsr_id, 9);
+    /* a second workstation in the same slot, with its own colour table */
+    a.fill_colr_ind = GASF_INDIV;
+    gset_asfs(&a);
+    gset_fill_colr_ind(5);
+    gopen_ws(18, "test_attrs_memo18", GWS_TYPE_PNG);
+    gactivate_ws(18);
+    gset_colr_rep(18, 5, &(Gcolr_rep){ { 0.5, 0.5, 0.5 } });
+    for (int k = 0; k < 2; k++) {
+        int n0 = cap.n;
+        gfill_area(&l);
+        assert_int_equal(cap.n, n0 + 2);
+        assert_int_equal(cap.rec[n0].ws_id, 2);
+        assert_true(same_rgb(cap.rec[n0].p.colour, (Grgb){ 1, 1, 0 }));
+        assert_int_equal(cap.rec[n0 + 1].ws_id, 18);
+        assert_true(same_rgb(cap.rec[n0 + 1].p.colour, (Grgb){ 0.5, 0.5, 0.5 }));
+    }
+    /* workstation 2 closed and opened again: its predefined colours again */
+    gset_colr_rep(2, 5, &(Gcolr_rep){ { 0.1, 0.2, 0.3 } });
+    gdeactivate_ws(18);
+    gfill_area(&l);
+    assert_true(same_rgb(last()->colour, (Grgb){ 0.1, 0.2, 0.3 }));
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gopen_ws(2, "test_attrs_memo2", GWS_TYPE_PNG);
+    gactivate_ws(2);
+    gfill_area(&l);
+    assert_int_equal(cap.rec[cap.n - 1].ws_id, 2);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 1, 0 }));
+    /* a pattern (not kept), then solid again */
+    gset_fill_int_style(GSTYLE_PAT);
+    gset_fill_style_ind(1);
+    gfill_area(&l);
+    assert_int_equal(last()->attrs.int_style, GSTYLE_PAT);
+    assert_int_equal(last()->attrs.pat_nx, 2);
+    gset_fill_int_style(GSTYLE_SOLID);
+    gfill_area(&l);
+    assert_int_equal(last()->attrs.int_style, GSTYLE_SOLID);
+    assert_null(last()->attrs.pattern);
+    assert_true(same_rgb(last()->colour, (Grgb){ 1, 1, 0 }));
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gclose_ws(18);
+    remove("test_attrs_memo2.png");
+    remove("test_attrs_memo18.png");
+}
+
 /* The same switch observed in pixels: a solid triangle drawn with the individual colour
  * (blue) and then, after SET ASPECT SOURCE FLAGS, with the bundled one (red, fill bundle
  * 6). Exact colours at the centroid: solid fills have no anti-aliasing here. */
@@ -708,6 +811,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_representations, setup, teardown),
         cmocka_unit_test_setup_teardown(test_description_tables, setup, teardown),
         cmocka_unit_test_setup_teardown(test_asf_resolution_at_driver, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_area_attrs_kept_and_renewed, setup, teardown),
         cmocka_unit_test_setup_teardown(test_asf_in_pixels, setup, teardown),
         cmocka_unit_test_setup_teardown(test_text_extent, setup, teardown),
         cmocka_unit_test_setup_teardown(test_derived_fonts, setup, teardown),

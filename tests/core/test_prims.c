@@ -357,6 +357,55 @@ static void test_fill_area_set_hole_and_edges(void **state)
         assert_true(cap.rec[0].pts[i].x <= 1 + 1e-12 && cap.rec[0].pts[i].y <= 1 + 1e-12);
 }
 
+/* FILL AREA 3 maps its points by the diagonal of an axis-aligned normalization
+ * (gks_pipe_prim.c, axis_aligned); FILL AREA SET 3 of the same loop by the full matrix
+ * rows. Both must give the same NDC3 points bit for bit (signed zeros, subnormals,
+ * overflow) and drop the same areas (non-finite points), with clipping off and on. */
+static void test_fill_area3_mapping_exact(void **state)
+{
+    (void)state;
+    const double inf = INFINITY;
+    const double v[] = { 0.0, -0.0, 5e-324, -5e-324, 0.25, -3, 1e300, -1e300, 1e308, inf, NAN };
+    const int nv = (int)(sizeof v / sizeof v[0]);
+    const Glimit3 wins[] = { { 0, 1, 0, 1, 0, 1 }, { -2, 2, -1, 3, -0.5, 0.5 },
+                             { 0, 1e-3, 0, 1e5, 0, 1 }, { 0, 1, 0, 1, 0, 1 } };
+    const Glimit3 vps[] = { { 0, 1, 0, 1, 0, 1 }, { 0, 1, 0, 1, 0, 1 },
+                            { 0.25, 0.5, 0, 1, 0.5, 1 }, { -0.0, 1, -0.0, 0.5, -0.0, 1 } };
+    gset_fill_int_style(GSTYLE_SOLID);
+    int drawn = 0, dropped = 0;
+    for (int clip = 0; clip < 2; clip++) {
+        gset_clip_ind(clip ? GIND_CLIP : GIND_NO_CLIP);
+        for (int w = 0; w < 4; w++) {
+            gset_win3(1, &wins[w]);
+            gset_vp3(1, &vps[w]);
+            gsel_norm_tran(1);
+            for (int a = 0; a < nv; a++)
+                for (int b = 0; b < nv; b++) {
+                    Gpoint3 t[3] = { { v[a], v[b], v[a] }, { v[b], v[a], 0.5 },
+                                     { 0.5, -0.0, v[b] } };
+                    Gpoint_list3 l = { 3, t };
+                    Gpoint_list_list3 set = { 1, &l };
+                    cap.n = 0;
+                    gfill_area3(&l);
+                    int n1 = cap.n;
+                    gfill_area_set3(&set);
+                    expect_no_error();
+                    assert_int_equal(cap.n, 2 * n1);
+                    if (n1 == 0) {
+                        dropped++;
+                        continue;
+                    }
+                    assert_int_equal(n1, 1);
+                    const gks_prim *p = &cap.rec[0].p, *q = &cap.rec[1].p;
+                    assert_int_equal(p->n_points, q->n_points);
+                    assert_memory_equal(p->pts, q->pts, (size_t)p->n_points * sizeof *p->pts);
+                    drawn++;
+                }
+        }
+    }
+    assert_true(drawn > 100 && dropped > 100); /* both outcomes were tested */
+}
+
 static void test_fill_area_errors_and_hostile(void **state)
 {
     (void)state;
@@ -632,6 +681,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_text3_plane, setup, teardown),
         cmocka_unit_test_setup_teardown(test_text_errors, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fill_area_set_hole_and_edges, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_fill_area3_mapping_exact, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fill_area_errors_and_hostile, setup, teardown),
         cmocka_unit_test_setup_teardown(test_large_fill_area, setup, teardown),
         cmocka_unit_test_setup_teardown(test_cell_array, setup, teardown),

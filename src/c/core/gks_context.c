@@ -34,22 +34,18 @@ static const gks_desc_table desc_table = {
     .max_norm_tran = GKS_MAX_NORM_TRAN,
 };
 
-/* The one context (the ISO C binding is a procedural API over one GKS instance). */
-static gks_context context = { .op_st = GST_GKCL, .desc = &desc_table };
-
-gks_context *gks_ctx(void)
-{
-    return &context;
-}
+/* The one context (the ISO C binding is a procedural API over one GKS instance); reached
+ * through gks_ctx (gks_context.h), inline because every entry point asks for it. */
+gks_context gks_the_context = { .op_st = GST_GKCL, .desc = &desc_table };
 
 gks_ws *gks_ws_lookup(int ws_id)
 {
-    gks_state_list *sl = context.sl;
+    gks_state_list *sl = gks_the_context.sl;
     if (!sl)
         return NULL;
     for (int i = 0; i < sl->n_open; i++)
         if (sl->open_ws[i] == ws_id)
-            return context.ws[i];
+            return gks_the_context.ws[i];
     return NULL;
 }
 
@@ -64,16 +60,16 @@ const gks_ws_driver *gks_driver_for_type(int ws_type)
 
 gks_ws *gks_wiss(void)
 {
-    gks_state_list *sl = context.sl;
+    gks_state_list *sl = gks_the_context.sl;
     for (int i = 0; sl && i < sl->n_open; i++)
-        if (context.ws[i]->drv->desc->cat == GCAT_WISS)
-            return context.ws[i];
+        if (gks_the_context.ws[i]->drv->desc->cat == GCAT_WISS)
+            return gks_the_context.ws[i];
     return NULL;
 }
 
 int gks_cur_norm_matrix(double m[3][4])
 {
-    const gks_norm_tran *t = &context.sl->tran[context.sl->cur_tnr];
+    const gks_norm_tran *t = &gks_the_context.sl->tran[gks_the_context.sl->cur_tnr];
     double w[6], v[6];
     gks_limit3_array(&t->win, w);
     gks_limit3_array(&t->vp, v);

@@ -75,6 +75,18 @@ typedef struct gks_cur_attrs {
     int int_shad[2];            /* front, back interior shading method, GSHAD_* */
 } gks_cur_attrs;
 
+/* A FILL AREA primitive as resolved for one workstation (gks_attr_area_prim): kept with
+ * what it was made from, the current attributes a (compared bytewise) and the generation
+ * of the workstation tables, so that a run of areas with the same attributes resolves them
+ * once. Patterns are not kept (their colours are allocated per primitive). */
+typedef struct gks_area_memo {
+    const gks_ws *ws;           /* NULL: empty */
+    uint64_t tables_gen;        /* gks_context.tables_gen when made */
+    gks_cur_attrs a;
+    gks_prim p;                 /* the primitive sent, geometry set by each caller */
+    int edge_flag;              /* p.attrs.edge_flag as resolved */
+} gks_area_memo;
+
 typedef struct gks_norm_tran {
     Glimit3 win;
     Glimit3 vp;
@@ -97,6 +109,7 @@ typedef struct gks_state_list {
     int mf_n_mo_active;         /* active MO workstations (gks_mf_record.c: the MO fast path) */
     int mf_last_mi;             /* 1 + id of the MI the last GKSM item was read from; 0 none */
     struct gks_in_queue *inq;   /* input queue and current event report (gks_indev.h) */
+    gks_area_memo area_memo[GKS_MAX_OPEN_WS]; /* by workstation identifier modulo the size */
 } gks_state_list;
 
 /* Error state list (ISO 7942 6.5) plus the installed ERROR HANDLING procedure. Survives
@@ -121,6 +134,9 @@ typedef struct gks_context {
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
+    uint64_t tables_gen;           /* changes with every change of a workstation's bundle,
+                                      pattern or colour table and at OPEN and CLOSE
+                                      WORKSTATION (gks_ws_tables_changed) */
 } gks_context;
 
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.
@@ -131,7 +147,18 @@ int gks_cur_norm_matrix(double m[3][4]);
 void gks_attr_init(gks_cur_attrs *a);
 
 /* The context of this process (the C binding is procedural; GKS is single-threaded). */
-gks_context *gks_ctx(void);
+extern gks_context gks_the_context; /* only through gks_ctx */
+static inline gks_context *gks_ctx(void)
+{
+    return &gks_the_context;
+}
+
+/* A workstation's bundle, pattern or colour table changed, or a workstation was created or
+ * destroyed: what the pipeline resolved from the tables is made again. */
+static inline void gks_ws_tables_changed(void)
+{
+    gks_ctx()->tables_gen++;
+}
 
 /* Workstation state list of open workstation ws_id, or NULL. */
 gks_ws *gks_ws_lookup(int ws_id);

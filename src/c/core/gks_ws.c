@@ -85,6 +85,7 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
     gks_ws *ws = gks_calloc_array(1, sizeof *ws);
     if (!ws)
         return NULL;
+    gks_ws_tables_changed(); /* a new ws may reuse a closed one's address */
     ws->id = ws_id;
     ws->drv = drv;
     ws->host = &gks_ws_core_host;
@@ -269,6 +270,7 @@ void gks_ws_destroy(gks_ws *ws)
 {
     if (!ws)
         return;
+    gks_ws_tables_changed();
     gks_in_ws_close(ws);
     gks_mf_ws_free(ws);
     gks_free(ws->conn_id);

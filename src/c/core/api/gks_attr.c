@@ -237,6 +237,7 @@ GKS_API void gset_line_rep(Gint ws_id, Gint ind, const Gline_bundle *rep)
         GKS_FAIL(93, GFN_SPLR);
     ws->line_rep[ind] = *rep;
     ws->line_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SPLR, ws_id, ind, rep->type, rep->width, rep->colr_ind);
 }
 
@@ -258,6 +259,7 @@ GKS_API void gset_marker_rep(Gint ws_id, Gint ind, const Gmarker_bundle *rep)
         GKS_FAIL(93, GFN_SPMR);
     ws->marker_rep[ind] = *rep;
     ws->marker_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SPMR, ws_id, ind, rep->type, rep->size, rep->colr_ind);
 }
 
@@ -282,6 +284,7 @@ GKS_API void gset_text_rep(Gint ws_id, Gint ind, const Gtext_bundle *rep)
         GKS_FAIL(93, GFN_STXR);
     ws->text_rep[ind] = *rep;
     ws->text_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(STXR, ws_id, ind, rep->text_font_prec.font, rep->text_font_prec.prec,
               rep->char_expan, rep->char_space, rep->colr_ind);
 }
@@ -308,6 +311,7 @@ GKS_API void gset_fill_rep(Gint ws_id, Gint ind, const Gfill_bundle *rep)
         GKS_FAIL(93, GFN_SFAR);
     ws->fill_rep[ind] = *rep;
     ws->fill_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SFAR, ws_id, ind, rep->int_style, rep->style_ind, rep->colr_ind);
 }
 
@@ -336,6 +340,7 @@ GKS_API void gset_pat_rep(Gint ws_id, Gint ind, const Gpat_rep *rep)
     ws->pat_rep[ind].nx = rep->dims.size_x;
     ws->pat_rep[ind].ny = rep->dims.size_y;
     ws->pat_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SPAR, ws_id, ind, rep->dims.size_x, rep->dims.size_y, (int)n, rep->colr_array);
 }
 
@@ -359,6 +364,7 @@ GKS_API void gset_edge_rep(Gint ws_id, Gint ind, const Gedge_bundle *rep)
         GKS_FAIL(93, GFN_SEDR);
     ws->edge_rep[ind] = *rep;
     ws->edge_def[ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SEDR, ws_id, ind, rep->flag, rep->type, rep->width, rep->colr_ind);
 }
 
@@ -380,5 +386,6 @@ GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
         GKS_FAIL(96, GFN_SCR);
     ws->colr[colr_ind] = *c;
     ws->colr_defined[colr_ind] = 1;
+    gks_ws_tables_changed();
     GKS_MF_WS(SCR, ws_id, colr_ind, c->red, c->green, c->blue);
 }

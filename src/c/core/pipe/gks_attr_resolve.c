@@ -5,6 +5,7 @@
  */
 #include "gks_attr_resolve.h"
 #include "gks_alloc.h"
+#include "gks_pipe_dispatch.h"
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
@@ -257,4 +258,30 @@ int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[
     p->attrs.edge_colour = ws->colr[e.colr_ind];
     common(a, p);
     return 0;
+}
+
+gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                             gks_prim *buf, Grgb **pattern, int *err)
+{
+    gks_context *c = gks_ctx();
+    gks_area_memo *e = &c->sl->area_memo[(unsigned)ws->id % GKS_MAX_OPEN_WS];
+    *pattern = NULL;
+    *err = 0;
+    if (e->ws == ws && e->tables_gen == c->tables_gen && memcmp(&e->a, a, sizeof *a) == 0) {
+        e->p.attrs.edge_flag = e->edge_flag; /* the caller may have cleared it */
+        return &e->p;
+    }
+    *buf = (gks_prim){ .kind = GKS_PRIM_FILL_AREA, .n_loops = 1 };
+    gks_pipe_prim_common(buf, a);
+    *err = gks_attr_prim_fill(ws, a, m, buf, pattern);
+    if (*err || *pattern) {
+        e->ws = NULL;
+        return buf;
+    }
+    e->ws = ws;
+    e->tables_gen = c->tables_gen;
+    memcpy(&e->a, a, sizeof *a); /* with its padding: compared bytewise */
+    e->p = *buf;
+    e->edge_flag = buf->attrs.edge_flag;
+    return &e->p;
 }

@@ -47,6 +47,14 @@ void gks_attr_text_layout(const gks_ws *ws, const gks_cur_attrs *a, gks_text_att
  * vectors go through it. Returns 0 or 300. */
 int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
                        gks_prim *p, Grgb **pattern);
+/* The primitive of an area for ws: zero but for kind GKS_PRIM_FILL_AREA, n_loops 1, the
+ * attributes of gks_pipe_prim_common and gks_attr_prim_fill (the same values, *pattern
+ * likewise, *err 0 or 300), resolved once while the current attributes a and the
+ * workstation tables stay the same: the primitive kept in the state list
+ * (gks_area_memo), or buf when it is not kept (a pattern, an error). The caller sets the
+ * geometry and may clear attrs.edge_flag, nothing else, and sends it before the next call. */
+gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                             gks_prim *buf, Grgb **pattern, int *err);
 void gks_attr_prim_line(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 void gks_attr_prim_marker(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 #endif

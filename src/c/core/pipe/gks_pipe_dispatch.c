@@ -5,13 +5,6 @@
 #include "gks_state.h"
 #include <string.h>
 
-void gks_pipe_target_current(gks_pipe_target *t, const gks_pipe_norm *nc)
-{
-    const gks_segment *seg = nc->seg;
-    *t = (gks_pipe_target){ .a = &gks_ctx()->sl->attrs, .pat_m = (const double (*)[4])nc->pat,
-                            .done = seg && !seg->vis }; /* invisible: stored, not drawn */
-}
-
 #ifdef GKS_FAULT_INJECTION
 /* Test hook, only in the test build of the modules (gks3d_test): every primitive a
  * driver receives is first passed to hook (NULL = none). */

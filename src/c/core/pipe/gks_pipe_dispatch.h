@@ -20,7 +20,12 @@ typedef struct gks_pipe_target {
 
 /* The active workstations with the current attributes (none if the open segment of nc is
  * invisible); t refers to nc's pattern matrix. */
-void gks_pipe_target_current(gks_pipe_target *t, const gks_pipe_norm *nc);
+static inline void gks_pipe_target_current(gks_pipe_target *t, const gks_pipe_norm *nc)
+{
+    const gks_segment *seg = nc->seg;
+    *t = (gks_pipe_target){ .a = &gks_ctx()->sl->attrs, .pat_m = (const double (*)[4])nc->pat,
+                            .done = seg && !seg->vis }; /* invisible: stored, not drawn */
+}
 /* Hands p to ws's driver (after the test hook). 0 or the driver's error. */
 int gks_pipe_send(gks_ws *ws, const gks_prim *p);
 

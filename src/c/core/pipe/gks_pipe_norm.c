@@ -24,6 +24,13 @@ static int same_bits(const double *a, const double *b, size_t n)
     return 1;
 }
 
+/* Whether the limit l holds the six numbers b (gks_limit3_array's order) bit for bit. */
+static int same_limit(const double b[6], const Glimit3 *l)
+{
+    const double v[6] = { l->x_min, l->x_max, l->y_min, l->y_max, l->z_min, l->z_max };
+    return same_bits(b, v, 6);
+}
+
 /* The open segment, or NULL. */
 static gks_segment *open_segment(void)
 {
@@ -75,15 +82,16 @@ int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_re
         memcpy(box, ov->box, sizeof box);
         clip_on = ov->clip_on;
     } else {
-        gks_limit3_array(&sl->tran[sl->cur_tnr].win, w);
-        gks_limit3_array(&sl->tran[sl->cur_tnr].vp, box);
+        const gks_norm_tran *tr = &sl->tran[sl->cur_tnr];
         clip_on = sl->clip_ind == GIND_CLIP;
         if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
-            same_bits(norm_cache.w, w, 6) && same_bits(norm_cache.v, box, 6) &&
+            same_limit(norm_cache.w, &tr->win) && same_limit(norm_cache.v, &tr->vp) &&
             (!seg || same_bits(&norm_cache.stran[0][0], &seg->tran[0][0], 12))) {
             *ncp = &norm_cache.nc;
             return 0;
         }
+        gks_limit3_array(&tr->win, w);
+        gks_limit3_array(&tr->vp, box);
         norm_cache.valid = 0;
         if (gks_xform_norm_tran3(w, box, n)) /* gks_cur_norm_matrix */
             return 308;

@@ -256,15 +256,17 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
     int err = 0;
     gks_ws *ws;
     while (!err && (ws = gks_pipe_next_ws(t))) {
-        gks_prim p = { .kind = GKS_PRIM_FILL_AREA, .n_loops = nl, .loop_counts = counts,
-                       .n_points = m, .pts = pts };
-        Grgb *pat = NULL;
-        gks_pipe_prim_common(&p, t->a);
-        err = gks_attr_prim_fill(ws, t->a, t->pat_m, &p, &pat);
+        gks_prim buf, *p;
+        Grgb *pat;
+        p = gks_attr_area_prim(ws, t->a, t->pat_m, &buf, &pat, &err);
+        p->n_loops = nl;
+        p->loop_counts = counts;
+        p->n_points = m;
+        p->pts = pts;
         if (!is_set)
-            p.attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
+            p->attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
         if (!err)
-            err = gks_pipe_send(ws, &p);
+            err = gks_pipe_send(ws, p);
         gks_free(pat);
     }
     return err;
@@ -273,6 +275,19 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
 /* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
  * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
  * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
+/* Whether m maps each coordinate by its own row alone: a scale and a shift per axis (the
+ * normalization, with no segment transformation or one without rotation and shear). Then
+ * emit_area maps a point by m[k][k] * c + m[k][3] per axis, which equals the full row: with
+ * the other coordinates finite their products with the zero entries are zeros, which
+ * change a non-zero sum by nothing (a zero sum, whose sign they may change, is made again
+ * by the full row); a non-finite coordinate makes its own axis non-finite, so the area is
+ * dropped as in the full mapping, and an overflow is the same sum's. */
+static int axis_aligned(const double (*m)[4])
+{
+    return m[0][1] == 0 && m[0][2] == 0 && m[1][0] == 0 && m[1][2] == 0 && m[2][0] == 0 &&
+           m[2][1] == 0;
+}
+
 #define AREA_SMALL 16 /* areas up to this many points and loops use stack buffers */
 
 static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, size_t n,
@@ -288,6 +303,35 @@ static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, 
         goto done;
     }
     const double (*m)[4] = (const double (*)[4])nc->m;
+    if (s->p3 && axis_aligned(m)) {
+        /* m and the box in locals: the stores into pts could alias nc for the compiler */
+        const double a0 = m[0][0], a1 = m[1][1], a2 = m[2][2];
+        const double t0 = m[0][3], t1 = m[1][3], t2 = m[2][3];
+        const int clip_on = nc->clip_on;
+        double b[6];
+        memcpy(b, nc->box, sizeof b);
+        /* a point in a finite box is finite: then its own check is not needed (the sum is
+         * finite only if each limit is; an overflow only means the checks are made) */
+        const int box_finite = clip_on && isfinite(((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+        const Gpoint3 *q = s->p3;
+        for (size_t i = 0; i < n; i++) {
+            const double x = q[i].x, y = q[i].y, z = q[i].z;
+            double h0 = a0 * x + t0, h1 = a1 * y + t1, h2 = a2 * z + t2;
+            if (h0 == 0) /* the sign of a zero: as the full row makes it */
+                h0 = m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3];
+            if (h1 == 0)
+                h1 = m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3];
+            if (h2 == 0)
+                h2 = m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3];
+            const int in = !clip_on || (h0 >= b[0] && h0 <= b[1] && h1 >= b[2] && h1 <= b[3] &&
+                                        h2 >= b[4] && h2 <= b[5]);
+            if (!(in && box_finite) && !(isfinite(h0) && isfinite(h1) && isfinite(h2)))
+                goto done; /* a non-finite vertex: the area is not drawn */
+            inside = inside && in;
+            pts[i] = (Gpoint3){ h0, h1, h2 };
+        }
+        goto mapped;
+    }
     for (size_t i = 0; i < n; i++) {
         double wc[3], h[3];
         gks_pipe_src_get(s, i, wc);
@@ -298,6 +342,7 @@ static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, 
         inside = inside && gks_pipe_visible(nc, h);
         pts[i] = (Gpoint3){ h[0], h[1], h[2] };
     }
+mapped:
     for (size_t k = 0; k < nloops; k++)
         counts[k] = (int)cnt[k];
     if (inside) {
