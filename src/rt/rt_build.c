@@ -476,7 +476,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     size_t npts = rt_prim_points(sc, b, p, err);
     if (*err)
         return;
-    for (size_t k = 0; k < npts; k++)
+    for (size_t k = 0; k < npts && gr->rotated; k++)
         rt_grid_point(gr, b->pts + 3 * k, b->pts + 3 * k);
     double bb[6];
     rt_pts_bbox(b->pts, npts, bb);
@@ -487,7 +487,12 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         c0[a] = rt_cell_of(g, bb[a] - eps, a);
         c1[a] = rt_cell_of(g, bb[3 + a] + eps, a);
     }
-    int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+    const int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+    if (single) { /* its enlarged box lies in one cell: it overlaps that cell, no test needed */
+        if (!rt_build_push(b, base + rt_cell_index(g, c0), i))
+            *err = 1;
+        return;
+    }
     double n0[3], d0, n[3], d = 0.0;
     rt_prim_plane(sc, p, n0, &d0);
     rt_grid_dir(gr, n0, n);
@@ -495,7 +500,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
     rt_tri tri;
     double te[3][3] = {{0}}, tn[3] = {0};
-    if (p->kind == RT_KIND_TRI && !single) {
+    if (p->kind == RT_KIND_TRI) {
         memcpy(tri.v, b->pts, sizeof tri.v);
         for (int j = 0; j < 3; j++) {
             te[0][j] = tri.v[1][j] - tri.v[0][j];
@@ -506,7 +511,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         tn[1] = te[0][2] * te[1][0] - te[0][0] * te[1][2];
         tn[2] = te[0][0] * te[1][1] - te[0][1] * te[1][0];
     }
-    if (p->kind == RT_KIND_TRI && !single && c1[0] - c0[0] < RT_SPAN &&
+    if (p->kind == RT_KIND_TRI && c1[0] - c0[0] < RT_SPAN &&
         c1[1] - c0[1] < RT_SPAN && c1[2] - c0[2] < RT_SPAN) {
         if (!rt_tri_cells(&tri, te, tn, g, c0, c1, eps, b, base, i))
             *err = 1;
@@ -514,7 +519,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     }
     /* the cell boxes by axis (rt_cell_box's values) when the range is short */
     double alo[3][RT_SPAN], ahi[3][RT_SPAN], abc[3][RT_SPAN], ah[3][RT_SPAN];
-    const int by_axis = !single && c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
+    const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
                         c1[2] - c0[2] < RT_SPAN;
     for (int a = 0; a < 3 && by_axis; a++)
         for (int q = c0[a]; q <= c1[a]; q++) {
@@ -529,37 +534,35 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
             for (c[0] = c0[0]; c[0] <= c1[0] && !*err; c[0]++) {
-                int hit = single;
-                if (!hit) {
-                    double lo[3], hi[3], bc[3], h[3];
-                    if (by_axis) {
-                        for (int a = 0; a < 3; a++) {
-                            const int q = c[a] - c0[a];
-                            lo[a] = alo[a][q];
-                            hi[a] = ahi[a][q];
-                            bc[a] = abc[a][q];
-                            h[a] = ah[a][q];
-                        }
-                    } else {
-                        rt_cell_box(g, c, eps, lo, hi);
-                        for (int a = 0; a < 3; a++) {
-                            bc[a] = 0.5 * (lo[a] + hi[a]);
-                            h[a] = 0.5 * (hi[a] - lo[a]);
-                        }
+                int hit = 0;
+                double lo[3], hi[3], bc[3], h[3];
+                if (by_axis) {
+                    for (int a = 0; a < 3; a++) {
+                        const int q = c[a] - c0[a];
+                        lo[a] = alo[a][q];
+                        hi[a] = ahi[a][q];
+                        bc[a] = abc[a][q];
+                        h[a] = ah[a][q];
                     }
-                    if (p->kind == RT_KIND_TRI) {
-                        hit = rt_tri_box(&tri, te, tn, bc, h);
-                    } else if (rt_plane_box(n, d, bc, h)) {
-                        if (p->kind != RT_KIND_POLY) {
-                            hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
-                        } else {
-                            const rt_poly *po = &sc->poly[p->data];
-                            size_t at = 0;
-                            for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
-                                size_t m = sc->loops[po->loop0 + l];
-                                hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
-                                at += m;
-                            }
+                } else {
+                    rt_cell_box(g, c, eps, lo, hi);
+                    for (int a = 0; a < 3; a++) {
+                        bc[a] = 0.5 * (lo[a] + hi[a]);
+                        h[a] = 0.5 * (hi[a] - lo[a]);
+                    }
+                }
+                if (p->kind == RT_KIND_TRI) {
+                    hit = rt_tri_box(&tri, te, tn, bc, h);
+                } else if (rt_plane_box(n, d, bc, h)) {
+                    if (p->kind != RT_KIND_POLY) {
+                        hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
+                    } else {
+                        const rt_poly *po = &sc->poly[p->data];
+                        size_t at = 0;
+                        for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
+                            size_t m = sc->loops[po->loop0 + l];
+                            hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
+                            at += m;
                         }
                     }
                 }
