@@ -66,11 +66,22 @@ static struct {
     gks_pipe_norm nc;
 } norm_cache;
 
+/* Whether the cache holds the current state's context (seg: the open segment). */
+static int cache_current(const gks_state_list *sl, const gks_segment *seg)
+{
+    const gks_norm_tran *tr = &sl->tran[sl->cur_tnr];
+    return norm_cache.valid && norm_cache.clip_on == (sl->clip_ind == GIND_CLIP) &&
+           norm_cache.seg == seg && same_limit(norm_cache.w, &tr->win) &&
+           same_limit(norm_cache.v, &tr->vp) &&
+           (!seg || same_bits(&norm_cache.stran[0][0], &seg->tran[0][0], 12));
+}
+
 /* WC3 -> NDC3 by the current normalization transformation, then the open segment's
  * transformation (if a segment is open), clipping at the current viewport 3 when the
  * clipping indicator is on. For a recorded normalization (ov), its matrix and clipping
- * volume replace the current ones, and NDC3 points enter through the identity. */
-int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec_xf *ov)
+ * volume replace the current ones, and NDC3 points enter through the identity. Made here
+ * when the cache does not hold it (gks_pipe_norm_get, which runs per primitive, checks). */
+static int norm_make(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec_xf *ov)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
     const gks_state_list *sl = gks_ctx()->sl;
@@ -84,12 +95,6 @@ int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_re
     } else {
         const gks_norm_tran *tr = &sl->tran[sl->cur_tnr];
         clip_on = sl->clip_ind == GIND_CLIP;
-        if (norm_cache.valid && norm_cache.clip_on == clip_on && norm_cache.seg == seg &&
-            same_limit(norm_cache.w, &tr->win) && same_limit(norm_cache.v, &tr->vp) &&
-            (!seg || same_bits(&norm_cache.stran[0][0], &seg->tran[0][0], 12))) {
-            *ncp = &norm_cache.nc;
-            return 0;
-        }
         gks_limit3_array(&tr->win, w);
         gks_limit3_array(&tr->vp, box);
         norm_cache.valid = 0;
@@ -118,6 +123,15 @@ int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_re
     }
     *ncp = nc;
     return 0;
+}
+
+int gks_pipe_norm_get(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec_xf *ov)
+{
+    if (!ov && cache_current(gks_ctx()->sl, open_segment())) {
+        *ncp = &norm_cache.nc;
+        return 0;
+    }
+    return norm_make(ncp, nc, ov);
 }
 
 int gks_pipe_norm_setup(gks_pipe_norm *nc, const gks_rec_xf *xf)
