@@ -1035,115 +1035,26 @@ static double rt_box_volume(const double bb[6])
     return rt_dmax(e[0], 1e-3 * mx) * rt_dmax(e[1], 1e-3 * mx) * rt_dmax(e[2], 1e-3 * mx);
 }
 
-/* The frame search on the build's threads: parts of consecutive primitives, each with its own
- * scratch (rt_build); what they find is combined in part order, which gives what one part
- * finds: the boxes by min / max, the candidates by inserting each part's list in turn. */
-typedef struct rt_frame_job {
-    const rt_scene *sc;
-    rt_build *b;  /* per part */
-    size_t stride;
-    double bb[RT_PAR_MAX][6];
-    size_t cand[RT_PAR_MAX][RT_FRAME_CAND];
-    double area[RT_PAR_MAX][RT_FRAME_CAND];
-    int nc[RT_PAR_MAX], err[RT_PAR_MAX];
-} rt_frame_job;
-
-/* box of the points of every stride-th primitive of part k in the current grid frame */
-static void rt_frame_box_part(void *arg, int k, int n)
+/* box of all primitive points (every stride-th primitive) in the current grid frame */
+static int rt_frame_box(const rt_scene *sc, rt_build *b, size_t stride, double bb[6])
 {
-    rt_frame_job *j = arg;
-    const rt_scene *sc = j->sc;
-    rt_build *b = &j->b[k];
-    double *bb = j->bb[k];
-    size_t lo, hi;
-    rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     int err = 0;
     for (int a = 0; a < 3; a++) {
         bb[a] = INFINITY;
         bb[3 + a] = -INFINITY;
     }
-    for (size_t m = lo; m < hi && !err; m++) {
-        size_t npts = rt_prim_points(sc, b, &sc->prim[m * j->stride], &err);
-        for (size_t q = 0; q < npts; q++) {
-            double v[3];
-            rt_grid_point(&sc->grid, b->pts + 3 * q, v);
+    for (size_t i = 0; i < sc->nprim && !err; i += stride) {
+        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        for (size_t k = 0; k < npts; k++) {
+            double q[3];
+            rt_grid_point(&sc->grid, b->pts + 3 * k, q);
             for (int a = 0; a < 3; a++) {
-                bb[a] = rt_dmin(bb[a], v[a]);
-                bb[3 + a] = rt_dmax(bb[3 + a], v[a]);
+                bb[a] = rt_dmin(bb[a], q[a]);
+                bb[3 + a] = rt_dmax(bb[3 + a], q[a]);
             }
         }
     }
-    j->err[k] = err;
-}
-
-/* box of all primitive points (every stride-th primitive) in the current grid frame, on nt
-   threads (scratch bs[0 .. nt-1]) */
-static int rt_frame_box(const rt_scene *sc, rt_build *bs, int nt, size_t stride, double bb[6])
-{
-    rt_frame_job *j = rt_alloc_array(1, sizeof *j);
-    if (!j)
-        return RT_ERR_NOMEM;
-    j->sc = sc;
-    j->b = bs;
-    j->stride = stride;
-    if ((size_t)nt > sc->nprim / stride / 4096 + 1)
-        nt = (int)(sc->nprim / stride / 4096 + 1);
-    rt_par_run(nt, rt_frame_box_part, j);
-    int err = 0;
-    for (int a = 0; a < 3; a++) {
-        bb[a] = INFINITY;
-        bb[3 + a] = -INFINITY;
-    }
-    for (int k = 0; k < nt; k++) {
-        err |= j->err[k];
-        for (int a = 0; a < 3; a++) {
-            bb[a] = rt_dmin(bb[a], j->bb[k][a]);
-            bb[3 + a] = rt_dmax(bb[3 + a], j->bb[k][3 + a]);
-        }
-    }
-    free(j);
     return err ? RT_ERR_NOMEM : RT_OK;
-}
-
-/* primitive i with bounding-box area ar into the descending list cand / area of *nc entries
-   (at most RT_FRAME_CAND; among equal areas the one inserted first stays first) */
-static void rt_cand_insert(size_t *cand, double *area, int *nc, size_t i, double ar)
-{
-    int k = *nc < RT_FRAME_CAND ? (*nc)++ : RT_FRAME_CAND;
-    while (k > 0 && area[k - 1] < ar) { /* insertion into a descending list */
-        if (k < RT_FRAME_CAND) {
-            area[k] = area[k - 1];
-            cand[k] = cand[k - 1];
-        }
-        k--;
-    }
-    if (k < RT_FRAME_CAND) {
-        area[k] = ar;
-        cand[k] = i;
-    }
-}
-
-/* part k's RT_FRAME_CAND largest primitives by the area of their bounding box */
-static void rt_frame_cand_part(void *arg, int k, int n)
-{
-    rt_frame_job *j = arg;
-    const rt_scene *sc = j->sc;
-    rt_build *b = &j->b[k];
-    size_t lo, hi;
-    rt_par_range(sc->nprim, k, n, &lo, &hi);
-    int err = 0;
-    j->nc[k] = 0;
-    for (size_t i = lo; i < hi && !err; i++) {
-        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
-        double bb[6];
-        rt_pts_bbox(b->pts, npts, bb);
-        double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
-        double ar = rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
-        if (!(ar >= 0.0)) /* NaN (inf * 0 at extreme coordinates): ordered as no area */
-            ar = 0.0;
-        rt_cand_insert(j->cand[k], j->area[k], &j->nc[k], i, ar);
-    }
-    j->err[k] = err;
 }
 
 /* mean |n_x| + |n_y| + |n_z| of the unit primitive normals (every stride-th) in the current
@@ -1194,31 +1105,37 @@ static int rt_prim_frame(const rt_scene *sc, rt_build *b, size_t i, double R[3][
     return 1;
 }
 
-static int rt_choose_frame(rt_scene *sc, rt_build *bs, int nt)
+static int rt_choose_frame(rt_scene *sc, rt_build *b)
 {
     rt_grid *g = &sc->grid;
-    rt_build *b = &bs[0];
     g->rotated = 0;
     size_t cand[RT_FRAME_CAND];
     double area[RT_FRAME_CAND];
     int nc = 0, err = 0;
-    rt_frame_job *j = rt_alloc_array(1, sizeof *j);
-    if (!j)
-        return RT_ERR_NOMEM;
-    j->sc = sc;
-    j->b = bs;
-    rt_par_run(nt, rt_frame_cand_part, j);
-    for (int k = 0; k < nt; k++) {
-        err |= j->err[k];
-        for (int q = 0; q < j->nc[k]; q++)
-            rt_cand_insert(cand, area, &nc, j->cand[k][q], j->area[k][q]);
+    for (size_t i = 0; i < sc->nprim && !err; i++) {
+        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        double bb[6];
+        rt_pts_bbox(b->pts, npts, bb);
+        double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
+        double ar = rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
+        int k = nc < RT_FRAME_CAND ? nc++ : RT_FRAME_CAND;
+        while (k > 0 && area[k - 1] < ar) { /* insertion into a descending list */
+            if (k < RT_FRAME_CAND) {
+                area[k] = area[k - 1];
+                cand[k] = cand[k - 1];
+            }
+            k--;
+        }
+        if (k < RT_FRAME_CAND) {
+            area[k] = ar;
+            cand[k] = i;
+        }
     }
-    free(j);
     if (err)
         return RT_ERR_NOMEM;
     size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
     double bb[6];
-    int rc = rt_frame_box(sc, bs, nt, stride, bb);
+    int rc = rt_frame_box(sc, b, stride, bb);
     const double vol0 = rt_box_volume(bb), s0 = rt_frame_normals(sc, stride);
     double best = INFINITY, bestR[3][3];
     int found = 0;
@@ -1228,7 +1145,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *bs, int nt)
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
-        rc = rt_frame_box(sc, bs, nt, stride, bb);
+        rc = rt_frame_box(sc, b, stride, bb);
         const double S = rt_frame_normals(sc, stride) / s0;
         g->rotated = 0;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
@@ -1307,9 +1224,9 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     int rc = RT_OK;
     g->rotated = 0;
     if (!explicit_res && !(o && o->grid_frame == 1)) {
-        rc = rt_choose_frame(sc, bs, nt);
+        rc = rt_choose_frame(sc, &bs[0]);
         if (rc == RT_OK && g->rotated)
-            rc = rt_frame_box(sc, bs, nt, 1, fb);
+            rc = rt_frame_box(sc, &bs[0], 1, fb);
     }
     double mx = 0.0;
     for (int a = 0; a < 3; a++)
