@@ -631,10 +631,20 @@ static int cmd_build(void)
             double w0 = bs_wall();
             int rc = sid >= 0 ? rt_scene_commit(sc, &b2) : RT_ERR_NOMEM; /* the same scene */
             ob2 = fmin(ob2, bs_wall() - w0);
+            rt_grid_info g2, g1;
+            if (rc == RT_OK)
+                rc = rt_scene_grid_info(sc, &g2);
             double t0 = bs_process_cpu();
             if (rc == RT_OK)
                 rc = rt_scene_commit(sc, &b1);
             ob = fmin(ob, bs_process_cpu() - t0);
+            if (rc == RT_OK)
+                rc = rt_scene_grid_info(sc, &g1);
+            if (rc == RT_OK && g1.hash != g2.hash) { /* the grid must not depend on the threads */
+                printf("%9zu   grid hash %016llx with 1 thread, %016llx with 2\n", n,
+                       (unsigned long long)g1.hash, (unsigned long long)g2.hash);
+                rc = RT_ERR_STATE;
+            }
             if (rc != RT_OK || ours_stats(sc, &rs) != 0)
                 fails++;
             rt_scene_free(sc);

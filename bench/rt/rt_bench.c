@@ -96,12 +96,12 @@ int main(int argc, char **argv)
     rt_grid_info gi;
     if (rt_scene_grid_info(sc, &gi) == RT_OK)
         printf("grid %dx%dx%d%s: %llu cells (%llu empty), %llu refs, %llu subgrids with %llu cells "
-               "and %llu refs, max refs per leaf %llu, non-empty volume %.3f\n",
+               "and %llu refs, max refs per leaf %llu, non-empty volume %.3f, hash %016llx\n",
                gi.res[0], gi.res[1], gi.res[2], gi.rotated ? " (rotated frame)" : "",
                (unsigned long long)gi.cells, (unsigned long long)gi.empty_cells,
                (unsigned long long)gi.refs, (unsigned long long)gi.subgrids,
                (unsigned long long)gi.subcells, (unsigned long long)gi.subrefs,
-               (unsigned long long)gi.max_leaf_refs, gi.volume_fill);
+               (unsigned long long)gi.max_leaf_refs, gi.volume_fill, (unsigned long long)gi.hash);
     rtu_view v;
     rtu_nff_view(&m, bb, &v);
     double vm[4][4];

@@ -476,7 +476,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     size_t npts = rt_prim_points(sc, b, p, err);
     if (*err)
         return;
-    for (size_t k = 0; k < npts; k++)
+    for (size_t k = 0; k < npts && gr->rotated; k++)
         rt_grid_point(gr, b->pts + 3 * k, b->pts + 3 * k);
     double bb[6];
     rt_pts_bbox(b->pts, npts, bb);
@@ -487,7 +487,12 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         c0[a] = rt_cell_of(g, bb[a] - eps, a);
         c1[a] = rt_cell_of(g, bb[3 + a] + eps, a);
     }
-    int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+    const int single = c0[0] == c1[0] && c0[1] == c1[1] && c0[2] == c1[2];
+    if (single) { /* its enlarged box lies in one cell: it overlaps that cell, no test needed */
+        if (!rt_build_push(b, base + rt_cell_index(g, c0), i))
+            *err = 1;
+        return;
+    }
     double n0[3], d0, n[3], d = 0.0;
     rt_prim_plane(sc, p, n0, &d0);
     rt_grid_dir(gr, n0, n);
@@ -495,7 +500,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
     rt_tri tri;
     double te[3][3] = {{0}}, tn[3] = {0};
-    if (p->kind == RT_KIND_TRI && !single) {
+    if (p->kind == RT_KIND_TRI) {
         memcpy(tri.v, b->pts, sizeof tri.v);
         for (int j = 0; j < 3; j++) {
             te[0][j] = tri.v[1][j] - tri.v[0][j];
@@ -506,7 +511,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         tn[1] = te[0][2] * te[1][0] - te[0][0] * te[1][2];
         tn[2] = te[0][0] * te[1][1] - te[0][1] * te[1][0];
     }
-    if (p->kind == RT_KIND_TRI && !single && c1[0] - c0[0] < RT_SPAN &&
+    if (p->kind == RT_KIND_TRI && c1[0] - c0[0] < RT_SPAN &&
         c1[1] - c0[1] < RT_SPAN && c1[2] - c0[2] < RT_SPAN) {
         if (!rt_tri_cells(&tri, te, tn, g, c0, c1, eps, b, base, i))
             *err = 1;
@@ -514,7 +519,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     }
     /* the cell boxes by axis (rt_cell_box's values) when the range is short */
     double alo[3][RT_SPAN], ahi[3][RT_SPAN], abc[3][RT_SPAN], ah[3][RT_SPAN];
-    const int by_axis = !single && c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
+    const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
                         c1[2] - c0[2] < RT_SPAN;
     for (int a = 0; a < 3 && by_axis; a++)
         for (int q = c0[a]; q <= c1[a]; q++) {
@@ -529,37 +534,35 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
             for (c[0] = c0[0]; c[0] <= c1[0] && !*err; c[0]++) {
-                int hit = single;
-                if (!hit) {
-                    double lo[3], hi[3], bc[3], h[3];
-                    if (by_axis) {
-                        for (int a = 0; a < 3; a++) {
-                            const int q = c[a] - c0[a];
-                            lo[a] = alo[a][q];
-                            hi[a] = ahi[a][q];
-                            bc[a] = abc[a][q];
-                            h[a] = ah[a][q];
-                        }
-                    } else {
-                        rt_cell_box(g, c, eps, lo, hi);
-                        for (int a = 0; a < 3; a++) {
-                            bc[a] = 0.5 * (lo[a] + hi[a]);
-                            h[a] = 0.5 * (hi[a] - lo[a]);
-                        }
+                int hit = 0;
+                double lo[3], hi[3], bc[3], h[3];
+                if (by_axis) {
+                    for (int a = 0; a < 3; a++) {
+                        const int q = c[a] - c0[a];
+                        lo[a] = alo[a][q];
+                        hi[a] = ahi[a][q];
+                        bc[a] = abc[a][q];
+                        h[a] = ah[a][q];
                     }
-                    if (p->kind == RT_KIND_TRI) {
-                        hit = rt_tri_box(&tri, te, tn, bc, h);
-                    } else if (rt_plane_box(n, d, bc, h)) {
-                        if (p->kind != RT_KIND_POLY) {
-                            hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
-                        } else {
-                            const rt_poly *po = &sc->poly[p->data];
-                            size_t at = 0;
-                            for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
-                                size_t m = sc->loops[po->loop0 + l];
-                                hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
-                                at += m;
-                            }
+                } else {
+                    rt_cell_box(g, c, eps, lo, hi);
+                    for (int a = 0; a < 3; a++) {
+                        bc[a] = 0.5 * (lo[a] + hi[a]);
+                        h[a] = 0.5 * (hi[a] - lo[a]);
+                    }
+                }
+                if (p->kind == RT_KIND_TRI) {
+                    hit = rt_tri_box(&tri, te, tn, bc, h);
+                } else if (rt_plane_box(n, d, bc, h)) {
+                    if (p->kind != RT_KIND_POLY) {
+                        hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
+                    } else {
+                        const rt_poly *po = &sc->poly[p->data];
+                        size_t at = 0;
+                        for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
+                            size_t m = sc->loops[po->loop0 + l];
+                            hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
+                            at += m;
                         }
                     }
                 }
@@ -677,9 +680,12 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
             rt_par_run(nt, rt_top_scatter, &job);
         }
     }
-    for (int k = 0; k < nt; k++) {
+    for (int k = 0; k < nt; k++) { /* the second level needs one grid's pairs at a time */
         free(bs[k].cnt);
         bs[k].cnt = NULL;
+        free(bs[k].pairs);
+        bs[k].pairs = NULL;
+        bs[k].npairs = bs[k].cap = 0;
     }
     return rc;
 }
@@ -707,11 +713,16 @@ static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6]
 /* The second level in parts of consecutive top cells (about equal references each), one
  * per thread: part k makes the grids of its cells with cells and references counted from its
  * own first ones; the parts are then laid out one after the other in cell order, which gives
- * the arrays one part would give. */
+ * the arrays one part would give. Each grid's (cell, primitive) pairs are sorted into the
+ * part's own cell offsets and references as soon as the grid is made (the pair scratch holds
+ * one grid's pairs only); the parts' arrays never move (rt_big) and are copied into place. */
 typedef struct rt_sub_part {
     size_t c0, c1;       /* top cells [c0, c1) */
     rt_subgrid *subs;    /* its grids (first: counted from its first sub cell) */
     size_t nsubs, total; /* grids, their cells */
+    rt_big off, refs;    /* uint32: per sub cell its first reference (counted from the part's
+                            first), the references; total and nref of them */
+    size_t nref;
     size_t sub0, cell0, ref0; /* its first grid, sub cell and reference in the grid's arrays */
     int err;             /* 1: no memory, 2: too many cells */
 } rt_sub_part;
@@ -800,40 +811,54 @@ static void rt_sub_cells(void *arg, int k, int n)
             break;
         }
         sg->first = (uint32_t)total;
+        b->npairs = 0;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
             if (!keep[r])
-                rt_insert(sc, b, g->refs[r], &sg->b, total, eps, &err);
+                rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, &err);
+        if (!err && pt->nref + b->npairs > UINT32_MAX - 1)
+            err = 2;
+        if (!err && (!rt_big_grow(&pt->off, total + nc, sizeof(uint32_t)) ||
+                     !rt_big_grow(&pt->refs, pt->nref + b->npairs, sizeof(uint32_t))))
+            err = 1;
+        if (err)
+            break;
+        /* this grid's pairs into CSR (stable: reference order kept within a cell); its
+           entries of off serve as counts, then as cursors */
+        uint32_t *off = (uint32_t *)pt->off.p + total, *refs = pt->refs.p;
+        memset(off, 0, nc * sizeof *off);
+        for (size_t q = 0; q < b->npairs; q++)
+            off[b->pairs[q].cell]++;
+        uint32_t run = (uint32_t)pt->nref;
+        for (size_t c = 0; c < nc; c++) {
+            const uint32_t m = off[c];
+            off[c] = run;
+            run += m;
+        }
+        for (size_t q = 0; q < b->npairs; q++)
+            refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+        for (size_t c = nc; c > 1; c--) /* off[c - 1] is now the start of c */
+            off[c - 1] = off[c - 2];
+        off[0] = (uint32_t)pt->nref;
+        pt->nref = run;
         total += nc;
     }
     pt->total = total;
     pt->err = err;
 }
 
-/* part k's pairs into the grid's sub-cell CSR arrays at its place (its cells' entries of
-   soff serve as counts, then as cursors; the entry after its last cell is the next part's) */
-static void rt_sub_csr(void *arg, int k, int n)
+/* part k's cell offsets and references into the grid's arrays at its place */
+static void rt_sub_place(void *arg, int k, int n)
 {
     (void)n;
     rt_sub_job *j = arg;
     const rt_sub_part *pt = &j->part[k];
-    const rt_build *b = &j->b[k];
     rt_grid *g = &j->sc->grid;
-    uint32_t *off = g->soff + pt->cell0, *refs = g->srefs;
-    memset(off, 0, pt->total * sizeof *off);
-    for (size_t q = 0; q < b->npairs; q++)
-        off[b->pairs[q].cell]++;
-    uint32_t run = (uint32_t)pt->ref0;
-    for (size_t c = 0; c < pt->total; c++) {
-        const uint32_t m = off[c];
-        off[c] = run;
-        run += m;
-    }
-    for (size_t q = 0; q < b->npairs; q++)
-        refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
-    for (size_t c = pt->total; c > 1; c--) /* off[c] is now the start of c + 1 */
-        off[c - 1] = off[c - 2];
-    if (pt->total > 0)
-        off[0] = (uint32_t)pt->ref0;
+    const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
+    uint32_t *to = g->soff + pt->cell0;
+    for (size_t c = 0; c < pt->total; c++)
+        to[c] = off[c] + r0;
+    if (pt->nref)
+        memcpy(g->srefs + pt->ref0, pt->refs.p, pt->nref * sizeof(uint32_t));
 }
 
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
@@ -883,7 +908,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         part[k].ref0 = nref;
         nsubs += part[k].nsubs;
         total += part[k].total;
-        nref += bs[k].npairs;
+        nref += part[k].nref;
     }
     if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
         err = 2;
@@ -906,10 +931,13 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         }
         g->nsubs = nsubs;
         g->soff[total] = (uint32_t)nref;
-        rt_par_run(nt, rt_sub_csr, &job);
+        rt_par_run(nt, rt_sub_place, &job);
     }
-    for (int k = 0; k < nt; k++)
+    for (int k = 0; k < nt; k++) {
         free(part[k].subs);
+        rt_big_free(&part[k].off);
+        rt_big_free(&part[k].refs);
+    }
     if (!err) { /* top lists: only what stays (compacted in place) */
         uint32_t w = 0;
         for (size_t ci = 0; ci < g->ncells; ci++) {
@@ -1345,6 +1373,47 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     return RT_OK;
 }
 
+/* FNV-1a (64 bit) over n bytes, continuing from h */
+static uint64_t rt_fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *c = p;
+    for (size_t k = 0; k < n; k++)
+        h = (h ^ c[k]) * 0x100000001b3ULL;
+    return h;
+}
+
+static uint64_t rt_fnv_box(uint64_t h, const rt_box *b)
+{
+    h = rt_fnv(h, b->lo, sizeof b->lo);
+    h = rt_fnv(h, b->hi, sizeof b->hi);
+    return rt_fnv(h, b->n, sizeof b->n);
+}
+
+/* the committed grid's hash (rt_grid_info.hash): field by field, no padding bytes */
+static uint64_t rt_grid_hash(const rt_grid *g)
+{
+    uint64_t h = 0xcbf29ce484222325ULL;
+    h = rt_fnv(h, &g->rotated, sizeof g->rotated);
+    if (g->rotated) {
+        h = rt_fnv(h, g->R, sizeof g->R);
+        h = rt_fnv(h, g->c, sizeof g->c);
+    }
+    h = rt_fnv_box(h, &g->b);
+    h = rt_fnv(h, g->off, (g->ncells + 1) * sizeof *g->off);
+    h = rt_fnv(h, g->refs, g->nrefs * sizeof *g->refs);
+    h = rt_fnv(h, g->dist, g->ncells);
+    const int has_sub = g->sub != NULL;
+    h = rt_fnv(h, &has_sub, sizeof has_sub);
+    if (!has_sub)
+        return h;
+    h = rt_fnv(h, g->sub, g->ncells * sizeof *g->sub);
+    for (size_t k = 0; k < g->nsubs; k++) {
+        h = rt_fnv_box(h, &g->subs[k].b);
+        h = rt_fnv(h, &g->subs[k].first, sizeof g->subs[k].first);
+    }
+    h = rt_fnv(h, g->soff, (g->nsubcells + 1) * sizeof *g->soff);
+    return rt_fnv(h, g->srefs, g->nsrefs * sizeof *g->srefs);
+}
 
 int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
 {
@@ -1385,5 +1454,6 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
         }
     }
     gi->volume_fill = filled;
+    gi->hash = rt_grid_hash(g);
     return RT_OK;
 }

@@ -610,6 +610,7 @@ static void test_threads_same_scene(void **state)
                     gi[s].subcells == gi[0].subcells && gi[s].subrefs == gi[0].subrefs &&
                     gi[s].empty_cells == gi[0].empty_cells &&
                     gi[s].max_leaf_refs == gi[0].max_leaf_refs && gi[s].rotated == gi[0].rotated);
+        assert_true(gi[s].hash == gi[0].hash && gi[0].hash != 0);
         for (int k = 0; k < NR; k++) {
             assert_int_equal(h[s][k].prim, h[0][k].prim);
             assert_memory_equal(&h[s][k].t, &h[0][k].t, sizeof h[0][k].t);
