@@ -125,8 +125,9 @@ static int out_reserve(facet_buf *b, size_t m, size_t nl)
 static int clip_facet(const gks_pipe_norm *nc, size_t nl, facet_buf *b, size_t *n_out)
 {
     for (int pass = 0; pass < 2; pass++) {
+        double *cat = b->cat ? &b->cat[0][0] : NULL; /* none before the first growth */
         int r = gks_xform_clip_polygon_attr(&nc->clip, nl, b->lens, (const double (*)[4])b->h,
-                                            &b->at[0][0], NATTR, b->ch, &b->cat[0][0],
+                                            &b->at[0][0], NATTR, b->ch, cat,
                                             b->ch ? b->ccap : 0, b->lens + nl, n_out);
         if (r != 300 || pass == 1)
             return r == 0 ? 0 : -1;
