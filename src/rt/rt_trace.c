@@ -511,18 +511,14 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
 {
     c->blocker = -1;
     rt_walkstate w = {.sc = sc, .c = c, .r = r, .any_hit = any_hit, .best = INFINITY, .bi = -1, .T = 1.0};
-    if (!sc->use_grid) {
-        for (size_t i = 0; i < sc->nprim; i++)
-            if (i != r->skip && !rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
-                return 0.0;
-        return w.T;
-    }
     const rt_grid *g = &sc->grid;
     /* only opaque primitives: the first hit blocks, as for any-hit rays (small mailbox) */
-    w.any_hit |= g->all_opaque;
-    if (!w.any_hit && !c->mbox) { /* a context without the exact mailbox: every primitive */
+    w.any_hit |= sc->use_grid && g->all_opaque;
+    /* no grid, or a transparency walk with a context that has no exact mailbox (the batch
+       API's): every primitive once */
+    if (!sc->use_grid || (!w.any_hit && !c->mbox)) {
         for (size_t i = 0; i < sc->nprim; i++)
-            if (i != r->skip && !rt_transmit_prim(c, sc, r, i, 0, &w.T))
+            if (i != r->skip && !rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
                 return 0.0;
         return w.T;
     }

@@ -56,12 +56,14 @@ void gks_output_rec_data(const gks_rec_xf *xf, int item, const gks_area_data *d)
 }
 
 /* One call's canonical form under construction: the data, the arrays copied for it, its
- * index ints, and the first error met (each step below does nothing once err is set). */
+ * index ints (one allocation: fl, lc, ix are the writable views of d's facet_loops,
+ * loop_counts and idx), and the first error met (each step below does nothing once err
+ * is set). */
 typedef struct {
     int fctid, item, err;
     gks_area_data d;
     gks_area_arrays w;
-    int *ints;
+    int *ints, *fl, *lc, *ix;
 } job;
 
 /* The start of every entry: 1 when the state check failed (reported, nothing to do);
@@ -199,15 +201,10 @@ static void facets(job *j, const Gfacet_data3 *fd, size_t nf, size_t nl, size_t 
     d->n_facets = nf;
     d->n_loops = nl;
     d->n_idx = ni;
-    d->facet_loops = j->ints;
-    d->loop_counts = j->ints + nf;
-    d->idx = j->ints + nf + nl;
+    d->facet_loops = j->fl = j->ints;
+    d->loop_counts = j->lc = j->ints + nf;
+    d->idx = j->ix = j->ints + nf + nl;
 }
-
-/* The writable views of the arrays facets() allocates. */
-#define FL(j) ((j)->ints)
-#define LC(j) ((j)->ints + (j)->d.n_facets)
-#define IX(j) ((j)->ints + (j)->d.n_facets + (j)->d.n_loops)
 
 /* Checks (the flags and arrays, then the structure), draws, reports and frees. */
 static void finish(job *j)
@@ -272,11 +269,11 @@ static void loops_facet(job *j, Gint num_sets, const Gfacet_vdata3 *vdata, const
     gks_free(all.norms);
     facets(j, fd, 1, (size_t)num_sets, j->d.n_verts);
     if (!j->err) {
-        FL(j)[0] = num_sets;
+        j->fl[0] = num_sets;
         for (Gint k = 0; k < num_sets; k++)
-            LC(j)[k] = vdata[k].num_vertices;
+            j->lc[k] = vdata[k].num_vertices;
         for (size_t i = 0; i < j->d.n_verts; i++)
-            IX(j)[i] = (int)i;
+            j->ix[i] = (int)i;
     }
     finish(j);
 }
@@ -312,9 +309,9 @@ GKS_API void gtri_strip3_data(Gint fflag, Gint vflag, Gint colr_type, const Gfac
     for (size_t i = 0; !j.err && i < nt; i++) {
         /* Triangle i is (i, i+1, i+2), every other one reversed (i+1, i, i+2): all
          * triangles of the strip keep the orientation of the first. */
-        int *t = IX(&j) + 3 * i;
-        FL(&j)[i] = 1;
-        LC(&j)[i] = 3;
+        int *t = j.ix + 3 * i;
+        j.fl[i] = 1;
+        j.lc[i] = 3;
         t[0] = (int)(i % 2 ? i + 1 : i);
         t[1] = (int)(i % 2 ? i : i + 1);
         t[2] = (int)(i + 2);
@@ -343,9 +340,9 @@ GKS_API void gquad_mesh3_data(Gint fflag, Gint vflag, Gint colr_type, const Gint
             /* Quadrilateral (i, y): vertices (i,y), (i+1,y), (i+1,y+1), (i,y+1); vertex
              * (i, y) is vdata[y * size_x + i], facets in the same order. */
             size_t q = y * (mx - 1) + i;
-            int *t = IX(&j) + 4 * q;
-            FL(&j)[q] = 1;
-            LC(&j)[q] = 4;
+            int *t = j.ix + 4 * q;
+            j.fl[q] = 1;
+            j.lc[q] = 4;
             t[0] = (int)(y * mx + i);
             t[1] = (int)(y * mx + i + 1);
             t[2] = (int)((y + 1) * mx + i + 1);
@@ -392,10 +389,10 @@ GKS_API void gset_of_fill_area_set3_data(Gint fflag, Gint vflag, Gint colr_type,
         size_t l0 = 0, i0 = 0;
         for (Gint k = 0; k < num_sets; k++) {
             const Gint_list_list *s = &vlist[k];
-            FL(&j)[k] = s->num_lists;
+            j.fl[k] = s->num_lists;
             for (Gint l = 0; l < s->num_lists; l++) {
-                LC(&j)[l0++] = s->lists[l].num_ints;
-                memcpy(IX(&j) + i0, s->lists[l].ints,
+                j.lc[l0++] = s->lists[l].num_ints;
+                memcpy(j.ix + i0, s->lists[l].ints,
                        (size_t)s->lists[l].num_ints * sizeof(int));
                 i0 += (size_t)s->lists[l].num_ints;
             }

@@ -272,9 +272,6 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
     return err;
 }
 
-/* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
- * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
- * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
 /* Whether m maps each coordinate by its own row alone: a scale and a shift per axis (the
  * normalization, with no segment transformation or one without rotation and shear). Then
  * emit_area maps a point by m[k][k] * c + m[k][3] per axis, which equals the full row: with
@@ -290,6 +287,9 @@ static int axis_aligned(const double (*m)[4])
 
 #define AREA_SMALL 16 /* areas up to this many points and loops use stack buffers */
 
+/* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
+ * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
+ * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
 static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, size_t n,
                      const gks_pipe_src *s, int is_set, gks_pipe_target *t)
 {
