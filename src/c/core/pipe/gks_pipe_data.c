@@ -181,6 +181,8 @@ static int send_facet(gks_ws *ws, const gks_prim *tpl, const gks_pipe_norm *nc, 
         int err = clip_facet(nc, nl, b, &n_out);
         if (err)
             return err > 0 ? err : 0;
+        if (n_out == 0)
+            return 0; /* nothing of the facet is left (and no clip arrays were made) */
         vh = (const double (*)[4])b->ch;
         va = (const double (*)[NATTR])b->cat;
     }
