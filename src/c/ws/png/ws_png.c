@@ -43,6 +43,7 @@ static const Grgb png_colours[8] = {
 
 typedef struct png_ws {
     gks_raster_fb *fb;  /* primitives drawn at once */
+    Glimit3 fb_vp;      /* the viewport fb was sized for (framebuffer()'s quick check) */
     char *base;
     int frame;          /* 1-based number of the current frame */
     int dirty;          /* content not yet written */
@@ -123,8 +124,13 @@ static void image_size(const gks_ws *ws, int *w, int *h)
 static gks_raster_fb *framebuffer(gks_ws *ws)
 {
     png_ws *p = ws->priv;
+    const Glimit3 *vp = &ws->cur_vp;
+    if (p->fb && vp->x_min == p->fb_vp.x_min && vp->x_max == p->fb_vp.x_max &&
+        vp->y_min == p->fb_vp.y_min && vp->y_max == p->fb_vp.y_max)
+        return p->fb; /* the viewport it was sized for: no size to recompute per primitive */
     int w, h;
     image_size(ws, &w, &h);
+    p->fb_vp = *vp;
     if (p->fb && p->fb->width == w && p->fb->height == h)
         return p->fb;
     gks_raster_fb_free(p->fb);

@@ -223,6 +223,15 @@ static rt_attr attr_of(const gks_prim *prim)
     return a;
 }
 
+/* a holds prim's attributes (attr_of(prim) compared with same_attr, without the copy) */
+static int attr_is(const rt_attr *a, const gks_prim *prim)
+{
+    return a->colour.red == prim->colour.red && a->colour.green == prim->colour.green &&
+           a->colour.blue == prim->colour.blue && a->refl_eq[0] == prim->refl_eq[0] &&
+           a->refl_eq[1] == prim->refl_eq[1] && a->light_mask == prim->light_mask &&
+           memcmp(a->props, prim->area_props, sizeof a->props) == 0;
+}
+
 static int same_attr(const rt_attr *a, const rt_attr *b)
 {
     return a->colour.red == b->colour.red && a->colour.green == b->colour.green &&
@@ -840,8 +849,7 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         return 0; /* a large area: synchronous */
     const size_t need = sizeof(rec_head) + cbytes + 24 * np;
     const int vi = clamp_view(prim->view_ind);
-    const rt_attr a = attr_of(prim);
-    const int new_attr = r->aview != vi || !same_attr(&r->alast, &a);
+    const int new_attr = r->aview != vi || !attr_is(&r->alast, prim);
     const size_t abytes = new_attr ? attr_bytes : 0;
     if (r->blk && r->blk->used + abytes + need > REC_BLOCK_BYTES) {
         rt_serial_push(r->queue, r->blk);
@@ -884,8 +892,8 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         return 0; /* beyond the tracer's range: the synchronous path clips it */
     if (new_attr) {
         *(rec_head *)(void *)at = (rec_head){ REC_ATTR, vi, 0, 0 };
-        memcpy(at + sizeof(rec_head), &a, sizeof a);
-        r->alast = a;
+        r->alast = attr_of(prim);
+        memcpy(at + sizeof(rec_head), &r->alast, sizeof r->alast);
         r->aview = vi;
     }
     *h = (rec_head){ REC_POLY, vi, nl, (int)np };
