@@ -1113,8 +1113,9 @@ static double rt_frame_normals(const rt_scene *sc, size_t stride)
     double sum = 0.0;
     size_t m = 0;
     for (size_t i = 0; i < sc->nprim; i += stride, m++) {
-        double q[3];
-        rt_grid_dir(&sc->grid, sc->prim[i].ng, q);
+        double q[3], ng[3];
+        rt_prim_ng(sc, i, ng);
+        rt_grid_dir(&sc->grid, ng, q);
         sum += fabs(q[0]) + fabs(q[1]) + fabs(q[2]);
     }
     return m ? sum / (double)m : 0.0;
@@ -1125,7 +1126,8 @@ static int rt_prim_frame(const rt_scene *sc, rt_build *b, size_t i, double R[3][
 {
     const rt_prim *p = &sc->prim[i];
     size_t npts = rt_prim_points(sc, b, p, err);
-    const double *n = p->ng;
+    double n[3];
+    rt_prim_ng(sc, i, n);
     double best = 0.0, u[3] = {0, 0, 0};
     for (size_t k = 0; k < npts; k++) {
         const double *a = b->pts + 3 * k, *q = b->pts + 3 * ((k + 1) % npts);
