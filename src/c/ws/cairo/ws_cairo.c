@@ -1010,13 +1010,9 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         }
         return 0;
     }
-    if (func_id <= GESC_RT_CLIP_SECONDARY && func_id >= GESC_RT_SPD)
-        return ws_rt_escape(v->rt, func_id, in, out);
-    if (func_id != GESC_SET_FILE_NAME)
-        return 180;
     /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
     int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
-    return gks_ws_file_rename(ws, in->str, in->str_len, fr, vec_ext[v->fmt], &v->base);
+    return ws_rt_file_escape(v->rt, ws, func_id, in, out, fr, vec_ext[v->fmt], &v->base);
 }
 
 /* --- TEXT as text: the driver entry ------------------------------------------------------ */

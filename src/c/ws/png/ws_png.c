@@ -267,11 +267,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return gks_ws_escape_int(in, GKS_RASTER_PNG_FAST, GKS_RASTER_PNG_LEVEL_MAX,
                                  &p->compression);
     }
-    if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
-        return ws_rt_escape(p->rt, func_id, in, out);
-    if (func_id != GESC_SET_FILE_NAME)
-        return 180;
-    return gks_ws_file_rename(ws, in->str, in->str_len, p->frame, ".png", &p->base);
+    return ws_rt_file_escape(p->rt, ws, func_id, in, out, p->frame, ".png", &p->base);
 }
 
 /* Pixel readback: the composed picture (retained primitives drawn over the immediate
