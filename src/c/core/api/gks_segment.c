@@ -441,9 +441,9 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
 {
     GKS_INQ_ARGS(err_ind, ws_ids, length_list);
     const gks_segment *s = inq_seg(seg_name, err_ind);
-    if (!s)
-        return;
-    *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids, length_list);
+    if (s)
+        *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids,
+                                 length_list);
 }
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)
