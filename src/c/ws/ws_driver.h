@@ -288,6 +288,10 @@ static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
 {
     return ws->host->file_taken(ws, path);
 }
+/* The file of frame `frame` of base (extension ext) claimed as above: 0 with *path
+ * (gks_alloc'd), else 300 or the claim's 21, 26 with *path NULL (ws_file.c). */
+int gks_ws_file_claim_frame(gks_ws *ws, const char *base, int frame, const char *ext,
+                            char **path);
 /* ESCAPE "set file name": the base name name[0..len) replaces *base (gks_alloc'd) when the
  * file of its frame `frame` (extension ext) can be claimed as above; 0, 21, 26 or 300, and
  * *base unchanged on error (ws_file.c). */

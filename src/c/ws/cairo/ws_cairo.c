@@ -842,15 +842,11 @@ static int page_emit(vec_ws *v)
 static int file_write(gks_ws *ws, vec_ws *v)
 {
     double w = v->snap.w_pt, h = v->snap.h_pt;
-    char *path = gks_ws_file_frame(v->base, v->frame, vec_ext[v->fmt]);
-    if (!path)
-        return 300;
+    char *path;
     /* a later frame's name may be another workstation's file: 21, nothing written */
-    int c = gks_ws_file_claim(ws, path);
-    if (c) {
-        gks_free(path);
+    int c = gks_ws_file_claim_frame(ws, v->base, v->frame, vec_ext[v->fmt], &path);
+    if (c)
         return c;
-    }
     cairo_surface_t *s;
     vec_buf b = { 0 };
     if (v->fmt == VEC_SVG) {

@@ -202,15 +202,11 @@ static int png_update(gks_ws *ws)
     gks_raster_fb *pic;
     if (ws_png_render_compose(p->render, ws, fb, &pic))
         return 300;
-    char *path = gks_ws_file_frame(p->base, p->frame, ".png");
-    if (!path)
-        return 300;
+    char *path;
     /* a later frame's name, or one an ESCAPE set, may be another workstation's file */
-    int c = gks_ws_file_claim(ws, path);
-    if (c) {
-        gks_free(path);
+    int c = gks_ws_file_claim_frame(ws, p->base, p->frame, ".png", &path);
+    if (c)
         return c;
-    }
     int r = gks_raster_fb_write_png(pic, path, p->compression);
     gks_free(path);
     if (r != GKS_RASTER_OK)
