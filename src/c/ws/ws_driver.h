@@ -68,7 +68,11 @@ typedef struct gks_ws_desc {
  * colour available, implicit regeneration allowed, deferral ASAP, the raster output
  * table. Each table adds its colour table, predefined colours (gks_wdt_white_black) and
  * HLHSR modes. */
-#define GKS_WS_DESC_NODRAW(type_, name_, cat_, cls_, dc_)                                      .type = (type_), .name = (name_), .cat = (cat_), .cls = (cls_), .dc_units = GDC_OTHER,      .dc_x = (dc_), .dc_y = (dc_), .raster_x = (dc_), .raster_y = (dc_),                        .colr_avail = GAVAIL_COLR, .default_irg = GIRG_ALLOWED, .default_defer = GDEFER_ASAP,      .out = &gks_wdt_raster
+#define GKS_WS_DESC_NODRAW(type_, name_, cat_, cls_, dc_)                                  \
+    .type = (type_), .name = (name_), .cat = (cat_), .cls = (cls_), .dc_units = GDC_OTHER,  \
+    .dc_x = (dc_), .dc_y = (dc_), .raster_x = (dc_), .raster_y = (dc_),                    \
+    .colr_avail = GAVAIL_COLR, .default_irg = GIRG_ALLOWED, .default_defer = GDEFER_ASAP,  \
+    .out = &gks_wdt_raster
 
 /* The driver of a workstation that draws nothing and has no entries of its own (null,
  * WISS): the description table of GKS_WS_DESC_NODRAW with n_colr_ colours, the predefined
@@ -87,8 +91,9 @@ typedef struct gks_ws_desc {
  * segment transformation and clipping to the viewport (if on); attributes resolved for this
  * workstation (individual or bundled by the aspect source flags, colour indices turned into
  * colours, unsupported values replaced as the standard says). TEXT reaches drivers as
- * GKS_PRIM_POLYLINE strokes (text = 1) unless the driver's text entry takes it; FILL AREA SET as GKS_PRIM_FILL_AREA with n_loops >= 1
- * and the edge attributes; markers as their clip-surviving centres. */
+ * GKS_PRIM_POLYLINE strokes (text = 1) unless the driver's text entry takes it; FILL AREA
+ * SET as GKS_PRIM_FILL_AREA with n_loops >= 1 and the edge attributes; markers as their
+ * clip-surviving centres. */
 typedef enum {
     GKS_PRIM_POLYLINE, GKS_PRIM_FILL_AREA, GKS_PRIM_POLYMARKER, GKS_PRIM_CELL_ARRAY
 } gks_prim_kind;
