@@ -1106,15 +1106,14 @@ static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, 
     return err ? RT_ERR_NOMEM : RT_OK;
 }
 
-/* mean |n_x| + |n_y| + |n_z| of the unit primitive normals (every stride-th) in the current
-   grid frame; 0 if there are none */
-static double rt_frame_normals(const rt_scene *sc, size_t stride)
+/* mean |n_x| + |n_y| + |n_z| of the m unit normals ng (of every stride-th primitive) in the
+   current grid frame; 0 if there are none */
+static double rt_frame_normals(const rt_scene *sc, const double (*ng)[3], size_t m)
 {
     double sum = 0.0;
-    size_t m = 0;
-    for (size_t i = 0; i < sc->nprim; i += stride, m++) {
+    for (size_t k = 0; k < m; k++) {
         double q[3];
-        rt_grid_dir(&sc->grid, sc->prim[i].ng, q);
+        rt_grid_dir(&sc->grid, ng[k], q);
         sum += fabs(q[0]) + fabs(q[1]) + fabs(q[2]);
     }
     return m ? sum / (double)m : 0.0;
@@ -1125,7 +1124,8 @@ static int rt_prim_frame(const rt_scene *sc, rt_build *b, size_t i, double R[3][
 {
     const rt_prim *p = &sc->prim[i];
     size_t npts = rt_prim_points(sc, b, p, err);
-    const double *n = p->ng;
+    double n[3];
+    rt_prim_ng(sc, i, n);
     double best = 0.0, u[3] = {0, 0, 0};
     for (size_t k = 0; k < npts; k++) {
         const double *a = b->pts + 3 * k, *q = b->pts + 3 * ((k + 1) % npts);
@@ -1216,9 +1216,16 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
     if (err)
         return RT_ERR_NOMEM;
     size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
+    /* the sample's normals, once for all candidates (a triangle's is recomputed) */
+    const size_t ns = (sc->nprim + stride - 1) / stride;
+    double (*sn)[3] = rt_alloc_array(ns ? ns : 1, sizeof *sn);
+    if (!sn)
+        return RT_ERR_NOMEM;
+    for (size_t k = 0; k < ns; k++)
+        rt_prim_ng(sc, k * stride, sn[k]);
     double bb[6];
     int rc = rt_frame_box(sc, b, nt, stride, bb);
-    const double vol0 = rt_box_volume(bb), s0 = rt_frame_normals(sc, stride);
+    const double vol0 = rt_box_volume(bb), s0 = rt_frame_normals(sc, (const double(*)[3])sn, ns);
     double best = INFINITY, bestR[3][3];
     int found = 0;
     for (int a = 0; a < 3; a++)
@@ -1228,7 +1235,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
             continue;
         g->rotated = 1;
         rc = rt_frame_box(sc, b, nt, stride, bb);
-        const double S = rt_frame_normals(sc, stride) / s0;
+        const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
         g->rotated = 0;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
         const double r = rt_box_volume(bb) / vol0;
@@ -1240,6 +1247,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
             found = 1;
         }
     }
+    free(sn);
     if (err)
         rc = RT_ERR_NOMEM;
     if (rc == RT_OK && found) {

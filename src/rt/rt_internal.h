@@ -89,13 +89,16 @@ typedef struct rt_cell {
     size_t rgb0;             /* first float in scene cell colour array */
 } rt_cell;
 
+/* 12 bytes per primitive. The front normal is not stored: rt_prim_ng gives it (the plane
+   normal of a quad, polygon or cell; a triangle's recomputed from its vertices, the same
+   arithmetic as when it was added, so the same bits). */
+#define RT_SPAIR_MAX ((uint32_t)1 << 29) /* distinct surface pairs at most (sp's bits) */
 typedef struct rt_prim {
-    uint8_t kind;
-    uint8_t opaque;     /* both sides kt == 0 */
     int id;             /* user id */
-    int surf[2];        /* front, back surface */
-    uint32_t data;      /* index into tris/polys/cells */
-    double ng[3];       /* unit geometric normal (front) */
+    uint32_t data;      /* index into tris/quads/polys/cells */
+    uint32_t kind : 2;  /* RT_KIND_* */
+    uint32_t opaque : 1;/* both sides kt == 0 */
+    uint32_t sp : 29;   /* (front, back) surfaces: the scene's spair[sp] */
 } rt_prim;
 
 /* raw input polygon / cell array kept until commit */
@@ -161,6 +164,10 @@ typedef struct rt_grid {
 struct rt_scene {
     /* input */
     rt_surface *surf; size_t nsurf, capsurf;
+    int (*spair)[2]; size_t nspair, capspair; /* distinct (front, back) surface pairs, and ... */
+    uint32_t *spair_hash; size_t spair_hcap;   /* ... their hash table: 1 + index, 0 empty */
+    uint32_t spair_last;                       /* the pair found last (consecutive primitives
+                                                  mostly share one) */
     rt_light light[RT_MAX_LIGHTS]; int nlights;
     rt_in_prim *in; size_t nin, capin;     /* polygons other than triangles, cell arrays */
     /* triangles (single-loop polygons of 3 vertices) as given, in id order: the committed
@@ -204,6 +211,14 @@ struct rt_scene {
     size_t memory_bytes;
     size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
+
+/* the front unit normal of committed primitive i */
+void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3]);
+/* the surface of side (0 front, 1 back) of primitive p */
+static inline const rt_surface *rt_prim_surf(const rt_scene *sc, const rt_prim *p, int side)
+{
+    return &sc->surf[sc->spair[p->sp][side]];
+}
 
 /* ---- traversal (rt_grid.c) ---- */
 

@@ -430,11 +430,13 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     double P[3], N[3];
     for (int c = 0; c < 3; c++)
         P[c] = o[c] + t * d[c];
-    double dn = dot3(p->ng, d);
+    double ng[3];
+    rt_prim_ng(sc, (size_t)i, ng);
+    double dn = dot3(ng, d);
     int side = dn > 0.0;
     for (int c = 0; c < 3; c++)
-        N[c] = side ? -p->ng[c] : p->ng[c];
-    const rt_surface *s = &sc->surf[p->surf[side]];
+        N[c] = side ? -ng[c] : ng[c];
+    const rt_surface *s = rt_prim_surf(sc, p, side);
     double Od[3];
     if (p->kind == RT_KIND_CELL)
         rt_cell_color(sc, &sc->cell[p->data], P, Od);
@@ -442,7 +444,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
         memcpy(Od, s->diffuse, sizeof Od);
     /* smooth areas: the shading normal Ns and the shadow rays' start Ps (rt_smooth.c) */
     double Ns[3], Ps[3], Oi[3];
-    const int sm = sc->prim_vd ? rt_smooth_at(sc, (size_t)i, P, p->ng, Ns, Ps, Oi) : 0;
+    const int sm = sc->prim_vd ? rt_smooth_at(sc, (size_t)i, P, ng, Ns, Ps, Oi) : 0;
     const int smooth = (sm & 1) && job->o.smooth != RT_SMOOTH_FLAT;
     if (sm & 2)
         memcpy(Od, Oi, sizeof Od);

@@ -42,7 +42,7 @@ void rt_surface_default(rt_surface *s)
 static rt_tri *in_tris(const rt_scene *sc) { return sc->in_tri.p; }
 static rt_prim *in_tri_prims(const rt_scene *sc) { return sc->in_tri_prim.p; }
 
-static int rt_tri_prim(const rt_scene *sc, const double *v, int id, int front, int back,
+static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int back,
                        rt_prim *pr);
 static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6]);
 static void rt_bbox_add(double bb[6], const double p[3]);
@@ -85,6 +85,8 @@ void rt_scene_free(rt_scene *sc)
         return;
     rt_scene_uncommit(sc);
     free(sc->surf);
+    free(sc->spair);
+    free(sc->spair_hash);
     free(sc->in);
     rt_big_free(&sc->in_tri);
     rt_big_free(&sc->in_tri_prim);
@@ -253,7 +255,10 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
         /* a triangle: kept as the committed scene will trace it, with its primitive record
            as the commit makes it; a degenerate one (never traced) only takes its id */
         rt_prim pr;
-        if (rt_tri_prim(sc, xyz, (int)sc->nids, front_surface, back_surface, &pr)) {
+        const int trc = rt_tri_prim(sc, xyz, (int)sc->nids, front_surface, back_surface, &pr);
+        if (trc < 0)
+            return -trc;
+        if (trc) {
             if (!rt_big_grow(&sc->in_tri, sc->nintri + 1, sizeof(rt_tri)) ||
                 !rt_big_grow(&sc->in_tri_prim, sc->nintri + 1, sizeof(rt_prim)))
                 return RT_ERR_NOMEM;
@@ -441,28 +446,119 @@ static int rt_points_frame(const double *v, size_t nv, double pb[6], double c[3]
     return 1;
 }
 
-static void rt_prim_init(const rt_scene *sc, rt_prim *pr, int id, int front, int back)
+static uint32_t rt_spair_slot(int front, int back, size_t hcap)
 {
+    uint64_t h = ((uint64_t)(uint32_t)front << 32 | (uint32_t)back) * 0x9E3779B97F4A7C15u;
+    return (uint32_t)(h >> 32) & (uint32_t)(hcap - 1);
+}
+
+/* the index of the surface pair (front, back) in sc->spair, added if new: RT_OK, RT_ERR_NOMEM,
+   RT_ERR_LIMIT (RT_SPAIR_MAX pairs) */
+static int rt_spair_find(rt_scene *sc, int front, int back, uint32_t *sp)
+{
+    const uint32_t last = sc->spair_last;
+    if (last < sc->nspair && sc->spair[last][0] == front && sc->spair[last][1] == back) {
+        *sp = last;
+        return RT_OK;
+    }
+    if (sc->spair_hcap) {
+        for (uint32_t h = rt_spair_slot(front, back, sc->spair_hcap);; h = (h + 1) & (uint32_t)(sc->spair_hcap - 1)) {
+            const uint32_t e = sc->spair_hash[h];
+            if (!e)
+                break;
+            if (sc->spair[e - 1][0] == front && sc->spair[e - 1][1] == back) {
+                *sp = sc->spair_last = e - 1;
+                return RT_OK;
+            }
+        }
+    }
+    if (sc->nspair >= RT_SPAIR_MAX)
+        return RT_ERR_LIMIT;
+    if (!rt_grow((void **)&sc->spair, &sc->capspair, sc->nspair + 1, sizeof *sc->spair))
+        return RT_ERR_NOMEM;
+    if (2 * (sc->nspair + 1) > sc->spair_hcap) { /* load <= 1/2: rehash into twice the room */
+        const size_t hcap = sc->spair_hcap ? 2 * sc->spair_hcap : 64;
+        uint32_t *hash = rt_calloc_array(hcap, sizeof *hash);
+        if (!hash)
+            return RT_ERR_NOMEM;
+        for (size_t k = 0; k < sc->nspair; k++) {
+            uint32_t h = rt_spair_slot(sc->spair[k][0], sc->spair[k][1], hcap);
+            while (hash[h])
+                h = (h + 1) & (uint32_t)(hcap - 1);
+            hash[h] = (uint32_t)k + 1;
+        }
+        free(sc->spair_hash);
+        sc->spair_hash = hash;
+        sc->spair_hcap = hcap;
+    }
+    uint32_t h = rt_spair_slot(front, back, sc->spair_hcap);
+    while (sc->spair_hash[h])
+        h = (h + 1) & (uint32_t)(sc->spair_hcap - 1);
+    sc->spair[sc->nspair][0] = front;
+    sc->spair[sc->nspair][1] = back;
+    sc->spair_hash[h] = (uint32_t)sc->nspair + 1;
+    *sp = sc->spair_last = (uint32_t)sc->nspair++;
+    return RT_OK;
+}
+
+/* id and surfaces of a primitive record: RT_OK, or rt_spair_find's error */
+static int rt_prim_init(rt_scene *sc, rt_prim *pr, int id, int front, int back)
+{
+    uint32_t sp;
+    const int rc = rt_spair_find(sc, front, back, &sp);
+    if (rc != RT_OK)
+        return rc;
     pr->id = id;
-    pr->surf[0] = front;
-    pr->surf[1] = back;
+    pr->sp = sp;
     pr->opaque = sc->surf[front].transparency == 0.0 && sc->surf[back].transparency == 0.0;
+    return RT_OK;
+}
+
+/* the unit normal of the triangle v (9 doubles, finite): 0 if it is degenerate. The one
+   computation of a triangle's normal (when it is added and at every hit: the same bits). */
+static int rt_tri_normal(const double *v, double nrm[3])
+{
+    static const int three = 3;
+    double pb[6], c[3], ext;
+    return rt_points_frame(v, 3, pb, c, &ext) && rt_poly_normal(v, 3, &three, 1, c, ext, nrm);
 }
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
-   commit traces it (data set by the caller): 0 if it is degenerate (never traced). */
-static int rt_tri_prim(const rt_scene *sc, const double *v, int id, int front, int back,
+   commit traces it (data set by the caller): 1, 0 if it is degenerate (never traced), or the
+   negated error of rt_prim_init. */
+static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int back,
                        rt_prim *pr)
 {
-    static const int three = 3;
-    double pb[6], c[3], ext, nrm[3];
-    if (!rt_points_frame(v, 3, pb, c, &ext) || !rt_poly_normal(v, 3, &three, 1, c, ext, nrm))
+    double nrm[3];
+    if (!rt_tri_normal(v, nrm))
         return 0;
     memset(pr, 0, sizeof *pr);
-    rt_prim_init(sc, pr, id, front, back);
-    memcpy(pr->ng, nrm, sizeof pr->ng);
+    const int rc = rt_prim_init(sc, pr, id, front, back);
+    if (rc != RT_OK)
+        return -rc;
     pr->kind = RT_KIND_TRI;
     return 1;
+}
+
+void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
+{
+    const rt_prim *p = &sc->prim[i];
+    const double *n;
+    switch (p->kind) {
+    case RT_KIND_TRI:
+        (void)rt_tri_normal(&sc->tri[p->data].v[0][0], ng);
+        return;
+    case RT_KIND_QUAD:
+        n = sc->quad[p->data].n;
+        break;
+    case RT_KIND_POLY:
+        n = sc->poly[p->data].n;
+        break;
+    default:
+        n = sc->cell[p->data].n;
+        break;
+    }
+    memcpy(ng, n, 3 * sizeof(double));
 }
 
 /* box of the input triangles lo .. hi-1 */
@@ -480,9 +576,9 @@ static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6])
 /* Triangles first, in id order. Their records were made when they were added (degenerate ones
    were not kept), so without culling the committed triangles and records are the input's.
    With culling (o->ncull) the kept ones are copied, in nt parts of consecutive triangles
-   (threads): each part writes the records of its triangles at their input places (kind
-   RT_KIND_NONE: culled); a serial pass closes the gaps, so the result is the same for any nt. */
-#define RT_KIND_NONE 255
+   (threads): each part writes the records of its triangles at their input places (id
+   RT_CULLED: culled); a serial pass closes the gaps, so the result is the same for any nt. */
+#define RT_CULLED (-1)
 
 typedef struct rt_tri_job {
     rt_scene *sc;
@@ -507,7 +603,7 @@ static void rt_commit_tri_part(void *arg, int part, int nparts)
         const double *v = &in_tris(sc)[k].v[0][0];
         rt_prim *pr = &sc->prim[k];
         if (rt_culled(o, v, 3, 0)) {
-            pr->kind = RT_KIND_NONE;
+            pr->id = RT_CULLED;
             continue;
         }
         sc->tri[k] = in_tris(sc)[k];
@@ -570,7 +666,7 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
     }
     size_t w = 0; /* close the gaps, in order */
     for (size_t k = 0; k < sc->nintri; k++) {
-        if (sc->prim[k].kind == RT_KIND_NONE)
+        if (sc->prim[k].id == RT_CULLED)
             continue;
         sc->prim[w] = sc->prim[k];
         sc->prim[w].data = (uint32_t)w;
@@ -618,7 +714,10 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         if (!rt_points_frame(v, nv, pb, c, &ext))
             continue;
         rt_prim *pr = &sc->prim[sc->nprim];
-        rt_prim_init(sc, pr, in->id, in->front, in->back);
+        memset(pr, 0, sizeof *pr);
+        rc = rt_prim_init(sc, pr, in->id, in->front, in->back);
+        if (rc != RT_OK)
+            return rc;
         if (in->kind == RT_KIND_CELL) {
             const double *P = v, *Q = v + 3, *R = v + 6;
             rt_cell *ce = &sc->cell[sc->ncell];
@@ -651,7 +750,6 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
             ce->rgb0 = in->rgb0;
             pr->kind = RT_KIND_CELL;
             pr->data = (uint32_t)sc->ncell++;
-            memcpy(pr->ng, ce->n, sizeof pr->ng);
             double S[3];
             for (int j = 0; j < 3; j++)
                 S[j] = P[j] + Q[j] - R[j];
@@ -663,7 +761,6 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         double nrm[3];
         if (!rt_poly_normal(v, nv, counts, in->nloops, c, ext, nrm))
             continue;
-        memcpy(pr->ng, nrm, sizeof pr->ng);
         if (in->nloops == 1 && nv == 4 && rt_quad_convex(v, nrm, c, ext)) {
             rt_quad *q = &sc->quad[sc->nquad];
             memcpy(q->v, v, 12 * sizeof(double));
@@ -934,7 +1031,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                        sc->npoly * sizeof *sc->poly + sc->ncell * sizeof *sc->cell +
                        sc->nuv * 2 * sizeof(double) + sc->nloops * sizeof(uint32_t) +
                        sc->nslab_off * sizeof(size_t) + sc->nedges * 4 * sizeof(double) +
-                       sc->nrgb * sizeof(float) +
+                       sc->nrgb * sizeof(float) + sc->nspair * sizeof *sc->spair +
+                       sc->spair_hcap * sizeof *sc->spair_hash +
                        (sc->prim_vd ? sc->nprim * sizeof(uint32_t) + sc->nvd * sizeof *sc->vd +
                                           sc->nvdv * (3 * sizeof(double) + 6 * sizeof(float))
                                     : 0) +

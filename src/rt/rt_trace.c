@@ -229,8 +229,10 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
         c->blocker = p->opaque ? (long)i : -1;
         return 0;
     }
-    double den = p->ng[0] * r->d[0] + p->ng[1] * r->d[1] + p->ng[2] * r->d[2];
-    *T *= sc->surf[p->surf[den > 0.0 ? 1 : 0]].transparency;
+    double ng[3];
+    rt_prim_ng(sc, i, ng);
+    double den = ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2];
+    *T *= rt_prim_surf(sc, p, den > 0.0 ? 1 : 0)->transparency;
     return *T > 0.0;
 }
 
@@ -554,11 +556,10 @@ static void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, 
     const rt_prim *p = &sc->prim[i];
     h->t = t;
     h->prim = p->id;
-    for (int j = 0; j < 3; j++) {
+    rt_prim_ng(sc, (size_t)i, h->ng);
+    for (int j = 0; j < 3; j++)
         h->p[j] = r->o[j] + t * r->d[j];
-        h->ng[j] = p->ng[j];
-    }
-    double den = p->ng[0] * r->d[0] + p->ng[1] * r->d[1] + p->ng[2] * r->d[2];
+    double den = h->ng[0] * r->d[0] + h->ng[1] * r->d[1] + h->ng[2] * r->d[2];
     h->side = den > 0.0 ? 1 : 0;
 }
 

@@ -144,6 +144,16 @@ int gks_list_copy(const int *list, int n, Gint cap, Gint start, Gint_list *out, 
     return gks_list_end(&w, len);
 }
 
+int gks_list_flags(const unsigned char *def, int lo, int hi, Gint cap, Gint start,
+                   Gint_list *out, Gint *len)
+{
+    gks_list_out w = gks_list_begin(out, cap, start);
+    for (int i = lo; i <= hi; i++)
+        if (def[i])
+            gks_list_put(&w, i);
+    return gks_list_end(&w, len);
+}
+
 int gks_inq_args(Gint *err_ind, int n, const void *const *p)
 {
     if (!err_ind)

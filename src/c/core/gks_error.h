@@ -77,6 +77,10 @@ int gks_list_slot(gks_list_out *w);
 int gks_list_end(gks_list_out *w, Gint *len);
 /* The whole list[0..n) answered under the list rule: gks_list_end of putting each. */
 int gks_list_copy(const int *list, int n, Gint cap, Gint start, Gint_list *out, Gint *len);
+/* The indices i in [lo, hi] whose flag def[i] is set (defined table entries), in ascending
+ * order, answered under the list rule as gks_list_copy. */
+int gks_list_flags(const unsigned char *def, int lo, int hi, Gint cap, Gint start,
+                   Gint_list *out, Gint *len);
 
 /* Report as the caller's last action and return (from a void function / with `val`):
  * returning is right whatever the handler did. */

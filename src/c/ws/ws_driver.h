@@ -70,6 +70,19 @@ typedef struct gks_ws_desc {
  * HLHSR modes. */
 #define GKS_WS_DESC_NODRAW(type_, name_, cat_, cls_, dc_)                                      .type = (type_), .name = (name_), .cat = (cat_), .cls = (cls_), .dc_units = GDC_OTHER,      .dc_x = (dc_), .dc_y = (dc_), .raster_x = (dc_), .raster_y = (dc_),                        .colr_avail = GAVAIL_COLR, .default_irg = GIRG_ALLOWED, .default_defer = GDEFER_ASAP,      .out = &gks_wdt_raster
 
+/* The driver of a workstation that draws nothing and has no entries of its own (null,
+ * WISS): the description table of GKS_WS_DESC_NODRAW with n_colr_ colours, the predefined
+ * gks_wdt_white_black and HLHSR mode NONE alone, and the driver table drv_ naming it. */
+#define GKS_WS_DRIVER_NODRAW(drv_, type_, name_, cat_, cls_, dc_, n_colr_)                 \
+    static const gks_ws_desc drv_##_desc = {                                               \
+        GKS_WS_DESC_NODRAW(type_, name_, cat_, cls_, dc_),                                 \
+        .n_colr = (n_colr_),                                                               \
+        .n_pred_colr = 2,                                                                  \
+        .pred_colr = gks_wdt_white_black,                                                  \
+        .hlhsr_modes = 1u << GHLHSR_NONE,                                                  \
+    };                                                                                     \
+    const gks_ws_driver drv_ = { .version = GKS_WS_DRIVER_VERSION, .desc = &drv_##_desc }
+
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
  * segment transformation and clipping to the viewport (if on); attributes resolved for this
  * workstation (individual or bundled by the aspect source flags, colour indices turned into
@@ -275,6 +288,10 @@ static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
 {
     return ws->host->file_taken(ws, path);
 }
+/* The file of frame `frame` of base (extension ext) claimed as above: 0 with *path
+ * (gks_alloc'd), else 300 or the claim's 21, 26 with *path NULL (ws_file.c). */
+int gks_ws_file_claim_frame(gks_ws *ws, const char *base, int frame, const char *ext,
+                            char **path);
 /* ESCAPE "set file name": the base name name[0..len) replaces *base (gks_alloc'd) when the
  * file of its frame `frame` (extension ext) can be claimed as above; 0, 21, 26 or 300, and
  * *base unchanged on error (ws_file.c). */

@@ -57,12 +57,23 @@ int gks_ws_escape_int(const Gescape_in_data *in, int lo, int hi, int *v)
     return 0;
 }
 
+int gks_ws_file_claim_frame(gks_ws *ws, const char *base, int frame, const char *ext,
+                            char **path)
+{
+    *path = gks_ws_file_frame(base, frame, ext);
+    int e = *path ? gks_ws_file_claim(ws, *path) : 300; /* 21: another workstation's file */
+    if (e) {
+        gks_free(*path);
+        *path = NULL;
+    }
+    return e;
+}
+
 int gks_ws_file_rename(gks_ws *ws, const char *name, size_t len, int frame, const char *ext,
                        char **base)
 {
-    char *b = gks_strndup(name, len);
-    char *f = b ? gks_ws_file_frame(b, frame, ext) : NULL;
-    int e = f ? gks_ws_file_claim(ws, f) : 300; /* 21: another workstation's file */
+    char *b = gks_strndup(name, len), *f = NULL;
+    int e = b ? gks_ws_file_claim_frame(ws, b, frame, ext, &f) : 300;
     gks_free(f);
     if (e) {
         gks_free(b);

@@ -200,12 +200,7 @@ static void list_inds(Gint ws_id, const unsigned char *(*def)(const gks_ws *), G
     gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
     if (!ws)
         return;
-    const unsigned char *d = def(ws);
-    gks_list_out w = gks_list_begin(out, cap, start);
-    for (int i = 1; i <= GKS_WDT_MAX_BUNDLES; i++)
-        if (d[i])
-            gks_list_put(&w, i);
-    *err_ind = gks_list_end(&w, len);
+    *err_ind = gks_list_flags(def(ws), 1, GKS_WDT_MAX_BUNDLES, cap, start, out, len);
 }
 
 static const unsigned char *def_line(const gks_ws *ws) { return ws->line_def; }

@@ -316,13 +316,9 @@ GKS_API void ginq_list_colr_inds(Gint ws_id, Gint num_elems_appl_list, Gint star
 {
     GKS_INQ_ARGS(err_ind, colr_inds, length_list);
     const gks_ws *ws = gks_inq_out_ws(ws_id, err_ind);
-    if (!ws)
-        return;
-    gks_list_out w = gks_list_begin(colr_inds, num_elems_appl_list, start_pos);
-    for (int i = 0; i < ws->drv->desc->n_colr; i++)
-        if (ws->colr_defined[i])
-            gks_list_put(&w, i);
-    *err_ind = gks_list_end(&w, length_list);
+    if (ws)
+        *err_ind = gks_list_flags(ws->colr_defined, 0, ws->drv->desc->n_colr - 1,
+                                  num_elems_appl_list, start_pos, colr_inds, length_list);
 }
 
 /* ------------------------------------------------------------------------ GDPs */

@@ -21,6 +21,7 @@
 #include "gks_ws.h"
 #include "gks_xform.h"
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 static gks_seg_store *store(void)
@@ -89,30 +90,6 @@ static gks_segment *existing(int fctid, Gint name)
     gks_segment *s = gks_seg_find(store(), name);
     if (!s)
         GKS_FAIL_RET(122, fctid, NULL);
-    return s;
-}
-
-/* Entry of SET SEGMENT TRANSFORMATION (3): the segment, then 2003 for a NULL matrix and
- * 308 for one with n elements of which one is not finite (GKS has no error of its own for
- * it: 308, as for the other non-finite reals, docs/BINDING.md; stored it would make the
- * segment vanish). The segment, or NULL after reporting. */
-static gks_segment *existing_tran(int fctid, Gint name, const double *m, int n)
-{
-    gks_segment *s = existing(fctid, name);
-    if (s && !m)
-        GKS_FAIL_RET(2003, fctid, NULL);
-    if (s && !finite_n(m, n))
-        GKS_FAIL_RET(308, fctid, NULL);
-    return s;
-}
-
-/* Entry of SET VISIBILITY, HIGHLIGHTING, DETECTABILITY: the segment, then 2000 for a value
- * other than off and on. The segment, or NULL after reporting. */
-static gks_segment *existing_switch(int fctid, Gint name, int v, int off, int on)
-{
-    gks_segment *s = existing(fctid, name);
-    if (s && v != off && v != on)
-        GKS_FAIL_RET(2000, fctid, NULL);
     return s;
 }
 
@@ -199,86 +176,95 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
     int vis = s->vis;
     if (s->n_ws == 0) /* stored nowhere any more: the segment ceases to exist */
         seg_delete(seg_name);
-    if (!vis)
+    if (vis && !pictures_changed(&ws_id, 1, GFN_DSGWK))
         return;
-    if (ws->irg_mode != GIRG_ALLOWED) {
-        ws->new_frame = GNEW_YES;
+}
+
+/* ------------------------------------------------------------ segment attributes */
+/* SET SEGMENT TRANSFORMATION (3): m the n elements (12: 3-D, 6: 2-D) of the matrix as given
+ * and recorded. 2003 for a NULL matrix, 308 for a non-finite element (GKS has no error of
+ * its own for it: 308, as for the other non-finite reals, docs/BINDING.md; stored it would
+ * make the segment vanish). Stored as 3x4: the 2-D matrix acts on x and y and z passes
+ * unchanged (ISO 8805: the 3-D one with identity z row and no z coupling). A visible
+ * segment's pictures change. */
+static void set_tran(int fctid, int item, Gint name, const double *m, int n)
+{
+    gks_segment *s = existing(fctid, name);
+    if (!s)
         return;
-    }
-    int err = gks_ws_regenerate(ws);
-    if (err)
-        GKS_FAIL(err, GFN_DSGWK);
+    if (!m)
+        GKS_FAIL(2003, fctid);
+    if (!finite_n(m, n))
+        GKS_FAIL(308, fctid);
+    if (n == 12)
+        memcpy(s->tran, m, sizeof s->tran);
+    else
+        gks_xform_mat23_to_mat34((const double (*)[3])m, s->tran);
+    if (gks_mf_on() && !gks_mf_rec(fctid, item, name, m))
+        return;
+    if (s->vis)
+        shown_change(s, fctid);
 }
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    gks_segment *s =
-        existing_tran(GFN_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
-    if (!s)
-        return;
-    memcpy(s->tran, tran_matrix, sizeof s->tran);
-    GKS_MF(SSGT3, seg_name, &tran_matrix[0][0]);
-    if (s->vis)
-        shown_change(s, GFN_SSGT3);
+    set_tran(GFN_SSGT3, GKSM_FN_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
 }
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    gks_segment *s = existing_tran(GFN_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
-    if (!s)
-        return;
-    /* The 2-D matrix acts on x and y; z passes unchanged (ISO 8805: a 2-D segment
-     * transformation is the 3-D one with identity z row and no z coupling). */
-    gks_xform_mat23_to_mat34(tran_matrix, s->tran);
-    GKS_MF(SSGT, seg_name, &tran_matrix[0][0]);
-    if (s->vis)
-        shown_change(s, GFN_SSGT);
+    set_tran(GFN_SSGT, GKSM_FN_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
 }
 
-GKS_API void gset_vis(Gint seg_name, Gseg_vis vis)
+/* SET VISIBILITY, HIGHLIGHTING, DETECTABILITY and SEGMENT PRIORITY: the function, its
+ * metafile item, the error for a value it does not take, the values and where the segment
+ * holds it. A switch (real 0) takes lo (off) or hi (on) and stores 1 for on in an int; the
+ * priority (real 1) takes a real in [lo, hi] and stores it in a double. A change of the
+ * stored value alters the segment's pictures always (visibility), while it is visible
+ * (priority) or never (highlighting and detectability do not show in a PNG picture). */
+enum { SHOWN_NEVER, SHOWN_IF_VISIBLE, SHOWN_ALWAYS };
+typedef struct {
+    int fctid, item, err, real;
+    double lo, hi;
+    size_t field;
+    int shown;
+} seg_attr;
+
+static const seg_attr VIS = { GFN_SVIS, GKSM_FN_SVIS, 2000, 0, GSEG_INVIS, GSEG_VIS,
+                              offsetof(gks_segment, vis), SHOWN_ALWAYS };
+static const seg_attr HIGHL = { GFN_SHLIT, GKSM_FN_SHLIT, 2000, 0, GSEG_NORM, GSEG_HIGHL,
+                                offsetof(gks_segment, highl), SHOWN_NEVER };
+static const seg_attr DET = { GFN_SDTEC, GKSM_FN_SDTEC, 2000, 0, GSEG_UNDET, GSEG_DET,
+                              offsetof(gks_segment, det), SHOWN_NEVER };
+static const seg_attr PRI = { GFN_SSGP, GKSM_FN_SSGP, 126, 1, 0.0, 1.0,
+                              offsetof(gks_segment, pri), SHOWN_IF_VISIBLE };
+
+static void set_attr(const seg_attr *k, Gint name, double v)
 {
-    gks_segment *s = existing_switch(GFN_SVIS, seg_name, vis, GSEG_INVIS, GSEG_VIS);
+    gks_segment *s = existing(k->fctid, name);
     if (!s)
         return;
-    GKS_MF(SVIS, seg_name, vis);
-    if ((vis == GSEG_VIS) != s->vis) {
-        s->vis = vis == GSEG_VIS;
-        shown_change(s, GFN_SVIS);
-    }
+    if (k->real ? !(v >= k->lo && v <= k->hi) : v != k->lo && v != k->hi)
+        GKS_FAIL(k->err, k->fctid);
+    if (gks_mf_on() && !(k->real ? gks_mf_rec(k->fctid, k->item, name, v)
+                                 : gks_mf_rec(k->fctid, k->item, name, (int)v)))
+        return;
+    char *f = (char *)s + k->field;
+    double now = k->real ? v : v == k->hi, was = k->real ? *(double *)f : *(int *)f;
+    if (now == was)
+        return;
+    if (k->real)
+        *(double *)f = now;
+    else
+        *(int *)f = (int)now;
+    if (k->shown == SHOWN_ALWAYS || (k->shown == SHOWN_IF_VISIBLE && s->vis))
+        shown_change(s, k->fctid);
 }
 
-GKS_API void gset_highl(Gint seg_name, Gseg_highl highl)
-{
-    gks_segment *s = existing_switch(GFN_SHLIT, seg_name, highl, GSEG_NORM, GSEG_HIGHL);
-    if (!s)
-        return;
-    GKS_MF(SHLIT, seg_name, highl);
-    s->highl = highl == GSEG_HIGHL;
-}
-
-GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri)
-{
-    gks_segment *s = existing(GFN_SSGP, seg_name);
-    if (!s)
-        return;
-    if (!(pri >= 0.0 && pri <= 1.0))
-        GKS_FAIL(126, GFN_SSGP);
-    GKS_MF(SSGP, seg_name, pri);
-    if (pri != s->pri) {
-        s->pri = pri;
-        if (s->vis)
-            shown_change(s, GFN_SSGP);
-    }
-}
-
-GKS_API void gset_det(Gint seg_name, Gseg_det det)
-{
-    gks_segment *s = existing_switch(GFN_SDTEC, seg_name, det, GSEG_UNDET, GSEG_DET);
-    if (!s)
-        return;
-    GKS_MF(SDTEC, seg_name, det);
-    s->det = det == GSEG_DET;
-}
+GKS_API void gset_vis(Gint seg_name, Gseg_vis vis) { set_attr(&VIS, seg_name, vis); }
+GKS_API void gset_highl(Gint seg_name, Gseg_highl highl) { set_attr(&HIGHL, seg_name, highl); }
+GKS_API void gset_seg_pri(Gint seg_name, Gfloat pri) { set_attr(&PRI, seg_name, pri); }
+GKS_API void gset_det(Gint seg_name, Gseg_det det) { set_attr(&DET, seg_name, det); }
 
 /* The segment `name` of a WISS function: 120, 124 (not on the WISS, or no such segment). */
 static gks_segment *on_wiss(int fctid, const gks_ws *wiss, Gint name)
@@ -300,21 +286,28 @@ static gks_ws *wiss_open(int fctid)
     return w;
 }
 
+/* Entry of ASSOCIATE SEGMENT WITH WORKSTATION and COPY SEGMENT TO WORKSTATION: the state
+ * check, 20, 25, 27 (no WISS), the checks of gks_ws_checked (flags) on ws_id, then the
+ * segment on the WISS (120, 124). The segment and *ws, or NULL after reporting. */
+static gks_segment *wiss_to_ws(int fctid, Gint ws_id, Gint name, unsigned flags, gks_ws **ws)
+{
+    if (gks_check_state(fctid))
+        return NULL;
+    if (ws_id < 0)
+        GKS_FAIL_RET(20, fctid, NULL);
+    if (!gks_ws_lookup(ws_id))
+        GKS_FAIL_RET(25, fctid, NULL);
+    gks_ws *wiss = wiss_open(fctid);
+    if (!wiss)
+        return NULL;
+    *ws = gks_ws_checked(fctid, ws_id, flags);
+    return *ws ? on_wiss(fctid, wiss, name) : NULL;
+}
+
 GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
 {
-    if (gks_check_state(GFN_ASGWK))
-        return;
-    if (ws_id < 0)
-        GKS_FAIL(20, GFN_ASGWK);
-    if (!gks_ws_lookup(ws_id))
-        GKS_FAIL(25, GFN_ASGWK);
-    gks_ws *wiss = wiss_open(GFN_ASGWK);
-    if (!wiss)
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_ASGWK, ws_id, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT);
-    if (!ws)
-        return;
-    gks_segment *s = on_wiss(GFN_ASGWK, wiss, seg_name);
+    gks_ws *ws;
+    gks_segment *s = wiss_to_ws(GFN_ASGWK, ws_id, seg_name, GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT, &ws);
     if (!s || gks_seg_on_ws(s, ws_id))
         return; /* already stored there: nothing to do */
     if (gks_seg_ws_add(s, ws_id))
@@ -326,23 +319,10 @@ GKS_API void gassoc_seg_ws(Gint ws_id, Gint seg_name)
 
 GKS_API void gcopy_seg_ws(Gint ws_id, Gint seg_name)
 {
-    if (gks_check_state(GFN_CSGWK))
-        return;
-    if (ws_id < 0)
-        GKS_FAIL(20, GFN_CSGWK);
-    if (!gks_ws_lookup(ws_id))
-        GKS_FAIL(25, GFN_CSGWK);
-    gks_ws *wiss = wiss_open(GFN_CSGWK);
-    if (!wiss)
-        return;
-    gks_ws *ws = gks_ws_checked(GFN_CSGWK, ws_id,
-                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS);
-    if (!ws)
-        return;
-    gks_segment *s = on_wiss(GFN_CSGWK, wiss, seg_name);
-    if (!s)
-        return;
-    int err = gks_replay_segment(ws, s);
+    gks_ws *ws;
+    gks_segment *s = wiss_to_ws(GFN_CSGWK, ws_id, seg_name,
+                                GKS_WSC_NOT_MI | GKS_WSC_NOT_INPUT | GKS_WSC_NOT_WISS, &ws);
+    int err = s ? gks_replay_segment(ws, s) : 0;
     if (err)
         GKS_FAIL(err, GFN_CSGWK);
 }
@@ -417,20 +397,23 @@ GKS_API void ginq_name_open_seg(Gint *err_ind, Gint *seg_name)
     *seg_name = gks_ctx()->sl->open_seg;
 }
 
+/* The segment of an inquiry: GKS open (7), then 120, 122; NULL with *err_ind set. */
+static const gks_segment *inq_seg(Gint name, Gint *err_ind)
+{
+    if (gks_inq_begin(err_ind, GKS_S_OPEN))
+        return NULL;
+    const gks_segment *s = name < 1 ? NULL : gks_seg_find(store(), name);
+    if (!s)
+        *err_ind = name < 1 ? 120 : 122;
+    return s;
+}
+
 GKS_API void ginq_seg_attrs3(Gint seg_name, Gint *err_ind, Gseg_attrs3 *attrs)
 {
     GKS_INQ_ARGS(err_ind, attrs);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
+    const gks_segment *s = inq_seg(seg_name, err_ind);
+    if (!s)
         return;
-    if (seg_name < 1) {
-        *err_ind = 120;
-        return;
-    }
-    const gks_segment *s = gks_seg_find(store(), seg_name);
-    if (!s) {
-        *err_ind = 122;
-        return;
-    }
     attrs->seg_name = s->name;
     memcpy(attrs->tran_matrix, s->tran, sizeof attrs->tran_matrix);
     attrs->vis = s->vis ? GSEG_VIS : GSEG_INVIS;
@@ -457,18 +440,10 @@ GKS_API void ginq_set_assoc_wss(Gint seg_name, Gint num_elems_appl_list, Gint st
                                 Gint *err_ind, Gint_list *ws_ids, Gint *length_list)
 {
     GKS_INQ_ARGS(err_ind, ws_ids, length_list);
-    if (gks_inq_begin(err_ind, GKS_S_OPEN))
-        return;
-    if (seg_name < 1) {
-        *err_ind = 120;
-        return;
-    }
-    const gks_segment *s = gks_seg_find(store(), seg_name);
-    if (!s) {
-        *err_ind = 122;
-        return;
-    }
-    *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids, length_list);
+    const gks_segment *s = inq_seg(seg_name, err_ind);
+    if (s)
+        *err_ind = gks_list_copy(s->ws, s->n_ws, num_elems_appl_list, start_pos, ws_ids,
+                                 length_list);
 }
 
 GKS_API void ginq_num_seg_pris(Gint ws_type, Gint *err_ind, Gint *num_seg_pris)

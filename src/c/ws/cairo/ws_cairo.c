@@ -842,15 +842,11 @@ static int page_emit(vec_ws *v)
 static int file_write(gks_ws *ws, vec_ws *v)
 {
     double w = v->snap.w_pt, h = v->snap.h_pt;
-    char *path = gks_ws_file_frame(v->base, v->frame, vec_ext[v->fmt]);
-    if (!path)
-        return 300;
+    char *path;
     /* a later frame's name may be another workstation's file: 21, nothing written */
-    int c = gks_ws_file_claim(ws, path);
-    if (c) {
-        gks_free(path);
+    int c = gks_ws_file_claim_frame(ws, v->base, v->frame, vec_ext[v->fmt], &path);
+    if (c)
         return c;
-    }
     cairo_surface_t *s;
     vec_buf b = { 0 };
     if (v->fmt == VEC_SVG) {
@@ -1010,13 +1006,9 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         }
         return 0;
     }
-    if (func_id <= GESC_RT_CLIP_SECONDARY && func_id >= GESC_RT_SPD)
-        return ws_rt_escape(v->rt, func_id, in, out);
-    if (func_id != GESC_SET_FILE_NAME)
-        return 180;
     /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
     int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
-    return gks_ws_file_rename(ws, in->str, in->str_len, fr, vec_ext[v->fmt], &v->base);
+    return ws_rt_file_escape(v->rt, ws, func_id, in, out, fr, vec_ext[v->fmt], &v->base);
 }
 
 /* --- TEXT as text: the driver entry ------------------------------------------------------ */

@@ -202,15 +202,11 @@ static int png_update(gks_ws *ws)
     gks_raster_fb *pic;
     if (ws_png_render_compose(p->render, ws, fb, &pic))
         return 300;
-    char *path = gks_ws_file_frame(p->base, p->frame, ".png");
-    if (!path)
-        return 300;
+    char *path;
     /* a later frame's name, or one an ESCAPE set, may be another workstation's file */
-    int c = gks_ws_file_claim(ws, path);
-    if (c) {
-        gks_free(path);
+    int c = gks_ws_file_claim_frame(ws, p->base, p->frame, ".png", &path);
+    if (c)
         return c;
-    }
     int r = gks_raster_fb_write_png(pic, path, p->compression);
     gks_free(path);
     if (r != GKS_RASTER_OK)
@@ -267,11 +263,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return gks_ws_escape_int(in, GKS_RASTER_PNG_FAST, GKS_RASTER_PNG_LEVEL_MAX,
                                  &p->compression);
     }
-    if (func_id <= GESC_RT_CLIP_SECONDARY) /* the ray-tracing controls */
-        return ws_rt_escape(p->rt, func_id, in, out);
-    if (func_id != GESC_SET_FILE_NAME)
-        return 180;
-    return gks_ws_file_rename(ws, in->str, in->str_len, p->frame, ".png", &p->base);
+    return ws_rt_file_escape(p->rt, ws, func_id, in, out, p->frame, ".png", &p->base);
 }
 
 /* Pixel readback: the composed picture (retained primitives drawn over the immediate

@@ -1266,3 +1266,13 @@ int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_d
     }
     return 180;
 }
+
+int ws_rt_file_escape(ws_rt *r, gks_ws *ws, int func_id, const Gescape_in_data *in,
+                      Gescape_out_data *out, int frame, const char *ext, char **base)
+{
+    if (func_id <= GESC_RT_CLIP_SECONDARY && func_id >= GESC_RT_SPD)
+        return ws_rt_escape(r, func_id, in, out);
+    if (func_id != GESC_SET_FILE_NAME)
+        return 180;
+    return gks_ws_file_rename(ws, in->str, in->str_len, frame, ext, base);
+}

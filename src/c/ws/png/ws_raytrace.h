@@ -40,6 +40,11 @@ void ws_rt_last_stats(const ws_rt *r, rt_stats *st);
  * as documented in gks.h, ints[0] = ws id already checked by the core). Returns 0, 180
  * (identifier not a ray-tracing escape) or 182 (bad data record: nothing changed). */
 int ws_rt_escape(ws_rt *r, int func_id, const Gescape_in_data *in, Gescape_out_data *out);
+/* The ESCAPEs a file workstation with ray tracing takes after its own: the ray-tracing ones
+ * (ws_rt_escape on r) and GESC_SET_FILE_NAME (gks_ws_file_rename of *base, the file of frame
+ * `frame` with extension ext); 180 for any other identifier. */
+int ws_rt_file_escape(ws_rt *r, gks_ws *ws, int func_id, const Gescape_in_data *in,
+                      Gescape_out_data *out, int frame, const char *ext, char **base);
 /* Records an area primitive (FILL AREA / FILL AREA SET: GKS_PRIM_FILL_AREA with n_loops >=
  * 1; CELL ARRAY: GKS_PRIM_CELL_ARRAY; other kinds are ignored): points transformed by the
  * view orientation matrix of prim->view_ind into VRC3. A CELL ARRAY with clip = 1 that is not

@@ -7,15 +7,4 @@
  */
 #include "ws_driver.h"
 
-static const gks_ws_desc wiss_desc = {
-    GKS_WS_DESC_NODRAW(GWS_TYPE_WISS, "wiss", GCAT_WISS, GCLASS_OTHER, 1),
-    .n_colr = 2,
-    .n_pred_colr = 2,
-    .pred_colr = gks_wdt_white_black,
-    .hlhsr_modes = 1u << GHLHSR_NONE,
-};
-
-const gks_ws_driver gks_ws_wiss_driver = {
-    .version = GKS_WS_DRIVER_VERSION,
-    .desc = &wiss_desc,
-};
+GKS_WS_DRIVER_NODRAW(gks_ws_wiss_driver, GWS_TYPE_WISS, "wiss", GCAT_WISS, GCLASS_OTHER, 1, 2);
