@@ -167,6 +167,7 @@ typedef struct rt_build {
     double *pts;
     size_t cappts;
     uint32_t *cnt;
+    char pad[RT_LINE]; /* the next part's scratch on other cache lines (RT_LINE) */
 } rt_build;
 
 static void rt_build_free(rt_build *b)
@@ -725,6 +726,7 @@ typedef struct rt_sub_part {
     size_t nref;
     size_t sub0, cell0, ref0; /* its first grid, sub cell and reference in the grid's arrays */
     int err;             /* 1: no memory, 2: too many cells */
+    char pad[RT_LINE];   /* the next part on other cache lines (RT_LINE) */
 } rt_sub_part;
 
 typedef struct rt_sub_job {
@@ -1055,7 +1057,7 @@ static void rt_frame_box_part(void *arg, int k, int n)
     rt_frame_job *j = arg;
     const rt_scene *sc = j->sc;
     rt_build *b = &j->b[k];
-    double *bb = j->bb[k];
+    double bb[6]; /* here, not in j: the parts' boxes share cache lines there */
     size_t lo, hi;
     rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     int err = 0;
@@ -1074,6 +1076,7 @@ static void rt_frame_box_part(void *arg, int k, int n)
             }
         }
     }
+    memcpy(j->bb[k], bb, sizeof bb);
     j->err[k] = err;
 }
 
@@ -1180,16 +1183,20 @@ static void rt_frame_cand_part(void *arg, int k, int n)
     rt_build *b = &j->b[k];
     size_t lo, hi;
     rt_par_range(sc->nprim, k, n, &lo, &hi);
-    int err = 0;
-    j->nc[k] = 0;
+    int err = 0, nc = 0;
+    double area[RT_FRAME_CAND]; /* here, not in j: the parts' lists share cache lines there */
+    size_t cand[RT_FRAME_CAND];
     for (size_t i = lo; i < hi && !err; i++) {
         size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
         double bb[6];
         rt_pts_bbox(b->pts, npts, bb);
         double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
         double ar = rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
-        rt_cand_add(j->area[k], j->cand[k], &j->nc[k], ar, i);
+        rt_cand_add(area, cand, &nc, ar, i);
     }
+    memcpy(j->area[k], area, (size_t)nc * sizeof *area);
+    memcpy(j->cand[k], cand, (size_t)nc * sizeof *cand);
+    j->nc[k] = nc;
     j->err[k] = err;
 }
 

@@ -35,6 +35,10 @@ void rt_big_free(rt_big *b);
 
 /* ---- the thread pool (rt_pool.c): fork-join loops ---- */
 #define RT_PAR_MAX 64 /* threads at most */
+/* bytes of a cache line: the padding after a per-thread record that its thread writes while
+   the next record's thread writes that one (records side by side in an array), so the two
+   threads do not take the same line from each other (false sharing) */
+#define RT_LINE 64
 typedef void (*rt_par_fn)(void *arg, int k, int n);
 /* threads for a request as rt_build_options.threads takes it (0: online CPUs), 1 .. RT_PAR_MAX */
 int rt_par_threads(int requested);

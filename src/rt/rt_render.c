@@ -143,6 +143,7 @@ typedef struct rt_worker {
     int eye_hit;             /* the latest eye ray hit a primitive */
     int err;
     unsigned char *payload;  /* with a tile hook: one tile's payload */
+    char pad[RT_LINE];       /* the next worker's record on other cache lines (RT_LINE) */
 } rt_worker;
 
 static inline double dot3(const double a[3], const double b[3])
