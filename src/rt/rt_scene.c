@@ -514,13 +514,55 @@ static int rt_prim_init(rt_scene *sc, rt_prim *pr, int id, int front, int back)
     return RT_OK;
 }
 
-/* the unit normal of the triangle v (9 doubles, finite): 0 if it is degenerate. The one
-   computation of a triangle's normal (when it is added and at every hit: the same bits). */
+/* The unit normal of the triangle v (9 doubles, sane): rt_points_frame and rt_poly_normal for
+   3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
+   degenerate. The one computation of a triangle's normal, when it is added and at its hits. */
+static inline int rt_tri_normal_sane(const double *v, double n[3])
+{
+    double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY}, c[3];
+    rt_bbox_add(pb, v);
+    rt_bbox_add(pb, v + 3);
+    rt_bbox_add(pb, v + 6);
+    const double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
+    if (!(ext > 0.0) || !isfinite(ext))
+        return 0;
+    for (int j = 0; j < 3; j++) {
+        c[j] = 0.0;
+        c[j] += (v[j] - pb[j]) / 3.0;
+        c[j] += (v[3 + j] - pb[j]) / 3.0;
+        c[j] += (v[6 + j] - pb[j]) / 3.0;
+        c[j] += pb[j];
+    }
+    n[0] = n[1] = n[2] = 0.0;
+    for (int i = 0; i < 3; i++) {
+        const double *a = v + 3 * i, *b = v + 3 * (i == 2 ? 0 : i + 1);
+        double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
+        double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
+        n[0] += (ay - by) * (az + bz);
+        n[1] += (az - bz) * (ax + bx);
+        n[2] += (ax - bx) * (ay + by);
+    }
+    const double tol = 1e-12 * ext * ext;
+    const double m = rt_sh_absmax3(n);
+    if (m != 0.0 && isfinite(m)) {
+        const double x = n[0] / m, y = n[1] / m, z = n[2] / m;
+        const double len = m * sqrt(x * x + y * y + z * z);
+        if (len > tol && isfinite(len)) {
+            for (int i = 0; i < 3; i++)
+                n[i] /= len;
+            return 1;
+        }
+    }
+    static const int three = 3; /* nearly degenerate: the general fallback */
+    return rt_poly_normal(v, 3, &three, 1, c, ext, n);
+}
+
+/* the same for any 9 doubles: 0 also if a vertex is not sane */
 static int rt_tri_normal(const double *v, double nrm[3])
 {
-    static const int three = 3;
-    double pb[6], c[3], ext;
-    return rt_points_frame(v, 3, pb, c, &ext) && rt_poly_normal(v, 3, &three, 1, c, ext, nrm);
+    if (!sane3(v) || !sane3(v + 3) || !sane3(v + 6))
+        return 0;
+    return rt_tri_normal_sane(v, nrm);
 }
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
@@ -546,7 +588,7 @@ void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
     const double *n;
     switch (p->kind) {
     case RT_KIND_TRI:
-        (void)rt_tri_normal(&sc->tri[p->data].v[0][0], ng);
+        (void)rt_tri_normal_sane(&sc->tri[p->data].v[0][0], ng);
         return;
     case RT_KIND_QUAD:
         n = sc->quad[p->data].n;
