@@ -76,12 +76,14 @@ typedef struct gks_cur_attrs {
 } gks_cur_attrs;
 
 /* A FILL AREA primitive as resolved for one workstation (gks_attr_area_prim): kept with
- * what it was made from, the current attributes a (compared bytewise) and the generation
- * of the workstation tables, so that a run of areas with the same attributes resolves them
- * once. Patterns are not kept (their colours are allocated per primitive). */
+ * what it was made from, the attributes a (compared bytewise unless attrs_gen says the
+ * state list's block is unchanged) and the generation of the workstation tables, so that
+ * a run of areas with the same attributes resolves them once. Patterns are not kept
+ * (their colours are allocated per primitive). */
 typedef struct gks_area_memo {
     const gks_ws *ws;           /* NULL: empty */
     uint64_t tables_gen;        /* gks_context.tables_gen when made */
+    uint64_t attrs_gen;         /* gks_state_list.attrs_gen when made from it, else 0 */
     gks_cur_attrs a;
     gks_prim p;                 /* the primitive sent, geometry set by each caller */
     int edge_flag;              /* p.attrs.edge_flag as resolved */
@@ -98,7 +100,10 @@ typedef struct gks_state_list {
     int n_open;
     int active_ws[GKS_MAX_ACTIVE_WS];
     int n_active;
-    gks_cur_attrs attrs;
+    /* The current attributes: read here, written only through gks_attrs_w (const so that
+     * a write past it does not compile), which counts every write in attrs_gen. */
+    const gks_cur_attrs attrs;
+    uint64_t attrs_gen;         /* from 1; bumped by every gks_attrs_w */
     int cur_tnr;
     gks_norm_tran tran[GKS_MAX_NORM_TRAN + 1];
     int tran_pri[GKS_MAX_NORM_TRAN + 1]; /* viewport input priority, highest first */
@@ -158,6 +163,19 @@ static inline gks_context *gks_ctx(void)
 static inline void gks_ws_tables_changed(void)
 {
     gks_ctx()->tables_gen++;
+}
+
+/* A state list's current attributes for writing: counts the write (attrs_gen), so that
+ * what the pipeline resolved from them is made again. */
+static inline gks_cur_attrs *gks_attrs_w_of(gks_state_list *sl)
+{
+    sl->attrs_gen++;
+    return (gks_cur_attrs *)&sl->attrs; /* the state list is allocated, never const */
+}
+/* The same for the state list of open GKS. */
+static inline gks_cur_attrs *gks_attrs_w(void)
+{
+    return gks_attrs_w_of(gks_ctx()->sl);
 }
 
 /* Workstation state list of open workstation ws_id, or NULL. */

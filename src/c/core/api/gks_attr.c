@@ -51,7 +51,7 @@ void gks_attr_init(gks_cur_attrs *a)
 }
 
 /* ---------------------------------------------------------------- individual setters */
-#define ATTRS() (&gks_ctx()->sl->attrs)
+#define ATTRS() gks_attrs_w()
 
 /* Body of an integer setter: state check, `bad` -> error `err`, then assignment. */
 #define SET_INT(FN, FIELD, BAD, ERR)                                                 \

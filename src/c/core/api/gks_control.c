@@ -24,16 +24,17 @@
 
 static void init_state_list(gks_state_list *sl)
 {
-    gks_attr_init(&sl->attrs);
-    sl->attrs.line_colr_ind = 1;
-    sl->attrs.fill_colr_ind = 1;
+    gks_cur_attrs *a = gks_attrs_w_of(sl);
+    gks_attr_init(a);
+    a->line_colr_ind = 1;
+    a->fill_colr_ind = 1;
     for (int k = 0; k < 2; k++) {
-        sl->attrs.area_props[k] = (Garea_props){ 1, 1, 0, { 1, 1, 1 }, 1, 0, 1 };
-        sl->attrs.refl_eq[k] = GREFL_NONE;
+        a->area_props[k] = (Garea_props){ 1, 1, 0, { 1, 1, 1 }, 1, 0, 1 };
+        a->refl_eq[k] = GREFL_NONE;
     }
-    sl->attrs.light_mask = 0;
+    a->light_mask = 0;
     for (int i = 0; i < GKS_N_ASF; i++)
-        sl->attrs.asf[i] = gks_legacy_asf(); /* GKS3D_ASF (legacy programs) */
+        a->asf[i] = gks_legacy_asf(); /* GKS3D_ASF (legacy programs) */
     for (int i = 0; i <= GKS_MAX_NORM_TRAN; i++) {
         sl->tran_pri[i] = i; /* 0 highest, then ascending numbers (ISO 7942 6.4) */
         sl->tran[i].win = (Glimit3){ 0, 1, 0, 1, 0, 1 };

@@ -38,7 +38,7 @@ static void set_props(int fct, int side, const Garea_props *props)
     int err = check_props(props);
     if (err)
         GKS_FAIL(err, fct);
-    gks_ctx()->sl->attrs.area_props[side] = *props;
+    gks_attrs_w()->area_props[side] = *props;
 }
 
 GKS_API void gset_area_props(const Garea_props *props) { set_props(GFN_SAPR, 0, props); }
@@ -50,7 +50,7 @@ static void set_refl(int fct, int side, Gint refl_eq)
         return;
     if (refl_eq < GREFL_NONE || refl_eq > GREFL_AMB_DIFF_SPEC)
         GKS_FAIL(524, fct);
-    gks_ctx()->sl->attrs.refl_eq[side] = refl_eq;
+    gks_attrs_w()->refl_eq[side] = refl_eq;
 }
 
 GKS_API void gset_refl_eq(Gint refl_eq) { set_refl(GFN_SRFEQ, 0, refl_eq); }
@@ -119,7 +119,7 @@ GKS_API void gset_light_src_state(const Gint_list *activate, const Gint_list *de
     uint64_t on = list_mask(activate), off = list_mask(deactivate);
     if (on & off)
         GKS_FAIL(535, GFN_SLSS);
-    uint64_t *m = &gks_ctx()->sl->attrs.light_mask;
+    uint64_t *m = &gks_attrs_w()->light_mask;
     *m = (*m | on) & ~off;
 }
 

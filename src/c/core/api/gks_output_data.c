@@ -408,7 +408,7 @@ static void set_shad(int fct, int side, Gint method)
         return;
     if (method < GSHAD_NONE || method > GSHAD_NORM)
         GKS_FAIL(523, fct);
-    gks_ctx()->sl->attrs.int_shad[side] = method;
+    gks_attrs_w()->int_shad[side] = method;
 }
 
 GKS_API void gset_int_shad_meth(Gint method) { set_shad(GFN_SISM, 0, method); }

@@ -19,7 +19,7 @@ GKS_API void gset_view_ind(Gint view_ind)
         return;
     if (view_ind < 0)
         GKS_FAIL(514, GFN_SVWI);
-    gks_ctx()->sl->attrs.view_ind = view_ind;
+    gks_attrs_w()->view_ind = view_ind;
 }
 
 static int matrix_finite(const Gmatrix3 m)

@@ -9,6 +9,7 @@
 #include "gks_state.h"
 #include "gks_ws.h"
 #include "gks_xform.h"
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -265,9 +266,16 @@ gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const dou
 {
     gks_context *c = gks_ctx();
     gks_area_memo *e = &c->sl->area_memo[(unsigned)ws->id % GKS_MAX_OPEN_WS];
+    /* The state list's block is written only through gks_attrs_w, which bumps attrs_gen:
+     * the same generation is the same bytes. Other blocks (a segment's bound attributes)
+     * and a changed generation are compared bytewise. */
+    const uint64_t gen = a == &c->sl->attrs ? c->sl->attrs_gen : 0;
     *pattern = NULL;
     *err = 0;
-    if (e->ws == ws && e->tables_gen == c->tables_gen && memcmp(&e->a, a, sizeof *a) == 0) {
+    if (e->ws == ws && e->tables_gen == c->tables_gen &&
+        ((gen && e->attrs_gen == gen) || memcmp(&e->a, a, sizeof *a) == 0)) {
+        assert(memcmp(&e->a, a, sizeof *a) == 0); /* a write past gks_attrs_w */
+        e->attrs_gen = gen;
         e->p.attrs.edge_flag = e->edge_flag; /* the caller may have cleared it */
         return &e->p;
     }
@@ -280,6 +288,7 @@ gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const dou
     }
     e->ws = ws;
     e->tables_gen = c->tables_gen;
+    e->attrs_gen = gen;
     memcpy(&e->a, a, sizeof *a); /* with its padding: compared bytewise */
     e->p = *buf;
     e->edge_flag = buf->attrs.edge_flag;
