@@ -328,8 +328,8 @@ void rt_grid_free(rt_grid *g)
     free(g->sub);
     free(g->dist);
     free(g->subs);
-    free(g->soff);
-    free(g->srefs);
+    rt_big_free(&g->soff_m);
+    rt_big_free(&g->srefs_m);
     memset(g, 0, sizeof *g);
 }
 
@@ -716,7 +716,8 @@ static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6]
  * own first ones; the parts are then laid out one after the other in cell order, which gives
  * the arrays one part would give. Each grid's (cell, primitive) pairs are sorted into the
  * part's own cell offsets and references as soon as the grid is made (the pair scratch holds
- * one grid's pairs only); the parts' arrays never move (rt_big) and are copied into place. */
+ * one grid's pairs only); the parts' arrays never move (rt_big); part 0's become the grid's
+ * and the others are copied behind them (rt_sub_place). */
 typedef struct rt_sub_part {
     size_t c0, c1;       /* top cells [c0, c1) */
     rt_subgrid *subs;    /* its grids (first: counted from its first sub cell) */
@@ -736,6 +737,7 @@ typedef struct rt_sub_job {
     uint8_t *keep;       /* per top reference: stays in the top cell's list */
     double eps, sub_factor;
     int sub_min;
+    int nparts;
 } rt_sub_job;
 
 static void rt_sub_cells(void *arg, int k, int n)
@@ -848,19 +850,38 @@ static void rt_sub_cells(void *arg, int k, int n)
     pt->err = err;
 }
 
-/* part k's cell offsets and references into the grid's arrays at its place */
+/* The grid's arrays are part 0's grown to the whole (rt_big: in place); the parts after it
+ * are copied behind part 0's, cell offsets shifted by the part's first reference. Thread k of
+ * n copies the k-th n-th of the cells after part 0's and of the references after part 0's. */
 static void rt_sub_place(void *arg, int k, int n)
 {
-    (void)n;
     rt_sub_job *j = arg;
-    const rt_sub_part *pt = &j->part[k];
     rt_grid *g = &j->sc->grid;
-    const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
-    uint32_t *to = g->soff + pt->cell0;
-    for (size_t c = 0; c < pt->total; c++)
-        to[c] = off[c] + r0;
-    if (pt->nref)
-        memcpy(g->srefs + pt->ref0, pt->refs.p, pt->nref * sizeof(uint32_t));
+    const rt_sub_part *part = j->part;
+    uint32_t *soff = g->soff_m.p, *srefs = g->srefs_m.p;
+    size_t lo, hi;
+    rt_par_range(g->nsubcells - part[0].total, k, n, &lo, &hi);
+    lo += part[0].total;
+    hi += part[0].total;
+    for (int q = 1; q < j->nparts && lo < hi; q++) {
+        const rt_sub_part *pt = &part[q];
+        const size_t a = lo > pt->cell0 ? lo : pt->cell0;
+        const size_t e = hi < pt->cell0 + pt->total ? hi : pt->cell0 + pt->total;
+        const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
+        for (size_t c = a; c < e; c++)
+            soff[c] = off[c - pt->cell0] + r0;
+    }
+    rt_par_range(g->nsrefs - part[0].nref, k, n, &lo, &hi);
+    lo += part[0].nref;
+    hi += part[0].nref;
+    for (int q = 1; q < j->nparts && lo < hi; q++) {
+        const rt_sub_part *pt = &part[q];
+        const size_t a = lo > pt->ref0 ? lo : pt->ref0;
+        const size_t e = hi < pt->ref0 + pt->nref ? hi : pt->ref0 + pt->nref;
+        if (a < e)
+            memcpy(srefs + a, (const uint32_t *)pt->refs.p + (a - pt->ref0),
+                   (e - a) * sizeof(uint32_t));
+    }
 }
 
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
@@ -898,7 +919,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
             part[k - 1].c1 = part[k].c0;
     }
     part[nt - 1].c1 = g->ncells;
-    rt_sub_job job = {sc, bs, part, keep, eps, sub_factor, sub_min};
+    rt_sub_job job = {sc, bs, part, keep, eps, sub_factor, sub_min, nt};
     rt_par_run(nt, rt_sub_cells, &job);
     int err = 0;
     size_t nsubs = 0, total = 0, nref = 0;
@@ -916,10 +937,19 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         err = 2;
     if (!err) {
         g->subs = rt_alloc_array(nsubs ? nsubs : 1, sizeof(rt_subgrid));
-        g->soff = rt_alloc_array(total + 1, sizeof(uint32_t));
-        g->srefs = rt_alloc_array(nref, sizeof(uint32_t));
-        if (!g->subs || !g->soff || !g->srefs)
+        if (!g->subs || !rt_big_grow(&part[0].off, total + 1, sizeof(uint32_t)) ||
+            !rt_big_grow(&part[0].refs, nref ? nref : 1, sizeof(uint32_t)))
             err = 1;
+    }
+    if (!err) {
+        g->soff_m = part[0].off;
+        g->srefs_m = part[0].refs;
+        memset(&part[0].off, 0, sizeof part[0].off);
+        memset(&part[0].refs, 0, sizeof part[0].refs);
+        g->soff = g->soff_m.p;
+        g->srefs = g->srefs_m.p;
+        g->nsubcells = total;
+        g->nsrefs = nref;
     }
     if (!err) {
         for (int k = 0; k < nt; k++) {
@@ -955,8 +985,6 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
     free(keep);
     if (err)
         return err == 2 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
-    g->nsubcells = total;
-    g->nsrefs = nref;
     return RT_OK;
 }
 

@@ -163,6 +163,7 @@ typedef struct rt_grid {
     uint32_t *soff;    /* sub-grid cells + 1 */
     uint32_t *srefs;
     size_t nsubcells, nsrefs;
+    rt_big soff_m, srefs_m; /* the storage of soff and srefs */
 } rt_grid;
 
 struct rt_scene {
