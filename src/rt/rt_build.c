@@ -215,7 +215,7 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 {
     const rt_prim *p = &sc->prim[i];
     if (p->kind == RT_KIND_TRI) {
-        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
+        memcpy(out, rt_tri_vert(sc, p->data, (int)k), 3 * sizeof(double));
     } else if (p->kind == RT_KIND_QUAD) {
         memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
     } else if (p->kind == RT_KIND_CELL) {
@@ -237,7 +237,8 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
 {
     if (p->kind == RT_KIND_TRI && b->cappts >= 9) { /* the common case, without calls */
-        memcpy(b->pts, sc->tri[p->data].v, 9 * sizeof(double));
+        for (int k = 0; k < 3; k++)
+            memcpy(b->pts + 3 * k, rt_tri_vert(sc, p->data, k), 3 * sizeof(double));
         return 3;
     }
     const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);
