@@ -215,7 +215,7 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 {
     const rt_prim *p = &sc->prim[i];
     if (p->kind == RT_KIND_TRI) {
-        memcpy(out, sc->tri[p->data].v[k], 3 * sizeof(double));
+        memcpy(out, rt_tri_vert(sc, p->data, (int)k), 3 * sizeof(double));
     } else if (p->kind == RT_KIND_QUAD) {
         memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
     } else if (p->kind == RT_KIND_CELL) {
@@ -237,7 +237,8 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
 {
     if (p->kind == RT_KIND_TRI && b->cappts >= 9) { /* the common case, without calls */
-        memcpy(b->pts, sc->tri[p->data].v, 9 * sizeof(double));
+        for (int k = 0; k < 3; k++)
+            memcpy(b->pts + 3 * k, rt_tri_vert(sc, p->data, k), 3 * sizeof(double));
         return 3;
     }
     const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);
@@ -384,10 +385,14 @@ static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], dou
 
 /* Triangle t (edges e, normal n as rt_tri_box takes them) against the cells c0 .. c1 of g
  * (at most RT_SPAN per axis), pushing (base + cell, prim) for each cell it overlaps: the same
- * decisions as rt_tri_box cell by cell, bit for bit, with every product that depends on one
- * axis's cell only (vertex offsets from the cell centre, their products with the edge and
- * normal components, the radii's terms) computed once per axis and cell row; a cell then
- * costs the subtractions, additions and comparisons of the test. 0: no memory. */
+ * decisions as rt_tri_box cell by cell, bit for bit (a cell is taken when no test separates,
+ * whatever the order of the tests). Every product that depends on one axis's cell only
+ * (vertex offsets from the cell centre, their products with the edge and normal components,
+ * the radii's terms) is computed once per axis and cell row. The 9 edge axes e_i x X, e_i x Y, e_i x Z come in
+ * three groups, each depending on the cells of two axes only (e_i x X on the Y and Z cells):
+ * a group's result is computed once per cell pair and kept for the other cells sharing it
+ * (X group: per row of the x loop; Y group: per x within a z slab; Z group: per (x, y) over
+ * all z). 0: no memory. */
 enum { RT_SPAN = 32 };
 
 typedef struct rt_axis_cell {
@@ -398,6 +403,24 @@ typedef struct rt_axis_cell {
     double nv, nh;   /* n[a] * v[0], h * |n[a]| */
     int sep;         /* the box face of this axis separates */
 } rt_axis_cell;
+
+/* rt_tri_box's edge tests, with (X, Y, Z) the axes 0, 1, 2 and b1 = a + 1, b2 = a + 2:
+   X: ey * vz - ez * vy, h_y * |e_z| + h_z * |e_y|: ey*vz is ac[2].ew (b2 of 2 is 1),
+      ez*vy is ac[1].ev (b1 of 1 is 2); h_y|e_z| is ac[1].hr[0], h_z|e_y| ac[2].hr[1]
+   Y: ez * vx - ex * vz, h_x |e_z| + h_z |e_x|: ez*vx ac[0].ew, ex*vz ac[2].ev;
+      h_x|e_z| ac[0].hr[1], h_z|e_x| ac[2].hr[0]
+   Z: ex * vy - ey * vx, h_x |e_y| + h_y |e_x|: ex*vy ac[1].ew, ey*vx ac[0].ev;
+      h_x|e_y| ac[0].hr[0], h_y|e_x| ac[1].hr[1]
+   rt_edge_group(p, q) with (p, q) = (y, z), (z, x), (x, y): 1 if one of the group's three
+   axes separates */
+static inline int rt_edge_group(const rt_axis_cell *p, const rt_axis_cell *q)
+{
+    for (int i = 0; i < 3; i++)
+        if (rt_sep(q->ew[i][0] - p->ev[i][0], q->ew[i][1] - p->ev[i][1], q->ew[i][2] - p->ev[i][2],
+                   p->hr[i][0] + q->hr[i][1]))
+            return 1;
+    return 0;
+}
 
 static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
                         const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
@@ -426,40 +449,43 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
             }
         }
     }
-    /* rt_tri_box's edge tests, with (X, Y, Z) the axes 0, 1, 2 and b1 = a + 1, b2 = a + 2:
-       X: ey * vz - ez * vy, h_y * |e_z| + h_z * |e_y|: ey*vz is ac[2].ew (b2 of 2 is 1),
-          ez*vy is ac[1].ev (b1 of 1 is 2); h_y|e_z| is ac[1].hr[0], h_z|e_y| ac[2].hr[1]
-       Y: ez * vx - ex * vz, h_x |e_z| + h_z |e_x|: ez*vx ac[0].ew, ex*vz ac[2].ev;
-          h_x|e_z| ac[0].hr[1], h_z|e_x| ac[2].hr[0]
-       Z: ex * vy - ey * vx, h_x |e_y| + h_y |e_x|: ex*vy ac[1].ew, ey*vx ac[0].ev;
-          h_x|e_y| ac[0].hr[0], h_y|e_x| ac[1].hr[1] */
+    /* memo of the Y group per x (this z slab) and of the Z group per (x, y): -1 unknown */
+    const int nx = c1[0] - c0[0] + 1, ny = c1[1] - c0[1] + 1;
+    signed char gy[RT_SPAN], gz[RT_SPAN * RT_SPAN];
+    memset(gz, -1, (size_t)(nx * ny));
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++) {
-        const rt_axis_cell *z = &ac[2][c[2] - c0[2]];
+        rt_axis_cell *z = &ac[2][c[2] - c0[2]];
         if (z->sep)
             continue;
+        memset(gy, -1, (size_t)nx);
         for (c[1] = c0[1]; c[1] <= c1[1]; c[1]++) {
-            const rt_axis_cell *y = &ac[1][c[1] - c0[1]];
+            rt_axis_cell *y = &ac[1][c[1] - c0[1]];
             if (y->sep)
                 continue;
+            int gx = -1; /* the X group of this (y, z) */
+            signed char *gzy = gz + (size_t)(c[1] - c0[1]) * (size_t)nx;
             for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
-                const rt_axis_cell *x = &ac[0][c[0] - c0[0]];
+                const int ix = c[0] - c0[0];
+                rt_axis_cell *x = &ac[0][ix];
                 if (x->sep)
                     continue;
                 const double pd = x->nv + y->nv + z->nv;
                 if (fabs(pd) > x->nh + y->nh + z->nh)
                     continue;
-                int hit = 1;
-                for (int i = 0; i < 3 && hit; i++) {
-                    if (rt_sep(z->ew[i][0] - y->ev[i][0], z->ew[i][1] - y->ev[i][1],
-                               z->ew[i][2] - y->ev[i][2], y->hr[i][0] + z->hr[i][1]) ||
-                        rt_sep(x->ew[i][0] - z->ev[i][0], x->ew[i][1] - z->ev[i][1],
-                               x->ew[i][2] - z->ev[i][2], x->hr[i][1] + z->hr[i][0]) ||
-                        rt_sep(y->ew[i][0] - x->ev[i][0], y->ew[i][1] - x->ev[i][1],
-                               y->ew[i][2] - x->ev[i][2], x->hr[i][0] + y->hr[i][1]))
-                        hit = 0;
-                }
-                if (hit && !rt_build_push(b, base + rt_cell_index(g, c), prim))
+                if (gx < 0)
+                    gx = rt_edge_group(y, z);
+                if (gx)
+                    break; /* the same for every x of this row */
+                if (gzy[ix] < 0)
+                    gzy[ix] = (signed char)rt_edge_group(x, y);
+                if (gzy[ix])
+                    continue;
+                if (gy[ix] < 0)
+                    gy[ix] = (signed char)rt_edge_group(z, x);
+                if (gy[ix])
+                    continue;
+                if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
                     return 0;
             }
         }
@@ -1052,6 +1078,7 @@ static int rt_empty_distance(rt_grid *g)
 #define RT_FRAME_SEC 0.9
 #define RT_FRAME_EYE_MAX 1.5
 #define RT_FRAME_SAMPLE 50000
+#define RT_FRAME_PRE 64 /* the subset of the sample for a candidate's first estimate */
 
 static double rt_box_volume(const double bb[6])
 {
@@ -1269,12 +1296,24 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
-        rc = rt_frame_box(sc, b, nt, stride, bb);
         const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
-        g->rotated = 0;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
+        const double dz = fabs(g->R[0][2]) + fabs(g->R[1][2]) + fabs(g->R[2][2]);
+        /* first a lower bound of E from a subset of the sample (every RT_FRAME_PRE-th of it:
+           the same point values, so a box inside the sample's and a volume no larger; the
+           factor covers cbrt's rounding): a candidate it rules out skips the full pass */
+        rc = rt_frame_box(sc, b, nt, stride * RT_FRAME_PRE, bb);
+        const double rl = rt_box_volume(bb) / vol0;
+        const double El = cbrt(rl * rl) * dz * (1.0 - 1e-9);
+        if (rc != RT_OK || (El >= RT_FRAME_EYE && (S >= RT_FRAME_SEC || El >= RT_FRAME_EYE_MAX)) ||
+            El * S >= best) {
+            g->rotated = 0;
+            continue;
+        }
+        rc = rt_frame_box(sc, b, nt, stride, bb);
+        g->rotated = 0;
         const double r = rt_box_volume(bb) / vol0;
-        const double E = cbrt(r * r) * (fabs(g->R[0][2]) + fabs(g->R[1][2]) + fabs(g->R[2][2]));
+        const double E = cbrt(r * r) * dz;
         const int ok = E < RT_FRAME_EYE || (S < RT_FRAME_SEC && E < RT_FRAME_EYE_MAX);
         if (ok && E * S < best) {
             best = E * S;

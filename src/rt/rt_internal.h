@@ -217,6 +217,21 @@ struct rt_scene {
     size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
 
+/* Vertex k (0, 1, 2) of committed triangle t (0 <= t < ntri; a triangle primitive's data):
+   every reader of committed triangle vertices goes through this and rt_tri_prefetch, so the
+   vertices' storage is known in one place. */
+static inline const double *rt_tri_vert(const rt_scene *sc, size_t t, int k)
+{
+    return sc->tri[t].v[k];
+}
+/* starts loading the vertices of committed triangle t (both cache lines of its 72 bytes) */
+static inline void rt_tri_prefetch(const rt_scene *sc, size_t t)
+{
+    const char *p = (const char *)&sc->tri[t];
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + sizeof(rt_tri) - 1);
+}
+
 /* the front unit normal of committed primitive i */
 void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3]);
 /* the surface of side (0 front, 1 back) of primitive p */

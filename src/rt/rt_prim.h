@@ -11,19 +11,21 @@
 #include <math.h>
 
 
-/* Watertight ray/triangle test (Woop, Benthin, Wald 2013), double precision with a long double
- * fallback for edge functions that evaluate to exactly 0. */
-static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, const rt_tri *tr, double tmin, double tmax,
-                               double *tout)
+/* Watertight ray/triangle test (Woop, Benthin, Wald 2013) of the triangle v0 v1 v2, double precision
+ * with a long double fallback for edge functions that evaluate to exactly 0. */
+static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, const double *v0,
+                                                              const double *v1, const double *v2,
+                                                              double tmin, double tmax,
+                                                              double *tout)
 {
     const int kx = r->kx, ky = r->ky, kz = r->kz;
     /* only the components in the ray's axis order are formed (loaded by index straight from
        the triangle, no gather through a stack copy) */
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
-    const double Az = tr->v[0][kz] - oz, Bz = tr->v[1][kz] - oz, Cz = tr->v[2][kz] - oz;
-    const double Ax = (tr->v[0][kx] - ox) - r->sx * Az, Ay = (tr->v[0][ky] - oy) - r->sy * Az;
-    const double Bx = (tr->v[1][kx] - ox) - r->sx * Bz, By = (tr->v[1][ky] - oy) - r->sy * Bz;
-    const double Cx = (tr->v[2][kx] - ox) - r->sx * Cz, Cy = (tr->v[2][ky] - oy) - r->sy * Cz;
+    const double Az = v0[kz] - oz, Bz = v1[kz] - oz, Cz = v2[kz] - oz;
+    const double Ax = (v0[kx] - ox) - r->sx * Az, Ay = (v0[ky] - oy) - r->sy * Az;
+    const double Bx = (v1[kx] - ox) - r->sx * Bz, By = (v1[ky] - oy) - r->sy * Bz;
+    const double Cx = (v2[kx] - ox) - r->sx * Cz, Cy = (v2[ky] - oy) - r->sy * Cz;
     double U = Cx * By - Cy * Bx;
     double V = Ax * Cy - Ay * Cx;
     double W = Bx * Ay - By * Ax;
@@ -166,13 +168,15 @@ static inline __attribute__((always_inline)) int rt_isect_prim(const rt_scene *s
                                 double tmax, double *t)
 {
     if (i < sc->ntri)
-        return rt_isect_tri(r, &sc->tri[i], tmin, tmax, t);
+        return rt_isect_tri(r, rt_tri_vert(sc, i, 0), rt_tri_vert(sc, i, 1),
+                            rt_tri_vert(sc, i, 2), tmin, tmax, t);
     if (i - sc->ntri < sc->nquad)
         return rt_isect_quad(r, &sc->quad[i - sc->ntri], tmin, tmax, t);
     const rt_prim *p = &sc->prim[i];
     switch (p->kind) {
     case RT_KIND_TRI:
-        return rt_isect_tri(r, &sc->tri[p->data], tmin, tmax, t);
+        return rt_isect_tri(r, rt_tri_vert(sc, p->data, 0), rt_tri_vert(sc, p->data, 1),
+                            rt_tri_vert(sc, p->data, 2), tmin, tmax, t);
     case RT_KIND_QUAD:
         return rt_isect_quad(r, &sc->quad[p->data], tmin, tmax, t);
     case RT_KIND_POLY:

@@ -514,28 +514,30 @@ static int rt_prim_init(rt_scene *sc, rt_prim *pr, int id, int front, int back)
     return RT_OK;
 }
 
-/* The unit normal of the triangle v (9 doubles, sane): rt_points_frame and rt_poly_normal for
-   3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
+/* The unit normal of the triangle v0 v1 v2 (sane vertices): rt_points_frame and rt_poly_normal
+   for 3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
    degenerate. The one computation of a triangle's normal, when it is added and at its hits. */
-static inline int rt_tri_normal_sane(const double *v, double n[3])
+static inline int rt_tri_normal_sane(const double *v0, const double *v1, const double *v2,
+                                     double n[3])
 {
+    const double *v[3] = {v0, v1, v2};
     double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY}, c[3];
-    rt_bbox_add(pb, v);
-    rt_bbox_add(pb, v + 3);
-    rt_bbox_add(pb, v + 6);
+    rt_bbox_add(pb, v0);
+    rt_bbox_add(pb, v1);
+    rt_bbox_add(pb, v2);
     const double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
     if (!(ext > 0.0) || !isfinite(ext))
         return 0;
     for (int j = 0; j < 3; j++) {
         c[j] = 0.0;
-        c[j] += (v[j] - pb[j]) / 3.0;
-        c[j] += (v[3 + j] - pb[j]) / 3.0;
-        c[j] += (v[6 + j] - pb[j]) / 3.0;
+        c[j] += (v0[j] - pb[j]) / 3.0;
+        c[j] += (v1[j] - pb[j]) / 3.0;
+        c[j] += (v2[j] - pb[j]) / 3.0;
         c[j] += pb[j];
     }
     n[0] = n[1] = n[2] = 0.0;
     for (int i = 0; i < 3; i++) {
-        const double *a = v + 3 * i, *b = v + 3 * (i == 2 ? 0 : i + 1);
+        const double *a = v[i], *b = v[i == 2 ? 0 : i + 1];
         double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
         double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
         n[0] += (ay - by) * (az + bz);
@@ -554,7 +556,10 @@ static inline int rt_tri_normal_sane(const double *v, double n[3])
         }
     }
     static const int three = 3; /* nearly degenerate: the general fallback */
-    return rt_poly_normal(v, 3, &three, 1, c, ext, n);
+    double vv[9];
+    for (int i = 0; i < 3; i++)
+        memcpy(vv + 3 * i, v[i], 3 * sizeof(double));
+    return rt_poly_normal(vv, 3, &three, 1, c, ext, n);
 }
 
 /* the same for any 9 doubles: 0 also if a vertex is not sane */
@@ -562,7 +567,7 @@ static int rt_tri_normal(const double *v, double nrm[3])
 {
     if (!sane3(v) || !sane3(v + 3) || !sane3(v + 6))
         return 0;
-    return rt_tri_normal_sane(v, nrm);
+    return rt_tri_normal_sane(v, v + 3, v + 6, nrm);
 }
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
@@ -588,7 +593,8 @@ void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
     const double *n;
     switch (p->kind) {
     case RT_KIND_TRI:
-        (void)rt_tri_normal_sane(&sc->tri[p->data].v[0][0], ng);
+        (void)rt_tri_normal_sane(rt_tri_vert(sc, p->data, 0), rt_tri_vert(sc, p->data, 1),
+                                 rt_tri_vert(sc, p->data, 2), ng);
         return;
     case RT_KIND_QUAD:
         n = sc->quad[p->data].n;

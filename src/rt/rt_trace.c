@@ -316,18 +316,15 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
         }                                                                   \
     } while (0)
 
-/* starts loading the triangles of a cell list (both cache lines of each 72-byte triangle)
+/* starts loading the triangles of a cell list (rt_tri_prefetch)
    before they are tested one after the other: the misses of large meshes overlap */
 static inline void rt_prefetch_tris(const rt_scene *sc, const uint32_t *refs, uint32_t n)
 {
     if (n < 2) /* a single triangle is loaded by its test at once */
         return;
     for (uint32_t k = 0; k < n; k++)
-        if (refs[k] < sc->ntri) {
-            const char *p = (const char *)&sc->tri[refs[k]];
-            __builtin_prefetch(p);
-            __builtin_prefetch(p + sizeof(rt_tri) - 1);
-        }
+        if (refs[k] < sc->ntri)
+            rt_tri_prefetch(sc, refs[k]);
 }
 
 /* the primitives of one cell list (kept out of the DDA loop: its registers stay free) */
