@@ -181,15 +181,13 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
                     return 0;
                 continue;
             }
-            double ta = (g->lo[a] - r->o[a]) * r->invd[a];
-            double tb = (g->hi[a] - r->o[a]) * r->invd[a];
-            if (ta > tb) {
-                double x = ta;
-                ta = tb;
-                tb = x;
-            }
-            if (ta > t0) t0 = ta;
-            if (tb < t1) t1 = tb;
+            /* min / max as selects, not branches: which slab plane is the near one
+               depends on the direction's sign, random for incoherent rays */
+            const double ta = (g->lo[a] - r->o[a]) * r->invd[a];
+            const double tb = (g->hi[a] - r->o[a]) * r->invd[a];
+            const double tn = RT_MIN(ta, tb), tf = tb < ta ? ta : tb;
+            t0 = tn > t0 ? tn : t0;
+            t1 = RT_MIN(tf, t1);
         }
         if (!(t0 <= t1) || !isfinite(t0))
             return 0;
@@ -273,15 +271,19 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
  * boundary beyond the best hit (t1 lowered to it); mode 1: transmittance, BLOCKED when an
  * opaque primitive is hit. Mailboxes: see the top of the file. Direction components exactly
  * +0.0 or -0.0 never step. */
-/* bound of cell c + o along axis a as a ray parameter: the same expression for a boundary
-   whichever cell it is computed from, so the steps of a ray are consistent */
+/* bound of cell c + o along axis a as a ray parameter (the empty-space jumps' block faces) */
 #define RT_BOUND(a, c, up) \
     (((c) + (up) == nn##a ? g->hi[a] - gr->o[a] : base##a + (double)((c) + (up)) * g->cw[a]) * gr->invd[a])
 
 /* one DDA step to the next cell: the axis with the smallest boundary parameter (ties: x, y, z);
    leaves the walk past t1 (nearest mode: lowered to the best hit) or the box. Registers
    only, no array indexed by the axis: a table version waits on store-to-load latency
-   (docs/bench/rt_tuning.md). */
+   (docs/bench/rt_tuning.md). The next boundary is the last one plus the cell's width in
+   ray parameter (dt*, one addition, short latency ahead of the next step's branch): it
+   drifts from the exact boundary by a few roundings per step, far below the eps the cells
+   are enlarged by at build (a ray passing a cell corner by a rounding-sized piece may take
+   the other cell of the corner, which references every primitive it could hit there), so
+   the walk still meets every primitive the ray hits and the hits stay the same. */
 #define RT_ADVANCE()                                                        \
     do {                                                                    \
         if (tx <= ty && tx <= tz) {                                         \
@@ -292,7 +294,7 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
                 return RT_WALK_CONT;                                        \
             ci += dx;                                                       \
             tent = tx;                                                      \
-            tx = RT_BOUND(0, cx, ox);                                       \
+            tx += dtx;                                                      \
         } else if (ty <= tz) {                                              \
             if (ty > t1)                                                    \
                 return RT_WALK_CONT;                                        \
@@ -301,7 +303,7 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
                 return RT_WALK_CONT;                                        \
             ci += dy;                                                       \
             tent = ty;                                                      \
-            ty = RT_BOUND(1, cy, oy);                                       \
+            ty += dty;                                                      \
         } else {                                                            \
             if (tz > t1)                                                    \
                 return RT_WALK_CONT;                                        \
@@ -310,7 +312,7 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
                 return RT_WALK_CONT;                                        \
             ci += dz;                                                       \
             tent = tz;                                                      \
-            tz = RT_BOUND(2, cz, oz);                                       \
+            tz += dtz;                                                      \
         }                                                                   \
     } while (0)
 
@@ -390,6 +392,9 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     const int sx = s.step[0], sy = s.step[1], sz = s.step[2];
     const int ox = sx > 0, oy = sy > 0, oz = sz > 0;
     const double base0 = g->lo[0] - gr->o[0], base1 = g->lo[1] - gr->o[1], base2 = g->lo[2] - gr->o[2];
+    /* a cell's width in ray parameter per axis (0 for an axis that does not step) */
+    const double dtx = g->cw[0] * fabs(gr->invd[0]), dty = g->cw[1] * fabs(gr->invd[1]),
+                 dtz = g->cw[2] * fabs(gr->invd[2]);
     const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
     int cx = s.c[0], cy = s.c[1], cz = s.c[2];
     double tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
