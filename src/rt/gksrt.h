@@ -119,12 +119,6 @@ RT_API int rt_scene_truncate(rt_scene *sc, int n);
 RT_API rt_scene *rt_scene_new(void);
 /* Frees a scene (NULL allowed). */
 RT_API void rt_scene_free(rt_scene *sc);
-/* For a scene being filled by rt_scene_add_* on another thread: has the system give the
- * pages just beyond the scene's large arrays before the adding thread reaches them (a fresh
- * page is cleared where it is first touched: here, e.g. while this thread would wait for the
- * other). Safe at the same time as the other thread's rt_scene_add_* calls, not with any
- * other call on sc, and from one thread at a time. 1: pages were given, 0: nothing to do. */
-RT_API int rt_scene_prefault(rt_scene *sc);
 
 /* Coordinate range: a primitive with a vertex coordinate of magnitude above RT_COORD_MAX is
  * dropped at commit (products of such coordinates would overflow in the intersection
@@ -454,10 +448,6 @@ RT_API rt_serial *rt_serial_new(int threads, rt_serial_fn fn, void *user);
 RT_API void rt_serial_push(rt_serial *s, void *item);
 RT_API void rt_serial_drain(rt_serial *s);
 RT_API void rt_serial_free(rt_serial *s);
-/* A push that must wait for the running item calls wait(user) first (without the queue's
- * lock, on the pusher), and waits only if it returns 0 (it did nothing): for useful work of
- * the pusher's in the meantime. NULL: none (the default). */
-RT_API void rt_serial_set_wait(rt_serial *s, int (*wait)(void *user));
 
 #ifdef __cplusplus
 }

@@ -15,7 +15,6 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
-#include <stdatomic.h>
 
 /* Large arrays (vertices, references, cell offsets of big meshes: tens of MB read at random
    by the traversal) are asked to live on transparent huge pages where the system does so
@@ -120,11 +119,8 @@ double rt_now(void)
 int rt_big_grow(rt_big *b, size_t need, size_t es)
 {
     size_t bytes;
-    if (need <= b->cap) {
-        if (b->map_bytes) /* need * es <= map_bytes */
-            atomic_store_explicit(&b->pub_need, need * es, memory_order_relaxed);
+    if (need <= b->cap)
         return 1;
-    }
     if (!rt_mul_ok(need, es, &bytes) || es == 0)
         return 0;
 #ifdef RT_BIG_MAP
@@ -143,8 +139,6 @@ int rt_big_grow(rt_big *b, size_t need, size_t es)
                 b->p = q;
                 b->map_bytes = res;
                 b->cap = res / es;
-                atomic_store_explicit(&b->pub_need, bytes, memory_order_relaxed);
-                atomic_store_explicit(&b->pub_map, (uintptr_t)q, memory_order_release);
                 return 1;
             }
         }
@@ -153,32 +147,6 @@ int rt_big_grow(rt_big *b, size_t need, size_t es)
     }
 #endif
     return rt_grow(&b->p, &b->cap, need, es);
-}
-
-#define RT_BIG_CHUNK ((size_t)2 << 20)  /* a huge page */
-#define RT_BIG_AHEAD ((size_t)16 << 20)
-
-int rt_big_prefault(rt_big *b)
-{
-#if defined(RT_BIG_MAP) && defined(MADV_POPULATE_WRITE)
-    const uintptr_t m = atomic_load_explicit(&b->pub_map, memory_order_acquire);
-    if (!m)
-        return 0;
-    const size_t need = atomic_load_explicit(&b->pub_need, memory_order_relaxed);
-    size_t from = (need + RT_BIG_CHUNK - 1) & ~(RT_BIG_CHUNK - 1); /* the writer's next page */
-    if (from < b->ahead)
-        from = b->ahead;
-    /* the reservation is at least RT_BIG_RESERVE, or twice the bytes of the move */
-    const size_t end = need + RT_BIG_AHEAD < RT_BIG_RESERVE ? need + RT_BIG_AHEAD : RT_BIG_RESERVE;
-    if (from >= end)
-        return 0;
-    const size_t to = from + RT_BIG_CHUNK < end ? from + RT_BIG_CHUNK : end;
-    b->ahead = to;
-    return madvise((void *)(m + from), to - from, MADV_POPULATE_WRITE) == 0;
-#else
-    (void)b;
-    return 0;
-#endif
 }
 
 void rt_big_free(rt_big *b)
@@ -192,7 +160,4 @@ void rt_big_free(rt_big *b)
     b->p = NULL;
     b->cap = 0;
     b->map_bytes = 0;
-    atomic_store_explicit(&b->pub_map, 0, memory_order_relaxed);
-    atomic_store_explicit(&b->pub_need, 0, memory_order_relaxed);
-    b->ahead = 0;
 }

@@ -27,24 +27,11 @@ typedef struct rt_big {
     void *p;
     size_t cap;        /* elements of size es that p holds */
     size_t map_bytes;  /* its own mapping's size, 0: malloc'ed */
-    /* for rt_big_prefault on another thread than the writer's: the mapping (0: none yet)
-       and the bytes the writer last asked for, published by rt_big_grow; the bytes of the
-       mapping populated so far by rt_big_prefault (that thread's own) */
-    _Atomic uintptr_t pub_map;
-    _Atomic size_t pub_need;
-    size_t ahead;
 } rt_big;
 /* room for at least need elements of size es (the same es every time): 1, or 0 (no storage;
    the array is unchanged) */
 int rt_big_grow(rt_big *b, size_t need, size_t es);
 void rt_big_free(rt_big *b);
-/* Gives the mapping's pages just beyond what the writer uses (up to RT_BIG_AHEAD bytes
-   beyond, one RT_BIG_CHUNK at a time) before the writer touches them, so the writer does
-   not stop to have fresh pages cleared. For one thread other than the writer's, at the same
-   time as the writer's rt_big_grow calls (it reads only the published fields, and the pages
-   are given by the system without a store to them); not at the same time as rt_big_free.
-   1: it gave pages, 0: nothing to do (not a mapping yet, or far enough ahead). */
-int rt_big_prefault(rt_big *b);
 
 /* ---- the thread pool (rt_pool.c): fork-join loops ---- */
 #define RT_PAR_MAX 64 /* threads at most */

@@ -176,7 +176,6 @@ struct rt_serial {
     int head, count;
     int running;         /* an item is being run (items run one at a time, in order) */
     int scheduled;       /* a drain task is queued or running in the pool */
-    int (*wait)(void *user); /* the pusher's work while it would wait (rt_serial_set_wait) */
     pthread_cond_t idle; /* running went to 0 */
     rt_pool_task task;
     rt_pool_group g;
@@ -231,17 +230,9 @@ void rt_serial_push(rt_serial *s, void *item)
 {
     pthread_mutex_lock(&pool.lock);
     while (s->count == RT_SERIAL_CAP) { /* full: the oldest runs here or is running */
-        if (!s->running) {
+        if (!s->running)
             rt_serial_one(s);
-            continue;
-        }
-        int did = 0;
-        if (s->wait) {
-            pthread_mutex_unlock(&pool.lock);
-            did = s->wait(s->user);
-            pthread_mutex_lock(&pool.lock);
-        }
-        if (!did && s->count == RT_SERIAL_CAP && s->running)
+        else
             pthread_cond_wait(&s->idle, &pool.lock);
     }
     s->item[(s->head + s->count) % RT_SERIAL_CAP] = item;
@@ -251,15 +242,6 @@ void rt_serial_push(rt_serial *s, void *item)
         s->task = (rt_pool_task){ rt_serial_task, s, 0, 1, &s->g, NULL };
         rt_pool_push(&s->task);
     }
-    pthread_mutex_unlock(&pool.lock);
-}
-
-void rt_serial_set_wait(rt_serial *s, int (*wait)(void *user))
-{
-    if (!s)
-        return;
-    pthread_mutex_lock(&pool.lock);
-    s->wait = wait;
     pthread_mutex_unlock(&pool.lock);
 }
 

@@ -79,14 +79,6 @@ static void rt_scene_uncommit(rt_scene *sc)
     sc->committed = 0;
 }
 
-int rt_scene_prefault(rt_scene *sc)
-{
-    if (!sc)
-        return 0;
-    const int a = rt_big_prefault(&sc->in_tri);
-    return rt_big_prefault(&sc->in_tri_prim) | a;
-}
-
 void rt_scene_free(rt_scene *sc)
 {
     if (!sc)

@@ -71,48 +71,6 @@ static void test_big(void **u)
     assert_null(e.p);
 }
 
-/* rt_big_prefault: nothing for an empty or small array; for a mapping a bounded run of
-   pages beyond what the writer asked for, which read as zeros and keep what is written */
-static void test_big_prefault(void **u)
-{
-    (void)u;
-    rt_big b = { 0 };
-    assert_int_equal(rt_big_prefault(&b), 0);
-    assert_true(rt_big_grow(&b, 1000, sizeof(uint32_t)));
-    assert_int_equal(rt_big_prefault(&b), 0); /* malloc'ed: no mapping */
-    const size_t n = (size_t)2 << 20; /* 8 MB: a mapping on Linux */
-    size_t used = 0;
-    for (; used < n; used++) {
-        if (!rt_big_grow(&b, used + 1, sizeof(uint32_t)))
-            fail();
-        ((uint32_t *)b.p)[used] = val(used);
-    }
-    int calls = 0;
-    while (rt_big_prefault(&b) && calls < 1000)
-        calls++;
-    /* at most 16 MiB beyond, 2 MiB at a time */
-    assert_true(calls <= 9);
-#if defined(__linux__)
-    if (b.map_bytes) {
-        const uint32_t *q = b.p;
-        for (size_t i = used; i < used + ((size_t)12 << 20) / sizeof *q; i += 1021)
-            assert_int_equal(q[i], 0);
-    }
-#endif
-    for (; used < 3 * n; used++) { /* the writer goes on over the given pages */
-        if (!rt_big_grow(&b, used + 1, sizeof(uint32_t)))
-            fail();
-        ((uint32_t *)b.p)[used] = val(used);
-    }
-    while (rt_big_prefault(&b) && calls < 1000)
-        calls++;
-    assert_true(calls <= 18);
-    for (size_t i = 0; i < used; i += 4099)
-        assert_int_equal(((uint32_t *)b.p)[i], val(i));
-    rt_big_free(&b);
-    assert_int_equal(rt_big_prefault(&b), 0);
-}
-
 static void test_grow(void **u)
 {
     (void)u;
@@ -148,7 +106,6 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_big),
-        cmocka_unit_test(test_big_prefault),
         cmocka_unit_test(test_grow),
         cmocka_unit_test(test_sizes),
     };

@@ -9,7 +9,6 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <pthread.h>
-#include <sched.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -131,71 +130,12 @@ static void test_serial(void **u)
     free(s.got);
 }
 
-/* rt_serial_set_wait: a push that finds the queue full behind a running item calls the hook
-   (again while it says it did something) before it waits; the items still run in order */
-typedef struct held {
-    seq s;
-    atomic_int started, release, hooks;
-} held;
-
-static void take_held(void *user, void *item)
-{
-    held *h = user;
-    if (*(int *)item == 0) { /* the first item runs until the hook lets it go */
-        atomic_store(&h->started, 1);
-        for (long t = 0; !atomic_load(&h->release) && t < 50000000; t++)
-            sched_yield(); /* bounded: without the hook the test fails, it does not hang */
-    }
-    take(&h->s, item);
-}
-
-static int hook(void *user)
-{
-    held *h = user;
-    const int k = atomic_fetch_add(&h->hooks, 1);
-    if (k == 0)
-        return 1; /* "did something": asked again before any wait */
-    atomic_store(&h->release, 1);
-    return 0;
-}
-
-static void test_serial_wait(void **u)
-{
-    (void)u;
-    static held h;
-    memset(&h, 0, sizeof h);
-    const int N = 40;
-    h.s.got = calloc((size_t)N, sizeof *h.s.got);
-    assert_non_null(h.s.got);
-    rt_serial *q = rt_serial_new(2, take_held, &h);
-    assert_non_null(q);
-    rt_serial_set_wait(q, hook);
-    rt_serial_set_wait(NULL, hook);
-    for (int i = 0; i < N; i++) {
-        int *v = malloc(sizeof *v);
-        assert_non_null(v);
-        *v = i;
-        rt_serial_push(q, v);
-        while (i == 0 && !atomic_load(&h.started)) /* item 0 running on the worker */
-            sched_yield();
-    }
-    rt_serial_drain(q);
-    assert_true(atomic_load(&h.hooks) >= 2);
-    assert_int_equal(h.s.n, N);
-    for (int i = 0; i < N; i++)
-        assert_int_equal(h.s.got[i], i);
-    assert_int_equal(atomic_load(&h.s.overlap), 0);
-    rt_serial_free(q);
-    free(h.s.got);
-}
-
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_par_run),
         cmocka_unit_test(test_par_concurrent),
         cmocka_unit_test(test_serial),
-        cmocka_unit_test(test_serial_wait),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -73,7 +73,6 @@ struct ws_rt {
     int aview;
     int qtried;              /* rt_serial_new was asked (and said NULL: off) */
     rt_view_rec *wvr;
-    _Atomic(rt_scene *) wsc; /* wvr's scene, for the caller's rt_scene_prefault */
     atomic_int werr;
     size_t wlost;
     rt_render_options opts;  /* set by the ESCAPEs */
@@ -168,7 +167,6 @@ static int ws_rt_sync(ws_rt *r)
         r->wlost = 0;
         r->aview = -1; /* the synchronous path may change the views' latest surfaces */
         r->wvr = NULL;
-        atomic_store_explicit(&r->wsc, NULL, memory_order_relaxed);
     }
     return atomic_exchange(&r->werr, 0);
 }
@@ -793,7 +791,6 @@ static void rec_run(void *user, void *item)
             memcpy(&a, b->data + off, sizeof a);
             off += rec_pad(sizeof a);
             e = view_surfaces(r, h->vi, &a, &r->wvr);
-            atomic_store_explicit(&r->wsc, r->wvr ? r->wvr->sc : NULL, memory_order_release);
         } else {
             const int *counts = (const int *)(const void *)(b->data + off);
             off += rec_pad((size_t)h->n_loops * sizeof(int));
@@ -814,14 +811,6 @@ static void rec_run(void *user, void *item)
     gks_free(b);
 }
 
-/* The caller's side while the queue is full: the pages the worker's scene takes next */
-static int rec_wait(void *user)
-{
-    ws_rt *r = user;
-    rt_scene *sc = atomic_load_explicit(&r->wsc, memory_order_acquire);
-    return sc ? rt_scene_prefault(sc) : 0;
-}
-
 /* The asynchronous path of a FILL AREA (SET) without vertex data: its loops of 3 or more
  * points go to VRC3 here, on the caller's thread, into the block being filled; a full block
  * goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records it
@@ -835,7 +824,6 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         r->queue = rt_serial_new(r->opts.threads, rec_run, r);
         if (!r->queue)
             return 0; /* one thread (or no storage for the queue): synchronous */
-        rt_serial_set_wait(r->queue, rec_wait);
     }
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
     if ((smooth && (prim->vnormals || prim->vcolours)) || prim->n_points < 3 ||
