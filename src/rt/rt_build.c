@@ -876,6 +876,14 @@ static void rt_sub_cells(void *arg, int k, int n)
     pt->err = err;
 }
 
+/* [*a, *e): the part of [lo, hi) that lies in [from, from + len); 1 if it is not empty */
+static inline int rt_span_cut(size_t lo, size_t hi, size_t from, size_t len, size_t *a, size_t *e)
+{
+    *a = lo > from ? lo : from;
+    *e = hi < from + len ? hi : from + len;
+    return *a < *e;
+}
+
 /* The grid's arrays are part 0's grown to the whole (rt_big: in place); the parts after it
  * are copied behind part 0's, cell offsets shifted by the part's first reference. Thread k of
  * n copies the k-th n-th of the cells after part 0's and of the references after part 0's. */
@@ -885,26 +893,20 @@ static void rt_sub_place(void *arg, int k, int n)
     rt_grid *g = &j->sc->grid;
     const rt_sub_part *part = j->part;
     uint32_t *soff = g->soff_m.p, *srefs = g->srefs_m.p;
-    size_t lo, hi;
+    size_t lo, hi, a, e;
     rt_par_range(g->nsubcells - part[0].total, k, n, &lo, &hi);
-    lo += part[0].total;
-    hi += part[0].total;
-    for (int q = 1; q < j->nparts && lo < hi; q++) {
+    for (int q = 1; q < j->nparts; q++) {
         const rt_sub_part *pt = &part[q];
-        const size_t a = lo > pt->cell0 ? lo : pt->cell0;
-        const size_t e = hi < pt->cell0 + pt->total ? hi : pt->cell0 + pt->total;
+        if (!rt_span_cut(lo + part[0].total, hi + part[0].total, pt->cell0, pt->total, &a, &e))
+            continue;
         const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
         for (size_t c = a; c < e; c++)
             soff[c] = off[c - pt->cell0] + r0;
     }
     rt_par_range(g->nsrefs - part[0].nref, k, n, &lo, &hi);
-    lo += part[0].nref;
-    hi += part[0].nref;
-    for (int q = 1; q < j->nparts && lo < hi; q++) {
+    for (int q = 1; q < j->nparts; q++) {
         const rt_sub_part *pt = &part[q];
-        const size_t a = lo > pt->ref0 ? lo : pt->ref0;
-        const size_t e = hi < pt->ref0 + pt->nref ? hi : pt->ref0 + pt->nref;
-        if (a < e)
+        if (rt_span_cut(lo + part[0].nref, hi + part[0].nref, pt->ref0, pt->nref, &a, &e))
             memcpy(srefs + a, (const uint32_t *)pt->refs.p + (a - pt->ref0),
                    (e - a) * sizeof(uint32_t));
     }
