@@ -223,7 +223,7 @@ typedef struct rt_grid_info {
     uint64_t max_leaf_refs;  /* most references in one cell that is traversed as a leaf */
     double volume_fill;      /* fraction of the grid box in non-empty leaf cells */
     uint64_t hash;           /* FNV-1a over the committed grid (frame, boxes, cell offsets and
-                                references of both levels, empty-space distances): equal
+                                references of both levels, empty cubes): equal
                                 hashes, the same grid; 0 without a grid */
 } rt_grid_info;
 

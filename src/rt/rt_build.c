@@ -9,8 +9,8 @@
  * Sutherland-Hodgman clipping of each loop for quads, polygons and cell arrays, against the
  * cell box enlarged by eps = 1e-9 * (scene magnitude + extent), far above the rounding of the
  * rotation and of hit points near cell faces. Resolution rule and its measurements: gksrt.h
- * (RT_GRID_FACTOR_DEFAULT). The top level also stores each cell's distance to the nearest
- * occupied cell (empty-space jumps of the traversal).
+ * (RT_GRID_FACTOR_DEFAULT). The top level also stores, per cell and octant of directions, the
+ * largest empty cube starting there (empty-space jumps of the traversal).
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -327,7 +327,7 @@ void rt_grid_free(rt_grid *g)
     free(g->off);
     free(g->refs);
     free(g->sub);
-    free(g->dist);
+    free(g->odist);
     free(g->subs);
     rt_big_free(&g->soff_m);
     rt_big_free(&g->srefs_m);
@@ -1016,45 +1016,65 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
     return RT_OK;
 }
 
-/* Empty-space distance of the top level (rt_grid.dist): exact Chebyshev distance to the
- * nearest occupied cell by the two-pass 3x3x3 chamfer (forward pass over the 13 neighbours
- * already visited, backward pass over the other 13). The traversal jumps over the
- * (2d-1)^3 block of empty cells around an empty cell at distance d >= 2. */
-static int rt_empty_distance(rt_grid *g)
+/* Empty cubes of the top level (rt_grid.odist), per octant o: m(c) = 0 for an occupied cell,
+ * else 1 + the least m of the 7 neighbours c + s (s a non-empty sum of o's unit steps), a
+ * neighbour beyond the box counting as 255: the largest-square recurrence in 3-D, one sweep
+ * from o's far corner back (the neighbours are done first). A ray whose steps lie in octant o
+ * is inside that cube from where it enters c until it leaves one of the cube's far faces, so
+ * the traversal jumps there (rt_trace.c). Octants are independent: one per pool part. */
+typedef struct rt_cube_job {
+    rt_grid *g;
+} rt_cube_job;
+
+static void rt_empty_cubes_part(void *arg, int k, int n)
 {
-    g->dist = rt_alloc_array(g->ncells, 1);
-    if (!g->dist)
-        return RT_ERR_NOMEM;
+    rt_grid *g = ((rt_cube_job *)arg)->g;
     const int n0 = g->b.n[0], n1 = g->b.n[1], n2 = g->b.n[2];
-    for (size_t ci = 0; ci < g->ncells; ci++)
-        g->dist[ci] = g->off[ci + 1] != g->off[ci] || (g->sub && g->sub[ci] >= 0) ? 0 : 255;
-    for (int pass = 0; pass < 2; pass++) {
-        const int dir = pass == 0 ? 1 : -1;
-        for (int z = pass ? n2 - 1 : 0; z >= 0 && z < n2; z += dir)
-            for (int y = pass ? n1 - 1 : 0; y >= 0 && y < n1; y += dir)
-                for (int x = pass ? n0 - 1 : 0; x >= 0 && x < n0; x += dir) {
-                    size_t ci = ((size_t)z * n1 + y) * n0 + x;
-                    int d = g->dist[ci];
-                    if (d == 0)
+    const ptrdiff_t s1 = n0, s2 = (ptrdiff_t)n0 * n1;
+    for (int o = k; o < 8; o += n) {
+        uint8_t *m = g->odist + (size_t)o * g->ncells;
+        /* sweep against o's directions: x from the end for a positive x step, and so on */
+        const int dx = o & 1 ? 1 : -1, dy = o & 2 ? 1 : -1, dz = o & 4 ? 1 : -1;
+        const ptrdiff_t ex = -dx, ey = -dy * s1, ez = -dz * s2; /* index of the neighbour */
+        for (int z = dz > 0 ? 0 : n2 - 1; z >= 0 && z < n2; z += dz) {
+            const int iz = (unsigned)(z - dz) < (unsigned)n2; /* neighbour in z inside */
+            for (int y = dy > 0 ? 0 : n1 - 1; y >= 0 && y < n1; y += dy) {
+                const int iy = (unsigned)(y - dy) < (unsigned)n1;
+                for (int x = dx > 0 ? 0 : n0 - 1; x >= 0 && x < n0; x += dx) {
+                    const size_t ci = (size_t)z * (size_t)s2 + (size_t)y * (size_t)s1 + (size_t)x;
+                    if (g->off[ci + 1] != g->off[ci] || (g->sub && g->sub[ci] >= 0)) {
+                        m[ci] = 0;
                         continue;
-                    /* neighbours before (x,y,z) in this pass's order: lower z (any x, y),
-                       same z lower y (any x), same z and y lower x */
-                    for (int dz = -1; dz <= 0; dz++)
-                        for (int dy = -1; dy <= 1; dy++)
-                            for (int dx = -1; dx <= 1; dx++) {
-                                if (dz == 0 && (dy > 0 || (dy == 0 && dx >= 0)))
-                                    continue;
-                                int qx = x + dir * dx, qy = y + dir * dy, qz = z + dir * dz;
-                                if (qx < 0 || qy < 0 || qz < 0 || qx >= n0 || qy >= n1 ||
-                                    qz >= n2)
-                                    continue;
-                                int e = g->dist[((size_t)qz * n1 + qy) * n0 + qx] + 1;
-                                if (e < d)
-                                    d = e;
-                            }
-                    g->dist[ci] = (uint8_t)d;
+                    }
+                    const int ix = (unsigned)(x - dx) < (unsigned)n0;
+                    int v = 255;
+#define RT_CUBE_NB(cond, d) \
+    if ((cond) && m[(ptrdiff_t)ci + (d)] < v) \
+        v = m[(ptrdiff_t)ci + (d)];
+                    RT_CUBE_NB(ix, ex)
+                    RT_CUBE_NB(iy, ey)
+                    RT_CUBE_NB(iz, ez)
+                    RT_CUBE_NB(ix && iy, ex + ey)
+                    RT_CUBE_NB(ix && iz, ex + ez)
+                    RT_CUBE_NB(iy && iz, ey + ez)
+                    RT_CUBE_NB(ix && iy && iz, ex + ey + ez)
+#undef RT_CUBE_NB
+                    m[ci] = (uint8_t)(v < 255 ? v + 1 : 255);
                 }
+            }
+        }
     }
+}
+
+static int rt_empty_cubes(rt_grid *g, int nt)
+{
+    if (g->ncells > SIZE_MAX / 8)
+        return RT_ERR_LIMIT;
+    g->odist = rt_alloc_array(g->ncells, 8);
+    if (!g->odist)
+        return RT_ERR_NOMEM;
+    rt_cube_job job = {g};
+    rt_par_run(nt < 8 ? nt : 8, rt_empty_cubes_part, &job);
     return RT_OK;
 }
 
@@ -1443,7 +1463,7 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     if (rc == RT_OK && !no_subgrids)
         rc = rt_build_subgrids(sc, bs, nt, eps, sub_factor, sub_min);
     if (rc == RT_OK)
-        rc = rt_empty_distance(g);
+        rc = rt_empty_cubes(g, nt);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {
@@ -1485,7 +1505,7 @@ static uint64_t rt_grid_hash(const rt_grid *g)
     h = rt_fnv_box(h, &g->b);
     h = rt_fnv(h, g->off, (g->ncells + 1) * sizeof *g->off);
     h = rt_fnv(h, g->refs, g->nrefs * sizeof *g->refs);
-    h = rt_fnv(h, g->dist, g->ncells);
+    h = rt_fnv(h, g->odist, 8 * g->ncells);
     const int has_sub = g->sub != NULL;
     h = rt_fnv(h, &has_sub, sizeof has_sub);
     if (!has_sub)

@@ -156,8 +156,12 @@ typedef struct rt_grid {
     uint32_t *refs;
     size_t ncells, nrefs;
     int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
-    uint8_t *dist;     /* per top cell: Chebyshev distance in cells to the nearest cell with
-                          references or a sub-grid (0 there, at most 255) */
+    uint8_t *odist;    /* empty cubes: 8 arrays of ncells, one per octant o of directions
+                          (bit a of o set: negative along axis a); cell c's entry in array o
+                          is the edge m (in cells, at most 255) of the largest cube of cells
+                          without references or a sub-grid that has c as its corner and
+                          extends from c in o's directions (cells beyond the box count as
+                          empty); 0: c itself is occupied */
     rt_subgrid *subs;
     size_t nsubs;
     uint32_t *soff;    /* sub-grid cells + 1 */

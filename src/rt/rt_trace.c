@@ -211,8 +211,9 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
     return 1;
 }
 
-/* empty-space jumps from top cells at distance >= RT_JUMP_MIN (rt_grid.dist); a restart
-   costs a few steps, so shorter jumps do not pay (docs/bench/rt_tuning.md) */
+/* empty-space jumps from top cells whose empty cube in the ray's octant (rt_grid.odist) has
+   an edge >= RT_JUMP_MIN; a restart costs a few steps, so shorter jumps do not pay
+   (docs/bench/rt_tuning.md) */
 #define RT_JUMP_MIN 4
 
 static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, const rt_scene *sc, const rt_rayx *r, size_t i, int any_hit,
@@ -266,12 +267,12 @@ typedef struct rt_walkstate {
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
-/* 3D-DDA over one box (top level: with second-level cells in sub and the empty-space
- * distances dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
+/* 3D-DDA over one box (top level: with second-level cells in sub and the empty cubes of the
+ * ray's octant in dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
  * boundary beyond the best hit (t1 lowered to it); mode 1: transmittance, BLOCKED when an
  * opaque primitive is hit. Mailboxes: see the top of the file. Direction components exactly
  * +0.0 or -0.0 never step. */
-/* bound of cell c + o along axis a as a ray parameter (the empty-space jumps' block faces) */
+/* bound of cell c + o along axis a as a ray parameter (the empty-space jumps' cube faces) */
 #define RT_BOUND(a, c, up) \
     (((c) + (up) == nn##a ? g->hi[a] - gr->o[a] : base##a + (double)((c) + (up)) * g->cw[a]) * gr->invd[a])
 
@@ -403,14 +404,16 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     size_t ci = rt_cell_index(g, s.c);
     for (;;) {
         /* top level: dist > 0 marks an empty cell without a second-level grid (rt_build.c),
-           passed with one load (the best hit cannot have changed there) */
+           passed with one load (the best hit cannot have changed there); dist is its empty
+           cube's edge in the ray's octant */
         if (dist && dist[ci] != 0) {
             if (dist[ci] < RT_JUMP_MIN)
                 goto advance;
-            /* empty-space jump: every cell within dist - 1 of this one is empty, so the ray
-               continues where it leaves that block (the nearer block face on each stepping
-               axis); the walk restarts from the cell holding that point. A cell the exact
-               ray would cross only for a rounding-sized piece near the block's edge may be
+            /* empty-space jump: the cells from this one to dist - 1 further on each axis in
+               the ray's step directions are empty, and the ray stays in that cube (it moves
+               in the cube's directions) until it leaves through the nearest far face of a
+               stepping axis; the walk restarts from the cell holding that point. A cell the
+               exact ray would cross only for a rounding-sized piece near the cube's edge may be
                passed over: a primitive hit there lies within rounding of the next cell,
                which references it (cells are enlarged by eps at build, rt_build.c).
                A parameter that overflows (extreme directions): ordinary steps instead. */
@@ -482,6 +485,17 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
     return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, NULL, t0, t1, 1);
 }
 
+/* the top level's empty cubes for the ray's octant (the signs of its steps: a component
+   +0.0 or -0.0 does not step, and the cube covers its slice either way) */
+static inline const uint8_t *rt_octant_cubes(const rt_grid *g, const rt_gray *gr)
+{
+    if (!g->odist)
+        return NULL;
+    const size_t o = (size_t)(gr->d[0] < 0.0) | (size_t)(gr->d[1] < 0.0) << 1 |
+                     (size_t)(gr->d[2] < 0.0) << 2;
+    return g->odist + o * g->ncells;
+}
+
 long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
 {
     rt_walkstate w = {.sc = sc, .c = c, .r = r, .best = INFINITY, .bi = -1, .T = 1.0};
@@ -493,7 +507,8 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
         const rt_grid *g = &sc->grid;
         w.stamp = rt_ctx_next(c);
         rt_gray_init(g, r, &w.gr);
-        rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->sub, g->subs, g->dist, r->tmin, r->tmax, 1);
+        rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->sub, g->subs, rt_octant_cubes(g, &w.gr),
+                    r->tmin, r->tmax, 1);
     }
     *tout = w.best;
     return w.bi;
@@ -528,8 +543,8 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     }
     w.stamp = rt_ctx_next(c);
     rt_gray_init(g, r, &w.gr);
-    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->sub, g->subs, g->dist, r->tmin, r->tmax, 1) ==
-        RT_WALK_BLOCKED)
+    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->sub, g->subs, rt_octant_cubes(g, &w.gr),
+                    r->tmin, r->tmax, 1) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
 }

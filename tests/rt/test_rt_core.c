@@ -234,7 +234,7 @@ static void test_duplicate_tie(void **state)
 }
 
 /* sparse clusters in a large box: the top level has wide empty regions the traversal jumps
-   over (rt_grid.dist); rays along exact diagonals leave the jump blocks through their corners */
+   over (rt_grid.odist); rays along exact diagonals leave the jump cubes through their corners */
 static double sparse_v[7 * 60][9];
 
 static void build_sparse(rt_scene *sc)
