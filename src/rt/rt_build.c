@@ -1022,13 +1022,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
  * from o's far corner back (the neighbours are done first). A ray whose steps lie in octant o
  * is inside that cube from where it enters c until it leaves one of the cube's far faces, so
  * the traversal jumps there (rt_trace.c). Octants are independent: one per pool part. */
-typedef struct rt_cube_job {
-    rt_grid *g;
-} rt_cube_job;
-
 static void rt_empty_cubes_part(void *arg, int k, int n)
 {
-    rt_grid *g = ((rt_cube_job *)arg)->g;
+    rt_grid *g = arg;
     const int n0 = g->b.n[0], n1 = g->b.n[1], n2 = g->b.n[2];
     const ptrdiff_t s1 = n0, s2 = (ptrdiff_t)n0 * n1;
     for (int o = k; o < 8; o += n) {
@@ -1073,8 +1069,7 @@ static int rt_empty_cubes(rt_grid *g, int nt)
     g->odist = rt_alloc_array(g->ncells, 8);
     if (!g->odist)
         return RT_ERR_NOMEM;
-    rt_cube_job job = {g};
-    rt_par_run(nt < 8 ? nt : 8, rt_empty_cubes_part, &job);
+    rt_par_run(nt < 8 ? nt : 8, rt_empty_cubes_part, g);
     return RT_OK;
 }
 
