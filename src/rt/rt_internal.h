@@ -324,7 +324,7 @@ typedef struct rt_lbuf {
 } rt_lbuf;
 
 /* builds the buffer of light l; lb->ok = 0 (RT_OK) when the light gets none; RT_ERR_NOMEM */
-int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb);
+int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb);
 void rt_lbuf_free(rt_lbuf *lb);
 /* the candidates of a shadow ray toward lb's light: 1 with the list ids[0..n-1] and the
    bucket zb of the ray origin's depth (entries of a later bucket lie beyond the origin: they

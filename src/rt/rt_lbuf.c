@@ -48,6 +48,7 @@
 #define RT_LBUF_BOX_MARGIN 1e-7        /* primitive boxes, relative to the plane extent */
 #define RT_LBUF_QUERY_SLACK 1e-9       /* query rounding, relative to the plane extent */
 #define RT_LBUF_BUCKETS 4096           /* depth order of the lists (uint16_t) */
+#define RT_LBUF_PART_PRIMS 1024        /* primitives per part of the build at least */
 
 static inline double rt_dot3(const double a[3], const double b[3])
 {
@@ -199,9 +200,9 @@ static int rt_lbuf_project(const rt_lbuf *lb, const rt_scene *sc, size_t i, rt_l
    [y - my, y + 1 + my]) from the u-range of the primitive within the strip: the u-range of
    its edges (every loop's, closed) clipped to the strip (the boundary of the part inside the
    strip is made of those pieces and of strip border pieces ending on them), gathered edge
-   by edge over the rows each edge meets. Counts the cells into off[cell + 1] and appends the row spans to pp->rs.
-   Returns the number of cells, SIZE_MAX without memory. */
-static size_t rt_lbuf_cells(rt_lbuf *lb, rt_lbuf_proj2 *pp, double mx, double my)
+   by edge over the rows each edge meets. Appends the row spans to pp->rs. Returns the number
+   of cells, SIZE_MAX without memory. */
+static size_t rt_lbuf_cells(const rt_lbuf *lb, rt_lbuf_proj2 *pp, double mx, double my)
 {
     const int y0 = rt_lbuf_clampi(pp->bb[1] - my, lb->nv), y1 = rt_lbuf_clampi(pp->bb[3] + my, lb->nv);
     const size_t rows = (size_t)(y1 - y0 + 1);
@@ -252,9 +253,6 @@ static size_t rt_lbuf_cells(rt_lbuf *lb, rt_lbuf_proj2 *pp, double mx, double my
             hi = pp->bb[2];
         }
         const int x0 = rt_lbuf_clampi(lo - mx, lb->nu), x1 = rt_lbuf_clampi(hi + mx, lb->nu);
-        const size_t row = (size_t)y * (size_t)lb->nu;
-        for (int x = x0; x <= x1; x++)
-            lb->off[row + (size_t)x + 1]++;
         int32_t *r = pp->rs + pp->nrs;
         r[0] = y;
         r[1] = x0;
@@ -265,18 +263,127 @@ static size_t rt_lbuf_cells(rt_lbuf *lb, rt_lbuf_proj2 *pp, double mx, double my
     return total;
 }
 
-static void rt_lbuf_fail(rt_lbuf *lb, uint32_t *order, rt_lbuf_proj2 *pp)
+static void rt_lbuf_proj2_free(rt_lbuf_proj2 *pp)
 {
-    free(order);
     free(pp->q);
     free(pp->span);
     free(pp->rs);
-    rt_lbuf_free(lb);
+}
+
+/* The build's passes on the pool. Projection (part k: the primitives of rt_par_range(k, n)):
+   each part projects its primitives, keeps their row spans in its own rs (first[i]: the
+   first span of primitive i, local, then global once the parts' spans are put one after the
+   other) and counts its depth buckets. Lists (part k: the rows of rt_par_range(k, n) over
+   nv): each part counts, sums and fills the cells of its rows from all spans, the primitives
+   in depth order, so every list is the one a single pass would make. */
+typedef struct rt_lbuf_part {
+    rt_lbuf_proj2 pp;
+    size_t total;    /* cells of its primitives */
+    size_t nspans;   /* its spans */
+    size_t base;     /* spans of the parts before it; lists: entries of the rows before */
+    int rc;          /* 1, 0 (a vertex not in front: no buffer), -1 (no memory), 2 (too many) */
+    uint32_t bcount[RT_LBUF_BUCKETS + 1];
+    char pad[RT_LINE];
+} rt_lbuf_part;
+
+typedef struct rt_lbuf_job {
+    const rt_scene *sc;
+    rt_lbuf *lb;
+    double mx, my;
+    uint32_t *first, *order;
+    int32_t *rs;     /* all spans */
+    rt_lbuf_part *part;
+} rt_lbuf_job;
+
+static void rt_lbuf_project_part(void *arg, int k, int n)
+{
+    rt_lbuf_job *j = arg;
+    rt_lbuf_part *pt = &j->part[k];
+    size_t lo, hi;
+    rt_par_range(j->sc->nprim, k, n, &lo, &hi);
+    pt->rc = 1;
+    for (size_t i = lo; i < hi; i++) {
+        const int pr = rt_lbuf_project(j->lb, j->sc, i, &pt->pp);
+        j->first[i] = (uint32_t)(pt->pp.nrs / 3);
+        const size_t nc_i = pr > 0 ? rt_lbuf_cells(j->lb, &pt->pp, j->mx, j->my) : SIZE_MAX;
+        if (pr <= 0 || nc_i == SIZE_MAX || pt->pp.nrs / 3 > UINT32_MAX - 1) {
+            pt->rc = pr == 0 ? 0 : -1;
+            return;
+        }
+        pt->total += nc_i;
+        if (pt->total > RT_LBUF_MAX_ENTRIES) {
+            pt->rc = 2;
+            return;
+        }
+        const uint32_t b = rt_lbuf_bucket(j->lb, pt->pp.zmin - j->lb->zeps);
+        j->lb->zb[i] = (uint16_t)b;
+        pt->bcount[b + 1]++;
+    }
+    pt->nspans = pt->pp.nrs / 3;
+}
+
+/* part k's spans into the common array, its first[] made global */
+static void rt_lbuf_gather_part(void *arg, int k, int n)
+{
+    rt_lbuf_job *j = arg;
+    rt_lbuf_part *pt = &j->part[k];
+    size_t lo, hi;
+    rt_par_range(j->sc->nprim, k, n, &lo, &hi);
+    if (pt->nspans)
+        memcpy(j->rs + 3 * pt->base, pt->pp.rs, 3 * pt->nspans * sizeof(int32_t));
+    for (size_t i = lo; i < hi; i++)
+        j->first[i] += (uint32_t)pt->base;
+}
+
+/* off[c + 1] = entries of cell c, for the cells of part k's rows, then their running sum
+   within the rows (the parts' totals are summed between the passes) */
+static void rt_lbuf_count_part(void *arg, int k, int n)
+{
+    rt_lbuf_job *j = arg;
+    rt_lbuf *lb = j->lb;
+    size_t r0, r1;
+    rt_par_range((size_t)lb->nv, k, n, &r0, &r1);
+    const size_t nspans = j->first[j->sc->nprim], nu = (size_t)lb->nu;
+    for (size_t q = 0; q < nspans; q++) {
+        const int32_t *r = j->rs + 3 * q;
+        if ((size_t)r[0] < r0 || (size_t)r[0] >= r1)
+            continue;
+        uint32_t *o = lb->off + (size_t)r[0] * nu + 1;
+        for (int32_t x = r[1]; x <= r[2]; x++)
+            o[x]++;
+    }
+    for (size_t c = r0 * nu + 1; c < r1 * nu; c++)
+        lb->off[c + 1] += lb->off[c];
+    j->part[k].base = r1 > r0 ? lb->off[r1 * nu] : 0; /* the rows' entries */
+}
+
+/* off[c + 1] becomes cell c's list end; the lists are filled from the back, the primitives
+   in reverse depth order, which leaves off[c + 1] at the start of cell c's list */
+static void rt_lbuf_fill_part(void *arg, int k, int n)
+{
+    rt_lbuf_job *j = arg;
+    rt_lbuf *lb = j->lb;
+    size_t r0, r1;
+    rt_par_range((size_t)lb->nv, k, n, &r0, &r1);
+    const size_t nu = (size_t)lb->nu, base = j->part[k].base;
+    for (size_t c = r0 * nu; c < r1 * nu; c++)
+        lb->off[c + 1] += (uint32_t)base;
+    for (size_t jj = j->sc->nprim; jj > 0; jj--) {
+        const uint32_t i = j->order[jj - 1];
+        for (uint32_t q = j->first[i + 1]; q > j->first[i]; q--) {
+            const int32_t *r = j->rs + 3 * (size_t)(q - 1);
+            if ((size_t)r[0] < r0 || (size_t)r[0] >= r1)
+                continue;
+            uint32_t *o = lb->off + (size_t)r[0] * nu + 1;
+            for (int32_t x = r[2]; x >= r[1]; x--)
+                lb->ids[--o[x]] = i;
+        }
+    }
 }
 
 /* The light buffer of light l over the scene: RT_LBUF_CELLS_PER_PRIM cells per primitive
  * (chosen on SPD gears, docs/bench/rt_tuning.md). */
-int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
+int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb)
 {
     memset(lb, 0, sizeof *lb);
     if (l->type != RT_LIGHT_POSITIONAL && l->type != RT_LIGHT_SPOT &&
@@ -325,60 +432,68 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, rt_lbuf *lb)
         rt_lbuf_free(lb);
         return RT_ERR_NOMEM;
     }
-    uint32_t *bcount = order + sc->nprim;
-    uint32_t *first = rt_alloc_array(sc->nprim + 1, sizeof(uint32_t)); /* of its spans in rs */
-    size_t total = 0;
-    rt_lbuf_proj2 pp;
-    memset(&pp, 0, sizeof pp);
-    if (!first) {
-        rt_lbuf_fail(lb, order, &pp);
-        return RT_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < sc->nprim && total <= RT_LBUF_MAX_ENTRIES; i++) {
-        const int pr = rt_lbuf_project(lb, sc, i, &pp);
-        first[i] = (uint32_t)(pp.nrs / 3);
-        const size_t nc_i = pr > 0 ? rt_lbuf_cells(lb, &pp, mx, my) : SIZE_MAX;
-        if (pr <= 0 || nc_i == SIZE_MAX || pp.nrs / 3 > UINT32_MAX - 1) {
-            free(first);
-            rt_lbuf_fail(lb, order, &pp);
-            return pr == 0 ? RT_OK : RT_ERR_NOMEM;
-        }
-        total += nc_i;
-        lb->zb[i] = (uint16_t)rt_lbuf_bucket(lb, pp.zmin - lb->zeps);
-        bcount[lb->zb[i] + 1]++;
-    }
-    first[sc->nprim] = (uint32_t)(pp.nrs / 3);
-    lb->ids = total <= RT_LBUF_MAX_ENTRIES ? rt_alloc_array(total ? total : 1, sizeof(uint32_t)) : NULL;
-    if (!lb->ids) {
-        free(first);
-        rt_lbuf_fail(lb, order, &pp);
-        return total <= RT_LBUF_MAX_ENTRIES ? RT_ERR_NOMEM : RT_OK;
-    }
-    /* the primitives in bucket order (counting sort) fill the lists: each list is in order */
-    for (uint32_t b = 0; b < RT_LBUF_BUCKETS; b++)
-        bcount[b + 1] += bcount[b];
-    for (size_t i = 0; i < sc->nprim; i++)
-        order[bcount[lb->zb[i]]++] = (uint32_t)i;
-    for (size_t k = 0; k < nc; k++)
-        lb->off[k + 1] += lb->off[k];
-    for (size_t j = 0; j < sc->nprim; j++) {
-        const uint32_t i = order[j];
-        for (uint32_t k = first[i]; k < first[i + 1]; k++) {
-            const int32_t *r = pp.rs + 3 * (size_t)k;
-            const size_t row = (size_t)r[0] * (size_t)lb->nu;
-            for (int32_t x = r[1]; x <= r[2]; x++)
-                lb->ids[lb->off[row + (size_t)x]++] = i;
+    rt_lbuf_job j = {sc, lb, mx, my, rt_alloc_array(sc->nprim + 1, sizeof(uint32_t)), order,
+                     NULL, NULL};
+    int nt = threads < 1 ? 1 : threads; /* parts: a bucket count and spans of their own */
+    if ((size_t)nt > sc->nprim / RT_LBUF_PART_PRIMS + 1)
+        nt = (int)(sc->nprim / RT_LBUF_PART_PRIMS + 1);
+    j.part = rt_calloc_array((size_t)nt, sizeof *j.part);
+    int rc = j.first && j.part ? RT_OK : RT_ERR_NOMEM;
+    size_t total = 0, nspans = 0;
+    if (rc == RT_OK) {
+        rt_par_run(nt, rt_lbuf_project_part, &j);
+        for (int k = 0; k < nt; k++) {
+            const int prc = j.part[k].rc;
+            if (prc != 1 && rc == RT_OK)
+                rc = prc == -1 ? RT_ERR_NOMEM : RT_ERR_LIMIT; /* LIMIT here: no buffer */
+            j.part[k].base = nspans;
+            nspans += j.part[k].nspans;
+            total += j.part[k].total;
         }
     }
-    for (size_t k = nc; k > 0; k--)
-        lb->off[k] = lb->off[k - 1];
-    lb->off[0] = 0;
-    free(first);
+    if (rc == RT_OK && (total > RT_LBUF_MAX_ENTRIES || nspans > UINT32_MAX - 1))
+        rc = RT_ERR_LIMIT;
+    if (rc == RT_OK) {
+        j.first[sc->nprim] = (uint32_t)nspans;
+        j.rs = rt_alloc_array(nspans ? 3 * nspans : 1, sizeof(int32_t));
+        lb->ids = rt_alloc_array(total ? total : 1, sizeof(uint32_t));
+        if (!j.rs || !lb->ids)
+            rc = RT_ERR_NOMEM;
+    }
+    if (rc == RT_OK) {
+        rt_par_run(nt, rt_lbuf_gather_part, &j);
+        /* the primitives in bucket order (counting sort): each list is in that order */
+        uint32_t *bcount = order + sc->nprim;
+        for (uint32_t b = 0; b <= RT_LBUF_BUCKETS; b++)
+            for (int k = 0; k < nt; k++)
+                bcount[b] += j.part[k].bcount[b];
+        for (uint32_t b = 0; b < RT_LBUF_BUCKETS; b++)
+            bcount[b + 1] += bcount[b];
+        for (size_t i = 0; i < sc->nprim; i++)
+            order[bcount[lb->zb[i]]++] = (uint32_t)i;
+        int nr = nt < lb->nv ? nt : lb->nv; /* parts of rows */
+        rt_par_run(nr, rt_lbuf_count_part, &j);
+        size_t run = 0;
+        for (int k = 0; k < nr; k++) {
+            const size_t t = j.part[k].base;
+            j.part[k].base = run;
+            run += t;
+        }
+        rt_par_run(nr, rt_lbuf_fill_part, &j);
+        memmove(lb->off, lb->off + 1, nc * sizeof(uint32_t)); /* off[c]: cell c's start */
+        lb->off[nc] = (uint32_t)total;
+        lb->ok = 1;
+    }
+    for (int k = 0; j.part && k < nt; k++)
+        rt_lbuf_proj2_free(&j.part[k].pp);
+    free(j.part);
+    free(j.first);
+    free(j.rs);
     free(order);
-    free(pp.q);
-    free(pp.span);
-    free(pp.rs);
-    lb->ok = 1;
+    if (rc != RT_OK) {
+        rt_lbuf_free(lb);
+        return rc == RT_ERR_LIMIT ? RT_OK : rc; /* not in front or too large: no buffer */
+    }
     return RT_OK;
 }
 

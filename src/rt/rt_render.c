@@ -670,13 +670,14 @@ typedef struct rt_cover_out {
 #define RT_CAND_RAYS (1u << 22)
 #define RT_CAND_PER_RAY 16
 
-/* one pass of every primitive's projection into sink s; 0 if a vertex does not project */
+/* one pass of primitives lo .. hi-1's projections into sink s; 0 if a vertex does not project */
 static int rt_cover_pass(const rt_scene *sc, const rt_camera *cam, const double vm[4][4],
-                         double ws, double off, int gw, int gh, rt_cover_sink *s)
+                         double ws, double off, int gw, int gh, rt_cover_sink *s, size_t lo,
+                         size_t hi)
 {
-    for (size_t j = 0; j < sc->nprim; j++) {
+    for (size_t j = lo; j < hi; j++) {
         /* the fill pass goes backwards: each list ends up in ascending primitive order */
-        const size_t i = s->pass == RT_COVER_FILL ? sc->nprim - 1 - j : j;
+        const size_t i = s->pass == RT_COVER_FILL ? hi - 1 - (j - lo) : j;
         double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY}, q[4][2], x[3];
         const size_t nv = rt_prim_nverts(sc, i);
         for (size_t k = 0; k < nv; k++) {
@@ -702,7 +703,71 @@ static int rt_cover_pass(const rt_scene *sc, const rt_camera *cam, const double 
     return 1;
 }
 
-static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh)
+/* The candidate lists' passes on the pool: part k of the count and fill passes takes the
+   primitives of rt_par_range (k, n) with per-ray counters of its own (cnt[k]; cnt[0] becomes
+   the lists' offsets). Between them the counters become each part's list ends: in every
+   ray's list part k's entries follow those of the parts before it, so the lists are those of
+   one pass over all primitives in order. The ends are set in n ranges of rays: the ranges'
+   totals (tot), then their running sums, then the ends. */
+typedef struct rt_cover_job {
+    const rt_scene *sc;
+    const rt_camera *cam;
+    const double (*vm)[4];
+    double ws, off;
+    int gw, gh, pass, nt;
+    size_t nrays;
+    uint32_t *cnt[RT_PAR_MAX];
+    uint32_t *ids;
+    uint64_t tot[RT_PAR_MAX];
+    int ok[RT_PAR_MAX];
+} rt_cover_job;
+
+static void rt_cover_part(void *arg, int k, int n)
+{
+    rt_cover_job *j = arg;
+    size_t lo, hi;
+    rt_par_range(j->sc->nprim, k, n, &lo, &hi);
+    rt_cover_sink s = {j->pass, NULL, j->cnt[k], j->ids, 0};
+    j->ok[k] = rt_cover_pass(j->sc, j->cam, j->vm, j->ws, j->off, j->gw, j->gh, &s, lo, hi);
+}
+
+static void rt_cover_total_part(void *arg, int k, int n)
+{
+    rt_cover_job *j = arg;
+    size_t lo, hi;
+    rt_par_range(j->nrays, k, n, &lo, &hi);
+    uint64_t t = 0;
+    for (int p = 0; p < j->nt; p++)
+        for (size_t r = lo; r < hi; r++)
+            t += j->cnt[p][r];
+    j->tot[k] = t;
+}
+
+/* after the running sums: tot[k] = entries of the rays before range k */
+static void rt_cover_ends_part(void *arg, int k, int n)
+{
+    rt_cover_job *j = arg;
+    size_t lo, hi;
+    rt_par_range(j->nrays, k, n, &lo, &hi);
+    uint64_t total = j->tot[k];
+    for (size_t r = lo; r < hi; r++) {
+        for (int p = 0; p < j->nt; p++)
+            total += j->cnt[p][r];
+        uint64_t e = total; /* part p's end: the list's end less the later parts' entries */
+        for (int p = j->nt - 1; p >= 0; p--) {
+            const uint32_t c = j->cnt[p][r];
+            j->cnt[p][r] = (uint32_t)(e <= UINT32_MAX ? e : 0);
+            e -= c;
+        }
+    }
+}
+
+/* Primitives per part of the candidate lists' passes at least: each part beyond the first
+   costs a counter per ray. */
+#define RT_COVER_PART_PRIMS 1024
+
+static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh,
+                             int threads)
 {
     rt_cover_out none = {NULL, NULL, NULL}, out = none;
     if (sc->nprim == 0)
@@ -737,36 +802,70 @@ static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double of
     if (budget <= RT_CAND_RAYS && sc->nprim <= UINT32_MAX) {
         /* candidate lists: counts, their running sums (list ends), then the lists filled
            from the back, which leaves each ray's offset at its list's start */
-        rt_cover_sink s = {RT_COVER_COUNT, NULL, rt_calloc_array(budget + 1, sizeof(uint32_t)),
-                           NULL, 0};
-        if (!s.next)
+        rt_cover_job *j = rt_calloc_array(1, sizeof *j);
+        if (!j)
             return none;
-        if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
-            free(s.next);
-            return none;
+        int nt = threads < 1 ? 1 : threads;
+        if ((size_t)nt > sc->nprim / RT_COVER_PART_PRIMS + 1)
+            nt = (int)(sc->nprim / RT_COVER_PART_PRIMS + 1);
+        j->sc = sc;
+        j->cam = cam;
+        j->vm = (const double(*)[4])vm;
+        j->ws = ws;
+        j->off = off;
+        j->gw = gw;
+        j->gh = gh;
+        j->nrays = budget;
+        while (j->nt < nt && (j->cnt[j->nt] = rt_calloc_array(budget + 1, sizeof(uint32_t))))
+            j->nt++; /* fewer parts where memory runs short */
+        int ok = j->nt > 0;
+        if (ok) {
+            j->pass = RT_COVER_COUNT;
+            rt_par_run(j->nt, rt_cover_part, j);
+            for (int p = 0; p < j->nt; p++)
+                ok = ok && j->ok[p];
         }
-        uint64_t total = 0;
-        for (size_t k = 0; k < budget; k++) {
-            total += s.next[k];
-            s.next[k] = (uint32_t)(total <= UINT32_MAX ? total : 0);
-        }
-        if (total <= (uint64_t)RT_CAND_PER_RAY * budget) {
-            s.next[budget] = (uint32_t)total;
-            s.ids = rt_alloc_array(total ? (size_t)total : 1, sizeof(uint32_t));
-            s.pass = RT_COVER_FILL;
-            if (s.ids && rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
-                out.off = s.next;
-                out.ids = s.ids;
-                return out;
+        if (ok) {
+            rt_par_run(j->nt, rt_cover_total_part, j);
+            uint64_t total = 0;
+            for (int p = 0; p < j->nt; p++) {
+                const uint64_t t = j->tot[p];
+                j->tot[p] = total;
+                total += t;
             }
-            free(s.ids);
+            if (total <= (uint64_t)RT_CAND_PER_RAY * budget) {
+                rt_par_run(j->nt, rt_cover_ends_part, j);
+                j->cnt[0][budget] = (uint32_t)total;
+                j->ids = rt_alloc_array(total ? (size_t)total : 1, sizeof(uint32_t));
+                int filled = j->ids != NULL;
+                if (filled) {
+                    j->pass = RT_COVER_FILL;
+                    rt_par_run(j->nt, rt_cover_part, j);
+                    for (int p = 0; p < j->nt; p++)
+                        filled = filled && j->ok[p];
+                }
+                if (filled) {
+                    out.off = j->cnt[0];
+                    out.ids = j->ids;
+                    for (int p = 1; p < j->nt; p++)
+                        free(j->cnt[p]);
+                    free(j);
+                    return out;
+                }
+                free(j->ids);
+            }
         }
-        free(s.next); /* too many entries or no memory: the mask alone */
+        for (int p = 0; p < j->nt; p++)
+            free(j->cnt[p]);
+        free(j);
+        if (!ok)
+            return none;
+        /* too many entries or no memory: the mask alone */
     }
     rt_cover_sink s = {RT_COVER_MARK, rt_calloc_array(budget, 1), NULL, NULL, 0};
     if (!s.mask)
         return none;
-    if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s)) {
+    if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s, 0, sc->nprim)) {
         free(s.mask);
         return none;
     }
@@ -1104,7 +1203,7 @@ static int rt_job_lbufs(rt_job *job)
         return RT_OK;
     int rc = RT_OK;
     for (int li = 0; li < sc->nlights && rc == RT_OK; li++)
-        rc = rt_lbuf_build(sc, &sc->light[li], &job->lbuf[li]);
+        rc = rt_lbuf_build(sc, &sc->light[li], rt_par_threads(job->o.threads), &job->lbuf[li]);
     return rc;
 }
 
@@ -1195,7 +1294,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         }
     }
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
-        const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh);
+        const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh,
+                                         rt_par_threads(o->threads));
         job.cover = cv.mask;
         job.cand_off = cv.off;
         job.cand = cv.ids;

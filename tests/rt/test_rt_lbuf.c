@@ -16,6 +16,9 @@
  * lights and a light inside the scene box (no buffer: the walk), also translated by 1e6 and
  * with the light 1e4 away; secondary rays clipped to the display volume; a grazing light on
  * a finely tessellated sphere; the SPD gears (glass, 144-gons, five lights).
+ * The build's parts (test_build_parts): the buffers built with 2, 3 and 8 threads equal the
+ * one-thread buffer array for array, and every list is in ascending (depth bucket, primitive)
+ * order, the order the early stop of a shadow ray relies on.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -28,7 +31,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define GKS3D_RT_BUILDING 1
 #include "gksrt.h"
+#include "rt_internal.h"
 #include "rt_check.h"
 #include "rt_testutil.h"
 
@@ -332,6 +337,67 @@ static void test_gears(void **state)
     rtu_mesh_free(&m);
 }
 
+/* every light's buffer with 1, 2, 3 and 8 threads: equal, lists in (bucket, id) order;
+   returns the buffers compared */
+static int check_parts(const rt_scene *sc)
+{
+    int built = 0;
+    for (int li = 0; li < sc->nlights; li++) {
+        rt_lbuf one;
+        assert_int_equal(rt_lbuf_build(sc, &sc->light[li], 1, &one), RT_OK);
+        if (!one.ok)
+            continue;
+        built++;
+        const size_t nc = (size_t)one.nu * (size_t)one.nv;
+        assert_int_equal(one.off[0], 0);
+        for (size_t c = 0; c < nc; c++) {
+            assert_true(one.off[c] <= one.off[c + 1]);
+            for (uint32_t k = one.off[c] + 1; k < one.off[c + 1]; k++) {
+                const uint32_t a = one.ids[k - 1], b = one.ids[k];
+                assert_true(one.zb[a] < one.zb[b] || (one.zb[a] == one.zb[b] && a < b));
+            }
+        }
+        const int threads[3] = {2, 3, 8};
+        for (int t = 0; t < 3; t++) {
+            rt_lbuf par;
+            assert_int_equal(rt_lbuf_build(sc, &sc->light[li], threads[t], &par), RT_OK);
+            assert_true(par.ok && par.nu == one.nu && par.nv == one.nv);
+            assert_memory_equal(par.off, one.off, (nc + 1) * sizeof(uint32_t));
+            assert_memory_equal(par.ids, one.ids, (size_t)one.off[nc] * sizeof(uint32_t));
+            assert_memory_equal(par.zb, one.zb, sc->nprim * sizeof(uint16_t));
+            rt_lbuf_free(&par);
+        }
+        rt_lbuf_free(&one);
+    }
+    return built;
+}
+
+static void test_build_parts(void **state)
+{
+    (void)state;
+    /* the fine sphere on the floor (about 2300 primitives: 3 parts at 8 threads) */
+    const lb_case c = {.off = 0.0, .lights = 0, .sphere_only = 1};
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    build(sc, &c);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    assert_true(sc->nprim > 2 * 1024);
+    assert_true(check_parts(sc) >= 2);
+    rt_scene_free(sc);
+    /* the gears: 144-gons with holes among triangles, five lights */
+    rtu_mesh m;
+    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/gears.nff.gz", &m), 0);
+    sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    assert_int_equal(rtu_mesh_add(&m, sc, rt_scene_add_surface(sc, &s)), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    printf("parts: gears %zu primitives, %d buffers\n", sc->nprim, check_parts(sc));
+    rt_scene_free(sc);
+    rtu_mesh_free(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -340,6 +406,7 @@ int main(void)
         cmocka_unit_test(test_translated_and_far),
         cmocka_unit_test(test_grazing_sphere),
         cmocka_unit_test(test_gears),
+        cmocka_unit_test(test_build_parts),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
