@@ -562,12 +562,27 @@ static inline int rt_tri_normal_sane(const double *v0, const double *v1, const d
     return rt_poly_normal(vv, 3, &three, 1, c, ext, n);
 }
 
-/* the same for any 9 doubles: 0 also if a vertex is not sane */
-static int rt_tri_normal(const double *v, double nrm[3])
+/* 1 if rt_tri_normal_sane surely finds the triangle v0 v1 v2 (sane vertices) not degenerate:
+   twice its area, the cross product of two edges, is at least 10 times its tolerance
+   (1e-12 ext^2, ext the largest extent); both computations round by ~1e-15 ext^2, so its
+   Newell normal's length then passes the tolerance. 0: not sure (ask rt_tri_normal_sane).
+   The add-time check of a triangle (which keeps no normal) without its 15 divisions. */
+static inline int rt_tri_surely_sane(const double *v0, const double *v1, const double *v2)
 {
-    if (!sane3(v) || !sane3(v + 3) || !sane3(v + 6))
+    double ext = 0.0, e1[3], e2[3];
+    for (int j = 0; j < 3; j++) {
+        const double a = v0[j] < v1[j] ? v0[j] : v1[j], b = v0[j] < v1[j] ? v1[j] : v0[j];
+        const double lo = a < v2[j] ? a : v2[j], hi = b > v2[j] ? b : v2[j];
+        ext = hi - lo > ext ? hi - lo : ext;
+        e1[j] = v1[j] - v0[j];
+        e2[j] = v2[j] - v0[j];
+    }
+    if (!(ext > 0.0) || !(ext < 1e100))
         return 0;
-    return rt_tri_normal_sane(v, v + 3, v + 6, nrm);
+    const double c0 = e1[1] * e2[2] - e1[2] * e2[1], c1 = e1[2] * e2[0] - e1[0] * e2[2],
+                 c2 = e1[0] * e2[1] - e1[1] * e2[0];
+    const double t = 1e-11 * ext * ext;
+    return c0 * c0 + c1 * c1 + c2 * c2 > t * t;
 }
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
@@ -577,7 +592,9 @@ static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int bac
                        rt_prim *pr)
 {
     double nrm[3];
-    if (!rt_tri_normal(v, nrm))
+    if (!sane3(v) || !sane3(v + 3) || !sane3(v + 6))
+        return 0;
+    if (!rt_tri_surely_sane(v, v + 3, v + 6) && !rt_tri_normal_sane(v, v + 3, v + 6, nrm))
         return 0;
     memset(pr, 0, sizeof *pr);
     const int rc = rt_prim_init(sc, pr, id, front, back);

@@ -510,6 +510,27 @@ static void test_bad_input(void **state)
     ray_set(&r, 2.0, 0.5, 1, 0, 0, -1); /* inside the Inf / huge triangles only */
     rt_intersect(sc, 1, &r, &h);
     assert_int_equal(h.prim, -1);
+    rtc_traps_off();
+    /* slivers: twice the area 2e-11 and 5e-12 of the extent squared (the add-time shortcut
+       decides the first, the Newell normal the second: both above its tolerance 1e-12), at
+       the origin and at 1e6; kept. Collinear ones: dropped. */
+    rt_scene *sv = rt_scene_new();
+    const int ss = add_surface(sv);
+    const double hs[2] = {2e-11, 5e-12}, offs[2] = {0.0, 1e6};
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++) {
+            const double o = offs[b], e = b ? 1e4 : 1.0; /* (at 1e6 an extent of 1e4) */
+            double tri[9] = {o, o, o, o + e, o, o, o + 0.5 * e, o + hs[a] * e, o};
+            assert_true(rt_scene_add_polygon(sv, 1, &n3, tri, ss, ss) >= 0);
+            double col[9] = {o, o, o, o + 1, o + 2, o + 3, o + 2, o + 4, o + 6};
+            assert_true(rt_scene_add_polygon(sv, 1, &n3, col, ss, ss) >= 0);
+        }
+    assert_int_equal(rt_scene_commit(sv, NULL), RT_OK);
+    rt_grid_info svi;
+    assert_int_equal(rt_scene_grid_info(sv, &svi), RT_OK);
+    assert_int_equal(svi.prims, 4);
+    rt_scene_free(sv);
+    rtc_traps_on();
     /* NaN / Inf / zero rays: misses, no traps */
     const double bad[] = {NAN, INFINITY, -INFINITY};
     for (int i = 0; i < 3; i++)
