@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # The large-scene curve of issue 21: bench/scale/scale for 10^4 ... 2*10^7 triangles (one FILL
 # AREA 3 each, ray traced at 1024^2 with a shadow), each in its own process, with 2 threads,
-# then 4*10^6 with 1 thread for the whole-frame speed-up; prints each goal's figure against
-# its goal. Usage: bench/scale/run.sh [--quick] [--no-build] [BUILD_DIR]
+# then three cold pairs of 1 and 2 threads at 4*10^6 for the whole-frame speed-up and the
+# machine's cost of fresh memory (grow_probe touch); prints each goal's figure against its goal. Usage: bench/scale/run.sh [--quick] [--no-build] [BUILD_DIR]
 #   --quick: up to 10^6 (and the speed-up at 10^6).  BUILD_DIR default build-scale (Release).
 set -e
 quick=0; build=1; dir=build-scale
@@ -31,12 +31,25 @@ for n in $series; do
   line=$(cd "$out" && "$bin" "$n" -t 2 -o "$out/s_$n.png")
   echo "$line load=$load" | tee -a "$out/rows"
 done
-load=$(cut -d' ' -f1 /proc/loadavg)
-one=$(cd "$out" && "$bin" "$sp" -t 1 -o "$out/s1.png")
-echo "$one threads=1 load=$load"
-if cmp -s "$out/s1.png" "$out/s_$sp.png"; then echo "# pictures of 1 and 2 threads at n=$sp: equal (cmp)"
-else echo "# pictures of 1 and 2 threads at n=$sp differ!"; fi
-awk -v big="$big" -v sp="$sp" -v one="$one" '
+# The speed-up: three pairs of 1 and 2 threads, each process cold (4 s after the one before:
+# a VM host may back freed guest pages again only when they are next used, so a process
+# started at once after another gets memory that is cheaper to touch; grow_probe touch below)
+pairs=""
+for k in 1 2 3; do
+  sleep 4; load=$(cut -d' ' -f1 /proc/loadavg)
+  one=$(cd "$out" && "$bin" "$sp" -t 1 -o "$out/s1.png")
+  echo "$one threads=1 load=$load"
+  sleep 4; load=$(cut -d' ' -f1 /proc/loadavg)
+  two=$(cd "$out" && "$bin" "$sp" -t 2 -o "$out/s2.png")
+  echo "$two threads=2 load=$load"
+  pairs="$pairs $(echo "$one" | sed 's/.* total=\([0-9.]*\).*/\1/'):$(echo "$two" | sed 's/.* total=\([0-9.]*\).*/\1/')"
+  if cmp -s "$out/s1.png" "$out/s2.png" && cmp -s "$out/s1.png" "$out/s_$sp.png"; then
+    echo "# pictures of 1 and 2 threads at n=$sp: equal (cmp)"
+  else echo "# pictures of 1 and 2 threads at n=$sp differ!"; fi
+done
+probe=$(dirname "$bin")/grow_probe
+if [ -x "$probe" ]; then sleep 4; echo "# $("$probe" touch)"; fi
+awk -v big="$big" -v sp="$sp" -v one="$one" -v two="$two" -v pairs="$pairs" '
 function val(s, k,   i, a, n) { n = split(s, a, " "); for (i = 1; i <= n; i++) if (index(a[i], k "=") == 1) return substr(a[i], length(k) + 2); return "" }
 { n = val($0, "n"); t[n] = val($0, "total"); r[n] = val($0, "rss"); b[n] = val($0, "B/tri"); last = n; c[n] = val($0, "us/call"); cc[n] = val($0, "cpu_us/call"); ap[n] = val($0, "app_us/call"); u[n] = val($0, "cpu"); l[n] = val($0, "load"); ord[++nr] = n }
 END {
@@ -45,9 +58,12 @@ END {
   for (k in t) if (k + 0 >= sp * 0.99 && k + 0 <= sp * 1.01) ks = k;
   printf "goal  10^7-class frame wall, 2 threads: %.2f s at n=%s (goal <= 6 s; ratio %.2f; process CPU %s s, load %s): %s\n", t[kb], kb, t[kb] / 6, u[kb], l[kb], (t[kb] + 0 <= 6 ? "met" : "NOT met");
   printf "goal  peak RSS: %.0f MiB at n=%s (goal <= 2048 MiB; ratio %.2f): %s\n", r[kb], kb, r[kb] / 2048, (r[kb] + 0 <= 2048 ? "met" : "NOT met");
-  t1 = val(one, "total");
-  printf "goal  whole-frame speed-up 1 -> 2 threads at n=%s: %.2f (goal >= 1.8; ratio %.2f; load %s): %s\n", ks, t1 / t[ks], t1 / t[ks] / 1.8, l[ks], (t1 / t[ks] >= 1.8 ? "met" : "NOT met");
+  np = split(pairs, pr, " "); list = "";
+  for (i = 1; i <= np; i++) { split(pr[i], q, ":"); sr[i] = q[1] / q[2]; list = list sprintf("%s%.2f", i > 1 ? ", " : "", sr[i]) }
+  for (i = 1; i <= np; i++) for (j = i + 1; j <= np; j++) if (sr[j] < sr[i]) { x = sr[i]; sr[i] = sr[j]; sr[j] = x }
+  med = sr[int((np + 1) / 2)];
+  printf "goal  whole-frame speed-up 1 -> 2 threads at n=%s: %.2f, the median of %d cold pairs (%s) (goal >= 1.8; ratio %.2f): %s\n", ks, med, np, list, med / 1.8, (med >= 1.8 ? "met" : "NOT met");
   printf "goal  GKS call chain: %s us per FILL AREA 3 wall at n=%s (goal <= 0.25; ratio %.2f): %s; the application thread'"'"'s CPU %s us per call (ratio %.2f), process CPU %s\n", c[kb], kb, c[kb] / 0.25, (c[kb] + 0 <= 0.25 ? "met" : "NOT met"), ap[kb], ap[kb] / 0.25, cc[kb];
-  t1c = val(one, "cpu"); printf "info  1 -> 2 threads at n=%s by process CPU: %s s / %s s (work added by the second thread: %.0f %%)\n", ks, t1c, u[ks], 100 * (u[ks] / t1c - 1);
+  t1c = val(one, "cpu"); t2c = val(two, "cpu"); printf "info  1 -> 2 threads at n=%s by process CPU, last pair: %s s / %s s (work added by the second thread: %.0f %%)\n", ks, t1c, t2c, 100 * (t2c / t1c - 1);
   printf "info  bytes per triangle resident at n=%s: %s; largest scene in 23 GB by that: %.2g triangles\n", last, b[last], 23e9 / b[last];
 }' "$out/rows"
