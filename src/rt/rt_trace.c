@@ -237,13 +237,14 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
 
 #define RT_INLINE static inline __attribute__((always_inline))
 
-/* nearest-hit update for primitive i (mailboxed by the caller) */
+/* nearest-hit update for primitive i (mailboxed by the caller); equal distances go to the
+   primitive added first, so the picture does not depend on the order of the cell lists */
 RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i, double *best,
                                long *bi)
 {
     double t;
     if (rt_isect_prim(sc, r, i, r->tmin, RT_MIN(*best, r->tmax), &t) &&
-        (t < *best || (t == *best && sc->prim[i].id < sc->prim[*bi].id))) {
+        (t < *best || (t == *best && (*bi < 0 || sc->prim[i].id < sc->prim[*bi].id)))) {
         *best = t;
         *bi = (long)i;
         __builtin_prefetch(&sc->prim[i]); /* read when the hit is reported */
