@@ -11,7 +11,8 @@
 #   - libgks3d_fortran.so / .a define only Fortran entry points (gNAME_ as gfortran mangles
 #     them), none of the C names;
 # and with --installed, for the libraries and headers installed under PREFIX, also:
-#   - no shared library has a RUNPATH or RPATH;
+#   - libgks3d.so has no RUNPATH or RPATH; libgks3d_fortran.so has RUNPATH $ORIGIN (it
+#     finds libgks3d.so.0 next to it), none when PREFIX is /usr or /usr/local;
 #   - gks3d_version.h is installed and defines GKS3D_VERSION_MAJOR/MINOR/PATCH.
 set -eu
 fail=0
@@ -81,12 +82,16 @@ fortran_check() { # WHAT NAMES
 [ -z "$far" ] || fortran_check "libgks3d_fortran.a global definitions" "$(ar_names "$far")"
 
 if [ "$installed" = 1 ]; then
+    case $(cd "$prefix" && pwd) in /usr|/usr/local) system=1 ;; *) system=0 ;; esac
     for lib in "$libdir"/libgks3d*.so*; do
         [ -f "$lib" ] && [ ! -L "$lib" ] || continue
-        if readelf -d "$lib" | grep -Eq '\((RUNPATH|RPATH)\)'; then
-            bad "$(basename "$lib") has $(readelf -d "$lib" | grep -E '\((RUNPATH|RPATH)\)')"
+        rp=$(readelf -d "$lib" | grep -E '\((RUNPATH|RPATH)\)' | sed 's/.*\[\(.*\)\]/\1/' || true)
+        want_rp=""
+        case $(basename "$lib") in libgks3d_fortran.so*) [ $system = 1 ] || want_rp='$ORIGIN' ;; esac
+        if [ "$rp" != "$want_rp" ] || readelf -d "$lib" | grep -q '(RPATH)'; then
+            bad "$(basename "$lib") has RUNPATH/RPATH '$rp', expected '${want_rp:-none}'"
         else
-            echo "$(basename "$lib"): no RUNPATH/RPATH"
+            echo "$(basename "$lib"): RUNPATH ${want_rp:-none}, as intended"
         fi
     done
     vh=$prefix/include/gks3d/gks3d_version.h

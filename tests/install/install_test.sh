@@ -1,36 +1,66 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # install_test.sh MODE BUILD_DIR WORK_DIR SANITIZE_FLAGS
-# Tests of the installed gks3d package. MODE:
-#   install   cmake --install BUILD_DIR --prefix WORK_DIR/prefix (fresh)
-#   symbols   tests/core/check_symbols.sh --installed on it (exports, hooks, RUNPATH, version)
-#   cmake-c   configure, build and run tests/install/consumer_c via find_package(gks3d)
-#   pkgconfig compile consumer_c/consumer.c with `pkg-config --cflags --libs gks3d`, run it
-#   fortran   configure, build and run tests/install/consumer_f77 via find_package(gks3d)
-#             and check the PNG file it writes (exit 77 = skipped: GKS3D_HAVE_FORTRAN != 1)
+# Tests of the installed gks3d package, done as a user does them: the prefix
+# (WORK_DIR/prefix) is outside the loader's search path, and LD_LIBRARY_PATH is unset for
+# every link and every run (the README's build section documents these link lines). MODE:
+#   install        cmake --install BUILD_DIR --prefix WORK_DIR/prefix (fresh)
+#   symbols        tests/core/check_symbols.sh --installed on it (exports, hooks, RUNPATH)
+#   cmake-c        tests/install/consumer_c via find_package(gks3d): gks3d::gks3d,
+#                  gks3d::shared and gks3d::static, built and run
+#   cmake-fortran  tests/install/consumer_f77 via find_package(gks3d COMPONENTS Fortran):
+#                  gks3d::fortran and gks3d::fortran_static, built and run
+#   pkgconfig-c    consumer_c/consumer.c linked with `pkg-config --libs gks3d` (shared) and
+#                  `pkg-config --static --libs gks3d` (libgks3d.a), run
+#   pkgconfig-fortran  consumer_f77/consumer.f the same way with gks3d-fortran
+# The Fortran modes exit 77 (skipped) when GKS3D_HAVE_FORTRAN != 1.
 set -eu
 mode=$1 build=$2 work=$3 sanflags=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
 prefix=$work/prefix
-# The installed shared libraries carry no RPATH; libgks3d_fortran.so needs libgks3d.so.
-for d in lib lib64 "lib/$(gcc -print-multiarch 2>/dev/null || true)"; do
-    LD_LIBRARY_PATH=$prefix/$d${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-done
-export LD_LIBRARY_PATH
+# A user's environment: nothing tells the linker or the loader where the prefix is.
+unset LD_LIBRARY_PATH LIBRARY_PATH LD_RUN_PATH || true
 
 png_size() { # FILE -> "WIDTHxHEIGHT" if FILE starts with a PNG signature and IHDR
+    [ -f "$1" ] || { echo "missing"; return; }
     sig=$(od -A n -t u1 -N 16 "$1" | tr -s ' \n' ' ')
     [ "$sig" = " 137 80 78 71 13 10 26 10 0 0 0 13 73 72 68 82 " ] || { echo "not a PNG"; return; }
     set -- $(od -A n -t u1 -j 16 -N 8 "$1")
     echo "$(( ($1 << 24) + ($2 << 16) + ($3 << 8) + $4 ))x$(( ($5 << 24) + ($6 << 16) + ($7 << 8) + $8 ))"
 }
-
+need_fortran() {
+    [ "${GKS3D_HAVE_FORTRAN:-0}" = 1 ] || { echo "skipped: no Fortran binding in this build"; exit 77; }
+}
+run_f77() { # EXE [LIBDIR]: runs the Fortran consumer in its folder (with
+    # LD_LIBRARY_PATH=LIBDIR for this run only if given), checks gks7.png
+    rm -f gks7.png
+    if [ -n "${2:-}" ]; then LD_LIBRARY_PATH=$2 "./$1"; else "./$1"; fi
+    size=$(png_size gks7.png)
+    [ "$size" = 1024x1024 ] || { echo "$1: gks7.png is $size, expected 1024x1024"; exit 1; }
+    echo "$1: ran, gks7.png OK ($size)"
+}
+no_shared_gks() { # EXE: a static consumer must not need any libgks3d*.so
+    if ldd "$1" | grep -q 'libgks3d'; then echo "$1 uses a shared libgks3d: $(ldd "$1" | grep libgks3d)"; exit 1; fi
+}
 consumer() { # NAME: configure + build tests/install/NAME against the prefix
     rm -rf "$work/$1"
     cmake -S "$here/$1" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Debug \
           -DCMAKE_C_FLAGS="$sanflags" -DCMAKE_Fortran_FLAGS="$sanflags" \
           -DCMAKE_EXE_LINKER_FLAGS="$sanflags" >"$work/$1.log" 2>&1 || { cat "$work/$1.log"; exit 1; }
     cmake --build "$work/$1" >>"$work/$1.log" 2>&1 || { cat "$work/$1.log"; exit 1; }
+}
+pc_setup() {
+    PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig "$prefix"/lib/*/pkgconfig | tr ' ' ':')
+    export PKG_CONFIG_PATH
+    libdir=$(pkg-config --variable=libdir gks3d)
+    mkdir -p "$work/$mode"
+    cd "$work/$mode"
+}
+# The static form of a pkg-config link line: the archives in place of -lgks3d and
+# -lgks3d_fortran (the linker prefers the .so when both are there), as the README says.
+static_line() {
+    echo " $* " | sed -e 's/ -lgks3d_fortran / -Wl,-Bstatic -lgks3d_fortran -Wl,-Bdynamic /' \
+                      -e 's/ -lgks3d / -Wl,-Bstatic -lgks3d -Wl,-Bdynamic /'
 }
 
 case $mode in
@@ -57,73 +87,82 @@ symbols)
 cmake-c)
     consumer consumer_c
     cd "$work/consumer_c"
-    ./consumer_default "$work/consumer_c/default.png"
-    ./consumer_shared "$work/consumer_c/shared.png"
-    ./consumer_static "$work/consumer_c/static.png"
-    # The static executable must not need libgks3d.so.
-    if ldd ./consumer_static | grep -q libgks3d; then echo "consumer_static uses libgks3d.so"; exit 1; fi ;;
-pkgconfig)
-    PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig | tr ' ' ':')
-    export PKG_CONFIG_PATH
+    for exe in consumer_default consumer_shared consumer_static; do
+        "./$exe" "$work/consumer_c/$exe.png"
+        echo "$exe: ran, $exe.png $(png_size "$work/consumer_c/$exe.png")"
+    done
+    no_shared_gks ./consumer_static ;;
+cmake-fortran)
+    need_fortran
+    grep -q 'gks3d::fortran' "$prefix"/lib*/cmake/gks3d/gks3dTargets.cmake ||
+        { echo "gks3d::fortran missing from the installed package"; exit 1; }
+    consumer consumer_f77
+    cd "$work/consumer_f77"
+    # consumer_f77 needs libgks3d_fortran.so, which needs libgks3d.so: found through the
+    # program's RUNPATH (CMake) and libgks3d_fortran's own RUNPATH $ORIGIN.
+    run_f77 consumer_f77
+    run_f77 consumer_f77_static
+    no_shared_gks ./consumer_f77_static ;;
+pkgconfig-c)
+    pc_setup
     flags=$(pkg-config --cflags --libs gks3d)
     echo "pkg-config --cflags --libs gks3d: $flags"
-    # A consumer gets only gks3d's own flags (the .pc file is relocatable, so the paths are
-    # relative to its directory); libpng's flags go to static links only.
+    # A shared consumer gets only gks3d's own flags (libpng's go to static links only).
     seen=""
     for f in $flags; do
         case $f in
         -I*/include/gks3d) seen="${seen}I" ;;
-        -L*/lib) seen="${seen}L" ;;
+        -L*/lib|-L*/lib/*) seen="${seen}L" ;;
         -lgks3d) seen="${seen}l" ;;
         *) echo "pkg-config gks3d: unexpected flag $f for a shared consumer"; exit 1 ;;
         esac
     done
     [ "$seen" = ILl ] || { echo "pkg-config gks3d: expected -I.../include/gks3d -L.../lib -lgks3d"; exit 1; }
+    # Shared, the plain link line; at run time the loader is told where the prefix is.
+    # shellcheck disable=SC2086
+    ${CC:-cc} $sanflags -std=c11 -o consumer "$here/consumer_c/consumer.c" $flags
+    LD_LIBRARY_PATH=$libdir ./consumer pc.png
+    echo "shared pkg-config consumer: ran with LD_LIBRARY_PATH=libdir, pc.png $(png_size pc.png)"
+    # Shared with -Wl,-rpath,libdir: runs with no environment variable.
+    # shellcheck disable=SC2086
+    ${CC:-cc} $sanflags -std=c11 -o consumer_rpath "$here/consumer_c/consumer.c" $flags -Wl,-rpath,"$libdir"
+    ./consumer_rpath pc_rpath.png
+    echo "shared pkg-config consumer, -rpath: ran, pc_rpath.png $(png_size pc_rpath.png)"
     sflags=$(pkg-config --static --libs gks3d)
     echo "pkg-config --static --libs gks3d: $sflags"
     case " $sflags " in
     *" -lpng"*" -lz "*) ;;
     *) echo "pkg-config --static gks3d: libpng and zlib missing"; exit 1 ;;
     esac
-    mkdir -p "$work/pkgconfig"
-    # libgks3d.a with the flags of --static, the system libraries as usual.
-    slibs=$(echo " $sflags " | sed 's/ -lgks3d / -Wl,-Bstatic -lgks3d -Wl,-Bdynamic /')
     # shellcheck disable=SC2086
-    ${CC:-cc} $sanflags -std=c11 -o "$work/pkgconfig/consumer_static" "$here/consumer_c/consumer.c" \
-        $(pkg-config --cflags gks3d) $slibs
-    "$work/pkgconfig/consumer_static" "$work/pkgconfig/pc_static.png"
-    if ldd "$work/pkgconfig/consumer_static" | grep -q libgks3d; then
-        echo "pkg-config static consumer uses libgks3d.so"; exit 1
-    fi
+    ${CC:-cc} $sanflags -std=c11 -o consumer_static "$here/consumer_c/consumer.c" \
+        $(pkg-config --cflags gks3d) $(static_line $sflags)
+    ./consumer_static pc_static.png
+    echo "static pkg-config consumer: ran, pc_static.png $(png_size pc_static.png)"
+    no_shared_gks ./consumer_static ;;
+pkgconfig-fortran)
+    need_fortran
+    pc_setup
+    flags=$(pkg-config --cflags --libs gks3d-fortran)
+    echo "pkg-config --cflags --libs gks3d-fortran: $flags"
+    # Shared: the link needs libgks3d.so too (the DT_NEEDED of libgks3d_fortran.so; the
+    # linker does not look for it in the -L folders), so the .pc must name it.
     # shellcheck disable=SC2086
-    ${CC:-cc} $sanflags -std=c11 -o "$work/pkgconfig/consumer" "$here/consumer_c/consumer.c" $flags
-    "$work/pkgconfig/consumer" "$work/pkgconfig/pc.png"
-    if pkg-config --exists gks3d-fortran; then
-        echo "pkg-config --cflags --libs gks3d-fortran: $(pkg-config --cflags --libs gks3d-fortran)"
-        mkdir -p "$work/pkgconfig/f77" && cd "$work/pkgconfig/f77" && rm -f gks7.png
-        # shellcheck disable=SC2046
-        ${FC:-gfortran} $sanflags -o consumer_f77 "$here/consumer_f77/consumer.f" \
-            $(pkg-config --cflags --libs gks3d-fortran)
-        ./consumer_f77
-        size=$(png_size gks7.png)
-        [ "$size" = 1024x1024 ] || { echo "pkg-config Fortran consumer: gks7.png is $size"; exit 1; }
-        echo "pkg-config Fortran consumer: gks7.png OK ($size)"
-    fi ;;
-fortran)
-    ls "$prefix"/lib*/cmake/gks3d/gks3dTargets.cmake >/dev/null
-    [ "${GKS3D_HAVE_FORTRAN:-0}" = 1 ] || { echo "skipped: no Fortran binding in this build"; exit 77; }
-    grep -q 'gks3d::fortran' "$prefix"/lib*/cmake/gks3d/gks3dTargets.cmake ||
-        { echo "gks3d::fortran missing from the installed package"; exit 1; }
-    consumer consumer_f77
-    cd "$work/consumer_f77"
-    for exe in consumer_f77 consumer_f77_static; do
-        rm -f gks7.png
-        "./$exe"
-        size=$(png_size gks7.png)
-        [ "$size" = 1024x1024 ] || { echo "$exe: gks7.png is $size, expected 1024x1024"; exit 1; }
-        echo "$exe: gks7.png OK ($size)"
-    done
-    if ldd ./consumer_f77_static | grep -q libgks3d; then echo "consumer_f77_static uses a shared libgks3d"; exit 1; fi ;;
+    ${FC:-gfortran} $sanflags -o consumer_f77 "$here/consumer_f77/consumer.f" $flags
+    run_f77 consumer_f77 "$libdir"
+    # With -Wl,-rpath,libdir: runs with no environment variable (libgks3d.so.0, needed by
+    # libgks3d_fortran.so, is found through libgks3d_fortran's RUNPATH $ORIGIN: the
+    # program's RUNPATH does not apply to its libraries' dependencies).
+    # shellcheck disable=SC2086
+    ${FC:-gfortran} $sanflags -o consumer_f77_rpath "$here/consumer_f77/consumer.f" $flags -Wl,-rpath,"$libdir"
+    run_f77 consumer_f77_rpath
+    sflags=$(pkg-config --static --libs gks3d-fortran)
+    echo "pkg-config --static --libs gks3d-fortran: $sflags"
+    # shellcheck disable=SC2086
+    ${FC:-gfortran} $sanflags -o consumer_f77_static "$here/consumer_f77/consumer.f" \
+        $(pkg-config --cflags gks3d-fortran) $(static_line $sflags)
+    run_f77 consumer_f77_static
+    no_shared_gks ./consumer_f77_static ;;
 *)
     echo "unknown mode $mode"; exit 2 ;;
 esac
