@@ -16,10 +16,7 @@
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_mpi.h"
-#ifdef GKS_HAVE_MPI
-#include "gks_par.h"
 #include <stdio.h>
-#endif
 #include <limits.h>
 #include <stdatomic.h>
 #include <math.h>
@@ -1020,9 +1017,6 @@ static float clampf(double v, double hi) { return !(v > 0) ? 0.0f : v > hi ? (fl
 static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
                        gks_raster_fb *fb, rt_stats *st, int *traced, int *fault)
 {
-#ifndef GKS_HAVE_MPI
-    (void)fault; /* only a lost MPI rank is a fault */
-#endif
     const Gview_rep3 *v = &ws->views[vi];
     double box[6];
     if (!display_volume(ws, v, box))
@@ -1059,16 +1053,14 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     if (env && strcmp(env, "1") == 0)
         o.progress = 1;
     int assemble = 1; /* this process composes the traced pixels (rank 0 when shared) */
-#ifdef GKS_HAVE_MPI
-    int serialized = 0;
-    rt_mpi_link *link = r->share_tiles ? ws_mpi_link(&serialized) : NULL;
-    rt_mpi_job mj;
+    int serialized = 0, rank = 0;
+    void *link = r->share_tiles ? ws_mpi_link(&serialized, &rank) : NULL;
+    void *mj = NULL;
     if (link) {
         if (!serialized)
             o.threads = 1; /* MPI calls from the calling thread only */
-        assemble = link->rank == 0;
+        assemble = rank == 0;
     }
-#endif
     size_t n = (size_t)w * (size_t)h;
     float *rgb = gks_alloc_array(n, 3 * sizeof(float));
     unsigned short *cnt = gks_alloc_array(n, sizeof *cnt);
@@ -1089,12 +1081,10 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     } else {
         per = o.corner_rays ? 4 : o.samples;
     }
-#ifdef GKS_HAVE_MPI
     if (link) {
         long nt = o.threads > 0 ? o.threads : sysconf(_SC_NPROCESSORS_ONLN);
-        o.tiles = rt_mpi_job_start(&mj, link, nt > 0 && nt < 256 ? (int)nt : 1);
+        o.tiles = ws_mpi_frame_start(link, nt > 0 && nt < 256 ? (int)nt : 1, &mj);
     }
-#endif
     tile_preview *tp = NULL;
     rt_tile_hook th;
     if (r->tile_fn && !o.tiles && (tp = gks_calloc_array(1, sizeof *tp))) {
@@ -1105,26 +1095,12 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     int rr = need_cover ? rt_render_cover(sc, &cam, &o, rgb, cnt, &s)
                         : rt_render(sc, &cam, &o, rgb, &s);
     gks_free(tp);
-#ifdef GKS_HAVE_MPI
-    if (link) {
-        const char *rep = getenv("GKS3D_MPI_REPORT");
-        if (rep && strcmp(rep, "1") == 0)
-            fprintf(stderr, "gks3d: MPI rank %d of %d: frame %u: %ld of %d tiles traced here, "
-                    "%ld bytes sent, %ld received\n", link->rank, link->size, mj.seq,
-                    mj.tiles_here, mj.ntiles, mj.sent_bytes, mj.recv_bytes);
-    }
-    if (link && rt_mpi_job_finish(&mj)) {
-        /* a lost rank: on rank 0 the picture is still complete (its tiles were traced
-           here); the error is reported after the frame is written */
-        fprintf(stderr, "gks3d: MPI rank %d: %s\n", link->rank, mj.msg);
-        gks_par_lost();
-        *fault = 305;
-    }
-    if (rr == RT_ERR_HOOK) {
+    if (link && ws_mpi_frame_end(link, mj))
+        *fault = 305; /* reported after the frame is written */
+    if (link && rr == RT_ERR_HOOK) { /* rank 0 went silent (ws_mpi.h) */
         err = 305;
         goto done;
     }
-#endif
     if (rr != RT_OK) {
         err = gks_err_of_rt(rr);
         goto done;

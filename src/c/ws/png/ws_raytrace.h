@@ -22,7 +22,7 @@ void ws_rt_reset(ws_rt *r);
 /* Number of recorded tracer primitives (a clipped CELL ARRAY may record several). */
 int ws_rt_count(const ws_rt *r);
 /* The tiles of the next frames are shared by the ranks of an MPI run (on) or traced here
- * alone (off, the default); ws_mpi.h. Without the MPI build: no effect. */
+ * alone (off, the default); ws_mpi.h. Without the MPI module: no effect. */
 void ws_rt_set_share_tiles(ws_rt *r, int on);
 /* Called after each traced tile with its pixels, so that a window can show the picture as
  * it forms (not with tiles shared by MPI ranks): framebuffer pixels [i0, i0 + w) x
