@@ -10,15 +10,18 @@
 #   ./build-asan  Debug, -DGKS_WERROR=ON -DGKS_SANITIZE=ON (AddressSanitizer + UBSan,
 #                 LeakSanitizer on when it works here, see below)
 # then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
-# Exits non-zero on any build or test failure.
+# Exits non-zero on any build or test failure. The tests are asked for explicitly
+# (-DBUILD_TESTING=ON, the Release build-min would not build them by default) and required
+# (-DGKS_REQUIRE_TESTS=ON: a missing cmocka stops the configure instead of skipping them).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/setup.sh
 
 echo "=== run-tests: Debug build with -Werror (build-test)"
+tests=(-DBUILD_TESTING=ON -DGKS_REQUIRE_TESTS=ON)
 cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
-      -DGKS_BUILD_BENCHMARKS=ON
+      -DGKS_BUILD_BENCHMARKS=ON "${tests[@]}"
 cmake --build build-test -j2
 ctest --test-dir build-test --output-on-failure -j2
 
@@ -29,14 +32,14 @@ while IFS= read -r name; do off+=("-D$name=OFF"); done < <(
     sed -n 's/^\(GKS_WITH_[A-Z0-9_]*\):BOOL=.*/\1/p' build-test/CMakeCache.txt | sort)
 echo "=== run-tests: every optional dependency off (build-min): ${off[*]}"
 cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Release -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
-      -DGKS_BUILD_BENCHMARKS=OFF "${off[@]}"
+      -DGKS_BUILD_BENCHMARKS=OFF "${tests[@]}" "${off[@]}"
 cmake --build build-min -j2
 ctest --test-dir build-min --output-on-failure -j2
 cmake -S . -B build-min -DGKS_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build-min -j2
 
 echo "=== run-tests: sanitizer build (build-asan)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=ON
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=ON "${tests[@]}"
 cmake --build build-asan -j2
 # LeakSanitizer needs ptrace-like access that some containers deny; probe it with a
 # tiny leaking program and enable leak detection only if LSan can actually run.
