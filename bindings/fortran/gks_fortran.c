@@ -413,6 +413,17 @@ FAPI void FNAME(gqops, GQOPS)(fint *opsta)
     *opsta = (fint)s;
 }
 
+/* GKSVER(MAJOR, MINOR, IPATCH): the version of the library loaded at run time (gks3d_version
+ * of the C binding; not a function of the standard, so callable in any GKS state). */
+FAPI void FNAME(gksver, GKSVER)(fint *major, fint *minor, fint *patch)
+{
+    int ma = 0, mi = 0, pa = 0;
+    gks3d_version(&ma, &mi, &pa);
+    *major = (fint)ma;
+    *minor = (fint)mi;
+    *patch = (fint)pa;
+}
+
 FAPI void FNAME(gqlvks, GQLVKS)(fint *errind, fint *level)
 {
     Glevel l = GLEVEL_0A;

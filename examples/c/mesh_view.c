@@ -32,7 +32,29 @@ static void usage(void)
 {
     fprintf(stderr, "usage: mesh_view [--threads N] [--samples N] [--depth N] [--size WxH]\n"
                     "                 [--ground] [--stats] [--ambient A] [--azimuth DEG]\n"
-                    "                 [--normals area|angle] mesh out.png\n");
+                    "                 [--normals area|angle] mesh out.png\n"
+                    "       mesh_view --help\n");
+}
+
+/* --help: what the program does, on stdout (exit status 0). */
+static void help(void)
+{
+    printf("mesh_view -- ray traces a triangle mesh (OFF or PLY, ASCII, gzip'd too) through\n"
+           "GKS-3D, lit from above and seen from the front, and writes the picture as a PNG.\n"
+           "\n"
+           "usage: mesh_view [options] mesh.off|mesh.ply[.gz] out.png\n"
+           "  --threads N          tracer threads (0: all CPUs)\n"
+           "  --samples N          N = m*m stratified samples per pixel (1..256) instead of\n"
+           "                       rays at the pixel corners with adaptive cut-off\n"
+           "  --depth N            maximum ray depth (eye ray = 1)\n"
+           "  --size WxH           picture size in pixels (default 512x512)\n"
+           "  --ground             a floor under the mesh that takes its shadow and reflection\n"
+           "  --ambient A          ambient light intensity (0..1, default 0.15)\n"
+           "  --azimuth DEG        turn the camera and the light about the vertical axis\n"
+           "  --normals area|angle vertex normals from the faces, smooth shading\n"
+           "  --stats              print the ray statistics and times\n"
+           "  --help               this text\n"
+           "Exit status: 0; 1 usage error; 2 unreadable mesh; 3 rendering error.\n");
 }
 
 int main(int argc, char **argv)
@@ -48,7 +70,10 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         int bad = 0;
-        if (strcmp(a, "--stats") == 0) {
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help();
+            return 0;
+        } else if (strcmp(a, "--stats") == 0) {
             stats = 1;
         } else if (strcmp(a, "--ground") == 0) {
             ground = 1;

@@ -56,7 +56,32 @@ static void usage(void)
     fprintf(stderr,
             "usage: nff_view [--threads N] [--spd] [--stats] [--samples N] [--depth N]\n"
             "                [--ambient A] [--tessellate N] [--size WxH] [--smooth] [--zbuffer]\n"
-            "                scene.nff out.png\n");
+            "                scene.nff out.png\n"
+            "       nff_view --help\n");
+}
+
+/* --help: what the program does, on stdout (exit status 0). */
+static void help(void)
+{
+    printf("nff_view -- ray traces an NFF scene (Haines' Neutral File Format, e.g. the SPD\n"
+           "scenes; gzip'd files too) through GKS-3D and writes the picture as a PNG file.\n"
+           "\n"
+           "usage: nff_view [options] scene.nff[.gz] out.png\n"
+           "  --threads N     tracer threads (0: all CPUs; default: the workstation's)\n"
+           "  --samples N     N = m*m stratified samples per pixel (1..256) instead of\n"
+           "                  rays at the pixel corners with adaptive cut-off\n"
+           "  --depth N       maximum ray depth (eye ray = 1)\n"
+           "  --ambient A     add a white ambient light of intensity A (0..1)\n"
+           "  --tessellate N  draw spheres and cones as FILL AREA 3 with N segments around\n"
+           "                  (otherwise skipped with a warning)\n"
+           "  --size WxH      picture size in pixels (default: the scene's resolution)\n"
+           "  --smooth        patches with vertex normals, smooth shading\n"
+           "  --zbuffer       z-buffer instead of ray tracing (no shadows)\n"
+           "  --spd           the SPD testing procedure (corner rays, depth 5, no cut-off)\n"
+           "                  and the ray statistics\n"
+           "  --stats         print the ray statistics and times\n"
+           "  --help          this text\n"
+           "Exit status: 0; 1 usage error; 2 unreadable scene; 3 rendering error.\n");
 }
 
 int main(int argc, char **argv)
@@ -71,7 +96,10 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         int bad = 0;
-        if (strcmp(a, "--spd") == 0) {
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help();
+            return 0;
+        } else if (strcmp(a, "--spd") == 0) {
             go.spd = stats = 1;
         } else if (strcmp(a, "--stats") == 0) {
             stats = 1;

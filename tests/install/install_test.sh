@@ -34,7 +34,13 @@ need_fortran() {
 run_f77() { # EXE [LIBDIR]: runs the Fortran consumer in its folder (with
     # LD_LIBRARY_PATH=LIBDIR for this run only if given), checks gks7.png
     rm -f gks7.png
-    if [ -n "${2:-}" ]; then LD_LIBRARY_PATH=$2 "./$1"; else "./$1"; fi
+    if [ -n "${2:-}" ]; then LD_LIBRARY_PATH=$2 "./$1"; else "./$1"; fi >"$1.out"
+    cat "$1.out"
+    # GKSVER: the version of the library loaded, as the package says (gks3d.pc).
+    v=$(awk '$1 == "GKSVER" { print $2 "." $3 "." $4 }' "$1.out")
+    want=$(PKG_CONFIG_PATH=$(echo "$prefix"/lib*/pkgconfig "$prefix"/lib/*/pkgconfig | tr ' ' ':') \
+           pkg-config --modversion gks3d)
+    [ "$v" = "$want" ] || { echo "$1: GKSVER gives '$v', the package is $want"; exit 1; }
     size=$(png_size gks7.png)
     [ "$size" = 1024x1024 ] || { echo "$1: gks7.png is $size, expected 1024x1024"; exit 1; }
     echo "$1: ran, gks7.png OK ($size)"
@@ -80,6 +86,21 @@ install)
     for f in gks_xform_ gks_raster_ rt_ ws_ gks_mf_; do
         nm "$a" | grep -q " t $f" || { echo "libgks3d.a lacks the code of ${f}*"; exit 1; }
         if nm -u "$a" | grep -q " U $f"; then echo "libgks3d.a needs ${f}* from outside"; exit 1; fi
+    done
+    # The MPI module, when built, in <libdir>/gks3d (docs/MPI.md).
+    if [ -e "$build/src/c/gks3d/libgks3d-mpi.so" ]; then
+        ls "$prefix"/lib*/gks3d/libgks3d-mpi.so >/dev/null || { echo "libgks3d-mpi.so not installed"; exit 1; }
+    fi
+    for f in LICENSE README.md CHANGELOG.md docs/MPI.md docs/BINDING.md; do
+        [ -f "$prefix/share/doc/gks3d/$f" ] || { echo "missing share/doc/gks3d/$f"; exit 1; }
+    done
+    # The programs run from the prefix with no environment variable (RUNPATH) and say what
+    # they do.
+    for p in nff_view mesh_view; do
+        [ -x "$build/examples/$p" ] || continue # GKS_BUILD_EXAMPLES=OFF: not built
+        [ -x "$prefix/bin/$p" ] || { echo "missing bin/$p"; exit 1; }
+        "$prefix/bin/$p" --help | grep -q "^$p -- ray traces" || { echo "bin/$p --help failed"; exit 1; }
+        echo "bin/$p --help: $("$prefix/bin/$p" --help | head -1)"
     done
     echo "installed into $prefix" ;;
 symbols)
