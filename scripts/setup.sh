@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# setup.sh -- install the build and test dependencies on Debian 12 (idempotent).
+# setup.sh [--deb] -- install the build and test dependencies on Debian 12 (idempotent).
+# --deb: also the Debian packaging tools (scripts/deb-package.sh, scripts/deb-chroot-test.sh).
 # Installs only what is missing, with apt-get (non-interactive); runs `apt-get update`
 # only when something has to be installed. Needs root (or sudo) only in that case.
 set -euo pipefail
@@ -10,6 +11,9 @@ packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
           libopenmpi-dev openmpi-bin # OpenMPI: the optional MPI build and its test (docs/MPI.md)
           libcairo2-dev poppler-utils librsvg2-bin ghostscript) # cairo: the PDF/SVG/PS/EPS
           # workstations; their tests open the files in pdftoppm, rsvg-convert and gs
+if [ "${1:-}" = --deb ]; then
+    packages+=(debhelper dpkg-dev fakeroot lintian mmdebstrap)
+fi
 missing=()
 for p in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
