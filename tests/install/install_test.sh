@@ -25,6 +25,7 @@ png_size() { # FILE -> "WIDTHxHEIGHT" if FILE starts with a PNG signature and IH
     [ -f "$1" ] || { echo "missing"; return; }
     sig=$(od -A n -t u1 -N 16 "$1" | tr -s ' \n' ' ')
     [ "$sig" = " 137 80 78 71 13 10 26 10 0 0 0 13 73 72 68 82 " ] || { echo "not a PNG"; return; }
+    # shellcheck disable=SC2046
     set -- $(od -A n -t u1 -j 16 -N 8 "$1")
     echo "$(( ($1 << 24) + ($2 << 16) + ($3 << 8) + $4 ))x$(( ($5 << 24) + ($6 << 16) + ($7 << 8) + $8 ))"
 }
@@ -49,7 +50,7 @@ no_shared_gks() { # EXE: a static consumer must not need any libgks3d*.so
     if ldd "$1" | grep -q 'libgks3d'; then echo "$1 uses a shared libgks3d: $(ldd "$1" | grep libgks3d)"; exit 1; fi
 }
 consumer() { # NAME: configure + build tests/install/NAME against the prefix
-    rm -rf "$work/$1"
+    rm -rf "${work:?}/$1"
     cmake -S "$here/$1" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Debug \
           -DCMAKE_C_FLAGS="$sanflags" -DCMAKE_Fortran_FLAGS="$sanflags" \
           -DCMAKE_EXE_LINKER_FLAGS="$sanflags" >"$work/$1.log" 2>&1 || { cat "$work/$1.log"; exit 1; }
@@ -155,7 +156,7 @@ pkgconfig-c)
     *" -lpng"*" -lz "*) ;;
     *) echo "pkg-config --static gks3d: libpng and zlib missing"; exit 1 ;;
     esac
-    # shellcheck disable=SC2086
+    # shellcheck disable=SC2086,SC2046
     ${CC:-cc} $sanflags -std=c11 -o consumer_static "$here/consumer_c/consumer.c" \
         $(pkg-config --cflags gks3d) $(static_line $sflags)
     ./consumer_static pc_static.png
@@ -179,7 +180,7 @@ pkgconfig-fortran)
     run_f77 consumer_f77_rpath
     sflags=$(pkg-config --static --libs gks3d-fortran)
     echo "pkg-config --static --libs gks3d-fortran: $sflags"
-    # shellcheck disable=SC2086
+    # shellcheck disable=SC2086,SC2046
     ${FC:-gfortran} $sanflags -o consumer_f77_static "$here/consumer_f77/consumer.f" \
         $(pkg-config --cflags gks3d-fortran) $(static_line $sflags)
     run_f77 consumer_f77_static
