@@ -13,6 +13,10 @@
 #   pkgconfig-c    consumer_c/consumer.c linked with `pkg-config --libs gks3d` (shared) and
 #                  `pkg-config --static --libs gks3d` (libgks3d.a), run
 #   pkgconfig-fortran  consumer_f77/consumer.f the same way with gks3d-fortran
+#   mpi            the installed nff_view under $GKS3D_MPIEXEC -n 2: the installed MPI module
+#                  is found beside the installed libgks3d.so (dladdr) and both ranks trace
+#                  tiles; rank 0 alone writes the picture (exit 77 without the MPI module
+#                  or GKS3D_MPIEXEC)
 # The Fortran modes exit 77 (skipped) when GKS3D_HAVE_FORTRAN != 1.
 set -eu
 mode=$1 build=$2 work=$3 sanflags=${4:-}
@@ -185,6 +189,28 @@ pkgconfig-fortran)
         $(pkg-config --cflags gks3d-fortran) $(static_line $sflags)
     run_f77 consumer_f77_static
     no_shared_gks ./consumer_f77_static ;;
+mpi)
+    [ -e "$build/src/c/gks3d/libgks3d-mpi.so" ] && [ -n "${GKS3D_MPIEXEC:-}" ] &&
+        [ -x "$prefix/bin/nff_view" ] ||
+        { echo "skipped: no MPI module, mpiexec or nff_view in this build"; exit 77; }
+    rm -rf "${work:?}/mpi" && mkdir -p "$work/mpi" && cd "$work/mpi"
+    opts="--oversubscribe -n 2"
+    [ "$(id -u)" = 0 ] && opts="$opts --allow-run-as-root"
+    # GKS3D_MPI_MODULE unset: the module must be found from the installed libgks3d.so.
+    # shellcheck disable=SC2086
+    GKS3D_MPI_REPORT=1 timeout 120 env -u GKS3D_MPI_MODULE "$GKS3D_MPIEXEC" $opts sh -c \
+        'd=r$OMPI_COMM_WORLD_RANK; mkdir -p "$d" && cd "$d" && exec "$0" --size 64x64 "$1" out.png' \
+        "$prefix/bin/nff_view" "$here/../data/spd/tetra.nff.gz" >mpi.out 2>mpi.err ||
+        { cat mpi.out mpi.err; echo "mpirun of the installed nff_view failed"; exit 1; }
+    cat mpi.err
+    if grep -q 'cannot be loaded' mpi.err; then echo "the installed MPI module was not loaded"; exit 1; fi
+    for r in 0 1; do
+        grep -Eq "rank $r of 2: frame [0-9]+: [1-9][0-9]* of" mpi.err ||
+            { echo "rank $r traced no tiles"; exit 1; }
+    done
+    [ "$(png_size r0/out.png)" = 64x64 ] || { echo "rank 0: out.png is $(png_size r0/out.png)"; exit 1; }
+    [ ! -e r1/out.png ] || { echo "rank 1 wrote a picture"; exit 1; }
+    echo "installed nff_view under mpirun -n 2: both ranks traced tiles, rank 0 wrote out.png (64x64)" ;;
 *)
     echo "unknown mode $mode"; exit 2 ;;
 esac
