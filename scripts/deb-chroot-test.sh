@@ -10,8 +10,9 @@
 #     run both with no environment variable and check their PNG files and the version;
 #   - check that the serial program maps no MPI library although libgks3d-mpi is installed,
 #     and that nff_view --help runs.
-# Needs root (chroot, mount). Not run by CI: it downloads about 150 packages; about 3-5
-# minutes depending on the mirror. The chroot is removed at the end.
+# Needs root (chroot, mount). Not run by CI: it downloads about 150 packages (27-74 s here
+# with a near mirror, 40 s-2 min with unpacking and removing the chroot; longer with a slow
+# one). The chroot is removed at the end.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 debdir=${1:-/tmp/gks3d-deb}

@@ -5,8 +5,8 @@
 # tracked files are copied into OUT/gks3d-VERSION (default OUT: /tmp/gks3d-deb, emptied
 # first), the .deb files, .changes, build.log and lintian.txt end up in OUT. Exits non-zero
 # if the build fails or lintian reports an error (E:). Installs the packaging tools first
-# (scripts/setup.sh --deb). About 4 minutes on 2 busy cores (the library, the bindings and
-# the examples in a Release-like build).
+# (scripts/setup.sh --deb). The build takes 65-96 s on 2 shared cores (the library, the
+# bindings, the examples and the programs, -O2), 80 s-2 min with lintian.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-/tmp/gks3d-deb}
