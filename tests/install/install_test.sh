@@ -14,8 +14,8 @@
 #                  `pkg-config --static --libs gks3d` (libgks3d.a), run
 #   pkgconfig-fortran  consumer_f77/consumer.f the same way with gks3d-fortran
 #   mpi            the installed nff_view under $GKS3D_MPIEXEC -n 2: the installed MPI module
-#                  is found beside the installed libgks3d.so (dladdr) and both ranks trace
-#                  tiles; rank 0 alone writes the picture (exit 77 without the MPI module
+#                  is found beside the installed libgks3d.so (dladdr) and both ranks share the
+#                  frame; rank 0 alone writes the picture (exit 77 without the MPI module
 #                  or GKS3D_MPIEXEC)
 # The Fortran modes exit 77 (skipped) when GKS3D_HAVE_FORTRAN != 1.
 set -eu
@@ -204,13 +204,16 @@ mpi)
         { cat mpi.out mpi.err; echo "mpirun of the installed nff_view failed"; exit 1; }
     cat mpi.err
     if grep -q 'cannot be loaded' mpi.err; then echo "the installed MPI module was not loaded"; exit 1; fi
+    # Each rank reports the shared frame (GKS3D_MPI_REPORT): its link through the module was
+    # up. How many tiles each traced depends on the load (rank 0 may trace all 25 before
+    # rank 1's first request), so that is not checked here (mpi_runs does, on larger frames).
     for r in 0 1; do
-        grep -Eq "rank $r of 2: frame [0-9]+: [1-9][0-9]* of" mpi.err ||
-            { echo "rank $r traced no tiles"; exit 1; }
+        grep -Eq "rank $r of 2: frame 1: [0-9]+ of 25 tiles" mpi.err ||
+            { echo "rank $r did not share the frame through the MPI module"; exit 1; }
     done
     [ "$(png_size r0/out.png)" = 64x64 ] || { echo "rank 0: out.png is $(png_size r0/out.png)"; exit 1; }
     [ ! -e r1/out.png ] || { echo "rank 1 wrote a picture"; exit 1; }
-    echo "installed nff_view under mpirun -n 2: both ranks traced tiles, rank 0 wrote out.png (64x64)" ;;
+    echo "installed nff_view under mpirun -n 2: both ranks shared the frame, rank 0 wrote out.png (64x64)" ;;
 *)
     echo "unknown mode $mode"; exit 2 ;;
 esac
