@@ -1094,10 +1094,14 @@ int gks_in_await(double timeout, Gint *ws_id, Gin_class *cls, Gint *num)
     return err;
 }
 
-const gks_in_val *gks_in_current(Gin_class cls)
+const gks_in_val *gks_in_current(Gin_class cls, int *buf_size)
 {
     struct gks_in_queue *q = gks_ctx()->sl->inq;
-    return q && q->cur.cls == cls && cls != GIN_NONE ? &q->cur.v : NULL;
+    if (!q || q->cur.cls != cls || cls == GIN_NONE)
+        return NULL;
+    const gks_indev *d = gks_in_dev(gks_ws_lookup(q->cur.ws_id), cls, q->cur.num);
+    *buf_size = d ? d->buf_size : 0;
+    return &q->cur.v;
 }
 
 void gks_in_flush(int ws_id, Gin_class cls, int num)

@@ -100,8 +100,10 @@ int gks_in_sample(struct gks_ws *ws, Gin_class cls, int num, gks_in_val *out);
  * *ws_id, *cls, *num of it (GIN_NONE if none). Returns 0, 147 (the queue overflowed
  * since the last AWAIT EVENT: reported once, the event is still returned) or 300. */
 int gks_in_await(double timeout, Gint *ws_id, Gin_class *cls, Gint *num);
-/* The current event report, if it holds a value of class cls (else NULL). */
-const gks_in_val *gks_in_current(Gin_class cls);
+/* The current event report, if it holds a value of class cls (else NULL), and the buffer
+ * size its device has now (*buf_size: INITIALISE may have changed it since the event was
+ * queued; GET returns at most that many points or characters). */
+const gks_in_val *gks_in_current(Gin_class cls, int *buf_size);
 /* FLUSH DEVICE EVENTS. */
 void gks_in_flush(int ws_id, Gin_class cls, int num);
 /* INQUIRE INPUT QUEUE OVERFLOW: 0 with the device, 148 or 149; clears the condition. */

@@ -487,11 +487,19 @@ static void stroke3_out(const gks_in_val *v, Gint *view_ind, Gstroke3 *s)
     s->num_points = n;
 }
 
-/* string: a buffer of (buffer size + 1) bytes. */
-static void string_out(const gks_in_val *v, char *string)
+/* string: a buffer of (buffer size + 1) bytes; at most cap characters are written, the
+ * device's buffer size now (a queued event may be longer than a buffer INITIALISE STRING
+ * has made smaller since). */
+static void string_out(const gks_in_val *v, char *string, Gint cap)
 {
-    if (string)
-        strcpy(string, v->str ? v->str : "");
+    if (!string)
+        return;
+    size_t n = v->str ? strlen(v->str) : 0;
+    if (cap >= 0 && n > (size_t)cap)
+        n = (size_t)cap;
+    if (n)
+        memcpy(string, v->str, n);
+    string[n] = '\0';
 }
 
 static void no_stroke(Gstroke *s)
@@ -529,6 +537,7 @@ typedef struct {
     Gint *choice;
     Gpick *pick;
     char *string;
+    Gint str_cap; /* the string buffer size (characters) */
 } in_dest;
 
 static void dest_clear(in_dest *o)
@@ -582,7 +591,7 @@ static void dest_put(const gks_in_val *v, in_dest *o)
         *o->choice = v->choice;
     if (o->pick)
         *o->pick = v->pick;
-    string_out(v, o->string);
+    string_out(v, o->string, o->str_cap);
 }
 
 /* REQUEST (mode GOP_REQ, else 141) or SAMPLE (GOP_SAMPLE, else 142) of device (cls, num)
@@ -599,6 +608,7 @@ static void take(int fct, Gint ws_id, Gin_class cls, Gint num, Gop_mode mode, in
         return;
     }
     gks_in_val v = { 0 };
+    o.str_cap = d->buf_size;
     if ((mode == GOP_REQ ? gks_in_request : gks_in_sample)(ws, cls, num, &v))
         report(300, fct);
     else
@@ -737,7 +747,7 @@ static void get(int fctid, Gin_class cls, in_dest o)
     dest_clear(&o);
     if (gks_check_state(fctid))
         return;
-    const gks_in_val *v = gks_in_current(cls);
+    const gks_in_val *v = gks_in_current(cls, &o.str_cap);
     if (v)
         dest_put(v, &o);
     else
