@@ -94,10 +94,88 @@ static void test_get_string_after_shrink(void **u)
     close_all();
 }
 
+/* A: a 1000-point stroke on one line (about 9 KB) comes back whole, its last point right,
+ * and a 2000-character string line is one line (its tail is not parsed as a line: the
+ * CHOICE after it is the next value). */
+static void test_long_lines(void **u)
+{
+    (void)u;
+    size_t cap = 64 * 1024, at = 0;
+    char *text = malloc(cap);
+    assert_non_null(text);
+    at += (size_t)snprintf(text + at, cap - at, "stroke 1");
+    for (int i = 0; i < 1000; i++)
+        at += (size_t)snprintf(text + at, cap - at, " %d.0 %d.0", i + 1, i == 999 ? 900 : 100);
+    at += (size_t)snprintf(text + at, cap - at, "\nstring 1 ");
+    for (int i = 0; i < 2000; i++) /* the tail at 1087 reads "choice 1 7" on main */
+        text[at++] = i >= 1078 && i < 1088 ? "choice 1 7"[i - 1078] : 'x';
+    at += (size_t)snprintf(text + at, cap - at, "\nchoice 1 3\n");
+    open_with_script(text);
+    free(text);
+    Gpoint p0 = { 0.5, 0.5 };
+    Gstroke init = { 0, 1, &p0 };
+    ginit_stroke(WS, 1, &init, 1, &earea, 1024, NULL);
+    ginit_string(WS, 1, "", 1, &earea, 1024, 1, NULL);
+    assert_int_equal(n_captured, 0);
+    static Gpoint pts[1024];
+    Gstroke s = { 0, 1024, pts };
+    Gin_status st;
+    greq_stroke(WS, 1, &st, &s);
+    assert_int_equal(st, GIN_STATUS_OK);
+    assert_int_equal(s.num_points, 1000);
+    assert_float_equal(pts[999].x, 1000.0 / 1024, 1e-9);
+    assert_float_equal(pts[999].y, 900.0 / 1024, 1e-9);
+    static char str[1025];
+    greq_string(WS, 1, &st, str);
+    assert_int_equal(st, GIN_STATUS_OK);
+    assert_int_equal(strlen(str), 1024); /* truncated to the buffer, as documented */
+    Gint choice = 0;
+    greq_choice(WS, 1, &st, &choice);
+    assert_int_equal(st, GIN_STATUS_OK);
+    assert_int_equal(choice, 3);
+    assert_int_equal(n_captured, 0);
+    close_all();
+}
+
+/* No storage while a stroke line is read or measured: REQUEST reports 300 and the line
+ * stays, so the next REQUEST returns that stroke (main: the line was dropped as invalid
+ * and the REQUEST went on to the next line). Every allocation of the REQUEST is failed
+ * in turn. */
+static void test_no_storage_keeps_line(void **u)
+{
+    (void)u;
+    int saw300 = 0;
+    for (long k = 1; k < 40; k++) {
+        open_with_script("stroke 1 10 10 20 20 30 30 40 40 50 50\nlocator 1 512 512\n");
+        static Gpoint pts[64];
+        Gstroke s = { 0, 64, pts };
+        Gin_status st;
+        gks_alloc_fail_after(k);
+        greq_stroke(WS, 1, &st, &s);
+        gks_alloc_fail_after(0);
+        if (n_captured) {
+            assert_int_equal(captured[0].err, 300);
+            assert_int_equal(st, GIN_STATUS_NONE);
+            saw300++;
+            n_captured = 0;
+            s.num_points = 64;
+            greq_stroke(WS, 1, &st, &s);
+        }
+        assert_int_equal(n_captured, 0);
+        assert_int_equal(st, GIN_STATUS_OK);
+        assert_int_equal(s.num_points, 5);
+        assert_float_equal(pts[4].x, 50.0 / 1024, 1e-9);
+        close_all();
+    }
+    assert_true(saw300 > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_get_string_after_shrink),
+        cmocka_unit_test(test_long_lines),
+        cmocka_unit_test(test_no_storage_keeps_line),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

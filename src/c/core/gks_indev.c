@@ -215,6 +215,9 @@ struct gks_in_script {
     long line_no;
     int have;                 /* a parsed event is waiting in ev */
     int eof;
+    char *line;               /* the line being read, whole (any length, never split) */
+    size_t len, cap;          /* its characters so far, its storage */
+    int line_done;            /* line holds a whole line not parsed yet (storage failed) */
     gks_in_raw ev;
     double (*pts)[3];         /* its points */
     size_t cap_pts;
@@ -228,6 +231,7 @@ static void script_free(struct gks_in_script *s)
     if (s->fp)
         fclose(s->fp);
     gks_free(s->path);
+    gks_free(s->line);
     gks_free(s->pts);
     gks_free(s);
 }
@@ -256,16 +260,19 @@ static const struct { const char *word; Gin_class cls; int dim; } script_words[]
     { "pick", GIN_PICK, 2 }, { "string", GIN_STRING, 0 },
 };
 
+/* 0, -1 (more points than a stroke buffer can hold: invalid) or -2 (storage). */
 static int add_point(struct gks_in_script *s, const double p[3])
 {
-    if (s->ev.n >= GKS_IN_STROKE_MAX ||
-        gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
+    if (s->ev.n >= GKS_IN_STROKE_MAX)
         return -1;
+    if (gks_grow(&s->pts, &s->cap_pts, (size_t)s->ev.n + 1, sizeof *s->pts))
+        return -2;
     memcpy(s->pts[s->ev.n++], p, sizeof s->pts[0]);
     return 0;
 }
 
-/* Parses one line into s->ev. 1: an event, 0: blank or comment, -1: invalid. */
+/* Parses one line into s->ev. 1: an event, 0: blank or comment, -1: invalid, -2: no
+ * storage for its points. */
 static int parse_line(struct gks_in_script *s, char *line)
 {
     char *p = line + strspn(line, " \t\r\n");
@@ -342,8 +349,11 @@ static int parse_line(struct gks_in_script *s, char *line)
         }
         if (i == 0)
             break;
-        if (i < dim || add_point(s, c))
+        if (i < dim)
             return -1;
+        int e = add_point(s, c);
+        if (e)
+            return e;
         if (s->ev.cls != GIN_STROKE)
             break;
     }
@@ -354,18 +364,55 @@ static int parse_line(struct gks_in_script *s, char *line)
     return 1;
 }
 
-/* The next scripted event, without consuming it (NULL: the script is exhausted). Invalid
- * lines are skipped with a note on standard error, naming the file and line. */
-static const gks_in_raw *script_peek(struct gks_in_script *s)
+/* Reads the rest of the current line into s->line (any length: a line is never split).
+ * 1: a whole line (or the last, unended one), 0: end of file, -1: no storage (the part
+ * read is kept, the next call goes on from there). */
+static int read_line(struct gks_in_script *s)
 {
+    int c = 0;
+    for (;;) {
+        if (gks_grow(&s->line, &s->cap, s->len + 2, 1))
+            return -1;
+        if ((c = getc(s->fp)) == EOF)
+            break;
+        s->line[s->len++] = (char)c;
+        if (c == '\n')
+            break;
+    }
+    s->line[s->len] = '\0';
+    return c == '\n' || s->len > 0 ? 1 : 0;
+}
+
+/* The next scripted event of ws, without consuming it (NULL: the script is exhausted, or
+ * *err = 300: no storage; the line stays and is read again by the next call). Invalid lines
+ * are skipped with a note on standard
+ * error, naming the file and line. */
+static const gks_in_raw *script_peek(gks_ws *ws, int *err)
+{
+    struct gks_in_script *s = ws->in->script;
     if (!s || s->eof)
         return NULL;
     if (s->have)
         return &s->ev;
-    char line[GKS_IN_STRING_MAX + 64];
-    while (fgets(line, sizeof line, s->fp)) {
-        s->line_no++;
-        int r = parse_line(s, line);
+    for (;;) {
+        if (!s->line_done) {
+            int r = read_line(s);
+            if (r < 0) {
+                *err = 300;
+                return NULL;
+            }
+            if (r == 0)
+                break;
+            s->line_done = 1;
+            s->line_no++;
+        }
+        int r = parse_line(s, s->line);
+        if (r == -2) {
+            *err = 300;
+            return NULL;
+        }
+        s->line_done = 0;
+        s->len = 0;
         if (r > 0) {
             s->have = 1;
             return &s->ev;
@@ -895,16 +942,20 @@ static void active_list(gks_ws *ws, Gin_class rcls, int rnum, gks_in_active *a)
 }
 
 /* The next raw event of ws: the script first; else the driver's interactive devices,
- * waiting at most timeout seconds. 1 event, 0 none within timeout, -1 no source. */
+ * waiting at most timeout seconds. 1 event, 0 none within timeout, -1 no source, -2 no
+ * storage to read the script. */
 static int next_raw(gks_ws *ws, Gin_class rcls, int rnum, double timeout, gks_in_raw *r,
                     int *scripted)
 {
-    const gks_in_raw *s = script_peek(ws->in->script);
+    int err = 0;
+    const gks_in_raw *s = script_peek(ws, &err);
     *scripted = s != NULL;
     if (s) {
         *r = *s;
         return 1;
     }
+    if (err)
+        return -2;
     if (!ws->drv->input)
         return -1;
     gks_in_active a;
@@ -967,15 +1018,17 @@ int gks_in_request(gks_ws *ws, Gin_class cls, int num, gks_in_val *out)
         gks_in_raw r;
         int scripted;
         int k = next_raw(ws, cls, num, 0.1, &r, &scripted);
+        if (k == -2)
+            return 300;
         if (k < 0)
             return 0; /* no event can come: status NONE */
         if (k == 0)
             continue; /* an interactive device: the operator has not acted yet */
         int d = deliver(ws, &r, cls, num, out);
+        if (d < 0)
+            return 300; /* a script line stays: the next call reads it again */
         if (scripted)
             script_next(ws->in->script);
-        if (d < 0)
-            return 300;
         if (d > 0)
             return 0;
     }
@@ -984,8 +1037,10 @@ int gks_in_request(gks_ws *ws, Gin_class cls, int num, gks_in_val *out)
 int gks_in_sample(gks_ws *ws, Gin_class cls, int num, gks_in_val *out)
 {
     gks_in_raw r;
-    int scripted;
-    const gks_in_raw *s = script_peek(ws->in->script);
+    int scripted, err = 0;
+    const gks_in_raw *s = script_peek(ws, &err);
+    if (err)
+        return 300;
     if (s && sampled_or_event(ws, s)) {
         if (deliver(ws, s, GIN_NONE, 0, NULL) < 0)
             return 300;
@@ -1010,14 +1065,18 @@ static int pump_now(int *err)
         if (!ws->in)
             continue;
         const gks_in_raw *s;
-        while ((s = script_peek(ws->in->script)) && sampled_or_event(ws, s)) {
+        while ((s = script_peek(ws, err)) && sampled_or_event(ws, s)) {
             int before = q->n;
-            if (deliver(ws, s, GIN_NONE, 0, NULL) < 0)
-                *err = 300;
+            if (deliver(ws, s, GIN_NONE, 0, NULL) < 0) {
+                *err = 300; /* the line stays for the next call */
+                return 0;
+            }
             script_next(ws->in->script);
             if (q->n > before || q->blocked)
                 return 1;
         }
+        if (*err)
+            return 0;
         if (!s && ws->drv->input) {
             gks_in_raw r;
             int scripted;
@@ -1035,7 +1094,7 @@ static void wait_some(double left, int *err)
     gks_context *c = gks_ctx();
     int nint = 0;
     for (int i = 0; i < c->sl->n_open; i++)
-        nint += c->ws[i]->in && c->ws[i]->drv->input && !script_peek(c->ws[i]->in->script);
+        nint += c->ws[i]->in && c->ws[i]->drv->input && !script_peek(c->ws[i], err);
     if (nint == 0) {
         struct timespec ts = { (time_t)left, (long)((left - floor(left)) * 1e9) };
         while (nanosleep(&ts, &ts) && errno == EINTR)
@@ -1045,7 +1104,7 @@ static void wait_some(double left, int *err)
     double slice = nint > 1 && left > 0.01 ? 0.01 : left;
     for (int i = 0; i < c->sl->n_open; i++) {
         gks_ws *ws = c->ws[i];
-        if (!ws->in || !ws->drv->input || script_peek(ws->in->script))
+        if (!ws->in || !ws->drv->input || script_peek(ws, err))
             continue;
         gks_in_raw r;
         int scripted;
@@ -1069,7 +1128,7 @@ int gks_in_await(double timeout, Gint *ws_id, Gin_class *cls, Gint *num)
     if (q->n == 0)
         pump_now(&err);
     for (;;) {
-        if (q->n > 0)
+        if (q->n > 0 || err)
             break;
         double left = end - now_s();
         if (left <= 0)
