@@ -137,6 +137,45 @@ static void test_long_lines(void **u)
     close_all();
 }
 
+/* C: devices and FIFOs are refused at once (182), by ESCAPE and by GKS_INPUT_SCRIPT; a
+ * REQUEST then returns NONE at once. alarm(): a hang ends the test as a failure. */
+static void test_devices_refused(void **u)
+{
+    (void)u;
+    alarm(20);
+    open_with_script("");
+    const char *dev[] = { "/dev/zero", "/dev/urandom", "/dev/null", "input_hostile.fifo", "." };
+    unlink("input_hostile.fifo");
+    assert_int_equal(mkfifo("input_hostile.fifo", 0600), 0);
+    for (size_t i = 0; i < sizeof dev / sizeof dev[0]; i++) {
+        n_captured = 0;
+        attach(WS, dev[i]);
+        if (n_captured != 1 || captured[0].err != 182)
+            fail_msg("%s: %d errors (first %d), want 182", dev[i], n_captured,
+                     n_captured ? captured[0].err : 0);
+    }
+    n_captured = 0;
+    Gint choice;
+    Gin_status st;
+    greq_choice(WS, 1, &st, &choice); /* the script of "" stays: exhausted, NONE */
+    assert_int_equal(st, GIN_STATUS_NONE);
+    close_all();
+    for (int k = 0; k < 2; k++) {
+        setenv("GKS_INPUT_SCRIPT", k ? "/dev/zero" : "input_hostile.fifo", 1);
+        reset_gks();
+        gopen_gks(NULL, 0);
+        gopen_ws(WS, "input_hostile_out", GWS_TYPE_PNG);
+        unsetenv("GKS_INPUT_SCRIPT");
+        gactivate_ws(WS);
+        greq_choice(WS, 1, &st, &choice);
+        assert_int_equal(st, GIN_STATUS_NONE);
+        assert_int_equal(n_captured, 0);
+        close_all();
+    }
+    unlink("input_hostile.fifo");
+    alarm(0);
+}
+
 /* No storage while a stroke line is read or measured: REQUEST reports 300 and the line
  * stays, so the next REQUEST returns that stroke (main: the line was dropped as invalid
  * and the REQUEST went on to the next line). Every allocation of the REQUEST is failed
@@ -175,6 +214,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_get_string_after_shrink),
         cmocka_unit_test(test_long_lines),
+        cmocka_unit_test(test_devices_refused),
         cmocka_unit_test(test_no_storage_keeps_line),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

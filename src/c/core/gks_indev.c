@@ -18,11 +18,14 @@
 #include "gks_ws.h"
 #include "gks_xform.h"
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 /* Pick aperture: half the side of the square around the pick position, in NPC. */
 #define PICK_APERTURE 0.01
@@ -236,6 +239,23 @@ static void script_free(struct gks_in_script *s)
     gks_free(s);
 }
 
+/* The script file for reading: a regular file only (through a symbolic link too), the
+ * same rule as for output files. A FIFO or device is refused without blocking (O_NONBLOCK:
+ * opening a FIFO without a writer would wait for one; /dev/zero or /dev/urandom would feed
+ * REQUEST forever). NULL on failure. */
+static FILE *open_script(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return NULL;
+    struct stat st;
+    FILE *fp = NULL;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || fcntl(fd, F_SETFL, 0) != 0 ||
+        !(fp = fdopen(fd, "r")))
+        close(fd);
+    return fp;
+}
+
 int gks_in_script_attach(gks_ws *ws, const char *path, size_t n)
 {
     if (!ws->in || !path || n == 0)
@@ -245,7 +265,7 @@ int gks_in_script_attach(gks_ws *ws, const char *path, size_t n)
         gks_free(s);
         return 300;
     }
-    if (!(s->fp = fopen(s->path, "r"))) {
+    if (!(s->fp = open_script(s->path))) {
         script_free(s);
         return 182;
     }
