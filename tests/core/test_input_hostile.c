@@ -176,6 +176,44 @@ static void test_devices_refused(void **u)
     alarm(0);
 }
 
+/* D: AWAIT EVENT with a timeout of 1e300 s in a child process sleeps: after 0.6 s it has
+ * used less than 0.2 s of processor time (main: a busy loop, about 0.6 s). */
+static void test_await_huge_timeout(void **u)
+{
+    (void)u;
+    fflush(NULL);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        gopen_gks(NULL, 0);
+        gopen_ws(WS, "input_hostile_out", GWS_TYPE_PNG);
+        Gint ws, num;
+        Gin_class cls;
+        gawait_event(1e300, &ws, &cls, &num);
+        _exit(3);
+    }
+    struct timespec t = { 0, 600000000 };
+    nanosleep(&t, NULL);
+    kill(pid, SIGKILL);
+    int status;
+    struct rusage ru;
+    assert_int_equal(wait4(pid, &status, 0, &ru), pid);
+    assert_true(WIFSIGNALED(status)); /* still waiting */
+    double cpu = (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec +
+                 (double)ru.ru_stime.tv_sec + 1e-6 * (double)ru.ru_stime.tv_usec;
+    if (cpu >= 0.2)
+        fail_msg("AWAIT EVENT(1e300) used %.3f s of processor time in 0.6 s", cpu);
+    /* and an event still ends it at once */
+    open_with_script("choice 1 2\n");
+    gset_choice_mode(WS, 1, GOP_EVENT, GSWITCH_NO_ECHO);
+    Gint ws, num;
+    Gin_class cls;
+    gawait_event(1e300, &ws, &cls, &num);
+    assert_int_equal(cls, GIN_CHOICE);
+    assert_int_equal(n_captured, 0);
+    close_all();
+}
+
 /* No storage while a stroke line is read or measured: REQUEST reports 300 and the line
  * stays, so the next REQUEST returns that stroke (main: the line was dropped as invalid
  * and the REQUEST went on to the next line). Every allocation of the REQUEST is failed
@@ -215,6 +253,7 @@ int main(void)
         cmocka_unit_test(test_get_string_after_shrink),
         cmocka_unit_test(test_long_lines),
         cmocka_unit_test(test_devices_refused),
+        cmocka_unit_test(test_await_huge_timeout),
         cmocka_unit_test(test_no_storage_keeps_line),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -27,6 +27,10 @@
 #include <time.h>
 #include <unistd.h>
 
+/* The longest single wait of AWAIT EVENT, in seconds: a longer timeout is waited for in
+ * steps of this (issue 40 D: 1e300 s overflowed time_t into a busy loop). */
+#define GKS_IN_WAIT_MAX 3600.0
+
 /* Pick aperture: half the side of the square around the pick position, in NPC. */
 #define PICK_APERTURE 0.01
 
@@ -1115,6 +1119,10 @@ static void wait_some(double left, int *err)
     int nint = 0;
     for (int i = 0; i < c->sl->n_open; i++)
         nint += c->ws[i]->in && c->ws[i]->drv->input && !script_peek(c->ws[i], err);
+    /* Each wait is at most GKS_IN_WAIT_MAX seconds (the caller waits again until its
+     * timeout has passed): any finite timeout fits time_t and the driver's timers. */
+    if (left > GKS_IN_WAIT_MAX)
+        left = GKS_IN_WAIT_MAX;
     if (nint == 0) {
         struct timespec ts = { (time_t)left, (long)((left - floor(left)) * 1e9) };
         while (nanosleep(&ts, &ts) && errno == EINTR)
