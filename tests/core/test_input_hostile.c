@@ -214,6 +214,38 @@ static void test_await_huge_timeout(void **u)
     close_all();
 }
 
+/* E: a line for device 5 (the workstation has 2) is skipped in EVENT and SAMPLE mode:
+ * both valid events after it arrive. */
+static void test_line_for_missing_device(void **u)
+{
+    (void)u;
+    open_with_script("choice 5 2\nchoice 1 3\nvaluator 9 1\nchoice 1 4\n");
+    gset_choice_mode(WS, 1, GOP_EVENT, GSWITCH_NO_ECHO);
+    int got = 0;
+    for (int k = 0; k < 3; k++) {
+        Gint ws, num, choice = 0;
+        Gin_class cls;
+        Gin_status st;
+        gawait_event(0, &ws, &cls, &num);
+        if (cls == GIN_NONE)
+            break;
+        gget_choice(&st, &choice);
+        assert_int_equal(choice, 3 + got);
+        got++;
+    }
+    assert_int_equal(got, 2);
+    assert_int_equal(n_captured, 0);
+    close_all();
+    open_with_script("choice 5 2\nchoice 1 3\n");
+    gset_choice_mode(WS, 1, GOP_SAMPLE, GSWITCH_NO_ECHO);
+    Gint choice = 0;
+    Gin_status st;
+    gsample_choice(WS, 1, &st, &choice);
+    assert_int_equal(st, GIN_STATUS_OK);
+    assert_int_equal(choice, 3);
+    close_all();
+}
+
 /* No storage while a stroke line is read or measured: REQUEST reports 300 and the line
  * stays, so the next REQUEST returns that stroke (main: the line was dropped as invalid
  * and the REQUEST went on to the next line). Every allocation of the REQUEST is failed
@@ -254,6 +286,7 @@ int main(void)
         cmocka_unit_test(test_long_lines),
         cmocka_unit_test(test_devices_refused),
         cmocka_unit_test(test_await_huge_timeout),
+        cmocka_unit_test(test_line_for_missing_device),
         cmocka_unit_test(test_no_storage_keeps_line),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -409,8 +409,8 @@ static int read_line(struct gks_in_script *s)
 
 /* The next scripted event of ws, without consuming it (NULL: the script is exhausted, or
  * *err = 300: no storage; the line stays and is read again by the next call). Invalid lines
- * are skipped with a note on standard
- * error, naming the file and line. */
+ * and lines for a device the workstation does not have are skipped with a note on standard
+ * error, naming the file and line, so no mode ever waits behind them. */
 static const gks_in_raw *script_peek(gks_ws *ws, int *err)
 {
     struct gks_in_script *s = ws->in->script;
@@ -437,6 +437,11 @@ static const gks_in_raw *script_peek(gks_ws *ws, int *err)
         }
         s->line_done = 0;
         s->len = 0;
+        if (r > 0 && !gks_in_dev(ws, s->ev.cls, s->ev.num)) {
+            fprintf(stderr, "gks3d: %s:%ld: input script line ignored: workstation %d has no "
+                    "such device\n", s->path, s->line_no, ws->id);
+            continue;
+        }
         if (r > 0) {
             s->have = 1;
             return &s->ev;
