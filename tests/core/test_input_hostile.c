@@ -279,6 +279,17 @@ static void test_no_storage_keeps_line(void **u)
     assert_true(saw300 > 0);
 }
 
+/* ESCAPE -130 for a workstation that is not open: 25 (main: 182). */
+static void test_escape_ws_not_open(void **u)
+{
+    (void)u;
+    open_with_script("");
+    attach(7, "input_hostile.txt");
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 25);
+    close_all();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -288,6 +299,7 @@ int main(void)
         cmocka_unit_test(test_await_huge_timeout),
         cmocka_unit_test(test_line_for_missing_device),
         cmocka_unit_test(test_no_storage_keeps_line),
+        cmocka_unit_test(test_escape_ws_not_open),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -349,8 +349,11 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
     if (gks_check_state(GFN_ESC))
         return;
     if (func_id == GESC_INPUT_SCRIPT) { /* the core's: input devices are the core's */
-        gks_ws *iws = in && in->num_ints >= 1 && in->ints ? gks_ws_lookup(in->ints[0]) : NULL;
-        int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0) : 182;
+        /* 182 without a workstation identifier, 25 when it names no open workstation */
+        int has_id = in && in->num_ints >= 1 && in->ints;
+        gks_ws *iws = has_id ? gks_ws_lookup(in->ints[0]) : NULL;
+        int e = iws ? gks_in_script_attach(iws, in->str, in->str ? in->str_len : 0)
+                    : has_id ? 25 : 182;
         if (e)
             GKS_FAIL(e, GFN_ESC);
         return;
