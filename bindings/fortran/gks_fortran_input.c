@@ -760,12 +760,15 @@ FAPI void FNAME(gqsim, GQSIM)(fint *errind, fint *flag)
  *   STR(SL): taken when SL > 1, the lengths add up to at most LEN(STR) and STR(1) is not
  *   blank after its first LSTR(1) characters (an array element is blank-padded there);
  * - a CHARACTER actual argument for LSTR when SL = 0 (gksdemo: GPREC(0,IA,0,EMPTRP,0,
- *   DUMMYA,CHAR,...)): it shifts the hidden lengths, so the one received for DATREC is
- *   that of STR. With SL = 0 a DATREC length below 80 is not trusted: the standard's
- *   CHARACTER*80 is used. */
+ *   DUMMYA,CHAR,...) with CHARACTER*1 CHAR): it shifts the hidden lengths, so the one
+ *   received for DATREC is that of STR. With SL = 0 a DATREC length below
+ *   REC_ELEM_MIN (shorter than the record's magic: no DATREC is declared so) is taken for
+ *   that call and the standard's CHARACTER*80 is used. Every other length is DATREC's
+ *   declared one and GPREC never writes past MLDR elements of it (issue 40 F). */
 
 #define REC_MAGIC "GKSR"
 #define REC_ELEM_STD 80 /* ISO 8651-1: DATREC is CHARACTER*80 */
+#define REC_ELEM_MIN 4  /* strlen(REC_MAGIC): a shorter hidden length is the shifted call's */
 
 typedef struct { char *buf; size_t n, cap; } rec_stream;
 
@@ -819,7 +822,7 @@ FAPI void FNAME(gprec, GPREC)(const fint *il, const fint *ia, const fint *rl, co
             *errind = 2003;
             return;
         }
-    size_t elem = (*sl == 0 && datrec_len < REC_ELEM_STD) ? REC_ELEM_STD : datrec_len;
+    size_t elem = (*sl == 0 && datrec_len < REC_ELEM_MIN) ? REC_ELEM_STD : datrec_len;
     rec_stream s = { datrec, 0, *mldr > 0 ? (size_t)*mldr * elem : 0 };
     int bad = rec_put(&s, REC_MAGIC, 4) || rec_int(&s, *il) || rec_int(&s, *rl) ||
               rec_int(&s, *sl);
@@ -884,30 +887,34 @@ FAPI void FNAME(gurec, GUREC)(const fint *ldr, const char *datrec, const fint *i
         if (i < *irl)
             ra[i] = (freal)v;
     }
-    long lens[64];
-    if (n[2] > 64) {
+    /* The SL lengths, then the characters: any number of strings GPREC packed (the
+     * lengths are read twice, once to find where the characters begin). */
+    gks_rec_reader lr = r;
+    size_t total = 0;
+    for (long i = 0; i < n[2]; i++) {
+        long len;
+        if (gks_rec_long(&r, &len) || len < 0 || (size_t)len > (size_t)(r.end - r.p) ||
+            (total += (size_t)len) > (size_t)(r.end - r.p)) {
+            *errind = 2003;
+            return;
+        }
+    }
+    if (total > (size_t)(r.end - r.p)) {
         *errind = 2003;
         return;
     }
-    for (long i = 0; i < n[2]; i++)
-        if (gks_rec_long(&r, &lens[i]) || lens[i] < 0) {
-            *errind = 2003;
-            return;
-        }
     for (long i = 0; i < n[2]; i++) {
-        if (r.end - r.p < lens[i]) {
-            *errind = 2003;
-            return;
-        }
+        long len;
+        gks_rec_long(&lr, &len); /* read and checked above */
         if (i < *isl) {
-            size_t k = (size_t)lens[i] < str_len ? (size_t)lens[i] : str_len;
+            size_t k = (size_t)len < str_len ? (size_t)len : str_len;
             memcpy(str + (size_t)i * str_len, r.p, k);
             memset(str + (size_t)i * str_len + k, ' ', str_len - k);
             lstr[i] = (fint)k;
-            if ((size_t)lens[i] > str_len)
+            if ((size_t)len > str_len)
                 e = 2001;
         }
-        r.p += lens[i];
+        r.p += len;
     }
     if (n[0] > *iil || n[1] > *irl || n[2] > *isl)
         e = 2001;
