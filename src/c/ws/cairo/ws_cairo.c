@@ -930,24 +930,45 @@ static int vec_clear(gks_ws *ws)
     return e;
 }
 
-static void vec_close(gks_ws *ws)
+/* Ends the PDF or PS document: its last page, cairo's finish (the PDF's trailer written
+ * and its file closed) and the PS file written from memory. 0, 300 or 303. Once only: the
+ * document is gone afterwards. */
+static int vec_end_document(vec_ws *v)
 {
-    vec_ws *v = ws->priv;
     int e = 0;
     if (v->frame_written && (v->fmt == VEC_PDF || v->fmt == VEC_PS))
         e = page_emit(v);
+    v->frame_written = 0;
     if (v->doc) {
         cairo_surface_finish(v->doc);
         if (cairo_surface_status(v->doc) != CAIRO_STATUS_SUCCESS)
             e = 303;
         cairo_surface_destroy(v->doc);
+        v->doc = NULL;
         if (!e && v->fmt == VEC_PS) {
             char *path = gks_ws_file_frame(v->base, 1, vec_ext[v->fmt]);
             e = path ? buf_save_ps(&v->ps, path) : 300;
             gks_free(path);
         }
     }
-    if (e) /* CLOSE WORKSTATION has no error path left: the file is incomplete */
+    return e;
+}
+
+/* .finish of CLOSE WORKSTATION: the document's writes are reported (issue 40 H: a full
+ * disk cut the PDF and lost the PS with only a line on standard error). A failure of
+ * storage is a failed write too: the document is lost either way. */
+static int vec_finish(gks_ws *ws)
+{
+    int e = vec_end_document(ws->priv);
+    return e ? 303 : 0;
+}
+
+static void vec_close(gks_ws *ws)
+{
+    vec_ws *v = ws->priv;
+    /* EMERGENCY CLOSE GKS (no finish): end what can be ended; no error path is left */
+    int e = vec_end_document(v);
+    if (e)
         fprintf(stderr, "gks3d: workstation %d: error %d writing %s%s\n", ws->id, e, v->base,
                 vec_ext[v->fmt]);
     gks_free(v->ps.p);
@@ -1277,7 +1298,8 @@ static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EP
 #define VEC_DRIVER(DESC, OPEN, FILE)                                                   \
     {                                                                                  \
         .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN, .file = FILE,   \
-        .close = vec_close, .clear = vec_clear, .update = vec_update,                  \
+        .close = vec_close, .finish = vec_finish, .clear = vec_clear,                  \
+        .update = vec_update,                                                          \
         .primitive = vec_primitive, .text = vec_text_prim, .message = gks_ws_file_message,          \
         .escape = vec_escape,                                                          \
     }
