@@ -8,7 +8,8 @@
  *    and the workstation closed: exactly one 303 for every type (main: PDF and PS none);
  *  - storage: the Nth allocation of CLOSE WORKSTATION fails, N = 1, 2, ...: either no
  *    error and a whole document (it ends with its format's trailer), or an error reported
- *    (300 or 303); never a cut document without an error.
+ *    (300 or 303); never a cut document without an error;
+ *  - huge character heights: nothing from pixman on standard error (huge_text).
  * Linked with the test build of the library (allocation failures).
  */
 #include <signal.h>
@@ -131,12 +132,54 @@ static void no_storage(int t)
     printf("%s: %d allocation failures at CLOSE WORKSTATION reported\n", types[t].name, saw);
 }
 
+/* Character heights of 20 to 1e30 (an em of 13,000 pt and more) are drawn without cairo
+ * passing pixman rectangles it rejects: nothing on standard error (main: "*** BUG *** In
+ * pixman_region32_init_rect: Invalid rectangle passed" from a height of 15 on), no error,
+ * a whole document. */
+static void huge_text(int t)
+{
+    unlink(types[t].file);
+    fflush(stderr);
+    int saved = dup(2);
+    FILE *log = tmpfile();
+    if (saved < 0 || !log || dup2(fileno(log), 2) < 0) {
+        CHECK(0, "cannot redirect standard error");
+        return;
+    }
+    n_err = 0;
+    open_draw(types[t].type);
+    const double ht[] = { 20, 1e3, 1e5, 1e6, 1e30 };
+    for (int i = 0; i < 5; i++) {
+        gset_char_ht(ht[i]);
+        Gpoint at = { 0.1, 0.5 };
+        gtext(&at, "Hello");
+    }
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    char line[256];
+    int lines = 0;
+    rewind(log);
+    while (fgets(line, sizeof line, log)) {
+        if (lines++ < 3)
+            printf("%s: standard error: %s", types[t].name, line);
+    }
+    fclose(log);
+    CHECK(lines == 0, "%s, huge text: %d lines on standard error", types[t].name, lines);
+    CHECK(n_err == 0, "%s, huge text: error %d", types[t].name, first_err);
+    CHECK(whole(types[t].file, types[t].trailer), "%s, huge text: document cut", types[t].name);
+}
+
 int main(void)
 {
     signal(SIGXFSZ, SIG_IGN);
     for (int t = 0; t < 4; t++) {
         full_disk(t);
         no_storage(t);
+        huge_text(t);
     }
     printf(failures ? "VECTOR FAIL %d\n" : "VECTOR WRITE ERRORS REPORTED\n", failures);
     return failures != 0;

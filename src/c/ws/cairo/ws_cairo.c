@@ -60,6 +60,11 @@
 #define VEC_EM 32.0         /* stroke-font units per em of the user fonts */
 #define VEC_MAX_FACES 64    /* user font faces (font, expansion factor) per workstation */
 #define VEC_CLIP_MAX 32     /* points of a text's clip polygon */
+/* The largest em of a text drawn as glyphs of a user font, in points (a 1.4 m em: no page
+ * shows more than a piece of one character). A larger text is drawn by its strokes:
+ * cairo's glyph rendering passes pixman rectangles it rejects ("Invalid rectangle passed")
+ * from about 12,000 pt on (issue 40, character heights of 1e5 and more). */
+#define VEC_TEXT_MAX_EM_PT 4096.0
 
 typedef enum { VEC_PDF, VEC_SVG, VEC_PS, VEC_EPS } vec_format;
 
@@ -1227,6 +1232,10 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
     double lx = hypot(bx[0], bx[1]), ly = hypot(by[0], by[1]);
     if (!(ly > 0) || !isfinite(ly) || fabs(lx - ly) > 1e-6 * ly ||
         fabs(bx[0] * by[0] + bx[1] * by[1]) > 1e-6 * ly * ly) {
+        v->n_glyphs = g0;
+        return GKS_WS_TEXT_STROKE;
+    }
+    if (!(VEC_EM * ly * 72.0 / v->dpi <= VEC_TEXT_MAX_EM_PT)) { /* huge: by its strokes */
         v->n_glyphs = g0;
         return GKS_WS_TEXT_STROKE;
     }
