@@ -1117,6 +1117,13 @@ static int pump_now(int *err)
     return q && q->n > 0;
 }
 
+static void sleep_s(double s)
+{
+    struct timespec ts = { (time_t)s, (long)((s - floor(s)) * 1e9) };
+    while (nanosleep(&ts, &ts) && errno == EINTR)
+        ;
+}
+
 /* Waits up to `left` seconds for any interactive device (or sleeps when there is none). */
 static void wait_some(double left, int *err)
 {
@@ -1129,9 +1136,7 @@ static void wait_some(double left, int *err)
     if (left > GKS_IN_WAIT_MAX)
         left = GKS_IN_WAIT_MAX;
     if (nint == 0) {
-        struct timespec ts = { (time_t)left, (long)((left - floor(left)) * 1e9) };
-        while (nanosleep(&ts, &ts) && errno == EINTR)
-            ;
+        sleep_s(left);
         return;
     }
     double slice = nint > 1 && left > 0.01 ? 0.01 : left;
@@ -1141,9 +1146,11 @@ static void wait_some(double left, int *err)
             continue;
         gks_in_raw r;
         int scripted;
-        if (next_raw(ws, GIN_NONE, 0, slice, &r, &scripted) > 0 &&
-            deliver(ws, &r, GIN_NONE, 0, NULL) < 0)
+        int k = next_raw(ws, GIN_NONE, 0, slice, &r, &scripted);
+        if (k > 0 && deliver(ws, &r, GIN_NONE, 0, NULL) < 0)
             *err = 300;
+        else if (k == -1) /* its devices are gone (a closed window): no busy loop */
+            sleep_s(slice);
         return;
     }
 }

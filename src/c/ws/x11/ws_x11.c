@@ -29,6 +29,14 @@
  * rectangle from the initial position; PICK: the aperture square at the pointer and the
  * segment a trigger there would pick, outlined in the highlight colour; the pointer is a
  * crosshair.
+ *
+ * A window that closes is an event, not an exit (issue 40 G). The window asks the window
+ * manager for WM_DELETE_WINDOW, so closing it sends a message instead of killing the
+ * connection; Xlib's error handlers are the workstation's, so a protocol error (a window
+ * destroyed by another client) or a lost connection (the server gone, xkill) never calls
+ * exit inside the library. From then on the window is gone: a pending REQUEST ends with
+ * status NONE (the input entry reports no source), and output, UPDATE, CLEAR and MESSAGE
+ * report 303; CLOSE WORKSTATION frees what is left without touching a lost connection.
  */
 #include "gks_alloc.h"
 #include "gks_xform.h"
@@ -64,7 +72,11 @@ static const Grgb x11_colours[8] = {
 
 typedef struct x11_ws {
     const gks_ws *ws;         /* the workstation (pick echo asks the core about it) */
+    struct x11_ws *next;      /* the open X11 workstations (x11_list) */
     Display *dpy;
+    Atom wm_delete;           /* WM_DELETE_WINDOW */
+    volatile int gone;        /* the window is closed or destroyed: nothing is shown */
+    volatile int lost;        /* the connection is lost: no Xlib call on dpy any more */
     Window win;
     GC gc;
     XFontStruct *font;
@@ -88,6 +100,74 @@ typedef struct x11_ws {
     double val;
     int have_val;
 } x11_ws;
+
+/* ---- Xlib's error handlers (process-wide): the open X11 workstations ---- */
+
+static x11_ws *x11_list;             /* open workstations (changed by OPEN/CLOSE only) */
+static XErrorHandler prev_error;     /* the handlers before the first X11 workstation */
+static XIOErrorHandler prev_io_error;
+
+static x11_ws *x11_of(Display *dpy)
+{
+    for (x11_ws *x = x11_list; x; x = x->next)
+        if (x->dpy == dpy)
+            return x;
+    return NULL;
+}
+
+/* A protocol error (Xlib's default prints it and calls exit): on a workstation's display
+ * it is noted, and a window that no longer exists is gone. Other displays: the handler
+ * the program had. */
+static int x11_error(Display *dpy, XErrorEvent *e)
+{
+    x11_ws *x = x11_of(dpy);
+    if (!x)
+        return prev_error ? prev_error(dpy, e) : 0;
+    if ((e->error_code == BadWindow || e->error_code == BadDrawable) && e->resourceid == x->win)
+        x->gone = 1;
+    return 0;
+}
+
+/* The connection is lost: Xlib calls this, then the display's exit handler (x11_io_exit),
+ * which returns instead of calling exit; Xlib then leaves the display alone. */
+static int x11_io_error(Display *dpy)
+{
+    if (!x11_of(dpy) && prev_io_error)
+        return prev_io_error(dpy);
+    return 0;
+}
+
+static void x11_io_exit(Display *dpy, void *user)
+{
+    (void)dpy;
+    x11_ws *x = user;
+    x->lost = 1;
+    x->gone = 1;
+}
+
+static void x11_register(x11_ws *x)
+{
+    if (!x11_list) {
+        prev_error = XSetErrorHandler(x11_error);
+        prev_io_error = XSetIOErrorHandler(x11_io_error);
+    }
+    x->next = x11_list;
+    x11_list = x;
+    XSetIOErrorExitHandler(x->dpy, x11_io_exit, x);
+}
+
+static void x11_unregister(x11_ws *x)
+{
+    for (x11_ws **p = &x11_list; *p; p = &(*p)->next)
+        if (*p == x) {
+            *p = x->next;
+            break;
+        }
+    if (!x11_list) { /* the program's handlers again (Xlib's defaults if it had none) */
+        XSetErrorHandler(prev_error);
+        XSetIOErrorHandler(prev_io_error);
+    }
+}
 
 static int x11_ws_matrix(const gks_ws *ws, double m[4][4])
 {
@@ -116,6 +196,8 @@ static void overlay(x11_ws *x);
 
 static void x11_blit(x11_ws *x)
 {
+    if (x->gone)
+        return;
     if (x->img)
         XPutImage(x->dpy, x->win, x->gc, x->img, 0, 0, 0, 0, (unsigned)x->w, (unsigned)x->h);
     overlay(x);
@@ -342,7 +424,7 @@ static int x11_show(gks_ws *ws, const gks_raster_fb *pic)
     }
     gks_free(row);
     x11_blit(x);
-    return 0;
+    return x->gone ? 303 : 0; /* closed or lost while it was shown */
 }
 
 static int x11_open(gks_ws *ws)
@@ -383,6 +465,9 @@ static int x11_open(gks_ws *ws)
     x->win = XCreateSimpleWindow(dpy, RootWindow(dpy, scr), 0, 0, (unsigned)x->w,
                                  (unsigned)x->h, 0, BlackPixel(dpy, scr), WhitePixel(dpy, scr));
     XStoreName(dpy, x->win, "gks3d");
+    x->wm_delete = XInternAtom(dpy, "WM_DELETE_WINDOW", False);
+    XSetWMProtocols(dpy, x->win, &x->wm_delete, 1);
+    x11_register(x);
     XSelectInput(dpy, x->win, ExposureMask | ButtonPressMask | ButtonReleaseMask |
                                   PointerMotionMask | EnterWindowMask | LeaveWindowMask |
                                   KeyPressMask | StructureNotifyMask);
@@ -399,7 +484,7 @@ static int x11_open(gks_ws *ws)
     XEvent e;
     do /* wait until mapped, so the first picture shows */
         XNextEvent(dpy, &e);
-    while (e.type != MapNotify);
+    while (e.type != MapNotify && !x->gone);
     ws->priv = x;
     return 0;
 }
@@ -409,12 +494,21 @@ static void x11_close(gks_ws *ws)
     x11_ws *x = ws->priv;
     if (!x)
         return;
-    XDestroyImage(x->img); /* frees its data */
+    XDestroyImage(x->img); /* frees its data (no request to the server) */
+    /* The font and GC structures are the client's: freed in every case (on a lost
+     * connection Xlib marked the display broken and only buffers the requests). */
     if (x->font)
         XFreeFont(x->dpy, x->font);
     XFreeGC(x->dpy, x->gc);
-    XDestroyWindow(x->dpy, x->win);
+    if (!x->gone)
+        XDestroyWindow(x->dpy, x->win);
+    if (!x->lost)
+        XSync(x->dpy, False); /* errors of the requests above while the handlers are ours */
+    /* A lost connection: Xlib marked the display broken, so XCloseDisplay only frees it
+     * and closes the socket. Any error on the way still reaches this workstation's
+     * handlers (unregistered after). */
     XCloseDisplay(x->dpy);
+    x11_unregister(x);
     gks_raster_fb_free(x->fb);
     ws_png_render_free(x->render);
     ws_rt_free(x->rt);
@@ -425,6 +519,8 @@ static void x11_close(gks_ws *ws)
 static int x11_clear(gks_ws *ws)
 {
     x11_ws *x = ws->priv;
+    if (x->gone)
+        return 303;
     ws_rt_reset(x->rt);
     ws_png_render_reset(x->render);
     gks_raster_fb_free(x->fb);
@@ -462,6 +558,8 @@ static void x11_tile(void *user, int i0, int j0, int w, int h, const float *rgb)
 static int x11_update(gks_ws *ws)
 {
     x11_ws *x = ws->priv;
+    if (x->gone) /* the window is closed: what was drawn since it was shown is lost */
+        return x->dirty ? (x->dirty = 0, 303) : 0;
     gks_raster_fb *fb = x11_fb(ws), *pic;
     if (!fb)
         return 300;
@@ -482,6 +580,8 @@ static int x11_update(gks_ws *ws)
 static int x11_primitive(gks_ws *ws, const gks_prim *prim)
 {
     x11_ws *x = ws->priv;
+    if (x->gone)
+        return 303;
     gks_raster_fb *fb = x11_fb(ws);
     if (!fb)
         return 300;
@@ -495,6 +595,8 @@ static int x11_primitive(gks_ws *ws, const gks_prim *prim)
 static int x11_message(gks_ws *ws, const char *msg)
 {
     x11_ws *x = ws->priv;
+    if (x->gone)
+        return 303;
     snprintf(x->msg, sizeof x->msg, "%s", msg);
     XStoreName(x->dpy, x->win, msg);
     x11_blit(x);
@@ -524,6 +626,8 @@ static int target(const gks_in_active *a, unsigned classes)
 static void prompt(x11_ws *x, const gks_in_active *a)
 {
     char t[96];
+    if (x->gone)
+        return;
     if (a->request >= 0)
         snprintf(t, sizeof t, "gks3d: REQUEST %s %d", class_names[a->dev[a->request].cls],
                  a->dev[a->request].num);
@@ -560,6 +664,17 @@ static int on_slider(const x11_ws *x, int px, int py)
 static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
 {
     x11_ws *x = ws->priv;
+    if (e->type == ClientMessage && e->xclient.window == x->win &&
+        (Atom)e->xclient.data.l[0] == x->wm_delete) { /* closed by the window manager */
+        XDestroyWindow(x->dpy, x->win);
+        XFlush(x->dpy);
+        x->gone = 1;
+        return 0;
+    }
+    if (e->type == DestroyNotify && e->xdestroywindow.window == x->win) {
+        x->gone = 1; /* destroyed by another client */
+        return 0;
+    }
     if (e->type == Expose) {
         if (e->xexpose.count == 0)
             x11_blit(x);
@@ -695,6 +810,8 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
 static int x11_input(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev)
 {
     x11_ws *x = ws->priv;
+    if (x->gone)
+        return -1; /* no device left: a REQUEST ends with status NONE */
     x->act = *act;
     x->have_act = 1;
     if (x->dirty) {
@@ -715,12 +832,19 @@ static int x11_input(gks_ws *ws, const gks_in_active *act, double timeout, gks_i
                     x11_blit(x); /* the REQUEST's prompt and echo go */
                 return 1;
             }
+            if (x->gone)
+                return -1;
         }
+        if (x->gone)
+            return -1;
         struct pollfd p = { ConnectionNumber(x->dpy), POLLIN, 0 };
         if (ms <= 0 || poll(&p, 1, ms) <= 0)
             return 0;
-        if (p.revents & (POLLERR | POLLHUP))
+        if (p.revents & (POLLERR | POLLHUP)) {
+            XPending(x->dpy); /* Xlib reads the end: the lost connection (x11_io_exit) */
+            x->gone = 1;
             return -1;
+        }
         ms = 0; /* one wait per call: the core loops */
         if (!XPending(x->dpy))
             return 0;
