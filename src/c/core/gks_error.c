@@ -7,6 +7,8 @@
 #include "gks_context.h"
 #include "gks_state.h"
 #include <limits.h>
+#include <stdatomic.h>
+#include <stdint.h>
 #include <stdio.h>
 
 typedef struct { int num; const char *msg; } err_entry;
@@ -46,6 +48,51 @@ unsigned gks_function_states(int fctid)
     return fn_table[fctid].states;
 }
 
+/* ---- threads (docs/ARCHITECTURE.md "Threads") ----
+ * GKS belongs to one thread at a time: the one that called OPEN GKS, until CLOSE GKS or
+ * EMERGENCY CLOSE GKS. A call from any other thread while GKS is owned is refused before
+ * it reads anything of the context: it reports GKS_E_THREAD to the installed ERROR
+ * HANDLING procedure (without the error state, which is the owner's; the default handler
+ * writes to standard error, not to the owner's error file), an inquiry returns it in its
+ * error indicator. Every entry point passes gks_check_state (non-inquiries) or
+ * gks_inq_args / gks_inq_state / gks_inq_begin (inquiries) first; the few that pass
+ * neither (EMERGENCY CLOSE GKS, SET ERROR HANDLING, ERROR LOGGING, INQUIRE OPERATING STATE,
+ * the binding's error report) check gks_thread_mine themselves. A thread is identified by
+ * the address of its own thread-local byte (no pthread_t comparison needed). */
+static _Atomic uintptr_t gks_owner;          /* 0: GKS is closed and nobody opens it */
+static _Thread_local char gks_thread_self;
+static _Atomic(Gerr_handler) gks_foreign_handler; /* the handler as a refused call sees it */
+
+static uintptr_t thread_self(void)
+{
+    return (uintptr_t)&gks_thread_self;
+}
+
+int gks_thread_mine(void)
+{
+    uintptr_t o = atomic_load_explicit(&gks_owner, memory_order_acquire);
+    return o == 0 || o == thread_self();
+}
+
+int gks_thread_claim(void)
+{
+    uintptr_t none = 0, self = thread_self();
+    return atomic_compare_exchange_strong(&gks_owner, &none, self) || none == self;
+}
+
+void gks_thread_release(void)
+{
+    uintptr_t self = thread_self();
+    atomic_compare_exchange_strong(&gks_owner, &self, 0);
+}
+
+int gks_thread_refused(int fctid)
+{
+    Gerr_handler h = atomic_load(&gks_foreign_handler);
+    (h ? h : gerr_hand)(GKS_E_THREAD, fctid, NULL);
+    return GKS_E_THREAD;
+}
+
 int gks_error_report(int err_num, int fctid)
 {
     gks_context *c = gks_ctx();
@@ -62,6 +109,10 @@ int gks_error_report(int err_num, int fctid)
 
 GKS_API void gks_binding_error(int err_num, int fctid)
 {
+    if (!gks_thread_mine()) {
+        gks_thread_refused(fctid);
+        return;
+    }
     if (gks_error_report(err_num, fctid)) {
     } /* the binding's wrapper returns at once */
 }
@@ -78,6 +129,9 @@ void gks_world_changed(void)
 
 int gks_check_state(int fctid)
 {
+    /* OPEN GKS claims GKS for its thread (released again if GKS stays closed) */
+    if (!(fctid == GFN_OPKS ? gks_thread_claim() : gks_thread_mine()))
+        return gks_thread_refused(fctid);
     /* Every non-inquiry entry point passes here: entered from ERROR HANDLING, it may
      * change anything, so the reporting function must not go on. */
     if (gks_ctx()->err.in_handler)
@@ -95,6 +149,8 @@ int gks_inq_begin(Gint *err_ind, unsigned mask)
 {
     if (!err_ind)
         return -1;
+    if (!gks_thread_mine())
+        return *err_ind = GKS_E_THREAD;
     *err_ind = gks_inq_state(mask);
     return *err_ind;
 }
@@ -158,6 +214,10 @@ int gks_inq_args(Gint *err_ind, int n, const void *const *p)
 {
     if (!err_ind)
         return 1;
+    if (!gks_thread_mine()) {
+        *err_ind = GKS_E_THREAD;
+        return 1;
+    }
     for (int i = 0; i < n; i++)
         if (!p[i]) {
             *err_ind = 2003; /* a NULL pointer argument (docs/ERRORS.md) */
@@ -168,6 +228,8 @@ int gks_inq_args(Gint *err_ind, int n, const void *const *p)
 
 int gks_inq_state(unsigned mask)
 {
+    if (!gks_thread_mine())
+        return GKS_E_THREAD;
     return (mask & (1u << gks_ctx()->op_st)) ? 0 : gks_state_error_for(mask);
 }
 
@@ -179,7 +241,8 @@ GKS_API void gerr_hand(Gint err_num, Gint func_num, const char *err_file)
 GKS_API void gerr_log(Gint err_num, Gint func_num, const char *err_file)
 {
     (void)err_file; /* the file was opened once at OPEN GKS */
-    FILE *fp = gks_ctx()->err.fp ? gks_ctx()->err.fp : stderr;
+    /* another thread's refused call: standard error, never the owner's error file */
+    FILE *fp = gks_thread_mine() && gks_ctx()->err.fp ? gks_ctx()->err.fp : stderr;
     fprintf(fp, "GKS ERROR %d in %s: %s\n", err_num, gks_function_name(func_num),
             gks_error_message(err_num));
     fflush(fp);
@@ -187,14 +250,21 @@ GKS_API void gerr_log(Gint err_num, Gint func_num, const char *err_file)
 
 GKS_API void gset_err_hand(Gerr_handler new_hand, Gerr_handler *old_hand)
 {
+    if (!gks_thread_mine()) {
+        gks_thread_refused(-1); /* no function identification */
+        return;
+    }
     gks_context *c = gks_ctx();
     if (old_hand)
         *old_hand = c->err.handler ? c->err.handler : gerr_hand;
     c->err.handler = (new_hand == gerr_hand) ? NULL : new_hand;
+    atomic_store(&gks_foreign_handler, c->err.handler);
 }
 
 GKS_API void ginq_err_st(Gint *in_error_handling, Gint *last_err_num)
 {
+    if (!gks_thread_mine()) /* no error indicator: nothing is written */
+        return;
     if (in_error_handling)
         *in_error_handling = gks_ctx()->err.in_handler;
     if (last_err_num)

@@ -32,6 +32,19 @@ unsigned long gks_world_epoch(void);
 /* Mark the world changed (the sites listed above). */
 void gks_world_changed(void);
 
+/* Threads (gks_error.c, docs/ARCHITECTURE.md): GKS belongs to the thread that opened it
+ * until it is closed; another thread's call is refused with GKS_E_THREAD. */
+#define GKS_E_THREAD 950
+/* 1 if the calling thread may use GKS: it owns it, or nobody does. */
+int gks_thread_mine(void);
+/* OPEN GKS: claims GKS for the calling thread; 0 if another thread owns it. */
+int gks_thread_claim(void);
+/* CLOSE GKS, EMERGENCY CLOSE GKS, a failed OPEN GKS: the calling thread gives GKS up. */
+void gks_thread_release(void);
+/* A refused call: GKS_E_THREAD to the installed ERROR HANDLING procedure (no error state,
+ * no error file); returns GKS_E_THREAD. fctid -1: a function without identification. */
+int gks_thread_refused(int fctid);
+
 /* Entry-point guard: if the operating state does not allow `fctid`, report the state
  * error and return it; else return 0. Usage:  if (gks_check_state(GFN_PL)) return; */
 int gks_check_state(int fctid);

@@ -45,8 +45,9 @@ static void init_state_list(gks_state_list *sl)
 }
 
 /* Shared by gopen_gks and gks_open_gks_unit. err_name: what ERROR HANDLING receives;
- * open_file: whether C opens err_name as the error file. */
-static void open_gks(const char *err_name, int open_file)
+ * open_file: whether C opens err_name as the error file. Its state check claims GKS for
+ * the calling thread (open_gks gives it up again when GKS stays closed). */
+static void open_gks_claimed(const char *err_name, int open_file)
 {
     gks_context *c = gks_ctx();
     if (gks_check_state(GFN_OPKS))
@@ -87,6 +88,14 @@ static void open_gks(const char *err_name, int open_file)
     c->op_st = GST_GKOP;
 }
 
+static void open_gks(const char *err_name, int open_file)
+{
+    open_gks_claimed(err_name, open_file);
+    /* ownership first: a refused call must not read the owner's state */
+    if (gks_thread_mine() && gks_ctx()->op_st == GST_GKCL)
+        gks_thread_release();
+}
+
 GKS_API void gopen_gks(const char *err_file, size_t mem_unit)
 {
     (void)mem_unit; /* memory is allocated on demand */
@@ -114,6 +123,7 @@ static void close_gks(gks_context *c)
     gks_free(c->sl);
     c->sl = NULL;
     c->op_st = GST_GKCL;
+    gks_thread_release(); /* any thread may open GKS now */
 }
 
 GKS_API void gclose_gks(void)
@@ -403,6 +413,10 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
 
 GKS_API void gemergency_close_gks(void)
 {
+    if (!gks_thread_mine()) { /* another thread's GKS: not this thread's to close */
+        gks_thread_refused(-1);
+        return;
+    }
     gks_context *c = gks_ctx();
     if (c->op_st == GST_GKCL)
         return;

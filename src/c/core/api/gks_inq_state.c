@@ -58,6 +58,10 @@ const gks_ws_desc *gks_inq_ws_type(Gint ws_type, int out, Gint *err)
 
 GKS_API void ginq_op_st(Gop_st *op_st)
 {
+    if (!gks_thread_mine()) { /* no error indicator: reported through the handler */
+        gks_thread_refused(-1);
+        return;
+    }
     if (op_st)
         *op_st = gks_ctx()->op_st;
 }
