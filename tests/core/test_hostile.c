@@ -427,6 +427,57 @@ static void test_huge_coordinates_traced(void **u)
     unlink("h_big_rt.png");
 }
 
+/* A HOLLOW FILL AREA 3 with a vertex far out in x (issue 40 J): the clipped area's boundary
+ * (the edges along y = 0.2 and x = 0.2, the one back at y = 0.8 and the piece of the clip
+ * boundary at x = 1 between them) has the same pixels whether the vertex is at 1e100 or at
+ * 1e250, 1e300, 1e305, 1e307 or DBL_MAX, in every classic HLHSR mode. Exact: the same
+ * edges at the same pixels, no tolerance needed (main 78a5733: at 1e250 and 1e305 the
+ * clip-boundary edge, 38 of 180 pixels, was lost: the polygon clipper left the crossing an
+ * ulp outside the face). */
+static int hollow_pixels(double far, int mode)
+{
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png64(1, "h_hollow.png", mode);
+    gset_fill_int_style(GSTYLE_HOLLOW);
+    gset_fill_colr_ind(2);
+    Gpoint3 t[3] = { { 0.2, 0.2, 0.5 }, { far, 0.2, 0.5 }, { 0.2, 0.8, 0.5 } };
+    gfill_area3(&(Gpoint_list3){ 3, t });
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    expect_errors(0, 0);
+    image img;
+    assert_true(read_png("h_hollow.png", &img));
+    int n = 0;
+    for (int y = 0; y < img.h; y++)
+        for (int x = 0; x < img.w; x++)
+            n += memcmp(px(&img, x, y), px(&img, 0, 0), 3) != 0;
+    free(img.rgb);
+    unlink("h_hollow.png");
+    return n;
+}
+
+static void test_hollow_huge_vertex(void **u)
+{
+    (void)u;
+    const int modes[] = { GHLHSR_NONE, GHLHSR_HIDDEN_LINE, GHLHSR_ZBUFFER, GHLHSR_PAINTER };
+    const double far[] = { 1e200, 1e250, 1e300, 1e305, 1e307, DBL_MAX };
+    for (int m = 0; m < 4; m++) {
+        int ref = hollow_pixels(1e100, modes[m]);
+        printf("hollow, mode %d: 1e100: %d pixels", modes[m], ref);
+        assert_true(ref > 150);
+        for (int i = 0; i < 6; i++) {
+            int n = hollow_pixels(far[i], modes[m]);
+            printf(", %g: %d", far[i], n);
+            if (n != ref)
+                fail_msg("mode %d: vertex at %g: %d boundary pixels, at 1e100 %d", modes[m],
+                         far[i], n, ref);
+        }
+        printf("\n");
+    }
+}
+
 /* A self-intersecting FILL AREA 3 big enough for the tracer's point-in-polygon grid (a
  * star of 1201 edges each nearly a diameter, winding 500 times around the centre): the
  * ray-traced picture equals the z-buffer picture (both even-odd at the pixel centres),
@@ -619,6 +670,7 @@ int main(void)
         cmocka_unit_test(test_huge_coordinates_traced),
         cmocka_unit_test(test_huge_coordinates_alloc_failures),
         cmocka_unit_test(test_big_star_traced_as_classic),
+        cmocka_unit_test(test_hollow_huge_vertex),
         cmocka_unit_test(test_segment_of_only_a_cell_array),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -308,11 +308,16 @@ static void sh_copy(double *d, const double *p, size_t nv)
         memcpy(d, p, nv * sizeof *p);
 }
 
+/* The crossing is put exactly on a box face (snap), as the segment clipper does: else a
+ * far vertex (x = 1e250) left it an ulp outside, and the clipped polygon's boundary along
+ * the face was then clipped away again as a polyline (issue 40 J: a HOLLOW area lost its
+ * edge on the clip boundary). */
 static void sh_emit_crossing(sh_ctx *x, int s, const double *a, double da, const double *b,
                              double db)
 {
     double q[SH_MAXV];
     cross_n(a, b, da, db, q, x->nv);
+    snap(x->c, s, q);
     sh_push(x, s + 1, q);
 }
 
