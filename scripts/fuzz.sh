@@ -50,12 +50,15 @@ clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthre
 # The state machine: random call sequences through the whole library.
 clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_state.c "${lib_srcs[@]}" -lpng -lpthread -lm \
     -o "$out/fuzz_state"
+# Input scripts: the script reader and the measure process behind every input function.
+clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_input.c "${lib_srcs[@]}" -lpng -lpthread -lm \
+    -o "$out/fuzz_input"
 # The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
 clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
     -o "$out/fuzz_scene"
 
 status=0
-for target in gksm mi state scene; do
+for target in gksm mi state input scene; do
     work="$out/corpus_$target"
     rm -rf "$work"
     cp -r "tests/fuzz/corpus_$target" "$work"
