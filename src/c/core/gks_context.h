@@ -2,8 +2,11 @@
 /*
  * gks_context.h -- the root object holding the standard's tables: the GKS description
  * table (const), the GKS state list (exists while GKS is open), the error state list and
- * the workstation state lists of the open workstations. No other file-level mutable state
- * exists in the core (the allocation fault-injection counter of gks_alloc.c excepted).
+ * the workstation state lists of the open workstations. Other file-level mutable state of
+ * the core: the allocation fault-injection counter (base/gks_alloc.c), the normalization
+ * cache `norm_cache` (pipe/gks_pipe_norm.c: the last current-state context, compared by
+ * value, never a second source of truth) and the legacy settings `legacy`
+ * (gks_legacy.c: GKS3D_WS_TYPES, GKS3D_ASF and NCAR's next file name, read at OPEN GKS).
  */
 #ifndef GKS_CONTEXT_H
 #define GKS_CONTEXT_H
