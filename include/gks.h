@@ -330,6 +330,33 @@ typedef enum { GPATH_RIGHT, GPATH_LEFT, GPATH_UP, GPATH_DOWN } Gtext_path;
 typedef enum { GHOR_NORM, GHOR_LEFT, GHOR_CTR, GHOR_RIGHT } Ghor_text_align;
 typedef enum { GVERT_NORM, GVERT_TOP, GVERT_CAP, GVERT_HALF, GVERT_BASE, GVERT_BOTTOM } Gvert_text_align;
 typedef enum { GEDGE_OFF, GEDGE_ON } Gedge_flag;
+
+/* Line types (also edge types), marker types and hatch styles are Gint in the standard, so
+ * the ISO C binding (ISO/IEC 8651-4) names them as macros; the values are the Fortran
+ * binding's GLSOLI ... (linetypes) and GPOINT ... (marker types). Hatch styles are
+ * workstation dependent: these are the twelve of every drawing workstation here (ws_wdt.c,
+ * docs/WORKSTATIONS.md), lines in DC spaced 8 pixels (7..12: 4 pixels) on the raster. */
+#define GLINE_SOLID 1           /* ISO linetype 1, Fortran GLSOLI */
+#define GLINE_DASH 2            /* ISO linetype 2, GLDASH */
+#define GLINE_DOT 3             /* ISO linetype 3, GLDOT */
+#define GLINE_DASH_DOT 4        /* ISO linetype 4, GLDASD */
+#define GMARKER_DOT 1           /* ISO marker type 1 (.), Fortran GPOINT */
+#define GMARKER_PLUS 2          /* ISO marker type 2 (+), GPLUS */
+#define GMARKER_ASTERISK 3      /* ISO marker type 3 (*), GAST */
+#define GMARKER_CIRCLE 4        /* ISO marker type 4 (o), GOMARK */
+#define GMARKER_CROSS 5         /* ISO marker type 5 (x), GXMARK */
+#define GHATCH_HOR (-1)         /* horizontal lines */
+#define GHATCH_VERT (-2)        /* vertical lines */
+#define GHATCH_DIAG_45 (-3)     /* rising diagonals, 45 degrees */
+#define GHATCH_DIAG_135 (-4)    /* falling diagonals, 135 degrees */
+#define GHATCH_CROSS (-5)       /* horizontal and vertical lines */
+#define GHATCH_DIAG_CROSS (-6)  /* both diagonals */
+#define GHATCH_HOR_DENSE (-7)   /* as -1 .. -6 with half the spacing */
+#define GHATCH_VERT_DENSE (-8)
+#define GHATCH_DIAG_45_DENSE (-9)
+#define GHATCH_DIAG_135_DENSE (-10)
+#define GHATCH_CROSS_DENSE (-11)
+#define GHATCH_DIAG_CROSS_DENSE (-12)
 typedef struct { Gint font; Gtext_prec prec; } Gtext_font_prec;
 typedef struct { Ghor_text_align hor; Gvert_text_align vert; } Gtext_align;
 typedef struct { Gint num_point_lists; Gpoint_list *point_lists; } Gpoint_list_list;
