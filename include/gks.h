@@ -294,6 +294,12 @@ GKS_API void gset_err_hand(Gerr_handler new_hand, Gerr_handler *old_hand);
 GKS_API const char *gks_error_message(Gint err_num);
 /* The ISO name of a function identification ("" if unknown); never NULL. */
 GKS_API const char *gks_function_name(Gint func_num);
+/* What went wrong in the error being handled, in words, beyond the standard's message:
+ * for an error about a file its name and the system's reason (`cannot open "out/x.png":
+ * No such file or directory`), for a missing X display which one; "" when the error has
+ * none. Valid while ERROR HANDLING runs (an application's handler may read it) and until
+ * the next error is reported; ERROR LOGGING writes it after the message. Never NULL. */
+GKS_API const char *gks_error_detail(void);
 
 /* ---------------------------------------------------------------------------------
  * Output primitives and attributes (2-D subset; the 3-D pipeline extends these)

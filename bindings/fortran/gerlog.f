@@ -1,10 +1,11 @@
 C     SPDX-License-Identifier: MIT
       SUBROUTINE GERLOG(ERRNR, FCTID, ERRFIL)
 !     ERROR LOGGING (ISO 8651-1): writes the error number, the function
-!     name and the standard message as one line to unit ERRFIL.
+!     name and the standard message (with what went wrong, GKEMSG:
+!     the file and the reason) as one line to unit ERRFIL.
       INTEGER ERRNR, FCTID, ERRFIL
       CHARACTER*64 FNAM
-      CHARACTER*256 MSG
+      CHARACTER*800 MSG
       INTEGER LF, LM
       CALL GKFNAM(FCTID, FNAM, LF)
       CALL GKEMSG(ERRNR, MSG, LM)

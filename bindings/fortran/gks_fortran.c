@@ -586,9 +586,20 @@ FAPI void FNAME(gkfnam, GKFNAM)(const fint *fctid, char *name, fint *lname, size
 }
 
 /* GKEMSG(ERRNR, MSG, LMSG): the standard message of an error number, blank-padded. */
+/* The message of ERRNR; while ERROR HANDLING runs for ERRNR, followed by ": " and the
+ * detail (gks_error_detail: the file and the system's reason, the missing display). */
 FAPI void FNAME(gkemsg, GKEMSG)(const fint *errnr, char *msg, fint *lmsg, size_t msg_len)
 {
-    *lmsg = gks_f77_fill_str(gks_error_message(*errnr), msg, msg_len);
+    Gint in_handler = 0, last = 0;
+    ginq_err_st(&in_handler, &last);
+    const char *m = gks_error_message(*errnr), *d = gks_error_detail();
+    if (!in_handler || last != *errnr || !*d) {
+        *lmsg = gks_f77_fill_str(m, msg, msg_len);
+        return;
+    }
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s: %s", m, d);
+    *lmsg = gks_f77_fill_str(buf, msg, msg_len);
 }
 
 /* ------------------------------------------------- GKS-3D output and viewing */

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * f77_errfile_check.c -- runs f77_errfile (default GERHND -> GERLOG on unit 22) and
- * compares f77_errors.txt line by line with the expected "GKS ERROR n in NAME: message".
+ * compares f77_errors.txt line by line with the expected "GKS ERROR n in NAME: message",
+ * followed by ": " and the detail for an error about a file.
  * Usage: f77_errfile_check PROGRAM
  */
 #define _POSIX_C_SOURCE 200809L
@@ -13,7 +14,12 @@
 int main(int argc, char **argv)
 {
     static const struct { int err, fct; } want[] = {
-        { 23, GFN_OPWK }, { 25, GFN_ACWK }, { 1, GFN_OPKS }, { 2000, GFN_CLRWK },
+        { 23, GFN_OPWK }, { 25, GFN_ACWK }, { 26, GFN_OPWK }, { 1, GFN_OPKS },
+        { 2000, GFN_CLRWK },
+    };
+    /* the detail GERLOG writes after the message (gks_error_detail) */
+    static const char *const detail[] = {
+        "", "", ": cannot open \"no_such_folder/f.png\": No such file or directory", "", "",
     };
     if (argc != 2) {
         fprintf(stderr, "usage: %s PROGRAM\n", argv[0]);
@@ -39,8 +45,8 @@ int main(int argc, char **argv)
             fails++;
             continue;
         }
-        snprintf(exp, sizeof exp, "GKS ERROR %d in %s: %s", want[i].err,
-                 gks_function_name(want[i].fct), gks_error_message(want[i].err));
+        snprintf(exp, sizeof exp, "GKS ERROR %d in %s: %s%s", want[i].err,
+                 gks_function_name(want[i].fct), gks_error_message(want[i].err), detail[i]);
         if (strcmp(line, exp) != 0) {
             printf("line %zu:\n got  %s\n want %s\n", i + 1, line, exp);
             fails++;

@@ -19,6 +19,7 @@
 #define GKS_MAX_OPEN_WS 16
 #define GKS_MAX_ACTIVE_WS 16
 #define GKS_MAX_NORM_TRAN 31 /* transformations 0..31; 0 is the unity transformation */
+#define GKS_ERROR_DETAIL_MAX 512 /* bytes of an error detail (gks_error_note), NUL included */
 
 /* GKS description table (ISO 7942 6.3), constant. */
 typedef struct gks_desc_table {
@@ -128,6 +129,11 @@ typedef struct gks_error_state {
     FILE *fp;              /* error file opened at OPEN GKS, NULL = standard error */
     Gerr_handler handler;  /* NULL = gerr_hand */
     unsigned long epoch;   /* world epoch (gks_error.h): changes when the world does */
+    /* What went wrong, in words, for the next report (gks_error_note: a file and the
+     * system's reason, a missing display); moved to `detail` by gks_error_report, where
+     * ERROR LOGGING and gks_error_detail() read it while the handler runs. */
+    char note[GKS_ERROR_DETAIL_MAX];
+    char detail[GKS_ERROR_DETAIL_MAX];
 } gks_error_state;
 
 /* Test hook: called with every primitive just before a driver receives it. */

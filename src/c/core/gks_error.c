@@ -9,7 +9,9 @@
 #include <limits.h>
 #include <stdatomic.h>
 #include <stdint.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
 typedef struct { int num; const char *msg; } err_entry;
 static const err_entry err_table[] = {
@@ -93,6 +95,15 @@ int gks_thread_refused(int fctid)
     return GKS_E_THREAD;
 }
 
+void gks_error_note(const char *fmt, ...)
+{
+    gks_context *c = gks_ctx();
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->err.note, sizeof c->err.note, fmt, ap);
+    va_end(ap);
+}
+
 int gks_error_report(int err_num, int fctid)
 {
     gks_context *c = gks_ctx();
@@ -101,10 +112,17 @@ int gks_error_report(int err_num, int fctid)
     unsigned long epoch = c->err.epoch;
     int outer = c->err.in_handler; /* a handler's own call may report: nest */
     c->err.last_error = err_num;
+    memcpy(c->err.detail, c->err.note, sizeof c->err.detail);
+    c->err.note[0] = '\0';
     c->err.in_handler = 1;
     h(err_num, fctid, file);
     c->err.in_handler = outer;
     return c->err.epoch == epoch;
+}
+
+GKS_API const char *gks_error_detail(void)
+{
+    return gks_ctx()->err.detail;
 }
 
 GKS_API void gks_binding_error(int err_num, int fctid)
@@ -136,6 +154,7 @@ int gks_check_state(int fctid)
      * change anything, so the reporting function must not go on. */
     if (gks_ctx()->err.in_handler)
         gks_world_changed();
+    gks_ctx()->err.note[0] = '\0'; /* a note belongs to an error of this call */
     unsigned mask = gks_function_states(fctid);
     if (mask & (1u << gks_ctx()->op_st))
         return 0;
@@ -241,10 +260,19 @@ GKS_API void gerr_hand(Gint err_num, Gint func_num, const char *err_file)
 GKS_API void gerr_log(Gint err_num, Gint func_num, const char *err_file)
 {
     (void)err_file; /* the file was opened once at OPEN GKS */
-    /* another thread's refused call: standard error, never the owner's error file */
-    FILE *fp = gks_thread_mine() && gks_ctx()->err.fp ? gks_ctx()->err.fp : stderr;
-    fprintf(fp, "GKS ERROR %d in %s: %s\n", err_num, gks_function_name(func_num),
-            gks_error_message(err_num));
+    /* another thread's refused call: standard error, never the owner's error file, and
+     * no detail (it belongs to the owner's error being handled) */
+    FILE *fp = stderr;
+    const char *detail = "";
+    if (gks_thread_mine()) {
+        if (gks_ctx()->err.fp)
+            fp = gks_ctx()->err.fp;
+        /* the detail belongs to the error being handled, not to a call outside a handler */
+        if (gks_ctx()->err.in_handler)
+            detail = gks_ctx()->err.detail;
+    }
+    fprintf(fp, "GKS ERROR %d in %s: %s%s%s\n", err_num, gks_function_name(func_num),
+            gks_error_message(err_num), *detail ? ": " : "", detail);
     fflush(fp);
 }
 

@@ -24,6 +24,12 @@
  * looked up before the report. */
 GKS_MUST_CHECK int gks_error_report(int err_num, int fctid);
 
+/* Words for the next report (printf format), e.g. gks_error_note("cannot open \"%s\": %s",
+ * path, strerror(errno)): gks_error_report hands them to the handler through
+ * gks_error_detail() and ERROR LOGGING writes them; a report clears the note, so a note
+ * never describes a later error. Truncated to GKS_ERROR_DETAIL_MAX - 1 bytes. */
+void gks_error_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
 /* The world epoch: a counter that changes whenever something a caller may hold a
  * pointer to ceases to exist (CLOSE GKS and EMERGENCY CLOSE GKS, CLOSE WORKSTATION, a
  * segment deleted) and whenever a non-inquiry function is entered while ERROR HANDLING

@@ -250,12 +250,17 @@ static void script_free(struct gks_in_script *s)
 static FILE *open_script(const char *path)
 {
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0)
+    if (fd < 0) {
+        gks_error_note("cannot open input script \"%s\": %s", path, strerror(errno));
         return NULL;
+    }
     struct stat st;
     FILE *fp = NULL;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || fcntl(fd, F_SETFL, 0) != 0 ||
-        !(fp = fdopen(fd, "r")))
+    if (fstat(fd, &st) == 0 && !S_ISREG(st.st_mode))
+        gks_error_note("input script \"%s\" is not a regular file", path);
+    else if (fstat(fd, &st) != 0 || fcntl(fd, F_SETFL, 0) != 0 || !(fp = fdopen(fd, "r")))
+        gks_error_note("cannot read input script \"%s\": %s", path, strerror(errno));
+    if (!fp)
         close(fd);
     return fp;
 }

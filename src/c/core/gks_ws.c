@@ -77,7 +77,14 @@ static int init_bundles(gks_ws *ws, const gks_wdt_output *t)
 
 static int file_claim(gks_ws *ws, const char *path);
 static int file_taken(const gks_ws *ws, const char *path);
-const gks_ws_host gks_ws_core_host = { .file_claim = file_claim, .file_taken = file_taken };
+/* gks_ws_host.note: the driver's words for its next error report */
+static void note(const char *text)
+{
+    gks_error_note("%s", text);
+}
+
+const gks_ws_host gks_ws_core_host = { .file_claim = file_claim, .file_taken = file_taken,
+                                       .note = note };
 
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
 {
@@ -131,12 +138,15 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
     return ws;
 }
 
-/* realpath() into the funnel; NULL with *err = 26 (no such path) or 300. */
+/* realpath() into the funnel; NULL with *err = 26 (no such path; noted with the
+ * system's reason) or 300. */
 static char *canonical(const char *path, int *err)
 {
     char *r = realpath(path, NULL);
     if (!r) {
         *err = errno == ENOMEM ? 300 : 26;
+        if (*err == 26)
+            gks_error_note("cannot open \"%s\": %s", path, strerror(errno));
         return NULL;
     }
     char *c = gks_strdup(r);
@@ -147,18 +157,28 @@ static char *canonical(const char *path, int *err)
 
 /* The canonical path of `path`, which must be usable: an existing regular file (readable,
  * or writable when `write`), or, when writing, a name not yet taken in a writable
- * directory. NULL with *err = 26 or 300. */
+ * directory. NULL with *err = 26 or 300; a 26 is noted for the error report with the file
+ * and the system's reason (`cannot open "out/x.png": No such file or directory`). */
 static char *usable_file(const char *path, int write, int *err)
 {
     struct stat st;
     if (stat(path, &st) == 0) {
-        if (!S_ISREG(st.st_mode) || access(path, write ? W_OK : R_OK) != 0) {
+        if (!S_ISREG(st.st_mode)) {
+            gks_error_note("cannot open \"%s\": %s", path,
+                           S_ISDIR(st.st_mode) ? strerror(EISDIR) : "not a regular file");
+            *err = 26;
+            return NULL;
+        }
+        if (access(path, write ? W_OK : R_OK) != 0) {
+            gks_error_note("cannot open \"%s\" for %s: %s", path, write ? "writing" : "reading",
+                           strerror(errno));
             *err = 26;
             return NULL;
         }
         return canonical(path, err);
     }
     if (errno != ENOENT || !write) {
+        gks_error_note("cannot open \"%s\": %s", path, strerror(errno));
         *err = 26;
         return NULL;
     }
@@ -170,9 +190,14 @@ static char *usable_file(const char *path, int write, int *err)
         return NULL;
     }
     char *cdir = NULL;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0)
+    /* the file does not exist yet: its folder must, and must be writable */
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
+        int e = errno;
+        if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
+            e = ENOTDIR;
+        gks_error_note("cannot open \"%s\": %s", path, strerror(e));
         *err = 26;
-    else
+    } else
         cdir = canonical(dir, err);
     gks_free(dir);
     if (!cdir)
@@ -222,6 +247,7 @@ int gks_ws_file_check(gks_ws *ws)
     if (!canon)
         return err;
     if (file_in_use(ws, canon)) {
+        gks_error_note("\"%s\" is written or read by another open workstation", canon);
         gks_free(canon);
         return 21; /* the connection (its file) is in use by another workstation */
     }

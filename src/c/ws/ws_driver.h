@@ -39,6 +39,10 @@ typedef struct gks_ws_host {
     int (*file_claim)(gks_ws *ws, const char *path);
     /* 1 if another open workstation writes (or wrote, in this opening) the file path. */
     int (*file_taken)(const gks_ws *ws, const char *path);
+    /* Words for the error the driver is about to return (the file and the system's
+     * reason, the display that is missing): the core's report shows them after the
+     * standard message (gks_error_detail). Use gks_ws_note below. */
+    void (*note)(const char *text);
 } gks_ws_host;
 
 /* Workstation description table (ISO 7942 6.2): constant per workstation type. */
@@ -288,6 +292,8 @@ static inline int gks_ws_file_claim(gks_ws *ws, const char *path)
 {
     return ws->host->file_claim(ws, path);
 }
+/* gks_ws_host.note of ws's core, printf-formatted (ws_file.c). */
+void gks_ws_note(const gks_ws *ws, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* gks_ws_host.file_taken of ws's core. */
 static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
 {

@@ -8,8 +8,20 @@
 #include "ws_driver.h"
 #include "gks_alloc.h"
 #include <ctype.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+
+void gks_ws_note(const gks_ws *ws, const char *fmt, ...)
+{
+    char text[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    if (ws && ws->host && ws->host->note)
+        ws->host->note(text);
+}
 
 char *gks_ws_file_base(const char *conn, const char *ext)
 {

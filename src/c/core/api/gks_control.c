@@ -18,6 +18,7 @@
 #include "gks_state.h"
 #include "gks_ws.h"
 #include <stdio.h>
+#include <errno.h>
 #include <string.h>
 
 #define MAX_CONN_LEN 4096
@@ -63,6 +64,9 @@ static void open_gks_claimed(const char *err_name, int open_file)
         if (gks_par_rank() > 0 && !(path = gks_par_rank_path(err_name)))
             GKS_FAIL(300, GFN_OPKS);
         fp = fopen(path ? path : err_name, "a");
+        if (!fp) /* reported on standard error: the error file is what failed */
+            gks_error_note("cannot open error file \"%s\": %s", path ? path : err_name,
+                           strerror(errno));
         gks_free(path);
         if (!fp)
             GKS_FAIL(200, GFN_OPKS);

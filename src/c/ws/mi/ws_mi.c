@@ -10,7 +10,9 @@
 #include "gks_mf_codec.h"
 #include "gks_mf_file.h"
 #include "ws_driver.h"
+#include <errno.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The MI's file and its reader. */
 typedef struct {
@@ -39,13 +41,16 @@ static int mi_open(gks_ws *ws)
         return 300;
     char *path = gks_mf_file_name(ws->conn_id);
     m->fp = path ? fopen(path, "rb") : NULL;
+    if (!m->fp && path)
+        gks_ws_note(ws, "cannot open \"%s\": %s", path, strerror(errno));
+    if (m->fp && gksm_in_open(&m->in, m->fp)) { /* not a GKSM file this reader accepts */
+        gks_ws_note(ws, "\"%s\" is not a GKS metafile this library reads (docs/METAFILE.md)",
+                    path);
+        fclose(m->fp);
+        m->fp = NULL;
+    }
     gks_free(path);
     if (!m->fp) {
-        gks_free(m);
-        return 26;
-    }
-    if (gksm_in_open(&m->in, m->fp)) { /* not a GKSM file this reader accepts */
-        fclose(m->fp);
         gks_free(m);
         return 26;
     }

@@ -10,7 +10,9 @@
 #include "gks_mf_codec.h"
 #include "gks_mf_file.h"
 #include "ws_driver.h"
+#include <errno.h>
 #include <stdio.h>
+#include <string.h>
 
 /* The MO's file. */
 typedef struct {
@@ -42,13 +44,15 @@ static int mo_open(gks_ws *ws)
         return 300;
     char *path = gks_mf_file_name(ws->conn_id);
     o->fp = path ? fopen(path, "wb") : NULL;
+    if (!o->fp && path)
+        gks_ws_note(ws, "cannot open \"%s\": %s", path, strerror(errno));
+    if (o->fp && gksm_write_header(o->fp, "gks3d GKS-3D metafile", NULL)) {
+        gks_ws_note(ws, "cannot write \"%s\": %s", path, errno ? strerror(errno) : "write failed");
+        fclose(o->fp);
+        o->fp = NULL;
+    }
     gks_free(path);
     if (!o->fp) {
-        gks_free(o);
-        return 26;
-    }
-    if (gksm_write_header(o->fp, "gks3d GKS-3D metafile", NULL)) {
-        fclose(o->fp);
         gks_free(o);
         return 26;
     }

@@ -31,6 +31,7 @@
 #include "ws_mpi.h"
 #include "gks_par.h"
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -207,7 +208,10 @@ static int png_update(gks_ws *ws)
     int c = gks_ws_file_claim_frame(ws, p->base, p->frame, ".png", &path);
     if (c)
         return c;
+    errno = 0;
     int r = gks_raster_fb_write_png(pic, path, p->compression);
+    if (r == GKS_RASTER_E_IO)
+        gks_ws_note(ws, "cannot write \"%s\": %s", path, errno ? strerror(errno) : "write failed");
     gks_free(path);
     if (r != GKS_RASTER_OK)
         return r == GKS_RASTER_E_NOMEM ? 300 : 303;

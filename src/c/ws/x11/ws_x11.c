@@ -435,11 +435,21 @@ static int x11_open(gks_ws *ws)
         digits &= isdigit((unsigned char)*c) != 0;
     XInitThreads(); /* the tracer's threads show tiles (one at a time, under its lock) */
     Display *dpy = XOpenDisplay(digits ? NULL : name);
-    if (!dpy)
+    if (!dpy) {
+        const char *env = getenv("DISPLAY");
+        if (!digits)
+            gks_ws_note(ws, "cannot open X display \"%s\"", name);
+        else if (!env || !*env)
+            gks_ws_note(ws, "no X display: DISPLAY is not set (give a display name as the "
+                            "connection identifier, or run under an X server)");
+        else
+            gks_ws_note(ws, "cannot open X display \"%s\" (DISPLAY)", env);
         return 26;
+    }
     int scr = DefaultScreen(dpy);
     Visual *vis = DefaultVisual(dpy, scr);
     if (DefaultDepth(dpy, scr) < 24 || vis->class != TrueColor) {
+        gks_ws_note(ws, "X display \"%s\" has no 24-bit TrueColor visual", DisplayString(dpy));
         XCloseDisplay(dpy);
         return 26;
     }
