@@ -242,6 +242,12 @@ struct gks_ws_driver {
     int (*finish)(gks_ws *ws);
     /* Start a new frame (the display surface is cleared). */
     int (*clear)(gks_ws *ws);
+    /* Colour 0 changed while the display surface is empty (no output since the frame
+     * began): the frame's background becomes the new colour 0 (ws->colr[0]), the frame
+     * stays the same (same file, same page; a picture already written of it is written
+     * again at the next update). Returns 0 or 300. NULL: the driver reads colour 0 only
+     * when it writes the frame. */
+    int (*background)(gks_ws *ws);
     /* Make the picture current: e.g. write the frame's file. */
     int (*update)(gks_ws *ws);
     int (*primitive)(gks_ws *ws, const gks_prim *prim);

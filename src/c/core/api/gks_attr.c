@@ -388,4 +388,13 @@ GKS_API void gset_colr_rep(Gint ws_id, Gint colr_ind, const Gcolr_rep *colr_rep)
     ws->colr_defined[colr_ind] = 1;
     gks_ws_tables_changed();
     GKS_MF_WS(SCR, ws_id, colr_ind, c->red, c->green, c->blue);
+    /* Colour 0 set before the first output of a frame is that frame's background (a
+     * driver may have cleared its picture already, e.g. when the workstation viewport
+     * was set); after output it takes effect at the next clear, like the standard's
+     * deferred dynamic change of the background. */
+    if (colr_ind == 0 && ws->disp_empty == GDISP_EMPTY && ws->drv->background) {
+        int err = ws->drv->background(ws);
+        if (err)
+            GKS_FAIL(err, GFN_SCR);
+    }
 }

@@ -169,6 +169,21 @@ static int png_clear(gks_ws *ws)
     return framebuffer(ws) ? 0 : 300;
 }
 
+/* gks_ws_driver.background: the empty frame's picture cleared to the new colour 0; a
+ * frame file already written of it is written again at the next update. */
+static int png_background(gks_ws *ws)
+{
+    png_ws *p = ws->priv;
+    if (p->fb) {
+        float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                        (float)ws->colr[0].blue };
+        gks_raster_fb_clear(p->fb, bg);
+    }
+    if (p->frame_written)
+        p->dirty = 1;
+    return 0;
+}
+
 static int ws_matrix(const gks_ws *ws, double m[4][4]);
 
 /* Writes the frame's file; recorded ray-tracing primitives are traced first. */
@@ -314,7 +329,7 @@ static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-larg
 #define PNG_DRIVER(DESC)                                                           \
     {                                                                              \
         .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .file = png_file,         \
-        .open = png_open,                                                          \
+        .open = png_open, .background = png_background,                            \
         .close = png_close, .clear = png_clear, .update = png_update,              \
         .primitive = png_primitive, .message = gks_ws_file_message, .escape = png_escape,  \
         .read_pixels = png_read_pixels,                                            \

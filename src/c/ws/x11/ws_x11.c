@@ -539,6 +539,20 @@ static int x11_clear(gks_ws *ws)
     return x11_fb(ws) ? 0 : 300;
 }
 
+/* gks_ws_driver.background: the empty frame's picture cleared to the new colour 0, shown
+ * at the next update. */
+static int x11_background(gks_ws *ws)
+{
+    x11_ws *x = ws->priv;
+    if (x->fb) {
+        float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                        (float)ws->colr[0].blue };
+        gks_raster_fb_clear(x->fb, bg);
+    }
+    x->dirty = 1;
+    return 0;
+}
+
 /* A traced tile shown at once (ws_rt_tile_fn): the window shows the picture forming. */
 static void x11_tile(void *user, int i0, int j0, int w, int h, const float *rgb)
 {
@@ -873,6 +887,6 @@ static const gks_ws_desc x11_desc = {
 
 const gks_ws_driver gks_ws_x11_driver = {
     .version = GKS_WS_DRIVER_VERSION, .desc = &x11_desc, .open = x11_open, .close = x11_close,
-    .clear = x11_clear, .update = x11_update, .primitive = x11_primitive,
+    .clear = x11_clear, .background = x11_background, .update = x11_update, .primitive = x11_primitive,
     .message = x11_message, .escape = x11_escape, .input = x11_input,
 };
