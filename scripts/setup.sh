@@ -9,8 +9,9 @@ set -euo pipefail
 packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
           libx11-dev xvfb xdotool x11-apps x11-utils # X11 workstation and its tests (optional)
           libopenmpi-dev openmpi-bin # OpenMPI: the optional MPI build and its test (docs/MPI.md)
-          libcairo2-dev poppler-utils librsvg2-bin ghostscript) # cairo: the PDF/SVG/PS/EPS
+          libcairo2-dev poppler-utils librsvg2-bin ghostscript # cairo: the PDF/SVG/PS/EPS
           # workstations; their tests open the files in pdftoppm, rsvg-convert and gs
+          fonts-dejavu-core) # the font of STRING and CHAR precision text in vector output
 if [ "${1:-}" = --deb ]; then
     packages+=(debhelper dpkg-dev fakeroot lintian mmdebstrap)
 fi

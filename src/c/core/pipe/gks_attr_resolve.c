@@ -165,7 +165,13 @@ void gks_attr_text_layout(const gks_ws *ws, const gks_cur_attrs *a, gks_text_att
     Gtext_bundle tb;
     gks_attr_text(ws, a, &tb);
     out->font = tb.text_font_prec.font;
-    out->prec = tb.text_font_prec.prec;
+    /* The precision asked for, when its font is available (else STROKE with font 1): the
+     * strokes are the same in every precision, and a driver that draws text itself may
+     * honour STRING and CHAR (the vector workstations write them in a real font); the
+     * realized representation says STROKE, the precision every workstation can give. */
+    const Gtext_bundle *b = &ws->text_rep[bundle_ind(ws->text_def, a->text_ind)];
+    const Gtext_font_prec req = PICK(GKS_ASF_TEXT_FONT_PREC, a->text_font_prec, b->text_font_prec);
+    out->prec = req.font == tb.text_font_prec.font ? req.prec : GPREC_STROKE;
     out->char_expan = tb.char_expan;
     out->char_space = tb.char_space;
     out->char_ht = a->char_ht;

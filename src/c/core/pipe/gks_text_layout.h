@@ -15,7 +15,7 @@
 typedef struct gks_text_attrs {
     int font;                  /* a stroke font of src/c/font (gks_font_has); any
                                   other number lays out as font 1 */
-    Gtext_prec prec;           /* text precision */
+    Gtext_prec prec;           /* text precision asked for (the layout is the same in all) */
     double char_expan, char_space, char_ht;
     double up[2];              /* character up vector in text-plane coordinates */
     Gtext_path path;

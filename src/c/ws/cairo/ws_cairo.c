@@ -44,6 +44,10 @@
 #include <cairo-ps.h>
 #include <cairo-svg.h>
 #include <cairo.h>
+#ifdef GKS_HAVE_FONTCONFIG
+#include <cairo-ft.h>
+#include <fontconfig/fontconfig.h>
+#endif
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -99,8 +103,25 @@ typedef struct vec_face {
     cairo_font_face_t *face;
 } vec_face;
 
+/* STRING and CHAR precision text in a real font (GKS_HAVE_FONTCONFIG): the font
+ * fontconfig gives for VEC_TEXT_FAMILY (Debian: fonts-dejavu-core), written as text (PDF:
+ * an embedded TrueType subset with its Unicode map, so readers find and select the text).
+ * Sized so that its cap height is the stroke font's (21 units), each character centred in
+ * the cell the core laid out for the stroke glyph: positions, extents and alignment stay
+ * the core's. Opened at the first such text; state -1 = not available (no fontconfig, no
+ * font, a printable character without a glyph): the stroke font is used. */
+#define VEC_TEXT_FAMILY "DejaVu Sans"
+typedef struct vec_real_font {
+    int state;                 /* 0 not tried, 1 open, -1 not available */
+    cairo_font_face_t *face;
+    unsigned long index[95];   /* glyph index of characters 32..126 */
+    double advance[95];        /* their advances in em */
+    double em_units;           /* stroke-font units per em */
+} vec_real_font;
+
 typedef struct vec_text {
-    int face;
+    int face;              /* user font face, or -1: the real font (vec_real_font) */
+    double expan;          /* the real font's expansion factor */
     double bx[2], by[2];   /* raster pixels per font unit along the glyph's x (without the
                               expansion factor) and y (up) */
     float rgb[3];
@@ -128,6 +149,7 @@ typedef struct vec_ws {
     int io_error;
     vec_face faces[VEC_MAX_FACES];
     int n_faces;
+    vec_real_font real;
     vec_text *texts;       /* the frame's texts, ws_png_render_keep_mark ids */
     size_t n_texts, cap_texts;
     cairo_glyph_t *glyphs;
@@ -517,6 +539,74 @@ static int face_index(vec_ws *v, int font, double expan)
     return v->n_faces++;
 }
 
+/* The real font (vec_real_font), opened at first use; 0 when available. */
+static int real_font(vec_ws *v)
+{
+    vec_real_font *r = &v->real;
+    if (r->state)
+        return r->state > 0 ? 0 : -1;
+    r->state = -1;
+#ifdef GKS_HAVE_FONTCONFIG
+    FcPattern *pat = FcNameParse((const FcChar8 *)VEC_TEXT_FAMILY);
+    if (!pat)
+        return -1;
+    FcConfigSubstitute(NULL, pat, FcMatchPattern);
+    FcDefaultSubstitute(pat);
+    FcResult res;
+    FcPattern *match = FcFontMatch(NULL, pat, &res);
+    FcPatternDestroy(pat);
+    FcChar8 *file = NULL; /* a font file: the outline font cairo embeds */
+    if (!match || FcPatternGetString(match, FC_FILE, 0, &file) != FcResultMatch || !file) {
+        if (match)
+            FcPatternDestroy(match);
+        return -1;
+    }
+    cairo_font_face_t *f = cairo_ft_font_face_create_for_pattern(match);
+    FcPatternDestroy(match); /* the face holds its own reference */
+    cairo_matrix_t em, id;
+    cairo_matrix_init_identity(&em);
+    cairo_matrix_init_identity(&id);
+    cairo_font_options_t *o = cairo_font_options_create();
+    cairo_font_options_set_hint_metrics(o, CAIRO_HINT_METRICS_OFF); /* outline metrics */
+    cairo_font_options_set_hint_style(o, CAIRO_HINT_STYLE_NONE);
+    cairo_scaled_font_t *sf = cairo_scaled_font_create(f, &em, &id, o);
+    cairo_font_options_destroy(o);
+    int ok = cairo_scaled_font_status(sf) == CAIRO_STATUS_SUCCESS;
+    double cap = 0;
+    for (int c = 32; c <= 126 && ok; c++) {
+        char s[2] = { (char)c, 0 };
+        cairo_glyph_t *g = NULL;
+        int n = 0;
+        if (cairo_scaled_font_text_to_glyphs(sf, 0, 0, s, 1, &g, &n, NULL, NULL, NULL) !=
+                CAIRO_STATUS_SUCCESS || n != 1 || (g[0].index == 0 && c != ' ')) {
+            ok = 0; /* a character without a glyph: the font does not serve */
+        } else {
+            cairo_text_extents_t e;
+            cairo_scaled_font_glyph_extents(sf, g, 1, &e);
+            r->index[c - 32] = g[0].index;
+            r->advance[c - 32] = e.x_advance;
+            if (c == 'H')
+                cap = -e.y_bearing;
+        }
+        cairo_glyph_free(g);
+    }
+    cairo_scaled_font_destroy(sf);
+    gks_font_metrics fm;
+    gks_font_get_metrics(1, &fm);
+    if (!ok || !(cap > 0.3 && cap < 1.5)) {
+        cairo_font_face_destroy(f);
+        return -1;
+    }
+    r->face = f;
+    r->em_units = fm.cap / cap;
+    r->state = 1;
+    return 0;
+#else
+    (void)v;
+    return -1;
+#endif
+}
+
 /* The drawing of a page. Consecutive line items, and consecutive marker items, with equal
  * attributes are drawn as one path with one stroke (dots: one fill): text arrives as one
  * item per stroke of the font and hidden-line output as one item per visible run, and an
@@ -543,6 +633,10 @@ typedef struct vec_draw {
     const vec_ws *v;       /* the texts (WS_ITEM_MARK) */
     cairo_glyph_t *tmp;    /* a text's glyphs in device space */
     size_t cap_tmp;
+    char *utf8;            /* its characters (real font) */
+    size_t cap_utf8;
+    cairo_text_cluster_t *clusters; /* one character, one glyph */
+    size_t cap_clusters;
 } vec_draw;
 
 static void vec_flush(vec_draw *d)
@@ -608,16 +702,36 @@ static int text_draw(vec_draw *d, size_t i)
         cairo_clip(cr);
     }
     cairo_matrix_t fm;
-    cairo_matrix_init(&fm, s * t->bx[0], -s * t->bx[1], -s * t->by[0], s * t->by[1], 0, 0);
-    cairo_set_font_face(cr, v->faces[t->face].face);
+    const int real = t->face < 0;
+    if (real) { /* em -> page: em_units font units, the expansion factor along x */
+        double sr = v->real.em_units * k, e = t->expan;
+        cairo_matrix_init(&fm, sr * e * t->bx[0], -sr * e * t->bx[1], -sr * t->by[0],
+                          sr * t->by[1], 0, 0);
+        cairo_set_font_face(cr, v->real.face);
+    } else {
+        cairo_matrix_init(&fm, s * t->bx[0], -s * t->bx[1], -s * t->by[0], s * t->by[1], 0, 0);
+        cairo_set_font_face(cr, v->faces[t->face].face);
+    }
     cairo_set_font_matrix(cr, &fm);
     cairo_set_source_rgb(cr, t->rgb[0], t->rgb[1], t->rgb[2]);
-    if (gks_grow(&d->tmp, &d->cap_tmp, t->ng, sizeof *d->tmp))
+    if (gks_grow(&d->tmp, &d->cap_tmp, t->ng, sizeof *d->tmp) ||
+        gks_grow(&d->utf8, &d->cap_utf8, t->ng + 1, 1) ||
+        gks_grow(&d->clusters, &d->cap_clusters, t->ng, sizeof *d->clusters))
         return 300;
     const cairo_glyph_t *g = v->glyphs + t->g0;
-    for (size_t j = 0; j < t->ng; j++) /* pixels -> device */
-        d->tmp[j] = (cairo_glyph_t){ g[j].index, k * g[j].x, h - k * g[j].y };
-    cairo_show_glyphs(cr, d->tmp, (int)t->ng);
+    for (size_t j = 0; j < t->ng; j++) { /* pixels -> device */
+        unsigned long ch = g[j].index; /* the character (32..126) */
+        d->tmp[j] = (cairo_glyph_t){ real ? v->real.index[ch - 32] : ch, k * g[j].x,
+                                     h - k * g[j].y };
+        d->utf8[j] = (char)ch;
+        d->clusters[j] = (cairo_text_cluster_t){ 1, 1 };
+    }
+    d->utf8[t->ng] = '\0';
+    if (real) /* the text with its glyphs: readers map the glyphs back to the characters */
+        cairo_show_text_glyphs(cr, d->utf8, (int)t->ng, d->tmp, (int)t->ng, d->clusters,
+                               (int)t->ng, 0);
+    else
+        cairo_show_glyphs(cr, d->tmp, (int)t->ng);
     if (t->nc)
         cairo_restore(cr);
     return cairo_status(cr) == CAIRO_STATUS_SUCCESS ? 0 : 300;
@@ -793,6 +907,8 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
         e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
     vec_flush(&d);
     gks_free(d.tmp);
+    gks_free(d.utf8);
+    gks_free(d.clusters);
     if (!e && cairo_status(cr) != CAIRO_STATUS_SUCCESS)
         e = 300;
     return e;
@@ -985,6 +1101,8 @@ static void vec_close(gks_ws *ws)
     ws_png_render_free(v->ras);
     for (int i = 0; i < v->n_faces; i++)
         cairo_font_face_destroy(v->faces[i].face);
+    if (v->real.face)
+        cairo_font_face_destroy(v->real.face);
     gks_free(v->texts);
     gks_free(v->glyphs);
     gks_free(v->clip);
@@ -1239,9 +1357,21 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         v->n_glyphs = g0;
         return GKS_WS_TEXT_STROKE;
     }
+    /* STRING and CHAR precision in the real font, if there is one: each glyph centred in
+     * the stroke glyph's cell (its advance, times the expansion factor, along x) */
+    const int use_real = a->prec != GPREC_STROKE && real_font(v) == 0;
+    if (use_real)
+        for (size_t j = g0; j < v->n_glyphs; j++) {
+            int ch = (int)v->glyphs[j].index;
+            gks_glyph gl;
+            glyph_of(a->font, ch, &gl);
+            double shift = 0.5 * (gl.advance - v->real.advance[ch - 32] * v->real.em_units) * e;
+            v->glyphs[j].x += shift * bx[0];
+            v->glyphs[j].y += shift * bx[1];
+        }
     r = text_clip(v, t, &c, view, &nc);
-    int fi = r ? -1 : face_index(v, a->font, e);
-    if (!r && fi < 0)
+    int fi = r || use_real ? -1 : face_index(v, a->font, e);
+    if (!r && fi < 0 && !use_real)
         r = GKS_WS_TEXT_STROKE; /* more faces than the table holds */
     if (!r && gks_grow(&v->texts, &v->cap_texts, v->n_texts + 1, sizeof *v->texts))
         r = 300;
@@ -1263,7 +1393,7 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         return r;
     }
     vec_text *x = &v->texts[v->n_texts++];
-    *x = (vec_text){ .face = fi, .bx = { bx[0], bx[1] }, .by = { by[0], by[1] },
+    *x = (vec_text){ .face = fi, .expan = e, .bx = { bx[0], bx[1] }, .by = { by[0], by[1] },
                      .rgb = { (float)t->colour.red, (float)t->colour.green,
                               (float)t->colour.blue },
                      .g0 = g0, .ng = v->n_glyphs - g0, .c0 = c0, .nc = nc };
