@@ -121,7 +121,8 @@ typedef struct vec_real_font {
 
 typedef struct vec_text {
     int face;              /* user font face, or -1: the real font (vec_real_font) */
-    double expan;          /* the real font's expansion factor */
+    double expan;          /* the real font's horizontal scale: expansion factor, narrowed
+                              so that every glyph fits its stroke glyph's cell */
     double bx[2], by[2];   /* raster pixels per font unit along the glyph's x (without the
                               expansion factor) and y (up) */
     float rgb[3];
@@ -1358,17 +1359,30 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         return GKS_WS_TEXT_STROKE;
     }
     /* STRING and CHAR precision in the real font, if there is one: each glyph centred in
-     * the stroke glyph's cell (its advance, times the expansion factor, along x) */
+     * the stroke glyph's cell (its advance, times the expansion factor, along x); a text
+     * with a glyph wider than its cell (W, m) is narrowed as a whole (sx) until every
+     * glyph fits, so the ink stays inside the extent the core computes */
     const int use_real = a->prec != GPREC_STROKE && real_font(v) == 0;
-    if (use_real)
+    double sx = 1.0;
+    if (use_real) {
         for (size_t j = g0; j < v->n_glyphs; j++) {
             int ch = (int)v->glyphs[j].index;
             gks_glyph gl;
             glyph_of(a->font, ch, &gl);
-            double shift = 0.5 * (gl.advance - v->real.advance[ch - 32] * v->real.em_units) * e;
+            double ra = v->real.advance[ch - 32] * v->real.em_units;
+            if (ra > gl.advance && ra > 0)
+                sx = fmin(sx, gl.advance / ra);
+        }
+        for (size_t j = g0; j < v->n_glyphs; j++) {
+            int ch = (int)v->glyphs[j].index;
+            gks_glyph gl;
+            glyph_of(a->font, ch, &gl);
+            double ra = v->real.advance[ch - 32] * v->real.em_units * sx;
+            double shift = 0.5 * (gl.advance - ra) * e;
             v->glyphs[j].x += shift * bx[0];
             v->glyphs[j].y += shift * bx[1];
         }
+    }
     r = text_clip(v, t, &c, view, &nc);
     int fi = r || use_real ? -1 : face_index(v, a->font, e);
     if (!r && fi < 0 && !use_real)
@@ -1393,7 +1407,7 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         return r;
     }
     vec_text *x = &v->texts[v->n_texts++];
-    *x = (vec_text){ .face = fi, .expan = e, .bx = { bx[0], bx[1] }, .by = { by[0], by[1] },
+    *x = (vec_text){ .face = fi, .expan = e * sx, .bx = { bx[0], bx[1] }, .by = { by[0], by[1] },
                      .rgb = { (float)t->colour.red, (float)t->colour.green,
                               (float)t->colour.blue },
                      .g0 = g0, .ng = v->n_glyphs - g0, .c0 = c0, .nc = nc };
