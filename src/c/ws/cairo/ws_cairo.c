@@ -548,14 +548,22 @@ static int real_font(vec_ws *v)
         return r->state > 0 ? 0 : -1;
     r->state = -1;
 #ifdef GKS_HAVE_FONTCONFIG
-    FcPattern *pat = FcNameParse((const FcChar8 *)VEC_TEXT_FAMILY);
-    if (!pat)
+    /* A configuration of our own, destroyed after the match: fontconfig's default one
+     * (FcConfigGetCurrent) is never freed and would stay with the process (LeakSanitizer
+     * reports it); the face made from the matched pattern needs no configuration. */
+    FcConfig *cfg = FcInitLoadConfigAndFonts();
+    FcPattern *pat = cfg ? FcNameParse((const FcChar8 *)VEC_TEXT_FAMILY) : NULL;
+    if (!pat) {
+        if (cfg)
+            FcConfigDestroy(cfg);
         return -1;
-    FcConfigSubstitute(NULL, pat, FcMatchPattern);
+    }
+    FcConfigSubstitute(cfg, pat, FcMatchPattern);
     FcDefaultSubstitute(pat);
     FcResult res;
-    FcPattern *match = FcFontMatch(NULL, pat, &res);
+    FcPattern *match = FcFontMatch(cfg, pat, &res);
     FcPatternDestroy(pat);
+    FcConfigDestroy(cfg);
     FcChar8 *file = NULL; /* a font file: the outline font cairo embeds */
     if (!match || FcPatternGetString(match, FC_FILE, 0, &file) != FcResultMatch || !file) {
         if (match)
