@@ -256,9 +256,11 @@ static FILE *open_script(const char *path)
     }
     struct stat st;
     FILE *fp = NULL;
-    if (fstat(fd, &st) == 0 && !S_ISREG(st.st_mode))
+    if (fstat(fd, &st) != 0)
+        gks_error_note("cannot read input script \"%s\": %s", path, strerror(errno));
+    else if (!S_ISREG(st.st_mode))
         gks_error_note("input script \"%s\" is not a regular file", path);
-    else if (fstat(fd, &st) != 0 || fcntl(fd, F_SETFL, 0) != 0 || !(fp = fdopen(fd, "r")))
+    else if (fcntl(fd, F_SETFL, 0) != 0 || !(fp = fdopen(fd, "r")))
         gks_error_note("cannot read input script \"%s\": %s", path, strerror(errno));
     if (!fp)
         close(fd);
