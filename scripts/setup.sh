@@ -7,6 +7,7 @@
 set -euo pipefail
 
 packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
+          python3 groff-base man-db # reference pages: generator and their ctest (docs/man)
           libx11-dev xvfb xdotool x11-apps x11-utils # X11 workstation and its tests (optional)
           libopenmpi-dev openmpi-bin # OpenMPI: the optional MPI build and its test (docs/MPI.md)
           libcairo2-dev poppler-utils librsvg2-bin ghostscript # cairo: the PDF/SVG/PS/EPS

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# check_man.sh -- every function of both bindings has a reference page, and every page
+# renders without a warning.
+#   C functions:        the GKS_API prototypes of include/gks.h
+#   FORTRAN 77 names:   the exported names of libgks3d_fortran (the version script the
+#                       build writes, MAP) or, without it, the FNAME(lower, UPPER) pairs and
+#                       SUBROUTINEs of bindings/fortran (as bindings/fortran/CMakeLists.txt)
+# Each name needs MANDIR/man3/<name>.3 (Fortran names in lower case; GGDP shares ggdp.3,
+# which must name it), and man3 may hold
+# nothing else (page count = function count). Every page of man3 and man7 is rendered with
+# `man --warnings=w -l` (groff -ww underneath), or `groff -ww -man -Tutf8` without man-db, from MANDIR
+# (so that the .so links resolve as they do when installed); any diagnostic fails.
+# Usage: scripts/check_man.sh [SOURCE_DIR [MANDIR [MAP]]]
+set -euo pipefail
+src=${1:-$(dirname "$0")/..}
+mandir=${2:-$src/docs/man}
+map=${3:-}
+export LC_ALL=C.UTF-8
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+grep -oE 'GKS_API +[^(;]*[ *]g[a-z0-9_]+ *\(' "$src/include/gks.h" |
+    sed -E 's/.*[ *](g[a-z0-9_]+) *\($/\1/' | sort -u > "$tmp/c"
+if [ -n "$map" ] && [ -f "$map" ]; then
+    # the version script: "    gopks_;" (mangled as this compiler does: lower case here)
+    sed -nE 's/^ +([A-Za-z0-9_]+);$/\1/p' "$map" | sed -E 's/_+$//' | tr A-Z a-z |
+        sort -u > "$tmp/f"
+    from="the version script $map"
+else
+    { cat "$src"/bindings/fortran/*.c | grep -oE '\([a-z][a-z0-9]*, *[A-Z][A-Z0-9]*[,)]' |
+          sed -E 's/^\(([a-z0-9]+), *([A-Z0-9]+).$/\1 \2/' |
+          awk 'toupper($1) == $2 { print $1 }'
+      for f in "$src"/bindings/fortran/ger*.f; do
+          grep -ioE '^      subroutine +g[a-z0-9]+' "$f" | awk '{ print tolower($2) }'
+      done; } | grep -v '^gkunam$' | sort -u > "$tmp/f"
+    from="bindings/fortran"
+fi
+nc=$(wc -l < "$tmp/c")
+nf=$(wc -l < "$tmp/f")
+status=0
+# A Fortran name equal to a C name (GGDP, ggdp) shares its page: the page must name both.
+shared=$(comm -12 "$tmp/c" "$tmp/f")
+for n in $shared; do
+    up=$(echo "$n" | tr a-z A-Z)
+    if ! sed -n '/^\.SH NAME/{n;p;}' "$mandir/man3/$n.3" | grep -qw "$up"; then
+        echo "check_man: $n.3 is the page of C $n and Fortran $up but does not name $up"
+        status=1
+    fi
+done
+sort -u "$tmp/c" "$tmp/f" > "$tmp/all"
+(cd "$mandir/man3" && ls) | sed -E 's/\.3$//' | sort > "$tmp/pages"
+missing=$(comm -23 "$tmp/all" "$tmp/pages")
+extra=$(comm -13 "$tmp/all" "$tmp/pages")
+[ -z "$missing" ] || { echo "check_man: functions without a page:" $missing; status=1; }
+[ -z "$extra" ] || { echo "check_man: pages of no function:" $extra; status=1; }
+np=$(wc -l < "$tmp/pages")
+ns=$(echo $shared | wc -w)
+echo "check_man: $nc C functions (include/gks.h), $nf FORTRAN 77 functions ($from), $ns names in both ($(echo $shared)), $np pages in man3 (= $nc + $nf - $ns)"
+
+# man --warnings=w renders through groff with -ww (and resolves .so as an installed page
+# is); without man-db, groff -ww itself.
+have_man=0
+command -v man > /dev/null && have_man=1
+nr=0
+cd "$mandir"
+for page in man3/*.3 man7/*.7; do
+    if [ $have_man = 1 ]; then
+        out=$(MANWIDTH=80 man --warnings=w -E UTF-8 -l "$page" 2>&1 > /dev/null) ||
+            out="man -l failed${out:+: $out}"
+    else
+        out=$(groff -ww -man -Tutf8 "$page" 2>&1 > /dev/null) || out="groff failed${out:+: $out}"
+    fi
+    if [ -n "$out" ]; then
+        echo "check_man: $page: $out"
+        status=1
+    fi
+    nr=$((nr + 1))
+done
+echo "check_man: $nr pages rendered with $([ $have_man = 1 ] && echo 'man --warnings=w -l' || echo 'groff -ww -man'), status $status"
+exit $status
