@@ -648,6 +648,10 @@ class Model:
         errs = tuple(sorted(e for e in errs if e > 8))
         return st, errs
 
+    def reports_in_indicator(self, name):
+        """Inquiries and the view evaluation utilities answer errors in err_ind."""
+        return 'err_ind' in self.c_params(name)
+
     def is_inquiry(self, name):
         return name.startswith('ginq_') or self.iso(name).startswith('INQUIRE')
 
@@ -868,7 +872,7 @@ def render_man(m, p, version):
     errs = p.errors()
     if errs:
         out.append('.SH ERRORS')
-        inq = p.cfuncs and all(m.is_inquiry(n) for n in p.cfuncs)
+        inq = p.cfuncs and all(m.reports_in_indicator(n) for n in p.cfuncs)
         if inq:
             out.append(man_text('Returned in the error indicator (`err_ind`, Fortran `ERRIND`); ERROR HANDLING is not called.'))
         else:
@@ -1006,7 +1010,7 @@ def render_md(m, p):
     if errs:
         out.append('## Errors')
         out.append('')
-        inq = p.cfuncs and all(m.is_inquiry(n) for n in p.cfuncs)
+        inq = p.cfuncs and all(m.reports_in_indicator(n) for n in p.cfuncs)
         out.append('Returned in the error indicator (`err_ind`, Fortran `ERRIND`); ERROR HANDLING is not called.'
                    if inq else
                    'Reported through ERROR HANDLING (`gerr_hand`, Fortran `GERHND`) with the function identification above; the function then does nothing.')
