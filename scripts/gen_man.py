@@ -450,6 +450,10 @@ def parse_records():
                 if k == 'arg':
                     cur['args'].append([names, rest])
                     key = ('arg', len(cur['args']) - 1)
+                elif k == 'errors' and names:
+                    for n in names:
+                        cur.setdefault('errors_of', {})[n] = rest
+                    key = None
                 elif k == 'fsig':
                     cur['fsig'][names[0]] = [a.strip() for a in rest.split(',') if a.strip()]
                     key = None
@@ -632,17 +636,26 @@ class Model:
             c = re.sub(r'PHIGS \d+', '', c)
             m = re.search(r'Errors?(?: \(in \*err_ind\))?:\s*(.*)', c)
             if m:
-                out |= {int(v) for v in re.findall(r'(?<![\w.])(\d+)(?![\w.])', m.group(1))}
+                # the list: numbers up to the end of its sentence, remarks in brackets
+                # (ranges such as "1..64") left out
+                lst = m.group(1)
+                while re.search(r'\([^()]*\)', lst):
+                    lst = re.sub(r'\([^()]*\)', '', lst)
+                lst = re.split(r'\.(?:\s|$)|;', lst)[0]
+                out |= {int(v) for v in re.findall(r'(?<![\w.])(\d+)(?![\w]|\.\d)', lst)}
             elif c is x['trail']:
-                out |= {int(v) for v in re.findall(r'^(\d+)(?=[:,]|$)|(?<=, )(\d+)', c) for v in v if v}
+                m = re.match(r'([\d, ]+)(?::|$)', c)
+                if m:
+                    out |= {int(v) for v in re.findall(r'\d+', m.group(1))}
         return {e for e in out if e in self.errmsg}
 
     def errors(self, name):
         """(state error, [argument errors]) of a C entry point."""
         r = self.rec_of.get(name)
         st = self.state_error(name)
-        if r and r.get('errors'):
-            errs = {int(v) for v in re.findall(r'\d+', r['errors'])}
+        hand = (r.get('errors_of', {}).get(name) or r.get('errors')) if r else None
+        if hand:
+            errs = {int(v) for v in re.findall(r'\d+', hand)}
         else:
             errs = self.src.errors(name) | self.header_errors(name)
         errs = tuple(sorted(e for e in errs if e > 8))
@@ -783,6 +796,9 @@ class Page:
             res.setdefault(self.m.errors(n), []).append(n)
         return res
 
+    def hand_errors(self):
+        return bool(self.r.get('errors') or self.r.get('errors_of'))
+
     def handwritten(self):
         return not self.r.get('auto')
 
@@ -876,7 +892,7 @@ def render_man(m, p, version):
         if inq:
             out.append(man_text('Returned in the error indicator (`err_ind`, Fortran `ERRIND`); ERROR HANDLING is not called.'))
         else:
-            out.append(man_text('Reported through ERROR HANDLING (gerr_hand(3), Fortran GERHND) with the function identification above; the function then does nothing.'))
+            out.append(man_text('Reported through ERROR HANDLING (gerr_hand(3), Fortran GERHND) with the function identification above; unless the description says otherwise the function then has no effect.'))
         for (st, el), fns in errs.items():
             if len(errs) > 1:
                 out.append('.PP')
@@ -892,7 +908,7 @@ def render_man(m, p, version):
             if not st and not el:
                 out.append('.PP')
                 out.append('None: callable in every state.')
-        src = 'hand\\-checked' if p.r.get('errors') else 'read from the entry point\'s source and include/gks.h'
+        src = 'hand\\-checked' if p.hand_errors() else 'read from the entry point\'s source and include/gks.h'
         out.append('.PP')
         out.append('Error list %s; docs/ERRORS.md explains each number.' % src)
     if p.r.get('example') or p.r.get('fexample'):
@@ -1013,7 +1029,7 @@ def render_md(m, p):
         inq = p.cfuncs and all(m.reports_in_indicator(n) for n in p.cfuncs)
         out.append('Returned in the error indicator (`err_ind`, Fortran `ERRIND`); ERROR HANDLING is not called.'
                    if inq else
-                   'Reported through ERROR HANDLING (`gerr_hand`, Fortran `GERHND`) with the function identification above; the function then does nothing.')
+                   'Reported through ERROR HANDLING (`gerr_hand`, Fortran `GERHND`) with the function identification above; unless the description says otherwise the function then has no effect.')
         out.append('')
         for (st, el), fns in errs.items():
             if len(errs) > 1:
@@ -1027,7 +1043,7 @@ def render_md(m, p):
                 out.append('None: callable in every state.')
             out.append('')
         out.append('Error list %s; [ERRORS.md](../ERRORS.md) explains each number.' %
-                   ('hand-checked' if p.r.get('errors') else "read from the entry point's source and `include/gks.h`"))
+                   ('hand-checked' if p.hand_errors() else "read from the entry point's source and `include/gks.h`"))
         out.append('')
     if p.r.get('example') or p.r.get('fexample'):
         out.append('## Example')
