@@ -287,6 +287,7 @@ class SourceErrors:
         self.statics = {}  # (file, name) -> body
         self.file_of = {}  # entry point or non-static function -> its file
         self.macros = {}   # name -> (parameters or None, replacement text)
+        self.params = {}   # (file, function) -> its parameter names
         self.consts = {}
         texts = []
         for d in CORE_DIRS:
@@ -305,11 +306,15 @@ class SourceErrors:
                 if name in ('if', 'while', 'for', 'switch'):
                     continue
                 body = body_at(text, m.end() - 1)
+                params = [re.sub(r'\[.*', '', q).split()[-1].lstrip('*') if q.split() else ''
+                          for q in split_args(m.group(3))]
                 if m.group(1) or 'static' in text[m.start():m.end()].split('(')[0].split():
                     self.statics[(path, name)] = body
+                    self.params[(path, name)] = params
                 elif name not in self.funcs:
                     self.funcs[name] = body
                     self.file_of[name] = path
+                    self.params[(path, name)] = params
             # entry points a macro defines: NAME(gxxx, ...) at the start of a line
             for m in re.finditer(r'^(\w+)\((g\w+)\b', text, re.M):
                 if m.group(1) in self.macros and m.group(2) not in self.funcs:
@@ -370,9 +375,21 @@ class SourceErrors:
                     self._walk_body(path, self.expand(ident, key[1]), seen, out)
                 continue
             fpath, fbody = self.lookup(path, ident)
-            if fbody is not None and (fpath, ident) not in seen:
-                seen.add((fpath, ident))
-                self._walk_body(fpath, fbody, seen, out)
+            if fbody is None:
+                continue
+            # error numbers passed as arguments (rep_ws(..., 60, ...): parameters named
+            # err..., bad..., not..., undef...) replace the parameter in the callee's body
+            lits = tuple((q, a) for q, a in zip(self.params.get((fpath, ident), []),
+                                                split_args(call_args(body, m.end() - 1)))
+                         if re.fullmatch(r'\d+', a) and re.search(r'err|bad|not|undef', q.lower()))
+            key = (fpath, ident, lits)
+            if key in seen or (fpath, ident, ()) in seen and not lits:
+                continue
+            seen.add(key)
+            if lits:
+                sub = dict(lits)
+                fbody = re.sub(r'[A-Za-z_]\w*', lambda x: sub.get(x.group(0), x.group(0)), fbody)
+            self._walk_body(fpath, fbody, seen, out)
         for ident in set(re.findall(r'\b([A-Z_][A-Z0-9_]*)\b', body)):
             mac = self.macros.get(ident)
             if mac and mac[0] is None and ident not in seen:
@@ -450,6 +467,10 @@ def parse_records():
                 if k == 'arg':
                     cur['args'].append([names, rest])
                     key = ('arg', len(cur['args']) - 1)
+                elif k == 'moreerrors':
+                    for n in names:
+                        cur.setdefault('more_of', {})[n] = rest
+                    key = None
                 elif k == 'errors' and names:
                     for n in names:
                         cur.setdefault('errors_of', {})[n] = rest
@@ -658,6 +679,8 @@ class Model:
             errs = {int(v) for v in re.findall(r'\d+', hand)}
         else:
             errs = self.src.errors(name) | self.header_errors(name)
+        if r and r.get('more_of', {}).get(name):
+            errs |= {int(v) for v in re.findall(r'\d+', r['more_of'][name])}
         errs = tuple(sorted(e for e in errs if e > 8))
         return st, errs
 
@@ -908,7 +931,7 @@ def render_man(m, p, version):
             if not st and not el:
                 out.append('.PP')
                 out.append('None: callable in every state.')
-        src = 'hand\\-checked' if p.hand_errors() else 'read from the entry point\'s source and include/gks.h'
+        src = 'hand\\-checked' if p.hand_errors() else 'read from the entry point\'s source and include/gks.h (an error of a helper shared with other functions may be listed for all of them)'
         out.append('.PP')
         out.append('Error list %s; docs/ERRORS.md explains each number.' % src)
     if p.r.get('example') or p.r.get('fexample'):
@@ -1043,7 +1066,7 @@ def render_md(m, p):
                 out.append('None: callable in every state.')
             out.append('')
         out.append('Error list %s; [ERRORS.md](../ERRORS.md) explains each number.' %
-                   ('hand-checked' if p.hand_errors() else "read from the entry point's source and `include/gks.h`"))
+                   ('hand-checked' if p.hand_errors() else "read from the entry point's source and `include/gks.h` (an error of a helper shared with other functions may be listed for all of them)"))
         out.append('')
     if p.r.get('example') or p.r.get('fexample'):
         out.append('## Example')
