@@ -43,7 +43,10 @@ status=0
 shared=$(comm -12 "$tmp/c" "$tmp/f")
 for n in $shared; do
     up=$(echo "$n" | tr a-z A-Z)
-    if ! sed -n '/^\.SH NAME/{n;p;}' "$mandir/man3/$n.3" | grep -qw "$up"; then
+    page="$mandir/man3/$n.3"
+    target=$(sed -n '1s/^\.so //p' "$page") # a .so link: the page it names
+    [ -z "$target" ] || page="$mandir/$target"
+    if ! sed -n '/^\.SH NAME/{n;p;}' "$page" | grep -qw "$up"; then
         echo "check_man: $n.3 is the page of C $n and Fortran $up but does not name $up"
         status=1
     fi
