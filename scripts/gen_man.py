@@ -594,8 +594,28 @@ class Model:
         if ren:
             if len(ren) != len(a):
                 raise SystemExit('%s: fsig %s has %d names, the wrapper %d arguments' % (r['where'], fname, len(ren), len(a)))
-            a = [(n, t, io) for n, (_, t, io) in zip(ren, a)]
+            a = [(re.sub(r'\(.*', '', n), t, io) for n, (_, t, io) in zip(ren, a)]
         return a
+
+    def fdims(self, fname):
+        """{argument: '(4,4)'}: the array dimensions the wrapper's comment gives
+        ("GSVWR(WKID, VWI, VWM(4,4), ...)"), where its names are the wrapper's."""
+        c = self.f[fname].get('comment', '')
+        m = re.match(re.escape(fname) + r'\(', c)
+        if not m:
+            return {}
+        parts = split_args(call_args(c, m.end() - 1))
+        names = [a[0] for a in self.f[fname]['args']]
+        out = {}
+        if len(parts) != len(names):
+            return {}
+        for part, n in zip(parts, names):
+            pm = re.fullmatch(r'(\w+)\s*(\([^()]*\))?', part.strip())
+            if not pm or pm.group(1).upper() != n:
+                return {}
+            if pm.group(2):
+                out[n] = pm.group(2).replace(' ', '')
+        return out
 
     def c_params(self, name):
         out = []
@@ -785,9 +805,14 @@ class Page:
 
     def f_decls(self, f):
         a = self.m.fargs(f)
+        ren = self.r['fsig'].get(f)
+        if ren:  # fsig names with dimensions: PX(N)
+            dims = {re.sub(r'\(.*', '', x): x[len(re.sub(r'\(.*', '', x)):] for x in ren}
+        else:
+            dims = self.m.fdims(f)
         by = collections.OrderedDict()
         for n, t, io in a:
-            by.setdefault(t, []).append(n)
+            by.setdefault(t, []).append(n + dims.get(n, ''))
         return ['%s %s' % (t, ', '.join(ns)) for t, ns in by.items()]
 
     def arg_items(self):
