@@ -527,7 +527,9 @@ def code_block(text):
         lines = lines[1:]
     while lines and not lines[-1].strip():
         lines.pop()
-    ind = min((len(l) - len(l.lstrip()) for l in lines if l.strip()), default=0)
+    # the record's indentation is five blanks: removed, and no more, so that FORTRAN
+    # 77 fixed form keeps its statements in column 7
+    ind = min([len(l) - len(l.lstrip()) for l in lines if l.strip()] + [5])
     return [l[ind:] for l in lines]
 
 
