@@ -14,9 +14,10 @@ Sources, all in the repository:
   src/c/core/**/*.c, *.h         the error numbers each C entry point can report, read
                                  from its body and the helpers it calls
   src/c/core/gks_errors.def      the message of each error number
-  docs/man/src/*.txt             the hand-written text: per function (group) the ISO name
-                                 where the table has none, the meaning of each argument
-                                 with its coordinate system, defaults, notes, examples
+  docs/man/src/*.txt             the hand-written text: per function (group) the meaning
+                                 of each argument with its coordinate system, defaults,
+                                 notes, examples; names.txt the ISO names the table lacks,
+                                 glossary.txt the arguments that mean the same everywhere
   docs/man/gks3d.7.txt           the overview page gks3d(7)
 
 Output (written with --out DIR, default the source tree):
@@ -441,7 +442,7 @@ def parse_records():
     recs = []
     d = os.path.join(ROOT, 'docs/man/src')
     for fn in sorted(os.listdir(d)):
-        if not fn.endswith('.txt') or fn == 'names.txt':
+        if not fn.endswith('.txt') or fn in ('names.txt', 'glossary.txt'):
             continue
         cur = None
         key = None
@@ -495,6 +496,17 @@ def parse_records():
     return recs
 
 
+def parse_glossary():
+    """{argument name: text} of docs/man/src/glossary.txt."""
+    out = {}
+    for line in read('docs/man/src/glossary.txt').split('\n'):
+        if line.strip() and not line.startswith('#'):
+            names, text = line.split(':', 1)
+            for n in names.split():
+                out[n] = text.strip()
+    return out
+
+
 def paragraphs(text):
     """Text -> [('p', text) | ('pre', lines)]: lines indented by 4 or more blanks (beyond the
     continuation's one) are preformatted."""
@@ -544,6 +556,7 @@ class Model:
         self.f.pop('UPPER', None)
         self.errmsg = errors_def()
         self.names = parse_names()
+        self.glossary = parse_glossary()
         self.src = SourceErrors(set(self.errmsg))
         self.sym_of = {c: s for s, c in self.cnames.items()}
         # C function -> its Fortran names
@@ -831,12 +844,17 @@ class Page:
                     done.add(p)
                     out = 'output' if ('*' in d and not d.startswith('const')) or (
                         '[' in d and not d.startswith('const')) else 'input'
-                    rest.append(([p], '(C) `%s`, %s.' % (' '.join(d.split()), out)))
+                    gl = self.m.glossary.get(p)
+                    rest.append(([p], ('%s (C `%s`, %s.)' % (gl, ' '.join(d.split()), out)) if gl
+                                 else '(C) `%s`, %s.' % (' '.join(d.split()), out)))
         for f in self.ffuncs:
             for n, t, io in self.m.fargs(f):
                 if n not in done:
                     done.add(n)
-                    rest.append(([n], '(FORTRAN) %s, %s.' % (t, 'input' if io == 'in' else 'output')))
+                    gl = self.m.glossary.get(n)
+                    io_s = 'input' if io == 'in' else 'output'
+                    rest.append(([n], ('%s (FORTRAN %s, %s.)' % (gl, t, io_s)) if gl
+                                 else '(FORTRAN) %s, %s.' % (t, io_s)))
         return items, rest
 
     def errors(self):
@@ -1223,6 +1241,14 @@ def main():
         print('man3 files: %d (%d pages, %d .so links)' % (len(pages3), len(full), len(pages3) - len(full)))
         print('pages with hand-written text: %d of %d (covering %d C functions; %d with argument text)' %
               (hand, len(m.recs), hand_c, withargs))
+        own = gl = bare = 0
+        for r in m.recs:
+            items, rest = Page(m, r).arg_items()
+            own += sum(len(n) for n, _ in items)
+            bare += sum(1 for _, t in rest if t.startswith(('(C)', '(FORTRAN)')))
+            gl += sum(1 for _, t in rest if not t.startswith(('(C)', '(FORTRAN)')))
+        print('argument entries: %d by the page\'s text, %d by the glossary, %d type and direction only' %
+              (own, gl, bare))
         return 0
     if a.check:
         bad = 0
