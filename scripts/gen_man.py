@@ -152,6 +152,7 @@ def fortran_params(params):
 # FORTRAN 77 entry points whose C function the wrapper reaches by another way
 F_TO_C = {'GOPKS': 'gopen_gks',     # through gks_open_gks_unit (the error file is a unit)
           'GERHND': 'gerr_hand', 'GERLOG': 'gerr_log',
+          'GKEMSG': 'gks_error_message',  # asks INQUIRE ERROR STATE first, for the detail
           # the 2-D forms the wrapper makes through the 3-D function: the 2-D page
           'GFAS': 'gfill_area_set', 'GQASF': 'ginq_asfs', 'GQSGA': 'ginq_seg_attrs'}
 # C functions a wrapper calls as helpers, never its own function

@@ -585,9 +585,9 @@ FAPI void FNAME(gkfnam, GKFNAM)(const fint *fctid, char *name, fint *lname, size
     *lname = gks_f77_fill_str(gks_function_name(*fctid), name, name_len);
 }
 
-/* GKEMSG(ERRNR, MSG, LMSG): the standard message of an error number, blank-padded. */
-/* The message of ERRNR; while ERROR HANDLING runs for ERRNR, followed by ": " and the
- * detail (gks_error_detail: the file and the system's reason, the missing display). */
+/* GKEMSG(ERRNR, MSG, LMSG): the standard message of an error number, blank-padded; while
+ * ERROR HANDLING runs for ERRNR, followed by ": " and the detail (gks_error_detail: the
+ * file and the system's reason, the missing display). */
 FAPI void FNAME(gkemsg, GKEMSG)(const fint *errnr, char *msg, fint *lmsg, size_t msg_len)
 {
     Gint in_handler = 0, last = 0;

@@ -88,6 +88,9 @@ for doc in $docs; do
         esac
         # shellcheck disable=SC2086
         if ls -d $q >/dev/null 2>&1; then continue; fi
+        # or relative to the document's own folder (docs/man/README.md names src/names.txt)
+        # shellcheck disable=SC2086
+        if ls -d "${docroot:-.}/$(dirname "$doc")"/$q >/dev/null 2>&1; then continue; fi
         found=0
         for ext in c f sh cpp; do
             # shellcheck disable=SC2086
