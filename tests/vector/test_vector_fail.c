@@ -23,13 +23,16 @@
 void gks_alloc_fail_after(long n);
 
 static int n_err, first_err, failures;
+static char first_detail[512]; /* gks_error_detail() of the first error */
 
 static void handler(Gint err, Gint fct, const char *file)
 {
     (void)fct;
     (void)file;
-    if (n_err++ == 0)
+    if (n_err++ == 0) {
         first_err = err;
+        snprintf(first_detail, sizeof first_detail, "%s", gks_error_detail());
+    }
 }
 
 #define CHECK(cond, ...)                                                                   \
@@ -105,6 +108,10 @@ static void full_disk(int t)
           types[t].name, n_err, n_err ? first_err : 0);
     CHECK(!whole(types[t].file, types[t].trailer), "%s: whole under a 2000-byte limit?",
           types[t].name);
+    /* the report names the file and the reason (issue 37: messages a user can act on) */
+    CHECK(n_err == 0 || (strstr(first_detail, types[t].file) && strstr(first_detail, "cannot write")),
+          "%s, full disk: detail \"%s\" names neither the file nor the failure", types[t].name,
+          first_detail);
 }
 
 static void no_storage(int t)

@@ -48,6 +48,7 @@
 #include <cairo-ft.h>
 #include <fontconfig/fontconfig.h>
 #endif
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -977,6 +978,7 @@ static int file_write(gks_ws *ws, vec_ws *v)
     int c = gks_ws_file_claim_frame(ws, v->base, v->frame, vec_ext[v->fmt], &path);
     if (c)
         return c;
+    errno = 0; /* the reason of a failed write below, if the system gives one */
     cairo_surface_t *s;
     vec_buf b = { 0 };
     if (v->fmt == VEC_SVG) {
@@ -999,6 +1001,8 @@ static int file_write(gks_ws *ws, vec_ws *v)
     cairo_surface_destroy(s);
     if (!e && v->fmt == VEC_EPS)
         e = buf_save_ps(&b, path);
+    if (e == 303)
+        gks_ws_note(ws, "cannot write \"%s\": %s", path, errno ? strerror(errno) : "write failed");
     gks_free(b.p);
     gks_free(path);
     return e;
@@ -1089,7 +1093,19 @@ static int vec_end_document(vec_ws *v)
  * storage is a failed write too: the document is lost either way. */
 static int vec_finish(gks_ws *ws)
 {
-    int e = vec_end_document(ws->priv);
+    vec_ws *v = ws->priv;
+    errno = 0; /* the reason of a failed write, if the system gives one */
+    int e = vec_end_document(v);
+    if (e) {
+        char *path = gks_ws_file_frame(v->base, 1, vec_ext[v->fmt]);
+        const char *name = path ? path : v->base;
+        if (e == 300)
+            gks_ws_note(ws, "no storage left to write \"%s\"", name);
+        else
+            gks_ws_note(ws, "cannot write \"%s\": %s", name,
+                        errno ? strerror(errno) : "write failed");
+        gks_free(path);
+    }
     return e ? 303 : 0;
 }
 
