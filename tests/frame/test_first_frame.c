@@ -69,27 +69,29 @@ static const wstype types[] = {
 };
 static const char *const cases[] = { "open", "vp", "vp+upd" };
 
-/* The frame's picture as a PNG: the file itself or its rendering; 1 on success. */
+/* The frame's picture as a PNG: the file itself or its rendering; 1 on success (0 also
+ * when a path does not fit the buffers: the test then fails rather than run a cut name). */
 static int render(const wstype *t, const char *file, char *png, size_t n)
 {
-    char cmd[1024];
-    if (!t->tool) {
-        snprintf(png, n, "%s", file);
-        return 1;
-    }
-    snprintf(png, n, "%s.render.png", file);
+    char cmd[2048];
+    int k;
+    if (!t->tool)
+        return snprintf(png, n, "%s", file) < (int)n;
+    if (snprintf(png, n, "%s.render.png", file) >= (int)n)
+        return 0;
     if (t->type == GWS_TYPE_PDF) {
-        char prefix[600];
-        snprintf(prefix, sizeof prefix, "%s.render", file);
-        snprintf(cmd, sizeof cmd, "pdftoppm -png -r 72 -singlefile '%s' '%s'", file, prefix);
+        char prefix[700];
+        if (snprintf(prefix, sizeof prefix, "%s.render", file) >= (int)sizeof prefix)
+            return 0;
+        k = snprintf(cmd, sizeof cmd, "pdftoppm -png -r 72 -singlefile '%s' '%s'", file, prefix);
     } else if (t->type == GWS_TYPE_SVG) {
-        snprintf(cmd, sizeof cmd, "rsvg-convert -o '%s' '%s'", png, file);
+        k = snprintf(cmd, sizeof cmd, "rsvg-convert -o '%s' '%s'", png, file);
     } else {
-        snprintf(cmd, sizeof cmd, "gs -q -dSAFER -dBATCH -dNOPAUSE -sDEVICE=png16m -r72 %s "
-                 "-dFirstPage=1 -dLastPage=1 -sOutputFile='%s' '%s'",
-                 t->type == GWS_TYPE_EPS ? "-dEPSCrop" : "", png, file);
+        k = snprintf(cmd, sizeof cmd, "gs -q -dSAFER -dBATCH -dNOPAUSE -sDEVICE=png16m -r72 %s "
+                     "-dFirstPage=1 -dLastPage=1 -sOutputFile='%s' '%s'",
+                     t->type == GWS_TYPE_EPS ? "-dEPSCrop" : "", png, file);
     }
-    return system(cmd) == 0;
+    return k < (int)sizeof cmd && system(cmd) == 0;
 }
 
 static void one(const wstype *t, int mode, int c)
