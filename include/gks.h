@@ -138,6 +138,7 @@ enum {
     GWS_TYPE_PNG = 100,       /* category OUTIN, raster, 1024x1024 pixel display space;
                                  input from scripts (docs/INPUT.md) */
     GWS_TYPE_PNG_LARGE = 101, /* category OUTIN, raster, 8192x8192 pixel display space */
+    GWS_TYPE_PNG_OUTPUT = 102, /* category OUTPUT (no input devices), otherwise as 100 */
     /* Vector workstations (built with cairo only, else OPEN WORKSTATION reports 23): category
      * OUTPUT, display space A4 portrait in metres (DC = metres), page = ws viewport. */
     GWS_TYPE_PDF = 110,       /* PDF file, one page per frame */

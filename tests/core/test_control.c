@@ -143,7 +143,8 @@ static void test_inquiries(void **u)
 #else
     const int n_cairo = 0;
 #endif
-    const int ntypes = (err == 0 ? 7 : 6) + n_cairo; /* X11 exists with GKS_WITH_X11 */
+    /* X11 exists with GKS_WITH_X11; the OUTPUT PNG type comes last */
+    const int ntypes = (err == 0 ? 8 : 7) + n_cairo;
     ginq_list_avail_ws_types(16, 0, &err, &tl, &len);
     assert_int_equal(err, 0);
     assert_int_equal(len, ntypes);
@@ -174,6 +175,10 @@ static void test_inquiries(void **u)
     ginq_ws_cat(GWS_TYPE_PNG, &err, &cat);
     assert_int_equal(err, 0);
     assert_int_equal(cat, GCAT_OUTIN);
+    ginq_ws_cat(GWS_TYPE_PNG_OUTPUT, &err, &cat); /* the same picture, no input */
+    assert_int_equal(err, 0);
+    assert_int_equal(cat, GCAT_OUT);
+    assert_int_equal(types[ntypes - 1], GWS_TYPE_PNG_OUTPUT);
     ginq_ws_cat(777, &err, &cat);
     assert_int_equal(err, 23);
     Gdisp_space_size ds;

@@ -24,6 +24,7 @@ static const gks_ws_driver *const driver_list[] = {
 #ifdef GKS_HAVE_X11
     &gks_ws_x11_driver, /* GKS_WITH_X11 */
 #endif
+    &gks_ws_png_output_driver, /* last: the earlier types keep their list positions */
 };
 
 static const gks_desc_table desc_table = {

@@ -283,6 +283,7 @@ struct gks_ws_driver {
 extern const gks_ws_driver gks_ws_null_driver;
 extern const gks_ws_driver gks_ws_png_driver;
 extern const gks_ws_driver gks_ws_png_large_driver;
+extern const gks_ws_driver gks_ws_png_output_driver;
 extern const gks_ws_driver gks_ws_x11_driver; /* only with GKS_WITH_X11 */
 extern const gks_ws_driver gks_ws_wiss_driver;
 extern const gks_ws_driver gks_ws_mo_driver;

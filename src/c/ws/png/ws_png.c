@@ -311,20 +311,27 @@ static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
     return 0;
 }
 
-#define PNG_DESC(TYPE, NAME, SIZE)                                                   \
+#define PNG_DESC(TYPE, NAME, SIZE, CAT, IN)                                          \
     {                                                                                \
-        .type = TYPE, .name = NAME, .cat = GCAT_OUTIN, .cls = GCLASS_RASTER,           \
+        .type = TYPE, .name = NAME, .cat = CAT, .cls = GCLASS_RASTER,                  \
         .dc_units = GDC_OTHER, .dc_x = SIZE, .dc_y = SIZE, .raster_x = SIZE,         \
         .raster_y = SIZE, .colr_avail = GAVAIL_COLR, .n_colr = 256, .n_pred_colr = 8, \
         .pred_colr = png_colours, .default_irg = GIRG_SUPPR,                         \
-        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster, .in = &gks_in_desc_std, \
+        .default_defer = GDEFER_ASAP, .out = &gks_wdt_raster, .in = IN,               \
         .hlhsr_modes = (1u << GHLHSR_NONE) | (1u << GHLHSR_HIDDEN_LINE) |               \
                        (1u << GHLHSR_ZBUFFER) | (1u << GHLHSR_PAINTER) |                \
                        (1u << GHLHSR_RAYTRACE),                                         \
     }
 
-static const gks_ws_desc png_desc = PNG_DESC(GWS_TYPE_PNG, "png", 1024);
-static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-large", 8192);
+/* 100 and 101 are OUTIN (input from scripts, docs/INPUT.md); 102 is the same picture
+ * without input devices, category OUTPUT: what a program that asks the category to
+ * decide whether to wait for the user (NCAR's FRAME, docs/NCAR.md) needs. */
+static const gks_ws_desc png_desc =
+    PNG_DESC(GWS_TYPE_PNG, "png", 1024, GCAT_OUTIN, &gks_in_desc_std);
+static const gks_ws_desc png_large_desc =
+    PNG_DESC(GWS_TYPE_PNG_LARGE, "png-large", 8192, GCAT_OUTIN, &gks_in_desc_std);
+static const gks_ws_desc png_output_desc =
+    PNG_DESC(GWS_TYPE_PNG_OUTPUT, "png-output", 1024, GCAT_OUT, NULL);
 
 #define PNG_DRIVER(DESC)                                                           \
     {                                                                              \
@@ -337,3 +344,4 @@ static const gks_ws_desc png_large_desc = PNG_DESC(GWS_TYPE_PNG_LARGE, "png-larg
 
 const gks_ws_driver gks_ws_png_driver = PNG_DRIVER(png_desc);
 const gks_ws_driver gks_ws_png_large_driver = PNG_DRIVER(png_large_desc);
+const gks_ws_driver gks_ws_png_output_driver = PNG_DRIVER(png_output_desc);
