@@ -2,10 +2,12 @@
 /*
  * gks_legacy.c -- GKS3D_WS_TYPES and GKS3D_ASF (gks_legacy.h). The variables are parsed
  * once per OPEN GKS into this module's table; all or nothing, so a typo never maps half a
- * program's types. NCAR's escapes -1391 and -1396 (gks_legacy_escape).
+ * program's types. NCAR's escapes -1391 and -1396 (gks_legacy_escape). The registered
+ * profile (gks_set_profile): the hooks a foreign GKS's library supplies.
  */
 #include "gks_legacy.h"
 #include "gks_alloc.h"
+#include "gks_binding.h"
 #include "gks_ws.h"
 #include <errno.h>
 #include <limits.h>
@@ -21,7 +23,18 @@ static struct {
     int from[MAP_MAX], to[MAP_MAX];
     Gasf asf;
     char *next_file; /* GESC_NCAR_FILE_NAME: the next file workstation's name */
-} legacy = { 0, { 0 }, { 0 }, GASF_INDIV, NULL };
+    const gks_profile *profile; /* gks_set_profile; NULL: none */
+} legacy = { 0, { 0 }, { 0 }, GASF_INDIV, NULL, NULL };
+
+GKS_API void gks_set_profile(const gks_profile *p)
+{
+    legacy.profile = p;
+}
+
+const gks_profile *gks_legacy_profile(void)
+{
+    return legacy.profile;
+}
 
 /* One decimal integer at *s (leading blanks allowed), advancing *s; 0 = ok. */
 static int parse_num(const char **s, int *out)
@@ -98,6 +111,8 @@ int gks_ws_type_map(int ws_type)
     for (int i = 0; i < legacy.n; i++)
         if (legacy.from[i] == ws_type)
             return legacy.to[i];
+    if (legacy.profile && legacy.profile->ws_type) /* the profile's default mapping */
+        return legacy.profile->ws_type(ws_type);
     return ws_type;
 }
 

@@ -33,4 +33,8 @@ int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, struct gks_ws **p
  * and the name is then used up. */
 char *gks_legacy_take_file_name(int writes_file);
 
+/* The registered profile (gks_binding.h gks_set_profile), or NULL: ISO GKS. */
+struct gks_profile;
+const struct gks_profile *gks_legacy_profile(void);
+
 #endif

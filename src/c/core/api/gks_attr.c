@@ -5,6 +5,8 @@
  * representations (SET ... REPRESENTATION, SET COLOUR REPRESENTATION). Their
  * resolution for one workstation at dispatch is core/pipe/gks_attr_resolve.c.
  */
+#include "gks_binding.h"
+#include "gks_legacy.h"
 #include "gks_attr_resolve.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
@@ -79,7 +81,13 @@ GKS_API void gset_text_colr_ind(Gint v) { SET_INT(GFN_STXCI, text_colr_ind, v < 
 GKS_API void gset_char_ht(Gfloat v) { SET_INT(GFN_SCHH, char_ht, !(v > 0) || !isfinite(v), 78); }
 GKS_API void gset_text_path(Gtext_path v) { SET_INT(GFN_STXP, text_path, (unsigned)v > GPATH_DOWN, 2000); }
 GKS_API void gset_fill_ind(Gint v) { SET_INT(GFN_SFAI, fill_ind, v < 1, 80); }
-GKS_API void gset_fill_int_style(Gfill_int_style v) { SET_INT(GFN_SFAIS, fill_int_style, (unsigned)v > GSTYLE_HATCH, 2000); }
+GKS_API void gset_fill_int_style(Gfill_int_style v)
+{
+    const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's styles */
+    if (prof && prof->fill_int_style)
+        v = (Gfill_int_style)prof->fill_int_style((Gint)v);
+    SET_INT(GFN_SFAIS, fill_int_style, (unsigned)v > GSTYLE_HATCH, 2000);
+}
 GKS_API void gset_fill_style_ind(Gint v) { SET_INT(GFN_SFASI, fill_style_ind, v == 0, 84); }
 GKS_API void gset_pick_id(Gint v) { SET_INT(GFN_SPKID, pick_id, v < 0, 97); }
 GKS_API void gset_hlhsr_id(Gint v) { SET_INT(GFN_SHRID, hlhsr_id, 0, 0); }

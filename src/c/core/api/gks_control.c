@@ -90,6 +90,9 @@ static void open_gks_claimed(const char *err_name, int open_file)
     c->sl = sl;
     c->err.fp = fp;
     c->op_st = GST_GKOP;
+    const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's initial state */
+    if (prof && prof->opened_gks)
+        prof->opened_gks();
 }
 
 static void open_gks(const char *err_name, int open_file)
@@ -174,6 +177,9 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
     c->sl->open_ws[c->sl->n_open++] = ws_id;
     if (c->op_st == GST_GKOP)
         c->op_st = GST_WSOP;
+    const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's tables */
+    if (prof && prof->opened_ws)
+        prof->opened_ws(ws_id);
 }
 
 GKS_API void gclose_ws(Gint ws_id)
@@ -382,6 +388,27 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
         if (e)
             GKS_FAIL(e, GFN_ESC);
         return;
+    }
+    const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's escapes */
+    if (prof && prof->escape) {
+        Gescape_out_data *pout = NULL;
+        if (store_data && *store_data) {
+            pout = gks_store_alloc(*store_data, 1, sizeof *pout + GKS_PROFILE_ESC_OUT);
+            if (!pout)
+                GKS_FAIL(300, GFN_ESC);
+            memset(pout, 0, sizeof *pout);
+            pout->escape_r1.data = pout + 1;
+            pout->escape_r1.size = GKS_PROFILE_ESC_OUT;
+            memset(pout->escape_r1.data, ' ', GKS_PROFILE_ESC_OUT);
+        }
+        int e = prof->escape(func_id, in, pout);
+        if (e > 0)
+            GKS_FAIL(e, GFN_ESC);
+        if (e == 0) {
+            if (out_data)
+                *out_data = pout;
+            return;
+        }
     }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
     if ((func_id > GESC_SET_FILE_NAME || func_id < GESC_VEC_RESOLUTION) &&
