@@ -12,7 +12,9 @@ packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
           libopenmpi-dev openmpi-bin # OpenMPI: the optional MPI build and its test (docs/MPI.md)
           libcairo2-dev poppler-utils librsvg2-bin ghostscript # cairo: the PDF/SVG/PS/EPS
           # workstations; their tests open the files in pdftoppm, rsvg-convert and gs
-          fonts-dejavu-core) # the font of STRING and CHAR precision text in vector output
+          fonts-dejavu-core # the font of STRING and CHAR precision text in vector output
+          libncarg-dev libncarg-bin ncl-ncarg) # NCAR Graphics (optional): its examples
+          # on the NCAR profile vs NCAR's own GKS and ctrans (tests/ncarg, docs/NCAR.md)
 if [ "${1:-}" = --deb ]; then
     packages+=(debhelper dpkg-dev fakeroot lintian mmdebstrap)
 fi

@@ -1,0 +1,339 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * gks3d_ncarg.c -- the NCAR Graphics profile (libgks3d_ncarg, docs/NCAR.md): what NCAR's
+ * utilities (libncarg) expect of NCAR's own GKS beyond ISO GKS. Linked in place of
+ * libncarg_gks; a constructor registers the hooks with the core (gks_set_profile,
+ * gks_binding.h), so that without this library the core stays ISO GKS.
+ *   - initial state: fill area interior style SOLID; colour 0 black, 1 white on every
+ *     output workstation opened;
+ *   - fill area interior style 4 (NCAR's "solid text fill", PLOTCHAR) drawn as SOLID;
+ *   - NCAR's workstation types mapped to this library's (ncarg_ws_type; GKS3D_WS_TYPES
+ *     still overrides);
+ *   - NCAR's escapes -1388 (save, restore, get, set the attributes of NGSRAT), and the
+ *     PostScript escapes -1510 ... -1530 (accepted: they set NCAR PostScript driver
+ *     details this library's vector workstations fix, docs/NCAR.md);
+ *   - NCAR-internal entry points of libncarg: GZW2NX, GZW2NY (world to NDC).
+ */
+#include "gks_binding.h"
+#include "FC.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FAPI __attribute__((visibility("default")))
+#define FNAME(lower, UPPER) FC_GLOBAL(lower, UPPER)
+typedef int fint;
+typedef float freal;
+
+/* NCAR GKS's workstation types (NCAR GKS manual, "Workstation types"). */
+enum {
+    NCAR_NCGM = 1,        /* the NCAR Computer Graphics Metafile */
+    NCAR_X11_EXIST = 7,   /* X11, an existing window */
+    NCAR_X11 = 8,         /* X11, a new window */
+    NCAR_PDF_PORT = 11,   /* PDF, portrait */
+    NCAR_PDF_LAND = 12,   /* PDF, landscape */
+    NCAR_PS_FIRST = 20,   /* 20..31: {colour, mono} x {PS, EPS, EPSI} x {portrait, landscape} */
+    NCAR_PS_LAST = 31,
+    NCAR_CAIRO_PS = 40,   /* cairo PostScript */
+    NCAR_CAIRO_PNG = 41,  /* cairo PNG */
+    NCAR_CAIRO_PDF = 42,  /* cairo PDF */
+};
+
+static int have_type(Gint type)
+{
+    Gint err = 0, len = 0, types[64];
+    Gint_list l = { 0, types };
+    ginq_list_avail_ws_types(64, 0, &err, &l, &len);
+    for (int i = 0; !err && i < l.num_ints && i < 64; i++)
+        if (types[i] == type)
+            return 1;
+    return 0;
+}
+
+/* NCAR's type to ours. NCGM -> PNG of category OUTPUT (one file per frame, always built,
+ * viewable as ctrans's raster output is; PDF with GKS3D_WS_TYPES=1=110). X11 -> the X11
+ * window when this build has it and DISPLAY is set, else the PNG files. PostScript,
+ * EPS and EPSI -> PS and EPS, PDF -> PDF (A4 portrait: the landscape types are drawn
+ * portrait, docs/NCAR.md). Others unchanged. */
+static Gint ncarg_ws_type(Gint t)
+{
+    if (t == NCAR_NCGM || t == NCAR_CAIRO_PNG)
+        return GWS_TYPE_PNG_OUTPUT;
+    if (t == NCAR_X11 || t == NCAR_X11_EXIST) {
+        const char *d = getenv("DISPLAY");
+        return d && *d && have_type(GWS_TYPE_X11) ? GWS_TYPE_X11 : GWS_TYPE_PNG_OUTPUT;
+    }
+    if (t == NCAR_PDF_PORT || t == NCAR_PDF_LAND || t == NCAR_CAIRO_PDF)
+        return GWS_TYPE_PDF;
+    if (t == NCAR_CAIRO_PS)
+        return GWS_TYPE_PS;
+    if (t >= NCAR_PS_FIRST && t <= NCAR_PS_LAST)
+        return (t - NCAR_PS_FIRST) % 3 == 0 ? GWS_TYPE_PS : GWS_TYPE_EPS;
+    return t;
+}
+
+static void ncarg_opened_gks(void)
+{
+    gset_fill_int_style(GSTYLE_SOLID); /* NCAR GKS's initial interior style */
+}
+
+/* NCAR's colour table: 0 black (background), 1 white (foreground), on the workstations
+ * that have a colour table (OUTPUT, OUTIN, and the MO, which records it). */
+static void ncarg_opened_ws(Gint ws_id)
+{
+    Gint err = 0, type = 0;
+    char conn[2];
+    Gws_cat cat = GCAT_OUT;
+    ginq_ws_conn_type(ws_id, (Gint)sizeof conn, &err, conn, &type);
+    if (!err)
+        ginq_ws_cat(type, &err, &cat);
+    if (err || (cat != GCAT_OUT && cat != GCAT_OUTIN && cat != GCAT_MO))
+        return;
+    const Gcolr_rep black = { { 0, 0, 0 } }, white = { { 1, 1, 1 } };
+    gset_colr_rep(ws_id, 0, &black);
+    gset_colr_rep(ws_id, 1, &white);
+}
+
+static Gint ncarg_fill_int_style(Gint style)
+{
+    return style == 4 ? (Gint)GSTYLE_SOLID : style; /* PLOTCHAR's solid text fill */
+}
+
+/* ----------------------------------------------------------------- escape -1388 */
+/* The attributes NGSRAT saves, restores, returns and sets, in NCAR's order:
+ * i: clip indicator, linetype, polyline colour, marker type, polymarker colour, text
+ *    font, text precision, text colour, text path, horizontal and vertical alignment,
+ *    fill interior style, fill style index, fill colour;
+ * r: linewidth, marker size, character expansion, spacing, height, up vector x, y. */
+typedef struct {
+    int i[14];
+    Gfloat r[7];
+} ncar_attrs;
+
+static ncar_attrs saved;
+static int have_saved;
+
+static void get_attrs(ncar_attrs *a)
+{
+    Gint e;
+    Gclip clip;
+    Gtext_font_prec fp;
+    Gtext_path path;
+    Gtext_align al;
+    Gfill_int_style fis;
+    Gvec up;
+    memset(a, 0, sizeof *a);
+    ginq_clip(&e, &clip);
+    a->i[0] = clip.clip_ind == GIND_CLIP;
+    ginq_linetype(&e, &a->i[1]);
+    ginq_line_colr_ind(&e, &a->i[2]);
+    ginq_marker_type(&e, &a->i[3]);
+    ginq_marker_colr_ind(&e, &a->i[4]);
+    ginq_text_font_prec(&e, &fp);
+    a->i[5] = fp.font;
+    a->i[6] = (int)fp.prec;
+    ginq_text_colr_ind(&e, &a->i[7]);
+    ginq_text_path(&e, &path);
+    a->i[8] = (int)path;
+    ginq_text_align(&e, &al);
+    a->i[9] = (int)al.hor;
+    a->i[10] = (int)al.vert;
+    ginq_fill_int_style(&e, &fis);
+    a->i[11] = (int)fis;
+    ginq_fill_style_ind(&e, &a->i[12]);
+    ginq_fill_colr_ind(&e, &a->i[13]);
+    ginq_linewidth(&e, &a->r[0]);
+    ginq_marker_size(&e, &a->r[1]);
+    ginq_char_expan(&e, &a->r[2]);
+    ginq_char_space(&e, &a->r[3]);
+    ginq_char_ht(&e, &a->r[4]);
+    ginq_char_up_vec(&e, &up);
+    a->r[5] = up.delta_x;
+    a->r[6] = up.delta_y;
+}
+
+/* Each setter checks its value as the standard says (a bad one is reported, as NCAR's
+ * GKS would report it when NGSRAT passes it on). */
+static void set_attrs(const ncar_attrs *a)
+{
+    gset_clip_ind(a->i[0] ? GIND_CLIP : GIND_NO_CLIP);
+    gset_linetype(a->i[1]);
+    gset_line_colr_ind(a->i[2]);
+    gset_marker_type(a->i[3]);
+    gset_marker_colr_ind(a->i[4]);
+    const Gtext_font_prec fp = { a->i[5], (Gtext_prec)a->i[6] };
+    gset_text_font_prec(&fp);
+    gset_text_colr_ind(a->i[7]);
+    gset_text_path((Gtext_path)a->i[8]);
+    const Gtext_align al = { (Ghor_text_align)a->i[9], (Gvert_text_align)a->i[10] };
+    gset_text_align(&al);
+    gset_fill_int_style((Gfill_int_style)a->i[11]);
+    gset_fill_style_ind(a->i[12]);
+    gset_fill_colr_ind(a->i[13]);
+    gset_linewidth(a->r[0]);
+    gset_marker_size(a->r[1]);
+    gset_char_expan(a->r[2]);
+    gset_char_space(a->r[3]);
+    gset_char_ht(a->r[4]);
+    const Gvec up = { a->r[5], a->r[6] };
+    gset_char_up_vec(&up);
+}
+
+/* Fixed-width fields of an 80-column record (NCAR's FORMAT I5 / E16.7): 0 = ok. */
+static int field_int(const char *rec, size_t len, size_t at, size_t w, int *v)
+{
+    char buf[24];
+    if (at + w > len || w >= sizeof buf)
+        return -1;
+    memcpy(buf, rec + at, w);
+    buf[w] = '\0';
+    char *end;
+    long x = strtol(buf, &end, 10);
+    while (*end == ' ')
+        end++;
+    if (*end || end == buf)
+        return -1;
+    *v = (int)x;
+    return 0;
+}
+
+static int field_real(const char *rec, size_t len, size_t at, size_t w, Gfloat *v)
+{
+    char buf[24];
+    if (at + w > len || w >= sizeof buf)
+        return -1;
+    memcpy(buf, rec + at, w);
+    buf[w] = '\0';
+    for (char *p = buf; *p; p++) /* Fortran's D exponent */
+        if (*p == 'D' || *p == 'd')
+            *p = 'E';
+    char *end;
+    *v = (Gfloat)strtod(buf, &end);
+    while (*end == ' ')
+        end++;
+    return *end || end == buf ? -1 : 0;
+}
+
+#define REC 80 /* NCAR's record length (CHARACTER*80) */
+
+/* -1388: IDR(1) columns 1-5 the option: 0 save, 1 restore, 2 get into ODR(1..3)
+ * (14I5 / 5E16.7 / 2E16.7), 3 set from IDR (columns 6-75: 14I5, then IDR(2), IDR(3)). */
+static int escape_attrs(const char *d, size_t n, Gescape_out_data *out)
+{
+    int opt;
+    if (!d || n < REC || field_int(d, n, 0, 5, &opt))
+        return 182;
+    ncar_attrs a;
+    switch (opt) {
+    case 0:
+        get_attrs(&saved);
+        have_saved = 1;
+        return 0;
+    case 1:
+        if (!have_saved)
+            return 182;
+        set_attrs(&saved);
+        return 0;
+    case 2: {
+        if (!out || out->escape_r1.size < 3 * REC)
+            return 182;
+        get_attrs(&a);
+        char buf[3 * REC + 1], *o = out->escape_r1.data;
+        int k = 0;
+        for (int i = 0; i < 14; i++)
+            k += snprintf(buf + k, sizeof buf - (size_t)k, "%5d", a.i[i]);
+        memcpy(o, buf, (size_t)k);
+        k = 0;
+        for (int i = 0; i < 5; i++)
+            k += snprintf(buf + k, sizeof buf - (size_t)k, "%16.7E", (double)a.r[i]);
+        memcpy(o + REC, buf, (size_t)k);
+        k = 0;
+        for (int i = 5; i < 7; i++)
+            k += snprintf(buf + k, sizeof buf - (size_t)k, "%16.7E", (double)a.r[i]);
+        memcpy(o + 2 * REC, buf, (size_t)k);
+        out->escape_r1.size = 3 * REC;
+        return 0;
+    }
+    case 3:
+        if (n < 3 * REC)
+            return 182;
+        for (int i = 0; i < 14; i++)
+            if (field_int(d, n, 5 + 5 * (size_t)i, 5, &a.i[i]))
+                return 182;
+        for (int i = 0; i < 7; i++)
+            if (field_real(d, n, REC * (size_t)(1 + i / 5) + 16 * (size_t)(i % 5), 16, &a.r[i]))
+                return 182;
+        set_attrs(&a);
+        return 0;
+    default:
+        return 182;
+    }
+}
+
+/* NCAR's escapes. The PostScript ones (-1510 ... -1530: segment copy marks, fill and hatch
+ * spacing, stack and path limits, line width scale, background, line join, line cap,
+ * miter limit, page position, coordinate scale) address NCAR's PostScript driver; NCAR's
+ * GKS ignores them for other workstations, and this library's vector workstations fix
+ * each (round joins and caps, the page = the workstation viewport): accepted, no effect.
+ * Other identifiers are not the profile's (-1). */
+static int ncarg_escape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
+{
+    const char *d = in ? in->escape_r1.data : NULL;
+    size_t n = in && d ? in->escape_r1.size : 0;
+    if (func_id == -1388)
+        return escape_attrs(d, n, out);
+    if (func_id >= -1530 && func_id <= -1510) {
+        int ws;
+        return d && n >= 5 && field_int(d, n, 0, 5, &ws) == 0 ? 0 : 182;
+    }
+    return -1;
+}
+
+static const gks_profile ncarg_profile = {
+    .opened_gks = ncarg_opened_gks,
+    .opened_ws = ncarg_opened_ws,
+    .ws_type = ncarg_ws_type,
+    .fill_int_style = ncarg_fill_int_style,
+    .escape = ncarg_escape,
+};
+
+/* Referenced by the link line (-Wl,-u,gks3d_ncarg_profile, gks3d-ncarg.pc) so that a
+ * static link takes this object even when the program calls none of its entries. */
+FAPI const gks_profile *gks3d_ncarg_profile = &ncarg_profile;
+
+__attribute__((constructor)) static void ncarg_register(void)
+{
+    gks_set_profile(&ncarg_profile);
+}
+
+/* ------------------------------------------------- NCAR-internal entry points */
+/* GZW2NX(N, P, Q), GZW2NY(N, P, Q): the N world coordinates P to NDC in Q by the current
+ * normalization transformation (x resp. y); NCAR's GKS calls no error for them. */
+static void w2n(const fint *n, const freal *p, freal *q, int y)
+{
+    Gint err = 0, tnr = 0;
+    Gtran t;
+    ginq_cur_norm_tran_num(&err, &tnr);
+    if (!err)
+        ginq_norm_tran(tnr, &err, &t);
+    double w0 = 0, w1 = 1, v0 = 0, v1 = 1;
+    if (!err) {
+        w0 = y ? t.win.y_min : t.win.x_min;
+        w1 = y ? t.win.y_max : t.win.x_max;
+        v0 = y ? t.vp.y_min : t.vp.x_min;
+        v1 = y ? t.vp.y_max : t.vp.x_max;
+    }
+    double s = w1 != w0 ? (v1 - v0) / (w1 - w0) : 1;
+    for (fint i = 0; i < *n; i++)
+        q[i] = (freal)(v0 + ((double)p[i] - w0) * s);
+}
+
+FAPI void FNAME(gzw2nx, GZW2NX)(const fint *n, const freal *p, freal *q)
+{
+    w2n(n, p, q, 0);
+}
+
+FAPI void FNAME(gzw2ny, GZW2NY)(const fint *n, const freal *p, freal *q)
+{
+    w2n(n, p, q, 1);
+}

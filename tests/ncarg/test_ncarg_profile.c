@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: MIT */
+/* test_ncarg_profile.c -- the NCAR Graphics profile (libgks3d_ncarg, docs/NCAR.md) through
+ * the C and Fortran entries a program linked with it reaches: NCAR's initial state and
+ * colour table, fill style 4, the workstation type mapping, escape -1388 (NGSRAT's
+ * records through GESC), the PostScript escapes, GZW2NX and GZW2NY. NCAR Graphics itself
+ * is not needed. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+#include "core_util.h"
+#include "FC.h"
+
+typedef int fint;
+typedef float freal;
+void FC_GLOBAL(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
+                           const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
+                           size_t odr_len);
+void FC_GLOBAL(gzw2nx, GZW2NX)(const fint *n, const freal *p, freal *q);
+void FC_GLOBAL(gzw2ny, GZW2NY)(const fint *n, const freal *p, freal *q);
+
+/* GESC(fct, lidr, IDR, 3, LODR, ODR) with CHARACTER*80 records. */
+static fint gesc80(fint fct, fint lidr, const char idr[][80], char odr[3][80])
+{
+    fint mlodr = 3, lodr = -1;
+    FC_GLOBAL(gesc, GESC)(&fct, &lidr, &idr[0][0], &mlodr, &lodr, &odr[0][0], 80, 80);
+    return lodr;
+}
+
+static void rec(char r[80], const char *s)
+{
+    memset(r, ' ', 80);
+    memcpy(r, s, strlen(s));
+}
+
+static void test_initial_state(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    Gint e;
+    Gfill_int_style fis;
+    ginq_fill_int_style(&e, &fis);
+    assert_int_equal(fis, GSTYLE_SOLID); /* NCAR's, not ISO's HOLLOW */
+    gset_fill_int_style((Gfill_int_style)4); /* PLOTCHAR's solid text fill */
+    ginq_fill_int_style(&e, &fis);
+    assert_int_equal(fis, GSTYLE_SOLID);
+    gset_fill_int_style(GSTYLE_HATCH);
+    ginq_fill_int_style(&e, &fis);
+    assert_int_equal(fis, GSTYLE_HATCH);
+    gset_fill_int_style((Gfill_int_style)5); /* still not a style */
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 2000);
+    /* NCAR's NCGM type 1: a PNG workstation of category OUTPUT, colours 0 black, 1 white */
+    gopen_ws(1, "ncarprof", 1);
+    assert_int_equal(n_captured, 1);
+    Gcolr_rep c;
+    ginq_colr_rep(1, 0, GINQ_SET, &e, &c);
+    assert_int_equal(e, 0);
+    assert_true(c.rgb.red == 0 && c.rgb.green == 0 && c.rgb.blue == 0);
+    ginq_colr_rep(1, 1, GINQ_SET, &e, &c);
+    assert_true(c.rgb.red == 1 && c.rgb.green == 1 && c.rgb.blue == 1);
+    Gws_cat cat;
+    ginq_ws_cat(1, &e, &cat);
+    assert_int_equal(e, 0);
+    assert_int_equal(cat, GCAT_OUT); /* so NCAR's FRAME does not request a string */
+    ginq_ws_cat(20, &e, &cat); /* NCAR's colour PostScript: ours (cairo) or none */
+#ifdef GKS_HAVE_CAIRO
+    assert_int_equal(e, 0);
+#else
+    assert_int_equal(e, 23);
+#endif
+    gclose_ws(1);
+    gclose_gks();
+    assert_int_equal(access("ncarprof.png", F_OK), 0);
+    unlink("ncarprof.png");
+    assert_int_equal(n_captured, 1);
+    /* GKS3D_WS_TYPES overrides the profile's mapping */
+    setenv("GKS3D_WS_TYPES", "1=99", 1);
+    gopen_gks(NULL, 0);
+    ginq_ws_cat(1, &e, &cat);
+    assert_int_equal(cat, GCAT_OUT);
+    gopen_ws(1, "ncarprof", 1);
+    char conn[32];
+    Gint type;
+    ginq_ws_conn_type(1, (Gint)sizeof conn, &e, conn, &type);
+    gclose_ws(1);
+    gclose_gks();
+    unsetenv("GKS3D_WS_TYPES");
+    assert_int_equal(access("ncarprof.png", F_OK), -1); /* the null workstation */
+    assert_int_equal(n_captured, 1);
+}
+
+static void test_escape_1388(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    char idr[3][80], odr[3][80];
+    rec(idr[0], "    0"); /* save */
+    gesc80(-1388, 1, (const char (*)[80])idr, odr);
+    gset_linetype(2);
+    gset_fill_colr_ind(5);
+    gset_char_ht(0.25);
+    rec(idr[0], "    2"); /* get */
+    memset(odr, 'x', sizeof odr);
+    assert_int_equal(gesc80(-1388, 1, (const char (*)[80])idr, odr), 3);
+    int v[14];
+    char f[6] = { 0 };
+    for (int i = 0; i < 14; i++) {
+        memcpy(f, odr[0] + 5 * i, 5);
+        v[i] = atoi(f);
+    }
+    assert_int_equal(v[0], 1);  /* clipping on */
+    assert_int_equal(v[1], 2);  /* linetype */
+    assert_int_equal(v[11], GSTYLE_SOLID);
+    assert_int_equal(v[13], 5); /* fill colour */
+    assert_true(odr[0][75] == ' ' && odr[0][79] == ' '); /* blank-filled */
+    char r5[17] = { 0 };
+    memcpy(r5, odr[1] + 64, 16);
+    assert_float_equal(atof(r5), 0.25, 1e-6); /* character height */
+    rec(idr[0], "    1"); /* restore */
+    gesc80(-1388, 1, (const char (*)[80])idr, odr);
+    Gint e, lt, fc;
+    ginq_linetype(&e, &lt);
+    ginq_fill_colr_ind(&e, &fc);
+    assert_int_equal(lt, 1);
+    assert_int_equal(fc, 1);
+    /* set: NGSRAT's IOPT 3 record, linetype 3, fill colour 7, height 0.5 */
+    rec(idr[0], "    3    1    3    1    3    1    1    0    1    0    0    0    1    1    7");
+    rec(idr[1], "   1.0000000E+00   1.0000000E+00   1.0000000E+00   0.0000000E+00   5.0000000E-01");
+    rec(idr[2], "   0.0000000E+00   1.0000000E+00");
+    gesc80(-1388, 3, (const char (*)[80])idr, odr);
+    if (n_captured)
+        print_message("error %d\n", captured[0].err);
+    assert_int_equal(n_captured, 0);
+    ginq_linetype(&e, &lt);
+    ginq_fill_colr_ind(&e, &fc);
+    assert_int_equal(lt, 3);
+    assert_int_equal(fc, 7);
+    Gfloat h;
+    ginq_char_ht(&e, &h);
+    assert_float_equal(h, 0.5, 1e-6);
+    rec(idr[0], "   xx"); /* a malformed option */
+    gesc80(-1388, 1, (const char (*)[80])idr, odr);
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 182);
+    gclose_gks();
+}
+
+static void test_escape_ps_and_others(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    char idr[3][80], odr[3][80];
+    rec(idr[0], "    1    1"); /* line join, line cap, miter limit: accepted */
+    gesc80(-1518, 1, (const char (*)[80])idr, odr);
+    gesc80(-1519, 1, (const char (*)[80])idr, odr);
+    gesc80(-1520, 1, (const char (*)[80])idr, odr);
+    gesc80(-1516, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "    0   36   126  576  666"); /* page position, no workstation needed */
+    gesc80(-1521, 1, (const char (*)[80])idr, odr);
+    assert_int_equal(n_captured, 0);
+    gesc80(-1999, 1, (const char (*)[80])idr, odr); /* not NCAR's: as without the profile */
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 180);
+    gclose_gks();
+}
+
+static void test_w2n(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    Glimit w = { 10, 20, -1, 1 }, v = { 0.1, 0.6, 0.2, 0.4 };
+    gset_win(1, &w);
+    gset_vp(1, &v);
+    gsel_norm_tran(1);
+    fint n = 2;
+    freal p[2] = { 10, 15 }, q[2];
+    FC_GLOBAL(gzw2nx, GZW2NX)(&n, p, q);
+    assert_float_equal(q[0], 0.1, 1e-6);
+    assert_float_equal(q[1], 0.35, 1e-6);
+    p[0] = -1;
+    p[1] = 0;
+    FC_GLOBAL(gzw2ny, GZW2NY)(&n, p, q);
+    assert_float_equal(q[0], 0.2, 1e-6);
+    assert_float_equal(q[1], 0.3, 1e-6);
+    assert_int_equal(n_captured, 0);
+    gclose_gks();
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_initial_state),
+        cmocka_unit_test(test_escape_1388),
+        cmocka_unit_test(test_escape_ps_and_others),
+        cmocka_unit_test(test_w2n),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
