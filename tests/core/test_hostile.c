@@ -73,6 +73,22 @@ static void test_two_workstations_one_file(void **u)
     unlink("h_link.png");
     unlink("h_same.png");
     unlink("h_same.gksm");
+    /* A connection that names no file (a Fortran unit, NCAR's fgke04): two workstations
+     * on unit 7 write gks7.png and gks7-ws9.png, not error 21. */
+    unlink("gks7.png");
+    unlink("gks7-ws9.png");
+    gopen_gks(NULL, 0);
+    gopen_ws(8, "7", GWS_TYPE_PNG);
+    gopen_ws(9, "7", GWS_TYPE_PNG);
+    expect_errors(0, 0);
+    gclose_ws(9);
+    gclose_ws(8);
+    gclose_gks();
+    expect_errors(0, 0);
+    assert_int_equal(access("gks7.png", F_OK), 0);
+    assert_int_equal(access("gks7-ws9.png", F_OK), 0);
+    unlink("gks7.png");
+    unlink("gks7-ws9.png");
 }
 
 /* The bytes of file path (malloc'ed, *n its size), NULL if it cannot be read. */

@@ -306,6 +306,12 @@ static inline int gks_ws_file_taken(const gks_ws *ws, const char *path)
 {
     return ws->host->file_taken(ws, path);
 }
+/* The base name of ws's files (ws_file.h) for extension ext; a connection identifier
+ * that names no file (""/NULL, or all digits: a Fortran unit) whose frame-1 file another
+ * open workstation writes gets B-wsW instead (W = ws's identifier), so that several
+ * workstations on one such connection write files of their own. gks_alloc'ed, NULL on
+ * storage overflow (ws_file.c). */
+char *gks_ws_file_default_base(const gks_ws *ws, const char *ext);
 /* The file of frame `frame` of base (extension ext) claimed as above: 0 with *path
  * (gks_alloc'd), else 300 or the claim's 21, 26 with *path NULL (ws_file.c). */
 int gks_ws_file_claim_frame(gks_ws *ws, const char *base, int frame, const char *ext,

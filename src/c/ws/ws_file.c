@@ -42,6 +42,26 @@ char *gks_ws_file_base(const char *conn, const char *ext)
     return gks_strdup(conn);
 }
 
+char *gks_ws_file_default_base(const gks_ws *ws, const char *ext)
+{
+    const char *conn = ws->conn_id ? ws->conn_id : "";
+    char *b = gks_ws_file_base(conn, ext);
+    int named = 0; /* the connection names a file: a second user of it gets error 21 */
+    for (const char *c = conn; *c && !named; c++)
+        named = !isdigit((unsigned char)*c);
+    char *f = b && !named ? gks_ws_file_frame(b, 1, ext) : NULL;
+    int taken = f && gks_ws_file_taken(ws, f);
+    gks_free(f);
+    if (!taken)
+        return b;
+    size_t n = strlen(b) + 24;
+    char *s = gks_alloc_array(n, 1);
+    if (s)
+        snprintf(s, n, "%s-ws%d", b, ws->id);
+    gks_free(b);
+    return s;
+}
+
 char *gks_ws_file_frame(const char *base, int frame, const char *ext)
 {
     size_t n = strlen(base) + strlen(ext) + 16;

@@ -189,7 +189,7 @@ static int vec_open_fmt(gks_ws *ws, vec_format fmt)
     if (!v)
         return 300;
     v->fmt = fmt;
-    v->base = gks_ws_file_base(ws->conn_id, vec_ext[fmt]);
+    v->base = gks_ws_file_default_base(ws, vec_ext[fmt]);
     v->vec = ws_png_render_new();
     v->ras = ws_png_render_new();
     v->rt = ws_rt_new();
@@ -1462,7 +1462,7 @@ static const gks_ws_desc eps_desc = VEC_DESC(GWS_TYPE_EPS, "eps");
 /* The file of frame 1 (OPEN WORKSTATION's check that no other workstation uses it: 21). */
 static int vec_file_fmt(const gks_ws *ws, vec_format fmt, char **path)
 {
-    char *b = gks_ws_file_base(ws->conn_id, vec_ext[fmt]);
+    char *b = gks_ws_file_default_base(ws, vec_ext[fmt]);
     *path = b ? gks_ws_file_frame(b, 1, vec_ext[fmt]) : NULL;
     gks_free(b);
     return *path ? 0 : 300;

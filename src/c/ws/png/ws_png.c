@@ -5,8 +5,8 @@
  * The image of a frame is the current workstation viewport (its size in pixels).
  *
  * File naming (docs/WORKSTATIONS.md): the connection identifier gives a base name B:
- *   ""/NULL -> "gks", or "gks-wsW" (W = workstation identifier) when another open
- *   workstation writes gks.png;  all digits N (a Fortran CONID) -> "gksN";
+ *   ""/NULL -> "gks";  all digits N (a Fortran CONID) -> "gksN"; either + "-wsW" (W =
+ *   workstation identifier) when another open workstation writes its frame-1 file;
  *   "path.png" -> "path";  anything else is used as is. Frame 1 is written to B.png, frame k > 1 to B-k.png
  *   (k with at least three digits). ESCAPE GESC_SET_FILE_NAME replaces B.
  * A frame's file is written at UPDATE WORKSTATION, CLEAR WORKSTATION and CLOSE
@@ -58,15 +58,11 @@ typedef struct png_ws {
 } png_ws;
 
 /* The base name B (file naming above). Several workstations opened without a connection
- * identifier (NCAR's c_test38 opens three) so get files of their own. */
+ * identifier (NCAR's c_test38 opens three) or on one Fortran unit number (fgke04) so get
+ * files of their own (gks_ws_file_default_base). */
 static char *png_base(const gks_ws *ws)
 {
-    const char *conn = ws->conn_id ? ws->conn_id : "";
-    if (*conn || !gks_ws_file_taken(ws, "gks.png"))
-        return gks_ws_file_base(conn, ".png");
-    char name[32];
-    snprintf(name, sizeof name, "gks-ws%d", ws->id);
-    return gks_strdup(name);
+    return gks_ws_file_default_base(ws, ".png");
 }
 
 /* The file of frame 1 (later frames are B-k.png beside it). */
