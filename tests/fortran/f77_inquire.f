@@ -20,10 +20,10 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQLVKS errind', IERR, 0, NFAIL)
       CALL CHKI('GQLVKS level', I1, GL2C, NFAIL)
 !     available workstation types: 99, 100, 101, 3 (WISS), 2 (MO), 4 (MI)
-!     and 210 (X11) in builds with GKS_WITH_X11 (NTYP)
+!     and 210 (X11) in builds with GKS_WITH_X11, 102 last (NTYP)
       CALL GQWKCA(210, IERR, I1)
-      NTYP = 6
-      IF (IERR .EQ. 0) NTYP = 7
+      NTYP = 7
+      IF (IERR .EQ. 0) NTYP = 8
 !     and 110-113 (PDF, SVG, PS, EPS) after MI in builds with cairo
       CALL GQWKCA(GWSPDF, IERR, I1)
       IF (IERR .EQ. 0) NTYP = NTYP + 4
@@ -49,6 +49,8 @@ C     SPDX-License-Identifier: MIT
       CALL CHKI('GQEWK(5) MO', ITYP, GWSMO, NFAIL)
       CALL GQEWK(6, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(6) MI', ITYP, GWSMI, NFAIL)
+      CALL GQEWK(NTYP, IERR, NUM, ITYP)
+      CALL CHKI('GQEWK(NTYP) PNG output', ITYP, GWSPNO, NFAIL)
       CALL GQEWK(NTYP + 1, IERR, NUM, ITYP)
       CALL CHKI('GQEWK(7) errind', IERR, 2002, NFAIL)
       CALL CHKI('GQEWK(7) number', NUM, NTYP, NFAIL)
