@@ -279,14 +279,15 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
  * workstation) and -1396 (pause): IDR(1) is NCAR's record (gks.h GESC_NCAR_*).
  * Escapes -101 (set file name) and -130 (input script, docs/INPUT.md): IDR(1) holds the workstation identifier in columns 1-10 (I10),
  * IDR(2..LIDR) the file name, each record blank-trimmed and concatenated. Malformed records reach the core as empty data (182).
- * Any other escape: IDR(1..LIDR) is escape_r1 (a profile's, gks_binding.h, such as NCAR's
- * -1388); only an escape that returns data writes ODR and LODR, so a program may pass
- * constants there for the others (as NCAR's fgke03 does). */
+ * Any other escape: IDR(1..max(LIDR, MLODR)) is escape_r1 (a profile's, gks_binding.h, such as NCAR's
+ * -1388); only an escape that returns data writes ODR, and LODR is never written, so a
+ * program may pass constants there (as NCAR's fgke03 and NGSRAT do). */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
 FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
                             const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
                             size_t odr_len)
 {
+    (void)lodr;
     if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
         return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
     Gescape_in_data in = { { 0, NULL, 0, NULL, 0, NULL } };
@@ -321,9 +322,15 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         in.escape_r1.data = (void *)idr;
         gescape(*fctid, &in, NULL, NULL);
     } else if (!name) {
-        /* Any other escape (a profile's, gks_binding.h): IDR(1..LIDR) as one record of
-         * LIDR*LEN(IDR) characters in escape_r1; what it returns in escape_r1 fills
-         * ODR(1..MLODR) record by record (blank-filled), LODR = the records filled. */
+        /* Any other escape (a profile's, gks_binding.h): IDR(1..N) as one record of
+         * N*LEN(IDR) characters in escape_r1, N = max(LIDR, MLODR): NCAR's NGSRAT passes
+         * LIDR = 1 with IDR(4) and ODR(4), MLODR = 4, and NCAR's GESC reads IDR(2..4)
+         * (the handler reads only what its escape defines); what it returns fills
+         * ODR(1..MLODR) record by record (blank-filled). LODR is not written: NCAR's
+         * NGSRAT passes one constant as MLODR and LODR (a write would fault), and NCAR's
+         * GESC never sets it. */
+        if (mlodr && *mlodr > nrec)
+            nrec = *mlodr;
         if (nrec >= 1 && idr_len > 0 && (size_t)nrec <= SIZE_MAX / idr_len) {
             in.escape_r1.size = (size_t)nrec * idr_len;
             in.escape_r1.data = (void *)idr;
@@ -334,15 +341,14 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         if (mlodr && *mlodr > 0 && odr && odr_len > 0)
             gcreate_store(&serr, &store);
         gescape(*fctid, &in, serr ? NULL : &store, &out);
-        if (out && out->escape_r1.data && lodr) {
+        if (out && out->escape_r1.data) {
             const char *o = out->escape_r1.data;
-            size_t n = out->escape_r1.size, nout = 0;
-            for (fint r = 0; r < *mlodr && nout * odr_len < n; r++, nout++) {
-                size_t k = n - nout * odr_len < odr_len ? n - nout * odr_len : odr_len;
-                memset(odr + nout * odr_len, ' ', odr_len);
-                memcpy(odr + nout * odr_len, o + nout * odr_len, k);
+            size_t n = out->escape_r1.size;
+            for (size_t r = 0; r < (size_t)*mlodr && r * odr_len < n; r++) {
+                size_t k = n - r * odr_len < odr_len ? n - r * odr_len : odr_len;
+                memset(odr + r * odr_len, ' ', odr_len);
+                memcpy(odr + r * odr_len, o + r * odr_len, k);
             }
-            *lodr = (fint)nout;
         }
         if (store)
             gdel_store(store);

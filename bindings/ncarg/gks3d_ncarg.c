@@ -9,9 +9,10 @@
  *   - fill area interior style 4 (NCAR's "solid text fill", PLOTCHAR) drawn as SOLID;
  *   - NCAR's workstation types mapped to this library's (ncarg_ws_type; GKS3D_WS_TYPES
  *     still overrides);
- *   - NCAR's escapes -1388 (save, restore, get, set the attributes of NGSRAT), and the
- *     PostScript escapes -1510 ... -1530 (accepted: they set NCAR PostScript driver
- *     details this library's vector workstations fix, docs/NCAR.md);
+ *   - NCAR's escapes -1388 (save, restore, get, set the attributes of NGSRAT), -1387 and
+ *     -1389 (NGMFTC, NGREOP: suspend and reopen a metafile), and the PostScript escapes
+ *     -1510 ... -1530 (accepted: they set NCAR PostScript driver details this library's
+ *     vector workstations fix, docs/NCAR.md);
  *   - NCAR-internal entry points of libncarg: GZW2NX, GZW2NY (world to NDC).
  */
 #include "gks_binding.h"
@@ -216,14 +217,19 @@ static int field_real(const char *rec, size_t len, size_t at, size_t w, Gfloat *
 
 #define REC 80 /* NCAR's record length (CHARACTER*80) */
 
-/* -1388: IDR(1) columns 1-5 the option: 0 save, 1 restore, 2 get into ODR(1..3)
- * (14I5 / 5E16.7 / 2E16.7), 3 set from IDR (columns 6-75: 14I5, then IDR(2), IDR(3)). */
+/* -1388 as NGSRAT of NCAR Graphics 6.1 and later writes it (four records since 2012, the
+ * integers 10 wide for ARGB colours): IDR(1) columns 1-5 the option: 0 save, 1 restore,
+ * 2 get into ODR(1..4) (7I10 / 7I10 / 5E16.7 / 2E16.7), 3 set from IDR(1) columns 6-75
+ * (7I10), IDR(2) (7I10), IDR(3) (5E16.7), IDR(4) (2E16.7). */
 static int escape_attrs(const char *d, size_t n, Gescape_out_data *out)
 {
     int opt;
     if (!d || n < REC || field_int(d, n, 0, 5, &opt))
         return 182;
     ncar_attrs a;
+    size_t cap = out ? out->escape_r1.size : 0;
+    if (out)
+        out->escape_r1.size = 0;
     switch (opt) {
     case 0:
         get_attrs(&saved);
@@ -235,39 +241,123 @@ static int escape_attrs(const char *d, size_t n, Gescape_out_data *out)
         set_attrs(&saved);
         return 0;
     case 2: {
-        if (!out || out->escape_r1.size < 3 * REC)
+        if (!out || cap < 4 * REC)
             return 182;
         get_attrs(&a);
-        char buf[3 * REC + 1], *o = out->escape_r1.data;
-        int k = 0;
-        for (int i = 0; i < 14; i++)
-            k += snprintf(buf + k, sizeof buf - (size_t)k, "%5d", a.i[i]);
-        memcpy(o, buf, (size_t)k);
-        k = 0;
-        for (int i = 0; i < 5; i++)
-            k += snprintf(buf + k, sizeof buf - (size_t)k, "%16.7E", (double)a.r[i]);
-        memcpy(o + REC, buf, (size_t)k);
-        k = 0;
-        for (int i = 5; i < 7; i++)
-            k += snprintf(buf + k, sizeof buf - (size_t)k, "%16.7E", (double)a.r[i]);
-        memcpy(o + 2 * REC, buf, (size_t)k);
-        out->escape_r1.size = 3 * REC;
+        char *o = out->escape_r1.data;
+        for (int r = 0; r < 2; r++) {
+            char buf[REC + 8];
+            int k = 0;
+            for (int i = 7 * r; i < 7 * r + 7; i++) { /* wider than I10: '*' as Fortran */
+                if (a.i[i] >= -999999999)
+                    k += snprintf(buf + k, sizeof buf - (size_t)k, "%10d", a.i[i]);
+                else
+                    k += snprintf(buf + k, sizeof buf - (size_t)k, "**********");
+            }
+            memcpy(o + (size_t)r * REC, buf, (size_t)k);
+        }
+        for (int r = 0; r < 2; r++) {
+            char buf[REC + 8];
+            int k = 0;
+            for (int i = 5 * r; i < (r ? 7 : 5); i++)
+                k += snprintf(buf + k, sizeof buf - (size_t)k, "%16.7E", (double)a.r[i]);
+            memcpy(o + (size_t)(2 + r) * REC, buf, (size_t)k);
+        }
+        out->escape_r1.size = 4 * REC;
         return 0;
     }
     case 3:
-        if (n < 3 * REC)
+        if (n < 4 * REC)
             return 182;
         for (int i = 0; i < 14; i++)
-            if (field_int(d, n, 5 + 5 * (size_t)i, 5, &a.i[i]))
+            if (field_int(d, n, i < 7 ? 5 + 10 * (size_t)i : REC + 10 * (size_t)(i - 7), 10,
+                          &a.i[i]))
                 return 182;
         for (int i = 0; i < 7; i++)
-            if (field_real(d, n, REC * (size_t)(1 + i / 5) + 16 * (size_t)(i % 5), 16, &a.r[i]))
+            if (field_real(d, n, REC * (size_t)(2 + i / 5) + 16 * (size_t)(i % 5), 16, &a.r[i]))
                 return 182;
         set_attrs(&a);
         return 0;
     default:
         return 182;
     }
+}
+
+/* Trailing blanks of d[0..n) dropped: the length left. */
+static size_t trimmed(const char *d, size_t n)
+{
+    while (n > 0 && (d[n - 1] == ' ' || d[n - 1] == '\0'))
+        n--;
+    return n;
+}
+
+/* -1387 (NGMFTC): IDR(1) columns 1-5 a workstation identifier: NCAR suspends its NCGM
+ * without ending the picture, so that -1389 can append to it. Here CLOSE WORKSTATION: the
+ * picture drawn so far is written (a PNG or vector file cannot be appended to later). */
+static int escape_suspend(const char *d, size_t n)
+{
+    int ws;
+    if (!d || n < 5 || field_int(d, n, 0, 5, &ws))
+        return 182;
+    gclose_ws(ws); /* reports 25, 29 itself, as NCAR's GESC does */
+    return 0;
+}
+
+/* -1389 (NGREOP): IDR(1) 7I5 workstation identifier, connection identifier, type,
+ * attribute flag, number of colours, first colour index, option; IDR(2..5) the file name
+ * (80, 80, 80, 16 columns); with the flag IDR(6..9) 8I10 and IDR(10..13) 5E16.7 (the last
+ * 4E16.7): NCAR's full attribute set; then the colours, 4 per record as 3F6.3. Here OPEN
+ * WORKSTATION of that file (the profile maps the type), its colour table, and with the
+ * flag the attributes (as -1388 option 3). The reopened file starts anew. */
+static int escape_reopen(const char *d, size_t n)
+{
+    int h[7];
+    for (int i = 0; i < 7; i++)
+        if (!d || field_int(d, n, 5 * (size_t)i, 5, &h[i]))
+            return 182;
+    int ws = h[0], type = h[2], flag = h[3], ncol = h[4], first = h[5];
+    size_t at = flag ? 13 * REC : 5 * REC; /* the colour records */
+    if (ncol < 0 || n < 5 * REC || n < at + (size_t)(ncol + 3) / 4 * REC)
+        return 182;
+    char name[4 * REC + 1];
+    size_t k = 0;
+    for (int r = 1; r <= 4; r++) {
+        size_t len = r == 4 ? 16 : REC;
+        memcpy(name + k, d + (size_t)r * REC, len);
+        k += len;
+    }
+    k = trimmed(name, k);
+    name[k] = '\0';
+    ncar_attrs a;
+    if (flag == 1) {
+        static const int ipos[14] = { 1, 3, 4, 6, 7, 9, 10, 11, 12, 13, 14, 16, 17, 18 };
+        for (int i = 0; i < 14; i++) {
+            int j = ipos[i] - 1; /* IATE(j+1): 8I10 per record from IDR(6) */
+            if (field_int(d, n, (size_t)(5 + j / 8) * REC + 10 * (size_t)(j % 8), 10, &a.i[i]))
+                return 182;
+        }
+        for (int i = 0; i < 7; i++) /* RATE(1..7) */
+            if (field_real(d, n, (size_t)(9 + i / 5) * REC + 16 * (size_t)(i % 5), 16, &a.r[i]))
+                return 182;
+    }
+    gopen_ws(ws, name, type);
+    Gint err = 0, t = 0;
+    char conn[2];
+    ginq_ws_conn_type(ws, (Gint)sizeof conn, &err, conn, &t);
+    if (err)
+        return 0; /* OPEN WORKSTATION has reported why */
+    for (int i = 0; i < ncol; i++) {
+        Gfloat v[3];
+        size_t o = at + (size_t)(i / 4) * REC + 18 * (size_t)(i % 4);
+        for (int j = 0; j < 3; j++)
+            if (field_real(d, n, o + 6 * (size_t)j, 6, &v[j]))
+                return 182;
+        const Gcolr_rep c = { { v[0], v[1], v[2] } };
+        gset_colr_rep(ws, first + i, &c);
+    }
+    if (flag == 1)
+        set_attrs(&a);
+    return 0;
 }
 
 /* NCAR's escapes. The PostScript ones (-1510 ... -1530: segment copy marks, fill and hatch
@@ -282,6 +372,12 @@ static int ncarg_escape(Gint func_id, const Gescape_in_data *in, Gescape_out_dat
     size_t n = in && d ? in->escape_r1.size : 0;
     if (func_id == -1388)
         return escape_attrs(d, n, out);
+    if (out)
+        out->escape_r1.size = 0; /* the others return nothing */
+    if (func_id == -1387)
+        return escape_suspend(d, n);
+    if (func_id == -1389)
+        return escape_reopen(d, n);
     if (func_id >= -1530 && func_id <= -1510) {
         int ws;
         return d && n >= 5 && field_int(d, n, 0, 5, &ws) == 0 ? 0 : 182;

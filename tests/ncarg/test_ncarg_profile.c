@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <math.h>
 #include <unistd.h>
 #include <cmocka.h>
 #include "core_util.h"
@@ -23,12 +24,12 @@ void FC_GLOBAL(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
 void FC_GLOBAL(gzw2nx, GZW2NX)(const fint *n, const freal *p, freal *q);
 void FC_GLOBAL(gzw2ny, GZW2NY)(const fint *n, const freal *p, freal *q);
 
-/* GESC(fct, lidr, IDR, 3, LODR, ODR) with CHARACTER*80 records. */
-static fint gesc80(fint fct, fint lidr, const char idr[][80], char odr[3][80])
+/* GESC(fct, lidr, IDR, 4, 4, ODR) with CHARACTER*80 IDR(4), ODR(4), MLODR and LODR one
+ * constant in read-only memory, as NGSRAT passes them (a write to LODR would fault). */
+static const fint four = 4;
+static void gesc80(fint fct, fint lidr, const char idr[][80], char odr[4][80])
 {
-    fint mlodr = 3, lodr = -1;
-    FC_GLOBAL(gesc, GESC)(&fct, &lidr, &idr[0][0], &mlodr, &lodr, &odr[0][0], 80, 80);
-    return lodr;
+    FC_GLOBAL(gesc, GESC)(&fct, &lidr, &idr[0][0], &four, (fint *)&four, &odr[0][0], 80, 80);
 }
 
 static void rec(char r[80], const char *s)
@@ -100,7 +101,7 @@ static void test_escape_1388(void **u)
     (void)u;
     reset_gks();
     gopen_gks(NULL, 0);
-    char idr[3][80], odr[3][80];
+    char idr[4][80], odr[4][80];
     rec(idr[0], "    0"); /* save */
     gesc80(-1388, 1, (const char (*)[80])idr, odr);
     gset_linetype(2);
@@ -108,20 +109,20 @@ static void test_escape_1388(void **u)
     gset_char_ht(0.25);
     rec(idr[0], "    2"); /* get */
     memset(odr, 'x', sizeof odr);
-    assert_int_equal(gesc80(-1388, 1, (const char (*)[80])idr, odr), 3);
-    int v[14];
-    char f[6] = { 0 };
+    gesc80(-1388, 1, (const char (*)[80])idr, odr);
+    int v[14]; /* 7I10, 7I10 */
+    char f[11] = { 0 };
     for (int i = 0; i < 14; i++) {
-        memcpy(f, odr[0] + 5 * i, 5);
+        memcpy(f, odr[i / 7] + 10 * (i % 7), 10);
         v[i] = atoi(f);
     }
     assert_int_equal(v[0], 1);  /* clipping on */
     assert_int_equal(v[1], 2);  /* linetype */
     assert_int_equal(v[11], GSTYLE_SOLID);
     assert_int_equal(v[13], 5); /* fill colour */
-    assert_true(odr[0][75] == ' ' && odr[0][79] == ' '); /* blank-filled */
+    assert_true(odr[0][75] == ' ' && odr[1][79] == ' '); /* blank-filled */
     char r5[17] = { 0 };
-    memcpy(r5, odr[1] + 64, 16);
+    memcpy(r5, odr[2] + 64, 16);
     assert_float_equal(atof(r5), 0.25, 1e-6); /* character height */
     rec(idr[0], "    1"); /* restore */
     gesc80(-1388, 1, (const char (*)[80])idr, odr);
@@ -131,10 +132,12 @@ static void test_escape_1388(void **u)
     assert_int_equal(lt, 1);
     assert_int_equal(fc, 1);
     /* set: NGSRAT's IOPT 3 record, linetype 3, fill colour 7, height 0.5 */
-    rec(idr[0], "    3    1    3    1    3    1    1    0    1    0    0    0    1    1    7");
-    rec(idr[1], "   1.0000000E+00   1.0000000E+00   1.0000000E+00   0.0000000E+00   5.0000000E-01");
-    rec(idr[2], "   0.0000000E+00   1.0000000E+00");
-    gesc80(-1388, 3, (const char (*)[80])idr, odr);
+    /* NGSRAT's IOPT 3 records (LIDR = 1, as NGSRAT passes it) */
+    rec(idr[0], "    3         1         3         1         3         1         1         0");
+    rec(idr[1], "         1         0         0         0         1         1         7");
+    rec(idr[2], "   1.0000000E+00   1.0000000E+00   1.0000000E+00   0.0000000E+00   5.0000000E-01");
+    rec(idr[3], "   0.0000000E+00   1.0000000E+00");
+    gesc80(-1388, 1, (const char (*)[80])idr, odr);
     if (n_captured)
         print_message("error %d\n", captured[0].err);
     assert_int_equal(n_captured, 0);
@@ -157,7 +160,7 @@ static void test_escape_ps_and_others(void **u)
     (void)u;
     reset_gks();
     gopen_gks(NULL, 0);
-    char idr[3][80], odr[3][80];
+    char idr[4][80], odr[4][80];
     rec(idr[0], "    1    1"); /* line join, line cap, miter limit: accepted */
     gesc80(-1518, 1, (const char (*)[80])idr, odr);
     gesc80(-1519, 1, (const char (*)[80])idr, odr);
@@ -170,6 +173,44 @@ static void test_escape_ps_and_others(void **u)
     assert_int_equal(n_captured, 1);
     assert_int_equal(captured[0].err, 180);
     gclose_gks();
+}
+
+/* -1387 (NGMFTC) closes the workstation; -1389 (NGREOP, no attributes, two colours from
+ * index 2) opens it again on the file named, with those colours. */
+static void test_suspend_reopen(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    char idr[6][80], odr[4][80];
+    gopen_ws(3, "ncarreop", 1);
+    rec(idr[0], "    3");
+    gesc80(-1387, 1, (const char (*)[80])idr, odr);
+    Gint e, t;
+    char conn[32];
+    ginq_ws_conn_type(3, (Gint)sizeof conn, &e, conn, &t);
+    assert_int_equal(e, 7); /* closed: no workstation open, GKS back in GKOP */
+    rec(idr[0], "    3    2    1    0    2    2    0");
+    rec(idr[1], "ncarreop");
+    rec(idr[2], "");
+    rec(idr[3], "");
+    rec(idr[4], "");
+    rec(idr[5], " 1.000 0.500 0.000 0.000 0.000 1.000");
+    fint fct = -1389, lidr = 6, one = 1;
+    FC_GLOBAL(gesc, GESC)(&fct, &lidr, &idr[0][0], &one, &one, &odr[0][0], 80, 80);
+    assert_int_equal(n_captured, 0);
+    ginq_ws_conn_type(3, (Gint)sizeof conn, &e, conn, &t);
+    assert_int_equal(e, 0);
+    assert_string_equal(conn, "ncarreop");
+    Gcolr_rep c;
+    ginq_colr_rep(3, 2, GINQ_SET, &e, &c);
+    assert_true(c.rgb.red == 1 && fabs(c.rgb.green - 0.5) < 1e-6 && c.rgb.blue == 0);
+    ginq_colr_rep(3, 3, GINQ_SET, &e, &c);
+    assert_true(c.rgb.red == 0 && c.rgb.green == 0 && c.rgb.blue == 1);
+    gclose_ws(3);
+    gclose_gks();
+    unlink("ncarreop.png");
+    assert_int_equal(n_captured, 0);
 }
 
 static void test_w2n(void **u)
@@ -201,6 +242,7 @@ int main(void)
         cmocka_unit_test(test_initial_state),
         cmocka_unit_test(test_escape_1388),
         cmocka_unit_test(test_escape_ps_and_others),
+        cmocka_unit_test(test_suspend_reopen),
         cmocka_unit_test(test_w2n),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -34,8 +34,8 @@ typedef struct gks_profile {
     Gint (*fill_int_style)(Gint style);
     /* ESCAPE: -1 if func_id is not the profile's (the core then goes on as without a
      * profile), else 0 or the error number to report. out (NULL if the caller gave no
-     * store) has escape_r1 = a blank-filled buffer of GKS_PROFILE_ESC_OUT bytes; the
-     * profile sets its size to what it returns. */
+     * store) has escape_r1 = a blank-filled buffer of GKS_PROFILE_ESC_OUT bytes (its
+     * size); the profile sets the size to what it returns (0: nothing). */
     int (*escape)(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out);
 } gks_profile;
 
