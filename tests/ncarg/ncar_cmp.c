@@ -15,7 +15,9 @@
  * blocks differ by more than DIFF_TOL (largest channel, 0..255): a missing or misplaced
  * curve, contour band, map outline or a wrong fill (hollow for solid, a colour index
  * off) changes far more blocks than that (docs/NCAR.md gives the figures).
- * NCAR_CMP_DUMP=DIR writes NCAR's frames as DIR/ncar-001.png, ... to look at.
+ * NCAR_CMP_DUMP=DIR writes NCAR's frames as DIR/ncar-001.png, ... to look at, and each
+ * pair side by side at a quarter of the size (NCAR left, gks3d right) as DIR/side-001.png
+ * (docs/NCAR.md).
  * Exit 0 if the frame counts agree and every frame passes, 1 otherwise; one line per frame.
  */
 #include "image_util.h"
@@ -88,6 +90,33 @@ static int read_ras(FILE *f, img *im)
     return 1;
 }
 
+/* ref and out (equal sizes, multiples of 4) side by side, each reduced 4:1 by block means. */
+static int write_side(const char *path, const img *ref, const img *out)
+{
+    if (ref->w != out->w || ref->h != out->h || ref->w % 4 || ref->h % 4)
+        return -1;
+    img s = { ref->w / 2, ref->h / 4, NULL };
+    s.rgb = malloc((size_t)s.w * (size_t)s.h * 3);
+    if (!s.rgb)
+        return -1;
+    for (int k = 0; k < 2; k++) {
+        const img *m = k ? out : ref;
+        for (int j = 0; j < s.h; j++)
+            for (int i = 0; i < m->w / 4; i++)
+                for (int c = 0; c < 3; c++) {
+                    int sum = 0;
+                    for (int y = 0; y < 4; y++)
+                        for (int x = 0; x < 4; x++)
+                            sum += m->rgb[((size_t)(4 * j + y) * (size_t)m->w + (size_t)(4 * i + x)) * 3 + (size_t)c];
+                    s.rgb[((size_t)j * (size_t)s.w + (size_t)(k * m->w / 4 + i)) * 3 + (size_t)c] =
+                        (unsigned char)((sum + 8) / 16);
+                }
+    }
+    int e = img_write(path, &s);
+    free(s.rgb);
+    return e;
+}
+
 /* The CMP_N x CMP_N block averages of im (its size a multiple of CMP_N). */
 static int reduce(const img *im, float *out)
 {
@@ -134,7 +163,14 @@ int main(int argc, char **argv)
                 printf("frame %d: cannot write %s\n", frame, path);
         }
         img out = { 0, 0, NULL };
-        if (img_read(argv[1 + frame], &out) || reduce(&ref, a) || reduce(&out, b)) {
+        int rd = img_read(argv[1 + frame], &out);
+        if (!rd && dump && *dump) {
+            char path[4096];
+            snprintf(path, sizeof path, "%s/side-%03d.png", dump, frame);
+            if (write_side(path, &ref, &out))
+                printf("frame %d: cannot write %s\n", frame, path);
+        }
+        if (rd || reduce(&ref, a) || reduce(&out, b)) {
             printf("frame %d: cannot read or reduce %s\n", frame, argv[1 + frame]);
             bad = 1;
         } else {
