@@ -4,6 +4,10 @@
 # way against gks3d (docs/NCAR.md) and run, one at a time:
 #   gfortran <NCAR's options> <sources> libncarg.a $(pkg-config --libs gks3d-ncarg) \
 #            libncarg_c.a [-lngmath] [NCAR's robj objects]
+# and every example also with -L$(ncargpath lib) -lngmath -lpng -lz (the NGMATH examples
+# and wmex* need libngmath, mpex15 libpng; Debian's ncargex adds -ngmath for none of the
+# Fortran ones, so NCAR's own build of those does not link either), and with the data
+# file ncargex feeds it on standard input.
 # Prints one line per example -- name, linked, ran (exit status), frames (files written),
 # GKS error lines (of gks3d's error file, stdout) -- then a summary and the GKS error lines
 # grouped by example.
@@ -49,12 +53,26 @@ unset DISPLAY GKS3D_WS_TYPES GKS3D_ASF
 fflags=(-w -fallow-argument-mismatch -fallow-invalid-boz -fno-second-underscore -fno-range-check)
 
 # The Fortran examples of ncargex: its lists (examples, tests, tutorial, fundamentals,
-# PostScript and X11 examples), those whose source is installed.
-names=("$@")
-if [ ${#names[@]} -eq 0 ]; then
-    mapfile -t names < <(python3 - "$(command -v ncargex)" "$exdir" <<'EOF'
+# PostScript and X11 examples), those whose source is installed; and, from its switch of
+# special cases, the file each reads on standard input ("NAME FILE" lines in stdin.txt).
+[ -n "$work" ] || work=$(mktemp -d /tmp/ncar-sweep.XXXXXX)
+mkdir -p "$work"
+python3 - "$(command -v ncargex)" "$exdir" > "$work/names.txt" 2> "$work/stdin.txt" <<'EOF'
 import os, re, sys
-txt = open(sys.argv[1]).read().replace('\\\n', ' ')
+src = open(sys.argv[1]).read()
+cases = []
+for line in src.split('\n'):
+    m = re.match(r'\s*case\s+(\w+)\s*:', line)
+    if m:
+        cases.append(m.group(1))
+        continue
+    m = re.match(r'\s*set\s+stdin_data_file\s*=\s*\((\S+)\)', line)
+    if m:
+        for c in cases:
+            print(c, m.group(1), file=sys.stderr)
+    if re.match(r'\s*(breaksw|endsw)\b', line):
+        cases = []
+txt = src.replace('\\\n', ' ')
 var = {}
 for m in re.finditer(r'^\s*set\s+(\w+)\s*=\s*\(([^)]*)\)', txt, re.M):
     out = []
@@ -69,10 +87,8 @@ for k in ['list_fex', 'list_ftst', 'list_fttr', 'list_ffnd', 'list_fpdc', 'list_
             seen.append(n)
 print('\n'.join(seen))
 EOF
-)
-fi
-[ -n "$work" ] || work=$(mktemp -d /tmp/ncar-sweep.XXXXXX)
-mkdir -p "$work"
+names=("$@")
+[ ${#names[@]} -gt 0 ] || mapfile -t names < "$work/names.txt"
 echo "ncar-sweep: ${#names[@]} examples in $work; gks3d: $gks_libs"
 printf '%-10s %-6s %-5s %6s %6s\n' example linked ran frames errors
 n_link=0 n_ran=0 n_frames=0 n_err_ex=0 n_err=0
@@ -82,8 +98,7 @@ for ex in "${names[@]}"; do
     rm -rf "$d" && mkdir -p "$d"
     (cd "$d" && ncargex -n "$ex" > ncargex.txt 2>&1)
     extra=()
-    case $ex in # ncargex's special cases
-        nnex*) extra=(-L"$libdir" -lngmath) ;;
+    case $ex in # ncargex's special cases (robj objects as ncargf77 adds them)
         tagupw) extra=("$robj/libagupwrtx.o") ;;
         tdashs | tcnsmt | tconan) extra=("$robj/libdashsmth.o") ;;
         tdashl | tcnqck | tconaq) extra=("$robj/libdashline.o" "$robj/libconrcqck.o" "$robj/libconraq.o") ;;
@@ -92,12 +107,13 @@ for ex in "${names[@]}"; do
     srcs=("$d"/*.f)
     linked=no ran=- frames=0 errors=0
     # shellcheck disable=SC2086 # gks_libs: pkg-config's words
-    if (cd "$d" && nice -n 10 gfortran "${fflags[@]}" "${srcs[@]}" "$ncarg_a" $gks_libs \
-            "$ncarg_c_a" "${extra[@]}" -o "$ex" > link.txt 2>&1); then
+    if (cd "$d" && nice -n 10 gfortran "${fflags[@]}" "${srcs[@]}" "${extra[@]}" "$ncarg_a" \
+            $gks_libs "$ncarg_c_a" -L"$libdir" -lngmath -lpng -lz -o "$ex" > link.txt 2>&1); then
         linked=yes
         n_link=$((n_link + 1))
         stdin=/dev/null
-        [ "$ex" = agex13 ] && stdin=$d/agda13.dat
+        f=$(awk -v n="$ex" '$1 == n { print $2; exit }' "$work/stdin.txt")
+        [ -n "$f" ] && [ -f "$d/$f" ] && stdin=$d/$f
         (cd "$d" && timeout 60 nice -n 10 "./$ex" < "$stdin" > run.txt 2>&1)
         ran=$?
         [ $ran -eq 0 ] && n_ran=$((n_ran + 1))
