@@ -19,7 +19,7 @@
 #     NAME...     only these examples (default: all Fortran examples of ncargex whose
 #                 source NCAR Graphics installs)
 # Needs libncarg-dev, libncarg-bin and ncl-ncarg (scripts/setup.sh). Runs niced, each
-# example at most 60 s, without X (DISPLAY unset: NCAR's X11 types become PNG files).
+# example at most 300 s, without X (DISPLAY unset: NCAR's X11 types become PNG files).
 set -uo pipefail
 
 prefix="" work=""
@@ -40,7 +40,8 @@ for t in ncargex ncargpath pkg-config gfortran python3; do
 done
 gks_libs=$(pkg-config --libs gks3d-ncarg) || { echo "ncar-sweep: no pkg-config module gks3d-ncarg" >&2; exit 1; }
 libdir=$(ncargpath lib)
-ncarg_a=$libdir/libncarg.a ncarg_c_a=$libdir/libncarg_c.a robj=$libdir/ncarg/robj
+ncarg_a=$libdir/libncarg.a ncarg_c_a=$libdir/libncarg_c.a robj=$libdir/robj
+[ -d "$robj" ] || robj=$libdir/ncarg/robj # ncargf77 says this; Debian has the former
 [ -f "$ncarg_a" ] || ncarg_a=$libdir/ncarg/libncarg.a
 [ -f "$ncarg_c_a" ] || ncarg_c_a=$libdir/ncarg/libncarg_c.a
 [ -f "$ncarg_a" ] && [ -f "$ncarg_c_a" ] || { echo "ncar-sweep: libncarg.a not found" >&2; exit 1; }
@@ -114,7 +115,7 @@ for ex in "${names[@]}"; do
         stdin=/dev/null
         f=$(awk -v n="$ex" '$1 == n { print $2; exit }' "$work/stdin.txt")
         [ -n "$f" ] && [ -f "$d/$f" ] && stdin=$d/$f
-        (cd "$d" && timeout 60 nice -n 10 "./$ex" < "$stdin" > run.txt 2>&1)
+        (cd "$d" && timeout 300 nice -n 10 "./$ex" < "$stdin" > run.txt 2>&1)
         ran=$?
         [ $ran -eq 0 ] && n_ran=$((n_ran + 1))
         frames=$(find "$d" -maxdepth 1 \( -name '*.png' -o -name '*.pdf' -o -name '*.ps' \
