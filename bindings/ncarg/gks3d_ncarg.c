@@ -364,7 +364,7 @@ static int escape_reopen(const char *d, size_t n)
  * spacing, stack and path limits, line width scale, background, line join, line cap,
  * miter limit, page position, coordinate scale) address NCAR's PostScript driver; NCAR's
  * GKS ignores them for other workstations, and this library's vector workstations fix
- * each (round joins and caps, the page = the workstation viewport): accepted, no effect.
+ * each (round joins, butt caps, the page = the workstation viewport): accepted, no effect.
  * Other identifiers are not the profile's (-1). */
 static int ncarg_escape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
