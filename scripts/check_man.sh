@@ -8,7 +8,7 @@
 #                       SUBROUTINEs of bindings/fortran (as bindings/fortran/CMakeLists.txt)
 # Each name needs MANDIR/man3/<name>.3 (Fortran names in lower case; GGDP shares ggdp.3,
 # which must name it), and man3 may hold
-# nothing else (page count = function count). Every page of man3 and man7 is rendered with
+# nothing else (page count = function count). Every page of man1, man3 and man7 is rendered with
 # `man --warnings=w -l` (groff -ww underneath), or `groff -ww -man -Tutf8` without man-db, from MANDIR
 # (so that the .so links resolve as they do when installed); any diagnostic fails.
 # Usage: scripts/check_man.sh [SOURCE_DIR [MANDIR [MAP]]]
@@ -67,7 +67,8 @@ have_man=0
 command -v man > /dev/null && have_man=1
 nr=0
 cd "$mandir"
-for page in man3/*.3 man7/*.7; do
+for page in man1/*.1 man3/*.3 man7/*.7; do
+    [ -e "$page" ] || continue # no man1 in a build without the programs
     if [ $have_man = 1 ]; then
         out=$(MANWIDTH=80 man --warnings=w -E UTF-8 -l "$page" 2>&1 > /dev/null) ||
             out="man -l failed${out:+: $out}"
