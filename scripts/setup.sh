@@ -13,8 +13,9 @@ packages=(cmake gcc gfortran make pkg-config libpng-dev zlib1g-dev libcmocka-dev
           libcairo2-dev poppler-utils librsvg2-bin ghostscript # cairo: the PDF/SVG/PS/EPS
           # workstations; their tests open the files in pdftoppm, rsvg-convert and gs
           fonts-dejavu-core # the font of STRING and CHAR precision text in vector output
-          libncarg-dev libncarg-bin ncl-ncarg) # NCAR Graphics (optional): its examples
-          # on the NCAR profile vs NCAR's own GKS and ctrans (tests/ncarg, docs/NCAR.md)
+          libncarg-dev libncarg-bin ncl-ncarg libbz2-dev) # NCAR Graphics (optional): its
+          # examples on the NCAR profile vs NCAR's own GKS and ctrans (tests/ncarg,
+          # docs/NCAR.md); NCAR's ncargf77 links -lbz2, which no package here brings
 if [ "${1:-}" = --deb ]; then
     packages+=(debhelper dpkg-dev fakeroot lintian mmdebstrap)
 fi
