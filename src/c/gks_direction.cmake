@@ -7,6 +7,9 @@
 #     it needs comes through ws_driver.h. Of core/pipe a driver drawing text itself may use
 #     the text layout (gks_text_layout.h, no GKS state); the pipeline's other headers
 #     include the core's and do not compile there;
+#   - a driver never sees another driver: of the folders below ws it sees ws/render, the
+#     render layer every drawing workstation shares, and ws/mf, the metafile format; the
+#     render layer sees no driver (the drivers are its output sinks);
 #   - the core (core, core/api, core/pipe, core/store) never sees a renderer or a driver:
 #     raster, ws/<driver>; it reaches the drivers through the driver table (ws) and TEXT's
 #     glyphs in font; ws/mf, the metafile format, is shared;
@@ -20,6 +23,9 @@ function(gks_direction_error out rel)
     set(why "")
     if(rel MATCHES "^ws(/|$)" AND d MATCHES "^core(/api|/store)?$")
       set(why "a driver sees ws/, base/ and the renderers")
+    elseif(rel MATCHES "^ws/" AND d MATCHES "^ws/" AND NOT d STREQUAL rel AND
+           NOT d MATCHES "^ws/(render|mf)$")
+      set(why "a driver sees the render layer ws/render and ws/mf, never another driver")
     elseif(rel MATCHES "^core(/|$)" AND (d STREQUAL "raster" OR
                                          (d MATCHES "^ws/" AND NOT d STREQUAL "ws/mf")))
       set(why "the core reaches the drivers through ws/ and the glyphs in font/")

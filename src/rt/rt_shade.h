@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * rt_shade.h -- local shading shared by the tracer (rt_render.c) and the classic HLHSR modes
- * (src/c/ws/png/ws_shade.c), so that a preview and the traced picture agree where there are
+ * (src/c/ws/render/ws_shade.c), so that a preview and the traced picture agree where there are
  * no shadows or global effects: the Newell normal of a polygon and the per-light terms of the
  * PHIGS PLUS reflectance equations (gksrt.h, comment above rt_render). Includes no GKS header.
  */

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_png_render.h -- the classic renderers of the PNG workstation (internal): the view
- * pipeline of a primitive (NDC3 -> NPC3 -> clip -> DC, per view cached for the frame),
+ * ws_png_render.h -- the classic renderers of the render layer (internal; the PNG, X11
+ * and cairo workstations draw with them): the view pipeline of a primitive (NDC3 -> NPC3
+ * -> clip -> DC, per view cached for the frame),
  * every primitive with its attributes, and the HLHSR modes none, hidden line, z-buffer
  * and painter on top of the raster module (src/c/raster).
  *
