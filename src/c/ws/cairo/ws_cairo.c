@@ -6,8 +6,8 @@
  * (0.210 x 0.297 m), DC unit = metre; the page of a frame is the current workstation
  * viewport. Behaviour: docs/WORKSTATIONS.md.
  *
- * The frame goes through the PNG workstation's view pipeline and renderers
- * (ws_png_render.h) at a resolution of GESC_VEC_RESOLUTION dots per inch (default 300),
+ * The frame goes through the render layer's view pipeline and renderers (ws_render.h,
+ * ws_png_render.h) at a resolution of GESC_VEC_RESOLUTION dots per inch (default 300),
  * so that every transformation, clip and HLHSR decision is the PNG workstation's:
  *  - HLHSR none and painter: every primitive retained and written as vectors in the
  *    mode's order (ws_png_render_walk): lines with their types and widths, markers, text
@@ -37,8 +37,7 @@
 #include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
-#include "ws_png_render.h"
-#include "ws_raytrace.h"
+#include "ws_render.h"
 #include "ws_file.h"
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
@@ -140,10 +139,10 @@ typedef struct vec_ws {
     int written_any;
     int dpi, next_dpi;     /* resolution of rasterised parts; next_dpi from the next frame */
     png_render *vec;       /* retained primitives written as vectors */
-    png_render *ras;       /* z-buffer primitives drawn at once into fb */
+    ws_render *r;          /* z-buffer primitives drawn at once into fb (r->classic),
+                              areas recorded for ray tracing (r->rt) */
     gks_raster_fb *fb;     /* raster picture of z-buffer / ray tracing */
     int raster_used;       /* fb or rt hold part of the frame */
-    ws_rt *rt;
     vec_snap snap;         /* the frame as of its last UPDATE */
     cairo_surface_t *doc;  /* PDF/PS: the document */
     vec_buf ps;            /* PS: the document's bytes (creation date fixed at CLOSE) */
@@ -180,7 +179,7 @@ static void apply_dpi(vec_ws *v)
     v->dpi = v->next_dpi;
     double ppm = px_per_m(v);
     ws_png_render_set_scale(v->vec, ppm, VEC_UNIT_M * ppm);
-    ws_png_render_set_scale(v->ras, ppm, VEC_UNIT_M * ppm);
+    ws_png_render_set_scale(v->r->classic, ppm, VEC_UNIT_M * ppm);
 }
 
 static int vec_open_fmt(gks_ws *ws, vec_format fmt)
@@ -191,13 +190,11 @@ static int vec_open_fmt(gks_ws *ws, vec_format fmt)
     v->fmt = fmt;
     v->base = gks_ws_file_default_base(ws, vec_ext[fmt]);
     v->vec = ws_png_render_new();
-    v->ras = ws_png_render_new();
-    v->rt = ws_rt_new();
-    if (!v->base || !v->vec || !v->ras || !v->rt) {
+    v->r = ws_render_new();
+    if (!v->base || !v->vec || !v->r) {
         gks_free(v->base);
         ws_png_render_free(v->vec);
-        ws_png_render_free(v->ras);
-        ws_rt_free(v->rt);
+        ws_render_free(v->r);
         gks_free(v);
         return 300;
     }
@@ -816,14 +813,14 @@ static int raster_image(gks_ws *ws, vec_ws *v, cairo_surface_t **out)
     *out = NULL;
     double wsm[4][4];
     /* NPC3 -> raster pixels and depth: the ray tracer's wsm, as ws_png.c's */
-    if (ws_rt_count(v->rt) > 0 && gks_ws_pixel_matrix(ws, px_per_m(v), wsm) == 0) {
-        int e = ws_rt_render(v->rt, ws, (const double (*)[4])wsm, v->fb);
+    if (ws_rt_count(v->r->rt) > 0 && gks_ws_pixel_matrix(ws, px_per_m(v), wsm) == 0) {
+        int e = ws_rt_render(v->r->rt, ws, (const double (*)[4])wsm, v->fb);
         if (e)
             return e;
-        ws_rt_reset(v->rt); /* traced into fb once: later updates keep the picture */
+        ws_rt_reset(v->r->rt); /* traced into fb once: later updates keep the picture */
     }
     gks_raster_fb *pic;
-    if (ws_png_render_compose_base(v->ras, ws, v->fb, &pic))
+    if (ws_png_render_compose_base(v->r->classic, ws, v->fb, &pic))
         return 300;
     cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic->width,
                                                       pic->height);
@@ -914,7 +911,7 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
     int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
     vec_flush(&d);
     if (!e)
-        e = ws_png_render_walk(v->ras, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
+        e = ws_png_render_walk(v->r->classic, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
     vec_flush(&d);
     gks_free(d.tmp);
     gks_free(d.utf8);
@@ -1053,9 +1050,8 @@ static int vec_clear(gks_ws *ws)
     }
     v->dirty = 0;
     v->raster_used = 0;
-    ws_rt_reset(v->rt);
+    ws_render_reset(v->r);
     ws_png_render_reset(v->vec);
-    ws_png_render_reset(v->ras);
     v->n_texts = v->n_glyphs = v->n_clip = 0;
     if (v->next_dpi != v->dpi)
         apply_dpi(v);
@@ -1121,9 +1117,8 @@ static void vec_close(gks_ws *ws)
     if (v->snap.img)
         cairo_surface_destroy(v->snap.img);
     gks_raster_fb_free(v->fb);
-    ws_rt_free(v->rt);
+    ws_render_free(v->r);
     ws_png_render_free(v->vec);
-    ws_png_render_free(v->ras);
     for (int i = 0; i < v->n_faces; i++)
         cairo_font_face_destroy(v->faces[i].face);
     if (v->real.face)
@@ -1139,18 +1134,17 @@ static void vec_close(gks_ws *ws)
 static int vec_primitive(gks_ws *ws, const gks_prim *prim)
 {
     vec_ws *v = ws->priv;
-    int mode = ws->hlhsr_mode, e;
-    int area = prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY;
-    if (mode == GHLHSR_RAYTRACE && area) {
-        if (!framebuffer(ws, v))
-            return 300;
-        e = ws_rt_record(v->rt, ws, prim);
-        v->raster_used |= !e;
-    } else if (mode == GHLHSR_ZBUFFER && prim->attrs.hlhsr_id == 0) {
+    /* The document's own choice: what the render layer traces (ws_render_route) and the
+     * z-buffer's primitives go into the raster picture fb; everything else is kept and
+     * written as vectors. */
+    int raster = ws_render_route(ws, prim) == WS_ROUTE_TRACE ||
+                 (ws->hlhsr_mode == GHLHSR_ZBUFFER && prim->attrs.hlhsr_id == 0);
+    int e;
+    if (raster) {
         gks_raster_fb *fb = framebuffer(ws, v);
         if (!fb)
             return 300;
-        e = ws_png_render_prim(v->ras, ws, fb, prim);
+        e = ws_render_prim(v->r, ws, fb, prim);
         v->raster_used |= !e;
     } else {
         e = ws_png_render_keep(v->vec, ws, prim);
@@ -1168,7 +1162,7 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         if (e)
             return e;
         if (!v->dirty && !v->frame_written && !v->raster_used &&
-            ws_png_render_retained(v->vec) == 0 && ws_png_render_retained(v->ras) == 0) {
+            ws_png_render_retained(v->vec) == 0 && ws_png_render_retained(v->r->classic) == 0) {
             apply_dpi(v); /* nothing drawn yet: this frame already */
             gks_raster_fb_free(v->fb);
             v->fb = NULL;
@@ -1177,7 +1171,7 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     }
     /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
     int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
-    return ws_rt_file_escape(v->rt, ws, func_id, in, out, fr, vec_ext[v->fmt], &v->base);
+    return ws_rt_file_escape(v->r->rt, ws, func_id, in, out, fr, vec_ext[v->fmt], &v->base);
 }
 
 /* --- TEXT as text: the driver entry ------------------------------------------------------ */

@@ -25,8 +25,7 @@
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_driver.h"
-#include "ws_png_render.h"
-#include "ws_raytrace.h"
+#include "ws_render.h"
 #include "ws_file.h"
 #include "ws_mpi.h"
 #include "gks_par.h"
@@ -52,8 +51,7 @@ typedef struct png_ws {
     int frame_written;  /* the current frame has a file */
     int ss;             /* supersampling factor of the next framebuffer (anti-aliasing) */
     int compression;    /* PNG compression: GKS_RASTER_PNG_FAST or a zlib level 1..9 */
-    ws_rt *rt;          /* FILL AREAs recorded in HLHSR mode GHLHSR_RAYTRACE */
-    png_render *render; /* view pipelines, retained primitives, HLHSR (ws_png_render.h) */
+    ws_render *r;       /* the classic renderer and the tracer's recording (ws_render.h) */
     int mpi_frames;     /* MPI run: whole frames to ranks (1) or tiles of each frame (0) */
 } png_ws;
 
@@ -80,12 +78,10 @@ static int png_open(gks_ws *ws)
     if (!p)
         return 300;
     p->base = png_base(ws);
-    p->rt = ws_rt_new();
-    p->render = ws_png_render_new();
-    if (!p->base || !p->rt || !p->render) {
+    p->r = ws_render_new();
+    if (!p->base || !p->r) {
         gks_free(p->base);
-        ws_rt_free(p->rt);
-        ws_png_render_free(p->render);
+        ws_render_free(p->r);
         gks_free(p);
         return 300;
     }
@@ -101,8 +97,7 @@ static void png_close(gks_ws *ws)
 {
     png_ws *p = ws->priv;
     gks_raster_fb_free(p->fb);
-    ws_rt_free(p->rt);
-    ws_png_render_free(p->render);
+    ws_render_free(p->r);
     gks_free(p->base);
     gks_free(p);
     ws->priv = NULL;
@@ -147,8 +142,7 @@ static int png_clear(gks_ws *ws)
         p->frame_written = 0;
     }
     p->dirty = 0;
-    ws_rt_reset(p->rt);
-    ws_png_render_reset(p->render);
+    ws_render_reset(p->r);
     if (p->fb && p->fb->ss == p->ss) { /* same sampling: cleared in place if the size */
         gks_raster_fb *fb = p->fb;      /* is unchanged (framebuffer() checks it) */
         int w, h;
@@ -195,11 +189,11 @@ static int png_update(gks_ws *ws)
        and only one rank writes it */
     const int writes = ws_mpi_writes(p->mpi_frames, p->frame);
     const int shares = ws_mpi_shares_tiles(p->mpi_frames);
-    ws_rt_set_share_tiles(p->rt, shares);
+    ws_rt_set_share_tiles(p->r->rt, shares);
     int fault = 0;
     double wsm[4][4];
-    if ((writes || shares) && ws_rt_count(p->rt) > 0 && ws_matrix(ws, wsm) == 0) {
-        int e = ws_rt_render(p->rt, ws, (const double (*)[4])wsm, fb);
+    if ((writes || shares) && ws_rt_count(p->r->rt) > 0 && ws_matrix(ws, wsm) == 0) {
+        int e = ws_rt_render(p->r->rt, ws, (const double (*)[4])wsm, fb);
         if (e == 305)
             fault = e; /* a lost rank: rank 0's frame is complete all the same */
         else if (e)
@@ -212,7 +206,7 @@ static int png_update(gks_ws *ws)
         return fault;
     }
     gks_raster_fb *pic;
-    if (ws_png_render_compose(p->render, ws, fb, &pic))
+    if (ws_png_render_compose(p->r->classic, ws, fb, &pic))
         return 300;
     char *path;
     /* a later frame's name, or one an ESCAPE set, may be another workstation's file */
@@ -245,15 +239,7 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
-    if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
-        (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY)) {
-        int e = ws_rt_record(p->rt, ws, prim); /* 300, or 308 (coordinate range) */
-        if (e)
-            return e;
-        p->dirty = 1;
-        return 0;
-    }
-    int e = ws_png_render_prim(p->render, ws, fb, prim);
+    int e = ws_render_prim(p->r, ws, fb, prim); /* 300, or 308 (coordinate range) */
     if (!e)
         p->dirty = 1;
     return e;
@@ -266,8 +252,8 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         int e = gks_ws_escape_int(in, 1, 4, &p->ss);
         if (e)
             return e;
-        if (!p->dirty && !p->frame_written && ws_png_render_retained(p->render) == 0 &&
-            ws_rt_count(p->rt) == 0) { /* nothing drawn yet: this frame already */
+        if (!p->dirty && !p->frame_written && ws_png_render_retained(p->r->classic) == 0 &&
+            ws_rt_count(p->r->rt) == 0) { /* nothing drawn yet: this frame already */
             gks_raster_fb_free(p->fb);
             p->fb = NULL;
             return framebuffer(ws) ? 0 : 300;
@@ -278,7 +264,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         return gks_ws_escape_int(in, GKS_RASTER_PNG_FAST, GKS_RASTER_PNG_LEVEL_MAX,
                                  &p->compression);
     }
-    return ws_rt_file_escape(p->rt, ws, func_id, in, out, p->frame, ".png", &p->base);
+    return ws_rt_file_escape(p->r->rt, ws, func_id, in, out, p->frame, ".png", &p->base);
 }
 
 /* Pixel readback: the composed picture (retained primitives drawn over the immediate
@@ -287,7 +273,7 @@ static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
 {
     png_ws *p = ws->priv;
     gks_raster_fb *fb = framebuffer(ws), *pic;
-    if (!fb || ws_png_render_compose(p->render, ws, fb, &pic))
+    if (!fb || ws_png_render_compose(p->r->classic, ws, fb, &pic))
         return 300;
     unsigned char *row = gks_alloc_array((size_t)pic->width, 3);
     if (!row)

@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_raytrace.c -- HLHSR mode GHLHSR_RAYTRACE (paper sections 3 and 5) for the PNG
- * workstation. Area primitives (FILL AREA, FILL AREA SET, CELL ARRAY) are not rasterized but
- * recorded in VRC3 (the NDC3 points after the view orientation matrix of their view); when
- * the frame is written they are traced with gksrt, view by view in ascending view index
- * order: the camera comes from the view's mapping matrix, the display volume is the view clip
- * volume (where the indicators are on) intersected with the workstation window, and the
- * traced pixels are composed over the framebuffer by their sample coverage.
- * POLYLINEs, POLYMARKERs and TEXT are annotations, rasterized as in mode 0 and ignored by the
- * tracer (a traced surface covers them). Lights the tracer rejects (a spot light of spread 0,
- * a zero direction) are left out. Documentation: docs/RAYTRACING.md.
+ * ws_raytrace.c -- HLHSR mode GHLHSR_RAYTRACE (paper sections 3 and 5) for the drawing
+ * workstations (render layer, ws_render.h). Area primitives (FILL AREA, FILL AREA SET, CELL
+ * ARRAY) are not rasterized but recorded in VRC3 (the NDC3 points after the view orientation
+ * matrix of their view); when the frame is written they are traced with gksrt, view by view in
+ * ascending view index order: the camera comes from the view's mapping matrix, the display
+ * volume is the view clip volume (where the indicators are on) intersected with the
+ * workstation window, and the traced pixels are composed over the framebuffer by their sample
+ * coverage. POLYLINEs, POLYMARKERs and TEXT are annotations, rasterized as in mode 0 and
+ * ignored by the tracer (a traced surface covers them). Lights the tracer rejects (a spot
+ * light of spread 0, a zero direction) are left out. Documentation: docs/RAYTRACING.md.
  */
 #include "ws_raytrace.h"
 #include "ws_vrc.h"

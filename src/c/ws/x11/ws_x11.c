@@ -2,10 +2,10 @@
 /*
  * ws_x11.c -- the interactive X11 workstation (type GWS_TYPE_X11, category OUTIN, raster,
  * display space 800 x 800 pixels, DC unit = one pixel, y up). Output goes through the
- * PNG workstation's renderers (ws_png_render.h for the classic HLHSR modes, ws_raytrace.h
- * for ray tracing) into a framebuffer that UPDATE WORKSTATION (and every input wait)
- * shows in the window; ray-traced views appear tile by tile as they are traced; an Expose
- * event redraws from the shown picture.
+ * render layer (ws_render.h: the classic HLHSR modes and ray tracing, routed there) into a
+ * framebuffer that UPDATE WORKSTATION (and every input wait) shows in the window: the
+ * window is the render layer's output sink. Ray-traced views appear tile by tile as they
+ * are traced; an Expose event redraws from the shown picture.
  *
  * Connection identifier: an X display name ("" or a Fortran unit number: $DISPLAY).
  * No display: OPEN WORKSTATION reports 26 and nothing else happens. The window is opened
@@ -42,8 +42,7 @@
 #include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
-#include "ws_png_render.h"
-#include "ws_raytrace.h"
+#include "ws_render.h"
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/cursorfont.h>
@@ -90,8 +89,7 @@ typedef struct x11_ws {
     XImage *img;              /* the picture shown (window size, 32-bit TrueColor) */
     int w, h;
     gks_raster_fb *fb;
-    png_render *render;
-    ws_rt *rt;
+    ws_render *r; /* the classic renderer and the tracer's recording */
     int dirty;
     double pts[GKS_IN_STROKE_MAX][3]; /* stroke being entered / the last raw event */
     int npts;
@@ -461,12 +459,10 @@ static int x11_open(gks_ws *ws)
     x->ws = ws;
     x->dpy = dpy;
     x->w = x->h = X11_SIZE;
-    x->render = ws_png_render_new();
-    x->rt = ws_rt_new();
+    x->r = ws_render_new();
     char *data = gks_calloc_array((size_t)x->w * (size_t)x->h, 4);
-    if (!x->render || !x->rt || !data) {
-        ws_png_render_free(x->render);
-        ws_rt_free(x->rt);
+    if (!x->r || !data) {
+        ws_render_free(x->r);
         gks_free(data);
         gks_free(x);
         XCloseDisplay(dpy);
@@ -520,8 +516,7 @@ static void x11_close(gks_ws *ws)
     XCloseDisplay(x->dpy);
     x11_unregister(x);
     gks_raster_fb_free(x->fb);
-    ws_png_render_free(x->render);
-    ws_rt_free(x->rt);
+    ws_render_free(x->r);
     gks_free(x);
     ws->priv = NULL;
 }
@@ -531,8 +526,7 @@ static int x11_clear(gks_ws *ws)
     x11_ws *x = ws->priv;
     if (x->gone)
         return 303;
-    ws_rt_reset(x->rt);
-    ws_png_render_reset(x->render);
+    ws_render_reset(x->r);
     gks_raster_fb_free(x->fb);
     x->fb = NULL;
     x->dirty = 1;
@@ -588,14 +582,14 @@ static int x11_update(gks_ws *ws)
     if (!fb)
         return 300;
     double m[4][4];
-    if (ws_rt_count(x->rt) > 0 && x11_ws_matrix(ws, m) == 0) {
-        ws_rt_set_tile_fn(x->rt, x11_tile, ws);
-        int e = ws_rt_render(x->rt, ws, (const double (*)[4])m, fb);
+    if (ws_rt_count(x->r->rt) > 0 && x11_ws_matrix(ws, m) == 0) {
+        ws_rt_set_tile_fn(x->r->rt, x11_tile, ws);
+        int e = ws_rt_render(x->r->rt, ws, (const double (*)[4])m, fb);
         if (e)
             return e;
-        ws_rt_reset(x->rt); /* traced into fb: not again at the next update */
+        ws_rt_reset(x->r->rt); /* traced into fb: not again at the next update */
     }
-    if (ws_png_render_compose(x->render, ws, fb, &pic))
+    if (ws_png_render_compose(x->r->classic, ws, fb, &pic))
         return 300;
     x->dirty = 0;
     return x11_show(ws, pic);
@@ -610,10 +604,7 @@ static int x11_primitive(gks_ws *ws, const gks_prim *prim)
     if (!fb)
         return 300;
     x->dirty = 1;
-    if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
-        (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY))
-        return ws_rt_record(x->rt, ws, prim) ? 300 : 0;
-    return ws_png_render_prim(x->render, ws, fb, prim);
+    return ws_render_prim(x->r, ws, fb, prim);
 }
 
 static int x11_message(gks_ws *ws, const char *msg)
@@ -631,7 +622,7 @@ static int x11_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
 {
     x11_ws *x = ws->priv;
     if (func_id <= GESC_RT_CLIP_SECONDARY && func_id >= GESC_RT_SPD)
-        return ws_rt_escape(x->rt, func_id, in, out);
+        return ws_rt_escape(x->r->rt, func_id, in, out);
     return 180;
 }
 

@@ -1,0 +1,51 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * ws_render.c -- the routing by HLHSR mode between the classic renderer and the tracer,
+ * for every drawing workstation (ws_render.h).
+ */
+#include "ws_render.h"
+#include "gks_alloc.h"
+
+ws_route ws_render_route(const gks_ws *ws, const gks_prim *prim)
+{
+    if (ws->hlhsr_mode == GHLHSR_RAYTRACE &&
+        (prim->kind == GKS_PRIM_FILL_AREA || prim->kind == GKS_PRIM_CELL_ARRAY))
+        return WS_ROUTE_TRACE;
+    return WS_ROUTE_CLASSIC;
+}
+
+ws_render *ws_render_new(void)
+{
+    ws_render *r = gks_calloc_array(1, sizeof *r);
+    if (!r)
+        return NULL;
+    r->rt = ws_rt_new();
+    r->classic = ws_png_render_new();
+    if (!r->classic || !r->rt) {
+        ws_render_free(r);
+        return NULL;
+    }
+    return r;
+}
+
+void ws_render_free(ws_render *r)
+{
+    if (!r)
+        return;
+    ws_png_render_free(r->classic);
+    ws_rt_free(r->rt);
+    gks_free(r);
+}
+
+void ws_render_reset(ws_render *r)
+{
+    ws_rt_reset(r->rt);
+    ws_png_render_reset(r->classic);
+}
+
+int ws_render_prim(ws_render *r, gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
+{
+    if (ws_render_route(ws, prim) == WS_ROUTE_TRACE)
+        return ws_rt_record(r->rt, ws, prim);
+    return ws_png_render_prim(r->classic, ws, fb, prim);
+}
