@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # check_docs.sh ROOT -- checks that keep the documents true to the code (issue 37):
-#  1. every workstation type of the driver list (src/c/core/gks_context.c, driver_list)
+#  1. every workstation type of the list of drivers (src/c/ws/ws_drivers.def)
 #     has a C constant GWS_TYPE_* in include/gks.h and a Fortran constant in
 #     bindings/fortran/gks3d_par.inc, and appears as a table row "| N | `C` | `F` |" in
 #     README.md and in docs/WORKSTATIONS.md;
@@ -22,12 +22,12 @@ fail=0
 bad() { echo "$*"; fail=1; }
 
 # --- 1. workstation types ---------------------------------------------------------
-# The drivers in driver_list, then each driver's type number: its source defines it
+# The drivers in the list's rows, then each driver's type number: its source defines it
 # either as ".type = GWS_TYPE_X" or through a macro call naming the driver and
 # GWS_TYPE_X (e.g. CAIRO_DRIVER(gks_ws_pdf_driver, GWS_TYPE_PDF, ...)).
-drivers=$(sed -n '/driver_list\[\] *= *{/,/^};/p' src/c/core/gks_context.c |
+drivers=$(grep -E '^GKS_WS_DRIVER\(' src/c/ws/ws_drivers.def |
           grep -oE 'gks_ws_[a-z0-9_]+_driver')
-[ -n "$drivers" ] || bad "src/c/core/gks_context.c: driver_list not found"
+[ -n "$drivers" ] || bad "src/c/ws/ws_drivers.def: no GKS_WS_DRIVER row found"
 for d in $drivers; do
     src=$(grep -lE "gks_ws_driver +$d\b|^[A-Z_]+\( *$d\b" src/c/ws/*/*.c | head -n 1)
     if [ -z "$src" ]; then bad "$d: no definition found under src/c/ws"; continue; fi

@@ -8,24 +8,25 @@
 #include "ws_driver.h"
 #include "gks_legacy.h"
 
-static const gks_ws_driver *const driver_list[] = {
-    &gks_ws_null_driver,
-    &gks_ws_png_driver,
-    &gks_ws_png_large_driver,
-    &gks_ws_wiss_driver,
-    &gks_ws_mo_driver,
-    &gks_ws_mi_driver,
+/* The drivers of the list ws_drivers.def, in its order; GKS_WS_WHEN_<when> keeps a row
+ * (its table's address and a comma) of an optional dependency only when the dependency is
+ * built. */
+#define GKS_WS_WHEN_ALWAYS(x) x,
 #ifdef GKS_HAVE_CAIRO
-    &gks_ws_pdf_driver,
-    &gks_ws_svg_driver,
-    &gks_ws_ps_driver,
-    &gks_ws_eps_driver,
+#define GKS_WS_WHEN_CAIRO(x) x,
+#else
+#define GKS_WS_WHEN_CAIRO(x)
 #endif
 #ifdef GKS_HAVE_X11
-    &gks_ws_x11_driver, /* GKS_WITH_X11 */
+#define GKS_WS_WHEN_X11(x) x,
+#else
+#define GKS_WS_WHEN_X11(x)
 #endif
-    &gks_ws_png_output_driver, /* last: the earlier types keep their list positions */
+#define GKS_WS_DRIVER(folder, table, when) GKS_WS_WHEN_##when(&table)
+static const gks_ws_driver *const driver_list[] = {
+#include "ws_drivers.def"
 };
+#undef GKS_WS_DRIVER
 
 static const gks_desc_table desc_table = {
     .level = GLEVEL_2C, /* full output, segments, WISS; REQUEST, SAMPLE and EVENT input */

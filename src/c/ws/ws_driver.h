@@ -279,21 +279,11 @@ struct gks_ws_driver {
     struct gksm_in *(*item_reader)(gks_ws *ws, int *allow_escapes);
 };
 
-/* The compiled-in drivers. */
-extern const gks_ws_driver gks_ws_null_driver;
-extern const gks_ws_driver gks_ws_png_driver;
-extern const gks_ws_driver gks_ws_png_large_driver;
-extern const gks_ws_driver gks_ws_png_output_driver;
-extern const gks_ws_driver gks_ws_x11_driver; /* only with GKS_WITH_X11 */
-extern const gks_ws_driver gks_ws_wiss_driver;
-extern const gks_ws_driver gks_ws_mo_driver;
-extern const gks_ws_driver gks_ws_mi_driver;
-#ifdef GKS_HAVE_CAIRO
-extern const gks_ws_driver gks_ws_pdf_driver;
-extern const gks_ws_driver gks_ws_svg_driver;
-extern const gks_ws_driver gks_ws_ps_driver;
-extern const gks_ws_driver gks_ws_eps_driver;
-#endif
+/* The drivers of the list ws_drivers.def (those of an optional dependency are defined
+ * only when it is built, and listed only then). */
+#define GKS_WS_DRIVER(folder, table, when) extern const gks_ws_driver table;
+#include "ws_drivers.def"
+#undef GKS_WS_DRIVER
 /* gks_ws_host.file_claim of ws's core. */
 static inline int gks_ws_file_claim(gks_ws *ws, const char *path)
 {
