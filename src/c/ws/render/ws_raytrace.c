@@ -1012,16 +1012,15 @@ static int all_background(const gks_raster_fb *fb, int ix0, int ix1, int iy0, in
 
 static float clampf(double v, double hi) { return !(v > 0) ? 0.0f : v > hi ? (float)hi : (float)v; }
 
-/* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
- * sets *traced when the tracer ran. Returns 0 or 300. */
-static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
-                       gks_raster_fb *fb, rt_stats *st, int *traced, int *fault)
+/* The pixels of view vi: its display volume's rectangle of fb, rounded to whole pixels,
+ * px = { ix0, ix1, iy0, iy1 }, and the camera through them. 0: nothing of the view is
+ * visible (empty volume or rectangle, singular mapping). */
+static int view_pixels(const gks_ws *ws, const Gview_rep3 *v, const double wsm[4][4],
+                       const gks_raster_fb *fb, int px[4], rt_camera *cam)
 {
-    const Gview_rep3 *v = &ws->views[vi];
     double box[6];
     if (!display_volume(ws, v, box))
         return 0;
-    /* Pixel rectangle covered by the display volume, rounded to whole pixels. */
     double lo[3], hi[3];
     gks_xform_point(wsm, (const double[3]){ box[0], box[2], box[4] }, lo);
     gks_xform_point(wsm, (const double[3]){ box[1], box[3], box[5] }, hi);
@@ -1036,10 +1035,54 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     double sx = (box[1] - box[0]) / (hi[0] - lo[0]), sy = (box[3] - box[2]) / (hi[1] - lo[1]);
     double nb[6] = { box[0] + (ix0 - lo[0]) * sx, box[0] + (ix1 - lo[0]) * sx,
                      box[2] + (iy0 - lo[1]) * sy, box[2] + (iy1 - lo[1]) * sy, box[4], box[5] };
-    int w = ix1 - ix0, h = iy1 - iy0;
+    px[0] = ix0;
+    px[1] = ix1;
+    px[2] = iy0;
+    px[3] = iy1;
+    return rt_camera_from_view(cam, v->map_matrix, nb, ix1 - ix0, iy1 - iy0) == RT_OK;
+}
+
+/* Composes the traced w x h pixels (rgb, rows top-first; cnt[k] of per sample rays hit)
+ * into fb's pixels [ix0, ix0 + w) x [iy1 - h, iy1). rt rows are top-first; framebuffer
+ * rows bottom-up, ss x ss samples per pixel. The traced colour T = a*H + (1-a)*bg for
+ * coverage a: the pixel becomes a*clamp(H) + (1-a)*F over the framebuffer's F (exact for
+ * unjittered samples). */
+static void compose_traced(gks_raster_fb *fb, const float *rgb, const unsigned short *cnt,
+                           int per, int ix0, int iy1, int w, int h, const double bg[3])
+{
+    for (int row = 0; row < h; row++) {
+        int j = iy1 - 1 - row;
+        for (int c = 0; c < w; c++) {
+            size_t k = (size_t)row * w + c;
+            if (!cnt[k])
+                continue;
+            double a = (double)cnt[k] / per;
+            float ah[3];
+            for (int q = 0; q < 3; q++)
+                ah[q] = clampf(rgb[3 * k + q] - (1 - a) * bg[q], a);
+            int i = ix0 + c;
+            for (int sj = 0; sj < fb->ss; sj++)
+                for (int si = 0; si < fb->ss; si++) {
+                    float *d = fb->rgb + 3 * ((size_t)(j * fb->ss + sj) * fb->w +
+                                              (size_t)(i * fb->ss + si));
+                    for (int q = 0; q < 3; q++)
+                        d[q] = cnt[k] == per ? ah[q] : clampf(ah[q] + (1 - a) * d[q], 1);
+                }
+        }
+    }
+}
+
+/* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
+ * sets *traced when the tracer ran. Returns 0 or 300. */
+static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4],
+                       gks_raster_fb *fb, rt_stats *st, int *traced, int *fault)
+{
+    int px[4];
     rt_camera cam;
-    if (rt_camera_from_view(&cam, v->map_matrix, nb, w, h) != RT_OK)
-        return 0; /* singular mapping: nothing visible */
+    if (!view_pixels(ws, &ws->views[vi], wsm, fb, px, &cam))
+        return 0;
+    const int ix0 = px[0], ix1 = px[1], iy0 = px[2], iy1 = px[3];
+    int w = ix1 - ix0, h = iy1 - iy0;
 
     rt_scene *sc = r->view[vi].sc;
     int err = prepare_scene(r, ws, vi, r->opts.clip_secondary ? &cam : NULL);
@@ -1107,31 +1150,8 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     }
     rt_stats_add(st, &s);
     *traced = 1;
-    if (!assemble)
-        goto done; /* the other ranks' pixels are rank 0's to compose */
-    /* rt rows are top-first; framebuffer rows bottom-up, ss x ss samples per pixel. The
-     * traced colour T = a*H + (1-a)*bg for coverage a: the pixel becomes a*clamp(H) + (1-a)*F
-     * over the framebuffer's F (exact for unjittered samples). */
-    for (int row = 0; row < h; row++) {
-        int j = iy1 - 1 - row;
-        for (int c = 0; c < w; c++) {
-            size_t k = (size_t)row * w + c;
-            if (!cnt[k])
-                continue;
-            double a = (double)cnt[k] / per;
-            float ah[3];
-            for (int q = 0; q < 3; q++)
-                ah[q] = clampf(rgb[3 * k + q] - (1 - a) * bg[q], a);
-            int i = ix0 + c;
-            for (int sj = 0; sj < fb->ss; sj++)
-                for (int si = 0; si < fb->ss; si++) {
-                    float *d = fb->rgb + 3 * ((size_t)(j * fb->ss + sj) * fb->w +
-                                              (size_t)(i * fb->ss + si));
-                    for (int q = 0; q < 3; q++)
-                        d[q] = cnt[k] == per ? ah[q] : clampf(ah[q] + (1 - a) * d[q], 1);
-                }
-        }
-    }
+    if (assemble) /* else the other ranks' pixels are rank 0's to compose */
+        compose_traced(fb, rgb, cnt, per, ix0, iy1, w, h, bg);
 done:
     gks_free(rgb);
     gks_free(cnt);
