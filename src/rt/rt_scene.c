@@ -256,8 +256,8 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
            as the commit makes it; a degenerate one (never traced) only takes its id */
         rt_prim pr;
         const int trc = rt_tri_prim(sc, xyz, (int)sc->nids, front_surface, back_surface, &pr);
-        if (trc < 0)
-            return -trc;
+        if (trc < 0) /* rt_prim_init's error (storage for the surface pair) */
+            return trc;
         if (trc) {
             if (!rt_big_grow(&sc->in_tri, sc->nintri + 1, sizeof(rt_tri)) ||
                 !rt_big_grow(&sc->in_tri_prim, sc->nintri + 1, sizeof(rt_prim)))
@@ -587,7 +587,7 @@ static inline int rt_tri_surely_sane(const double *v0, const double *v1, const d
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
    commit traces it (data set by the caller): 1, 0 if it is degenerate (never traced), or the
-   negated error of rt_prim_init. */
+   error of rt_prim_init (an RT_ERR_*, negative). */
 static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int back,
                        rt_prim *pr)
 {
@@ -599,7 +599,7 @@ static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int bac
     memset(pr, 0, sizeof *pr);
     const int rc = rt_prim_init(sc, pr, id, front, back);
     if (rc != RT_OK)
-        return -rc;
+        return rc;
     pr->kind = RT_KIND_TRI;
     return 1;
 }
