@@ -8,6 +8,7 @@
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
 
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +41,39 @@ static void rt_huge(void *p, size_t bytes)
 #endif
 }
 
+#ifdef GKS_FAULT_INJECTION
+/* The test build of the library (gksrt_test in gks3d_test, src/c/CMakeLists.txt) sends
+ * every allocation of the tracer through the failure injection of the library's funnel
+ * (src/c/base/gks_alloc.c): gks_alloc_fail_after(n) fails the nth allocation of either.
+ * Declared here, not included: gksrt includes no GKS header. */
+int gks_alloc_injected_failure(void);
+static atomic_long rt_allocs;   /* the tracer's share of gks_alloc_count() */
+static atomic_long rt_injected; /* the tracer's allocations made to fail */
+static int rt_injected_failure(void)
+{
+    atomic_fetch_add_explicit(&rt_allocs, 1, memory_order_relaxed);
+    if (!gks_alloc_injected_failure())
+        return 0;
+    atomic_fetch_add_explicit(&rt_injected, 1, memory_order_relaxed);
+    return 1;
+}
+#define RT_INJECTED_FAILURE() rt_injected_failure()
+
+/* Test hooks (test_rt_oom): the tracer's allocations so far, and how many of them failed
+ * by injection. */
+long rt_alloc_count(void)
+{
+    return atomic_load(&rt_allocs);
+}
+
+long rt_alloc_injected(void)
+{
+    return atomic_load(&rt_injected);
+}
+#else
+#define RT_INJECTED_FAILURE() 0
+#endif
+
 static int rt_mul_ok(size_t n, size_t size, size_t *out)
 {
     if (size != 0 && n > SIZE_MAX / size)
@@ -51,7 +85,7 @@ static int rt_mul_ok(size_t n, size_t size, size_t *out)
 void *rt_alloc_array(size_t n, size_t size)
 {
     size_t bytes;
-    if (!rt_mul_ok(n, size, &bytes))
+    if (!rt_mul_ok(n, size, &bytes) || RT_INJECTED_FAILURE())
         return NULL;
     void *p = malloc(bytes ? bytes : 1);
     rt_huge(p, bytes);
@@ -61,7 +95,7 @@ void *rt_alloc_array(size_t n, size_t size)
 void *rt_calloc_array(size_t n, size_t size)
 {
     size_t bytes;
-    if (!rt_mul_ok(n, size, &bytes))
+    if (!rt_mul_ok(n, size, &bytes) || RT_INJECTED_FAILURE())
         return NULL;
     if (bytes == 0)
         return calloc(1, 1);
@@ -73,7 +107,7 @@ void *rt_calloc_array(size_t n, size_t size)
 void *rt_realloc_array(void *p, size_t n, size_t size)
 {
     size_t bytes;
-    if (!rt_mul_ok(n, size, &bytes))
+    if (!rt_mul_ok(n, size, &bytes) || RT_INJECTED_FAILURE())
         return NULL;
     void *q = realloc(p, bytes ? bytes : 1);
     rt_huge(q, bytes);
@@ -125,6 +159,8 @@ int rt_big_grow(rt_big *b, size_t need, size_t es)
         return 0;
 #ifdef RT_BIG_MAP
     if (bytes > RT_HUGE_MIN) {
+        if (RT_INJECTED_FAILURE())
+            return 0;
         size_t res = bytes > RT_BIG_RESERVE / 2 ? 2 * bytes : RT_BIG_RESERVE;
         if (bytes <= SIZE_MAX / 2 && !b->map_bytes) { /* only one move: malloc -> mapping */
             void *q = mmap(NULL, res, PROT_READ | PROT_WRITE,

@@ -13,7 +13,7 @@
 static atomic_long fail_countdown; /* 0 = off; k = the kth allocation from now fails */
 static atomic_long alloc_count;
 
-static int injected_failure(void)
+int gks_alloc_injected_failure(void)
 {
     atomic_fetch_add_explicit(&alloc_count, 1, memory_order_relaxed);
     long c = atomic_load_explicit(&fail_countdown, memory_order_relaxed);
@@ -23,6 +23,7 @@ static int injected_failure(void)
             return c == 1;
     return 0;
 }
+#define injected_failure gks_alloc_injected_failure
 #else
 static int injected_failure(void) { return 0; }
 #endif

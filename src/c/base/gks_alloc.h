@@ -32,5 +32,9 @@ void gks_free(void *p);
  * from now fail (0 = never); gks_alloc_count() counts the allocations made so far. */
 void gks_alloc_fail_after(long n);
 long gks_alloc_count(void);
+/* Counts one allocation and says whether it is to fail (1) as gks_alloc_fail_after set:
+ * the funnel's own check, also called by the tracer's funnel (src/rt/rt_alloc.c) and the
+ * Fortran binding's (gks_f77_alloc) in their test builds. */
+int gks_alloc_injected_failure(void);
 #endif
 #endif
