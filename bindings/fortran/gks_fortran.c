@@ -81,8 +81,23 @@ void gks_f77_nomem(Gint fctid)
     gks_binding_error(300, fctid);
 }
 
+#ifdef GKS_FAULT_INJECTION
+/* The test build of the binding (gks3d_fortran_test, bindings/fortran/CMakeLists.txt)
+ * sends every allocation through the failure injection of the library's funnel
+ * (gks_alloc_fail_after, src/c/base/gks_alloc.c); the installed libraries have none. */
+#include "gks_alloc.h"
+static long f77_injected; /* the binding's allocations made to fail (test_f77_oom) */
+long gks_f77_alloc_injected(void) { return f77_injected; }
+#endif
+
 void *gks_f77_alloc(size_t n, size_t size)
 {
+#ifdef GKS_FAULT_INJECTION
+    if (gks_alloc_injected_failure()) {
+        f77_injected++;
+        return NULL;
+    }
+#endif
     if (size != 0 && n > SIZE_MAX / size)
         return NULL;
     return malloc(n * size > 0 ? n * size : 1);
