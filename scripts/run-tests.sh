@@ -9,6 +9,9 @@
 #                 peer compiles
 #   ./build-asan  Debug, -DGKS_WERROR=ON -DGKS_SANITIZE=ON (AddressSanitizer + UBSan,
 #                 LeakSanitizer on when it works here, see below)
+#   ./build-tsan  RelWithDebInfo, -DGKS_TSAN=ON (ThreadSanitizer): only the tests that run
+#                 threads (the tracer's pool, the recording worker and its failure paths,
+#                 the thread rule), built as their own targets so that the stage stays short
 # then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
 # Exits non-zero on any build or test failure. The tests are asked for explicitly
 # (-DBUILD_TESTING=ON, the Release build-min would not build them by default) and required
@@ -61,6 +64,18 @@ fi
 export ASAN_OPTIONS="detect_leaks=$detect_leaks"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j2
+
+echo "=== run-tests: ThreadSanitizer build (build-tsan), the threaded tests"
+unset ASAN_OPTIONS
+tsan_targets=(test_threads test_raytrace test_rt_oom test_rt_pool test_rt_render test_rt_tiles
+              test_rt_isect test_rt_smooth test_rt_cubes)
+tsan_tests='^(core_test_threads|core_test_raytrace|core_test_rt_oom|rt_(pool|render|tiles|isect|smooth|cubes))$'
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
+      -DGKS_TSAN=ON -DGKS_BUILD_BENCHMARKS=OFF -DGKS_BUILD_EXAMPLES=OFF "${tests[@]}"
+cmake --build build-tsan -j2 --target "${tsan_targets[@]}"
+# halt_on_error: the first data race fails the test (exit code 66).
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" \
+    ctest --test-dir build-tsan --output-on-failure --no-tests=error -j2 -R "$tsan_tests"
 
 echo "=== run-tests: fuzzing the metafile reader (libFuzzer, ${FUZZ_SECONDS:-30} s)"
 scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
