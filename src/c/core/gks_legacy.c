@@ -8,7 +8,6 @@
 #include "gks_legacy.h"
 #include "gks_alloc.h"
 #include "gks_binding.h"
-#include "gks_ws.h"
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -142,9 +141,9 @@ static char *ncar_record(const Gescape_in_data *in, int *nomem)
     return s;
 }
 
-int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, gks_ws **pause_ws)
+int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, int *pause_ws_id)
 {
-    *pause_ws = NULL;
+    *pause_ws_id = -1;
     int nomem;
     char *rec = ncar_record(in, &nomem);
     if (!rec)
@@ -156,10 +155,12 @@ int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, gks_ws **pause_ws
     }
     int id;
     const char *p = rec;
-    if (parse_num(&p, &id) == 0 && *p == '\0')
-        *pause_ws = gks_ws_lookup(id);
+    const int ok = parse_num(&p, &id) == 0 && *p == '\0';
     gks_free(rec);
-    return *pause_ws ? 0 : 182;
+    if (!ok)
+        return 182;
+    *pause_ws_id = id;
+    return 0;
 }
 
 char *gks_legacy_take_file_name(int writes_file)

@@ -21,12 +21,12 @@ int gks_ws_type_map(int ws_type);
 Gasf gks_legacy_asf(void);
 
 /* ESCAPE GESC_NCAR_FILE_NAME / GESC_NCAR_PAUSE (gks.h) with NCAR's record in
- * in->escape_r1: 0, or the error to report (182: record empty or absent, or naming no
- * open workstation; 300). The name is kept until the next OPEN WORKSTATION of a file
- * workstation (or OPEN GKS). For the pause, *pause_ws = the workstation named (the
- * caller updates it), else NULL. */
-struct gks_ws;
-int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, struct gks_ws **pause_ws);
+ * in->escape_r1: 0, or the error to report (182: record empty, absent or, for the
+ * pause, not a number; 300). The name is kept until the next OPEN WORKSTATION of a file
+ * workstation (or OPEN GKS). For the pause, *pause_ws_id = the workstation identifier
+ * the record names (the caller looks it up, 182 if it is not open, and updates it), else
+ * -1. */
+int gks_legacy_escape(Gint func_id, const Gescape_in_data *in, int *pause_ws_id);
 
 /* At OPEN WORKSTATION: the name a GESC_NCAR_FILE_NAME escape left, for a workstation that
  * writes a file (writes_file != 0), else NULL. The caller owns (gks_free) the string,

@@ -9,7 +9,7 @@
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
-#include "gks_store.h"
+#include "gks_result_mem.h"
 #include "gks_mf_record.h"
 #include "gks_par.h"
 #include "gks_seg_store.h"
@@ -379,8 +379,11 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
         return;
     }
     if (func_id == GESC_NCAR_FILE_NAME || func_id == GESC_NCAR_PAUSE) { /* gks_legacy.h */
-        gks_ws *pws;
-        int e = gks_legacy_escape(func_id, in, &pws);
+        int pid;
+        int e = gks_legacy_escape(func_id, in, &pid);
+        gks_ws *pws = !e && pid >= 0 ? gks_ws_lookup(pid) : NULL;
+        if (!e && func_id == GESC_NCAR_PAUSE && !pws)
+            e = 182; /* the record names no open workstation */
         if (!e && pws) /* NCAR's pause: UPDATE WORKSTATION (PERFORM), nobody to wait for */
             e = pws->new_frame == GNEW_YES ? gks_ws_regenerate(pws) : 0;
         if (!e && pws && pws->drv->update)
@@ -393,7 +396,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
     if (prof && prof->escape) {
         Gescape_out_data *pout = NULL;
         if (store_data && *store_data) {
-            pout = gks_store_alloc(*store_data, 1, sizeof *pout + GKS_PROFILE_ESC_OUT);
+            pout = gks_result_alloc(*store_data, 1, sizeof *pout + GKS_PROFILE_ESC_OUT);
             if (!pout)
                 GKS_FAIL(300, GFN_ESC);
             memset(pout, 0, sizeof *pout);
@@ -427,7 +430,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
     if (escape_has_output(func_id) && store_data && *store_data) {
         /* One block in the store: the record, then its integer and real arrays. */
         size_t n = sizeof *out + GKS_ESC_OUT_CAP * (sizeof(Gint) + sizeof(Gfloat));
-        out = gks_store_alloc(*store_data, 1, n);
+        out = gks_result_alloc(*store_data, 1, n);
         if (!out)
             GKS_FAIL(300, GFN_ESC);
         out->num_ints = GKS_ESC_OUT_CAP;
