@@ -9,7 +9,7 @@
 #include "gks_attr_resolve.h"
 #include "gks_error.h"
 #include "gks_gdp.h"
-#include "gks_store.h"
+#include "gks_result_mem.h"
 #include "gks_state.h"
 #include "gks_text_layout.h"
 #include "gks_ws.h"
@@ -167,7 +167,7 @@ static int put_pattern(const gks_ws *ws, int nx, int ny, const int *colr, Gstore
     if (!store || !*store || !out)
         return 2003;
     size_t n = (size_t)nx * (size_t)ny;
-    Gpat_rep *rep = gks_store_alloc(*store, 1, sizeof *rep + n * sizeof(Gint));
+    Gpat_rep *rep = gks_result_alloc(*store, 1, sizeof *rep + n * sizeof(Gint));
     if (!rep)
         return 300;
     rep->dims = (Gint_size){ nx, ny };

@@ -2,13 +2,13 @@
 /*
  * gks_inq_std.c -- the remaining inquiry functions of ISO 7942 and ISO 8805 in their
  * ISO 8651-4 form: current attribute sets, pattern vectors, colour facilities and
- * indices, dynamic modification and default deferral entries of the description tables, GKS-3D view and HLHSR facilities, GDP entries,
- * pixel readback, and the Gstore of the C binding. Like every inquiry they never call
- * ERROR HANDLING: *err_ind receives the error and nothing else is written on error.
+ * indices, dynamic modification and default deferral entries of the description tables,
+ * GKS-3D view and HLHSR facilities, GDP entries, pixel readback. (The C binding's Gstore
+ * is gks_result_mem.c.) Like every inquiry they never call ERROR HANDLING: *err_ind
+ * receives the error and nothing else is written on error.
  */
 #include "gks_gdp.h"
 #include "gks_legacy.h"
-#include "gks_store.h"
 #include "gks_alloc.h"
 #include "gks_error.h"
 #include "gks_state.h"
@@ -16,36 +16,6 @@
 #include "gks_xform.h"
 #include <math.h>
 #include <string.h>
-
-/* ------------------------------------------------------------------------- stores */
-struct gks_store_rec {
-    void *data; /* what the last inquiry given this store put there (gks_alloc) */
-};
-
-GKS_API void gcreate_store(Gint *err_ind, Gstore *store)
-{
-    Gstore s = gks_calloc_array(1, sizeof *s);
-    *err_ind = s ? 0 : 300;
-    if (store)
-        *store = s;
-}
-
-GKS_API void gdel_store(Gstore store)
-{
-    if (!store)
-        return;
-    gks_free(store->data);
-    gks_free(store);
-}
-
-void *gks_store_alloc(Gstore store, size_t n, size_t size)
-{
-    if (!store)
-        return NULL;
-    gks_free(store->data);
-    store->data = gks_calloc_array(n ? n : 1, size ? size : 1);
-    return store->data;
-}
 
 /* ------------------------------------------------------------- description tables */
 
