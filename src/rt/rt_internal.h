@@ -236,8 +236,16 @@ static inline void rt_tri_prefetch(const rt_scene *sc, size_t t)
     __builtin_prefetch(p + sizeof(rt_tri) - 1);
 }
 
-/* the front unit normal of committed primitive i */
+/* the front unit normal of committed primitive i (rt_geom.c) */
 void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3]);
+/* grows the box bb (lo xyz, hi xyz) by the point p */
+static inline void rt_bbox_add(double bb[6], const double p[3])
+{
+    for (int i = 0; i < 3; i++) {
+        if (p[i] < bb[i]) bb[i] = p[i];
+        if (p[i] > bb[3 + i]) bb[3 + i] = p[i];
+    }
+}
 /* the surface of side (0 front, 1 back) of primitive p */
 static inline const rt_surface *rt_prim_surf(const rt_scene *sc, const rt_prim *p, int side)
 {
@@ -338,8 +346,6 @@ int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint
  * shadow point (= P where it would lie below the plane); bit 2: rgb the interpolated colour. */
 int rt_smooth_at(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
                  double n[3], double ps[3], double rgb[3]);
-/* rt_vd_commit: per committed primitive its record (sc->prim_vd); RT_ERR_NOMEM */
-int rt_vd_commit(rt_scene *sc);
 
 /* cell array colour at point p (on the plane) */
 void rt_cell_color(const rt_scene *sc, const rt_cell *c, const double p[3], double rgb[3]);

@@ -5,6 +5,7 @@
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_geom.h"
 #include "rt_shade.h"
 
 #include <limits.h>
@@ -45,7 +46,6 @@ static rt_prim *in_tri_prims(const rt_scene *sc) { return sc->in_tri_prim.p; }
 static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int back,
                        rt_prim *pr);
 static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6]);
-static void rt_bbox_add(double bb[6], const double p[3]);
 
 rt_scene *rt_scene_new(void)
 {
@@ -389,14 +389,6 @@ static int rt_quad_convex(const double *v, const double n[3], const double c[3],
     return 1;
 }
 
-static void rt_bbox_add(double bb[6], const double p[3])
-{
-    for (int i = 0; i < 3; i++) {
-        if (p[i] < bb[i]) bb[i] = p[i];
-        if (p[i] > bb[3 + i]) bb[3 + i] = p[i];
-    }
-}
-
 /* 1 if every one of the nv points v (and, for a cell array P, Q, R, its fourth corner
    P + Q - R) lies outside one of the cull planes of o by more than its margin */
 static int rt_culled(const rt_build_options *o, const double *v, size_t nv, int cell)
@@ -514,54 +506,6 @@ static int rt_prim_init(rt_scene *sc, rt_prim *pr, int id, int front, int back)
     return RT_OK;
 }
 
-/* The unit normal of the triangle v0 v1 v2 (sane vertices): rt_points_frame and rt_poly_normal
-   for 3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
-   degenerate. The one computation of a triangle's normal, when it is added and at its hits. */
-static inline int rt_tri_normal_sane(const double *v0, const double *v1, const double *v2,
-                                     double n[3])
-{
-    const double *v[3] = {v0, v1, v2};
-    double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY}, c[3];
-    rt_bbox_add(pb, v0);
-    rt_bbox_add(pb, v1);
-    rt_bbox_add(pb, v2);
-    const double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
-    if (!(ext > 0.0) || !isfinite(ext))
-        return 0;
-    for (int j = 0; j < 3; j++) {
-        c[j] = 0.0;
-        c[j] += (v0[j] - pb[j]) / 3.0;
-        c[j] += (v1[j] - pb[j]) / 3.0;
-        c[j] += (v2[j] - pb[j]) / 3.0;
-        c[j] += pb[j];
-    }
-    n[0] = n[1] = n[2] = 0.0;
-    for (int i = 0; i < 3; i++) {
-        const double *a = v[i], *b = v[i == 2 ? 0 : i + 1];
-        double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
-        double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
-        n[0] += (ay - by) * (az + bz);
-        n[1] += (az - bz) * (ax + bx);
-        n[2] += (ax - bx) * (ay + by);
-    }
-    const double tol = 1e-12 * ext * ext;
-    const double m = rt_sh_absmax3(n);
-    if (m != 0.0 && isfinite(m)) {
-        const double x = n[0] / m, y = n[1] / m, z = n[2] / m;
-        const double len = m * sqrt(x * x + y * y + z * z);
-        if (len > tol && isfinite(len)) {
-            for (int i = 0; i < 3; i++)
-                n[i] /= len;
-            return 1;
-        }
-    }
-    static const int three = 3; /* nearly degenerate: the general fallback */
-    double vv[9];
-    for (int i = 0; i < 3; i++)
-        memcpy(vv + 3 * i, v[i], 3 * sizeof(double));
-    return rt_poly_normal(vv, 3, &three, 1, c, ext, n);
-}
-
 /* 1 if rt_tri_normal_sane surely finds the triangle v0 v1 v2 (sane vertices) not degenerate:
    twice its area, the cross product of two edges, is at least 10 times its tolerance
    (1e-12 ext^2, ext the largest extent); both computations round by ~1e-15 ext^2, so its
@@ -602,28 +546,6 @@ static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int bac
         return rc;
     pr->kind = RT_KIND_TRI;
     return 1;
-}
-
-void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
-{
-    const rt_prim *p = &sc->prim[i];
-    const double *n;
-    switch (p->kind) {
-    case RT_KIND_TRI:
-        (void)rt_tri_normal_sane(rt_tri_vert(sc, p->data, 0), rt_tri_vert(sc, p->data, 1),
-                                 rt_tri_vert(sc, p->data, 2), ng);
-        return;
-    case RT_KIND_QUAD:
-        n = sc->quad[p->data].n;
-        break;
-    case RT_KIND_POLY:
-        n = sc->poly[p->data].n;
-        break;
-    default:
-        n = sc->cell[p->data].n;
-        break;
-    }
-    memcpy(ng, n, 3 * sizeof(double));
 }
 
 /* box of the input triangles lo .. hi-1 */
@@ -1064,6 +986,32 @@ static int rt_poly_slabs(rt_scene *sc)
     }
     sc->nslab_off = nslab_tot;
     sc->nedges = nedge_tot;
+    return RT_OK;
+}
+
+/* Per committed primitive the index of its vertex data record (sc->prim_vd; RT_NO_VD: none;
+   rt_smooth.c adds the records); RT_ERR_NOMEM. */
+static int rt_vd_commit(rt_scene *sc)
+{
+    free(sc->prim_vd);
+    sc->prim_vd = NULL;
+    if (sc->nvd == 0 || sc->nprim == 0)
+        return RT_OK;
+    sc->prim_vd = rt_alloc_array(sc->nprim, sizeof *sc->prim_vd);
+    if (!sc->prim_vd)
+        return RT_ERR_NOMEM;
+    for (size_t i = 0; i < sc->nprim; i++) {
+        uint32_t id = (uint32_t)sc->prim[i].id;
+        size_t lo = 0, hi = sc->nvd; /* records are in ascending id order */
+        while (lo < hi) {
+            size_t mid = lo + (hi - lo) / 2;
+            if (sc->vd[mid].id < id)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        sc->prim_vd[i] = lo < sc->nvd && sc->vd[lo].id == id ? (uint32_t)lo : RT_NO_VD;
+    }
     return RT_OK;
 }
 

@@ -80,30 +80,6 @@ int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_counts, 
     return id;
 }
 
-int rt_vd_commit(rt_scene *sc)
-{
-    free(sc->prim_vd);
-    sc->prim_vd = NULL;
-    if (sc->nvd == 0 || sc->nprim == 0)
-        return RT_OK;
-    sc->prim_vd = rt_alloc_array(sc->nprim, sizeof *sc->prim_vd);
-    if (!sc->prim_vd)
-        return RT_ERR_NOMEM;
-    for (size_t i = 0; i < sc->nprim; i++) {
-        uint32_t id = (uint32_t)sc->prim[i].id;
-        size_t lo = 0, hi = sc->nvd; /* records are in ascending id order */
-        while (lo < hi) {
-            size_t mid = lo + (hi - lo) / 2;
-            if (sc->vd[mid].id < id)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        sc->prim_vd[i] = lo < sc->nvd && sc->vd[lo].id == id ? (uint32_t)lo : RT_NO_VD;
-    }
-    return RT_OK;
-}
-
 /* weighted sums of the vertex data */
 typedef struct rt_acc {
     double w, n[3], c[3], ps[3];

@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * rt_geom.h -- the normal of a triangle, inline: the scene computes it for every triangle
+ * added (rt_scene.c, a hot path), rt_geom.c again at hits. Private to src/rt.
+ */
+#ifndef GKS3D_RT_GEOM_H
+#define GKS3D_RT_GEOM_H
+#include "rt_internal.h"
+#include "rt_shade.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The unit normal of the triangle v0 v1 v2 (sane vertices): rt_points_frame and rt_poly_normal
+   for 3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
+   degenerate. The one computation of a triangle's normal, when it is added and at its hits. */
+static inline int rt_tri_normal_sane(const double *v0, const double *v1, const double *v2,
+                                     double n[3])
+{
+    const double *v[3] = {v0, v1, v2};
+    double pb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY}, c[3];
+    rt_bbox_add(pb, v0);
+    rt_bbox_add(pb, v1);
+    rt_bbox_add(pb, v2);
+    const double ext = fmax(pb[3] - pb[0], fmax(pb[4] - pb[1], pb[5] - pb[2]));
+    if (!(ext > 0.0) || !isfinite(ext))
+        return 0;
+    for (int j = 0; j < 3; j++) {
+        c[j] = 0.0;
+        c[j] += (v0[j] - pb[j]) / 3.0;
+        c[j] += (v1[j] - pb[j]) / 3.0;
+        c[j] += (v2[j] - pb[j]) / 3.0;
+        c[j] += pb[j];
+    }
+    n[0] = n[1] = n[2] = 0.0;
+    for (int i = 0; i < 3; i++) {
+        const double *a = v[i], *b = v[i == 2 ? 0 : i + 1];
+        double ax = a[0] - c[0], ay = a[1] - c[1], az = a[2] - c[2];
+        double bx = b[0] - c[0], by = b[1] - c[1], bz = b[2] - c[2];
+        n[0] += (ay - by) * (az + bz);
+        n[1] += (az - bz) * (ax + bx);
+        n[2] += (ax - bx) * (ay + by);
+    }
+    const double tol = 1e-12 * ext * ext;
+    const double m = rt_sh_absmax3(n);
+    if (m != 0.0 && isfinite(m)) {
+        const double x = n[0] / m, y = n[1] / m, z = n[2] / m;
+        const double len = m * sqrt(x * x + y * y + z * z);
+        if (len > tol && isfinite(len)) {
+            for (int i = 0; i < 3; i++)
+                n[i] /= len;
+            return 1;
+        }
+    }
+    static const int three = 3; /* nearly degenerate: the general fallback */
+    double vv[9];
+    for (int i = 0; i < 3; i++)
+        memcpy(vv + 3 * i, v[i], 3 * sizeof(double));
+    return rt_newell_normal(vv, 3, &three, 1, c, ext, n);
+}
+#endif
