@@ -17,8 +17,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define GKS_WS_DRIVER_VERSION 1
-
 typedef struct gks_ws gks_ws;
 typedef struct gks_ws_driver gks_ws_driver;
 
@@ -89,7 +87,7 @@ typedef struct gks_ws_desc {
         .pred_colr = gks_wdt_white_black,                                                  \
         .hlhsr_modes = 1u << GHLHSR_NONE,                                                  \
     };                                                                                     \
-    const gks_ws_driver drv_ = { .version = GKS_WS_DRIVER_VERSION, .desc = &drv_##_desc }
+    const gks_ws_driver drv_ = { .desc = &drv_##_desc }
 
 /* A primitive as the core hands it to drivers: points in NDC3 after normalization,
  * segment transformation and clipping to the viewport (if on); attributes resolved for this
@@ -225,7 +223,6 @@ struct gks_ws {
 
 struct gksm_in; /* ws/mf/gks_mf_codec.h */
 struct gks_ws_driver {
-    int version;
     const gks_ws_desc *desc;
     /* File workstations: the name of the file the workstation will write (MI: read) for
      * its connection identifier, in *path (gks_alloc'd); 0, 21 or 300. OPEN WORKSTATION

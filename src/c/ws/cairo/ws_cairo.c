@@ -1468,7 +1468,7 @@ static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EP
 
 #define VEC_DRIVER(DESC, OPEN, FILE)                                                   \
     {                                                                                  \
-        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .open = OPEN, .file = FILE,   \
+        .desc = &DESC, .open = OPEN, .file = FILE,                                     \
         .close = vec_close, .finish = vec_finish, .clear = vec_clear,                  \
         .update = vec_update,                                                          \
         .primitive = vec_primitive, .text = vec_text_prim, .message = gks_ws_file_message,          \

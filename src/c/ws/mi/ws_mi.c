@@ -89,7 +89,6 @@ static struct gksm_in *mi_item_reader(gks_ws *ws, int *allow_escapes)
 }
 
 const gks_ws_driver gks_ws_mi_driver = {
-    .version = GKS_WS_DRIVER_VERSION,
     .desc = &mi_desc,
     .file = mi_file,
     .open = mi_open,

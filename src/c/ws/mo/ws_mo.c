@@ -125,7 +125,6 @@ static int mo_record_item(gks_ws *ws, int type, const char *rec, size_t len)
 }
 
 const gks_ws_driver gks_ws_mo_driver = {
-    .version = GKS_WS_DRIVER_VERSION,
     .desc = &mo_desc,
     .file = mo_file,
     .open = mo_open,

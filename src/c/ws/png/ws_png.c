@@ -317,7 +317,7 @@ static const gks_ws_desc png_output_desc =
 
 #define PNG_DRIVER(DESC)                                                           \
     {                                                                              \
-        .version = GKS_WS_DRIVER_VERSION, .desc = &DESC, .file = png_file,         \
+        .desc = &DESC, .file = png_file,                                           \
         .open = png_open, .background = png_background,                            \
         .close = png_close, .clear = png_clear, .update = png_update,              \
         .primitive = png_primitive, .message = gks_ws_file_message, .escape = png_escape,  \

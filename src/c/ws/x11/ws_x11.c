@@ -877,7 +877,7 @@ static const gks_ws_desc x11_desc = {
 };
 
 const gks_ws_driver gks_ws_x11_driver = {
-    .version = GKS_WS_DRIVER_VERSION, .desc = &x11_desc, .open = x11_open, .close = x11_close,
+    .desc = &x11_desc, .open = x11_open, .close = x11_close,
     .clear = x11_clear, .background = x11_background, .update = x11_update, .primitive = x11_primitive,
     .message = x11_message, .escape = x11_escape, .input = x11_input,
 };
