@@ -61,12 +61,12 @@ static void test_orientation_properties(void **state)
         xt_map(m, vrp[0], vrp[1], vrp[2], o);
         for (int i = 0; i < 3; i++)
             XT_NEAR(o[i], 0.0, 1e-12);
-        gks_xform_direction(m, vpn, d);
+        xt_direction(m, vpn, d);
         double ln = sqrt(vpn[0] * vpn[0] + vpn[1] * vpn[1] + vpn[2] * vpn[2]);
         XT_NEAR(d[0], 0.0, 1e-13);
         XT_NEAR(d[1], 0.0, 1e-13);
         XT_NEAR(d[2], ln, 1e-13);
-        gks_xform_direction(m, vup, d);
+        xt_direction(m, vup, d);
         XT_NEAR(d[0], 0.0, 1e-13);
         assert_true(d[1] > 0.0);
     }
@@ -504,7 +504,7 @@ static void test_camera(void **state)
             if (p.prp[2] < p.vpd)       /* the viewer is on +n; F >= B, and +n maps to +z */
                 for (int i = 0; i < 3; i++)
                     d[i] = -d[i];
-            gks_xform_direction(moi, d, expect);
+            xt_direction(moi, d, expect);
             double l = sqrt(expect[0] * expect[0] + expect[1] * expect[1]
                             + expect[2] * expect[2]);
             for (int i = 0; i < 3; i++)

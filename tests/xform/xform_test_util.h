@@ -72,4 +72,48 @@ static inline void xt_map(const double m[4][4], double x, double y, double z, do
         fail();
     }
 }
+
+/* Helpers the library itself does not need (tests only): the direction d = (x,y,z,0) by
+ * the upper-left 3x3 block of m; the identities of 3x4 and 2x3 affine matrices; the
+ * pipeline product out = ws · mapping · orientation · seg4 (seg, ws NULL: identity). */
+static inline void xt_direction(const double m[4][4], const double d[3], double out[3])
+{
+    double t[3];
+    for (int i = 0; i < 3; i++)
+        t[i] = m[i][0] * d[0] + m[i][1] * d[1] + m[i][2] * d[2];
+    for (int i = 0; i < 3; i++)
+        out[i] = t[i];
+}
+
+static inline void xt_mat34_identity(double m[3][4])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            m[i][j] = (i == j) ? 1.0 : 0.0;
+}
+
+static inline void xt_mat23_identity(double m[2][3])
+{
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++)
+            m[i][j] = (i == j) ? 1.0 : 0.0;
+}
+
+static inline void xt_compose_pipeline(const double seg[3][4], const double orientation[4][4],
+                                       const double mapping[4][4], const double ws[4][4],
+                                       double out[4][4])
+{
+    double r[4][4];
+    if (seg)
+        gks_xform_mat34_to_mat4(seg, r);
+    else
+        gks_xform_identity(r);
+    gks_xform_multiply(orientation, r, r);
+    gks_xform_multiply(mapping, r, r);
+    if (ws)
+        gks_xform_multiply(ws, r, r);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            out[i][j] = r[i][j];
+}
 #endif

@@ -83,8 +83,6 @@ void gks_xform_apply(const double m[4][4], const double in[4], double out[4]);
  * Returns w, so the caller can reject w <= 0 (behind the eye) before using out. */
 double gks_xform_point(const double m[4][4], const double p[3], double out[3]);
 
-/* Transform the direction d = (x,y,z,0) by the upper-left 3x3 block (no division). */
-void gks_xform_direction(const double m[4][4], const double d[3], double out[3]);
 
 /* Normals through the upper-left 3x3 block A of m: nm = sign(det A) cof(A) / max|cof(A)|, the
  * inverse transpose up to a positive factor (normals are renormalised after it). -1 when A
@@ -105,14 +103,8 @@ void gks_xform_mat23_to_mat34(const double m[2][3], double r[3][4]);
 /* out = m·(p,1) for a 3x4 affine matrix. out may alias p. */
 void gks_xform_mat34_point(const double m[3][4], const double p[3], double out[3]);
 
-/* out = m·(p,1) for a 2x3 affine matrix. out may alias p. */
-void gks_xform_mat23_point(const double m[2][3], const double p[2], double out[2]);
 
-/* 3x4 identity. */
-void gks_xform_mat34_identity(double m[3][4]);
 
-/* 2x3 identity. */
-void gks_xform_mat23_identity(double m[2][3]);
 
 /* r = a∘b for affine 3x4 matrices (apply b first, then a). r may alias a or b. */
 void gks_xform_mat34_multiply(const double a[3][4], const double b[3][4], double r[3][4]);
@@ -120,13 +112,6 @@ void gks_xform_mat34_multiply(const double a[3][4], const double b[3][4], double
 /* r = a∘b for affine 2x3 matrices (apply b first, then a). r may alias a or b. */
 void gks_xform_mat23_multiply(const double a[2][3], const double b[2][3], double r[2][3]);
 
-/* The pipeline matrix NDC3 → DC3 (or NDC3 → NPC3 with ws = NULL):
- * out = ws · mapping · orientation · seg4, where seg4 is the 3x4 segment matrix as 4x4
- * (seg = NULL: identity). orientation and mapping are the view representation's matrices.
- * Clip in homogeneous NPC (the product without ws) BEFORE the division, then apply ws. */
-void gks_xform_compose_pipeline(const double seg[3][4], const double orientation[4][4],
-                                const double mapping[4][4], const double ws[4][4],
-                                double out[4][4]);
 
 /* Plane pull-back: for a plane p (inside where p·X >= 0, X homogeneous in space B) and a
  * matrix m: A → B, out is the same plane in space A (out_j = Σ_i p_i m[i][j]). */

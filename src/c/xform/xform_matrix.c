@@ -130,14 +130,6 @@ double gks_xform_point(const double m[4][4], const double p[3], double out[3])
     return h[3];
 }
 
-void gks_xform_direction(const double m[4][4], const double d[3], double out[3])
-{
-    double t[3];
-    for (int i = 0; i < 3; i++)
-        t[i] = m[i][0] * d[0] + m[i][1] * d[1] + m[i][2] * d[2];
-    memcpy(out, t, sizeof t);
-}
-
 int gks_xform_normal_matrix(const double m[4][4], double nm[3][3])
 {
     double c[3][3]; /* cofactors: inverse transpose = cofactor matrix / det */
@@ -209,28 +201,6 @@ void gks_xform_mat34_point(const double m[3][4], const double p[3], double out[3
     memcpy(out, t, sizeof t);
 }
 
-void gks_xform_mat23_point(const double m[2][3], const double p[2], double out[2])
-{
-    double t[2];
-    for (int i = 0; i < 2; i++)
-        t[i] = m[i][0] * p[0] + m[i][1] * p[1] + m[i][2];
-    memcpy(out, t, sizeof t);
-}
-
-void gks_xform_mat34_identity(double m[3][4])
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            m[i][j] = (i == j) ? 1.0 : 0.0;
-}
-
-void gks_xform_mat23_identity(double m[2][3])
-{
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 3; j++)
-            m[i][j] = (i == j) ? 1.0 : 0.0;
-}
-
 void gks_xform_mat34_multiply(const double a[3][4], const double b[3][4], double r[3][4])
 {
     double t[3][4];
@@ -255,22 +225,6 @@ void gks_xform_mat23_multiply(const double a[2][3], const double b[2][3], double
             t[i][j] = s;
         }
     memcpy(r, t, sizeof t);
-}
-
-void gks_xform_compose_pipeline(const double seg[3][4], const double orientation[4][4],
-                                const double mapping[4][4], const double ws[4][4],
-                                double out[4][4])
-{
-    double r[4][4];
-    if (seg)
-        gks_xform_mat34_to_mat4(seg, r);
-    else
-        gks_xform_identity(r);
-    gks_xform_multiply(orientation, r, r);
-    gks_xform_multiply(mapping, r, r);
-    if (ws)
-        gks_xform_multiply(ws, r, r);
-    memcpy(out, r, sizeof r);
 }
 
 void gks_xform_plane_pullback(const double p[4], const double m[4][4], double out[4])
