@@ -114,28 +114,6 @@ static void test_orientation_errors(void **state)
     assert_memory_equal(before, m, sizeof m);
 }
 
-static void test_orientation_2d(void **state)
-{
-    (void)state;
-    double m[3][3];
-    const double vrp[2] = { 1, 1 }, up[2] = { 0, 2 };
-    assert_int_equal(gks_xform_eval_view_orientation(vrp, up, m), 0);
-    const double e[3][3] = { { 1, 0, -1 }, { 0, 1, -1 }, { 0, 0, 1 } };
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            XT_NEAR(m[i][j], e[i][j], 1e-15);
-    const double up2[2] = { 3, 0 };   /* v = +x, u = (0,−1) */
-    assert_int_equal(gks_xform_eval_view_orientation(vrp, up2, m), 0);
-    const double e2[3][3] = { { 0, -1, 1 }, { 1, 0, -1 }, { 0, 0, 1 } };
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            XT_NEAR(m[i][j], e2[i][j], 1e-15);
-    const double z[2] = { 0, 0 }, nanv[2] = { NAN, 1 };
-    assert_int_equal(gks_xform_eval_view_orientation(vrp, z, m), GKS_E_VUP_ZERO);
-    assert_int_equal(gks_xform_eval_view_orientation(vrp, nanv, m), GKS_E_VUP_ZERO);
-    assert_int_equal(gks_xform_eval_view_orientation(nanv, up, m), GKS_E_ARITHMETIC);
-}
-
 /* ---- mapping: hand values ---------------------------------------------------------------- */
 
 static gks_xform_view_map3 unit_map(int type)
@@ -443,30 +421,6 @@ static void test_mapping_errors(void **state)
     assert_int_equal(gks_xform_eval_view_mapping3(&p, m), GKS_E_ARITHMETIC);
 }
 
-static void test_mapping_2d(void **state)
-{
-    (void)state;
-    double m[3][3];
-    const double w[4] = { 0, 10, 0, 5 }, v[4] = { 0, 1, 0, 0.5 };
-    assert_int_equal(gks_xform_eval_view_mapping(w, v, m), 0);
-    const double e[3][3] = { { 0.1, 0, 0 }, { 0, 0.1, 0 }, { 0, 0, 1 } };
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            XT_NEAR(m[i][j], e[i][j], 1e-16);
-    const double w2[4] = { -2, 2, 1, 3 }, v2[4] = { 0.5, 1, 0.25, 0.75 };
-    assert_int_equal(gks_xform_eval_view_mapping(w2, v2, m), 0);
-    XT_NEAR(m[0][0] * -2 + m[0][2], 0.5, 1e-15);
-    XT_NEAR(m[0][0] * 2 + m[0][2], 1.0, 1e-15);
-    XT_NEAR(m[1][1] * 1 + m[1][2], 0.25, 1e-15);
-    XT_NEAR(m[1][1] * 3 + m[1][2], 0.75, 1e-15);
-    const double bw[4] = { 1, 1, 0, 1 }, bv[4] = { 0, 1, 0.5, 0.5 }, ov[4] = { 0, 1.5, 0, 1 };
-    assert_int_equal(gks_xform_eval_view_mapping(bw, bv, m), GKS_E_VIEW_WINDOW_INVALID);
-    assert_int_equal(gks_xform_eval_view_mapping(w, bv, m), GKS_E_PROJ_VIEWPORT_INVALID);
-    assert_int_equal(gks_xform_eval_view_mapping(w, ov, m), GKS_E_PROJ_VIEWPORT_NOT_IN_NPC);
-    const double nw[4] = { 0, NAN, 0, 1 };
-    assert_int_equal(gks_xform_eval_view_mapping(nw, ov, m), GKS_E_VIEW_WINDOW_INVALID);
-}
-
 /* ---- camera recovery ---------------------------------------------------------------------- */
 
 static void test_camera(void **state)
@@ -545,12 +499,10 @@ int main(void)
         cmocka_unit_test(test_orientation_known),
         cmocka_unit_test(test_orientation_properties),
         cmocka_unit_test(test_orientation_errors),
-        cmocka_unit_test(test_orientation_2d),
         cmocka_unit_test(test_mapping_hand),
         cmocka_unit_test(test_mapping_random),
         cmocka_unit_test(test_mapping_pvt),
         cmocka_unit_test(test_mapping_errors),
-        cmocka_unit_test(test_mapping_2d),
         cmocka_unit_test(test_camera),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -12,7 +12,6 @@
  *    (x,y,z,w) and pre-multiplying: p' = M p. A point is (x/w, y/w, z/w).
  *  - 2-D GKS matrices are 2x3:  x' = m[0][0]x + m[0][1]y + m[0][2],  y' = m[1][0]x + ...
  *  - GKS-3D segment / insert matrices are 3x4: x' = m[0][0]x + m[0][1]y + m[0][2]z + m[0][3].
- *  - The 2-D view orientation / view mapping matrices (PHIGS PEVOM / PEVMM) are 3x3.
  *  - Composition "A then B" is B·A; the product functions document their order.
  *  - NPC "front" is the larger z. VRC is right-handed (U, V, N); N points towards the viewer.
  *  - Boxes (3-D windows, viewports, clip limits) are double[6] = xmin,xmax,ymin,ymax,zmin,zmax;
@@ -168,10 +167,6 @@ int gks_xform_ws_tran3(const double win[6], const double vp[6], double m[4][4]);
 int gks_xform_eval_view_orientation3(const double vrp[3], const double vpn[3],
                                      const double vup[3], double m[4][4]);
 
-/* EVALUATE VIEW ORIENTATION MATRIX (2-D, PHIGS PEVOM): v = U/|U|, u = (v_y, −v_x);
- * rows [u, −u·R], [v, −v·R], [0 0 1]. Errors: 560 (|VUP| = 0 / not finite), 308 (VRP). */
-int gks_xform_eval_view_orientation(const double vrp[2], const double vup[2],
-                                    double m[3][3]);
 
 /* View mapping parameters (the PHIGS/GKS-3D view mapping, all in VRC). */
 typedef struct {
@@ -197,11 +192,6 @@ typedef struct {
  * Equalities are exact (OpenPHIGS uses |x| < 1e-30). */
 int gks_xform_eval_view_mapping3(const gks_xform_view_map3 *map, double m[4][4]);
 
-/* EVALUATE VIEW MAPPING MATRIX (2-D, PHIGS PEVMM): window → viewport, 3x3:
- * rows [Sx 0 xmin − Sx·umin], [0 Sy ymin − Sy·vmin], [0 0 1].
- * Errors in order: 551 (window), 552 (viewport), 555 (viewport not within [0,1]²), 308. */
-int gks_xform_eval_view_mapping(const double window[4], const double viewport[4],
-                                double m[3][3]);
 
 /* Camera recovery (BINDINGS §3.3) for a mapping matrix M (VRC → NPC) or a product M·Mo
  * (space → NPC): P with M·P = (0,0,c,0), i.e. P ∝ M⁻¹(0,0,1,0) when M is invertible, found

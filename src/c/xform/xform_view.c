@@ -71,25 +71,6 @@ int gks_xform_eval_view_orientation3(const double vrp[3], const double vpn[3],
     return 0;
 }
 
-int gks_xform_eval_view_orientation(const double vrp[2], const double vup[2], double m[3][3])
-{
-    double v[2];
-    if (!unit_vec(vup, 2, v))
-        return GKS_E_VUP_ZERO;
-    if (!xform_finite_n(vrp, 2))
-        return GKS_E_ARITHMETIC;
-    double u[2] = { v[1], -v[0] };
-    double r[3][3] = {
-        { u[0], u[1], -(u[0] * vrp[0] + u[1] * vrp[1]) },
-        { v[0], v[1], -(v[0] * vrp[0] + v[1] * vrp[1]) },
-        { 0.0, 0.0, 1.0 },
-    };
-    if (!xform_finite_n(&r[0][0], 9))
-        return GKS_E_ARITHMETIC;
-    memcpy(m, r, sizeof r);
-    return 0;
-}
-
 /* Window umin < umax, vmin < vmax, finite. */
 static int window_ok(const double w[4])
 {
@@ -188,28 +169,6 @@ int gks_xform_eval_view_mapping3(const gks_xform_view_map3 *mp, double m[4][4])
         r[3][3] = s * pn;
     }
     if (!xform_finite_n(&r[0][0], 16))
-        return GKS_E_ARITHMETIC;
-    memcpy(m, r, sizeof r);
-    return 0;
-}
-
-int gks_xform_eval_view_mapping(const double window[4], const double viewport[4],
-                                double m[3][3])
-{
-    if (!window_ok(window))
-        return GKS_E_VIEW_WINDOW_INVALID;
-    if (!viewport_ok(viewport, 2))
-        return GKS_E_PROJ_VIEWPORT_INVALID;
-    if (!viewport_in_npc(viewport, 2))
-        return GKS_E_PROJ_VIEWPORT_NOT_IN_NPC;
-    const double sx = (viewport[1] - viewport[0]) / (window[1] - window[0]);
-    const double sy = (viewport[3] - viewport[2]) / (window[3] - window[2]);
-    double r[3][3] = {
-        { sx, 0.0, viewport[0] - sx * window[0] },
-        { 0.0, sy, viewport[2] - sy * window[2] },
-        { 0.0, 0.0, 1.0 },
-    };
-    if (!xform_finite_n(&r[0][0], 9))
         return GKS_E_ARITHMETIC;
     memcpy(m, r, sizeof r);
     return 0;
