@@ -65,10 +65,8 @@ gks_raster_fb *gks_raster_fb_create(int width, int height, int ss);
 void gks_raster_fb_free(gks_raster_fb *fb);
 /* Clear colour to rgb (components clamped to [0,1]; NULL = black) and depth to farthest. */
 void gks_raster_fb_clear(gks_raster_fb *fb, const float rgb[3]);
-/* Box-filter to width x height 8-bit RGB, row 0 = TOP of the image (3*width*height
- * bytes). E_ARG on NULL. */
-int gks_raster_fb_resolve(const gks_raster_fb *fb, unsigned char *rgb8);
-/* The same for one image row (0 = top): 3*width bytes to out. E_ARG on NULL or a bad row. */
+/* Box-filter one image row (0 = top) to 8-bit RGB: 3*width bytes to out. E_ARG on NULL or
+ * a bad row. */
 int gks_raster_fb_resolve_row(const gks_raster_fb *fb, int row, unsigned char *out);
 
 /* --- Areas ---------------------------------------------------------------------- */

@@ -103,12 +103,3 @@ int gks_raster_fb_resolve_row(const gks_raster_fb *fb, int row, unsigned char *o
     }
     return GKS_RASTER_OK;
 }
-
-int gks_raster_fb_resolve(const gks_raster_fb *fb, unsigned char *rgb8)
-{
-    if (!fb || !rgb8)
-        return GKS_RASTER_E_ARG;
-    for (int row = 0; row < fb->height; row++)
-        gks_raster_fb_resolve_row(fb, row, rgb8 + (size_t)row * (size_t)fb->width * 3);
-    return GKS_RASTER_OK;
-}
