@@ -148,6 +148,9 @@ typedef struct gks_context {
     gks_state_list *sl;            /* NULL while GKS is closed */
     gks_error_state err;
     gks_ws *ws[GKS_MAX_OPEN_WS];   /* workstation state lists, parallel to sl->open_ws */
+    gks_ws *rec_ws;                /* GKS3D_RECORD's hidden MO (gks_record.h), or NULL */
+    int rec_mirror;                /* the workstation it mirrors, -1: none */
+    int rec_drawn;                 /* a primitive recorded since its last CLEAR item */
     uint64_t tables_gen;           /* changes with every change of a workstation's bundle,
                                       pattern or colour table and at OPEN and CLOSE
                                       WORKSTATION (gks_ws_tables_changed) */

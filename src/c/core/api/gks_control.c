@@ -6,6 +6,7 @@
  * checks in the standard's order (error -> report, no other effect), then the work.
  */
 #include "gks_legacy.h"
+#include "gks_record.h"
 #include "gks_alloc.h"
 #include "gks_binding.h"
 #include "gks_error.h"
@@ -90,6 +91,7 @@ static void open_gks_claimed(const char *err_name, int open_file)
     c->sl = sl;
     c->err.fp = fp;
     c->op_st = GST_GKOP;
+    gks_record_open(); /* GKS3D_RECORD */
     const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's initial state */
     if (prof && prof->opened_gks)
         prof->opened_gks();
@@ -119,6 +121,7 @@ GKS_API void gks_open_gks_unit(int err_unit, size_t mem_unit)
 
 static void close_gks(gks_context *c)
 {
+    gks_record_close(); /* GKS3D_RECORD's file complete */
     gks_world_changed(); /* every state list is gone */
     if (c->err.fp && c->err.fp != stdout)
         fclose(c->err.fp);
@@ -177,6 +180,7 @@ GKS_API void gopen_ws(Gint ws_id, const char *conn_id, Gint ws_type)
     c->sl->open_ws[c->sl->n_open++] = ws_id;
     if (c->op_st == GST_GKOP)
         c->op_st = GST_WSOP;
+    gks_record_sync(-1);
     const gks_profile *prof = gks_legacy_profile(); /* a foreign GKS's tables */
     if (prof && prof->opened_ws)
         prof->opened_ws(ws_id);
@@ -213,6 +217,7 @@ GKS_API void gclose_ws(Gint ws_id)
     gks_world_changed();
     if (sl->n_open == 0)
         c->op_st = GST_GKOP;
+    gks_record_sync(ws_id); /* the recorded frame of ws_id ends */
     if (err) /* the workstation is closed; the failed final write is still reported */
         GKS_FAIL(err, GFN_CLWK);
 }
@@ -237,6 +242,7 @@ GKS_API void gactivate_ws(Gint ws_id)
     c->sl->active_ws[c->sl->n_active++] = ws_id;
     c->op_st = GST_WSAC;
     gks_mf_recount();
+    gks_record_sync(-1);
 }
 
 GKS_API void gdeactivate_ws(Gint ws_id)
@@ -261,6 +267,7 @@ GKS_API void gdeactivate_ws(Gint ws_id)
     if (sl->n_active == 0)
         c->op_st = GST_WSOP;
     gks_mf_recount();
+    gks_record_sync(-1);
 }
 
 GKS_API void gclear_ws(Gint ws_id, Gctrl_flag ctrl_flag)
@@ -441,6 +448,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
     int err = ws->drv->escape ? ws->drv->escape(ws, func_id, in, out) : 180;
     if (err)
         GKS_FAIL(err, GFN_ESC);
+    gks_record_escape(ws->id, func_id, in); /* GKS3D_RECORD: the picture's settings */
     if (out_data)
         *out_data = out;
 }

@@ -11,17 +11,29 @@
 #include "gks_error.h"
 #include "gks_state.h"
 #include "gks_context.h"
+#include "gks_record.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <string.h>
 
+/* The workstations the hooks look at: the open ones, then GKS3D_RECORD's recorder
+ * (gks_record.h), which is in no list of the program's. */
+static int n_targets(const gks_context *c)
+{
+    return c->sl->n_open + (c->rec_ws != NULL);
+}
+static gks_ws *target(const gks_context *c, int i)
+{
+    return i < c->sl->n_open ? c->ws[i] : c->rec_ws;
+}
+
 void gks_mf_recount(void)
 {
     gks_context *c = gks_ctx();
     int n = 0;
-    for (int i = 0; i < c->sl->n_open; i++)
-        if (c->ws[i]->state == GWS_ACTIVE && gks_mf_is_mo(c->ws[i]))
+    for (int i = 0; i < n_targets(c); i++)
+        if (target(c, i)->state == GWS_ACTIVE && gks_mf_is_mo(target(c, i)))
             n++;
     c->sl->mf_n_mo_active = n;
 }
@@ -173,11 +185,11 @@ int gks_mf_rec(int fctid, int item, ...)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
-    for (int i = 0; i < c->sl->n_open; i++) {
+    for (int i = 0; i < n_targets(c); i++) {
         mo_t o;
-        if (c->ws[i]->state != GWS_ACTIVE)
+        if (target(c, i)->state != GWS_ACTIVE)
             continue;
-        int err = mo_of(c->ws[i], &o);
+        int err = mo_of(target(c, i), &o);
         if (err < 0)
             continue;
         if (!err) {
@@ -193,18 +205,24 @@ int gks_mf_rec(int fctid, int item, ...)
 
 int gks_mf_ws_rec(int fctid, int ws_id, int item, ...)
 {
-    mo_t o;
-    int err = mo_of(gks_ws_lookup(ws_id), &o);
-    if (err < 0)
-        return 1;
-    if (!err) {
-        va_list ap;
-        va_start(ap, item);
-        err = put_fmt(&o, item, ap);
-        va_end(ap);
-    }
+    /* the addressed workstation, and the recorder when it mirrors that one */
+    gks_ws *to[2] = { gks_ws_lookup(ws_id), gks_record_mirror(ws_id) };
     mf_errs e = { 0 };
-    note(&e, err);
+    for (int k = 0; k < 2; k++) {
+        mo_t o;
+        int err = mo_of(to[k], &o);
+        if (err < 0)
+            continue;
+        if (!err) {
+            va_list ap;
+            va_start(ap, item);
+            err = put_fmt(&o, item, ap);
+            va_end(ap);
+        }
+        if (!err && k == 1 && item == GKSM_ITEM_CLEAR)
+            gks_ctx()->rec_drawn = 0; /* the recorded frame ended */
+        note(&e, err);
+    }
     return report(&e, fctid);
 }
 
@@ -506,12 +524,14 @@ int gks_mf_prim_write(int fctid, const gks_mf_prim *p)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
-    for (int i = 0; i < c->sl->n_open; i++) {
+    for (int i = 0; i < n_targets(c); i++) {
         mo_t mo;
         const mo_t *o = &mo;
-        if (c->ws[i]->state != GWS_ACTIVE)
+        if (target(c, i)->state != GWS_ACTIVE)
             continue;
-        int err = mo_of(c->ws[i], &mo);
+        int err = mo_of(target(c, i), &mo);
+        if (!err && target(c, i) == c->rec_ws)
+            c->rec_drawn = 1;
         if (err < 0)
             continue;
         if (err) {
