@@ -64,6 +64,7 @@ if ldd ./consumer ./consumer_f77 | grep -i mpi; then echo "a serial program need
 echo "ldd: no MPI library in the serial programs"
 nff_view --help | head -1
 mesh_view --help | head -1
+gks3d-render --help | head -1
 IN
 chroot "$root" /bin/sh /tmp/work/test.sh
 echo "deb-chroot-test: passed in $(( $(date +%s) - start )) s"

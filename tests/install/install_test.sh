@@ -107,6 +107,11 @@ install)
         "$prefix/bin/$p" --help | grep -q "^$p -- ray traces" || { echo "bin/$p --help failed"; exit 1; }
         echo "bin/$p --help: $("$prefix/bin/$p" --help | head -1)"
     done
+    # gks3d-render (src/tools: always built) and its page.
+    "$prefix/bin/gks3d-render" --help | grep -q "^gks3d-render -- renders" ||
+        { echo "bin/gks3d-render --help failed"; exit 1; }
+    [ -f "$prefix/share/man/man1/gks3d-render.1" ] || { echo "missing man1/gks3d-render.1"; exit 1; }
+    echo "bin/gks3d-render --help: $("$prefix/bin/gks3d-render" --help | head -1)"
     echo "installed into $prefix" ;;
 symbols)
     sh "$here/../core/check_symbols.sh" --installed "$here/../core/exported_symbols.txt" "$prefix" ;;
