@@ -298,11 +298,57 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
  * -1388); only an escape that returns data writes ODR, and LODR is never written, so a
  * program may pass constants there (as NCAR's fgke03 and NGSRAT do). */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
+
+/* ESCAPE -108 (GESRST, GESC_RT_STATS): IDR(1) columns 1-10 (I10) the workstation; ODR(1)
+ * receives the eight counts as 8I10 (eye rays, eye rays that hit, reflection, refraction,
+ * shadow rays, grid cells, grid references, primitives), ODR(2) the build and render
+ * seconds as 2E20.8, each record blank-filled and cut at LEN(ODR); only MLODR records are
+ * written, and LODR receives their number (0 when the escape failed: its error is reported
+ * as in C). */
+static void escape_stats(fint lidr, const char *idr, size_t idr_len, const fint *mlodr,
+                         fint *lodr, char *odr, size_t odr_len)
+{
+    long ws = 0;
+    Gint wsid = 0;
+    Gescape_in_data in = { { 0, NULL, 0, NULL, 0, NULL } };
+    if (lidr >= 1 && idr_len > 0 && !parse_int(idr, idr_len < 10 ? idr_len : 10, &ws)) {
+        wsid = (Gint)ws;
+        in.num_ints = 1;
+        in.ints = &wsid;
+    }
+    Gstore store = NULL;
+    Gint serr = 0;
+    Gescape_out_data *out = NULL;
+    gcreate_store(&serr, &store);
+    gescape(GESC_RT_STATS, &in, serr ? NULL : &store, &out);
+    fint n = 0;
+    if (out && out->num_ints >= 8 && out->num_floats >= 2 && odr && odr_len > 0 && mlodr) {
+        char rec[2][96];
+        snprintf(rec[0], sizeof rec[0], "%10d%10d%10d%10d%10d%10d%10d%10d", (int)out->ints[0],
+                 (int)out->ints[1], (int)out->ints[2], (int)out->ints[3], (int)out->ints[4],
+                 (int)out->ints[5], (int)out->ints[6], (int)out->ints[7]);
+        snprintf(rec[1], sizeof rec[1], "%20.8E%20.8E", (double)out->floats[0],
+                 (double)out->floats[1]);
+        for (; n < 2 && n < *mlodr; n++) {
+            size_t k = strlen(rec[n]);
+            memset(odr + (size_t)n * odr_len, ' ', odr_len);
+            memcpy(odr + (size_t)n * odr_len, rec[n], k < odr_len ? k : odr_len);
+        }
+    }
+    if (lodr)
+        *lodr = n;
+    if (store)
+        gdel_store(store);
+}
+
 FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr,
                             const fint *mlodr, fint *lodr, char *odr, size_t idr_len,
                             size_t odr_len)
 {
-    (void)lodr;
+    if (*fctid == GESC_RT_STATS) {
+        escape_stats(*lidr, idr, idr_len, mlodr, lodr, odr, odr_len);
+        return;
+    }
     if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
         return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
     Gescape_in_data in = { { 0, NULL, 0, NULL, 0, NULL } };
