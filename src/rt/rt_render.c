@@ -92,10 +92,12 @@ typedef struct rt_job {
     unsigned short *cover_out; /* NULL, or per pixel: its eye rays that hit (rt_render_cover) */
     uint8_t *corner_hit;       /* corner mode with cover_out: per corner ray, 1 if it hit */
     int tiles_x, ntiles;
+    int stride;         /* the k-th tile taken is (k * stride) mod ntiles (rt_tile_order) */
     atomic_int next;
     atomic_int done;
     atomic_ullong rays;
     double t0, last_report;
+    double t_tiles;     /* when the first tile started: the estimate's clock (set-up apart) */
     pthread_mutex_t lock;
     const rt_tile_hook *hook;  /* o.tiles; NULL: every tile here */
     atomic_int hook_failed;    /* a callback failed: threads stop, rt_render fails */
@@ -1146,22 +1148,57 @@ static void rt_progress(rt_job *job, uint64_t rays)
     if (job->o.progress_fn)
         job->o.progress_fn(job->o.progress_user, done, job->ntiles);
     double now = rt_now();
-    if (job->o.progress && (now - job->last_report > 0.5 || done == job->ntiles)) {
+    if (job->o.progress && done == job->ntiles) { /* the summary line */
+        double el = now - job->t0;
+        unsigned long long rays_all = atomic_load(&job->rays);
+        fprintf(stderr, "rt: %d tiles done in %.2f s, %llu rays, %.2f Mrays/s\n", done, el,
+                rays_all, el > 0.0 ? (double)rays_all / el * 1e-6 : 0.0);
+    } else if (job->o.progress && now - job->last_report > 0.5) {
         job->last_report = now;
         double el = now - job->t0;
-        double left = done > 0 ? el * (job->ntiles - done) / done : 0.0;
-        fprintf(stderr, "rt: tiles %d/%d, %.2f Mrays/s, %.1f s left%s", done, job->ntiles,
-                el > 0.0 ? (double)atomic_load(&job->rays) / el * 1e-6 : 0.0, left,
-                done == job->ntiles ? "\n" : "\r");
+        /* the tiles are taken spread over the picture (rt_tile_stride), so the time per tile
+           so far is a sample of the whole picture's, not of its top rows; the set-up (eye-ray
+           lists, light buffers) before the first tile is not a tile's */
+        double tl = now - job->t_tiles;
+        double left = done > 0 ? tl * (job->ntiles - done) / done : 0.0;
+        fprintf(stderr, "rt: tiles %d/%d, %.2f Mrays/s, %.1f s left\r", done, job->ntiles,
+                el > 0.0 ? (double)atomic_load(&job->rays) / el * 1e-6 : 0.0, left);
     }
     pthread_mutex_unlock(&job->lock);
+}
+
+/* The order the tiles are taken in: k -> (k * stride) mod ntiles with stride coprime to
+   ntiles near ntiles / golden ratio, so that any first part of the order is spread evenly
+   over the picture (the progress estimate then sees a sample of the whole picture's cost,
+   not the top rows'). The tiles a worker gets do not change the picture. */
+static int rt_tile_stride(int ntiles)
+{
+    if (ntiles <= 2)
+        return 1;
+    int s = (int)((double)ntiles * 0.6180339887498949);
+    for (;; s++) {
+        int a = s, b = ntiles;
+        while (b) {
+            int r = a % b;
+            a = b;
+            b = r;
+        }
+        if (a == 1)
+            return s;
+    }
 }
 
 static void rt_work(rt_worker *w)
 {
     rt_job *job = w->job;
     for (;;) {
-        int t = job->hook ? rt_hook_next(job) : atomic_fetch_add(&job->next, 1);
+        int t;
+        if (job->hook) {
+            t = rt_hook_next(job);
+        } else {
+            int k = atomic_fetch_add(&job->next, 1);
+            t = k < job->ntiles ? (int)((int64_t)k * job->stride % job->ntiles) : k;
+        }
         if (t < 0 || t >= job->ntiles)
             break;
         const rt_stats st0 = w->st;
@@ -1303,6 +1340,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     int rc = rt_job_lbufs(&job);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
+    job.stride = rt_tile_stride(job.ntiles);
+    job.t_tiles = rt_now();
     atomic_init(&job.next, 0);
     atomic_init(&job.done, 0);
     atomic_init(&job.rays, 0);

@@ -878,7 +878,7 @@ static int progress_lines(int by_escape, const char *env)
     unlink(name);
     assert_true(n >= 0);
     no_errors();
-    return strstr(buf, "rt: tiles 16/16") != NULL;
+    return strstr(buf, "rt: 16 tiles done in ") != NULL && strstr(buf, " Mrays/s\n") != NULL;
 }
 
 static void test_progress(void **u)
