@@ -8,28 +8,10 @@
 prog=$1
 dir=$2
 xclose=$3
-for t in Xvfb xdotool xkill; do
-    if ! command -v $t >/dev/null 2>&1; then
-        echo "SKIP: $t not installed (scripts/setup.sh installs it)"
-        exit 77
-    fi
-done
+. "$(dirname "$0")/xvfb.sh"
+xvfb_need Xvfb xdotool xkill
 mkdir -p "$dir" && cd "$dir" || exit 1
-rm -f display.txt
-Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
-xpid=$!
-trap 'kill $xpid 2>/dev/null' EXIT
-i=0
-while [ ! -s display.txt ]; do
-    i=$((i + 1)); [ $i -gt 100 ] && { echo "SKIP: Xvfb did not start"; exit 77; }
-    sleep 0.1
-done
-export DISPLAY=:$(cat display.txt)
-i=0
-while ! xdotool getmouselocation >/dev/null 2>&1; do
-    i=$((i + 1)); [ $i -gt 50 ] && { echo "SKIP: Xvfb did not answer"; exit 77; }
-    sleep 0.1
-done
+xvfb_start
 for how in wmdelete destroy xkill; do
     rm -f out.txt
     "$prog" >out.txt 2>&1 &

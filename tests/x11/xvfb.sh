@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: MIT
+# xvfb.sh -- sourced by the X11 test scripts (test_x11.sh, test_x11_close.sh,
+# test_x11_bg.sh): the one way they start their own X server.
+#   xvfb_need TOOL...  skip the test (exit 77) with a message if a tool is missing
+#   xvfb_start         an Xvfb of its own, started in the current folder (display.txt,
+#                      xvfb.log), DISPLAY exported, killed when the script exits; skip (77)
+#                      if it does not start or (with xdotool present) does not answer
+xvfb_need() {
+    for t in "$@"; do
+        if ! command -v "$t" >/dev/null 2>&1; then
+            echo "SKIP: $t not installed (scripts/setup.sh installs it)"
+            exit 77
+        fi
+    done
+}
+
+xvfb_start() {
+    # Xvfb picks a free display itself and writes its number (-displayfd): no race with
+    # other X servers started at the same time (parallel tests, other users).
+    rm -f display.txt
+    Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
+    xpid=$!
+    trap 'kill $xpid 2>/dev/null' EXIT
+    i=0
+    while [ ! -s display.txt ]; do
+        i=$((i + 1)); [ $i -gt 100 ] && { echo "SKIP: Xvfb did not start"; exit 77; }
+        sleep 0.1
+    done
+    DISPLAY=:$(cat display.txt)
+    export DISPLAY
+    command -v xdotool >/dev/null 2>&1 || return 0
+    i=0
+    while ! xdotool getmouselocation >/dev/null 2>&1; do
+        i=$((i + 1)); [ $i -gt 50 ] && { echo "SKIP: Xvfb did not answer"; exit 77; }
+        sleep 0.1
+    done
+}
