@@ -379,6 +379,31 @@ void rtu_nff_view(const rtu_mesh *m, const double bb[6], rtu_view *v)
     v->vp[1] = v->vp[3] = v->vp[5] = 1.0;
 }
 
+rt_scene *rtu_nff_scene(const char *path, double sky, int w, int h, rt_camera *cam)
+{
+    rtu_mesh mesh;
+    if (rtu_load_nff(path, &mesh))
+        return NULL;
+    double vo[4][4], bb[6], m[4][4];
+    rtu_lookat(mesh.from, mesh.at, mesh.up, vo);
+    rtu_mesh_transform(&mesh, vo);
+    rtu_mesh_bbox(&mesh, bb);
+    rtu_view v;
+    rtu_nff_view(&mesh, bb, &v);
+    v.win[3] += sky * (v.win[3] - v.win[2]);
+    rtu_view_matrix(&v, m);
+    rt_scene *sc = rt_scene_new();
+    rt_surface s;
+    rt_surface_default(&s);
+    if (!sc || rtu_mesh_add(&mesh, sc, rt_scene_add_surface(sc, &s)) != 0 ||
+        rt_scene_commit(sc, NULL) != RT_OK || rt_camera_from_view(cam, m, v.vp, w, h) != RT_OK) {
+        rt_scene_free(sc);
+        sc = NULL;
+    }
+    rtu_mesh_free(&mesh);
+    return sc;
+}
+
 /* ---- closed-mesh leak probe ---- */
 
 double rtu_rand(uint64_t *state)

@@ -71,6 +71,11 @@ int rtu_load_scene_vrc(const char *path, rtu_mesh *m, double bb[6]);
  * down -n); fills the view so that the whole bbox lies between front and back planes. */
 void rtu_nff_view(const rtu_mesh *m, const double bb_vrc[6], rtu_view *v);
 
+/* An NFF file as a committed scene in VRC3 with one default surface, and in *cam the file's
+ * view at w x h pixels, its window raised at the top by sky times its height (0: the file's
+ * view; test_rt_progress's sky). NULL when the file cannot be loaded or the scene built. */
+rt_scene *rtu_nff_scene(const char *path, double sky, int w, int h, rt_camera *cam);
+
 /* ---- closed-mesh leak probe (test_rt_hard, bench/rt/rt_leak) ---- */
 
 /* deterministic uniform [0,1) (64-bit LCG) */

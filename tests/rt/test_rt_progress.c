@@ -56,25 +56,8 @@ static void on_progress(void *user, int done, int total)
 
 static rt_scene *mount(rt_camera *cam)
 {
-    rtu_mesh mesh;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", &mesh), 0);
-    double vo[4][4], bb[6];
-    rtu_lookat(mesh.from, mesh.at, mesh.up, vo);
-    rtu_mesh_transform(&mesh, vo);
-    rtu_mesh_bbox(&mesh, bb);
-    rt_scene *sc = rt_scene_new();
-    rt_surface s;
-    rt_surface_default(&s);
-    int sid = rt_scene_add_surface(sc, &s);
-    assert_int_equal(rtu_mesh_add(&mesh, sc, sid), 0);
-    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
-    rtu_view v;
-    rtu_nff_view(&mesh, bb, &v);
-    v.win[3] += 3 * (v.win[3] - v.win[2]); /* sky above: the top three quarters */
-    double m[4][4];
-    rtu_view_matrix(&v, m);
-    assert_int_equal(rt_camera_from_view(cam, m, v.vp, W, H), RT_OK);
-    rtu_mesh_free(&mesh);
+    rt_scene *sc = rtu_nff_scene(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", 3, W, H, cam); /* sky above: the top three quarters */
+    assert_non_null(sc);
     return sc;
 }
 

@@ -554,24 +554,9 @@ static void test_depth(void **state)
 static void test_threads(void **state)
 {
     (void)state;
-    rtu_mesh mesh;
-    assert_int_equal(rtu_load_nff(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", &mesh), 0);
-    double vo[4][4], bb[6];
-    rtu_lookat(mesh.from, mesh.at, mesh.up, vo);
-    rtu_mesh_transform(&mesh, vo);
-    rtu_mesh_bbox(&mesh, bb);
-    rt_scene *sc = rt_scene_new();
-    rt_surface s;
-    rt_surface_default(&s);
-    int sid = rt_scene_add_surface(sc, &s);
-    assert_int_equal(rtu_mesh_add(&mesh, sc, sid), 0);
-    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
-    rtu_view v;
-    rtu_nff_view(&mesh, bb, &v);
-    double m[4][4];
-    rtu_view_matrix(&v, m);
     rt_camera cam;
-    assert_int_equal(rt_camera_from_view(&cam, m, v.vp, 24, 20), RT_OK);
+    rt_scene *sc = rtu_nff_scene(RT_DATA_DIR "/spd/mount-tessellated.nff.gz", 0, 24, 20, &cam);
+    assert_non_null(sc);
     enum { N = 24 * 20 * 3 };
     float *a = malloc(N * sizeof(float)), *b = malloc(N * sizeof(float));
     rt_render_options o;
@@ -614,7 +599,6 @@ static void test_threads(void **state)
     free(a);
     free(b);
     rt_scene_free(sc);
-    rtu_mesh_free(&mesh);
 }
 
 int main(void)
