@@ -266,6 +266,21 @@ enum {
                                     vector workstation rasterises (z-buffer and ray-traced
                                     pictures, hidden-line visibility); at once while the frame
                                     is empty, else from the next frame */
+    /* Line style and page placement of the vector workstations (PDF, SVG, PS, EPS), for
+     * the pages and files written from then on (a frame is drawn when it is written: the
+     * whole frame). Other workstations: 180. */
+    GESC_VEC_LINE_JOIN = -113,   /* ints[1] 0 miter, 1 round (default), 2 bevel */
+    GESC_VEC_LINE_CAP = -114,    /* ints[1] 0 butt (default), 1 round, 2 projecting square */
+    GESC_VEC_MITER_LIMIT = -115, /* floats[0] 1..1000: the miter joins' limit (ratio of the
+                                    miter length to the line width; default 10) */
+    GESC_VEC_LINE_SCALE = -116,  /* floats[0] 0.01..100: factor on every line width (the
+                                    nominal line width; default 1) */
+    GESC_VEC_PAGE = -117,        /* ints[1..4] llx, lly, urx, ury: the picture fitted
+                                    (aspect kept, centred) into this rectangle of a page, in
+                                    points (1/72 inch) from the page's lower left corner,
+                                    -72000..72000; ints[5..6] (optional) page width and
+                                    height 1..72000 (default 612 x 792, US letter); all four
+                                    0: the default, the page is the workstation viewport */
     /* Scripted input (docs/INPUT.md): ints[0] ws id of an INPUT/OUTIN workstation; str =
      * name of a file of raw device events (device coordinates) that its logical input
      * devices replay from now on, replacing any script (182: unreadable file). */

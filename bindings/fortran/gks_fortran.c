@@ -298,6 +298,7 @@ FAPI void FNAME(gmsgs, GMSGS)(const fint *wkid, const fint *lstr, const char *me
  * -1388); only an escape that returns data writes ODR, and LODR is never written, so a
  * program may pass constants there (as NCAR's fgke03 and NGSRAT do). */
 int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len); /* _light.c */
+int gks_f77_escape_real(fint fctid, fint lidr, const char *idr, size_t idr_len);
 
 /* ESCAPE -108 (GESRST, GESC_RT_STATS): IDR(1) columns 1-10 (I10) the workstation; ODR(1)
  * receives the eight counts as 8I10 (eye rays, eye rays that hit, reflection, refraction,
@@ -349,8 +350,9 @@ FAPI void FNAME(gesc, GESC)(const fint *fctid, const fint *lidr, const char *idr
         escape_stats(*lidr, idr, idr_len, mlodr, lodr, odr, odr_len);
         return;
     }
-    if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len))
-        return; /* ray-tracing escapes: integer records (gks_fortran_light.c) */
+    if (gks_f77_escape_ints(*fctid, *lidr, idr, idr_len) ||
+        gks_f77_escape_real(*fctid, *lidr, idr, idr_len))
+        return; /* integer and real records of gks3d's escapes (gks_fortran_light.c) */
     Gescape_in_data in = { { 0, NULL, 0, NULL, 0, NULL } };
     fint nrec = *lidr;
     long ws = 0;

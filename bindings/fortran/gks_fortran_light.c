@@ -14,6 +14,8 @@
 #include "FC.h"
 #include <stddef.h>
 #include <stdint.h>
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define FAPI __attribute__((visibility("default")))
@@ -193,6 +195,44 @@ static int i10_field(const char *rec, size_t len, int i, Gint *out)
     return 0;
 }
 
+/* One E20 field (columns 11..30) of the record rec (length len): a real number written by
+ * any Fortran real edit descriptor, blank filled. 0 = ok, -1 = not a finite real. */
+static int e20_field(const char *rec, size_t len, Gfloat *out)
+{
+    char buf[21];
+    if (len < 30)
+        return -1;
+    memcpy(buf, rec + 10, 20);
+    buf[20] = '\0';
+    for (int i = 0; i < 20; i++)
+        if (buf[i] == 'D' || buf[i] == 'd')
+            buf[i] = 'E'; /* Fortran's double precision exponent */
+    char *end = NULL;
+    double v = strtod(buf, &end);
+    while (end && *end == ' ')
+        end++;
+    if (end == buf || !end || *end || !isfinite(v) || fabs(v) > 3.0e38)
+        return -1;
+    *out = (Gfloat)v;
+    return 0;
+}
+
+/* The real ESCAPEs of the vector workstations from GESC (GESC_VEC_MITER_LIMIT,
+ * GESC_VEC_LINE_SCALE): IDR(1) columns 1-10 the workstation identifier (I10), 11-30 the
+ * value (E20). Returns 1 when fctid is one of them (the escape has then been called, a
+ * malformed record reaching the core as empty data: error 182), 0 otherwise. */
+int gks_f77_escape_real(fint fctid, fint lidr, const char *idr, size_t idr_len)
+{
+    if (fctid != GESC_VEC_MITER_LIMIT && fctid != GESC_VEC_LINE_SCALE)
+        return 0;
+    Gint ws = 0;
+    Gfloat x = 0;
+    int ok = lidr >= 1 && !i10_field(idr, idr_len, 0, &ws) && !e20_field(idr, idr_len, &x);
+    Gescape_in_data in = { { 1, &ws, ok, &x, 0, NULL } };
+    gescape(fctid, &in, NULL, NULL);
+    return 1;
+}
+
 /* The integer ESCAPEs of the PNG and ray-tracing workstations from GESC: IDR(1) holds I10 fields,
  * columns 1-10 the workstation identifier, 11-20 and 21-30 the values (GESC_RT_*, GESC_PNG_*). Returns
  * 1 when fctid is one of them (the escape has then been called, malformed records reaching
@@ -209,15 +249,20 @@ int gks_f77_escape_ints(fint fctid, fint lidr, const char *idr, size_t idr_len)
     case GESC_PNG_SUPERSAMPLE:
     case GESC_PNG_COMPRESSION:
     case GESC_VEC_RESOLUTION:
+    case GESC_VEC_LINE_JOIN:
+    case GESC_VEC_LINE_CAP:
         nvals = 1;
         break;
     case GESC_RT_SAMPLES:
         nvals = 2;
         break;
+    case GESC_VEC_PAGE: /* four values, or six when columns 51-70 hold two more */
+        nvals = idr_len >= 70 && idr[69] != ' ' ? 6 : 4;
+        break;
     default:
         return 0;
     }
-    Gint ints[3] = { 0, 0, 0 };
+    Gint ints[7] = { 0 };
     Gescape_in_data in = { { 0, ints, 0, NULL, 0, NULL } };
     int ok = lidr >= 1 && idr_len >= 20;
     for (int i = 0; ok && i <= nvals; i++)

@@ -73,9 +73,13 @@ static Gint ncarg_ws_type(Gint t)
     return t;
 }
 
+static void ncar_page_reset(void);
+static void page_to_ws(Gint ws);
+
 static void ncarg_opened_gks(void)
 {
     gset_fill_int_style(GSTYLE_SOLID); /* NCAR GKS's initial interior style */
+    ncar_page_reset();
 }
 
 /* NCAR's colour table: 0 black (background), 1 white (foreground), on the workstations
@@ -93,6 +97,7 @@ static void ncarg_opened_ws(Gint ws_id)
     const Gcolr_rep black = { { 0, 0, 0 } }, white = { { 1, 1, 1 } };
     gset_colr_rep(ws_id, 0, &black);
     gset_colr_rep(ws_id, 1, &white);
+    page_to_ws(ws_id);
 }
 
 static Gint ncarg_fill_int_style(Gint style)
@@ -360,12 +365,132 @@ static int escape_reopen(const char *d, size_t n)
     return 0;
 }
 
-/* NCAR's escapes. The PostScript ones (-1510 ... -1530: segment copy marks, fill and hatch
- * spacing, stack and path limits, line width scale, background, line join, line cap,
- * miter limit, page position, coordinate scale) address NCAR's PostScript driver; NCAR's
- * GKS ignores them for other workstations, and this library's vector workstations fix
- * each (round joins, butt caps, the page = the workstation viewport): accepted, no effect.
- * Other identifiers are not the profile's (-1). */
+/* ----------------------------------------- NCAR's PostScript and PDF escapes */
+/* NCAR's PostScript/PDF settings (NGSETI/NGSETR 'NO', 'JO', 'CA', 'MI', 'LX'..'UY',
+ * 'PX'..'QY', 'PW', 'PH', 'SW', 'SH'), mapped onto this library's vector workstations
+ * (PDF, SVG, PS, EPS: gks.h GESC_VEC_*); NCAR's GKS ignores them for other workstation
+ * types, and so does the profile. The page position (-1521) and page sizes (-1529 ...
+ * -1532) name no workstation: they apply to vector workstations opened after them, as
+ * NCAR's PostScript driver takes them when it opens. Until a program gives one, a vector
+ * workstation's page is its viewport, as without the profile. */
+static struct {
+    int set;         /* a page position or size was given */
+    Gint rect[4];    /* llx, lly, urx, ury (points): NCAR's default 36 126 576 666 */
+    Gint pdf[2];     /* PDF page width, height (-1529, -1530): NCAR's 612 x 792 */
+    Gint ps[2];      /* PS page (-1531, -1532) */
+} ncar_page;
+
+static void ncar_page_reset(void)
+{
+    ncar_page.set = 0;
+    ncar_page.rect[0] = 36;
+    ncar_page.rect[1] = 126;
+    ncar_page.rect[2] = 576;
+    ncar_page.rect[3] = 666;
+    ncar_page.pdf[0] = ncar_page.ps[0] = 612;
+    ncar_page.pdf[1] = ncar_page.ps[1] = 792;
+}
+
+/* Whether ws is one of the vector workstations (its type, *type). */
+static int vector_ws(Gint ws, Gint *type)
+{
+    Gint err = 0;
+    char conn[2];
+    *type = 0;
+    ginq_ws_conn_type(ws, (Gint)sizeof conn, &err, conn, type);
+    return !err && (*type == GWS_TYPE_PDF || *type == GWS_TYPE_SVG || *type == GWS_TYPE_PS ||
+                    *type == GWS_TYPE_EPS);
+}
+
+/* ESCAPE func of the vector workstation ws with ints (after the workstation identifier)
+ * and reals; nothing for other workstations. Errors go through the error handler. */
+static void vec_escape(Gint ws, Gint func, const Gint *v, int nv, const Gfloat *r, int nr)
+{
+    Gint type, ints[7] = { ws };
+    if (!vector_ws(ws, &type))
+        return;
+    for (int i = 0; i < nv && i < 6; i++)
+        ints[1 + i] = v[i];
+    Gescape_in_data in = { { 1 + nv, ints, nr, r, 0, NULL } };
+    gescape(func, &in, NULL, NULL);
+}
+
+/* The page given so far, onto the vector workstation ws (opened now). */
+static void page_to_ws(Gint ws)
+{
+    Gint type;
+    if (!ncar_page.set || !vector_ws(ws, &type))
+        return;
+    const Gint *pg = type == GWS_TYPE_PDF ? ncar_page.pdf : ncar_page.ps;
+    Gint v[6] = { ncar_page.rect[0], ncar_page.rect[1], ncar_page.rect[2], ncar_page.rect[3],
+                  pg[0], pg[1] };
+    vec_escape(ws, GESC_VEC_PAGE, v, 6, NULL, 0);
+}
+
+/* -1516 ... -1532: 0, or 182 for a record NCAR does not write. */
+static int escape_postscript(Gint func_id, const char *d, size_t n)
+{
+    int ws = 0, i = 0, r4[4];
+    Gfloat x = 0;
+    switch (func_id) {
+    case -1516: /* nominal line width: I5 ws, F9.3 factor in columns 7-15 */
+    case -1520: /* miter limit: the same */
+        if (field_int(d, n, 0, 5, &ws) || field_real(d, n, 6, 9, &x))
+            return 182;
+        if (func_id == -1516)
+            x = x < 0.01f ? 0.01f : x > 100 ? 100 : x;
+        else
+            x = x < 1 ? 1 : x > 1000 ? 1000 : x;
+        vec_escape(ws, func_id == -1516 ? GESC_VEC_LINE_SCALE : GESC_VEC_MITER_LIMIT, NULL, 0,
+                   &x, 1);
+        return 0;
+    case -1518: /* line join, line cap: I5 ws, I1 0..2 in column 7 */
+    case -1519:
+        if (field_int(d, n, 0, 5, &ws) || field_int(d, n, 6, 1, &i) || i < 0 || i > 2)
+            return 182;
+        vec_escape(ws, func_id == -1518 ? GESC_VEC_LINE_JOIN : GESC_VEC_LINE_CAP, &i, 1, NULL,
+                   0);
+        return 0;
+    case -1521: /* page position: 4I9 in columns 2-10, 12-20, 22-30, 32-40 */
+        for (int k = 0; k < 4; k++)
+            if (field_int(d, n, 1 + 10 * (size_t)k, 9, &r4[k]))
+                return 182;
+        memcpy(ncar_page.rect, r4, sizeof r4);
+        ncar_page.set = 1;
+        return 0;
+    case -1526: /* page position of an open workstation: I5 ws, 4I9 from column 6 */
+        if (field_int(d, n, 0, 5, &ws))
+            return 182;
+        for (int k = 0; k < 4; k++)
+            if (field_int(d, n, 5 + 9 * (size_t)k, 9, &r4[k]))
+                return 182;
+        Gint type;
+        if (vector_ws(ws, &type)) {
+            const Gint *pg = type == GWS_TYPE_PDF ? ncar_page.pdf : ncar_page.ps;
+            Gint v[6] = { r4[0], r4[1], r4[2], r4[3], pg[0], pg[1] };
+            vec_escape(ws, GESC_VEC_PAGE, v, 6, NULL, 0);
+        }
+        return 0;
+    case -1529: /* PDF page width, height; PS page width, height: I5 points */
+    case -1530:
+    case -1531:
+    case -1532:
+        if (field_int(d, n, 0, 5, &i) || i < 1 || i > 72000)
+            return 182;
+        (func_id >= -1530 ? ncar_page.pdf : ncar_page.ps)[func_id == -1529 ||
+                                                          func_id == -1531 ? 0 : 1] = i;
+        ncar_page.set = 1;
+        return 0;
+    default: /* -1510 ... -1515, -1517, -1522 ... -1525, -1527, -1528: segment copy marks,
+                fill and hatch spacing, stack and path limits, background, coordinate
+                scale, colour model, EPS box: a workstation identifier, no effect here */
+        return field_int(d, n, 0, 5, &ws) ? 182 : 0;
+    }
+}
+
+/* NCAR's escapes: -1388 save/restore of the attributes, -1387 and -1389 suspend and
+ * reopen, -1510 ... -1532 PostScript and PDF (escape_postscript). Other identifiers are
+ * not the profile's (-1). */
 static int ncarg_escape(Gint func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     const char *d = in ? in->escape_r1.data : NULL;
@@ -378,10 +503,8 @@ static int ncarg_escape(Gint func_id, const Gescape_in_data *in, Gescape_out_dat
         return escape_suspend(d, n);
     if (func_id == -1389)
         return escape_reopen(d, n);
-    if (func_id >= -1530 && func_id <= -1510) {
-        int ws;
-        return d && n >= 5 && field_int(d, n, 0, 5, &ws) == 0 ? 0 : 182;
-    }
+    if (func_id >= -1532 && func_id <= -1510)
+        return d ? escape_postscript(func_id, d, n) : 182;
     return -1;
 }
 

@@ -4,14 +4,15 @@ C     SPDX-License-Identifier: MIT
 !     GSRFEQ, GSBRFQ, GSLSR, GSLSS round-tripped through GQAPR, GQBAPR,
 !     GQRFEQ, GQLSR, GQLSS; the errors each reports (number and FCTID
 !     through the program's own GERHND), state unchanged after an error;
-!     the integer ray-tracing ESCAPE records of GESC.
+!     the integer ray-tracing ESCAPE records of GESC, the vector
+!     workstations' line style and page records.
       IMPLICIT NONE
       INCLUDE 'GKS_PAR'
       INCLUDE 'GKS3D_PAR'
       INCLUDE 'GKSE_PAR'
       INTEGER LASTE, LASTF, NERR
       COMMON /LASTER/ LASTE, LASTF, NERR
-      INTEGER NFAIL, ERR, I, T, F, B, OL, L, LODR
+      INTEGER NFAIL, ERR, I, T, F, B, OL, L, LODR, NBEF
       REAL A, D, S, C(3), E, TR, R, P(3), V(3), AT(2), CX, SP
       REAL WC(3), WP(3), WV(3), WA(2)
       INTEGER ACT(2), DEA(1)
@@ -180,6 +181,30 @@ C     SPDX-License-Identifier: MIT
       WRITE (IDR(1), '(2I10)') 2, 0
       CALL GESC(GESPAA, 1, IDR, 1, LODR, ODR)
       CALL CHKER('GESC -110 value 0', 182, EESC, NFAIL)
+!     vector line style and page (a PDF workstation, if the build has
+!     cairo; else OPEN WORKSTATION answers 23 and this part is left):
+!     a real record (E20 in columns 11-30), an integer one, a page of
+!     six values; errors of this part are not counted below.
+      NBEF = NERR
+      CALL GOPWK(3, 78, GWSPDF)
+      IF (NERR .EQ. NBEF) THEN
+        WRITE (IDR(1), '(I10,E20.7)') 3, 2.5
+        CALL GESC(GESVML, 1, IDR, 1, LODR, ODR)
+        CALL CHKI('GESC -115', NERR, NBEF, NFAIL)
+        WRITE (IDR(1), '(I10,F20.3)') 3, 0.5
+        CALL GESC(GESVML, 1, IDR, 1, LODR, ODR)
+        CALL CHKER('GESC -115 value 0.5', 182, EESC, NFAIL)
+        IDR(1) = '         3         x'
+        CALL GESC(GESVLS, 1, IDR, 1, LODR, ODR)
+        CALL CHKER('GESC -116 malformed', 182, EESC, NFAIL)
+        WRITE (IDR(1), '(2I10)') 3, 2
+        CALL GESC(GESVLJ, 1, IDR, 1, LODR, ODR)
+        WRITE (IDR(1), '(7I10)') 3, 72, 72, 216, 216, 612, 792
+        CALL GESC(GESVPG, 1, IDR, 1, LODR, ODR)
+        CALL CHKI('GESC -113, -117', NERR, NBEF + 2, NFAIL)
+        CALL GCLWK(3)
+      ENDIF
+      NERR = NBEF
       CALL GCLWK(2)
       CALL GCLWK(1)
       CALL GCLKS

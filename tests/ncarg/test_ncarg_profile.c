@@ -155,20 +155,69 @@ static void test_escape_1388(void **u)
     gclose_gks();
 }
 
+#ifdef GKS_HAVE_CAIRO
+/* The contents of file (at most cap - 1 bytes) in buf, NUL-terminated with NULs replaced */
+static void slurp(const char *file, char *buf, size_t cap)
+{
+    FILE *f = fopen(file, "rb");
+    size_t n = f ? fread(buf, 1, cap - 1, f) : 0;
+    if (f)
+        fclose(f);
+    for (size_t i = 0; i < n; i++)
+        if (!buf[i])
+            buf[i] = ' ';
+    buf[n] = '\0';
+}
+#endif
+
+/* NCAR's PostScript/PDF escapes as NGSETI and NGSETR write them: onto a PDF workstation
+ * the line style and page escapes of gks.h (the page as cairo writes it: the MediaBox);
+ * for a workstation that is not a vector one, and one not open, no effect and no error. */
 static void test_escape_ps_and_others(void **u)
 {
     (void)u;
     reset_gks();
     gopen_gks(NULL, 0);
     char idr[4][80], odr[4][80];
-    rec(idr[0], "    1    1"); /* line join, line cap, miter limit: accepted */
+    rec(idr[0], "    1 1"); /* join, cap of workstation 1 (not open): no effect */
     gesc80(-1518, 1, (const char (*)[80])idr, odr);
     gesc80(-1519, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "    1    4.000"); /* miter limit, nominal line width */
     gesc80(-1520, 1, (const char (*)[80])idr, odr);
     gesc80(-1516, 1, (const char (*)[80])idr, odr);
-    rec(idr[0], "    0   36   126  576  666"); /* page position, no workstation needed */
-    gesc80(-1521, 1, (const char (*)[80])idr, odr);
     assert_int_equal(n_captured, 0);
+    /* LX LY UX UY (NGSETI): 4I9 in columns 2-10, 12-20, 22-30, 32-40; then PW, PH */
+    rec(idr[0], "       100       200       300       400");
+    gesc80(-1521, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "  500");
+    gesc80(-1529, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "  600");
+    gesc80(-1530, 1, (const char (*)[80])idr, odr);
+    assert_int_equal(n_captured, 0);
+#ifdef GKS_HAVE_CAIRO /* else NCAR's PDF type answers 23 */
+    gopen_ws(4, "ncarpage.pdf", 11); /* NCAR's PDF type */
+    gopen_ws(5, "ncarpage2", 1);     /* NCGM: PNG, not a vector workstation */
+    rec(idr[0], "    4 0");          /* miter joins on the PDF, none on the PNG */
+    gesc80(-1518, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "    5 0");
+    gesc80(-1518, 1, (const char (*)[80])idr, odr);
+    rec(idr[0], "    4 7"); /* NCAR writes 0..2 */
+    gesc80(-1519, 1, (const char (*)[80])idr, odr);
+    assert_int_equal(n_captured, 1);
+    assert_int_equal(captured[0].err, 182);
+    n_captured = 0;
+    gactivate_ws(4);
+    Gpoint p[2] = { { 0.1f, 0.1f }, { 0.9f, 0.9f } };
+    Gpoint_list l = { 2, p };
+    gpolyline(&l);
+    gdeactivate_ws(4);
+    gclose_ws(4);
+    gclose_ws(5);
+    assert_int_equal(n_captured, 0);
+    static char buf[1 << 16];
+    slurp("ncarpage.pdf", buf, sizeof buf);
+    assert_non_null(strstr(buf, "/MediaBox [ 0 0 500 600 ]"));
+#endif
     gesc80(-1999, 1, (const char (*)[80])idr, odr); /* not NCAR's: as without the profile */
     assert_int_equal(n_captured, 1);
     assert_int_equal(captured[0].err, 180);

@@ -11,6 +11,8 @@
  *                                      written three times gives the same files
  *   test_vector text    OUT            ink of TEXT agrees with INQUIRE TEXT EXTENT
  *   test_vector resolution OUT         ESCAPE GESC_VEC_RESOLUTION (embedded image size)
+ *   test_vector linestyle OUT          ESCAPEs GESC_VEC_LINE_JOIN ... GESC_VEC_PAGE as poppler
+ *                                      draws them
  *
  * Pictures: SIZE pixels (fig2 and plot2d 360, previews 120; surface 180, ray traced at
  * 300 dpi on the vector types) on the PNG workstation, SIZE x 0.2 mm on the vector ones, whose
@@ -445,6 +447,188 @@ static int resolution(const char *out)
     return fail;
 }
 
+/* ---- ESCAPEs GESC_VEC_LINE_JOIN, _CAP, _MITER_LIMIT, _LINE_SCALE, _PAGE ---- */
+typedef struct { int join, cap, page; double miter, scale; } line_case;
+
+/* One PDF page, 2 x 2 inches: a V of width 30 nominal units (6 mm) with its apex at
+ * (0.5, 0.8), and a horizontal segment from x 0.3 to 0.7 at y 0.15; the escapes of c
+ * (join/cap -1 and miter/scale 0 = not given; page: the picture into the rectangle
+ * 72 72 216 216 points of a letter page), and the bad values, which must each report 182
+ * and change nothing. Returns the error count of the bad values that were not 182. */
+static int line_page(const char *file, const line_case *c)
+{
+    gopen_ws(1, file, GWS_TYPE_PDF);
+    Glimit w = { 0, 1, 0, 1 }, v = { 0, 0.0508f, 0, 0.0508f };
+    gset_ws_win(1, &w);
+    gset_ws_vp(1, &v);
+    Gint ints[7] = { 1 };
+    Gfloat x = 0;
+    Gescape_in_data in = { { 2, ints, 1, &x, 0, NULL } };
+    int bad = 0;
+    struct { int id, ni; Gint i1; double x; } wrong[] = {
+        { GESC_VEC_LINE_JOIN, 2, 3, 0 }, { GESC_VEC_LINE_CAP, 2, -1, 0 },
+        { GESC_VEC_MITER_LIMIT, 2, 0, 0.5 }, { GESC_VEC_LINE_SCALE, 2, 0, 0 },
+        { GESC_VEC_PAGE, 3, 10, 0 }, { GESC_VEC_PAGE, 5, 300, 0 },
+    };
+    for (size_t k = 0; k < sizeof wrong / sizeof wrong[0]; k++) {
+        last_err = 0;
+        in.num_ints = wrong[k].ni;
+        ints[1] = wrong[k].i1; /* PAGE: llx 300 > urx 0 */
+        ints[2] = ints[3] = ints[4] = 0;
+        x = (Gfloat)wrong[k].x;
+        gescape(wrong[k].id, &in, NULL, NULL);
+        bad += last_err != 182;
+    }
+    in.num_ints = 2;
+    if (c->join >= 0) {
+        ints[1] = c->join;
+        gescape(GESC_VEC_LINE_JOIN, &in, NULL, NULL);
+    }
+    if (c->cap >= 0) {
+        ints[1] = c->cap;
+        gescape(GESC_VEC_LINE_CAP, &in, NULL, NULL);
+    }
+    if (c->miter > 0) {
+        x = (Gfloat)c->miter;
+        gescape(GESC_VEC_MITER_LIMIT, &in, NULL, NULL);
+    }
+    if (c->scale > 0) {
+        x = (Gfloat)c->scale;
+        gescape(GESC_VEC_LINE_SCALE, &in, NULL, NULL);
+    }
+    if (c->page) {
+        Gint pg[5] = { 1, 72, 72, 216, 216 };
+        Gescape_in_data pin = { { 5, pg, 0, NULL, 0, NULL } };
+        gescape(GESC_VEC_PAGE, &pin, NULL, NULL);
+    }
+    gactivate_ws(1);
+    gset_linewidth(30);
+    Gpoint vee[3] = { { 0.3f, 0.4f }, { 0.5f, 0.8f }, { 0.7f, 0.4f } };
+    Gpoint seg[2] = { { 0.3f, 0.15f }, { 0.7f, 0.15f } };
+    Gpoint_list l1 = { 3, vee }, l2 = { 2, seg };
+    gpolyline(&l1);
+    gpolyline(&l2);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    return bad;
+}
+
+/* Dark pixels of the picture (288 x 288 pixels for 2 inches) above the apex row (y 0.8:
+ * what the join adds), left of x 0.3 on the segment's rows (what the cap adds), and in all. */
+typedef struct { long above, left, all; } line_count;
+static int count_dark(const char *png, line_count *n)
+{
+    img im = { 0 };
+    if (img_read(png, &im))
+        return -1;
+    *n = (line_count){ 0, 0, 0 };
+    for (int j = 0; j < im.h; j++)
+        for (int i = 0; i < im.w; i++) {
+            if (px(&im, i, j, 0) >= 128)
+                continue;
+            double xn = (i + 0.5) / im.w, yn = 1.0 - (j + 0.5) / im.h;
+            n->all++;
+            n->above += yn > 0.8;
+            n->left += xn < 0.3 && yn < 0.3;
+        }
+    img_free(&im);
+    return 0;
+}
+
+/* The line style escapes as poppler draws them: the join above the apex of a V whose
+ * half angle is 26.6 degrees (its miter reaches 1.12 line widths above the apex, a round
+ * join 0.5, a bevel 0.22), so miter > round > bevel, and a miter limit of 2 (below
+ * 1 / sin 26.6 = 2.24) gives the bevel exactly; the cap beyond the end of a segment:
+ * none for butt, half a width for square, less for round; a line scale of 2 draws about
+ * twice the ink (1.6 .. 2.4: the joins and caps do not scale linearly); the page: a
+ * letter page (pdfinfo) with every dark pixel inside the rectangle. */
+static int line_style(const char *out)
+{
+    if (!have("pdftoppm") || !have("pdfinfo")) {
+        printf("skipped: pdftoppm or pdfinfo not found (poppler-utils)\n");
+        return SKIP;
+    }
+    static const struct { const char *name; line_case c; } cases[] = {
+        { "default", { -1, -1, 0, 0, 0 } },  { "miter", { 0, -1, 0, 0, 0 } },
+        { "bevel", { 2, -1, 0, 0, 0 } },     { "miter2", { 0, -1, 0, 2.0, 0 } },
+        { "capround", { -1, 1, 0, 0, 0 } },  { "capsquare", { -1, 2, 0, 0, 0 } },
+        { "scale2", { -1, -1, 0, 0, 2.0 } }, { "page", { -1, -1, 1, 0, 0 } },
+    };
+    enum { N = sizeof cases / sizeof cases[0] };
+    line_count n[N];
+    int fail = 0;
+    gset_err_hand(on_error, NULL);
+    gopen_gks(NULL, 0);
+    for (int k = 0; k < N; k++) {
+        char file[PATH_LEN], png[PATH_LEN + 8], stem[PATH_LEN], cmd[3 * PATH_LEN];
+        snprintf(file, sizeof file, "%s/line_%s.pdf", out, cases[k].name);
+        snprintf(stem, sizeof stem, "%s/line_%s", out, cases[k].name);
+        snprintf(png, sizeof png, "%s.png", stem);
+        int bad = line_page(file, &cases[k].c);
+        if (cases[k].c.page)
+            snprintf(cmd, sizeof cmd, "pdftoppm -png -singlefile -r 72 '%s' '%s'", file, stem);
+        else
+            snprintf(cmd, sizeof cmd, "pdftoppm -png -singlefile -r 144 '%s' '%s'", file, stem);
+        if (bad || sh(cmd) || count_dark(png, &n[k])) {
+            printf("FAIL %s: %d bad values not reported as 182, or no picture\n",
+                   cases[k].name, bad);
+            fail = 1;
+            n[k] = (line_count){ -1, -1, -1 };
+        }
+        printf("%-9s above apex %5ld, left of segment %4ld, all %6ld\n", cases[k].name,
+               n[k].above, n[k].left, n[k].all);
+    }
+    /* 0 default (round join, butt cap) 1 miter 2 bevel 3 miter limit 2 4 round cap
+     * 5 square cap 6 scale 2 7 page */
+    struct { const char *what; int ok; } checks[] = {
+        { "miter > round > bevel > 0", n[1].above > n[0].above && n[0].above > n[2].above &&
+                                           n[2].above > 0 },
+        { "miter limit 2 = bevel", n[3].above == n[2].above && n[3].all == n[2].all },
+        { "butt cap: nothing left of the end", n[0].left == 0 },
+        { "square cap > round cap > 0", n[5].left > n[4].left && n[4].left > 0 },
+        { "scale 2: 1.6 .. 2.4 times the ink", n[6].all > 1.6 * n[0].all &&
+                                                   n[6].all < 2.4 * n[0].all },
+    };
+    for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++) {
+        printf("%s: %s\n", checks[k].what, checks[k].ok ? "ok" : "FAIL");
+        fail |= !checks[k].ok;
+    }
+    /* the page: 612 x 792 points, the picture inside 72..216 (x), 792-216..792-72 (rows) */
+    char file[PATH_LEN], cmd[3 * PATH_LEN];
+    snprintf(file, sizeof file, "%s/line_page.pdf", out);
+    snprintf(cmd, sizeof cmd, "pdfinfo '%s' | grep -q 'Page size: *612 x 792 pts'", file);
+    int page_ok = sh(cmd) == 0;
+    img im = { 0 };
+    snprintf(file, sizeof file, "%s/line_page.png", out);
+    long inside = 0, outside = 0;
+    if (img_read(file, &im) == 0) {
+        for (int j = 0; j < im.h; j++)
+            for (int i = 0; i < im.w; i++)
+                if (px(&im, i, j, 0) < 128) {
+                    int in_rect = i >= 72 && i < 216 && j >= 792 - 216 && j < 792 - 72;
+                    inside += in_rect;
+                    outside += !in_rect;
+                }
+        page_ok &= im.w == 612 && im.h == 792;
+        img_free(&im);
+    }
+    page_ok &= inside > 0 && outside == 0;
+    printf("page: letter %s, dark pixels inside the rectangle %ld, outside %ld: %s\n",
+           page_ok ? "yes" : "no", inside, outside, page_ok ? "ok" : "FAIL");
+    fail |= !page_ok;
+    /* not a vector workstation: 180 */
+    gopen_ws(2, NULL, GWS_TYPE_NULL);
+    Gint ints[2] = { 2, 0 };
+    Gescape_in_data in = { { 2, ints, 0, NULL, 0, NULL } };
+    last_err = 0;
+    gescape(GESC_VEC_LINE_JOIN, &in, NULL, NULL);
+    printf("null workstation: error %d (want 180)\n", (int)last_err);
+    fail |= last_err != 180;
+    gclose_ws(2);
+    gclose_gks();
+    return fail;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 5 && strcmp(argv[1], "run") == 0)
@@ -457,6 +641,9 @@ int main(int argc, char **argv)
         return text(argv[2]);
     if (argc >= 3 && strcmp(argv[1], "resolution") == 0)
         return resolution(argv[2]);
-    fprintf(stderr, "usage: test_vector run CBIN FBIN OUT | readers OUT | twins OUT | text OUT\n");
+    if (argc >= 3 && strcmp(argv[1], "linestyle") == 0)
+        return line_style(argv[2]);
+    fprintf(stderr, "usage: test_vector run CBIN FBIN OUT | readers OUT | twins OUT | text OUT | "
+                    "resolution OUT | linestyle OUT\n");
     return 2;
 }

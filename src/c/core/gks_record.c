@@ -136,6 +136,11 @@ void gks_record_escape(int ws_id, int func_id, const Gescape_in_data *in)
     case GESC_PNG_SUPERSAMPLE:
     case GESC_PNG_COMPRESSION:
     case GESC_VEC_RESOLUTION:
+    case GESC_VEC_LINE_JOIN:
+    case GESC_VEC_LINE_CAP:
+    case GESC_VEC_MITER_LIMIT:
+    case GESC_VEC_LINE_SCALE:
+    case GESC_VEC_PAGE:
         (void)gks_mf_escape(GFN_ESC, rec, func_id, in); /* a failed write is reported */
         break;
     default: /* file names, threads, progress, statistics: not the picture's */

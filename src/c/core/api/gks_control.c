@@ -421,7 +421,7 @@ GKS_API void gescape(Gint func_id, const Gescape_in_data *in, Gstore *store_data
         }
     }
     /* Identifiers this implementation knows: the driver checks the rest of the record. */
-    if ((func_id > GESC_SET_FILE_NAME || func_id < GESC_VEC_RESOLUTION) &&
+    if ((func_id > GESC_SET_FILE_NAME || func_id < GESC_VEC_PAGE) &&
         func_id != GESC_MI_ALLOW_ESCAPES)
         GKS_FAIL(180, GFN_ESC);
     if (!in || in->num_ints < 1 || !in->ints)

@@ -487,6 +487,11 @@ static int escape_policy(const interp *ip, int func, Gint *ints, long ni)
     case GESC_RT_SPD:
     case GESC_PNG_SUPERSAMPLE:
     case GESC_PNG_COMPRESSION:
+    case GESC_VEC_LINE_JOIN:
+    case GESC_VEC_LINE_CAP:
+    case GESC_VEC_MITER_LIMIT:
+    case GESC_VEC_LINE_SCALE:
+    case GESC_VEC_PAGE:
         return 0;
     default: /* file names, threads, progress, statistics, and anything newer */
         return 180;

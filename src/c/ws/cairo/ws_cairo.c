@@ -85,7 +85,12 @@ typedef struct vec_buf { unsigned char *p; size_t n, cap; int fail; } vec_buf;
 /* What a frame's page needs beyond the retained records, taken at UPDATE (the
  * workstation's viewport, colours and mode may change before the frame ends). */
 typedef struct vec_snap {
-    double w_pt, h_pt;     /* page size in points */
+    double w_pt, h_pt;     /* size of the picture in points: the workstation viewport */
+    double page_w, page_h; /* size of the page in points (the picture's, or GESC_VEC_PAGE's) */
+    cairo_matrix_t place;  /* the picture's points (y down) -> the page's: the identity, or
+                              GESC_VEC_PAGE's fit into its rectangle */
+    double reg[4];         /* the part of the picture placed (points, y up): x0 y0 x1 y1 */
+    int placed;            /* GESC_VEC_PAGE applies */
     int rw, rh;            /* raster size (pixels at the resolution) */
     double pw, ph;         /* page size in those pixels */
     float bg[3];           /* colour 0 */
@@ -130,6 +135,14 @@ typedef struct vec_text {
     size_t c0, nc;         /* clip polygon (raster pixels), nc = 0: none */
 } vec_text;
 
+/* How lines are stroked (ESCAPEs GESC_VEC_LINE_*): cairo's join and cap, the miter limit,
+ * and a factor on every line width. */
+typedef struct vec_line_style {
+    cairo_line_join_t join;
+    cairo_line_cap_t cap;
+    double miter, scale;
+} vec_line_style;
+
 typedef struct vec_ws {
     vec_format fmt;
     char *base;
@@ -138,6 +151,9 @@ typedef struct vec_ws {
     int frame_written;     /* the current frame has been drawn (file or pending page) */
     int written_any;
     int dpi, next_dpi;     /* resolution of rasterised parts; next_dpi from the next frame */
+    vec_line_style line;   /* GESC_VEC_LINE_JOIN, _CAP, _MITER_LIMIT, _LINE_SCALE */
+    int page_set;          /* GESC_VEC_PAGE given: page[] = llx, lly, urx, ury, w, h (pt) */
+    double page[6];
     png_render *vec;       /* retained primitives written as vectors */
     ws_render *r;          /* z-buffer primitives drawn at once into fb (r->classic),
                               areas recorded for ray tracing (r->rt) */
@@ -200,6 +216,7 @@ static int vec_open_fmt(gks_ws *ws, vec_format fmt)
     }
     v->frame = 1;
     v->next_dpi = VEC_DEFAULT_DPI;
+    v->line = (vec_line_style){ CAIRO_LINE_JOIN_ROUND, CAIRO_LINE_CAP_BUTT, 10.0, 1.0 };
     apply_dpi(v);
     ws->priv = v;
     return 0;
@@ -297,12 +314,14 @@ static void path_loops(cairo_t *cr, const ws_render_item *it, const vec_xf *t, i
 /* Dashes of the raster module (raster.h) in nominal units times max(1, width). */
 /* k: user space units per raster pixel (1 in pixel space, the page's points per pixel in
  * device space, see vec_draw). */
-static void set_line(cairo_t *cr, const ws_render_item *it, int type, double width, double k)
+static void set_line(cairo_t *cr, const ws_render_item *it, int type, double width, double k,
+                     const vec_line_style *ls)
 {
     double w = width > it->unit ? width : it->unit;
-    cairo_set_line_width(cr, w * k);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    cairo_set_line_width(cr, w * k * ls->scale);
+    cairo_set_line_join(cr, ls->join);
+    cairo_set_line_cap(cr, ls->cap);
+    cairo_set_miter_limit(cr, ls->miter);
     double s = k * it->unit * (w / it->unit > 1.0 ? w / it->unit : 1.0);
     double d[4];
     int n = 0;
@@ -629,6 +648,7 @@ static int real_font(vec_ws *v)
  * arrays and hatches are drawn in raster pixels (the matrix pix). */
 typedef struct vec_draw {
     cairo_t *cr;
+    cairo_matrix_t place;  /* the picture's points -> the page's (vec_snap) */
     cairo_matrix_t pix;    /* raster pixels, y up -> device space */
     vec_xf xf;             /* the same for the line and marker paths */
     int device;            /* the current matrix is the identity (else pix) */
@@ -668,11 +688,11 @@ static void vec_group(vec_draw *d, const ws_render_item *it, int linetype, int m
         return;
     vec_flush(d);
     if (!d->device) {
-        cairo_identity_matrix(d->cr);
+        cairo_set_matrix(d->cr, &d->place);
         d->device = 1;
     }
     cairo_set_source_rgb(d->cr, it->rgb[0], it->rgb[1], it->rgb[2]);
-    set_line(d->cr, it, linetype, it->width, d->xf.k);
+    set_line(d->cr, it, linetype, it->width, d->xf.k, &d->v->line);
     d->open = 1;
     d->kind = it->kind;
     memcpy(d->rgb, it->rgb, sizeof d->rgb);
@@ -693,7 +713,7 @@ static int text_draw(vec_draw *d, size_t i)
     cairo_t *cr = d->cr;
     double k = d->xf.k, h = d->xf.h, s = VEC_EM * k;
     if (!d->device) {
-        cairo_identity_matrix(cr);
+        cairo_set_matrix(cr, &d->place);
         d->device = 1;
     }
     if (t->nc) {
@@ -846,6 +866,44 @@ static int raster_image(gks_ws *ws, vec_ws *v, cairo_surface_t **out)
     return 0;
 }
 
+/* The page of the snapshot s: the picture itself, or (GESC_VEC_PAGE) a page of its own
+ * size with the picture fitted into the rectangle, its aspect kept, centred. The picture
+ * placed is what the workstation window maps to (the viewport's part the workstation
+ * transformation fills, s->reg), clipped to it. */
+static void page_place(const gks_ws *ws, const vec_ws *v, vec_snap *s)
+{
+    cairo_matrix_init_identity(&s->place);
+    s->page_w = s->w_pt;
+    s->page_h = s->h_pt;
+    s->reg[0] = s->reg[1] = 0;
+    s->reg[2] = s->w_pt;
+    s->reg[3] = s->h_pt;
+    s->placed = v->page_set;
+    if (!v->page_set)
+        return;
+    double m[4][4];
+    if (gks_ws_pixel_matrix(ws, 72.0 / VEC_INCH_M, m) == 0) {
+        const Glimit3 *w = &ws->cur_win;
+        double x0 = m[0][0] * w->x_min + m[0][3], x1 = m[0][0] * w->x_max + m[0][3];
+        double y0 = m[1][1] * w->y_min + m[1][3], y1 = m[1][1] * w->y_max + m[1][3];
+        if (x1 - x0 > 1e-9 && y1 - y0 > 1e-9) {
+            s->reg[0] = x0;
+            s->reg[1] = y0;
+            s->reg[2] = x1;
+            s->reg[3] = y1;
+        }
+    }
+    const double *p = v->page; /* llx, lly, urx, ury, page width, height (points, y up) */
+    double rw = p[2] - p[0], rh = p[3] - p[1];
+    double gw = s->reg[2] - s->reg[0], gh = s->reg[3] - s->reg[1];
+    double f = rw / gw < rh / gh ? rw / gw : rh / gh;
+    s->page_w = p[4];
+    s->page_h = p[5];
+    /* picture points (y down from its top) -> page points (y down from the page's top) */
+    cairo_matrix_init(&s->place, f, 0, 0, f, p[0] + 0.5 * (rw - f * gw) - f * s->reg[0],
+                      p[5] - p[1] - 0.5 * (rh - f * gh) - f * (s->h_pt - s->reg[1]));
+}
+
 /* The frame's snapshot at UPDATE. */
 static int snap_take(gks_ws *ws, vec_ws *v)
 {
@@ -865,6 +923,7 @@ static int snap_take(gks_ws *ws, vec_ws *v)
     s->h_pt = vh * k >= 1.0 ? vh * k : 1.0;
     s->pw = s->w_pt * v->dpi / 72.0;
     s->ph = s->h_pt * v->dpi / 72.0;
+    page_place(ws, v, s);
     raster_size(ws, v, &s->rw, &s->rh);
     s->bg[0] = (float)ws->colr[0].red;
     s->bg[1] = (float)ws->colr[0].green;
@@ -879,6 +938,12 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
 {
     const vec_snap *s = &v->snap;
     double k = 72.0 / v->dpi;
+    cairo_set_matrix(cr, &s->place);
+    if (s->placed) { /* only what the workstation window maps to */
+        cairo_rectangle(cr, s->reg[0], s->h_pt - s->reg[3], s->reg[2] - s->reg[0],
+                        s->reg[3] - s->reg[1]);
+        cairo_clip(cr);
+    }
     cairo_translate(cr, 0, s->h_pt);
     cairo_scale(cr, k, -k);
     cairo_set_source_rgb(cr, s->bg[0], s->bg[1], s->bg[2]);
@@ -901,7 +966,7 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
         cairo_fill(cr);
         cairo_pattern_destroy(pat);
     }
-    vec_draw d = { .cr = cr, .xf = { k, s->h_pt }, .v = v };
+    vec_draw d = { .cr = cr, .place = s->place, .xf = { k, s->h_pt }, .v = v };
     cairo_get_matrix(cr, &d.pix);
     cairo_font_options_t *fo = cairo_font_options_create(); /* glyphs where they are put */
     cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
@@ -949,13 +1014,13 @@ static int doc_open(vec_ws *v, double w, double h)
 static int page_emit(vec_ws *v)
 {
     const vec_snap *s = &v->snap;
-    int e = doc_open(v, s->w_pt, s->h_pt);
+    int e = doc_open(v, s->page_w, s->page_h);
     if (e)
         return e;
     if (v->fmt == VEC_PDF)
-        cairo_pdf_surface_set_size(v->doc, s->w_pt, s->h_pt);
+        cairo_pdf_surface_set_size(v->doc, s->page_w, s->page_h);
     else
-        cairo_ps_surface_set_size(v->doc, s->w_pt, s->h_pt);
+        cairo_ps_surface_set_size(v->doc, s->page_w, s->page_h);
     cairo_t *cr = cairo_create(v->doc);
     e = draw_frame(v, cr);
     cairo_show_page(cr);
@@ -969,7 +1034,7 @@ static int page_emit(vec_ws *v)
 /* SVG / EPS: the frame's file. */
 static int file_write(gks_ws *ws, vec_ws *v)
 {
-    double w = v->snap.w_pt, h = v->snap.h_pt;
+    double w = v->snap.page_w, h = v->snap.page_h;
     char *path;
     /* a later frame's name may be another workstation's file: 21, nothing written */
     int c = gks_ws_file_claim_frame(ws, v->base, v->frame, vec_ext[v->fmt], &path);
@@ -1154,6 +1219,60 @@ static int vec_primitive(gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
+/* floats[0] in [lo, hi] into *x: 0, or 182 */
+static int escape_real(const Gescape_in_data *in, double lo, double hi, double *x)
+{
+    if (in->num_floats < 1 || !in->floats || !(in->floats[0] >= lo && in->floats[0] <= hi))
+        return 182;
+    *x = in->floats[0];
+    return 0;
+}
+
+/* GESC_VEC_LINE_JOIN ... GESC_VEC_PAGE (gks.h): 0, or 182 with nothing changed. */
+static int vec_style_escape(vec_ws *v, int func_id, const Gescape_in_data *in)
+{
+    static const cairo_line_join_t joins[3] = { CAIRO_LINE_JOIN_MITER, CAIRO_LINE_JOIN_ROUND,
+                                                CAIRO_LINE_JOIN_BEVEL };
+    static const cairo_line_cap_t caps[3] = { CAIRO_LINE_CAP_BUTT, CAIRO_LINE_CAP_ROUND,
+                                              CAIRO_LINE_CAP_SQUARE };
+    int i = 0, e;
+    switch (func_id) {
+    case GESC_VEC_LINE_JOIN:
+        if (!(e = gks_ws_escape_int(in, 0, 2, &i)))
+            v->line.join = joins[i];
+        return e;
+    case GESC_VEC_LINE_CAP:
+        if (!(e = gks_ws_escape_int(in, 0, 2, &i)))
+            v->line.cap = caps[i];
+        return e;
+    case GESC_VEC_MITER_LIMIT:
+        return escape_real(in, 1.0, 1000.0, &v->line.miter);
+    case GESC_VEC_LINE_SCALE:
+        return escape_real(in, 0.01, 100.0, &v->line.scale);
+    default:
+        break;
+    }
+    /* GESC_VEC_PAGE */
+    if (in->num_ints != 5 && in->num_ints != 7)
+        return 182;
+    const Gint *a = in->ints + 1;
+    if (!a[0] && !a[1] && !a[2] && !a[3]) {
+        v->page_set = 0;
+        return 0;
+    }
+    double p[6] = { 0, 0, 0, 0, 612, 792 };
+    for (int k = 0; k < in->num_ints - 1; k++) {
+        if (a[k] < (k < 4 ? -72000 : 1) || a[k] > 72000)
+            return 182;
+        p[k] = a[k];
+    }
+    if (p[2] <= p[0] || p[3] <= p[1])
+        return 182;
+    memcpy(v->page, p, sizeof p);
+    v->page_set = 1;
+    return 0;
+}
+
 static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     vec_ws *v = ws->priv;
@@ -1169,6 +1288,8 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         }
         return 0;
     }
+    if (func_id <= GESC_VEC_LINE_JOIN && func_id >= GESC_VEC_PAGE)
+        return vec_style_escape(v, func_id, in);
     /* PDF and PS hold all frames in frame 1's file, SVG and EPS one file per frame */
     int fr = v->fmt == VEC_PDF || v->fmt == VEC_PS ? 1 : v->frame;
     return ws_rt_file_escape(v->r->rt, ws, func_id, in, out, fr, vec_ext[v->fmt], &v->base);
