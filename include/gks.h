@@ -279,8 +279,9 @@ enum {
                                     (aspect kept, centred) into this rectangle of a page, in
                                     points (1/72 inch) from the page's lower left corner,
                                     -72000..72000; ints[5..6] (optional) page width and
-                                    height 1..72000 (default 612 x 792, US letter); all four
-                                    0: the default, the page is the workstation viewport */
+                                    height 1..72000 (default: as given before, else 612 x
+                                    792, US letter); all four 0: the default, the page is
+                                    the workstation viewport */
     /* Scripted input (docs/INPUT.md): ints[0] ws id of an INPUT/OUTIN workstation; str =
      * name of a file of raw device events (device coordinates) that its logical input
      * devices replay from now on, replacing any script (182: unreadable file). */

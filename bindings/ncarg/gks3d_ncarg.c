@@ -11,8 +11,8 @@
  *     still overrides);
  *   - NCAR's escapes -1388 (save, restore, get, set the attributes of NGSRAT), -1387 and
  *     -1389 (NGMFTC, NGREOP: suspend and reopen a metafile), and the PostScript escapes
- *     -1510 ... -1530 (accepted: they set NCAR PostScript driver details this library's
- *     vector workstations fix, docs/NCAR.md);
+ *     -1510 ... -1532 (line style and page onto the vector workstations' ESCAPEs, the
+ *     others accepted with no effect, docs/NCAR.md);
  *   - NCAR-internal entry points of libncarg: GZW2NX, GZW2NY (world to NDC).
  */
 #include "gks_binding.h"
@@ -56,7 +56,27 @@ static int have_type(Gint type)
  * window when this build has it and DISPLAY is set, else the PNG files. PostScript,
  * EPS and EPSI -> PS and EPS, PDF -> PDF (A4 portrait: the landscape types are drawn
  * portrait, docs/NCAR.md). Others unchanged. */
+static struct {
+    Gint from, to; /* the last type mapped (OPEN WORKSTATION maps it just before it calls
+                      opened_ws; inquiries map types too, hence both) */
+} last_map;
+
+static Gint map_type(Gint t);
+
 static Gint ncarg_ws_type(Gint t)
+{
+    last_map.from = t;
+    last_map.to = map_type(t);
+    return last_map.to;
+}
+
+/* NCAR's landscape PDF and PostScript types */
+static int landscape(Gint t)
+{
+    return t == NCAR_PDF_LAND || (t >= NCAR_PS_FIRST + 6 && t <= NCAR_PS_LAST);
+}
+
+static Gint map_type(Gint t)
 {
     if (t == NCAR_NCGM || t == NCAR_CAIRO_PNG)
         return GWS_TYPE_PNG_OUTPUT;
@@ -86,6 +106,7 @@ static void ncarg_opened_gks(void)
  * that have a colour table (OUTPUT, OUTIN, and the MO, which records it). */
 static void ncarg_opened_ws(Gint ws_id)
 {
+    page_to_ws(ws_id); /* first: it reads the type OPEN WORKSTATION mapped */
     Gint err = 0, type = 0;
     char conn[2];
     Gws_cat cat = GCAT_OUT;
@@ -97,7 +118,6 @@ static void ncarg_opened_ws(Gint ws_id)
     const Gcolr_rep black = { { 0, 0, 0 } }, white = { { 1, 1, 1 } };
     gset_colr_rep(ws_id, 0, &black);
     gset_colr_rep(ws_id, 1, &white);
-    page_to_ws(ws_id);
 }
 
 static Gint ncarg_fill_int_style(Gint style)
@@ -422,8 +442,9 @@ static void page_to_ws(Gint ws)
     if (!ncar_page.set || !vector_ws(ws, &type))
         return;
     const Gint *pg = type == GWS_TYPE_PDF ? ncar_page.pdf : ncar_page.ps;
+    int land = last_map.to == type && landscape(last_map.from); /* the page turned */
     Gint v[6] = { ncar_page.rect[0], ncar_page.rect[1], ncar_page.rect[2], ncar_page.rect[3],
-                  pg[0], pg[1] };
+                  pg[land], pg[!land] };
     vec_escape(ws, GESC_VEC_PAGE, v, 6, NULL, 0);
 }
 
@@ -464,12 +485,7 @@ static int escape_postscript(Gint func_id, const char *d, size_t n)
         for (int k = 0; k < 4; k++)
             if (field_int(d, n, 5 + 9 * (size_t)k, 9, &r4[k]))
                 return 182;
-        Gint type;
-        if (vector_ws(ws, &type)) {
-            const Gint *pg = type == GWS_TYPE_PDF ? ncar_page.pdf : ncar_page.ps;
-            Gint v[6] = { r4[0], r4[1], r4[2], r4[3], pg[0], pg[1] };
-            vec_escape(ws, GESC_VEC_PAGE, v, 6, NULL, 0);
-        }
+        vec_escape(ws, GESC_VEC_PAGE, r4, 4, NULL, 0); /* on the page it has */
         return 0;
     case -1529: /* PDF page width, height; PS page width, height: I5 points */
     case -1530:

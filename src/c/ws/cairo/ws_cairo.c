@@ -1260,7 +1260,11 @@ static int vec_style_escape(vec_ws *v, int func_id, const Gescape_in_data *in)
         v->page_set = 0;
         return 0;
     }
-    double p[6] = { 0, 0, 0, 0, 612, 792 };
+    double p[6] = { 0, 0, 0, 0, 612, 792 }; /* the page size: the one given before, or letter */
+    if (v->page_set) {
+        p[4] = v->page[4];
+        p[5] = v->page[5];
+    }
     for (int k = 0; k < in->num_ints - 1; k++) {
         if (a[k] < (k < 4 ? -72000 : 1) || a[k] > 72000)
             return 182;
