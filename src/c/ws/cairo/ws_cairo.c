@@ -1444,6 +1444,85 @@ static int text_clip(vec_ws *v, const gks_text_prim *t, const text_chain *c,
     return 0;
 }
 
+/* Whether the text plane reaches the page affinely (its origin and axis points at the
+ * same w): 0, or GKS_WS_TEXT_STROKE (perspective across the plane, or not finite). */
+static int text_plane_affine(const text_chain *c, const gks_text_frame *f)
+{
+    double pts[3][3], h[3][4], px[3][3];
+    for (int i = 0; i < 3; i++) {
+        pts[0][i] = f->org[i];
+        pts[1][i] = f->org[i] + f->ex[i];
+        pts[2][i] = f->org[i] + f->ey[i];
+    }
+    for (int k = 0; k < 3; k++) {
+        chain_h(c, pts[k], h[k]);
+        if (!chain_px(c, h[k], px[k]))
+            return GKS_WS_TEXT_STROKE;
+    }
+    if (fabs(h[1][3] - h[0][3]) > 1e-12 * fabs(h[0][3]) ||
+        fabs(h[2][3] - h[0][3]) > 1e-12 * fabs(h[0][3]))
+        return GKS_WS_TEXT_STROKE;
+    return 0;
+}
+
+/* The glyph axes bx, by (pixels per font unit) of the placed text pc, expansion factor
+ * e: 0 when they are a similarity (the pen stays round) of a size cairo draws cleanly,
+ * else GKS_WS_TEXT_STROKE. */
+static int text_axes(const vec_ws *v, const place_ctx *pc, double e, double bx[2],
+                     double by[2])
+{
+    bx[0] = quantum(pc->bx[0] / e);
+    bx[1] = quantum(pc->bx[1] / e);
+    by[0] = quantum(pc->by[0]);
+    by[1] = quantum(pc->by[1]);
+    double lx = hypot(bx[0], bx[1]), ly = hypot(by[0], by[1]);
+    if (!(ly > 0) || !isfinite(ly) || fabs(lx - ly) > 1e-6 * ly ||
+        fabs(bx[0] * by[0] + bx[1] * by[1]) > 1e-6 * ly * ly)
+        return GKS_WS_TEXT_STROKE;
+    if (!(VEC_EM * ly * 72.0 / v->dpi <= VEC_TEXT_MAX_EM_PT)) /* huge: by its strokes */
+        return GKS_WS_TEXT_STROKE;
+    return 0;
+}
+
+/* STRING and CHAR precision in the real font: each glyph g0 ... of the text centred in
+ * the stroke glyph's cell (its advance, times the expansion factor e, along bx); a text
+ * with a glyph wider than its cell (W, m) is narrowed as a whole until every glyph fits,
+ * so the ink stays inside the extent the core computes. Returns that narrowing (<= 1). */
+static double real_font_fit(vec_ws *v, const gks_text_attrs *a, size_t g0, double e,
+                            const double bx[2])
+{
+    double sx = 1.0;
+    for (size_t j = g0; j < v->n_glyphs; j++) {
+        int ch = (int)v->glyphs[j].index;
+        gks_glyph gl;
+        glyph_of(a->font, ch, &gl);
+        double ra = v->real.advance[ch - 32] * v->real.em_units;
+        if (ra > gl.advance && ra > 0)
+            sx = fmin(sx, gl.advance / ra);
+    }
+    for (size_t j = g0; j < v->n_glyphs; j++) {
+        int ch = (int)v->glyphs[j].index;
+        gks_glyph gl;
+        glyph_of(a->font, ch, &gl);
+        double ra = v->real.advance[ch - 32] * v->real.em_units * sx;
+        double shift = 0.5 * (gl.advance - ra) * e;
+        v->glyphs[j].x += shift * bx[0];
+        v->glyphs[j].y += shift * bx[1];
+    }
+    return sx;
+}
+
+/* The painter key of a text: the depth of the middle of its extent (0 if not finite). */
+static double text_depth(const text_chain *c, const gks_text_prim *t)
+{
+    double cr[4][3], cc[3], mid[3], hm[4], pm[3];
+    gks_text_extent(t->frame, t->attrs, t->str, cr, cc);
+    for (int i = 0; i < 3; i++)
+        mid[i] = 0.5 * (cr[0][i] + cr[2][i]);
+    chain_h(c, mid, hm);
+    return chain_px(c, hm, pm) ? pm[2] : 0;
+}
+
 /* TEXT drawn as glyphs of the user font where that is the stroked text: HLHSR modes none,
  * painter and ray tracing, and overlays (hlhsr_id != 0) in every mode; hidden line and
  * z-buffer test the strokes against the depths (GKS_WS_TEXT_STROKE). The text plane must
@@ -1461,89 +1540,33 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         return GKS_WS_TEXT_STROKE;
     text_chain c = { .m = t->m };
     const gks_xform_clip *view;
-    if (ws_png_render_view(v->vec, ws, t->view_ind, c.npc, c.dc, &view))
+    if (ws_png_render_view(v->vec, ws, t->view_ind, c.npc, c.dc, &view) ||
+        text_plane_affine(&c, t->frame))
         return GKS_WS_TEXT_STROKE;
-    /* the plane's points at constant w (affine to the page), the glyph axes in pixels */
-    const gks_text_frame *f = t->frame;
-    double pts[3][3], h[3][4], px[3][3];
-    for (int i = 0; i < 3; i++) {
-        pts[0][i] = f->org[i];
-        pts[1][i] = f->org[i] + f->ex[i];
-        pts[2][i] = f->org[i] + f->ey[i];
-    }
-    for (int k = 0; k < 3; k++) {
-        chain_h(&c, pts[k], h[k]);
-        if (!chain_px(&c, h[k], px[k]))
-            return GKS_WS_TEXT_STROKE;
-    }
-    if (fabs(h[1][3] - h[0][3]) > 1e-12 * fabs(h[0][3]) ||
-        fabs(h[2][3] - h[0][3]) > 1e-12 * fabs(h[0][3]))
-        return GKS_WS_TEXT_STROKE; /* perspective across the plane */
     const gks_text_attrs *a = t->attrs;
-    double e = a->char_expan;
+    double e = a->char_expan, bx[2], by[2];
     size_t g0 = v->n_glyphs, c0 = v->n_clip, nc = 0;
     place_ctx pc = { .v = v, .c = &c, .first = 1 };
-    int r = gks_text_place(f, a, t->str, place_glyph, &pc);
+    int r = gks_text_place(t->frame, a, t->str, place_glyph, &pc);
     if (r || pc.first || !(e > 0)) {
         v->n_glyphs = g0;
         return pc.fail ? pc.fail : r ? GKS_WS_TEXT_STROKE : GKS_WS_TEXT_CLIPPED;
     }
-    /* a similarity after the expansion factor: the pen stays round */
-    double bx[2] = { quantum(pc.bx[0] / e), quantum(pc.bx[1] / e) };
-    double by[2] = { quantum(pc.by[0]), quantum(pc.by[1]) };
-    double lx = hypot(bx[0], bx[1]), ly = hypot(by[0], by[1]);
-    if (!(ly > 0) || !isfinite(ly) || fabs(lx - ly) > 1e-6 * ly ||
-        fabs(bx[0] * by[0] + bx[1] * by[1]) > 1e-6 * ly * ly) {
+    if (text_axes(v, &pc, e, bx, by)) {
         v->n_glyphs = g0;
         return GKS_WS_TEXT_STROKE;
     }
-    if (!(VEC_EM * ly * 72.0 / v->dpi <= VEC_TEXT_MAX_EM_PT)) { /* huge: by its strokes */
-        v->n_glyphs = g0;
-        return GKS_WS_TEXT_STROKE;
-    }
-    /* STRING and CHAR precision in the real font, if there is one: each glyph centred in
-     * the stroke glyph's cell (its advance, times the expansion factor, along x); a text
-     * with a glyph wider than its cell (W, m) is narrowed as a whole (sx) until every
-     * glyph fits, so the ink stays inside the extent the core computes */
     const int use_real = a->prec != GPREC_STROKE && real_font(v) == 0;
-    double sx = 1.0;
-    if (use_real) {
-        for (size_t j = g0; j < v->n_glyphs; j++) {
-            int ch = (int)v->glyphs[j].index;
-            gks_glyph gl;
-            glyph_of(a->font, ch, &gl);
-            double ra = v->real.advance[ch - 32] * v->real.em_units;
-            if (ra > gl.advance && ra > 0)
-                sx = fmin(sx, gl.advance / ra);
-        }
-        for (size_t j = g0; j < v->n_glyphs; j++) {
-            int ch = (int)v->glyphs[j].index;
-            gks_glyph gl;
-            glyph_of(a->font, ch, &gl);
-            double ra = v->real.advance[ch - 32] * v->real.em_units * sx;
-            double shift = 0.5 * (gl.advance - ra) * e;
-            v->glyphs[j].x += shift * bx[0];
-            v->glyphs[j].y += shift * bx[1];
-        }
-    }
+    double sx = use_real ? real_font_fit(v, a, g0, e, bx) : 1.0;
     r = text_clip(v, t, &c, view, &nc);
     int fi = r || use_real ? -1 : face_index(v, a->font, e);
     if (!r && fi < 0 && !use_real)
         r = GKS_WS_TEXT_STROKE; /* more faces than the table holds */
     if (!r && gks_grow(&v->texts, &v->cap_texts, v->n_texts + 1, sizeof *v->texts))
         r = 300;
-    double mid[3], hm[4], pm[3] = { 0, 0, 0 };
-    if (!r && mode == GHLHSR_PAINTER) {
-        double cr[4][3], cc[3];
-        gks_text_extent(f, a, t->str, cr, cc);
-        for (int i = 0; i < 3; i++)
-            mid[i] = 0.5 * (cr[0][i] + cr[2][i]);
-        chain_h(&c, mid, hm);
-        if (!chain_px(&c, hm, pm))
-            pm[2] = 0;
-    }
+    double depth = !r && mode == GHLHSR_PAINTER ? text_depth(&c, t) : 0;
     if (!r)
-        r = ws_png_render_keep_mark(v->vec, v->n_texts, pm[2], t->hlhsr_id != 0);
+        r = ws_png_render_keep_mark(v->vec, v->n_texts, depth, t->hlhsr_id != 0);
     if (r) {
         v->n_glyphs = g0;
         v->n_clip = c0;
