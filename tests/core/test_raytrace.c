@@ -179,6 +179,145 @@ static void test_shadow(void **u)
     free(img.rgb);
 }
 
+/* ---- INQUIRE PIXEL (ARRAY) of a ray-traced frame ---------------------------------------
+ * The shadow scene of test_shadow with the workstation's default sampling (corner rays:
+ * anti-aliased edges, soft shading) read back before the frame is written. The readback
+ * must equal the written PNG exactly: both are the same trace resolved to 8 bits, so no
+ * tolerance. A 12 x 12 pixel region across the shadow's and the occluder's edges holds at
+ * most 144 colours; each is made a colour table entry so that the colour indices the
+ * inquiry returns name the pixels exactly. */
+enum { INQ_X0 = 18, INQ_Y0 = 18, INQ_N = 12 };
+
+static void shadow_receiver(void)
+{
+    Glight_src_rep l = { GLIGHT_POSITIONAL, { 1, 1, 1 }, { 0.5, 0.5, 0.9 }, { 0, 0, -1 },
+                         { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 2, &l);
+    Grgb c = { 1, 1, 1 };
+    lit_setup(&c);
+    square(0.1, 0.9, 0.3);
+}
+
+static void shadow_occluder(void) { square(0.45, 0.55, 0.7); }
+
+static void assert_same_file(const char *a, const char *b)
+{
+    FILE *fa = fopen(a, "rb"), *fb = fopen(b, "rb");
+    assert_non_null(fa);
+    assert_non_null(fb);
+    int ca, cb;
+    long n = 0;
+    do {
+        ca = getc(fa);
+        cb = getc(fb);
+        if (ca != cb)
+            fail_msg("%s and %s differ at byte %ld", a, b, n);
+        n++;
+    } while (ca != EOF);
+    fclose(fa);
+    fclose(fb);
+}
+
+/* The lowest entry of tab[0..n) equal to the 8-bit colour p, -1 if none (the rule of
+ * the pixel inquiries). */
+static int tab_index(const unsigned char (*tab)[3], int n, const unsigned char *p)
+{
+    for (int i = 0; i < n; i++)
+        if (memcmp(tab[i], p, 3) == 0)
+            return i;
+    return -1;
+}
+
+static void test_inquire_traced(void **u)
+{
+    (void)u;
+    /* 1: the frame written without an inquiry. */
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png_defaults(1, "t_rt_inq1.png", GHLHSR_RAYTRACE);
+    shadow_receiver();
+    shadow_occluder();
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    no_errors();
+    image img;
+    assert_true(read_png("t_rt_inq1.png", &img));
+    /* The colour table: the predefined colours (2 redefined by lit_setup), then every
+     * other colour of the region. */
+    unsigned char tab[256][3] = { { 255, 255, 255 }, { 0, 0, 0 }, { 255, 255, 255 },
+                                  { 0, 255, 0 }, { 0, 0, 255 }, { 255, 255, 0 },
+                                  { 0, 255, 255 }, { 255, 0, 255 } };
+    int n = 8;
+    for (int y = INQ_Y0; y < INQ_Y0 + INQ_N; y++)
+        for (int x = INQ_X0; x < INQ_X0 + INQ_N; x++)
+            if (tab_index((const unsigned char (*)[3])tab, n, px(&img, x, y)) < 0)
+                memcpy(tab[n++], px(&img, x, y), 3);
+    assert_true(n > 8 + 10); /* shaded and anti-aliased: many colours */
+
+    /* 2: the same frame inquired before it is written. */
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png_defaults(1, "t_rt_inq2.png", GHLHSR_RAYTRACE);
+    for (int i = 8; i < n; i++) {
+        Gcolr_rep cr = { { tab[i][0] / 255.0, tab[i][1] / 255.0, tab[i][2] / 255.0 } };
+        gset_colr_rep(1, i, &cr);
+    }
+    shadow_receiver();
+    shadow_occluder();
+    Gint e, c;
+    Gint_size d;
+    const double s = 1.0 / 64;
+    ginq_pixel_array_dims(1, &(Grect){ { INQ_X0 * s, (INQ_Y0 + INQ_N) * s },
+                                       { (INQ_X0 + INQ_N) * s, INQ_Y0 * s } }, &e, &d);
+    assert_int_equal(e, 0);
+    assert_int_equal(d.size_x, INQ_N);
+    assert_int_equal(d.size_y, INQ_N);
+    Gint idx[INQ_N * INQ_N], len;
+    Gint_list l = { 0, idx };
+    Gpres_inval inv;
+    ginq_pixel_array(1, &(Gpoint){ (INQ_X0 + 0.5) * s, (INQ_Y0 + INQ_N - 0.5) * s }, &d,
+                     INQ_N * INQ_N, 0, &e, &inv, &l, &len);
+    assert_int_equal(e, 0);
+    assert_int_equal(l.num_ints, INQ_N * INQ_N);
+    assert_int_equal(inv, GINVAL_ABSENT);
+    for (int j = 0; j < INQ_N; j++) /* rows from the top */
+        for (int i = 0; i < INQ_N; i++) {
+            int x = INQ_X0 + i, y = INQ_Y0 + INQ_N - 1 - j;
+            int want = tab_index((const unsigned char (*)[3])tab, n, px(&img, x, y));
+            if (idx[j * INQ_N + i] != want)
+                fail_msg("pixel (%d,%d): index %d, the PNG's %d", x, y, idx[j * INQ_N + i],
+                         want);
+        }
+    ginq_pixel(1, &(Gpoint){ 25.5 * s, 25.5 * s }, &e, &c); /* in the shadow: black */
+    assert_int_equal(e, 0);
+    assert_int_equal(c, 1);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    no_errors();
+    assert_same_file("t_rt_inq2.png", "t_rt_inq1.png");
+
+    /* 3: an inquiry between the two areas leaves the written frame as it is (the receiver
+     * alone is seen then; the occluder is traced with it into the frame). */
+    reset_gks();
+    gopen_gks(NULL, 0);
+    open_png_defaults(1, "t_rt_inq3.png", GHLHSR_RAYTRACE);
+    shadow_receiver();
+    ginq_pixel(1, &(Gpoint){ 25.5 * s, 25.5 * s }, &e, &c);
+    assert_int_equal(e, 0);
+    assert_int_equal(c, -1); /* lit, not yet in the shadow: no entry has its colour */
+    shadow_occluder();
+    ginq_pixel(1, &(Gpoint){ 25.5 * s, 25.5 * s }, &e, &c);
+    assert_int_equal(c, 1);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    no_errors();
+    assert_same_file("t_rt_inq3.png", "t_rt_inq1.png");
+    free(img.rgb);
+}
+
 static void quad(const double q[4][3])
 {
     Gpoint3 p[4];
@@ -1748,6 +1887,7 @@ int main(void)
         cmocka_unit_test(test_fresnel_schlick_vs_exact),
         cmocka_unit_test(test_cell_array_e2e),
         cmocka_unit_test(test_preview_equals_traced),
+        cmocka_unit_test(test_inquire_traced),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -11,7 +11,8 @@
  *   (k with at least three digits). ESCAPE GESC_SET_FILE_NAME replaces B.
  * A frame's file is written at UPDATE WORKSTATION, CLEAR WORKSTATION and CLOSE
  * WORKSTATION when it has new content; a workstation closed without any drawing still
- * writes one (background) picture.
+ * writes one (background) picture. INQUIRE PIXEL (ARRAY) reads the picture the update
+ * would write, ray-traced areas traced at the inquiry (seen_picture).
  *
  * Rendering and the HLHSR modes: ws_png_render.h. Anti-aliasing: ESCAPE
  * GESC_PNG_SUPERSAMPLE (ints[1] = s in 1..4) renders the following frames with s x s
@@ -41,6 +42,18 @@ static const Grgb png_colours[8] = {
     { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 1, 0, 1 },
 };
 
+/* The workstation state a picture is made with besides the primitives: the window and
+ * viewport, colour 0 (the tracer's background), the HLHSR mode, the view and light source
+ * tables (the tracer's cameras and lights, the classic renderer's view pipelines). */
+typedef struct seen_key {
+    Glimit3 win, vp;
+    Grgb bg;
+    int hlhsr_mode;
+    Gview_rep3 views[GKS_MAX_VIEW_IND + 1];
+    Glight_src_rep lights[GKS_MAX_LIGHT_IND];
+    unsigned char light_defined[GKS_MAX_LIGHT_IND];
+} seen_key;
+
 typedef struct png_ws {
     gks_raster_fb *fb;  /* primitives drawn at once */
     Glimit3 fb_vp;      /* the viewport fb was sized for (framebuffer()'s quick check) */
@@ -53,6 +66,9 @@ typedef struct png_ws {
     int compression;    /* PNG compression: GKS_RASTER_PNG_FAST or a zlib level 1..9 */
     ws_render *r;       /* the classic renderer and the tracer's recording (ws_render.h) */
     int mpi_frames;     /* MPI run: whole frames to ranks (1) or tiles of each frame (0) */
+    gks_raster_fb *seen; /* pixel readback: the picture as png_update would write it now */
+    int seen_ok;        /* seen is current: no output, clear or ESCAPE since it was made */
+    seen_key *key;      /* ... and the workstation state it was made with */
 } png_ws;
 
 /* The base name B (file naming above). Several workstations opened without a connection
@@ -79,9 +95,11 @@ static int png_open(gks_ws *ws)
         return 300;
     p->base = png_base(ws);
     p->r = ws_render_new();
-    if (!p->base || !p->r) {
+    p->key = gks_calloc_array(1, sizeof *p->key);
+    if (!p->base || !p->r || !p->key) {
         gks_free(p->base);
         ws_render_free(p->r);
+        gks_free(p->key);
         gks_free(p);
         return 300;
     }
@@ -97,6 +115,8 @@ static void png_close(gks_ws *ws)
 {
     png_ws *p = ws->priv;
     gks_raster_fb_free(p->fb);
+    gks_raster_fb_free(p->seen);
+    gks_free(p->key);
     ws_render_free(p->r);
     gks_free(p->base);
     gks_free(p);
@@ -137,6 +157,7 @@ static gks_raster_fb *framebuffer(gks_ws *ws)
 static int png_clear(gks_ws *ws)
 {
     png_ws *p = ws->priv;
+    p->seen_ok = 0;
     if (p->frame_written) {
         p->frame++;
         p->frame_written = 0;
@@ -164,6 +185,7 @@ static int png_clear(gks_ws *ws)
 static int png_background(gks_ws *ws)
 {
     png_ws *p = ws->priv;
+    p->seen_ok = 0;
     if (p->fb) {
         float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green,
                         (float)ws->colr[0].blue };
@@ -182,6 +204,7 @@ static int png_update(gks_ws *ws)
     png_ws *p = ws->priv;
     if (!p->dirty && p->written_any)
         return 0;
+    p->seen_ok = 0; /* the trace below goes into the framebuffer itself */
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
@@ -236,6 +259,7 @@ static int ws_matrix(const gks_ws *ws, double m[4][4])
 static int png_primitive(gks_ws *ws, const gks_prim *prim)
 {
     png_ws *p = ws->priv;
+    p->seen_ok = 0;
     gks_raster_fb *fb = framebuffer(ws);
     if (!fb)
         return 300;
@@ -248,6 +272,7 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     png_ws *p = ws->priv;
+    p->seen_ok = 0; /* sampling or ray-tracing options may change the picture */
     if (func_id == GESC_PNG_SUPERSAMPLE) {
         int e = gks_ws_escape_int(in, 1, 4, &p->ss);
         if (e)
@@ -267,13 +292,78 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
     return ws_rt_file_escape(p->r->rt, ws, func_id, in, out, p->frame, ".png", &p->base);
 }
 
-/* Pixel readback: the composed picture (retained primitives drawn over the immediate
- * ones; areas recorded for ray tracing are traced only when the frame is written). */
-static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
+/* The key of the picture ws's state gives now (seen_key). */
+static void seen_key_of(const gks_ws *ws, seen_key *k)
+{
+    memset(k, 0, sizeof *k);
+    memcpy(&k->win, &ws->cur_win, sizeof k->win);
+    memcpy(&k->vp, &ws->cur_vp, sizeof k->vp);
+    memcpy(&k->bg, &ws->colr[0], sizeof k->bg);
+    k->hlhsr_mode = ws->hlhsr_mode;
+    memcpy(k->views, ws->views, sizeof k->views);
+    memcpy(k->lights, ws->lights, sizeof k->lights);
+    memcpy(k->light_defined, ws->light_defined, sizeof k->light_defined);
+}
+
+/* *dst (re-created if its size differs) becomes a copy of src; 0 or 300. */
+static int fb_copy(gks_raster_fb **dst, const gks_raster_fb *src)
+{
+    gks_raster_fb *d = *dst;
+    if (!d || d->width != src->width || d->height != src->height || d->ss != src->ss) {
+        gks_raster_fb_free(d);
+        d = *dst = gks_raster_fb_create(src->width, src->height, src->ss);
+        if (!d)
+            return 300;
+    }
+    size_t ns = (size_t)src->w * (size_t)src->h;
+    memcpy(d->rgb, src->rgb, 3 * ns * sizeof *d->rgb);
+    memcpy(d->z, src->z, ns * sizeof *d->z);
+    return 0;
+}
+
+/* The picture png_update would write now, in p->seen: a copy of the framebuffer with the
+ * recorded ray-tracing areas traced into it (here alone, never by the ranks of an MPI
+ * run, which do not all inquire) and the retained primitives composed over it. The
+ * framebuffer and the recording stay as they are, so the frame written later is the same
+ * whether or not it was inquired. Kept for the next readback (INQUIRE PIXEL ARRAY reads
+ * row by row) until output, CLEAR, UPDATE, an ESCAPE or a change of the state in
+ * seen_key. 0 or 300 (storage; 305 of a lost MPI rank cannot occur alone). */
+static int seen_picture(gks_ws *ws, const gks_raster_fb **out)
 {
     png_ws *p = ws->priv;
+    seen_key k;
+    seen_key_of(ws, &k);
+    if (p->seen_ok && memcmp(&k, p->key, sizeof k) == 0) {
+        *out = p->seen;
+        return 0;
+    }
+    p->seen_ok = 0;
     gks_raster_fb *fb = framebuffer(ws), *pic;
-    if (!fb || ws_png_render_compose(p->r->classic, ws, fb, &pic))
+    if (!fb || fb_copy(&p->seen, fb))
+        return 300;
+    double wsm[4][4];
+    if ((p->dirty || !p->written_any) && ws_rt_count(p->r->rt) > 0 &&
+        ws_matrix(ws, wsm) == 0) { /* png_update traces then */
+        ws_rt_set_share_tiles(p->r->rt, 0);
+        if (ws_rt_render(p->r->rt, ws, (const double (*)[4])wsm, p->seen))
+            return 300;
+    }
+    if (ws_png_render_compose(p->r->classic, ws, p->seen, &pic))
+        return 300;
+    if (pic != p->seen && fb_copy(&p->seen, pic))
+        return 300;
+    memcpy(p->key, &k, sizeof k);
+    p->seen_ok = 1;
+    *out = p->seen;
+    return 0;
+}
+
+/* Pixel readback: the picture as it would be written now (seen_picture), ray-traced
+ * areas included. */
+static int png_read_pixels(gks_ws *ws, int x0, int y0, int nx, int ny, int *rgb)
+{
+    const gks_raster_fb *pic;
+    if (seen_picture(ws, &pic))
         return 300;
     unsigned char *row = gks_alloc_array((size_t)pic->width, 3);
     if (!row)
