@@ -223,6 +223,33 @@ typedef struct {
     char *str;             /* the string field, if the format has one */
 } interp;
 
+/* The interpretation state before any NORMALIZATION / CLIPPING item: identity, the NDC
+ * unit cube, clipping on. */
+static void xf_default(gks_rec_xf *xf)
+{
+    memset(xf, 0, sizeof *xf);
+    for (int i = 0; i < 3; i++)
+        xf->norm[i][i] = 1;
+    const double box[6] = { 0, 1, 0, 1, 0, 1 };
+    memcpy(xf->box, box, sizeof box);
+    xf->clip_on = 1;
+}
+
+/* The interpretation state of the MI workstation mi (its gks_ws.mf, made at first use,
+ * freed with the workstation by gks_mf_ws_free): the NORMALIZATION and CLIPPING VOLUME
+ * items interpreted from it so far. NULL on storage overflow. */
+static gks_rec_xf *mi_state(gks_ws *mi)
+{
+    if (!mi->mf) {
+        gks_rec_xf *xf = gks_alloc_array(1, sizeof *xf);
+        if (!xf)
+            return NULL;
+        xf_default(xf);
+        mi->mf = xf;
+    }
+    return mi->mf;
+}
+
 /* The recorded normalization for a primitive: points in NDC3 (ndc 1) or WC3 (TEXT). */
 static gks_rec_xf xf_for(const interp *ip, int ndc)
 {
@@ -744,13 +771,13 @@ GKS_API void ginterpret_item(Gint type, Gint length, const Gitem_data *item_data
     gksm_in *m = mi && mi->drv->desc->cat == GCAT_MI && mi->drv->item_reader
                      ? mi->drv->item_reader(mi, &allow)
                      : NULL;
-    gks_mf_ws *st = m ? gks_mf_ws_state(mi) : NULL;
+    gks_rec_xf *st = m ? mi_state(mi) : NULL;
     if (m && !st)
         GKS_FAIL(300, GFN_IITM);
     gksm_in fmt = { .iw = 11, .rw = 24, .ri = 1, .zero = 0, .one = 1 };
     gks_rec_xf local;
-    gks_rec_xf_default(&local);
-    interp ip = { .xf = st ? &st->xf : &local, .allow_escapes = m ? allow : 0 };
+    xf_default(&local);
+    interp ip = { .xf = st ? st : &local, .allow_escapes = m ? allow : 0 };
     gksm_cur_init(&ip.d.c, m ? m : &fmt, data ? data : "", (size_t)length);
     performers[type](&ip);
     gks_free(ip.str);

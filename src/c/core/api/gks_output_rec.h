@@ -2,7 +2,7 @@
 /*
  * gks_output_rec.h -- the output pipeline's entries for INTERPRET ITEM (gks_metafile.c): a
  * recorded primitive performed with the recorded normalization and clipping volume `xf`
- * (gks_mf_record.h) instead of the current ones, as the public function that wrote it
+ * (gks_pipe_norm.h) instead of the current ones, as the public function that wrote it
  * (its state check, argument checks and errors, reported for that function).
  */
 #ifndef GKS_OUTPUT_REC_H
@@ -10,7 +10,7 @@
 #include "gks_private.h"
 #include "gks.h"
 #include "gks_area_data.h"
-#include "gks_mf_record.h"
+#include "gks_pipe_norm.h"
 
 void gks_output_rec_polyline3(const gks_rec_xf *xf, const Gpoint_list3 *l);
 void gks_output_rec_polymarker3(const gks_rec_xf *xf, const Gpoint_list3 *l);

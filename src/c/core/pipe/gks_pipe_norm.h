@@ -27,7 +27,19 @@ typedef struct gks_pipe_norm {
     gks_segment *seg;          /* the open segment (current state only), else NULL */
 } gks_pipe_norm;
 
-struct gks_rec_xf; /* gks_mf_record.h: NULL = the current normalization */
+/* The recorded normalization a primitive performed by INTERPRET ITEM enters the pipeline
+ * with (the argument of the gks_output_rec_* entries, gks_output_rec.h; the
+ * interpreter, core/api/gks_metafile.c, keeps it per MI): points are NDC3
+ * (ndc_pts = 1; TEXT: WC3 and ndc_pts = 0), norm is the recorded WC3 -> NDC3 matrix for
+ * text geometry and pattern boxes, box/clip_on the recorded clipping volume. */
+typedef struct gks_rec_xf {
+    double norm[3][4];
+    double box[6];
+    int clip_on;
+    int ndc_pts;
+} gks_rec_xf;
+
+/* xf NULL below: the current normalization. */
 /* The context of the current state, or of the recorded normalization xf: 0, or 308 if
  * the normalization cannot be represented (gks_xform_norm_tran3). */
 int gks_pipe_norm_setup(gks_pipe_norm *nc, const struct gks_rec_xf *xf);

@@ -52,16 +52,6 @@ const char *gksm_item_fmt(int type)
     return type >= 0 && type < GKSM_ITEM_USER_MIN ? item_fmts[type] : NULL;
 }
 
-void gks_rec_xf_default(gks_rec_xf *xf)
-{
-    memset(xf, 0, sizeof *xf);
-    for (int i = 0; i < 3; i++)
-        xf->norm[i][i] = 1;
-    const double box[6] = { 0, 1, 0, 1, 0, 1 };
-    memcpy(xf->box, box, sizeof box);
-    xf->clip_on = 1;
-}
-
 gks_mf_ws *gks_mf_ws_state(gks_ws *ws)
 {
     if (!ws->mf) {
@@ -69,7 +59,6 @@ gks_mf_ws *gks_mf_ws_state(gks_ws *ws)
         if (!m)
             return NULL;
         gksm_rec_init(&m->rec);
-        gks_rec_xf_default(&m->xf);
         ws->mf = m;
     }
     return ws->mf;
@@ -77,11 +66,9 @@ gks_mf_ws *gks_mf_ws_state(gks_ws *ws)
 
 void gks_mf_ws_free(gks_ws *ws)
 {
-    gks_mf_ws *m = ws->mf;
-    if (!m)
-        return;
-    gksm_rec_free(&m->rec);
-    gks_free(m);
+    if (ws->mf && gks_mf_is_mo(ws))
+        gksm_rec_free(&((gks_mf_ws *)ws->mf)->rec);
+    gks_free(ws->mf);
     ws->mf = NULL;
 }
 

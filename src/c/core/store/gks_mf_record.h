@@ -4,7 +4,7 @@
  * one-line hook from each function the metafile records; the hook encodes the function's
  * item of gks_mf_items.def and hands it to every active MO workstation, or to the addressed
  * workstation when it is an MO, through the driver entry record_item), and the core's state
- * of the MO and MI workstations. Interpretation: core/api/gks_metafile.c. Item numbers and
+ * of the MO workstations. Interpretation (and the MI's state): core/api/gks_metafile.c. Item numbers and
  * data records: docs/METAFILE.md; the character codec: ws/mf/gks_mf_codec.h.
  *
  * Current primitive attributes, the normalization and the clipping volume are written
@@ -21,17 +21,6 @@
 #include "gks_mf_codec.h"
 #include "gks_mf_items.h"
 #include "ws_driver.h"
-
-/* The recorded normalization a primitive performed by INTERPRET ITEM enters the pipeline
- * with (the argument of the gks_output_rec_* entries, gks_output_rec.h): points are NDC3
- * (ndc_pts = 1; TEXT: WC3 and ndc_pts = 0), norm is the recorded WC3 -> NDC3 matrix for
- * text geometry and pattern boxes, box/clip_on the recorded clipping volume. */
-typedef struct gks_rec_xf {
-    double norm[3][4];
-    double box[6];
-    int clip_on;
-    int ndc_pts;
-} gks_rec_xf;
 
 /* A primitive as recorded (gks_output.c fills it after its argument checks). pn maps the
  * source points to NDC3 (before any segment transformation); norm/box/clip_on are the
@@ -58,9 +47,9 @@ typedef struct gks_mf_prim {
     size_t n_dreals;
 } gks_mf_prim;
 
-/* The core's metafile state of an MO or MI workstation (gks_ws.mf): for an MO what it last
- * wrote (the lazy attribute sync) and its reused data record, for an MI the
- * interpretation state of the items read from it (recorded normalization, clipping). */
+/* The core's recording state of an MO workstation (gks_ws.mf): what it last wrote (the
+ * lazy attribute sync) and its reused data record. (An MI's gks_ws.mf is the interpreter's
+ * state of the items read from it: core/api/gks_metafile.c.) */
 typedef struct gks_mf_ws {
     gksm_rec rec;
     int synced;                /* `last`, norm, box, clip_on hold what was written */
@@ -68,15 +57,13 @@ typedef struct gks_mf_ws {
     double norm[3][4];
     double box[6];
     int clip_on;
-    gks_rec_xf xf;             /* MI: NORMALIZATION and CLIPPING VOLUME items read */
 } gks_mf_ws;
 
-/* ws's metafile state, made at first use (identity and the NDC unit cube for an MI); NULL
- * on storage overflow. gks_mf_ws_free (from gks_ws_destroy) frees it. */
+/* The MO ws's recording state, made at first use; NULL on storage overflow. */
 gks_mf_ws *gks_mf_ws_state(gks_ws *ws);
+/* Frees ws->mf (from gks_ws_destroy): an MO's recording state, or the one block an MI's
+ * interpreter keeps there. */
 void gks_mf_ws_free(gks_ws *ws);
-/* The interpretation state before any NORMALIZATION / CLIPPING item. */
-void gks_rec_xf_default(gks_rec_xf *xf);
 
 /* Whether any MO workstation is active (the fast-path test). */
 static inline int gks_mf_on(void)
