@@ -21,15 +21,18 @@ trap 'rm -rf "$tmp"' EXIT
 # comments are ignored.
 sed -n 's/^GKSM_ITEM(\([0-9]*\), *\([A-Z0-9_]*\), *\([A-Z_]*\), *\([A-Za-z0-9_]*\),.*/R \1 \2 \3 \4/p' \
     "$items" > "$tmp/in"
-sed -n 's/^GKSM_ALSO(\([A-Z0-9_]*\), *\([A-Z0-9_]*\), *\([A-Z_]*\)).*/A \1 \2 \3/p' "$items" >> "$tmp/in"
+sed -n 's/^GKSM_ALSO(\([A-Z0-9_]*\), *\([A-Z0-9_]*\), *\([A-Z_]*\)[,)].*/A \1 \2 \3/p' "$items" >> "$tmp/in"
 # Functions "F sym column": the column as written, or "none" for a row without one.
 grep -E '^GKS_FN\(' "$fns" | sed -E \
     -e 's/^GKS_FN\( *[0-9]+, *([A-Z0-9_]+), *"[^"]*", *[^,]*, *(MF_[A-Z]+(\([A-Z0-9_]+\))?) *\) *$/F \1 \2/; t' \
     -e 's/^GKS_FN\( *[0-9]+, *([A-Z0-9_]+),.*/F \1 none/' >> "$tmp/in"
-# Hooks "H sym" (GKS_MF*, or GKSM_FN_sym: the item a function hands to a shared helper that
-# records it), ESCAPE encoders "E sym", user-item writers "U sym".
+# Hooks "H sym" (GKS_MF*, or GKSM_FN_sym / the typed hook gks_mf_(ws_)rec_sym: what a
+# function hands to a shared helper that records it), ESCAPE encoders "E sym", user-item
+# writers "U sym".
 grep -ho 'GKS_MF\(_WS\)\?0\?([A-Z0-9_]*' "$api"/*.c | sed 's/.*(/H /' | sort -u >> "$tmp/in"
 grep -ho 'GKSM_FN_[A-Z0-9_]*' "$api"/*.c | sed 's/GKSM_FN_/H /' | sort -u >> "$tmp/in"
+grep -ho 'gks_mf_\(ws_\)\?rec_[A-Z0-9_]*' "$api"/*.c | sed 's/gks_mf_\(ws_\)\?rec_/H /' | sort -u \
+    >> "$tmp/in"
 grep -ho 'gks_mf_escape(GFN_[A-Z0-9_]*' "$api"/*.c | sed 's/.*GFN_/E /' | sort -u >> "$tmp/in"
 grep -ho 'gks_mf_user_item(GFN_[A-Z0-9_]*' "$api"/*.c | sed 's/.*GFN_/U /' | sort -u >> "$tmp/in"
 # Every SET ... REPRESENTATION (a workstation table entry) is part of the picture: "P sym".

@@ -3,7 +3,8 @@
 # check_mf_items_selftest.sh SRC_DIR WORK_DIR [CC GENERATED_INCLUDE_DIR] -- check_mf_items.sh
 # must fail on copies of the sources broken in each way it checks; with a compiler, the
 # build's check (src/c/core/store/gks_mf_check.c) must compile on the sources and fail on
-# copies whose metafile column contradicts the item table.
+# copies whose metafile column contradicts the item table, and a typed hook called with
+# wrong arguments must not compile.
 set -eu
 src=$1 work=$2 cc=${3:-} gen=${4:-}
 check=$src/tests/core/check_mf_items.sh
@@ -67,7 +68,7 @@ sed -i 's/MF_USER)/MF_NO)/' "$def"
 expect_fail "user items under MF_NO"
 # 11. SET WORKSTATION WINDOW hands its helper another function's item: it records nothing.
 copy
-sed -i 's/GKSM_FN_SWKWN/GKSM_FN_SWKVP/' "$work/src/c/core/api/gks_transform.c"
+sed -i "s/gks_mf_ws_rec_SWKWN,/gks_mf_ws_rec_SWKVP,/" "$work/src/c/core/api/gks_transform.c"
 expect_fail "item handed to a helper, but another function's"
 msg="11 broken copies refused"
 if [ -n "$cc" ]; then
@@ -96,6 +97,25 @@ if [ -n "$cc" ]; then
     sed -i 's/MF_PRIM(TEXT3))/MF_PRIM(NO_SUCH_ITEM))/' "$def"
     compile_fail "MF_PRIM of no item"
     msg="$msg, 4 broken copies do not compile"
+    # The typed hooks (gks_mf_record.h, generated from the table's formats): the right
+    # arguments compile, a pointer for an int or a missing value do not.
+    hook() {
+        mkdir -p "$work"
+        printf '#include "gks_mf_record.h"\nint hook(void) { %s }\n' "$1" > "$work/hook.c"
+        "$cc" -std=c11 -Wall -Wextra -Werror -DGKS3D_BUILDING -fsyntax-only \
+            -I"$src/src/c/core/store" -I"$src/src/c/core" -I"$src/src/c/base" \
+            -I"$src/src/c/ws" -I"$src/src/c/ws/mf" -I"$src/src/c/xform" \
+            -I"$src/src/c/raster" -I"$src/include" -I"$gen" "$work/hook.c"
+    }
+    hook 'return gks_mf_rec_CRSG(0, 1) + gks_mf_ws_rec_SCR(0, 1, 2, 0.1, 0.2, 0.3);'
+    for bad in 'static const double m[12]; return gks_mf_rec_CRSG(0, m);' \
+               'return gks_mf_ws_rec_SCR(0, 1, 2, 0.1, 0.2);'; do
+        if hook "$bad" >/dev/null 2>&1; then
+            echo "selftest: a hook call with wrong arguments compiled: $bad" >&2
+            exit 1
+        fi
+    done
+    msg="$msg, 2 wrong hook calls do not compile"
 fi
 rm -rf "$work"
 echo "check_mf_items selftest: $msg"

@@ -86,7 +86,7 @@ static void end_frame(gks_ws *rec)
     gks_context *c = gks_ctx();
     if (!c->rec_drawn)
         return;
-    if (gks_mf_ws_rec(GFN_CLWK, REC_WS_ID, GKSM_ITEM_CLEAR, (int)GFLAG_ALWAYS)) {
+    if (gks_mf_ws_rec_CLRWK(GFN_CLWK, REC_WS_ID, (int)GFLAG_ALWAYS)) {
     } /* reported to CLOSE WORKSTATION like any write error; nothing else to undo */
     (void)rec;
 }

@@ -729,7 +729,7 @@ static void x_gdp(interp *ip)
 #define GKSM_RUN_STATE(...) __VA_ARGS__
 #define GKSM_RUN_READ(...) __VA_ARGS__
 #define GKSM_DO_FIELDS(kind, fmt, ...)                                                     \
-    if (fields(ip, fmt))                                                                   \
+    if (fields(ip, GKSM_FMT_STR fmt))                                                      \
         GKSM_RUN_##kind(__VA_ARGS__);
 #define GKSM_DO_OWN(kind, fmt, ...) __VA_ARGS__;
 #define GKSM_ITEM(type, name, kind, key, fmt, dec, ...)                                    \
@@ -738,7 +738,7 @@ static void x_gdp(interp *ip)
         (void)ip;                                                                          \
         GKSM_DO_##dec(kind, fmt, __VA_ARGS__)                                              \
     }
-#define GKSM_ALSO(key, name, kind)
+#define GKSM_ALSO(key, name, kind, fmt)
 #include "gks_mf_items.def"
 #undef GKSM_ITEM
 

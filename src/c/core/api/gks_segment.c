@@ -187,7 +187,8 @@ GKS_API void gdel_seg_ws(Gint ws_id, Gint seg_name)
  * make the segment vanish). Stored as 3x4: the 2-D matrix acts on x and y and z passes
  * unchanged (ISO 8805: the 3-D one with identity z row and no z coupling). A visible
  * segment's pictures change. */
-static void set_tran(int fctid, int item, Gint name, const double *m, int n)
+static void set_tran(int fctid, int (*mf)(int, int, const double *), Gint name, const double *m,
+                     int n)
 {
     gks_segment *s = existing(fctid, name);
     if (!s)
@@ -200,7 +201,7 @@ static void set_tran(int fctid, int item, Gint name, const double *m, int n)
         memcpy(s->tran, m, sizeof s->tran);
     else
         gks_xform_mat23_to_mat34((const double (*)[3])m, s->tran);
-    if (gks_mf_on() && !gks_mf_rec(fctid, item, name, m))
+    if (gks_mf_on() && !mf(fctid, name, m))
         return;
     if (s->vis)
         shown_change(s, fctid);
@@ -208,35 +209,38 @@ static void set_tran(int fctid, int item, Gint name, const double *m, int n)
 
 GKS_API void gset_seg_tran3(Gint seg_name, const Gtran_matrix3 tran_matrix)
 {
-    set_tran(GFN_SSGT3, GKSM_FN_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
+    set_tran(GFN_SSGT3, gks_mf_rec_SSGT3, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 12);
 }
 
 GKS_API void gset_seg_tran(Gint seg_name, const Gtran_matrix tran_matrix)
 {
-    set_tran(GFN_SSGT, GKSM_FN_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
+    set_tran(GFN_SSGT, gks_mf_rec_SSGT, seg_name, tran_matrix ? &tran_matrix[0][0] : NULL, 6);
 }
 
 /* SET VISIBILITY, HIGHLIGHTING, DETECTABILITY and SEGMENT PRIORITY: the function, its
- * metafile item, the error for a value it does not take, the values and where the segment
- * holds it. A switch (real 0) takes lo (off) or hi (on) and stores 1 for on in an int; the
+ * typed metafile hook, the error for a value it does not take, the values and where the
+ * segment holds it. A switch (real 0) takes lo (off) or hi (on) and stores 1 for on in an int; the
  * priority (real 1) takes a real in [lo, hi] and stores it in a double. A change of the
  * stored value alters the segment's pictures always (visibility), while it is visible
  * (priority) or never (highlighting and detectability do not show in a PNG picture). */
 enum { SHOWN_NEVER, SHOWN_IF_VISIBLE, SHOWN_ALWAYS };
 typedef struct {
-    int fctid, item, err, real;
+    int fctid;
+    int (*mf_switch)(int fctid, int name, int v); /* the typed hook of a switch, */
+    int (*mf_real)(int fctid, int name, double v); /* or of the priority */
+    int err, real;
     double lo, hi;
     size_t field;
     int shown;
 } seg_attr;
 
-static const seg_attr VIS = { GFN_SVIS, GKSM_FN_SVIS, 2000, 0, GSEG_INVIS, GSEG_VIS,
+static const seg_attr VIS = { GFN_SVIS, gks_mf_rec_SVIS, NULL, 2000, 0, GSEG_INVIS, GSEG_VIS,
                               offsetof(gks_segment, vis), SHOWN_ALWAYS };
-static const seg_attr HIGHL = { GFN_SHLIT, GKSM_FN_SHLIT, 2000, 0, GSEG_NORM, GSEG_HIGHL,
+static const seg_attr HIGHL = { GFN_SHLIT, gks_mf_rec_SHLIT, NULL, 2000, 0, GSEG_NORM, GSEG_HIGHL,
                                 offsetof(gks_segment, highl), SHOWN_NEVER };
-static const seg_attr DET = { GFN_SDTEC, GKSM_FN_SDTEC, 2000, 0, GSEG_UNDET, GSEG_DET,
+static const seg_attr DET = { GFN_SDTEC, gks_mf_rec_SDTEC, NULL, 2000, 0, GSEG_UNDET, GSEG_DET,
                               offsetof(gks_segment, det), SHOWN_NEVER };
-static const seg_attr PRI = { GFN_SSGP, GKSM_FN_SSGP, 126, 1, 0.0, 1.0,
+static const seg_attr PRI = { GFN_SSGP, NULL, gks_mf_rec_SSGP, 126, 1, 0.0, 1.0,
                               offsetof(gks_segment, pri), SHOWN_IF_VISIBLE };
 
 static void set_attr(const seg_attr *k, Gint name, double v)
@@ -246,8 +250,8 @@ static void set_attr(const seg_attr *k, Gint name, double v)
         return;
     if (k->real ? !(v >= k->lo && v <= k->hi) : v != k->lo && v != k->hi)
         GKS_FAIL(k->err, k->fctid);
-    if (gks_mf_on() && !(k->real ? gks_mf_rec(k->fctid, k->item, name, v)
-                                 : gks_mf_rec(k->fctid, k->item, name, (int)v)))
+    if (gks_mf_on() && !(k->real ? k->mf_real(k->fctid, name, v)
+                                 : k->mf_switch(k->fctid, name, (int)v)))
         return;
     char *f = (char *)s + k->field;
     double now = k->real ? v : v == k->hi, was = k->real ? *(double *)f : *(int *)f;

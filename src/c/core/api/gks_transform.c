@@ -138,9 +138,10 @@ static void ws_tran_changed(gks_ws *ws, int fct)
 
 /* SET WORKSTATION WINDOW (3) / VIEWPORT (3): the workstation (7, 20, 25, 33, 36), then box
  * b (51; a window outside the NPC unit cube 53, a viewport outside the display space 54),
- * then the requested window or viewport set, recorded on a metafile output as item
- * mf_item, and made current or pending. */
-static void set_ws_limits(int fct, int mf_item, Gint ws_id, box b, int viewport)
+ * then the requested window or viewport set, recorded on a metafile output by the typed
+ * hook mf, and made current or pending. */
+static void set_ws_limits(int fct, int (*mf)(int, int, const double *), Gint ws_id, box b,
+                          int viewport)
 {
     if (gks_check_state(fct))
         return;
@@ -155,29 +156,29 @@ static void set_ws_limits(int fct, int mf_item, Gint ws_id, box b, int viewport)
     if (err)
         GKS_FAIL(err, fct);
     put_limits(viewport ? &ws->req_vp : &ws->req_win, &b);
-    if (!gks_mf_ws_rec(fct, ws_id, mf_item, b.v))
+    if (!mf(fct, ws_id, b.v))
         return;
     ws_tran_changed(ws, fct);
 }
 
 GKS_API void gset_ws_win(Gint ws_id, const Glimit *ws_win)
 {
-    set_ws_limits(GFN_SWKWN, GKSM_FN_SWKWN, ws_id, box2(ws_win), 0);
+    set_ws_limits(GFN_SWKWN, gks_mf_ws_rec_SWKWN, ws_id, box2(ws_win), 0);
 }
 
 GKS_API void gset_ws_vp(Gint ws_id, const Glimit *ws_vp)
 {
-    set_ws_limits(GFN_SWKVP, GKSM_FN_SWKVP, ws_id, box2(ws_vp), 1);
+    set_ws_limits(GFN_SWKVP, gks_mf_ws_rec_SWKVP, ws_id, box2(ws_vp), 1);
 }
 
 GKS_API void gset_ws_win3(Gint ws_id, const Glimit3 *ws_win)
 {
-    set_ws_limits(GFN_SWKW3, GKSM_FN_SWKW3, ws_id, box3(ws_win), 0);
+    set_ws_limits(GFN_SWKW3, gks_mf_ws_rec_SWKW3, ws_id, box3(ws_win), 0);
 }
 
 GKS_API void gset_ws_vp3(Gint ws_id, const Glimit3 *ws_vp)
 {
-    set_ws_limits(GFN_SWKV3, GKSM_FN_SWKV3, ws_id, box3(ws_vp), 1);
+    set_ws_limits(GFN_SWKV3, gks_mf_ws_rec_SWKV3, ws_id, box3(ws_vp), 1);
 }
 
 /* --- Inquiries --------------------------------------------------------------------- */

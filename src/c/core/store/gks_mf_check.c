@@ -13,7 +13,7 @@
 /* The kind of each item. */
 enum {
 #define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_KIND_##name = GKSM_##kind,
-#define GKSM_ALSO(key, name, kind)
+#define GKSM_ALSO(key, name, kind, fmt)
 #include "gks_mf_items.def"
 #undef GKSM_ITEM
 #undef GKSM_ALSO
@@ -69,7 +69,7 @@ enum {
 #define GKSM_ROW_STATE(name, key)
 #define GKSM_ROW_READ(name, key)
 #define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_ROW_##kind(name, key)
-#define GKSM_ALSO(key, name, kind) GKSM_ROW_##kind(name, key)
+#define GKSM_ALSO(key, name, kind, fmt) GKSM_ROW_##kind(name, key)
 #include "gks_mf_items.def"
 #undef GKSM_ITEM
 #undef GKSM_ALSO

@@ -13,7 +13,6 @@
 #include "gks_context.h"
 #include "gks_record.h"
 #include <math.h>
-#include <stdarg.h>
 #include <stddef.h>
 #include <string.h>
 
@@ -40,8 +39,8 @@ void gks_mf_recount(void)
 
 /* The format of every item that has one, from the item table. */
 static const char *const item_fmts[GKSM_ITEM_USER_MIN] = {
-#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) [type] = fmt,
-#define GKSM_ALSO(key, name, kind)
+#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) [type] = GKSM_FMT_STR fmt,
+#define GKSM_ALSO(key, name, kind, fmt)
 #include "gks_mf_items.def"
 #undef GKSM_ITEM
 #undef GKSM_ALSO
@@ -134,84 +133,100 @@ static int put_nums(const mo_t *o, int item, int n, const long *iv, int m, const
     return put(o, item);
 }
 
-/* Builds o's record of item `item` from its format (gks_mf_items.def) and writes it. */
-static int put_fmt(const mo_t *o, int item, va_list ap)
+/* Builds o's record of item `item` from its format fmt (gks_mf_items.def), the value of
+ * each group in a[], and writes it. */
+static int put_args(const mo_t *o, int item, const char *fmt, const gksm_arg *a)
 {
     gksm_rec *r = &o->m->rec;
     gksm_rec_clear(r);
-    const char *f = gksm_item_fmt(item);
     int n, arr;
     char k;
-    while ((f = gksm_fmt_next(f, &n, &k, &arr))) {
+    for (const char *f = fmt; (f = gksm_fmt_next(f, &n, &k, &arr)); a++) {
         if (k == 'I') {
-            n = va_arg(ap, int);
-            const int *v = va_arg(ap, const int *);
-            for (int j = 0; j < n; j++)
-                gksm_rec_int(r, v[j]);
+            for (long j = 0; j < a->i; j++)
+                gksm_rec_int(r, a->iv[j]);
         } else if (k == 's') {
-            const char *str = va_arg(ap, const char *);
-            gksm_rec_str(r, str ? str : "", str ? strlen(str) : 0);
+            gksm_rec_str(r, a->s ? a->s : "", a->s ? strlen(a->s) : 0);
         } else if (arr && k == 'i') {
-            const int *v = va_arg(ap, const int *);
             for (int j = 0; j < n; j++)
-                gksm_rec_int(r, v[j]);
+                gksm_rec_int(r, a->iv[j]);
         } else if (arr) {
-            const double *v = va_arg(ap, const double *);
             for (int j = 0; j < n; j++)
-                gksm_rec_real(r, v[j]);
+                gksm_rec_real(r, a->rv[j]);
         } else if (k == 'i') {
-            gksm_rec_int(r, va_arg(ap, int));
+            gksm_rec_int(r, a->i);
         } else {
-            gksm_rec_real(r, va_arg(ap, double));
+            gksm_rec_real(r, a->r);
         }
     }
     return put(o, item);
 }
 
-int gks_mf_rec(int fctid, int item, ...)
+/* The item to ws if it is an MO: -1 if not, else 0 or its error (300 for its state). */
+static int put_args_to(gks_ws *ws, int item, const char *fmt, const gksm_arg *a)
+{
+    mo_t o;
+    int err = mo_of(ws, &o);
+    return err ? err : put_args(&o, item, fmt, a);
+}
+
+/* A REC_ALL item to every active MO workstation; what report returned. */
+static int rec_all(int fctid, int item, const char *fmt, const gksm_arg *a)
 {
     gks_context *c = gks_ctx();
     mf_errs e = { 0 };
     for (int i = 0; i < n_targets(c); i++) {
-        mo_t o;
         if (target(c, i)->state != GWS_ACTIVE)
             continue;
-        int err = mo_of(target(c, i), &o);
-        if (err < 0)
-            continue;
-        if (!err) {
-            va_list ap;
-            va_start(ap, item);
-            err = put_fmt(&o, item, ap);
-            va_end(ap);
-        }
-        note(&e, err);
+        int err = put_args_to(target(c, i), item, fmt, a);
+        if (err >= 0)
+            note(&e, err);
     }
     return report(&e, fctid);
 }
 
-int gks_mf_ws_rec(int fctid, int ws_id, int item, ...)
+/* A REC_WS item to the workstation ws_id if it is an MO, and to the recorder when it
+ * mirrors that one; what report returned. */
+static int rec_ws(int fctid, int ws_id, int item, const char *fmt, const gksm_arg *a)
 {
-    /* the addressed workstation, and the recorder when it mirrors that one */
     gks_ws *to[2] = { gks_ws_lookup(ws_id), gks_record_mirror(ws_id) };
     mf_errs e = { 0 };
     for (int k = 0; k < 2; k++) {
-        mo_t o;
-        int err = mo_of(to[k], &o);
+        int err = put_args_to(to[k], item, fmt, a);
         if (err < 0)
             continue;
-        if (!err) {
-            va_list ap;
-            va_start(ap, item);
-            err = put_fmt(&o, item, ap);
-            va_end(ap);
-        }
         if (!err && k == 1 && item == GKSM_ITEM_CLEAR)
             gks_ctx()->rec_drawn = 0; /* the recorded frame ended */
         note(&e, err);
     }
     return report(&e, fctid);
 }
+
+/* The typed hooks of the REC_ALL and REC_WS rows (gks_mf_record.h): each packs its
+ * arguments, one gksm_arg per group of its format (and one unused, so that no array is
+ * empty), for rec_all or rec_ws. */
+#define GKSM_HOOK_REC_ALL(name, key, fmt)                                                  \
+    int gks_mf_rec_##key(int fctid GKSM_PARAMS fmt)                                        \
+    {                                                                                      \
+        const gksm_arg a[] = { GKSM_ARGS fmt { 0 } };                                      \
+        return rec_all(fctid, GKSM_ITEM_##name, GKSM_FMT_STR fmt, a);                      \
+    }
+#define GKSM_HOOK_REC_WS(name, key, fmt)                                                   \
+    int gks_mf_ws_rec_##key(int fctid, int ws_id GKSM_PARAMS fmt)                          \
+    {                                                                                      \
+        const gksm_arg a[] = { GKSM_ARGS fmt { 0 } };                                      \
+        return rec_ws(fctid, ws_id, GKSM_ITEM_##name, GKSM_FMT_STR fmt, a);                \
+    }
+#define GKSM_HOOK_REC_OWN(name, key, fmt)
+#define GKSM_HOOK_PRIM(name, key, fmt)
+#define GKSM_HOOK_ATTR(name, key, fmt)
+#define GKSM_HOOK_STATE(name, key, fmt)
+#define GKSM_HOOK_READ(name, key, fmt)
+#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_HOOK_##kind(name, key, fmt)
+#define GKSM_ALSO(key, name, kind, fmt) GKSM_HOOK_##kind(name, key, fmt)
+#include "gks_mf_items.def"
+#undef GKSM_ITEM
+#undef GKSM_ALSO
 
 int gks_mf_escape(int fctid, gks_ws *ws, int func_id, const Gescape_in_data *in)
 {
@@ -276,7 +291,7 @@ typedef struct {
 #define GKSM_ATTR_ROW_READ(name, key)
 static const attr_field attr_fields[] = {
 #define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_ATTR_ROW_##kind(name, key)
-#define GKSM_ALSO(key, name, kind)
+#define GKSM_ALSO(key, name, kind, fmt)
 #include "gks_mf_items.def"
 #undef GKSM_ITEM
 #undef GKSM_ALSO

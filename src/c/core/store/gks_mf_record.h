@@ -80,13 +80,27 @@ void gks_mf_recount(void);
  * once (gks_error.h). ---- */
 /* A primitive, preceded by the attribute, normalization and clipping items that changed. */
 GKS_MUST_CHECK int gks_mf_prim_write(int fctid, const gks_mf_prim *p);
-/* The item `item` of the active MO workstations, its data record built from the arguments
- * by the item's format (gks_mf_items.def): i an int, r a double, Nr / Ni one pointer to N
- * doubles / ints, I an int count and a pointer to the ints, s a string. */
-GKS_MUST_CHECK int gks_mf_rec(int fctid, int item, ...);
-/* The same for a workstation-addressed function: written only when ws_id is an open MO
- * (active or not; no fast path needed: these are not per-primitive calls). */
-GKS_MUST_CHECK int gks_mf_ws_rec(int fctid, int ws_id, int item, ...);
+/* The typed hooks, one per REC_ALL and REC_WS row of gks_mf_items.def, generated from the
+ * row's format (an argument of the wrong kind does not compile): gks_mf_rec_<KEY>(fctid,
+ * values...) writes the item of function KEY on every active MO; gks_mf_ws_rec_<KEY>(fctid,
+ * ws_id, values...) writes it when ws_id is an open MO (active or not; no fast path needed:
+ * these are not per-primitive calls), and on the GKS3D_RECORD recorder when it mirrors
+ * ws_id. The values follow the groups of the format: i an int, r a double, Ni / Nr one
+ * pointer to N ints / doubles, I an int count and a pointer to the ints, s a string. */
+#define GKSM_DECL_REC_ALL(name, key, fmt)                                                  \
+    GKS_MUST_CHECK int gks_mf_rec_##key(int fctid GKSM_PARAMS fmt);
+#define GKSM_DECL_REC_WS(name, key, fmt)                                                   \
+    GKS_MUST_CHECK int gks_mf_ws_rec_##key(int fctid, int ws_id GKSM_PARAMS fmt);
+#define GKSM_DECL_REC_OWN(name, key, fmt)
+#define GKSM_DECL_PRIM(name, key, fmt)
+#define GKSM_DECL_ATTR(name, key, fmt)
+#define GKSM_DECL_STATE(name, key, fmt)
+#define GKSM_DECL_READ(name, key, fmt)
+#define GKSM_ITEM(type, name, kind, key, fmt, dec, ...) GKSM_DECL_##kind(name, key, fmt)
+#define GKSM_ALSO(key, name, kind, fmt) GKSM_DECL_##kind(name, key, fmt)
+#include "gks_mf_items.def"
+#undef GKSM_ITEM
+#undef GKSM_ALSO
 
 /* ESCAPE addressed to workstation ws: if ws is an MO, writes the ESCAPE item (function
  * identification, integers, reals, string) and returns 1; else returns 0. */
@@ -106,23 +120,23 @@ static inline int gks_mf_is_mo(const gks_ws *ws)
  * item without data. */
 #define GKS_MF(sym, ...)                                                                   \
     do {                                                                                   \
-        if (gks_mf_on() && !gks_mf_rec(GFN_##sym, GKSM_FN_##sym, __VA_ARGS__))             \
+        if (gks_mf_on() && !gks_mf_rec_##sym(GFN_##sym, __VA_ARGS__))                      \
             return;                                                                        \
     } while (0)
 #define GKS_MF0(sym)                                                                       \
     do {                                                                                   \
-        if (gks_mf_on() && !gks_mf_rec(GFN_##sym, GKSM_FN_##sym))                          \
+        if (gks_mf_on() && !gks_mf_rec_##sym(GFN_##sym))                                   \
             return;                                                                        \
     } while (0)
-/* The same for a workstation-addressed function (gks_mf_ws_rec). */
+/* The same for a workstation-addressed function (gks_mf_ws_rec_<KEY>). */
 #define GKS_MF_WS(sym, ws_id, ...)                                                         \
     do {                                                                                   \
-        if (!gks_mf_ws_rec(GFN_##sym, (ws_id), GKSM_FN_##sym, __VA_ARGS__))                \
+        if (!gks_mf_ws_rec_##sym(GFN_##sym, (ws_id), __VA_ARGS__))                         \
             return;                                                                        \
     } while (0)
 #define GKS_MF_WS0(sym, ws_id)                                                             \
     do {                                                                                   \
-        if (!gks_mf_ws_rec(GFN_##sym, (ws_id), GKSM_FN_##sym))                             \
+        if (!gks_mf_ws_rec_##sym(GFN_##sym, (ws_id)))                                      \
             return;                                                                        \
     } while (0)
 #endif
