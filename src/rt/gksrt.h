@@ -251,12 +251,6 @@ RT_API int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit
 /* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
 RT_API int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);
 
-/* Secondary ray from a hit (as the renderer spawns them): origin = hit point moved off the
- * surface along the geometric normal, to the side dir points to, by
- * 1e-12*(max|hit coordinate| + t) + 1e-9*(scene extent); dir copied; tmin 0, tmax +inf.
- * RT_ERR_ARG (NULL, miss, non-finite values, zero dir), RT_ERR_STATE (not committed). */
-RT_API int rt_hit_spawn(const rt_scene *sc, const rt_hit *h, const double dir[3], rt_ray *out);
-
 /* ---- Camera (paper section 3) ------------------------------------------------------------ */
 
 typedef struct rt_camera {

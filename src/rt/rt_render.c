@@ -207,29 +207,6 @@ static double rt_eps(const rt_scene *sc, const double p[3], double t)
     return 1e-12 * (rt_absmax3(p) + fabs(t)) + 1e-9 * rt_absmax3(e) + 1e-300;
 }
 
-int rt_hit_spawn(const rt_scene *sc, const rt_hit *h, const double dir[3], rt_ray *out)
-{
-    if (!sc || !h || !dir || !out || h->prim < 0)
-        return RT_ERR_ARG;
-    if (!sc->committed)
-        return RT_ERR_STATE;
-    for (int i = 0; i < 3; i++)
-        if (!isfinite(h->p[i]) || !isfinite(h->ng[i]) || !isfinite(dir[i]))
-            return RT_ERR_ARG;
-    if (!isfinite(h->t) || !(rt_absmax3(dir) > 0.0))
-        return RT_ERR_ARG;
-    double eps = rt_eps(sc, h->p, h->t);
-    if (dot3(h->ng, dir) < 0.0)
-        eps = -eps;
-    for (int i = 0; i < 3; i++) {
-        out->org[i] = h->p[i] + eps * h->ng[i];
-        out->dir[i] = dir[i];
-    }
-    out->tmin = 0.0;
-    out->tmax = INFINITY;
-    return RT_OK;
-}
-
 /* the candidate primitives of an eye ray (rt_job.cand) */
 typedef struct rt_cands {
     const uint32_t *ids;

@@ -1129,11 +1129,14 @@ static void test_fill_area_set_hole(void **u)
             red += want_red;
         }
     assert_int_equal(red, 52 * 52 - 12 * 12);
-    rt_stats st;
-    ws_rt_last_stats(r, &st);
-    assert_int_equal(st.prims, 1);
-    assert_int_equal(st.eye_rays, 4096);
-    assert_int_equal(st.eye_hits, 52 * 52 - 12 * 12);
+    Gint ints[1] = { 0 }, st[8]; /* GESC_RT_STATS: eye rays, eye hits, ..., primitives */
+    Gfloat secs[2];
+    Gescape_in_data in = { .num_ints = 1, .ints = ints };
+    Gescape_out_data out = { .num_ints = 8, .ints = st, .num_floats = 2, .floats = secs };
+    assert_int_equal(ws_rt_escape(r, GESC_RT_STATS, &in, &out), 0);
+    assert_int_equal(st[7], 1);
+    assert_int_equal(st[0], 4096);
+    assert_int_equal(st[1], 52 * 52 - 12 * 12);
     gks_raster_fb_free(fb);
     ws_rt_free(r);
 }

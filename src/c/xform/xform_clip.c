@@ -60,41 +60,10 @@ int gks_xform_clip_add_box(gks_xform_clip *c, const double box[6], unsigned flag
     for (int i = 0; i < 6; i++) {
         unsigned bit = (i < 4) ? GKS_XFORM_CLIP_XY
                                : (i == 4) ? GKS_XFORM_CLIP_BACK : GKS_XFORM_CLIP_FRONT;
-        if (flags & bit) {
-            memcpy(c->p[c->n], planes[i], sizeof planes[i]);
-            c->axis[c->n++] = (unsigned char)(i / 2 + 1);
-        }
-    }
-    return 0;
-}
-
-int gks_xform_clip_add_box_mapped(gks_xform_clip *c, const double box[6], unsigned flags,
-                                  const double b_to_a[4][4])
-{
-    gks_xform_clip t;
-    gks_xform_clip_init(&t);
-    int err = gks_xform_clip_add_box(&t, box, flags);
-    if (err)
-        return err;
-    if (!xform_finite_n(&b_to_a[0][0], 16))
-        return GKS_E_ARITHMETIC;
-    if (c->n < 0 || c->n + t.n > GKS_XFORM_MAX_PLANES)
-        return GKS_E_STORAGE_OVERFLOW;
-    double q[GKS_XFORM_MAX_PLANES][4];
-    for (int i = 0; i < t.n; i++) {
-        gks_xform_plane_pullback(t.p[i], b_to_a, q[i]);
-        double mx = 0.0;
-        for (int j = 0; j < 4; j++)
-            mx = fmax(mx, fabs(q[i][j]));
-        if (!(mx > 0.0) || !isfinite(mx))
+        /* finite, not zero, room checked above: cannot fail; axis tag i / 2 + 1 */
+        if ((flags & bit) && gks_xform_clip_add_plane(c, planes[i]))
             return GKS_E_ARITHMETIC;
-        for (int j = 0; j < 4; j++)
-            q[i][j] /= mx;
     }
-    memcpy(c->p[c->n], q, (size_t)t.n * sizeof q[0]);
-    for (int i = 0; i < t.n; i++)
-        c->axis[c->n + i] = plane_axis(q[i]);
-    c->n += t.n;
     return 0;
 }
 

@@ -207,9 +207,3 @@ size_t gks_seg_draw_order(const gks_seg_store *st, int ws_id, gks_segment **out)
     }
     return n;
 }
-
-size_t gks_seg_bytes(const gks_segment *s)
-{
-    return s->cap_rec * sizeof *s->rec + s->cap_pts * sizeof *s->pts +
-           s->cap_ints * sizeof *s->ints + s->cap_chars + s->cap_bound * sizeof *s->bound;
-}

@@ -111,7 +111,4 @@ int gks_seg_on_ws(const gks_segment *s, int ws_id);
  * priority in order of creation (later ones drawn over earlier ones). Fills out (capacity
  * st->n) and returns the count. */
 size_t gks_seg_draw_order(const gks_seg_store *st, int ws_id, gks_segment **out);
-
-/* Bytes held by a segment's content (for the memory-growth test). */
-size_t gks_seg_bytes(const gks_segment *s);
 #endif

@@ -206,8 +206,6 @@ void ws_rt_options(const ws_rt *r, rt_render_options *o) { *o = r->opts; }
 
 void ws_rt_set_share_tiles(ws_rt *r, int on) { r->share_tiles = on != 0; }
 
-void ws_rt_last_stats(const ws_rt *r, rt_stats *st) { *st = r->last; }
-
 static int clamp_view(int v) { return v >= 0 && v <= GKS_MAX_VIEW_IND ? v : 0; }
 
 /* The attributes of prim. */
@@ -1088,7 +1086,8 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     int err = prepare_scene(r, ws, vi, r->opts.clip_secondary ? &cam : NULL);
     if (err)
         return err;
-    rt_render_options o = r->opts;
+    rt_render_options o;
+    ws_rt_options(r, &o); /* what the ESCAPEs set */
     /* rays that leave the scene see the workstation's background (colour index 0) */
     const double bg[3] = { ws->colr[0].red, ws->colr[0].green, ws->colr[0].blue };
     memcpy(o.background, bg, sizeof bg);

@@ -34,8 +34,6 @@ void ws_rt_set_tile_fn(ws_rt *r, ws_rt_tile_fn fn, void *user);
 /* The render options the next picture uses (ESCAPE settings; the environment variable
  * GKS3D_RT_PROGRESS=1 is applied at render time, not here). */
 void ws_rt_options(const ws_rt *r, rt_render_options *o);
-/* Statistics of the last traced picture (sums over its views); all zero before the first. */
-void ws_rt_last_stats(const ws_rt *r, rt_stats *st);
 /* The ray-tracing ESCAPEs GESC_RT_CLIP_SECONDARY .. GESC_RT_SPD of a workstation (records
  * as documented in gks.h, ints[0] = ws id already checked by the core). Returns 0, 180
  * (identifier not a ray-tracing escape) or 182 (bad data record: nothing changed). */
