@@ -292,87 +292,109 @@ static int immediate_mode(const gks_ws *ws)
     return ws->hlhsr_mode == GHLHSR_ZBUFFER ? DRAW_ZTEST : DRAW_PLAIN;
 }
 
+/* The m chunk points r->h that are inside the clip region, in DC, as one run of marker
+ * centres of *rc (none if none is inside). 0 or 300. */
+static int chunk_markers(png_render *r, const view_cache *v, size_t m, rec *rc)
+{
+    if (GROW(r, pts, cap_pt, r->n_pt + m))
+        return 300;
+    size_t k = 0;
+    for (size_t i = 0; i < m; i++)
+        if (inside(&v->clip, r->h[i]) && to_dc(v, r->h[i], &r->pts[r->n_pt + k]))
+            k++;
+    if (!k)
+        return 0;
+    r->n_pt += k;
+    if (count_push(r, (int)k))
+        return 300;
+    rc->n_fill++;
+    return 0;
+}
+
+/* The polyline of the m chunk points r->h clipped, its pieces of at least 2 points in DC
+ * appended to *rc; the first one continues the previous chunk's last piece (count
+ * negated) when *cont and the chunk starts inside. *cont becomes whether the chunk ends
+ * inside. 0 or 300. */
+static int chunk_polyline(png_render *r, const view_cache *v, size_t m, int *cont, rec *rc)
+{
+    size_t n_out = 0, n_pieces = 0;
+    int e = 0;
+    if (all_inside(&v->clip, (const double (*)[4])r->h, m)) { /* trivial accept */
+        memcpy(r->out, r->h, m * sizeof *r->out);
+        r->len[0] = n_out = m;
+        n_pieces = 1;
+    } else {
+        e = gks_xform_clip_polyline(&v->clip, m, (const double (*)[4])r->h, r->out,
+                                    r->cap_out, r->len, r->cap_len, &n_out, &n_pieces);
+    }
+    if (e == 300)
+        return 300;
+    if (e)
+        n_pieces = 0; /* non-finite: nothing of this chunk */
+    if (GROW(r, pts, cap_pt, r->n_pt + n_out))
+        return 300;
+    size_t off = 0;
+    for (size_t k = 0; k < n_pieces; k++) {
+        size_t c = 0;
+        for (size_t i = 0; i < r->len[k]; i++)
+            if (to_dc(v, r->out[off + i], &r->pts[r->n_pt + c]))
+                c++;
+        off += r->len[k];
+        if (c < 2)
+            continue;
+        r->n_pt += c;
+        int first_cont = k == 0 && *cont && inside(&v->clip, r->h[0]);
+        if (count_push(r, first_cont ? -(int)c : (int)c))
+            return 300;
+        rc->n_fill++;
+    }
+    *cont = e == 0 && inside(&v->clip, r->h[m - 1]);
+    return 0;
+}
+
+/* Immediate output (b->fb): the pieces of *rc from point pt0 and count cnt0 on, drawn at
+ * once and dropped. 0 or the error of draw_rec. */
+static int chunk_draw(build *b, rec *rc, size_t pt0, size_t cnt0)
+{
+    png_render *r = b->r;
+    rec t = *rc;
+    t.pt = pt0;
+    t.cnt = cnt0;
+    t.n_fill = (int)(r->n_cnt - cnt0);
+    int de = draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
+    r->n_pt = pt0;
+    r->n_cnt = cnt0;
+    rc->n_fill = 0;
+    return de;
+}
+
 /* Polyline pieces (or marker centres) of points p[0..n-1] (closed: back to p[0]) clipped
- * and in DC, appended to the list as counts of *rc. With b->fb, each chunk is drawn and
- * dropped. */
+ * and in DC, appended to the list as counts of *rc, in chunks of CHUNK points (a polyline's
+ * chunks overlap by one point). With b->fb, each chunk is drawn and dropped. */
 static int add_pieces(build *b, const Gpoint3 *p, size_t n, int closed, rec *rc)
 {
     png_render *r = b->r;
     const view_cache *v = b->v;
     int markers = rc->kind == REC_MARKER;
     size_t total = markers ? n : closed ? n + 1 : n; /* points walked, p[i % n] */
+    const size_t overlap = markers ? 0 : 1;
     if (GROW(r, h, cap_h, CHUNK + 1) || GROW(r, out, cap_out, 2 * CHUNK + 2) ||
         GROW(r, len, cap_len, CHUNK + 1))
         return 300;
     int cont = 0; /* the previous chunk's last point was inside: its piece continues */
-    for (size_t s = 0; s + (markers ? 0 : 1) < total;) {
+    for (size_t s = 0; s + overlap < total;) {
         size_t m = total - s;
-        if (m > CHUNK + (markers ? 0 : 1))
-            m = CHUNK + (markers ? 0 : 1);
+        if (m > CHUNK + overlap)
+            m = CHUNK + overlap;
         for (size_t i = 0; i < m; i++)
             to_h(v, &p[(s + i) % n], r->h[i]);
         size_t pt0 = r->n_pt, cnt0 = r->n_cnt;
-        if (markers) {
-            if (GROW(r, pts, cap_pt, r->n_pt + m))
-                return 300;
-            size_t k = 0;
-            for (size_t i = 0; i < m; i++)
-                if (inside(&v->clip, r->h[i]) && to_dc(v, r->h[i], &r->pts[r->n_pt + k]))
-                    k++;
-            if (k) {
-                r->n_pt += k;
-                if (count_push(r, (int)k))
-                    return 300;
-                rc->n_fill++;
-            }
-            s += m;
-        } else {
-            size_t n_out = 0, n_pieces = 0;
-            int e = 0;
-            if (all_inside(&v->clip, (const double (*)[4])r->h, m)) { /* trivial accept */
-                memcpy(r->out, r->h, m * sizeof *r->out);
-                r->len[0] = n_out = m;
-                n_pieces = 1;
-            } else {
-                e = gks_xform_clip_polyline(&v->clip, m, (const double (*)[4])r->h, r->out,
-                                            r->cap_out, r->len, r->cap_len, &n_out, &n_pieces);
-            }
-            if (e == 300)
-                return 300;
-            if (e)
-                n_pieces = 0; /* non-finite: nothing of this chunk */
-            if (GROW(r, pts, cap_pt, r->n_pt + n_out))
-                return 300;
-            size_t off = 0;
-            for (size_t k = 0; k < n_pieces; k++) {
-                size_t c = 0;
-                for (size_t i = 0; i < r->len[k]; i++)
-                    if (to_dc(v, r->out[off + i], &r->pts[r->n_pt + c]))
-                        c++;
-                off += r->len[k];
-                if (c < 2)
-                    continue;
-                r->n_pt += c;
-                int first_cont = k == 0 && cont && inside(&v->clip, r->h[0]);
-                if (count_push(r, first_cont ? -(int)c : (int)c))
-                    return 300;
-                rc->n_fill++;
-            }
-            cont = e == 0 && inside(&v->clip, r->h[m - 1]);
-            s += m - 1;
-        }
-        if (b->fb && r->n_cnt > cnt0) { /* draw this chunk at once, then drop it */
-            rec t = *rc;
-            t.pt = pt0;
-            t.cnt = cnt0;
-            t.n_fill = (int)(r->n_cnt - cnt0);
-            int de = draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
-            r->n_pt = pt0;
-            r->n_cnt = cnt0;
-            rc->n_fill = 0;
-            if (de)
-                return de;
-        }
+        int e = markers ? chunk_markers(r, v, m, rc) : chunk_polyline(r, v, m, &cont, rc);
+        if (e)
+            return e;
+        s += m - overlap;
+        if (b->fb && r->n_cnt > cnt0 && (e = chunk_draw(b, rc, pt0, cnt0)))
+            return e;
     }
     return 0;
 }
@@ -662,44 +684,37 @@ static int dc_convex_loose(const gks_raster_pt *q, int n)
     return sg != 0;
 }
 
-/* An area with vertex data and interior shading method COLOUR or NORMAL (on either side),
- * solid, of one convex loop: its per-vertex attributes into the float list and a->style =
- * STYLE_SMOOTH; a loop crossing the clip region is clipped here with its attributes.
- * COLOUR (or no vertex normals): the colours shaded at the vertices (with their normals, else the facet's), interpolated; NORMAL with normals: Od, N
- * and P interpolated and shaded per sample. 0: set up (add_loops adds the points), 2: set up
- * with the clipped loop added to rc, 1: drawn flat instead, 300. */
-static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
+/* 1 if prim cannot be drawn smooth (smooth_setup): no interior shading method COLOUR or
+ * NORMAL, no vertex normals or colours, not one loop of at least 3 points, not solid, or
+ * hidden-line mode. */
+static int smooth_refused(const build *b, const gks_prim *prim, const rattr *a, int meth)
 {
-    png_render *r = b->r;
-    const int meth = prim->shading[0] > prim->shading[1] ? prim->shading[0] : prim->shading[1];
     const int n = prim->n_points;
-    if (meth <= GSHAD_NONE || (!prim->vnormals && !prim->vcolours) || prim->n_loops != 1 ||
-        n < 3 || prim->loop_counts[0] != n || a->style != GKS_RASTER_SOLID ||
-        b->ws->hlhsr_mode == GHLHSR_HIDDEN_LINE)
-        return 1;
-    if (GROW(r, h, cap_h, (size_t)n) || GROW(r, pts, cap_pt, r->n_pt + (size_t)n))
-        return 300;
+    return meth <= GSHAD_NONE || (!prim->vnormals && !prim->vcolours) || prim->n_loops != 1 ||
+           n < 3 || prim->loop_counts[0] != n || a->style != GKS_RASTER_SOLID ||
+           b->ws->hlhsr_mode == GHLHSR_HIDDEN_LINE;
+}
+
+/* An unclipped loop's n points r->h in DC into q: 1 if one is not representable (w = 0)
+ * or the loop is not convex. */
+static int smooth_whole_dc(const build *b, int n, gks_raster_pt *q)
+{
+    const double (*h)[4] = (const double (*)[4])b->r->h;
     for (int i = 0; i < n; i++)
-        to_h(b->v, &prim->pts[i], r->h[i]);
-    const int whole = all_inside(&b->v->clip, r->h, (size_t)n);
-    gks_raster_pt *q = r->pts + r->n_pt; /* scratch: add_loops writes the same points */
-    if (whole) {
-        for (int i = 0; i < n; i++)
-            if (!to_dc(b->v, r->h[i], &q[i]) || !(fabs(r->h[i][3]) > 0))
-                return 1;
-        if (!dc_convex(q, n))
+        if (!to_dc(b->v, h[i], &q[i]) || !(fabs(h[i][3]) > 0))
             return 1;
-    }
-    const int phong = meth == GSHAD_NORM && prim->vnormals;
-    const int nat = phong ? 9 : 3, per = nat + 1;
-    ws_shade_ctx ctx;
-    const int lit = !ws_shade_ctx_init(b->ws, prim, &ctx);
-    ws_shade flat;
-    ws_shade_area(b->ws, prim, &flat);
-    if (GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)n))
-        return 300;
-    float *f = r->fl + r->n_fl;
-    for (int i = 0; i < n; i++, f += per) {
+    return !dc_convex(q, n);
+}
+
+/* The per-vertex attributes of prim's n vertices into f (per floats each, the last one
+ * 1/|w|): phong: Od, N (zero without a normal) and P in VRC; else the colour shaded at the
+ * vertex with its normal (lit) or the facet's flat shading. */
+static void smooth_vertex_attrs(const build *b, const gks_prim *prim, int phong, int lit,
+                                const ws_shade_ctx *ctx, const ws_shade *flat, float *f,
+                                int per)
+{
+    const int nat = per - 1;
+    for (int i = 0; i < prim->n_points; i++, f += per) {
         const Grgb *c = prim->vcolours ? &prim->vcolours[i] : &prim->colour;
         double od[3] = { c->red, c->green, c->blue }, P[3], N[3];
         ws_shade_vrc_point(b->ws, prim, &prim->pts[i], P);
@@ -711,64 +726,120 @@ static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
                 f[6 + k] = (float)P[k];
             }
         } else if (hasn && lit) {
-            ws_shade_point(&ctx, P, N, od, f);
+            ws_shade_point(ctx, P, N, od, f);
         } else {
-            Grgb g = ws_shade_apply(&flat, c);
+            Grgb g = ws_shade_apply(flat, c);
             f[0] = (float)g.red, f[1] = (float)g.green, f[2] = (float)g.blue;
         }
-        f[nat] = (float)(1.0 / fabs(r->h[i][3]));
+        f[nat] = (float)(1.0 / fabs(b->r->h[i][3]));
     }
+}
+
+/* The loop of n points (r->h, their attributes at r->fl + r->n_fl, per floats each) cut by
+ * every constraint of the clip region with its attributes, then added to rc (points,
+ * count) with the attributes of the clipped loop at r->fl + r->n_fl; *cnt its points.
+ * 0, 1 (nothing left, or not convex: drawn flat instead) or 300. */
+static int smooth_clip(build *b, rec *rc, int n, int per, int *cnt)
+{
+    png_render *r = b->r;
+    const int nat = per - 1, m = 4 + nat;
+    const int ks = b->v->clip.n + (b->v->clip.wmin > 0.0 ? 1 : 0);
+    const int cap = n + ks + 1; /* a convex loop gains at most one point per plane */
+    double *va = gks_alloc_array((size_t)cap * 2, (size_t)m * sizeof *va);
+    if (!va)
+        return 300;
+    double *in = va, *out = va + (size_t)cap * (size_t)m;
+    for (int i = 0; i < n; i++) {
+        memcpy(in + (size_t)i * (size_t)m, r->h[i], 4 * sizeof *in);
+        for (int j = 0; j < nat; j++)
+            in[(size_t)i * (size_t)m + 4 + (size_t)j] = r->fl[r->n_fl + (size_t)i * (size_t)per + (size_t)j];
+    }
+    int c = n;
+    for (int k = 0; k < ks && c >= 3; k++) {
+        c = smooth_clip_stage(&b->v->clip, k, in, c, m, out, cap);
+        double *t = in;
+        in = out, out = t;
+    }
+    int ok = c >= 3 && !GROW(r, pts, cap_pt, r->n_pt + (size_t)c) &&
+             !GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)c);
+    gks_raster_pt *q = r->pts + r->n_pt;
+    for (int i = 0; ok && i < c; i++)
+        ok = in[(size_t)i * (size_t)m + 3] > 0 && to_dc(b->v, in + (size_t)i * (size_t)m, &q[i]);
+    ok = ok && dc_convex_loose(q, c);
+    for (int i = 0; ok && i < c; i++) {
+        float *g = r->fl + r->n_fl + (size_t)i * (size_t)per;
+        for (int j = 0; j < nat; j++)
+            g[j] = (float)in[(size_t)i * (size_t)m + 4 + (size_t)j];
+        g[nat] = (float)(1.0 / in[(size_t)i * (size_t)m + 3]);
+    }
+    gks_free(va);
+    if (!ok || count_push(r, c))
+        return ok ? 300 : 1;
+    r->n_pt += (size_t)c;
+    rc->n_fill++;
+    *cnt = c;
+    return 0;
+}
+
+/* a->ny: the index of the shading context of a lit NORMAL area (ctx appended to r->ctx
+ * unless it equals the last one), -1 otherwise (the vertex colours interpolated). 0 or 300. */
+static int smooth_ctx(png_render *r, rattr *a, int phong, int lit, const ws_shade_ctx *ctx)
+{
+    a->ny = -1;
+    if (!phong || !lit)
+        return 0;
+    if (!r->n_ctx || !ctx_equal(&r->ctx[r->n_ctx - 1], ctx)) {
+        if (GROW(r, ctx, cap_ctx, r->n_ctx + 1))
+            return 300;
+        r->ctx[r->n_ctx++] = *ctx;
+    }
+    a->ny = (int)(r->n_ctx - 1);
+    return 0;
+}
+
+/* An area with vertex data and interior shading method COLOUR or NORMAL (on either side),
+ * solid, of one convex loop: its per-vertex attributes into the float list and a->style =
+ * STYLE_SMOOTH; a loop crossing the clip region is clipped here with its attributes.
+ * COLOUR (or no vertex normals): the colours shaded at the vertices (with their normals,
+ * else the facet's), interpolated; NORMAL with normals: Od, N and P interpolated and shaded
+ * per sample. 0: set up (add_loops adds the points), 2: set up with the clipped loop added
+ * to rc, 1: drawn flat instead, 300. */
+static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
+{
+    png_render *r = b->r;
+    const int meth = prim->shading[0] > prim->shading[1] ? prim->shading[0] : prim->shading[1];
+    const int n = prim->n_points;
+    if (smooth_refused(b, prim, a, meth))
+        return 1;
+    if (GROW(r, h, cap_h, (size_t)n) || GROW(r, pts, cap_pt, r->n_pt + (size_t)n))
+        return 300;
+    for (int i = 0; i < n; i++)
+        to_h(b->v, &prim->pts[i], r->h[i]);
+    const int whole = all_inside(&b->v->clip, r->h, (size_t)n);
+    /* scratch: add_loops writes the same points */
+    if (whole && smooth_whole_dc(b, n, r->pts + r->n_pt))
+        return 1;
+    const int phong = meth == GSHAD_NORM && prim->vnormals;
+    const int per = (phong ? 9 : 3) + 1;
+    ws_shade_ctx ctx;
+    const int lit = !ws_shade_ctx_init(b->ws, prim, &ctx);
+    ws_shade flat;
+    ws_shade_area(b->ws, prim, &flat);
+    if (GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)n))
+        return 300;
+    smooth_vertex_attrs(b, prim, phong, lit, &ctx, &flat, r->fl + r->n_fl, per);
     int cnt = n;
     if (!whole) { /* clipped: the loop and its attributes cut by every constraint */
-        const int m = 4 + nat, ks = b->v->clip.n + (b->v->clip.wmin > 0.0 ? 1 : 0);
-        const int cap = n + ks + 1; /* a convex loop gains at most one point per plane */
-        double *va = gks_alloc_array((size_t)cap * 2, (size_t)m * sizeof *va);
-        if (!va)
-            return 300;
-        double *in = va, *out = va + (size_t)cap * (size_t)m;
-        for (int i = 0; i < n; i++) {
-            memcpy(in + (size_t)i * (size_t)m, r->h[i], 4 * sizeof *in);
-            for (int j = 0; j < nat; j++)
-                in[(size_t)i * (size_t)m + 4 + (size_t)j] = r->fl[r->n_fl + (size_t)i * (size_t)per + (size_t)j];
-        }
-        for (int k = 0; k < ks && cnt >= 3; k++) {
-            cnt = smooth_clip_stage(&b->v->clip, k, in, cnt, m, out, cap);
-            double *t = in;
-            in = out, out = t;
-        }
-        int ok = cnt >= 3 && !GROW(r, pts, cap_pt, r->n_pt + (size_t)cnt) &&
-                 !GROW(r, fl, cap_fl, r->n_fl + (size_t)per * (size_t)cnt);
-        q = r->pts + r->n_pt;
-        for (int i = 0; ok && i < cnt; i++)
-            ok = in[(size_t)i * (size_t)m + 3] > 0 && to_dc(b->v, in + (size_t)i * (size_t)m, &q[i]);
-        ok = ok && dc_convex_loose(q, cnt);
-        for (int i = 0; ok && i < cnt; i++) {
-            float *g = r->fl + r->n_fl + (size_t)i * (size_t)per;
-            for (int j = 0; j < nat; j++)
-                g[j] = (float)in[(size_t)i * (size_t)m + 4 + (size_t)j];
-            g[nat] = (float)(1.0 / in[(size_t)i * (size_t)m + 3]);
-        }
-        gks_free(va);
-        if (!ok || count_push(r, cnt))
-            return ok ? 300 : 1;
-        r->n_pt += (size_t)cnt;
-        rc->n_fill++;
+        int e = smooth_clip(b, rc, n, per, &cnt);
+        if (e)
+            return e;
     }
     a->style = STYLE_SMOOTH;
     a->fl = r->n_fl;
     a->nx = per;
-    a->ny = -1;
     r->n_fl += (size_t)per * (size_t)cnt;
-    if (phong && lit) {
-        if (!r->n_ctx || !ctx_equal(&r->ctx[r->n_ctx - 1], &ctx)) {
-            if (GROW(r, ctx, cap_ctx, r->n_ctx + 1))
-                return 300;
-            r->ctx[r->n_ctx++] = ctx;
-        }
-        a->ny = (int)(r->n_ctx - 1);
-    } else if (phong) { /* no usable eye: the vertex colours interpolated */
-        a->ny = -1;
-    }
+    if (smooth_ctx(r, a, phong, lit, &ctx))
+        return 300;
     return whole ? 0 : 2;
 }
 
@@ -1023,6 +1094,111 @@ static int draw_pieces(gks_raster_fb *fb, const gks_raster_pt *pts, const int *c
     return e;
 }
 
+/* A marker record's n runs of markers. */
+static int draw_markers(gks_raster_fb *fb, const gks_raster_pt *pts, const int *cnt, int n,
+                        const rattr *a, const gks_raster_line *la)
+{
+    size_t off = 0;
+    int e = 0;
+    for (int k = 0; k < n; k++) {
+        e = nomem(e, gks_raster_markers(fb, (size_t)cnt[k], pts + off, a->marker_type,
+                                        a->marker_size, la));
+        off += (size_t)cnt[k];
+    }
+    return e;
+}
+
+/* A smooth area's one loop of n points (STYLE_SMOOTH: per-vertex attributes at r->fl +
+ * a->fl, a->nx floats each, the last 1/w; a->ny the shading context of a per-sample shaded
+ * one, or -1). 0 or 300. */
+static int draw_smooth(png_render *r, gks_raster_fb *fb, const rattr *a,
+                       const gks_raster_pt *pts, int n, gks_raster_zmode zm)
+{
+    const int per = a->nx, nat = per - 1;
+    double iw[64], *invw = n <= 64 ? iw : gks_alloc_array((size_t)n, sizeof *invw);
+    float *at = gks_alloc_array((size_t)n * (size_t)nat, sizeof *at);
+    if (!invw || !at) {
+        if (invw != iw)
+            gks_free(invw);
+        gks_free(at);
+        return 300;
+    }
+    const float *src = r->fl + a->fl;
+    for (int i = 0; i < n; i++) {
+        memcpy(at + (size_t)i * (size_t)nat, src + (size_t)i * (size_t)per,
+               (size_t)nat * sizeof *at);
+        invw[i] = src[(size_t)i * (size_t)per + (size_t)nat];
+    }
+    gks_raster_vattr va = { .n = nat, .v = at, .invw = invw,
+                            .shade = a->ny >= 0 ? phong_sample : NULL,
+                            .user = a->ny >= 0 ? &r->ctx[a->ny] : NULL };
+    gks_raster_fill f = { .style = GKS_RASTER_SOLID, .zmode = zm };
+    int e = nomem(0, gks_raster_fill_smooth(fb, n, pts, &va, &f));
+    if (invw != iw)
+        gks_free(invw);
+    gks_free(at);
+    return e;
+}
+
+/* An area record's interior in its style (HOLLOW and SMOOTH as SOLID; everything SOLID in
+ * DRAW_HL_AREAS). */
+static int draw_fill(png_render *r, gks_raster_fb *fb, const rec *rc, const rattr *a,
+                     const gks_raster_pt *pts, const int *cnt, int how, gks_raster_zmode zm)
+{
+    gks_raster_fill f = { .style = a->style == STYLE_HOLLOW || a->style == STYLE_SMOOTH
+                                       ? GKS_RASTER_SOLID
+                                       : (gks_raster_style)a->style,
+                          .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] },
+                          .hatch = a->hatch, .zmode = zm };
+    if (how == DRAW_HL_AREAS)
+        f.style = GKS_RASTER_SOLID;
+    if (f.style == GKS_RASTER_PATTERN) {
+        f.pat_nx = a->nx;
+        f.pat_ny = a->ny;
+        f.pat_rgb = r->fl + a->fl;
+        memcpy(f.pat_ref, a->geo, 2 * sizeof(double));
+        memcpy(f.pat_u, a->geo + 2, 2 * sizeof(double));
+        memcpy(f.pat_v, a->geo + 4, 2 * sizeof(double));
+    }
+    return nomem(0, gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f));
+}
+
+/* An area record's lines after its interior: in DRAW_HL_LINES a record retained before the
+ * mode became hidden line has its clipped loops drawn as outlines; else its edges (edge
+ * attributes when the edge flag is on, the boundary of HOLLOW or hidden-line outlines in
+ * the line attributes la). The edge pieces follow the n_fill_pts points of the loops. */
+static int draw_area_lines(gks_raster_fb *fb, const rec *rc, const rattr *a,
+                           const gks_raster_pt *pts, const int *cnt, size_t n_fill_pts,
+                           int outline, gks_raster_zmode zm, gks_raster_line *la)
+{
+    int e = 0;
+    if (!rc->outlined && outline) { /* retained before the mode became hidden line: */
+        const gks_raster_pt *q = pts;    /* the clipped loops as outlines */
+        la->zbias = rc->zbias;
+        for (int k = 0; k < rc->n_fill; q += cnt[k], k++) {
+            gks_raster_stroke ls = { 0 };
+            gks_raster_pt close[2] = { q[cnt[k] - 1], q[0] };
+            e = nomem(e, gks_raster_polyline_cont(fb, (size_t)cnt[k], q, la, &ls));
+            e = nomem(e, gks_raster_polyline_cont(fb, 2, close, la, &ls));
+        }
+        return e;
+    }
+    if (rc->n_edge == 0)
+        return 0;
+    la->zbias = zm == GKS_RASTER_Z_NONE ? 0.0f : rc->zbias;
+    if (a->edge) {
+        la->rgb[0] = a->edge_rgb[0];
+        la->rgb[1] = a->edge_rgb[1];
+        la->rgb[2] = a->edge_rgb[2];
+        la->type = a->edgetype;
+        la->width = a->edgewidth;
+    } else if (a->style != STYLE_HOLLOW && !outline) {
+        return 0; /* outlines were built for another mode */
+    }
+    gks_raster_stroke es = { 0 };
+    return draw_pieces(fb, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, la, &es);
+}
+
 /* Draws a record. how: DRAW_PLAIN (no depth), DRAW_ZTEST (depth test; edges of areas
  * with the slope bias), DRAW_HL_AREAS (areas into the depth buffer only, nothing else),
  * DRAW_HL_LINES (everything but area interiors, depth-tested; areas as outlines). */
@@ -1039,26 +1215,13 @@ static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
                            .zbias = how == DRAW_HL_LINES ? rc->zbias : 0.0f };
     if (rc->kind == REC_MARK) /* the back end draws it */
         return 0;
-    if (rc->kind == REC_LINE) {
-        if (how != DRAW_HL_AREAS)
-            return draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
+    if (how == DRAW_HL_AREAS && rc->kind != REC_AREA) /* areas only */
         return 0;
-    }
-    if (rc->kind == REC_MARKER) {
-        if (how == DRAW_HL_AREAS)
-            return 0;
-        size_t off = 0;
-        int e = 0;
-        for (int k = 0; k < rc->n_fill; k++) {
-            e = nomem(e, gks_raster_markers(fb, (size_t)cnt[k], pts + off, a->marker_type,
-                                            a->marker_size, &la));
-            off += (size_t)cnt[k];
-        }
-        return e;
-    }
+    if (rc->kind == REC_LINE)
+        return draw_pieces(fb, pts, cnt, rc->n_fill, &la, st);
+    if (rc->kind == REC_MARKER)
+        return draw_markers(fb, pts, cnt, rc->n_fill, a, &la);
     if (rc->kind == REC_CELL) {
-        if (how == DRAW_HL_AREAS)
-            return 0;
         gks_raster_fill f = { .zmode = zm };
         return nomem(0, gks_raster_cell_array_clipped(fb, &pts[0], &pts[1], &pts[2], a->nx,
                                                       a->ny, r->fl + a->fl, &f, rc->n_fill,
@@ -1070,75 +1233,13 @@ static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
         n_fill_pts += (size_t)cnt[k];
     int outline = how == DRAW_HL_LINES, e = 0;
     if (rc->n_fill == 1 && !outline && a->style == STYLE_SMOOTH && how != DRAW_HL_AREAS &&
-        cnt[0] >= 3) {
-        const int per = a->nx, nat = per - 1;
-        double iw[64], *invw = cnt[0] <= 64 ? iw : gks_alloc_array((size_t)cnt[0], sizeof *invw);
-        float *at = gks_alloc_array((size_t)cnt[0] * (size_t)nat, sizeof *at);
-        if (!invw || !at) {
-            if (invw != iw)
-                gks_free(invw);
-            gks_free(at);
-            return 300;
-        }
-        const float *src = r->fl + a->fl;
-        for (int i = 0; i < cnt[0]; i++) {
-            memcpy(at + (size_t)i * (size_t)nat, src + (size_t)i * (size_t)per,
-                   (size_t)nat * sizeof *at);
-            invw[i] = src[(size_t)i * (size_t)per + (size_t)nat];
-        }
-        gks_raster_vattr va = { .n = nat, .v = at, .invw = invw,
-                                .shade = a->ny >= 0 ? phong_sample : NULL,
-                                .user = a->ny >= 0 ? &r->ctx[a->ny] : NULL };
-        gks_raster_fill f = { .style = GKS_RASTER_SOLID, .zmode = zm };
-        e = nomem(e, gks_raster_fill_smooth(fb, cnt[0], pts, &va, &f));
-        if (invw != iw)
-            gks_free(invw);
-        gks_free(at);
-    } else if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS)) {
-        gks_raster_fill f = { .style = a->style == STYLE_HOLLOW || a->style == STYLE_SMOOTH
-                                           ? GKS_RASTER_SOLID
-                                           : (gks_raster_style)a->style,
-                              .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] },
-                              .hatch = a->hatch, .zmode = zm };
-        if (how == DRAW_HL_AREAS)
-            f.style = GKS_RASTER_SOLID;
-        if (f.style == GKS_RASTER_PATTERN) {
-            f.pat_nx = a->nx;
-            f.pat_ny = a->ny;
-            f.pat_rgb = r->fl + a->fl;
-            memcpy(f.pat_ref, a->geo, 2 * sizeof(double));
-            memcpy(f.pat_u, a->geo + 2, 2 * sizeof(double));
-            memcpy(f.pat_v, a->geo + 4, 2 * sizeof(double));
-        }
-        e = nomem(e, gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f));
-    }
+        cnt[0] >= 3)
+        e = draw_smooth(r, fb, a, pts, cnt[0], zm);
+    else if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS))
+        e = draw_fill(r, fb, rc, a, pts, cnt, how, zm);
     if (how == DRAW_HL_AREAS)
         return e;
-    if (!rc->outlined && outline) { /* retained before the mode became hidden line: */
-        const gks_raster_pt *q = pts;    /* the clipped loops as outlines */
-        la.zbias = rc->zbias;
-        for (int k = 0; k < rc->n_fill; q += cnt[k], k++) {
-            gks_raster_stroke ls = { 0 };
-            gks_raster_pt close[2] = { q[cnt[k] - 1], q[0] };
-            e = nomem(e, gks_raster_polyline_cont(fb, (size_t)cnt[k], q, &la, &ls));
-            e = nomem(e, gks_raster_polyline_cont(fb, 2, close, &la, &ls));
-        }
-        return e;
-    }
-    if (rc->n_edge == 0)
-        return e;
-    la.zbias = zm == GKS_RASTER_Z_NONE ? 0.0f : rc->zbias;
-    if (a->edge) {
-        la.rgb[0] = a->edge_rgb[0];
-        la.rgb[1] = a->edge_rgb[1];
-        la.rgb[2] = a->edge_rgb[2];
-        la.type = a->edgetype;
-        la.width = a->edgewidth;
-    } else if (a->style != STYLE_HOLLOW && !outline) {
-        return e; /* outlines were built for another mode */
-    }
-    gks_raster_stroke es = { 0 };
-    return first_err(e, draw_pieces(fb, pts + n_fill_pts, cnt + rc->n_fill, rc->n_edge, &la, &es));
+    return first_err(e, draw_area_lines(fb, rc, a, pts, cnt, n_fill_pts, outline, zm, &la));
 }
 
 typedef struct key_idx { double key; size_t idx; } key_idx;
