@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * test_png_render.c -- the PNG workstation's rendering (ws_png.c, ws_png_render.c) at the
+ * test_png_render.c -- the PNG workstation's rendering (ws_png.c, ws_classic.c) at the
  * driver level: gks_prim values handed to gks_ws_png_driver on a workstation state list
  * built here (identity view, workstation window = NPC unit square, one DC unit = one
  * pixel), the written PNG read back.
@@ -26,7 +26,7 @@
 #include <cmocka.h>
 #include "ws_driver.h"
 #include "gks_ws.h" /* gks_ws_core_host: the file claims of a workstation */
-#include "ws_png_render.h"
+#include "ws_classic.h"
 #include "raster.h"
 #include "png_util.h"
 #include "gks_alloc.h"

@@ -7,10 +7,10 @@
  * viewport. Behaviour: docs/WORKSTATIONS.md.
  *
  * The frame goes through the render layer's view pipeline and renderers (ws_render.h,
- * ws_png_render.h) at a resolution of GESC_VEC_RESOLUTION dots per inch (default 300),
+ * ws_classic.h) at a resolution of GESC_VEC_RESOLUTION dots per inch (default 300),
  * so that every transformation, clip and HLHSR decision is the PNG workstation's:
  *  - HLHSR none and painter: every primitive retained and written as vectors in the
- *    mode's order (ws_png_render_walk): lines with their types and widths, markers, text
+ *    mode's order (ws_classic_walk): lines with their types and widths, markers, text
  *    as its stroke-font polylines, fill areas (solid, hatch, pattern), cell arrays as
  *    images sampled nearest-neighbour;
  *  - hidden line: the visible runs of the lines and outlines as vector lines (visibility
@@ -154,7 +154,7 @@ typedef struct vec_ws {
     vec_line_style line;   /* GESC_VEC_LINE_JOIN, _CAP, _MITER_LIMIT, _LINE_SCALE */
     int page_set;          /* GESC_VEC_PAGE given: page[] = llx, lly, urx, ury, w, h (pt) */
     double page[6];
-    png_render *vec;       /* retained primitives written as vectors */
+    ws_classic *vec;       /* retained primitives written as vectors */
     ws_render *r;          /* z-buffer primitives drawn at once into fb (r->classic),
                               areas recorded for ray tracing (r->rt) */
     gks_raster_fb *fb;     /* raster picture of z-buffer / ray tracing */
@@ -167,7 +167,7 @@ typedef struct vec_ws {
     vec_face faces[VEC_MAX_FACES];
     int n_faces;
     vec_real_font real;
-    vec_text *texts;       /* the frame's texts, ws_png_render_keep_mark ids */
+    vec_text *texts;       /* the frame's texts, ws_classic_keep_mark ids */
     size_t n_texts, cap_texts;
     cairo_glyph_t *glyphs;
     size_t n_glyphs, cap_glyphs;
@@ -194,8 +194,8 @@ static void apply_dpi(vec_ws *v)
 {
     v->dpi = v->next_dpi;
     double ppm = px_per_m(v);
-    ws_png_render_set_scale(v->vec, ppm, VEC_UNIT_M * ppm);
-    ws_png_render_set_scale(v->r->classic, ppm, VEC_UNIT_M * ppm);
+    ws_classic_set_scale(v->vec, ppm, VEC_UNIT_M * ppm);
+    ws_classic_set_scale(v->r->classic, ppm, VEC_UNIT_M * ppm);
 }
 
 static int vec_open_fmt(gks_ws *ws, vec_format fmt)
@@ -205,11 +205,11 @@ static int vec_open_fmt(gks_ws *ws, vec_format fmt)
         return 300;
     v->fmt = fmt;
     v->base = gks_ws_file_default_base(ws, vec_ext[fmt]);
-    v->vec = ws_png_render_new();
+    v->vec = ws_classic_new();
     v->r = ws_render_new();
     if (!v->base || !v->vec || !v->r) {
         gks_free(v->base);
-        ws_png_render_free(v->vec);
+        ws_classic_free(v->vec);
         ws_render_free(v->r);
         gks_free(v);
         return 300;
@@ -840,7 +840,7 @@ static int raster_image(gks_ws *ws, vec_ws *v, cairo_surface_t **out)
         ws_rt_reset(v->r->rt); /* traced into fb once: later updates keep the picture */
     }
     gks_raster_fb *pic;
-    if (ws_png_render_compose_base(v->r->classic, ws, v->fb, &pic))
+    if (ws_classic_compose_base(v->r->classic, ws, v->fb, &pic))
         return 300;
     cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic->width,
                                                       pic->height);
@@ -973,10 +973,10 @@ static int draw_frame(vec_ws *v, cairo_t *cr)
     cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
     cairo_set_font_options(cr, fo);
     cairo_font_options_destroy(fo);
-    int e = ws_png_render_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
+    int e = ws_classic_walk(v->vec, s->mode, s->rw, s->rh, vec_item, &d);
     vec_flush(&d);
     if (!e)
-        e = ws_png_render_walk(v->r->classic, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
+        e = ws_classic_walk(v->r->classic, s->mode, s->rw, s->rh, vec_item, &d); /* overlays */
     vec_flush(&d);
     gks_free(d.tmp);
     gks_free(d.utf8);
@@ -1116,7 +1116,7 @@ static int vec_clear(gks_ws *ws)
     v->dirty = 0;
     v->raster_used = 0;
     ws_render_reset(v->r);
-    ws_png_render_reset(v->vec);
+    ws_classic_reset(v->vec);
     v->n_texts = v->n_glyphs = v->n_clip = 0;
     if (v->next_dpi != v->dpi)
         apply_dpi(v);
@@ -1183,7 +1183,7 @@ static void vec_close(gks_ws *ws)
         cairo_surface_destroy(v->snap.img);
     gks_raster_fb_free(v->fb);
     ws_render_free(v->r);
-    ws_png_render_free(v->vec);
+    ws_classic_free(v->vec);
     for (int i = 0; i < v->n_faces; i++)
         cairo_font_face_destroy(v->faces[i].face);
     if (v->real.face)
@@ -1212,7 +1212,7 @@ static int vec_primitive(gks_ws *ws, const gks_prim *prim)
         e = ws_render_prim(v->r, ws, fb, prim);
         v->raster_used |= !e;
     } else {
-        e = ws_png_render_keep(v->vec, ws, prim);
+        e = ws_classic_keep(v->vec, ws, prim);
     }
     if (!e)
         v->dirty = 1;
@@ -1285,7 +1285,7 @@ static int vec_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         if (e)
             return e;
         if (!v->dirty && !v->frame_written && !v->raster_used &&
-            ws_png_render_retained(v->vec) == 0 && ws_png_render_retained(v->r->classic) == 0) {
+            ws_classic_retained(v->vec) == 0 && ws_classic_retained(v->r->classic) == 0) {
             apply_dpi(v); /* nothing drawn yet: this frame already */
             gks_raster_fb_free(v->fb);
             v->fb = NULL;
@@ -1407,8 +1407,8 @@ static int text_clip(vec_ws *v, const gks_text_prim *t, const text_chain *c,
         gks_xform_mat34_point(c->m, wc, r[k]);
         r[k][3] = 1;
         gks_xform_apply((const double (*)[4])c->npc, r[k], h);
-        all_in &= ws_png_render_clip_inside(&box, r[k]) &&
-                  ws_png_render_clip_inside(view, h);
+        all_in &= ws_classic_clip_inside(&box, r[k]) &&
+                  ws_classic_clip_inside(view, h);
     }
     *n = 0;
     if (all_in)
@@ -1540,7 +1540,7 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         return GKS_WS_TEXT_STROKE;
     text_chain c = { .m = t->m };
     const gks_xform_clip *view;
-    if (ws_png_render_view(v->vec, ws, t->view_ind, c.npc, c.dc, &view) ||
+    if (ws_classic_view(v->vec, ws, t->view_ind, c.npc, c.dc, &view) ||
         text_plane_affine(&c, t->frame))
         return GKS_WS_TEXT_STROKE;
     const gks_text_attrs *a = t->attrs;
@@ -1566,7 +1566,7 @@ static int vec_text_prim(gks_ws *ws, const gks_text_prim *t)
         r = 300;
     double depth = !r && mode == GHLHSR_PAINTER ? text_depth(&c, t) : 0;
     if (!r)
-        r = ws_png_render_keep_mark(v->vec, v->n_texts, depth, t->hlhsr_id != 0);
+        r = ws_classic_keep_mark(v->vec, v->n_texts, depth, t->hlhsr_id != 0);
     if (r) {
         v->n_glyphs = g0;
         v->n_clip = c0;

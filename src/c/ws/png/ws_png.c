@@ -14,7 +14,7 @@
  * writes one (background) picture. INQUIRE PIXEL (ARRAY) reads the picture the update
  * would write, ray-traced areas traced at the inquiry (seen_picture).
  *
- * Rendering and the HLHSR modes: ws_png_render.h. Anti-aliasing: ESCAPE
+ * Rendering and the HLHSR modes: ws_classic.h. Anti-aliasing: ESCAPE
  * GESC_PNG_SUPERSAMPLE (ints[1] = s in 1..4) renders the following frames with s x s
  * samples per pixel (box-filtered to the image when written); it applies at once if the
  * current frame is still empty, else from the next CLEAR WORKSTATION. Default 1 (none).
@@ -229,7 +229,7 @@ static int png_update(gks_ws *ws)
         return fault;
     }
     gks_raster_fb *pic;
-    if (ws_png_render_compose(p->r->classic, ws, fb, &pic))
+    if (ws_classic_compose(p->r->classic, ws, fb, &pic))
         return 300;
     char *path;
     /* a later frame's name, or one an ESCAPE set, may be another workstation's file */
@@ -277,7 +277,7 @@ static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescap
         int e = gks_ws_escape_int(in, 1, 4, &p->ss);
         if (e)
             return e;
-        if (!p->dirty && !p->frame_written && ws_png_render_retained(p->r->classic) == 0 &&
+        if (!p->dirty && !p->frame_written && ws_classic_retained(p->r->classic) == 0 &&
             ws_rt_count(p->r->rt) == 0) { /* nothing drawn yet: this frame already */
             gks_raster_fb_free(p->fb);
             p->fb = NULL;
@@ -348,7 +348,7 @@ static int seen_picture(gks_ws *ws, const gks_raster_fb **out)
         if (ws_rt_render(p->r->rt, ws, (const double (*)[4])wsm, p->seen))
             return 300;
     }
-    if (ws_png_render_compose(p->r->classic, ws, p->seen, &pic))
+    if (ws_classic_compose(p->r->classic, ws, p->seen, &pic))
         return 300;
     if (pic != p->seen && fb_copy(&p->seen, pic))
         return 300;

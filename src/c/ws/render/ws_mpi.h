@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_mpi.h -- how the PNG workstation shares its work among the ranks of an MPI run
- * (docs/MPI.md). Two modes, chosen per workstation (ESCAPE GESC_RT_MPI_FRAMES, default from
- * GKS3D_MPI_FRAMES):
+ * ws_mpi.h -- how the render layer shares a file workstation's ray tracing (the PNG
+ * workstation's frames and files) among the ranks of an MPI run (docs/MPI.md). Two modes,
+ * chosen per workstation (ESCAPE GESC_RT_MPI_FRAMES, default from GKS3D_MPI_FRAMES):
  *   tiles  (0): every rank traces tiles of every ray-traced frame; rank 0 gathers them and
  *               alone writes the files;
  *   frames (1): frame k (1-based) is traced and written whole by rank (k - 1) mod N; the

@@ -20,7 +20,7 @@ ws_render *ws_render_new(void)
     if (!r)
         return NULL;
     r->rt = ws_rt_new();
-    r->classic = ws_png_render_new();
+    r->classic = ws_classic_new();
     if (!r->classic || !r->rt) {
         ws_render_free(r);
         return NULL;
@@ -32,7 +32,7 @@ void ws_render_free(ws_render *r)
 {
     if (!r)
         return;
-    ws_png_render_free(r->classic);
+    ws_classic_free(r->classic);
     ws_rt_free(r->rt);
     gks_free(r);
 }
@@ -40,12 +40,12 @@ void ws_render_free(ws_render *r)
 void ws_render_reset(ws_render *r)
 {
     ws_rt_reset(r->rt);
-    ws_png_render_reset(r->classic);
+    ws_classic_reset(r->classic);
 }
 
 int ws_render_prim(ws_render *r, gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
 {
     if (ws_render_route(ws, prim) == WS_ROUTE_TRACE)
         return ws_rt_record(r->rt, ws, prim);
-    return ws_png_render_prim(r->classic, ws, fb, prim);
+    return ws_classic_prim(r->classic, ws, fb, prim);
 }

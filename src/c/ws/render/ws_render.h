@@ -1,19 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * ws_render.h -- the render layer's one entry for a drawing workstation (internal): the
- * classic renderer (ws_png_render.h) and the ray-tracing recording (ws_raytrace.h) of one
+ * classic renderer (ws_classic.h) and the ray-tracing recording (ws_raytrace.h) of one
  * workstation, and the routing between them by the workstation's HLHSR mode, written here
  * once. The drivers are output sinks: PNG writes the pixels to a file, X11 shows them in a
  * window, the cairo types put vectors (and the raster part as an image) into a document.
  */
 #ifndef WS_RENDER_H
 #define WS_RENDER_H
-#include "ws_png_render.h"
+#include "ws_classic.h"
 #include "ws_raytrace.h"
 
 /* Where a primitive is drawn. */
 typedef enum {
-    WS_ROUTE_CLASSIC, /* the classic renderer of the HLHSR mode (ws_png_render) */
+    WS_ROUTE_CLASSIC, /* the classic renderer of the HLHSR mode (ws_classic) */
     WS_ROUTE_TRACE    /* recorded for the tracer, traced at the update (ws_raytrace) */
 } ws_route;
 
@@ -24,7 +24,7 @@ ws_route ws_render_route(const gks_ws *ws, const gks_prim *prim);
 /* One workstation's renderers; the drivers use the two parts directly for what is theirs
  * (composing, pixel readback, the ray-tracing ESCAPEs, the traced tiles shown at once). */
 typedef struct ws_render {
-    png_render *classic;    /* retained and immediate primitives of the classic modes */
+    ws_classic *classic;    /* retained and immediate primitives of the classic modes */
     ws_rt *rt;              /* areas recorded in HLHSR mode GHLHSR_RAYTRACE */
 } ws_render;
 

@@ -589,7 +589,7 @@ static int x11_update(gks_ws *ws)
             return e;
         ws_rt_reset(x->r->rt); /* traced into fb: not again at the next update */
     }
-    if (ws_png_render_compose(x->r->classic, ws, fb, &pic))
+    if (ws_classic_compose(x->r->classic, ws, fb, &pic))
         return 300;
     x->dirty = 0;
     return x11_show(ws, pic);

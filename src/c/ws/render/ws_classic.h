@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_png_render.h -- the classic renderers of the render layer (internal; the PNG, X11
+ * ws_classic.h -- the classic renderers of the render layer (internal; the PNG, X11
  * and cairo workstations draw with them): the view pipeline of a primitive (NDC3 -> NPC3
  * -> clip -> DC, per view cached for the frame),
  * every primitive with its attributes, and the HLHSR modes none, hidden line, z-buffer
  * and painter on top of the raster module (src/c/raster).
  *
  * Nominal sizes (DC unit = one output pixel): linewidth 1, edgewidth 1, marker size
- * PNG_NOMINAL_MARKER_SIZE; a scale factor multiplies them (<= 0 or NaN counts as 1).
+ * WS_CLASSIC_NOMINAL_MARKER_SIZE; a scale factor multiplies them (<= 0 or NaN counts as 1).
  * Marker type 1 (dot) is always the smallest dot (one pixel). Text strokes (attrs.text)
  * are drawn solid, 1 pixel wide, in the text colour.
  *
@@ -18,11 +18,11 @@
  *                frame's areas are written to the depth buffer only, then all edges,
  *                lines, markers, text and cell arrays are drawn depth-tested. An area's
  *                own edges pass the test with a slope-scaled bias (as glPolygonOffset):
- *                bias = PNG_HL_BIAS + min((|dz/dx|+|dz/dy|)(0.75 + w/2), dz_area,
- *                PNG_HL_BIAS_MAX) in DC depth units (the workstation viewport's depth =
+ *                bias = WS_CLASSIC_HL_BIAS + min((|dz/dx|+|dz/dy|)(0.75 + w/2), dz_area,
+ *                WS_CLASSIC_HL_BIAS_MAX) in DC depth units (the workstation viewport's depth =
  *                1), dz/dx, dz/dy the area's depth gradient per pixel, w the line width in
  *                pixels, dz_area the depth extent of the (clipped) area, beyond which no
- *                bias is ever needed; other lines and markers get PNG_HL_BIAS.
+ *                bias is ever needed; other lines and markers get WS_CLASSIC_HL_BIAS.
  *  2 z-buffer    primitives drawn at once with a depth test (nearer or equal wins);
  *                edges of areas with the slope-scaled bias above so they show on their
  *                own area.
@@ -42,61 +42,61 @@
  * updates of one frame draw each primitive once (the copy costs one more framebuffer
  * while the frame has retained primitives).
  */
-#ifndef WS_PNG_RENDER_H
-#define WS_PNG_RENDER_H
+#ifndef WS_CLASSIC_H
+#define WS_CLASSIC_H
 #include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
 
-#define PNG_NOMINAL_MARKER_SIZE 7.0
-#define PNG_HL_BIAS 1e-4
-#define PNG_HL_BIAS_MAX 0.25
+#define WS_CLASSIC_NOMINAL_MARKER_SIZE 7.0
+#define WS_CLASSIC_HL_BIAS 1e-4
+#define WS_CLASSIC_HL_BIAS_MAX 0.25
 
-typedef struct png_render png_render;
+typedef struct ws_classic ws_classic;
 
 /* New renderer state, NULL if out of memory. */
-png_render *ws_png_render_new(void);
+ws_classic *ws_classic_new(void);
 /* Frees it (NULL allowed). */
-void ws_png_render_free(png_render *r);
+void ws_classic_free(ws_classic *r);
 /* New frame: forgets retained primitives and the cached view pipelines. */
-void ws_png_render_reset(png_render *r);
+void ws_classic_reset(ws_classic *r);
 /* Number of primitives retained for drawing at UPDATE. */
-size_t ws_png_render_retained(const png_render *r);
+size_t ws_classic_retained(const ws_classic *r);
 /* Draws a primitive into fb, or retains it (see above). Returns 0 or 300 (storage).
  * Primitives with non-finite coordinates or degenerate transformations draw nothing. */
-int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim);
+int ws_classic_prim(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim);
 /* The picture of the frame: fb itself when nothing is retained, else a framebuffer owned
  * by r holding fb with the retained primitives drawn over it by the HLHSR mode.
  * Returns 0 or 300 (*out = NULL). */
-int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+int ws_classic_compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb,
                           gks_raster_fb **out);
 /* The same without the overlays (hlhsr_id != 0): a back end that draws them itself. */
-int ws_png_render_compose_base(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+int ws_classic_compose_base(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb,
                                gks_raster_fb **out);
 
 /* Output scale (default 1, 1: the PNG workstation): px_per_dc output pixels per DC unit
  * (the workstation viewport's size in pixels is its DC size times this) and px_per_unit
  * pixels per nominal unit (line and edge width 1, marker size 1; hatch spacing stays in
  * pixels). Invalid values are ignored. */
-void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit);
-/* As ws_png_render_prim, but the primitive is retained whatever the HLHSR mode (for a back
- * end that draws the frame at UPDATE through ws_png_render_walk). */
-int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim);
+void ws_classic_set_scale(ws_classic *r, double px_per_dc, double px_per_unit);
+/* As ws_classic_prim, but the primitive is retained whatever the HLHSR mode (for a back
+ * end that draws the frame at UPDATE through ws_classic_walk). */
+int ws_classic_keep(ws_classic *r, const gks_ws *ws, const gks_prim *prim);
 
 /* A primitive the back end draws itself (a vector driver's TEXT), kept in the frame's
- * order: ws_png_render_walk emits it as a WS_ITEM_MARK item with mark = id in its place
+ * order: ws_classic_walk emits it as a WS_ITEM_MARK item with mark = id in its place
  * (painter: sorted by key, a mean DC depth; overlay: with the overlays; hidden line: with
  * the lines, not depth-tested, so a back end should keep only what needs no test).
  * Returns 0 or 300. */
-int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay);
+int ws_classic_keep_mark(ws_classic *r, size_t id, double key, int overlay);
 /* The view pipeline of view index vi on ws (cached for the frame): npc maps NDC3 to
  * homogeneous NPC3, clip is the region there (view clip limits by the indicators and the
  * workstation window; valid until the next call with other inputs), dc maps NPC3 to output
  * pixels (x right, y up) and DC depth. 0, or -1 if the pipeline is degenerate. */
-int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4],
+int ws_classic_view(ws_classic *r, const gks_ws *ws, int vi, double npc[4][4],
                        double dc[4][4], const gks_xform_clip **clip);
 /* Is homogeneous NPC point h inside clip region c (w >= wmin and every plane)? */
-int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4]);
+int ws_classic_clip_inside(const gks_xform_clip *c, const double h[4]);
 
 /* An item of the frame for vector back ends: points in output pixels (DC x right, y up,
  * z depth), widths and sizes in pixels, unit = pixels per nominal unit.
@@ -109,7 +109,7 @@ int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4]);
  *  CELLS   cell array: parallelogram cell_o, cell_u (end of the first row), cell_v (end of
  *          the first column), nx x ny colours rgb_list row-major from cell_o, drawn inside
  *          the n_loops loops (the parallelogram clipped);
- *  MARK    a record of the back end's own (ws_png_render_keep_mark), id in mark. */
+ *  MARK    a record of the back end's own (ws_classic_keep_mark), id in mark. */
 typedef enum {
     WS_ITEM_AREA, WS_ITEM_LINE, WS_ITEM_MARKERS, WS_ITEM_CELLS, WS_ITEM_MARK
 } ws_item_kind;
@@ -138,6 +138,6 @@ typedef int (*ws_render_emit)(void *ctx, const ws_render_item *it);
  * (visible runs split at sample spacing <= 1/2 pixel, the same bias as the raster);
  * others in order of arrival; overlays (hlhsr_id != 0) last. Returns 0, 300 or the first
  * non-zero result of emit. */
-int ws_png_render_walk(png_render *r, int mode, int width, int height, ws_render_emit emit,
+int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_emit emit,
                        void *ctx);
 #endif

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * ws_png_render.c -- primitives of the PNG workstation through the view pipeline into the
- * raster module, and the classic HLHSR modes (see ws_png_render.h).
+ * ws_classic.c -- the classic renderer of every drawing workstation (PNG, X11, the cairo
+ * types): primitives through the view pipeline into the raster module, and the classic
+ * HLHSR modes (see ws_classic.h).
  *
  * Every primitive becomes one record of the frame list: its DC points after clipping
  * (fill loops, then edge pieces), counts, colour and an attribute entry (consecutive
@@ -10,7 +11,7 @@
  * polylines and marker lists are processed in chunks of CHUNK points so that drawing at
  * once needs O(CHUNK) memory whatever the point count.
  */
-#include "ws_png_render.h"
+#include "ws_classic.h"
 #include "ws_shade.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
@@ -20,7 +21,7 @@
 #include <string.h>
 
 enum { CHUNK = 4096 };
-enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL, REC_MARK }; /* MARK: ws_png_render_keep_mark */
+enum { REC_AREA, REC_LINE, REC_MARKER, REC_CELL, REC_MARK }; /* MARK: ws_classic_keep_mark */
 enum { STYLE_HOLLOW = -1, STYLE_SMOOTH = -2 }; /* SMOOTH: per-vertex attributes (fl, nx floats
                                                   per point, the last 1/w; ny: shading context
                                                   or -1) */
@@ -67,7 +68,7 @@ typedef struct view_cache {
     gks_xform_clip clip;   /* view clip limits (by the indicators) and workstation window */
 } view_cache;
 
-struct png_render {
+struct ws_classic {
     rec *recs;
     size_t n_rec, cap_rec;
     rattr *attrs;
@@ -92,8 +93,8 @@ struct png_render {
     double px_per_dc;      /* output pixels per DC unit (1 for the PNG workstation) */
     double px_per_unit;    /* output pixels per nominal unit (line width 1, marker size 1) */
     int keep;              /* the primitive being built is retained whatever the mode */
-    gks_raster_fb *depth;  /* ws_png_render_walk: depth buffer of hidden-line mode */
-    gks_raster_pt *vis;    /* ws_png_render_walk: visible runs of a piece */
+    gks_raster_fb *depth;  /* ws_classic_walk: depth buffer of hidden-line mode */
+    gks_raster_pt *vis;    /* ws_classic_walk: visible runs of a piece */
     size_t cap_vis;
     view_cache views[GKS_MAX_VIEW_IND + 1];
     ws_shade_ctx *ctx;     /* shading contexts of smooth areas with normal interpolation */
@@ -105,15 +106,15 @@ struct png_render {
 #define GROW(r, arr, cap, need) \
     ((r)->fail = gks_grow(&(r)->arr, &(r)->cap, (need), sizeof *(r)->arr))
 
-png_render *ws_png_render_new(void)
+ws_classic *ws_classic_new(void)
 {
-    png_render *r = gks_calloc_array(1, sizeof(png_render));
+    ws_classic *r = gks_calloc_array(1, sizeof(ws_classic));
     if (r)
         r->px_per_dc = r->px_per_unit = 1.0;
     return r;
 }
 
-void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit)
+void ws_classic_set_scale(ws_classic *r, double px_per_dc, double px_per_unit)
 {
     if (!(px_per_dc > 0.0) || !isfinite(px_per_dc) || !(px_per_unit > 0.0) ||
         !isfinite(px_per_unit))
@@ -125,7 +126,7 @@ void ws_png_render_set_scale(png_render *r, double px_per_dc, double px_per_unit
     r->px_per_unit = px_per_unit;
 }
 
-void ws_png_render_free(png_render *r)
+void ws_classic_free(ws_classic *r)
 {
     if (!r)
         return;
@@ -147,21 +148,21 @@ void ws_png_render_free(png_render *r)
     gks_free(r);
 }
 
-void ws_png_render_reset(png_render *r)
+void ws_classic_reset(ws_classic *r)
 {
     r->n_rec = r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_retained = r->n_ctx = 0;
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
         r->views[v].valid = 0;
 }
 
-size_t ws_png_render_retained(const png_render *r)
+size_t ws_classic_retained(const ws_classic *r)
 {
     return r->n_retained;
 }
 
 /* --- view pipeline ---------------------------------------------------------------------- */
 /* The cached pipeline of view index vi (an index outside the table uses view 0). */
-static const view_cache *view_get(png_render *r, const gks_ws *ws, int vi)
+static const view_cache *view_get(ws_classic *r, const gks_ws *ws, int vi)
 {
     if (vi < 0 || vi > GKS_MAX_VIEW_IND)
         vi = 0;
@@ -216,10 +217,10 @@ static int to_dc(const view_cache *v, const double h[4], gks_raster_pt *q)
 
 static int inside(const gks_xform_clip *c, const double h[4])
 {
-    return ws_png_render_clip_inside(c, h);
+    return ws_classic_clip_inside(c, h);
 }
 
-int ws_png_render_clip_inside(const gks_xform_clip *c, const double h[4])
+int ws_classic_clip_inside(const gks_xform_clip *c, const double h[4])
 {
     if (!(h[3] >= c->wmin))
         return 0;
@@ -252,18 +253,18 @@ static int ndc_to_dc(const view_cache *v, const Gpoint3 *p, double q[3])
 
 /* --- building records ------------------------------------------------------------------- */
 typedef struct build {
-    png_render *r;
+    ws_classic *r;
     const view_cache *v;
     gks_raster_fb *fb;        /* non-NULL: draw each chunk at once, then drop it */
     const gks_ws *ws;
     gks_raster_stroke st;     /* stroke state across chunks drawn at once */
 } build;
 
-static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
+static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
                     gks_raster_stroke *st);
 
 /* Appends an attribute entry unless equal to the last one; sets *idx. */
-static int attr_push(png_render *r, const rattr *a, size_t *idx)
+static int attr_push(ws_classic *r, const rattr *a, size_t *idx)
 {
     if (r->n_attr && memcmp(&r->attrs[r->n_attr - 1], a, sizeof *a) == 0) {
         *idx = r->n_attr - 1;
@@ -276,7 +277,7 @@ static int attr_push(png_render *r, const rattr *a, size_t *idx)
     return 0;
 }
 
-static int count_push(png_render *r, int c)
+static int count_push(ws_classic *r, int c)
 {
     if (GROW(r, cnts, cap_cnt, r->n_cnt + 1))
         return 300;
@@ -294,7 +295,7 @@ static int immediate_mode(const gks_ws *ws)
 
 /* The m chunk points r->h that are inside the clip region, in DC, as one run of marker
  * centres of *rc (none if none is inside). 0 or 300. */
-static int chunk_markers(png_render *r, const view_cache *v, size_t m, rec *rc)
+static int chunk_markers(ws_classic *r, const view_cache *v, size_t m, rec *rc)
 {
     if (GROW(r, pts, cap_pt, r->n_pt + m))
         return 300;
@@ -315,7 +316,7 @@ static int chunk_markers(png_render *r, const view_cache *v, size_t m, rec *rc)
  * appended to *rc; the first one continues the previous chunk's last piece (count
  * negated) when *cont and the chunk starts inside. *cont becomes whether the chunk ends
  * inside. 0 or 300. */
-static int chunk_polyline(png_render *r, const view_cache *v, size_t m, int *cont, rec *rc)
+static int chunk_polyline(ws_classic *r, const view_cache *v, size_t m, int *cont, rec *rc)
 {
     size_t n_out = 0, n_pieces = 0;
     int e = 0;
@@ -356,7 +357,7 @@ static int chunk_polyline(png_render *r, const view_cache *v, size_t m, int *con
  * once and dropped. 0 or the error of draw_rec. */
 static int chunk_draw(build *b, rec *rc, size_t pt0, size_t cnt0)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     rec t = *rc;
     t.pt = pt0;
     t.cnt = cnt0;
@@ -373,7 +374,7 @@ static int chunk_draw(build *b, rec *rc, size_t pt0, size_t cnt0)
  * chunks overlap by one point). With b->fb, each chunk is drawn and dropped. */
 static int add_pieces(build *b, const Gpoint3 *p, size_t n, int closed, rec *rc)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     const view_cache *v = b->v;
     int markers = rc->kind == REC_MARKER;
     size_t total = markers ? n : closed ? n + 1 : n; /* points walked, p[i % n] */
@@ -425,7 +426,7 @@ static int type_or_solid(int t)
     return t >= 1 && t <= 4 ? t : GKS_RASTER_LT_SOLID;
 }
 
-/* Slope-scaled depth bias of the edges of the fill loops (DC): see ws_png_render.h. */
+/* Slope-scaled depth bias of the edges of the fill loops (DC): see ws_classic.h. */
 static float edge_bias(const gks_raster_pt *p, const int *cnt, int n_loops, double w)
 {
     double n[3] = { 0, 0, 0 }, zmin = INFINITY, zmax = -INFINITY;
@@ -443,12 +444,12 @@ static float edge_bias(const gks_raster_pt *p, const int *cnt, int n_loops, doub
     double b = slope * (0.75 + 0.5 * w), range = zmax - zmin;
     if (!(b < range)) /* NaN (edge-on) too: the area's depth never differs by more */
         b = range;
-    if (!(b < PNG_HL_BIAS_MAX))
-        b = PNG_HL_BIAS_MAX;
-    return (float)(PNG_HL_BIAS + b);
+    if (!(b < WS_CLASSIC_HL_BIAS_MAX))
+        b = WS_CLASSIC_HL_BIAS_MAX;
+    return (float)(WS_CLASSIC_HL_BIAS + b);
 }
 
-static void mean_key(const png_render *r, rec *rc, size_t n)
+static void mean_key(const ws_classic *r, rec *rc, size_t n)
 {
     double s = 0;
     for (size_t i = 0; i < n; i++)
@@ -457,7 +458,7 @@ static void mean_key(const png_render *r, rec *rc, size_t n)
 }
 
 /* Pattern of an area into the float list and a->geo; 0 if unusable (solid instead). */
-static int pattern_set(png_render *r, const view_cache *v, const gks_prim_attrs *pa, rattr *a)
+static int pattern_set(ws_classic *r, const view_cache *v, const gks_prim_attrs *pa, rattr *a)
 {
     if (!pa->pattern || pa->pat_nx < 1 || pa->pat_ny < 1 ||
         (size_t)pa->pat_nx > SIZE_MAX / 3 / (size_t)pa->pat_ny)
@@ -496,7 +497,7 @@ static int pattern_set(png_render *r, const view_cache *v, const gks_prim_attrs 
 static int add_loops(build *b, const Gpoint3 *ndc, int n_loops, const int *lc,
                      const gks_xform_clip *clip, rec *rc)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     size_t n = 0;
     for (int k = 0; k < n_loops; k++) {
         if (lc[k] < 0)
@@ -567,7 +568,7 @@ static int add_loops(build *b, const Gpoint3 *ndc, int n_loops, const int *lc,
 static int rec_finish(build *b, rec *rc, size_t pt0, size_t cnt0, size_t attr0, size_t fl0,
                       int retain)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     if (rc->n_fill + rc->n_edge == 0) {
         r->n_pt = pt0;
         r->n_cnt = cnt0;
@@ -741,7 +742,7 @@ static void smooth_vertex_attrs(const build *b, const gks_prim *prim, int phong,
  * 0, 1 (nothing left, or not convex: drawn flat instead) or 300. */
 static int smooth_clip(build *b, rec *rc, int n, int per, int *cnt)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     const int nat = per - 1, m = 4 + nat;
     const int ks = b->v->clip.n + (b->v->clip.wmin > 0.0 ? 1 : 0);
     const int cap = n + ks + 1; /* a convex loop gains at most one point per plane */
@@ -783,7 +784,7 @@ static int smooth_clip(build *b, rec *rc, int n, int per, int *cnt)
 
 /* a->ny: the index of the shading context of a lit NORMAL area (ctx appended to r->ctx
  * unless it equals the last one), -1 otherwise (the vertex colours interpolated). 0 or 300. */
-static int smooth_ctx(png_render *r, rattr *a, int phong, int lit, const ws_shade_ctx *ctx)
+static int smooth_ctx(ws_classic *r, rattr *a, int phong, int lit, const ws_shade_ctx *ctx)
 {
     a->ny = -1;
     if (!phong || !lit)
@@ -806,7 +807,7 @@ static int smooth_ctx(png_render *r, rattr *a, int phong, int lit, const ws_shad
  * to rc, 1: drawn flat instead, 300. */
 static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     const int meth = prim->shading[0] > prim->shading[1] ? prim->shading[0] : prim->shading[1];
     const int n = prim->n_points;
     if (smooth_refused(b, prim, a, meth))
@@ -845,7 +846,7 @@ static int smooth_setup(build *b, const gks_prim *prim, rattr *a, rec *rc)
 
 static int build_area(build *b, const gks_prim *prim, int retain)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     const gks_prim_attrs *pa = &prim->attrs;
     size_t pt0 = r->n_pt, cnt0 = r->n_cnt, attr0 = r->n_attr, fl0 = r->n_fl;
     rec rc = { .kind = REC_AREA, .overlay = pa->hlhsr_id != 0, .pt = pt0, .cnt = cnt0 };
@@ -890,7 +891,7 @@ static int build_area(build *b, const gks_prim *prim, int retain)
     size_t n_fill_pts = r->n_pt - pt0;
     double w = a.edge ? a.edgewidth : r->px_per_unit;
     rc.zbias = rc.n_fill ? edge_bias(r->pts + pt0, r->cnts + cnt0, rc.n_fill, w)
-                         : (float)PNG_HL_BIAS;
+                         : (float)WS_CLASSIC_HL_BIAS;
     /* the boundary: HOLLOW, the edge flag, and the outlines of hidden-line mode */
     if (a.style == STYLE_HOLLOW || a.edge || b->ws->hlhsr_mode == GHLHSR_HIDDEN_LINE) {
         int fill_loops = rc.n_fill;
@@ -918,7 +919,7 @@ static int build_area(build *b, const gks_prim *prim, int retain)
 
 static int build_cell(build *b, const gks_prim *prim, int retain)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     if (prim->cell_nx < 1 || prim->cell_ny < 1 || !prim->cells ||
         (size_t)prim->cell_nx > SIZE_MAX / 3 / (size_t)prim->cell_ny)
         return 0;
@@ -989,12 +990,12 @@ static int build_cell(build *b, const gks_prim *prim, int retain)
 
 static int build_line(build *b, const gks_prim *prim, int retain)
 {
-    png_render *r = b->r;
+    ws_classic *r = b->r;
     const gks_prim_attrs *pa = &prim->attrs;
     size_t pt0 = r->n_pt, cnt0 = r->n_cnt, attr0 = r->n_attr, fl0 = r->n_fl;
     int marker = prim->kind == GKS_PRIM_POLYMARKER;
     rec rc = { .kind = marker ? REC_MARKER : REC_LINE, .overlay = pa->hlhsr_id != 0,
-               .pt = pt0, .cnt = cnt0, .zbias = (float)PNG_HL_BIAS };
+               .pt = pt0, .cnt = cnt0, .zbias = (float)WS_CLASSIC_HL_BIAS };
     rc.rgb[0] = (float)prim->colour.red;
     rc.rgb[1] = (float)prim->colour.green;
     rc.rgb[2] = (float)prim->colour.blue;
@@ -1003,7 +1004,8 @@ static int build_line(build *b, const gks_prim *prim, int retain)
     a.linetype = pa->text ? GKS_RASTER_LT_SOLID : type_or_solid(pa->linetype);
     a.width = (pa->text || marker ? 1.0 : scale_or_one(pa->linewidth)) * r->px_per_unit;
     a.marker_type = pa->marker_type >= 1 && pa->marker_type <= 5 ? pa->marker_type : 3;
-    a.marker_size = PNG_NOMINAL_MARKER_SIZE * scale_or_one(pa->marker_size) * r->px_per_unit;
+    a.marker_size =
+        WS_CLASSIC_NOMINAL_MARKER_SIZE * scale_or_one(pa->marker_size) * r->px_per_unit;
     int e = attr_push(r, &a, &rc.attr);
     if (e)
         return e;
@@ -1021,7 +1023,7 @@ static int build_line(build *b, const gks_prim *prim, int retain)
     return rec_finish(b, &rc, pt0, cnt0, attr0, fl0, 1);
 }
 
-int ws_png_render_prim(png_render *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
+int ws_classic_prim(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)
 {
     if (!r || !ws || (!fb && !r->keep) || !prim || prim->n_points < 0 || prim->n_loops < 0 ||
         (prim->n_points > 0 && !prim->pts))
@@ -1111,7 +1113,7 @@ static int draw_markers(gks_raster_fb *fb, const gks_raster_pt *pts, const int *
 /* A smooth area's one loop of n points (STYLE_SMOOTH: per-vertex attributes at r->fl +
  * a->fl, a->nx floats each, the last 1/w; a->ny the shading context of a per-sample shaded
  * one, or -1). 0 or 300. */
-static int draw_smooth(png_render *r, gks_raster_fb *fb, const rattr *a,
+static int draw_smooth(ws_classic *r, gks_raster_fb *fb, const rattr *a,
                        const gks_raster_pt *pts, int n, gks_raster_zmode zm)
 {
     const int per = a->nx, nat = per - 1;
@@ -1142,7 +1144,7 @@ static int draw_smooth(png_render *r, gks_raster_fb *fb, const rattr *a,
 
 /* An area record's interior in its style (HOLLOW and SMOOTH as SOLID; everything SOLID in
  * DRAW_HL_AREAS). */
-static int draw_fill(png_render *r, gks_raster_fb *fb, const rec *rc, const rattr *a,
+static int draw_fill(ws_classic *r, gks_raster_fb *fb, const rec *rc, const rattr *a,
                      const gks_raster_pt *pts, const int *cnt, int how, gks_raster_zmode zm)
 {
     gks_raster_fill f = { .style = a->style == STYLE_HOLLOW || a->style == STYLE_SMOOTH
@@ -1202,7 +1204,7 @@ static int draw_area_lines(gks_raster_fb *fb, const rec *rc, const rattr *a,
 /* Draws a record. how: DRAW_PLAIN (no depth), DRAW_ZTEST (depth test; edges of areas
  * with the slope bias), DRAW_HL_AREAS (areas into the depth buffer only, nothing else),
  * DRAW_HL_LINES (everything but area interiors, depth-tested; areas as outlines). */
-static int draw_rec(png_render *r, gks_raster_fb *fb, const rec *rc, int how,
+static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int how,
                     gks_raster_stroke *st)
 {
     const rattr *a = &r->attrs[rc->attr];
@@ -1252,22 +1254,22 @@ static int cmp_key(const void *pa, const void *pb)
     return (a->idx > b->idx) - (a->idx < b->idx);
 }
 
-static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
                    int overlays);
 
-int ws_png_render_compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+int ws_classic_compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb,
                           gks_raster_fb **out)
 {
     return compose(r, ws, fb, out, 1);
 }
 
-int ws_png_render_compose_base(png_render *r, const gks_ws *ws, gks_raster_fb *fb,
+int ws_classic_compose_base(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb,
                                gks_raster_fb **out)
 {
     return compose(r, ws, fb, out, 0);
 }
 
-static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
+static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
                    int overlays)
 {
     *out = fb;
@@ -1327,17 +1329,17 @@ static int compose(png_render *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
     return e;
 }
 
-int ws_png_render_keep(png_render *r, const gks_ws *ws, const gks_prim *prim)
+int ws_classic_keep(ws_classic *r, const gks_ws *ws, const gks_prim *prim)
 {
     if (!r)
         return 0;
     r->keep = 1;
-    int e = ws_png_render_prim(r, ws, NULL, prim);
+    int e = ws_classic_prim(r, ws, NULL, prim);
     r->keep = 0;
     return e;
 }
 
-int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay)
+int ws_classic_keep_mark(ws_classic *r, size_t id, double key, int overlay)
 {
     if (GROW(r, recs, cap_rec, r->n_rec + 1))
         return 300;
@@ -1347,7 +1349,7 @@ int ws_png_render_keep_mark(png_render *r, size_t id, double key, int overlay)
     return 0;
 }
 
-int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4],
+int ws_classic_view(ws_classic *r, const gks_ws *ws, int vi, double npc[4][4],
                        double dc[4][4], const gks_xform_clip **clip)
 {
     const view_cache *v = view_get(r, ws, vi);
@@ -1359,9 +1361,9 @@ int ws_png_render_view(png_render *r, const gks_ws *ws, int vi, double npc[4][4]
     return 0;
 }
 
-/* --- the frame's records for vector back ends (ws_png_render_walk) ----------------------- */
+/* --- the frame's records for vector back ends (ws_classic_walk) ----------------------- */
 typedef struct walk {
-    png_render *r;
+    ws_classic *r;
     ws_render_emit emit;
     void *ctx;
     const gks_raster_fb *depth; /* hidden-line mode: visibility of lines, else NULL */
@@ -1394,7 +1396,7 @@ static int emit_run(walk *w, ws_render_item *it, size_t n)
 static int emit_visible(walk *w, ws_render_item *it, const gks_raster_pt *pts, size_t n,
                         int closed, float bias)
 {
-    png_render *r = w->r;
+    ws_classic *r = w->r;
     size_t run = 0; /* points of the open run in r->vis */
     size_t nseg = closed ? n : n - 1;
     for (size_t s = 0; s < nseg; s++) {
@@ -1454,7 +1456,7 @@ static int emit_pieces(walk *w, ws_render_item *it, const gks_raster_pt *pts, co
     return 0;
 }
 
-static void line_item(ws_render_item *it, const png_render *r, const float rgb[3], int type,
+static void line_item(ws_render_item *it, const ws_classic *r, const float rgb[3], int type,
                       double width)
 {
     memset(it, 0, sizeof *it);
@@ -1469,7 +1471,7 @@ static void line_item(ws_render_item *it, const png_render *r, const float rgb[3
  * of hidden-line mode (w->depth set). */
 static int emit_rec(walk *w, const rec *rc, int hl)
 {
-    png_render *r = w->r;
+    ws_classic *r = w->r;
     const rattr *a = &r->attrs[rc->attr];
     const gks_raster_pt *pts = r->pts + rc->pt;
     const int *cnt = r->cnts + rc->cnt;
@@ -1504,7 +1506,7 @@ static int emit_rec(walk *w, const rec *rc, int hl)
                 }
                 size_t j = 0;
                 for (size_t i = 0; i < m; i++)
-                    if (visible(w->depth, p[i].x, p[i].y, p[i].z, (float)PNG_HL_BIAS))
+                    if (visible(w->depth, p[i].x, p[i].y, p[i].z, (float)WS_CLASSIC_HL_BIAS))
                         r->vis[j++] = p[i];
                 p = r->vis;
                 m = j;
@@ -1572,7 +1574,7 @@ static int emit_rec(walk *w, const rec *rc, int hl)
     return e;
 }
 
-int ws_png_render_walk(png_render *r, int mode, int width, int height, ws_render_emit emit,
+int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_emit emit,
                        void *ctx)
 {
     if (r->n_rec == 0)
