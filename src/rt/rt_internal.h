@@ -266,6 +266,13 @@ typedef struct rt_rayx {
 
 #define RT_NO_SKIP UINT32_MAX
 
+/* Nearest-hit choice between the best hit so far (*best, *bi, its error bound *eb; *bi < 0:
+   none) and a hit of primitive i at t (rt_geom.c): hits whose distances are equal within
+   their error bound go to the primitive drawn later (docs/RAYTRACING.md, "Coplanar
+   surfaces"). A hit beyond *best + 2 * *eb never wins (the caller's search bound). */
+void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t, double *best,
+                       long *bi, double *eb);
+
 /* a ray in the grid frame (traversal only; primitive tests use the rt_rayx) */
 typedef struct rt_gray {
     double o[3], d[3], invd[3];

@@ -9,8 +9,9 @@
  * lies beyond the current cell; traversal leaves at the first cell boundary beyond it.
  * Primitives are referenced by every cell their surface
  * overlaps with the cell box enlarged by a relative epsilon (rt_build.c), so a hit computed
- * near a cell face is found from either cell. Ties in t go to the smaller primitive id, so
- * grid and brute force return identical hits. The DDA runs on the ray taken into the grid
+ * near a cell face is found from either cell. Hits equal in t within their error bound go
+ * to the larger primitive id (drawn later; rt_nearest_update), so grid and brute force
+ * return identical hits. The DDA runs on the ray taken into the grid
  * frame (rotated or not, rt_build.c); hits are always computed on the original ray. In a cell
  * with a second-level grid the cell's own list (large primitives) is tested first, then the
  * second-level grid is walked over the part of the ray inside its box. In an empty top cell
@@ -237,18 +238,16 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
 
 #define RT_INLINE static inline __attribute__((always_inline))
 
-/* nearest-hit update for primitive i (mailboxed by the caller); equal distances go to the
-   primitive added first, so the picture does not depend on the order of the cell lists */
+/* nearest-hit update for primitive i (mailboxed by the caller): the tests up to where a hit
+   could still tie with the best (2 * eb beyond it), the choice in rt_nearest_update (ties in
+   distance go to the area drawn later, so the picture does not depend on the order of the
+   cell lists) */
 RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i, double *best,
-                               long *bi)
+                               long *bi, double *eb)
 {
     double t;
-    if (rt_isect_prim(sc, r, i, r->tmin, RT_MIN(*best, r->tmax), &t) &&
-        (t < *best || (t == *best && (*bi < 0 || sc->prim[i].id < sc->prim[*bi].id)))) {
-        *best = t;
-        *bi = (long)i;
-        __builtin_prefetch(&sc->prim[i]); /* read when the hit is reported */
-    }
+    if (rt_isect_prim(sc, r, i, r->tmin, RT_MIN(*best + 2.0 * *eb, r->tmax), &t))
+        rt_nearest_update(sc, r, i, t, best, bi, eb);
 }
 
 enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
@@ -262,6 +261,7 @@ typedef struct rt_walkstate {
     int any_hit;
     double best;
     long bi;
+    double ebest; /* the best hit's error bound (rt_nearest_update) */
     double T;
 } rt_walkstate;
 
@@ -344,7 +344,7 @@ static __attribute__((noinline)) void rt_cell_nearest(rt_walkstate *w, const uin
         if (hbox[i % RT_HBOX] == (key | i) || i == skip)
             continue;
         hbox[i % RT_HBOX] = key | i;
-        rt_nearest_prim(sc, r, i, &w->best, &w->bi);
+        rt_nearest_prim(sc, r, i, &w->best, &w->bi, &w->ebest);
     }
 }
 
@@ -461,12 +461,12 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             if (st != RT_WALK_CONT)
                 return st;
         }
-        /* nearest mode: nothing beyond the best hit matters. Once a cell is left whose exit
-           is beyond it, every primitive hit at t <= best has been tested (the cells that
-           hold the ray points up to best were all visited, and each holds every primitive
-           crossing it). */
-        if (mode == 0 && w->best < t1)
-            t1 = w->best;
+        /* nearest mode: nothing beyond the best hit's tie window (best + 2 ebest) matters.
+           Once a cell is left whose exit is beyond it, every primitive hit up to there has
+           been tested (the cells that hold the ray points up to it were all visited, and
+           each holds every primitive crossing it). */
+        if (mode == 0 && w->best + 2.0 * w->ebest < t1)
+            t1 = w->best + 2.0 * w->ebest;
     advance:
         RT_ADVANCE();
     }
@@ -503,7 +503,7 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
     if (!sc->use_grid) {
         for (size_t i = 0; i < sc->nprim; i++)
             if (i != r->skip)
-                rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi);
+                rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi, &w.ebest);
     } else {
         const rt_grid *g = &sc->grid;
         w.stamp = rt_ctx_next(c);
@@ -518,11 +518,11 @@ long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t
 long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, size_t n,
                    double *tout)
 {
-    double best = INFINITY;
+    double best = INFINITY, eb = 0.0;
     long bi = -1;
     for (size_t k = 0; k < n; k++)
         if (ids[k] != r->skip)
-            rt_nearest_prim(sc, r, ids[k], &best, &bi);
+            rt_nearest_prim(sc, r, ids[k], &best, &bi, &eb);
     *tout = best;
     return bi;
 }

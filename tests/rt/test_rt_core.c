@@ -199,7 +199,8 @@ static void test_settings_equal_brute(void **state)
     free(rays);
 }
 
-/* duplicates: the tie rule must pick the smaller id whichever copy the grid meets first */
+/* duplicates: the tie rule must pick the larger id (drawn later) whichever copy the grid
+   meets first */
 static void test_duplicate_tie(void **state)
 {
     (void)state;
@@ -224,11 +225,11 @@ static void test_duplicate_tie(void **state)
     rt_ray r = {{0.2, 0.3, -1.0}, {0.0, 0.0, 1.0}, 0.0, INFINITY};
     rt_hit h;
     assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
-    assert_int_equal(h.prim, 600);
+    assert_int_equal(h.prim, 1112);
     assert_true(fabs(h.t - 1.0) < 1e-12);
-    r.org[2] = 2.0; /* from between: the far stack (smallest id 0) */
+    r.org[2] = 2.0; /* from between: the far stack (largest id 1111) */
     assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
-    assert_int_equal(h.prim, 0);
+    assert_int_equal(h.prim, 1111);
     assert_true(fabs(h.t - 3.0) < 1e-12);
     rt_scene_free(sc);
 }

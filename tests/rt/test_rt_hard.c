@@ -844,7 +844,8 @@ static void test_coplanar(void **state)
         }
     size_t bad = grid_vs_brute(sc, NULL, rays, n, NULL);
     assert_int_equal(bad, 0);
-    /* analytic on z = 1: all four give t = 4 exactly, so the smallest covering id wins */
+    /* analytic on z = 1: all four give t = 4 exactly, so the largest covering id (drawn
+       last) wins, as in the z-buffer and painter modes */
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     rt_hit *h = malloc(n * sizeof *h), *h2 = malloc(n * sizeof *h2);
     assert_non_null(h);
@@ -862,7 +863,7 @@ static void test_coplanar(void **state)
             if ((ye > y) != (yf > y) && x < xe + (y - ye) * (xf - xe) / (yf - ye))
                 in2 ^= 1;
         }
-        int want = in0 ? 0 : in1 ? 1 : in2 ? 2 : in3 ? 3 : -1;
+        int want = in3 ? 3 : in2 ? 2 : in1 ? 1 : in0 ? 0 : -1;
         wrong += h[k].prim != want || (want >= 0 && h[k].t != 4.0);
     }
     /* deterministic: again, one by one, and after re-committing */
