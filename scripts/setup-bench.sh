@@ -3,6 +3,7 @@
 # setup-bench.sh -- installs the peer renderers and gnuplot used by bench/compare and
 # bench/speed_error, from Debian packages only (nothing built or installed by hand):
 #   libembree-dev    Embree 3 (rtcIntersect1 / rtcOccluded1), headers + library
+#   libgmp-dev       GMP: cmp_embree judge decides disagreements in exact rational arithmetic
 #   tachyon-bin-nox  Tachyon (uniform-grid ray tracer reading NFF), command-line renderer
 #   povray           POV-Ray 3.7
 #   gnuplot-nox      plots of bench/speed_error (PNG via the pngcairo / png terminals)
@@ -10,7 +11,7 @@
 # Already installed packages are skipped; sudo is used only when not running as root.
 set -eu
 
-PKGS="libembree-dev tachyon-bin-nox povray gnuplot-nox libosmesa6-dev"
+PKGS="libembree-dev libgmp-dev tachyon-bin-nox povray gnuplot-nox libosmesa6-dev"
 
 missing=""
 for p in $PKGS; do

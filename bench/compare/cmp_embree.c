@@ -8,6 +8,9 @@
  *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
  *                                     inside, misses; the rays below), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
+ *   cmp_embree judge RES mesh.off...  the disagreements on the primary, inside and misses rays,
+ *                                     judged in exact rational arithmetic (GMP) on the inputs
+ *                                     each tracer was given; ours also on Embree's float inputs
  *
  * Rays: RES x RES pixel-centre primary rays of the framing camera (rt_camera_ray, in VRC3),
  * the same rays rounded to float for Embree. Shadow rays: from every primary hit of ours
@@ -34,6 +37,7 @@
 #include "bench_scene.h"
 
 #include <embree3/rtcore.h>
+#include <gmp.h>
 #include <math.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -569,6 +573,447 @@ static int cmd_rays(int res, int nfiles, char **files)
     return fails ? 1 : 0;
 }
 
+/* ---------------------------------------------------------------- exact judge */
+
+/* A ray with exact inputs: the doubles ours traces, or the floats Embree traces (converted to
+   double exactly). Hits of the closed triangle a b c in [tmin, tmax] are decided in rational
+   arithmetic (GMP mpq: every double is a dyadic rational, so nothing is rounded): the line
+   o + t d crosses the closed triangle when the signed volumes [d, a-o, b-o], [d, b-o, c-o],
+   [d, c-o, a-o] are all >= 0 or all <= 0 and not all 0 (a ray in the triangle's plane counts
+   as a miss, as in both tracers); t = n.(a-o) / n.d with n = (b-a) x (c-a). */
+typedef struct xray {
+    double o[3], d[3], tmin, tmax;
+} xray;
+
+typedef struct xjudge {
+    mpq_t A[3], B[3], C[3], D[3], tmp, tmp2, v[3], n[3], e1[3], e2[3], num, den, t, best;
+} xjudge;
+
+static void xj_init(xjudge *x)
+{
+    mpq_t *all[] = {x->A, x->B, x->C, x->D, x->v, x->n, x->e1, x->e2};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+        for (int i = 0; i < 3; i++)
+            mpq_init(all[k][i]);
+    mpq_inits(x->tmp, x->tmp2, x->num, x->den, x->t, x->best, NULL);
+}
+
+static void xj_clear(xjudge *x)
+{
+    mpq_t *all[] = {x->A, x->B, x->C, x->D, x->v, x->n, x->e1, x->e2};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+        for (int i = 0; i < 3; i++)
+            mpq_clear(all[k][i]);
+    mpq_clears(x->tmp, x->tmp2, x->num, x->den, x->t, x->best, NULL);
+}
+
+/* out = a x b */
+static void xj_cross(xjudge *x, mpq_t out[3], mpq_t a[3], mpq_t b[3])
+{
+    for (int i = 0; i < 3; i++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        mpq_mul(x->tmp, a[j], b[k]);
+        mpq_mul(x->tmp2, a[k], b[j]);
+        mpq_sub(out[i], x->tmp, x->tmp2);
+    }
+}
+
+/* out = a . b */
+static void xj_dot(xjudge *x, mpq_t out, mpq_t a[3], mpq_t b[3])
+{
+    mpq_set_ui(out, 0, 1);
+    for (int i = 0; i < 3; i++) {
+        mpq_mul(x->tmp, a[i], b[i]);
+        mpq_add(out, out, x->tmp);
+    }
+}
+
+/* sign of [D, P, Q] = D . (P x Q) */
+static int xj_vol(xjudge *x, mpq_t P[3], mpq_t Q[3])
+{
+    xj_cross(x, x->v, P, Q);
+    xj_dot(x, x->num, x->D, x->v);
+    return mpq_sgn(x->num);
+}
+
+/* 1 and x->t = the exact distance when r hits the closed triangle a b c in [tmin, tmax] */
+static int xj_hit(xjudge *x, const xray *r, const double *a, const double *b, const double *c)
+{
+    for (int i = 0; i < 3; i++) {
+        mpq_set_d(x->tmp, r->o[i]);
+        mpq_set_d(x->A[i], a[i]);
+        mpq_sub(x->A[i], x->A[i], x->tmp);
+        mpq_set_d(x->B[i], b[i]);
+        mpq_sub(x->B[i], x->B[i], x->tmp);
+        mpq_set_d(x->C[i], c[i]);
+        mpq_sub(x->C[i], x->C[i], x->tmp);
+        mpq_set_d(x->D[i], r->d[i]);
+    }
+    const int s0 = xj_vol(x, x->A, x->B), s1 = xj_vol(x, x->B, x->C), s2 = xj_vol(x, x->C, x->A);
+    if ((s0 < 0 || s1 < 0 || s2 < 0) && (s0 > 0 || s1 > 0 || s2 > 0))
+        return 0;
+    if (s0 == 0 && s1 == 0 && s2 == 0)
+        return 0;
+    for (int i = 0; i < 3; i++) {
+        mpq_sub(x->e1[i], x->B[i], x->A[i]);
+        mpq_sub(x->e2[i], x->C[i], x->A[i]);
+    }
+    xj_cross(x, x->n, x->e1, x->e2);
+    xj_dot(x, x->den, x->n, x->D);
+    if (mpq_sgn(x->den) == 0)
+        return 0;
+    xj_dot(x, x->num, x->n, x->A);
+    mpq_div(x->t, x->num, x->den);
+    mpq_set_d(x->tmp, r->tmin);
+    if (mpq_cmp(x->t, x->tmp) < 0)
+        return 0;
+    if (isfinite(r->tmax)) {
+        mpq_set_d(x->tmp, r->tmax);
+        if (mpq_cmp(x->t, x->tmp) > 0)
+            return 0;
+    }
+    return 1;
+}
+
+/* a mesh as one tracer was given it: vertices (double, or float values as double) and the
+   triangles' boxes for the filter */
+typedef struct xmesh {
+    const double *v;
+    const uint32_t *tri;
+    size_t ntri;
+    double *box; /* 6 per triangle: lo xyz, hi xyz, enlarged by a relative 1e-6 */
+} xmesh;
+
+static int xmesh_init(xmesh *m, const double *v, const uint32_t *tri, size_t ntri)
+{
+    m->v = v;
+    m->tri = tri;
+    m->ntri = ntri;
+    m->box = bs_alloc(ntri, 6 * sizeof(double));
+    if (!m->box)
+        return -1;
+    for (size_t j = 0; j < ntri; j++) {
+        double *b = m->box + 6 * j;
+        for (int i = 0; i < 3; i++) {
+            b[i] = INFINITY;
+            b[3 + i] = -INFINITY;
+        }
+        double mag = 0.0;
+        for (int k = 0; k < 3; k++)
+            for (int i = 0; i < 3; i++) {
+                double c = v[3 * tri[3 * j + k] + i];
+                b[i] = fmin(b[i], c);
+                b[3 + i] = fmax(b[3 + i], c);
+                mag = fmax(mag, fabs(c));
+            }
+        for (int i = 0; i < 3; i++) {
+            b[i] -= 1e-6 * mag;
+            b[3 + i] += 1e-6 * mag;
+        }
+    }
+    return 0;
+}
+
+/* can the ray meet box b? (the slab test in double on a box enlarged far beyond its
+   rounding errors, 1e-6 relative: never rejects a triangle the ray hits; a filter only) */
+static int x_box(const xray *r, const double *b)
+{
+    double t0 = -INFINITY, t1 = INFINITY;
+    for (int i = 0; i < 3; i++) {
+        if (r->d[i] == 0.0) {
+            if (r->o[i] < b[i] || r->o[i] > b[3 + i])
+                return 0;
+            continue;
+        }
+        double ta = (b[i] - r->o[i]) / r->d[i], tb = (b[3 + i] - r->o[i]) / r->d[i];
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+        }
+        ta -= 1e-9 * fabs(ta) + 1e-300;
+        tb += 1e-9 * fabs(tb) + 1e-300;
+        t0 = fmax(t0, ta);
+        t1 = fmin(t1, tb);
+    }
+    return t0 <= t1 && t1 >= r->tmin - 1e-9 * fabs(r->tmin) - 1e-300 &&
+           t0 <= r->tmax + 1e-9 * fabs(r->tmax) + 1e-300;
+}
+
+/* The exact nearest hit of r on m: returns the number of triangles at the nearest exact
+   distance (0: the ray misses), their indices in near[] (at most XNEAR kept: a vertex of
+   higher valence hit exactly is judged on the first XNEAR) */
+enum { XNEAR = 32 };
+static int x_nearest(xjudge *x, const xmesh *m, const xray *r, size_t near[XNEAR])
+{
+    int nn = 0;
+    for (size_t j = 0; j < m->ntri; j++) {
+        if (!x_box(r, m->box + 6 * j))
+            continue;
+        const uint32_t *t = m->tri + 3 * j;
+        if (!xj_hit(x, r, m->v + 3 * t[0], m->v + 3 * t[1], m->v + 3 * t[2]))
+            continue;
+        int c = nn ? mpq_cmp(x->t, x->best) : -1;
+        if (c < 0) {
+            mpq_set(x->best, x->t);
+            nn = 0;
+        }
+        if (c <= 0) {
+            if (nn < XNEAR)
+                near[nn] = j;
+            nn++;
+        }
+    }
+    return nn;
+}
+
+/* is a tracer's answer (a triangle index, -1 for a miss) the exact one? */
+static int x_right(int nn, const size_t near[XNEAR], long tri)
+{
+    if (nn == 0)
+        return tri < 0;
+    for (int k = 0; k < nn && k < XNEAR; k++)
+        if ((long)near[k] == tri)
+            return 1;
+    return 0;
+}
+
+static void x_ray_double(const rt_ray *r, xray *x)
+{
+    for (int i = 0; i < 3; i++) {
+        x->o[i] = r->org[i];
+        x->d[i] = r->dir[i];
+    }
+    x->tmin = r->tmin;
+    x->tmax = r->tmax;
+}
+
+/* the ray as em_rayhit gives it to Embree */
+static void x_ray_float(const rt_ray *r, xray *x)
+{
+    for (int i = 0; i < 3; i++) {
+        x->o[i] = (float)r->org[i];
+        x->d[i] = (float)r->dir[i];
+    }
+    x->tmin = (float)r->tmin;
+    x->tmax = isinf(r->tmax) ? INFINITY : (float)r->tmax;
+}
+
+/* disagreement classes of the judge */
+enum { XC_OHIT_EMISS, XC_OMISS_EHIT, XC_OTHER_TRI, XC_N };
+static const char *const xc_name[XC_N] = {"ours hit, Embree miss", "ours miss, Embree hit",
+                                          "both hit, other triangle"};
+
+typedef struct xtally {
+    size_t n, ours_d, emb_f, emb_d, both_f, oursf_f; /* see cmd_judge's legend */
+} xtally;
+
+/* is a tracer's answer (a gksrt primitive id, -1 for a miss) the exact one? (a polygon is a
+   fan of several triangles: one of them among the nearest) */
+static int x_prim_right(const bs_scene *s, int nn, const size_t near[XNEAR], int prim)
+{
+    if (prim < 0)
+        return nn == 0;
+    for (int k = 0; k < nn && k < XNEAR; k++)
+        if (s->tri_prim[near[k]] == prim)
+            return 1;
+    return 0;
+}
+
+/* judges the rays on which ours (double inputs: hits) and Embree (float inputs: eprim as
+   gksrt ids) disagree on the triangle hit or on hit vs miss; fhits: ours on the float inputs
+   (primitive k = triangle k) */
+static void x_judge_set(const bs_scene *s, const xmesh *md, const xmesh *mf, const rt_ray *rays, const rt_hit *hits, const int *eprim, const rt_hit *fhits,
+                        size_t n, xtally tl[XC_N], size_t *fdis, size_t *fdis_oursf, size_t *fdis_emb,
+                        size_t *nself, size_t *self_ok)
+{
+    xjudge x;
+    xj_init(&x);
+    memset(tl, 0, XC_N * sizeof *tl);
+    *fdis = *fdis_oursf = *fdis_emb = *nself = *self_ok = 0;
+    for (size_t k = 0; k < n; k++) {
+        const int po = hits[k].prim, pe = eprim[k];
+        const long tf = fhits[k].prim;
+        xray rd, rf;
+        size_t nd[XNEAR], nf[XNEAR];
+        int nnd = -1, nnf = -1;
+        /* ours on the float inputs against Embree on the same inputs */
+        if ((tf < 0) != (pe < 0) || (tf >= 0 && s->tri_prim[tf] != pe)) {
+            x_ray_float(&rays[k], &rf);
+            nnf = x_nearest(&x, mf, &rf, nf);
+            (*fdis)++;
+            *fdis_oursf += x_right(nnf, nf, tf);
+            *fdis_emb += x_prim_right(s, nnf, nf, pe);
+        }
+        if (po == pe) {
+            /* the judge's self-check: every 1009th ray on which both agree, exactly */
+            if (k % 1009 == 0) {
+                x_ray_double(&rays[k], &rd);
+                nnd = x_nearest(&x, md, &rd, nd);
+                (*nself)++;
+                *self_ok += x_prim_right(s, nnd, nd, po);
+            }
+            continue;
+        }
+        int c = po >= 0 && pe < 0 ? XC_OHIT_EMISS : po < 0 ? XC_OMISS_EHIT : XC_OTHER_TRI;
+        x_ray_double(&rays[k], &rd);
+        nnd = x_nearest(&x, md, &rd, nd);
+        if (nnf < 0) {
+            x_ray_float(&rays[k], &rf);
+            nnf = x_nearest(&x, mf, &rf, nf);
+        }
+        xtally *t = &tl[c];
+        t->n++;
+        const int od = x_prim_right(s, nnd, nd, po), ef = x_prim_right(s, nnf, nf, pe);
+        t->ours_d += od;
+        t->emb_f += ef;
+        t->emb_d += x_prim_right(s, nnd, nd, pe);
+        t->both_f += od && ef;
+        t->oursf_f += x_right(nnf, nf, tf);
+    }
+    xj_clear(&x);
+}
+
+static void x_print(const char *set, const xtally tl[XC_N], size_t fdis, size_t fo, size_t fe, size_t nself,
+                    size_t self_ok)
+{
+    for (int c = 0; c < XC_N; c++)
+        if (tl[c].n)
+            printf("  %-8s %-26s %6zu | %8zu %8zu %8zu %8zu | %8zu\n", set, xc_name[c], tl[c].n, tl[c].ours_d,
+                   tl[c].emb_f, tl[c].emb_d, tl[c].both_f, tl[c].oursf_f);
+    printf("  %-8s %-26s %6zu |     (same inputs: ours-f right %zu, Embree right %zu)\n", set,
+           "ours-f vs Embree differ", fdis, fo, fe);
+    printf("  %-8s %-26s %6zu |     (the exact answer is both tracers' on %zu)\n", set, "self-check, agreeing rays",
+           nself, self_ok);
+}
+
+/* cmp_embree judge RES mesh.off...: the disagreements of the rays command, judged exactly */
+static int cmd_judge(int res, int nfiles, char **files)
+{
+    RTCDevice dev = rtcNewDevice("threads=1,set_affinity=0");
+    if (!dev)
+        return 1;
+    printf("Disagreements of ours and Embree %d.%d.%d on the nearest hit, judged in exact rational arithmetic "
+           "(GMP) on the inputs each was given\n", RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
+    printf("  ours: double vertices and rays; Embree: the same rounded to float. ours-f: ours given Embree's "
+           "float inputs (the same geometry and rays)\n");
+    printf("  columns: rays in the class | ours right (double inputs), Embree right on its float inputs, Embree "
+           "right on the double inputs, both right on their own inputs | ours-f right (float inputs)\n");
+    printf("  'right' = the tracer's triangle is among the exactly nearest (shared edges and vertices: all "
+           "of them), or it misses and the ray hits nothing exactly\n");
+    int fails = 0;
+    for (int f = 0; f < nfiles; f++) {
+        const char *base = strrchr(files[f], '/');
+        base = base ? base + 1 : files[f];
+        bs_scene s;
+        char err[512];
+        bs_options opt = {.size = res};
+        if (bs_load(files[f], &opt, &s, err, sizeof err) != 0) {
+            fprintf(stderr, "%s\n", err);
+            bs_free(&s);
+            fails++;
+            continue;
+        }
+        size_t n = (size_t)res * res, nbox = n < IBOX_RAYS ? n : IBOX_RAYS;
+        rt_ray *rays = bs_alloc(n, sizeof *rays), *irays = bs_alloc(n, sizeof *irays);
+        rt_ray *brays = bs_alloc(nbox, sizeof *brays), *cand = bs_alloc(nbox, sizeof *cand);
+        rt_ray *frays = bs_alloc(n, sizeof *frays);
+        rt_hit *hits = bs_alloc(n, sizeof *hits), *ihits = bs_alloc(n, sizeof *ihits);
+        rt_hit *bhits = bs_alloc(nbox, sizeof *bhits), *fhits = bs_alloc(n, sizeof *fhits);
+        double *vf = bs_alloc(s.nverts, 3 * sizeof(double)), *tv = bs_alloc(9, sizeof(double));
+        em_res er = {bs_alloc(n, sizeof(int)), bs_alloc(n, sizeof(float)), bs_alloc(n, 1)};
+        RTCScene esc = em_scene(dev, s.verts_vrc, s.nverts, s.tris, s.ntris);
+        rt_scene *fsc = rt_scene_new();
+        xmesh md = {0}, mf = {0};
+        if (!rays || !irays || !brays || !cand || !frays || !hits || !ihits || !bhits || !fhits || !vf || !tv ||
+            !er.prim || !er.t || !er.occ || !esc || !fsc) {
+            fprintf(stderr, "%s: out of memory\n", base);
+            fails++;
+            goto next;
+        }
+        rtcCommitScene(esc);
+        for (size_t i = 0; i < 3 * s.nverts; i++)
+            vf[i] = (float)s.verts_vrc[i];
+        /* ours on Embree's inputs: the float-rounded triangles, one polygon each (id = index) */
+        rt_surface su;
+        rt_surface_default(&su);
+        int sid = rt_scene_add_surface(fsc, &su), three = 3;
+        for (size_t j = 0; j < s.ntris && sid >= 0; j++) {
+            for (int k = 0; k < 3; k++)
+                memcpy(tv + 3 * k, vf + 3 * s.tris[3 * j + k], 3 * sizeof(double));
+            if (rt_scene_add_polygon(fsc, 1, &three, tv, sid, sid) != (int)j)
+                sid = -1;
+        }
+        if (sid < 0 || rt_scene_commit(fsc, NULL) != RT_OK || xmesh_init(&md, s.verts_vrc, s.tris, s.ntris) ||
+            xmesh_init(&mf, vf, s.tris, s.ntris)) {
+            fprintf(stderr, "%s: the float-input scene or the judge's boxes failed\n", base);
+            fails++;
+            goto next;
+        }
+        for (int y = 0; y < res; y++)
+            for (int xx = 0; xx < res; xx++)
+                rt_camera_ray(&s.cam, xx + 0.5, y + 0.5, &rays[(size_t)y * res + xx]);
+        time_ours(s.rt, rays, n, hits);
+        const size_t ni = make_inside_rays(rays, hits, n, irays);
+        const size_t nm = make_ibox_rays(&s, nbox, brays, cand, bhits);
+        printf("%s (%zu triangles; %zu primary, %zu inside, %zu in-box miss rays)\n", base, s.ntris, n, ni, nm);
+        printf("  %-8s %-26s %6s | %8s %8s %8s %8s | %8s\n", "set", "class", "rays", "ours", "E(f)", "E(d)",
+               "both", "ours-f");
+        struct {
+            const char *name;
+            const rt_ray *r;
+            rt_hit *h;
+            size_t n;
+        } sets[3] = {{"primary", rays, hits, n}, {"inside", irays, ihits, ni}, {"misses", brays, bhits, nm}};
+        for (int q = 0; q < 3; q++) {
+            if (!sets[q].n)
+                continue;
+            time_ours(s.rt, sets[q].r, sets[q].n, sets[q].h);
+            time_embree_primary(esc, &s, sets[q].r, sets[q].n, &er);
+            for (size_t k = 0; k < sets[q].n; k++) {
+                rt_ray *fr = &frays[k];
+                *fr = sets[q].r[k];
+                for (int i = 0; i < 3; i++) {
+                    fr->org[i] = (float)fr->org[i];
+                    fr->dir[i] = (float)fr->dir[i];
+                }
+                fr->tmin = (float)fr->tmin;
+                fr->tmax = isinf(fr->tmax) ? INFINITY : (float)fr->tmax;
+            }
+            time_ours(fsc, frays, sets[q].n, fhits);
+            xtally tl[XC_N];
+            size_t fdis, fo, fe, nself, self_ok;
+            x_judge_set(&s, &md, &mf, sets[q].r, sets[q].h, er.prim, fhits, sets[q].n, tl, &fdis,
+                        &fo, &fe, &nself, &self_ok);
+            x_print(sets[q].name, tl, fdis, fo, fe, nself, self_ok);
+            fflush(stdout);
+        }
+    next:
+        if (esc)
+            rtcReleaseScene(esc);
+        rt_scene_free(fsc);
+        free(md.box);
+        free(mf.box);
+        free(rays);
+        free(irays);
+        free(brays);
+        free(cand);
+        free(frays);
+        free(hits);
+        free(ihits);
+        free(bhits);
+        free(fhits);
+        free(vf);
+        free(tv);
+        free(er.prim);
+        free(er.t);
+        free(er.occ);
+        bs_free(&s);
+    }
+    rtcReleaseDevice(dev);
+    return fails ? 1 : 0;
+}
+
 /* ---------------------------------------------------------------- build scaling */
 
 static int cmd_build(void)
@@ -773,6 +1218,15 @@ int main(int argc, char **argv)
         }
         return cmd_ours(res, argv[3], argv[4]);
     }
-    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours RES SET mesh.off\n");
+    if (argc >= 4 && !strcmp(argv[1], "judge")) {
+        int res = atoi(argv[2]);
+        if (res < 1 || res > 8192) {
+            fprintf(stderr, "bad resolution\n");
+            return 2;
+        }
+        return cmd_judge(res, argc - 3, argv + 3);
+    }
+    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours RES SET mesh.off"
+                    " | cmp_embree judge RES mesh.off...\n");
     return 2;
 }

@@ -111,6 +111,9 @@ run() {
     echo
     pin "${CPUS%% *}" "$BIN/cmp_embree" build
     echo
+    # shellcheck disable=SC2086 # the mesh list is split on purpose
+    pin "${CPUS%% *}" "$BIN/cmp_embree" judge 1024 $MESHES
+    echo
     threads
 }
 
