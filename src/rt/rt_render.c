@@ -380,6 +380,84 @@ static void rt_smooth_normal(int mode, int side, const double P[3], const double
         Ns[c] = H[c] / l;
 }
 
+/* a transmitting surface (kt > 0) hit from side (1: back) with cos_i = -Nsh.d: the Fresnel
+   reflectance *F and, unless total internal reflection, the refracted direction T; returns 1
+   when a refraction ray goes on (*straight: index 1, on the same line) */
+static int rt_refract(const rt_job *job, const rt_surface *s, int side, int smooth, double cos_i,
+                      const double d[3], const double Nsh[3], const double N[3], double T[3],
+                      double *F, int *straight)
+{
+    double n1 = side ? s->refr_index : 1.0, n2 = side ? 1.0 : s->refr_index;
+    if (n1 == n2) {
+        *F = 0.0;
+        memcpy(T, d, 3 * sizeof *T);
+        *straight = cos_i > 1e-3;
+        return 1;
+    }
+    double eta = n1 / n2;
+    double sin2t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2t >= 1.0) {
+        *F = 1.0; /* total internal reflection */
+        return 0;
+    }
+    double cos_t = sqrt(1.0 - sin2t);
+    *F = rt_fresnel(job->o.fresnel, cos_i, cos_t, n1, n2);
+    for (int c = 0; c < 3; c++)
+        T[c] = eta * d[c] + (eta * cos_i - cos_t) * Nsh[c];
+    double l = sqrt(dot3(T, T));
+    for (int c = 0; c < 3; c++)
+        T[c] /= l;
+    if (smooth && job->o.smooth == RT_SMOOTH_ROBUST)
+        rt_keep_below(T, N, -dot3(N, d));
+    return 1;
+}
+
+/* the reflection and refraction rays of a hit at P (below the depth limit), their colours
+   added to out with their weights: reflected ks*Cs + kt*F, refracted kt*(1 - F) */
+static void rt_secondary(rt_worker *w, const rt_surface *s, const double P[3], const double N[3],
+                         const double Nsh[3], const double d[3], int side, int smooth, double eps,
+                         int depth, double weight, long i, double out[3])
+{
+    const rt_job *job = w->job;
+    double wr[3] = {0, 0, 0}, wt = 0.0;
+    if (s->refl_eq == RT_REFL_SPECULAR)
+        for (int c = 0; c < 3; c++)
+            wr[c] = s->ks * s->specular[c];
+    double cos_i = -dot3(Nsh, d);
+    if (cos_i > 1.0)
+        cos_i = 1.0;
+    double T[3] = {0, 0, 0};
+    int straight = 0;
+    if (s->transparency > 0.0) {
+        double F;
+        const int refract = rt_refract(job, s, side, smooth, cos_i, d, Nsh, N, T, &F, &straight);
+        for (int c = 0; c < 3; c++)
+            wr[c] += s->transparency * F;
+        wt = refract ? s->transparency * (1.0 - F) : 0.0;
+    }
+    double wrm = fmax(wr[0], fmax(wr[1], wr[2]));
+    if (wrm > 0.0 && !(job->o.cutoff > 0.0 && weight * wrm < job->o.cutoff)) {
+        double R[3], col[3];
+        for (int c = 0; c < 3; c++)
+            R[c] = d[c] + 2.0 * cos_i * Nsh[c];
+        double l = sqrt(dot3(R, R));
+        for (int c = 0; c < 3; c++)
+            R[c] /= l;
+        rt_spawn(w, P, N, eps, R, depth + 1, weight * wrm, 0, i, col);
+        for (int c = 0; c < 3; c++)
+            out[c] += wr[c] * col[c];
+    }
+    if (wt > 0.0 && !(job->o.cutoff > 0.0 && weight * wt < job->o.cutoff)) {
+        double col[3];
+        if (straight) /* index 1: continue on the same line, just past the surface */
+            rt_spawn(w, P, d, eps / cos_i, T, depth + 1, weight * wt, 1, i, col);
+        else
+            rt_spawn(w, P, N, -eps, T, depth + 1, weight * wt, 1, i, col);
+        for (int c = 0; c < 3; c++)
+            out[c] += wt * col[c];
+    }
+}
+
 /* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
    cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
@@ -440,66 +518,7 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     }
     if (depth >= job->o.max_depth)
         return;
-    double wr[3] = {0, 0, 0}, wt = 0.0;
-    if (s->refl_eq == RT_REFL_SPECULAR)
-        for (int c = 0; c < 3; c++)
-            wr[c] = s->ks * s->specular[c];
-    double cos_i = -dot3(Nsh, d);
-    if (cos_i > 1.0)
-        cos_i = 1.0;
-    double T[3] = {0, 0, 0};
-    int refract = 0, straight = 0;
-    if (s->transparency > 0.0) {
-        double n1 = side ? s->refr_index : 1.0, n2 = side ? 1.0 : s->refr_index;
-        double F;
-        if (n1 == n2) {
-            F = 0.0;
-            memcpy(T, d, sizeof T);
-            refract = 1;
-            straight = cos_i > 1e-3;
-        } else {
-            double eta = n1 / n2;
-            double sin2t = eta * eta * (1.0 - cos_i * cos_i);
-            if (sin2t >= 1.0) {
-                F = 1.0; /* total internal reflection */
-            } else {
-                double cos_t = sqrt(1.0 - sin2t);
-                F = rt_fresnel(job->o.fresnel, cos_i, cos_t, n1, n2);
-                for (int c = 0; c < 3; c++)
-                    T[c] = eta * d[c] + (eta * cos_i - cos_t) * Nsh[c];
-                double l = sqrt(dot3(T, T));
-                for (int c = 0; c < 3; c++)
-                    T[c] /= l;
-                if (smooth && job->o.smooth == RT_SMOOTH_ROBUST)
-                    rt_keep_below(T, N, -dot3(N, d));
-                refract = 1;
-            }
-        }
-        for (int c = 0; c < 3; c++)
-            wr[c] += s->transparency * F;
-        wt = refract ? s->transparency * (1.0 - F) : 0.0;
-    }
-    double wrm = fmax(wr[0], fmax(wr[1], wr[2]));
-    if (wrm > 0.0 && !(job->o.cutoff > 0.0 && weight * wrm < job->o.cutoff)) {
-        double R[3], col[3];
-        for (int c = 0; c < 3; c++)
-            R[c] = d[c] + 2.0 * cos_i * Nsh[c];
-        double l = sqrt(dot3(R, R));
-        for (int c = 0; c < 3; c++)
-            R[c] /= l;
-        rt_spawn(w, P, N, eps, R, depth + 1, weight * wrm, 0, i, col);
-        for (int c = 0; c < 3; c++)
-            out[c] += wr[c] * col[c];
-    }
-    if (wt > 0.0 && !(job->o.cutoff > 0.0 && weight * wt < job->o.cutoff)) {
-        double col[3];
-        if (straight) /* index 1: continue on the same line, just past the surface */
-            rt_spawn(w, P, d, eps / cos_i, T, depth + 1, weight * wt, 1, i, col);
-        else
-            rt_spawn(w, P, N, -eps, T, depth + 1, weight * wt, 1, i, col);
-        for (int c = 0; c < 3; c++)
-            out[c] += wt * col[c];
-    }
+    rt_secondary(w, s, P, N, Nsh, d, side, smooth, eps, depth, weight, i, out);
 }
 
 /* The picture is usually fresh from malloc (mmap): its first touch takes one page fault per
@@ -745,6 +764,110 @@ static void rt_cover_ends_part(void *arg, int k, int n)
    costs a counter per ray. */
 #define RT_COVER_PART_PRIMS 1024
 
+/* Can the camera's rays be culled by projection? The ends of the rays through the raster's
+   corners and centre must come back to their raster points within 1/100 of a raster unit
+   (else a badly conditioned view mapping: no culling), and the primitives' vertices must not
+   outnumber the rays (budget). */
+static int rt_cover_usable(const rt_scene *sc, const rt_camera *cam, const double vm[4][4], double ws,
+                           size_t budget)
+{
+    for (int k = 0; k < 5; k++) {
+        double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
+        double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
+        rt_ray r;
+        if (rt_camera_ray(cam, px, py, &r) != RT_OK)
+            return 0;
+        for (int e = 0; e < 2; e++) {
+            double q[3], u, v;
+            for (int i = 0; i < 3; i++)
+                q[i] = r.org[i] + (e ? r.tmax : 0.0) * r.dir[i];
+            if (!rt_camera_project(cam, vm, ws, q, &u, &v) || !(fabs(u - px) <= 0.01) ||
+                !(fabs(v - py) <= 0.01))
+                return 0;
+        }
+    }
+    for (size_t i = 0, nv = 0; i < sc->nprim; i++) {
+        nv += rt_prim_nverts(sc, i);
+        if (nv > budget)
+            return 0;
+    }
+    return 1;
+}
+
+/* the passes of the candidate lists over j (its count arrays made): counts, their running
+   sums (list ends), then the lists filled from the back, which leaves each ray's offset at
+   its list's start. 1: lists made (j->ids, j->cnt[0]); 0: too many entries or no memory
+   (the mask alone will do); -1: a pass failed */
+static int rt_cover_lists_run(rt_cover_job *j, size_t budget)
+{
+    int ok = 1;
+    j->pass = RT_COVER_COUNT;
+    rt_par_run(j->nt, rt_cover_part, j);
+    for (int p = 0; p < j->nt; p++)
+        ok = ok && j->ok[p];
+    if (!ok)
+        return -1;
+    rt_par_run(j->nt, rt_cover_total_part, j);
+    uint64_t total = 0;
+    for (int p = 0; p < j->nt; p++) {
+        const uint64_t t = j->tot[p];
+        j->tot[p] = total;
+        total += t;
+    }
+    if (total > (uint64_t)RT_CAND_PER_RAY * budget)
+        return 0;
+    rt_par_run(j->nt, rt_cover_ends_part, j);
+    j->cnt[0][budget] = (uint32_t)total;
+    j->ids = rt_alloc_array(total ? (size_t)total : 1, sizeof(uint32_t));
+    int filled = j->ids != NULL;
+    if (filled) {
+        j->pass = RT_COVER_FILL;
+        rt_par_run(j->nt, rt_cover_part, j);
+        for (int p = 0; p < j->nt; p++)
+            filled = filled && j->ok[p];
+    }
+    if (filled)
+        return 1;
+    free(j->ids);
+    return 0;
+}
+
+/* the candidate lists of the budget rays (out->off, out->ids): 1 made, 0 not (the mask alone
+   will do), -1 no culling at all */
+static int rt_cover_lists(const rt_scene *sc, const rt_camera *cam, const double vm[4][4], double ws,
+                          double off, int gw, int gh, int threads, size_t budget, rt_cover_out *out)
+{
+    rt_cover_job *j = rt_calloc_array(1, sizeof *j);
+    if (!j)
+        return -1;
+    int nt = threads < 1 ? 1 : threads;
+    if ((size_t)nt > sc->nprim / RT_COVER_PART_PRIMS + 1)
+        nt = (int)(sc->nprim / RT_COVER_PART_PRIMS + 1);
+    j->sc = sc;
+    j->cam = cam;
+    j->vm = vm;
+    j->ws = ws;
+    j->off = off;
+    j->gw = gw;
+    j->gh = gh;
+    j->nrays = budget;
+    while (j->nt < nt && (j->cnt[j->nt] = rt_calloc_array(budget + 1, sizeof(uint32_t))))
+        j->nt++; /* fewer parts where memory runs short */
+    const int r = j->nt > 0 ? rt_cover_lists_run(j, budget) : -1;
+    if (r == 1) {
+        out->off = j->cnt[0];
+        out->ids = j->ids;
+        for (int p = 1; p < j->nt; p++)
+            free(j->cnt[p]);
+        free(j);
+        return 1;
+    }
+    for (int p = 0; p < j->nt; p++)
+        free(j->cnt[p]);
+    free(j);
+    return r;
+}
+
 static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh,
                              int threads)
 {
@@ -754,90 +877,15 @@ static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double of
     double vm[4][4], ws;
     if (!rt_camera_vmap(cam, vm, &ws))
         return none;
-    /* the projection must invert the rays: the ends of the rays through the raster's corners
-       and centre come back to their raster points within 1/100 of a raster unit (else a badly
-       conditioned view mapping: no culling) */
-    for (int k = 0; k < 5; k++) {
-        double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
-        double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
-        rt_ray r;
-        if (rt_camera_ray(cam, px, py, &r) != RT_OK)
-            return none;
-        for (int e = 0; e < 2; e++) {
-            double q[3], u, v;
-            for (int i = 0; i < 3; i++)
-                q[i] = r.org[i] + (e ? r.tmax : 0.0) * r.dir[i];
-            if (!rt_camera_project(cam, vm, ws, q, &u, &v) || !(fabs(u - px) <= 0.01) ||
-                !(fabs(v - py) <= 0.01))
-                return none;
-        }
-    }
     size_t budget = (size_t)gw * (size_t)gh;
-    for (size_t i = 0, nv = 0; i < sc->nprim; i++) {
-        nv += rt_prim_nverts(sc, i);
-        if (nv > budget)
-            return none;
-    }
+    if (!rt_cover_usable(sc, cam, (const double(*)[4])vm, ws, budget))
+        return none;
     if (budget <= RT_CAND_RAYS && sc->nprim <= UINT32_MAX) {
-        /* candidate lists: counts, their running sums (list ends), then the lists filled
-           from the back, which leaves each ray's offset at its list's start */
-        rt_cover_job *j = rt_calloc_array(1, sizeof *j);
-        if (!j)
-            return none;
-        int nt = threads < 1 ? 1 : threads;
-        if ((size_t)nt > sc->nprim / RT_COVER_PART_PRIMS + 1)
-            nt = (int)(sc->nprim / RT_COVER_PART_PRIMS + 1);
-        j->sc = sc;
-        j->cam = cam;
-        j->vm = (const double(*)[4])vm;
-        j->ws = ws;
-        j->off = off;
-        j->gw = gw;
-        j->gh = gh;
-        j->nrays = budget;
-        while (j->nt < nt && (j->cnt[j->nt] = rt_calloc_array(budget + 1, sizeof(uint32_t))))
-            j->nt++; /* fewer parts where memory runs short */
-        int ok = j->nt > 0;
-        if (ok) {
-            j->pass = RT_COVER_COUNT;
-            rt_par_run(j->nt, rt_cover_part, j);
-            for (int p = 0; p < j->nt; p++)
-                ok = ok && j->ok[p];
-        }
-        if (ok) {
-            rt_par_run(j->nt, rt_cover_total_part, j);
-            uint64_t total = 0;
-            for (int p = 0; p < j->nt; p++) {
-                const uint64_t t = j->tot[p];
-                j->tot[p] = total;
-                total += t;
-            }
-            if (total <= (uint64_t)RT_CAND_PER_RAY * budget) {
-                rt_par_run(j->nt, rt_cover_ends_part, j);
-                j->cnt[0][budget] = (uint32_t)total;
-                j->ids = rt_alloc_array(total ? (size_t)total : 1, sizeof(uint32_t));
-                int filled = j->ids != NULL;
-                if (filled) {
-                    j->pass = RT_COVER_FILL;
-                    rt_par_run(j->nt, rt_cover_part, j);
-                    for (int p = 0; p < j->nt; p++)
-                        filled = filled && j->ok[p];
-                }
-                if (filled) {
-                    out.off = j->cnt[0];
-                    out.ids = j->ids;
-                    for (int p = 1; p < j->nt; p++)
-                        free(j->cnt[p]);
-                    free(j);
-                    return out;
-                }
-                free(j->ids);
-            }
-        }
-        for (int p = 0; p < j->nt; p++)
-            free(j->cnt[p]);
-        free(j);
-        if (!ok)
+        const int r = rt_cover_lists(sc, cam, (const double(*)[4])vm, ws, off, gw, gh, threads,
+                                     budget, &out);
+        if (r > 0)
+            return out;
+        if (r < 0)
             return none;
         /* too many entries or no memory: the mask alone */
     }
@@ -864,66 +912,75 @@ static float *rt_corner_at(const rt_job *job, int x, int y)
     return job->edge + 3 * ((size_t)H + 1 + (size_t)x);
 }
 
-static void rt_tile(rt_worker *w, int tile)
+/* eye ray (x, y)'s colour col into the picture (corner rays: where rt_corner_at keeps them)
+   and its hit into the cover */
+static void rt_eye_store(rt_worker *w, int x, int y, double col[3])
 {
     rt_job *job = w->job;
-    int tx = tile % job->tiles_x, ty = tile / job->tiles_x;
-    int x0 = tx * RT_TILE, y0 = ty * RT_TILE;
-    int x1 = x0 + RT_TILE < job->gw ? x0 + RT_TILE : job->gw;
-    int y1 = y0 + RT_TILE < job->gh ? y0 + RT_TILE : job->gh;
-    int m = job->m;
-    if (job->o.corner_rays || (m == 1 && !job->o.jitter)) {
-        /* one ray per corner or pixel centre: x terms once per column, y terms once per row */
-        const double off = job->o.corner_rays ? 0.0 : 0.5;
-        double xt[RT_TILE][4], xs[RT_TILE][4], yt[4], col[3];
-        rt_ray ray[RT_TILE];
-        int ok[RT_TILE], slot[RT_TILE];
-        for (int x = x0; x < x1; x++)
-            rt_camera_xterm(job->cam, x + off, xt[x - x0]);
-        for (int y = y0; y < y1; y++) {
-            /* the rays of a tile row first (independent, their divisions overlap), only those
-               not culled (slot -1: surely background) */
-            int n = 0;
-            const size_t row = (size_t)y * (size_t)job->gw;
-            const uint32_t *co = job->cand_off ? job->cand_off + row : NULL;
-            const uint8_t *cov = job->cover ? job->cover + row : NULL;
-            for (int x = x0; x < x1; x++) {
-                slot[x - x0] = -1;
-                if (co ? co[x + 1] != co[x] : !cov || cov[x]) {
-                    memcpy(xs[n], xt[x - x0], sizeof xs[n]);
-                    slot[x - x0] = n++;
-                }
-            }
-            rt_camera_yterm(job->cam, y + off, yt);
-            rt_camera_rays_row(job->cam, (const double(*)[4])xs, n, yt, ray, ok);
-            for (int x = x0; x < x1; x++) {
-                const int k = slot[x - x0];
-                w->st.eye_rays++;
-                w->eye_hit = 0;
-                if (k >= 0 && ok[k]) {
-                    const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
-                    rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
-                             co ? &cd : NULL, col);
-                } else
-                    memcpy(col, job->o.background, sizeof col);
-                float *dst;
-                if (job->o.corner_rays) {
-                    dst = rt_corner_at(job, x, y);
-                } else {
-                    dst = job->rgb + 3 * ((size_t)y * (size_t)job->gw + (size_t)x);
-                    for (int c = 0; c < 3; c++)
-                        col[c] += 0.0; /* as the sum over samples below: -0 becomes +0 */
-                }
-                for (int c = 0; c < 3; c++)
-                    dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
-                if (job->corner_hit)
-                    job->corner_hit[row + (size_t)x] = (uint8_t)w->eye_hit;
-                else if (job->cover_out)
-                    job->cover_out[row + (size_t)x] = (unsigned short)w->eye_hit;
+    const size_t row = (size_t)y * (size_t)job->gw;
+    float *dst;
+    if (job->o.corner_rays) {
+        dst = rt_corner_at(job, x, y);
+    } else {
+        dst = job->rgb + 3 * (row + (size_t)x);
+        for (int c = 0; c < 3; c++)
+            col[c] += 0.0; /* as the sum over samples below: -0 becomes +0 */
+    }
+    for (int c = 0; c < 3; c++)
+        dst[c] = isfinite(col[c]) ? (float)col[c] : 0.0f;
+    if (job->corner_hit)
+        job->corner_hit[row + (size_t)x] = (uint8_t)w->eye_hit;
+    else if (job->cover_out)
+        job->cover_out[row + (size_t)x] = (unsigned short)w->eye_hit;
+}
+
+/* one ray per corner or pixel centre over [x0,x1) x [y0,y1): x terms once per column, y
+   terms once per row */
+static void rt_tile_rows(rt_worker *w, int x0, int x1, int y0, int y1)
+{
+    rt_job *job = w->job;
+    const double off = job->o.corner_rays ? 0.0 : 0.5;
+    double xt[RT_TILE][4], xs[RT_TILE][4], yt[4], col[3];
+    rt_ray ray[RT_TILE];
+    int ok[RT_TILE], slot[RT_TILE];
+    for (int x = x0; x < x1; x++)
+        rt_camera_xterm(job->cam, x + off, xt[x - x0]);
+    for (int y = y0; y < y1; y++) {
+        /* the rays of a tile row first (independent, their divisions overlap), only those
+           not culled (slot -1: surely background) */
+        int n = 0;
+        const size_t row = (size_t)y * (size_t)job->gw;
+        const uint32_t *co = job->cand_off ? job->cand_off + row : NULL;
+        const uint8_t *cov = job->cover ? job->cover + row : NULL;
+        for (int x = x0; x < x1; x++) {
+            slot[x - x0] = -1;
+            if (co ? co[x + 1] != co[x] : !cov || cov[x]) {
+                memcpy(xs[n], xt[x - x0], sizeof xs[n]);
+                slot[x - x0] = n++;
             }
         }
-        return;
+        rt_camera_yterm(job->cam, y + off, yt);
+        rt_camera_rays_row(job->cam, (const double(*)[4])xs, n, yt, ray, ok);
+        for (int x = x0; x < x1; x++) {
+            const int k = slot[x - x0];
+            w->st.eye_rays++;
+            w->eye_hit = 0;
+            if (k >= 0 && ok[k]) {
+                const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
+                rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
+                         co ? &cd : NULL, col);
+            } else
+                memcpy(col, job->o.background, sizeof col);
+            rt_eye_store(w, x, y, col);
+        }
     }
+}
+
+/* m x m samples per pixel (jittered or at the sub-pixel centres), averaged */
+static void rt_tile_samples(rt_worker *w, int x0, int x1, int y0, int y1)
+{
+    rt_job *job = w->job;
+    const int m = job->m;
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++) {
             double acc[3] = {0, 0, 0}, col[3];
@@ -950,6 +1007,19 @@ static void rt_tile(rt_worker *w, int tile)
                 dst[c] = isfinite(v) ? (float)v : 0.0f;
             }
         }
+}
+
+static void rt_tile(rt_worker *w, int tile)
+{
+    rt_job *job = w->job;
+    int tx = tile % job->tiles_x, ty = tile / job->tiles_x;
+    int x0 = tx * RT_TILE, y0 = ty * RT_TILE;
+    int x1 = x0 + RT_TILE < job->gw ? x0 + RT_TILE : job->gw;
+    int y1 = y0 + RT_TILE < job->gh ? y0 + RT_TILE : job->gh;
+    if (job->o.corner_rays || (job->m == 1 && !job->o.jitter))
+        rt_tile_rows(w, x0, x1, y0, y1);
+    else
+        rt_tile_samples(w, x0, x1, y0, y1);
 }
 
 /* Corner mode, after all rays: pixel (x, y) = mean of corners (x, y), (x+1, y), (x, y+1),
@@ -1261,6 +1331,110 @@ static void rt_corner_cover(const rt_job *job)
                                                          h[(y + 1) * G + x] + h[(y + 1) * G + x + 1]);
 }
 
+/* the options' and the camera's checks; *m = the samples' grid side (samples = m * m) */
+static int rt_render_check(const rt_render_options *o, const rt_camera *cam, int *m)
+{
+    if (o->samples < 1 || o->samples > 4096 || o->max_depth < 1 || o->max_depth > RT_MAX_DEPTH ||
+        !isfinite(o->cutoff) || o->cutoff < 0.0 || o->threads < 0 || o->fresnel < 0 ||
+        o->fresnel > RT_FRESNEL_NONE)
+        return RT_ERR_ARG;
+    *m = 1;
+    while (*m * *m < o->samples)
+        (*m)++;
+    if (*m * *m != o->samples)
+        return RT_ERR_ARG;
+    for (int c = 0; c < 3; c++)
+        if (!isfinite(o->background[c]))
+            return RT_ERR_ARG;
+    if (cam->width < 1 || cam->height < 1 || cam->width > 65536 || cam->height > 65536)
+        return RT_ERR_ARG;
+    return RT_OK;
+}
+
+/* corner rays: the picture's edge row and column, and with a cover the corners' hit flags */
+static int rt_job_corner_bufs(rt_job *job)
+{
+    job->edge = rt_alloc_array((size_t)job->gw + (size_t)job->gh - 1, 3 * sizeof(float));
+    if (job->cover_out)
+        job->corner_hit = rt_alloc_array((size_t)job->gw, (size_t)job->gh);
+    if (!job->edge || (job->cover_out && !job->corner_hit)) {
+        free(job->edge);
+        free(job->corner_hit);
+        return RT_ERR_NOMEM;
+    }
+    return RT_OK;
+}
+
+/* nt workers (w from rt_calloc_array): shadow caches cleared, mailboxes, and with a tile hook
+   a payload buffer each (rt_job_release frees what was made, also after a failure) */
+static int rt_workers_init(rt_job *job, rt_worker *w, int nt, size_t max_payload)
+{
+    const rt_scene *sc = job->sc;
+    size_t ncache = (size_t)(job->o.max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
+    for (int k = 0; k < nt; k++) {
+        w[k].job = job;
+        w[k].shadow_cache = rt_alloc_array(ncache, sizeof(rt_scache));
+        if (!w[k].shadow_cache || rt_ctx_init(&w[k].ctx, sc) != RT_OK)
+            return RT_ERR_NOMEM;
+        if (job->hook && !(w[k].payload = rt_alloc_array(1, max_payload)))
+            return RT_ERR_NOMEM;
+        for (size_t a = 0; a < ncache; a++) {
+            for (int j = 0; j < RT_SCACHE; j++)
+                w[k].shadow_cache[a].id[j] = -1;
+            w[k].shadow_cache[a].live = 0;
+        }
+    }
+    return RT_OK;
+}
+
+/* the frame's statistics: the workers' and remote tiles' ray counts, the scene's figures */
+static void rt_job_stats(const rt_job *job, const rt_worker *w, int nt, rt_stats *out)
+{
+    const rt_scene *sc = job->sc;
+    rt_stats st = job->remote;
+    for (int k = 0; k < nt; k++)
+        rt_stats_add(&st, &w[k].st); /* workers count rays only; the rest is set below */
+    st.render_seconds = rt_now() - job->t0;
+    st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
+    st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;
+    st.prims = sc->nprim;
+    st.build_seconds = sc->build_seconds;
+    st.memory_bytes = sc->memory_bytes;
+    st.tri_bytes = sc->tri_bytes;
+    st.grid_bytes = sc->grid_bytes;
+    *out = st;
+}
+
+/* the tiles traced by nt workers on the pool's threads, the hook's begin and end around
+   them (the frame lives from begin to end), corner rays averaged and the cover made when the
+   frame is whole here. *traced: 0 when the hook's begin refused the frame (nothing traced) */
+static int rt_job_trace(rt_job *job, rt_worker *w, int nt, size_t max_payload, int *traced)
+{
+    rt_frame frame = {job};
+    *traced = 0;
+    if (job->hook && job->hook->begin &&
+        job->hook->begin(job->hook->user, &frame, job->ntiles, max_payload) < 0)
+        return RT_ERR_HOOK;
+    *traced = 1;
+    int rc = RT_OK;
+    pthread_mutex_init(&job->lock, NULL);
+    rt_prefault(job->rgb, (size_t)job->cam->width * (size_t)job->cam->height * 3 * sizeof(float));
+    rt_par_run(nt, rt_work_part, w); /* the pool's threads (rt_pool.c): tiles by a counter */
+    int whole = 1; /* the frame is complete here */
+    if (job->hook) {
+        int e = job->hook->end ? job->hook->end(job->hook->user, &frame) : 1;
+        if (e < 0 || atomic_load(&job->hook_failed))
+            rc = RT_ERR_HOOK;
+        whole = e > 0;
+    }
+    pthread_mutex_destroy(&job->lock);
+    if (job->o.corner_rays && whole && rc == RT_OK)
+        rt_corner_average(job);
+    if (job->corner_hit && whole && rc == RT_OK)
+        rt_corner_cover(job);
+    return rc;
+}
+
 int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
                     float *rgb, unsigned short *cover, rt_stats *stats)
 {
@@ -1275,19 +1449,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     else
         rt_render_options_default(&job.o);
     const rt_render_options *o = &job.o;
-    if (o->samples < 1 || o->samples > 4096 || o->max_depth < 1 || o->max_depth > RT_MAX_DEPTH ||
-        !isfinite(o->cutoff) || o->cutoff < 0.0 || o->threads < 0 || o->fresnel < 0 ||
-        o->fresnel > RT_FRESNEL_NONE)
-        return RT_ERR_ARG;
-    int m = 1;
-    while (m * m < o->samples)
-        m++;
-    if (m * m != o->samples)
-        return RT_ERR_ARG;
-    for (int c = 0; c < 3; c++)
-        if (!isfinite(o->background[c]))
-            return RT_ERR_ARG;
-    if (cam->width < 1 || cam->height < 1 || cam->width > 65536 || cam->height > 65536)
+    int m;
+    if (rt_render_check(o, cam, &m) != RT_OK)
         return RT_ERR_ARG;
     job.t0 = rt_now(); /* render_seconds: with the eye-ray lists and light buffers built here */
     job.sc = sc;
@@ -1297,16 +1460,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     job.gw = cam->width + (o->corner_rays ? 1 : 0);
     job.gh = cam->height + (o->corner_rays ? 1 : 0);
     job.cover_out = cover;
-    if (o->corner_rays) {
-        job.edge = rt_alloc_array((size_t)job.gw + (size_t)job.gh - 1, 3 * sizeof(float));
-        if (cover)
-            job.corner_hit = rt_alloc_array((size_t)job.gw, (size_t)job.gh);
-        if (!job.edge || (cover && !job.corner_hit)) {
-            free(job.edge);
-            free(job.corner_hit);
-            return RT_ERR_NOMEM;
-        }
-    }
+    if (o->corner_rays && rt_job_corner_bufs(&job) != RT_OK)
+        return RT_ERR_NOMEM;
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
         const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh,
                                          rt_par_threads(o->threads));
@@ -1329,7 +1484,6 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         if (rc == RT_OK)
             rc = RT_ERR_ARG;
     }
-    rt_frame frame = {&job};
     int tx0, tx1, ty0, ty1; /* tile 0 is a largest tile */
     const size_t max_payload = rt_tile_rect(&job, 0, &tx0, &tx1, &ty0, &ty1);
     int nt = rt_par_threads(o->threads);
@@ -1338,59 +1492,13 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     rt_worker *w = rt_calloc_array((size_t)nt, sizeof *w);
     if (!w)
         rc = RT_ERR_NOMEM;
-    size_t ncache = (size_t)(o->max_depth + 1) * (size_t)(sc->nlights > 0 ? sc->nlights : 1);
-    for (int k = 0; k < nt && rc == RT_OK; k++) {
-        w[k].job = &job;
-        w[k].shadow_cache = rt_alloc_array(ncache, sizeof(rt_scache));
-        if (!w[k].shadow_cache || rt_ctx_init(&w[k].ctx, sc) != RT_OK) {
-            rc = RT_ERR_NOMEM;
-            break;
-        }
-        if (job.hook && !(w[k].payload = rt_alloc_array(1, max_payload))) {
-            rc = RT_ERR_NOMEM;
-            break;
-        }
-        for (size_t a = 0; a < ncache; a++) {
-            for (int j = 0; j < RT_SCACHE; j++)
-                w[k].shadow_cache[a].id[j] = -1;
-            w[k].shadow_cache[a].live = 0;
-        }
-    }
-    if (rc == RT_OK && job.hook && job.hook->begin &&
-        job.hook->begin(job.hook->user, &frame, job.ntiles, max_payload) < 0)
-        rc = RT_ERR_HOOK;
-    if (rc != RT_OK) {
-        rt_job_release(&job, w, nt);
-        return rc;
-    }
-    pthread_mutex_init(&job.lock, NULL);
-    rt_prefault(rgb, (size_t)cam->width * (size_t)cam->height * 3 * sizeof(float));
-    rt_par_run(nt, rt_work_part, w); /* the pool's threads (rt_pool.c): tiles by a counter */
-    int whole = 1; /* the frame is complete here */
-    if (job.hook) {
-        int e = job.hook->end ? job.hook->end(job.hook->user, &frame) : 1;
-        if (e < 0 || atomic_load(&job.hook_failed))
-            rc = RT_ERR_HOOK;
-        whole = e > 0;
-    }
-    pthread_mutex_destroy(&job.lock);
-    if (o->corner_rays && whole && rc == RT_OK)
-        rt_corner_average(&job);
-    if (job.corner_hit && whole && rc == RT_OK)
-        rt_corner_cover(&job);
-    rt_stats st = job.remote;
-    for (int k = 0; k < nt; k++)
-        rt_stats_add(&st, &w[k].st); /* workers count rays only; the rest is set below */
-    st.render_seconds = rt_now() - job.t0;
-    st.grid_cells = sc->use_grid ? sc->grid.ncells + sc->grid.nsubcells : 0;
-    st.grid_refs = sc->use_grid ? sc->grid.nrefs + sc->grid.nsrefs : 0;
-    st.prims = sc->nprim;
-    st.build_seconds = sc->build_seconds;
-    st.memory_bytes = sc->memory_bytes;
-    st.tri_bytes = sc->tri_bytes;
-    st.grid_bytes = sc->grid_bytes;
-    if (stats)
-        *stats = st;
+    if (rc == RT_OK)
+        rc = rt_workers_init(&job, w, nt, max_payload);
+    int traced = 0;
+    if (rc == RT_OK)
+        rc = rt_job_trace(&job, w, nt, max_payload, &traced);
+    if (traced && stats)
+        rt_job_stats(&job, w, nt, stats);
     rt_job_release(&job, w, nt);
     return rc;
 }
