@@ -105,32 +105,15 @@ static void rt_norm3(double v[3])
     v[2] = c / l;
 }
 
-int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
-                        int width, int height)
+/* the 8 corners of the NPC box through c->minv: w of all 8 must be non-zero with one sign
+   (w is affine in NPC, so the whole volume is then finite) */
+static int rt_cam_corners(rt_camera *c, const double npc_box[6])
 {
-    if (!cam || !vmap || !npc_box)
-        return RT_ERR_ARG;
-    if (width < 1 || height < 1 || width > 65536 || height > 65536)
-        return RT_ERR_ARG;
-    for (int i = 0; i < 6; i++)
-        if (!isfinite(npc_box[i]))
-            return RT_ERR_ARG;
-    if (!(npc_box[0] < npc_box[1]) || !(npc_box[2] < npc_box[3]) || !(npc_box[4] < npc_box[5]))
-        return RT_ERR_ARG;
-    rt_camera c;
-    memset(&c, 0, sizeof c);
-    c.width = width;
-    c.height = height;
-    memcpy(c.box, npc_box, sizeof c.box);
-    if (!rt_invert4(vmap, c.minv))
-        return RT_ERR_SINGULAR;
-    /* corners: w of all 8 must be non-zero with one sign (w is affine in NPC, so the whole
-       volume is then finite) */
     double wsign = 0.0;
     for (int k = 0; k < 8; k++) {
         double v[4] = {npc_box[k & 1 ? 1 : 0], npc_box[k & 2 ? 3 : 2], npc_box[k & 4 ? 5 : 4], 1.0};
         double h[4];
-        rt_mul4(c.minv, v, h);
+        rt_mul4(c->minv, v, h);
         double hm = fmax(fabs(h[0]), fmax(fabs(h[1]), fabs(h[2])));
         if (!(fabs(h[3]) > 1e-12 * hm))
             return RT_ERR_SINGULAR;
@@ -139,53 +122,64 @@ int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double np
         else if ((h[3] > 0.0 ? 1.0 : -1.0) != wsign)
             return RT_ERR_SINGULAR;
         for (int i = 0; i < 3; i++)
-            c.corner[k][i] = h[i] / h[3];
-        if (!isfinite(c.corner[k][0]) || !isfinite(c.corner[k][1]) || !isfinite(c.corner[k][2]))
+            c->corner[k][i] = h[i] / h[3];
+        if (!isfinite(c->corner[k][0]) || !isfinite(c->corner[k][1]) || !isfinite(c->corner[k][2]))
             return RT_ERR_SINGULAR;
     }
-    /* projection reference point / direction of projection */
-    double P[4] = {c.minv[0][2], c.minv[1][2], c.minv[2][2], c.minv[3][2]};
+    return RT_OK;
+}
+
+/* projection reference point or direction of projection, and the size of the volume;
+   cen = the volume's centre */
+static void rt_cam_projection(rt_camera *c, double cen[3])
+{
+    double P[4] = {c->minv[0][2], c->minv[1][2], c->minv[2][2], c->minv[3][2]};
     double pm = fmax(fabs(P[0]), fmax(fabs(P[1]), fabs(P[2])));
     double axis[3]; /* front -> back through the volume centre */
-    double cf[3] = {0, 0, 0}, cbk[3] = {0, 0, 0}, cen[3] = {0, 0, 0};
+    double cf[3] = {0, 0, 0}, cbk[3] = {0, 0, 0};
+    cen[0] = cen[1] = cen[2] = 0.0;
     for (int k = 0; k < 8; k++)
         for (int i = 0; i < 3; i++) {
             if (k & 4)
-                cf[i] += 0.25 * c.corner[k][i];
+                cf[i] += 0.25 * c->corner[k][i];
             else
-                cbk[i] += 0.25 * c.corner[k][i];
-            cen[i] += 0.125 * c.corner[k][i];
+                cbk[i] += 0.25 * c->corner[k][i];
+            cen[i] += 0.125 * c->corner[k][i];
         }
     for (int i = 0; i < 3; i++)
         axis[i] = cbk[i] - cf[i];
     if (fabs(P[3]) > 1e-12 * pm) {
-        c.perspective = 1;
+        c->perspective = 1;
         for (int i = 0; i < 3; i++)
-            c.prp[i] = P[i] / P[3];
+            c->prp[i] = P[i] / P[3];
         for (int i = 0; i < 3; i++)
-            c.dop[i] = axis[i];
+            c->dop[i] = axis[i];
     } else {
-        c.perspective = 0;
+        c->perspective = 0;
         for (int i = 0; i < 3; i++)
-            c.dop[i] = P[i];
-        if (c.dop[0] * axis[0] + c.dop[1] * axis[1] + c.dop[2] * axis[2] < 0.0)
+            c->dop[i] = P[i];
+        if (c->dop[0] * axis[0] + c->dop[1] * axis[1] + c->dop[2] * axis[2] < 0.0)
             for (int i = 0; i < 3; i++)
-                c.dop[i] = -c.dop[i];
+                c->dop[i] = -c->dop[i];
     }
-    rt_norm3(c.dop);
-    /* size of the volume */
+    rt_norm3(c->dop);
     double s = 0.0;
     for (int k = 0; k < 8; k++)
         for (int i = 0; i < 3; i++)
-            s = fmax(s, fabs(c.corner[k][i] - cen[i]));
-    c.scale = s;
-    /* clipping planes: faces by corner index bits; inside contains the centre */
+            s = fmax(s, fabs(c->corner[k][i] - cen[i]));
+    c->scale = s;
+}
+
+/* clipping planes: faces by corner index bits; inside contains the centre cen */
+static int rt_cam_planes(rt_camera *c, const double cen[3])
+{
     static const int face[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                    {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    const double s = c->scale;
     for (int f = 0; f < 6; f++) {
         double n[3] = {0, 0, 0}, q[3] = {0, 0, 0};
         for (int e = 0; e < 4; e++) {
-            const double *a = c.corner[face[f][e]], *b = c.corner[face[f][(e + 1) & 3]];
+            const double *a = c->corner[face[f][e]], *b = c->corner[face[f][(e + 1) & 3]];
             double ax = a[0] - cen[0], ay = a[1] - cen[1], az = a[2] - cen[2];
             double bx = b[0] - cen[0], by = b[1] - cen[1], bz = b[2] - cen[2];
             n[0] += (ay - by) * (az + bz);
@@ -205,9 +199,37 @@ int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double np
             d = -d;
         }
         for (int i = 0; i < 3; i++)
-            c.plane[f][i] = n[i];
-        c.plane[f][3] = d;
+            c->plane[f][i] = n[i];
+        c->plane[f][3] = d;
     }
+    return RT_OK;
+}
+
+int rt_camera_from_view(rt_camera *cam, const double vmap[4][4], const double npc_box[6],
+                        int width, int height)
+{
+    if (!cam || !vmap || !npc_box)
+        return RT_ERR_ARG;
+    if (width < 1 || height < 1 || width > 65536 || height > 65536)
+        return RT_ERR_ARG;
+    for (int i = 0; i < 6; i++)
+        if (!isfinite(npc_box[i]))
+            return RT_ERR_ARG;
+    if (!(npc_box[0] < npc_box[1]) || !(npc_box[2] < npc_box[3]) || !(npc_box[4] < npc_box[5]))
+        return RT_ERR_ARG;
+    rt_camera c;
+    memset(&c, 0, sizeof c);
+    c.width = width;
+    c.height = height;
+    memcpy(c.box, npc_box, sizeof c.box);
+    if (!rt_invert4(vmap, c.minv))
+        return RT_ERR_SINGULAR;
+    double cen[3];
+    if (rt_cam_corners(&c, npc_box) != RT_OK)
+        return RT_ERR_SINGULAR;
+    rt_cam_projection(&c, cen);
+    if (rt_cam_planes(&c, cen) != RT_OK)
+        return RT_ERR_SINGULAR;
     /* raster on the front plane */
     double dx = (npc_box[1] - npc_box[0]) / width, dy = (npc_box[3] - npc_box[2]) / height;
     double o[3], a[3], b[3];

@@ -381,26 +381,24 @@ static void rt_lbuf_fill_part(void *arg, int k, int n)
     }
 }
 
-/* The light buffer of light l over the scene: RT_LBUF_CELLS_PER_PRIM cells per primitive
- * (chosen on SPD gears, docs/bench/rt_tuning.md). */
-int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb)
+/* The frame of light l's buffer over the scene box: axes, projected box, cells, depth
+ * buckets; *mx, *my the box margin in cell units. 0: no buffer for this light (no axes, the
+ * scene not wholly in front of the light, an empty extent). */
+static int rt_lbuf_layout(const rt_scene *sc, const rt_light *l, rt_lbuf *lb, double *mx,
+                          double *my)
 {
-    memset(lb, 0, sizeof *lb);
-    if (l->type != RT_LIGHT_POSITIONAL && l->type != RT_LIGHT_SPOT &&
-        l->type != RT_LIGHT_DIRECTIONAL)
-        return RT_OK;
     lb->ortho = l->type == RT_LIGHT_DIRECTIONAL;
     const double *B = sc->bbox;
     if (!rt_lbuf_axes(lb, B, l))
-        return RT_OK;
+        return 0;
     double R[4], zmin, zmax;
     if (!rt_lbuf_proj_box(lb, B, R, &zmin, &zmax))
-        return RT_OK;
+        return 0;
     if (!lb->ortho && !(zmin > RT_LBUF_NEAR * zmax))
-        return RT_OK;
+        return 0;
     const double wu = R[2] - R[0], wv = R[3] - R[1], ext = wu > wv ? wu : wv;
     if (!(ext > 0.0) || !isfinite(ext))
-        return RT_OK;
+        return 0;
     /* cells: about square, a degenerate extent (flat scene seen edge-on) gets one row */
     double target = RT_LBUF_CELLS_PER_PRIM * (double)sc->nprim;
     target = target < RT_LBUF_MIN_CELLS ? RT_LBUF_MIN_CELLS : target;
@@ -420,8 +418,68 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *l
     lb->zeps = RT_LBUF_BOX_MARGIN * (fabs(zmax) + fabs(zmin));
     lb->zlo = zmin;
     lb->zscale = zmax > zmin ? (double)RT_LBUF_BUCKETS / (zmax - zmin) : 0.0;
-    const double mx = e * lb->su, my = e * lb->sv; /* the margin e in cell units */
+    *mx = e * lb->su; /* the margin e in cell units */
+    *my = e * lb->sv;
+    return 1;
+}
 
+/* the primitives projected by nt parts: their spans counted (*total list entries, *nspans) */
+static int rt_lbuf_project_all(rt_lbuf_job *j, int nt, size_t *total, size_t *nspans)
+{
+    int rc = RT_OK;
+    rt_par_run(nt, rt_lbuf_project_part, j);
+    for (int k = 0; k < nt; k++) {
+        const int prc = j->part[k].rc;
+        if (prc != 1 && rc == RT_OK)
+            rc = prc == -1 ? RT_ERR_NOMEM : RT_ERR_LIMIT; /* LIMIT here: no buffer */
+        j->part[k].base = *nspans;
+        *nspans += j->part[k].nspans;
+        *total += j->part[k].total;
+    }
+    return rc;
+}
+
+/* the cells' lists from the gathered spans (nt parts; nc cells, total entries) */
+static void rt_lbuf_lists(rt_lbuf_job *j, int nt, size_t nc, size_t total)
+{
+    const rt_scene *sc = j->sc;
+    rt_lbuf *lb = j->lb;
+    uint32_t *order = j->order;
+    rt_par_run(nt, rt_lbuf_gather_part, j);
+    /* the primitives in bucket order (counting sort): each list is in that order */
+    uint32_t *bcount = order + sc->nprim;
+    for (uint32_t b = 0; b <= RT_LBUF_BUCKETS; b++)
+        for (int k = 0; k < nt; k++)
+            bcount[b] += j->part[k].bcount[b];
+    for (uint32_t b = 0; b < RT_LBUF_BUCKETS; b++)
+        bcount[b + 1] += bcount[b];
+    for (size_t i = 0; i < sc->nprim; i++)
+        order[bcount[lb->zb[i]]++] = (uint32_t)i;
+    int nr = nt < lb->nv ? nt : lb->nv; /* parts of rows */
+    rt_par_run(nr, rt_lbuf_count_part, j);
+    size_t run = 0;
+    for (int k = 0; k < nr; k++) {
+        const size_t t = j->part[k].base;
+        j->part[k].base = run;
+        run += t;
+    }
+    rt_par_run(nr, rt_lbuf_fill_part, j);
+    memmove(lb->off, lb->off + 1, nc * sizeof(uint32_t)); /* off[c]: cell c's start */
+    lb->off[nc] = (uint32_t)total;
+    lb->ok = 1;
+}
+
+/* The light buffer of light l over the scene: RT_LBUF_CELLS_PER_PRIM cells per primitive
+ * (chosen on SPD gears, docs/bench/rt_tuning.md). */
+int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb)
+{
+    memset(lb, 0, sizeof *lb);
+    if (l->type != RT_LIGHT_POSITIONAL && l->type != RT_LIGHT_SPOT &&
+        l->type != RT_LIGHT_DIRECTIONAL)
+        return RT_OK;
+    double mx, my;
+    if (!rt_lbuf_layout(sc, l, lb, &mx, &my))
+        return RT_OK;
     const size_t nc = (size_t)lb->nu * (size_t)lb->nv;
     /* order: the primitives sorted by bucket, then RT_LBUF_BUCKETS + 1 counters */
     uint32_t *order = rt_calloc_array(sc->nprim + RT_LBUF_BUCKETS + 1, sizeof(uint32_t));
@@ -440,17 +498,8 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *l
     j.part = rt_calloc_array((size_t)nt, sizeof *j.part);
     int rc = j.first && j.part ? RT_OK : RT_ERR_NOMEM;
     size_t total = 0, nspans = 0;
-    if (rc == RT_OK) {
-        rt_par_run(nt, rt_lbuf_project_part, &j);
-        for (int k = 0; k < nt; k++) {
-            const int prc = j.part[k].rc;
-            if (prc != 1 && rc == RT_OK)
-                rc = prc == -1 ? RT_ERR_NOMEM : RT_ERR_LIMIT; /* LIMIT here: no buffer */
-            j.part[k].base = nspans;
-            nspans += j.part[k].nspans;
-            total += j.part[k].total;
-        }
-    }
+    if (rc == RT_OK)
+        rc = rt_lbuf_project_all(&j, nt, &total, &nspans);
     if (rc == RT_OK && (total > RT_LBUF_MAX_ENTRIES || nspans > UINT32_MAX - 1))
         rc = RT_ERR_LIMIT;
     if (rc == RT_OK) {
@@ -460,30 +509,8 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *l
         if (!j.rs || !lb->ids)
             rc = RT_ERR_NOMEM;
     }
-    if (rc == RT_OK) {
-        rt_par_run(nt, rt_lbuf_gather_part, &j);
-        /* the primitives in bucket order (counting sort): each list is in that order */
-        uint32_t *bcount = order + sc->nprim;
-        for (uint32_t b = 0; b <= RT_LBUF_BUCKETS; b++)
-            for (int k = 0; k < nt; k++)
-                bcount[b] += j.part[k].bcount[b];
-        for (uint32_t b = 0; b < RT_LBUF_BUCKETS; b++)
-            bcount[b + 1] += bcount[b];
-        for (size_t i = 0; i < sc->nprim; i++)
-            order[bcount[lb->zb[i]]++] = (uint32_t)i;
-        int nr = nt < lb->nv ? nt : lb->nv; /* parts of rows */
-        rt_par_run(nr, rt_lbuf_count_part, &j);
-        size_t run = 0;
-        for (int k = 0; k < nr; k++) {
-            const size_t t = j.part[k].base;
-            j.part[k].base = run;
-            run += t;
-        }
-        rt_par_run(nr, rt_lbuf_fill_part, &j);
-        memmove(lb->off, lb->off + 1, nc * sizeof(uint32_t)); /* off[c]: cell c's start */
-        lb->off[nc] = (uint32_t)total;
-        lb->ok = 1;
-    }
+    if (rc == RT_OK)
+        rt_lbuf_lists(&j, nt, nc, total);
     for (int k = 0; j.part && k < nt; k++)
         rt_lbuf_proj2_free(&j.part[k].pp);
     free(j.part);

@@ -109,21 +109,9 @@ static void pg_edge_cells(pg_pass *ps, const double *e, double m)
     }
 }
 
-int rt_pgrid_build(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32_t nloops,
-                   double umin, double umax, double vmin, double vmax)
+/* the polygon's edges (zero-length ones left out) into g->e, stored with v0 <= v1 */
+static void pg_edges(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32_t nloops)
 {
-    memset(g, 0, sizeof *g);
-    size_t nv = 0;
-    for (uint32_t l = 0; l < nloops; l++)
-        nv += counts[l];
-    const double w = umax - umin, h = vmax - vmin;
-    if (!(w > 0.0) || !(h > 0.0) || !isfinite(w * h) || nv < 3 || nv > UINT32_MAX / 4)
-        return -1;
-    /* margin: far above the rounding of the coordinates, far below a cell */
-    const double m = 1e-9 * (w + h + fabs(umin) + fabs(umax) + fabs(vmin) + fabs(vmax));
-    g->e = rt_alloc_array(nv, 4 * sizeof *g->e);
-    if (!g->e)
-        return -1;
     const double *lu = uv;
     for (uint32_t l = 0; l < nloops; l++) {
         uint32_t cnt = counts[l];
@@ -139,12 +127,17 @@ int rt_pgrid_build(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32
         }
         lu += 2 * (size_t)cnt;
     }
-    /* about one cell per edge, shaped like the box; long edges meet many cells, so the grid
-       shrinks until the lists hold at most 48 entries per edge (the slabs' budget of 256
-       bytes per edge, in 4-byte entries plus the edge copy) */
+}
+
+/* the grid's size and the per-cell counts (ps->cnt, ps->total): about one cell per edge,
+   shaped like the box (w x h from umin, vmin; margin m); long edges meet many cells, so the
+   grid shrinks until the lists hold at most 48 entries per edge (the slabs' budget of 256
+   bytes per edge, in 4-byte entries plus the edge copy). -1: no memory */
+static int pg_size(rt_pgrid *g, pg_pass *ps, double umin, double vmin, double w, double h,
+                   double m)
+{
     double cells = (double)g->ne;
     const size_t budget = 48 * g->ne + 4096;
-    pg_pass ps = { .g = g };
     for (;;) {
         double gu = ceil(sqrt(cells * w / h)), gv = ceil(cells / gu);
         g->gu = (int)fmin(fmax(gu, 1.0), 2048.0);
@@ -154,19 +147,72 @@ int rt_pgrid_build(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32
         g->inv_du = (double)g->gu / (w + 4 * m);
         g->inv_dv = (double)g->gv / (h + 4 * m);
         size_t nc = (size_t)g->gu * (size_t)g->gv;
-        ps.cnt = rt_calloc_array(nc, sizeof *ps.cnt);
-        if (!ps.cnt) {
-            rt_pgrid_free(g);
+        ps->cnt = rt_calloc_array(nc, sizeof *ps->cnt);
+        if (!ps->cnt)
             return -1;
-        }
-        ps.total = 0;
-        for (size_t k = 0; k < g->ne && ps.total <= budget; k++)
-            pg_edge_cells(&ps, g->e + 4 * k, m);
-        if (ps.total <= budget || nc == 1)
-            break;
-        free(ps.cnt);
-        ps.cnt = NULL;
+        ps->total = 0;
+        for (size_t k = 0; k < g->ne && ps->total <= budget; k++)
+            pg_edge_cells(ps, g->e + 4 * k, m);
+        if (ps->total <= budget || nc == 1)
+            return 0;
+        free(ps->cnt);
+        ps->cnt = NULL;
         cells = fmax(1.0, (double)nc * 0.5);
+    }
+}
+
+/* corner parities: per row line j, each straddling edge toggles the corners c = 1..k with L
+   true at (xs[c], vs[j]) (L falls as c grows); then a suffix XOR per row */
+static void pg_corners(rt_pgrid *g)
+{
+    for (size_t k = 0; k < g->ne; k++) {
+        const double *e = g->e + 4 * k;
+        if (!(e[3] > e[1]))
+            continue;
+        int j = clampi((e[1] - g->v0) * g->inv_dv, g->gv);
+        while (j > 0 && g->vs[j] >= e[1])
+            j--;
+        while (j < g->gv && g->vs[j] < e[1])
+            j++;
+        for (; j < g->gv && g->vs[j] < e[3]; j++) { /* e[1] <= vs[j] < e[3] */
+            const double vj = g->vs[j];
+            double uc = e[0] + (vj - e[1]) * ((e[2] - e[0]) / (e[3] - e[1]));
+            int c = clampi((uc - g->u0) * g->inv_du, g->gu + 1);
+            while (c < g->gu && rt_pg_left(e, g->xs[c + 1], vj))
+                c++;
+            while (c >= 1 && !rt_pg_left(e, g->xs[c], vj))
+                c--;
+            if (c >= 1) /* corners of cells 0..c-1 (right side xs[1..c]) */
+                g->corner[(size_t)j * (size_t)g->gu + (size_t)(c - 1)] ^= 1;
+        }
+    }
+    for (int j = 0; j < g->gv; j++) {
+        uint8_t *row = g->corner + (size_t)j * (size_t)g->gu;
+        for (int i = g->gu - 2; i >= 0; i--)
+            row[i] ^= row[i + 1];
+    }
+}
+
+int rt_pgrid_build(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32_t nloops,
+                   double umin, double umax, double vmin, double vmax)
+{
+    memset(g, 0, sizeof *g);
+    size_t nv = 0;
+    for (uint32_t l = 0; l < nloops; l++)
+        nv += counts[l];
+    const double w = umax - umin, h = vmax - vmin;
+    if (!(w > 0.0) || !(h > 0.0) || !isfinite(w * h) || nv < 3 || nv > UINT32_MAX / 4)
+        return -1;
+    /* margin: far above the rounding of the coordinates, far below a cell */
+    const double m = 1e-9 * (w + h + fabs(umin) + fabs(umax) + fabs(vmin) + fabs(vmax));
+    g->e = rt_alloc_array(nv, 4 * sizeof *g->e);
+    if (!g->e)
+        return -1;
+    pg_edges(g, uv, counts, nloops);
+    pg_pass ps = { .g = g };
+    if (pg_size(g, &ps, umin, vmin, w, h, m) != 0) {
+        rt_pgrid_free(g);
+        return -1;
     }
     const size_t nc = (size_t)g->gu * (size_t)g->gv;
     g->nref = ps.total;
@@ -195,34 +241,7 @@ int rt_pgrid_build(rt_pgrid *g, const double *uv, const uint32_t *counts, uint32
         g->xs[i] = g->u0 + (double)i / g->inv_du;
     for (int j = 0; j <= g->gv; j++)
         g->vs[j] = g->v0 + (double)j / g->inv_dv;
-    /* corner parities: per row line j, each straddling edge toggles the corners c = 1..k
-       with L true at (xs[c], vs[j]) (L falls as c grows); then a suffix XOR per row */
-    for (size_t k = 0; k < g->ne; k++) {
-        const double *e = g->e + 4 * k;
-        if (!(e[3] > e[1]))
-            continue;
-        int j = clampi((e[1] - g->v0) * g->inv_dv, g->gv);
-        while (j > 0 && g->vs[j] >= e[1])
-            j--;
-        while (j < g->gv && g->vs[j] < e[1])
-            j++;
-        for (; j < g->gv && g->vs[j] < e[3]; j++) { /* e[1] <= vs[j] < e[3] */
-            const double vj = g->vs[j];
-            double uc = e[0] + (vj - e[1]) * ((e[2] - e[0]) / (e[3] - e[1]));
-            int c = clampi((uc - g->u0) * g->inv_du, g->gu + 1);
-            while (c < g->gu && rt_pg_left(e, g->xs[c + 1], vj))
-                c++;
-            while (c >= 1 && !rt_pg_left(e, g->xs[c], vj))
-                c--;
-            if (c >= 1) /* corners of cells 0..c-1 (right side xs[1..c]) */
-                g->corner[(size_t)j * (size_t)g->gu + (size_t)(c - 1)] ^= 1;
-        }
-    }
-    for (int j = 0; j < g->gv; j++) {
-        uint8_t *row = g->corner + (size_t)j * (size_t)g->gu;
-        for (int i = g->gu - 2; i >= 0; i--)
-            row[i] ^= row[i + 1];
-    }
+    pg_corners(g);
     return 0;
 }
 
