@@ -9,7 +9,8 @@
  *    89/89.9/89.99 degree shadow-acne sweep (also translated by 1e6),  4 axis-aligned box room
  *    on grid-cell boundaries with +-0 direction components: grid == brute force bit for bit
  *    (also the rotated grid frame, on SPD gears seen obliquely),
- *  5 coplanar/overlapping polygons,  6 concave, self-intersecting, repeated-vertex, collinear,
+ *  5 coplanar/overlapping polygons (also through random rotations: the later area wins),
+ *  6 concave, self-intersecting, repeated-vertex, collinear,
  *    non-planar polygons and the 144-vertex polygons of SPD gears,  7 teapot in a stadium
  *    (grid statistics),  8 dielectrics (TIR, nested media by relative indices, index 1),
  *  9 near-singular viewing input,  10 NaN/Inf in primitives, rays and matrices.
@@ -902,6 +903,104 @@ static void test_coplanar(void **state)
     rt_scene_free(sc);
 }
 
+/* coplanar areas through random rotations, translations and scales (docs/RAYTRACING.md,
+   "Coplanar surfaces"): each vertex is rotated in double, so the areas are coplanar only up to
+   rounding. A: a floor (two triangles) and three rugs in its plane drawn after it (a quad, a
+   pentagon, a triangle): every ray aimed inside a rug must hit the rug (the later area wins a
+   tie). B: a mat lifted 1e-10 of the scene's magnitude above the floor (far above the tie
+   bound, 16 sqrt(3) 2^-53 / cos) and drawn first: every ray aimed inside it must hit the mat
+   (the bound does not make real gaps tie). */
+static void rot_point(const double R[3][3], const double T[3], double sc, const double p[3],
+                      double out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = T[i] + sc * (R[i][0] * p[0] + R[i][1] * p[1] + R[i][2] * p[2]);
+}
+
+static int add_local(rt_scene *sc, int n, const double *lp, const double R[3][3], const double T[3],
+                     double scale, int s)
+{
+    double v[15];
+    for (int k = 0; k < n; k++)
+        rot_point(R, T, scale, lp + 3 * k, v + 3 * k);
+    return add_poly(sc, n, v, s);
+}
+
+static void test_coplanar_rotated(void **state)
+{
+    (void)state;
+    uint64_t st = 0x243F6A8885A308D3ULL;
+    size_t nrays = 0, wrong_a = 0, wrong_b = 0;
+    for (int trial = 0; trial < 120; trial++) {
+        double a = 2 * PI * rtu_rand(&st), b = PI * rtu_rand(&st), c = 2 * PI * rtu_rand(&st);
+        const double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b), cc = cos(c), sc2 = sin(c);
+        /* R = Rz(a) Rx(b) Rz(c): orthonormal rows */
+        const double R[3][3] = {{ca * cc - sa * cb * sc2, -ca * sc2 - sa * cb * cc, sa * sb},
+                                {sa * cc + ca * cb * sc2, -sa * sc2 + ca * cb * cc, -ca * sb},
+                                {sb * sc2, sb * cc, cb}};
+        const double mag = pow(10.0, (double)(trial % 4)), scale = trial % 3 == 0 ? 1e3 : 1.0;
+        double T[3];
+        for (int i = 0; i < 3; i++)
+            T[i] = mag * (2 * rtu_rand(&st) - 1);
+        const double delta = 1e-10 * fmax(mag, 2.0 * scale) / scale; /* B's lift, local units */
+        for (int part = 0; part < 2; part++) {
+            rt_scene *sc = rt_scene_new();
+            int s = surf_plain(sc);
+            const double fl[2][9] = {{-2, -2, 0, 2, -2, 0, 2, 2, 0}, {-2, -2, 0, 2, 2, 0, -2, 2, 0}};
+            const double quad[12] = {-1.5, -1, 0, -0.5, -1, 0, -0.5, 1, 0, -1.5, 1, 0};
+            const double pent[15] = {0, 0, 0, 1, 0, 0, 1.3, 0.8, 0, 0.5, 1.4, 0, -0.2, 0.8, 0};
+            const double tri[9] = {1, -1.5, 0, 1.8, -1.5, 0, 1.4, -0.5, 0};
+            const double mat[12] = {-1, -1, delta, 1, -1, delta, 1, 1, delta, -1, 1, delta};
+            int want[3];
+            if (part == 0) {
+                add_local(sc, 3, fl[0], R, T, scale, s);
+                add_local(sc, 3, fl[1], R, T, scale, s);
+                want[0] = add_local(sc, 4, quad, R, T, scale, s);
+                want[1] = add_local(sc, 5, pent, R, T, scale, s);
+                want[2] = add_local(sc, 3, tri, R, T, scale, s);
+            } else {
+                want[0] = want[1] = want[2] = add_local(sc, 4, mat, R, T, scale, s);
+                add_local(sc, 3, fl[0], R, T, scale, s);
+                add_local(sc, 3, fl[1], R, T, scale, s);
+            }
+            assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+            /* targets well inside each rug (part B: inside the mat) */
+            const double tg[3][2] = {{-1.0, 0.0}, {0.55, 0.6}, {1.4, -1.2}};
+            const double rad[3] = {0.4, 0.35, 0.15};
+            for (int k = 0; k < 60; k++) {
+                const int r = k % 3;
+                double lt[3] = {tg[r][0] + rad[r] * (2 * rtu_rand(&st) - 1),
+                                tg[r][1] + rad[r] * (2 * rtu_rand(&st) - 1), part ? delta : 0.0};
+                if (part)
+                    lt[0] = 1.8 * rtu_rand(&st) - 0.9, lt[1] = 1.8 * rtu_rand(&st) - 0.9;
+                const double h = 0.5 + 2.5 * rtu_rand(&st);
+                double lo[3] = {lt[0] + 3 * h * (2 * rtu_rand(&st) - 1), lt[1] + 3 * h * (2 * rtu_rand(&st) - 1), h};
+                double o[3], p[3], d[3];
+                rot_point(R, T, scale, lo, o);
+                rot_point(R, T, scale, lt, p);
+                for (int i = 0; i < 3; i++)
+                    d[i] = p[i] - o[i];
+                rt_ray ray;
+                ray_set(&ray, o, d);
+                rt_hit hit;
+                assert_int_equal(rt_intersect(sc, 1, &ray, &hit), RT_OK);
+                nrays++;
+                if (hit.prim != want[r]) {
+                    if (part == 0)
+                        wrong_a++;
+                    else
+                        wrong_b++;
+                }
+            }
+            rt_scene_free(sc);
+        }
+    }
+    printf("coplanar, rotated: %zu rays, %zu not on the later rug (A), %zu not on the lifted mat (B)\n",
+           nrays, wrong_a, wrong_b);
+    assert_int_equal(wrong_a, 0);
+    assert_int_equal(wrong_b, 0);
+}
+
 /* ---- 6: difficult polygons ---- */
 
 /* even-odd reference in 2-D (x, y) over all loops; distance of (x,y) to the outline in *dmin */
@@ -1679,7 +1778,7 @@ int main(void)
         cmocka_unit_test(test_box_room),          cmocka_unit_test(test_rotated_grid),
         cmocka_unit_test(test_grid_frame_choice),
         cmocka_unit_test(test_grid_levels),
-        cmocka_unit_test(test_coplanar),
+        cmocka_unit_test(test_coplanar),          cmocka_unit_test(test_coplanar_rotated),
         cmocka_unit_test(test_polygons),          cmocka_unit_test(test_gears_polygons),
         cmocka_unit_test(test_teapot_stadium),    cmocka_unit_test(test_tir),
         cmocka_unit_test(test_nested_media),      cmocka_unit_test(test_index_one),
