@@ -39,11 +39,17 @@ void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
    maximum norms used for the magnitudes to the Euclidean length. */
 #define RT_HIT_K (16.0 * 1.7320508075688772 * 0x1p-53)
 
+/* max(a, b) of non-negative values, inline (fmax is a libm call here) */
+static inline double rt_max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
 static double rt_absmax(const double *v, int n)
 {
     double m = 0.0;
     for (int k = 0; k < n; k++)
-        m = fmax(m, fabs(v[k]));
+        m = rt_max2(m, fabs(v[k]));
     return m;
 }
 
@@ -85,12 +91,34 @@ static double rt_prim_mag(const rt_scene *sc, size_t i, const double p[3])
    plane. */
 static double rt_hit_err(const rt_scene *sc, const rt_rayx *r, size_t i, double t)
 {
-    double ng[3], p[3];
-    rt_prim_ng(sc, i, ng);
+    double ng[3], p[3], den, mag = 0.0;
+    const rt_prim *pr = &sc->prim[i];
     for (int k = 0; k < 3; k++)
         p[k] = r->o[k] + t * r->d[k];
-    const double den = fabs(ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2]);
-    const double s = fmax(rt_prim_mag(sc, i, p), fmax(rt_absmax(r->o, 3), rt_absmax(p, 3)));
+    double m = 0.0;
+    if (pr->kind == RT_KIND_TRI) {
+        /* |n . d| / |n| of the plain cross product (scaled by its largest component, so
+           that nothing overflows): the unit normal's cosine up to a few roundings, far
+           cheaper than rt_prim_ng's robust normal; a degenerate one falls back to that */
+        const double *a = rt_tri_vert(sc, pr->data, 0), *b = rt_tri_vert(sc, pr->data, 1),
+                     *c = rt_tri_vert(sc, pr->data, 2);
+        const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        ng[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        ng[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        ng[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        m = rt_absmax(ng, 3);
+        mag = rt_max2(rt_absmax(a, 3), rt_max2(rt_absmax(b, 3), rt_absmax(c, 3)));
+    }
+    if (m > 0.0 && isfinite(m)) {
+        const double im = 1.0 / m, x = ng[0] * im, y = ng[1] * im, z = ng[2] * im;
+        den = fabs(x * r->d[0] + y * r->d[1] + z * r->d[2]) / sqrt(x * x + y * y + z * z);
+    } else {
+        rt_prim_ng(sc, i, ng);
+        den = fabs(ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2]);
+        mag = rt_prim_mag(sc, i, p);
+    }
+    const double s = rt_max2(mag, rt_max2(rt_absmax(r->o, 3), rt_absmax(p, 3)));
     if (!(den > 0.0)) /* no division by zero (the tests trap it) */
         return INFINITY;
     const double e = RT_HIT_K * s / den;
@@ -107,7 +135,7 @@ void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double 
 {
     const double e = rt_hit_err(sc, r, i, t);
     if (*bi >= 0) {
-        const double tie = 2.0 * fmin(e, *eb);
+        const double tie = 2.0 * (e < *eb ? e : *eb);
         if (t > *best + tie)
             return;
         if (t >= *best - tie && sc->prim[i].id <= sc->prim[*bi].id)
