@@ -7,7 +7,9 @@
  * way). The area drawn later wins at equal depth in the z-buffer and painter modes (and
  * trivially in mode none); the tracer must agree: every pixel of the rug's interior is red in
  * the ray-traced picture as well, with no blue speckle. In hidden-line mode the areas are
- * outlines: the rug's outline, lying in the floor, is not hidden by it.
+ * outlines: the rug's outline, lying in the floor, is not hidden by it. The same with a box
+ * resting on the floor (top and sides green, bottom red, drawn after the floor and last of the
+ * box's faces), seen from below through the floor: the box's bottom shows in every mode.
  *
  * Tolerance: the pixels checked lie at least 0.03 (3 pixels) inside the rug's projected
  * outline, so no sample of an edge pixel is counted; a pixel is red when its red channel
@@ -33,10 +35,16 @@ enum { SZ = 128, NS = 24 };
 static const double FLOOR_LO = 0.15, FLOOR_HI = 0.85, RUG_LO = 0.32, RUG_HI = 0.68, ZF = 0.5;
 static const double MARGIN = 0.03;
 
-/* the view orientation: rotations about x (55 deg) and z (25 deg) about the NPC centre */
+/* 0: the rug on the floor, seen from above; 1: a box resting on the floor (its bottom the rug's
+   square), seen from below through the floor */
+static int g_box;
+
+/* the view orientation: rotations about x (55 deg; the box: 125 deg, from below) and z (25 deg)
+   about the NPC centre */
 static void orientation(double m[4][4])
 {
-    const double a = 55.0 * 3.14159265358979323846 / 180.0, b = 25.0 * 3.14159265358979323846 / 180.0;
+    const double a = (g_box ? 125.0 : 55.0) * 3.14159265358979323846 / 180.0,
+                 b = 25.0 * 3.14159265358979323846 / 180.0;
     const double ca = cos(a), sa = sin(a), cb = cos(b), sb = sin(b);
     /* R = Rx(a) Rz(b) */
     const double r[3][3] = { { cb, -sb, 0 }, { ca * sb, ca * cb, -sa }, { sa * sb, sa * cb, ca } };
@@ -57,6 +65,23 @@ static void square(double lo, double hi)
     Gpoint3 p[4] = { { lo, lo, ZF }, { hi, lo, ZF }, { hi, hi, ZF }, { lo, hi, ZF } };
     Gpoint_list3 l = { 4, p };
     gfill_area3(&l);
+}
+
+/* the box over the rug's square, height 0.3: its top and four sides (the bottom is the red
+   square, drawn after them) */
+static void box_top_sides(double lo, double hi)
+{
+    const double z0 = ZF, z1 = ZF + 0.3;
+    Gpoint3 top[4] = { { lo, lo, z1 }, { hi, lo, z1 }, { hi, hi, z1 }, { lo, hi, z1 } };
+    Gpoint_list3 l = { 4, top };
+    gfill_area3(&l);
+    const double xy[5][2] = { { lo, lo }, { hi, lo }, { hi, hi }, { lo, hi }, { lo, lo } };
+    for (int k = 0; k < 4; k++) {
+        Gpoint3 q[4] = { { xy[k][0], xy[k][1], z0 }, { xy[k + 1][0], xy[k + 1][1], z0 },
+                         { xy[k + 1][0], xy[k + 1][1], z1 }, { xy[k][0], xy[k][1], z1 } };
+        Gpoint_list3 side = { 4, q };
+        gfill_area3(&side);
+    }
 }
 
 static void draw(int mode, const char *file)
@@ -100,6 +125,12 @@ static void draw(int mode, const char *file)
     gset_light_src_state(&act, NULL);
     gset_fill_colr_ind(2);
     square(FLOOR_LO, FLOOR_HI);
+    if (g_box) {
+        Gcolr_rep green = { { 0, 1, 0 } };
+        gset_colr_rep(1, 4, &green);
+        gset_fill_colr_ind(4);
+        box_top_sides(RUG_LO, RUG_HI);
+    }
     gset_fill_colr_ind(3);
     square(RUG_LO, RUG_HI);
     gdeactivate_ws(1);
@@ -130,7 +161,7 @@ static int is_red(const image *im, int c, int r)
 static void check(int mode, const char *name)
 {
     char file[64]; /* t_coplanar_<mode>.png, removed unless TEST_KEEP_PNG is set */
-    snprintf(file, sizeof file, "t_coplanar_%d.png", mode);
+    snprintf(file, sizeof file, "t_coplanar_%s%d.png", g_box ? "box_" : "", mode);
     draw(mode, file);
     image im;
     assert_true(read_png(file, &im));
@@ -177,11 +208,17 @@ static void check(int mode, const char *name)
         remove(file);
 }
 
-static void test_none(void **u) { (void)u; check(GHLHSR_NONE, "none"); }
-static void test_hidden_line(void **u) { (void)u; check(GHLHSR_HIDDEN_LINE, "hidden line"); }
-static void test_zbuffer(void **u) { (void)u; check(GHLHSR_ZBUFFER, "z-buffer"); }
-static void test_painter(void **u) { (void)u; check(GHLHSR_PAINTER, "painter"); }
-static void test_raytrace(void **u) { (void)u; check(GHLHSR_RAYTRACE, "ray traced"); }
+static void test_none(void **u) { (void)u; g_box = 0; check(GHLHSR_NONE, "none"); }
+static void test_hidden_line(void **u) { (void)u; g_box = 0; check(GHLHSR_HIDDEN_LINE, "hidden line"); }
+static void test_zbuffer(void **u) { (void)u; g_box = 0; check(GHLHSR_ZBUFFER, "z-buffer"); }
+static void test_painter(void **u) { (void)u; g_box = 0; check(GHLHSR_PAINTER, "painter"); }
+static void test_raytrace(void **u) { (void)u; g_box = 0; check(GHLHSR_RAYTRACE, "ray traced"); }
+/* the box on the floor, from below: its bottom (drawn after the floor) shows */
+static void test_box_none(void **u) { (void)u; g_box = 1; check(GHLHSR_NONE, "box, none"); }
+static void test_box_hidden_line(void **u) { (void)u; g_box = 1; check(GHLHSR_HIDDEN_LINE, "box, hidden line"); }
+static void test_box_zbuffer(void **u) { (void)u; g_box = 1; check(GHLHSR_ZBUFFER, "box, z-buffer"); }
+static void test_box_painter(void **u) { (void)u; g_box = 1; check(GHLHSR_PAINTER, "box, painter"); }
+static void test_box_raytrace(void **u) { (void)u; g_box = 1; check(GHLHSR_RAYTRACE, "box, ray traced"); }
 
 int main(void)
 {
@@ -191,6 +228,11 @@ int main(void)
         cmocka_unit_test(test_zbuffer),
         cmocka_unit_test(test_painter),
         cmocka_unit_test(test_raytrace),
+        cmocka_unit_test(test_box_none),
+        cmocka_unit_test(test_box_hidden_line),
+        cmocka_unit_test(test_box_zbuffer),
+        cmocka_unit_test(test_box_painter),
+        cmocka_unit_test(test_box_raytrace),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
