@@ -8,9 +8,10 @@
  *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
  *                                     inside, misses; the rays below), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
- *   cmp_embree judge RES mesh.off...  the disagreements on the primary, inside and misses rays,
- *                                     judged in exact rational arithmetic (GMP) on the inputs
- *                                     each tracer was given; ours also on Embree's float inputs
+ *   cmp_embree judge RES mesh.off...  the disagreements on the primary, inside, misses and
+ *                                     shadow rays, judged in exact rational arithmetic (GMP) on
+ *                                     the inputs each tracer was given; ours also on Embree's
+ *                                     float inputs
  *
  * Rays: RES x RES pixel-centre primary rays of the framing camera (rt_camera_ray, in VRC3),
  * the same rays rounded to float for Embree. Shadow rays: from every primary hit of ours
@@ -887,6 +888,61 @@ static void x_print(const char *set, const xtally tl[XC_N], size_t fdis, size_t 
            nself, self_ok);
 }
 
+/* shadow rays (occluded or not): ours (occ, double inputs) against Embree (eocc, float
+   inputs) and ours on the float inputs (focc), judged by the exact existence of a hit in
+   [tmin, tmax]; printed as the nearest-hit classes are */
+static void x_judge_shadow(const xmesh *md, const xmesh *mf, const rt_ray *rays, const unsigned char *occ,
+                           const unsigned char *eocc, const unsigned char *focc, size_t n)
+{
+    xjudge x;
+    xj_init(&x);
+    size_t nd[XNEAR], nf[XNEAR];
+    size_t cls[2] = {0, 0}, ours[2] = {0, 0}, ef[2] = {0, 0}, ed[2] = {0, 0}, both[2] = {0, 0};
+    size_t fo[2] = {0, 0}, fdis = 0, f_ok = 0, e_ok = 0, nself = 0, self_ok = 0;
+    for (size_t k = 0; k < n; k++) {
+        xray rd, rf;
+        int xf = -1;
+        if (focc[k] != eocc[k]) {
+            x_ray_float(&rays[k], &rf);
+            xf = x_nearest(&x, mf, &rf, nf) > 0;
+            fdis++;
+            f_ok += focc[k] == xf;
+            e_ok += eocc[k] == xf;
+        }
+        if (occ[k] == eocc[k]) {
+            if (k % 1009 == 0) {
+                x_ray_double(&rays[k], &rd);
+                nself++;
+                self_ok += (x_nearest(&x, md, &rd, nd) > 0) == occ[k];
+            }
+            continue;
+        }
+        const int c = occ[k] ? 0 : 1; /* 0: ours blocked, Embree lit; 1: the reverse */
+        x_ray_double(&rays[k], &rd);
+        const int xd = x_nearest(&x, md, &rd, nd) > 0;
+        if (xf < 0) {
+            x_ray_float(&rays[k], &rf);
+            xf = x_nearest(&x, mf, &rf, nf) > 0;
+        }
+        cls[c]++;
+        ours[c] += occ[k] == xd;
+        ef[c] += eocc[k] == xf;
+        ed[c] += eocc[k] == xd;
+        both[c] += occ[k] == xd && eocc[k] == xf;
+        fo[c] += focc[k] == xf;
+    }
+    static const char *const name[2] = {"ours blocked, Embree lit", "ours lit, Embree blocked"};
+    for (int c = 0; c < 2; c++)
+        if (cls[c])
+            printf("  %-8s %-26s %6zu | %8zu %8zu %8zu %8zu | %8zu\n", "shadow", name[c], cls[c], ours[c], ef[c],
+                   ed[c], both[c], fo[c]);
+    printf("  %-8s %-26s %6zu |     (same inputs: ours-f right %zu, Embree right %zu)\n", "shadow",
+           "ours-f vs Embree differ", fdis, f_ok, e_ok);
+    printf("  %-8s %-26s %6zu |     (the exact answer is both tracers' on %zu)\n", "shadow",
+           "self-check, agreeing rays", nself, self_ok);
+    xj_clear(&x);
+}
+
 /* cmp_embree judge RES mesh.off...: the disagreements of the rays command, judged exactly */
 static int cmd_judge(int res, int nfiles, char **files)
 {
@@ -917,7 +973,8 @@ static int cmd_judge(int res, int nfiles, char **files)
         size_t n = (size_t)res * res, nbox = n < IBOX_RAYS ? n : IBOX_RAYS;
         rt_ray *rays = bs_alloc(n, sizeof *rays), *irays = bs_alloc(n, sizeof *irays);
         rt_ray *brays = bs_alloc(nbox, sizeof *brays), *cand = bs_alloc(nbox, sizeof *cand);
-        rt_ray *frays = bs_alloc(n, sizeof *frays);
+        rt_ray *frays = bs_alloc(n, sizeof *frays), *srays = bs_alloc(n, sizeof *srays);
+        unsigned char *occ = bs_alloc(n, 1), *focc = bs_alloc(n, 1);
         rt_hit *hits = bs_alloc(n, sizeof *hits), *ihits = bs_alloc(n, sizeof *ihits);
         rt_hit *bhits = bs_alloc(nbox, sizeof *bhits), *fhits = bs_alloc(n, sizeof *fhits);
         double *vf = bs_alloc(s.nverts, 3 * sizeof(double)), *tv = bs_alloc(9, sizeof(double));
@@ -925,7 +982,7 @@ static int cmd_judge(int res, int nfiles, char **files)
         RTCScene esc = em_scene(dev, s.verts_vrc, s.nverts, s.tris, s.ntris);
         rt_scene *fsc = rt_scene_new();
         xmesh md = {0}, mf = {0};
-        if (!rays || !irays || !brays || !cand || !frays || !hits || !ihits || !bhits || !fhits || !vf || !tv ||
+        if (!rays || !irays || !brays || !cand || !frays || !srays || !occ || !focc || !hits || !ihits || !bhits || !fhits || !vf || !tv ||
             !er.prim || !er.t || !er.occ || !esc || !fsc) {
             fprintf(stderr, "%s: out of memory\n", base);
             fails++;
@@ -988,6 +1045,25 @@ static int cmd_judge(int res, int nfiles, char **files)
             x_print(sets[q].name, tl, fdis, fo, fe, nself, self_ok);
             fflush(stdout);
         }
+        /* shadow rays from ours' primary hits (hits: the primary set's, traced above) */
+        const size_t ns = make_shadow_rays(&s, hits, n, srays);
+        if (ns) {
+            rt_occluded(s.rt, ns, srays, occ);
+            time_embree_shadow(esc, srays, ns, &er);
+            for (size_t k = 0; k < ns; k++) {
+                frays[k] = srays[k];
+                for (int i = 0; i < 3; i++) {
+                    frays[k].org[i] = (float)frays[k].org[i];
+                    frays[k].dir[i] = (float)frays[k].dir[i];
+                }
+                frays[k].tmin = (float)frays[k].tmin;
+                frays[k].tmax = isinf(frays[k].tmax) ? INFINITY : (float)frays[k].tmax;
+            }
+            rt_occluded(fsc, ns, frays, focc);
+            printf("  (%zu shadow rays to the light from ours' primary hits)\n", ns);
+            x_judge_shadow(&md, &mf, srays, occ, er.occ, focc, ns);
+            fflush(stdout);
+        }
     next:
         if (esc)
             rtcReleaseScene(esc);
@@ -999,6 +1075,9 @@ static int cmd_judge(int res, int nfiles, char **files)
         free(brays);
         free(cand);
         free(frays);
+        free(srays);
+        free(occ);
+        free(focc);
         free(hits);
         free(ihits);
         free(bhits);
