@@ -13,6 +13,8 @@
  *
  * Physical input devices (the core maps them to logical devices; docs/INPUT.md):
  *   mouse button 1 press   LOCATOR and PICK trigger at the pointer position;
+ *   button 1 drag          LOCATOR in SAMPLE or EVENT mode: a trigger at every position
+ *                          the pointer reaches (how gks3d-render's window turns the view);
  *                          STROKE: a press adds a point, dragging adds points along the
  *                          way and its release ends the stroke; button 3 ends it too
  *   keys 1..9              CHOICE number; 0: no choice; with a menu: a click on an item
@@ -675,100 +677,157 @@ static int on_slider(const x11_ws *x, int px, int py)
            py >= x->slider_y - 12 && py <= x->slider_y + 28;
 }
 
-/* One X event -> a raw event (1), or nothing (0). */
-static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
+/* A window event (closed, destroyed, exposed, entered, left); 1 if e was one. */
+static int window_event(x11_ws *x, const XEvent *e)
 {
-    x11_ws *x = ws->priv;
     if (e->type == ClientMessage && e->xclient.window == x->win &&
         (Atom)e->xclient.data.l[0] == x->wm_delete) { /* closed by the window manager */
         XDestroyWindow(x->dpy, x->win);
         XFlush(x->dpy);
         x->gone = 1;
-        return 0;
+        return 1;
     }
     if (e->type == DestroyNotify && e->xdestroywindow.window == x->win) {
         x->gone = 1; /* destroyed by another client */
-        return 0;
+        return 1;
     }
     if (e->type == Expose) {
         if (e->xexpose.count == 0)
             x11_blit(x);
-        return 0;
+        return 1;
     }
     if (e->type == EnterNotify || e->type == LeaveNotify) {
         x->in_win = e->type == EnterNotify;
         x11_blit(x);
-        return 0;
-    }
-    if (e->type == MotionNotify) {
-        while (XCheckTypedWindowEvent(x->dpy, x->win, MotionNotify, e)) /* the latest */
-            ;
-        x->mx = e->xmotion.x;
-        x->my = e->xmotion.y;
-        x->in_win = 1;
-        int ks = target(a, 1u << GIN_STROKE), kv = target(a, 1u << GIN_VAL);
-        if (x->dragging && ks >= 0 && x->npts > 0 && x->npts < GKS_IN_STROKE_MAX) {
-            double dc[3] = { x->mx + 0.5, x->h - x->my - 0.5, 0 };
-            double dx = dc[0] - x->pts[x->npts - 1][0], dy = dc[1] - x->pts[x->npts - 1][1];
-            if (dx * dx + dy * dy >= 36) /* a point every 6 pixels of the drag */
-                memcpy(x->pts[x->npts++], dc, sizeof dc);
-        }
-        if (kv >= 0 && (e->xmotion.state & Button1Mask) && on_slider(x, x->mx, x->my)) {
-            x->val = slider_value(x, &a->dev[kv], x->mx);
-            x->have_val = 1;
-        }
-        x11_blit(x); /* rubber bands, aperture, menu highlight follow the pointer */
-        return 0;
-    }
-    if (e->type == ButtonRelease) {
-        int ks = target(a, 1u << GIN_STROKE);
-        if (e->xbutton.button == Button1 && x->dragging && ks >= 0 && x->npts > 1)
-            return stroke_event(x, a, ks, ev); /* the end of a drag */
-        x->dragging = 0;
-        return 0;
-    }
-    if (e->type == ButtonPress) {
-        double dc[3] = { e->xbutton.x + 0.5, x->h - e->xbutton.y - 0.5, 0 };
-        int px = e->xbutton.x, py = e->xbutton.y;
-        int kc = target(a, 1u << GIN_CHOICE), kv = target(a, 1u << GIN_VAL);
-        if (e->xbutton.button == Button1 && kc >= 0 && x->menu_n > 0 && px >= x->menu_x &&
-            px < x->menu_x + x->menu_w && py >= x->menu_y && py < x->menu_y + x->menu_n * ITEM_H) {
-            *ev = (gks_in_raw){ .cls = GIN_CHOICE, .num = a->dev[kc].num,
-                                .choice = (py - x->menu_y) / ITEM_H + 1 };
-            return 1;
-        }
-        if (e->xbutton.button == Button1 && kv >= 0 && on_slider(x, px, py)) {
-            x->val = slider_value(x, &a->dev[kv], px);
-            x->have_val = 1;
-            x11_blit(x);
-            if (a->dev[kv].mode == GOP_REQ)
-                return 0; /* Return triggers */
-            *ev = (gks_in_raw){ .cls = GIN_VAL, .num = a->dev[kv].num, .val = x->val };
-            x->have_val = 0; /* the next input starts from the device's value */
-            return 1;
-        }
-        int k = target(a, (1u << GIN_LOC) | (1u << GIN_PICK) | (1u << GIN_STROKE));
-        if (k < 0)
-            return 0;
-        *ev = (gks_in_raw){ .cls = a->dev[k].cls, .num = a->dev[k].num };
-        if (ev->cls == GIN_STROKE) {
-            if (e->xbutton.button == Button1 && x->npts < GKS_IN_STROKE_MAX) {
-                memcpy(x->pts[x->npts++], dc, sizeof dc);
-                x->dragging = 1;
-                x11_blit(x);
-                return 0;
-            }
-            if (x->npts == 0)
-                return 0;
-            return stroke_event(x, a, k, ev);
-        }
-        memcpy(x->pts[0], dc, sizeof dc);
-        ev->n = 1;
-        ev->pts = (const double (*)[3])x->pts;
         return 1;
     }
-    if (e->type != KeyPress)
+    return 0;
+}
+
+/* A LOCATOR raw event of device k at window pixel (px, py); 1. */
+static int locator_event(x11_ws *x, const gks_in_active *a, int k, int px, int py,
+                         gks_in_raw *ev)
+{
+    double dc[3] = { px + 0.5, x->h - py - 0.5, 0 };
+    *ev = (gks_in_raw){ .cls = a->dev[k].cls, .num = a->dev[k].num, .n = 1 };
+    memcpy(x->pts[0], dc, sizeof dc);
+    ev->pts = (const double (*)[3])x->pts;
+    return 1;
+}
+
+/* The pointer moved: stroke points and the slider follow a drag; a drag with button 1
+ * triggers a LOCATOR in SAMPLE or EVENT mode at every position (a program turning a view
+ * follows the pointer: gks3d-render's window); else the echo follows the pointer. */
+static int motion(x11_ws *x, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
+{
+    while (XCheckTypedWindowEvent(x->dpy, x->win, MotionNotify, e)) /* the latest */
+        ;
+    x->mx = e->xmotion.x;
+    x->my = e->xmotion.y;
+    x->in_win = 1;
+    int ks = target(a, 1u << GIN_STROKE), kv = target(a, 1u << GIN_VAL);
+    int kl = target(a, 1u << GIN_LOC);
+    if (x->dragging && ks >= 0 && x->npts > 0 && x->npts < GKS_IN_STROKE_MAX) {
+        double dc[3] = { x->mx + 0.5, x->h - x->my - 0.5, 0 };
+        double dx = dc[0] - x->pts[x->npts - 1][0], dy = dc[1] - x->pts[x->npts - 1][1];
+        if (dx * dx + dy * dy >= 36) /* a point every 6 pixels of the drag */
+            memcpy(x->pts[x->npts++], dc, sizeof dc);
+    }
+    if (kv >= 0 && (e->xmotion.state & Button1Mask) && on_slider(x, x->mx, x->my)) {
+        x->val = slider_value(x, &a->dev[kv], x->mx);
+        x->have_val = 1;
+    }
+    if (kl >= 0 && a->dev[kl].mode != GOP_REQ && (e->xmotion.state & Button1Mask))
+        return locator_event(x, a, kl, x->mx, x->my, ev);
+    x11_blit(x); /* rubber bands, aperture, menu highlight follow the pointer */
+    return 0;
+}
+
+/* A button press: a menu item, the slider, a stroke point or its end, a LOCATOR or PICK
+ * trigger. */
+static int press(x11_ws *x, const gks_in_active *a, const XEvent *e, gks_in_raw *ev)
+{
+    int px = e->xbutton.x, py = e->xbutton.y;
+    int kc = target(a, 1u << GIN_CHOICE), kv = target(a, 1u << GIN_VAL);
+    if (e->xbutton.button == Button1 && kc >= 0 && x->menu_n > 0 && px >= x->menu_x &&
+        px < x->menu_x + x->menu_w && py >= x->menu_y && py < x->menu_y + x->menu_n * ITEM_H) {
+        *ev = (gks_in_raw){ .cls = GIN_CHOICE, .num = a->dev[kc].num,
+                            .choice = (py - x->menu_y) / ITEM_H + 1 };
+        return 1;
+    }
+    if (e->xbutton.button == Button1 && kv >= 0 && on_slider(x, px, py)) {
+        x->val = slider_value(x, &a->dev[kv], px);
+        x->have_val = 1;
+        x11_blit(x);
+        if (a->dev[kv].mode == GOP_REQ)
+            return 0; /* Return triggers */
+        *ev = (gks_in_raw){ .cls = GIN_VAL, .num = a->dev[kv].num, .val = x->val };
+        x->have_val = 0; /* the next input starts from the device's value */
+        return 1;
+    }
+    int k = target(a, (1u << GIN_LOC) | (1u << GIN_PICK) | (1u << GIN_STROKE));
+    if (k < 0)
         return 0;
+    if (a->dev[k].cls == GIN_STROKE) {
+        if (e->xbutton.button == Button1 && x->npts < GKS_IN_STROKE_MAX) {
+            double dc[3] = { px + 0.5, x->h - py - 0.5, 0 };
+            memcpy(x->pts[x->npts++], dc, sizeof dc);
+            x->dragging = 1;
+            x11_blit(x);
+            return 0;
+        }
+        if (x->npts == 0)
+            return 0;
+        return stroke_event(x, a, k, ev);
+    }
+    return locator_event(x, a, k, px, py, ev);
+}
+
+/* A key typed for a STRING device (the REQUEST's or the first in SAMPLE/EVENT): the text
+ * grows, or Return ends it (1). */
+static int string_key(x11_ws *x, const gks_in_active *a, int ks, KeySym sym,
+                      const char *buf, int n, gks_in_raw *ev)
+{
+    if (sym == XK_Return || sym == XK_KP_Enter) {
+        x->text[x->ntext] = '\0';
+        x->ntext = 0;
+        *ev = (gks_in_raw){ .cls = GIN_STRING, .num = a->dev[ks].num, .str = x->text };
+        return 1;
+    }
+    if (sym == XK_BackSpace && x->ntext > 0)
+        x->ntext--;
+    else if (n == 1 && isprint((unsigned char)buf[0]) && x->ntext < a->dev[ks].str_buf)
+        x->text[x->ntext++] = buf[0];
+    x11_blit(x); /* the prompt line shows the text typed */
+    return 0;
+}
+
+/* A key for a VALUATOR: + / - step a tenth of the range, Return triggers (1). */
+static int valuator_key(x11_ws *x, const gks_in_active_dev *d, KeySym sym, const char *buf,
+                        int n, gks_in_raw *ev)
+{
+    if (!x->have_val) {
+        x->val = d->val;
+        x->have_val = 1;
+    }
+    double step = (d->high - d->low) / 10;
+    if (n == 1 && (buf[0] == '+' || buf[0] == '-')) {
+        x->val += buf[0] == '+' ? step : -step;
+        x->val = x->val < d->low ? d->low : x->val > d->high ? d->high : x->val;
+        x11_blit(x);
+        if (d->mode == GOP_REQ)
+            return 0;
+    } else if (sym != XK_Return) {
+        return 0;
+    }
+    *ev = (gks_in_raw){ .cls = GIN_VAL, .num = d->num, .val = x->val };
+    x->have_val = 0;
+    return 1;
+}
+
+/* A key press: break (Escape), STRING text, a CHOICE digit, VALUATOR steps. */
+static int key(x11_ws *x, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
+{
     char buf[8];
     KeySym sym;
     int n = XLookupString(&e->xkey, buf, sizeof buf, &sym, NULL);
@@ -781,46 +840,39 @@ static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *
     }
     int ks = target(a, 1u << GIN_STRING), kc = target(a, 1u << GIN_CHOICE),
         kv = target(a, 1u << GIN_VAL);
-    if (ks >= 0 && (a->request < 0 || a->request == ks)) {
-        if (sym == XK_Return || sym == XK_KP_Enter) {
-            x->text[x->ntext] = '\0';
-            x->ntext = 0;
-            *ev = (gks_in_raw){ .cls = GIN_STRING, .num = a->dev[ks].num, .str = x->text };
-            return 1;
-        }
-        if (sym == XK_BackSpace && x->ntext > 0)
-            x->ntext--;
-        else if (n == 1 && isprint((unsigned char)buf[0]) && x->ntext < a->dev[ks].str_buf)
-            x->text[x->ntext++] = buf[0];
-        x11_blit(x); /* the prompt line shows the text typed */
-        return 0;
-    }
+    if (ks >= 0 && (a->request < 0 || a->request == ks))
+        return string_key(x, a, ks, sym, buf, n, ev);
     if (kc >= 0 && n == 1 && buf[0] >= '0' && buf[0] <= '9') {
         *ev = (gks_in_raw){ .cls = GIN_CHOICE, .num = a->dev[kc].num, .choice = buf[0] - '0' };
         return 1;
     }
-    if (kv >= 0) {
-        const gks_in_active_dev *d = &a->dev[kv];
-        if (!x->have_val) {
-            x->val = d->val;
-            x->have_val = 1;
-        }
-        double step = (d->high - d->low) / 10;
-        if (n == 1 && (buf[0] == '+' || buf[0] == '-')) {
-            x->val += buf[0] == '+' ? step : -step;
-            x->val = x->val < d->low ? d->low : x->val > d->high ? d->high : x->val;
-            x11_blit(x);
-            if (d->mode == GOP_REQ)
-                return 0;
-        } else if (sym != XK_Return) {
-            return 0;
-        }
-        *ev = (gks_in_raw){ .cls = GIN_VAL, .num = d->num, .val = x->val };
-        x->have_val = 0;
-        return 1;
-    }
+    if (kv >= 0)
+        return valuator_key(x, &a->dev[kv], sym, buf, n, ev);
     return 0;
 }
+
+/* One X event -> a raw event (1), or nothing (0). */
+static int translate(gks_ws *ws, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
+{
+    x11_ws *x = ws->priv;
+    if (window_event(x, e))
+        return 0;
+    if (e->type == MotionNotify)
+        return motion(x, a, e, ev);
+    if (e->type == ButtonRelease) {
+        int ks = target(a, 1u << GIN_STROKE);
+        if (e->xbutton.button == Button1 && x->dragging && ks >= 0 && x->npts > 1)
+            return stroke_event(x, a, ks, ev); /* the end of a drag */
+        x->dragging = 0;
+        return 0;
+    }
+    if (e->type == ButtonPress)
+        return press(x, a, e, ev);
+    if (e->type == KeyPress)
+        return key(x, a, e, ev);
+    return 0;
+}
+
 
 static int x11_input(gks_ws *ws, const gks_in_active *act, double timeout, gks_in_raw *ev)
 {
