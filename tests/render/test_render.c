@@ -23,6 +23,9 @@
  *    reader's error number and name on standard error, no output file. A metafile whose
  *    ESCAPE sets a file name: the escape refused (error 180 named), exit status 4, no file
  *    of that name, the picture written. Usage errors: 1; --help: 0.
+ * 4. --name PATTERN (frame N's file; a bad pattern is a usage error writing nothing),
+ *    --view 0,0 (the picture unchanged) and 30,10 (changed), --x11 without a display
+ *    (status 3, a clear message). The window itself: tests/x11/test_render_x11.sh.
  * Exit status 77 (CTest: skipped) when pdftoppm or rsvg-convert is missing.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -269,6 +272,36 @@ static void test_bad_input(void)
     CHECK(shf("'%s' --help | grep -q 'usage: gks3d-render'", render) == 0, "--help");
 }
 
+/* --name: frame N's file from the pattern and N alone; patterns with another conversion,
+ * and PDF/PS (pages, not files), are usage errors that write nothing. --view 0,0 changes
+ * nothing. --x11 without a display: a clear message, status 3. */
+static void test_name_view(void)
+{
+    CHECK(shf("mkdir -p nm && cd nm && '%s' ../rec/fig3.gksm --name 'f%%%%-%%03d.png' "
+              "--frames 2,4-5 --quiet", render) == 0, "--name failed");
+    CHECK(same_file("nm/f%-002.png", "rec/re-002.png") &&
+              same_file("nm/f%-004.png", "rec/re-004.png") &&
+              same_file("nm/f%-005.png", "rec/re-005.png"),
+          "--name: frames 2, 4, 5 not written to f%%-002.png, f%%-004.png, f%%-005.png");
+    CHECK(shf("cd nm && test $(ls | wc -l) = 3") == 0, "--name: other files written");
+    static const char *const bad[] = { "x-%s.png", "x.png", "x-%d-%d.png", "x-%n.png",
+                                       "x-%10d.png", "x-%d.pdf" };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        CHECK(shf("cd nm && '%s' ../rec/fig3.gksm --name '%s' > /dev/null 2>&1; "
+                  "test $? = 1 && test $(ls | wc -l) = 3", render, bad[i]) == 0,
+              "--name '%s': not a usage error, or a file written", bad[i]);
+    CHECK(shf("cd nm && '%s' ../rec/fig3.gksm -o v.png --frames 3 --view 0,0 --quiet",
+              render) == 0 && same_file("nm/v.png", "rec/re-003.png"),
+          "--view 0,0 changed the picture");
+    CHECK(shf("cd nm && '%s' ../rec/fig3.gksm -o t.png --frames 3 --view 30,10 --quiet",
+              render) == 0 && !same_file("nm/t.png", "rec/re-003.png"),
+          "--view 30,10 did not turn the picture");
+    CHECK(shf("cd nm && DISPLAY= '%s' ../rec/fig3.gksm --x11 2> x.log; test $? = 3",
+              render) == 0, "--x11 without a display: exit status not 3");
+    CHECK(shf("grep -qE 'no X display|built without X11' nm/x.log") == 0,
+          "--x11 without a display: no clear message");
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 6) {
@@ -294,6 +327,7 @@ int main(int argc, char **argv)
     else
         printf("built without cairo: PDF and SVG not tested\n");
     test_bad_input();
+    test_name_view();
     printf("%s (%d failures)\n", failures ? "FAILED" : "passed", failures);
     return failures ? 1 : 0;
 }

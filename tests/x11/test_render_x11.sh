@@ -1,0 +1,60 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# gks3d-render --x11 under its own Xvfb (docs/man/man1/gks3d-render.1, "The window"):
+#  1. fig3_c recorded through GKS3D_RECORD; frame 3 shown ray traced (120 pixels, 4
+#     samples) in the window; the refined picture (line "# refined") grabbed;
+#  2. a drag sent with xdotool turns the view: the refined picture after it differs from
+#     the first (imgcmp differ: >= 5 % of the pixels by more than 16 levels);
+#  3. key 2 prints the view (the offline command line, C and Fortran SET VIEW
+#     REPRESENTATION 3); the offline render of that command line equals the window's
+#     refined picture within the image tests' tolerance (imgcmp same: a channel off by
+#     more than 1 level at most in 1 of 1000 pixels; found identical);
+#  4. key 1 saves the view to --name's file, the same picture; key 0 ends with status 0.
+# Skipped (77) without Xvfb or xdotool.
+# Usage: test_render_x11.sh RENDER FIG3 XGRAB IMGCMP DIR
+render=$1 fig3=$2 xgrab=$3 imgcmp=$4 dir=$5
+. "$(dirname "$0")/xvfb.sh"
+xvfb_need Xvfb xdotool
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
+xvfb_start
+GKS3D_RECORD=fig3.gksm "$fig3" >/dev/null || { echo "FAIL: fig3 not recorded"; exit 1; }
+"$render" fig3.gksm --x11 --frames 3 --size 120 --mode raytrace --samples 4 \
+    --name 'saved-%d.png' >out.txt 2>err.txt &
+pid=$!
+trap 'kill $pid 2>/dev/null; kill $xpid 2>/dev/null' EXIT
+# waits until out.txt has N lines matching a pattern (30 s)
+wait_for() {
+    i=0
+    while [ "$(grep -c "$2" out.txt)" -lt "$1" ]; do
+        i=$((i + 1))
+        [ $i -gt 300 ] && { echo "FAIL: no '$2' ($1) in time"; cat out.txt err.txt; exit 1; }
+        kill -0 $pid 2>/dev/null || { echo "FAIL: gks3d-render ended"; cat err.txt; exit 1; }
+        sleep 0.1
+    done
+}
+wait_for 1 '^# refined'
+win=$(xdotool search --name '^gks3d' | head -1)
+[ -n "$win" ] || { echo "FAIL: no window"; exit 1; }
+# the picture: the workstation viewport, 120 x 120 at the window's lower left (800 x 800)
+"$xgrab" "$win" 0 680 120 120 before.png || { echo "FAIL: grab"; exit 1; }
+xdotool mousemove --window "$win" 40 740 mousedown 1 mousemove --window "$win" 60 735 \
+    mousemove --window "$win" 80 730 mousemove --window "$win" 100 725 mouseup 1
+wait_for 2 '^# refined'
+"$xgrab" "$win" 0 680 120 120 after.png || { echo "FAIL: grab"; exit 1; }
+"$imgcmp" differ before.png after.png || echo "FAIL: the drag did not change the picture"
+xdotool key --window "$win" 2
+wait_for 1 '^# offline:'
+cmd=$(sed -n 's/^# offline: gks3d-render //p' out.txt)
+echo "offline: $cmd"
+eval "\"\$render\" $cmd" || echo "FAIL: offline render"
+"$imgcmp" same view.png after.png || echo "FAIL: window and offline render differ"
+grep -q 'gset_view_rep3(ws, 1, &rep);' out.txt || echo "FAIL: no C call printed"
+grep -q 'CALL GSVWR(WKID, 1, VWM, PRM, VCLP' out.txt || echo "FAIL: no Fortran call printed"
+xdotool key --window "$win" 1
+wait_for 1 '^# saved saved-1.png'
+"$imgcmp" same view.png saved-1.png || echo "FAIL: the saved view differs"
+xdotool key --window "$win" 0
+wait $pid
+rc=$?
+echo "gks3d-render --x11: exit status $rc"
+[ $rc -eq 0 ] || echo "FAIL: exit status $rc"
