@@ -1185,6 +1185,22 @@ static int rt_hook_next(rt_job *job)
     return t;
 }
 
+/* Progress of the set-up (o.progress): a phase's name when it starts, its time when it
+   ends, one line each ("rt: set-up: light buffers ... 0.81 s"); the grid is built before
+   rt_render (rt_scene_commit), so its line gives the time it took. */
+static double rt_phase(const rt_job *job, const char *name, double t_begin)
+{
+    if (!job->o.progress)
+        return 0.0;
+    const double now = rt_now();
+    if (name)
+        fprintf(stderr, "rt: set-up: %s ...", name);
+    else
+        fprintf(stderr, " %.2f s\n", now - t_begin);
+    fflush(stderr);
+    return now;
+}
+
 static void rt_progress(rt_job *job, uint64_t rays)
 {
     int done = atomic_fetch_add(&job->done, 1) + 1;
@@ -1462,14 +1478,21 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     job.cover_out = cover;
     if (o->corner_rays && rt_job_corner_bufs(&job) != RT_OK)
         return RT_ERR_NOMEM;
+    if (o->progress)
+        fprintf(stderr, "rt: set-up: grid of %zu primitives ... %.2f s\n", sc->nprim,
+                sc->build_seconds);
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
+        const double tp = rt_phase(&job, "candidate lists", 0.0);
         const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh,
                                          rt_par_threads(o->threads));
         job.cover = cv.mask;
         job.cand_off = cv.off;
         job.cand = cv.ids;
+        rt_phase(&job, NULL, tp);
     }
+    const double tl = rt_phase(&job, "light buffers", 0.0);
     int rc = rt_job_lbufs(&job);
+    rt_phase(&job, NULL, tl);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
     job.stride = rt_tile_stride(job.ntiles);

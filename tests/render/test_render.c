@@ -23,6 +23,8 @@
  *    reader's error number and name on standard error, no output file. A metafile whose
  *    ESCAPE sets a file name: the escape refused (error 180 named), exit status 4, no file
  *    of that name, the picture written. Usage errors: 1; --help: 0.
+ *    With --progress the set-up's phases (grid, candidate lists, light buffers) are
+ *    reported a line each before the tiles.
  * 4. --name PATTERN (frame N's file; a bad pattern is a usage error writing nothing),
  *    --view 0,0 (the picture unchanged) and 30,10 (changed), --x11 without a display
  *    (status 3, a clear message). The window itself: tests/x11/test_render_x11.sh.
@@ -200,6 +202,15 @@ static void test_fig3(void)
     CHECK(same_file("rec/rt.png", "rec/fig3.png"),
           "frame 3 ray traced differs from the program's fig3.png");
     CHECK(!exists("rec/rt-002.png"), "--frames 3 wrote more than one frame");
+    /* --progress: the set-up's phases (grid, candidate lists, light buffers) a line each,
+       then the tiles and the summary (src/rt/rt_render.c) */
+    CHECK(shf("cd rec && '%s' fig3.gksm -o pr.png --frames 3 --mode raytrace --size 120 "
+              "--samples 1 --progress --quiet 2> pr.log", render) == 0, "--progress failed");
+    CHECK(shf("grep -q '^rt: set-up: grid of [0-9]* primitives \\.\\.\\. [0-9.]* s$' rec/pr.log"
+              " && grep -q '^rt: set-up: candidate lists \\.\\.\\. [0-9.]* s$' rec/pr.log"
+              " && grep -q '^rt: set-up: light buffers \\.\\.\\. [0-9.]* s$' rec/pr.log"
+              " && grep -q 'rt: [0-9]* tiles done in' rec/pr.log") == 0,
+          "--progress: the set-up phases or the summary not reported (rec/pr.log)");
 }
 
 static void test_vector_out(void)
