@@ -294,91 +294,76 @@ static int type_of(const char *name)
     return 0;
 }
 
-static int parse(int argc, char **argv, options *o)
+/* An option with a value (a = "--name", v its value, NULL if none): 0, 1 bad value, -1
+ * not one of them. */
+static int value_option(const char *a, const char *v, options *o, const char **type)
 {
-    *o = (options){ .mode = -1, .samples = -1, .depth = -1, .aa = -1, .threads = -1 };
-    const char *type = NULL;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int bad = 0;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            help();
-            exit(0);
-        } else if ((strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) && v) {
-            o->out = v, i++;
-        } else if (strcmp(a, "--type") == 0 && v) {
-            type = v, i++;
-        } else if (strcmp(a, "--mode") == 0 && v) {
-            o->mode = -2;
-            for (int m = 0; m < 5; m++)
-                if (strcmp(v, mode_names[m]) == 0)
-                    o->mode = m;
-            bad = o->mode < 0, i++;
-        } else if (strcmp(a, "--size") == 0 && v) {
-            bad = size_arg(v, &o->width, &o->height), i++;
-        } else if (strcmp(a, "--samples") == 0 && v) {
-            int r = 0;
-            bad = int_arg(v, 1, 256, &o->samples), i++;
-            while (!bad && (r + 1) * (r + 1) <= o->samples)
-                r++;
-            bad = bad || r * r != o->samples;
-        } else if (strcmp(a, "--depth") == 0 && v) {
-            bad = int_arg(v, 1, 64, &o->depth), i++;
-        } else if (strcmp(a, "--aa") == 0 && v) {
-            bad = int_arg(v, 1, 4, &o->aa), i++;
-        } else if (strcmp(a, "--threads") == 0 && v) {
-            bad = int_arg(v, 0, 1024, &o->threads), i++;
-        } else if (strcmp(a, "--frames") == 0 && v) {
-            bad = frames_arg(v, o), i++;
-        } else if (strcmp(a, "--name") == 0 && v) {
-            o->name = v, i++;
-            bad = !pattern_ok(v);
-        } else if (strcmp(a, "--view") == 0 && v) {
-            bad = view_arg(v, o), i++;
-        } else if (strcmp(a, "--x11") == 0) {
-            o->x11 = 1;
-        } else if (strcmp(a, "--progress") == 0) {
-            o->progress = 1;
-        } else if (strcmp(a, "--quiet") == 0) {
-            o->quiet = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "%s: unknown option or missing value: %s\n", prog, a);
-            return -1;
-        } else if (!o->in) {
-            o->in = a;
-        } else {
-            bad = 1;
-        }
-        if (bad) {
-            fprintf(stderr, "%s: bad argument near '%s'\n", prog, a);
-            return -1;
-        }
-    }
-    if (!o->in) {
-        fprintf(stderr, "%s: no input file\n", prog);
+    if (!v)
+        return -1;
+    if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+        o->out = v;
+    } else if (strcmp(a, "--type") == 0) {
+        *type = v;
+    } else if (strcmp(a, "--mode") == 0) {
+        o->mode = -2;
+        for (int m = 0; m < 5; m++)
+            if (strcmp(v, mode_names[m]) == 0)
+                o->mode = m;
+        return o->mode < 0;
+    } else if (strcmp(a, "--size") == 0) {
+        return size_arg(v, &o->width, &o->height) != 0;
+    } else if (strcmp(a, "--samples") == 0) {
+        int r = 0;
+        if (int_arg(v, 1, 256, &o->samples))
+            return 1;
+        while ((r + 1) * (r + 1) <= o->samples)
+            r++;
+        return r * r != o->samples;
+    } else if (strcmp(a, "--depth") == 0) {
+        return int_arg(v, 1, 64, &o->depth) != 0;
+    } else if (strcmp(a, "--aa") == 0) {
+        return int_arg(v, 1, 4, &o->aa) != 0;
+    } else if (strcmp(a, "--threads") == 0) {
+        return int_arg(v, 0, 1024, &o->threads) != 0;
+    } else if (strcmp(a, "--frames") == 0) {
+        return frames_arg(v, o) != 0;
+    } else if (strcmp(a, "--name") == 0) {
+        o->name = v;
+        return !pattern_ok(v);
+    } else if (strcmp(a, "--view") == 0) {
+        return view_arg(v, o) != 0;
+    } else {
         return -1;
     }
-    if (o->x11) { /* the window; --name: the files of the views saved there */
-        if (o->out || type) {
-            fprintf(stderr, "%s: --x11 writes no output file (-o, --type): its key 1 saves "
-                    "views to --name PATTERN\n", prog);
-            return -1;
-        }
-        if (!o->name)
-            o->name = "gks3d-view-%03d.png";
-        type = strrchr(o->name, '.');
-        if (!type || strcasecmp(type, ".png") != 0) {
-            fprintf(stderr, "%s: the views the window saves are PNG: --name PATTERN.png\n",
-                    prog);
-            return -1;
-        }
-        o->type = GWS_TYPE_X11;
-        if (o->aa > 0) {
-            fprintf(stderr, "%s: --aa is for PNG output\n", prog);
-            return -1;
-        }
-        return 0;
+    return 0;
+}
+
+/* --x11: no output file; --name the PNG files of the saved views. */
+static int check_window(options *o, const char *type)
+{
+    if (o->out || type) {
+        fprintf(stderr, "%s: --x11 writes no output file (-o, --type): its key 1 saves "
+                "views to --name PATTERN\n", prog);
+        return -1;
     }
+    if (!o->name)
+        o->name = "gks3d-view-%03d.png";
+    type = strrchr(o->name, '.');
+    if (!type || strcasecmp(type, ".png") != 0) {
+        fprintf(stderr, "%s: the views the window saves are PNG: --name PATTERN.png\n", prog);
+        return -1;
+    }
+    o->type = GWS_TYPE_X11;
+    if (o->aa > 0) {
+        fprintf(stderr, "%s: --aa is for PNG output\n", prog);
+        return -1;
+    }
+    return 0;
+}
+
+/* A file output: -o or --name, the type (--type or the extension) and what it allows. */
+static int check_output(options *o, const char *type)
+{
     if (!!o->out == !!o->name) {
         fprintf(stderr, "%s: %s\n", prog, o->out ? "-o and --name exclude each other"
                                                  : "no output file (-o or --name)");
@@ -404,6 +389,45 @@ static int parse(int argc, char **argv, options *o)
         return -1;
     }
     return 0;
+}
+
+static int parse(int argc, char **argv, options *o)
+{
+    *o = (options){ .mode = -1, .samples = -1, .depth = -1, .aa = -1, .threads = -1 };
+    const char *type = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int bad = value_option(a, v, o, &type);
+        if (bad >= 0) {
+            i++;
+        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            help();
+            exit(0);
+        } else if (strcmp(a, "--x11") == 0) {
+            o->x11 = 1;
+        } else if (strcmp(a, "--progress") == 0) {
+            o->progress = 1;
+        } else if (strcmp(a, "--quiet") == 0) {
+            o->quiet = 1;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "%s: unknown option or missing value: %s\n", prog, a);
+            return -1;
+        } else if (!o->in) {
+            o->in = a;
+            bad = 0;
+        } else {
+            bad = 1;
+        }
+        if (bad > 0) {
+            fprintf(stderr, "%s: bad argument near '%s'\n", prog, a);
+            return -1;
+        }
+    }
+    if (!o->in) {
+        fprintf(stderr, "%s: no input file\n", prog);
+        return -1;
+    }
+    return o->x11 ? check_window(o, type) : check_output(o, type);
 }
 
 /* ---------------------------------------------------------------- items */

@@ -33,14 +33,15 @@ wait_for() {
     done
 }
 wait_for 1 '^# refined'
-win=$(xdotool search --name '^gks3d' | head -1)
+# the window's title: "gks3d" while it waits for input, else the prompt line's message
+win=$(xdotool search --name '^gks3d|^drag: turn' | head -1)
 [ -n "$win" ] || { echo "FAIL: no window"; exit 1; }
 # the picture: the workstation viewport, 120 x 120 at the window's lower left (800 x 800)
-"$xgrab" "$win" 0 680 120 120 before.png || { echo "FAIL: grab"; exit 1; }
+"$xgrab" "$win" 0 680 120 120 before.png || { echo "FAIL: grab of window '$win'"; exit 1; }
 xdotool mousemove --window "$win" 40 740 mousedown 1 mousemove --window "$win" 60 735 \
     mousemove --window "$win" 80 730 mousemove --window "$win" 100 725 mouseup 1
 wait_for 2 '^# refined'
-"$xgrab" "$win" 0 680 120 120 after.png || { echo "FAIL: grab"; exit 1; }
+"$xgrab" "$win" 0 680 120 120 after.png || { echo "FAIL: grab of window '$win' after"; exit 1; }
 "$imgcmp" differ before.png after.png || echo "FAIL: the drag did not change the picture"
 xdotool key --window "$win" 2
 wait_for 1 '^# offline:'

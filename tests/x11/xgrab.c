@@ -23,8 +23,10 @@ int main(int argc, char **argv)
     if (w < 1 || h < 1)
         return 1;
     XImage *im = XGetImage(dpy, win, x, y, (unsigned)w, (unsigned)h, AllPlanes, ZPixmap);
-    if (!im)
+    if (!im) {
+        fprintf(stderr, "xgrab: no image of window 0x%lx\n", (unsigned long)win);
         return 1;
+    }
     img out = { w, h, malloc((size_t)w * (size_t)h * 3) };
     if (!out.rgb)
         return 1;
