@@ -53,15 +53,21 @@ clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_state.c "${lib_srcs[@]}" -lpng -lpt
 # Input scripts: the script reader and the measure process behind every input function.
 clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_input.c "${lib_srcs[@]}" -lpng -lpthread -lm \
     -o "$out/fuzz_input"
+# gks3d-render's entry (src/tools/gks3d_render.c, included by the target) on metafiles:
+# its corpus is the MI target's (corpus_mi), copied to corpus_render below.
+clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_render.c "${lib_srcs[@]}" -lpng -lpthread -lm \
+    -o "$out/fuzz_render"
 # The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
 clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
     -o "$out/fuzz_scene"
 
 status=0
-for target in gksm mi state input scene; do
+for target in gksm mi state input scene render; do
     work="$out/corpus_$target"
+    src="tests/fuzz/corpus_$target"
+    [ "$target" = render ] && src=tests/fuzz/corpus_mi # the metafile corpus
     rm -rf "$work"
-    cp -r "tests/fuzz/corpus_$target" "$work"
+    cp -r "$src" "$work"
     echo "fuzz: $target for ${budget}s"
     # run in a scratch folder: fuzz_state's workstations write files relative to it
     mkdir -p "$out/run_$target"
@@ -71,8 +77,8 @@ for target in gksm mi state input scene; do
         tail -40 "$out/$target.log"
         for a in "$out/$target-"*; do
             [ -e "$a" ] || continue
-            cp "$a" "tests/fuzz/corpus_$target/regress-$(basename "$a")"
-            echo "fuzz: kept $a as tests/fuzz/corpus_$target/regress-$(basename "$a")"
+            cp "$a" "$src/regress-$(basename "$a")"
+            echo "fuzz: kept $a as $src/regress-$(basename "$a")"
         done
         status=1
     else

@@ -1162,9 +1162,15 @@ static int run_window(const options *o, int n_frames, double max_px)
     return rc;
 }
 
-int main(int argc, char **argv)
+/* The program (main), also the entry of the fuzz target tests/fuzz/fuzz_render.c, which
+ * includes this file with GKS3D_RENDER_NO_MAIN: every call starts from the same state. */
+static int render_main(int argc, char **argv)
 {
     options o;
+    has_segments = 0;
+    memset(views_seen, 0, sizeof views_seen);
+    n_done = 0;
+    ws_out = WS_OUT;
     if (parse(argc, argv, &o)) {
         usage();
         return EXIT_USAGE;
@@ -1205,3 +1211,10 @@ int main(int argc, char **argv)
                 (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9);
     return rc;
 }
+
+#ifndef GKS3D_RENDER_NO_MAIN
+int main(int argc, char **argv)
+{
+    return render_main(argc, argv);
+}
+#endif
