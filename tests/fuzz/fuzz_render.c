@@ -4,7 +4,7 @@
  * here with its main left out): the bytes are the metafile IN.gksm, rendered as the program
  * renders it, `gks3d-render in.gksm -o out.png --mode M --size 24 --samples 1 --threads 1
  * --frames 1-3 --quiet` (M chosen by the input's size, so every HLHSR mode, ray tracing
- * included, is reached). It runs in a private scratch directory (mkdtemp in $TMPDIR or /tmp):
+ * included, is reached), its files in a private scratch directory (mkdtemp in $TMPDIR or /tmp):
  * after each input the frames are removed and any other file there is a bug (abort), as are
  * crashes, sanitizer reports, hangs and unbounded allocation; error messages and exit
  * statuses 2 and 4 are expected.
@@ -30,10 +30,13 @@ __attribute__((destructor)) static void report_runs(void)
 }
 #endif
 
+static char dir[512]; /* the scratch directory */
+static char in[600], out[600], out2[600], out3[600]; /* its files */
+
 /* Fails (abort) when the scratch directory holds anything but the input. */
 static void only_input_left(void)
 {
-    DIR *d = opendir(".");
+    DIR *d = opendir(dir);
     if (!d)
         abort();
     struct dirent *e;
@@ -45,14 +48,11 @@ static void only_input_left(void)
     closedir(d);
 }
 
-static char dir[512]; /* the scratch directory */
-
 /* At exit: the scratch directory removed (the input, then the directory). */
 static void scratch_gone(void)
 {
-    remove("in.gksm");
-    if (chdir("/") == 0)
-        rmdir(dir);
+    remove(in);
+    rmdir(dir);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -61,12 +61,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!ready) {
         const char *t = getenv("TMPDIR");
         snprintf(dir, sizeof dir, "%s/fuzz_render.XXXXXX", t && *t ? t : "/tmp");
-        if (!mkdtemp(dir) || chdir(dir) != 0)
+        if (!mkdtemp(dir))
             abort();
+        snprintf(in, sizeof in, "%s/in.gksm", dir); /* absolute: libFuzzer's paths are */
+        snprintf(out, sizeof out, "%s/out.png", dir); /* relative to the current folder */
+        snprintf(out2, sizeof out2, "%s/out-002.png", dir);
+        snprintf(out3, sizeof out3, "%s/out-003.png", dir);
         atexit(scratch_gone);
         ready = 1;
     }
-    FILE *f = fopen("in.gksm", "wb");
+    FILE *f = fopen(in, "wb");
     if (!f)
         return 0;
     size_t done = size ? fwrite(data, 1, size, f) : 0;
@@ -74,15 +78,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     static const char *const modes[] = { "none", "hidden-line", "zbuffer", "painter",
                                          "raytrace" };
-    char *argv[] = { "gks3d-render", "in.gksm", "-o", "out.png", "--mode",
+    char *argv[] = { "gks3d-render", in, "-o", out, "--mode",
                      (char *)modes[size % 5], "--size", "24", "--samples", "1", "--threads",
                      "1", "--frames", "1-3", "--quiet", NULL };
     int rc = render_main((int)(sizeof argv / sizeof argv[0]) - 1, argv);
     n_runs++;
     n_written += rc == 0 || rc == EXIT_ITEMS;
-    remove("out.png");
-    remove("out-002.png");
-    remove("out-003.png");
+    remove(out);
+    remove(out2);
+    remove(out3);
     only_input_left();
     return 0;
 }
