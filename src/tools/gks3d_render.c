@@ -960,8 +960,8 @@ static void print_view(const window *w)
         printf("      REAL VWM(4,4), PRM(4,4), VCLP(6)\n");
         print_matrix_f("VWM", t.ori_matrix);
         print_matrix_f("PRM", t.map_matrix);
-        printf("      DATA VCLP / %.9E, %.9E,\n     + %.9E, %.9E, %.9E, %.9E /\n", c->x_min,
-               c->x_max, c->y_min, c->y_max, c->z_min, c->z_max);
+        printf("      DATA VCLP / %.9E, %.9E,\n     + %.9E, %.9E,\n     + %.9E, %.9E /\n",
+               c->x_min, c->x_max, c->y_min, c->y_max, c->z_min, c->z_max);
         printf("      CALL GSVWR(WKID, %d, VWM, PRM, VCLP, %d, %d, %d)\n", v,
                t.xy_clip == GIND_CLIP, t.back_clip == GIND_CLIP, t.front_clip == GIND_CLIP);
     }

@@ -6,13 +6,13 @@
 #  2. a drag sent with xdotool turns the view: the refined picture after it differs from
 #     the first (imgcmp differ: >= 5 % of the pixels by more than 16 levels);
 #  3. key 2 prints the view (the offline command line, C and Fortran SET VIEW
-#     REPRESENTATION 3); the offline render of that command line equals the window's
+#     REPRESENTATION 3, which compile: cc, and gfortran when installed); the offline render of that command line equals the window's
 #     refined picture within the image tests' tolerance (imgcmp same: a channel off by
 #     more than 1 level at most in 1 of 1000 pixels; found identical);
 #  4. key 1 saves the view to --name's file, the same picture; key 0 ends with status 0.
 # Skipped (77) without Xvfb or xdotool.
-# Usage: test_render_x11.sh RENDER FIG3 XGRAB IMGCMP DIR
-render=$1 fig3=$2 xgrab=$3 imgcmp=$4 dir=$5
+# Usage: test_render_x11.sh RENDER FIG3 XGRAB IMGCMP DIR CFLAGS (the -I of gks.h)
+render=$1 fig3=$2 xgrab=$3 imgcmp=$4 dir=$5 cflags=$6
 . "$(dirname "$0")/xvfb.sh"
 xvfb_need Xvfb xdotool
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
@@ -51,6 +51,16 @@ eval "\"\$render\" $cmd" || echo "FAIL: offline render"
 "$imgcmp" same view.png after.png || echo "FAIL: window and offline render differ"
 grep -q 'gset_view_rep3(ws, 1, &rep);' out.txt || echo "FAIL: no C call printed"
 grep -q 'CALL GSVWR(WKID, 1, VWM, PRM, VCLP' out.txt || echo "FAIL: no Fortran call printed"
+# the printed calls compile: C (-Wall -Wextra -Werror) and, with gfortran, Fortran 77
+{ echo '#include <gks.h>'; echo 'void f(int ws);'; echo 'void f(int ws) {'
+  sed -n '/^\/\* C: SET VIEW/,/^    }$/p' out.txt; echo '}'; } > view.c
+cc -fsyntax-only -Wall -Wextra -Werror $cflags view.c || echo "FAIL: the printed C does not compile"
+if command -v gfortran >/dev/null 2>&1; then
+    { echo '      SUBROUTINE F(WKID)'; echo '      INTEGER WKID'
+      sed -n '/^C     Fortran/,/CALL GSVWR/p' out.txt; echo '      END'; } > view.f
+    gfortran -std=legacy -fsyntax-only view.f ||
+        echo "FAIL: the printed Fortran 77 does not compile"
+fi
 xdotool key --window "$win" 1
 wait_for 1 '^# saved saved-1.png'
 "$imgcmp" same view.png saved-1.png || echo "FAIL: the saved view differs"
