@@ -1011,6 +1011,8 @@ static int refine(window *w)
         e = show(w, GHLHSR_RAYTRACE, 1);
         if (e)
             return e;
+        printf("# coarse: yaw %.17g, pitch %.17g, 1 sample a pixel\n", w->yaw, w->pitch);
+        fflush(stdout);
         Gint ws, num;
         gawait_event(0, &ws, &w->pending, &num);
         if (w->pending != GIN_NONE)

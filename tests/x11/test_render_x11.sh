@@ -9,7 +9,8 @@
 #     REPRESENTATION 3, which compile: cc, and gfortran when installed); the offline render of that command line equals the window's
 #     refined picture within the image tests' tolerance (imgcmp same: a channel off by
 #     more than 1 level at most in 1 of 1000 pixels; found identical);
-#  4. key 1 saves the view to --name's file, the same picture; key 0 ends with status 0.
+#  4. key 1 saves the view to --name's file, the same picture; key 0 ends with status 0;
+#  5. closing the window ends it too (status 0).
 # Skipped (77) without Xvfb or xdotool.
 # Usage: test_render_x11.sh RENDER FIG3 XGRAB IMGCMP DIR CFLAGS (the -I of gks.h)
 render=$1 fig3=$2 xgrab=$3 imgcmp=$4 dir=$5 cflags=$6
@@ -40,7 +41,13 @@ win=$(xdotool search --name '^gks3d|^drag: turn' | head -1)
 "$xgrab" "$win" 0 680 120 120 before.png || { echo "FAIL: grab of window '$win'"; exit 1; }
 xdotool mousemove --window "$win" 40 740 mousedown 1 mousemove --window "$win" 60 735 \
     mousemove --window "$win" 80 730 mousemove --window "$win" 100 725 mouseup 1
-wait_for 2 '^# refined'
+# the drag: 60 pixels right, 15 up of the 120-pixel picture (NDC 0.5, 0.125): 90, -22.5
+# degrees; waited for by that view (an earlier stop mid-drag would refine another one)
+wait_for 1 '^# refined: yaw 90, pitch -22.5$'
+# progressive: the coarse pass (1 sample a pixel) of that view came before its refinement
+c=$(grep -n '^# coarse: yaw 90, pitch -22.5,' out.txt | tail -1 | cut -d: -f1)
+r=$(grep -n '^# refined: yaw 90, pitch -22.5$' out.txt | tail -1 | cut -d: -f1)
+[ -n "$c" ] && [ "$c" -lt "$r" ] || echo "FAIL: no coarse pass before the refined picture"
 "$xgrab" "$win" 0 680 120 120 after.png || { echo "FAIL: grab of window '$win' after"; exit 1; }
 "$imgcmp" differ before.png after.png || echo "FAIL: the drag did not change the picture"
 xdotool key --window "$win" 2
@@ -67,5 +74,23 @@ wait_for 1 '^# saved saved-1.png'
 xdotool key --window "$win" 0
 wait $pid
 rc=$?
-echo "gks3d-render --x11: exit status $rc"
-[ $rc -eq 0 ] || echo "FAIL: exit status $rc"
+[ $rc -eq 0 ] || echo "FAIL: exit status $rc after key 0"
+# 5. closing the window (here: destroyed by xdotool) ends the program too, status 0
+"$render" fig3.gksm --x11 --frames 3 --size 60 >out2.txt 2>err2.txt &
+pid=$!
+i=0
+until win=$(xdotool search --name '^gks3d|^drag: turn' | head -1) && [ -n "$win" ]; do
+    i=$((i + 1)); [ $i -gt 300 ] && { echo "FAIL: no second window"; exit 1; }
+    sleep 0.1
+done
+sleep 0.5
+xdotool windowclose "$win"
+i=0
+while kill -0 $pid 2>/dev/null; do
+    i=$((i + 1)); [ $i -gt 100 ] && { echo "FAIL: the closed window did not end it"; exit 1; }
+    sleep 0.1
+done
+wait $pid
+rc2=$?
+[ $rc2 -eq 0 ] || { echo "FAIL: exit status $rc2 after the window was closed"; cat err2.txt; }
+echo "gks3d-render --x11: exit status $rc, after closing $rc2"
