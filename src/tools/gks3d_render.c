@@ -782,6 +782,17 @@ static int interpret(render *r, int only, int *written)
     return 0;
 }
 
+/* A metafile may end with a segment open (CREATE SEGMENT without CLOSE SEGMENT): GKS
+ * refuses to deactivate a workstation then (error 3), so the segment is closed first;
+ * otherwise the last frame would not be written (found by fuzz_render). */
+static void close_open_segment(void)
+{
+    Gop_st st;
+    ginq_op_st(&st);
+    if (st == GST_SGOP)
+        gclose_seg();
+}
+
 /* --name: the workstation wrote frame k > 1 of the run to B-k.EXT (B: the first frame's
  * name less its extension); each becomes the pattern's name of its frame number. Under an
  * MPI launcher a rank has only the frames it wrote. 0 or EXIT_OUTPUT. */
@@ -843,6 +854,7 @@ static int run(const options *o, double max_px, int *written)
     if (interpret(&r, 0, written))
         return EXIT_INPUT;
     errs_reset();
+    close_open_segment();
     gdeactivate_ws(ws_out);
     gclose_ws(ws_out);
     if (errs.n) {
@@ -1123,8 +1135,7 @@ static int open_window(window *w)
     if (interpret(&r, w->frame, &written))
         return EXIT_INPUT;
     errs_reset();
-    if (!has_segments)
-        gclose_seg();
+    close_open_segment(); /* SEG_ALL, or one the metafile left open */
     gdeactivate_ws(WS_OUT);
     gclose_ws(WS_IN);
     for (int v = 1; v <= GKS_MAX_VIEW_IND; v++) {
@@ -1204,8 +1215,12 @@ static int render_main(int argc, char **argv)
         rc = run(&o, max_px, &written);
     Gop_st st;
     ginq_op_st(&st);
-    if (st != GST_GKCL)
+    if (st != GST_GKCL) {
+        errs_reset();
         gclose_gks();
+        if (errs.n) /* something is still open: all of it closed (files flushed) */
+            gemergency_close_gks();
+    }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     if ((rc == 0 || rc == EXIT_ITEMS) && !o.quiet && !o.x11)
         fprintf(stderr, "%s: %d of %d frame%s written to %s in %.2f s\n", prog, written,

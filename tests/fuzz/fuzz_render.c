@@ -5,7 +5,8 @@
  * renders it, `gks3d-render in.gksm -o out.png --mode M --size 24 --samples 1 --threads 1
  * --frames 1-3 --quiet` (M chosen by the input's size, so every HLHSR mode, ray tracing
  * included, is reached), its files in a private scratch directory (mkdtemp in $TMPDIR or /tmp):
- * after each input the frames are removed and any other file there is a bug (abort), as are
+ * after each input the frames are removed and any other file there is a bug (abort), as is
+ * GKS left open (the next input would find its workstations: what the first finding was), as are
  * crashes, sanitizer reports, hangs and unbounded allocation; error messages and exit
  * statuses 2 and 4 are expected.
  * libFuzzer entry point (scripts/fuzz.sh, corpus tests/fuzz/corpus_mi: the metafile
@@ -83,6 +84,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      "1", "--frames", "1-3", "--quiet", NULL };
     int rc = render_main((int)(sizeof argv / sizeof argv[0]) - 1, argv);
     n_runs++;
+    Gop_st st;
+    ginq_op_st(&st);
+    if (st != GST_GKCL) { /* the next input would find workstations open (error 24) */
+        fprintf(stderr, "fuzz_render: GKS left open (state %d)\n", (int)st);
+        abort();
+    }
     n_written += rc == 0 || rc == EXIT_ITEMS;
     remove(out);
     remove(out2);
