@@ -1165,6 +1165,10 @@ static int run_window(const options *o, int n_frames, double max_px)
 {
     window w = { .o = o, .max_px = max_px, .samples = o->samples > 0 ? o->samples : 4,
                  .frame = first_wanted(o, n_frames) };
+    if (!w.frame) {
+        fprintf(stderr, "%s: --frames: no such frame in the file (%d)\n", prog, n_frames);
+        return EXIT_USAGE;
+    }
     int rc = open_window(&w);
     if (rc && rc != EXIT_ITEMS)
         return rc;
