@@ -23,12 +23,13 @@ GKS3D_RECORD=fig3.gksm "$fig3" >/dev/null || { echo "FAIL: fig3 not recorded"; e
     --name 'saved-%d.png' >out.txt 2>err.txt &
 pid=$!
 trap 'kill $pid 2>/dev/null; kill $xpid 2>/dev/null' EXIT
-# waits until out.txt has N lines matching a pattern (30 s)
+# waits until out.txt has N lines matching a pattern (120 s: a Debug build on a loaded
+# machine takes tens of seconds for a refined picture)
 wait_for() {
     i=0
     while [ "$(grep -c "$2" out.txt)" -lt "$1" ]; do
         i=$((i + 1))
-        [ $i -gt 300 ] && { echo "FAIL: no '$2' ($1) in time"; cat out.txt err.txt; exit 1; }
+        [ $i -gt 1200 ] && { echo "FAIL: no '$2' ($1) in time"; cat out.txt err.txt; exit 1; }
         kill -0 $pid 2>/dev/null || { echo "FAIL: gks3d-render ended"; cat err.txt; exit 1; }
         sleep 0.1
     done
@@ -80,14 +81,14 @@ rc=$?
 pid=$!
 i=0
 until win=$(xdotool search --name '^gks3d|^drag: turn' | head -1) && [ -n "$win" ]; do
-    i=$((i + 1)); [ $i -gt 300 ] && { echo "FAIL: no second window"; exit 1; }
+    i=$((i + 1)); [ $i -gt 1200 ] && { echo "FAIL: no second window"; exit 1; }
     sleep 0.1
 done
 sleep 0.5
 xdotool windowclose "$win"
 i=0
 while kill -0 $pid 2>/dev/null; do
-    i=$((i + 1)); [ $i -gt 100 ] && { echo "FAIL: the closed window did not end it"; exit 1; }
+    i=$((i + 1)); [ $i -gt 400 ] && { echo "FAIL: the closed window did not end it"; exit 1; }
     sleep 0.1
 done
 wait $pid

@@ -18,23 +18,23 @@ for how in wmdelete destroy xkill; do
     ppid=$!
     i=0
     while ! grep -q READY out.txt 2>/dev/null; do
-        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: $how: no window"; exit 1; }
+        i=$((i + 1)); [ $i -gt 1200 ] && { cat out.txt; echo "FAIL: $how: no window"; exit 1; }
         sleep 0.1
     done
     w=$(xdotool search --sync --name gks3d | head -1)
     i=0 # the REQUEST waits once the title names it
     while [ "$(xdotool getwindowname "$w" 2>/dev/null)" != "gks3d: REQUEST LOCATOR 1" ]; do
-        i=$((i + 1)); [ $i -gt 300 ] && { cat out.txt; echo "FAIL: $how: no REQUEST"; exit 1; }
+        i=$((i + 1)); [ $i -gt 1200 ] && { cat out.txt; echo "FAIL: $how: no REQUEST"; exit 1; }
         sleep 0.1
     done
     case $how in
     xkill) xkill -id "$w" >/dev/null 2>&1 ;;
     *) "$xclose" $how "$w" ;;
     esac
-    i=0 # the program ends by itself within 20 s
+    i=0 # the program ends by itself (80 s at most, on a loaded machine)
     while kill -0 $ppid 2>/dev/null; do
         i=$((i + 1))
-        if [ $i -gt 200 ]; then
+        if [ $i -gt 800 ]; then
             kill $ppid; cat out.txt; echo "FAIL: $how: the REQUEST did not end"; exit 1
         fi
         sleep 0.1
