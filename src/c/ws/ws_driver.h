@@ -142,7 +142,8 @@ typedef struct gks_prim {
     int refl_eq[2];           /* front, back reflectance equation, GREFL_* */
     uint64_t light_mask;      /* bit i-1: light source index i is active */
     /* FILL AREA primitives with data (FILL AREA (SET) 3 WITH DATA; triangle strips,
-     * quadrilateral meshes and sets of fill area sets arrive as one FILL AREA per facet):
+     * quadrilateral meshes and sets of fill area sets arrive as one FILL AREA per facet
+     * unless the driver's entry mesh takes them whole, gks_mesh below):
      * per-vertex unit normals in NDC3 (inverse transpose of the point transformation,
      * renormalised) and colours resolved for this workstation, n_points each in the
      * order of pts (all loops), NULL = none; the facet normal (unit, NDC3) when
@@ -172,6 +173,35 @@ typedef struct gks_text_prim {
     Grgb colour;                         /* text colour */
     int hlhsr_id, pick_id, view_ind;
 } gks_text_prim;
+
+/* A primitive with data as one indexed mesh, for a driver that keeps a mesh whole (the
+ * optional entry `mesh` of gks_ws_driver): TRIANGLE STRIP 3, QUADRILATERAL MESH 3, SET OF
+ * FILL AREA SET 3 and FILL AREA (SET) 3 WITH DATA, with its shared vertices. n_verts points
+ * in NDC3 (normalization and segment transformation applied), the per-vertex unit normals
+ * (inverse transpose, renormalised) and colours (resolved for this workstation) where the
+ * primitive has them, NULL otherwise; n_facets facets, facet f of facet_loops[f] loops, the
+ * loops' vertex counts in loop_counts and their vertex indices (0 <= idx < n_verts) in idx,
+ * all facets' loops in order; per-facet colours (resolved) and unit normals or NULL. prim
+ * carries the attributes exactly as the facets would (kind GKS_PRIM_FILL_AREA, resolved
+ * colour, area properties, shading, view, lights; pts, vnormals etc. unset). The core calls
+ * the entry only for a mesh that needs no clipping (clipping off, or every vertex inside the
+ * clipping volume), whose points are all finite and whose normals all map to unit vectors:
+ * the facets it would send are then exactly the mesh's facets with these data. */
+typedef struct gks_mesh {
+    gks_prim prim;
+    size_t n_verts;
+    const double (*pts)[3];
+    const double (*vnormals)[3];
+    const double (*vcolours)[3];
+    size_t n_facets, n_loops, n_idx;
+    const int *facet_loops, *loop_counts, *idx;
+    const double (*fcolours)[3];
+    const double (*fnormals)[3];
+} gks_mesh;
+
+/* Result of the driver entry mesh besides 0 (drawn) and GKS error numbers: not drawn, the
+ * core sends the facets one GKS_PRIM_FILL_AREA each to primitive (as without the entry). */
+enum { GKS_WS_MESH_FACETS = -1 };
 
 /* Results of the driver entry text besides 0 (drawn) and GKS error numbers. */
 enum {
@@ -251,6 +281,9 @@ struct gks_ws_driver {
     /* TEXT (3) unstroked (gks_text_prim): 0, GKS_WS_TEXT_STROKE, GKS_WS_TEXT_CLIPPED or an
      * error number. NULL: every TEXT reaches primitive as its strokes. */
     int (*text)(gks_ws *ws, const gks_text_prim *t);
+    /* A mesh with data as one indexed primitive (gks_mesh): 0, GKS_WS_MESH_FACETS or an
+     * error number. NULL: every mesh reaches primitive as one FILL AREA per facet. */
+    int (*mesh)(gks_ws *ws, const gks_mesh *m);
     int (*message)(gks_ws *ws, const char *msg);
     /* Returns 0, 180 (not supported by this ws) or 182 (bad data record). */
     int (*escape)(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out);

@@ -10,7 +10,8 @@
  * facet is clipped at the viewport 3 (when clipping is on) with its vertex normals and
  * colours interpolated at new vertices; per workstation the colours are resolved (indices
  * through the colour table) and the facet is sent to the driver as one GKS_PRIM_FILL_AREA
- * with data (ws_driver.h). A facet with a non-finite point or normal is not drawn (as
+ * with data (ws_driver.h) -- or the whole primitive at once as one indexed mesh to a driver
+ * with the entry mesh, when no clipping plane cuts it (send_mesh). A facet with a non-finite point or normal is not drawn (as
  * FILL AREA 3 with a non-finite point).
  */
 #include "gks_pipe.h"
@@ -236,6 +237,66 @@ static int send_facet(gks_ws *ws, const gks_prim *tpl, const gks_pipe_norm *nc, 
     return gks_pipe_send(ws, &p);
 }
 
+/* The colours of the n values of a list (rgb or indices ci, by ctype) for ws: rgb itself, or
+ * the indices resolved into *own (gks_alloc'd; the caller frees it). NULL with *own NULL:
+ * storage. */
+static const double (*colours_of(const gks_ws *ws, int ctype, const double (*rgb)[3],
+                                 const int *ci, size_t n, double (**own)[3]))[3]
+{
+    *own = NULL;
+    if (ctype == GCOLR_RGB)
+        return rgb;
+    if (!(*own = gks_alloc_array(n ? n : 1, sizeof **own)))
+        return NULL;
+    for (size_t k = 0; k < n; k++) {
+        Grgb c = colr_of(ws, ctype, rgb, ci, k);
+        (*own)[k][0] = c.red; (*own)[k][1] = c.green; (*own)[k][2] = c.blue;
+    }
+    return (const double (*)[3])*own;
+}
+
+/* The whole primitive to ws's driver entry mesh (ws_driver.h, gks_mesh), when it needs no
+ * clipping (clipping off, or every vertex inside the volume; the simplest correct rule: a
+ * mesh a clipping plane cuts goes facet by facet as before) and every point is finite and
+ * every normal maps to a unit vector, so that the facets send_facet would send are exactly
+ * the mesh's. 0, an error number, or GKS_WS_MESH_FACETS: the caller sends the facets. */
+static int send_mesh(gks_ws *ws, const gks_prim *tpl, const gks_pipe_norm *nc, const mapped *mp)
+{
+    const gks_area_data *d = mp->d;
+    if (!ws->drv->mesh)
+        return GKS_WS_MESH_FACETS;
+    for (size_t i = 0; i < d->n_verts; i++) {
+        if (!mp->pok[i] || (mp->n && !mp->nok[i]))
+            return GKS_WS_MESH_FACETS;
+        for (int k = 0; nc->clip_on && k < 3; k++)
+            if (!(mp->p[i][k] >= nc->box[2 * k] && mp->p[i][k] <= nc->box[2 * k + 1]))
+                return GKS_WS_MESH_FACETS;
+    }
+    for (size_t f = 0; mp->fn && f < d->n_facets; f++)
+        if (!mp->fnok[f])
+            return GKS_WS_MESH_FACETS;
+    gks_mesh m = { .prim = *tpl, .n_verts = d->n_verts, .pts = (const double (*)[3])mp->p,
+                   .vnormals = (const double (*)[3])mp->n, .n_facets = d->n_facets,
+                   .n_loops = d->n_loops, .n_idx = d->n_idx, .facet_loops = d->facet_loops,
+                   .loop_counts = d->loop_counts, .idx = d->idx,
+                   .fnormals = (const double (*)[3])mp->fn };
+    double (*vown)[3] = NULL, (*fown)[3] = NULL;
+    int err = 0;
+    if (d->vflag & GVERT_COORD_COLR) {
+        m.vcolours = colours_of(ws, d->ctype, d->vrgb, d->vci, d->n_verts, &vown);
+        err = m.vcolours ? 0 : 300;
+    }
+    if (!err && (d->fflag & GFACET_COLR)) {
+        m.fcolours = colours_of(ws, d->ctype, d->frgb, d->fci, d->n_facets, &fown);
+        err = m.fcolours ? 0 : 300;
+    }
+    if (!err)
+        err = gks_pipe_send_mesh(ws, &m);
+    gks_free(vown);
+    gks_free(fown);
+    return err;
+}
+
 /* Maps d's points by nc->m and its normals by the inverse transpose. */
 static int map_data(const gks_pipe_norm *nc, const gks_area_data *d, int is_set, mapped *mp)
 {
@@ -286,6 +347,14 @@ static int data_emit(const gks_pipe_norm *nc, const gks_area_data *d, int is_set
         err = gks_attr_prim_fill(ws, t->a, t->pat_m, &tpl, &pat);
         if (!is_set)
             tpl.attrs.edge_flag = 0; /* GKS-3D edges belong to the area sets */
+        if (!err) {
+            int m = send_mesh(ws, &tpl, nc, &mp);
+            if (m != GKS_WS_MESH_FACETS) { /* drawn whole, or its error */
+                err = m;
+                gks_free(pat);
+                continue;
+            }
+        }
         size_t loop0 = 0, idx0 = 0;
         for (size_t f = 0; f < d->n_facets && !err; f++) {
             err = send_facet(ws, &tpl, nc, &mp, f, loop0, idx0, &b);

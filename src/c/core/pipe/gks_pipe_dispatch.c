@@ -29,3 +29,17 @@ int gks_pipe_send(gks_ws *ws, const gks_prim *p)
         ws->disp_empty = GDISP_NOT_EMPTY;
     return err;
 }
+
+int gks_pipe_send_mesh(gks_ws *ws, const gks_mesh *m)
+{
+#ifdef GKS_FAULT_INJECTION
+    if (gks_ctx()->prim_hook)
+        return GKS_WS_MESH_FACETS;
+#endif
+    if (!ws->drv->mesh)
+        return GKS_WS_MESH_FACETS;
+    int err = ws->drv->mesh(ws, m);
+    if (!err)
+        ws->disp_empty = GDISP_NOT_EMPTY;
+    return err;
+}

@@ -28,6 +28,10 @@ static inline void gks_pipe_target_current(gks_pipe_target *t, const gks_pipe_no
 }
 /* Hands p to ws's driver (after the test hook). 0 or the driver's error. */
 int gks_pipe_send(gks_ws *ws, const gks_prim *p);
+/* Hands the mesh m to ws's driver entry mesh: 0, the driver's error, or GKS_WS_MESH_FACETS
+ * when the driver has no such entry, declines, or a test hook watches the primitives (it
+ * sees the facets): then the caller sends the facets. */
+int gks_pipe_send_mesh(gks_ws *ws, const gks_mesh *m);
 
 /* The next workstation of the target, or NULL when there is none left. Inline with the
  * next one: they run for every primitive and workstation. */
