@@ -158,6 +158,24 @@ RT_API int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_c
                                      const double *xyz, const rt_vertex_data *vd,
                                      int front_surface, int back_surface);
 
+/* An indexed triangle mesh in VRC3 (a GKS mesh primitive WITH DATA kept whole: triangle
+ * strips, quadrilateral meshes split into triangles, sets of fill area sets' triangles):
+ * nverts vertices xyz (3 doubles each), optional per-vertex normals and colours as
+ * rt_scene_add_polygon_data takes them (3 doubles per vertex, NULL: none; normalised and
+ * stored as floats, colours clamped), ntris triangles idx[3t .. 3t+2] (indices < nverts).
+ * The vertices are stored once (24 bytes, and 12 for normals and for colours where given)
+ * and each triangle as three 4-byte indices, so that triangles sharing an edge trace exactly
+ * the same doubles (watertight). Each triangle is traced and shaded exactly as the same
+ * triangle given alone to rt_scene_add_polygon_data (front side: counter-clockwise seen from
+ * the front; data interpolated barycentrically); degenerate triangles are dropped at commit.
+ * All triangles carry the one id returned (hits report it). Returns the id or RT_ERR_ARG (a
+ * NULL array with counts > 0, an index >= nverts, non-finite normals or colours, a bad
+ * surface id), RT_ERR_NOMEM, RT_ERR_LIMIT (more than 2^32 - 1 vertices or 2^31 triangles in
+ * the scene's meshes). */
+RT_API int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz,
+                             const double *normals, const double *colours, size_t ntris,
+                             const uint32_t *idx, int front_surface, int back_surface);
+
 /* GKS CELL ARRAY 3 in VRC3: parallelogram with corners P, R, Q and P + Q - R (P and Q
  * diagonally opposite, R a third corner). Columns i = 0..nx-1 run from P towards R, rows
  * j = 0..ny-1 from R towards Q; cell (i,j) colour is rgb[3*(j*nx + i) + 0..2] (nearest

@@ -129,6 +129,16 @@ typedef struct rt_vd {
 
 #define RT_NO_VD UINT32_MAX
 
+/* an indexed mesh (rt_scene_add_mesh): its triangles nt input triangles from t0 in the
+   scene's mtri (indices into mv_xyz, global), its vertices nv from v0 (mv_xyz; mv_n and mv_c
+   where has_n, has_c); every triangle has the mesh's id and surfaces */
+typedef struct rt_mesh {
+    uint32_t id;
+    int front, back;
+    uint8_t has_n, has_c;
+    size_t t0, nt, v0, nv;
+} rt_mesh;
+
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */
 typedef struct rt_box {
     double lo[3], hi[3], cw[3], inv_cw[3];
@@ -196,13 +206,22 @@ struct rt_scene {
     rt_vd *vd; size_t nvd, capvd;     /* smooth areas' vertex data */
     double *vd_xyz; float *vd_n, *vd_c; size_t nvdv, capvdxyz, capvdn, capvdc;
     int *vd_loops; size_t nvdl, capvdl;
+    /* indexed meshes, in id order: vertices (double xyz; float unit normals and colours, the
+       arrays made when a mesh has them) and triangles (3 global vertex indices each) */
+    rt_mesh *mesh; size_t nmesh, capmesh;
+    rt_big mv_xyz, mv_n, mv_c; size_t nmv;
+    rt_big mtri; size_t nmtri;
     /* committed */
     int committed;
     uint32_t *prim_vd;                /* per committed prim: its rt_vd or RT_NO_VD; NULL
                                          when the scene has no vertex data */
     rt_prim *prim; size_t nprim;
-    rt_tri *tri; size_t ntri;         /* prim index i < ntri: tri[i] */
+    rt_tri *tri; size_t ntri;         /* prim index i < ntri: a triangle; i < ntri_plain:
+                                         tri[i], else the mesh triangle ctri[i - ntri_plain] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
+    size_t ntri_plain;
+    uint32_t (*ctri)[3];              /* committed mesh triangles: vertex indices (mv_xyz) */
+    int ctri_owned;                   /* 1: a compacted copy, 0: ctri == mtri (all kept) */
     int prim_owned;                   /* 1: prim is allocated, 0: prim == in_tri_prim.p */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
     rt_poly *poly; size_t npoly;
@@ -221,16 +240,40 @@ struct rt_scene {
     size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
 
-/* Vertex k (0, 1, 2) of committed triangle t (0 <= t < ntri; a triangle primitive's data):
-   every reader of committed triangle vertices goes through this and rt_tri_prefetch, so the
-   vertices' storage is known in one place. */
+/* The three vertices of committed triangle primitive i (0 <= i < ntri; a triangle
+   primitive's data is its index i): every reader of committed triangle vertices goes through
+   this, rt_tri_vert and rt_tri_prefetch, so the vertices' storage is known in one place. A
+   plain triangle (i < ntri_plain) holds its 72 bytes itself; a mesh triangle holds indices
+   into the shared vertex array, so that triangles sharing an edge use the same doubles. */
+static inline void rt_tri_verts(const rt_scene *sc, size_t i, const double *v[3])
+{
+    if (i < sc->ntri_plain) {
+        v[0] = sc->tri[i].v[0];
+        v[1] = sc->tri[i].v[1];
+        v[2] = sc->tri[i].v[2];
+        return;
+    }
+    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    v[0] = X[ix[0]];
+    v[1] = X[ix[1]];
+    v[2] = X[ix[2]];
+}
+/* Vertex k (0, 1, 2) of committed triangle primitive t (rt_tri_verts). */
 static inline const double *rt_tri_vert(const rt_scene *sc, size_t t, int k)
 {
-    return sc->tri[t].v[k];
+    if (t < sc->ntri_plain)
+        return sc->tri[t].v[k];
+    return (const double *)sc->mv_xyz.p + 3 * (size_t)sc->ctri[t - sc->ntri_plain][k];
 }
-/* starts loading the vertices of committed triangle t (both cache lines of its 72 bytes) */
+/* starts loading the vertices of committed triangle t (both cache lines of a plain one's 72
+   bytes; a mesh triangle's indices) */
 static inline void rt_tri_prefetch(const rt_scene *sc, size_t t)
 {
+    if (t >= sc->ntri_plain) {
+        __builtin_prefetch(sc->ctri[t - sc->ntri_plain]);
+        return;
+    }
     const char *p = (const char *)&sc->tri[t];
     __builtin_prefetch(p);
     __builtin_prefetch(p + sizeof(rt_tri) - 1);

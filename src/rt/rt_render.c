@@ -502,7 +502,8 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
         memcpy(Od, s->diffuse, sizeof Od);
     /* smooth areas: the shading normal Ns and the shadow rays' start Ps (rt_smooth.c) */
     double Ns[3], Ps[3], Oi[3];
-    const int sm = sc->prim_vd ? rt_smooth_at(sc, (size_t)i, P, ng, Ns, Ps, Oi) : 0;
+    const int sm = sc->prim_vd || sc->ntri > sc->ntri_plain /* meshes */
+                       ? rt_smooth_at(sc, (size_t)i, P, ng, Ns, Ps, Oi) : 0;
     const int smooth = (sm & 1) && job->o.smooth != RT_SMOOTH_FLAT;
     if (sm & 2)
         memcpy(Od, Oi, sizeof Od);

@@ -66,6 +66,9 @@ static void rt_scene_uncommit(rt_scene *sc)
     if (sc->tri_owned)
         free(sc->tri);
     sc->tri = NULL; sc->ntri = 0; sc->tri_owned = 0;
+    if (sc->ctri_owned)
+        free(sc->ctri);
+    sc->ctri = NULL; sc->ntri_plain = 0; sc->ctri_owned = 0;
     free(sc->quad); sc->quad = NULL; sc->nquad = 0;
     free(sc->poly); sc->poly = NULL; sc->npoly = 0;
     free(sc->cell); sc->cell = NULL; sc->ncell = 0;
@@ -98,6 +101,11 @@ void rt_scene_free(rt_scene *sc)
     free(sc->vd_n);
     free(sc->vd_c);
     free(sc->vd_loops);
+    free(sc->mesh);
+    rt_big_free(&sc->mv_xyz);
+    rt_big_free(&sc->mv_n);
+    rt_big_free(&sc->mv_c);
+    rt_big_free(&sc->mtri);
     free(sc);
 }
 
@@ -211,6 +219,11 @@ int rt_scene_truncate(rt_scene *sc, int n)
         else
             sc->nloopsin = p->loop0;
     }
+    while (sc->nmesh > 0 && sc->mesh[sc->nmesh - 1].id >= (uint32_t)n) {
+        const rt_mesh *m = &sc->mesh[--sc->nmesh];
+        sc->nmv = m->v0;
+        sc->nmtri = m->t0;
+    }
     while (sc->nvd > 0 && sc->vd[sc->nvd - 1].id >= (uint32_t)n) {
         const rt_vd *r = &sc->vd[--sc->nvd];
         sc->nvdv = r->v0;
@@ -292,6 +305,70 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
     sc->nloopsin += (size_t)nloops;
     sc->committed = 0;
     sc->nin++;
+    return (int)sc->nids++;
+}
+
+/* the n vertex normals or colours v (3 doubles each) as floats into o: normals normalised
+   (a zero one stays 0) as rt_scene_add_polygon_data stores them, colours clamped to [0,1] */
+static void rt_mesh_floats(const double *v, size_t n, int normals, float *o)
+{
+    for (size_t i = 0; i < n; i++) {
+        const double *q = v + 3 * i;
+        double l = 1.0;
+        if (normals) {
+            double m = fmax(fabs(q[0]), fmax(fabs(q[1]), fabs(q[2])));
+            l = 0.0;
+            if (m > 0.0) {
+                double a = q[0] / m, b = q[1] / m, e = q[2] / m;
+                l = m * sqrt(a * a + b * b + e * e);
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            o[3 * i + k] = normals ? (l > 0.0 ? (float)(q[k] / l) : 0.0f)
+                                   : (float)(q[k] < 0.0 ? 0.0 : q[k] > 1.0 ? 1.0 : q[k]);
+    }
+}
+
+int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const double *normals,
+                      const double *colours, size_t ntris, const uint32_t *idx,
+                      int front_surface, int back_surface)
+{
+    if (!sc || (nverts && !xyz) || (ntris && !idx))
+        return RT_ERR_ARG;
+    if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
+        return RT_ERR_ARG;
+    for (size_t t = 0; t < 3 * ntris; t++)
+        if (idx[t] >= nverts)
+            return RT_ERR_ARG;
+    for (size_t i = 0; i < 3 * nverts; i++)
+        if ((normals && !isfinite(normals[i])) || (colours && !isfinite(colours[i])))
+            return RT_ERR_ARG;
+    if (sc->nids >= INT_MAX || nverts > (size_t)UINT32_MAX - sc->nmv ||
+        ntris > ((size_t)1 << 31) - sc->nmtri)
+        return RT_ERR_LIMIT;
+    const size_t nv = sc->nmv + nverts, nt = sc->nmtri + ntris;
+    if (!rt_grow((void **)&sc->mesh, &sc->capmesh, sc->nmesh + 1, sizeof *sc->mesh) ||
+        !rt_big_grow(&sc->mv_xyz, nv, 3 * sizeof(double)) ||
+        (normals && !rt_big_grow(&sc->mv_n, nv, 3 * sizeof(float))) ||
+        (colours && !rt_big_grow(&sc->mv_c, nv, 3 * sizeof(float))) ||
+        !rt_big_grow(&sc->mtri, nt, 3 * sizeof(uint32_t)))
+        return RT_ERR_NOMEM;
+    rt_mesh *m = &sc->mesh[sc->nmesh++];
+    *m = (rt_mesh){ .id = (uint32_t)sc->nids, .front = front_surface, .back = back_surface,
+                    .has_n = normals != NULL, .has_c = colours != NULL, .t0 = sc->nmtri,
+                    .nt = ntris, .v0 = sc->nmv, .nv = nverts };
+    if (nverts)
+        memcpy((double *)sc->mv_xyz.p + 3 * sc->nmv, xyz, 3 * nverts * sizeof(double));
+    if (normals)
+        rt_mesh_floats(normals, nverts, 1, (float *)sc->mv_n.p + 3 * sc->nmv);
+    if (colours)
+        rt_mesh_floats(colours, nverts, 0, (float *)sc->mv_c.p + 3 * sc->nmv);
+    uint32_t *o = (uint32_t *)sc->mtri.p + 3 * sc->nmtri;
+    for (size_t t = 0; t < 3 * ntris; t++)
+        o[t] = (uint32_t)sc->nmv + idx[t];
+    sc->nmv = nv;
+    sc->nmtri = nt;
+    sc->committed = 0;
     return (int)sc->nids++;
 }
 
@@ -664,14 +741,72 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
     return RT_OK;
 }
 
+/* The meshes' triangles after the plain ones (ntri_plain), in id order, with their records
+   (data: the primitive index, as a plain triangle's); degenerate ones (as rt_tri_prim finds
+   them) and, with culling, culled ones left out: then the kept index triples are a compacted
+   copy (ctri_owned), else ctri is the input's. */
+static int rt_commit_mesh(rt_scene *sc, const rt_build_options *o, double bb[6])
+{
+    sc->ntri_plain = sc->ntri;
+    if (sc->nmtri == 0)
+        return RT_OK;
+    const int cull = o && o->ncull > 0;
+    uint32_t (*in)[3] = sc->mtri.p, (*out)[3] = NULL;
+    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    size_t w = 0;
+    for (size_t mi = 0; mi < sc->nmesh; mi++) {
+        const rt_mesh *m = &sc->mesh[mi];
+        rt_prim pr;
+        memset(&pr, 0, sizeof pr);
+        const int rc = rt_prim_init(sc, &pr, (int)m->id, m->front, m->back);
+        if (rc != RT_OK) {
+            free(out);
+            return rc;
+        }
+        pr.kind = RT_KIND_TRI;
+        for (size_t t = m->t0; t < m->t0 + m->nt; t++) {
+            const double *a = X[in[t][0]], *b = X[in[t][1]], *c = X[in[t][2]];
+            double v[9], nrm[3];
+            int keep = sane3(a) && sane3(b) && sane3(c) &&
+                       (rt_tri_surely_sane(a, b, c) || rt_tri_normal_sane(a, b, c, nrm));
+            if (keep && cull) {
+                memcpy(v, a, sizeof v / 3);
+                memcpy(v + 3, b, sizeof v / 3);
+                memcpy(v + 6, c, sizeof v / 3);
+                keep = !rt_culled(o, v, 3, 0);
+            }
+            if (!keep && !out) { /* the first left out: the kept ones so far are in[0 .. w) */
+                out = rt_alloc_array(sc->nmtri, sizeof *out);
+                if (!out)
+                    return RT_ERR_NOMEM;
+                memcpy(out, in, w * sizeof *out);
+            }
+            if (!keep)
+                continue;
+            if (out)
+                memcpy(out[w], in[t], sizeof *out);
+            pr.data = (uint32_t)sc->nprim;
+            sc->prim[sc->nprim++] = pr;
+            rt_bbox_add(bb, a);
+            rt_bbox_add(bb, b);
+            rt_bbox_add(bb, c);
+            w++;
+        }
+    }
+    sc->ctri = out ? out : in;
+    sc->ctri_owned = out != NULL;
+    sc->ntri = sc->ntri_plain + w;
+    return RT_OK;
+}
+
 static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
 {
     size_t n = sc->nin;
     const int cull = o && o->ncull > 0;
     if (cull) {
-        sc->prim = rt_alloc_array(sc->nintri + n, sizeof *sc->prim);
+        sc->prim = rt_alloc_array(sc->nintri + sc->nmtri + n, sizeof *sc->prim);
         sc->prim_owned = 1;
-    } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + n + 1, sizeof(rt_prim))) {
+    } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + sc->nmtri + n + 1, sizeof(rt_prim))) {
         sc->prim = in_tri_prims(sc); /* the other kinds' records follow the triangles' */
     }
     sc->quad = rt_alloc_array(n, sizeof *sc->quad);
@@ -683,6 +818,8 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         return RT_ERR_NOMEM;
     double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     int rc = rt_commit_tris(sc, o, bb);
+    if (rc == RT_OK)
+        rc = rt_commit_mesh(sc, o, bb);
     if (rc != RT_OK)
         return rc;
     const size_t first = sc->nprim; /* the other kinds from here */
@@ -1032,14 +1169,19 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         rt_scene_uncommit(sc);
         return rc;
     }
-    sc->tri_bytes = sc->ntri * (sizeof *sc->prim + sizeof *sc->tri);
+    const size_t nmt = sc->ntri - sc->ntri_plain, mvb = 3 * sizeof(double) +
+        (sc->mv_n.p ? 3 * sizeof(float) : 0) + (sc->mv_c.p ? 3 * sizeof(float) : 0);
+    sc->tri_bytes = sc->ntri * sizeof *sc->prim + sc->ntri_plain * sizeof *sc->tri +
+                    nmt * 3 * sizeof(uint32_t) + sc->nmv * mvb;
     sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsubcells + 1 +
                                      sc->grid.nsrefs) * sizeof(uint32_t) +
                                         sc->grid.nsubs * sizeof(rt_subgrid) +
                                         (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
                                         (sc->grid.odist ? 8 * sc->grid.ncells * sizeof(uint8_t) : 0)
                                   : 0;
-    sc->memory_bytes = sizeof *sc + sc->nprim * sizeof *sc->prim + sc->ntri * sizeof *sc->tri +
+    sc->memory_bytes = sizeof *sc + sc->nprim * sizeof *sc->prim +
+                       sc->ntri_plain * sizeof *sc->tri + nmt * 3 * sizeof(uint32_t) +
+                       sc->nmv * mvb +
                        sc->nquad * sizeof *sc->quad +
                        sc->npoly * sizeof *sc->poly + sc->ncell * sizeof *sc->cell +
                        sc->nuv * 2 * sizeof(double) + sc->nloops * sizeof(uint32_t) +

@@ -85,29 +85,83 @@ typedef struct rt_acc {
     double w, n[3], c[3], ps[3];
 } rt_acc;
 
-static inline void rt_acc_add(rt_acc *a, const rt_scene *sc, const rt_vd *r, size_t j, double w,
-                              const double P[3])
+/* vertex x of normal n and colour c (NULL: none) with weight w */
+static inline void rt_acc_vert(rt_acc *a, const double *x, const float *n, const float *c,
+                               double w, const double P[3])
 {
     a->w += w;
-    if (r->has_n) {
-        const double *x = sc->vd_xyz + 3 * (r->v0 + j);
-        const float *n = sc->vd_n + 3 * (r->v0 + j);
+    if (n) {
         const double h = (P[0] - x[0]) * n[0] + (P[1] - x[1]) * n[1] + (P[2] - x[2]) * n[2];
         for (int k = 0; k < 3; k++) {
             a->n[k] += w * n[k];
             a->ps[k] += w * (P[k] - h * n[k]);
         }
     }
-    if (r->has_c) {
-        const float *c = sc->vd_c + 3 * (r->v0 + j);
+    if (c)
         for (int k = 0; k < 3; k++)
             a->c[k] += w * c[k];
+}
+
+static inline void rt_acc_add(rt_acc *a, const rt_scene *sc, const rt_vd *r, size_t j, double w,
+                              const double P[3])
+{
+    rt_acc_vert(a, sc->vd_xyz + 3 * (r->v0 + j), r->has_n ? sc->vd_n + 3 * (r->v0 + j) : NULL,
+                r->has_c ? sc->vd_c + 3 * (r->v0 + j) : NULL, w, P);
+}
+
+/* the normal, shadow point and colour of the sums a (rt_smooth_at's result) */
+static int rt_smooth_end(const rt_acc *a, int has_n, int has_c, const double ng[3], double n[3],
+                         double ps[3], double rgb[3]);
+
+/* the mesh record of id (records in ascending id order), NULL if none */
+static const rt_mesh *rt_mesh_of(const rt_scene *sc, uint32_t id)
+{
+    size_t lo = 0, hi = sc->nmesh;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (sc->mesh[mid].id < id)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
+    return lo < sc->nmesh && sc->mesh[lo].id == id ? &sc->mesh[lo] : NULL;
+}
+
+/* rt_smooth_at of mesh triangle primitive i: the barycentric weights of a lone triangle
+   (below), over the shared vertex data */
+static int rt_smooth_mesh(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
+                          double n[3], double ps[3], double rgb[3])
+{
+    const rt_mesh *m = rt_mesh_of(sc, (uint32_t)sc->prim[i].id);
+    if (!m || (!m->has_n && !m->has_c))
+        return 0;
+    const double ax = fabs(ng[0]), ay = fabs(ng[1]), az = fabs(ng[2]);
+    const int kd = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+    const int ku = (kd + 1) % 3, kv = (kd + 2) % 3;
+    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const double *X = sc->mv_xyz.p;
+    const float *N = sc->mv_n.p, *C = sc->mv_c.p;
+    double s[3][2];
+    for (int j = 0; j < 3; j++) {
+        s[j][0] = X[3 * (size_t)ix[j] + ku] - P[ku];
+        s[j][1] = X[3 * (size_t)ix[j] + kv] - P[kv];
+    }
+    rt_acc a;
+    memset(&a, 0, sizeof a);
+    for (int j = 0; j < 3; j++) {
+        const double *p = s[(j + 1) % 3], *q = s[(j + 2) % 3];
+        const size_t v = ix[j];
+        rt_acc_vert(&a, X + 3 * v, m->has_n ? N + 3 * v : NULL, m->has_c ? C + 3 * v : NULL,
+                    p[0] * q[1] - p[1] * q[0], P);
+    }
+    return rt_smooth_end(&a, m->has_n, m->has_c, ng, n, ps, rgb);
 }
 
 int rt_smooth_at(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
                  double n[3], double ps[3], double rgb[3])
 {
+    if (i >= sc->ntri_plain && i < sc->ntri)
+        return rt_smooth_mesh(sc, i, P, ng, n, ps, rgb);
     if (!sc->prim_vd || sc->prim_vd[i] == RT_NO_VD)
         return 0;
     const rt_vd *r = &sc->vd[sc->prim_vd[i]];
@@ -163,17 +217,24 @@ int rt_smooth_at(const rt_scene *sc, size_t i, const double P[3], const double n
             base += m;
         }
     }
+    return rt_smooth_end(&a, r->has_n, r->has_c, ng, n, ps, rgb);
+}
+
+static int rt_smooth_end(const rt_acc *ap, int has_n, int has_c, const double ng[3], double n[3],
+                         double ps[3], double rgb[3])
+{
+    const rt_acc a = *ap;
     if (!(fabs(a.w) > 0.0) || !isfinite(a.w))
         return 0;
     int got = 0;
-    if (r->has_c) {
+    if (has_c) {
         for (int k = 0; k < 3; k++) {
             double c = a.c[k] / a.w;
             rgb[k] = c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
         }
         got |= 2;
     }
-    if (r->has_n) {
+    if (has_n) {
         double v[3] = {a.n[0] / a.w, a.n[1] / a.w, a.n[2] / a.w};
         double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         if (l > 1e-6 && isfinite(l)) {

@@ -269,6 +269,17 @@ static int png_primitive(gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
+/* A mesh kept whole: the tracer's (ray tracing), else the facets one by one (0 only when
+ * recorded, so that the frame is dirty just as after its facets). */
+static int png_mesh(gks_ws *ws, const gks_mesh *m)
+{
+    png_ws *p = ws->priv;
+    int e = ws_render_mesh(p->r, ws, m);
+    if (!e)
+        p->dirty = 1;
+    return e;
+}
+
 static int png_escape(gks_ws *ws, int func_id, const Gescape_in_data *in, Gescape_out_data *out)
 {
     png_ws *p = ws->priv;
@@ -410,7 +421,7 @@ static const gks_ws_desc png_output_desc =
         .desc = &DESC, .file = png_file,                                           \
         .open = png_open, .background = png_background,                            \
         .close = png_close, .clear = png_clear, .update = png_update,              \
-        .primitive = png_primitive, .message = gks_ws_file_message, .escape = png_escape,  \
+        .primitive = png_primitive, .mesh = png_mesh, .message = gks_ws_file_message, .escape = png_escape,  \
         .read_pixels = png_read_pixels,                                            \
     }
 

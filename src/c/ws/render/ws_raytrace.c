@@ -933,6 +933,210 @@ int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     return err;
 }
 
+/* ---- meshes kept whole (the driver entry mesh, ws_driver.h) ------------------------- */
+
+static void cross3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The triangles of mesh m's facets in *tri (3 vertex indices each, gks_alloc'd): a triangle
+ * facet as it is, a quadrilateral as two triangles split at the diagonal that separates its
+ * other two corners (in the plane of its diagonals' cross product; 0-2 when both or neither
+ * do, as for a non-planar or a bow-tie quad), so that a concave quad is covered exactly; *poly
+ * (gks_alloc'd, NULL if none) marks the other facets (more loops or vertices): they go as
+ * polygons. 0 or 300. */
+static int mesh_triangles(const gks_mesh *m, const double *xyz, uint32_t **tri, size_t *nt,
+                          unsigned char **poly)
+{
+    size_t cap = 0, loop = 0, i0 = 0;
+    *tri = NULL;
+    *nt = 0;
+    *poly = NULL;
+    for (size_t f = 0; f < m->n_facets; f++) {
+        const int nl = m->facet_loops[f];
+        const int nv = nl == 1 ? m->loop_counts[loop] : 0;
+        size_t nvs = 0;
+        for (int k = 0; k < nl; k++)
+            nvs += (size_t)m->loop_counts[loop + (size_t)k];
+        const int *ix = m->idx + i0;
+        loop += (size_t)nl;
+        i0 += nvs;
+        if (nv != 3 && nv != 4) {
+            if (!*poly && !(*poly = gks_calloc_array(m->n_facets, 1)))
+                return 300;
+            (*poly)[f] = 1;
+            continue;
+        }
+        if (gks_grow(tri, &cap, 3 * (*nt + 2), sizeof **tri))
+            return 300;
+        uint32_t *t = *tri + 3 * *nt;
+        int c[4] = { ix[0], ix[1], ix[2], nv == 4 ? ix[3] : 0 };
+        if (nv == 4) { /* the diagonal 1-3 when 0-2 does not separate corners 1 and 3 */
+            const double *p[4];
+            double d02[3], d13[3], n[3], e1[3], e3[3];
+            for (int k = 0; k < 4; k++)
+                p[k] = xyz + 3 * (size_t)c[k];
+            for (int k = 0; k < 3; k++) {
+                d02[k] = p[2][k] - p[0][k];
+                d13[k] = p[3][k] - p[1][k];
+                e1[k] = p[1][k] - p[0][k];
+                e3[k] = p[3][k] - p[0][k];
+            }
+            cross3(d02, d13, n);
+            double a[3], b[3];
+            cross3(d02, e1, a);
+            cross3(d02, e3, b);
+            const double s1 = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+            const double s3 = b[0] * n[0] + b[1] * n[1] + b[2] * n[2];
+            if ((s1 > 0.0 && s3 > 0.0) || (s1 < 0.0 && s3 < 0.0)) {
+                int c0 = c[0];
+                c[0] = c[1]; c[1] = c[2]; c[2] = c[3]; c[3] = c0; /* rotated: split at 1-3 */
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            t[k] = (uint32_t)c[k];
+        *nt += 1;
+        if (nv == 4) {
+            t[3] = (uint32_t)c[0];
+            t[4] = (uint32_t)c[2];
+            t[5] = (uint32_t)c[3];
+            *nt += 1;
+        }
+    }
+    return 0;
+}
+
+/* The facets of m marked in poly, each recorded as the FILL AREA (SET) it would arrive as
+ * (record_fill_area, with the mesh's attributes and data). 0, 300 or 308. */
+static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m, const unsigned char *poly)
+{
+    size_t loop = 0, i0 = 0, cap = 0, capc = 0;
+    Gpoint3 *pts = NULL;
+    Gvec3 *vn = NULL;
+    Grgb *vc = NULL;
+    int *counts = NULL, err = 0;
+    for (size_t f = 0; f < m->n_facets && !err; f++) {
+        const int nl = m->facet_loops[f];
+        size_t nv = 0;
+        for (int k = 0; k < nl; k++)
+            nv += (size_t)m->loop_counts[loop + (size_t)k];
+        if (poly[f]) {
+            size_t c1 = cap, c2 = cap;
+            if (gks_grow(&pts, &c1, nv, sizeof *pts) || gks_grow(&vn, &c2, nv, sizeof *vn) ||
+                gks_grow(&vc, &cap, nv, sizeof *vc) ||
+                gks_grow(&counts, &capc, (size_t)nl, sizeof *counts) || nv > INT32_MAX) {
+                err = 300;
+                break;
+            }
+            for (size_t i = 0; i < nv; i++) {
+                const size_t j = (size_t)m->idx[i0 + i];
+                pts[i] = (Gpoint3){ m->pts[j][0], m->pts[j][1], m->pts[j][2] };
+                if (m->vnormals)
+                    vn[i] = (Gvec3){ m->vnormals[j][0], m->vnormals[j][1], m->vnormals[j][2] };
+                if (m->vcolours)
+                    vc[i] = (Grgb){ m->vcolours[j][0], m->vcolours[j][1], m->vcolours[j][2] };
+            }
+            memcpy(counts, m->loop_counts + loop, (size_t)nl * sizeof *counts);
+            gks_prim p = m->prim;
+            p.n_loops = nl;
+            p.loop_counts = counts;
+            p.n_points = (int)nv;
+            p.pts = pts;
+            p.vnormals = m->vnormals ? vn : NULL;
+            p.vcolours = m->vcolours ? vc : NULL;
+            err = record_fill_area(r, ws, &p);
+        }
+        loop += (size_t)nl;
+        i0 += nv;
+    }
+    gks_free(pts);
+    gks_free(vn);
+    gks_free(vc);
+    gks_free(counts);
+    return err;
+}
+
+/* The mesh's triangles into view vi's scene as one indexed mesh (VRC3 points, normals and
+ * colours where the interior shading method interpolates them, as record_fill_area takes
+ * them); GKS_WS_MESH_FACETS when a point is beyond the tracer's coordinate range (the facets
+ * are then clipped one by one). 0, 300 or 308. */
+static int record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
+{
+    const gks_prim *prim = &m->prim;
+    const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
+    const int vi = clamp_view(prim->view_ind);
+    const Gview_rep3 *v = &ws->views[vi];
+    const size_t nv = m->n_verts;
+    double *xyz = gks_alloc_array(nv ? nv : 1, 3 * sizeof *xyz), *vn = NULL;
+    uint32_t *tri = NULL;
+    unsigned char *poly = NULL;
+    size_t nt = 0;
+    int err = 300;
+    if (!xyz)
+        return 300;
+    ws_vrc_points(v->ori_matrix, &m->pts[0][0], nv, xyz);
+    if (max_abs(xyz, 3 * nv) > RT_COORD_MAX) {
+        gks_free(xyz);
+        return GKS_WS_MESH_FACETS;
+    }
+    double nm[3][3];
+    if (smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, nm)) {
+        if (!(vn = gks_alloc_array(nv ? nv : 1, 3 * sizeof *vn)))
+            goto done;
+        for (size_t i = 0; i < nv; i++) /* a degenerate normal adds nothing */
+            gks_xform_normal(nm, m->vnormals[i], vn + 3 * i);
+    }
+    if (mesh_triangles(m, xyz, &tri, &nt, &poly))
+        goto done;
+    rt_attr a = attr_of(prim);
+    rt_view_rec *vr;
+    err = view_surfaces(r, vi, &a, &vr);
+    if (!err && vr && nt) {
+        const double *vc = smooth && m->vcolours ? &m->vcolours[0][0] : NULL;
+        int id = rt_scene_add_mesh(vr->sc, nv, xyz, vn, vc, nt, tri, vr->f, vr->b);
+        err = gks_err_of_rt(id);
+        if (!err)
+            r->count++;
+    }
+    gks_free(xyz); /* before the polygons: they need their own */
+    xyz = NULL;
+    gks_free(vn);
+    vn = NULL;
+    gks_free(tri);
+    tri = NULL;
+    if (!err && poly)
+        err = mesh_polygons(r, ws, m, poly);
+done:
+    gks_free(xyz);
+    gks_free(vn);
+    gks_free(tri);
+    gks_free(poly);
+    return err;
+}
+
+int ws_rt_record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
+{
+    /* A colour per facet: a surface pair per facet, as before; a single facet shares
+     * nothing: recorded as the FILL AREA (SET) it is, as before. */
+    if (m->fcolours || m->n_facets < 2)
+        return GKS_WS_MESH_FACETS;
+    int se = ws_rt_sync(r);
+    if (se)
+        return se;
+    rt_view_rec *vr = &r->view[clamp_view(m->prim.view_ind)];
+    const int n0 = rt_scene_count(vr->sc);
+    const size_t count = r->count;
+    int err = record_mesh(r, ws, m);
+    if (err > 0 && vr->sc) { /* as if the call never happened */
+        rt_scene_truncate(vr->sc, n0);
+        r->count = count;
+    }
+    return err;
+}
+
 /* Makes view vi's scene ready to trace: the workstation's lights its surfaces use (in
  * ascending light index; those the tracer rejects left out), the surfaces' masks in the
  * scene's light numbering, and the commit; with cull (clipped secondary rays) primitives

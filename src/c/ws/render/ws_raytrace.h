@@ -50,6 +50,12 @@ int ws_rt_file_escape(ws_rt *r, gks_ws *ws, int func_id, const Gescape_in_data *
  * one-row cell array and the cells crossing the box boundary as clipped polygons.
  * Returns 0 or 300 (storage; the recording is unchanged). */
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim);
+/* Records a mesh kept whole (the driver entry mesh, gks_mesh): its triangles and
+ * quadrilaterals (split into two triangles) as one indexed tracer mesh (rt_scene_add_mesh:
+ * shared vertices stored once), its other facets as ws_rt_record records a FILL AREA (SET).
+ * Returns 0, 300, 308, or GKS_WS_MESH_FACETS (not recorded: a single facet, a colour per
+ * facet, or a vertex beyond the tracer's coordinate range; the core then sends the facets). */
+int ws_rt_record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m);
 /* Traces the recorded primitives into fb, one view after the other in ascending view index
  * order, each view's primitives with that view's camera into the pixels of its display volume
  * (view clip volume where on, intersected with the workstation window). A pixel is composed

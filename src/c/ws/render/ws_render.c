@@ -49,3 +49,10 @@ int ws_render_prim(ws_render *r, gks_ws *ws, gks_raster_fb *fb, const gks_prim *
         return ws_rt_record(r->rt, ws, prim);
     return ws_classic_prim(r->classic, ws, fb, prim);
 }
+
+int ws_render_mesh(ws_render *r, gks_ws *ws, const gks_mesh *m)
+{
+    if (ws_render_route(ws, &m->prim) == WS_ROUTE_TRACE)
+        return ws_rt_record_mesh(r->rt, ws, m);
+    return GKS_WS_MESH_FACETS;
+}

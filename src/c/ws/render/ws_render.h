@@ -38,4 +38,8 @@ void ws_render_reset(ws_render *r);
  * the classic renderer. Returns 0 or the error of the renderer (300 storage, 308 coordinate
  * range of the tracer). */
 int ws_render_prim(ws_render *r, gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim);
+/* A mesh kept whole (the driver entry mesh): recorded for the tracer in HLHSR mode
+ * GHLHSR_RAYTRACE (ws_rt_record_mesh); GKS_WS_MESH_FACETS in the classic modes (they draw
+ * the facets one by one, as without the entry). */
+int ws_render_mesh(ws_render *r, gks_ws *ws, const gks_mesh *m);
 #endif
