@@ -176,6 +176,28 @@ RT_API int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz,
                              const double *normals, const double *colours, size_t ntris,
                              const uint32_t *idx, int front_surface, int back_surface);
 
+/* rt_scene_add_mesh in two steps, for a caller that fills the tracer's own arrays instead of
+ * handing over copies (a large mesh then needs no second vertex buffer): rt_scene_mesh_begin
+ * reserves nverts vertices and ntris triangles and points f at their arrays: xyz (3 doubles
+ * per vertex), normals and colours (3 floats per vertex, when has_n, has_c; else NULL) to be
+ * filled with rt_mesh_store_normal and rt_mesh_store_colour (as rt_scene_add_mesh stores
+ * them), idx (3 per triangle, indices 0 .. nverts-1). rt_scene_mesh_end checks them (as
+ * rt_scene_add_mesh) and adds the mesh: its id, or an RT_ERR_* with nothing added (also when
+ * the caller gives up: the reservation ends with the next begin, add or truncation; the
+ * arrays are valid until then). begin: RT_OK, RT_ERR_ARG, RT_ERR_NOMEM, RT_ERR_LIMIT; end:
+ * RT_ERR_STATE without a reservation. */
+typedef struct rt_mesh_fill {
+    double *xyz;
+    float *normals, *colours;
+    uint32_t *idx;
+} rt_mesh_fill;
+RT_API int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_t ntris,
+                               rt_mesh_fill *f);
+RT_API int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface);
+/* a vertex normal v normalised into o (0 when zero), a colour c clamped to [0, 1] into o */
+RT_API void rt_mesh_store_normal(float o[3], const double v[3]);
+RT_API void rt_mesh_store_colour(float o[3], const double c[3]);
+
 /* GKS CELL ARRAY 3 in VRC3: parallelogram with corners P, R, Q and P + Q - R (P and Q
  * diagonally opposite, R a third corner). Columns i = 0..nx-1 run from P towards R, rows
  * j = 0..ny-1 from R towards Q; cell (i,j) colour is rgb[3*(j*nx + i) + 0..2] (nearest

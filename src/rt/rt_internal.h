@@ -211,6 +211,7 @@ struct rt_scene {
     rt_mesh *mesh; size_t nmesh, capmesh;
     rt_big mv_xyz, mv_n, mv_c; size_t nmv;
     rt_big mtri; size_t nmtri;
+    int mesh_open;                    /* rt_scene_mesh_begin's reservation at mesh[nmesh] */
     /* committed */
     int committed;
     uint32_t *prim_vd;                /* per committed prim: its rt_vd or RT_NO_VD; NULL

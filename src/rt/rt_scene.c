@@ -219,6 +219,7 @@ int rt_scene_truncate(rt_scene *sc, int n)
         else
             sc->nloopsin = p->loop0;
     }
+    sc->mesh_open = 0;
     while (sc->nmesh > 0 && sc->mesh[sc->nmesh - 1].id >= (uint32_t)n) {
         const rt_mesh *m = &sc->mesh[--sc->nmesh];
         sc->nmv = m->v0;
@@ -308,25 +309,77 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
     return (int)sc->nids++;
 }
 
-/* the n vertex normals or colours v (3 doubles each) as floats into o: normals normalised
-   (a zero one stays 0) as rt_scene_add_polygon_data stores them, colours clamped to [0,1] */
-static void rt_mesh_floats(const double *v, size_t n, int normals, float *o)
+void rt_mesh_store_normal(float o[3], const double v[3])
 {
-    for (size_t i = 0; i < n; i++) {
-        const double *q = v + 3 * i;
-        double l = 1.0;
-        if (normals) {
-            double m = fmax(fabs(q[0]), fmax(fabs(q[1]), fabs(q[2])));
-            l = 0.0;
-            if (m > 0.0) {
-                double a = q[0] / m, b = q[1] / m, e = q[2] / m;
-                l = m * sqrt(a * a + b * b + e * e);
-            }
-        }
-        for (int k = 0; k < 3; k++)
-            o[3 * i + k] = normals ? (l > 0.0 ? (float)(q[k] / l) : 0.0f)
-                                   : (float)(q[k] < 0.0 ? 0.0 : q[k] > 1.0 ? 1.0 : q[k]);
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))), l = 0.0;
+    if (m > 0.0) {
+        double a = v[0] / m, b = v[1] / m, e = v[2] / m;
+        l = m * sqrt(a * a + b * b + e * e);
     }
+    for (int k = 0; k < 3; k++) /* as rt_scene_add_polygon_data stores them */
+        o[k] = l > 0.0 ? (float)(v[k] / l) : 0.0f;
+}
+
+void rt_mesh_store_colour(float o[3], const double c[3])
+{
+    for (int k = 0; k < 3; k++)
+        o[k] = (float)(c[k] < 0.0 ? 0.0 : c[k] > 1.0 ? 1.0 : c[k]);
+}
+
+int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_t ntris,
+                        rt_mesh_fill *f)
+{
+    if (!sc || !f)
+        return RT_ERR_ARG;
+    memset(f, 0, sizeof *f);
+    if (sc->nids >= INT_MAX || nverts > (size_t)UINT32_MAX - sc->nmv ||
+        ntris > ((size_t)1 << 31) - sc->nmtri)
+        return RT_ERR_LIMIT;
+    const size_t nv = sc->nmv + nverts, nt = sc->nmtri + ntris;
+    if (!rt_grow((void **)&sc->mesh, &sc->capmesh, sc->nmesh + 1, sizeof *sc->mesh) ||
+        !rt_big_grow(&sc->mv_xyz, nv ? nv : 1, 3 * sizeof(double)) ||
+        (has_n && !rt_big_grow(&sc->mv_n, nv ? nv : 1, 3 * sizeof(float))) ||
+        (has_c && !rt_big_grow(&sc->mv_c, nv ? nv : 1, 3 * sizeof(float))) ||
+        !rt_big_grow(&sc->mtri, nt ? nt : 1, 3 * sizeof(uint32_t)))
+        return RT_ERR_NOMEM;
+    /* the reservation, for rt_scene_mesh_end (a later add or begin replaces it) */
+    sc->mesh[sc->nmesh] = (rt_mesh){ .has_n = has_n != 0, .has_c = has_c != 0,
+                                     .t0 = sc->nmtri, .nt = ntris, .v0 = sc->nmv, .nv = nverts };
+    sc->mesh_open = 1;
+    f->xyz = (double *)sc->mv_xyz.p + 3 * sc->nmv;
+    f->normals = has_n ? (float *)sc->mv_n.p + 3 * sc->nmv : NULL;
+    f->colours = has_c ? (float *)sc->mv_c.p + 3 * sc->nmv : NULL;
+    f->idx = (uint32_t *)sc->mtri.p + 3 * sc->nmtri;
+    return RT_OK;
+}
+
+int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
+{
+    if (!sc || !sc->mesh_open)
+        return RT_ERR_STATE;
+    sc->mesh_open = 0;
+    rt_mesh *m = &sc->mesh[sc->nmesh];
+    if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
+        return RT_ERR_ARG;
+    uint32_t *ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
+    for (size_t t = 0; t < 3 * m->nt; t++)
+        if (ix[t] >= m->nv)
+            return RT_ERR_ARG;
+    const float *n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
+    const float *c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
+    for (size_t i = 0; i < 3 * m->nv; i++)
+        if ((n && !isfinite(n[i])) || (c && !isfinite(c[i])))
+            return RT_ERR_ARG;
+    for (size_t t = 0; t < 3 * m->nt; t++) /* global vertex indices */
+        ix[t] += (uint32_t)m->v0;
+    m->id = (uint32_t)sc->nids;
+    m->front = front_surface;
+    m->back = back_surface;
+    sc->nmesh++;
+    sc->nmv += m->nv;
+    sc->nmtri += m->nt;
+    sc->committed = 0;
+    return (int)sc->nids++;
 }
 
 int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const double *normals,
@@ -335,41 +388,24 @@ int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const doub
 {
     if (!sc || (nverts && !xyz) || (ntris && !idx))
         return RT_ERR_ARG;
-    if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
-        return RT_ERR_ARG;
-    for (size_t t = 0; t < 3 * ntris; t++)
-        if (idx[t] >= nverts)
-            return RT_ERR_ARG;
     for (size_t i = 0; i < 3 * nverts; i++)
         if ((normals && !isfinite(normals[i])) || (colours && !isfinite(colours[i])))
             return RT_ERR_ARG;
-    if (sc->nids >= INT_MAX || nverts > (size_t)UINT32_MAX - sc->nmv ||
-        ntris > ((size_t)1 << 31) - sc->nmtri)
-        return RT_ERR_LIMIT;
-    const size_t nv = sc->nmv + nverts, nt = sc->nmtri + ntris;
-    if (!rt_grow((void **)&sc->mesh, &sc->capmesh, sc->nmesh + 1, sizeof *sc->mesh) ||
-        !rt_big_grow(&sc->mv_xyz, nv, 3 * sizeof(double)) ||
-        (normals && !rt_big_grow(&sc->mv_n, nv, 3 * sizeof(float))) ||
-        (colours && !rt_big_grow(&sc->mv_c, nv, 3 * sizeof(float))) ||
-        !rt_big_grow(&sc->mtri, nt, 3 * sizeof(uint32_t)))
-        return RT_ERR_NOMEM;
-    rt_mesh *m = &sc->mesh[sc->nmesh++];
-    *m = (rt_mesh){ .id = (uint32_t)sc->nids, .front = front_surface, .back = back_surface,
-                    .has_n = normals != NULL, .has_c = colours != NULL, .t0 = sc->nmtri,
-                    .nt = ntris, .v0 = sc->nmv, .nv = nverts };
+    rt_mesh_fill f;
+    const int rc = rt_scene_mesh_begin(sc, nverts, normals != NULL, colours != NULL, ntris, &f);
+    if (rc != RT_OK)
+        return rc;
     if (nverts)
-        memcpy((double *)sc->mv_xyz.p + 3 * sc->nmv, xyz, 3 * nverts * sizeof(double));
-    if (normals)
-        rt_mesh_floats(normals, nverts, 1, (float *)sc->mv_n.p + 3 * sc->nmv);
-    if (colours)
-        rt_mesh_floats(colours, nverts, 0, (float *)sc->mv_c.p + 3 * sc->nmv);
-    uint32_t *o = (uint32_t *)sc->mtri.p + 3 * sc->nmtri;
-    for (size_t t = 0; t < 3 * ntris; t++)
-        o[t] = (uint32_t)sc->nmv + idx[t];
-    sc->nmv = nv;
-    sc->nmtri = nt;
-    sc->committed = 0;
-    return (int)sc->nids++;
+        memcpy(f.xyz, xyz, 3 * nverts * sizeof(double));
+    for (size_t i = 0; i < nverts; i++) {
+        if (normals)
+            rt_mesh_store_normal(f.normals + 3 * i, normals + 3 * i);
+        if (colours)
+            rt_mesh_store_colour(f.colours + 3 * i, colours + 3 * i);
+    }
+    if (ntris)
+        memcpy(f.idx, idx, 3 * ntris * sizeof(uint32_t));
+    return rt_scene_mesh_end(sc, front_surface, back_surface);
 }
 
 int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],

@@ -942,41 +942,33 @@ static void cross3(const double a[3], const double b[3], double o[3])
     o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* The triangles of mesh m's facets in *tri (3 vertex indices each, gks_alloc'd): a triangle
- * facet as it is, a quadrilateral as two triangles split at the diagonal that separates its
- * other two corners (in the plane of its diagonals' cross product; 0-2 when both or neither
- * do, as for a non-planar or a bow-tie quad), so that a concave quad is covered exactly; *poly
- * (gks_alloc'd, NULL if none) marks the other facets (more loops or vertices): they go as
- * polygons. 0 or 300. */
-static int mesh_triangles(const gks_mesh *m, const double *xyz, uint32_t **tri, size_t *nt,
-                          unsigned char **poly)
+/* The triangles of mesh m's triangle and quadrilateral facets, counted (tri NULL) or written
+ * to tri (3 vertex indices each): a triangle facet as it is, a quadrilateral as two triangles
+ * split at the diagonal that separates its other two corners (in the plane of its diagonals'
+ * cross product, VRC3 points xyz; 0-2 when both or neither do, as for a non-planar or a
+ * bow-tie quad), so that a concave quad is covered exactly. The other facets (more loops or
+ * vertices) go as polygons (mesh_polygons). */
+static size_t mesh_triangles(const gks_mesh *m, const double *xyz, uint32_t *tri)
 {
-    size_t cap = 0, loop = 0, i0 = 0;
-    *tri = NULL;
-    *nt = 0;
-    *poly = NULL;
+    size_t nt = 0, loop = 0, i0 = 0;
     for (size_t f = 0; f < m->n_facets; f++) {
         const int nl = m->facet_loops[f];
         const int nv = nl == 1 ? m->loop_counts[loop] : 0;
-        size_t nvs = 0;
-        for (int k = 0; k < nl; k++)
-            nvs += (size_t)m->loop_counts[loop + (size_t)k];
         const int *ix = m->idx + i0;
+        for (int k = 0; k < nl; k++)
+            i0 += (size_t)m->loop_counts[loop + (size_t)k];
         loop += (size_t)nl;
-        i0 += nvs;
-        if (nv != 3 && nv != 4) {
-            if (!*poly && !(*poly = gks_calloc_array(m->n_facets, 1)))
-                return 300;
-            (*poly)[f] = 1;
+        if (nv != 3 && nv != 4)
+            continue;
+        if (!tri) {
+            nt += nv == 4 ? 2 : 1;
             continue;
         }
-        if (gks_grow(tri, &cap, 3 * (*nt + 2), sizeof **tri))
-            return 300;
-        uint32_t *t = *tri + 3 * *nt;
+        uint32_t *t = tri + 3 * nt;
         int c[4] = { ix[0], ix[1], ix[2], nv == 4 ? ix[3] : 0 };
         if (nv == 4) { /* the diagonal 1-3 when 0-2 does not separate corners 1 and 3 */
             const double *p[4];
-            double d02[3], d13[3], n[3], e1[3], e3[3];
+            double d02[3], d13[3], n[3], e1[3], e3[3], a[3], b[3];
             for (int k = 0; k < 4; k++)
                 p[k] = xyz + 3 * (size_t)c[k];
             for (int k = 0; k < 3; k++) {
@@ -986,7 +978,6 @@ static int mesh_triangles(const gks_mesh *m, const double *xyz, uint32_t **tri, 
                 e3[k] = p[3][k] - p[0][k];
             }
             cross3(d02, d13, n);
-            double a[3], b[3];
             cross3(d02, e1, a);
             cross3(d02, e3, b);
             const double s1 = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
@@ -998,20 +989,21 @@ static int mesh_triangles(const gks_mesh *m, const double *xyz, uint32_t **tri, 
         }
         for (int k = 0; k < 3; k++)
             t[k] = (uint32_t)c[k];
-        *nt += 1;
+        nt++;
         if (nv == 4) {
             t[3] = (uint32_t)c[0];
             t[4] = (uint32_t)c[2];
             t[5] = (uint32_t)c[3];
-            *nt += 1;
+            nt++;
         }
     }
-    return 0;
+    return nt;
 }
 
-/* The facets of m marked in poly, each recorded as the FILL AREA (SET) it would arrive as
- * (record_fill_area, with the mesh's attributes and data). 0, 300 or 308. */
-static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m, const unsigned char *poly)
+/* The facets of m other than triangles and quadrilaterals, each recorded as the FILL AREA
+ * (SET) it would arrive as (record_fill_area, with the mesh's attributes and data). 0, 300
+ * or 308. */
+static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
 {
     size_t loop = 0, i0 = 0, cap = 0, capc = 0;
     Gpoint3 *pts = NULL;
@@ -1023,7 +1015,7 @@ static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m, const un
         size_t nv = 0;
         for (int k = 0; k < nl; k++)
             nv += (size_t)m->loop_counts[loop + (size_t)k];
-        if (poly[f]) {
+        if (nl > 1 || (nv != 3 && nv != 4)) {
             size_t c1 = cap, c2 = cap;
             if (gks_grow(&pts, &c1, nv, sizeof *pts) || gks_grow(&vn, &c2, nv, sizeof *vn) ||
                 gks_grow(&vc, &cap, nv, sizeof *vc) ||
@@ -1059,62 +1051,50 @@ static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m, const un
     return err;
 }
 
-/* The mesh's triangles into view vi's scene as one indexed mesh (VRC3 points, normals and
- * colours where the interior shading method interpolates them, as record_fill_area takes
- * them); GKS_WS_MESH_FACETS when a point is beyond the tracer's coordinate range (the facets
- * are then clipped one by one). 0, 300 or 308. */
+/* The mesh's triangles into view vi's scene as one indexed mesh, written straight into the
+ * tracer's arrays (rt_scene_mesh_begin): VRC3 points, normals and colours where the interior
+ * shading method interpolates them, as record_fill_area takes them; then its other facets.
+ * GKS_WS_MESH_FACETS when a point is beyond the tracer's coordinate range (the facets are
+ * then clipped one by one). 0, 300 or 308. */
 static int record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
 {
     const gks_prim *prim = &m->prim;
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
     const int vi = clamp_view(prim->view_ind);
     const Gview_rep3 *v = &ws->views[vi];
-    const size_t nv = m->n_verts;
-    double *xyz = gks_alloc_array(nv ? nv : 1, 3 * sizeof *xyz), *vn = NULL;
-    uint32_t *tri = NULL;
-    unsigned char *poly = NULL;
-    size_t nt = 0;
-    int err = 300;
-    if (!xyz)
-        return 300;
-    ws_vrc_points(v->ori_matrix, &m->pts[0][0], nv, xyz);
-    if (max_abs(xyz, 3 * nv) > RT_COORD_MAX) {
-        gks_free(xyz);
-        return GKS_WS_MESH_FACETS;
-    }
+    const size_t nv = m->n_verts, nt = mesh_triangles(m, NULL, NULL);
     double nm[3][3];
-    if (smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, nm)) {
-        if (!(vn = gks_alloc_array(nv ? nv : 1, 3 * sizeof *vn)))
-            goto done;
-        for (size_t i = 0; i < nv; i++) /* a degenerate normal adds nothing */
-            gks_xform_normal(nm, m->vnormals[i], vn + 3 * i);
-    }
-    if (mesh_triangles(m, xyz, &tri, &nt, &poly))
-        goto done;
+    const int has_n = smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, nm);
+    const int has_c = smooth && m->vcolours;
     rt_attr a = attr_of(prim);
     rt_view_rec *vr;
-    err = view_surfaces(r, vi, &a, &vr);
-    if (!err && vr && nt) {
-        const double *vc = smooth && m->vcolours ? &m->vcolours[0][0] : NULL;
-        int id = rt_scene_add_mesh(vr->sc, nv, xyz, vn, vc, nt, tri, vr->f, vr->b);
-        err = gks_err_of_rt(id);
-        if (!err)
-            r->count++;
+    int err = view_surfaces(r, vi, &a, &vr);
+    if (err || !vr)
+        return err;
+    if (nt) {
+        rt_mesh_fill f;
+        int rc = rt_scene_mesh_begin(vr->sc, nv, has_n, has_c, nt, &f);
+        if (rc < 0)
+            return gks_err_of_rt(rc);
+        ws_vrc_points(v->ori_matrix, &m->pts[0][0], nv, f.xyz);
+        if (max_abs(f.xyz, 3 * nv) > RT_COORD_MAX)
+            return GKS_WS_MESH_FACETS; /* the reservation is dropped */
+        for (size_t i = 0; i < nv; i++) {
+            if (has_n) { /* a degenerate normal adds nothing */
+                double q[3];
+                gks_xform_normal(nm, m->vnormals[i], q);
+                rt_mesh_store_normal(f.normals + 3 * i, q);
+            }
+            if (has_c)
+                rt_mesh_store_colour(f.colours + 3 * i, m->vcolours[i]);
+        }
+        mesh_triangles(m, f.xyz, f.idx);
+        int id = rt_scene_mesh_end(vr->sc, vr->f, vr->b);
+        if (id < 0)
+            return gks_err_of_rt(id);
+        r->count++;
     }
-    gks_free(xyz); /* before the polygons: they need their own */
-    xyz = NULL;
-    gks_free(vn);
-    vn = NULL;
-    gks_free(tri);
-    tri = NULL;
-    if (!err && poly)
-        err = mesh_polygons(r, ws, m, poly);
-done:
-    gks_free(xyz);
-    gks_free(vn);
-    gks_free(tri);
-    gks_free(poly);
-    return err;
+    return mesh_polygons(r, ws, m);
 }
 
 int ws_rt_record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
