@@ -1,0 +1,183 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_rt_mesh.c -- indexed meshes (rt_scene_add_mesh, rt_scene_mesh_begin/end): a bumpy
+ * height field with vertex normals and colours, stored once as a mesh, traces the same
+ * picture bit for bit as its triangles given one by one (rt_scene_add_polygon_data) and the
+ * same hits (distance, side); it needs fewer bytes per triangle; bad input is rejected with
+ * nothing added; truncation and an abandoned reservation leave the scene as before.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gksrt.h"
+#include "rt_testutil.h"
+
+enum { N = 13, SZ = 64 }; /* N x N vertices */
+
+static double xyz[N * N * 3], nrm[N * N * 3], col[N * N * 3];
+static uint32_t idx[(N - 1) * (N - 1) * 6];
+
+static void field(void)
+{
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            double x = -1 + 2.0 * i / (N - 1) + 0.013, y = -1 + 2.0 * j / (N - 1) + 0.007;
+            double z = 0.3 * sin(2.1 * x) * cos(1.7 * y), zx = 0.63 * cos(2.1 * x) * cos(1.7 * y),
+                   zy = -0.51 * sin(2.1 * x) * sin(1.7 * y);
+            double *p = xyz + 3 * (j * N + i), *n = nrm + 3 * (j * N + i), *c = col + 3 * (j * N + i);
+            p[0] = x, p[1] = y, p[2] = z;
+            n[0] = -zx, n[1] = -zy, n[2] = 1; /* not unit: the tracer normalises */
+            c[0] = 0.5 + 0.5 * x, c[1] = 0.5 + 0.5 * y, c[2] = 0.4;
+        }
+    for (int j = 0; j + 1 < N; j++)
+        for (int i = 0; i + 1 < N; i++) {
+            uint32_t k = (uint32_t)(j * N + i), *t = idx + 6 * (j * (N - 1) + i);
+            t[0] = k, t[1] = k + 1, t[2] = k + N + 1, t[3] = k, t[4] = k + N + 1, t[5] = k + N;
+        }
+}
+
+/* The field as one mesh (mesh = 1) or as lone triangles, lit (a shadow-casting light),
+ * committed. */
+static rt_scene *scene(int mesh)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface su;
+    rt_surface_default(&su);
+    su.ka = 0.2;
+    su.kd = 0.8;
+    int s = rt_scene_add_surface(sc, &su);
+    const size_t nt = (N - 1) * (N - 1) * 2;
+    if (mesh) {
+        assert_int_equal(rt_scene_add_mesh(sc, N * N, xyz, nrm, col, nt, idx, s, s), 0);
+    } else {
+        for (size_t t = 0; t < nt; t++) {
+            double v[9], vn[9], vc[9];
+            for (int k = 0; k < 3; k++)
+                for (int q = 0; q < 3; q++) {
+                    v[3 * k + q] = xyz[3 * idx[3 * t + k] + q];
+                    vn[3 * k + q] = nrm[3 * idx[3 * t + k] + q];
+                    vc[3 * k + q] = col[3 * idx[3 * t + k] + q];
+                }
+            const int three = 3;
+            const rt_vertex_data vd = { vn, vc };
+            assert_int_equal(rt_scene_add_polygon_data(sc, 1, &three, v, &vd, s, s), (int)t);
+        }
+    }
+    const rt_light amb = { .type = RT_LIGHT_AMBIENT, .color = { 1, 1, 1 } };
+    const rt_light dl = { .type = RT_LIGHT_DIRECTIONAL, .color = { 1, 1, 1 },
+                          .direction = { 0.5, -0.4, -0.6 } };
+    assert_true(rt_scene_add_light(sc, &amb) >= 0);
+    assert_true(rt_scene_add_light(sc, &dl) >= 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    return sc;
+}
+
+static void camera(rt_camera *cam)
+{
+    rtu_view vw = { .win = { -1.2, 1.2, -1.2, 1.2 }, .prp = { 0.3, -0.4, 10 }, .vpd = 0,
+                    .bpd = -5, .fpd = 5, .vp = { 0, 1, 0, 1, 0, 1 }, .perspective = 1 };
+    double m[4][4];
+    rtu_view_matrix(&vw, m);
+    assert_int_equal(rt_camera_from_view(cam, m, vw.vp, SZ, SZ), RT_OK);
+}
+
+static void test_same_picture(void **state)
+{
+    (void)state;
+    field();
+    rt_scene *a = scene(1), *b = scene(0);
+    rt_camera cam;
+    camera(&cam);
+    rt_render_options o;
+    rt_render_options_default(&o); /* corner rays: samples on the mesh lines too */
+    o.threads = 2;
+    float *pa = malloc(3 * SZ * SZ * sizeof(float)), *pb = malloc(3 * SZ * SZ * sizeof(float));
+    assert_non_null(pa);
+    assert_non_null(pb);
+    rt_stats sa, sb;
+    assert_int_equal(rt_render(a, &cam, &o, pa, &sa), RT_OK);
+    assert_int_equal(rt_render(b, &cam, &o, pb, &sb), RT_OK);
+    assert_memory_equal(pa, pb, 3 * SZ * SZ * sizeof(float));
+    assert_true(sa.eye_hits > SZ * SZ / 2);
+    assert_int_equal(sa.prims, sb.prims);
+    print_message("bytes per triangle: mesh %.1f, lone triangles %.1f\n",
+                  (double)sa.tri_bytes / (double)sa.prims, (double)sb.tri_bytes / (double)sb.prims);
+    assert_true(sa.tri_bytes < sb.tri_bytes / 2 + sb.tri_bytes / 8);
+    /* the same hits, ray by ray (ids aside: the mesh has one) */
+    rt_ray r[SZ];
+    rt_hit ha[SZ], hb[SZ];
+    for (int y = 0; y < SZ; y += 7) {
+        for (int x = 0; x < SZ; x++)
+            assert_int_equal(rt_camera_ray(&cam, x + 0.25, y + 0.5, &r[x]), RT_OK);
+        assert_int_equal(rt_intersect(a, SZ, r, ha), RT_OK);
+        assert_int_equal(rt_intersect(b, SZ, r, hb), RT_OK);
+        for (int x = 0; x < SZ; x++) {
+            assert_int_equal(ha[x].prim >= 0, hb[x].prim >= 0);
+            if (ha[x].prim >= 0) {
+                assert_int_equal(ha[x].prim, 0);
+                assert_true(ha[x].t == hb[x].t);
+                assert_int_equal(ha[x].side, hb[x].side);
+            }
+        }
+    }
+    free(pa);
+    free(pb);
+    rt_scene_free(a);
+    rt_scene_free(b);
+}
+
+static void test_bad_input(void **state)
+{
+    (void)state;
+    field();
+    rt_scene *sc = rt_scene_new();
+    rt_surface su;
+    rt_surface_default(&su);
+    int s = rt_scene_add_surface(sc, &su);
+    const double tri[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, bad[9] = { 0, 0, 1, NAN, 0, 1, 0, 0, 1 };
+    const uint32_t ok3[3] = { 0, 1, 2 }, out[3] = { 0, 1, 3 };
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, NULL, NULL, 1, out, s, s), RT_ERR_ARG);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, bad, NULL, 1, ok3, s, s), RT_ERR_ARG);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, NULL, bad, 1, ok3, s, s), RT_ERR_ARG);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, NULL, NULL, 1, ok3, s, s + 7), RT_ERR_ARG);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, NULL, NULL, NULL, 1, ok3, s, s), RT_ERR_ARG);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, NULL, NULL, 1, NULL, s, s), RT_ERR_ARG);
+    assert_int_equal(rt_scene_mesh_end(sc, s, s), RT_ERR_STATE);
+    assert_int_equal(rt_scene_count(sc), 0);
+    /* an abandoned reservation adds nothing; the next mesh is whole */
+    rt_mesh_fill f;
+    assert_int_equal(rt_scene_mesh_begin(sc, 3, 1, 0, 1, &f), RT_OK);
+    assert_non_null(f.xyz);
+    assert_non_null(f.normals);
+    assert_null(f.colours);
+    memcpy(f.xyz, tri, sizeof tri);
+    assert_int_equal(rt_scene_add_mesh(sc, 3, tri, NULL, NULL, 1, ok3, s, s), 0);
+    assert_int_equal(rt_scene_mesh_end(sc, s, s), RT_ERR_STATE);
+    /* truncation drops the mesh */
+    assert_int_equal(rt_scene_add_mesh(sc, N * N, xyz, nrm, col, 2, idx, s, s), 1);
+    assert_int_equal(rt_scene_truncate(sc, 1), RT_OK);
+    assert_int_equal(rt_scene_count(sc), 1);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_ray r = { .org = { 0.25, 0.25, 1 }, .dir = { 0, 0, -1 }, .tmin = 0, .tmax = 10 };
+    rt_hit h;
+    assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
+    assert_int_equal(h.prim, 0);
+    rt_scene_free(sc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_same_picture),
+        cmocka_unit_test(test_bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
