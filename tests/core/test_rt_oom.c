@@ -4,7 +4,8 @@
  * (src/rt/rt_alloc.c) among them: the test build sends those through the library's
  * failure injection (gks_alloc_fail_after, src/c/base/gks_alloc.c). A ray-traced PNG
  * workstation (opened before the failures start) records a lit, shadowed height field of FILL AREA 3 quads, a triangle above
- * them and a cell array and traces them at CLOSE WORKSTATION. For each n the nth allocation
+ * them, a small QUADRILATERAL MESH 3 WITH DATA (kept whole: the driver's mesh entry and the
+ * tracer's indexed mesh) and a cell array and traces them at CLOSE WORKSTATION. For each n the nth allocation
  * fails: the only error reported is 300 (storage overflow), or none and the picture is
  * byte for byte the one without failures (a failure absorbed by a fallback); nothing
  * crashes, GKS can be closed, and (in the AddressSanitizer build) nothing leaks. Prints
@@ -105,6 +106,18 @@ static void draw_frame(void)
     Gpoint3 blocker[3] = { { 0.3, 0.3, 0.7 }, { 0.6, 0.35, 0.7 }, { 0.4, 0.6, 0.7 } };
     Gpoint_list3 t = { 3, blocker };
     gfill_area3(&t);
+    /* a smooth QUADRILATERAL MESH 3 WITH DATA, kept whole for the tracer (ws_rt_record_mesh,
+     * rt_scene_mesh_begin): its allocations too */
+    Gpoint3 mp[9];
+    Gvec3 mn[9];
+    for (int k = 0; k < 9; k++) {
+        mp[k] = (Gpoint3){ 0.6 + 0.15 * (k % 3), 0.05 + 0.1 * (k / 3), 0.25 + 0.02 * (k % 2) };
+        mn[k] = (Gvec3){ 0.1 * (k % 3) - 0.1, 0.05 * (k / 3), 1 };
+    }
+    gset_int_shad_meth(GSHAD_NORM);
+    Gint_size dim = { 3, 3 };
+    Gfacet_vdata3 vd = { 9, mp, NULL, mn };
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD_NORM, GCOLR_INDIRECT, &dim, NULL, &vd);
     Gint cells[4] = { 1, 2, 2, 1 };
     Gpat_rep cols = { { 2, 2 }, cells };
     Gparal par = { { 0.05, 0.05, 0.2 }, { 0.25, 0.25, 0.2 }, { 0.25, 0.05, 0.2 } };
