@@ -3,13 +3,18 @@
 # The large-scene curve of issue 21: bench/scale/scale for 10^4 ... 2*10^7 triangles (one FILL
 # AREA 3 each, ray traced at 1024^2 with a shadow), each in its own process, with 2 threads,
 # then three cold pairs of 1 and 2 threads at 4*10^6 for the whole-frame speed-up and the
-# machine's cost of fresh memory (grow_probe touch); prints each goal's figure against its goal. Usage: bench/scale/run.sh [--quick] [--no-build] [BUILD_DIR]
+# machine's cost of fresh memory (grow_probe touch); prints each goal's figure against its goal. Usage: bench/scale/run.sh [--quick] [--mesh] [--no-build] [BUILD_DIR]
 #   --quick: up to 10^6 (and the speed-up at 10^6).  BUILD_DIR default build-scale (Release).
+#   --mesh: instead, the mesh row of issue 38: a height field of 10^6 and 10^7 vertices (--quick:
+#   10^6 only) as one QUADRILATERAL MESH 3 WITH DATA (smooth) beside the same surface as FILL
+#   AREA 3 triangles (flat), each in its own process, 2 threads, 1024^2; time and peak memory
+#   side by side with their ratio (goal: the mesh row at most the FILL AREA 3 row in both).
 set -e
-quick=0; build=1; dir=build-scale
+quick=0; build=1; dir=build-scale; mesh=0
 for a in "$@"; do
   case "$a" in
     --quick) quick=1 ;;
+    --mesh) mesh=1 ;;
     --no-build) build=0 ;;
     *) dir=$a ;;
   esac
@@ -22,6 +27,26 @@ fi
 bin=$(cd "$dir" && pwd)/bench/scale/scale
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
+if [ $mesh = 1 ]; then
+  if [ $quick = 1 ]; then sizes="1000000"; else sizes="1000000 10000000"; fi
+  echo "# bench/scale/run.sh $* -- $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) CPUs"
+  echo "# the mesh row: each run one process (cold), 2 threads, 1024^2; load = 1-min load average before"
+  for n in $sizes; do
+    for s in mesh tris; do
+      sleep 4; load=$(cut -d' ' -f1 /proc/loadavg)
+      line=$(cd "$out" && "$bin" "$n" -t 2 -s $s -o "$out/$s.png")
+      echo "$line load=$load" | tee -a "$out/mrows"
+    done
+  done
+  awk '
+function val(s, k,   i, a, n) { n = split(s, a, " "); for (i = 1; i <= n; i++) if (index(a[i], k "=") == 1) return substr(a[i], length(k) + 2); return "" }
+{ v = val($0, "verts"); s = val($0, "surface"); t[v, s] = val($0, "total"); r[v, s] = val($0, "rss"); b[v, s] = val($0, "B/tri"); l[v, s] = val($0, "load"); n[v] = val($0, "n"); if (!(v in seen)) { seen[v] = 1; ord[++nv] = v } }
+END {
+  for (i = 1; i <= nv; i++) { v = ord[i];
+    printf "mesh  %s vertices, %s triangles: QUADRILATERAL MESH 3 WITH DATA %.2f s %.0f MiB (%s B/tri, load %s) | FILL AREA 3 %.2f s %.0f MiB (%s B/tri, load %s) | ratio time %.2f memory %.2f: %s\n", v, n[v], t[v, "mesh"], r[v, "mesh"], b[v, "mesh"], l[v, "mesh"], t[v, "tris"], r[v, "tris"], b[v, "tris"], l[v, "tris"], t[v, "mesh"] / t[v, "tris"], r[v, "mesh"] / r[v, "tris"], (t[v, "mesh"] + 0 <= t[v, "tris"] + 0 && r[v, "mesh"] + 0 <= r[v, "tris"] + 0 ? "met" : "NOT met") }
+}' "$out/mrows"
+  exit 0
+fi
 if [ $quick = 1 ]; then series="10000 100000 1000000"; big=1000000; sp=1000000
 else series="10000 100000 1000000 4000000 10000000 20000000"; big=10000000; sp=4000000; fi
 echo "# bench/scale/run.sh $* -- $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) CPUs"

@@ -6,12 +6,18 @@
  * a 1024 x 1024 PNG workstation in HLHSR mode ray tracing with the workstation's defaults
  * (corner rays, depth 5), then UPDATE WORKSTATION writes the picture.
  *
- * Usage: scale N [-t THREADS] [-m MODE] [-o FILE.png]
- *   N        triangles of the sphere (>= 8)
+ * Usage: scale N [-t THREADS] [-m MODE] [-s SURFACE] [-o FILE.png]
+ *   N        triangles of the sphere (>= 8); vertices of the height field (-s mesh, tris)
  *   -t       ESCAPE GESC_RT_THREADS (0 = all online CPUs, the default)
  *   -m       HLHSR mode (4 ray tracing, the default; 2 z-buffer for comparison)
+ *   -s       sphere (the default); mesh: a height field of about N vertices (a square grid,
+ *            two bumps) as one QUADRILATERAL MESH 3 WITH DATA with exact vertex normals and
+ *            interior shading method NORMAL; tris: the same surface as FILL AREA 3 triangles
+ *            (each grid cell split at its diagonal (i,j)-(i+1,j+1), as the tracer splits the
+ *            mesh's quadrilaterals), flat; both in front of the shadowed back wall
  *   -o       picture file (default scale.png in the working directory)
- * Prints one line of key=value figures: n (triangles drawn), calls (wall s of the GKS calls,
+ * Prints one line of key=value figures: surface, n (triangles drawn; the mesh: its
+ * quadrilaterals' triangles), verts (-s mesh, tris: the height field's vertices), calls (wall s of the GKS calls,
  * OPEN WORKSTATION to the last FILL AREA 3), update (wall s of UPDATE WORKSTATION: transfer,
  * build, render, composition and the PNG file), build and render (the tracer's own seconds,
  * ESCAPE GESC_RT_STATS), total (wall s of both), cpu (process CPU s), rss (peak resident MiB,
@@ -53,29 +59,91 @@ static void escape_int(int id, int ws, int v)
     gescape(id, &in, NULL, NULL);
 }
 
+/* The height field over the unit square, z in [0.2, 0.8] (two bumps and a ripple): point and
+ * unit normal of vertex (i, j) of an m x m grid. */
+static void height(long i, long j, long m, Gpoint3 *p, Gvec3 *nv)
+{
+    const double pi = 3.14159265358979323846;
+    double x = 0.1 + 0.8 * (double)i / (double)(m - 1), y = 0.1 + 0.8 * (double)j / (double)(m - 1);
+    double a = (x - 0.35) * (x - 0.35) + (y - 0.6) * (y - 0.6);
+    double b = (x - 0.65) * (x - 0.65) + (y - 0.35) * (y - 0.35);
+    double ea = exp(-a / 0.02), eb = exp(-b / 0.03);
+    double z = 0.35 + 0.25 * ea + 0.2 * eb + 0.02 * sin(6 * pi * x) * sin(6 * pi * y);
+    double zx = 0.25 * ea * (-2 * (x - 0.35) / 0.02) + 0.2 * eb * (-2 * (x - 0.65) / 0.03) +
+                0.02 * 6 * pi * cos(6 * pi * x) * sin(6 * pi * y);
+    double zy = 0.25 * ea * (-2 * (y - 0.6) / 0.02) + 0.2 * eb * (-2 * (y - 0.35) / 0.03) +
+                0.02 * 6 * pi * sin(6 * pi * x) * cos(6 * pi * y);
+    double l = sqrt(zx * zx + zy * zy + 1);
+    *p = (Gpoint3){ x, y, z };
+    *nv = (Gvec3){ -zx / l, -zy / l, 1 / l };
+}
+
+/* The height field of about n vertices (-s mesh: one QUADRILATERAL MESH 3 WITH DATA; -s
+ * tris: FILL AREA 3 triangles); the triangles drawn. */
+static long height_field(long n, int mesh)
+{
+    long m = (long)floor(sqrt((double)n));
+    if (m < 2)
+        m = 2;
+    Gpoint3 *p = malloc((size_t)m * (size_t)m * sizeof *p);
+    Gvec3 *nv = malloc((size_t)m * (size_t)m * sizeof *nv);
+    if (!p || !nv)
+        exit(1);
+    for (long j = 0; j < m; j++)
+        for (long i = 0; i < m; i++)
+            height(i, j, m, &p[j * m + i], &nv[j * m + i]);
+    if (mesh) {
+        gset_int_shad_meth(GSHAD_NORM);
+        gset_back_int_shad_meth(GSHAD_NORM);
+        Gint_size dim = { (Gint)m, (Gint)m };
+        Gfacet_vdata3 vd = { (Gint)(m * m), p, NULL, nv };
+        gquad_mesh3_data(GFACET_NONE, GVERT_COORD_NORM, GCOLR_INDIRECT, &dim, NULL, &vd);
+    } else {
+        Gpoint3 t[3];
+        Gpoint_list3 l = { 3, t };
+        for (long j = 0; j + 1 < m; j++)
+            for (long i = 0; i + 1 < m; i++) {
+                const Gpoint3 *q = &p[j * m + i];
+                t[0] = q[0]; t[1] = q[1]; t[2] = q[m + 1];
+                gfill_area3(&l);
+                t[1] = q[m + 1]; t[2] = q[m];
+                gfill_area3(&l);
+            }
+    }
+    free(p);
+    free(nv);
+    return 2 * (m - 1) * (m - 1);
+}
+
 int main(int argc, char **argv)
 {
-    long n = 0;
+    long n = 0, verts = 0;
     int threads = 0, mode = GHLHSR_RAYTRACE;
-    const char *out = "scale.png";
+    const char *out = "scale.png", *surface = "sphere";
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "-t") == 0 && i + 1 < argc)
             threads = atoi(argv[++i]);
         else if (strcmp(argv[i], "-m") == 0 && i + 1 < argc)
             mode = atoi(argv[++i]);
+        else if (strcmp(argv[i], "-s") == 0 && i + 1 < argc)
+            surface = argv[++i];
         else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
             out = argv[++i];
         else
             n = strtol(argv[i], NULL, 10);
     }
-    if (n < 8) {
-        fprintf(stderr, "usage: scale N [-t THREADS] [-m MODE] [-o FILE.png]\n");
+    const int field = strcmp(surface, "mesh") == 0 || strcmp(surface, "tris") == 0;
+    if (n < 8 || (!field && strcmp(surface, "sphere") != 0)) {
+        fprintf(stderr, "usage: scale N [-t THREADS] [-m MODE] [-s sphere|mesh|tris] "
+                        "[-o FILE.png]\n");
         return 2;
     }
     /* 2 nu (nv - 1) triangles (the pole rows have one per quad), nu ~ 2 nv */
     long nv = (long)floor(sqrt((double)n / 4.0)) + 1, nu = n / (2 * (nv - 1));
     if (nu < 3)
         nu = 3;
+    if (field) /* no sphere */
+        nv = 0, nu = 3;
     Gpoint3 *g = malloc((size_t)nu * (size_t)(nv + 1) * sizeof *g);
     if (!g)
         return 1;
@@ -125,6 +193,11 @@ int main(int argc, char **argv)
         drawn++;
     }
     gset_fill_colr_ind(2);
+    if (field) {
+        drawn += height_field(n, surface[0] == 'm');
+        verts = (long)floor(sqrt((double)n));
+        verts = verts < 2 ? 4 : verts * verts;
+    }
     for (long j = 0; j < nv; j++)
         for (long i = 0; i < nu; i++) {
             const Gpoint3 *p00 = &g[j * nu + i], *p10 = &g[j * nu + (i + 1) % nu];
@@ -167,6 +240,7 @@ int main(int argc, char **argv)
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     double rss = (double)ru.ru_maxrss * 1024.0;
+    printf("surface=%s verts=%ld ", surface, verts);
     printf("n=%ld calls=%.3f update=%.3f build=%.3f render=%.3f total=%.3f close=%.3f "
            "cpu=%.2f rss=%.1f B/tri=%.0f us/call=%.3f calls_cpu=%.3f update_cpu=%.3f "
            "cpu_us/call=%.3f app_us/call=%.3f\n",
