@@ -128,8 +128,8 @@ static double rt_hit_err(const rt_scene *sc, const rt_rayx *r, size_t i, double 
 /* Two hits tie when their distances differ by at most twice the smaller bound: the same
    plane's distance computed twice (coplanar faces: equal bounds), and a surface crossed at a
    grazing angle (a large bound) does not tie with one far behind it. A tie goes to the larger
-   id (drawn later), as in the z-buffer and painter modes; the same primitive tested again
-   (a mailbox collision) keeps its place. */
+   id (drawn later), as in the z-buffer and painter modes; between primitives of one id (the
+   triangles of a mesh) to the nearer, at equal distance to the one committed first. */
 void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t, double *best,
                        long *bi, double *eb)
 {
@@ -138,8 +138,12 @@ void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double 
         const double tie = 2.0 * (e < *eb ? e : *eb);
         if (t > *best + tie)
             return;
-        if (t >= *best - tie && sc->prim[i].id <= sc->prim[*bi].id)
-            return;
+        if (t >= *best - tie) { /* a tie: the later area; within one area the nearer,
+                                   at equal distance the primitive committed first */
+            const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
+            if (id < idb || (id == idb && (t > *best || (t == *best && (long)i > *bi))))
+                return;
+        }
     }
     *best = t;
     *bi = (long)i;

@@ -240,8 +240,9 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
 
 /* nearest-hit update for primitive i (mailboxed by the caller): the tests up to where a hit
    could still tie with the best (2 * eb beyond it), the choice in rt_nearest_update (ties in
-   distance go to the area drawn later, so the picture does not depend on the order of the
-   cell lists) */
+   distance go to the area drawn later, equal distances within one area (a mesh's triangles
+   share its id) to the primitive committed first, so the picture does not depend on the
+   order of the cell lists) */
 RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i, double *best,
                                long *bi, double *eb)
 {

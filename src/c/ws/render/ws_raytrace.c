@@ -1062,7 +1062,11 @@ static int record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
     const int vi = clamp_view(prim->view_ind);
     const Gview_rep3 *v = &ws->views[vi];
-    const size_t nv = m->n_verts, nt = mesh_triangles(m, NULL, NULL);
+    const size_t nv = m->n_verts;
+    for (size_t i = 0; i < m->n_idx; i++) /* the core checked them (gks_area_data_check) */
+        if (m->idx[i] < 0 || (size_t)m->idx[i] >= nv)
+            return 308;
+    const size_t nt = mesh_triangles(m, NULL, NULL);
     double nm[3][3];
     const int has_n = smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, nm);
     const int has_c = smooth && m->vcolours;
