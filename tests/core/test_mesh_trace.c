@@ -10,6 +10,7 @@
  * there had its shadow ray blocked by the neighbour). The mesh lines lie on pixel corners,
  * where the workstation's corner rays sample them. A TRIANGLE STRIP 3 WITH DATA gives exactly
  * the picture of its triangles drawn one by one (the same triangles and data, stored shared).
+ * A mesh a clipping plane cuts goes facet by facet (the rule of the driver entry mesh).
  *
  * Tolerance of the height field: a pixel counts as a dark outlier when the mesh's is darker
  * than the triangles' by more than 24 of 255 levels in a channel (a shadowed sample among the
@@ -191,11 +192,65 @@ static void test_strip_is_its_triangles(void **u)
     free(tris.rgb);
 }
 
+/* The primitives the tracer kept in the last picture of workstation 1 (GESC_RT_STATS). */
+static int traced_prims(void)
+{
+    Gint ws[1] = { 1 }, err;
+    Gescape_in_data in = { .num_ints = 1, .ints = ws };
+    Gstore store = NULL;
+    Gescape_out_data *out = NULL;
+    gcreate_store(&err, &store);
+    gescape(GESC_RT_STATS, &in, &store, &out);
+    assert_non_null(out);
+    assert_true(out->num_ints >= 8);
+    int n = out->ints[7];
+    gdel_store(store);
+    return n;
+}
+
+/* The clipping rule of the driver entry mesh: a 4 x 4 quadrilateral mesh inside the
+ * clipping volume reaches the tracer whole (18 triangles); one a clipping plane cuts goes
+ * facet by facet (9 quadrilaterals, those cut clipped: fewer than 18 primitives), as before. */
+static void test_clip_rule(void **u)
+{
+    (void)u;
+    for (int cut = 0; cut < 2; cut++) {
+        gopen_gks(NULL, 0);
+        gopen_ws(1, "t_mesh_clip.png", GWS_TYPE_PNG);
+        gactivate_ws(1);
+        gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+        Gpoint3 p[16];
+        for (int k = 0; k < 16; k++)
+            p[k] = (Gpoint3){ 0.2 + 0.2 * (k % 4), 0.2 + 0.2 * (k / 4), 0.5 + 0.05 * (k % 3) };
+        if (cut) { /* window x [0, 0.7] onto the unit viewport 3: x > 0.7 is clipped */
+            Glimit3 w = { 0, 0.7, 0, 1, 0, 1 };
+            gset_win3(1, &w);
+            gsel_norm_tran(1);
+        }
+        Gint_size dim = { 4, 4 };
+        Gfacet_vdata3 vd = { 16, p, NULL, NULL };
+        gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, &dim, NULL, &vd);
+        gupd_ws(1, GFLAG_PERFORM);
+        int n = traced_prims();
+        print_message("quadrilateral mesh %s: %d primitives traced\n",
+                      cut ? "cut by the clipping volume" : "inside", n);
+        if (cut)
+            assert_true(n > 0 && n < 18);
+        else
+            assert_int_equal(n, 18);
+        gdeactivate_ws(1);
+        gclose_ws(1);
+        gclose_gks();
+        remove("t_mesh_clip.png");
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_quad_mesh_no_dark_rows),
         cmocka_unit_test(test_strip_is_its_triangles),
+        cmocka_unit_test(test_clip_rule),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
