@@ -133,53 +133,55 @@ int rt_scene_add_surface(rt_scene *sc, const rt_surface *s)
     return (int)sc->nsurf++;
 }
 
-int rt_scene_add_light(rt_scene *sc, const rt_light *l)
+/* 1 if the light l's values are usable for its type (rt_scene_add_light's RT_ERR_ARG) */
+static int rt_light_ok(const rt_light *l)
 {
-    if (!sc || !l)
-        return RT_ERR_ARG;
     if (l->type < RT_LIGHT_AMBIENT || l->type > RT_LIGHT_SPOT)
-        return RT_ERR_ARG;
+        return 0;
     for (int i = 0; i < 3; i++)
         if (!isfinite(l->color[i]) || l->color[i] < 0.0)
-            return RT_ERR_ARG;
-    if (l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT) {
-        if (!fin3(l->direction))
-            return RT_ERR_ARG;
-        double n = fabs(l->direction[0]) + fabs(l->direction[1]) + fabs(l->direction[2]);
-        if (!(n > 0.0))
-            return RT_ERR_ARG;
+            return 0;
+    const int dir = l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT;
+    const int pos = l->type == RT_LIGHT_POSITIONAL || l->type == RT_LIGHT_SPOT;
+    if (dir && (!fin3(l->direction) ||
+                !(fabs(l->direction[0]) + fabs(l->direction[1]) + fabs(l->direction[2]) > 0.0)))
+        return 0;
+    if (pos && (!fin3(l->position) || !isfinite(l->c1) || !isfinite(l->c2) || l->c1 < 0.0 ||
+                l->c2 < 0.0 || !(l->c1 + l->c2 > 0.0)))
+        return 0;
+    if (l->type == RT_LIGHT_SPOT &&
+        (!isfinite(l->concentration) || l->concentration < 0.0 || !isfinite(l->spread) ||
+         l->spread <= 0.0 || l->spread > 3.14159265358979323846 + 1e-12))
+        return 0;
+    return 1;
+}
+
+/* the finite non-zero direction v as a unit vector into o */
+static void rt_unit_direction(const double v[3], double o[3])
+{
+    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0.0) || !isfinite(n)) { /* tiny or huge components: scale first */
+        double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+        double t[3] = {v[0] / m, v[1] / m, v[2] / m};
+        n = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        for (int i = 0; i < 3; i++)
+            o[i] = t[i] / n;
+    } else {
+        for (int i = 0; i < 3; i++)
+            o[i] = v[i] / n;
     }
-    if (l->type == RT_LIGHT_POSITIONAL || l->type == RT_LIGHT_SPOT) {
-        if (!fin3(l->position))
-            return RT_ERR_ARG;
-        if (!isfinite(l->c1) || !isfinite(l->c2) || l->c1 < 0.0 || l->c2 < 0.0 ||
-            !(l->c1 + l->c2 > 0.0))
-            return RT_ERR_ARG;
-    }
-    if (l->type == RT_LIGHT_SPOT) {
-        if (!isfinite(l->concentration) || l->concentration < 0.0)
-            return RT_ERR_ARG;
-        if (!isfinite(l->spread) || l->spread <= 0.0 || l->spread > 3.14159265358979323846 + 1e-12)
-            return RT_ERR_ARG;
-    }
+}
+
+int rt_scene_add_light(rt_scene *sc, const rt_light *l)
+{
+    if (!sc || !l || !rt_light_ok(l))
+        return RT_ERR_ARG;
     if (sc->nlights >= RT_MAX_LIGHTS)
         return RT_ERR_LIMIT;
     rt_light *d = &sc->light[sc->nlights];
     *d = *l;
-    if (l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT) {
-        double n = sqrt(l->direction[0] * l->direction[0] + l->direction[1] * l->direction[1] +
-                        l->direction[2] * l->direction[2]);
-        if (!(n > 0.0) || !isfinite(n)) { /* tiny or huge components: scale first */
-            double m = fmax(fabs(l->direction[0]), fmax(fabs(l->direction[1]), fabs(l->direction[2])));
-            double t[3] = {l->direction[0] / m, l->direction[1] / m, l->direction[2] / m};
-            n = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-            for (int i = 0; i < 3; i++)
-                d->direction[i] = t[i] / n;
-        } else {
-            for (int i = 0; i < 3; i++)
-                d->direction[i] = l->direction[i] / n;
-        }
-    }
+    if (l->type == RT_LIGHT_DIRECTIONAL || l->type == RT_LIGHT_SPOT)
+        rt_unit_direction(l->direction, d->direction);
     return sc->nlights++;
 }
 
@@ -835,11 +837,12 @@ static int rt_commit_mesh(rt_scene *sc, const rt_build_options *o, double bb[6])
     return RT_OK;
 }
 
-static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
+/* The committed arrays of every kind for the input (prim: the triangles' records grown in
+   place unless culling makes a copy). RT_OK or RT_ERR_NOMEM. */
+static int rt_commit_alloc(rt_scene *sc, const rt_build_options *o)
 {
-    size_t n = sc->nin;
-    const int cull = o && o->ncull > 0;
-    if (cull) {
+    const size_t n = sc->nin;
+    if (o && o->ncull > 0) {
         sc->prim = rt_alloc_array(sc->nintri + sc->nmtri + n, sizeof *sc->prim);
         sc->prim_owned = 1;
     } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + sc->nmtri + n + 1, sizeof(rt_prim))) {
@@ -852,14 +855,137 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
     sc->loops = rt_alloc_array(sc->nloopsin, sizeof(uint32_t));
     if (!sc->prim || !sc->quad || !sc->poly || !sc->cell || !sc->uv || !sc->loops)
         return RT_ERR_NOMEM;
+    return RT_OK;
+}
+
+/* The cell array in (P, Q, R at v) as the next committed cell, its record *pr completed and
+   its corners added to bb: 1, or 0 if it is degenerate (not kept). */
+static int rt_commit_cell(rt_scene *sc, const rt_in_prim *in, const double *v, rt_prim *pr,
+                          double bb[6])
+{
+    const double *P = v, *Q = v + 3, *R = v + 6;
+    rt_cell *ce = &sc->cell[sc->ncell];
+    double nn[3];
+    for (int j = 0; j < 3; j++) {
+        ce->p[j] = P[j];
+        ce->a[j] = R[j] - P[j];
+        ce->b[j] = Q[j] - R[j];
+    }
+    rt_cross(ce->a, ce->b, nn);
+    double l = rt_len3(nn);
+    if (!(l > 1e-12 * rt_len3(ce->a) * rt_len3(ce->b)) || !isfinite(l))
+        return 0;
+    for (int j = 0; j < 3; j++)
+        ce->n[j] = nn[j] / l;
+    ce->d = ce->n[0] * P[0] + ce->n[1] * P[1] + ce->n[2] * P[2];
+    int k = rt_dominant_axis(ce->n);
+    ce->ku = (k + 1) % 3;
+    ce->kv = (k + 2) % 3;
+    double m00 = ce->a[ce->ku], m01 = ce->b[ce->ku], m10 = ce->a[ce->kv], m11 = ce->b[ce->kv];
+    double det = m00 * m11 - m01 * m10;
+    if (!(fabs(det) > 0.0) || !isfinite(1.0 / det))
+        return 0;
+    ce->inv[0][0] = m11 / det;
+    ce->inv[0][1] = -m01 / det;
+    ce->inv[1][0] = -m10 / det;
+    ce->inv[1][1] = m00 / det;
+    ce->nx = in->nx;
+    ce->ny = in->ny;
+    ce->rgb0 = in->rgb0;
+    pr->kind = RT_KIND_CELL;
+    pr->data = (uint32_t)sc->ncell++;
+    double S[3];
+    for (int j = 0; j < 3; j++)
+        S[j] = P[j] + Q[j] - R[j];
+    rt_bbox_add(bb, P); rt_bbox_add(bb, Q); rt_bbox_add(bb, R); rt_bbox_add(bb, S);
+    return 1;
+}
+
+/* The polygon in (nv vertices v, centroid c, extent ext) as the next committed planar convex
+   quad or polygon, its record *pr completed and the traced vertices added to bb: 1, or 0 if
+   it has no plane (not kept). */
+static int rt_commit_poly(rt_scene *sc, const rt_in_prim *in, const double *v, size_t nv,
+                          const double c[3], double ext, rt_prim *pr, double bb[6])
+{
+    const int *counts = sc->in_loops + in->loop0;
+    double nrm[3];
+    if (!rt_poly_normal(v, nv, counts, in->nloops, c, ext, nrm))
+        return 0;
+    if (in->nloops == 1 && nv == 4 && rt_quad_convex(v, nrm, c, ext)) {
+        rt_quad *q = &sc->quad[sc->nquad];
+        memcpy(q->v, v, 12 * sizeof(double));
+        memcpy(q->n, nrm, sizeof q->n);
+        pr->kind = RT_KIND_QUAD;
+        pr->data = (uint32_t)sc->nquad++;
+        for (int i = 0; i < 4; i++)
+            rt_bbox_add(bb, v + 3 * i);
+        return 1;
+    }
+    rt_poly *po = &sc->poly[sc->npoly];
+    memcpy(po->n, nrm, sizeof po->n);
+    po->d = nrm[0] * c[0] + nrm[1] * c[1] + nrm[2] * c[2];
+    int k = rt_dominant_axis(nrm);
+    po->ku = (k + 1) % 3;
+    po->kv = (k + 2) % 3;
+    po->uv0 = (uint32_t)sc->nuv;
+    po->loop0 = (uint32_t)sc->nloops;
+    po->nloops = (uint32_t)in->nloops;
+    for (int q = 0; q < in->nloops; q++)
+        sc->loops[sc->nloops++] = (uint32_t)counts[q];
+    for (size_t i = 0; i < nv; i++) {
+        double pu = v[3 * i + po->ku], pv = v[3 * i + po->kv];
+        sc->uv[2 * sc->nuv] = pu;
+        sc->uv[2 * sc->nuv + 1] = pv;
+        sc->nuv++;
+        /* vertex projected onto the plane along axis k: the surface actually traced */
+        double pp[3];
+        pp[po->ku] = pu;
+        pp[po->kv] = pv;
+        pp[k] = (po->d - nrm[po->ku] * pu - nrm[po->kv] * pv) / nrm[k];
+        if (fin3(pp))
+            rt_bbox_add(bb, pp);
+    }
+    pr->kind = RT_KIND_POLY;
+    pr->data = (uint32_t)sc->npoly++;
+    return 1;
+}
+
+/* Stable partition of the records from first on: quads, then the rest, so that the prim
+   index alone selects the fast paths (i < ntri: a triangle; i < ntri + nquad: quad[i -
+   ntri]). RT_OK or RT_ERR_NOMEM. */
+static int rt_quads_first(rt_scene *sc, size_t first)
+{
+    const size_t nrest = sc->nprim - first;
+    rt_prim *tmp = rt_alloc_array(nrest, sizeof *tmp);
+    if (!tmp)
+        return RT_ERR_NOMEM;
+    size_t qa = 0, qb = sc->nquad;
+    for (size_t i = first; i < sc->nprim; i++) {
+        if (sc->prim[i].kind == RT_KIND_QUAD)
+            tmp[qa++] = sc->prim[i];
+        else
+            tmp[qb++] = sc->prim[i];
+    }
+    if (nrest)
+        memcpy(sc->prim + first, tmp, nrest * sizeof *tmp);
+    free(tmp);
+    return RT_OK;
+}
+
+static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
+{
+    const int cull = o && o->ncull > 0;
+    int rc = rt_commit_alloc(sc, o);
+    if (rc != RT_OK)
+        return rc;
     double bb[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-    int rc = rt_commit_tris(sc, o, bb);
+    rc = rt_commit_tris(sc, o, bb);
     if (rc == RT_OK)
         rc = rt_commit_mesh(sc, o, bb);
     if (rc != RT_OK)
         return rc;
     const size_t first = sc->nprim; /* the other kinds from here */
-    for (size_t id = 0; id < n; id++) {
+    for (size_t id = 0; id < sc->nin; id++) {
         const rt_in_prim *in = &sc->in[id];
         const double *v = sc->in_xyz + in->xyz0;
         size_t nv = 0;
@@ -878,104 +1004,13 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         rc = rt_prim_init(sc, pr, in->id, in->front, in->back);
         if (rc != RT_OK)
             return rc;
-        if (in->kind == RT_KIND_CELL) {
-            const double *P = v, *Q = v + 3, *R = v + 6;
-            rt_cell *ce = &sc->cell[sc->ncell];
-            double nn[3];
-            for (int j = 0; j < 3; j++) {
-                ce->p[j] = P[j];
-                ce->a[j] = R[j] - P[j];
-                ce->b[j] = Q[j] - R[j];
-            }
-            rt_cross(ce->a, ce->b, nn);
-            double l = rt_len3(nn);
-            if (!(l > 1e-12 * rt_len3(ce->a) * rt_len3(ce->b)) || !isfinite(l))
-                continue;
-            for (int j = 0; j < 3; j++)
-                ce->n[j] = nn[j] / l;
-            ce->d = ce->n[0] * P[0] + ce->n[1] * P[1] + ce->n[2] * P[2];
-            int k = rt_dominant_axis(ce->n);
-            ce->ku = (k + 1) % 3;
-            ce->kv = (k + 2) % 3;
-            double m00 = ce->a[ce->ku], m01 = ce->b[ce->ku], m10 = ce->a[ce->kv], m11 = ce->b[ce->kv];
-            double det = m00 * m11 - m01 * m10;
-            if (!(fabs(det) > 0.0) || !isfinite(1.0 / det))
-                continue;
-            ce->inv[0][0] = m11 / det;
-            ce->inv[0][1] = -m01 / det;
-            ce->inv[1][0] = -m10 / det;
-            ce->inv[1][1] = m00 / det;
-            ce->nx = in->nx;
-            ce->ny = in->ny;
-            ce->rgb0 = in->rgb0;
-            pr->kind = RT_KIND_CELL;
-            pr->data = (uint32_t)sc->ncell++;
-            double S[3];
-            for (int j = 0; j < 3; j++)
-                S[j] = P[j] + Q[j] - R[j];
-            rt_bbox_add(bb, P); rt_bbox_add(bb, Q); rt_bbox_add(bb, R); rt_bbox_add(bb, S);
+        if (in->kind == RT_KIND_CELL ? rt_commit_cell(sc, in, v, pr, bb)
+                                     : rt_commit_poly(sc, in, v, nv, c, ext, pr, bb))
             sc->nprim++;
-            continue;
-        }
-        const int *counts = sc->in_loops + in->loop0;
-        double nrm[3];
-        if (!rt_poly_normal(v, nv, counts, in->nloops, c, ext, nrm))
-            continue;
-        if (in->nloops == 1 && nv == 4 && rt_quad_convex(v, nrm, c, ext)) {
-            rt_quad *q = &sc->quad[sc->nquad];
-            memcpy(q->v, v, 12 * sizeof(double));
-            memcpy(q->n, nrm, sizeof q->n);
-            pr->kind = RT_KIND_QUAD;
-            pr->data = (uint32_t)sc->nquad++;
-            for (int i = 0; i < 4; i++)
-                rt_bbox_add(bb, v + 3 * i);
-            sc->nprim++;
-            continue;
-        }
-        rt_poly *po = &sc->poly[sc->npoly];
-        memcpy(po->n, nrm, sizeof po->n);
-        po->d = nrm[0] * c[0] + nrm[1] * c[1] + nrm[2] * c[2];
-        int k = rt_dominant_axis(nrm);
-        po->ku = (k + 1) % 3;
-        po->kv = (k + 2) % 3;
-        po->uv0 = (uint32_t)sc->nuv;
-        po->loop0 = (uint32_t)sc->nloops;
-        po->nloops = (uint32_t)in->nloops;
-        for (int q = 0; q < in->nloops; q++)
-            sc->loops[sc->nloops++] = (uint32_t)counts[q];
-        for (size_t i = 0; i < nv; i++) {
-            double pu = v[3 * i + po->ku], pv = v[3 * i + po->kv];
-            sc->uv[2 * sc->nuv] = pu;
-            sc->uv[2 * sc->nuv + 1] = pv;
-            sc->nuv++;
-            /* vertex projected onto the plane along axis k: the surface actually traced */
-            double pp[3];
-            pp[po->ku] = pu;
-            pp[po->kv] = pv;
-            pp[k] = (po->d - nrm[po->ku] * pu - nrm[po->kv] * pv) / nrm[k];
-            if (fin3(pp))
-                rt_bbox_add(bb, pp);
-        }
-        pr->kind = RT_KIND_POLY;
-        pr->data = (uint32_t)sc->npoly++;
-        sc->nprim++;
     }
-    /* stable partition of the other kinds: quads, then the rest, so that the prim index
-       alone selects the fast paths (i < ntri: tri[i]; i < ntri + nquad: quad[i - ntri]) */
-    const size_t nrest = sc->nprim - first;
-    rt_prim *tmp = rt_alloc_array(nrest, sizeof *tmp);
-    if (!tmp)
-        return RT_ERR_NOMEM;
-    size_t qa = 0, qb = sc->nquad;
-    for (size_t i = first; i < sc->nprim; i++) {
-        if (sc->prim[i].kind == RT_KIND_QUAD)
-            tmp[qa++] = sc->prim[i];
-        else
-            tmp[qb++] = sc->prim[i];
-    }
-    if (nrest)
-        memcpy(sc->prim + first, tmp, nrest * sizeof *tmp);
-    free(tmp);
+    rc = rt_quads_first(sc, first);
+    if (rc != RT_OK)
+        return rc;
     if (sc->nprim == 0)
         for (int i = 0; i < 6; i++)
             bb[i] = 0.0;
@@ -1056,58 +1091,113 @@ static void rt_poly_disk(const rt_scene *sc, rt_poly *p)
 
 /* Per polygon: 2-D bounds and horizontal slabs, each listing the edges whose v range meets
  * it (same slab function for edges and query points, so the even-odd count is unchanged). */
+/* Polygon k's 2-D bounds, edge-free disk and slab count (its grid instead, a big polygon whose
+   slabs stay crowded): *ns slabs and *entries (slab, edge) entries. RT_OK or RT_ERR_NOMEM. */
+static int rt_poly_plan(rt_scene *sc, size_t k, size_t *ns_out, size_t *entries_out)
+{
+    rt_poly *p = &sc->poly[k];
+    const double *uv = sc->uv + 2 * (size_t)p->uv0;
+    size_t nv = 0;
+    for (uint32_t l = 0; l < p->nloops; l++)
+        nv += sc->loops[p->loop0 + l];
+    p->umin = p->vmin = INFINITY;
+    p->umax = p->vmax = -INFINITY;
+    for (size_t i = 0; i < nv; i++) {
+        p->umin = fmin(p->umin, uv[2 * i]);
+        p->umax = fmax(p->umax, uv[2 * i]);
+        p->vmin = fmin(p->vmin, uv[2 * i + 1]);
+        p->vmax = fmax(p->vmax, uv[2 * i + 1]);
+    }
+    rt_poly_disk(sc, p);
+    size_t ns = nv <= 8 ? 1 : (nv + 3) / 4;
+    if (ns > 1024)
+        ns = 1024;
+    double h = p->vmax - p->vmin;
+    if (!(h > 0.0) || !isfinite((double)ns / h))
+        ns = 1;
+    size_t entries;
+    /* long edges repeat in many slabs: keep the lists within 8 entries per edge */
+    for (;;) {
+        p->nslab = (uint32_t)ns;
+        p->inv_h = ns > 1 ? (double)ns / h : 0.0;
+        entries = rt_slab_entries(sc, p);
+        if (ns == 1 || entries <= 8 * nv + 64)
+            break;
+        ns /= 2;
+    }
+    /* a big polygon whose slabs stay crowded (long edges, many turns): its grid */
+    p->pgrid = 0;
+    if (nv >= RT_PGRID_MIN_EDGES && entries > 64 * ns) {
+        if (!sc->pgrid)
+            sc->pgrid = rt_calloc_array(sc->npoly, sizeof *sc->pgrid);
+        if (!sc->pgrid)
+            return RT_ERR_NOMEM;
+        if (rt_pgrid_build(&sc->pgrid[k], sc->uv + 2 * (size_t)p->uv0,
+                           sc->loops + p->loop0, p->nloops, p->umin, p->umax, p->vmin,
+                           p->vmax) == 0) {
+            p->pgrid = (uint32_t)k + 1;
+            ns = 1;
+            p->nslab = 1;
+            p->inv_h = 0.0;
+            entries = 0;
+        }
+    }
+    *ns_out = ns;
+    *entries_out = entries;
+    return RT_OK;
+}
+
+/* Polygon p's edges into its slabs' lists (none for a polygon with a grid): a counting pass
+   (slab_off from *base on), then the edges stored upwards at cursor (one per slab). */
+static void rt_poly_fill(rt_scene *sc, const rt_poly *p, size_t *base, size_t *cursor)
+{
+    size_t *so = sc->slab_off + p->slab0;
+    for (uint32_t s = 0; s <= p->nslab; s++)
+        so[s] = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        const double *lu = sc->uv + 2 * (size_t)p->uv0;
+        for (uint32_t l = 0; l < (p->pgrid ? 0 : p->nloops); l++) {
+            uint32_t m = sc->loops[p->loop0 + l];
+            const double *q = lu + 2 * (size_t)(m - 1);
+            for (uint32_t i = 0; i < m; i++) {
+                const double *a = lu + 2 * (size_t)i;
+                if (a[1] != q[1]) { /* horizontal edges never cross */
+                    uint32_t s0 = rt_slab_of(p, fmin(a[1], q[1]));
+                    uint32_t s1 = rt_slab_of(p, fmax(a[1], q[1]));
+                    for (uint32_t s = s0; s <= s1; s++) {
+                        if (pass == 0) {
+                            so[s + 1]++;
+                        } else {
+                            /* stored upwards: (u0, v0, u1, v1) with v0 < v1 */
+                            const double *lo = q[1] < a[1] ? q : a, *hi = q[1] < a[1] ? a : q;
+                            double *e = sc->edges + 4 * cursor[s]++;
+                            e[0] = lo[0]; e[1] = lo[1]; e[2] = hi[0]; e[3] = hi[1];
+                        }
+                    }
+                }
+                q = a;
+            }
+            lu += 2 * (size_t)m;
+        }
+        if (pass == 0) {
+            so[0] = *base;
+            for (uint32_t s = 0; s < p->nslab; s++) {
+                so[s + 1] += so[s];
+                cursor[s] = so[s];
+            }
+            *base = so[p->nslab];
+        }
+    }
+}
+
 static int rt_poly_slabs(rt_scene *sc)
 {
     size_t nslab_tot = 0, nedge_tot = 0;
     for (size_t k = 0; k < sc->npoly; k++) {
-        rt_poly *p = &sc->poly[k];
-        const double *uv = sc->uv + 2 * (size_t)p->uv0;
-        size_t nv = 0;
-        for (uint32_t l = 0; l < p->nloops; l++)
-            nv += sc->loops[p->loop0 + l];
-        p->umin = p->vmin = INFINITY;
-        p->umax = p->vmax = -INFINITY;
-        for (size_t i = 0; i < nv; i++) {
-            p->umin = fmin(p->umin, uv[2 * i]);
-            p->umax = fmax(p->umax, uv[2 * i]);
-            p->vmin = fmin(p->vmin, uv[2 * i + 1]);
-            p->vmax = fmax(p->vmax, uv[2 * i + 1]);
-        }
-        rt_poly_disk(sc, p);
-        size_t ns = nv <= 8 ? 1 : (nv + 3) / 4;
-        if (ns > 1024)
-            ns = 1024;
-        double h = p->vmax - p->vmin;
-        if (!(h > 0.0) || !isfinite((double)ns / h))
-            ns = 1;
-        size_t entries;
-        /* long edges repeat in many slabs: keep the lists within 8 entries per edge */
-        for (;;) {
-            p->nslab = (uint32_t)ns;
-            p->inv_h = ns > 1 ? (double)ns / h : 0.0;
-            entries = rt_slab_entries(sc, p);
-            if (ns == 1 || entries <= 8 * nv + 64)
-                break;
-            ns /= 2;
-        }
-        /* a big polygon whose slabs stay crowded (long edges, many turns): its grid */
-        p->pgrid = 0;
-        if (nv >= RT_PGRID_MIN_EDGES && entries > 64 * ns) {
-            if (!sc->pgrid)
-                sc->pgrid = rt_calloc_array(sc->npoly, sizeof *sc->pgrid);
-            if (!sc->pgrid)
-                return RT_ERR_NOMEM;
-            if (rt_pgrid_build(&sc->pgrid[k], sc->uv + 2 * (size_t)p->uv0,
-                               sc->loops + p->loop0, p->nloops, p->umin, p->umax, p->vmin,
-                               p->vmax) == 0) {
-                p->pgrid = (uint32_t)k + 1;
-                ns = 1;
-                p->nslab = 1;
-                p->inv_h = 0.0;
-                entries = 0;
-            }
-        }
-        p->slab0 = nslab_tot;
+        size_t ns, entries;
+        if (rt_poly_plan(sc, k, &ns, &entries) != RT_OK)
+            return RT_ERR_NOMEM;
+        sc->poly[k].slab0 = nslab_tot;
         nslab_tot += ns + 1;
         nedge_tot += entries;
     }
@@ -1117,46 +1207,8 @@ static int rt_poly_slabs(rt_scene *sc)
         return RT_ERR_NOMEM;
     size_t cursor[1024];
     size_t base = 0;
-    for (size_t k = 0; k < sc->npoly; k++) {
-        const rt_poly *p = &sc->poly[k];
-        size_t *so = sc->slab_off + p->slab0;
-        for (uint32_t s = 0; s <= p->nslab; s++)
-            so[s] = 0;
-        for (int pass = 0; pass < 2; pass++) {
-            const double *lu = sc->uv + 2 * (size_t)p->uv0;
-            for (uint32_t l = 0; l < (p->pgrid ? 0 : p->nloops); l++) {
-                uint32_t m = sc->loops[p->loop0 + l];
-                const double *q = lu + 2 * (size_t)(m - 1);
-                for (uint32_t i = 0; i < m; i++) {
-                    const double *a = lu + 2 * (size_t)i;
-                    if (a[1] != q[1]) { /* horizontal edges never cross */
-                        uint32_t s0 = rt_slab_of(p, fmin(a[1], q[1]));
-                        uint32_t s1 = rt_slab_of(p, fmax(a[1], q[1]));
-                        for (uint32_t s = s0; s <= s1; s++) {
-                            if (pass == 0) {
-                                so[s + 1]++;
-                            } else {
-                                /* stored upwards: (u0, v0, u1, v1) with v0 < v1 */
-                                const double *lo = q[1] < a[1] ? q : a, *hi = q[1] < a[1] ? a : q;
-                                double *e = sc->edges + 4 * cursor[s]++;
-                                e[0] = lo[0]; e[1] = lo[1]; e[2] = hi[0]; e[3] = hi[1];
-                            }
-                        }
-                    }
-                    q = a;
-                }
-                lu += 2 * (size_t)m;
-            }
-            if (pass == 0) {
-                so[0] = base;
-                for (uint32_t s = 0; s < p->nslab; s++) {
-                    so[s + 1] += so[s];
-                    cursor[s] = so[s];
-                }
-                base = so[p->nslab];
-            }
-        }
-    }
+    for (size_t k = 0; k < sc->npoly; k++)
+        rt_poly_fill(sc, &sc->poly[k], &base, cursor);
     sc->nslab_off = nslab_tot;
     sc->nedges = nedge_tot;
     return RT_OK;

@@ -567,75 +567,90 @@ static int push_cells(ws_rt *r, const gks_ws *ws, const rt_attr *a, int vi, cons
     return 0;
 }
 
-static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
+/* 1 if prim's loops are a consistent FILL AREA (SET) record of 3 or more points (counts not
+ * negative, summing to n_points), with *total its points; 0: nothing traceable. */
+static int area_points(const gks_prim *prim, size_t *total)
 {
     if (prim->n_points < 3 || prim->n_loops < 1 || !prim->loop_counts || !prim->pts)
         return 0;
-    size_t total = 0;
+    *total = 0;
     for (int k = 0; k < prim->n_loops; k++) {
         if (prim->loop_counts[k] < 0)
             return 0;
-        total += (size_t)prim->loop_counts[k];
+        *total += (size_t)prim->loop_counts[k];
     }
-    if (total != (size_t)prim->n_points)
+    return *total == (size_t)prim->n_points;
+}
+
+/* prim's loops of 3 or more points (fewer enclose nothing, even-odd rule: left out) into
+ * counts and their points into xyz, with their normals into vn and colours into vc where
+ * those are not NULL (3 doubles per point each). Returns the loops kept, *np their points. */
+static int gather_loops(const gks_prim *prim, int *counts, double *xyz, double *vn, double *vc,
+                        size_t *np)
+{
+    int nl = 0;
+    size_t src = 0;
+    *np = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        if (m >= 3) {
+            counts[nl++] = (int)m;
+            for (size_t i = 0; i < m; i++, ++*np) {
+                const Gpoint3 *p = &prim->pts[src + i];
+                double *o = xyz + 3 * *np;
+                o[0] = p->x, o[1] = p->y, o[2] = p->z;
+                if (vn) {
+                    const Gvec3 *q = &prim->vnormals[src + i];
+                    o = vn + 3 * *np;
+                    o[0] = q->delta_x, o[1] = q->delta_y, o[2] = q->delta_z;
+                }
+                if (vc) {
+                    const Grgb *q = &prim->vcolours[src + i];
+                    o = vc + 3 * *np;
+                    o[0] = q->red, o[1] = q->green, o[2] = q->blue;
+                }
+            }
+        }
+        src += m;
+    }
+    return nl;
+}
+
+static int record_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
+{
+    size_t total;
+    if (!area_points(prim, &total))
         return 0; /* inconsistent record: nothing traceable */
     /* Interior shading method COLOUR or NORMAL on either side: the vertex colours and
      * normals are interpolated and shaded per ray (the tracer's equivalent of both methods;
      * docs/RAYTRACING.md); NONE: the facet's colour and plane. */
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
     const int has_n = smooth && prim->vnormals, has_c = smooth && prim->vcolours;
+    const int on_stack = total <= STACK_POINTS;
     double sxyz[3 * STACK_POINTS], sn[3 * STACK_POINTS], sc[3 * STACK_POINTS];
     int scounts[4];
     int *counts = (size_t)prim->n_loops <= sizeof scounts / sizeof scounts[0]
                       ? scounts
                       : gks_alloc_array((size_t)prim->n_loops, sizeof *counts);
-    double *xyz = total <= STACK_POINTS ? sxyz : gks_alloc_array(total, 3 * sizeof *xyz);
-    double *vn = !has_n ? NULL : total <= STACK_POINTS ? sn : gks_alloc_array(total, 3 * sizeof *vn);
-    double *vc = !has_c ? NULL : total <= STACK_POINTS ? sc : gks_alloc_array(total, 3 * sizeof *vc);
+    double *xyz = on_stack ? sxyz : gks_alloc_array(total, 3 * sizeof *xyz);
+    double *vn = !has_n ? NULL : on_stack ? sn : gks_alloc_array(total, 3 * sizeof *vn);
+    double *vc = !has_c ? NULL : on_stack ? sc : gks_alloc_array(total, 3 * sizeof *vc);
     int err = 300;
-    if (!counts || !xyz || (has_n && !vn) || (has_c && !vc))
-        goto done;
-    /* Loops of fewer than 3 points enclose nothing (even-odd rule): left out. */
-    int nl = 0;
-    size_t np = 0, src = 0;
-    for (int k = 0; k < prim->n_loops; k++) {
-        size_t m = (size_t)prim->loop_counts[k];
-        if (m >= 3) {
-            counts[nl++] = (int)m;
-            for (size_t i = 0; i < m; i++) {
-                const Gpoint3 *p = &prim->pts[src + i];
-                xyz[3 * np] = p->x;
-                xyz[3 * np + 1] = p->y;
-                xyz[3 * np + 2] = p->z;
-                if (vn) {
-                    const Gvec3 *q = &prim->vnormals[src + i];
-                    vn[3 * np] = q->delta_x;
-                    vn[3 * np + 1] = q->delta_y;
-                    vn[3 * np + 2] = q->delta_z;
-                }
-                if (vc) {
-                    const Grgb *q = &prim->vcolours[src + i];
-                    vc[3 * np] = q->red;
-                    vc[3 * np + 1] = q->green;
-                    vc[3 * np + 2] = q->blue;
-                }
-                np++;
-            }
-        }
-        src += m;
+    if (counts && xyz && (vn || !has_n) && (vc || !has_c)) {
+        size_t np;
+        const int nl = gather_loops(prim, counts, xyz, vn, vc, &np);
+        rt_attr a = attr_of(prim);
+        err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz,
+                                vn, vc)
+                 : 0;
     }
-    rt_attr a = attr_of(prim);
-    err = nl ? push_polygon(r, ws, &a, clamp_view(prim->view_ind), nl, counts, np, xyz, vn, vc)
-             : 0;
-done:
     if (counts != scounts)
         gks_free(counts);
-    if (xyz != sxyz)
+    if (!on_stack) {
         gks_free(xyz);
-    if (vn != sn)
         gks_free(vn);
-    if (vc != sc)
         gks_free(vc);
+    }
     return err;
 }
 
@@ -806,37 +821,81 @@ static void rec_run(void *user, void *item)
     gks_free(b);
 }
 
-/* The asynchronous path of a FILL AREA (SET) without vertex data: its loops of 3 or more
- * points go to VRC3 here, on the caller's thread, into the block being filled; a full block
- * goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records it
- * synchronously, which also drops what this path would drop) or 300. */
-static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
+/* The queue of the asynchronous recording, started at the first area (rt_serial_new once:
+ * with one thread, or no storage for it, it stays NULL and areas are recorded at the call). */
+static rt_serial *queue_of(ws_rt *r)
 {
-    if (!r->queue) {
-        if (r->qtried)
-            return 0;
+    if (!r->queue && !r->qtried) {
         r->qtried = 1;
         r->queue = rt_serial_new(r->opts.threads, rec_run, r);
-        if (!r->queue)
-            return 0; /* one thread (or no storage for the queue): synchronous */
     }
+    return r->queue;
+}
+
+/* Whether prim is a FILL AREA (SET) for the queue (no vertex data that smooth shading would
+ * use, a consistent record): 1 with *nl loops of 3 or more points and their *np points (nl
+ * > 0), else 0. */
+static int queue_countable(const gks_prim *prim, int *nl, size_t *np)
+{
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
     if ((smooth && (prim->vnormals || prim->vcolours)) || prim->n_points < 3 ||
         prim->n_loops < 1 || !prim->loop_counts || !prim->pts)
         return 0;
-    size_t total = 0, np = 0;
-    int nl = 0;
+    size_t total = 0;
+    *nl = 0;
+    *np = 0;
     for (int k = 0; k < prim->n_loops; k++) {
         int m = prim->loop_counts[k];
         if (m < 0)
             return 0;
         total += (size_t)m;
         if (m >= 3) {
-            nl++;
-            np += (size_t)m;
+            ++*nl;
+            *np += (size_t)m;
         }
     }
-    if (total != (size_t)prim->n_points || nl == 0)
+    return total == (size_t)prim->n_points && *nl > 0;
+}
+
+/* prim's loops of 3 or more points into counts and their VRC3 points (view orientation ori,
+ * as ws_vrc_points computes them) into xyz; returns the largest |coordinate| (max_abs). */
+static double queue_points(const gks_prim *prim, const double (*ori)[4], int *counts,
+                           double *xyz)
+{
+    const int affine = ws_vrc_affine(ori);
+    size_t src = 0, q = 0;
+    double big = 0.0;
+    int nl = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        if (m >= 3) {
+            counts[nl++] = (int)m;
+            for (size_t i = 0; i < m; i++, q += 3) { /* ws_vrc_points, one pass from the prim */
+                const Gpoint3 *p = &prim->pts[src + i];
+                double *o = xyz + q;
+                if (affine)
+                    ws_vrc_point_affine(ori, p->x, p->y, p->z, o);
+                else
+                    ws_vrc_point(ori, p->x, p->y, p->z, o);
+                for (int j = 0; j < 3; j++)
+                    if (fabs(o[j]) > big)
+                        big = fabs(o[j]);
+            }
+        }
+        src += m;
+    }
+    return big;
+}
+
+/* The asynchronous path of a FILL AREA (SET) without vertex data: its loops of 3 or more
+ * points go to VRC3 here, on the caller's thread, into the block being filled; a full block
+ * goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records it
+ * synchronously, which also drops what this path would drop) or 300. */
+static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
+{
+    int nl;
+    size_t np;
+    if (!queue_of(r) || !queue_countable(prim, &nl, &np))
         return 0;
     const size_t attr_bytes = sizeof(rec_head) + rec_pad(sizeof(rt_attr));
     const size_t cbytes = rec_pad((size_t)nl * sizeof(int));
@@ -861,29 +920,8 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     int *counts = (int *)(void *)(h + 1);
     double *xyz = (double *)(void *)((unsigned char *)counts + cbytes);
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
-    const int affine = ws_vrc_affine(ori);
-    size_t src = 0, q = 0;
-    double big = 0.0; /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
-    nl = 0;
-    for (int k = 0; k < prim->n_loops; k++) {
-        size_t m = (size_t)prim->loop_counts[k];
-        if (m >= 3) {
-            counts[nl++] = (int)m;
-            for (size_t i = 0; i < m; i++, q += 3) { /* ws_vrc_points, one pass from the prim */
-                const Gpoint3 *p = &prim->pts[src + i];
-                double *o = xyz + q;
-                if (affine)
-                    ws_vrc_point_affine(ori, p->x, p->y, p->z, o);
-                else
-                    ws_vrc_point(ori, p->x, p->y, p->z, o);
-                for (int j = 0; j < 3; j++)
-                    if (fabs(o[j]) > big)
-                        big = fabs(o[j]);
-            }
-        }
-        src += m;
-    }
-    if (big > RT_COORD_MAX)
+    /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
+    if (queue_points(prim, ori, counts, xyz) > RT_COORD_MAX)
         return 0; /* beyond the tracer's range: the synchronous path clips it */
     if (new_attr) {
         *(rec_head *)(void *)at = (rec_head){ REC_ATTR, vi, 0, 0 };
