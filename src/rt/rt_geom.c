@@ -15,10 +15,12 @@ void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
     const rt_prim *p = &sc->prim[i];
     const double *n;
     switch (p->kind) {
-    case RT_KIND_TRI:
-        (void)rt_tri_normal_sane(rt_tri_vert(sc, p->data, 0), rt_tri_vert(sc, p->data, 1),
-                                 rt_tri_vert(sc, p->data, 2), ng);
+    case RT_KIND_TRI: {
+        const double *v[3];
+        rt_tri_verts(sc, p->data, v);
+        (void)rt_tri_normal_sane(v[0], v[1], v[2], ng);
         return;
+    }
     case RT_KIND_QUAD:
         n = sc->quad[p->data].n;
         break;

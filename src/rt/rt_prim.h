@@ -167,16 +167,20 @@ static inline int rt_isect_cell(const rt_rayx *r, const rt_cell *c, double tmin,
 static inline __attribute__((always_inline)) int rt_isect_prim(const rt_scene *sc, const rt_rayx *r, size_t i, double tmin,
                                 double tmax, double *t)
 {
-    if (i < sc->ntri)
-        return rt_isect_tri(r, rt_tri_vert(sc, i, 0), rt_tri_vert(sc, i, 1),
-                            rt_tri_vert(sc, i, 2), tmin, tmax, t);
+    if (i < sc->ntri) {
+        const double *v[3];
+        rt_tri_verts(sc, i, v);
+        return rt_isect_tri(r, v[0], v[1], v[2], tmin, tmax, t);
+    }
     if (i - sc->ntri < sc->nquad)
         return rt_isect_quad(r, &sc->quad[i - sc->ntri], tmin, tmax, t);
     const rt_prim *p = &sc->prim[i];
     switch (p->kind) {
-    case RT_KIND_TRI:
-        return rt_isect_tri(r, rt_tri_vert(sc, p->data, 0), rt_tri_vert(sc, p->data, 1),
-                            rt_tri_vert(sc, p->data, 2), tmin, tmax, t);
+    case RT_KIND_TRI: {
+        const double *v[3];
+        rt_tri_verts(sc, p->data, v);
+        return rt_isect_tri(r, v[0], v[1], v[2], tmin, tmax, t);
+    }
     case RT_KIND_QUAD:
         return rt_isect_quad(r, &sc->quad[p->data], tmin, tmax, t);
     case RT_KIND_POLY:

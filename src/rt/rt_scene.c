@@ -782,58 +782,117 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
 /* The meshes' triangles after the plain ones (ntri_plain), in id order, with their records
    (data: the primitive index, as a plain triangle's); degenerate ones (as rt_tri_prim finds
    them) and, with culling, culled ones left out: then the kept index triples are a compacted
-   copy (ctri_owned), else ctri is the input's. */
+   copy (ctri_owned), else ctri is the input's. In nt parts of consecutive triangles
+   (threads): each part writes the records of its triangles at their input places (id
+   RT_CULLED: left out); a serial pass closes the gaps, so the result is the same for any nt. */
+typedef struct rt_mesh_job {
+    rt_scene *sc;
+    const rt_build_options *o;
+    const rt_prim *tpl;       /* per mesh: its triangles' record (id, surfaces) */
+    size_t base;              /* the first mesh triangle's primitive index */
+    double bb[RT_PAR_MAX][6];
+    size_t kept[RT_PAR_MAX];
+} rt_mesh_job;
+
+static void rt_commit_mesh_part(void *arg, int part, int nparts)
+{
+    rt_mesh_job *j = arg;
+    rt_scene *sc = j->sc;
+    const int cull = j->o && j->o->ncull > 0;
+    const uint32_t (*in)[3] = (const uint32_t (*)[3])sc->mtri.p;
+    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    double *bb = j->bb[part];
+    size_t lo, hi, kept = 0, mi = 0;
+    rt_par_range(sc->nmtri, part, nparts, &lo, &hi);
+    for (int i = 0; i < 3; i++) {
+        bb[i] = INFINITY;
+        bb[3 + i] = -INFINITY;
+    }
+    for (size_t t = lo; t < hi; t++) {
+        while (t >= sc->mesh[mi].t0 + sc->mesh[mi].nt)
+            mi++;
+        const double *a = X[in[t][0]], *b = X[in[t][1]], *c = X[in[t][2]];
+        double v[9], nrm[3];
+        int keep = sane3(a) && sane3(b) && sane3(c) &&
+                   (rt_tri_surely_sane(a, b, c) || rt_tri_normal_sane(a, b, c, nrm));
+        if (keep && cull) {
+            memcpy(v, a, sizeof v / 3);
+            memcpy(v + 3, b, sizeof v / 3);
+            memcpy(v + 6, c, sizeof v / 3);
+            keep = !rt_culled(j->o, v, 3, 0);
+        }
+        rt_prim *pr = &sc->prim[j->base + t];
+        *pr = j->tpl[mi];
+        pr->data = (uint32_t)(j->base + t);
+        if (!keep) {
+            pr->id = RT_CULLED;
+            continue;
+        }
+        rt_bbox_add(bb, a);
+        rt_bbox_add(bb, b);
+        rt_bbox_add(bb, c);
+        kept++;
+    }
+    j->kept[part] = kept;
+}
+
 static int rt_commit_mesh(rt_scene *sc, const rt_build_options *o, double bb[6])
 {
     sc->ntri_plain = sc->ntri;
     if (sc->nmtri == 0)
         return RT_OK;
-    const int cull = o && o->ncull > 0;
-    uint32_t (*in)[3] = sc->mtri.p, (*out)[3] = NULL;
-    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
-    size_t w = 0;
-    for (size_t mi = 0; mi < sc->nmesh; mi++) {
+    rt_mesh_job *j = rt_alloc_array(1, sizeof *j);
+    rt_prim *tpl = rt_calloc_array(sc->nmesh, sizeof *tpl);
+    int rc = j && tpl ? RT_OK : RT_ERR_NOMEM;
+    for (size_t mi = 0; mi < sc->nmesh && rc == RT_OK; mi++) {
         const rt_mesh *m = &sc->mesh[mi];
-        rt_prim pr;
-        memset(&pr, 0, sizeof pr);
-        const int rc = rt_prim_init(sc, &pr, (int)m->id, m->front, m->back);
-        if (rc != RT_OK) {
-            free(out);
-            return rc;
+        rc = rt_prim_init(sc, &tpl[mi], (int)m->id, m->front, m->back);
+        tpl[mi].kind = RT_KIND_TRI;
+    }
+    if (rc != RT_OK) {
+        free(j);
+        free(tpl);
+        return rc;
+    }
+    j->sc = sc;
+    j->o = o;
+    j->tpl = tpl;
+    j->base = sc->nprim;
+    int nt = rt_par_threads(o ? o->threads : 0);
+    if ((size_t)nt > sc->nmtri / 16384 + 1)
+        nt = (int)(sc->nmtri / 16384 + 1);
+    rt_par_run(nt, rt_commit_mesh_part, j);
+    size_t kept = 0;
+    for (int k = 0; k < nt; k++) {
+        kept += j->kept[k];
+        for (int i = 0; i < 3; i++) {
+            bb[i] = fmin(bb[i], j->bb[k][i]);
+            bb[3 + i] = fmax(bb[3 + i], j->bb[k][3 + i]);
         }
-        pr.kind = RT_KIND_TRI;
-        for (size_t t = m->t0; t < m->t0 + m->nt; t++) {
-            const double *a = X[in[t][0]], *b = X[in[t][1]], *c = X[in[t][2]];
-            double v[9], nrm[3];
-            int keep = sane3(a) && sane3(b) && sane3(c) &&
-                       (rt_tri_surely_sane(a, b, c) || rt_tri_normal_sane(a, b, c, nrm));
-            if (keep && cull) {
-                memcpy(v, a, sizeof v / 3);
-                memcpy(v + 3, b, sizeof v / 3);
-                memcpy(v + 6, c, sizeof v / 3);
-                keep = !rt_culled(o, v, 3, 0);
-            }
-            if (!keep && !out) { /* the first left out: the kept ones so far are in[0 .. w) */
-                out = rt_alloc_array(sc->nmtri, sizeof *out);
-                if (!out)
-                    return RT_ERR_NOMEM;
-                memcpy(out, in, w * sizeof *out);
-            }
-            if (!keep)
+    }
+    const size_t base = j->base;
+    free(j);
+    free(tpl);
+    uint32_t (*in)[3] = sc->mtri.p;
+    sc->ctri = in;
+    sc->ctri_owned = 0;
+    if (kept < sc->nmtri) { /* close the gaps, in order, in a copy of the index triples */
+        sc->ctri = rt_alloc_array(kept ? kept : 1, sizeof *sc->ctri);
+        if (!sc->ctri)
+            return RT_ERR_NOMEM;
+        sc->ctri_owned = 1;
+        size_t w = 0;
+        for (size_t t = 0; t < sc->nmtri; t++) {
+            if (sc->prim[base + t].id == RT_CULLED)
                 continue;
-            if (out)
-                memcpy(out[w], in[t], sizeof *out);
-            pr.data = (uint32_t)sc->nprim;
-            sc->prim[sc->nprim++] = pr;
-            rt_bbox_add(bb, a);
-            rt_bbox_add(bb, b);
-            rt_bbox_add(bb, c);
+            sc->prim[base + w] = sc->prim[base + t];
+            sc->prim[base + w].data = (uint32_t)(base + w);
+            memcpy(sc->ctri[w], in[t], sizeof *sc->ctri);
             w++;
         }
     }
-    sc->ctri = out ? out : in;
-    sc->ctri_owned = out != NULL;
-    sc->ntri = sc->ntri_plain + w;
+    sc->nprim += kept;
+    sc->ntri = sc->ntri_plain + kept;
     return RT_OK;
 }
 

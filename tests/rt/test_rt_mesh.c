@@ -3,7 +3,8 @@
  * test_rt_mesh.c -- indexed meshes (rt_scene_add_mesh, rt_scene_mesh_begin/end): a bumpy
  * height field with vertex normals and colours, stored once as a mesh, traces the same
  * picture bit for bit as its triangles given one by one (rt_scene_add_polygon_data) and the
- * same hits (distance, side); it needs fewer bytes per triangle; bad input is rejected with
+ * same hits (distance, side), whole and with culling (a degenerate triangle among them: the
+ * commit's compacted copy); it needs fewer bytes per triangle; bad input is rejected with
  * nothing added; truncation and an abandoned reservation leave the scene as before.
  */
 #include <setjmp.h>
@@ -41,11 +42,12 @@ static void field(void)
             uint32_t k = (uint32_t)(j * N + i), *t = idx + 6 * (j * (N - 1) + i);
             t[0] = k, t[1] = k + 1, t[2] = k + N + 1, t[3] = k, t[4] = k + N + 1, t[5] = k + N;
         }
+    idx[3 * 40 + 2] = idx[3 * 40 + 1]; /* one degenerate triangle: dropped at commit */
 }
 
 /* The field as one mesh (mesh = 1) or as lone triangles, lit (a shadow-casting light),
- * committed. */
-static rt_scene *scene(int mesh)
+ * committed (cull: without the primitives wholly left of x = -0.3). */
+static rt_scene *scene(int mesh, int cull)
 {
     rt_scene *sc = rt_scene_new();
     assert_non_null(sc);
@@ -69,6 +71,7 @@ static rt_scene *scene(int mesh)
             const int three = 3;
             const rt_vertex_data vd = { vn, vc };
             assert_int_equal(rt_scene_add_polygon_data(sc, 1, &three, v, &vd, s, s), (int)t);
+            /* (the degenerate one takes its id and is not kept) */
         }
     }
     const rt_light amb = { .type = RT_LIGHT_AMBIENT, .color = { 1, 1, 1 } };
@@ -76,7 +79,17 @@ static rt_scene *scene(int mesh)
                           .direction = { 0.5, -0.4, -0.6 } };
     assert_true(rt_scene_add_light(sc, &amb) >= 0);
     assert_true(rt_scene_add_light(sc, &dl) >= 0);
-    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = -1;
+    bo.threads = 2;
+    if (cull) {
+        bo.ncull = 1;
+        bo.cull[0][0] = 1;
+        bo.cull[0][3] = 0.3;
+        bo.cull_eps = 1e-9;
+    }
+    assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
     return sc;
 }
 
@@ -89,11 +102,10 @@ static void camera(rt_camera *cam)
     assert_int_equal(rt_camera_from_view(cam, m, vw.vp, SZ, SZ), RT_OK);
 }
 
-static void test_same_picture(void **state)
+static void same_picture(int cull)
 {
-    (void)state;
     field();
-    rt_scene *a = scene(1), *b = scene(0);
+    rt_scene *a = scene(1, cull), *b = scene(0, cull);
     rt_camera cam;
     camera(&cam);
     rt_render_options o;
@@ -106,11 +118,16 @@ static void test_same_picture(void **state)
     assert_int_equal(rt_render(a, &cam, &o, pa, &sa), RT_OK);
     assert_int_equal(rt_render(b, &cam, &o, pb, &sb), RT_OK);
     assert_memory_equal(pa, pb, 3 * SZ * SZ * sizeof(float));
-    assert_true(sa.eye_hits > SZ * SZ / 2);
+    assert_true(sa.eye_hits > SZ * SZ / (cull ? 4 : 2));
     assert_int_equal(sa.prims, sb.prims);
-    print_message("bytes per triangle: mesh %.1f, lone triangles %.1f\n",
+    print_message("%s: %llu triangles kept; bytes per triangle: mesh %.1f, lone triangles %.1f\n",
+                  cull ? "culled" : "whole", (unsigned long long)sa.prims,
                   (double)sa.tri_bytes / (double)sa.prims, (double)sb.tri_bytes / (double)sb.prims);
-    assert_true(sa.tri_bytes < sb.tri_bytes / 2 + sb.tri_bytes / 8);
+    if (cull)
+        assert_true(sa.prims < (N - 1) * (N - 1) * 2 - 1 - (N - 1) * 2);
+    else
+        assert_int_equal(sa.prims, (N - 1) * (N - 1) * 2 - 1);
+    assert_true(sa.tri_bytes < sb.tri_bytes / 2 + sb.tri_bytes / 8 || cull);
     /* the same hits, ray by ray (ids aside: the mesh has one) */
     rt_ray r[SZ];
     rt_hit ha[SZ], hb[SZ];
@@ -132,6 +149,19 @@ static void test_same_picture(void **state)
     free(pb);
     rt_scene_free(a);
     rt_scene_free(b);
+}
+
+static void test_same_picture(void **state)
+{
+    (void)state;
+    same_picture(0);
+}
+
+/* with culling, and the degenerate triangle: the commit's compacted copy of the indices */
+static void test_same_picture_culled(void **state)
+{
+    (void)state;
+    same_picture(1);
 }
 
 static void test_bad_input(void **state)
@@ -177,6 +207,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_picture),
+        cmocka_unit_test(test_same_picture_culled),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
