@@ -285,7 +285,8 @@ typedef struct rt_hit {
     double ng[3];    /* unit geometric normal of the front side */
 } rt_hit;
 
-/* Nearest hit for n rays (ties in t: smallest primitive id). RT_ERR_STATE if not committed,
+/* Nearest hit for n rays (ties in t: smallest primitive id; within a mesh, the triangle given
+ * first). RT_ERR_STATE if not committed,
  * RT_ERR_NOMEM. Grid and brute force give bit-identical results. */
 RT_API int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
 /* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
@@ -350,7 +351,8 @@ typedef struct rt_stats {
     double render_seconds;
     size_t memory_bytes;              /* scene + grid */
     size_t tri_bytes;                 /* of memory_bytes: the triangles' records (rt_prim and
-                                         the vertices, rt_tri) */
+                                         the vertices, rt_tri; a mesh's: rt_prim, the index
+                                         triples and its shared vertex data) */
     size_t grid_bytes;                /* of memory_bytes: both grid levels */
 } rt_stats;
 
