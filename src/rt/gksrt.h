@@ -194,6 +194,12 @@ typedef struct rt_mesh_fill {
 RT_API int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_t ntris,
                                rt_mesh_fill *f);
 RT_API int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface);
+/* fn(arg, k, n) for the parts k = 0 .. n-1 on up to n threads of the tracer's pool (n as
+ * rt_build_options.threads takes a request: 0 = the online CPUs; 1 .. RT_PARTS_MAX), the part
+ * k = 0 on the caller; returns when all are done. For a caller that prepares a large mesh's
+ * data (rt_scene_mesh_begin's arrays) in parallel; parts must not depend on their thread. */
+#define RT_PARTS_MAX 64
+RT_API void rt_parallel_parts(int threads, void (*fn)(void *arg, int k, int n), void *arg);
 /* a vertex normal v normalised into o (0 when zero), a colour c clamped to [0, 1] into o */
 RT_API void rt_mesh_store_normal(float o[3], const double v[3]);
 RT_API void rt_mesh_store_colour(float o[3], const double c[3]);

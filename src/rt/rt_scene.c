@@ -311,6 +311,13 @@ int rt_scene_add_polygon(rt_scene *sc, int nloops, const int *loop_counts, const
     return (int)sc->nids++;
 }
 
+_Static_assert(RT_PARTS_MAX == RT_PAR_MAX, "gksrt.h's RT_PARTS_MAX is the pool's RT_PAR_MAX");
+
+void rt_parallel_parts(int threads, void (*fn)(void *arg, int k, int n), void *arg)
+{
+    rt_par_run(rt_par_threads(threads), fn, arg);
+}
+
 void rt_mesh_store_normal(float o[3], const double v[3])
 {
     double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))), l = 0.0;

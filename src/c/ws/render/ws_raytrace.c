@@ -1089,6 +1089,37 @@ static int mesh_polygons(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
     return err;
 }
 
+/* The vertices of a mesh into the tracer's arrays (rt_scene_mesh_begin), in parts: VRC3
+ * points by the view orientation ori, their largest |coordinate| per part, normals by the
+ * normal matrix nm (has_n) and colours (has_c). */
+typedef struct mesh_job {
+    const gks_mesh *m;
+    const double (*ori)[4];
+    double nm[3][3];
+    int has_n, has_c;
+    rt_mesh_fill f;
+    double big[RT_PARTS_MAX];
+} mesh_job;
+
+static void mesh_vertices(void *arg, int k, int n)
+{
+    mesh_job *j = arg;
+    const gks_mesh *m = j->m;
+    const size_t lo = m->n_verts / (size_t)n * (size_t)k, hi =
+        k == n - 1 ? m->n_verts : m->n_verts / (size_t)n * (size_t)(k + 1);
+    ws_vrc_points(j->ori, &m->pts[0][0] + 3 * lo, hi - lo, j->f.xyz + 3 * lo);
+    j->big[k] = max_abs(j->f.xyz + 3 * lo, 3 * (hi - lo));
+    for (size_t i = lo; i < hi; i++) {
+        if (j->has_n) { /* a degenerate normal adds nothing */
+            double q[3];
+            gks_xform_normal(j->nm, m->vnormals[i], q);
+            rt_mesh_store_normal(j->f.normals + 3 * i, q);
+        }
+        if (j->has_c)
+            rt_mesh_store_colour(j->f.colours + 3 * i, m->vcolours[i]);
+    }
+}
+
 /* The mesh's triangles into view vi's scene as one indexed mesh, written straight into the
  * tracer's arrays (rt_scene_mesh_begin): VRC3 points, normals and colours where the interior
  * shading method interpolates them, as record_fill_area takes them; then its other facets.
@@ -1105,32 +1136,29 @@ static int record_mesh(ws_rt *r, const gks_ws *ws, const gks_mesh *m)
         if (m->idx[i] < 0 || (size_t)m->idx[i] >= nv)
             return 308;
     const size_t nt = mesh_triangles(m, NULL, NULL);
-    double nm[3][3];
-    const int has_n = smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, nm);
-    const int has_c = smooth && m->vcolours;
+    mesh_job j = { .m = m, .ori = (const double (*)[4])v->ori_matrix };
+    j.has_n = smooth && m->vnormals && !gks_xform_normal_matrix(v->ori_matrix, j.nm);
+    j.has_c = smooth && m->vcolours;
     rt_attr a = attr_of(prim);
     rt_view_rec *vr;
     int err = view_surfaces(r, vi, &a, &vr);
     if (err || !vr)
         return err;
     if (nt) {
-        rt_mesh_fill f;
-        int rc = rt_scene_mesh_begin(vr->sc, nv, has_n, has_c, nt, &f);
+        int rc = rt_scene_mesh_begin(vr->sc, nv, j.has_n, j.has_c, nt, &j.f);
         if (rc < 0)
             return gks_err_of_rt(rc);
-        ws_vrc_points(v->ori_matrix, &m->pts[0][0], nv, f.xyz);
-        if (max_abs(f.xyz, 3 * nv) > RT_COORD_MAX)
+        /* the vertices on the frame's threads when there are many (each one alone: the
+         * same values for any number of parts) */
+        if (nv >= 65536)
+            rt_parallel_parts(r->opts.threads, mesh_vertices, &j);
+        else
+            mesh_vertices(&j, 0, 1);
+        for (int k = 1; k < RT_PARTS_MAX; k++)
+            j.big[0] = fmax(j.big[0], j.big[k]); /* parts not run left 0 */
+        if (j.big[0] > RT_COORD_MAX)
             return GKS_WS_MESH_FACETS; /* the reservation is dropped */
-        for (size_t i = 0; i < nv; i++) {
-            if (has_n) { /* a degenerate normal adds nothing */
-                double q[3];
-                gks_xform_normal(nm, m->vnormals[i], q);
-                rt_mesh_store_normal(f.normals + 3 * i, q);
-            }
-            if (has_c)
-                rt_mesh_store_colour(f.colours + 3 * i, m->vcolours[i]);
-        }
-        mesh_triangles(m, f.xyz, f.idx);
+        mesh_triangles(m, j.f.xyz, j.f.idx);
         int id = rt_scene_mesh_end(vr->sc, vr->f, vr->b);
         if (id < 0)
             return gks_err_of_rt(id);
