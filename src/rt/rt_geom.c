@@ -18,7 +18,7 @@ void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
     case RT_KIND_TRI: {
         const double *v[3];
         rt_tri_verts(sc, p->data, v);
-        (void)rt_tri_normal_sane(v[0], v[1], v[2], ng);
+        rt_tri_unit_normal(v[0], v[1], v[2], ng);
         return;
     }
     case RT_KIND_QUAD:

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_geom.h -- the normal of a triangle, inline: the scene computes it for every triangle
- * added (rt_scene.c, a hot path), rt_geom.c again at hits. Private to src/rt.
+ * rt_geom.h -- the normal of a triangle, inline: the scene checks every triangle added with
+ * rt_tri_normal_sane (rt_scene.c, a hot path), rt_geom.c gives rt_tri_unit_normal at hits.
+ * Private to src/rt.
  */
 #ifndef GKS3D_RT_GEOM_H
 #define GKS3D_RT_GEOM_H
@@ -13,7 +14,7 @@
 
 /* The unit normal of the triangle v0 v1 v2 (sane vertices): rt_points_frame and rt_poly_normal
    for 3 points, unrolled, the same operations in the same order (the same bits); 0 if it is
-   degenerate. The one computation of a triangle's normal, when it is added and at its hits. */
+   degenerate. The add-time check of a triangle, and the fallback of rt_tri_unit_normal. */
 static inline int rt_tri_normal_sane(const double *v0, const double *v1, const double *v2,
                                      double n[3])
 {
@@ -57,5 +58,33 @@ static inline int rt_tri_normal_sane(const double *v0, const double *v1, const d
     for (int i = 0; i < 3; i++)
         memcpy(vv + 3 * i, v[i], 3 * sizeof(double));
     return rt_newell_normal(vv, 3, &three, 1, c, ext, n);
+}
+
+/* The front unit normal of a committed triangle v0 v1 v2 (one that rt_tri_normal_sane finds
+   not degenerate) at its hits and in the grid's build: one cross product of two edges and one
+   square root. It points the same way as rt_tri_normal_sane's (both are the Newell normal of
+   v0 v1 v2) and differs from it by a few roundings (relative 1e-15). Where the cross product
+   is ill-conditioned (the sine of the angle at v0 below 1e-11: a sliver, whose cross product
+   loses digits), or its square leaves the range of normal doubles (coordinates beyond about
+   1e75 or below 1e-75), rt_tri_normal_sane's scaled computation is taken instead. */
+static inline void rt_tri_unit_normal(const double *v0, const double *v1, const double *v2,
+                                      double n[3])
+{
+    const double e1[3] = {v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2]};
+    const double e2[3] = {v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2]};
+    const double c0 = e1[1] * e2[2] - e1[2] * e2[1], c1 = e1[2] * e2[0] - e1[0] * e2[2],
+                 c2 = e1[0] * e2[1] - e1[1] * e2[0];
+    const double l2 = c0 * c0 + c1 * c1 + c2 * c2;
+    const double a2 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+    const double b2 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+    /* l2 = a2 b2 sin^2: sin > 1e-11, and all three squares normal and finite */
+    if (l2 > 1e-22 * (a2 * b2) && l2 > 1e-290 && a2 * b2 < 1e290) {
+        const double len = sqrt(l2);
+        n[0] = c0 / len;
+        n[1] = c1 / len;
+        n[2] = c2 / len;
+        return;
+    }
+    (void)rt_tri_normal_sane(v0, v1, v2, n);
 }
 #endif

@@ -94,8 +94,8 @@ typedef struct rt_cell {
 } rt_cell;
 
 /* 12 bytes per primitive. The front normal is not stored: rt_prim_ng gives it (the plane
-   normal of a quad, polygon or cell; a triangle's recomputed from its vertices, the same
-   arithmetic as when it was added, so the same bits). */
+   normal of a quad, polygon or cell; a triangle's computed from its vertices at each use by
+   rt_tri_unit_normal, the same bits every time). */
 #define RT_SPAIR_MAX ((uint32_t)1 << 29) /* distinct surface pairs at most (sp's bits) */
 typedef struct rt_prim {
     int id;             /* user id */
