@@ -333,6 +333,7 @@ void rt_grid_free(rt_grid *g)
     free(g->subs);
     rt_big_free(&g->soff_m);
     rt_big_free(&g->srefs_m);
+    rt_leaves_free(g);
     memset(g, 0, sizeof *g);
 }
 
@@ -1461,6 +1462,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rc = rt_build_subgrids(sc, bs, nt, eps, sub_factor, sub_min);
     if (rc == RT_OK)
         rc = rt_empty_cubes(g, nt);
+    if (rc == RT_OK)
+        rc = rt_leaves_build(sc, g);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {

@@ -11,6 +11,7 @@
 
 #include "gksrt.h"
 #include "rt_polygon.h"
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -157,6 +158,33 @@ static inline size_t rt_cell_index(const rt_box *g, const int c[3])
     return ((size_t)c[2] * (size_t)g->n[1] + (size_t)c[1]) * (size_t)g->n[0] + (size_t)c[0];
 }
 
+/* A float leaf (rt_leaf.c): the triangles of one cell list (top-level cell without a
+   second level, or second-level cell) as float offsets from an anchor, in structure-of-arrays
+   rows of L lanes: row j (vertex j / 3, axis j % 3) at lf + 9 * lane0 + j * L, the
+   triangles' primitive indices at lid + lane0. Lanes n .. L-1 repeat lane 0. A float test
+   of its lanes (rt_leaf_fn) only rules triangles out; the exact double test decides the rest
+   (docs/RAYTRACING.md, "Float leaves"). */
+typedef struct rt_leaf {
+    double a[3];        /* anchor: the centre of its triangles' box */
+    float r;            /* >= max |v - a| (max norm) over its vertices */
+    uint32_t n;         /* triangles */
+    uint32_t lane0;     /* first lane (a multiple of 4) */
+    uint32_t L;         /* lanes (n rounded up to a multiple of 4) */
+} rt_leaf;
+
+/* the per-ray, per-leaf data of a float test (rt_leaf.c: rt_fray_leaf) */
+typedef struct rt_fray {
+    float q[3];         /* fl(anchor - origin) along kx, ky, kz */
+    float sx, sy;       /* the ray's shear, rounded to float */
+    float ka, kc, kb;   /* error bound of a lane's edge functions: P (ka + kc P) + kb */
+    int rx, ry, rz;     /* rows of vertex 0's kx, ky, kz components */
+} rt_fray;
+
+/* Writes the lanes (0 .. n-1) of a leaf whose float edge functions do not rule out a hit of
+   the exact test into cand, in increasing order; returns their number. */
+typedef uint32_t (*rt_leaf_fn)(const float *rows, uint32_t L, uint32_t n, const rt_fray *f,
+                               uint32_t *cand);
+
 typedef struct rt_grid {
     int rotated;       /* 0: grid axes = VRC3 axes; 1: grid frame p' = R (p - c) */
     int all_opaque;    /* every primitive opaque: transmittance rays stop at the first hit */
@@ -178,6 +206,13 @@ typedef struct rt_grid {
     uint32_t *srefs;
     size_t nsubcells, nsrefs;
     rt_big soff_m, srefs_m; /* the storage of soff and srefs */
+    /* float leaves (rt_leaf.c; nearest-hit rays only): per top cell and per second-level
+       cell 1 + its leaf's index, 0: the cell's list is tested in double (no list, fewer than
+       RT_LEAF_MIN triangles, or a primitive that is not a triangle). NULL: no leaves. */
+    uint32_t *tleaf, *sleaf;
+    rt_leaf *leaves; size_t nleaves;
+    float *lf; uint32_t *lid; size_t nlanes;
+    rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) */
 } rt_grid;
 
 struct rt_scene {
@@ -359,6 +394,44 @@ double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
                               const uint32_t *ids, uint32_t n, const uint16_t *zb, uint32_t zbo);
 /* 1 if the ray hits internal primitive i within its range */
 int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
+
+/* float leaves (rt_leaf.c), built after the grid: RT_OK or RT_ERR_NOMEM; and their bytes */
+int rt_leaves_build(const rt_scene *sc, rt_grid *g);
+size_t rt_leaves_bytes(const rt_grid *g);
+void rt_leaves_free(rt_grid *g);
+/* the kernel of the float test for this CPU, or the one GKS_RT_SIMD forces ("scalar", "sse",
+   "avx2": no wider than the CPU has), and its name; *fn4 the one for leaves of 4 lanes */
+rt_leaf_fn rt_leaf_kernel(const char **name, rt_leaf_fn *fn4);
+
+/* the float test's range: S (rt_leaf.c) within [RT_FS_MIN, RT_FS_MAX] keeps the bound's
+   terms normal floats and P^2 (at most 4 S^2) finite */
+#define RT_FS_MIN 1e-12
+#define RT_FS_MAX 1e15
+/* the float test's data for ray r and leaf lf: 1, or 0 when the leaf's and the ray's scale S
+   leaves the bound's range (then every lane is a candidate). The bound: rt_leaf.c. */
+static inline int rt_fray_leaf(const rt_rayx *r, const rt_leaf *lf, rt_fray *f)
+{
+    const double qx = lf->a[r->kx] - r->o[r->kx], qy = lf->a[r->ky] - r->o[r->ky],
+                 qz = lf->a[r->kz] - r->o[r->kz];
+    const double ax = fabs(qx), ay = fabs(qy), az = fabs(qz);
+    const double Q = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+    const double S = (Q + (double)lf->r) * (1.0 + 0x1p-20);
+    if (!(S >= RT_FS_MIN && S <= RT_FS_MAX))
+        return 0;
+    const double u = 0x1p-24, e1 = 8.5 * u * S;
+    f->q[0] = (float)qx;
+    f->q[1] = (float)qy;
+    f->q[2] = (float)qz;
+    f->sx = (float)r->sx;
+    f->sy = (float)r->sy;
+    f->ka = (float)(1.01 * 4.0 * e1);
+    f->kc = (float)(1.01 * 4.0001 * u);
+    f->kb = (float)(1.01 * 2.0 * e1 * e1 + 1e-36);
+    f->rx = r->kx;
+    f->ry = r->ky;
+    f->rz = r->kz;
+    return 1;
+}
 
 /* grid build (rt_grid.c) */
 int rt_grid_build(rt_scene *sc, const rt_build_options *o);
