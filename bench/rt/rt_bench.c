@@ -102,6 +102,9 @@ int main(int argc, char **argv)
                (unsigned long long)gi.refs, (unsigned long long)gi.subgrids,
                (unsigned long long)gi.subcells, (unsigned long long)gi.subrefs,
                (unsigned long long)gi.max_leaf_refs, gi.volume_fill, (unsigned long long)gi.hash);
+    if (rt_scene_grid_info(sc, &gi) == RT_OK && gi.res[0] > 0)
+        printf("float leaves %llu with %llu lanes, kernel %s\n", (unsigned long long)gi.float_leaves,
+               (unsigned long long)gi.float_lanes, gi.simd);
     rtu_view v;
     rtu_nff_view(&m, bb, &v);
     double vm[4][4];

@@ -271,6 +271,9 @@ typedef struct rt_grid_info {
     uint64_t hash;           /* FNV-1a over the committed grid (frame, boxes, cell offsets and
                                 references of both levels, empty cubes): equal
                                 hashes, the same grid; 0 without a grid */
+    uint64_t float_leaves, float_lanes; /* cell lists also kept as float leaves, their lanes */
+    const char *simd;        /* their test's kernel: "avx2", "sse", "scalar" ("none": no grid;
+                                a static string) */
 } rt_grid_info;
 
 /* Fills gi for a committed scene. RT_ERR_ARG (NULL), RT_ERR_STATE (not committed). */

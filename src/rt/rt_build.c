@@ -1526,6 +1526,7 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
     if (!sc->committed)
         return RT_ERR_STATE;
     memset(gi, 0, sizeof *gi);
+    gi->simd = "none";
     gi->prims = sc->nprim;
     if (!sc->use_grid)
         return RT_OK;
@@ -1559,5 +1560,8 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
     }
     gi->volume_fill = filled;
     gi->hash = rt_grid_hash(g);
+    gi->float_leaves = g->nleaves;
+    gi->float_lanes = g->nlanes;
+    gi->simd = g->leaf_name;
     return RT_OK;
 }

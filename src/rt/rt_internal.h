@@ -212,7 +212,8 @@ typedef struct rt_grid {
     uint32_t *tleaf, *sleaf;
     rt_leaf *leaves; size_t nleaves;
     float *lf; uint32_t *lid; size_t nlanes;
-    rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) */
+    rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) ... */
+    const char *leaf_name;        /* ... and the name of leaf_fn */
 } rt_grid;
 
 struct rt_scene {

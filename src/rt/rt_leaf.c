@@ -257,8 +257,7 @@ static void rt_leaves_pass(const rt_scene *sc, rt_grid *g, const uint32_t *off,
 
 int rt_leaves_build(const rt_scene *sc, rt_grid *g)
 {
-    const char *name;
-    g->leaf_fn = rt_leaf_kernel(&name, &g->leaf_fn4);
+    g->leaf_fn = rt_leaf_kernel(&g->leaf_name, &g->leaf_fn4);
     size_t nl = 0, lanes = 0;
     const uint32_t *top_refs = g->refs;
     rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, NULL, &nl, &lanes, 0);

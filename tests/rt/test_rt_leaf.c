@@ -65,6 +65,10 @@ static void check_kernel(const char *simd, double scale)
     rt_leaf_fn fn4, fn = rt_leaf_kernel(&name, &fn4);
     rt_scene *sc = bunny(scale);
     const rt_grid *g = &sc->grid;
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_true(gi.float_leaves == g->nleaves && gi.float_lanes == g->nlanes);
+    assert_string_equal(gi.simd, name); /* the kernel the build chose */
     uint64_t s = 1234;
     size_t hits = 0, missed = 0, far = 0, culled = 0;
     for (size_t li = 0; li < g->nleaves; li += 16) {
