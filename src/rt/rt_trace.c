@@ -415,6 +415,38 @@ static __attribute__((noinline)) void rt_leaf_nearest(rt_walkstate *w, const rt_
     }
 }
 
+/* any-hit rays (w->any_hit: the first hit blocks, in whatever order the lanes come) through
+   a float leaf: the float test rules lanes out, the double test (rt_transmit_prim) decides
+   the candidates, mailboxed as in rt_cell_transmit; 1 if blocked */
+static __attribute__((noinline)) int rt_leaf_any(rt_walkstate *w, const rt_leaf *lf)
+{
+    const rt_scene *sc = w->sc;
+    const rt_grid *g = &sc->grid;
+    const rt_rayx *r = w->r;
+    uint64_t *const hbox = w->c->hbox;
+    const uint64_t key = (uint64_t)w->stamp << 32;
+    const uint32_t *ids = g->lid + lf->lane0;
+    const float *rows = g->lf + (size_t)9 * lf->lane0;
+    rt_fray f;
+    const int ok = rt_fray_leaf(r, lf, &f);
+    uint32_t cand[RT_LEAF_CHUNK];
+    for (uint32_t c0 = 0; c0 < lf->n; c0 += RT_LEAF_CHUNK) {
+        const uint32_t nc = lf->n - c0 < RT_LEAF_CHUNK ? lf->n - c0 : RT_LEAF_CHUNK;
+        uint32_t m = nc;
+        if (ok)
+            m = (nc <= 4 ? g->leaf_fn4 : g->leaf_fn)(rows + c0, lf->L, nc, &f, cand);
+        for (uint32_t j = 0; j < m; j++) {
+            const uint32_t i = ids[c0 + (ok ? cand[j] : j)];
+            if (hbox[i % RT_HBOX] == (key | i) || i == r->skip)
+                continue;
+            hbox[i % RT_HBOX] = key | i;
+            if (!rt_transmit_prim(w->c, sc, r, i, 1, &w->T))
+                return 1;
+        }
+    }
+    return 0;
+}
+
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint32_t *refs, const uint32_t *leaf, const int32_t *sub,
                           const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
@@ -487,7 +519,10 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                 rt_leaf_nearest(w, &w->sc->grid.leaves[leaf[ci] - 1]);
             else if (mode == 0)
                 rt_cell_nearest(w, refs + k0, k1 - k0);
-            else if (rt_cell_transmit(w, refs + k0, k1 - k0))
+            else if (w->any_hit && leaf && leaf[ci]) {
+                if (rt_leaf_any(w, &w->sc->grid.leaves[leaf[ci] - 1]))
+                    return RT_WALK_BLOCKED;
+            } else if (rt_cell_transmit(w, refs + k0, k1 - k0))
                 return RT_WALK_BLOCKED;
         }
         if (sub && sub[ci] >= 0) {
@@ -520,8 +555,8 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
                                                           double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs, NULL, NULL, NULL, NULL, t0,
-                       t1, 1);
+    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs,
+                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 1);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
@@ -582,7 +617,7 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
     }
     w.stamp = rt_ctx_next(c);
     rt_gray_init(g, r, &w.gr);
-    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, NULL, g->sub, g->subs,
+    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
                     rt_octant_cubes(g, &w.gr), r->tmin, r->tmax, 1) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
