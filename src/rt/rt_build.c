@@ -1384,43 +1384,62 @@ static double rt_top_cells(const rt_build_options *o, double factor, double n)
     return factor * RT_GRID_KNEE * sqrt(n / RT_GRID_KNEE);
 }
 
-int rt_grid_build(rt_scene *sc, const rt_build_options *o)
+/* the build options as rt_grid_build applies them (defaults filled in) */
+typedef struct rt_grid_opts {
+    double factor;      /* top-level cells per primitive */
+    int explicit_res;   /* 1: grid_res (and grid_box) as given */
+    int sub_min;        /* references above which a top cell gets a second level */
+    double sub_factor;  /* second-level cells per reference */
+    int no_subgrids;
+    int all_default;    /* no resolution option given: the uniform alternative may replace
+                           the two levels */
+} rt_grid_opts;
+
+static int rt_opt_pos(double x)
 {
-    double factor = o && isfinite(o->grid_factor) && o->grid_factor > 0.0 ? o->grid_factor
-                                                                          : RT_GRID_FACTOR_DEFAULT;
-    int thr = o && o->brute_threshold >= 0 ? o->brute_threshold : RT_BRUTE_THRESHOLD_DEFAULT;
-    sc->use_grid = 0;
-    if ((o && o->brute_force) || sc->nprim == 0 || sc->nprim < (size_t)thr)
-        return RT_OK;
-    if (sc->nprim > UINT32_MAX - 1)
-        return RT_ERR_LIMIT;
-    rt_grid *g = &sc->grid;
-    int explicit_res = o && o->grid_res[0] > 0 && o->grid_res[1] > 0 && o->grid_res[2] > 0 &&
+    return isfinite(x) && x > 0.0;
+}
+
+static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opts *go)
+{
+    const int given = o != NULL;
+    go->factor = given && rt_opt_pos(o->grid_factor) ? o->grid_factor : RT_GRID_FACTOR_DEFAULT;
+    go->explicit_res = given && o->grid_res[0] > 0 && o->grid_res[1] > 0 && o->grid_res[2] > 0 &&
                        o->grid_res[0] <= 1024 && o->grid_res[1] <= 1024 && o->grid_res[2] <= 1024;
-    /* threads: at most one per 4096 primitives (the scene is the same for any number) */
-    int nt = rt_par_threads(o ? o->threads : 0);
-    if ((size_t)nt > sc->nprim / 4096 + 1)
-        nt = (int)(sc->nprim / 4096 + 1);
-    rt_build bs[RT_PAR_MAX];
-    memset(bs, 0, sizeof bs);
+    go->sub_min = given && o->sub_min > 0 ? o->sub_min : RT_SUB_MIN;
+    go->sub_factor = given && rt_opt_pos(o->sub_factor) ? o->sub_factor
+                     : (double)nprim > RT_GRID_KNEE ? RT_SUB_FACTOR_LARGE
+                                                    : RT_SUB_FACTOR;
+    go->no_subgrids = given && o->no_subgrids;
+    go->all_default = !go->explicit_res &&
+                      !(given && (rt_opt_pos(o->grid_factor) || o->no_subgrids ||
+                                  o->sub_min > 0 || rt_opt_pos(o->sub_factor)));
+}
+
+/* the grid's frame and box (rotated or not, padded, an explicit box where it holds the
+   scene) and its top-level resolution */
+static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_options *o,
+                             const rt_grid_opts *go, double *mx)
+{
+    rt_grid *g = &sc->grid;
     double fb[6];
     memcpy(fb, sc->bbox, sizeof fb);
     int rc = RT_OK;
     g->rotated = 0;
-    if (!explicit_res && !(o && o->grid_frame == 1)) {
+    if (!go->explicit_res && !(o && o->grid_frame == 1)) {
         rc = rt_choose_frame(sc, bs, nt);
         if (rc == RT_OK && g->rotated)
             rc = rt_frame_box(sc, bs, nt, 1, fb);
     }
-    double mx = 0.0;
+    *mx = 0.0;
     for (int a = 0; a < 3; a++)
-        mx = rt_dmax(mx, fb[3 + a] - fb[a]);
-    double pad = 1e-6 * mx + 1e-12 * sc->scale;
+        *mx = rt_dmax(*mx, fb[3 + a] - fb[a]);
+    double pad = 1e-6 * *mx + 1e-12 * sc->scale;
     for (int a = 0; a < 3; a++) {
         g->b.lo[a] = fb[a] - pad;
         g->b.hi[a] = fb[3 + a] + pad;
     }
-    if (explicit_res) {
+    if (go->explicit_res) {
         for (int a = 0; a < 3; a++) {
             if (isfinite(o->grid_box[a]) && isfinite(o->grid_box[3 + a]) &&
                 o->grid_box[a] < o->grid_box[3 + a]) {
@@ -1432,22 +1451,22 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
             g->b.n[a] = o->grid_res[a];
         }
     } else {
-        rt_box_resolution(&g->b, rt_top_cells(o, factor, (double)sc->nprim), 512);
+        rt_box_resolution(&g->b, rt_top_cells(o, go->factor, (double)sc->nprim), 512);
     }
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
-    const double eps = 1e-9 * (sc->scale + mx);
-    if (rc == RT_OK)
-        rc = rt_top_level(sc, bs, nt, eps);
-    int sub_min = o && o->sub_min > 0 ? o->sub_min : RT_SUB_MIN;
-    double sub_factor = o && isfinite(o->sub_factor) && o->sub_factor > 0.0 ? o->sub_factor
-                        : (double)sc->nprim > RT_GRID_KNEE ? RT_SUB_FACTOR_LARGE : RT_SUB_FACTOR;
-    int no_subgrids = o && o->no_subgrids;
-    const int all_default = !explicit_res && !(o && ((isfinite(o->grid_factor) && o->grid_factor > 0.0) ||
-                                                     o->no_subgrids || o->sub_min > 0 ||
-                                                     (isfinite(o->sub_factor) && o->sub_factor > 0.0)));
-    if (rc == RT_OK && all_default && (double)sc->nprim <= RT_GRID_KNEE &&
-        rt_crowded_share(g, (uint32_t)sub_min) >= RT_UNIFORM_SHARE) {
+    return rc;
+}
+
+/* the top level and the second level (or the one uniform level instead) */
+static int rt_grid_levels(rt_scene *sc, rt_build *bs, int nt, const rt_grid_opts *go,
+                          double eps)
+{
+    rt_grid *g = &sc->grid;
+    int rc = rt_top_level(sc, bs, nt, eps);
+    int no_subgrids = go->no_subgrids;
+    if (rc == RT_OK && go->all_default && (double)sc->nprim <= RT_GRID_KNEE &&
+        rt_crowded_share(g, (uint32_t)go->sub_min) >= RT_UNIFORM_SHARE) {
         /* occupancy nearly uniform: one fine level instead (see RT_UNIFORM_SHARE) */
         free(g->off);
         free(g->refs);
@@ -1459,7 +1478,32 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         no_subgrids = 1;
     }
     if (rc == RT_OK && !no_subgrids)
-        rc = rt_build_subgrids(sc, bs, nt, eps, sub_factor, sub_min);
+        rc = rt_build_subgrids(sc, bs, nt, eps, go->sub_factor, go->sub_min);
+    return rc;
+}
+
+int rt_grid_build(rt_scene *sc, const rt_build_options *o)
+{
+    int thr = o && o->brute_threshold >= 0 ? o->brute_threshold : RT_BRUTE_THRESHOLD_DEFAULT;
+    sc->use_grid = 0;
+    if ((o && o->brute_force) || sc->nprim == 0 || sc->nprim < (size_t)thr)
+        return RT_OK;
+    if (sc->nprim > UINT32_MAX - 1)
+        return RT_ERR_LIMIT;
+    rt_grid *g = &sc->grid;
+    rt_grid_opts go;
+    rt_grid_options(o, sc->nprim, &go);
+    /* threads: at most one per 4096 primitives (the scene is the same for any number) */
+    int nt = rt_par_threads(o ? o->threads : 0);
+    if ((size_t)nt > sc->nprim / 4096 + 1)
+        nt = (int)(sc->nprim / 4096 + 1);
+    rt_build bs[RT_PAR_MAX];
+    memset(bs, 0, sizeof bs);
+    double mx;
+    int rc = rt_grid_frame_box(sc, bs, nt, o, &go, &mx);
+    const double eps = 1e-9 * (sc->scale + mx);
+    if (rc == RT_OK)
+        rc = rt_grid_levels(sc, bs, nt, &go, eps);
     if (rc == RT_OK)
         rc = rt_empty_cubes(g, nt);
     if (rc == RT_OK)
