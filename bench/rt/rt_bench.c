@@ -4,6 +4,7 @@
  * and Mrays/s.
  *   rt_bench FILE [-s SIZE] [-t THREADS] [-corner] [-depth D] [-grid F] [-brute] [-primary]
  *            [-o out.ppm] [-reps N] [-submin N] [-subf F] [-nosub] [-vrcgrid] [-nolbuf] [-progress]
+ *            [-leafmin N]
  * NFF: the file's view; SPD procedure with -corner (SIZE+1)^2 eye rays, depth 5.
  * OFF: camera looking at the mesh from +z (of its box centre), one directional light.
  * -primary: primary rays only (rt_intersect on the camera's rays), reports Mrays/s.
@@ -41,7 +42,7 @@ int main(int argc, char **argv)
     const char *path = argv[1], *out = NULL;
     int size = 512, threads = 1, corner = 0, depth = 5, brute = 0, primary = 0, reps = 1;
     double gridf = 0.0, subf = 0.0;
-    int submin = 0, nosub = 0, progress = 0, frame = 0, nolbuf = 0;
+    int submin = 0, leafmin = 0, nosub = 0, progress = 0, frame = 0, nolbuf = 0;
     for (int i = 2; i < argc; i++) {
         if (!strcmp(argv[i], "-s") && i + 1 < argc) size = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-t") && i + 1 < argc) threads = atoi(argv[++i]);
@@ -51,6 +52,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "-brute")) brute = 1;
         else if (!strcmp(argv[i], "-submin") && i + 1 < argc) submin = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-subf") && i + 1 < argc) subf = atof(argv[++i]);
+        else if (!strcmp(argv[i], "-leafmin") && i + 1 < argc) leafmin = atoi(argv[++i]);
         else if (!strcmp(argv[i], "-nosub")) nosub = 1;
         else if (!strcmp(argv[i], "-nolbuf")) nolbuf = 1;
         else if (!strcmp(argv[i], "-vrcgrid")) frame = 1;
@@ -84,7 +86,7 @@ int main(int argc, char **argv)
     }
     rt_build_options bo = {.grid_factor = gridf, .brute_force = brute, .brute_threshold = -1,
                            .no_subgrids = nosub, .sub_min = submin, .sub_factor = subf,
-                           .grid_frame = frame, .threads = threads};
+                           .grid_frame = frame, .threads = threads, .leaf_min = leafmin};
     const double wr1 = wall();
     double t0 = now();
     if (rt_scene_commit(sc, &bo) != RT_OK) {

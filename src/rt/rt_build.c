@@ -1507,7 +1507,7 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     if (rc == RT_OK)
         rc = rt_empty_cubes(g, nt);
     if (rc == RT_OK)
-        rc = rt_leaves_build(sc, g);
+        rc = rt_leaves_build(sc, g, o ? o->leaf_min : 0);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {

@@ -207,8 +207,9 @@ typedef struct rt_grid {
     size_t nsubcells, nsrefs;
     rt_big soff_m, srefs_m; /* the storage of soff and srefs */
     /* float leaves (rt_leaf.c; nearest-hit rays only): per top cell and per second-level
-       cell 1 + its leaf's index, 0: the cell's list is tested in double (no list, fewer than
-       RT_LEAF_MIN triangles, or a primitive that is not a triangle). NULL: no leaves. */
+       cell 1 + its leaf's index, 0: the cell's list is tested in double (no list, fewer
+       triangles than rt_build_options.leaf_min, or a primitive that is not a triangle).
+       NULL: no leaves. */
     uint32_t *tleaf, *sleaf;
     rt_leaf *leaves; size_t nleaves;
     float *lf; uint32_t *lid; size_t nlanes;
@@ -397,7 +398,7 @@ double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
 int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
 
 /* float leaves (rt_leaf.c), built after the grid: RT_OK or RT_ERR_NOMEM; and their bytes */
-int rt_leaves_build(const rt_scene *sc, rt_grid *g);
+int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min);
 size_t rt_leaves_bytes(const rt_grid *g);
 void rt_leaves_free(rt_grid *g);
 /* the kernel of the float test for this CPU, or the one GKS_RT_SIMD forces ("scalar", "sse",

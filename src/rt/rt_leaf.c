@@ -26,11 +26,6 @@
 #define RT_LEAF_X86 1
 #endif
 
-/* a cell list becomes a leaf from this many triangles on: below, the double test of each
-   costs less than the leaf's set-up and float test (callgrind, bunny primary rays) */
-#ifndef RT_LEAF_MIN
-#define RT_LEAF_MIN 4
-#endif
 
 /* ---- the float test of one lane, as every kernel computes it ---- */
 
@@ -222,10 +217,10 @@ static void rt_leaf_fill(const rt_scene *sc, const uint32_t *refs, uint32_t n, u
     }
 }
 
-/* 1 if the list refs[0..n-1] becomes a leaf: RT_LEAF_MIN or more triangles, nothing else */
-static int rt_leaf_wanted(const rt_scene *sc, const uint32_t *refs, uint32_t n)
+/* 1 if the list refs[0..n-1] becomes a leaf: leaf_min or more triangles, nothing else */
+static int rt_leaf_wanted(const rt_scene *sc, const uint32_t *refs, uint32_t n, uint32_t leaf_min)
 {
-    if (n < RT_LEAF_MIN)
+    if (n < leaf_min)
         return 0;
     for (uint32_t k = 0; k < n; k++)
         if (refs[k] >= sc->ntri)
@@ -237,11 +232,11 @@ static int rt_leaf_wanted(const rt_scene *sc, const uint32_t *refs, uint32_t n)
    their indices into map */
 static void rt_leaves_pass(const rt_scene *sc, rt_grid *g, const uint32_t *off,
                            const uint32_t *refs, size_t nc, uint32_t *map, size_t *nl,
-                           size_t *lanes, int fill)
+                           size_t *lanes, int fill, uint32_t leaf_min)
 {
     for (size_t c = 0; c < nc; c++) {
         const uint32_t n = off[c + 1] - off[c];
-        if (!rt_leaf_wanted(sc, refs + off[c], n)) {
+        if (!rt_leaf_wanted(sc, refs + off[c], n, leaf_min)) {
             if (fill)
                 map[c] = 0;
             continue;
@@ -255,14 +250,17 @@ static void rt_leaves_pass(const rt_scene *sc, rt_grid *g, const uint32_t *off,
     }
 }
 
-int rt_leaves_build(const rt_scene *sc, rt_grid *g)
+int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min)
 {
     g->leaf_fn = rt_leaf_kernel(&g->leaf_name, &g->leaf_fn4);
     size_t nl = 0, lanes = 0;
+    if (leaf_min < 0)
+        return RT_OK;
+    const uint32_t lm = leaf_min > 0 ? (uint32_t)leaf_min : RT_LEAF_MIN_DEFAULT;
     const uint32_t *top_refs = g->refs;
-    rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, NULL, &nl, &lanes, 0);
+    rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, NULL, &nl, &lanes, 0, lm);
     if (g->nsubcells)
-        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, NULL, &nl, &lanes, 0);
+        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, NULL, &nl, &lanes, 0, lm);
     if (nl == 0 || nl >= UINT32_MAX || lanes >= UINT32_MAX)
         return RT_OK; /* no leaves: every list in double */
     g->tleaf = rt_alloc_array(g->ncells, sizeof(uint32_t));
@@ -279,9 +277,9 @@ int rt_leaves_build(const rt_scene *sc, rt_grid *g)
     g->nleaves = nl;
     g->nlanes = lanes;
     nl = lanes = 0;
-    rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, g->tleaf, &nl, &lanes, 1);
+    rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, g->tleaf, &nl, &lanes, 1, lm);
     if (g->nsubcells)
-        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, g->sleaf, &nl, &lanes, 1);
+        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, g->sleaf, &nl, &lanes, 1, lm);
     return RT_OK;
 }
 

@@ -35,7 +35,9 @@ static rt_scene *bunny(double scale)
     rt_surface_default(&s);
     int si = rt_scene_add_surface(sc, &s);
     assert_int_equal(rtu_mesh_add(&m, sc, si), 0);
-    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    /* leaves from 2 triangles on: leaves of 2 .. 23 lanes, every kernel's tails */
+    const rt_build_options bo = {.brute_threshold = -1, .leaf_min = 2};
+    assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
     rtu_mesh_free(&m);
     assert_non_null(sc->grid.leaves);
     return sc;
