@@ -496,6 +496,103 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
     return 1;
 }
 
+/* a primitive's geometry in the grid frame, for the cell tests of rt_insert */
+typedef struct rt_ins {
+    const rt_prim *p;
+    rt_tri tri;                 /* a triangle: its vertices (b->pts), edges and normal */
+    double te[3][3], tn[3];
+    double n[3], d;             /* the plane (d: other kinds only) */
+} rt_ins;
+
+static void rt_ins_init(const rt_scene *sc, const rt_build *b, const rt_prim *p, rt_ins *q)
+{
+    const rt_grid *gr = &sc->grid;
+    double n0[3], d0;
+    q->p = p;
+    q->d = 0.0;
+    rt_prim_plane(sc, p, n0, &d0);
+    rt_grid_dir(gr, n0, q->n);
+    if (p->kind != RT_KIND_TRI)
+        q->d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
+    memset(q->te, 0, sizeof q->te);
+    memset(q->tn, 0, sizeof q->tn);
+    if (p->kind != RT_KIND_TRI)
+        return;
+    memcpy(q->tri.v, b->pts, sizeof q->tri.v);
+    for (int j = 0; j < 3; j++) {
+        q->te[0][j] = q->tri.v[1][j] - q->tri.v[0][j];
+        q->te[1][j] = q->tri.v[2][j] - q->tri.v[1][j];
+        q->te[2][j] = q->tri.v[0][j] - q->tri.v[2][j];
+    }
+    q->tn[0] = q->te[0][1] * q->te[1][2] - q->te[0][2] * q->te[1][1];
+    q->tn[1] = q->te[0][2] * q->te[1][0] - q->te[0][0] * q->te[1][2];
+    q->tn[2] = q->te[0][0] * q->te[1][1] - q->te[0][1] * q->te[1][0];
+}
+
+/* 1 if the surface of q overlaps the box lo..hi (centre bc, half sizes h) */
+static int rt_ins_overlaps(const rt_scene *sc, rt_build *b, const rt_ins *q, const double lo[3],
+                           const double hi[3], const double bc[3], const double h[3], int *err)
+{
+    const rt_prim *p = q->p;
+    if (p->kind == RT_KIND_TRI)
+        return rt_tri_box(&q->tri, q->te, q->tn, bc, h);
+    if (!rt_plane_box(q->n, q->d, bc, h))
+        return 0;
+    if (p->kind != RT_KIND_POLY)
+        return rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
+    const rt_poly *po = &sc->poly[p->data];
+    size_t at = 0;
+    int hit = 0;
+    for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
+        size_t m = sc->loops[po->loop0 + l];
+        hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
+        at += m;
+    }
+    return hit;
+}
+
+/* the eps-enlarged cell boxes of cells c0 .. c1 by axis (rt_cell_box's values), for ranges
+   shorter than RT_SPAN on every axis */
+typedef struct rt_axis_boxes {
+    double lo[3][RT_SPAN], hi[3][RT_SPAN], bc[3][RT_SPAN], h[3][RT_SPAN];
+} rt_axis_boxes;
+
+static void rt_axis_boxes_init(const rt_box *g, const int c0[3], const int c1[3], double eps,
+                               rt_axis_boxes *ab)
+{
+    for (int a = 0; a < 3; a++)
+        for (int q = c0[a]; q <= c1[a]; q++) {
+            const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
+            const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
+            ab->lo[a][q - c0[a]] = lo;
+            ab->hi[a][q - c0[a]] = hi;
+            ab->bc[a][q - c0[a]] = 0.5 * (lo + hi);
+            ab->h[a][q - c0[a]] = 0.5 * (hi - lo);
+        }
+}
+
+/* the box of cell c (ab: by axis, from c0; NULL: rt_cell_box) with its centre and half sizes */
+static void rt_ins_cell_box(const rt_box *g, const rt_axis_boxes *ab, const int c0[3],
+                            const int c[3], double eps, double lo[3], double hi[3], double bc[3],
+                            double h[3])
+{
+    if (ab) {
+        for (int a = 0; a < 3; a++) {
+            const int q = c[a] - c0[a];
+            lo[a] = ab->lo[a][q];
+            hi[a] = ab->hi[a][q];
+            bc[a] = ab->bc[a][q];
+            h[a] = ab->h[a][q];
+        }
+        return;
+    }
+    rt_cell_box(g, c, eps, lo, hi);
+    for (int a = 0; a < 3; a++) {
+        bc[a] = 0.5 * (lo[a] + hi[a]);
+        h[a] = 0.5 * (hi[a] - lo[a]);
+    }
+}
+
 /* adds (base + cell, i) for every cell of box g whose eps-enlarged box the surface of
    primitive i overlaps; geometry is taken into the grid frame of sc first */
 static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
@@ -523,80 +620,26 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
             *err = 1;
         return;
     }
-    double n0[3], d0, n[3], d = 0.0;
-    rt_prim_plane(sc, p, n0, &d0);
-    rt_grid_dir(gr, n0, n);
-    if (p->kind != RT_KIND_TRI)
-        d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
-    rt_tri tri;
-    double te[3][3] = {{0}}, tn[3] = {0};
-    if (p->kind == RT_KIND_TRI) {
-        memcpy(tri.v, b->pts, sizeof tri.v);
-        for (int j = 0; j < 3; j++) {
-            te[0][j] = tri.v[1][j] - tri.v[0][j];
-            te[1][j] = tri.v[2][j] - tri.v[1][j];
-            te[2][j] = tri.v[0][j] - tri.v[2][j];
-        }
-        tn[0] = te[0][1] * te[1][2] - te[0][2] * te[1][1];
-        tn[1] = te[0][2] * te[1][0] - te[0][0] * te[1][2];
-        tn[2] = te[0][0] * te[1][1] - te[0][1] * te[1][0];
-    }
-    if (p->kind == RT_KIND_TRI && c1[0] - c0[0] < RT_SPAN &&
-        c1[1] - c0[1] < RT_SPAN && c1[2] - c0[2] < RT_SPAN) {
-        if (!rt_tri_cells(&tri, te, tn, g, c0, c1, eps, b, base, i))
+    rt_ins q;
+    rt_ins_init(sc, b, p, &q);
+    const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
+                        c1[2] - c0[2] < RT_SPAN;
+    if (p->kind == RT_KIND_TRI && by_axis) {
+        if (!rt_tri_cells(&q.tri, q.te, q.tn, g, c0, c1, eps, b, base, i))
             *err = 1;
         return;
     }
-    /* the cell boxes by axis (rt_cell_box's values) when the range is short */
-    double alo[3][RT_SPAN], ahi[3][RT_SPAN], abc[3][RT_SPAN], ah[3][RT_SPAN];
-    const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
-                        c1[2] - c0[2] < RT_SPAN;
-    for (int a = 0; a < 3 && by_axis; a++)
-        for (int q = c0[a]; q <= c1[a]; q++) {
-            const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
-            const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
-            alo[a][q - c0[a]] = lo;
-            ahi[a][q - c0[a]] = hi;
-            abc[a][q - c0[a]] = 0.5 * (lo + hi);
-            ah[a][q - c0[a]] = 0.5 * (hi - lo);
-        }
+    rt_axis_boxes ab;
+    if (by_axis)
+        rt_axis_boxes_init(g, c0, c1, eps, &ab);
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2] && !*err; c[2]++)
         for (c[1] = c0[1]; c[1] <= c1[1] && !*err; c[1]++)
             for (c[0] = c0[0]; c[0] <= c1[0] && !*err; c[0]++) {
-                int hit = 0;
                 double lo[3], hi[3], bc[3], h[3];
-                if (by_axis) {
-                    for (int a = 0; a < 3; a++) {
-                        const int q = c[a] - c0[a];
-                        lo[a] = alo[a][q];
-                        hi[a] = ahi[a][q];
-                        bc[a] = abc[a][q];
-                        h[a] = ah[a][q];
-                    }
-                } else {
-                    rt_cell_box(g, c, eps, lo, hi);
-                    for (int a = 0; a < 3; a++) {
-                        bc[a] = 0.5 * (lo[a] + hi[a]);
-                        h[a] = 0.5 * (hi[a] - lo[a]);
-                    }
-                }
-                if (p->kind == RT_KIND_TRI) {
-                    hit = rt_tri_box(&tri, te, tn, bc, h);
-                } else if (rt_plane_box(n, d, bc, h)) {
-                    if (p->kind != RT_KIND_POLY) {
-                        hit = rt_loop_box(&b->cb, b->pts, 4, lo, hi, err);
-                    } else {
-                        const rt_poly *po = &sc->poly[p->data];
-                        size_t at = 0;
-                        for (uint32_t l = 0; l < po->nloops && !hit && !*err; l++) {
-                            size_t m = sc->loops[po->loop0 + l];
-                            hit = rt_loop_box(&b->cb, b->pts + 3 * at, m, lo, hi, err);
-                            at += m;
-                        }
-                    }
-                }
-                if (hit && !rt_build_push(b, base + rt_cell_index(g, c), i))
+                rt_ins_cell_box(g, by_axis ? &ab : NULL, c0, c, eps, lo, hi, bc, h);
+                if (rt_ins_overlaps(sc, b, &q, lo, hi, bc, h, err) &&
+                    !rt_build_push(b, base + rt_cell_index(g, c), i))
                     *err = 1;
             }
 }
@@ -915,6 +958,57 @@ static void rt_sub_place(void *arg, int k, int n)
     }
 }
 
+/* the parts of the second level's build: cells [c0, c1) of part k from the first cell at
+   k/nt of the references */
+static void rt_sub_partition(const rt_grid *g, int nt, rt_sub_part *part)
+{
+    for (int k = 0; k < nt; k++) {
+        const uint64_t want = (uint64_t)g->nrefs * (uint64_t)k / (uint64_t)nt;
+        size_t l = 0, h = g->ncells;
+        while (l < h) {
+            size_t m = l + (h - l) / 2;
+            if (g->off[m] < want)
+                l = m + 1;
+            else
+                h = m;
+        }
+        part[k].c0 = k == 0 ? 0 : l;
+        if (k > 0)
+            part[k - 1].c1 = part[k].c0;
+    }
+    part[nt - 1].c1 = g->ncells;
+}
+
+/* the parts' sub-grids into g->subs, their first cells and the top cells' indices shifted by
+   the parts before */
+static void rt_sub_merge(rt_grid *g, const rt_sub_part *part, int nt)
+{
+    for (int k = 0; k < nt; k++) {
+        for (size_t q = 0; q < part[k].nsubs; q++) {
+            g->subs[part[k].sub0 + q] = part[k].subs[q];
+            g->subs[part[k].sub0 + q].first += (uint32_t)part[k].cell0;
+        }
+        for (size_t ci = part[k].c0; ci < part[k].c1 && part[k].sub0; ci++)
+            if (g->sub[ci] >= 0)
+                g->sub[ci] += (int32_t)part[k].sub0;
+    }
+}
+
+/* top lists: only the references kept (keep[k] != 0), compacted in place */
+static void rt_top_compact(rt_grid *g, const uint8_t *keep)
+{
+    uint32_t w = 0;
+    for (size_t ci = 0; ci < g->ncells; ci++) {
+        uint32_t k0 = g->off[ci], k1 = g->off[ci + 1];
+        g->off[ci] = w;
+        for (uint32_t k = k0; k < k1; k++)
+            if (keep[k])
+                g->refs[w++] = g->refs[k];
+    }
+    g->off[g->ncells] = w;
+    g->nrefs = w;
+}
+
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
                              int sub_min)
 {
@@ -935,21 +1029,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         return RT_ERR_NOMEM;
     }
     memset(keep, 1, g->nrefs);
-    for (int k = 0; k < nt; k++) { /* cells [c0, c1) from the first cell at k/nt of the refs */
-        const uint64_t want = (uint64_t)g->nrefs * (uint64_t)k / (uint64_t)nt;
-        size_t l = 0, h = g->ncells;
-        while (l < h) {
-            size_t m = l + (h - l) / 2;
-            if (g->off[m] < want)
-                l = m + 1;
-            else
-                h = m;
-        }
-        part[k].c0 = k == 0 ? 0 : l;
-        if (k > 0)
-            part[k - 1].c1 = part[k].c0;
-    }
-    part[nt - 1].c1 = g->ncells;
+    rt_sub_partition(g, nt, part);
     rt_sub_job job = {sc, bs, part, keep, eps, sub_factor, sub_min, nt};
     rt_par_run(nt, rt_sub_cells, &job);
     int err = 0;
@@ -983,15 +1063,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         g->nsrefs = nref;
     }
     if (!err) {
-        for (int k = 0; k < nt; k++) {
-            for (size_t q = 0; q < part[k].nsubs; q++) {
-                g->subs[part[k].sub0 + q] = part[k].subs[q];
-                g->subs[part[k].sub0 + q].first += (uint32_t)part[k].cell0;
-            }
-            for (size_t ci = part[k].c0; ci < part[k].c1 && part[k].sub0; ci++)
-                if (g->sub[ci] >= 0)
-                    g->sub[ci] += (int32_t)part[k].sub0;
-        }
+        rt_sub_merge(g, part, nt);
         g->nsubs = nsubs;
         g->soff[total] = (uint32_t)nref;
         rt_par_run(nt, rt_sub_place, &job);
@@ -1001,18 +1073,8 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         rt_big_free(&part[k].off);
         rt_big_free(&part[k].refs);
     }
-    if (!err) { /* top lists: only what stays (compacted in place) */
-        uint32_t w = 0;
-        for (size_t ci = 0; ci < g->ncells; ci++) {
-            uint32_t k0 = g->off[ci], k1 = g->off[ci + 1];
-            g->off[ci] = w;
-            for (uint32_t k = k0; k < k1; k++)
-                if (keep[k])
-                    g->refs[w++] = g->refs[k];
-        }
-        g->off[g->ncells] = w;
-        g->nrefs = w;
-    }
+    if (!err)
+        rt_top_compact(g, keep);
     free(keep);
     if (err)
         return err == 2 ? RT_ERR_LIMIT : RT_ERR_NOMEM;
