@@ -238,15 +238,15 @@ typedef struct rt_build_options {
     int threads;          /* threads of the commit and grid build: 0 = online CPUs; the
                              committed scene is identical for any count */
     int leaf_min;         /* float leaves (docs/RAYTRACING.md) for cell lists of at least this
-                             many triangles; 0: default (RT_LEAF_MIN_DEFAULT); < 0: none.
-                             Hits never depend on it. */
+                             many triangles; 0: default (none, unless the environment's
+                             GKS_RT_LEAF_MIN gives a count); < 0: none. Hits never depend
+                             on it. */
 } rt_build_options;
 
-/* Float leaves from 8 triangles on: 4 saves 6 % of the instructions of primary rays on the
-   bunny (797 instead of 845 per ray) but triples the scene's memory (29 instead of 10 MB)
-   and made incoherent rays from inside it about 20 % slower (cache misses, under load);
-   8 costs +45 % memory (14.6 MB), 837 instructions, times within noise. */
-#define RT_LEAF_MIN_DEFAULT 8
+/* No float leaves by default: from 4 triangles they save 6 % of the instructions of primary
+   rays on the bunny (797 instead of 845 per ray) but triple the scene's memory (29 instead of
+   10 MB) and made incoherent rays from inside it about 20 % slower (cache misses, under
+   load); from 8, +45 % memory (14.6 MB) for 1 % fewer instructions, times within noise. */
 
 /* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default
  * factor and more than 10^4 primitives: 0.25 * 10^4 * sqrt(primitives / 10^4), i.e. factor

@@ -250,13 +250,25 @@ static void rt_leaves_pass(const rt_scene *sc, rt_grid *g, const uint32_t *off,
     }
 }
 
+/* GKS_RT_LEAF_MIN=N (1 .. 2^20) in the environment: float leaves from N triangles where the
+   build options leave the default (tests and experiments); else none (-1). */
+static int rt_leaf_min_env(void)
+{
+    const char *s = getenv("GKS_RT_LEAF_MIN");
+    char *end = NULL;
+    long v = s && *s ? strtol(s, &end, 10) : 0;
+    return s && *s && end && !*end && v >= 1 && v <= (1L << 20) ? (int)v : -1;
+}
+
 int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min)
 {
     g->leaf_fn = rt_leaf_kernel(&g->leaf_name, &g->leaf_fn4);
     size_t nl = 0, lanes = 0;
-    if (leaf_min < 0)
+    if (leaf_min == 0)
+        leaf_min = rt_leaf_min_env();
+    if (leaf_min <= 0)
         return RT_OK;
-    const uint32_t lm = leaf_min > 0 ? (uint32_t)leaf_min : RT_LEAF_MIN_DEFAULT;
+    const uint32_t lm = (uint32_t)leaf_min;
     const uint32_t *top_refs = g->refs;
     rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, NULL, &nl, &lanes, 0, lm);
     if (g->nsubcells)
