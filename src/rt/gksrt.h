@@ -237,6 +237,8 @@ typedef struct rt_build_options {
     double cull_eps;
     int threads;          /* threads of the commit and grid build: 0 = online CPUs; the
                              committed scene is identical for any count */
+    int progress;         /* 1: report the build on standard error, as GESC_RT_PROGRESS's
+                             set-up phases ("rt: set-up: grid of N primitives ... T s") */
     int leaf_min;         /* float leaves (docs/RAYTRACING.md) for cell lists of at least this
                              many triangles; 0: default (none, unless the environment's
                              GKS_RT_LEAF_MIN gives a count); < 0: none. Hits never depend

@@ -1479,9 +1479,6 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     job.cover_out = cover;
     if (o->corner_rays && rt_job_corner_bufs(&job) != RT_OK)
         return RT_ERR_NOMEM;
-    if (o->progress)
-        fprintf(stderr, "rt: set-up: grid of %zu primitives ... %.2f s\n", sc->nprim,
-                sc->build_seconds);
     if (o->corner_rays || (m == 1 && !o->jitter)) { /* all NULL: no culling */
         const double tp = rt_phase(&job, "candidate lists", 0.0);
         const rt_cover_out cv = rt_cover(sc, cam, o->corner_rays ? 0.0 : 0.5, job.gw, job.gh,

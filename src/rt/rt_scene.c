@@ -10,6 +10,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -1311,6 +1312,11 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
     if (!sc)
         return RT_ERR_ARG;
     double t0 = rt_now();
+    const int progress = opts && opts->progress;
+    if (progress) { /* the name when the phase starts, its time when it ends */
+        fprintf(stderr, "rt: set-up: grid of %zu primitives ...", sc->nids);
+        fflush(stderr);
+    }
     rt_scene_uncommit(sc);
     int rc = rt_commit_prims(sc, opts);
     if (rc == RT_OK)
@@ -1320,6 +1326,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
     if (rc == RT_OK)
         rc = rt_vd_commit(sc);
     if (rc != RT_OK) {
+        if (progress)
+            fprintf(stderr, " failed\n");
         rt_scene_uncommit(sc);
         return rc;
     }
@@ -1351,6 +1359,8 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         sc->memory_bytes += rt_pgrid_bytes(&sc->pgrid[k]);
     sc->build_seconds = rt_now() - t0;
     sc->committed = 1;
+    if (progress)
+        fprintf(stderr, " %.2f s\n", sc->build_seconds);
     return RT_OK;
 }
 

@@ -1223,6 +1223,7 @@ static int prepare_scene(ws_rt *r, const gks_ws *ws, int vi, const rt_camera *cu
     memset(&bo, 0, sizeof bo);
     bo.brute_threshold = -1; /* defaults */
     bo.threads = r->opts.threads; /* the build on the frame's threads (GESC_RT_THREADS) */
+    bo.progress = r->opts.progress; /* the grid: the first set-up phase (GESC_RT_PROGRESS) */
     if (cull) {
         bo.ncull = 6;
         memcpy(bo.cull, cull->plane, sizeof bo.cull);
