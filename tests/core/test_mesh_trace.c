@@ -10,7 +10,8 @@
  * there had its shadow ray blocked by the neighbour). The mesh lines lie on pixel corners,
  * where the workstation's corner rays sample them. A TRIANGLE STRIP 3 WITH DATA gives exactly
  * the picture of its triangles drawn one by one (the same triangles and data, stored shared).
- * A mesh a clipping plane cuts goes facet by facet (the rule of the driver entry mesh).
+ * A mesh a clipping plane cuts goes facet by facet (the rule of the driver entry mesh); a PDF
+ * workstation takes a mesh whole in ray-tracing mode as the PNG one does.
  *
  * Tolerance of the height field: a pixel counts as a dark outlier when the mesh's is darker
  * than the triangles' by more than 24 of 255 levels in a channel (a shadowed sample among the
@@ -245,12 +246,40 @@ static void test_clip_rule(void **u)
     }
 }
 
+#ifdef GKS_HAVE_CAIRO
+/* The vector workstations take meshes whole too: the same 4 x 4 mesh on a PDF workstation in
+ * ray-tracing mode reaches the tracer as 18 triangles (its facets would be 9 polygons). */
+static void test_vector_ws_mesh(void **u)
+{
+    (void)u;
+    gopen_gks(NULL, 0);
+    gopen_ws(1, "t_mesh_vec.pdf", GWS_TYPE_PDF);
+    gactivate_ws(1);
+    gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+    Gpoint3 p[16];
+    for (int k = 0; k < 16; k++)
+        p[k] = (Gpoint3){ 0.2 + 0.2 * (k % 4), 0.2 + 0.2 * (k / 4), 0.5 + 0.05 * (k % 3) };
+    Gint_size dim = { 4, 4 };
+    Gfacet_vdata3 vd = { 16, p, NULL, NULL };
+    gquad_mesh3_data(GFACET_NONE, GVERT_COORD, GCOLR_INDIRECT, &dim, NULL, &vd);
+    gupd_ws(1, GFLAG_PERFORM);
+    assert_int_equal(traced_prims(), 18);
+    gdeactivate_ws(1);
+    gclose_ws(1);
+    gclose_gks();
+    remove("t_mesh_vec.pdf");
+}
+#endif
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_quad_mesh_no_dark_rows),
         cmocka_unit_test(test_strip_is_its_triangles),
         cmocka_unit_test(test_clip_rule),
+#ifdef GKS_HAVE_CAIRO
+        cmocka_unit_test(test_vector_ws_mesh),
+#endif
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1219,6 +1219,23 @@ static int vec_primitive(gks_ws *ws, const gks_prim *prim)
     return e;
 }
 
+/* A mesh the render layer traces, recorded whole (ws_render_mesh) for the raster picture;
+ * any other mesh as its facets (GKS_WS_MESH_FACETS: vec_primitive). */
+static int vec_mesh(gks_ws *ws, const gks_mesh *m)
+{
+    vec_ws *v = ws->priv;
+    if (ws_render_route(ws, &m->prim) != WS_ROUTE_TRACE)
+        return GKS_WS_MESH_FACETS;
+    if (!framebuffer(ws, v))
+        return 300;
+    int e = ws_render_mesh(v->r, ws, m);
+    if (!e) {
+        v->raster_used = 1;
+        v->dirty = 1;
+    }
+    return e;
+}
+
 /* floats[0] in [lo, hi] into *x: 0, or 182 */
 static int escape_real(const Gescape_in_data *in, double lo, double hi, double *x)
 {
@@ -1619,7 +1636,8 @@ static int eps_file(const gks_ws *ws, char **p) { return vec_file_fmt(ws, VEC_EP
         .desc = &DESC, .open = OPEN, .file = FILE,                                     \
         .close = vec_close, .finish = vec_finish, .clear = vec_clear,                  \
         .update = vec_update,                                                          \
-        .primitive = vec_primitive, .text = vec_text_prim, .message = gks_ws_file_message,          \
+        .primitive = vec_primitive, .mesh = vec_mesh, .text = vec_text_prim,           \
+        .message = gks_ws_file_message,                                                \
         .escape = vec_escape,                                                          \
     }
 

@@ -609,6 +609,22 @@ static int x11_primitive(gks_ws *ws, const gks_prim *prim)
     return ws_render_prim(x->r, ws, fb, prim);
 }
 
+/* A mesh the render layer traces, recorded whole (ws_render_mesh); else its facets. */
+static int x11_mesh(gks_ws *ws, const gks_mesh *m)
+{
+    x11_ws *x = ws->priv;
+    if (x->gone)
+        return 303;
+    if (ws_render_route(ws, &m->prim) != WS_ROUTE_TRACE)
+        return GKS_WS_MESH_FACETS;
+    if (!x11_fb(ws))
+        return 300;
+    int e = ws_render_mesh(x->r, ws, m);
+    if (!e)
+        x->dirty = 1;
+    return e;
+}
+
 static int x11_message(gks_ws *ws, const char *msg)
 {
     x11_ws *x = ws->priv;
@@ -931,5 +947,5 @@ static const gks_ws_desc x11_desc = {
 const gks_ws_driver gks_ws_x11_driver = {
     .desc = &x11_desc, .open = x11_open, .close = x11_close,
     .clear = x11_clear, .background = x11_background, .update = x11_update, .primitive = x11_primitive,
-    .message = x11_message, .escape = x11_escape, .input = x11_input,
+    .mesh = x11_mesh, .message = x11_message, .escape = x11_escape, .input = x11_input,
 };
