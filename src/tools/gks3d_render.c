@@ -549,6 +549,7 @@ typedef struct {
     int n_item_errs;     /* items refused or invalid */
     long item;           /* the current item's number (1-based) */
     int out_failed;
+    int last_pending;    /* the last frame is drawn but not yet written (no CLEAR after it) */
 } render;
 
 static void escape_ws(int func, Gint v)
@@ -670,6 +671,35 @@ static void recorded_view(const options *o, const char *rec, Gint len)
 static int *done_frames;
 static size_t n_done, cap_done;
 
+/* Rays traced by the frames written, and the tracing's seconds (the summary line). */
+static struct {
+    double rays, seconds;
+} tally;
+
+/* Adds the output workstation's last traced picture (GESC_RT_STATS: eye, reflection,
+ * refraction and shadow rays, render seconds) when its HLHSR mode is ray tracing; called
+ * after each frame is written. The inquiry's errors are not the metafile's. */
+static void tally_frame(void)
+{
+    Gint err = 1, mode = -1, ws[1] = { ws_out };
+    ginq_hlhsr_mode(ws_out, &err, &mode);
+    if (err || mode != GHLHSR_RAYTRACE)
+        return;
+    Gescape_in_data in = { .num_ints = 1, .ints = ws };
+    Gstore store = NULL;
+    Gescape_out_data *out = NULL;
+    gcreate_store(&err, &store);
+    if (!err)
+        gescape(GESC_RT_STATS, &in, &store, &out);
+    if (out && out->num_ints >= 5 && out->num_floats >= 2) {
+        tally.rays += (double)out->ints[0] + out->ints[2] + out->ints[3] + out->ints[4];
+        tally.seconds += out->floats[1];
+    }
+    if (store)
+        gdel_store(store);
+    errs_reset();
+}
+
 static void frame_done(int frame)
 {
     if (n_done == cap_done) {
@@ -764,6 +794,8 @@ static int interpret(render *r, int only, int *written)
         }
         ginterpret_item(type, len, &d);
         item_errors(r, type);
+        if (type == ITEM_CLEAR && keep && !only)
+            tally_frame(); /* the frame just written */
         if (type == ITEM_VIEW_REP3 && !errs.n)
             recorded_view(o, buf, len);
         if (type == ITEM_HLHSR || type == ITEM_ESCAPE) { /* the command line wins */
@@ -778,6 +810,7 @@ static int interpret(render *r, int only, int *written)
     if (!only && drawn && wanted(o, frame)) {
         ++*written;
         frame_done(frame);
+        r->last_pending = 1;
     }
     return 0;
 }
@@ -855,6 +888,11 @@ static int run(const options *o, double max_px, int *written)
         return EXIT_INPUT;
     errs_reset();
     close_open_segment();
+    if (r.last_pending) { /* the last frame, written now: its rays counted */
+        gupd_ws(ws_out, GFLAG_PERFORM);
+        if (!errs.n)
+            tally_frame();
+    }
     gdeactivate_ws(ws_out);
     gclose_ws(ws_out);
     if (errs.n) {
@@ -1187,6 +1225,7 @@ static int render_main(int argc, char **argv)
     has_segments = 0;
     memset(views_seen, 0, sizeof views_seen);
     n_done = 0;
+    memset(&tally, 0, sizeof tally);
     ws_out = WS_OUT;
     if (parse(argc, argv, &o)) {
         usage();
@@ -1226,10 +1265,15 @@ static int render_main(int argc, char **argv)
             gemergency_close_gks();
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    if ((rc == 0 || rc == EXIT_ITEMS) && !o.quiet && !o.x11)
-        fprintf(stderr, "%s: %d of %d frame%s written to %s in %.2f s\n", prog, written,
+    if ((rc == 0 || rc == EXIT_ITEMS) && !o.quiet && !o.x11) {
+        fprintf(stderr, "%s: %d of %d frame%s written to %s in %.2f s", prog, written,
                 n_frames, n_frames == 1 ? "" : "s", o.name ? o.name : o.out,
                 (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9);
+        if (tally.rays > 0) /* this process's rays (under MPI: its tiles) */
+            fprintf(stderr, "; %.0f rays traced in %.2f s, %.2f Mrays/s", tally.rays,
+                    tally.seconds, tally.seconds > 0 ? tally.rays / tally.seconds * 1e-6 : 0.0);
+        fputc('\n', stderr);
+    }
     return rc;
 }
 

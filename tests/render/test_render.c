@@ -211,6 +211,12 @@ static void test_fig3(void)
               " && grep -q '^rt: set-up: light buffers \\.\\.\\. [0-9.]* s$' rec/pr.log"
               " && grep -q 'rt: [0-9]* tiles done in' rec/pr.log") == 0,
           "--progress: the set-up phases or the summary not reported (rec/pr.log)");
+    /* the summary line: frames, time, and the rays of the ray-traced frame */
+    CHECK(shf("cd rec && '%s' fig3.gksm -o sum.png --frames 3 --mode raytrace --size 120 "
+              "--samples 1 2> sum.log && grep -q '^gks3d-render: 1 of 5 frames written to "
+              "sum.png in [0-9.]* s; [1-9][0-9]* rays traced in [0-9.]* s, [0-9.]* Mrays/s$' "
+              "sum.log", render) == 0,
+          "the summary line lacks the frames, time or rays (rec/sum.log)");
 }
 
 static void test_vector_out(void)
