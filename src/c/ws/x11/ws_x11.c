@@ -736,8 +736,16 @@ static int locator_event(x11_ws *x, const gks_in_active *a, int k, int px, int p
  * follows the pointer: gks3d-render's window); else the echo follows the pointer. */
 static int motion(x11_ws *x, const gks_in_active *a, XEvent *e, gks_in_raw *ev)
 {
-    while (XCheckTypedWindowEvent(x->dpy, x->win, MotionNotify, e)) /* the latest */
-        ;
+    /* the latest of the motions queued right behind this one, not past a press or release:
+     * a drag queued whole (a loaded machine, xdotool) would else report its end before its
+     * press, and a program turning a view would turn it backwards */
+    while (XEventsQueued(x->dpy, QueuedAlready) > 0) {
+        XEvent nx;
+        XPeekEvent(x->dpy, &nx);
+        if (nx.type != MotionNotify || nx.xmotion.window != x->win)
+            break;
+        XNextEvent(x->dpy, e);
+    }
     x->mx = e->xmotion.x;
     x->my = e->xmotion.y;
     x->in_win = 1;
