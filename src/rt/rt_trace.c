@@ -386,9 +386,11 @@ static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uin
 /* lanes per call of the float test (its candidates on the stack) */
 #define RT_LEAF_CHUNK 64
 
-/* the triangles of a float leaf: the float test rules lanes out, the double test
-   (rt_nearest_prim) decides the candidates, mailboxed as in rt_cell_nearest */
-static __attribute__((noinline)) void rt_leaf_nearest(rt_walkstate *w, const rt_leaf *lf)
+/* the triangles of a float leaf: the float test rules lanes out, the double test decides
+   the candidates, mailboxed as in rt_cell_nearest and rt_cell_transmit: for nearest-hit rays
+   (any 0) rt_nearest_prim; for any-hit rays (any 1: the first hit blocks, in whatever order
+   the lanes come) rt_transmit_prim, 1 if blocked */
+static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf *lf, int any)
 {
     const rt_scene *sc = w->sc;
     const rt_grid *g = &sc->grid;
@@ -410,37 +412,9 @@ static __attribute__((noinline)) void rt_leaf_nearest(rt_walkstate *w, const rt_
             if (hbox[i % RT_HBOX] == (key | i) || i == r->skip)
                 continue;
             hbox[i % RT_HBOX] = key | i;
-            rt_nearest_prim(sc, r, i, &w->best, &w->bi, &w->ebest);
-        }
-    }
-}
-
-/* any-hit rays (w->any_hit: the first hit blocks, in whatever order the lanes come) through
-   a float leaf: the float test rules lanes out, the double test (rt_transmit_prim) decides
-   the candidates, mailboxed as in rt_cell_transmit; 1 if blocked */
-static __attribute__((noinline)) int rt_leaf_any(rt_walkstate *w, const rt_leaf *lf)
-{
-    const rt_scene *sc = w->sc;
-    const rt_grid *g = &sc->grid;
-    const rt_rayx *r = w->r;
-    uint64_t *const hbox = w->c->hbox;
-    const uint64_t key = (uint64_t)w->stamp << 32;
-    const uint32_t *ids = g->lid + lf->lane0;
-    const float *rows = g->lf + (size_t)9 * lf->lane0;
-    rt_fray f;
-    const int ok = rt_fray_leaf(r, lf, &f);
-    uint32_t cand[RT_LEAF_CHUNK];
-    for (uint32_t c0 = 0; c0 < lf->n; c0 += RT_LEAF_CHUNK) {
-        const uint32_t nc = lf->n - c0 < RT_LEAF_CHUNK ? lf->n - c0 : RT_LEAF_CHUNK;
-        uint32_t m = nc;
-        if (ok)
-            m = (nc <= 4 ? g->leaf_fn4 : g->leaf_fn)(rows + c0, lf->L, nc, &f, cand);
-        for (uint32_t j = 0; j < m; j++) {
-            const uint32_t i = ids[c0 + (ok ? cand[j] : j)];
-            if (hbox[i % RT_HBOX] == (key | i) || i == r->skip)
-                continue;
-            hbox[i % RT_HBOX] = key | i;
-            if (!rt_transmit_prim(w->c, sc, r, i, 1, &w->T))
+            if (!any)
+                rt_nearest_prim(sc, r, i, &w->best, &w->bi, &w->ebest);
+            else if (!rt_transmit_prim(w->c, sc, r, i, 1, &w->T))
                 return 1;
         }
     }
@@ -516,11 +490,11 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         const uint32_t k0 = off[ci], k1 = off[ci + 1];
         if (k0 != k1) {
             if (mode == 0 && leaf && leaf[ci])
-                rt_leaf_nearest(w, &w->sc->grid.leaves[leaf[ci] - 1]);
+                (void)rt_leaf_walk(w, &w->sc->grid.leaves[leaf[ci] - 1], 0);
             else if (mode == 0)
                 rt_cell_nearest(w, refs + k0, k1 - k0);
             else if (w->any_hit && leaf && leaf[ci]) {
-                if (rt_leaf_any(w, &w->sc->grid.leaves[leaf[ci] - 1]))
+                if (rt_leaf_walk(w, &w->sc->grid.leaves[leaf[ci] - 1], 1))
                     return RT_WALK_BLOCKED;
             } else if (rt_cell_transmit(w, refs + k0, k1 - k0))
                 return RT_WALK_BLOCKED;
