@@ -170,6 +170,20 @@ static inline gks_context *gks_ctx(void)
     return &gks_the_context;
 }
 
+/* GKS3D_RECORD's recorder (gks_record.h): its identifier, never a program's (they are
+ * >= 0); and the recorder when a function addressed to ws_id is to be recorded on it too
+ * (ws_id the mirrored workstation, or GKS_REC_WS_ID), else NULL. Here, beside the fields
+ * it reads, so that the metafile hooks (store/gks_mf_record.c) and the recorder
+ * (gks_record.c, which calls them) do not call each other. */
+#define GKS_REC_WS_ID (-1)
+static inline gks_ws *gks_record_mirror(int ws_id)
+{
+    const gks_context *c = gks_ctx();
+    if (!c->rec_ws)
+        return NULL;
+    return ws_id == GKS_REC_WS_ID || (ws_id >= 0 && ws_id == c->rec_mirror) ? c->rec_ws : NULL;
+}
+
 /* A workstation's bundle, pattern or colour table changed, or a workstation was created or
  * destroyed: what the pipeline resolved from the tables is made again. */
 static inline void gks_ws_tables_changed(void)

@@ -114,14 +114,6 @@ void gks_record_sync(int closed_ws_id)
     gks_mf_recount();
 }
 
-gks_ws *gks_record_mirror(int ws_id)
-{
-    gks_context *c = gks_ctx();
-    if (!c->rec_ws)
-        return NULL;
-    return ws_id == REC_WS_ID || (ws_id >= 0 && ws_id == c->rec_mirror) ? c->rec_ws : NULL;
-}
-
 void gks_record_escape(int ws_id, int func_id, const Gescape_in_data *in)
 {
     gks_ws *rec = gks_record_mirror(ws_id);

@@ -15,7 +15,6 @@
 #define GKS_RECORD_H
 #include "gks_context.h"
 
-#define GKS_REC_WS_ID (-1) /* the recorder's identifier: never a program's (they are >= 0) */
 
 /* OPEN GKS: open the recorder if GKS3D_RECORD names a file (a failure: one line on stderr,
  * GKS opens without it). */
@@ -27,9 +26,6 @@ void gks_record_close(void);
 /* After OPEN, CLOSE, ACTIVATE and DEACTIVATE WORKSTATION of the program (closing: ws_id
  * the workstation just closed, else -1): the recorder's state and the mirrored one. */
 void gks_record_sync(int closed_ws_id);
-/* The recorder when a function addressed to ws_id is to be recorded on it too (ws_id the
- * mirrored workstation, or GKS_REC_WS_ID), else NULL. */
-gks_ws *gks_record_mirror(int ws_id);
 /* ESCAPE func_id (done by the driver of ws_id): recorded on the recorder too when ws_id is
  * the mirrored workstation and the escape sets the picture (samples, depth, cut-off,
  * secondary rays, SPD, anti-aliasing, PNG compression, vector resolution), never file

@@ -11,13 +11,12 @@
 #include "gks_error.h"
 #include "gks_state.h"
 #include "gks_context.h"
-#include "gks_record.h"
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
 
 /* The workstations the hooks look at: the open ones, then GKS3D_RECORD's recorder
- * (gks_record.h), which is in no list of the program's. */
+ * (gks_record.h; gks_record_mirror in gks_context.h), which is in no list of the program's. */
 static int n_targets(const gks_context *c)
 {
     return c->sl->n_open + (c->rec_ws != NULL);
