@@ -274,13 +274,10 @@ static void pick_echo(x11_ws *x, const gks_in_active_dev *d)
 static const char *const class_names[] = { "", "LOCATOR", "STROKE", "VALUATOR", "CHOICE",
                                            "PICK", "STRING" };
 
-/* Prompt line, menu, slider, rubber bands and aperture of the devices taking input. */
-static void overlay(x11_ws *x)
+/* The prompt line: the device a REQUEST waits for and how to answer it, or the device
+ * taking input, and the last MESSAGE. */
+static void prompt_line(x11_ws *x)
 {
-    x->menu_n = 0;
-    x->slider_x = -1;
-    if (!x->have_act && !x->msg[0])
-        return;
     const gks_in_active *a = &x->act;
     char t[256];
     int n = 0;
@@ -307,90 +304,125 @@ static void overlay(x11_ws *x)
     XFillRectangle(x->dpy, x->win, x->gc, 0, 0, (unsigned)x->w, BAR_H);
     XSetForeground(x->dpy, x->gc, 0x000000);
     text_at(x, 4, BAR_H - 5, t, n);
+}
+
+/* The CHOICE menu (echo type 3): its items (the data record's labels, else numbers) at the
+ * echo area's top right, the one under the pointer highlighted; where presses land. */
+static void choice_menu(x11_ws *x, const gks_in_active_dev *d)
+{
+    const char *lab[MAX_ITEMS];
+    int len[MAX_ITEMS];
+    int k = gks_in_menu_labels(&d->rec, lab, len, MAX_ITEMS);
+    char num[MAX_ITEMS][4];
+    if (k == 0)
+        for (; k < d->max_choice && k < MAX_ITEMS; k++) {
+            len[k] = snprintf(num[k], sizeof num[k], "%d", k + 1);
+            lab[k] = num[k];
+        }
+    int wmax = 0;
+    for (int j = 0; j < k; j++)
+        if (text_w(x, lab[j], len[j]) > wmax)
+            wmax = text_w(x, lab[j], len[j]);
+    int rx, ty;
+    echo_corner(x, d, &rx, &ty);
+    x->menu_w = wmax + 34;
+    x->menu_x = rx - x->menu_w;
+    x->menu_y = ty;
+    x->menu_n = k;
+    XSetForeground(x->dpy, x->gc, 0xf0f0f0);
+    XFillRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
+                   (unsigned)(k * ITEM_H));
+    for (int j = 0; j < k; j++) {
+        int iy = ty + j * ITEM_H;
+        int hot = x->in_win && x->mx >= x->menu_x && x->mx < rx && x->my >= iy &&
+                  x->my < iy + ITEM_H;
+        XSetForeground(x->dpy, x->gc, hot ? 0x3060c0 : 0xf0f0f0);
+        XFillRectangle(x->dpy, x->win, x->gc, x->menu_x + 1, iy + 1, (unsigned)x->menu_w - 2,
+                       ITEM_H - 2);
+        XSetForeground(x->dpy, x->gc, hot ? 0xffffff : 0x000000);
+        char nb[8];
+        int nn = snprintf(nb, sizeof nb, "%d", j + 1);
+        text_at(x, x->menu_x + 6, iy + ITEM_H - 6, nb, nn);
+        text_at(x, x->menu_x + 28, iy + ITEM_H - 6, lab[j], len[j]);
+    }
+    XSetForeground(x->dpy, x->gc, 0x000000);
+    XDrawRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
+                   (unsigned)(k * ITEM_H));
+}
+
+/* The VALUATOR slider at the echo area's top right: the value's knob, value and range. */
+static void valuator_slider(x11_ws *x, const gks_in_active_dev *d)
+{
+    int rx, ty;
+    echo_corner(x, d, &rx, &ty);
+    x->slider_x = rx - SLIDER_W - 10;
+    x->slider_y = ty + 12;
+    double v = x->have_val ? x->val : d->val;
+    double f = d->high > d->low ? (v - d->low) / (d->high - d->low) : 0;
+    int kx = x->slider_x + (int)lround(f * SLIDER_W);
+    XSetForeground(x->dpy, x->gc, 0xf0f0f0);
+    XFillRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
+    XSetForeground(x->dpy, x->gc, 0x000000);
+    XDrawRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
+    XDrawLine(x->dpy, x->win, x->gc, x->slider_x, x->slider_y, x->slider_x + SLIDER_W,
+              x->slider_y);
+    XSetForeground(x->dpy, x->gc, 0x3060c0);
+    XFillRectangle(x->dpy, x->win, x->gc, kx - 4, x->slider_y - 8, 9, 17);
+    XSetForeground(x->dpy, x->gc, 0x000000);
+    char vt[64];
+    int vn = snprintf(vt, sizeof vt, "%g  [%g, %g]", v, d->low, d->high);
+    text_at(x, x->slider_x, ty + 36, vt, vn);
+}
+
+/* The STROKE's points so far, joined, and a rubber band from the last to the pointer. */
+static void stroke_echo(x11_ws *x)
+{
+    XSetForeground(x->dpy, x->gc, 0xd00000);
+    for (int j = 0; j < x->npts; j++) {
+        int px = wx_of(x->pts[j][0]), py = wy_of(x, x->pts[j][1]);
+        XDrawRectangle(x->dpy, x->win, x->gc, px - 2, py - 2, 4, 4);
+        if (j > 0)
+            XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[j - 1][0]),
+                      wy_of(x, x->pts[j - 1][1]), px, py);
+    }
+    if (x->in_win)
+        XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[x->npts - 1][0]),
+                  wy_of(x, x->pts[x->npts - 1][1]), x->mx, x->my);
+}
+
+/* The LOCATOR's rubber line (echo type 4) or rectangle (5) from its initial position. */
+static void locator_band(x11_ws *x, const gks_in_active_dev *d)
+{
+    int ix = wx_of(d->init_dc[0]), iy = wy_of(x, d->init_dc[1]);
+    XSetForeground(x->dpy, x->gc, 0xd00000);
+    if (d->pet == 4)
+        XDrawLine(x->dpy, x->win, x->gc, ix, iy, x->mx, x->my);
+    else
+        XDrawRectangle(x->dpy, x->win, x->gc, ix < x->mx ? ix : x->mx, iy < x->my ? iy : x->my,
+                       (unsigned)abs(x->mx - ix), (unsigned)abs(x->my - iy));
+}
+
+/* Prompt line, menu, slider, rubber bands and aperture of the devices taking input. */
+static void overlay(x11_ws *x)
+{
+    x->menu_n = 0;
+    x->slider_x = -1;
+    if (!x->have_act && !x->msg[0])
+        return;
+    prompt_line(x);
+    const gks_in_active *a = &x->act;
     for (int i = 0; x->have_act && i < a->n; i++) {
         const gks_in_active_dev *d = &a->dev[i];
         if (!d->echo)
             continue;
         if (d->cls == GIN_CHOICE && d->pet == 3 && !x->menu_n) {
-            const char *lab[MAX_ITEMS];
-            int len[MAX_ITEMS];
-            int k = gks_in_menu_labels(&d->rec, lab, len, MAX_ITEMS);
-            char num[MAX_ITEMS][4];
-            if (k == 0)
-                for (; k < d->max_choice && k < MAX_ITEMS; k++) {
-                    len[k] = snprintf(num[k], sizeof num[k], "%d", k + 1);
-                    lab[k] = num[k];
-                }
-            int wmax = 0;
-            for (int j = 0; j < k; j++)
-                if (text_w(x, lab[j], len[j]) > wmax)
-                    wmax = text_w(x, lab[j], len[j]);
-            int rx, ty;
-            echo_corner(x, d, &rx, &ty);
-            x->menu_w = wmax + 34;
-            x->menu_x = rx - x->menu_w;
-            x->menu_y = ty;
-            x->menu_n = k;
-            XSetForeground(x->dpy, x->gc, 0xf0f0f0);
-            XFillRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
-                           (unsigned)(k * ITEM_H));
-            for (int j = 0; j < k; j++) {
-                int iy = ty + j * ITEM_H;
-                int hot = x->in_win && x->mx >= x->menu_x && x->mx < rx && x->my >= iy &&
-                          x->my < iy + ITEM_H;
-                XSetForeground(x->dpy, x->gc, hot ? 0x3060c0 : 0xf0f0f0);
-                XFillRectangle(x->dpy, x->win, x->gc, x->menu_x + 1, iy + 1,
-                               (unsigned)x->menu_w - 2, ITEM_H - 2);
-                XSetForeground(x->dpy, x->gc, hot ? 0xffffff : 0x000000);
-                char nb[8];
-                int nn = snprintf(nb, sizeof nb, "%d", j + 1);
-                text_at(x, x->menu_x + 6, iy + ITEM_H - 6, nb, nn);
-                text_at(x, x->menu_x + 28, iy + ITEM_H - 6, lab[j], len[j]);
-            }
-            XSetForeground(x->dpy, x->gc, 0x000000);
-            XDrawRectangle(x->dpy, x->win, x->gc, x->menu_x, ty, (unsigned)x->menu_w,
-                           (unsigned)(k * ITEM_H));
+            choice_menu(x, d);
         } else if (d->cls == GIN_VAL && x->slider_x < 0) {
-            int rx, ty;
-            echo_corner(x, d, &rx, &ty);
-            x->slider_x = rx - SLIDER_W - 10;
-            x->slider_y = ty + 12;
-            double v = x->have_val ? x->val : d->val;
-            double f = d->high > d->low ? (v - d->low) / (d->high - d->low) : 0;
-            int kx = x->slider_x + (int)lround(f * SLIDER_W);
-            XSetForeground(x->dpy, x->gc, 0xf0f0f0);
-            XFillRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
-            XSetForeground(x->dpy, x->gc, 0x000000);
-            XDrawRectangle(x->dpy, x->win, x->gc, x->slider_x - 8, ty, SLIDER_W + 16, 40);
-            XDrawLine(x->dpy, x->win, x->gc, x->slider_x, x->slider_y, x->slider_x + SLIDER_W,
-                      x->slider_y);
-            XSetForeground(x->dpy, x->gc, 0x3060c0);
-            XFillRectangle(x->dpy, x->win, x->gc, kx - 4, x->slider_y - 8, 9, 17);
-            XSetForeground(x->dpy, x->gc, 0x000000);
-            char vt[64];
-            int vn = snprintf(vt, sizeof vt, "%g  [%g, %g]", v, d->low, d->high);
-            text_at(x, x->slider_x, ty + 36, vt, vn);
+            valuator_slider(x, d);
         } else if (d->cls == GIN_STROKE && (x->npts > 0)) {
-            XSetForeground(x->dpy, x->gc, 0xd00000);
-            for (int j = 0; j < x->npts; j++) {
-                int px = wx_of(x->pts[j][0]), py = wy_of(x, x->pts[j][1]);
-                XDrawRectangle(x->dpy, x->win, x->gc, px - 2, py - 2, 4, 4);
-                if (j > 0)
-                    XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[j - 1][0]),
-                              wy_of(x, x->pts[j - 1][1]), px, py);
-            }
-            if (x->in_win)
-                XDrawLine(x->dpy, x->win, x->gc, wx_of(x->pts[x->npts - 1][0]),
-                          wy_of(x, x->pts[x->npts - 1][1]), x->mx, x->my);
+            stroke_echo(x);
         } else if (d->cls == GIN_LOC && (d->pet == 4 || d->pet == 5) && x->in_win) {
-            int ix = wx_of(d->init_dc[0]), iy = wy_of(x, d->init_dc[1]);
-            XSetForeground(x->dpy, x->gc, 0xd00000);
-            if (d->pet == 4)
-                XDrawLine(x->dpy, x->win, x->gc, ix, iy, x->mx, x->my);
-            else
-                XDrawRectangle(x->dpy, x->win, x->gc, ix < x->mx ? ix : x->mx,
-                               iy < x->my ? iy : x->my, (unsigned)abs(x->mx - ix),
-                               (unsigned)abs(x->my - iy));
+            locator_band(x, d);
         } else if (d->cls == GIN_PICK && x->in_win) {
             pick_echo(x, d);
             XSetForeground(x->dpy, x->gc, 0xd00000);
