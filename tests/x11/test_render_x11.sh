@@ -22,7 +22,7 @@ GKS3D_RECORD=fig3.gksm "$fig3" >/dev/null || { echo "FAIL: fig3 not recorded"; e
 "$render" fig3.gksm --x11 --frames 3 --size 120 --mode raytrace --samples 4 \
     --name 'saved-%d.png' >out.txt 2>err.txt &
 pid=$!
-trap 'kill $pid 2>/dev/null; kill $xpid 2>/dev/null' EXIT
+trap 'kill $pid 2>/dev/null; xvfb_stop' EXIT
 # waits until out.txt has N lines matching a pattern (120 s: a Debug build on a loaded
 # machine takes tens of seconds for a refined picture)
 wait_for() {

@@ -14,13 +14,23 @@ xvfb_need() {
     done
 }
 
+# Kills the Xvfb and waits until it has exited: a server still shutting down removes its
+# socket (/tmp/.X11-unix/XN) after the next test's server has taken the same display number
+# and made that socket, and the next test cannot connect (seen: x11_background right after
+# x11_window_closed, "no display for the check").
+xvfb_stop() {
+    [ -n "${xpid:-}" ] || return 0
+    kill "$xpid" 2>/dev/null
+    wait "$xpid" 2>/dev/null
+}
+
 xvfb_start() {
     # Xvfb picks a free display itself and writes its number (-displayfd): no race with
     # other X servers started at the same time (parallel tests, other users).
     rm -f display.txt
     Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
     xpid=$!
-    trap 'kill $xpid 2>/dev/null' EXIT
+    trap xvfb_stop EXIT
     i=0
     while [ ! -s display.txt ]; do
         i=$((i + 1)); [ $i -gt 100 ] && { echo "SKIP: Xvfb did not start"; exit 77; }
