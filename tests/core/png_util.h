@@ -1,10 +1,13 @@
 /* SPDX-License-Identifier: MIT */
-/* png_util.h -- reading a workstation's PNG back for pixel checks in the core tests. */
+/* png_util.h -- the PNG workstation of the core tests: opened for a picture, and its PNG
+ * read back for pixel checks. */
 #ifndef PNG_UTIL_H
 #define PNG_UTIL_H
+#include <gks.h>
 #include <png.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct { int w, h; unsigned char *rgb; } image;
 
@@ -28,6 +31,28 @@ static inline int read_png(const char *path, image *img)
         return 0;
     }
     return 1;
+}
+
+/* GKS opened and workstation 1 open and active, writing file (removed first): an s x s
+ * pixel PNG of the unit square in HLHSR mode `mode`; with one_ray (ray tracing) one ray
+ * per pixel centre and no depth cut-off, so that a pixel is a plain sample of the scene. */
+static inline void png_ws_open(const char *file, int s, int mode, int one_ray)
+{
+    unlink(file);
+    gopen_gks(NULL, 0);
+    gopen_ws(1, file, GWS_TYPE_PNG);
+    gactivate_ws(1);
+    Glimit win = { 0, 1, 0, 1 }, vp = { 0, (Gfloat)s, 0, (Gfloat)s };
+    gset_ws_win(1, &win);
+    gset_ws_vp(1, &vp);
+    gset_hlhsr_mode(1, mode);
+    if (one_ray && mode == GHLHSR_RAYTRACE) {
+        Gint ints[2] = { 1, 1 };
+        Gfloat zero[1] = { 0.0 };
+        Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
+        gescape(GESC_RT_SAMPLES, &in, NULL, NULL);
+        gescape(GESC_RT_CUTOFF, &in, NULL, NULL);
+    }
 }
 
 /* Pixel (x, y) with y counted from the BOTTOM row (DC convention). */

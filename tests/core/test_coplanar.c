@@ -86,21 +86,7 @@ static void box_top_sides(double lo, double hi)
 
 static void draw(int mode, const char *file)
 {
-    unlink(file);
-    gopen_gks(NULL, 0);
-    gopen_ws(1, file, GWS_TYPE_PNG);
-    gactivate_ws(1);
-    Glimit win = { 0, 1, 0, 1 }, vp = { 0, SZ, 0, SZ };
-    gset_ws_win(1, &win);
-    gset_ws_vp(1, &vp);
-    gset_hlhsr_mode(1, mode);
-    if (mode == GHLHSR_RAYTRACE) { /* one ray per pixel centre, no cut-off */
-        Gint ints[2] = { 1, 1 };
-        Gfloat zero[1] = { 0.0 };
-        Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
-        gescape(GESC_RT_SAMPLES, &in, NULL, NULL);
-        gescape(GESC_RT_CUTOFF, &in, NULL, NULL);
-    }
+    png_ws_open(file, SZ, mode, 1); /* ray tracing: one ray per pixel centre, no cut-off */
     Gview_rep3 v = { .clip_limit = { 0, 1, 0, 1, 0, 1 }, .xy_clip = GIND_NO_CLIP,
                      .back_clip = GIND_NO_CLIP, .front_clip = GIND_NO_CLIP };
     orientation(v.ori_matrix);

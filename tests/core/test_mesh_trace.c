@@ -104,14 +104,7 @@ static void draw(int what)
 static void picture(int what, image *img)
 {
     const char *file = "t_mesh_trace.png";
-    unlink(file);
-    gopen_gks(NULL, 0);
-    gopen_ws(1, file, GWS_TYPE_PNG);
-    gactivate_ws(1);
-    Glimit win = { 0, 1, 0, 1 }, vp = { 0, SZ, 0, SZ };
-    gset_ws_win(1, &win);
-    gset_ws_vp(1, &vp);
-    gset_hlhsr_mode(1, GHLHSR_RAYTRACE);
+    png_ws_open(file, SZ, GHLHSR_RAYTRACE, 0);
     Gcolr_rep c = { { 0.9, 0.7, 0.4 } }, bg = { { 0.2, 0.3, 0.5 } };
     gset_colr_rep(1, 2, &c);
     gset_colr_rep(1, 3, &bg);
