@@ -36,32 +36,61 @@ static inline double rt_max3(double a, double b, double c)
     return m > c ? m : c;
 }
 
-int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax)
+/* |x| as the bits of a double: for every x, NaN included, ordered like |x| with NaN above
+   infinity, which is above every finite value (the checks below in integer compares: no
+   branch per component, and no floating compare that a NaN would make raise FE_INVALID) */
+static inline uint64_t rt_abits(double x)
 {
-    /* isfinite/isnan first: ordered comparisons with NaN would raise FE_INVALID */
-    for (int i = 0; i < 3; i++)
-        if (!isfinite(o[i]) || !isfinite(d[i]))
-            return 0;
-    if (!isfinite(tmin) || isnan(tmax))
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u & ~((uint64_t)1 << 63);
+}
+
+static inline uint64_t rt_umax(uint64_t a, uint64_t b)
+{
+    return a > b ? a : b;
+}
+
+/* the checks of rt_rayx_setup and the ray's origin, direction and range; the shear for
+   the primitive tests (rt_rayx_shear) not yet */
+static inline __attribute__((always_inline)) int rt_rayx_check(rt_rayx *r, const double o[3],
+                                                               const double d[3], double tmin,
+                                                               double tmax)
+{
+    /* origin, direction and tmin finite with |x| <= RT_RAY_MAX, tmax not NaN, tmin <= tmax,
+       and a direction whose largest component is >= 1e-100 (the t range stays meaningful):
+       the same answers as the tests one by one, in integer compares of the bits */
+    static const double lim[2] = {RT_RAY_MAX, 1e-100};
+    uint64_t blim[2];
+    memcpy(blim, lim, sizeof blim);
+    const uint64_t bd = rt_umax(rt_abits(d[0]), rt_umax(rt_abits(d[1]), rt_abits(d[2])));
+    const uint64_t bo = rt_umax(rt_abits(o[0]), rt_umax(rt_abits(o[1]), rt_abits(o[2])));
+    if ((rt_umax(bd, rt_umax(bo, rt_abits(tmin))) > blim[0]) | (bd < blim[1]) |
+        (rt_abits(tmax) > rt_abits(INFINITY)))
         return 0;
-    double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
-    double dm = rt_max3(ax, ay, az);
-    if (rt_max3(fabs(o[0]), fabs(o[1]), fabs(o[2])) > RT_RAY_MAX || dm > RT_RAY_MAX ||
-        tmin > tmax || fabs(tmin) > RT_RAY_MAX)
+    if (tmin > tmax) /* both not NaN here */
         return 0;
-    /* zero or tiny directions: t range must stay meaningful */
-    if (!(dm >= 1e-100))
-        return 0;
+    double dm;
+    memcpy(&dm, &bd, sizeof dm); /* the largest |d[i]| */
+    const double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
     memcpy(r->o, o, sizeof r->o);
-    memcpy(r->d, d, sizeof r->d);
-    /* components below 1e-150 of the largest are flushed to 0 (finite 1/d everywhere) */
-    for (int i = 0; i < 3; i++)
-        if (fabs(r->d[i]) < 1e-150 * dm)
-            r->d[i] = 0.0;
-    d = r->d;
+    /* components below 1e-150 of the largest are flushed to 0 (finite 1/d everywhere);
+       selects, not branches */
+    const double tiny = 1e-150 * dm;
+    r->d[0] = ax < tiny ? 0.0 : d[0];
+    r->d[1] = ay < tiny ? 0.0 : d[1];
+    r->d[2] = az < tiny ? 0.0 : d[2];
     r->tmin = tmin;
     r->tmax = tmax;
     r->skip = RT_NO_SKIP;
+    return 1;
+}
+
+/* the ray's shear for the watertight primitive tests (rt_prim.h) */
+static inline __attribute__((always_inline)) void rt_rayx_shear(rt_rayx *r)
+{
+    const double *d = r->d;
+    const double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
     /* dominant axis kz, the other two swapped for a negative d[kz] (winding kept); written
        branch-free: the outcome is random for incoherent rays */
     const int kz = ((ax < ay) | (ax < az)) * (1 + (ay < az));
@@ -75,6 +104,13 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
     r->sz = 1.0 / d[kz];
     r->sx = d[kx] * r->sz;
     r->sy = d[ky] * r->sz;
+}
+
+int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax)
+{
+    if (!rt_rayx_check(r, o, d, tmin, tmax))
+        return 0;
+    rt_rayx_shear(r);
     return 1;
 }
 
@@ -169,30 +205,40 @@ static inline int rt_dda_cell(const rt_box *g, const rt_gray *r, double t, int a
     return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
 }
 
-/* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1 (all callers): the range is
- * first cut to the box (0 if nothing remains); clip = 0 (the range is already inside the
- * box up to rounding): the start cell is clamped into the box instead. */
+/* cuts the ray part [*t0, *t1] to box g: 0 if nothing remains */
+static inline __attribute__((always_inline)) int rt_box_clip(const rt_box *g, const rt_gray *r,
+                                                             double *t0p, double *t1p)
+{
+    double t0 = *t0p, t1 = *t1p;
+    for (int a = 0; a < 3; a++) {
+        if (r->d[a] == 0.0) { /* +0.0 and -0.0 */
+            if (r->o[a] < g->lo[a] || r->o[a] > g->hi[a])
+                return 0;
+            continue;
+        }
+        /* min / max as selects, not branches: which slab plane is the near one
+           depends on the direction's sign, random for incoherent rays */
+        const double ta = (g->lo[a] - r->o[a]) * r->invd[a];
+        const double tb = (g->hi[a] - r->o[a]) * r->invd[a];
+        const double tn = RT_MIN(ta, tb), tf = tb < ta ? ta : tb;
+        t0 = tn > t0 ? tn : t0;
+        t1 = RT_MIN(tf, t1);
+    }
+    if (!(t0 <= t1) || !isfinite(t0))
+        return 0;
+    *t0p = t0;
+    *t1p = t1;
+    return 1;
+}
+
+/* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1: the range is first cut
+ * to the box (0 if nothing remains); clip = 0 (the range is already inside the box up to
+ * rounding, or cut by rt_box_clip): the start cell is clamped into the box instead. */
 static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, const rt_gray *r, double t0, double t1, int clip,
                               rt_dda *s)
 {
-    if (clip) {
-        for (int a = 0; a < 3; a++) {
-            if (r->d[a] == 0.0) { /* +0.0 and -0.0 */
-                if (r->o[a] < g->lo[a] || r->o[a] > g->hi[a])
-                    return 0;
-                continue;
-            }
-            /* min / max as selects, not branches: which slab plane is the near one
-               depends on the direction's sign, random for incoherent rays */
-            const double ta = (g->lo[a] - r->o[a]) * r->invd[a];
-            const double tb = (g->hi[a] - r->o[a]) * r->invd[a];
-            const double tn = RT_MIN(ta, tb), tf = tb < ta ? ta : tb;
-            t0 = tn > t0 ? tn : t0;
-            t1 = RT_MIN(tf, t1);
-        }
-        if (!(t0 <= t1) || !isfinite(t0))
-            return 0;
-    }
+    if (clip && !rt_box_clip(g, r, &t0, &t1))
+        return 0;
     s->t0 = t0;
     s->t1 = t1;
     for (int a = 0; a < 3; a++) {
@@ -544,22 +590,54 @@ static inline const uint8_t *rt_octant_cubes(const rt_grid *g, const rt_gray *gr
     return g->odist + o * g->ncells;
 }
 
-long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
+/* the walk state of a ray r: no hit yet (fields one by one: an initialiser would also
+   clear the grid-frame ray, which rt_gray_init writes) */
+RT_INLINE void rt_walkstate_init(rt_walkstate *w, const rt_scene *sc, rt_ctx *c,
+                                 const rt_rayx *r, int any_hit)
 {
-    rt_walkstate w = {.sc = sc, .c = c, .r = r, .best = INFINITY, .bi = -1, .T = 1.0};
+    w->sc = sc;
+    w->c = c;
+    w->r = r;
+    w->stamp = 0;
+    w->any_hit = any_hit;
+    w->best = INFINITY;
+    w->bi = -1;
+    w->ebest = 0.0;
+    w->T = 1.0;
+}
+
+/* the nearest hit of r; rs: NULL, or r itself when its shear (rt_rayx_shear) is still to be
+   computed: the batch API's rays that miss the grid's box never need it */
+RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, rt_rayx *rs,
+                               double *tout)
+{
+    rt_walkstate w;
+    rt_walkstate_init(&w, sc, c, r, 0);
     if (!sc->use_grid) {
+        if (rs)
+            rt_rayx_shear(rs);
         for (size_t i = 0; i < sc->nprim; i++)
             if (i != r->skip)
                 rt_nearest_prim(sc, r, (uint32_t)i, &w.best, &w.bi, &w.ebest);
     } else {
         const rt_grid *g = &sc->grid;
-        w.stamp = rt_ctx_next(c);
+        double t0 = r->tmin, t1 = r->tmax;
         rt_gray_init(g, r, &w.gr);
-        rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
-                    rt_octant_cubes(g, &w.gr), r->tmin, r->tmax, 1);
+        if (rt_box_clip(&g->b, &w.gr, &t0, &t1)) {
+            if (rs)
+                rt_rayx_shear(rs);
+            w.stamp = rt_ctx_next(c);
+            rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
+                        rt_octant_cubes(g, &w.gr), t0, t1, 0);
+        }
     }
     *tout = w.best;
     return w.bi;
+}
+
+long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *tout)
+{
+    return rt_nearest_core(sc, c, r, NULL, tout);
 }
 
 long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, size_t n,
@@ -574,27 +652,42 @@ long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, si
     return bi;
 }
 
-double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
+/* transmittance along r; rs as in rt_nearest_core */
+RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, rt_rayx *rs,
+                                  int any_hit)
 {
     c->blocker = -1;
-    rt_walkstate w = {.sc = sc, .c = c, .r = r, .any_hit = any_hit, .best = INFINITY, .bi = -1, .T = 1.0};
+    rt_walkstate w;
+    rt_walkstate_init(&w, sc, c, r, any_hit);
     const rt_grid *g = &sc->grid;
     /* only opaque primitives: the first hit blocks, as for any-hit rays (small mailbox) */
     w.any_hit |= sc->use_grid && g->all_opaque;
     /* no grid, or a transparency walk with a context that has no exact mailbox (the batch
        API's): every primitive once */
     if (!sc->use_grid || (!w.any_hit && !c->mbox)) {
+        if (rs)
+            rt_rayx_shear(rs);
         for (size_t i = 0; i < sc->nprim; i++)
             if (i != r->skip && !rt_transmit_prim(c, sc, r, i, any_hit, &w.T))
                 return 0.0;
         return w.T;
     }
-    w.stamp = rt_ctx_next(c);
+    double t0 = r->tmin, t1 = r->tmax;
     rt_gray_init(g, r, &w.gr);
+    if (!rt_box_clip(&g->b, &w.gr, &t0, &t1))
+        return w.T;
+    if (rs)
+        rt_rayx_shear(rs);
+    w.stamp = rt_ctx_next(c);
     if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
-                    rt_octant_cubes(g, &w.gr), r->tmin, r->tmax, 1) == RT_WALK_BLOCKED)
+                    rt_octant_cubes(g, &w.gr), t0, t1, 0) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
+}
+
+double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
+{
+    return rt_transmit_core(sc, c, r, NULL, any_hit);
 }
 
 double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
@@ -651,8 +744,8 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
         /* written after the trace: its lines arrive meanwhile */
         __builtin_prefetch(&hits[k], 1);
         __builtin_prefetch((const char *)&hits[k] + sizeof hits[k] - 1, 1);
-        if (rt_rayx_setup(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
-            i = rt_trace_nearest(sc, &c, &r, &t);
+        if (rt_rayx_check(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
+            i = rt_nearest_core(sc, &c, &r, &r, &t);
         if (i >= 0)
             rt_fill_hit(sc, &r, i, t, &hits[k]);
         else /* every field written once (the output array is cold) */
@@ -671,9 +764,9 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
     for (size_t k = 0; k < n; k++) {
         rt_rayx r;
         occluded[k] = 0;
-        if (!rt_rayx_setup(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
+        if (!rt_rayx_check(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
             continue;
-        occluded[k] = rt_trace_transmit(sc, &c, &r, 1) == 0.0;
+        occluded[k] = rt_transmit_core(sc, &c, &r, &r, 1) == 0.0;
     }
     rt_ctx_free(&c);
     return RT_OK;
