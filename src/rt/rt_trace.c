@@ -467,6 +467,22 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
     return 0;
 }
 
+/* the n > 0 primitives of one cell list (lf: 1 + its float leaf, 0: none): 1 when an opaque
+   primitive blocks a transmittance ray (mode 1) */
+RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
+                           uint32_t lf)
+{
+    if (mode == 0 && lf)
+        (void)rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0);
+    else if (mode == 0)
+        rt_cell_nearest(w, refs, n);
+    else if (w->any_hit && lf)
+        return rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1);
+    else
+        return rt_cell_transmit(w, refs, n);
+    return 0;
+}
+
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint32_t *refs, const uint32_t *leaf, const int32_t *sub,
                           const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
@@ -535,16 +551,10 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         }
         const uint32_t k0 = off[ci], k1 = off[ci + 1];
         if (k0 != k1) {
-            if (mode == 0 && leaf && leaf[ci])
-                (void)rt_leaf_walk(w, &w->sc->grid.leaves[leaf[ci] - 1], 0);
-            else if (mode == 0)
-                rt_cell_nearest(w, refs + k0, k1 - k0);
-            else if (w->any_hit && leaf && leaf[ci]) {
-                if (rt_leaf_walk(w, &w->sc->grid.leaves[leaf[ci] - 1], 1))
-                    return RT_WALK_BLOCKED;
-            } else if (rt_cell_transmit(w, refs + k0, k1 - k0))
+            if (rt_walk_cell(w, mode, refs + k0, k1 - k0, leaf ? leaf[ci] : 0))
                 return RT_WALK_BLOCKED;
-        }
+        } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
+            goto advance;
         if (sub && sub[ci] >= 0) {
             double te = RT_MIN(tx, RT_MIN(ty, tz));
             int st = mode == 0 ? rt_walk_sub_nearest(w, &subs[sub[ci]], tent, RT_MIN(te, t1))
