@@ -556,11 +556,17 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
             goto advance;
         if (sub && sub[ci] >= 0) {
-            double te = RT_MIN(tx, RT_MIN(ty, tz));
-            int st = mode == 0 ? rt_walk_sub_nearest(w, &subs[sub[ci]], tent, RT_MIN(te, t1))
-                               : rt_walk_sub_transmit(w, &subs[sub[ci]], tent, RT_MIN(te, t1));
-            if (st != RT_WALK_CONT)
-                return st;
+            /* the sub-grid's box clip here: a third of the rays that cross a crowded top
+               cell miss its sub-grid's box, and then need no call */
+            const rt_subgrid *sg = &subs[sub[ci]];
+            double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
+            s1 = RT_MIN(s1, t1);
+            if (rt_box_clip(&sg->b, gr, &s0, &s1)) {
+                int st = mode == 0 ? rt_walk_sub_nearest(w, sg, s0, s1)
+                                   : rt_walk_sub_transmit(w, sg, s0, s1);
+                if (st != RT_WALK_CONT)
+                    return st;
+            }
         }
         /* nearest mode: nothing beyond the best hit's tie window (best + 2 ebest) matters.
            Once a cell is left whose exit is beyond it, every primitive hit up to there has
@@ -578,7 +584,7 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
 {
     const rt_grid *g = &w->sc->grid;
     return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, g->srefs,
-                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 1);
+                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 0);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
@@ -586,7 +592,7 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
 {
     const rt_grid *g = &w->sc->grid;
     return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs,
-                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 1);
+                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 0);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
