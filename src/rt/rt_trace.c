@@ -320,9 +320,24 @@ static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0
  * boundary beyond the best hit (t1 lowered to it); mode 1: transmittance, BLOCKED when an
  * opaque primitive is hit. Mailboxes: see the top of the file. Direction components exactly
  * +0.0 or -0.0 never step. */
-/* bound of cell c + o along axis a as a ray parameter (the empty-space jumps' cube faces) */
-#define RT_BOUND(a, c, up) \
-    (((c) + (up) == nn##a ? g->hi[a] - gr->o[a] : base##a + (double)((c) + (up)) * g->cw[a]) * gr->invd[a])
+/* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
+ * that the ray crosses up to the jump parameter tj, from its next boundary t on (cell width dt
+ * in ray parameter, it about 1 / dt); j = t + k dt is the cube's far face. The exit axis
+ * (j == tj, the smallest of the three) crosses k + 1; another at most that many (k + 1 only by
+ * rounding, where the ray passes within a rounding of a cell edge: either cell may be taken,
+ * see the jump's comment). A count short by rounding only costs ordinary steps after the jump,
+ * which catch up before any other axis steps (this axis' next boundary is still below tj). */
+static inline int rt_jump_cells(double t, double j, double tj, double it, int k)
+{
+    if (j <= tj)
+        return k + 1;
+    if (t > tj)
+        return 0;
+    if (!(t < tj))
+        return 1; /* tj on this axis' next boundary */
+    const double f = (tj - t) * it; /* > 0, or +inf (no NaN: tj - t > 0) */
+    return f < (double)k ? (int)f + 1 : k + 1;
+}
 
 /* one DDA step to the next cell: the axis with the smallest boundary parameter (ties: x, y, z);
    leaves the walk past t1 (nearest mode: lowered to the best hit) or the box. Registers
@@ -494,11 +509,12 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         return RT_WALK_CONT;
     const int nn0 = g->n[0], nn1 = g->n[1], nn2 = g->n[2];
     const int sx = s.step[0], sy = s.step[1], sz = s.step[2];
-    const int ox = sx > 0, oy = sy > 0, oz = sz > 0;
-    const double base0 = g->lo[0] - gr->o[0], base1 = g->lo[1] - gr->o[1], base2 = g->lo[2] - gr->o[2];
     /* a cell's width in ray parameter per axis (0 for an axis that does not step) */
     const double dtx = g->cw[0] * fabs(gr->invd[0]), dty = g->cw[1] * fabs(gr->invd[1]),
                  dtz = g->cw[2] * fabs(gr->invd[2]);
+    /* about 1 / dt* (cells per unit of ray parameter): the jumps' boundary counts */
+    const double itx = fabs(gr->d[0]) * g->inv_cw[0], ity = fabs(gr->d[1]) * g->inv_cw[1],
+                 itz = fabs(gr->d[2]) * g->inv_cw[2];
     const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
     int cx = s.c[0], cy = s.c[1], cz = s.c[2];
     double tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
@@ -519,30 +535,37 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                exact ray would cross only for a rounding-sized piece near the cube's edge may be
                passed over: a primitive hit there lies within rounding of the next cell,
                which references it (cells are enlarged by eps at build, rt_build.c).
-               A parameter that overflows (extreme directions): ordinary steps instead. */
+               A parameter that overflows (extreme directions): ordinary steps instead.
+               The far faces are the walk's next boundaries plus k cell widths. */
             const int k = dist[ci] - 1;
-            const double jx = sx ? RT_BOUND(0, cx + sx * k, ox) : INFINITY;
-            const double jy = sy ? RT_BOUND(1, cy + sy * k, oy) : INFINITY;
-            const double jz = sz ? RT_BOUND(2, cz + sz * k, oz) : INFINITY;
+            const double jx = tx + (double)k * dtx, jy = ty + (double)k * dty,
+                         jz = tz + (double)k * dtz;
             const double tj = RT_MIN(jx, RT_MIN(jy, jz));
             if (isfinite(tj)) {
                 if (tj > t1)
                     return RT_WALK_CONT;
-                /* the restart of rt_dda_init (clip = 0) at tj, in registers: the same
-                   cells and boundary parameters bit for bit; an axis that does not step
-                   keeps its cell (o + t d[a] = o) */
+                /* each stepping axis moves on by the boundaries it crosses up to tj,
+                   counted from its next one (rt_jump_cells), its next boundary as many
+                   widths further: the walk's own drifted boundaries, as RT_ADVANCE keeps
+                   them; an axis that does not step keeps its cell and INFINITY */
                 if (sx) {
-                    cx = rt_dda_cell(g, gr, tj, 0);
-                    tx = rt_dda_bound(g, gr, cx + ox, 0);
+                    const int m = rt_jump_cells(tx, jx, tj, itx, k);
+                    cx += sx * m;
+                    tx += (double)m * dtx;
                 }
                 if (sy) {
-                    cy = rt_dda_cell(g, gr, tj, 1);
-                    ty = rt_dda_bound(g, gr, cy + oy, 1);
+                    const int m = rt_jump_cells(ty, jy, tj, ity, k);
+                    cy += sy * m;
+                    ty += (double)m * dty;
                 }
                 if (sz) {
-                    cz = rt_dda_cell(g, gr, tj, 2);
-                    tz = rt_dda_bound(g, gr, cz + oz, 2);
+                    const int m = rt_jump_cells(tz, jz, tj, itz, k);
+                    cz += sz * m;
+                    tz += (double)m * dtz;
                 }
+                if ((unsigned)cx >= (unsigned)nn0 || (unsigned)cy >= (unsigned)nn1 ||
+                    (unsigned)cz >= (unsigned)nn2)
+                    return RT_WALK_CONT; /* the ray has left the box */
                 tent = tj;
                 ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
                 continue;
