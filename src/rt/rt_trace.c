@@ -24,6 +24,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* ---- ray setup ---- */
 
@@ -120,8 +123,21 @@ static inline __attribute__((always_inline)) void rt_gray_init(const rt_grid *g,
     if (!g->rotated) {
         memcpy(out->o, r->o, sizeof out->o);
         memcpy(out->d, r->d, sizeof out->d);
+#if defined(__SSE2__)
+        /* the same reciprocals in two SSE2 divisions (lanes 0-1, lane 2) instead of three
+           tests and divisions: a 0 component divides by 1 and is masked to +0 */
+        const __m128d one = _mm_set1_pd(1.0), z = _mm_setzero_pd();
+        const __m128d d01 = _mm_loadu_pd(r->d), d2 = _mm_load_sd(r->d + 2);
+        const __m128d m01 = _mm_cmpneq_pd(d01, z), m2 = _mm_cmpneq_pd(d2, z);
+        const __m128d q01 =
+            _mm_div_pd(one, _mm_or_pd(_mm_and_pd(m01, d01), _mm_andnot_pd(m01, one)));
+        const __m128d q2 = _mm_div_sd(one, _mm_or_pd(_mm_and_pd(m2, d2), _mm_andnot_pd(m2, one)));
+        _mm_storeu_pd(out->invd, _mm_and_pd(q01, m01));
+        _mm_store_sd(out->invd + 2, _mm_and_pd(q2, m2));
+#else
         for (int i = 0; i < 3; i++)
             out->invd[i] = r->d[i] != 0.0 ? 1.0 / r->d[i] : 0.0;
+#endif
         return;
     }
     const double q[3] = {r->o[0] - g->c[0], r->o[1] - g->c[1], r->o[2] - g->c[2]};
