@@ -175,25 +175,73 @@ static int bs_add_lights(const scene_io_scene *io, bs_scene *s, double dist)
     return 0;
 }
 
-/* polygons into gksrt (VRC3) and fan triangles for the peers */
-static int bs_add_polygons(const scene_io_scene *io, bs_scene *s, int base)
+/* fan triangles of all polygons for the peers (s->tris; tri_prim set by the caller) */
+static int bs_fan_triangles(const scene_io_scene *io, bs_scene *s)
 {
-    size_t ntri = 0, maxn = 3;
-    for (size_t p = 0; p < io->num_polygons; p++) {
+    size_t ntri = 0;
+    for (size_t p = 0; p < io->num_polygons; p++)
         ntri += (size_t)io->poly_nverts[p] - 2;
-        if ((size_t)io->poly_nverts[p] > maxn)
-            maxn = (size_t)io->poly_nverts[p];
-    }
     s->ntris = ntri;
     s->tris = bs_alloc(ntri, 3 * sizeof(uint32_t));
     s->tri_prim = bs_alloc(ntri, sizeof(int));
+    if (!s->tris || !s->tri_prim)
+        return -1;
+    size_t t = 0;
+    s->all_triangles = 1;
+    for (size_t p = 0; p < io->num_polygons; p++) {
+        const int n = io->poly_nverts[p];
+        const uint32_t *ix = io->poly_verts + io->poly_start[p];
+        if (n != 3)
+            s->all_triangles = 0;
+        for (int k = 1; k + 1 < n; k++, t++) {
+            s->tris[3 * t] = ix[0];
+            s->tris[3 * t + 1] = ix[k];
+            s->tris[3 * t + 2] = ix[k + 1];
+        }
+    }
+    return 0;
+}
+
+/* all polygons share one material: 1 */
+static int bs_one_material(const scene_io_scene *io)
+{
+    for (size_t p = 1; p < io->num_polygons; p++)
+        if (io->poly_material[p] != io->poly_material[0])
+            return 0;
+    return io->num_polygons > 0;
+}
+
+/* the fan triangles into gksrt as one indexed mesh of all vertices (bs_options.indexed) */
+static int bs_add_mesh(const scene_io_scene *io, bs_scene *s, int base)
+{
+    if (bs_fan_triangles(io, s) != 0)
+        return -1;
+    const int mat = base + (int)io->poly_material[0];
+    const int id = rt_scene_add_mesh(s->rt, s->nverts, s->verts_vrc, NULL, NULL, s->ntris, s->tris, mat, mat);
+    if (id < 0)
+        return -1;
+    for (size_t t = 0; t < s->ntris; t++)
+        s->tri_prim[t] = id;
+    s->npolys = 1;
+    s->indexed = 1;
+    return 0;
+}
+
+/* polygons into gksrt (VRC3) and fan triangles for the peers */
+static int bs_add_polygons(const scene_io_scene *io, bs_scene *s, int base, int indexed)
+{
+    if (indexed && bs_one_material(io))
+        return bs_add_mesh(io, s, base);
+    size_t maxn = 3;
+    for (size_t p = 0; p < io->num_polygons; p++)
+        if ((size_t)io->poly_nverts[p] > maxn)
+            maxn = (size_t)io->poly_nverts[p];
     double *buf = bs_alloc(maxn, 3 * sizeof(double));
-    if (!s->tris || !s->tri_prim || !buf) {
+    if (!buf || bs_fan_triangles(io, s) != 0) {
         free(buf);
         return -1;
     }
     size_t t = 0;
-    s->all_triangles = 1;
     for (size_t p = 0; p < io->num_polygons; p++) {
         int n = io->poly_nverts[p];
         const uint32_t *ix = io->poly_verts + io->poly_start[p];
@@ -205,14 +253,8 @@ static int bs_add_polygons(const scene_io_scene *io, bs_scene *s, int base)
             free(buf);
             return -1;
         }
-        if (n != 3)
-            s->all_triangles = 0;
-        for (int k = 1; k + 1 < n; k++, t++) {
-            s->tris[3 * t] = ix[0];
-            s->tris[3 * t + 1] = ix[k];
-            s->tris[3 * t + 2] = ix[k + 1];
+        for (int k = 1; k + 1 < n; k++, t++)
             s->tri_prim[t] = id;
-        }
     }
     s->npolys = io->num_polygons;
     free(buf);
@@ -269,7 +311,7 @@ int bs_load(const char *path, const bs_options *opt, bs_scene *s, char *err, siz
     s->far_dist = 1.01 * far + 1e-6 * dist;
     int base = 0;
     if (bs_add_materials(&io, s, &base, opt) != 0 || bs_add_lights(&io, s, dist) != 0 ||
-        bs_add_polygons(&io, s, base) != 0) {
+        bs_add_polygons(&io, s, base, opt->indexed) != 0) {
         scene_io_free(&io);
         return bs_fail(err, err_size, "%s: cannot build the gksrt scene", path);
     }

@@ -38,6 +38,8 @@ typedef struct bs_scene {
     int *tri_prim;           /* gksrt primitive id of each triangle */
     size_t npolys;           /* primitives added to gksrt */
     int all_triangles;       /* 1: every polygon was a triangle (tri k == prim k) */
+    int indexed;             /* 1: added as one indexed mesh (bs_options.indexed): every
+                                tri_prim is the mesh's id */
     double commit_seconds;   /* CPU time of rt_scene_commit (process) */
     double commit_wall;      /* wall time of rt_scene_commit */
 } bs_scene;
@@ -46,6 +48,10 @@ typedef struct bs_options {
     int size;                /* raster size (square); <= 0: the NFF resolution, else 512 */
     const rt_build_options *build;  /* NULL: defaults */
     double mesh_ks;          /* meshes: ks (mirror weight) of the surface, 0 = matte */
+    int indexed;             /* 1: a file whose polygons all have one material goes to gksrt
+                                as one indexed mesh (rt_scene_add_mesh: the shared vertex
+                                buffer and the fan triangles' indices, as Embree is given it);
+                                0 (and other files): one rt_scene_add_polygon per polygon */
 } bs_options;
 
 /* Loads path, builds and commits the gksrt scene and the camera. Returns 0, or -1 with a

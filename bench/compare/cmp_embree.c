@@ -8,6 +8,11 @@
  *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
  *                                     inside, misses; the rays below), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
+ *   cmp_embree commit SRC KIND [T]   one rt_scene_commit on T threads (default 1) of SRC: N
+ *                                     random triangles (as in build) or a mesh file, KIND tri
+ *                                     (separate triangles) or mesh (one indexed mesh); prints
+ *                                     its CPU time and the grid's hash (the same hash, the same
+ *                                     grid), for profilers: --toggle-collect=commit_pass
  *   cmp_embree judge RES mesh.off...  the disagreements on the primary, inside, misses and
  *                                     shadow rays, judged in exact rational arithmetic (GMP) on
  *                                     the inputs each tracer was given; ours also on Embree's
@@ -28,6 +33,12 @@
  *   its centre, aimed at a point uniform in the box (the ray enters the box), t in [0, inf);
  *   of these candidates the first min(RES^2, IBOX_RAYS) that ours misses are kept (the set is
  *   defined by ours; Embree's hits on it are reported as disagreement).
+ * Meshes: both tracers are given the same kind of geometry, an indexed triangle mesh (ours:
+ * rt_scene_add_mesh of the file's vertex buffer and its (fan) triangles' index triples, double
+ * vertices; Embree: the same buffers in float). Ours then reports one id for the whole mesh,
+ * so on the meshes "same" means the same mesh at the same t (a hit on the neighbour of
+ * Embree's triangle across a shared edge counts as the same); the judge below loads the
+ * triangles separately (one id each) to name the triangle.
  * Mesh build: rt_scene_commit of the loaded scene again (default options, 1 thread) and
  * rtcCommitScene, process CPU time, best of 5; memory as in the build series.
  * Agreement: both miss, or both hit the same triangle with |t_ours - t_embree| <= TOL_T *
@@ -401,7 +412,7 @@ static int cmd_rays(int res, int nfiles, char **files)
         base = base ? base + 1 : files[f];
         bs_scene s;
         char err[512];
-        bs_options opt = {.size = res};
+        bs_options opt = {.size = res, .indexed = 1};
         if (bs_load(files[f], &opt, &s, err, sizeof err) != 0) {
             fprintf(stderr, "%s\n", err);
             bs_free(&s);
@@ -460,9 +471,10 @@ static int cmd_rays(int res, int nfiles, char **files)
                base, s.ntris, n / op * 1e-6, n / ep * 1e-6, ep / op, n / e16 * 1e-6, e16 / op, ns,
                ns ? ns / os * 1e-6 : 0.0, ns ? ns / es * 1e-6 : 0.0, ns ? es / os : 0.0, dis, n, sdis, ns);
         printf("    packets: %zu hits (rtcIntersect1: %zu)\n", hit16, ehit);
-        printf("    primary: %zu hits (ours), %zu both miss, %zu same triangle (max rel. t diff %.2e, tol %.0e); "
+        printf("    primary: %zu hits (ours), %zu both miss, %zu same %s (max rel. t diff %.2e, tol %.0e); "
                "differ: %zu edge/vertex ties, %zu hit/miss, %zu other; shadow: %zu occluded (ours), %zu differ\n",
-               ag.nhit, ag.both_miss, ag.same, ag.maxrel, TOL_T, ag.tie, ag.hitmiss, ag.other, socc, sdis);
+               ag.nhit, ag.both_miss, ag.same, s.indexed ? "mesh and t" : "triangle", ag.maxrel, TOL_T, ag.tie,
+               ag.hitmiss, ag.other, socc, sdis);
         for (int e = 0; e < ag.nex; e++)
             printf("    e.g. %s\n", ag.ex[e]);
         fflush(stdout);
@@ -559,7 +571,7 @@ static int cmd_rays(int res, int nfiles, char **files)
     printf("\nMesh build time and memory: rt_scene_commit (default options, 1 thread) vs rtcCommitScene, process CPU "
            "seconds, best of %d; memory as in the random-triangle series below\n",
            REPS);
-    printf("o.B/tri in parts (rt_stats): tri = the triangle records (rt_prim and the double vertices rt_tri), "
+    printf("o.B/tri in parts (rt_stats): tri = the triangle records (rt_prim, and the mesh's double vertex buffer and index triples), "
            "grid = both grid levels, rest = the other scene arrays\n");
     printf("%-24s %7s | %8s %8s %6s | %8s %8s %6s | %8s %8s %8s\n", "mesh", "tris", "o.build", "E.build", "o/E",
            "o.B/tri", "E.B/tri", "o/E", "tri", "grid", "rest");
@@ -1095,6 +1107,49 @@ static int cmd_judge(int res, int nfiles, char **files)
 
 /* ---------------------------------------------------------------- build scaling */
 
+/* N random triangles (cmd_build's, see there): 9n vertex doubles, 3n indices (vertex 3t + k) */
+static int random_tris(size_t n, double **vp, uint32_t **ixp)
+{
+    double *v = bs_alloc(n, 9 * sizeof(double));
+    uint32_t *ix = bs_alloc(n, 3 * sizeof(uint32_t));
+    *vp = v;
+    *ixp = ix;
+    if (!v || !ix)
+        return -1;
+    uint64_t st = 0x9E3779B97F4A7C15ULL ^ n;
+    double side = 2.0 * pow((double)n, -1.0 / 3.0);
+    for (size_t t = 0; t < n; t++) {
+        double cc[3] = {rnd(&st) - 0.5, rnd(&st) - 0.5, rnd(&st) - 3.0};
+        for (int k = 0; k < 3; k++) {
+            for (int i = 0; i < 3; i++)
+                v[9 * t + 3 * k + i] = cc[i] + side * (rnd(&st) - 0.5);
+            ix[3 * t + k] = (uint32_t)(3 * t + (size_t)k);
+        }
+    }
+    return 0;
+}
+
+/* ours given n triangles as Embree is given them: one indexed mesh of the 3n vertices v (no
+   vertex shared) and the index triples ix; commit on 1 thread, process CPU seconds in *secs,
+   the statistics in *rs. 0, or -1 on failure. */
+static int build_ours_mesh(const double *v, const uint32_t *ix, size_t n, double *secs, rt_stats *rs)
+{
+    rt_scene *sc = rt_scene_new();
+    rt_surface su;
+    rt_surface_default(&su);
+    const int sid = sc ? rt_scene_add_surface(sc, &su) : -1;
+    int rc = sid >= 0 ? rt_scene_add_mesh(sc, 3 * n, v, NULL, NULL, n, ix, sid, sid) : RT_ERR_NOMEM;
+    const rt_build_options b1 = {.brute_threshold = -1, .threads = 1};
+    const double t0 = bs_process_cpu();
+    if (rc >= 0)
+        rc = rt_scene_commit(sc, &b1);
+    *secs = bs_process_cpu() - t0;
+    if (rc == RT_OK && ours_stats(sc, rs) != 0)
+        rc = RT_ERR_STATE;
+    rt_scene_free(sc);
+    return rc == RT_OK ? 0 : -1;
+}
+
 static int cmd_build(void)
 {
     em_mem mem;
@@ -1111,35 +1166,29 @@ static int cmd_build(void)
            "grid, double vertices); Embree: rtcCommitScene, memory = device memory monitor after commit "
            "(BVH + float vertex/index buffers)\n");
     printf("o.2t: the same commit on 2 threads (rt_build_options.threads), wall seconds (load-sensitive)\n");
-    printf("%9s | %8s %9s %8s %8s %8s %9s %8s | %8s %9s %8s | %6s %6s\n", "tris", "o.build", "o.us/tri",
-           "o.B/tri", "cells", "refs", "o.Mtri/s", "o.2t", "E.build", "E.us/tri", "E.B/tri", "build", "mem");
-    printf("%9s | %8s %9s %8s %8s %8s %9s %8s | %8s %9s %8s | %6s %6s\n", "", "s", "", "", "/tri", "/tri", "",
-           "wall s", "s", "", "", "o/E", "o/E");
+    printf("m.*: ours given the triangles as Embree is: one indexed mesh (rt_scene_add_mesh) of the 3N "
+           "vertices (none shared) and N index triples; commit on 1 thread\n");
+    printf("%9s | %8s %9s %8s %8s %8s %9s %8s | %8s %8s | %8s %9s %8s | %6s %6s | %6s %6s\n", "tris", "o.build",
+           "o.us/tri", "o.B/tri", "cells", "refs", "o.Mtri/s", "o.2t", "m.build", "m.B/tri", "E.build", "E.us/tri",
+           "E.B/tri", "build", "mem", "build", "mem");
+    printf("%9s | %8s %9s %8s %8s %8s %9s %8s | %8s %8s | %8s %9s %8s | %6s %6s | %6s %6s\n", "", "s", "", "",
+           "/tri", "/tri", "", "wall s", "s", "", "s", "", "", "o/E", "o/E", "m/E", "m/E");
     static const size_t counts[] = {10000, 30000, 100000, 300000, 1000000};
     int fails = 0;
     for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
         size_t n = counts[c];
-        double *v = bs_alloc(n, 9 * sizeof(double));
-        uint32_t *ix = bs_alloc(n, 3 * sizeof(uint32_t));
-        if (!v || !ix) {
+        double *v;
+        uint32_t *ix;
+        if (random_tris(n, &v, &ix) != 0) {
             free(v);
             free(ix);
             fails++;
             continue;
         }
-        uint64_t st = 0x9E3779B97F4A7C15ULL ^ n;
-        double side = 2.0 * pow((double)n, -1.0 / 3.0);
-        for (size_t t = 0; t < n; t++) {
-            double cc[3] = {rnd(&st) - 0.5, rnd(&st) - 0.5, rnd(&st) - 3.0};
-            for (int k = 0; k < 3; k++) {
-                for (int i = 0; i < 3; i++)
-                    v[9 * t + 3 * k + i] = cc[i] + side * (rnd(&st) - 0.5);
-                ix[3 * t + k] = (uint32_t)(3 * t + (size_t)k);
-            }
-        }
-        double ob = 1e30, eb = 1e30, ob2 = 1e30;
-        rt_stats rs;
+        double ob = 1e30, eb = 1e30, ob2 = 1e30, mb = 1e30;
+        rt_stats rs, ms;
         memset(&rs, 0, sizeof rs);
+        memset(&ms, 0, sizeof ms);
         long long emem = 0;
         for (int r = 0; r < REPS; r++) {
             rt_scene *sc = rt_scene_new();
@@ -1172,6 +1221,10 @@ static int cmd_build(void)
             if (rc != RT_OK || ours_stats(sc, &rs) != 0)
                 fails++;
             rt_scene_free(sc);
+            double m1 = 1e30;
+            if (build_ours_mesh(v, ix, n, &m1, &ms) != 0)
+                fails++;
+            mb = fmin(mb, m1);
 
             long long before = atomic_load(&mem.bytes);
             RTCScene es = em_scene(dev, v, 3 * n, ix, n);
@@ -1185,10 +1238,11 @@ static int cmd_build(void)
             emem = atomic_load(&mem.bytes) - before;
             rtcReleaseScene(es);
         }
-        printf("%9zu | %8.4f %9.3f %8.1f %8.2f %8.2f %9.2f %8.4f | %8.4f %9.3f %8.1f | %6.2f %6.2f\n", n, ob,
-               ob / n * 1e6, (double)rs.memory_bytes / n, (double)rs.grid_cells / n, (double)rs.grid_refs / n,
-               n / ob * 1e-6, ob2, eb, eb / n * 1e6, (double)emem / n, ob / eb,
-               (double)rs.memory_bytes / (double)emem);
+        printf("%9zu | %8.4f %9.3f %8.1f %8.2f %8.2f %9.2f %8.4f | %8.4f %8.1f | %8.4f %9.3f %8.1f | %6.2f %6.2f | "
+               "%6.2f %6.2f\n",
+               n, ob, ob / n * 1e6, (double)rs.memory_bytes / n, (double)rs.grid_cells / n, (double)rs.grid_refs / n,
+               n / ob * 1e-6, ob2, mb, (double)ms.memory_bytes / n, eb, eb / n * 1e6, (double)emem / n, ob / eb,
+               (double)rs.memory_bytes / (double)emem, mb / eb, (double)ms.memory_bytes / (double)emem);
         fflush(stdout);
         free(v);
         free(ix);
@@ -1197,6 +1251,79 @@ static int cmd_build(void)
            "mem o/E <= 1.0)\n");
     rtcReleaseDevice(dev);
     return fails ? 1 : 0;
+}
+
+/* the one commit of cmd_commit (a function of its own: callgrind --toggle-collect=commit_pass) */
+__attribute__((noinline)) static int commit_pass(rt_scene *sc, int threads)
+{
+    const rt_build_options o = {.brute_threshold = -1, .threads = threads};
+    return rt_scene_commit(sc, &o);
+}
+
+/* one commit for profilers and for checking that a change of the build keeps the grid: SRC a
+   number N (cmd_build's N random triangles) or a mesh file (as cmd_rays loads it); kind "tri"
+   (separate triangles, rt_scene_add_polygon) or "mesh" (one indexed mesh); prints the commit's
+   process CPU seconds, the grid's hash (rt_grid_info.hash: equal, the same grid) and size */
+static int cmd_commit(const char *src, const char *kind, int threads)
+{
+    const int mesh = !strcmp(kind, "mesh");
+    rt_scene *sc = NULL;
+    bs_scene s;
+    memset(&s, 0, sizeof s);
+    char *end;
+    const unsigned long long nr = strtoull(src, &end, 10);
+    if (*end == '\0' && nr > 0 && nr <= 100000000ULL) {
+        double *v = NULL;
+        uint32_t *ix = NULL;
+        sc = rt_scene_new();
+        rt_surface su;
+        rt_surface_default(&su);
+        int sid = sc && random_tris((size_t)nr, &v, &ix) == 0 ? rt_scene_add_surface(sc, &su) : -1;
+        const int three = 3;
+        if (mesh && sid >= 0 && rt_scene_add_mesh(sc, 3 * (size_t)nr, v, NULL, NULL, (size_t)nr, ix, sid, sid) < 0)
+            sid = -1;
+        for (size_t t = 0; !mesh && t < (size_t)nr && sid >= 0; t++)
+            if (rt_scene_add_polygon(sc, 1, &three, v + 9 * t, sid, sid) < 0)
+                sid = -1;
+        free(v);
+        free(ix);
+        if (sid < 0) {
+            fprintf(stderr, "cannot make the scene\n");
+            rt_scene_free(sc);
+            return 1;
+        }
+    } else {
+        char err[512];
+        bs_options opt = {.size = 16, .indexed = mesh};
+        if (bs_load(src, &opt, &s, err, sizeof err) != 0) {
+            fprintf(stderr, "%s\n", err);
+            bs_free(&s);
+            return 1;
+        }
+        sc = s.rt;
+    }
+    const double t0 = bs_process_cpu(), w0 = bs_wall();
+    int rc = commit_pass(sc, threads);
+    const double t = bs_process_cpu() - t0, w = bs_wall() - w0;
+    rt_grid_info gi;
+    rt_stats rs;
+    if (rc == RT_OK)
+        rc = rt_scene_grid_info(sc, &gi);
+    if (rc == RT_OK && ours_stats(sc, &rs) != 0)
+        rc = RT_ERR_STATE;
+    if (rc == RT_OK)
+        printf("%s %s, %d thread(s): commit %.4f s CPU, %.4f s wall; grid %016llx: %llu cells %llu refs, "
+               "%llu sub-grids %llu cells %llu refs; %.1f B/prim\n",
+               src, mesh ? "mesh" : "tri", threads, t, w, (unsigned long long)gi.hash, (unsigned long long)gi.cells,
+               (unsigned long long)gi.refs, (unsigned long long)gi.subgrids, (unsigned long long)gi.subcells,
+               (unsigned long long)gi.subrefs, (double)rs.memory_bytes / (double)gi.prims);
+    else
+        fprintf(stderr, "commit failed (%d)\n", rc);
+    if (s.rt)
+        bs_free(&s);
+    else
+        rt_scene_free(sc);
+    return rc == RT_OK ? 0 : 1;
 }
 
 /* the one traced pass of cmd_ours (a function of its own: callgrind --toggle-collect=ours_pass) */
@@ -1214,7 +1341,7 @@ static int cmd_ours(int res, const char *set, const char *file)
 {
     bs_scene s;
     char err[512];
-    bs_options opt = {.size = res};
+    bs_options opt = {.size = res, .indexed = 1};
     if (bs_load(file, &opt, &s, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         bs_free(&s);
@@ -1289,6 +1416,8 @@ int main(int argc, char **argv)
     }
     if (argc == 2 && !strcmp(argv[1], "build"))
         return cmd_build();
+    if ((argc == 4 || argc == 5) && !strcmp(argv[1], "commit"))
+        return cmd_commit(argv[2], argv[3], argc == 5 ? atoi(argv[4]) : 1);
     if (argc == 5 && !strcmp(argv[1], "ours")) {
         int res = atoi(argv[2]);
         if (res < 1 || res > 8192) {
@@ -1306,6 +1435,6 @@ int main(int argc, char **argv)
         return cmd_judge(res, argc - 3, argv + 3);
     }
     fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours RES SET mesh.off"
-                    " | cmp_embree judge RES mesh.off...\n");
+                    " | cmp_embree judge RES mesh.off... | cmp_embree commit N|mesh.off tri|mesh [THREADS]\n");
     return 2;
 }
