@@ -166,6 +166,9 @@ typedef struct rt_build {
     rt_clipbuf cb;
     double *pts;
     size_t cappts;
+    double *tpts;      /* the second level: the grid-frame vertices of the triangles of the
+                          top cell at hand (9 doubles per reference; rt_sub_cells) */
+    size_t captpts;
     uint32_t *cnt;
     char pad[RT_LINE]; /* the next part's scratch on other cache lines (RT_LINE) */
 } rt_build;
@@ -175,6 +178,7 @@ static void rt_build_free(rt_build *b)
     free(b->cb.a);
     free(b->cb.b);
     free(b->pts);
+    free(b->tpts);
     free(b->pairs);
     free(b->cnt);
     memset(b, 0, sizeof *b);
@@ -594,17 +598,23 @@ static void rt_ins_cell_box(const rt_box *g, const rt_axis_boxes *ab, const int 
 }
 
 /* adds (base + cell, i) for every cell of box g whose eps-enlarged box the surface of
-   primitive i overlaps; geometry is taken into the grid frame of sc first */
+   primitive i overlaps; geometry is taken into the grid frame of sc first (tv: a triangle's
+   three vertices already in the grid frame, as rt_prim_gbox made them; NULL: from the scene) */
 static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
-                      double eps, int *err)
+                      double eps, const double *tv, int *err)
 {
     const rt_prim *p = &sc->prim[i];
     const rt_grid *gr = &sc->grid;
-    size_t npts = rt_prim_points(sc, b, p, err);
-    if (*err)
-        return;
-    for (size_t k = 0; k < npts && gr->rotated; k++)
-        rt_grid_point(gr, b->pts + 3 * k, b->pts + 3 * k);
+    size_t npts = 3;
+    if (tv) { /* b->pts holds 9 doubles: rt_prim_gbox put this triangle there before */
+        memcpy(b->pts, tv, 9 * sizeof(double));
+    } else {
+        npts = rt_prim_points(sc, b, p, err);
+        if (*err)
+            return;
+        for (size_t k = 0; k < npts && gr->rotated; k++)
+            rt_grid_point(gr, b->pts + 3 * k, b->pts + 3 * k);
+    }
     double bb[6];
     rt_pts_bbox(b->pts, npts, bb);
     int c0[3], c1[3];
@@ -694,7 +704,7 @@ static void rt_top_insert(void *arg, int k, int n)
     }
     int err = 0;
     for (size_t i = lo; i < hi && !err; i++)
-        rt_insert(j->sc, b, i, &g->b, 0, j->eps, &err);
+        rt_insert(j->sc, b, i, &g->b, 0, j->eps, NULL, &err);
     j->err[k] = err;
 }
 
@@ -774,7 +784,7 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
 #define RT_SUB_FACTOR 3.0
 #define RT_SUB_FACTOR_LARGE 4.0 /* beyond RT_GRID_KNEE primitives (gksrt.h) */
 
-/* bounding box of primitive i in the grid frame */
+/* bounding box of primitive i in the grid frame (its points in the frame left in b->pts) */
 static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6], int *err)
 {
     size_t npts = rt_prim_points(sc, b, &sc->prim[i], err);
@@ -812,6 +822,46 @@ typedef struct rt_sub_job {
     int nparts;
 } rt_sub_job;
 
+/* The references of top cell ci (eps-enlarged box lo .. hi): keep[r] = 1 for the large ones
+ * (their part in the cell spans at least half of it in two axes; they stay in the cell's
+ * list), sb grown by the parts of the others, whose number is returned; the triangles'
+ * grid-frame vertices into b->tpts (9 doubles per reference, in list order) for their
+ * insertion into the sub-grid (the values rt_insert would compute again: one gather and
+ * rotation per reference less). */
+static uint32_t rt_sub_classify(const rt_scene *sc, rt_build *b, size_t ci, const double lo[3],
+                                const double hi[3], double eps, uint8_t *keep, double sb[6],
+                                int *err)
+{
+    const rt_grid *g = &sc->grid;
+    uint32_t nsmall = 0;
+    if (!rt_grow((void **)&b->tpts, &b->captpts, 9 * (size_t)(g->off[ci + 1] - g->off[ci]),
+                 sizeof(double))) {
+        *err = 1;
+        return 0;
+    }
+    for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !*err; r++) {
+        double bb[6];
+        rt_prim_gbox(sc, b, g->refs[r], bb, err);
+        if (sc->prim[g->refs[r]].kind == RT_KIND_TRI && !*err)
+            memcpy(b->tpts + 9 * (size_t)(r - g->off[ci]), b->pts, 9 * sizeof(double));
+        int span = 0;
+        for (int a = 0; a < 3; a++) {
+            bb[a] = rt_dmax(bb[a] - eps, lo[a]);
+            bb[3 + a] = rt_dmin(bb[3 + a] + eps, hi[a]);
+            span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
+        }
+        keep[r] = span >= 2;
+        if (keep[r])
+            continue;
+        nsmall++;
+        for (int a = 0; a < 3; a++) {
+            sb[a] = rt_dmin(sb[a], bb[a]);
+            sb[3 + a] = rt_dmax(sb[3 + a], bb[3 + a]);
+        }
+    }
+    return nsmall;
+}
+
 static void rt_sub_cells(void *arg, int k, int n)
 {
     (void)n;
@@ -848,25 +898,7 @@ static void rt_sub_cells(void *arg, int k, int n)
            component exactly 0 is then clipped to the sub box exactly: clipped to the
            cell box itself, the second-level grid was skipped for it */
         rt_cell_box(&g->b, c, eps, lo, hi);
-        uint32_t nsmall = 0;
-        for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++) {
-            double bb[6];
-            rt_prim_gbox(sc, b, g->refs[r], bb, &err);
-            int span = 0;
-            for (int a = 0; a < 3; a++) {
-                bb[a] = rt_dmax(bb[a] - eps, lo[a]);
-                bb[3 + a] = rt_dmin(bb[3 + a] + eps, hi[a]);
-                span += bb[3 + a] - bb[a] >= 0.5 * (hi[a] - lo[a]);
-            }
-            keep[r] = span >= 2;
-            if (keep[r])
-                continue;
-            nsmall++;
-            for (int a = 0; a < 3; a++) {
-                sb[a] = rt_dmin(sb[a], bb[a]);
-                sb[3 + a] = rt_dmax(sb[3 + a], bb[3 + a]);
-            }
-        }
+        const uint32_t nsmall = rt_sub_classify(sc, b, ci, lo, hi, eps, keep, sb, &err);
         if (nsmall <= sub_min || err) {
             for (uint32_t r = g->off[ci]; r < g->off[ci + 1]; r++)
                 keep[r] = 1;
@@ -889,8 +921,11 @@ static void rt_sub_cells(void *arg, int k, int n)
         sg->first = (uint32_t)total;
         b->npairs = 0;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
-            if (!keep[r])
-                rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, &err);
+            if (!keep[r]) {
+                const int tri = sc->prim[g->refs[r]].kind == RT_KIND_TRI;
+                const double *tv = tri ? b->tpts + 9 * (size_t)(r - g->off[ci]) : NULL;
+                rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, tv, &err);
+            }
         if (!err && pt->nref + b->npairs > UINT32_MAX - 1)
             err = 2;
         if (!err && (!rt_big_grow(&pt->off, total + nc, sizeof(uint32_t)) ||
