@@ -1372,8 +1372,10 @@ static void rt_frame_cand_part(void *arg, int k, int n)
     j->err[k] = err;
 }
 
-/* the frame of the grid (b: nt scratches, one per part) */
-static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
+/* the frame of the grid (b: nt scratches, one per part); when the frame is rotated and the
+   sample was every primitive (stride 1), fb = the box of all primitive points in it (what
+   rt_frame_box with stride 1 gives; the pass that judged the frame made it) and *have_fb = 1 */
+static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int *have_fb)
 {
     rt_grid *g = &sc->grid;
     g->rotated = 0;
@@ -1395,6 +1397,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
     if (err)
         return RT_ERR_NOMEM;
     size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
+    *have_fb = 0;
     /* the sample's normals, once for all candidates (a triangle's is recomputed) */
     const size_t ns = (sc->nprim + stride - 1) / stride;
     double (*sn)[3] = rt_alloc_array(ns ? ns : 1, sizeof *sn);
@@ -1435,6 +1438,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
         if (ok && E * S < best) {
             best = E * S;
             memcpy(bestR, g->R, sizeof bestR);
+            memcpy(fb, bb, 6 * sizeof(double));
             found = 1;
         }
     }
@@ -1444,6 +1448,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt)
     if (rc == RT_OK && found) {
         memcpy(g->R, bestR, sizeof bestR);
         g->rotated = 1;
+        *have_fb = stride == 1;
     }
     return rc;
 }
@@ -1524,8 +1529,12 @@ static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_
     int rc = RT_OK;
     g->rotated = 0;
     if (!go->explicit_res && !(o && o->grid_frame == 1)) {
-        rc = rt_choose_frame(sc, bs, nt);
-        if (rc == RT_OK && g->rotated)
+        double rb[6];
+        int have = 0;
+        rc = rt_choose_frame(sc, bs, nt, rb, &have);
+        if (rc == RT_OK && g->rotated && have)
+            memcpy(fb, rb, sizeof fb);
+        else if (rc == RT_OK && g->rotated)
             rc = rt_frame_box(sc, bs, nt, 1, fb);
     }
     *mx = 0.0;
