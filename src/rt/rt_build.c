@@ -429,10 +429,77 @@ static inline int rt_edge_group(const rt_axis_cell *p, const rt_axis_cell *q)
     return 0;
 }
 
+/* centre bc and half size h of the eps-enlarged cell q of g on axis a (rt_cell_box's box) */
+static inline void rt_axis_box(const rt_box *g, int a, int q, double eps, double *bc, double *h)
+{
+    const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
+    const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
+    *bc = 0.5 * (lo + hi);
+    *h = 0.5 * (hi - lo);
+}
+
+/* Triangle t whose cells span one axis a only (c0 == c1 on the others), as rt_tri_cells
+ * decides, with fewer tests. When the whole triangle lies in the cell's box shrunk by eps on
+ * the two other axes, a cell of the row whose face test on a keeps it with that margin too
+ * (the triangle's range on a meets [-h + eps, h - eps]) holds a point of the triangle at
+ * least eps inside its box on every axis (the triangle is connected); then every axis of the
+ * SAT keeps the cell with a margin of eps times the axis' 1-norm in exact arithmetic, while
+ * the computed tests err by ~1e-15 of the scene's scale times that norm (eps is 1e-9 of it):
+ * the 9 edge tests keep it, and the face and plane tests are computed as rt_tri_cells
+ * computes them (the same operands). A cell without the margin gets rt_tri_box's tests (the
+ * same decision as rt_tri_cells', bit for bit).
+ * Returns 1, 0 (no memory), or -1 when the triangle is not inside on the other two axes
+ * (nothing pushed). */
+static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
+                      const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
+                      size_t prim, int a)
+{
+    double nv[3], nh[3], bc[3], h[3];
+    for (int s = 0; s < 3; s++) {
+        if (s == a)
+            continue;
+        rt_axis_box(g, s, c0[s], eps, &bc[s], &h[s]);
+        const double v0 = t->v[0][s] - bc[s], v1 = t->v[1][s] - bc[s], v2 = t->v[2][s] - bc[s];
+        if (!(rt_dmin(v0, rt_dmin(v1, v2)) >= eps - h[s] &&
+              rt_dmax(v0, rt_dmax(v1, v2)) <= h[s] - eps))
+            return -1;
+        nv[s] = n[s] * v0;
+        nh[s] = h[s] * fabs(n[s]);
+    }
+    int c[3] = {c0[0], c0[1], c0[2]};
+    for (c[a] = c0[a]; c[a] <= c1[a]; c[a]++) {
+        rt_axis_box(g, a, c[a], eps, &bc[a], &h[a]);
+        const double v0 = t->v[0][a] - bc[a], v1 = t->v[1][a] - bc[a], v2 = t->v[2][a] - bc[a];
+        const double mn = rt_dmin(v0, rt_dmin(v1, v2)), mx = rt_dmax(v0, rt_dmax(v1, v2));
+        if (mn > h[a] || mx < -h[a]) /* the face test (rt_sep) */
+            continue;
+        if (!(mn <= h[a] - eps && mx >= eps - h[a])) {
+            if (rt_tri_box(t, e, n, bc, h) && !rt_build_push(b, base + rt_cell_index(g, c), prim))
+                return 0;
+            continue;
+        }
+        nv[a] = n[a] * v0;
+        nh[a] = h[a] * fabs(n[a]);
+        const double pd = nv[0] + nv[1] + nv[2];
+        if (fabs(pd) > nh[0] + nh[1] + nh[2])
+            continue;
+        if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
+            return 0;
+    }
+    return 1;
+}
+
 static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
                         const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
                         size_t prim)
 {
+    const int spans = (c0[0] != c1[0]) + (c0[1] != c1[1]) + (c0[2] != c1[2]);
+    if (spans == 1) {
+        const int a = c0[0] != c1[0] ? 0 : c0[1] != c1[1] ? 1 : 2;
+        const int r = rt_tri_row(t, e, n, g, c0, c1, eps, b, base, prim, a);
+        if (r >= 0)
+            return r;
+    }
     rt_axis_cell ac[3][RT_SPAN];
     for (int a = 0; a < 3; a++) {
         const int b1 = (a + 1) % 3, b2 = (a + 2) % 3;
