@@ -167,11 +167,11 @@ RT_API int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_c
  * and each triangle as three 4-byte indices, so that triangles sharing an edge trace exactly
  * the same doubles (watertight). Each triangle is traced and shaded exactly as the same
  * triangle given alone to rt_scene_add_polygon_data (front side: counter-clockwise seen from
- * the front; data interpolated barycentrically); degenerate triangles are dropped at commit.
- * All triangles carry the one id returned (hits report it). Returns the id or RT_ERR_ARG (a
- * NULL array with counts > 0, an index >= nverts, non-finite normals or colours, a bad
- * surface id), RT_ERR_NOMEM, RT_ERR_LIMIT (more than 2^32 - 1 vertices or 2^31 triangles in
- * the scene's meshes). */
+ * the front; data interpolated barycentrically); degenerate triangles are dropped when the
+ * mesh is added. All triangles carry the one id returned (hits report it). Returns the id or
+ * RT_ERR_ARG (a NULL array with counts > 0, an index >= nverts, non-finite normals or
+ * colours, a bad surface id), RT_ERR_NOMEM, RT_ERR_LIMIT (more than 2^32 - 1 vertices or
+ * 2^31 triangles in the scene's meshes). */
 RT_API int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz,
                              const double *normals, const double *colours, size_t ntris,
                              const uint32_t *idx, int front_surface, int back_surface);

@@ -43,6 +43,9 @@ void rt_big_free(rt_big *b);
 typedef void (*rt_par_fn)(void *arg, int k, int n);
 /* threads for a request as rt_build_options.threads takes it (0: online CPUs), 1 .. RT_PAR_MAX */
 int rt_par_threads(int requested);
+/* the threads the pool has now (its workers and the caller): the largest count a caller
+   asked for so far, 1 before any; for work whose caller gives no count (rt_scene_mesh_end) */
+int rt_par_pool_threads(void);
 /* fn(arg, k, n) for k = 0 .. n-1 on up to n threads of the pool (k = 0 on the caller); returns
    when all are done. Parts must not depend on which thread runs them. */
 void rt_par_run(int n, rt_par_fn fn, void *arg);
@@ -138,6 +141,7 @@ typedef struct rt_mesh {
     int front, back;
     uint8_t has_n, has_c;
     size_t t0, nt, v0, nv;
+    double bb[6];       /* box of its triangles (degenerate ones were dropped when added) */
 } rt_mesh;
 
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */

@@ -56,6 +56,14 @@ int rt_par_threads(int requested)
     return n > RT_PAR_MAX ? RT_PAR_MAX : (int)n;
 }
 
+int rt_par_pool_threads(void)
+{
+    pthread_mutex_lock(&pool.lock);
+    const int n = pool.workers + 1;
+    pthread_mutex_unlock(&pool.lock);
+    return n;
+}
+
 /* runs t (lock held on entry and exit) */
 static void rt_pool_exec(rt_pool_task *t)
 {

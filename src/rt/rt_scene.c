@@ -363,6 +363,110 @@ int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_
     return RT_OK;
 }
 
+/* The per-triangle work of an added mesh m, in parts of consecutive triangles (and of its
+   vertices) on the pool: every index below m->nv (else bad) and made global (+ v0); a triangle
+   with a vertex that is not sane or that rt_tri_prim would find degenerate is dropped (never
+   traced), the kept ones moved to the front of the part's range in order; the box of the kept
+   ones; the normals and colours finite (else bad). What the commit did for every mesh
+   triangle at every commit, done once here, where the caller (the workstation's recording)
+   may overlap it with the application's calls. The same kept triangles and box for any
+   number of parts. */
+typedef struct rt_mesh_add_part {
+    double bb[6];
+    size_t kept;
+    int bad;
+} rt_mesh_add_part;
+
+typedef struct rt_mesh_add_job {
+    const rt_mesh *m;
+    uint32_t *ix;             /* the mesh's index triples */
+    const double (*X)[3];     /* the scene's mesh vertices (global indices) */
+    const float *n, *c;       /* the mesh's normals, colours (NULL: none) */
+    _Alignas(RT_LINE) rt_mesh_add_part part[RT_PAR_MAX];
+} rt_mesh_add_job;
+
+static inline int rt_tri_surely_sane(const double *v0, const double *v1, const double *v2);
+
+static void rt_mesh_add_run(void *arg, int k, int n)
+{
+    rt_mesh_add_job *j = arg;
+    const rt_mesh *m = j->m;
+    rt_mesh_add_part *o = &j->part[k];
+    size_t lo, hi, w;
+    rt_par_range(3 * m->nv, k, n, &lo, &hi);
+    for (size_t i = lo; i < hi; i++)
+        if ((j->n && !isfinite(j->n[i])) || (j->c && !isfinite(j->c[i])))
+            o->bad = 1;
+    for (int i = 0; i < 3; i++) {
+        o->bb[i] = INFINITY;
+        o->bb[3 + i] = -INFINITY;
+    }
+    rt_par_range(m->nt, k, n, &lo, &hi);
+    w = lo;
+    for (size_t t = lo; t < hi && !o->bad; t++) {
+        uint32_t *q = j->ix + 3 * t;
+        if (q[0] >= m->nv || q[1] >= m->nv || q[2] >= m->nv) {
+            o->bad = 1;
+            break;
+        }
+        const uint32_t a = q[0] + (uint32_t)m->v0, b = q[1] + (uint32_t)m->v0,
+                       c = q[2] + (uint32_t)m->v0;
+        const double *A = j->X[a], *B = j->X[b], *C = j->X[c];
+        double nrm[3];
+        if (!sane3(A) || !sane3(B) || !sane3(C) ||
+            !(rt_tri_surely_sane(A, B, C) || rt_tri_normal_sane(A, B, C, nrm)))
+            continue;
+        uint32_t *d = j->ix + 3 * w++;
+        d[0] = a;
+        d[1] = b;
+        d[2] = c;
+        rt_bbox_add(o->bb, A);
+        rt_bbox_add(o->bb, B);
+        rt_bbox_add(o->bb, C);
+    }
+    o->kept = w - lo;
+}
+
+/* rt_mesh_add_run on the pool's threads (parts of at least 16384 triangles); the kept
+   triangles closed up, in order; the box into m. RT_OK or RT_ERR_ARG (nothing added). */
+static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
+{
+    rt_mesh_add_job job, *j = &job; /* 4 KiB: no allocation that could fail */
+    memset(j, 0, sizeof *j);
+    j->m = m;
+    j->ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
+    j->X = (const double (*)[3])sc->mv_xyz.p;
+    j->n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
+    j->c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
+    int np = rt_par_pool_threads();
+    if ((size_t)np > m->nt / 16384 + 1)
+        np = (int)(m->nt / 16384 + 1);
+    rt_par_run(np, rt_mesh_add_run, j);
+    size_t w = 0;
+    int bad = 0;
+    for (int i = 0; i < 3; i++) {
+        m->bb[i] = INFINITY;
+        m->bb[3 + i] = -INFINITY;
+    }
+    for (int k = 0; k < np; k++) {
+        const rt_mesh_add_part *o = &j->part[k];
+        size_t lo, hi;
+        rt_par_range(m->nt, k, np, &lo, &hi);
+        bad |= o->bad;
+        if (w < lo && o->kept)
+            memmove(j->ix + 3 * w, j->ix + 3 * lo, 3 * o->kept * sizeof(uint32_t));
+        w += o->kept;
+        for (int i = 0; i < 3; i++) {
+            m->bb[i] = fmin(m->bb[i], o->bb[i]);
+            m->bb[3 + i] = fmax(m->bb[3 + i], o->bb[3 + i]);
+        }
+    }
+    if (bad)
+        return RT_ERR_ARG;
+    m->nt = w;
+    return RT_OK;
+}
+
 int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
 {
     if (!sc || !sc->mesh_open)
@@ -371,17 +475,9 @@ int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
     rt_mesh *m = &sc->mesh[sc->nmesh];
     if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
         return RT_ERR_ARG;
-    uint32_t *ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
-    for (size_t t = 0; t < 3 * m->nt; t++)
-        if (ix[t] >= m->nv)
-            return RT_ERR_ARG;
-    const float *n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
-    const float *c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
-    for (size_t i = 0; i < 3 * m->nv; i++)
-        if ((n && !isfinite(n[i])) || (c && !isfinite(c[i])))
-            return RT_ERR_ARG;
-    for (size_t t = 0; t < 3 * m->nt; t++) /* global vertex indices */
-        ix[t] += (uint32_t)m->v0;
+    const int rc = rt_mesh_add_check(sc, m);
+    if (rc != RT_OK)
+        return rc;
     m->id = (uint32_t)sc->nids;
     m->front = front_surface;
     m->back = back_surface;
@@ -788,11 +884,13 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
 }
 
 /* The meshes' triangles after the plain ones (ntri_plain), in id order, with their records
-   (data: the primitive index, as a plain triangle's); degenerate ones (as rt_tri_prim finds
-   them) and, with culling, culled ones left out: then the kept index triples are a compacted
-   copy (ctri_owned), else ctri is the input's. In nt parts of consecutive triangles
-   (threads): each part writes the records of its triangles at their input places (id
-   RT_CULLED: left out); a serial pass closes the gaps, so the result is the same for any nt. */
+   (data: the primitive index, as a plain triangle's). Degenerate ones were dropped when the
+   mesh was added (rt_scene_mesh_end), which also made each mesh's box: without culling the
+   commit only writes the records and ctri is the input's index triples. With culling the
+   culled ones are left out and the box is of the kept ones: the kept index triples are a
+   compacted copy (ctri_owned). In nt parts of consecutive triangles (threads): each part
+   writes the records of its triangles at their input places (id RT_CULLED: left out); a
+   serial pass closes the gaps, so the result is the same for any nt. */
 typedef struct rt_mesh_job {
     rt_scene *sc;
     const rt_build_options *o;
@@ -816,23 +914,31 @@ static void rt_commit_mesh_part(void *arg, int part, int nparts)
         bb[i] = INFINITY;
         bb[3 + i] = -INFINITY;
     }
+    if (!cull) { /* the records only: per mesh, its triangles in this part */
+        for (size_t t = lo; t < hi; mi++) {
+            const size_t e = sc->mesh[mi].t0 + sc->mesh[mi].nt;
+            const rt_prim r = j->tpl[mi];
+            rt_prim *pr = sc->prim + j->base;
+            for (; t < hi && t < e; t++) {
+                pr[t] = r;
+                pr[t].data = (uint32_t)(j->base + t);
+            }
+        }
+        j->kept[part] = hi - lo;
+        return;
+    }
     for (size_t t = lo; t < hi; t++) {
         while (t >= sc->mesh[mi].t0 + sc->mesh[mi].nt)
             mi++;
-        const double *a = X[in[t][0]], *b = X[in[t][1]], *c = X[in[t][2]];
-        double v[9], nrm[3];
-        int keep = sane3(a) && sane3(b) && sane3(c) &&
-                   (rt_tri_surely_sane(a, b, c) || rt_tri_normal_sane(a, b, c, nrm));
-        if (keep && cull) {
-            memcpy(v, a, sizeof v / 3);
-            memcpy(v + 3, b, sizeof v / 3);
-            memcpy(v + 6, c, sizeof v / 3);
-            keep = !rt_culled(j->o, v, 3, 0);
-        }
         rt_prim *pr = &sc->prim[j->base + t];
         *pr = j->tpl[mi];
         pr->data = (uint32_t)(j->base + t);
-        if (!keep) {
+        const double *a = X[in[t][0]], *b = X[in[t][1]], *c = X[in[t][2]];
+        double v[9];
+        memcpy(v, a, sizeof v / 3);
+        memcpy(v + 3, b, sizeof v / 3);
+        memcpy(v + 6, c, sizeof v / 3);
+        if (rt_culled(j->o, v, 3, 0)) {
             pr->id = RT_CULLED;
             continue;
         }
@@ -870,14 +976,20 @@ static int rt_commit_mesh(rt_scene *sc, const rt_build_options *o, double bb[6])
     if ((size_t)nt > sc->nmtri / 16384 + 1)
         nt = (int)(sc->nmtri / 16384 + 1);
     rt_par_run(nt, rt_commit_mesh_part, j);
+    const int cull = o && o->ncull > 0;
     size_t kept = 0;
     for (int k = 0; k < nt; k++) {
         kept += j->kept[k];
-        for (int i = 0; i < 3; i++) {
+        for (int i = 0; i < 3 && cull; i++) {
             bb[i] = fmin(bb[i], j->bb[k][i]);
             bb[3 + i] = fmax(bb[3 + i], j->bb[k][3 + i]);
         }
     }
+    for (size_t mi = 0; mi < sc->nmesh && !cull; mi++) /* the boxes made when added */
+        for (int i = 0; i < 3; i++) {
+            bb[i] = fmin(bb[i], sc->mesh[mi].bb[i]);
+            bb[3 + i] = fmax(bb[3 + i], sc->mesh[mi].bb[3 + i]);
+        }
     const size_t base = j->base;
     free(j);
     free(tpl);
