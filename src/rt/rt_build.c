@@ -241,10 +241,7 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
 {
     if (p->kind == RT_KIND_TRI && b->cappts >= 9) { /* the common case, without calls */
-        const double *v[3];
-        rt_tri_verts(sc, p->data, v);
-        for (int k = 0; k < 3; k++)
-            memcpy(b->pts + 3 * k, v[k], 3 * sizeof(double));
+        rt_tri_copy(sc, p->data, b->pts);
         return 3;
     }
     const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);

@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <string.h>
 
 /* ---- allocation funnel (rt_alloc.c) ---- */
 void *rt_alloc_array(size_t n, size_t size);
@@ -284,9 +285,10 @@ struct rt_scene {
 
 /* The three vertices of committed triangle primitive i (0 <= i < ntri; a triangle
    primitive's data is its index i): every reader of committed triangle vertices goes through
-   this, rt_tri_vert and rt_tri_prefetch, so the vertices' storage is known in one place. A
-   plain triangle (i < ntri_plain) holds its 72 bytes itself; a mesh triangle holds indices
-   into the shared vertex array, so that triangles sharing an edge use the same doubles. */
+   this, rt_tri_copy, rt_tri_vert and rt_tri_prefetch, so the vertices' storage is known in
+   one place. A plain triangle (i < ntri_plain) holds its 72 bytes itself; a mesh triangle
+   holds indices into the shared vertex array, so that triangles sharing an edge use the same
+   doubles. */
 static inline void rt_tri_verts(const rt_scene *sc, size_t i, const double *v[3])
 {
     if (i < sc->ntri_plain) {
@@ -300,6 +302,20 @@ static inline void rt_tri_verts(const rt_scene *sc, size_t i, const double *v[3]
     v[0] = X[ix[0]];
     v[1] = X[ix[1]];
     v[2] = X[ix[2]];
+}
+/* The nine coordinates of committed triangle primitive i into out (rt_tri_verts' vertices):
+   a plain triangle's 72 bytes in one copy, a mesh triangle's three gathered, no loop. */
+static inline void rt_tri_copy(const rt_scene *sc, size_t i, double out[9])
+{
+    if (i < sc->ntri_plain) {
+        memcpy(out, sc->tri[i].v, 9 * sizeof(double));
+        return;
+    }
+    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    memcpy(out, X[ix[0]], 3 * sizeof(double));
+    memcpy(out + 3, X[ix[1]], 3 * sizeof(double));
+    memcpy(out + 6, X[ix[2]], 3 * sizeof(double));
 }
 /* Vertex k (0, 1, 2) of committed triangle primitive t (rt_tri_verts). */
 static inline const double *rt_tri_vert(const rt_scene *sc, size_t t, int k)
