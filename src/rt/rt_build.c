@@ -1254,7 +1254,6 @@ static int rt_empty_cubes(rt_grid *g, int nt)
  * those the smallest E * S is taken (axes thinner than 1/1000 of the largest counted at that
  * size; at most RT_FRAME_SAMPLE primitives evaluated).
  * Measurements: docs/bench/rt_tuning.md. */
-#define RT_FRAME_CAND 8
 #define RT_FRAME_EYE 0.7
 #define RT_FRAME_SEC 0.9
 #define RT_FRAME_EYE_MAX 1.5
@@ -1281,6 +1280,7 @@ typedef struct rt_frame_job {
     const rt_scene *sc;
     rt_build *b;       /* per part */
     size_t stride;     /* rt_frame_box: every stride-th primitive */
+    size_t skip_lo, skip_hi; /* rt_frame_cand_part: primitives left out */
     int err[RT_PAR_MAX];
     double bb[RT_PAR_MAX][6];
     size_t cand[RT_PAR_MAX][RT_FRAME_CAND];
@@ -1411,29 +1411,86 @@ static void rt_cand_add(double *area, size_t *cand, int *nc, double ar, size_t i
     }
 }
 
-/* part k's candidates: the primitives of the largest bounding-box areas */
+/* the area the frame choice ranks a primitive by: the largest face of the box of its points */
+static inline double rt_pts_area(const double *pts, size_t npts)
+{
+    double bb[6];
+    rt_pts_bbox(pts, npts, bb);
+    double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
+    return rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
+}
+
+void rt_fcands_tri(rt_fcands *l, const double pts[9], size_t i)
+{
+    rt_cand_add(l->area, l->cand, &l->nc, rt_pts_area(pts, 3), i);
+}
+
+void rt_fcands_merge(rt_fcands *l, const rt_fcands *from, size_t off)
+{
+    for (int q = 0; q < from->nc; q++)
+        rt_cand_add(l->area, l->cand, &l->nc, from->area[q], from->cand[q] + off);
+}
+
+/* part k's candidates: the primitives of the largest bounding-box areas, the primitives
+   skip_lo .. skip_hi-1 (the meshes' triangles, ranked when they were added) left out */
 static void rt_frame_cand_part(void *arg, int k, int n)
 {
     rt_frame_job *j = arg;
     const rt_scene *sc = j->sc;
     rt_build *b = &j->b[k];
+    const size_t skip = j->skip_hi - j->skip_lo;
     size_t lo, hi;
-    rt_par_range(sc->nprim, k, n, &lo, &hi);
+    rt_par_range(sc->nprim - skip, k, n, &lo, &hi);
     int err = 0, nc = 0;
     double area[RT_FRAME_CAND]; /* here, not in j: the parts' lists share cache lines there */
     size_t cand[RT_FRAME_CAND];
-    for (size_t i = lo; i < hi && !err; i++) {
+    /* the part's primitives below skip_lo, then those from skip_hi on */
+    const size_t a0 = lo, a1 = hi < j->skip_lo ? hi : j->skip_lo;
+    const size_t b0 = (lo > j->skip_lo ? lo : j->skip_lo) + skip, b1 = hi + skip;
+    for (size_t i = a0; i < a1 && !err; i++) {
         size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
-        double bb[6];
-        rt_pts_bbox(b->pts, npts, bb);
-        double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
-        double ar = rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
-        rt_cand_add(area, cand, &nc, ar, i);
+        rt_cand_add(area, cand, &nc, rt_pts_area(b->pts, npts), i);
+    }
+    for (size_t i = b0; i < b1 && !err; i++) {
+        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        rt_cand_add(area, cand, &nc, rt_pts_area(b->pts, npts), i);
     }
     memcpy(j->area[k], area, (size_t)nc * sizeof *area);
     memcpy(j->cand[k], cand, (size_t)nc * sizeof *cand);
     j->nc[k] = nc;
     j->err[k] = err;
+}
+
+/* The meshes' triangles are left out of the candidates' pass (j->skip_lo .. skip_hi) when
+   each of them is committed at ntri_plain + its index in the meshes (none culled): their lists
+   were made when they were added. */
+static void rt_frame_skip(const rt_scene *sc, rt_frame_job *j)
+{
+    j->skip_lo = j->skip_hi = sc->nprim;
+    if (sc->nmesh > 0 && sc->ntri - sc->ntri_plain == sc->nmtri) {
+        j->skip_lo = sc->ntri_plain;
+        j->skip_hi = sc->ntri;
+    }
+}
+
+/* The candidates of all primitives into l: the parts' lists (nt) in order, those below
+   skip_lo first, then the meshes' lists, then the parts' from skip_hi on: the list one pass
+   in index order makes. 1 if a part failed (no memory). */
+static int rt_frame_cands(const rt_scene *sc, const rt_frame_job *j, int nt, rt_fcands *l)
+{
+    int err = 0;
+    l->nc = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        for (int k = 0; k < nt; k++) {
+            err |= j->err[k];
+            for (int q = 0; q < j->nc[k]; q++)
+                if ((j->cand[k][q] < j->skip_lo) == (pass == 0))
+                    rt_cand_add(l->area, l->cand, &l->nc, j->area[k][q], j->cand[k][q]);
+        }
+        for (size_t mi = 0; pass == 0 && j->skip_lo < j->skip_hi && mi < sc->nmesh; mi++)
+            rt_fcands_merge(l, &sc->mesh[mi].cands, sc->ntri_plain + sc->mesh[mi].t0);
+    }
+    return err;
 }
 
 /* the frame of the grid (b: nt scratches, one per part); when the frame is rotated and the
@@ -1451,12 +1508,13 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         return RT_ERR_NOMEM;
     j->sc = sc;
     j->b = b;
+    rt_frame_skip(sc, j);
     rt_par_run(nt, rt_frame_cand_part, j);
-    for (int k = 0; k < nt; k++) { /* parts in order: the list one pass makes */
-        err |= j->err[k];
-        for (int q = 0; q < j->nc[k]; q++)
-            rt_cand_add(area, cand, &nc, j->area[k][q], j->cand[k][q]);
-    }
+    rt_fcands l;
+    err = rt_frame_cands(sc, j, nt, &l);
+    nc = l.nc;
+    memcpy(area, l.area, sizeof area);
+    memcpy(cand, l.cand, sizeof cand);
     free(j);
     if (err)
         return RT_ERR_NOMEM;

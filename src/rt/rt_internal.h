@@ -134,6 +134,20 @@ typedef struct rt_vd {
 
 #define RT_NO_VD UINT32_MAX
 
+/* The grid's frame choice (rt_build.c) ranks the primitives by the largest face of their
+   bounding box and tries the RT_FRAME_CAND largest: such a list, descending, the lower index
+   first among equal areas (what one pass in index order keeps). */
+#define RT_FRAME_CAND 8
+typedef struct rt_fcands {
+    double area[RT_FRAME_CAND];
+    size_t cand[RT_FRAME_CAND];
+    int nc;
+} rt_fcands;
+/* the triangle pts (9 coordinates) of index i into l, ranked as the frame choice ranks it */
+void rt_fcands_tri(rt_fcands *l, const double pts[9], size_t i);
+/* the list from, its indices + off, into l, as if its primitives came after l's */
+void rt_fcands_merge(rt_fcands *l, const rt_fcands *from, size_t off);
+
 /* an indexed mesh (rt_scene_add_mesh): its triangles nt input triangles from t0 in the
    scene's mtri (indices into mv_xyz, global), its vertices nv from v0 (mv_xyz; mv_n and mv_c
    where has_n, has_c); every triangle has the mesh's id and surfaces */
@@ -143,6 +157,7 @@ typedef struct rt_mesh {
     uint8_t has_n, has_c;
     size_t t0, nt, v0, nv;
     double bb[6];       /* box of its triangles (degenerate ones were dropped when added) */
+    rt_fcands cands;     /* its triangles' frame candidates (indices from its first) */
 } rt_mesh;
 
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */

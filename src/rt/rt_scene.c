@@ -367,14 +367,16 @@ int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_
    vertices) on the pool: every index below m->nv (else bad) and made global (+ v0); a triangle
    with a vertex that is not sane or that rt_tri_prim would find degenerate is dropped (never
    traced), the kept ones moved to the front of the part's range in order; the box of the kept
-   ones; the normals and colours finite (else bad). What the commit did for every mesh
-   triangle at every commit, done once here, where the caller (the workstation's recording)
-   may overlap it with the application's calls. The same kept triangles and box for any
-   number of parts. */
+   ones and their frame candidates (rt_fcands: ranked as the grid's frame choice ranks them);
+   the normals and colours finite (else bad). What the commit did for every mesh triangle at
+   every commit (the check and the box here, the ranking in the frame choice's pass), done
+   once here, where the caller (the workstation's recording) may overlap it with the
+   application's calls. The same kept triangles, box and candidates for any number of parts. */
 typedef struct rt_mesh_add_part {
     double bb[6];
     size_t kept;
     int bad;
+    rt_fcands cands;           /* the kept ones' frame candidates (indices from the part's) */
 } rt_mesh_add_part;
 
 typedef struct rt_mesh_add_job {
@@ -416,6 +418,11 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         if (!sane3(A) || !sane3(B) || !sane3(C) ||
             !(rt_tri_surely_sane(A, B, C) || rt_tri_normal_sane(A, B, C, nrm)))
             continue;
+        double p[9];
+        memcpy(p, A, 3 * sizeof(double));
+        memcpy(p + 3, B, 3 * sizeof(double));
+        memcpy(p + 6, C, 3 * sizeof(double));
+        rt_fcands_tri(&o->cands, p, w - lo);
         uint32_t *d = j->ix + 3 * w++;
         d[0] = a;
         d[1] = b;
@@ -444,6 +451,7 @@ static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
     rt_par_run(np, rt_mesh_add_run, j);
     size_t w = 0;
     int bad = 0;
+    m->cands.nc = 0;
     for (int i = 0; i < 3; i++) {
         m->bb[i] = INFINITY;
         m->bb[3 + i] = -INFINITY;
@@ -453,6 +461,7 @@ static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
         size_t lo, hi;
         rt_par_range(m->nt, k, np, &lo, &hi);
         bad |= o->bad;
+        rt_fcands_merge(&m->cands, &o->cands, w);
         if (w < lo && o->kept)
             memmove(j->ix + 3 * w, j->ix + 3 * lo, 3 * o->kept * sizeof(uint32_t));
         w += o->kept;
