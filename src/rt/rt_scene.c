@@ -438,7 +438,7 @@ static void rt_mesh_add_run(void *arg, int k, int n)
    triangles closed up, in order; the box into m. RT_OK or RT_ERR_ARG (nothing added). */
 static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
 {
-    rt_mesh_add_job job, *j = &job; /* 4 KiB: no allocation that could fail */
+    rt_mesh_add_job job, *j = &job; /* 13 KiB: no allocation that could fail */
     memset(j, 0, sizeof *j);
     j->m = m;
     j->ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
