@@ -1,0 +1,227 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * ws_dlist.c -- the retained display list of one frame (ws_dlist.h): chunks allocated in one
+ * block each, with fixed capacities, filled in order and handed to the sink when sealed.
+ */
+#include "ws_dlist.h"
+#include "gks_alloc.h"
+#include <limits.h>
+#include <string.h>
+
+/* The arrays of a chunk, in the order of ws_dl_chunk.cap. */
+enum { A_REC, A_XYZ, A_NRM, A_RGB, A_CNT, A_IDX, A_ATTR, N_ARR };
+
+/* Element sizes of the arrays. */
+static const size_t elem[N_ARR] = { sizeof(ws_dl_rec), 3 * sizeof(double), 3 * sizeof(double),
+                                    3 * sizeof(double), sizeof(int), sizeof(uint32_t), 1 };
+
+/* Capacities of a new chunk: records, vertices, normals, colours, counts, indices, attribute
+ * bytes (about 300 KiB, the size of the blocks the tracer's recording queued before). The
+ * normals, colours and indices get room only once the frame has had a record with them. */
+static const size_t def_cap[N_ARR] = { 1024, 8192, 8192, 8192, 4096, 16384, 8192 };
+
+struct ws_dlist {
+    ws_dl_chunk *first, *cur;
+    size_t n_rec;              /* records of all chunks */
+    size_t bytes;              /* allocated by the chunks */
+    unsigned used_arr;         /* bit a: the frame had a record with array a */
+    ws_dlist_sink sink;
+    void *sink_user;
+    /* the state before the last append (ws_dlist_unappend) */
+    ws_dl_chunk *undo_chunk;
+    size_t undo[N_ARR];
+};
+
+static size_t round8(size_t n) { return (n + 7) & ~(size_t)7; }
+
+/* Fill of array a of chunk c. */
+static size_t *fill_of(ws_dl_chunk *c, int a)
+{
+    size_t *f[N_ARR] = { &c->n_rec, &c->n_xyz, &c->n_nrm, &c->n_rgb, &c->n_cnt, &c->n_idx,
+                         &c->n_attr };
+    return f[a];
+}
+
+ws_dlist *ws_dlist_new(void)
+{
+    return gks_calloc_array(1, sizeof(ws_dlist));
+}
+
+void ws_dlist_reset(ws_dlist *dl)
+{
+    for (ws_dl_chunk *c = dl->first, *n; c; c = n) {
+        n = c->next;
+        gks_free(c);
+    }
+    dl->first = dl->cur = dl->undo_chunk = NULL;
+    dl->n_rec = dl->bytes = 0;
+    dl->used_arr = 0;
+}
+
+void ws_dlist_free(ws_dlist *dl)
+{
+    if (!dl)
+        return;
+    ws_dlist_reset(dl);
+    gks_free(dl);
+}
+
+void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user)
+{
+    dl->sink = fn;
+    dl->sink_user = user;
+}
+
+void ws_dlist_seal(ws_dlist *dl)
+{
+    ws_dl_chunk *c = dl->cur;
+    if (!c || c->sealed || !c->n_rec)
+        return;
+    c->sealed = 1;
+    if (dl->sink)
+        dl->sink(dl->sink_user, c);
+}
+
+/* A new chunk with room for at least want[] (and the defaults), linked after the current one,
+ * which is sealed. 0 or 300 (nothing changed). */
+static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
+{
+    size_t cap[N_ARR], off[N_ARR], total = round8(sizeof(ws_dl_chunk));
+    for (int a = 0; a < N_ARR; a++) {
+        const size_t d = a == A_NRM || a == A_RGB || a == A_IDX
+                             ? ((dl->used_arr >> a) & 1u ? def_cap[a] : 0)
+                             : def_cap[a];
+        cap[a] = want[a] > d ? want[a] : d;
+        if (cap[a] > (SIZE_MAX - 8) / elem[a])
+            return 300;
+        off[a] = total;
+        const size_t bytes = round8(cap[a] * elem[a]);
+        if (bytes > SIZE_MAX - total)
+            return 300;
+        total += bytes;
+    }
+    unsigned char *b = gks_alloc_array(1, total);
+    if (!b)
+        return 300;
+    ws_dl_chunk *c = (ws_dl_chunk *)(void *)b;
+    memset(c, 0, sizeof *c);
+    memcpy(c->cap, cap, sizeof cap);
+    c->rec = (ws_dl_rec *)(void *)(b + off[A_REC]);
+    c->xyz = (double *)(void *)(b + off[A_XYZ]);
+    c->nrm = (double *)(void *)(b + off[A_NRM]);
+    c->rgb = (double *)(void *)(b + off[A_RGB]);
+    c->cnt = (int *)(void *)(b + off[A_CNT]);
+    c->idx = (uint32_t *)(void *)(b + off[A_IDX]);
+    c->attr = b + off[A_ATTR];
+    ws_dlist_seal(dl);
+    if (dl->cur)
+        dl->cur->next = c;
+    else
+        dl->first = c;
+    dl->cur = c;
+    dl->bytes += total;
+    return 0;
+}
+
+/* The room a record needs per array (want[A_ATTR] = attribute bytes); 0, or 300 for counts
+ * the records cannot hold. */
+static int need_of(const ws_dl_need *need, size_t attr_size, size_t want[N_ARR])
+{
+    if (need->n_facets < 0 || need->n_loops < 0 || need->n_facets > INT_MAX - need->n_loops ||
+        attr_size > SIZE_MAX - 8 ||
+        (need->n_idx && need->n_vtx > (size_t)UINT32_MAX + 1))
+        return 300;
+    want[A_REC] = 1;
+    want[A_XYZ] = need->n_vtx;
+    want[A_NRM] = need->flags & WS_DL_NORMALS ? need->n_vtx : 0;
+    want[A_RGB] = need->flags & WS_DL_COLOURS ? need->n_vtx : 0;
+    want[A_CNT] = (size_t)need->n_facets + (size_t)need->n_loops;
+    want[A_IDX] = need->n_idx;
+    want[A_ATTR] = round8(attr_size);
+    return 0;
+}
+
+/* The attributes of c's last record are attr (attr_size bytes). */
+static int same_attr(const ws_dl_chunk *c, const void *attr, size_t attr_size)
+{
+    if (!c->n_rec)
+        return 0;
+    const ws_dl_rec *l = &c->rec[c->n_rec - 1];
+    return l->attr_size == attr_size && memcmp(c->attr + l->attr, attr, attr_size) == 0;
+}
+
+static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
+{
+    if (c->sealed)
+        return 0;
+    for (int a = 0; a < N_ARR; a++)
+        if (want[a] > c->cap[a] - *fill_of(c, a))
+            return 0;
+    return 1;
+}
+
+int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t attr_size,
+                    const ws_dl_need *need, ws_dl_put *put)
+{
+    size_t want[N_ARR];
+    if (need_of(need, attr_size, want))
+        return 300;
+    for (int a = A_NRM; a <= A_IDX; a++) /* new chunks have room for these from now on */
+        if (want[a] && a != A_CNT)
+            dl->used_arr |= 1u << a;
+    ws_dl_chunk *c = dl->cur;
+    int shared = c && !c->sealed && same_attr(c, attr, attr_size);
+    if (shared)
+        want[A_ATTR] = 0;
+    if (!c || !fits(c, want)) {
+        want[A_ATTR] = round8(attr_size);
+        shared = 0;
+        if (chunk_new(dl, want))
+            return 300;
+        c = dl->cur;
+    }
+    dl->undo_chunk = c;
+    for (int a = 0; a < N_ARR; a++)
+        dl->undo[a] = *fill_of(c, a);
+    ws_dl_rec *r = &c->rec[c->n_rec++];
+    *r = (ws_dl_rec){ .kind = kind, .view = view, .flags = need->flags &
+                      (WS_DL_NORMALS | WS_DL_COLOURS), .n_facets = need->n_facets,
+                      .n_loops = need->n_loops, .attr_size = attr_size, .vtx = c->n_xyz,
+                      .n_vtx = need->n_vtx, .nrm = c->n_nrm, .rgb = c->n_rgb, .cnt = c->n_cnt,
+                      .idx = c->n_idx, .n_idx = need->n_idx };
+    r->attr = shared ? c->rec[c->n_rec - 2].attr : c->n_attr;
+    if (!shared && attr_size)
+        memcpy(c->attr + c->n_attr, attr, attr_size);
+    c->n_attr += want[A_ATTR];
+    c->n_xyz += want[A_XYZ];
+    c->n_nrm += want[A_NRM];
+    c->n_rgb += want[A_RGB];
+    c->n_cnt += want[A_CNT];
+    c->n_idx += want[A_IDX];
+    *put = (ws_dl_put){ .rec = r,
+                        .xyz = want[A_XYZ] ? c->xyz + 3 * r->vtx : NULL,
+                        .nrm = want[A_NRM] ? c->nrm + 3 * r->nrm : NULL,
+                        .rgb = want[A_RGB] ? c->rgb + 3 * r->rgb : NULL,
+                        .facets = need->n_facets ? c->cnt + r->cnt : NULL,
+                        .loops = need->n_loops ? c->cnt + r->cnt + need->n_facets : NULL,
+                        .idx = want[A_IDX] ? c->idx + r->idx : NULL };
+    dl->n_rec++;
+    return 0;
+}
+
+void ws_dlist_unappend(ws_dlist *dl)
+{
+    ws_dl_chunk *c = dl->undo_chunk;
+    if (!c || c != dl->cur || c->sealed)
+        return;
+    for (int a = 0; a < N_ARR; a++)
+        *fill_of(c, a) = dl->undo[a];
+    dl->undo_chunk = NULL;
+    dl->n_rec--;
+}
+
+const ws_dl_chunk *ws_dlist_first(const ws_dlist *dl) { return dl->first; }
+
+size_t ws_dlist_count(const ws_dlist *dl) { return dl->n_rec; }
+
+size_t ws_dlist_bytes(const ws_dlist *dl) { return dl->bytes; }

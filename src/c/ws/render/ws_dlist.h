@@ -1,0 +1,112 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * ws_dlist.h -- the retained display list of one frame (render layer, internal): what a
+ * renderer keeps of the frame's primitives until UPDATE, in one indexed form that both the
+ * classic renderer and the ray-tracing adapter read.
+ *
+ * A record is one primitive: its kind and view index (the reader's), its attributes (bytes
+ * the reader defines, copied into the list; consecutive records with equal attributes share
+ * one copy), its vertices (3 doubles each, in the coordinates its renderer needs), optional
+ * per-vertex normals and colours (3 doubles each, one per vertex), counts (the facets' loop
+ * numbers, then the loops' vertex numbers) and indices into the record's own vertices. A
+ * FILL AREA SET is one facet whose loops take the vertices in order (no indices); a mesh
+ * keeps its shared vertices once and its facets as index lists.
+ *
+ * The list is append-only for the frame and stored in chunks. A chunk is allocated once with
+ * its capacities and never reallocated, so that a reader (a worker thread) can read a sealed
+ * chunk while the caller appends to the next one. A chunk is sealed when the next record does
+ * not fit or at ws_dlist_seal; each sealed chunk goes to the sink (ws_dlist_set_sink), in
+ * order, and stays in the list until ws_dlist_reset. A record larger than a chunk gets a
+ * chunk of its own, sized to fit. Data flows one way: renderer's recording -> list -> reader.
+ *
+ * Threads: one thread appends, seals and resets; a sink may hand a sealed chunk to another
+ * thread, which then only reads it. ws_dlist_reset and ws_dlist_free free the chunks: the
+ * caller first makes sure no reader is still at work (e.g. rt_serial_drain).
+ */
+#ifndef WS_DLIST_H
+#define WS_DLIST_H
+#include <stddef.h>
+#include <stdint.h>
+
+/* Per-vertex data a record carries (flags of ws_dl_rec and ws_dl_need). */
+enum { WS_DL_NORMALS = 1u, WS_DL_COLOURS = 2u };
+
+/* One primitive. Offsets are into the arrays of its chunk. */
+typedef struct ws_dl_rec {
+    int kind;              /* the reader's record kind */
+    int view;              /* view index */
+    unsigned flags;        /* WS_DL_NORMALS, WS_DL_COLOURS */
+    int n_facets;          /* cnt[cnt .. cnt + n_facets): loops per facet (0: one facet) */
+    int n_loops;           /* then n_loops counts: vertices per loop */
+    size_t attr, attr_size; /* attributes: attr_size bytes at attr (8-byte aligned) */
+    size_t vtx, n_vtx;     /* vertices xyz[3 * vtx ...]; normals nrm, colours rgb alike */
+    size_t nrm, rgb;       /* first normal / colour (if flags say so) */
+    size_t cnt;            /* first count */
+    size_t idx, n_idx;     /* indices (0 .. n_vtx - 1) into the record's vertices; n_idx
+                              0: the loops take the vertices in order */
+} ws_dl_rec;
+
+/* A chunk: read-only for readers. */
+typedef struct ws_dl_chunk {
+    struct ws_dl_chunk *next; /* the next chunk (set when it is made; a reader of a sealed
+                                 chunk on another thread does not follow it) */
+    int sealed;
+    ws_dl_rec *rec;
+    size_t n_rec;
+    double *xyz, *nrm, *rgb;  /* 3 doubles per entry */
+    size_t n_xyz, n_nrm, n_rgb;
+    int *cnt;
+    size_t n_cnt;
+    uint32_t *idx;
+    size_t n_idx;
+    unsigned char *attr;
+    size_t n_attr;
+    size_t cap[7];            /* capacities (the list's) */
+} ws_dl_chunk;
+
+typedef struct ws_dlist ws_dlist;
+
+/* What a record needs: vertices (normals, colours by flags), facets, loops, indices. */
+typedef struct ws_dl_need {
+    size_t n_vtx;
+    unsigned flags;
+    int n_facets, n_loops;
+    size_t n_idx;
+} ws_dl_need;
+
+/* Where the caller writes a new record's data (NULL where the need is 0). */
+typedef struct ws_dl_put {
+    ws_dl_rec *rec;
+    double *xyz, *nrm, *rgb;
+    int *facets, *loops;      /* n_facets loop numbers, n_loops vertex numbers */
+    uint32_t *idx;
+} ws_dl_put;
+
+/* Called with each sealed chunk, in order (on the appending thread). */
+typedef void (*ws_dlist_sink)(void *user, ws_dl_chunk *c);
+
+/* An empty list, NULL if out of memory. */
+ws_dlist *ws_dlist_new(void);
+/* Frees it and its chunks (NULL allowed). */
+void ws_dlist_free(ws_dlist *dl);
+/* A new frame: frees the chunks (no reader may be at work). The sink stays. */
+void ws_dlist_reset(ws_dlist *dl);
+/* The sink of sealed chunks (NULL: none, the default). */
+void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user);
+/* Appends a record of kind and view with attributes attr (attr_size bytes, copied unless
+ * equal to the previous record's in the chunk) and room for need; *put says where its data
+ * goes (the caller fills it before the next call on dl). Returns 0, or 300 (storage, or a
+ * count beyond the list's range: the list unchanged). */
+int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t attr_size,
+                    const ws_dl_need *need, ws_dl_put *put);
+/* Takes back the record just appended (before any other call on dl). */
+void ws_dlist_unappend(ws_dlist *dl);
+/* Seals the chunk being filled (to the sink) if it has records. */
+void ws_dlist_seal(ws_dlist *dl);
+/* The first chunk of the frame (NULL if none); the others by next. */
+const ws_dl_chunk *ws_dlist_first(const ws_dlist *dl);
+/* Records in the list. */
+size_t ws_dlist_count(const ws_dlist *dl);
+/* Bytes of the chunks (allocated), for measurements. */
+size_t ws_dlist_bytes(const ws_dlist *dl);
+#endif
