@@ -214,6 +214,45 @@ static void test_chunks_and_sink(void **state)
     ws_dlist_free(dl);
 }
 
+/* A streaming reader releases each chunk it has read: the list frees the released chunks at
+ * its head when it makes a new chunk or at ws_dlist_trim, never one still being read. */
+static void release_sink(void *user, ws_dl_chunk *c)
+{
+    sink_log *l = user;
+    sink(user, c);
+    if (l->n % 2) /* every other chunk is released at once, the others at the end */
+        ws_dlist_release(c);
+}
+
+static void test_release(void **state)
+{
+    (void)state;
+    ws_dlist *dl = ws_dlist_new();
+    sink_log log = { .n = 0 };
+    ws_dlist_set_sink(dl, release_sink, &log);
+    const attr a = { { 0.5, 0.5, 0.5 }, 4 };
+    for (int k = 0; k < 10000; k++)
+        assert_int_equal(add_poly(dl, 1, &a, 4, k), 0);
+    assert_true(log.n >= 4);
+    /* the first chunk was released at once, the second is not: only the first is freed */
+    assert_ptr_equal(ws_dlist_first(dl), log.chunk[1]);
+    const size_t held = ws_dlist_bytes(dl);
+    for (int i = 1; i < log.n; i += 2)
+        ws_dlist_release((ws_dl_chunk *)log.chunk[i]);
+    ws_dlist_trim(dl);
+    assert_true(ws_dlist_bytes(dl) < held);
+    ws_dlist_seal(dl);
+    ws_dlist_release((ws_dl_chunk *)log.chunk[log.n - 1]);
+    ws_dlist_trim(dl);
+    assert_null(ws_dlist_first(dl));
+    assert_int_equal(ws_dlist_bytes(dl), 0);
+    assert_int_equal(ws_dlist_count(dl), 10000);
+    /* appending goes on in a new chunk */
+    assert_int_equal(add_poly(dl, 1, &a, 3, 9), 0);
+    check_poly(ws_dlist_first(dl), &ws_dlist_first(dl)->rec[0], 3, 9);
+    ws_dlist_free(dl);
+}
+
 static void test_unappend_and_limits(void **state)
 {
     (void)state;
@@ -315,6 +354,7 @@ int main(void)
         cmocka_unit_test(test_records_and_attributes),
         cmocka_unit_test(test_mesh),
         cmocka_unit_test(test_chunks_and_sink),
+        cmocka_unit_test(test_release),
         cmocka_unit_test(test_unappend_and_limits),
         cmocka_unit_test(test_oom),
     };

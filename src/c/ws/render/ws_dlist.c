@@ -18,7 +18,7 @@ static const size_t elem[N_ARR] = { sizeof(ws_dl_rec), 3 * sizeof(double), 3 * s
 /* Capacities of a new chunk: records, vertices, normals, colours, counts, indices, attribute
  * bytes (about 300 KiB, the size of the blocks the tracer's recording queued before). The
  * normals, colours and indices get room only once the frame has had a record with them. */
-static const size_t def_cap[N_ARR] = { 1024, 8192, 8192, 8192, 4096, 16384, 8192 };
+static const size_t def_cap[N_ARR] = { 2048, 8192, 8192, 8192, 4096, 16384, 8192 };
 
 struct ws_dlist {
     ws_dl_chunk *first, *cur;
@@ -105,6 +105,7 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
         return 300;
     ws_dl_chunk *c = (ws_dl_chunk *)(void *)b;
     memset(c, 0, sizeof *c);
+    atomic_init(&c->released, 0);
     memcpy(c->cap, cap, sizeof cap);
     c->rec = (ws_dl_rec *)(void *)(b + off[A_REC]);
     c->xyz = (double *)(void *)(b + off[A_XYZ]);
@@ -113,6 +114,7 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
     c->cnt = (int *)(void *)(b + off[A_CNT]);
     c->idx = (uint32_t *)(void *)(b + off[A_IDX]);
     c->attr = b + off[A_ATTR];
+    c->bytes = total;
     ws_dlist_seal(dl);
     if (dl->cur)
         dl->cur->next = c;
@@ -120,7 +122,27 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
         dl->first = c;
     dl->cur = c;
     dl->bytes += total;
+    ws_dlist_trim(dl);
     return 0;
+}
+
+void ws_dlist_release(ws_dl_chunk *c)
+{
+    atomic_store_explicit(&c->released, 1, memory_order_release);
+}
+
+void ws_dlist_trim(ws_dlist *dl)
+{
+    while (dl->first && atomic_load_explicit(&dl->first->released, memory_order_acquire)) {
+        ws_dl_chunk *c = dl->first;
+        dl->first = c->next;
+        if (dl->cur == c)
+            dl->cur = NULL;
+        if (dl->undo_chunk == c)
+            dl->undo_chunk = NULL;
+        dl->bytes -= c->bytes;
+        gks_free(c);
+    }
 }
 
 /* The room a record needs per array (want[A_ATTR] = attribute bytes); 0, or 300 for counts

@@ -16,7 +16,9 @@
  * its capacities and never reallocated, so that a reader (a worker thread) can read a sealed
  * chunk while the caller appends to the next one. A chunk is sealed when the next record does
  * not fit or at ws_dlist_seal; each sealed chunk goes to the sink (ws_dlist_set_sink), in
- * order, and stays in the list until ws_dlist_reset. A record larger than a chunk gets a
+ * order, and stays in the list until ws_dlist_reset, unless its reader releases it
+ * (ws_dlist_release: a streaming reader such as the tracer's recording worker, which keeps
+ * what it read in its own scene; the list then frees it). A record larger than a chunk gets a
  * chunk of its own, sized to fit. Data flows one way: renderer's recording -> list -> reader.
  *
  * Threads: one thread appends, seals and resets; a sink may hand a sealed chunk to another
@@ -25,6 +27,7 @@
  */
 #ifndef WS_DLIST_H
 #define WS_DLIST_H
+#include <stdatomic.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -51,6 +54,8 @@ typedef struct ws_dl_chunk {
     struct ws_dl_chunk *next; /* the next chunk (set when it is made; a reader of a sealed
                                  chunk on another thread does not follow it) */
     int sealed;
+    atomic_int released;      /* the reader is done with it (ws_dlist_release) */
+    size_t bytes;             /* allocated for it */
     ws_dl_rec *rec;
     size_t n_rec;
     double *xyz, *nrm, *rgb;  /* 3 doubles per entry */
@@ -103,10 +108,16 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
 void ws_dlist_unappend(ws_dlist *dl);
 /* Seals the chunk being filled (to the sink) if it has records. */
 void ws_dlist_seal(ws_dlist *dl);
-/* The first chunk of the frame (NULL if none); the others by next. */
+/* The reader of sealed chunk c is done with it (any thread; c is not touched afterwards):
+ * the list frees it when it makes its next chunk or at ws_dlist_trim, once every chunk
+ * before it is released as well. */
+void ws_dlist_release(ws_dl_chunk *c);
+/* Frees the released chunks at the head of the list now (the appending thread). */
+void ws_dlist_trim(ws_dlist *dl);
+/* The first chunk of the frame that is not freed (NULL if none); the others by next. */
 const ws_dl_chunk *ws_dlist_first(const ws_dlist *dl);
-/* Records in the list. */
+/* Records appended since the reset (those of freed chunks included). */
 size_t ws_dlist_count(const ws_dlist *dl);
-/* Bytes of the chunks (allocated), for measurements. */
+/* Bytes of the chunks held now (allocated), for measurements. */
 size_t ws_dlist_bytes(const ws_dlist *dl);
 #endif

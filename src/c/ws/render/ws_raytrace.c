@@ -16,6 +16,7 @@
 #include "gks_alloc.h"
 #include "gks_xform.h"
 #include "ws_mpi.h"
+#include "ws_dlist.h"
 #include <stdio.h>
 #include <limits.h>
 #include <stdatomic.h>
@@ -44,30 +45,18 @@ typedef struct rt_view_rec {
     size_t nsmask, capsmask;
 } rt_view_rec;
 
-/* Asynchronous recording (see ws_rt_record): a block of records, each a rec_head and then
- * REC_ATTR: an rt_attr (the following areas' attributes, view vi);
- * REC_POLY: n_loops ints (padded to 8 bytes) and n_pts VRC3 points (3 doubles each). */
-#define REC_BLOCK_BYTES ((size_t)256 * 1024)
-enum { REC_ATTR = 1, REC_POLY = 2 };
-typedef struct rec_head {
-    int kind, vi, n_loops, n_pts;
-} rec_head;
-typedef struct rec_block {
-    size_t used;
-    _Alignas(double) unsigned char data[REC_BLOCK_BYTES];
-} rec_block;
+/* Record kind of a FILL AREA (SET) without vertex data in the display list (ws_dlist.h):
+ * VRC3 points, its loops of 3 or more points, attributes an rt_attr. */
+enum { DL_POLY = 1 };
 
 struct ws_rt {
     rt_view_rec view[GKS_MAX_VIEW_IND + 1];
     size_t count;            /* tracer primitives recorded (or queued) */
-    /* asynchronous recording: the queue (NULL: off), the block being filled, the attributes
-     * and view of the latest REC_ATTR queued (aview -1: none); the worker's side: the view
-     * record its areas go to (NULL: their surfaces failed), the first error and the areas
-     * lost since the last ws_rt_sync */
+    /* asynchronous recording: the display list of the areas (its sealed chunks go to the
+     * queue, NULL: off); the worker's side: the view record its areas go to (NULL: their
+     * surfaces failed), the first error and the areas lost since the last ws_rt_sync */
+    ws_dlist *dl;
     rt_serial *queue;
-    rec_block *blk;
-    rt_attr alast;
-    int aview;
     int qtried;              /* rt_serial_new was asked (and said NULL: off) */
     rt_view_rec *wvr;
     atomic_int werr;
@@ -136,16 +125,24 @@ static int preview_end(void *user, rt_frame *f)
     return 1;
 }
 
+/* Areas of more points are recorded synchronously (as the queue's blocks of 256 KiB
+ * did: their points would fill a chunk alone). */
+#define QUEUE_MAX_POINTS ((size_t)10000)
+
 /* Points transformed on the stack up to this many (larger areas use the heap). */
 #define STACK_POINTS 32
 
 ws_rt *ws_rt_new(void)
 {
     ws_rt *r = gks_calloc_array(1, sizeof(ws_rt));
-    if (r) {
-        rt_render_options_default(&r->opts);
-        r->aview = -1;
+    if (!r)
+        return NULL;
+    r->dl = ws_dlist_new();
+    if (!r->dl) {
+        gks_free(r);
+        return NULL;
     }
+    rt_render_options_default(&r->opts);
     return r;
 }
 
@@ -155,14 +152,11 @@ ws_rt *ws_rt_new(void)
 static int ws_rt_sync(ws_rt *r)
 {
     if (r->queue) {
-        if (r->blk && r->blk->used) {
-            rt_serial_push(r->queue, r->blk);
-            r->blk = NULL;
-        }
+        ws_dlist_seal(r->dl); /* the chunk being filled to the queue */
         rt_serial_drain(r->queue);
+        ws_dlist_trim(r->dl); /* every chunk is in the scenes: freed */
         r->count -= r->wlost;
         r->wlost = 0;
-        r->aview = -1; /* the synchronous path may change the views' latest surfaces */
         r->wvr = NULL;
     }
     return atomic_exchange(&r->werr, 0);
@@ -175,8 +169,8 @@ static void queue_stop(ws_rt *r)
     rt_serial_free(r->queue);
     r->queue = NULL;
     r->qtried = 0;
-    gks_free(r->blk);
-    r->blk = NULL;
+    ws_dlist_reset(r->dl);
+    ws_dlist_set_sink(r->dl, NULL, NULL);
 }
 
 void ws_rt_reset(ws_rt *r)
@@ -197,6 +191,7 @@ void ws_rt_free(ws_rt *r)
     if (!r)
         return;
     ws_rt_reset(r);
+    ws_dlist_free(r->dl);
     gks_free(r);
 }
 
@@ -216,15 +211,6 @@ static rt_attr attr_of(const gks_prim *prim)
     a.props[0] = prim->area_props[0];
     a.props[1] = prim->area_props[1];
     return a;
-}
-
-/* a holds prim's attributes (attr_of(prim) compared with same_attr, without the copy) */
-static int attr_is(const rt_attr *a, const gks_prim *prim)
-{
-    return a->colour.red == prim->colour.red && a->colour.green == prim->colour.green &&
-           a->colour.blue == prim->colour.blue && a->refl_eq[0] == prim->refl_eq[0] &&
-           a->refl_eq[1] == prim->refl_eq[1] && a->light_mask == prim->light_mask &&
-           memcmp(a->props, prim->area_props, sizeof a->props) == 0;
 }
 
 static int same_attr(const rt_attr *a, const rt_attr *b)
@@ -782,43 +768,45 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 
 /* ---- asynchronous recording ---------------------------------------------------------- */
 
-static size_t rec_pad(size_t n) { return (n + 7) & ~(size_t)7; }
-
-/* The worker's side: the records of block item into the views' scenes. rt_serial runs the
- * blocks one at a time in queue order, so the scenes get the areas in call order, with the
- * surfaces the synchronous path would have made. */
+/* The worker's side: the records of a sealed chunk of the display list into the views'
+ * scenes, then the chunk released. rt_serial runs the chunks one at a time in queue order, so
+ * the scenes get the areas in call order, with the surfaces the synchronous path would have
+ * made (view_surfaces makes new ones only when the attributes differ from the view's latest). */
 static void rec_run(void *user, void *item)
 {
     ws_rt *r = user;
-    rec_block *b = item;
-    size_t off = 0;
-    while (off < b->used) {
-        const rec_head *h = (const rec_head *)(const void *)(b->data + off);
-        off += sizeof *h;
+    ws_dl_chunk *c = item;
+    size_t attr = SIZE_MAX;
+    int view = -1;
+    for (size_t k = 0; k < c->n_rec; k++) {
+        const ws_dl_rec *h = &c->rec[k];
         int e = 0;
-        if (h->kind == REC_ATTR) {
+        if (h->attr != attr || h->view != view) {
             rt_attr a;
-            memcpy(&a, b->data + off, sizeof a);
-            off += rec_pad(sizeof a);
-            e = view_surfaces(r, h->vi, &a, &r->wvr);
-        } else {
-            const int *counts = (const int *)(const void *)(b->data + off);
-            off += rec_pad((size_t)h->n_loops * sizeof(int));
-            const double *xyz = (const double *)(const void *)(b->data + off);
-            off += (size_t)h->n_pts * 3 * sizeof(double);
-            rt_view_rec *vr = r->wvr;
-            int id = vr ? rt_scene_add_polygon(vr->sc, h->n_loops, counts, xyz, vr->f, vr->b)
-                        : RT_ERR_NOMEM;
-            if (id < 0) {
-                e = gks_err_of_rt(id);
-                r->wlost++;
-            }
+            memcpy(&a, c->attr + h->attr, sizeof a);
+            attr = h->attr;
+            view = h->view;
+            e = view_surfaces(r, view, &a, &r->wvr);
+        }
+        rt_view_rec *vr = r->wvr;
+        int id = vr ? rt_scene_add_polygon(vr->sc, h->n_loops, c->cnt + h->cnt,
+                                           c->xyz + 3 * h->vtx, vr->f, vr->b)
+                    : RT_ERR_NOMEM;
+        if (id < 0) {
+            e = e ? e : gks_err_of_rt(id);
+            r->wlost++;
         }
         int none = 0;
         if (e)
             atomic_compare_exchange_strong(&r->werr, &none, e);
     }
-    gks_free(b);
+    ws_dlist_release(c);
+}
+
+/* The display list's sink: a sealed chunk to the worker. */
+static void queue_chunk(void *user, ws_dl_chunk *c)
+{
+    rt_serial_push(((ws_rt *)user)->queue, c);
 }
 
 /* The queue of the asynchronous recording, started at the first area (rt_serial_new once:
@@ -828,6 +816,8 @@ static rt_serial *queue_of(ws_rt *r)
     if (!r->queue && !r->qtried) {
         r->qtried = 1;
         r->queue = rt_serial_new(r->opts.threads, rec_run, r);
+        if (r->queue)
+            ws_dlist_set_sink(r->dl, queue_chunk, r);
     }
     return r->queue;
 }
@@ -887,50 +877,30 @@ static double queue_points(const gks_prim *prim, const double (*ori)[4], int *co
     return big;
 }
 
-/* The asynchronous path of a FILL AREA (SET) without vertex data: its loops of 3 or more
- * points go to VRC3 here, on the caller's thread, into the block being filled; a full block
- * goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records it
- * synchronously, which also drops what this path would drop) or 300. */
+/* The asynchronous path of a FILL AREA (SET) without vertex data: a record of the display
+ * list with its loops of 3 or more points in VRC3, computed here on the caller's thread; a
+ * sealed chunk goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records
+ * it synchronously, which also drops what this path would drop) or 300. */
 static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
     int nl;
     size_t np;
     if (!queue_of(r) || !queue_countable(prim, &nl, &np))
         return 0;
-    const size_t attr_bytes = sizeof(rec_head) + rec_pad(sizeof(rt_attr));
-    const size_t cbytes = rec_pad((size_t)nl * sizeof(int));
-    if (np > REC_BLOCK_BYTES / 24 || sizeof(rec_head) + cbytes + 24 * np + attr_bytes > REC_BLOCK_BYTES)
+    if (np > QUEUE_MAX_POINTS)
         return 0; /* a large area: synchronous */
-    const size_t need = sizeof(rec_head) + cbytes + 24 * np;
     const int vi = clamp_view(prim->view_ind);
-    const int new_attr = r->aview != vi || !attr_is(&r->alast, prim);
-    const size_t abytes = new_attr ? attr_bytes : 0;
-    if (r->blk && r->blk->used + abytes + need > REC_BLOCK_BYTES) {
-        rt_serial_push(r->queue, r->blk);
-        r->blk = NULL;
-    }
-    if (!r->blk) {
-        r->blk = gks_alloc_array(1, sizeof *r->blk);
-        if (!r->blk)
-            return 300;
-        r->blk->used = 0;
-    }
-    unsigned char *at = r->blk->data + r->blk->used;
-    rec_head *h = (rec_head *)(void *)(at + abytes);
-    int *counts = (int *)(void *)(h + 1);
-    double *xyz = (double *)(void *)((unsigned char *)counts + cbytes);
+    const rt_attr a = attr_of(prim);
+    const ws_dl_need need = { .n_vtx = np, .n_loops = nl };
+    ws_dl_put put;
+    if (ws_dlist_append(r->dl, DL_POLY, vi, &a, sizeof a, &need, &put))
+        return 300;
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
     /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
-    if (queue_points(prim, ori, counts, xyz) > RT_COORD_MAX)
+    if (queue_points(prim, ori, put.loops, put.xyz) > RT_COORD_MAX) {
+        ws_dlist_unappend(r->dl);
         return 0; /* beyond the tracer's range: the synchronous path clips it */
-    if (new_attr) {
-        *(rec_head *)(void *)at = (rec_head){ REC_ATTR, vi, 0, 0 };
-        r->alast = attr_of(prim);
-        memcpy(at + sizeof(rec_head), &r->alast, sizeof r->alast);
-        r->aview = vi;
     }
-    *h = (rec_head){ REC_POLY, vi, nl, (int)np };
-    r->blk->used += abytes + need;
     r->count++;
     return 1;
 }
