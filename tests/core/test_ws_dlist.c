@@ -97,6 +97,18 @@ static void test_records_and_attributes(void **state)
     assert_memory_equal(c->attr + c->rec[2].attr, &b, sizeof b);
     assert_memory_equal(c->attr + c->rec[3].attr, &a, sizeof a);
     assert_int_equal(c->n_attr, 3 * ((sizeof a + 7) / 8 * 8));
+    assert_int_equal(c->rec[0].data_size, 0);
+    /* own data does not break the sharing of attributes */
+    ws_dl_put p;
+    const ws_dl_need nd = { .n_vtx = 1, .data_size = 4 };
+    assert_int_equal(ws_dlist_append(dl, 8, 5, &a, sizeof a, &nd, &p), 0);
+    memcpy(p.data, "abc", 4);
+    assert_int_equal(ws_dlist_append(dl, 8, 5, &a, sizeof a, &nd, &p), 0);
+    memcpy(p.data, "xyz", 4);
+    assert_int_equal(c->rec[4].attr, c->rec[5].attr);
+    assert_int_not_equal(c->rec[4].data, c->rec[5].data);
+    assert_string_equal((const char *)c->attr + c->rec[4].data, "abc");
+    assert_string_equal((const char *)c->attr + c->rec[5].data, "xyz");
     /* a new frame */
     ws_dlist_reset(dl);
     assert_null(ws_dlist_first(dl));
@@ -115,7 +127,8 @@ static void test_mesh(void **state)
     const attr a = { { 1, 1, 1 }, 0 };
     ws_dl_put p;
     const ws_dl_need need = { .n_vtx = 4, .flags = WS_DL_NORMALS | WS_DL_COLOURS,
-                              .n_facets = 2, .n_loops = 2, .n_idx = 6 };
+                              .n_facets = 2, .n_loops = 2, .n_idx = 6,
+                              .data_size = sizeof(double) + 1 };
     assert_int_equal(add_poly(dl, 1, &a, 3, 0), 0); /* without data before it */
     assert_int_equal(ws_dlist_append(dl, 9, 1, &a, sizeof a, &need, &p), 0);
     assert_non_null(p.nrm);
@@ -126,6 +139,10 @@ static void test_mesh(void **state)
         p.nrm[i] = 100 + i;
         p.rgb[i] = 200 + i;
     }
+    assert_non_null(p.data);
+    const double key = 0.125;
+    memcpy(p.data, &key, sizeof key);
+    ((unsigned char *)p.data)[sizeof key] = 77;
     p.facets[0] = p.facets[1] = 1;
     p.loops[0] = p.loops[1] = 3;
     const uint32_t ix[6] = { 0, 1, 2, 0, 2, 3 };
@@ -139,12 +156,18 @@ static void test_mesh(void **state)
     assert_int_equal(r->flags, WS_DL_NORMALS | WS_DL_COLOURS);
     assert_int_equal(r->n_idx, 6);
     assert_memory_equal(c->idx + r->idx, ix, sizeof ix);
+    /* the record's own data, aligned, after its attributes */
+    assert_int_equal(r->data_size, sizeof(double) + 1);
+    assert_int_equal(r->data % 8, 0);
+    assert_true(r->data >= r->attr + sizeof a);
+    assert_memory_equal(c->attr + r->data, &key, sizeof key);
+    assert_int_equal(c->attr[r->data + sizeof key], 77);
     assert_int_equal(c->cnt[r->cnt], 1);
     assert_int_equal(c->cnt[r->cnt + 2], 3);
     for (int i = 0; i < 12; i++) {
-        assert_true(c->xyz[3 * r->vtx + (size_t)i] == i);
-        assert_true(c->nrm[3 * r->nrm + (size_t)i] == 100 + i);
-        assert_true(c->rgb[3 * r->rgb + (size_t)i] == 200 + i);
+        assert_true(c->xyz[3 * (size_t)r->vtx + (size_t)i] == i);
+        assert_true(c->nrm[3 * (size_t)r->nrm + (size_t)i] == 100 + i);
+        assert_true(c->rgb[3 * (size_t)r->rgb + (size_t)i] == 200 + i);
     }
     check_poly(c0, &c0->rec[0], 3, 0); /* untouched */
     assert_true(c->cap[2] >= 8192 && c->cap[3] >= 8192 && c->cap[5] >= 16384);

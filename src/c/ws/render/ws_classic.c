@@ -4,17 +4,22 @@
  * types): primitives through the view pipeline into the raster module, and the classic
  * HLHSR modes (see ws_classic.h).
  *
- * Every primitive becomes one record of the frame list: its DC points after clipping
- * (fill loops, then edge pieces), counts, colour and an attribute entry (consecutive
- * records with equal attributes share one). Primitives drawn at once are built the same
- * way, drawn and popped again, so there is one path from gks_prim to pixels. Long
- * polylines and marker lists are processed in chunks of CHUNK points so that drawing at
- * once needs O(CHUNK) memory whatever the point count.
+ * Every primitive is built as one record in scratch arrays: its DC points after clipping
+ * (fill loops, then edge pieces), counts, colour and attributes (with their floats:
+ * pattern, cell colours, per-vertex attributes of smooth areas). A primitive drawn at once
+ * is drawn from the scratch and dropped; a retained one is copied into the frame's display
+ * list (ws_dlist.h: DC points as its vertices, counts as its loops, attributes and floats as
+ * its attributes, shared by equal consecutive records, the rec as its own data), from which
+ * UPDATE draws it. So there is one path from gks_prim to pixels, and the retained data is
+ * the list's. Long polylines and marker lists are processed in chunks of CHUNK points so
+ * that drawing at once needs O(CHUNK) memory whatever the point count.
  */
 #include "ws_classic.h"
+#include "ws_dlist.h"
 #include "ws_shade.h"
 #include "gks_alloc.h"
 #include "gks_xform.h"
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -46,7 +51,8 @@ typedef struct rattr {
 /* One primitive of the frame. Points from pt: area: fill loops, then edge pieces; cell:
  * o, pu, pv, then the clipped loops; line: pieces; marker: chunks of centres. Counts
  * from cnt: n_fill loops / pieces / chunks, then n_edge edge pieces. A negative piece
- * count marks a piece continuing the previous one (a chunk boundary inside a piece). */
+ * count marks a piece continuing the previous one (a chunk boundary inside a piece).
+ * pt, cnt, attr index the scratch arrays while it is built (MARK: attr is the id). */
 typedef struct rec {
     unsigned char kind, overlay;
     unsigned char outlined;  /* area: the boundary pieces were built (n_edge of them) */
@@ -56,6 +62,21 @@ typedef struct rec {
     size_t pt, cnt, attr;
     int n_fill, n_edge;
 } rec;
+
+/* A record with its data, in the scratch arrays or in the display list. */
+typedef struct rref {
+    rec rc;
+    const rattr *a;          /* NULL for MARK */
+    const gks_raster_pt *pts;
+    const int *cnt;
+    const float *fl;         /* a->fl counts from here */
+} rref;
+
+/* A record of the display list (compose and walk index the frame's records by these). */
+typedef struct dref {
+    const ws_dl_chunk *c;
+    const ws_dl_rec *d;
+} dref;
 
 /* The view pipeline of one view index, valid while the inputs it was made from (view
  * representation, workstation window and viewport) are unchanged. */
@@ -69,8 +90,10 @@ typedef struct view_cache {
 } view_cache;
 
 struct ws_classic {
-    rec *recs;
-    size_t n_rec, cap_rec;
+    ws_dlist *dl;          /* the retained records of the frame */
+    dref *refs;            /* compose, walk: the list's records, in order */
+    size_t cap_refs;
+    /* scratch of the record being built */
     rattr *attrs;
     size_t n_attr, cap_attr;
     gks_raster_pt *pts;
@@ -79,7 +102,6 @@ struct ws_classic {
     size_t n_cnt, cap_cnt;
     float *fl;
     size_t n_fl, cap_fl;
-    size_t n_retained;
     /* scratch of the clipping stage */
     double (*h)[4], (*out)[4];
     size_t cap_h, cap_out;
@@ -109,8 +131,14 @@ struct ws_classic {
 ws_classic *ws_classic_new(void)
 {
     ws_classic *r = gks_calloc_array(1, sizeof(ws_classic));
-    if (r)
-        r->px_per_dc = r->px_per_unit = 1.0;
+    if (!r)
+        return NULL;
+    r->dl = ws_dlist_new();
+    if (!r->dl) {
+        gks_free(r);
+        return NULL;
+    }
+    r->px_per_dc = r->px_per_unit = 1.0;
     return r;
 }
 
@@ -130,7 +158,8 @@ void ws_classic_free(ws_classic *r)
 {
     if (!r)
         return;
-    gks_free(r->recs);
+    ws_dlist_free(r->dl);
+    gks_free(r->refs);
     gks_free(r->attrs);
     gks_free(r->pts);
     gks_free(r->cnts);
@@ -150,14 +179,15 @@ void ws_classic_free(ws_classic *r)
 
 void ws_classic_reset(ws_classic *r)
 {
-    r->n_rec = r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_retained = r->n_ctx = 0;
+    ws_dlist_reset(r->dl);
+    r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_ctx = 0;
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
         r->views[v].valid = 0;
 }
 
 size_t ws_classic_retained(const ws_classic *r)
 {
-    return r->n_retained;
+    return ws_dlist_count(r->dl);
 }
 
 /* --- view pipeline ---------------------------------------------------------------------- */
@@ -257,11 +287,19 @@ typedef struct build {
     const view_cache *v;
     gks_raster_fb *fb;        /* non-NULL: draw each chunk at once, then drop it */
     const gks_ws *ws;
+    int vi;                   /* the primitive's view index */
     gks_raster_stroke st;     /* stroke state across chunks drawn at once */
 } build;
 
-static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int zmode_kind,
+static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rref *x, int zmode_kind,
                     gks_raster_stroke *st);
+
+/* Record rc in the scratch arrays, resolved. */
+static rref scratch_ref(const ws_classic *r, const rec *rc)
+{
+    return (rref){ .rc = *rc, .a = &r->attrs[rc->attr], .pts = r->pts + rc->pt,
+                   .cnt = r->cnts + rc->cnt, .fl = r->fl };
+}
 
 /* Appends an attribute entry unless equal to the last one; sets *idx. */
 static int attr_push(ws_classic *r, const rattr *a, size_t *idx)
@@ -362,7 +400,8 @@ static int chunk_draw(build *b, rec *rc, size_t pt0, size_t cnt0)
     t.pt = pt0;
     t.cnt = cnt0;
     t.n_fill = (int)(r->n_cnt - cnt0);
-    int de = draw_rec(r, b->fb, &t, immediate_mode(b->ws), &b->st);
+    const rref x = scratch_ref(r, &t);
+    int de = draw_rec(r, b->fb, &x, immediate_mode(b->ws), &b->st);
     r->n_pt = pt0;
     r->n_cnt = cnt0;
     rc->n_fill = 0;
@@ -564,32 +603,63 @@ static int add_loops(build *b, const Gpoint3 *ndc, int n_loops, const int *lc,
     return 300;
 }
 
-/* Pushes the finished record; draws and pops it when it is not retained. */
+/* The finished record rc (scratch from pt0, cnt0, fl0) into the display list: its DC
+ * points as vertices, its counts as loops, its attributes with their floats (a->fl counted
+ * from the first of them) as attributes, rc as its own data. 0 or 300. */
+static int rec_retain(build *b, const rec *rc, size_t pt0, size_t cnt0, size_t fl0)
+{
+    ws_classic *r = b->r;
+    const size_t n_fl = r->n_fl - fl0, asz = sizeof(rattr) + n_fl * sizeof(float);
+    const size_t n_cnt = r->n_cnt - cnt0;
+    if (n_fl > SIZE_MAX / sizeof(float) - sizeof(rattr) || n_cnt > INT32_MAX)
+        return 300;
+    rattr a = r->attrs[rc->attr];
+    a.fl = a.fl >= fl0 ? a.fl - fl0 : 0;
+    /* attributes and floats as one block (the list compares and copies it whole) */
+    unsigned char sblk[sizeof(rattr) + 64 * sizeof(float)];
+    unsigned char *blk = asz <= sizeof sblk ? sblk : gks_alloc_array(1, asz);
+    if (!blk)
+        return 300;
+    memcpy(blk, &a, sizeof a);
+    if (n_fl)
+        memcpy(blk + sizeof a, r->fl + fl0, n_fl * sizeof(float));
+    const ws_dl_need need = { .n_vtx = r->n_pt - pt0, .n_loops = (int)n_cnt,
+                              .data_size = sizeof *rc };
+    ws_dl_put put;
+    int e = ws_dlist_append(r->dl, rc->kind, b->vi, blk, asz, &need, &put);
+    if (blk != sblk)
+        gks_free(blk);
+    if (e)
+        return e;
+    memcpy(put.data, rc, sizeof *rc);
+    if (need.n_vtx)
+        memcpy(put.xyz, r->pts + pt0, need.n_vtx * sizeof *r->pts);
+    if (n_cnt)
+        memcpy(put.loops, r->cnts + cnt0, n_cnt * sizeof *r->cnts);
+    return 0;
+}
+
+/* The finished record: retained into the display list, or drawn at once; the scratch
+ * dropped either way. */
 static int rec_finish(build *b, rec *rc, size_t pt0, size_t cnt0, size_t attr0, size_t fl0,
                       int retain)
 {
     ws_classic *r = b->r;
+    int e = 0;
     if (rc->n_fill + rc->n_edge == 0) {
-        r->n_pt = pt0;
-        r->n_cnt = cnt0;
-        r->n_attr = attr0;
-        r->n_fl = fl0;
-        return 0;
+        /* nothing visible */
+    } else if (retain) {
+        e = rec_retain(b, rc, pt0, cnt0, fl0);
+    } else {
+        gks_raster_stroke st = { 0 };
+        const rref x = scratch_ref(r, rc);
+        e = draw_rec(r, b->fb, &x, immediate_mode(b->ws), &st);
     }
-    if (retain) {
-        if (GROW(r, recs, cap_rec, r->n_rec + 1))
-            return 300;
-        r->recs[r->n_rec++] = *rc;
-        r->n_retained++;
-        return 0;
-    }
-    gks_raster_stroke st = { 0 };
-    int de = draw_rec(r, b->fb, rc, immediate_mode(b->ws), &st);
     r->n_pt = pt0;
     r->n_cnt = cnt0;
     r->n_attr = attr0;
     r->n_fl = fl0;
-    return de;
+    return e;
 }
 
 /* 1 if the n points (DC) form a strictly convex loop (either orientation) */
@@ -1043,7 +1113,7 @@ int ws_classic_prim(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, const gk
     int mode = ws->hlhsr_mode;
     int retain = r->keep || prim->attrs.hlhsr_id != 0 || mode == GHLHSR_HIDDEN_LINE ||
                  mode == GHLHSR_PAINTER;
-    build b = { .r = r, .v = v, .fb = fb, .ws = ws };
+    build b = { .r = r, .v = v, .fb = fb, .ws = ws, .vi = prim->view_ind };
     size_t n_pt = r->n_pt, n_cnt = r->n_cnt, n_attr = r->n_attr, n_fl = r->n_fl;
     int e = 0;
     switch (prim->kind) {
@@ -1113,7 +1183,7 @@ static int draw_markers(gks_raster_fb *fb, const gks_raster_pt *pts, const int *
 /* A smooth area's one loop of n points (STYLE_SMOOTH: per-vertex attributes at r->fl +
  * a->fl, a->nx floats each, the last 1/w; a->ny the shading context of a per-sample shaded
  * one, or -1). 0 or 300. */
-static int draw_smooth(ws_classic *r, gks_raster_fb *fb, const rattr *a,
+static int draw_smooth(ws_classic *r, gks_raster_fb *fb, const rattr *a, const float *fl,
                        const gks_raster_pt *pts, int n, gks_raster_zmode zm)
 {
     const int per = a->nx, nat = per - 1;
@@ -1125,7 +1195,7 @@ static int draw_smooth(ws_classic *r, gks_raster_fb *fb, const rattr *a,
         gks_free(at);
         return 300;
     }
-    const float *src = r->fl + a->fl;
+    const float *src = fl + a->fl;
     for (int i = 0; i < n; i++) {
         memcpy(at + (size_t)i * (size_t)nat, src + (size_t)i * (size_t)per,
                (size_t)nat * sizeof *at);
@@ -1144,9 +1214,10 @@ static int draw_smooth(ws_classic *r, gks_raster_fb *fb, const rattr *a,
 
 /* An area record's interior in its style (HOLLOW and SMOOTH as SOLID; everything SOLID in
  * DRAW_HL_AREAS). */
-static int draw_fill(ws_classic *r, gks_raster_fb *fb, const rec *rc, const rattr *a,
-                     const gks_raster_pt *pts, const int *cnt, int how, gks_raster_zmode zm)
+static int draw_fill(gks_raster_fb *fb, const rref *x, int how, gks_raster_zmode zm)
 {
+    const rec *rc = &x->rc;
+    const rattr *a = x->a;
     gks_raster_fill f = { .style = a->style == STYLE_HOLLOW || a->style == STYLE_SMOOTH
                                        ? GKS_RASTER_SOLID
                                        : (gks_raster_style)a->style,
@@ -1157,12 +1228,12 @@ static int draw_fill(ws_classic *r, gks_raster_fb *fb, const rec *rc, const ratt
     if (f.style == GKS_RASTER_PATTERN) {
         f.pat_nx = a->nx;
         f.pat_ny = a->ny;
-        f.pat_rgb = r->fl + a->fl;
+        f.pat_rgb = x->fl + a->fl;
         memcpy(f.pat_ref, a->geo, 2 * sizeof(double));
         memcpy(f.pat_u, a->geo + 2, 2 * sizeof(double));
         memcpy(f.pat_v, a->geo + 4, 2 * sizeof(double));
     }
-    return nomem(0, gks_raster_fill_area(fb, rc->n_fill, cnt, pts, &f));
+    return nomem(0, gks_raster_fill_area(fb, rc->n_fill, x->cnt, x->pts, &f));
 }
 
 /* An area record's lines after its interior: in DRAW_HL_LINES a record retained before the
@@ -1204,19 +1275,20 @@ static int draw_area_lines(gks_raster_fb *fb, const rec *rc, const rattr *a,
 /* Draws a record. how: DRAW_PLAIN (no depth), DRAW_ZTEST (depth test; edges of areas
  * with the slope bias), DRAW_HL_AREAS (areas into the depth buffer only, nothing else),
  * DRAW_HL_LINES (everything but area interiors, depth-tested; areas as outlines). */
-static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int how,
+static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rref *x, int how,
                     gks_raster_stroke *st)
 {
-    const rattr *a = &r->attrs[rc->attr];
-    const gks_raster_pt *pts = r->pts + rc->pt;
-    const int *cnt = r->cnts + rc->cnt;
+    const rec *rc = &x->rc;
+    if (rc->kind == REC_MARK) /* the back end draws it */
+        return 0;
+    const rattr *a = x->a;
+    const gks_raster_pt *pts = x->pts;
+    const int *cnt = x->cnt;
     gks_raster_zmode zm = how == DRAW_PLAIN ? GKS_RASTER_Z_NONE
                           : how == DRAW_HL_AREAS ? GKS_RASTER_Z_ONLY : GKS_RASTER_Z_TEST;
     gks_raster_line la = { .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] }, .width = a->width,
                            .type = a->linetype, .zmode = zm,
                            .zbias = how == DRAW_HL_LINES ? rc->zbias : 0.0f };
-    if (rc->kind == REC_MARK) /* the back end draws it */
-        return 0;
     if (how == DRAW_HL_AREAS && rc->kind != REC_AREA) /* areas only */
         return 0;
     if (rc->kind == REC_LINE)
@@ -1226,7 +1298,7 @@ static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int how,
     if (rc->kind == REC_CELL) {
         gks_raster_fill f = { .zmode = zm };
         return nomem(0, gks_raster_cell_array_clipped(fb, &pts[0], &pts[1], &pts[2], a->nx,
-                                                      a->ny, r->fl + a->fl, &f, rc->n_fill,
+                                                      a->ny, x->fl + a->fl, &f, rc->n_fill,
                                                       cnt, pts + 3));
     }
     /* area: interior, then boundary (HOLLOW) and edges */
@@ -1236,9 +1308,9 @@ static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rec *rc, int how,
     int outline = how == DRAW_HL_LINES, e = 0;
     if (rc->n_fill == 1 && !outline && a->style == STYLE_SMOOTH && how != DRAW_HL_AREAS &&
         cnt[0] >= 3)
-        e = draw_smooth(r, fb, a, pts, cnt[0], zm);
+        e = draw_smooth(r, fb, a, x->fl, pts, cnt[0], zm);
     else if (rc->n_fill && !outline && (a->style != STYLE_HOLLOW || how == DRAW_HL_AREAS))
-        e = draw_fill(r, fb, rc, a, pts, cnt, how, zm);
+        e = draw_fill(fb, x, how, zm);
     if (how == DRAW_HL_AREAS)
         return e;
     return first_err(e, draw_area_lines(fb, rc, a, pts, cnt, n_fill_pts, outline, zm, &la));
@@ -1252,6 +1324,52 @@ static int cmp_key(const void *pa, const void *pb)
     if (a->key != b->key)
         return a->key < b->key ? -1 : 1;
     return (a->idx > b->idx) - (a->idx < b->idx);
+}
+
+/* The display list's records into r->refs, in order; their number, or -1 (300). */
+static long refs_build(ws_classic *r)
+{
+    const size_t n = ws_dlist_count(r->dl);
+    if (n > LONG_MAX || GROW(r, refs, cap_refs, n))
+        return -1;
+    size_t i = 0;
+    for (const ws_dl_chunk *c = ws_dlist_first(r->dl); c; c = c->next)
+        for (size_t k = 0; k < c->n_rec; k++)
+            r->refs[i++] = (dref){ c, &c->rec[k] };
+    return (long)i;
+}
+
+/* Record i of r->refs with its data. */
+static rref ref_at(const ws_classic *r, size_t i)
+{
+    const ws_dl_chunk *c = r->refs[i].c;
+    const ws_dl_rec *d = r->refs[i].d;
+    rref x;
+    memcpy(&x.rc, c->attr + d->data, sizeof x.rc);
+    x.a = d->attr_size ? (const rattr *)(const void *)(c->attr + d->attr) : NULL;
+    x.fl = (const float *)(const void *)(c->attr + d->attr + sizeof(rattr));
+    x.pts = (const gks_raster_pt *)(const void *)(c->xyz + 3 * (size_t)d->vtx);
+    x.cnt = c->cnt + d->cnt + d->n_facets;
+    return x;
+}
+
+/* Painter's order of the n_rec records of r->refs that are not overlays: by key (mean DC
+ * depth, farthest first), ties in the order of arrival. Returns the sorted entries (caller
+ * frees) and their number in *m, or NULL (300). */
+static key_idx *painter_order(const ws_classic *r, size_t n_rec, size_t *m)
+{
+    key_idx *ki = gks_alloc_array(n_rec, sizeof *ki);
+    if (!ki)
+        return NULL;
+    size_t n = 0;
+    for (size_t i = 0; i < n_rec; i++) {
+        const rref x = ref_at(r, i);
+        if (!x.rc.overlay)
+            ki[n++] = (key_idx){ isfinite(x.rc.key) ? x.rc.key : 0.0, i };
+    }
+    qsort(ki, n, sizeof *ki, cmp_key);
+    *m = n;
+    return ki;
 }
 
 static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
@@ -1273,8 +1391,14 @@ static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
                    int overlays)
 {
     *out = fb;
-    if (r->n_rec == 0)
+    if (ws_dlist_count(r->dl) == 0)
         return 0;
+    const long nr = refs_build(r);
+    if (nr < 0) {
+        *out = NULL;
+        return 300;
+    }
+    const size_t n_rec = (size_t)nr;
     gks_raster_fb *c = r->composed;
     if (!c || c->width != fb->width || c->height != fb->height || c->ss != fb->ss) {
         gks_raster_fb_free(c);
@@ -1288,42 +1412,41 @@ static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
     memcpy(c->rgb, fb->rgb, 3 * ns * sizeof *c->rgb);
     memcpy(c->z, fb->z, ns * sizeof *c->z);
     int mode = ws->hlhsr_mode, e = 0; /* the first storage failure: the picture lacks it */
-    size_t n = 0;
-    key_idx *ki = NULL;
     if (mode == GHLHSR_PAINTER) {
-        ki = gks_alloc_array(r->n_rec, sizeof *ki);
+        size_t n;
+        key_idx *ki = painter_order(r, n_rec, &n);
         if (!ki) {
             *out = NULL;
             return 300;
         }
-        for (size_t i = 0; i < r->n_rec; i++)
-            if (!r->recs[i].overlay)
-                ki[n++] = (key_idx){ isfinite(r->recs[i].key) ? r->recs[i].key : 0.0, i };
-        qsort(ki, n, sizeof *ki, cmp_key);
         for (size_t i = 0; i < n; i++) {
             gks_raster_stroke st = { 0 };
-            e = first_err(e, draw_rec(r, c, &r->recs[ki[i].idx], DRAW_PLAIN, &st));
+            const rref x = ref_at(r, ki[i].idx);
+            e = first_err(e, draw_rec(r, c, &x, DRAW_PLAIN, &st));
         }
         gks_free(ki);
     } else if (mode == GHLHSR_HIDDEN_LINE) {
         for (int pass = 0; pass < 2; pass++)
-            for (size_t i = 0; i < r->n_rec; i++) {
+            for (size_t i = 0; i < n_rec; i++) {
                 gks_raster_stroke st = { 0 };
-                if (!r->recs[i].overlay)
-                    e = first_err(e, draw_rec(r, c, &r->recs[i],
-                                              pass ? DRAW_HL_LINES : DRAW_HL_AREAS, &st));
+                const rref x = ref_at(r, i);
+                if (!x.rc.overlay)
+                    e = first_err(e, draw_rec(r, c, &x, pass ? DRAW_HL_LINES : DRAW_HL_AREAS,
+                                              &st));
             }
     } else { /* retained under another mode, the mode changed within the frame */
-        for (size_t i = 0; i < r->n_rec; i++) {
+        for (size_t i = 0; i < n_rec; i++) {
             gks_raster_stroke st = { 0 };
-            if (!r->recs[i].overlay)
-                e = first_err(e, draw_rec(r, c, &r->recs[i], immediate_mode(ws), &st));
+            const rref x = ref_at(r, i);
+            if (!x.rc.overlay)
+                e = first_err(e, draw_rec(r, c, &x, immediate_mode(ws), &st));
         }
     }
-    for (size_t i = 0; i < r->n_rec && overlays; i++) {
+    for (size_t i = 0; i < n_rec && overlays; i++) {
         gks_raster_stroke st = { 0 };
-        if (r->recs[i].overlay)
-            e = first_err(e, draw_rec(r, c, &r->recs[i], DRAW_PLAIN, &st));
+        const rref x = ref_at(r, i);
+        if (x.rc.overlay)
+            e = first_err(e, draw_rec(r, c, &x, DRAW_PLAIN, &st));
     }
     *out = c;
     return e;
@@ -1341,11 +1464,12 @@ int ws_classic_keep(ws_classic *r, const gks_ws *ws, const gks_prim *prim)
 
 int ws_classic_keep_mark(ws_classic *r, size_t id, double key, int overlay)
 {
-    if (GROW(r, recs, cap_rec, r->n_rec + 1))
+    const rec rc = { .kind = REC_MARK, .overlay = overlay != 0, .key = key, .attr = id };
+    const ws_dl_need need = { .data_size = sizeof rc };
+    ws_dl_put put;
+    if (ws_dlist_append(r->dl, REC_MARK, 0, NULL, 0, &need, &put))
         return 300;
-    r->recs[r->n_rec++] = (rec){ .kind = REC_MARK, .overlay = overlay != 0, .key = key,
-                                 .attr = id };
-    r->n_retained++;
+    memcpy(put.data, &rc, sizeof rc);
     return 0;
 }
 
@@ -1469,12 +1593,13 @@ static void line_item(ws_render_item *it, const ws_classic *r, const float rgb[3
 
 /* One record as items, in the order and with the choices of draw_rec; hl: the lines pass
  * of hidden-line mode (w->depth set). */
-static int emit_rec(walk *w, const rec *rc, int hl)
+static int emit_rec(walk *w, const rref *x, int hl)
 {
     ws_classic *r = w->r;
-    const rattr *a = &r->attrs[rc->attr];
-    const gks_raster_pt *pts = r->pts + rc->pt;
-    const int *cnt = r->cnts + rc->cnt;
+    const rec *rc = &x->rc;
+    const rattr *a = x->a;
+    const gks_raster_pt *pts = x->pts;
+    const int *cnt = x->cnt;
     const gks_raster_fb *depth = w->depth;
     if (!hl)
         w->depth = NULL;
@@ -1528,7 +1653,7 @@ static int emit_rec(walk *w, const rec *rc, int hl)
         it.cell_v = pts[2];
         it.nx = a->nx;
         it.ny = a->ny;
-        it.rgb_list = r->fl + a->fl;
+        it.rgb_list = x->fl + a->fl;
         it.n_loops = rc->n_fill;
         it.counts = cnt;
         it.pts = pts + 3;
@@ -1547,7 +1672,7 @@ static int emit_rec(walk *w, const rec *rc, int hl)
             if (a->style == GKS_RASTER_PATTERN) {
                 it.nx = a->nx;
                 it.ny = a->ny;
-                it.rgb_list = r->fl + a->fl;
+                it.rgb_list = x->fl + a->fl;
                 memcpy(it.pat_geo, a->geo, sizeof it.pat_geo);
             }
             it.n_loops = rc->n_fill;
@@ -1577,21 +1702,23 @@ static int emit_rec(walk *w, const rec *rc, int hl)
 int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_emit emit,
                        void *ctx)
 {
-    if (r->n_rec == 0)
+    if (ws_dlist_count(r->dl) == 0)
         return 0;
+    const long nr = refs_build(r);
+    if (nr < 0)
+        return 300;
+    const size_t n_rec = (size_t)nr;
     walk w = { .r = r, .emit = emit, .ctx = ctx };
     int e = 0;
     if (mode == GHLHSR_PAINTER) {
-        key_idx *ki = gks_alloc_array(r->n_rec, sizeof *ki);
+        size_t n;
+        key_idx *ki = painter_order(r, n_rec, &n);
         if (!ki)
             return 300;
-        size_t n = 0;
-        for (size_t i = 0; i < r->n_rec; i++)
-            if (!r->recs[i].overlay)
-                ki[n++] = (key_idx){ isfinite(r->recs[i].key) ? r->recs[i].key : 0.0, i };
-        qsort(ki, n, sizeof *ki, cmp_key);
-        for (size_t i = 0; i < n && !e; i++)
-            e = emit_rec(&w, &r->recs[ki[i].idx], 0);
+        for (size_t i = 0; i < n && !e; i++) {
+            const rref x = ref_at(r, ki[i].idx);
+            e = emit_rec(&w, &x, 0);
+        }
         gks_free(ki);
     } else if (mode == GHLHSR_HIDDEN_LINE) {
         gks_raster_fb *d = r->depth;
@@ -1602,23 +1729,30 @@ int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_em
                 return 300;
         }
         gks_raster_fb_clear(d, NULL);
-        for (size_t i = 0; i < r->n_rec; i++) {
+        for (size_t i = 0; i < n_rec; i++) {
             gks_raster_stroke st = { 0 };
-            if (!r->recs[i].overlay)
-                draw_rec(r, d, &r->recs[i], DRAW_HL_AREAS, &st);
+            const rref x = ref_at(r, i);
+            if (!x.rc.overlay)
+                draw_rec(r, d, &x, DRAW_HL_AREAS, &st);
         }
         w.depth = d;
-        for (size_t i = 0; i < r->n_rec && !e; i++)
-            if (!r->recs[i].overlay)
-                e = emit_rec(&w, &r->recs[i], 1);
+        for (size_t i = 0; i < n_rec && !e; i++) {
+            const rref x = ref_at(r, i);
+            if (!x.rc.overlay)
+                e = emit_rec(&w, &x, 1);
+        }
         w.depth = NULL;
     } else {
-        for (size_t i = 0; i < r->n_rec && !e; i++)
-            if (!r->recs[i].overlay)
-                e = emit_rec(&w, &r->recs[i], 0);
+        for (size_t i = 0; i < n_rec && !e; i++) {
+            const rref x = ref_at(r, i);
+            if (!x.rc.overlay)
+                e = emit_rec(&w, &x, 0);
+        }
     }
-    for (size_t i = 0; i < r->n_rec && !e; i++)
-        if (r->recs[i].overlay)
-            e = emit_rec(&w, &r->recs[i], 0);
+    for (size_t i = 0; i < n_rec && !e; i++) {
+        const rref x = ref_at(r, i);
+        if (x.rc.overlay)
+            e = emit_rec(&w, &x, 0);
+    }
     return e;
 }

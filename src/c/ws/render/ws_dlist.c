@@ -16,9 +16,10 @@ static const size_t elem[N_ARR] = { sizeof(ws_dl_rec), 3 * sizeof(double), 3 * s
                                     3 * sizeof(double), sizeof(int), sizeof(uint32_t), 1 };
 
 /* Capacities of a new chunk: records, vertices, normals, colours, counts, indices, attribute
- * bytes (about 300 KiB, the size of the blocks the tracer's recording queued before). The
+ * and data bytes (about 64 bytes per record: a renderer's own data per record fits). About
+ * 480 KiB, touched only as far as it is filled (a large block is mapped on first use). The
  * normals, colours and indices get room only once the frame has had a record with them. */
-static const size_t def_cap[N_ARR] = { 2048, 8192, 8192, 8192, 4096, 16384, 8192 };
+static const size_t def_cap[N_ARR] = { 2048, 8192, 8192, 8192, 4096, 16384, 131072 };
 
 struct ws_dlist {
     ws_dl_chunk *first, *cur;
@@ -91,8 +92,8 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
         const size_t d = a == A_NRM || a == A_RGB || a == A_IDX
                              ? ((dl->used_arr >> a) & 1u ? def_cap[a] : 0)
                              : def_cap[a];
-        cap[a] = want[a] > d ? want[a] : d;
-        if (cap[a] > (SIZE_MAX - 8) / elem[a])
+        cap[a] = want[a] > d ? want[a] : d; /* <= UINT32_MAX (need_of), offsets fit */
+        if (cap[a] > UINT32_MAX || cap[a] > (SIZE_MAX - 8) / elem[a])
             return 300;
         off[a] = total;
         const size_t bytes = round8(cap[a] * elem[a]);
@@ -150,8 +151,9 @@ void ws_dlist_trim(ws_dlist *dl)
 static int need_of(const ws_dl_need *need, size_t attr_size, size_t want[N_ARR])
 {
     if (need->n_facets < 0 || need->n_loops < 0 || need->n_facets > INT_MAX - need->n_loops ||
-        attr_size > SIZE_MAX - 8 ||
-        (need->n_idx && need->n_vtx > (size_t)UINT32_MAX + 1))
+        attr_size > UINT32_MAX / 4 || need->data_size > UINT32_MAX / 4 ||
+        need->n_vtx > UINT32_MAX || need->n_idx > UINT32_MAX ||
+        (size_t)need->n_facets + (size_t)need->n_loops > UINT32_MAX)
         return 300;
     want[A_REC] = 1;
     want[A_XYZ] = need->n_vtx;
@@ -159,7 +161,7 @@ static int need_of(const ws_dl_need *need, size_t attr_size, size_t want[N_ARR])
     want[A_RGB] = need->flags & WS_DL_COLOURS ? need->n_vtx : 0;
     want[A_CNT] = (size_t)need->n_facets + (size_t)need->n_loops;
     want[A_IDX] = need->n_idx;
-    want[A_ATTR] = round8(attr_size);
+    want[A_ATTR] = round8(attr_size) + round8(need->data_size);
     return 0;
 }
 
@@ -193,10 +195,11 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
             dl->used_arr |= 1u << a;
     ws_dl_chunk *c = dl->cur;
     int shared = c && !c->sealed && same_attr(c, attr, attr_size);
+    const size_t data_bytes = round8(need->data_size);
     if (shared)
-        want[A_ATTR] = 0;
+        want[A_ATTR] = data_bytes;
     if (!c || !fits(c, want)) {
-        want[A_ATTR] = round8(attr_size);
+        want[A_ATTR] = round8(attr_size) + data_bytes;
         shared = 0;
         if (chunk_new(dl, want))
             return 300;
@@ -208,12 +211,16 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
     ws_dl_rec *r = &c->rec[c->n_rec++];
     *r = (ws_dl_rec){ .kind = kind, .view = view, .flags = need->flags &
                       (WS_DL_NORMALS | WS_DL_COLOURS), .n_facets = need->n_facets,
-                      .n_loops = need->n_loops, .attr_size = attr_size, .vtx = c->n_xyz,
-                      .n_vtx = need->n_vtx, .nrm = c->n_nrm, .rgb = c->n_rgb, .cnt = c->n_cnt,
-                      .idx = c->n_idx, .n_idx = need->n_idx };
-    r->attr = shared ? c->rec[c->n_rec - 2].attr : c->n_attr;
+                      .n_loops = need->n_loops, .attr_size = (uint32_t)attr_size,
+                      .vtx = (uint32_t)c->n_xyz, .n_vtx = (uint32_t)need->n_vtx,
+                      .nrm = (uint32_t)c->n_nrm, .rgb = (uint32_t)c->n_rgb,
+                      .cnt = (uint32_t)c->n_cnt, .idx = (uint32_t)c->n_idx,
+                      .n_idx = (uint32_t)need->n_idx };
+    r->attr = shared ? c->rec[c->n_rec - 2].attr : (uint32_t)c->n_attr;
     if (!shared && attr_size)
         memcpy(c->attr + c->n_attr, attr, attr_size);
+    r->data = (uint32_t)(c->n_attr + want[A_ATTR] - data_bytes);
+    r->data_size = (uint32_t)need->data_size;
     c->n_attr += want[A_ATTR];
     c->n_xyz += want[A_XYZ];
     c->n_nrm += want[A_NRM];
@@ -221,12 +228,13 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
     c->n_cnt += want[A_CNT];
     c->n_idx += want[A_IDX];
     *put = (ws_dl_put){ .rec = r,
-                        .xyz = want[A_XYZ] ? c->xyz + 3 * r->vtx : NULL,
-                        .nrm = want[A_NRM] ? c->nrm + 3 * r->nrm : NULL,
-                        .rgb = want[A_RGB] ? c->rgb + 3 * r->rgb : NULL,
+                        .xyz = want[A_XYZ] ? c->xyz + 3 * (size_t)r->vtx : NULL,
+                        .nrm = want[A_NRM] ? c->nrm + 3 * (size_t)r->nrm : NULL,
+                        .rgb = want[A_RGB] ? c->rgb + 3 * (size_t)r->rgb : NULL,
                         .facets = need->n_facets ? c->cnt + r->cnt : NULL,
                         .loops = need->n_loops ? c->cnt + r->cnt + need->n_facets : NULL,
-                        .idx = want[A_IDX] ? c->idx + r->idx : NULL };
+                        .idx = want[A_IDX] ? c->idx + r->idx : NULL,
+                        .data = need->data_size ? c->attr + r->data : NULL };
     dl->n_rec++;
     return 0;
 }

@@ -6,7 +6,8 @@
  *
  * A record is one primitive: its kind and view index (the reader's), its attributes (bytes
  * the reader defines, copied into the list; consecutive records with equal attributes share
- * one copy), its vertices (3 doubles each, in the coordinates its renderer needs), optional
+ * one copy), its own data (bytes the reader defines that differ from record to record, such
+ * as a colour after shading or a depth sort key), its vertices (3 doubles each, in the coordinates its renderer needs), optional
  * per-vertex normals and colours (3 doubles each, one per vertex), counts (the facets' loop
  * numbers, then the loops' vertex numbers) and indices into the record's own vertices. A
  * FILL AREA SET is one facet whose loops take the vertices in order (no indices); a mesh
@@ -34,18 +35,20 @@
 /* Per-vertex data a record carries (flags of ws_dl_rec and ws_dl_need). */
 enum { WS_DL_NORMALS = 1u, WS_DL_COLOURS = 2u };
 
-/* One primitive. Offsets are into the arrays of its chunk. */
+/* One primitive (64 bytes). Offsets are into the arrays of its chunk; a chunk holds at most
+ * UINT32_MAX entries of each array, so they are 32-bit. */
 typedef struct ws_dl_rec {
     int kind;              /* the reader's record kind */
     int view;              /* view index */
     unsigned flags;        /* WS_DL_NORMALS, WS_DL_COLOURS */
     int n_facets;          /* cnt[cnt .. cnt + n_facets): loops per facet (0: one facet) */
     int n_loops;           /* then n_loops counts: vertices per loop */
-    size_t attr, attr_size; /* attributes: attr_size bytes at attr (8-byte aligned) */
-    size_t vtx, n_vtx;     /* vertices xyz[3 * vtx ...]; normals nrm, colours rgb alike */
-    size_t nrm, rgb;       /* first normal / colour (if flags say so) */
-    size_t cnt;            /* first count */
-    size_t idx, n_idx;     /* indices (0 .. n_vtx - 1) into the record's vertices; n_idx
+    uint32_t attr, attr_size; /* attributes: attr_size bytes at attr (8-byte aligned) */
+    uint32_t data, data_size; /* the record's own bytes at data (8-byte aligned) */
+    uint32_t vtx, n_vtx;   /* vertices xyz[3 * vtx ...]; normals nrm, colours rgb alike */
+    uint32_t nrm, rgb;     /* first normal / colour (if flags say so) */
+    uint32_t cnt;          /* first count */
+    uint32_t idx, n_idx;   /* indices (0 .. n_vtx - 1) into the record's vertices; n_idx
                               0: the loops take the vertices in order */
 } ws_dl_rec;
 
@@ -64,19 +67,21 @@ typedef struct ws_dl_chunk {
     size_t n_cnt;
     uint32_t *idx;
     size_t n_idx;
-    unsigned char *attr;
+    unsigned char *attr;      /* attribute and data bytes */
     size_t n_attr;
     size_t cap[7];            /* capacities (the list's) */
 } ws_dl_chunk;
 
 typedef struct ws_dlist ws_dlist;
 
-/* What a record needs: vertices (normals, colours by flags), facets, loops, indices. */
+/* What a record needs: vertices (normals, colours by flags), facets, loops, indices, bytes
+ * of its own data. */
 typedef struct ws_dl_need {
     size_t n_vtx;
     unsigned flags;
     int n_facets, n_loops;
     size_t n_idx;
+    size_t data_size;
 } ws_dl_need;
 
 /* Where the caller writes a new record's data (NULL where the need is 0). */
@@ -85,6 +90,7 @@ typedef struct ws_dl_put {
     double *xyz, *nrm, *rgb;
     int *facets, *loops;      /* n_facets loop numbers, n_loops vertex numbers */
     uint32_t *idx;
+    void *data;               /* data_size bytes */
 } ws_dl_put;
 
 /* Called with each sealed chunk, in order (on the appending thread). */
@@ -101,7 +107,8 @@ void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user);
 /* Appends a record of kind and view with attributes attr (attr_size bytes, copied unless
  * equal to the previous record's in the chunk) and room for need; *put says where its data
  * goes (the caller fills it before the next call on dl). Returns 0, or 300 (storage, or a
- * count beyond the list's range: the list unchanged). */
+ * count beyond the list's range, such as more than UINT32_MAX vertices: the list
+ * unchanged). */
 int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put);
 /* Takes back the record just appended (before any other call on dl). */

@@ -790,7 +790,7 @@ static void rec_run(void *user, void *item)
         }
         rt_view_rec *vr = r->wvr;
         int id = vr ? rt_scene_add_polygon(vr->sc, h->n_loops, c->cnt + h->cnt,
-                                           c->xyz + 3 * h->vtx, vr->f, vr->b)
+                                           c->xyz + 3 * (size_t)h->vtx, vr->f, vr->b)
                     : RT_ERR_NOMEM;
         if (id < 0) {
             e = e ? e : gks_err_of_rt(id);
