@@ -45,8 +45,9 @@ typedef struct rt_view_rec {
     size_t nsmask, capsmask;
 } rt_view_rec;
 
-/* Record kind of a FILL AREA (SET) without vertex data in the display list (ws_dlist.h):
- * VRC3 points, its loops of 3 or more points, attributes an rt_attr. */
+/* Record kind of a FILL AREA (SET) in the display list (ws_dlist.h): its loops of 3 or more
+ * points in VRC3, with their VRC3 unit normals and colours where it is shaded smooth and has
+ * them; attributes an rt_attr. */
 enum { DL_POLY = 1 };
 
 struct ws_rt {
@@ -789,9 +790,15 @@ static void rec_run(void *user, void *item)
             e = view_surfaces(r, view, &a, &r->wvr);
         }
         rt_view_rec *vr = r->wvr;
-        int id = vr ? rt_scene_add_polygon(vr->sc, h->n_loops, c->cnt + h->cnt,
-                                           c->xyz + 3 * (size_t)h->vtx, vr->f, vr->b)
-                    : RT_ERR_NOMEM;
+        const rt_vertex_data vd = {
+            h->flags & WS_DL_NORMALS ? c->nrm + 3 * (size_t)h->nrm : NULL,
+            h->flags & WS_DL_COLOURS ? c->rgb + 3 * (size_t)h->rgb : NULL };
+        const double *xyz = c->xyz + 3 * (size_t)h->vtx;
+        const int *cnt = c->cnt + h->cnt;
+        int id = !vr ? RT_ERR_NOMEM
+                 : h->flags ? rt_scene_add_polygon_data(vr->sc, h->n_loops, cnt, xyz, &vd,
+                                                        vr->f, vr->b)
+                            : rt_scene_add_polygon(vr->sc, h->n_loops, cnt, xyz, vr->f, vr->b);
         if (id < 0) {
             e = e ? e : gks_err_of_rt(id);
             r->wlost++;
@@ -822,14 +829,16 @@ static rt_serial *queue_of(ws_rt *r)
     return r->queue;
 }
 
-/* Whether prim is a FILL AREA (SET) for the queue (no vertex data that smooth shading would
- * use, a consistent record): 1 with *nl loops of 3 or more points and their *np points (nl
- * > 0), else 0. */
-static int queue_countable(const gks_prim *prim, int *nl, size_t *np)
+/* Whether prim is a FILL AREA (SET) for the queue (a consistent record): 1 with *nl loops
+ * of 3 or more points and their *np points (nl > 0), and in *data the vertex data smooth
+ * shading uses (WS_DL_NORMALS, WS_DL_COLOURS: interior shading method COLOUR or NORMAL on
+ * either side, as record_fill_area decides), else 0. */
+static int queue_countable(const gks_prim *prim, int *nl, size_t *np, unsigned *data)
 {
     const int smooth = prim->shading[0] > GSHAD_NONE || prim->shading[1] > GSHAD_NONE;
-    if ((smooth && (prim->vnormals || prim->vcolours)) || prim->n_points < 3 ||
-        prim->n_loops < 1 || !prim->loop_counts || !prim->pts)
+    *data = (smooth && prim->vnormals ? WS_DL_NORMALS : 0u) |
+            (smooth && prim->vcolours ? WS_DL_COLOURS : 0u);
+    if (prim->n_points < 3 || prim->n_loops < 1 || !prim->loop_counts || !prim->pts)
         return 0;
     size_t total = 0;
     *nl = 0;
@@ -877,21 +886,47 @@ static double queue_points(const gks_prim *prim, const double (*ori)[4], int *co
     return big;
 }
 
-/* The asynchronous path of a FILL AREA (SET) without vertex data: a record of the display
- * list with its loops of 3 or more points in VRC3, computed here on the caller's thread; a
+/* The vertex data of prim's loops of 3 or more points, as push_polygon has them: normals
+ * (nrm, 3 doubles each, or NULL) by the normal matrix nm, colours (rgb, or NULL). */
+static void queue_data(const gks_prim *prim, const double nm[3][3], double *nrm, double *rgb)
+{
+    size_t src = 0, q = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        for (size_t i = 0; m >= 3 && i < m; i++, q += 3) {
+            if (nrm) {
+                const Gvec3 *v = &prim->vnormals[src + i];
+                const double d[3] = { v->delta_x, v->delta_y, v->delta_z };
+                gks_xform_normal(nm, d, nrm + q);
+            }
+            if (rgb) {
+                const Grgb *c = &prim->vcolours[src + i];
+                rgb[q] = c->red, rgb[q + 1] = c->green, rgb[q + 2] = c->blue;
+            }
+        }
+        src += m;
+    }
+}
+
+/* The asynchronous path of a FILL AREA (SET): a record of the display list with its loops of
+ * 3 or more points in VRC3 and their vertex data, computed here on the caller's thread; a
  * sealed chunk goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records
  * it synchronously, which also drops what this path would drop) or 300. */
 static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
     int nl;
     size_t np;
-    if (!queue_of(r) || !queue_countable(prim, &nl, &np))
+    unsigned data;
+    if (!queue_of(r) || !queue_countable(prim, &nl, &np, &data))
         return 0;
     if (np > QUEUE_MAX_POINTS)
         return 0; /* a large area: synchronous */
     const int vi = clamp_view(prim->view_ind);
+    double nm[3][3];
+    if ((data & WS_DL_NORMALS) && gks_xform_normal_matrix(ws->views[vi].ori_matrix, nm))
+        data &= ~(unsigned)WS_DL_NORMALS; /* a singular view orientation: no usable normals */
     const rt_attr a = attr_of(prim);
-    const ws_dl_need need = { .n_vtx = np, .n_loops = nl };
+    const ws_dl_need need = { .n_vtx = np, .flags = data, .n_loops = nl };
     ws_dl_put put;
     if (ws_dlist_append(r->dl, DL_POLY, vi, &a, sizeof a, &need, &put))
         return 300;
@@ -901,14 +936,16 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         ws_dlist_unappend(r->dl);
         return 0; /* beyond the tracer's range: the synchronous path clips it */
     }
+    queue_data(prim, (const double (*)[3])nm, put.nrm, put.rgb);
     r->count++;
     return 1;
 }
 
-/* With two or more threads (GESC_RT_THREADS; 0: online CPUs) a FILL AREA (SET) without vertex
- * data goes to the asynchronous recording (queue_fill_area): a worker of the tracer's thread
- * pool adds it to its view's scene while the application goes on. Everything else (cell
- * arrays, smooth areas, areas beyond the coordinate range, large areas), UPDATE, the ESCAPEs
+/* With two or more threads (GESC_RT_THREADS; 0: online CPUs) a FILL AREA (SET) goes to the
+ * asynchronous recording (queue_fill_area): a record of the display list, whose sealed chunks
+ * a worker of the tracer's thread pool adds to the views' scenes while the application goes
+ * on. Everything else (cell arrays, meshes, areas beyond the coordinate range, areas of more
+ * than QUEUE_MAX_POINTS points), UPDATE, the ESCAPEs
  * and the reset first wait for the queued areas (ws_rt_sync), so every scene holds the same
  * primitives in the same order as with one thread. The checks that decide an area's fate
  * are made here at the call; only a storage failure of the worker comes later: it is reported
