@@ -131,14 +131,12 @@ struct ws_classic {
 ws_classic *ws_classic_new(void)
 {
     ws_classic *r = gks_calloc_array(1, sizeof(ws_classic));
-    if (!r)
-        return NULL;
-    r->dl = ws_dlist_new();
-    if (!r->dl) {
-        gks_free(r);
-        return NULL;
+    if (r && !(r->dl = ws_dlist_new())) {
+        ws_classic_free(r); /* frees what there is */
+        r = NULL;
     }
-    r->px_per_dc = r->px_per_unit = 1.0;
+    if (r)
+        r->px_per_dc = r->px_per_unit = 1.0;
     return r;
 }
 

@@ -36,11 +36,12 @@
  * else, without depth test (on top), in order of arrival. (OpenPHIGS reads 0 as OFF:
  * this implementation keeps 0, the GKS default, as "takes part".)
  *
- * Retained primitives (modes 1 and 3, hlhsr_id != 0) are kept for the frame in flat
- * arrays (records, DC points, counts, colours) that grow geometrically and are reused.
- * UPDATE composes them over a copy of the immediately drawn framebuffer, so repeated
- * updates of one frame draw each primitive once (the copy costs one more framebuffer
- * while the frame has retained primitives).
+ * Retained primitives (modes 1 and 3, hlhsr_id != 0) are kept for the frame in the render
+ * layer's display list (ws_dlist.h): a record each, its DC points after clipping as the
+ * vertices, its counts as the loops, its attributes (with pattern, cell and smooth-shading
+ * floats) shared by equal consecutive records. UPDATE composes them over a copy of the
+ * immediately drawn framebuffer, so repeated updates of one frame draw each primitive once
+ * (the copy costs one more framebuffer while the frame has retained primitives).
  */
 #ifndef WS_CLASSIC_H
 #define WS_CLASSIC_H
