@@ -100,11 +100,19 @@ static void draw(int what)
     }
 }
 
+/* GESC_RT_THREADS of the next pictures (-1: not set, the default). */
+static int rt_threads = -1;
+
 /* The picture of `what` ray traced on a SZ x SZ PNG, in *img. */
 static void picture(int what, image *img)
 {
     const char *file = "t_mesh_trace.png";
     png_ws_open(file, SZ, GHLHSR_RAYTRACE, 0);
+    if (rt_threads >= 0) {
+        Gint ints[2] = { 1, rt_threads };
+        Gescape_in_data in = { .num_ints = 2, .ints = ints };
+        gescape(GESC_RT_THREADS, &in, NULL, NULL);
+    }
     Gcolr_rep c = { { 0.9, 0.7, 0.4 } }, bg = { { 0.2, 0.3, 0.5 } };
     gset_colr_rep(1, 2, &c);
     gset_colr_rep(1, 3, &bg);
@@ -184,6 +192,23 @@ static void test_strip_is_its_triangles(void **u)
     assert_memory_equal(whole.rgb, tris.rgb, (size_t)SZ * SZ * 3);
     free(whole.rgb);
     free(tris.rgb);
+}
+
+/* Smooth FILL AREA 3 WITH DATA triangles (vertex normals, shading method NORMAL) are
+ * recorded at the call with one thread and through the display list's worker with two
+ * (ws_raytrace.c, queue_fill_area): the same picture, byte for byte. */
+static void test_smooth_areas_threads(void **u)
+{
+    (void)u;
+    image one, two;
+    rt_threads = 1;
+    picture(FIELD_TRIS, &one);
+    rt_threads = 2;
+    picture(FIELD_TRIS, &two);
+    rt_threads = -1;
+    assert_memory_equal(one.rgb, two.rgb, (size_t)SZ * SZ * 3);
+    free(one.rgb);
+    free(two.rgb);
 }
 
 /* The primitives the tracer kept in the last picture of workstation 1 (GESC_RT_STATS). */
@@ -269,6 +294,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_quad_mesh_no_dark_rows),
         cmocka_unit_test(test_strip_is_its_triangles),
+        cmocka_unit_test(test_smooth_areas_threads),
         cmocka_unit_test(test_clip_rule),
 #ifdef GKS_HAVE_CAIRO
         cmocka_unit_test(test_vector_ws_mesh),
