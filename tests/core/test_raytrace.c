@@ -19,6 +19,7 @@
 
 #include "png_util.h"
 #include "ws_raytrace.h"
+#include "ws_render.h"
 #include "ws_shade.h"
 #include "gks_alloc.h"
 
@@ -74,7 +75,7 @@ static void open_png(int ws, const char *file, int mode)
 /* A driver-level recorder with plain_sampling's settings. */
 static ws_rt *rt_new_plain(void)
 {
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = ws_rt_new(NULL);
     assert_non_null(r);
     Gint ints[2] = { 0, 1 };
     Gfloat zero[1] = { 0.0 };
@@ -1141,6 +1142,69 @@ static void test_fill_area_set_hole(void **u)
     ws_rt_free(r);
 }
 
+/* One display list per frame for both renderers (ws_render): in ray-tracing mode with two
+ * recording threads, a red FILL AREA goes to the tracer through the list while a green
+ * POLYLINE on either side of it with HLHSR identifier 1 is retained there by the classic
+ * renderer. After the frame is traced, ws_rt_reset alone (as the X11 and cairo drivers call
+ * it) keeps the classic records: the composed picture has the traced square and both lines
+ * over it; ws_render_reset then forgets them. */
+static void test_shared_list(void **u)
+{
+    (void)u;
+    gks_ws ws;
+    fake_ws(&ws);
+    ws.cur_vp = (Glimit3){ 0, 64, 0, 64, 0, 1 };
+    ws.hlhsr_mode = GHLHSR_RAYTRACE;
+    ws_render *R = ws_render_new();
+    assert_non_null(R);
+    Gint ints[2] = { 0, 1 };
+    Gfloat zero[1] = { 0.0 };
+    Gescape_in_data in = { .num_ints = 2, .ints = ints, .num_floats = 1, .floats = zero };
+    assert_int_equal(ws_rt_escape(R->rt, GESC_RT_SAMPLES, &in, NULL), 0);
+    assert_int_equal(ws_rt_escape(R->rt, GESC_RT_CUTOFF, &in, NULL), 0);
+    ints[1] = 2;
+    assert_int_equal(ws_rt_escape(R->rt, GESC_RT_THREADS, &in, NULL), 0);
+    gks_raster_fb *fb = white_fb();
+    Gpoint3 sq[4] = { { 0.25, 0.25, 0.5 }, { 0.75, 0.25, 0.5 }, { 0.75, 0.75, 0.5 },
+                      { 0.25, 0.75, 0.5 } };
+    Gpoint3 l1[2] = { { 0.1, 0.4, 0.5 }, { 0.9, 0.4, 0.5 } };
+    Gpoint3 l2[2] = { { 0.1, 0.6, 0.5 }, { 0.9, 0.6, 0.5 } };
+    int n4 = 4, n2 = 2;
+    gks_prim area = fake_prim(GKS_PRIM_FILL_AREA, (Grgb){ 1, 0, 0 });
+    area.n_loops = 1, area.loop_counts = &n4, area.n_points = 4, area.pts = sq;
+    gks_prim line = fake_prim(GKS_PRIM_POLYLINE, (Grgb){ 0, 1, 0 });
+    line.n_loops = 1, line.loop_counts = &n2, line.n_points = 2, line.pts = l1;
+    line.attrs.linetype = 1, line.attrs.linewidth = 1, line.attrs.hlhsr_id = 1;
+    assert_int_equal(ws_render_prim(R, &ws, fb, &line), 0);
+    assert_int_equal(ws_render_prim(R, &ws, fb, &area), 0);
+    line.pts = l2;
+    assert_int_equal(ws_render_prim(R, &ws, fb, &line), 0);
+    assert_int_equal(ws_classic_retained(R->classic), 2);
+    assert_int_equal(ws_rt_count(R->rt), 1);
+    assert_int_equal(ws_dlist_count(R->dl, WS_DL_CLASSIC | WS_DL_TRACER), 3);
+    assert_int_equal(ws_rt_render(R->rt, &ws, wsm64, fb), 0);
+    ws_rt_reset(R->rt); /* traced into fb: the tracer forgets its areas, the list stays */
+    assert_int_equal(ws_rt_count(R->rt), 0);
+    assert_int_equal(ws_classic_retained(R->classic), 2);
+    gks_raster_fb *pic = NULL;
+    assert_int_equal(ws_classic_compose(R->classic, &ws, fb, &pic), 0);
+    assert_non_null(pic);
+    assert_fb(pic, 32, 36, 1, 0, 0);  /* the traced square between the lines */
+    assert_fb(pic, 4, 36, 1, 1, 1);   /* outside it */
+    int green[2] = { 0, 0 };
+    for (int y = 0; y < 64; y++)
+        for (int x = 0; x < 64; x++)
+            if (is_rgb(fbpx(pic, x, y), 0, 1, 0))
+                green[y >= 32]++;
+    if (green[0] < 40 || green[1] < 40)
+        fail_msg("green line pixels below / above the middle: %d / %d", green[0], green[1]);
+    ws_render_reset(R);
+    assert_int_equal(ws_classic_retained(R->classic), 0);
+    assert_null(ws_dlist_first(R->dl));
+    gks_raster_fb_free(fb);
+    ws_render_free(R);
+}
+
 /* CELL ARRAY 2x2 over [0.25,0.75]^2: cell (i,j) colour at pixel centres of each quarter;
  * P (0.25,0.25), R (0.75,0.25) (first row), Q (0.75,0.75). */
 static const Grgb cells4[4] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 } };
@@ -1343,7 +1407,7 @@ static void test_alloc_failures(void **u)
 static void test_escape_records(void **u)
 {
     (void)u;
-    ws_rt *r = ws_rt_new();
+    ws_rt *r = ws_rt_new(NULL);
     rt_render_options def, o;
     rt_render_options_default(&def);
     ws_rt_options(r, &o);
@@ -1878,6 +1942,7 @@ int main(void)
         cmocka_unit_test(test_cutoff),
         cmocka_unit_test(test_progress),
         cmocka_unit_test(test_fill_area_set_hole),
+        cmocka_unit_test(test_shared_list),
         cmocka_unit_test(test_cell_array),
         cmocka_unit_test(test_cell_array_clipped),
         cmocka_unit_test(test_record_limits),

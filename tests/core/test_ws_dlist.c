@@ -3,7 +3,9 @@
  * test_ws_dlist.c -- the render layer's display list (src/c/ws/render/ws_dlist.h): records
  * with their vertices, per-vertex data, counts and indices read back as written; equal
  * consecutive attributes stored once; chunks that never move once written, sealed to the
- * sink in order; a record larger than a chunk in a chunk of its own; the last record taken
+ * sink in order; released chunks freed, those a reader still keeps not (two readers on one
+ * list, each reading and counting its own records); a record larger than a chunk in a chunk
+ * of its own; the last record taken
  * back; counts out of range refused; and every allocation of a workload failed in turn
  * (gks_alloc_fail_after): 300 and the list as before the failing call.
  */
@@ -27,7 +29,7 @@ static int add_poly(ws_dlist *dl, int view, const attr *a, size_t n, double base
 {
     ws_dl_put p;
     const ws_dl_need need = { .n_vtx = n, .n_loops = 1 };
-    int e = ws_dlist_append(dl, 7, view, a, sizeof *a, &need, &p);
+    int e = ws_dlist_append(dl, WS_DL_TRACER, 7, view, a, sizeof *a, &need, &p);
     if (e)
         return e;
     for (size_t i = 0; i < n; i++) {
@@ -61,7 +63,7 @@ static void test_empty(void **state)
     ws_dlist *dl = ws_dlist_new();
     assert_non_null(dl);
     assert_null(ws_dlist_first(dl));
-    assert_int_equal(ws_dlist_count(dl), 0);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 0);
     ws_dlist_seal(dl); /* nothing to seal */
     ws_dlist_unappend(dl); /* nothing to take back */
     assert_null(ws_dlist_first(dl));
@@ -78,7 +80,7 @@ static void test_records_and_attributes(void **state)
     assert_int_equal(add_poly(dl, 3, &a, 3, 20), 0);
     assert_int_equal(add_poly(dl, 5, &b, 5, 30), 0);
     assert_int_equal(add_poly(dl, 5, &a, 3, 40), 0);
-    assert_int_equal(ws_dlist_count(dl), 4);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 4);
     const ws_dl_chunk *c = ws_dlist_first(dl);
     assert_non_null(c);
     assert_null(c->next);
@@ -101,9 +103,9 @@ static void test_records_and_attributes(void **state)
     /* own data does not break the sharing of attributes */
     ws_dl_put p;
     const ws_dl_need nd = { .n_vtx = 1, .data_size = 4 };
-    assert_int_equal(ws_dlist_append(dl, 8, 5, &a, sizeof a, &nd, &p), 0);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 8, 5, &a, sizeof a, &nd, &p), 0);
     memcpy(p.data, "abc", 4);
-    assert_int_equal(ws_dlist_append(dl, 8, 5, &a, sizeof a, &nd, &p), 0);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 8, 5, &a, sizeof a, &nd, &p), 0);
     memcpy(p.data, "xyz", 4);
     assert_int_equal(c->rec[4].attr, c->rec[5].attr);
     assert_int_not_equal(c->rec[4].data, c->rec[5].data);
@@ -112,7 +114,7 @@ static void test_records_and_attributes(void **state)
     /* a new frame */
     ws_dlist_reset(dl);
     assert_null(ws_dlist_first(dl));
-    assert_int_equal(ws_dlist_count(dl), 0);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 0);
     assert_int_equal(ws_dlist_bytes(dl), 0);
     assert_int_equal(add_poly(dl, 0, &a, 3, 1), 0);
     check_poly(ws_dlist_first(dl), &ws_dlist_first(dl)->rec[0], 3, 1);
@@ -130,7 +132,7 @@ static void test_mesh(void **state)
                               .n_facets = 2, .n_loops = 2, .n_idx = 6,
                               .data_size = sizeof(double) + 1 };
     assert_int_equal(add_poly(dl, 1, &a, 3, 0), 0); /* without data before it */
-    assert_int_equal(ws_dlist_append(dl, 9, 1, &a, sizeof a, &need, &p), 0);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 9, 1, &a, sizeof a, &need, &p), 0);
     assert_non_null(p.nrm);
     assert_non_null(p.rgb);
     assert_non_null(p.idx);
@@ -208,7 +210,7 @@ static void test_chunks_and_sink(void **state)
     assert_int_equal(add_poly(dl, 0, &a, 3, 5), 0);
     ws_dlist_seal(dl);
     ws_dlist_seal(dl); /* twice: once to the sink */
-    assert_int_equal(ws_dlist_count(dl), N + 2);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), N + 2);
     assert_true(log.n >= 3);
     /* the sink saw every chunk, in order, complete; the first one never moved */
     assert_ptr_equal(log.chunk[0], c0);
@@ -237,14 +239,22 @@ static void test_chunks_and_sink(void **state)
     ws_dlist_free(dl);
 }
 
-/* A streaming reader releases each chunk it has read: the list frees the released chunks at
- * its head when it makes a new chunk or at ws_dlist_trim, never one still being read. */
+/* A streaming reader releases each chunk it has read: the list frees the released chunks,
+ * wherever they are, when it makes a new chunk or at ws_dlist_trim, never one still being
+ * read. */
 static void release_sink(void *user, ws_dl_chunk *c)
 {
     sink_log *l = user;
     sink(user, c);
     if (l->n % 2) /* every other chunk is released at once, the others at the end */
-        ws_dlist_release(c);
+        ws_dlist_release(c, WS_DL_TRACER);
+}
+
+/* A streaming reader that releases every chunk at once. */
+static void release_all_sink(void *user, ws_dl_chunk *c)
+{
+    sink(user, c);
+    ws_dlist_release(c, WS_DL_TRACER);
 }
 
 static void test_release(void **state)
@@ -257,22 +267,82 @@ static void test_release(void **state)
     for (int k = 0; k < 10000; k++)
         assert_int_equal(add_poly(dl, 1, &a, 4, k), 0);
     assert_true(log.n >= 4);
-    /* the first chunk was released at once, the second is not: only the first is freed */
+    /* the first and third chunks were released at once, the second is not: they are freed,
+     * the second stays */
     assert_ptr_equal(ws_dlist_first(dl), log.chunk[1]);
+    assert_ptr_equal(ws_dlist_first(dl)->next, log.chunk[3]);
     const size_t held = ws_dlist_bytes(dl);
     for (int i = 1; i < log.n; i += 2)
-        ws_dlist_release((ws_dl_chunk *)log.chunk[i]);
+        ws_dlist_release((ws_dl_chunk *)log.chunk[i], WS_DL_TRACER);
     ws_dlist_trim(dl);
     assert_true(ws_dlist_bytes(dl) < held);
     ws_dlist_seal(dl);
-    ws_dlist_release((ws_dl_chunk *)log.chunk[log.n - 1]);
+    ws_dlist_release((ws_dl_chunk *)log.chunk[log.n - 1], WS_DL_TRACER);
     ws_dlist_trim(dl);
     assert_null(ws_dlist_first(dl));
     assert_int_equal(ws_dlist_bytes(dl), 0);
-    assert_int_equal(ws_dlist_count(dl), 10000);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 10000);
     /* appending goes on in a new chunk */
     assert_int_equal(add_poly(dl, 1, &a, 3, 9), 0);
     check_poly(ws_dlist_first(dl), &ws_dlist_first(dl)->rec[0], 3, 9);
+    ws_dlist_free(dl);
+}
+
+/* Appends a classic record (kind 3) of one vertex and n bytes of data. */
+static int add_classic(ws_dlist *dl, size_t n)
+{
+    ws_dl_put p;
+    const ws_dl_need need = { .n_vtx = 1, .data_size = n };
+    int e = ws_dlist_append(dl, WS_DL_CLASSIC, 3, 0, NULL, 0, &need, &p);
+    if (!e) {
+        p.xyz[0] = p.xyz[1] = p.xyz[2] = 1.0;
+        memset(p.data, 0x5a, n);
+    }
+    return e;
+}
+
+/* Two readers on one list: the tracer (streaming, releases what it read) and the classic
+ * renderer (keeps its records to the frame's end). A chunk is freed once every reader of its
+ * records released it: chunks with only the tracer's records go, a chunk with a classic
+ * record in it stays (with the tracer's records in it, which the classic reader skips by
+ * their reader), and each reader's count is its own. */
+static void test_two_readers(void **state)
+{
+    (void)state;
+    ws_dlist *dl = ws_dlist_new();
+    sink_log log = { .n = 0 };
+    ws_dlist_set_sink(dl, release_all_sink, &log);
+    const attr a = { { 0.5, 0.25, 0.5 }, 2 };
+    assert_int_equal(add_classic(dl, 24), 0); /* the first chunk: mixed */
+    for (int k = 0; k < 6000; k++)
+        assert_int_equal(add_poly(dl, 0, &a, 4, k), 0);
+    assert_int_equal(add_classic(dl, 24), 0);
+    ws_dlist_seal(dl);
+    ws_dlist_trim(dl);
+    assert_true(log.n >= 3);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 6000);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_CLASSIC), 2);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_CLASSIC | WS_DL_TRACER), 6002);
+    /* the tracer released every chunk: the first and the last (classic records) stay */
+    const ws_dl_chunk *c = ws_dlist_first(dl);
+    assert_ptr_equal(c, log.chunk[0]);
+    assert_ptr_equal(c->next, log.chunk[log.n - 1]);
+    assert_null(c->next->next);
+    assert_int_equal(c->readers, WS_DL_CLASSIC | WS_DL_TRACER);
+    size_t classic = 0;
+    for (; c; c = c->next)
+        for (size_t j = 0; j < c->n_rec; j++)
+            if (c->rec[j].reader == WS_DL_CLASSIC) {
+                classic++;
+                assert_int_equal(c->rec[j].kind, 3);
+                assert_int_equal(c->attr[c->rec[j].data + 23], 0x5a);
+            }
+    assert_int_equal(classic, 2);
+    /* the frame boundary frees the rest */
+    ws_dlist_reset(dl);
+    assert_null(ws_dlist_first(dl));
+    assert_int_equal(ws_dlist_bytes(dl), 0);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_CLASSIC | WS_DL_TRACER), 0);
     ws_dlist_free(dl);
 }
 
@@ -286,13 +356,13 @@ static void test_unappend_and_limits(void **state)
     const size_t nx = c->n_xyz, nc = c->n_cnt, na = c->n_attr;
     assert_int_equal(add_poly(dl, 2, &b, 6, 2), 0);
     ws_dlist_unappend(dl);
-    assert_int_equal(ws_dlist_count(dl), 1);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 1);
     assert_int_equal(c->n_rec, 1);
     assert_int_equal(c->n_xyz, nx);
     assert_int_equal(c->n_cnt, nc);
     assert_int_equal(c->n_attr, na); /* b's copy taken back as well */
     ws_dlist_unappend(dl);           /* only the last append */
-    assert_int_equal(ws_dlist_count(dl), 1);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 1);
     assert_int_equal(add_poly(dl, 2, &a, 3, 3), 0);
     assert_int_equal(c->rec[1].attr, c->rec[0].attr);
     check_poly(c, &c->rec[0], 4, 1);
@@ -303,11 +373,11 @@ static void test_unappend_and_limits(void **state)
     const ws_dl_need over = { .n_vtx = 3, .n_facets = 1 << 30, .n_loops = 1 << 30 };
     const ws_dl_need wide = { .n_vtx = (size_t)UINT32_MAX + 2, .n_loops = 1, .n_idx = 3 };
     const ws_dl_need huge = { .n_vtx = SIZE_MAX / 8, .n_loops = 1 };
-    assert_int_equal(ws_dlist_append(dl, 1, 0, &a, sizeof a, &neg, &p), 300);
-    assert_int_equal(ws_dlist_append(dl, 1, 0, &a, sizeof a, &over, &p), 300);
-    assert_int_equal(ws_dlist_append(dl, 1, 0, &a, sizeof a, &wide, &p), 300);
-    assert_int_equal(ws_dlist_append(dl, 1, 0, &a, sizeof a, &huge, &p), 300);
-    assert_int_equal(ws_dlist_count(dl), 2);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &neg, &p), 300);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &over, &p), 300);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &wide, &p), 300);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &huge, &p), 300);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 2);
     assert_null(c->next);
     ws_dlist_free(dl);
 }
@@ -319,13 +389,13 @@ static int workload(ws_dlist *dl, sink_log *log)
     int fails = 0;
     for (int k = 0; k < 3000; k++) {
         const attr a = { { k % 3, 0, 0 }, k % 7 };
-        const size_t before = ws_dlist_count(dl);
+        const size_t before = ws_dlist_count(dl, WS_DL_TRACER);
         const int n0 = log->n;
         const size_t n = k % 500 == 0 ? 20000 : 3 + (size_t)k % 5;
         int e = add_poly(dl, k % 4, &a, n, k);
         if (e) {
             assert_int_equal(e, 300);
-            assert_int_equal(ws_dlist_count(dl), before);
+            assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), before);
             assert_int_equal(log->n, n0); /* nothing sealed by a failed append */
             fails++;
         }
@@ -344,7 +414,7 @@ static void test_oom(void **state)
     long a0 = gks_alloc_count();
     assert_int_equal(workload(dl, &log), 0);
     const long allocs = gks_alloc_count() - a0;
-    const size_t recs = ws_dlist_count(dl);
+    const size_t recs = ws_dlist_count(dl, WS_DL_TRACER);
     assert_true(allocs >= 3);
     int total_fails = 0;
     for (long n = 1; n <= allocs; n++) {
@@ -354,7 +424,7 @@ static void test_oom(void **state)
         int f = workload(dl, &log);
         gks_alloc_fail_after(0);
         assert_int_equal(f, 1); /* exactly the nth allocation failed: one record lost */
-        assert_int_equal(ws_dlist_count(dl), recs - 1);
+        assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), recs - 1);
         size_t seen = 0;
         for (const ws_dl_chunk *c = ws_dlist_first(dl); c; c = c->next)
             seen += c->n_rec;
@@ -378,6 +448,7 @@ int main(void)
         cmocka_unit_test(test_mesh),
         cmocka_unit_test(test_chunks_and_sink),
         cmocka_unit_test(test_release),
+        cmocka_unit_test(test_two_readers),
         cmocka_unit_test(test_unappend_and_limits),
         cmocka_unit_test(test_oom),
     };

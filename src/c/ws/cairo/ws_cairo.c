@@ -205,7 +205,7 @@ static int vec_open_fmt(gks_ws *ws, vec_format fmt)
         return 300;
     v->fmt = fmt;
     v->base = gks_ws_file_default_base(ws, vec_ext[fmt]);
-    v->vec = ws_classic_new();
+    v->vec = ws_classic_new(NULL); /* its own list: the vector items */
     v->r = ws_render_new();
     if (!v->base || !v->vec || !v->r) {
         gks_free(v->base);

@@ -90,7 +90,9 @@ typedef struct view_cache {
 } view_cache;
 
 struct ws_classic {
-    ws_dlist *dl;          /* the retained records of the frame */
+    ws_dlist *dl;          /* the display list of the frame: its WS_DL_CLASSIC records are
+                              the retained primitives */
+    int own_dl;            /* dl is this renderer's own (else the render layer's) */
     dref *refs;            /* compose, walk: the list's records, in order */
     size_t cap_refs;
     /* scratch of the record being built */
@@ -128,10 +130,12 @@ struct ws_classic {
 #define GROW(r, arr, cap, need) \
     ((r)->fail = gks_grow(&(r)->arr, &(r)->cap, (need), sizeof *(r)->arr))
 
-ws_classic *ws_classic_new(void)
+ws_classic *ws_classic_new(ws_dlist *dl)
 {
     ws_classic *r = gks_calloc_array(1, sizeof(ws_classic));
-    if (r && !(r->dl = ws_dlist_new())) {
+    if (r)
+        r->own_dl = !dl;
+    if (r && !(r->dl = dl ? dl : ws_dlist_new())) {
         ws_classic_free(r); /* frees what there is */
         r = NULL;
     }
@@ -156,7 +160,8 @@ void ws_classic_free(ws_classic *r)
 {
     if (!r)
         return;
-    ws_dlist_free(r->dl);
+    if (r->own_dl)
+        ws_dlist_free(r->dl);
     gks_free(r->refs);
     gks_free(r->attrs);
     gks_free(r->pts);
@@ -177,7 +182,8 @@ void ws_classic_free(ws_classic *r)
 
 void ws_classic_reset(ws_classic *r)
 {
-    ws_dlist_reset(r->dl);
+    if (r->own_dl)
+        ws_dlist_reset(r->dl);
     r->n_attr = r->n_pt = r->n_cnt = r->n_fl = r->n_ctx = 0;
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
         r->views[v].valid = 0;
@@ -185,7 +191,7 @@ void ws_classic_reset(ws_classic *r)
 
 size_t ws_classic_retained(const ws_classic *r)
 {
-    return ws_dlist_count(r->dl);
+    return ws_dlist_count(r->dl, WS_DL_CLASSIC);
 }
 
 /* --- view pipeline ---------------------------------------------------------------------- */
@@ -624,7 +630,7 @@ static int rec_retain(build *b, const rec *rc, size_t pt0, size_t cnt0, size_t f
     const ws_dl_need need = { .n_vtx = r->n_pt - pt0, .n_loops = (int)n_cnt,
                               .data_size = sizeof *rc };
     ws_dl_put put;
-    int e = ws_dlist_append(r->dl, rc->kind, b->vi, blk, asz, &need, &put);
+    int e = ws_dlist_append(r->dl, WS_DL_CLASSIC, rc->kind, b->vi, blk, asz, &need, &put);
     if (blk != sblk)
         gks_free(blk);
     if (e)
@@ -1324,16 +1330,18 @@ static int cmp_key(const void *pa, const void *pb)
     return (a->idx > b->idx) - (a->idx < b->idx);
 }
 
-/* The display list's records into r->refs, in order; their number, or -1 (300). */
+/* The display list's classic records into r->refs, in order (the tracer's are not this
+ * renderer's); their number, or -1 (300). */
 static long refs_build(ws_classic *r)
 {
-    const size_t n = ws_dlist_count(r->dl);
+    const size_t n = ws_dlist_count(r->dl, WS_DL_CLASSIC);
     if (n > LONG_MAX || GROW(r, refs, cap_refs, n))
         return -1;
     size_t i = 0;
     for (const ws_dl_chunk *c = ws_dlist_first(r->dl); c; c = c->next)
         for (size_t k = 0; k < c->n_rec; k++)
-            r->refs[i++] = (dref){ c, &c->rec[k] };
+            if (c->rec[k].reader == WS_DL_CLASSIC)
+                r->refs[i++] = (dref){ c, &c->rec[k] };
     return (long)i;
 }
 
@@ -1389,7 +1397,7 @@ static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
                    int overlays)
 {
     *out = fb;
-    if (ws_dlist_count(r->dl) == 0)
+    if (ws_dlist_count(r->dl, WS_DL_CLASSIC) == 0)
         return 0;
     const long nr = refs_build(r);
     if (nr < 0) {
@@ -1465,7 +1473,7 @@ int ws_classic_keep_mark(ws_classic *r, size_t id, double key, int overlay)
     const rec rc = { .kind = REC_MARK, .overlay = overlay != 0, .key = key, .attr = id };
     const ws_dl_need need = { .data_size = sizeof rc };
     ws_dl_put put;
-    if (ws_dlist_append(r->dl, REC_MARK, 0, NULL, 0, &need, &put))
+    if (ws_dlist_append(r->dl, WS_DL_CLASSIC, REC_MARK, 0, NULL, 0, &need, &put))
         return 300;
     memcpy(put.data, &rc, sizeof rc);
     return 0;
@@ -1700,7 +1708,7 @@ static int emit_rec(walk *w, const rref *x, int hl)
 int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_emit emit,
                        void *ctx)
 {
-    if (ws_dlist_count(r->dl) == 0)
+    if (ws_dlist_count(r->dl, WS_DL_CLASSIC) == 0)
         return 0;
     const long nr = refs_build(r);
     if (nr < 0)

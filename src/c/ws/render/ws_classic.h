@@ -37,7 +37,8 @@
  * this implementation keeps 0, the GKS default, as "takes part".)
  *
  * Retained primitives (modes 1 and 3, hlhsr_id != 0) are kept for the frame in the render
- * layer's display list (ws_dlist.h): a record each, its DC points after clipping as the
+ * layer's display list (ws_dlist.h; the one list of the frame, which the tracer's areas go
+ * through as well: these are its WS_DL_CLASSIC records): a record each, its DC points after clipping as the
  * vertices, its counts as the loops, its attributes (with pattern, cell and smooth-shading
  * floats) shared by equal consecutive records. UPDATE composes them over a copy of the
  * immediately drawn framebuffer, so repeated updates of one frame draw each primitive once
@@ -48,6 +49,7 @@
 #include "gks_xform.h"
 #include "raster.h"
 #include "ws_driver.h"
+#include "ws_dlist.h"
 
 #define WS_CLASSIC_NOMINAL_MARKER_SIZE 7.0
 #define WS_CLASSIC_HL_BIAS 1e-4
@@ -55,11 +57,15 @@
 
 typedef struct ws_classic ws_classic;
 
-/* New renderer state, NULL if out of memory. */
-ws_classic *ws_classic_new(void);
+/* New renderer state, NULL if out of memory. Its retained primitives go to the display
+ * list dl (the render layer's, shared with the tracer; it must outlive the renderer), or to a
+ * list of its own (dl NULL: a renderer of its own, such as the cairo types' vector one). */
+ws_classic *ws_classic_new(ws_dlist *dl);
 /* Frees it (NULL allowed). */
 void ws_classic_free(ws_classic *r);
-/* New frame: forgets retained primitives and the cached view pipelines. */
+/* New frame: forgets the cached view pipelines and the retained primitives -- those of a
+ * list of its own; a shared list forgets them at its owner's ws_dlist_reset (ws_render_reset
+ * does both). */
 void ws_classic_reset(ws_classic *r);
 /* Number of primitives retained for drawing at UPDATE. */
 size_t ws_classic_retained(const ws_classic *r);

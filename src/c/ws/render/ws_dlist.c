@@ -23,7 +23,7 @@ static const size_t def_cap[N_ARR] = { 2048, 8192, 8192, 8192, 4096, 16384, 1310
 
 struct ws_dlist {
     ws_dl_chunk *first, *cur;
-    size_t n_rec;              /* records of all chunks */
+    size_t n_rec[WS_DL_N_READERS]; /* records of each reader (bit r: n_rec[r]) */
     size_t bytes;              /* allocated by the chunks */
     unsigned used_arr;         /* bit a: the frame had a record with array a */
     ws_dlist_sink sink;
@@ -31,6 +31,7 @@ struct ws_dlist {
     /* the state before the last append (ws_dlist_unappend) */
     ws_dl_chunk *undo_chunk;
     size_t undo[N_ARR];
+    int undo_reader;
 };
 
 static size_t round8(size_t n) { return (n + 7) & ~(size_t)7; }
@@ -55,7 +56,8 @@ void ws_dlist_reset(ws_dlist *dl)
         gks_free(c);
     }
     dl->first = dl->cur = dl->undo_chunk = NULL;
-    dl->n_rec = dl->bytes = 0;
+    memset(dl->n_rec, 0, sizeof dl->n_rec);
+    dl->bytes = 0;
     dl->used_arr = 0;
 }
 
@@ -106,7 +108,7 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
         return 300;
     ws_dl_chunk *c = (ws_dl_chunk *)(void *)b;
     memset(c, 0, sizeof *c);
-    atomic_init(&c->released, 0);
+    atomic_init(&c->done, 0u);
     memcpy(c->cap, cap, sizeof cap);
     c->rec = (ws_dl_rec *)(void *)(b + off[A_REC]);
     c->xyz = (double *)(void *)(b + off[A_XYZ]);
@@ -127,24 +129,42 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
     return 0;
 }
 
-void ws_dlist_release(ws_dl_chunk *c)
+void ws_dlist_release(ws_dl_chunk *c, unsigned reader)
 {
-    atomic_store_explicit(&c->released, 1, memory_order_release);
+    atomic_fetch_or_explicit(&c->done, reader, memory_order_release);
+}
+
+/* Every reader of sealed chunk c has released it. */
+static int chunk_done(ws_dl_chunk *c)
+{
+    return c->sealed &&
+           (c->readers & ~atomic_load_explicit(&c->done, memory_order_acquire)) == 0;
 }
 
 void ws_dlist_trim(ws_dlist *dl)
 {
-    while (dl->first && atomic_load_explicit(&dl->first->released, memory_order_acquire)) {
-        ws_dl_chunk *c = dl->first;
-        dl->first = c->next;
+    ws_dl_chunk *prev = NULL;
+    for (ws_dl_chunk *c = dl->first, *n; c; c = n) {
+        n = c->next;
+        if (!chunk_done(c)) {
+            prev = c;
+            continue;
+        }
+        if (prev)
+            prev->next = n;
+        else
+            dl->first = n;
         if (dl->cur == c)
-            dl->cur = NULL;
+            dl->cur = prev;
         if (dl->undo_chunk == c)
             dl->undo_chunk = NULL;
         dl->bytes -= c->bytes;
         gks_free(c);
     }
 }
+
+/* The index of reader bit reader in n_rec. */
+static int reader_ix(unsigned reader) { return reader == WS_DL_TRACER; }
 
 /* The room a record needs per array (want[A_ATTR] = attribute bytes); 0, or 300 for counts
  * the records cannot hold. */
@@ -184,7 +204,7 @@ static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
     return 1;
 }
 
-int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t attr_size,
+int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put)
 {
     size_t want[N_ARR];
@@ -208,9 +228,12 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
     dl->undo_chunk = c;
     for (int a = 0; a < N_ARR; a++)
         dl->undo[a] = *fill_of(c, a);
+    dl->undo_reader = reader_ix(reader);
+    c->readers |= reader;
     ws_dl_rec *r = &c->rec[c->n_rec++];
-    *r = (ws_dl_rec){ .kind = kind, .view = view, .flags = need->flags &
-                      (WS_DL_NORMALS | WS_DL_COLOURS), .n_facets = need->n_facets,
+    *r = (ws_dl_rec){ .kind = kind, .view = view, .reader = (unsigned short)reader,
+                      .flags = (unsigned short)(need->flags & (WS_DL_NORMALS | WS_DL_COLOURS)),
+                      .n_facets = need->n_facets,
                       .n_loops = need->n_loops, .attr_size = (uint32_t)attr_size,
                       .vtx = (uint32_t)c->n_xyz, .n_vtx = (uint32_t)need->n_vtx,
                       .nrm = (uint32_t)c->n_nrm, .rgb = (uint32_t)c->n_rgb,
@@ -235,7 +258,7 @@ int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t a
                         .loops = need->n_loops ? c->cnt + r->cnt + need->n_facets : NULL,
                         .idx = want[A_IDX] ? c->idx + r->idx : NULL,
                         .data = need->data_size ? c->attr + r->data : NULL };
-    dl->n_rec++;
+    dl->n_rec[dl->undo_reader]++;
     return 0;
 }
 
@@ -247,11 +270,18 @@ void ws_dlist_unappend(ws_dlist *dl)
     for (int a = 0; a < N_ARR; a++)
         *fill_of(c, a) = dl->undo[a];
     dl->undo_chunk = NULL;
-    dl->n_rec--;
+    dl->n_rec[dl->undo_reader]--; /* c->readers keeps the bit: a reader of c reads nothing */
 }
 
 const ws_dl_chunk *ws_dlist_first(const ws_dlist *dl) { return dl->first; }
 
-size_t ws_dlist_count(const ws_dlist *dl) { return dl->n_rec; }
+size_t ws_dlist_count(const ws_dlist *dl, unsigned mask)
+{
+    size_t n = 0;
+    for (int i = 0; i < WS_DL_N_READERS; i++)
+        if ((mask >> i) & 1u)
+            n += dl->n_rec[i];
+    return n;
+}
 
 size_t ws_dlist_bytes(const ws_dlist *dl) { return dl->bytes; }

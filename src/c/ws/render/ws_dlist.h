@@ -13,18 +13,28 @@
  * FILL AREA SET is one facet whose loops take the vertices in order (no indices); a mesh
  * keeps its shared vertices once and its facets as index lists.
  *
+ * One list per frame serves every reader of the workstation's render layer (ws_render owns
+ * it): each record names its reader (WS_DL_CLASSIC: the classic renderer, which keeps its
+ * records until the frame ends; WS_DL_TRACER: the tracer's recording worker, which streams
+ * them into its scenes), and a reader reads only its own records.
+ *
  * The list is append-only for the frame and stored in chunks. A chunk is allocated once with
  * its capacities and never reallocated, so that a reader (a worker thread) can read a sealed
  * chunk while the caller appends to the next one. A chunk is sealed when the next record does
  * not fit or at ws_dlist_seal; each sealed chunk goes to the sink (ws_dlist_set_sink), in
- * order, and stays in the list until ws_dlist_reset, unless its reader releases it
- * (ws_dlist_release: a streaming reader such as the tracer's recording worker, which keeps
- * what it read in its own scene; the list then frees it). A record larger than a chunk gets a
- * chunk of its own, sized to fit. Data flows one way: renderer's recording -> list -> reader.
+ * order. A chunk stays in the list until ws_dlist_reset (the frame boundary) unless every
+ * reader with records in it (ws_dl_chunk.readers) has released it (ws_dlist_release: a
+ * streaming reader such as the tracer's worker, which keeps what it read in its own scene);
+ * the list then frees it, wherever it is in the list. A reader that keeps its records to the
+ * end of the frame (the classic renderer) never releases, so a chunk with any of its records
+ * stays. A record larger than a chunk gets a chunk of its own, sized to fit. Data flows one
+ * way: renderer's recording -> list -> reader. A reader's own reset (ws_rt_reset,
+ * ws_classic_reset) forgets only that reader's state, not the list.
  *
- * Threads: one thread appends, seals and resets; a sink may hand a sealed chunk to another
- * thread, which then only reads it. ws_dlist_reset and ws_dlist_free free the chunks: the
- * caller first makes sure no reader is still at work (e.g. rt_serial_drain).
+ * Threads: one thread appends, seals, trims and resets; a sink may hand a sealed chunk to
+ * another thread, which then only reads it and releases it. ws_dlist_reset and ws_dlist_free
+ * free the chunks: the caller first makes sure no reader is still at work (e.g.
+ * rt_serial_drain).
  */
 #ifndef WS_DLIST_H
 #define WS_DLIST_H
@@ -35,12 +45,16 @@
 /* Per-vertex data a record carries (flags of ws_dl_rec and ws_dl_need). */
 enum { WS_DL_NORMALS = 1u, WS_DL_COLOURS = 2u };
 
+/* The readers of the list, one bit each (ws_dl_rec.reader, ws_dl_chunk.readers). */
+enum { WS_DL_CLASSIC = 1u, WS_DL_TRACER = 2u, WS_DL_N_READERS = 2 };
+
 /* One primitive (64 bytes). Offsets are into the arrays of its chunk; a chunk holds at most
  * UINT32_MAX entries of each array, so they are 32-bit. */
 typedef struct ws_dl_rec {
     int kind;              /* the reader's record kind */
     int view;              /* view index */
-    unsigned flags;        /* WS_DL_NORMALS, WS_DL_COLOURS */
+    unsigned short flags;  /* WS_DL_NORMALS, WS_DL_COLOURS */
+    unsigned short reader; /* whose record it is: WS_DL_CLASSIC or WS_DL_TRACER */
     int n_facets;          /* cnt[cnt .. cnt + n_facets): loops per facet (0: one facet) */
     int n_loops;           /* then n_loops counts: vertices per loop */
     uint32_t attr, attr_size; /* attributes: attr_size bytes at attr (8-byte aligned) */
@@ -57,7 +71,8 @@ typedef struct ws_dl_chunk {
     struct ws_dl_chunk *next; /* the next chunk (set when it is made; a reader of a sealed
                                  chunk on another thread does not follow it) */
     int sealed;
-    atomic_int released;      /* the reader is done with it (ws_dlist_release) */
+    unsigned readers;         /* the readers of its records (set before it is sealed) */
+    atomic_uint done;         /* the readers that released it (ws_dlist_release) */
     size_t bytes;             /* allocated for it */
     ws_dl_rec *rec;
     size_t n_rec;
@@ -100,31 +115,34 @@ typedef void (*ws_dlist_sink)(void *user, ws_dl_chunk *c);
 ws_dlist *ws_dlist_new(void);
 /* Frees it and its chunks (NULL allowed). */
 void ws_dlist_free(ws_dlist *dl);
-/* A new frame: frees the chunks (no reader may be at work). The sink stays. */
+/* A new frame (the frame boundary, for every reader at once): frees the chunks (no reader
+ * may be at work). The sink stays. */
 void ws_dlist_reset(ws_dlist *dl);
 /* The sink of sealed chunks (NULL: none, the default). */
 void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user);
-/* Appends a record of kind and view with attributes attr (attr_size bytes, copied unless
+/* Appends a record of reader (one of WS_DL_CLASSIC, WS_DL_TRACER), kind and view with attributes attr (attr_size bytes, copied unless
  * equal to the previous record's in the chunk) and room for need; *put says where its data
  * goes (the caller fills it before the next call on dl). Returns 0, or 300 (storage, or a
  * count beyond the list's range, such as more than UINT32_MAX vertices: the list
  * unchanged). */
-int ws_dlist_append(ws_dlist *dl, int kind, int view, const void *attr, size_t attr_size,
+int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put);
 /* Takes back the record just appended (before any other call on dl). */
 void ws_dlist_unappend(ws_dlist *dl);
 /* Seals the chunk being filled (to the sink) if it has records. */
 void ws_dlist_seal(ws_dlist *dl);
-/* The reader of sealed chunk c is done with it (any thread; c is not touched afterwards):
- * the list frees it when it makes its next chunk or at ws_dlist_trim, once every chunk
- * before it is released as well. */
-void ws_dlist_release(ws_dl_chunk *c);
-/* Frees the released chunks at the head of the list now (the appending thread). */
+/* Reader (a WS_DL_* bit) is done with sealed chunk c (any thread; c is not touched
+ * afterwards): once every reader of its records is, the list frees it when it makes its
+ * next chunk or at ws_dlist_trim. */
+void ws_dlist_release(ws_dl_chunk *c, unsigned reader);
+/* Frees the sealed chunks every reader of which has released them, now (the appending
+ * thread; it looks at every chunk of the list). */
 void ws_dlist_trim(ws_dlist *dl);
 /* The first chunk of the frame that is not freed (NULL if none); the others by next. */
 const ws_dl_chunk *ws_dlist_first(const ws_dlist *dl);
-/* Records appended since the reset (those of freed chunks included). */
-size_t ws_dlist_count(const ws_dlist *dl);
+/* Records of the readers in mask (WS_DL_* bits) appended since the reset (those of freed
+ * chunks included). */
+size_t ws_dlist_count(const ws_dlist *dl, unsigned mask);
 /* Bytes of the chunks held now (allocated), for measurements. */
 size_t ws_dlist_bytes(const ws_dlist *dl);
 #endif

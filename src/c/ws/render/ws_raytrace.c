@@ -53,10 +53,12 @@ enum { DL_POLY = 1 };
 struct ws_rt {
     rt_view_rec view[GKS_MAX_VIEW_IND + 1];
     size_t count;            /* tracer primitives recorded (or queued) */
-    /* asynchronous recording: the display list of the areas (its sealed chunks go to the
-     * queue, NULL: off); the worker's side: the view record its areas go to (NULL: their
+    /* asynchronous recording: the display list of the frame (the render layer's, which the
+     * classic renderer reads as well, or the recording's own: own_dl), its sealed chunks
+     * with areas go to the queue (NULL: off); the worker's side: the view record its areas go to (NULL: their
      * surfaces failed), the first error and the areas lost since the last ws_rt_sync */
     ws_dlist *dl;
+    int own_dl;
     rt_serial *queue;
     int qtried;              /* rt_serial_new was asked (and said NULL: off) */
     rt_view_rec *wvr;
@@ -133,12 +135,13 @@ static int preview_end(void *user, rt_frame *f)
 /* Points transformed on the stack up to this many (larger areas use the heap). */
 #define STACK_POINTS 32
 
-ws_rt *ws_rt_new(void)
+ws_rt *ws_rt_new(ws_dlist *dl)
 {
     ws_rt *r = gks_calloc_array(1, sizeof(ws_rt));
     if (!r)
         return NULL;
-    r->dl = ws_dlist_new();
+    r->own_dl = !dl;
+    r->dl = dl ? dl : ws_dlist_new();
     if (!r->dl) {
         gks_free(r);
         return NULL;
@@ -155,7 +158,8 @@ static int ws_rt_sync(ws_rt *r)
     if (r->queue) {
         ws_dlist_seal(r->dl); /* the chunk being filled to the queue */
         rt_serial_drain(r->queue);
-        ws_dlist_trim(r->dl); /* every chunk is in the scenes: freed */
+        ws_dlist_trim(r->dl); /* every chunk is in the scenes: freed (unless the classic
+                                 renderer has records in it) */
         r->count -= r->wlost;
         r->wlost = 0;
         r->wvr = NULL;
@@ -170,8 +174,9 @@ static void queue_stop(ws_rt *r)
     rt_serial_free(r->queue);
     r->queue = NULL;
     r->qtried = 0;
-    ws_dlist_reset(r->dl);
     ws_dlist_set_sink(r->dl, NULL, NULL);
+    if (r->own_dl)
+        ws_dlist_reset(r->dl); /* the render layer's list: reset at the frame boundary */
 }
 
 void ws_rt_reset(ws_rt *r)
@@ -192,7 +197,8 @@ void ws_rt_free(ws_rt *r)
     if (!r)
         return;
     ws_rt_reset(r);
-    ws_dlist_free(r->dl);
+    if (r->own_dl)
+        ws_dlist_free(r->dl);
     gks_free(r);
 }
 
@@ -769,8 +775,8 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 
 /* ---- asynchronous recording ---------------------------------------------------------- */
 
-/* The worker's side: the records of a sealed chunk of the display list into the views'
- * scenes, then the chunk released. rt_serial runs the chunks one at a time in queue order, so
+/* The worker's side: the tracer's records of a sealed chunk of the display list into the
+ * views' scenes (the classic renderer's records in it are skipped), then the chunk released. rt_serial runs the chunks one at a time in queue order, so
  * the scenes get the areas in call order, with the surfaces the synchronous path would have
  * made (view_surfaces makes new ones only when the attributes differ from the view's latest). */
 static void rec_run(void *user, void *item)
@@ -781,6 +787,8 @@ static void rec_run(void *user, void *item)
     int view = -1;
     for (size_t k = 0; k < c->n_rec; k++) {
         const ws_dl_rec *h = &c->rec[k];
+        if (h->reader != WS_DL_TRACER)
+            continue;
         int e = 0;
         if (h->attr != attr || h->view != view) {
             rt_attr a;
@@ -807,13 +815,15 @@ static void rec_run(void *user, void *item)
         if (e)
             atomic_compare_exchange_strong(&r->werr, &none, e);
     }
-    ws_dlist_release(c);
+    ws_dlist_release(c, WS_DL_TRACER);
 }
 
-/* The display list's sink: a sealed chunk to the worker. */
+/* The display list's sink: a sealed chunk with areas to the worker (one with only the
+ * classic renderer's records stays where it is). */
 static void queue_chunk(void *user, ws_dl_chunk *c)
 {
-    rt_serial_push(((ws_rt *)user)->queue, c);
+    if (c->readers & WS_DL_TRACER)
+        rt_serial_push(((ws_rt *)user)->queue, c);
 }
 
 /* The queue of the asynchronous recording, started at the first area (rt_serial_new once:
@@ -928,7 +938,7 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     const rt_attr a = attr_of(prim);
     const ws_dl_need need = { .n_vtx = np, .flags = data, .n_loops = nl };
     ws_dl_put put;
-    if (ws_dlist_append(r->dl, DL_POLY, vi, &a, sizeof a, &need, &put))
+    if (ws_dlist_append(r->dl, WS_DL_TRACER, DL_POLY, vi, &a, sizeof a, &need, &put))
         return 300;
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
     /* max_abs of the VRC3 coordinates, as the synchronous path finds it */

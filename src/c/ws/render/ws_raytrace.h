@@ -10,14 +10,19 @@
 #include "raster.h"
 #include "ws_driver.h"
 #include "gksrt.h"
+#include "ws_dlist.h"
 
 typedef struct ws_rt ws_rt;
 
-/* New empty recording with default options, NULL if out of memory. */
-ws_rt *ws_rt_new(void);
+/* New empty recording with default options, NULL if out of memory. Its areas go through
+ * the display list dl (the render layer's, shared with the classic renderer; it must outlive
+ * the recording), or a list of its own (dl NULL). */
+ws_rt *ws_rt_new(ws_dlist *dl);
 /* Frees a recording (NULL allowed). */
 void ws_rt_free(ws_rt *r);
-/* Forgets all recorded primitives (new frame); keeps the options and the last statistics. */
+/* Forgets all recorded primitives (new frame); keeps the options and the last statistics.
+ * A shared display list keeps its records (ws_dlist_reset at the frame boundary, by its
+ * owner): the classic renderer's retained primitives stay. */
 void ws_rt_reset(ws_rt *r);
 /* Number of recorded tracer primitives (a clipped CELL ARRAY may record several). */
 int ws_rt_count(const ws_rt *r);

@@ -19,8 +19,13 @@ ws_render *ws_render_new(void)
     ws_render *r = gks_calloc_array(1, sizeof *r);
     if (!r)
         return NULL;
-    r->rt = ws_rt_new();
-    r->classic = ws_classic_new();
+    r->dl = ws_dlist_new();
+    if (!r->dl) {
+        gks_free(r);
+        return NULL;
+    }
+    r->rt = ws_rt_new(r->dl);
+    r->classic = ws_classic_new(r->dl);
     if (!r->classic || !r->rt) {
         ws_render_free(r);
         return NULL;
@@ -32,15 +37,17 @@ void ws_render_free(ws_render *r)
 {
     if (!r)
         return;
+    ws_rt_free(r->rt); /* stops the recording worker, which reads the list */
     ws_classic_free(r->classic);
-    ws_rt_free(r->rt);
+    ws_dlist_free(r->dl);
     gks_free(r);
 }
 
 void ws_render_reset(ws_render *r)
 {
-    ws_rt_reset(r->rt);
+    ws_rt_reset(r->rt); /* first: no worker reads the list afterwards */
     ws_classic_reset(r->classic);
+    ws_dlist_reset(r->dl);
 }
 
 int ws_render_prim(ws_render *r, gks_ws *ws, gks_raster_fb *fb, const gks_prim *prim)

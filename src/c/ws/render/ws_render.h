@@ -24,15 +24,19 @@ ws_route ws_render_route(const gks_ws *ws, const gks_prim *prim);
 /* One workstation's renderers; the drivers use the two parts directly for what is theirs
  * (composing, pixel readback, the ray-tracing ESCAPEs, the traced tiles shown at once). */
 typedef struct ws_render {
+    ws_dlist *dl;           /* the frame's one display list (ws_dlist.h), which both read:
+                               the classic renderer's retained records, the tracer's areas */
     ws_classic *classic;    /* retained and immediate primitives of the classic modes */
     ws_rt *rt;              /* areas recorded in HLHSR mode GHLHSR_RAYTRACE */
 } ws_render;
 
-/* Both renderers, empty; NULL if out of memory. */
+/* Both renderers on one display list, empty; NULL if out of memory. */
 ws_render *ws_render_new(void);
-/* Frees both (NULL allowed). */
+/* Frees both and the list (NULL allowed). */
 void ws_render_free(ws_render *r);
-/* A new frame: forgets the recorded and the retained primitives of both. */
+/* A new frame: forgets the recorded and the retained primitives of both (each reader's
+ * state, then the display list: the frame boundary). A driver that traced the frame into its
+ * framebuffer calls ws_rt_reset alone, which keeps the list's classic records. */
 void ws_render_reset(ws_render *r);
 /* Draws prim by its route (ws_render_route): recorded for the tracer, or drawn into fb by
  * the classic renderer. Returns 0 or the error of the renderer (300 storage, 308 coordinate
