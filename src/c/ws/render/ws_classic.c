@@ -63,6 +63,17 @@ typedef struct rec {
     int n_fill, n_edge;
 } rec;
 
+/* A record's own data in the display list (32 bytes): what differs from record to record
+ * and the list's record does not hold. Its kind is the list record's, n_edge its loops but
+ * n_fill; a MARK has its id after it (a size_t). */
+typedef struct srec {
+    double key;
+    float rgb[3];
+    float zbias;
+    int n_fill;
+    unsigned char overlay, outlined;
+} srec;
+
 /* A record with its data, in the scratch arrays or in the display list. */
 typedef struct rref {
     rec rc;
@@ -72,11 +83,10 @@ typedef struct rref {
     const float *fl;         /* a->fl counts from here */
 } rref;
 
-/* A record of the display list (compose and walk index the frame's records by these). */
-typedef struct dref {
-    const ws_dl_chunk *c;
-    const ws_dl_rec *d;
-} dref;
+/* A position in the display list's chunks (compose, walk): chunk number and record. */
+typedef struct cursor {
+    size_t chunk, k;
+} cursor;
 
 /* The view pipeline of one view index, valid while the inputs it was made from (view
  * representation, workstation window and viewport) are unchanged. */
@@ -93,8 +103,8 @@ struct ws_classic {
     ws_dlist *dl;          /* the display list of the frame: its WS_DL_CLASSIC records are
                               the retained primitives */
     int own_dl;            /* dl is this renderer's own (else the render layer's) */
-    dref *refs;            /* compose, walk: the list's records, in order */
-    size_t cap_refs;
+    const ws_dl_chunk **chunks; /* compose, walk: the list's chunks, in order */
+    size_t n_chunks, cap_chunks;
     /* scratch of the record being built */
     rattr *attrs;
     size_t n_attr, cap_attr;
@@ -162,7 +172,7 @@ void ws_classic_free(ws_classic *r)
         return;
     if (r->own_dl)
         ws_dlist_free(r->dl);
-    gks_free(r->refs);
+    gks_free(r->chunks);
     gks_free(r->attrs);
     gks_free(r->pts);
     gks_free(r->cnts);
@@ -607,6 +617,15 @@ static int add_loops(build *b, const Gpoint3 *ndc, int n_loops, const int *lc,
     return 300;
 }
 
+/* rc's own data (srec) to dst. */
+static void srec_put(void *dst, const rec *rc)
+{
+    const srec d = { .key = rc->key, .rgb = { rc->rgb[0], rc->rgb[1], rc->rgb[2] },
+                     .zbias = rc->zbias, .n_fill = rc->n_fill, .overlay = rc->overlay,
+                     .outlined = rc->outlined };
+    memcpy(dst, &d, sizeof d);
+}
+
 /* The finished record rc (scratch from pt0, cnt0, fl0) into the display list: its DC
  * points as vertices, its counts as loops, its attributes with their floats (a->fl counted
  * from the first of them) as attributes, rc as its own data. 0 or 300. */
@@ -628,14 +647,14 @@ static int rec_retain(build *b, const rec *rc, size_t pt0, size_t cnt0, size_t f
     if (n_fl)
         memcpy(blk + sizeof a, r->fl + fl0, n_fl * sizeof(float));
     const ws_dl_need need = { .n_vtx = r->n_pt - pt0, .n_loops = (int)n_cnt,
-                              .data_size = sizeof *rc };
+                              .data_size = sizeof(srec) };
     ws_dl_put put;
     int e = ws_dlist_append(r->dl, WS_DL_CLASSIC, rc->kind, b->vi, blk, asz, &need, &put);
     if (blk != sblk)
         gks_free(blk);
     if (e)
         return e;
-    memcpy(put.data, rc, sizeof *rc);
+    srec_put(put.data, rc);
     if (need.n_vtx)
         memcpy(put.xyz, r->pts + pt0, need.n_vtx * sizeof *r->pts);
     if (n_cnt)
@@ -1320,7 +1339,9 @@ static int draw_rec(ws_classic *r, gks_raster_fb *fb, const rref *x, int how,
     return first_err(e, draw_area_lines(fb, rc, a, pts, cnt, n_fill_pts, outline, zm, &la));
 }
 
-typedef struct key_idx { double key; size_t idx; } key_idx;
+/* A painter sort entry: key, then the record's position (chunk << 32 | record: arrival
+ * order; a chunk holds at most UINT32_MAX records). */
+typedef struct key_idx { double key; uint64_t idx; } key_idx;
 
 static int cmp_key(const void *pa, const void *pb)
 {
@@ -1330,28 +1351,33 @@ static int cmp_key(const void *pa, const void *pb)
     return (a->idx > b->idx) - (a->idx < b->idx);
 }
 
-/* The display list's classic records into r->refs, in order (the tracer's are not this
- * renderer's); their number, or -1 (300). */
-static long refs_build(ws_classic *r)
+/* The display list's chunks into r->chunks, in order. 0 or 300. */
+static int chunks_build(ws_classic *r)
 {
-    const size_t n = ws_dlist_count(r->dl, WS_DL_CLASSIC);
-    if (n > LONG_MAX || GROW(r, refs, cap_refs, n))
-        return -1;
-    size_t i = 0;
+    size_t n = 0;
     for (const ws_dl_chunk *c = ws_dlist_first(r->dl); c; c = c->next)
-        for (size_t k = 0; k < c->n_rec; k++)
-            if (c->rec[k].reader == WS_DL_CLASSIC)
-                r->refs[i++] = (dref){ c, &c->rec[k] };
-    return (long)i;
+        n++;
+    if (GROW(r, chunks, cap_chunks, n))
+        return 300;
+    n = 0;
+    for (const ws_dl_chunk *c = ws_dlist_first(r->dl); c; c = c->next)
+        r->chunks[n++] = c;
+    r->n_chunks = n;
+    return 0;
 }
 
-/* Record i of r->refs with its data. */
-static rref ref_at(const ws_classic *r, size_t i)
+/* Record d of chunk c with its data. */
+static rref ref_of(const ws_dl_chunk *c, const ws_dl_rec *d)
 {
-    const ws_dl_chunk *c = r->refs[i].c;
-    const ws_dl_rec *d = r->refs[i].d;
+    srec s;
+    memcpy(&s, c->attr + d->data, sizeof s);
     rref x;
-    memcpy(&x.rc, c->attr + d->data, sizeof x.rc);
+    x.rc = (rec){ .kind = (unsigned char)d->kind, .overlay = s.overlay,
+                  .outlined = s.outlined, .rgb = { s.rgb[0], s.rgb[1], s.rgb[2] },
+                  .zbias = s.zbias, .key = s.key, .n_fill = s.n_fill,
+                  .n_edge = d->n_loops - s.n_fill };
+    if (d->kind == REC_MARK)
+        memcpy(&x.rc.attr, c->attr + d->data + sizeof s, sizeof x.rc.attr);
     x.a = d->attr_size ? (const rattr *)(const void *)(c->attr + d->attr) : NULL;
     x.fl = (const float *)(const void *)(c->attr + d->attr + sizeof(rattr));
     x.pts = (const gks_raster_pt *)(const void *)(c->xyz + 3 * (size_t)d->vtx);
@@ -1359,23 +1385,47 @@ static rref ref_at(const ws_classic *r, size_t i)
     return x;
 }
 
-/* Painter's order of the n_rec records of r->refs that are not overlays: by key (mean DC
- * depth, farthest first), ties in the order of arrival. Returns the sorted entries (caller
- * frees) and their number in *m, or NULL (300). */
-static key_idx *painter_order(const ws_classic *r, size_t n_rec, size_t *m)
+/* The classic record after *it (the tracer's records are not this renderer's) into *x, *it
+ * past it; 0 at the end. A cursor starts at { 0, 0 } (after chunks_build). */
+static int rec_next(const ws_classic *r, cursor *it, rref *x)
 {
-    key_idx *ki = gks_alloc_array(n_rec, sizeof *ki);
+    for (; it->chunk < r->n_chunks; it->chunk++, it->k = 0) {
+        const ws_dl_chunk *c = r->chunks[it->chunk];
+        while (it->k < c->n_rec) {
+            const ws_dl_rec *d = &c->rec[it->k++];
+            if (d->reader == WS_DL_CLASSIC) {
+                *x = ref_of(c, d);
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Painter's order of the classic records of r->chunks that are not overlays: by key (mean
+ * DC depth, farthest first), ties in the order of arrival. Returns the sorted entries (caller
+ * frees) and their number in *m, or NULL (300). */
+static key_idx *painter_order(const ws_classic *r, size_t *m)
+{
+    key_idx *ki = gks_alloc_array(ws_dlist_count(r->dl, WS_DL_CLASSIC), sizeof *ki);
     if (!ki)
         return NULL;
     size_t n = 0;
-    for (size_t i = 0; i < n_rec; i++) {
-        const rref x = ref_at(r, i);
+    rref x;
+    for (cursor it = { 0, 0 }; rec_next(r, &it, &x);)
         if (!x.rc.overlay)
-            ki[n++] = (key_idx){ isfinite(x.rc.key) ? x.rc.key : 0.0, i };
-    }
+            ki[n++] = (key_idx){ isfinite(x.rc.key) ? x.rc.key : 0.0,
+                                 (uint64_t)it.chunk << 32 | (uint64_t)(it.k - 1) };
     qsort(ki, n, sizeof *ki, cmp_key);
     *m = n;
     return ki;
+}
+
+/* The record of painter entry k with its data. */
+static rref ref_key(const ws_classic *r, const key_idx *k)
+{
+    const ws_dl_chunk *c = r->chunks[k->idx >> 32];
+    return ref_of(c, &c->rec[k->idx & UINT32_MAX]);
 }
 
 static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raster_fb **out,
@@ -1399,12 +1449,10 @@ static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
     *out = fb;
     if (ws_dlist_count(r->dl, WS_DL_CLASSIC) == 0)
         return 0;
-    const long nr = refs_build(r);
-    if (nr < 0) {
+    if (chunks_build(r)) {
         *out = NULL;
         return 300;
     }
-    const size_t n_rec = (size_t)nr;
     gks_raster_fb *c = r->composed;
     if (!c || c->width != fb->width || c->height != fb->height || c->ss != fb->ss) {
         gks_raster_fb_free(c);
@@ -1418,39 +1466,37 @@ static int compose(ws_classic *r, const gks_ws *ws, gks_raster_fb *fb, gks_raste
     memcpy(c->rgb, fb->rgb, 3 * ns * sizeof *c->rgb);
     memcpy(c->z, fb->z, ns * sizeof *c->z);
     int mode = ws->hlhsr_mode, e = 0; /* the first storage failure: the picture lacks it */
+    rref x;
     if (mode == GHLHSR_PAINTER) {
         size_t n;
-        key_idx *ki = painter_order(r, n_rec, &n);
+        key_idx *ki = painter_order(r, &n);
         if (!ki) {
             *out = NULL;
             return 300;
         }
         for (size_t i = 0; i < n; i++) {
             gks_raster_stroke st = { 0 };
-            const rref x = ref_at(r, ki[i].idx);
+            const rref x = ref_key(r, &ki[i]);
             e = first_err(e, draw_rec(r, c, &x, DRAW_PLAIN, &st));
         }
         gks_free(ki);
     } else if (mode == GHLHSR_HIDDEN_LINE) {
         for (int pass = 0; pass < 2; pass++)
-            for (size_t i = 0; i < n_rec; i++) {
+            for (cursor it = { 0, 0 }; rec_next(r, &it, &x);) {
                 gks_raster_stroke st = { 0 };
-                const rref x = ref_at(r, i);
                 if (!x.rc.overlay)
                     e = first_err(e, draw_rec(r, c, &x, pass ? DRAW_HL_LINES : DRAW_HL_AREAS,
                                               &st));
             }
     } else { /* retained under another mode, the mode changed within the frame */
-        for (size_t i = 0; i < n_rec; i++) {
+        for (cursor it = { 0, 0 }; rec_next(r, &it, &x);) {
             gks_raster_stroke st = { 0 };
-            const rref x = ref_at(r, i);
             if (!x.rc.overlay)
                 e = first_err(e, draw_rec(r, c, &x, immediate_mode(ws), &st));
         }
     }
-    for (size_t i = 0; i < n_rec && overlays; i++) {
+    for (cursor it = { 0, 0 }; overlays && rec_next(r, &it, &x);) {
         gks_raster_stroke st = { 0 };
-        const rref x = ref_at(r, i);
         if (x.rc.overlay)
             e = first_err(e, draw_rec(r, c, &x, DRAW_PLAIN, &st));
     }
@@ -1471,11 +1517,12 @@ int ws_classic_keep(ws_classic *r, const gks_ws *ws, const gks_prim *prim)
 int ws_classic_keep_mark(ws_classic *r, size_t id, double key, int overlay)
 {
     const rec rc = { .kind = REC_MARK, .overlay = overlay != 0, .key = key, .attr = id };
-    const ws_dl_need need = { .data_size = sizeof rc };
+    const ws_dl_need need = { .data_size = sizeof(srec) + sizeof id };
     ws_dl_put put;
     if (ws_dlist_append(r->dl, WS_DL_CLASSIC, REC_MARK, 0, NULL, 0, &need, &put))
         return 300;
-    memcpy(put.data, &rc, sizeof rc);
+    srec_put(put.data, &rc);
+    memcpy((unsigned char *)put.data + sizeof(srec), &id, sizeof id);
     return 0;
 }
 
@@ -1710,19 +1757,18 @@ int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_em
 {
     if (ws_dlist_count(r->dl, WS_DL_CLASSIC) == 0)
         return 0;
-    const long nr = refs_build(r);
-    if (nr < 0)
+    if (chunks_build(r))
         return 300;
-    const size_t n_rec = (size_t)nr;
     walk w = { .r = r, .emit = emit, .ctx = ctx };
     int e = 0;
+    rref x;
     if (mode == GHLHSR_PAINTER) {
         size_t n;
-        key_idx *ki = painter_order(r, n_rec, &n);
+        key_idx *ki = painter_order(r, &n);
         if (!ki)
             return 300;
         for (size_t i = 0; i < n && !e; i++) {
-            const rref x = ref_at(r, ki[i].idx);
+            x = ref_key(r, &ki[i]);
             e = emit_rec(&w, &x, 0);
         }
         gks_free(ki);
@@ -1735,30 +1781,23 @@ int ws_classic_walk(ws_classic *r, int mode, int width, int height, ws_render_em
                 return 300;
         }
         gks_raster_fb_clear(d, NULL);
-        for (size_t i = 0; i < n_rec; i++) {
+        for (cursor it = { 0, 0 }; rec_next(r, &it, &x);) {
             gks_raster_stroke st = { 0 };
-            const rref x = ref_at(r, i);
             if (!x.rc.overlay)
                 draw_rec(r, d, &x, DRAW_HL_AREAS, &st);
         }
         w.depth = d;
-        for (size_t i = 0; i < n_rec && !e; i++) {
-            const rref x = ref_at(r, i);
+        for (cursor it = { 0, 0 }; !e && rec_next(r, &it, &x);)
             if (!x.rc.overlay)
                 e = emit_rec(&w, &x, 1);
-        }
         w.depth = NULL;
     } else {
-        for (size_t i = 0; i < n_rec && !e; i++) {
-            const rref x = ref_at(r, i);
+        for (cursor it = { 0, 0 }; !e && rec_next(r, &it, &x);)
             if (!x.rc.overlay)
                 e = emit_rec(&w, &x, 0);
-        }
     }
-    for (size_t i = 0; i < n_rec && !e; i++) {
-        const rref x = ref_at(r, i);
+    for (cursor it = { 0, 0 }; !e && rec_next(r, &it, &x);)
         if (x.rc.overlay)
             e = emit_rec(&w, &x, 0);
-    }
     return e;
 }
