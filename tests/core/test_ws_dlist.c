@@ -168,11 +168,21 @@ static void test_mesh(void **state)
     assert_int_equal(c->cnt[r->cnt + 2], 3);
     for (int i = 0; i < 12; i++) {
         assert_true(c->xyz[3 * (size_t)r->vtx + (size_t)i] == i);
-        assert_true(c->nrm[3 * (size_t)r->nrm + (size_t)i] == 100 + i);
-        assert_true(c->rgb[3 * (size_t)r->rgb + (size_t)i] == 200 + i);
+        assert_true(c->nrm[3 * (size_t)r->vtx + (size_t)i] == 100 + i);
+        assert_true(c->rgb[3 * (size_t)r->vtx + (size_t)i] == 200 + i);
     }
     check_poly(c0, &c0->rec[0], 3, 0); /* untouched */
     assert_true(c->cap[2] >= 8192 && c->cap[3] >= 8192 && c->cap[5] >= 16384);
+    /* a record without normals, then one with: its normals at its vertices' index */
+    assert_int_equal(add_poly(dl, 1, &a, 5, 0), 0);
+    const ws_dl_need nn = { .n_vtx = 2, .flags = WS_DL_NORMALS, .n_loops = 1 };
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 9, 1, &a, sizeof a, &nn, &p), 0);
+    const ws_dl_rec *r2 = &c->rec[c->n_rec - 1];
+    assert_int_equal(r2->vtx, 4 + 5);
+    assert_ptr_equal(p.nrm, c->nrm + 3 * (size_t)r2->vtx);
+    assert_null(p.rgb);
+    assert_int_equal(c->n_nrm, c->n_xyz);
+    assert_int_equal(sizeof(ws_dl_rec), 48);
     ws_dlist_free(dl);
 }
 
@@ -377,6 +387,9 @@ static void test_unappend_and_limits(void **state)
     assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &over, &p), 300);
     assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &wide, &p), 300);
     assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, 0, &a, sizeof a, &huge, &p), 300);
+    const ws_dl_need one = { .n_vtx = 3, .n_loops = 1 };
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 256, 0, &a, sizeof a, &one, &p), 300);
+    assert_int_equal(ws_dlist_append(dl, WS_DL_TRACER, 1, -1, &a, sizeof a, &one, &p), 300);
     assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 2);
     assert_null(c->next);
     ws_dlist_free(dl);

@@ -638,19 +638,23 @@ static int rec_retain(build *b, const rec *rc, size_t pt0, size_t cnt0, size_t f
         return 300;
     rattr a = r->attrs[rc->attr];
     a.fl = a.fl >= fl0 ? a.fl - fl0 : 0;
-    /* attributes and floats as one block (the list compares and copies it whole) */
+    /* attributes and floats as one block (the list compares and copies it whole); without
+     * floats a itself */
     unsigned char sblk[sizeof(rattr) + 64 * sizeof(float)];
-    unsigned char *blk = asz <= sizeof sblk ? sblk : gks_alloc_array(1, asz);
+    unsigned char *blk = !n_fl ? (unsigned char *)&a
+                         : asz <= sizeof sblk ? sblk : gks_alloc_array(1, asz);
     if (!blk)
         return 300;
-    memcpy(blk, &a, sizeof a);
-    if (n_fl)
+    if (n_fl) {
+        memcpy(blk, &a, sizeof a);
         memcpy(blk + sizeof a, r->fl + fl0, n_fl * sizeof(float));
+    }
     const ws_dl_need need = { .n_vtx = r->n_pt - pt0, .n_loops = (int)n_cnt,
                               .data_size = sizeof(srec) };
     ws_dl_put put;
-    int e = ws_dlist_append(r->dl, WS_DL_CLASSIC, rc->kind, b->vi, blk, asz, &need, &put);
-    if (blk != sblk)
+    const int vi = b->vi >= 0 && b->vi <= GKS_MAX_VIEW_IND ? b->vi : 0; /* as view_get */
+    int e = ws_dlist_append(r->dl, WS_DL_CLASSIC, rc->kind, vi, blk, asz, &need, &put);
+    if (blk != sblk && blk != (unsigned char *)&a)
         gks_free(blk);
     if (e)
         return e;
@@ -1411,11 +1415,19 @@ static key_idx *painter_order(const ws_classic *r, size_t *m)
     if (!ki)
         return NULL;
     size_t n = 0;
-    rref x;
-    for (cursor it = { 0, 0 }; rec_next(r, &it, &x);)
-        if (!x.rc.overlay)
-            ki[n++] = (key_idx){ isfinite(x.rc.key) ? x.rc.key : 0.0,
-                                 (uint64_t)it.chunk << 32 | (uint64_t)(it.k - 1) };
+    for (size_t ci = 0; ci < r->n_chunks; ci++) {
+        const ws_dl_chunk *c = r->chunks[ci];
+        for (size_t k = 0; k < c->n_rec; k++) {
+            const ws_dl_rec *d = &c->rec[k];
+            srec s;
+            if (d->reader != WS_DL_CLASSIC)
+                continue;
+            memcpy(&s, c->attr + d->data, sizeof s);
+            if (!s.overlay)
+                ki[n++] = (key_idx){ isfinite(s.key) ? s.key : 0.0,
+                                     (uint64_t)ci << 32 | (uint64_t)k };
+        }
+    }
     qsort(ki, n, sizeof *ki, cmp_key);
     *m = n;
     return ki;

@@ -36,12 +36,16 @@ struct ws_dlist {
 
 static size_t round8(size_t n) { return (n + 7) & ~(size_t)7; }
 
+/* Where the fill of each array is in a chunk. */
+static const size_t fill_off[N_ARR] = {
+    offsetof(ws_dl_chunk, n_rec), offsetof(ws_dl_chunk, n_xyz), offsetof(ws_dl_chunk, n_nrm),
+    offsetof(ws_dl_chunk, n_rgb), offsetof(ws_dl_chunk, n_cnt), offsetof(ws_dl_chunk, n_idx),
+    offsetof(ws_dl_chunk, n_attr) };
+
 /* Fill of array a of chunk c. */
 static size_t *fill_of(ws_dl_chunk *c, int a)
 {
-    size_t *f[N_ARR] = { &c->n_rec, &c->n_xyz, &c->n_nrm, &c->n_rgb, &c->n_cnt, &c->n_idx,
-                         &c->n_attr };
-    return f[a];
+    return (size_t *)(void *)((unsigned char *)c + fill_off[a]);
 }
 
 ws_dlist *ws_dlist_new(void)
@@ -95,6 +99,8 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
                              ? ((dl->used_arr >> a) & 1u ? def_cap[a] : 0)
                              : def_cap[a];
         cap[a] = want[a] > d ? want[a] : d; /* <= UINT32_MAX (need_of), offsets fit */
+        if ((a == A_NRM || a == A_RGB) && cap[a])
+            cap[a] = cap[A_XYZ]; /* indexed as the vertices */
         if (cap[a] > UINT32_MAX || cap[a] > (SIZE_MAX - 8) / elem[a])
             return 300;
         off[a] = total;
@@ -201,14 +207,17 @@ static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
     for (int a = 0; a < N_ARR; a++)
         if (want[a] > c->cap[a] - *fill_of(c, a))
             return 0;
-    return 1;
+    /* normals and colours at the vertices' index */
+    return (!want[A_NRM] || c->n_xyz + want[A_NRM] <= c->cap[A_NRM]) &&
+           (!want[A_RGB] || c->n_xyz + want[A_RGB] <= c->cap[A_RGB]);
 }
 
 int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put)
 {
     size_t want[N_ARR];
-    if (need_of(need, attr_size, want))
+    if (kind < 0 || kind > UCHAR_MAX || view < 0 || view > UCHAR_MAX ||
+        need_of(need, attr_size, want))
         return 300;
     for (int a = A_NRM; a <= A_IDX; a++) /* new chunks have room for these from now on */
         if (want[a] && a != A_CNT)
@@ -231,12 +240,12 @@ int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const voi
     dl->undo_reader = reader_ix(reader);
     c->readers |= reader;
     ws_dl_rec *r = &c->rec[c->n_rec++];
-    *r = (ws_dl_rec){ .kind = kind, .view = view, .reader = (unsigned short)reader,
-                      .flags = (unsigned short)(need->flags & (WS_DL_NORMALS | WS_DL_COLOURS)),
+    *r = (ws_dl_rec){ .kind = (unsigned char)kind, .view = (unsigned char)view,
+                      .reader = (unsigned char)reader,
+                      .flags = (unsigned char)(need->flags & (WS_DL_NORMALS | WS_DL_COLOURS)),
                       .n_facets = need->n_facets,
                       .n_loops = need->n_loops, .attr_size = (uint32_t)attr_size,
                       .vtx = (uint32_t)c->n_xyz, .n_vtx = (uint32_t)need->n_vtx,
-                      .nrm = (uint32_t)c->n_nrm, .rgb = (uint32_t)c->n_rgb,
                       .cnt = (uint32_t)c->n_cnt, .idx = (uint32_t)c->n_idx,
                       .n_idx = (uint32_t)need->n_idx };
     r->attr = shared ? c->rec[c->n_rec - 2].attr : (uint32_t)c->n_attr;
@@ -246,14 +255,16 @@ int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const voi
     r->data_size = (uint32_t)need->data_size;
     c->n_attr += want[A_ATTR];
     c->n_xyz += want[A_XYZ];
-    c->n_nrm += want[A_NRM];
-    c->n_rgb += want[A_RGB];
+    if (want[A_NRM])
+        c->n_nrm = c->n_xyz;
+    if (want[A_RGB])
+        c->n_rgb = c->n_xyz;
     c->n_cnt += want[A_CNT];
     c->n_idx += want[A_IDX];
     *put = (ws_dl_put){ .rec = r,
                         .xyz = want[A_XYZ] ? c->xyz + 3 * (size_t)r->vtx : NULL,
-                        .nrm = want[A_NRM] ? c->nrm + 3 * (size_t)r->nrm : NULL,
-                        .rgb = want[A_RGB] ? c->rgb + 3 * (size_t)r->rgb : NULL,
+                        .nrm = want[A_NRM] ? c->nrm + 3 * (size_t)r->vtx : NULL,
+                        .rgb = want[A_RGB] ? c->rgb + 3 * (size_t)r->vtx : NULL,
                         .facets = need->n_facets ? c->cnt + r->cnt : NULL,
                         .loops = need->n_loops ? c->cnt + r->cnt + need->n_facets : NULL,
                         .idx = want[A_IDX] ? c->idx + r->idx : NULL,

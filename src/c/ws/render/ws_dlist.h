@@ -48,19 +48,19 @@ enum { WS_DL_NORMALS = 1u, WS_DL_COLOURS = 2u };
 /* The readers of the list, one bit each (ws_dl_rec.reader, ws_dl_chunk.readers). */
 enum { WS_DL_CLASSIC = 1u, WS_DL_TRACER = 2u, WS_DL_N_READERS = 2 };
 
-/* One primitive (64 bytes). Offsets are into the arrays of its chunk; a chunk holds at most
- * UINT32_MAX entries of each array, so they are 32-bit. */
+/* One primitive (48 bytes). Offsets are into the arrays of its chunk; a chunk holds at most
+ * UINT32_MAX entries of each array, so they are 32-bit. A record's normals and colours (if
+ * its flags say so) are at its vertices' index: nrm[3 * vtx ...], rgb[3 * vtx ...]. */
 typedef struct ws_dl_rec {
-    int kind;              /* the reader's record kind */
-    int view;              /* view index */
-    unsigned short flags;  /* WS_DL_NORMALS, WS_DL_COLOURS */
-    unsigned short reader; /* whose record it is: WS_DL_CLASSIC or WS_DL_TRACER */
+    unsigned char kind;    /* the reader's record kind (0 .. 255) */
+    unsigned char reader;  /* whose record it is: WS_DL_CLASSIC or WS_DL_TRACER */
+    unsigned char flags;   /* WS_DL_NORMALS, WS_DL_COLOURS */
+    unsigned char view;    /* view index (0 .. 255) */
     int n_facets;          /* cnt[cnt .. cnt + n_facets): loops per facet (0: one facet) */
     int n_loops;           /* then n_loops counts: vertices per loop */
     uint32_t attr, attr_size; /* attributes: attr_size bytes at attr (8-byte aligned) */
     uint32_t data, data_size; /* the record's own bytes at data (8-byte aligned) */
-    uint32_t vtx, n_vtx;   /* vertices xyz[3 * vtx ...]; normals nrm, colours rgb alike */
-    uint32_t nrm, rgb;     /* first normal / colour (if flags say so) */
+    uint32_t vtx, n_vtx;   /* vertices xyz[3 * vtx ...] (normals, colours alike) */
     uint32_t cnt;          /* first count */
     uint32_t idx, n_idx;   /* indices (0 .. n_vtx - 1) into the record's vertices; n_idx
                               0: the loops take the vertices in order */
@@ -76,8 +76,9 @@ typedef struct ws_dl_chunk {
     size_t bytes;             /* allocated for it */
     ws_dl_rec *rec;
     size_t n_rec;
-    double *xyz, *nrm, *rgb;  /* 3 doubles per entry */
-    size_t n_xyz, n_nrm, n_rgb;
+    double *xyz, *nrm, *rgb;  /* 3 doubles per entry; nrm, rgb indexed as xyz (room for them
+                                 only once the frame has had a record with them) */
+    size_t n_xyz, n_nrm, n_rgb; /* n_nrm, n_rgb: the end of the last record with them */
     int *cnt;
     size_t n_cnt;
     uint32_t *idx;
@@ -120,7 +121,8 @@ void ws_dlist_free(ws_dlist *dl);
 void ws_dlist_reset(ws_dlist *dl);
 /* The sink of sealed chunks (NULL: none, the default). */
 void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user);
-/* Appends a record of reader (one of WS_DL_CLASSIC, WS_DL_TRACER), kind and view with attributes attr (attr_size bytes, copied unless
+/* Appends a record of reader (one of WS_DL_CLASSIC, WS_DL_TRACER), kind and view (0 .. 255
+ * each) with attributes attr (attr_size bytes, copied unless
  * equal to the previous record's in the chunk) and room for need; *put says where its data
  * goes (the caller fills it before the next call on dl). Returns 0, or 300 (storage, or a
  * count beyond the list's range, such as more than UINT32_MAX vertices: the list

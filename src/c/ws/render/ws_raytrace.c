@@ -799,8 +799,8 @@ static void rec_run(void *user, void *item)
         }
         rt_view_rec *vr = r->wvr;
         const rt_vertex_data vd = {
-            h->flags & WS_DL_NORMALS ? c->nrm + 3 * (size_t)h->nrm : NULL,
-            h->flags & WS_DL_COLOURS ? c->rgb + 3 * (size_t)h->rgb : NULL };
+            h->flags & WS_DL_NORMALS ? c->nrm + 3 * (size_t)h->vtx : NULL,
+            h->flags & WS_DL_COLOURS ? c->rgb + 3 * (size_t)h->vtx : NULL };
         const double *xyz = c->xyz + 3 * (size_t)h->vtx;
         const int *cnt = c->cnt + h->cnt;
         int id = !vr ? RT_ERR_NOMEM
