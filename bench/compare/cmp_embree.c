@@ -1,12 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * cmp_embree -- ours (rt_intersect / rt_occluded) vs Embree 3 (rtcIntersect1 / rtcOccluded1,
- * and its rtcIntersect16 packets on the primary rays), one thread, the same rays, same run.
+ * and its rtcIntersect16 packets on the primary rays), one thread, the same rays, same run;
+ * ours' coherent path (rt_intersect_packet / rt_occluded_packet, 4x4 pixel blocks) beside.
  *   cmp_embree rays RES mesh.off...   primary, shadow and incoherent Mrays/s, ratios, hit
  *                                     agreement; build time and memory of each mesh
  *   cmp_embree build                  build time and memory per primitive, 10^4 .. 10^6 triangles
  *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
- *                                     inside, misses; the rays below), for profilers: e.g.
+ *                                     inside, misses; the rays below; packets, shadowpk: the
+ *                                     primary and shadow rays in 4x4 pixel blocks through the
+ *                                     packet path), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
  *   cmp_embree commit SRC KIND [T]   one rt_scene_commit on T threads (default 1) of SRC: N
  *                                     random triangles (as in build) or a mesh file, KIND tri
@@ -308,6 +311,36 @@ static size_t make_ibox_rays(const bs_scene *s, size_t want, rt_ray *out, rt_ray
     return m;
 }
 
+/* the pixel index of the k-th ray of a res x res raster in 4x4 block order (blocks row by
+   row, rays row by row within a block; blocks cut at the raster's edge, so that with res not
+   a multiple of 4 later packets straddle blocks) */
+static void block_order(int res, size_t *perm)
+{
+    size_t k = 0;
+    for (int by = 0; by < res; by += 4)
+        for (int bx = 0; bx < res; bx += 4)
+            for (int j = 0; j < 16; j++) {
+                const int x = bx + j % 4, y = by + j / 4;
+                if (x < res && y < res)
+                    perm[k++] = (size_t)y * (size_t)res + (size_t)x;
+            }
+}
+
+/* ours' packet path on the primary rays in 4x4 pixel blocks (rt_intersect_packet), the
+   reordering into blocks (blk) and of the hits back (bh -> hits) included, as Embree's packet
+   set-up is */
+static double time_ours_packets(const rt_scene *sc, const rt_ray *rays, size_t n, const size_t *perm,
+                                rt_ray *blk, rt_hit *bh, rt_hit *hits)
+{
+    double t0 = bs_thread_cpu();
+    for (size_t k = 0; k < n; k++)
+        blk[k] = rays[perm[k]];
+    rt_intersect_packet(sc, n, blk, bh);
+    for (size_t k = 0; k < n; k++)
+        hits[perm[k]] = bh[k];
+    return bs_thread_cpu() - t0;
+}
+
 static double time_ours(const rt_scene *sc, const rt_ray *rays, size_t n, rt_hit *hits)
 {
     double t0 = bs_thread_cpu();
@@ -391,11 +424,14 @@ static int cmd_rays(int res, int nfiles, char **files)
     printf("Embree %d.%d.%d vs ours: %dx%d primary rays + shadow rays to one point light, 1 thread, "
            "CPU seconds of the tracing thread, best of %d interleaved runs\n",
            RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, res, res, REPS);
-    printf("E.pk16: Embree's rtcIntersect16 packets (4x4 pixel blocks) on the same primary rays\n");
-    printf("%-24s %7s | %8s %8s %6s | %8s %6s | %7s %8s %8s %6s | %s\n", "mesh", "tris", "o.prim", "E.prim",
-           "o/E", "E.pk16", "o/E16", "shadow", "o.shad", "E.shad", "o/E", "agreement (primary; shadow)");
-    printf("%-24s %7s | %8s %8s %6s | %8s %6s | %7s %8s %8s %6s |\n", "", "", "Mrays/s", "Mrays/s", "", "Mrays/s",
-           "", "rays", "Mrays/s", "Mrays/s", "");
+    printf("E.pk16: Embree's rtcIntersect16 packets (4x4 pixel blocks) on the same primary rays; o/E16: ours' "
+           "single-ray path against them; o.pk16, pk/E16: ours' packet path (rt_intersect_packet, the same 4x4 "
+           "blocks); o.shpk, pk/E: ours' rt_occluded_packet on the shadow rays in block order against rtcOccluded1\n");
+    printf("%-24s %7s | %8s %8s %6s | %8s %6s %8s %6s | %7s %8s %8s %6s %8s %6s | %s\n", "mesh", "tris", "o.prim",
+           "E.prim", "o/E", "E.pk16", "o/E16", "o.pk16", "pk/E16", "shadow", "o.shad", "E.shad", "o/E", "o.shpk",
+           "pk/E", "agreement (primary; shadow)");
+    printf("%-24s %7s | %8s %8s %6s | %8s %6s %8s %6s | %7s %8s %8s %6s %8s %6s |\n", "", "", "Mrays/s", "Mrays/s",
+           "", "Mrays/s", "", "Mrays/s", "", "rays", "Mrays/s", "Mrays/s", "", "Mrays/s", "");
     int fails = 0;
     char(*inc_rows)[640] = bs_alloc((size_t)nfiles, sizeof *inc_rows);
     char(*bld_rows)[200] = bs_alloc((size_t)nfiles, sizeof *bld_rows);
@@ -428,11 +464,15 @@ static int cmd_rays(int res, int nfiles, char **files)
         rt_hit *hits = bs_alloc(n, sizeof *hits);
         rt_hit *ihits = bs_alloc(n, sizeof *ihits);
         unsigned char *occ = bs_alloc(n, 1);
+        size_t *perm = bs_alloc(n, sizeof *perm);
+        rt_ray *blk = bs_alloc(n, sizeof *blk);
+        rt_hit *bh = bs_alloc(n, sizeof *bh), *phits = bs_alloc(n, sizeof *phits);
+        unsigned char *pocc = bs_alloc(n, 1);
         em_res er = {bs_alloc(n, sizeof(int)), bs_alloc(n, sizeof(float)), bs_alloc(n, 1)};
         long long mem0 = atomic_load(&mem.bytes);
         RTCScene esc = em_scene(dev, s.verts_vrc, s.nverts, s.tris, s.ntris);
         if (!rays || !srays || !irays || !brays || !cand || !hits || !ihits || !occ || !er.prim || !er.t ||
-            !er.occ || !esc) {
+            !er.occ || !esc || !perm || !blk || !bh || !phits || !pocc) {
             fprintf(stderr, "%s: out of memory\n", base);
             fails++;
             goto next;
@@ -442,19 +482,41 @@ static int cmd_rays(int res, int nfiles, char **files)
         for (int y = 0; y < res; y++)
             for (int x = 0; x < res; x++)
                 rt_camera_ray(&s.cam, x + 0.5, y + 0.5, &rays[(size_t)y * res + x]);
-        double op = 1e30, ep = 1e30, os = 1e30, es = 1e30, e16 = 1e30;
+        double op = 1e30, ep = 1e30, os = 1e30, es = 1e30, e16 = 1e30, o16 = 1e30, osp = 1e30;
         size_t ns = 0, hit16 = 0;
+        block_order(res, perm);
         for (int r = 0; r < REPS; r++) {
             op = fmin(op, time_ours(s.rt, rays, n, hits));
             ep = fmin(ep, time_embree_primary(esc, &s, rays, n, &er));
             e16 = fmin(e16, time_embree_packets(esc, rays, res, &hit16));
+            o16 = fmin(o16, time_ours_packets(s.rt, rays, n, perm, blk, bh, phits));
         }
+        /* the packet path's answers against the single-ray path's, bit for bit */
+        size_t pkdiff = 0;
+        for (size_t k = 0; k < n; k++)
+            pkdiff += phits[k].prim != hits[k].prim ||
+                      (hits[k].prim >= 0 && memcmp(&phits[k].t, &hits[k].t, sizeof hits[k].t) != 0);
         ns = make_shadow_rays(&s, hits, n, srays);
+        /* the same shadow rays in block order (from the hits in block order), for the packets */
+        const size_t nsb = make_shadow_rays(&s, bh, n, blk);
         for (int r = 0; r < REPS && ns; r++) {
             double t0 = bs_thread_cpu();
             rt_occluded(s.rt, ns, srays, occ);
             os = fmin(os, bs_thread_cpu() - t0);
             es = fmin(es, time_embree_shadow(esc, srays, ns, &er));
+            t0 = bs_thread_cpu();
+            rt_occluded_packet(s.rt, nsb, blk, pocc);
+            osp = fmin(osp, bs_thread_cpu() - t0);
+        }
+        size_t spkdiff = 0;
+        if (nsb) { /* against rt_occluded on the same block-order rays (after the timing) */
+            unsigned char *o1 = bs_alloc(nsb, 1);
+            if (o1 && rt_occluded(s.rt, nsb, blk, o1) == RT_OK)
+                for (size_t k = 0; k < nsb; k++)
+                    spkdiff += o1[k] != pocc[k];
+            else
+                spkdiff = nsb;
+            free(o1);
         }
         agreement ag;
         agree(rays, hits, &er, n, res, &ag);
@@ -467,10 +529,15 @@ static int cmd_rays(int res, int nfiles, char **files)
         size_t ehit = 0;
         for (size_t k = 0; k < n; k++)
             ehit += er.prim[k] >= 0;
-        printf("%-24s %7zu | %8.2f %8.2f %6.2f | %8.2f %6.2f | %7zu %8.2f %8.2f %6.2f | %zu/%zu rays differ; %zu/%zu\n",
-               base, s.ntris, n / op * 1e-6, n / ep * 1e-6, ep / op, n / e16 * 1e-6, e16 / op, ns,
-               ns ? ns / os * 1e-6 : 0.0, ns ? ns / es * 1e-6 : 0.0, ns ? es / os : 0.0, dis, n, sdis, ns);
-        printf("    packets: %zu hits (rtcIntersect1: %zu)\n", hit16, ehit);
+        printf("%-24s %7zu | %8.2f %8.2f %6.2f | %8.2f %6.2f %8.2f %6.2f | %7zu %8.2f %8.2f %6.2f %8.2f %6.2f | "
+               "%zu/%zu rays differ; %zu/%zu\n",
+               base, s.ntris, n / op * 1e-6, n / ep * 1e-6, ep / op, n / e16 * 1e-6, e16 / op, n / o16 * 1e-6,
+               e16 / o16, ns, ns ? ns / os * 1e-6 : 0.0, ns ? ns / es * 1e-6 : 0.0, ns ? es / os : 0.0,
+               nsb ? nsb / osp * 1e-6 : 0.0, nsb ? es / osp : 0.0, dis, n, sdis, ns);
+        printf("    packets: %zu hits (rtcIntersect1: %zu); ours' packet path: %zu/%zu primary rays differ from "
+               "its single-ray path (primitive or t bits), %zu/%zu shadow rays\n",
+               hit16, ehit, pkdiff, n, spkdiff, nsb);
+        fails += pkdiff != 0 || spkdiff != 0;
         printf("    primary: %zu hits (ours), %zu both miss, %zu same %s (max rel. t diff %.2e, tol %.0e); "
                "differ: %zu edge/vertex ties, %zu hit/miss, %zu other; shadow: %zu occluded (ours), %zu differ\n",
                ag.nhit, ag.both_miss, ag.same, s.indexed ? "mesh and t" : "triangle", ag.maxrel, TOL_T, ag.tie,
@@ -549,6 +616,11 @@ static int cmd_rays(int res, int nfiles, char **files)
         free(hits);
         free(ihits);
         free(occ);
+        free(perm);
+        free(blk);
+        free(bh);
+        free(phits);
+        free(pocc);
         free(er.prim);
         free(er.t);
         free(er.occ);
@@ -1327,13 +1399,38 @@ static int cmd_commit(const char *src, const char *kind, int threads)
 }
 
 /* the one traced pass of cmd_ours (a function of its own: callgrind --toggle-collect=ours_pass) */
-__attribute__((noinline)) static void ours_pass(const rt_scene *sc, int shadow, size_t m, const rt_ray *rays,
-                                                rt_hit *hits, unsigned char *occ)
+__attribute__((noinline)) static void ours_pass(const rt_scene *sc, int shadow, int packets, size_t m,
+                                                const rt_ray *rays, rt_hit *hits, unsigned char *occ)
 {
-    if (shadow)
+    if (shadow && packets)
+        rt_occluded_packet(sc, m, rays, occ);
+    else if (shadow)
         rt_occluded(sc, m, rays, occ);
+    else if (packets)
+        rt_intersect_packet(sc, m, rays, hits);
     else
         rt_intersect(sc, m, rays, hits);
+}
+
+/* the packet sets of cmd_ours: the primary rays in 4x4 block order (packets), or the shadow
+   rays made from the primary hits in block order (shadowpk); src[j] the pixel of ray j */
+static size_t ours_block_set(const bs_scene *s, int res, int shadow, const rt_ray *rays, const rt_hit *hits,
+                             rt_ray *out, size_t *src)
+{
+    const size_t n = (size_t)res * (size_t)res;
+    size_t *perm = bs_alloc(n, sizeof *perm), m = 0;
+    if (!perm)
+        return 0;
+    block_order(res, perm);
+    for (size_t k = 0; k < n; k++) {
+        if (!shadow)
+            out[m] = rays[perm[k]];
+        else if (make_shadow_rays(s, &hits[perm[k]], 1, &out[m]) == 0)
+            continue;
+        src[m++] = perm[k];
+    }
+    free(perm);
+    return m;
 }
 
 /* ours only on one ray set, traced once after the rays are made (for callgrind/perf) */
@@ -1352,16 +1449,19 @@ static int cmd_ours(int res, const char *set, const char *file)
     rt_ray *cand = bs_alloc(nbox, sizeof *cand);
     rt_hit *hits = bs_alloc(n, sizeof *hits), *tmp = bs_alloc(n, sizeof *tmp);
     unsigned char *occ = bs_alloc(n, 1);
+    size_t *src = bs_alloc(n, sizeof *src);
     int rc = 1;
-    if (!rays || !set_rays || !cand || !hits || !tmp || !occ) {
+    if (!rays || !set_rays || !cand || !hits || !tmp || !occ || !src) {
         fprintf(stderr, "out of memory\n");
         goto done;
     }
     for (int y = 0; y < res; y++)
         for (int x = 0; x < res; x++)
             rt_camera_ray(&s.cam, x + 0.5, y + 0.5, &rays[(size_t)y * res + x]);
-    if (strcmp(set, "primary") != 0)
+    if (strcmp(set, "primary") != 0 && strcmp(set, "packets") != 0)
         rt_intersect(s.rt, n, rays, hits);
+    const int shadow = !strcmp(set, "shadow") || !strcmp(set, "shadowpk");
+    const int packets = !strcmp(set, "packets") || !strcmp(set, "shadowpk");
     if (!strcmp(set, "primary")) {
         memcpy(set_rays, rays, n * sizeof *rays);
         m = n;
@@ -1371,19 +1471,41 @@ static int cmd_ours(int res, const char *set, const char *file)
         m = make_inside_rays(rays, hits, n, set_rays);
     } else if (!strcmp(set, "misses")) {
         m = make_ibox_rays(&s, nbox, set_rays, cand, tmp);
+    } else if (packets) {
+        m = ours_block_set(&s, res, shadow, rays, hits, set_rays, src);
     } else {
-        fprintf(stderr, "unknown ray set %s (primary, shadow, inside, misses)\n", set);
+        fprintf(stderr, "unknown ray set %s (primary, shadow, inside, misses, packets, shadowpk)\n", set);
         goto done;
     }
     double t0 = bs_thread_cpu();
-    ours_pass(s.rt, !strcmp(set, "shadow"), m, set_rays, hits, occ);
+    ours_pass(s.rt, shadow, packets, m, set_rays, hits, occ);
     double t = bs_thread_cpu() - t0;
+    if (packets) { /* the answers back in pixel order: the hash of primary / shadow */
+        if (!shadow) {
+            for (size_t k = 0; k < m; k++)
+                tmp[src[k]] = hits[k];
+            memcpy(hits, tmp, m * sizeof *hits);
+        } else {
+            unsigned char *px = calloc(n, 1);
+            if (!px) {
+                fprintf(stderr, "out of memory\n");
+                goto done;
+            }
+            for (size_t k = 0; k < m; k++)
+                px[src[k]] = (unsigned char)(1 + occ[k]);
+            size_t j = 0;
+            for (size_t k = 0; k < n; k++)
+                if (px[k])
+                    occ[j++] = (unsigned char)(px[k] - 1);
+            free(px);
+        }
+    }
     /* FNV-1a over the answers (primitive and t bits, or the occluded flags): equal sums, the
        same hits bit for bit */
     uint64_t h = 1469598103934665603ULL;
     for (size_t k = 0; k < m; k++) {
         uint64_t v = (uint64_t)occ[k];
-        if (strcmp(set, "shadow") != 0) {
+        if (!shadow) {
             memcpy(&v, &hits[k].t, sizeof v);
             v ^= (uint64_t)(uint32_t)hits[k].prim << 1;
         }
@@ -1400,6 +1522,7 @@ done:
     free(hits);
     free(tmp);
     free(occ);
+    free(src);
     bs_free(&s);
     return rc;
 }

@@ -19,6 +19,7 @@
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_packet.h"
 #include "rt_prim.h"
 
 #include <math.h>
@@ -816,7 +817,8 @@ int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i)
 
 /* ---- batch API ---- */
 
-static void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit *h)
+/* also the packet path's (rt_packet.h) */
+void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit *h)
 {
     const rt_prim *p = &sc->prim[i];
     h->t = t;

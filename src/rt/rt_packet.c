@@ -1,0 +1,743 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * rt_packet.c -- the coherent path: packets of up to RT_PACKET rays (a 4 x 4 block of primary
+ * rays, or shadow rays of neighbouring pixels toward one light) traced together through the
+ * two-level grid by slices, as in coherent grid traversal (Wald, Ize, Kensler, Knoll, Parker
+ * 2006, "Ray Tracing Animated Scenes using Coherent Grid Traversal").
+ *
+ * Walk: the rays of a packet share the dominant axis K of their directions and the sign of
+ * every component (else the packet is not coherent and its rays take the single-ray walk,
+ * rt_trace.c). The grid is walked slice by slice along K in the rays' direction; in each slice
+ * the packet's footprint is the rectangle of cells that holds the points where its rays cross
+ * the slice's two planes (each ray is a line, so its part in the slice lies between its two
+ * crossings), widened by 2^-20 of a cell for the roundings of those crossings (far below the
+ * eps by which the build enlarges every cell, rt_build.c). A cell with a second-level grid is
+ * walked the same way, by the second level's slices. Each primitive met is loaded once per
+ * packet (the small mailbox, per packet) and tested for every ray still walking: a kernel
+ * tests 4 (AVX2) or 2 (SSE2) rays at a time with the very operations of the exact double
+ * test's edge functions (rt_isect_tri, rt_prim.h), so its signs are that test's bit for bit
+ * (no FMA: the kernels are built for AVX2 without FMA, and the build has no -march), and only
+ * rules out rays whose signs are mixed and non-zero; the exact test decides every other ray.
+ * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (or RT_PK_MAXS
+ * second-level cells) is handed to the single-ray walk as a whole.
+ *
+ * Same hits as the single-ray walk: every primitive is tested on the whole range
+ * [tmin, tmax] of each ray, so a ray's computed hits are those of the exact test, each t bit
+ * for bit. A ray stops walking at the first slice beyond its best hit plus 4 times that hit's
+ * error bound (rt_nearest_update), so every hit within its tie window is found. The
+ * single-ray walk picks its hit by rt_nearest_update in the order of its cells, the packet in
+ * another order; the tie rule is not transitive in general (docs/RAYTRACING.md, "Coplanar
+ * surfaces"), so the packet's hit W is kept only when it wins the rule against every other
+ * hit X it found, in both roles (W as the new hit against best X, and X against best W):
+ * then every order of tests ends with W (W is accepted whenever it is tested, and nothing
+ * after it displaces it), and the hits not found lie beyond W's window and lose to it. A ray
+ * whose check fails, or that found more than RT_PK_REC hits, is traced again by the
+ * single-ray walk. Any-hit rays need no such check: occluded is "some primitive is hit in the
+ * range", whatever the order.
+ */
+#define GKS3D_RT_BUILDING 1
+#include "rt_packet.h"
+#include "rt_prim.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define RT_PK_X86 1
+#endif
+
+#define RT_PK_REC 8      /* hits recorded per ray (more: the ray is traced singly) */
+#define RT_PK_MAXC 16    /* top cells per slice at most */
+#define RT_PK_MAXS 64    /* second-level cells per slice at most */
+#define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
+
+typedef struct rt_pk_rec {
+    uint32_t i;
+    double t;
+} rt_pk_rec;
+
+typedef struct rt_pk {
+    const rt_scene *sc;
+    int n, any;
+    int K, a1, a2;           /* the slicing axis and the two others */
+    int sg;                  /* step along K: +1 or -1 */
+    uint32_t live;           /* rays still walking */
+    uint32_t hit;            /* any: rays that hit */
+    uint32_t over;           /* nearest: rays with more than RT_PK_REC hits */
+    uint32_t cand;           /* rays in the current slice: they test what it holds */
+    uint64_t *hbox;          /* the packet's mailbox (the context's small one) ... */
+    uint64_t key;
+    uint32_t tmask[RT_HBOX]; /* ... and the rays each entry's primitive was tested for */
+    /* each ray's extent along K times sg (u = sg z): from its start to the end of its walk
+       (the box exit, or its best hit plus 4 error bounds) */
+    double us[RT_PACKET], ue[RT_PACKET];
+    double umg;              /* margin: 2^-20 of a top cell along K */
+    double t1[RT_PACKET];    /* the end of the part in the grid box */
+    double best[RT_PACKET], eb[RT_PACKET];
+    long bi[RT_PACKET];
+    uint8_t nh[RT_PACKET];
+    rt_pk_rec rec[RT_PACKET][RT_PK_REC];
+    /* each ray's line: o[a1] + (z - o[K]) * m1, o[a2] + (z - o[K]) * m2 at z along K */
+    double oK[RT_PACKET], o1[RT_PACKET], o2[RT_PACKET], m1[RT_PACKET], m2[RT_PACKET];
+    /* the frustum of the rays of fmask: their crossings of z = z0 within [lo, hi] and their
+       slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
+    uint32_t fmask;
+    double z0, lo[2], hi[2], mlo[2], mhi[2];
+    /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
+    double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
+    int kx, ky, kz;
+    double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
+    rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
+} rt_pk;
+
+/* ---- the cull kernels: rays of mask whose edge functions may not be mixed ---- */
+
+typedef uint32_t (*rt_pk_cull_fn)(const rt_pk *p, const double *v0, const double *v1,
+                                  const double *v2, uint32_t mask);
+
+/* 1 unless the exact test's edge functions (the same operations) are non-zero and mixed */
+static inline int rt_pk_lane(const rt_pk *p, int k, const double *v0, const double *v1,
+                             const double *v2)
+{
+    const int kx = p->kx, ky = p->ky, kz = p->kz;
+    const double ox = p->ox[k], oy = p->oy[k], oz = p->oz[k], sx = p->sx[k], sy = p->sy[k];
+    const double Az = v0[kz] - oz, Bz = v1[kz] - oz, Cz = v2[kz] - oz;
+    const double Ax = (v0[kx] - ox) - sx * Az, Ay = (v0[ky] - oy) - sy * Az;
+    const double Bx = (v1[kx] - ox) - sx * Bz, By = (v1[ky] - oy) - sy * Bz;
+    const double Cx = (v2[kx] - ox) - sx * Cz, Cy = (v2[ky] - oy) - sy * Cz;
+    const double U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
+    const int zero = (U == 0.0) | (V == 0.0) | (W == 0.0);
+    const int mixed = ((U < 0.0) | (V < 0.0) | (W < 0.0)) & ((U > 0.0) | (V > 0.0) | (W > 0.0));
+    return zero | !mixed;
+}
+
+static uint32_t rt_pk_cull_scalar(const rt_pk *p, const double *v0, const double *v1,
+                                  const double *v2, uint32_t mask)
+{
+    uint32_t out = 0;
+    for (uint32_t m = mask; m; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        if (rt_pk_lane(p, k, v0, v1, v2))
+            out |= 1u << k;
+    }
+    return out;
+}
+
+#ifdef RT_PK_X86
+/* SSE2: 2 rays at a time */
+static uint32_t rt_pk_cull_sse(const rt_pk *p, const double *v0, const double *v1,
+                               const double *v2, uint32_t mask)
+{
+    const int kx = p->kx, ky = p->ky, kz = p->kz;
+    const __m128d ax = _mm_set1_pd(v0[kx]), ay = _mm_set1_pd(v0[ky]), az = _mm_set1_pd(v0[kz]);
+    const __m128d bx = _mm_set1_pd(v1[kx]), by = _mm_set1_pd(v1[ky]), bz = _mm_set1_pd(v1[kz]);
+    const __m128d cx = _mm_set1_pd(v2[kx]), cy = _mm_set1_pd(v2[ky]), cz = _mm_set1_pd(v2[kz]);
+    const __m128d z = _mm_setzero_pd();
+    uint32_t out = 0;
+    for (int k = 0; k < p->n; k += 2) {
+        if (!((mask >> k) & 3u))
+            continue;
+        const __m128d ox = _mm_loadu_pd(p->ox + k), oy = _mm_loadu_pd(p->oy + k),
+                      oz = _mm_loadu_pd(p->oz + k), sx = _mm_loadu_pd(p->sx + k),
+                      sy = _mm_loadu_pd(p->sy + k);
+        const __m128d Az = _mm_sub_pd(az, oz), Bz = _mm_sub_pd(bz, oz), Cz = _mm_sub_pd(cz, oz);
+        const __m128d Ax = _mm_sub_pd(_mm_sub_pd(ax, ox), _mm_mul_pd(sx, Az));
+        const __m128d Ay = _mm_sub_pd(_mm_sub_pd(ay, oy), _mm_mul_pd(sy, Az));
+        const __m128d Bx = _mm_sub_pd(_mm_sub_pd(bx, ox), _mm_mul_pd(sx, Bz));
+        const __m128d By = _mm_sub_pd(_mm_sub_pd(by, oy), _mm_mul_pd(sy, Bz));
+        const __m128d Cx = _mm_sub_pd(_mm_sub_pd(cx, ox), _mm_mul_pd(sx, Cz));
+        const __m128d Cy = _mm_sub_pd(_mm_sub_pd(cy, oy), _mm_mul_pd(sy, Cz));
+        const __m128d U = _mm_sub_pd(_mm_mul_pd(Cx, By), _mm_mul_pd(Cy, Bx));
+        const __m128d V = _mm_sub_pd(_mm_mul_pd(Ax, Cy), _mm_mul_pd(Ay, Cx));
+        const __m128d W = _mm_sub_pd(_mm_mul_pd(Bx, Ay), _mm_mul_pd(By, Ax));
+        const __m128d zero = _mm_or_pd(_mm_or_pd(_mm_cmpeq_pd(U, z), _mm_cmpeq_pd(V, z)),
+                                       _mm_cmpeq_pd(W, z));
+        const __m128d neg = _mm_or_pd(_mm_or_pd(_mm_cmplt_pd(U, z), _mm_cmplt_pd(V, z)),
+                                      _mm_cmplt_pd(W, z));
+        const __m128d pos = _mm_or_pd(_mm_or_pd(_mm_cmpgt_pd(U, z), _mm_cmpgt_pd(V, z)),
+                                      _mm_cmpgt_pd(W, z));
+        const __m128d keep = _mm_or_pd(zero, _mm_andnot_pd(_mm_and_pd(neg, pos), _mm_cmpeq_pd(z, z)));
+        out |= (uint32_t)_mm_movemask_pd(keep) << k;
+    }
+    return out & mask;
+}
+
+/* AVX2 (no FMA): 4 rays at a time */
+__attribute__((target("avx2"))) static uint32_t rt_pk_cull_avx2(const rt_pk *p, const double *v0,
+                                                                const double *v1,
+                                                                const double *v2, uint32_t mask)
+{
+    const int kx = p->kx, ky = p->ky, kz = p->kz;
+    const __m256d ax = _mm256_set1_pd(v0[kx]), ay = _mm256_set1_pd(v0[ky]), az = _mm256_set1_pd(v0[kz]);
+    const __m256d bx = _mm256_set1_pd(v1[kx]), by = _mm256_set1_pd(v1[ky]), bz = _mm256_set1_pd(v1[kz]);
+    const __m256d cx = _mm256_set1_pd(v2[kx]), cy = _mm256_set1_pd(v2[ky]), cz = _mm256_set1_pd(v2[kz]);
+    const __m256d z = _mm256_setzero_pd();
+    uint32_t out = 0;
+    for (int k = 0; k < p->n; k += 4) {
+        if (!((mask >> k) & 15u))
+            continue;
+        const __m256d ox = _mm256_loadu_pd(p->ox + k), oy = _mm256_loadu_pd(p->oy + k),
+                      oz = _mm256_loadu_pd(p->oz + k), sx = _mm256_loadu_pd(p->sx + k),
+                      sy = _mm256_loadu_pd(p->sy + k);
+        const __m256d Az = _mm256_sub_pd(az, oz), Bz = _mm256_sub_pd(bz, oz),
+                      Cz = _mm256_sub_pd(cz, oz);
+        const __m256d Ax = _mm256_sub_pd(_mm256_sub_pd(ax, ox), _mm256_mul_pd(sx, Az));
+        const __m256d Ay = _mm256_sub_pd(_mm256_sub_pd(ay, oy), _mm256_mul_pd(sy, Az));
+        const __m256d Bx = _mm256_sub_pd(_mm256_sub_pd(bx, ox), _mm256_mul_pd(sx, Bz));
+        const __m256d By = _mm256_sub_pd(_mm256_sub_pd(by, oy), _mm256_mul_pd(sy, Bz));
+        const __m256d Cx = _mm256_sub_pd(_mm256_sub_pd(cx, ox), _mm256_mul_pd(sx, Cz));
+        const __m256d Cy = _mm256_sub_pd(_mm256_sub_pd(cy, oy), _mm256_mul_pd(sy, Cz));
+        const __m256d U = _mm256_sub_pd(_mm256_mul_pd(Cx, By), _mm256_mul_pd(Cy, Bx));
+        const __m256d V = _mm256_sub_pd(_mm256_mul_pd(Ax, Cy), _mm256_mul_pd(Ay, Cx));
+        const __m256d W = _mm256_sub_pd(_mm256_mul_pd(Bx, Ay), _mm256_mul_pd(By, Ax));
+        const __m256d zero = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_EQ_OQ),
+                                                       _mm256_cmp_pd(V, z, _CMP_EQ_OQ)),
+                                          _mm256_cmp_pd(W, z, _CMP_EQ_OQ));
+        const __m256d neg = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_LT_OQ),
+                                                      _mm256_cmp_pd(V, z, _CMP_LT_OQ)),
+                                         _mm256_cmp_pd(W, z, _CMP_LT_OQ));
+        const __m256d pos = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_GT_OQ),
+                                                      _mm256_cmp_pd(V, z, _CMP_GT_OQ)),
+                                         _mm256_cmp_pd(W, z, _CMP_GT_OQ));
+        const unsigned mixed = (unsigned)_mm256_movemask_pd(_mm256_and_pd(neg, pos));
+        const unsigned keep = (unsigned)_mm256_movemask_pd(zero) | (~mixed & 15u);
+        out |= keep << k;
+    }
+    return out & mask;
+}
+#endif
+
+/* the kernel for this CPU, or the one GKS_RT_SIMD forces (as rt_leaf_kernel) */
+static rt_pk_cull_fn rt_pk_kernel(const char **name)
+{
+    const char *force = getenv("GKS_RT_SIMD");
+    int level = 2;
+    if (force && !strcmp(force, "scalar"))
+        level = 0;
+    else if (force && !strcmp(force, "sse"))
+        level = 1;
+#ifdef RT_PK_X86
+    __builtin_cpu_init();
+    if (level >= 2 && __builtin_cpu_supports("avx2")) {
+        *name = "avx2";
+        return rt_pk_cull_avx2;
+    }
+    if (level >= 1) {
+        *name = "sse";
+        return rt_pk_cull_sse;
+    }
+#endif
+    *name = "scalar";
+    return rt_pk_cull_scalar;
+}
+
+const char *rt_packet_kernel_name(void)
+{
+    const char *name;
+    (void)rt_pk_kernel(&name);
+    return name;
+}
+
+/* ---- set-up ---- */
+
+/* the cell of coordinate x along axis a of box g, lowered (dir -1) or raised (+1) by the
+   margin, clamped into the box */
+static inline int rt_pk_cell(const rt_box *g, int a, double x, double dir)
+{
+    const double f = (x - g->lo[a]) * g->inv_cw[a] + dir * RT_PK_MARGIN;
+    return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
+}
+
+/* ray k's range cut to the grid box (as rt_dda_init clips): 0 if nothing is left */
+static int rt_pk_clip(rt_pk *p, int k)
+{
+    const rt_box *g = &p->sc->grid.b;
+    const rt_rayx *r = &p->r[k];
+    double t0 = r->tmin, t1 = r->tmax;
+    for (int a = 0; a < 3; a++) {
+        const double inv = 1.0 / r->d[a];
+        const double ta = (g->lo[a] - r->o[a]) * inv, tb = (g->hi[a] - r->o[a]) * inv;
+        const double tn = ta < tb ? ta : tb, tf = ta < tb ? tb : ta;
+        t0 = tn > t0 ? tn : t0;
+        t1 = tf < t1 ? tf : t1;
+    }
+    if (!(t0 <= t1) || !isfinite(t0))
+        return 0;
+    p->t1[k] = t1;
+    p->us[k] = p->sg * (r->o[p->K] + t0 * r->d[p->K]);
+    p->ue[k] = p->sg * (r->o[p->K] + t1 * r->d[p->K]);
+    return 1;
+}
+
+/* the signs of a direction's components (bit a: negative), -1 if one is zero */
+static int rt_pk_octant(const double d[3])
+{
+    if (d[0] == 0.0 || d[1] == 0.0 || d[2] == 0.0)
+        return -1;
+    return (d[0] < 0.0) | (d[1] < 0.0) << 1 | (d[2] < 0.0) << 2;
+}
+
+/* ray k's per-ray data; 0 if it does not share the packet's axes and octant */
+static int rt_pk_ray(rt_pk *p, int k, int *oct)
+{
+    const rt_rayx *r = &p->r[k];
+    const int o = rt_pk_octant(r->d);
+    if (o < 0 || (*oct >= 0 && (o != *oct || r->kz != p->kz)))
+        return 0;
+    if (*oct < 0) {
+        *oct = o;
+        p->kx = r->kx;
+        p->ky = r->ky;
+        p->kz = p->K = r->kz;
+        p->a1 = (p->K + 1) % 3;
+        p->a2 = (p->K + 2) % 3;
+        p->sg = r->d[p->K] > 0.0 ? 1 : -1;
+    }
+    p->ox[k] = r->o[p->kx];
+    p->oy[k] = r->o[p->ky];
+    p->oz[k] = r->o[p->kz];
+    p->sx[k] = r->sx;
+    p->sy[k] = r->sy;
+    p->oK[k] = r->o[p->K];
+    p->o1[k] = r->o[p->a1];
+    p->o2[k] = r->o[p->a2];
+    p->m1[k] = r->d[p->a1] / r->d[p->K];
+    p->m2[k] = r->d[p->a2] / r->d[p->K];
+    return 1;
+}
+
+/* the packet's rays: 1, or 0 if they are not coherent (different axes or octants, a zero
+   direction component, a rotated grid) */
+static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
+                       int any, rt_rayx *rx)
+{
+    const rt_grid *g = &sc->grid;
+    if (!sc->use_grid || g->rotated || n == 0 || n > RT_PACKET)
+        return 0;
+    p->sc = sc;
+    p->n = (int)n;
+    p->any = any;
+    p->live = p->hit = p->over = p->fmask = 0;
+    p->hbox = ctx->hbox;
+    p->r = rx;
+    p->uemin = INFINITY;
+    p->usmax = -INFINITY;
+    int oct = -1;
+    for (int k = 0; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
+        p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+    for (int k = 0; k < p->n; k++) {
+        const rt_ray *q = &rays[k];
+        p->best[k] = INFINITY;
+        p->eb[k] = 0.0;
+        p->bi[k] = -1;
+        p->nh[k] = 0;
+        if (!rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax))
+            continue; /* a miss, as on the single-ray walk */
+        if (!rt_pk_ray(p, k, &oct))
+            return 0;
+        if (!rt_pk_clip(p, k))
+            continue; /* misses the grid box */
+        p->live |= 1u << k;
+        p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
+        p->usmax = p->us[k] > p->usmax ? p->us[k] : p->usmax;
+    }
+    if (p->live)
+        p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
+    return 1;
+}
+
+/* ---- tests ---- */
+
+/* a hit of primitive i at t on ray k */
+static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
+{
+    if (p->any) {
+        p->hit |= 1u << k;
+        p->live &= ~(1u << k);
+        p->cand &= ~(1u << k);
+        return;
+    }
+    if (p->nh[k] < RT_PK_REC)
+        p->rec[k][p->nh[k]++] = (rt_pk_rec){i, t};
+    else
+        p->over |= 1u << k;
+    const long old = p->bi[k];
+    rt_nearest_update(p->sc, &p->r[k], i, t, &p->best[k], &p->bi[k], &p->eb[k]);
+    if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
+        const double te = p->best[k] + 4.0 * p->eb[k];
+        if (te < p->t1[k]) {
+            p->ue[k] = p->sg * (p->r[k].o[p->K] + te * p->r[k].d[p->K]);
+            p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
+        }
+    }
+}
+
+/* primitive i for the rays of p->cand that have not tested it in this packet (the small
+   mailbox with the rays each entry was tested for; an entry taken by another primitive
+   only repeats tests, which give the same hits) */
+static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
+{
+    const uint64_t key = p->key | i;
+    const uint32_t j = i % RT_HBOX;
+    uint32_t m = p->cand;
+    if (p->hbox[j] == key) {
+        m &= ~p->tmask[j];
+        if (!m)
+            return;
+        p->tmask[j] |= m;
+    } else {
+        p->hbox[j] = key;
+        p->tmask[j] = m;
+    }
+    const rt_scene *sc = p->sc;
+    if (i < sc->ntri) {
+        const double *v[3];
+        rt_tri_verts(sc, i, v);
+        for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
+            const int k = __builtin_ctz(m);
+            double t;
+            if (rt_isect_tri(&p->r[k], v[0], v[1], v[2], p->r[k].tmin, p->r[k].tmax, &t))
+                rt_pk_hit(p, k, i, t);
+        }
+        return;
+    }
+    for (; m; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        double t;
+        if (rt_isect_prim(sc, &p->r[k], i, p->r[k].tmin, p->r[k].tmax, &t))
+            rt_pk_hit(p, k, i, t);
+    }
+}
+
+static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint32_t n)
+{
+    for (uint32_t k = 0; k < n && p->cand; k++)
+        rt_pk_prim(p, cull, refs[k]);
+}
+
+/* ---- the walk by slices ---- */
+
+/* the frustum of the rays of mask (kept while the mask stays) */
+static void rt_pk_frustum(rt_pk *p, uint32_t mask)
+{
+    if (mask == p->fmask)
+        return;
+    p->fmask = mask;
+    const double z0 = p->z0;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    double mlo[2] = {INFINITY, INFINITY}, mhi[2] = {-INFINITY, -INFINITY};
+    for (; mask; mask &= mask - 1) {
+        const int k = __builtin_ctz(mask);
+        const double x[2] = {p->o1[k] + (z0 - p->oK[k]) * p->m1[k],
+                             p->o2[k] + (z0 - p->oK[k]) * p->m2[k]};
+        const double m[2] = {p->m1[k], p->m2[k]};
+        for (int a = 0; a < 2; a++) {
+            lo[a] = x[a] < lo[a] ? x[a] : lo[a];
+            hi[a] = x[a] > hi[a] ? x[a] : hi[a];
+            mlo[a] = m[a] < mlo[a] ? m[a] : mlo[a];
+            mhi[a] = m[a] > mhi[a] ? m[a] : mhi[a];
+        }
+    }
+    memcpy(p->lo, lo, sizeof lo);
+    memcpy(p->hi, hi, sizeof hi);
+    memcpy(p->mlo, mlo, sizeof mlo);
+    memcpy(p->mhi, mhi, sizeof mhi);
+}
+
+/* the rectangle of cells along a1, a2 of box g that holds the frustum between the planes
+   z = za and z = zb (each ray x(z) = x(z0) + (z - z0) m is bounded by the frustum's
+   x range at z0 and its slope range): c[0..3] = lo1, hi1, lo2, hi2 */
+static void rt_pk_rect(const rt_pk *p, const rt_box *g, double za, double zb, int c[4])
+{
+    const double da = za - p->z0, db = zb - p->z0;
+    for (int a = 0; a < 2; a++) {
+        const double la = p->lo[a] + da * (da >= 0.0 ? p->mlo[a] : p->mhi[a]);
+        const double lb = p->lo[a] + db * (db >= 0.0 ? p->mlo[a] : p->mhi[a]);
+        const double ha = p->hi[a] + da * (da >= 0.0 ? p->mhi[a] : p->mlo[a]);
+        const double hb = p->hi[a] + db * (db >= 0.0 ? p->mhi[a] : p->mlo[a]);
+        const int ax = a ? p->a2 : p->a1;
+        c[2 * a] = rt_pk_cell(g, ax, la < lb ? la : lb, -1.0);
+        c[2 * a + 1] = rt_pk_cell(g, ax, ha > hb ? ha : hb, 1.0);
+    }
+}
+
+/* plane b (0 .. n) of axis a of box g, as the single-ray walk computes it */
+static inline double rt_pk_plane(const rt_box *g, int a, int b)
+{
+    return b == g->n[a] ? g->hi[a] : g->lo[a] + (double)b * g->cw[a];
+}
+
+/* the rays of mask whose extent along K meets the slice between za and zb */
+static inline uint32_t rt_pk_in(const rt_pk *p, uint32_t mask, double za, double zb)
+{
+    const double ua = p->sg > 0 ? za : -zb, ub = p->sg > 0 ? zb : -za;
+    if (p->usmax <= ub + p->umg && p->uemin >= ua - p->umg)
+        return mask; /* every ray meets it (the common case) */
+    uint32_t in = 0;
+    for (; mask; mask &= mask - 1) {
+        const int k = __builtin_ctz(mask);
+        if (p->us[k] <= ub + p->umg && p->ue[k] >= ua - p->umg)
+            in |= 1u << k;
+    }
+    return in;
+}
+
+/* the second-level grid sg inside a top cell: its slices along K in the rays' direction,
+   for the rays of the top slice (in) that meet each. 0 if a slice's footprint is too large
+   (not coherent). */
+static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint32_t in)
+{
+    const rt_grid *g = &p->sc->grid;
+    const rt_box *b = &sg->b;
+    const int K = p->K, nK = b->n[K];
+    const uint32_t *off = g->soff + sg->first;
+    for (int j = 0; j < nK; j++) {
+        const int s = p->sg > 0 ? j : nK - 1 - j;
+        const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
+        p->cand = rt_pk_in(p, in & p->live, za, zb);
+        if (!p->cand)
+            continue;
+        int c[4];
+        rt_pk_rect(p, b, za, zb, c);
+        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXS)
+            return 0;
+        int q[3];
+        q[K] = s;
+        for (q[p->a2] = c[2]; q[p->a2] <= c[3]; q[p->a2]++)
+            for (q[p->a1] = c[0]; q[p->a1] <= c[1]; q[p->a1]++) {
+                const size_t ci = rt_cell_index(b, q);
+                rt_pk_list(p, cull, g->srefs + off[ci], off[ci + 1] - off[ci]);
+            }
+    }
+    return 1;
+}
+
+/* one top cell for the rays of the slice (in): its own list, then its second-level grid;
+   0: not coherent */
+static int rt_pk_cell_visit(rt_pk *p, rt_pk_cull_fn cull, size_t ci, uint32_t in)
+{
+    const rt_grid *g = &p->sc->grid;
+    if (g->odist && g->odist[ci] != 0)
+        return 1; /* empty, no second level */
+    p->cand = in & p->live;
+    rt_pk_list(p, cull, g->refs + g->off[ci], g->off[ci + 1] - g->off[ci]);
+    if (g->sub && g->sub[ci] >= 0 && (in & p->live))
+        return rt_pk_sub(p, cull, &g->subs[g->sub[ci]], in);
+    return 1;
+}
+
+/* the rays still walking at top slice za..zb: drops those whose walk ended before it */
+static void rt_pk_drop(rt_pk *p, double za, double zb)
+{
+    const double ua = p->sg > 0 ? za : -zb;
+    if (p->uemin >= ua - p->umg)
+        return; /* none ended */
+    for (uint32_t m = p->live; m; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        if (p->ue[k] < ua - p->umg)
+            p->live &= ~(1u << k);
+    }
+    p->uemin = INFINITY; /* over the rays left */
+    for (uint32_t m = p->live; m; m &= m - 1)
+        p->uemin = p->ue[__builtin_ctz(m)] < p->uemin ? p->ue[__builtin_ctz(m)] : p->uemin;
+}
+
+static rt_pk_cull_fn rt_pk_cull;
+static pthread_once_t rt_pk_once = PTHREAD_ONCE_INIT;
+static const char *rt_pk_cull_name;
+static void rt_pk_choose(void)
+{
+    rt_pk_cull = rt_pk_kernel(&rt_pk_cull_name);
+}
+
+/* the walk over the top level: 1, or 0 if the packet is not coherent */
+static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
+{
+    const rt_box *b = &p->sc->grid.b;
+    const int K = p->K, nK = b->n[K];
+    pthread_once(&rt_pk_once, rt_pk_choose);
+    const rt_pk_cull_fn cull = rt_pk_cull;
+    if (++ctx->stamp == 0) {
+        memset(ctx->hbox, 0, RT_HBOX * sizeof(uint64_t));
+        ctx->stamp = 1;
+    }
+    p->key = (uint64_t)ctx->stamp << 32;
+    if (!p->live)
+        return 1;
+    double u0 = INFINITY; /* the first start along K (times sg) */
+    for (uint32_t m = p->live; m; m &= m - 1)
+        u0 = p->us[__builtin_ctz(m)] < u0 ? p->us[__builtin_ctz(m)] : u0;
+    const int s0 = rt_pk_cell(b, K, p->sg * u0, -p->sg);
+    p->z0 = rt_pk_plane(b, K, p->sg > 0 ? s0 : s0 + 1);
+    for (int j = p->sg > 0 ? s0 : nK - 1 - s0; j < nK && p->live; j++) {
+        const int s = p->sg > 0 ? j : nK - 1 - j;
+        const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
+        rt_pk_drop(p, za, zb);
+        const uint32_t in = rt_pk_in(p, p->live, za, zb);
+        if (!in)
+            continue;
+        rt_pk_frustum(p, in);
+        int c[4];
+        rt_pk_rect(p, b, za, zb, c);
+        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXC)
+            return 0;
+        int q[3];
+        q[K] = s;
+        for (q[p->a2] = c[2]; q[p->a2] <= c[3]; q[p->a2]++)
+            for (q[p->a1] = c[0]; q[p->a1] <= c[1]; q[p->a1]++)
+                if (!rt_pk_cell_visit(p, cull, rt_cell_index(b, q), in))
+                    return 0;
+    }
+    return 1;
+}
+
+/* ---- the result ---- */
+
+/* 1 if hit (wi, wt) wins the tie rule against hit (xi, xt) of ray r in both roles: as the
+   new hit against best x, and x as the new hit against best w */
+static int rt_pk_beats(const rt_scene *sc, const rt_rayx *r, uint32_t wi, double wt, uint32_t xi,
+                       double xt)
+{
+    double b = INFINITY, eb = 0.0;
+    long bi = -1;
+    rt_nearest_update(sc, r, xi, xt, &b, &bi, &eb); /* x alone: its error bound */
+    rt_nearest_update(sc, r, wi, wt, &b, &bi, &eb);
+    if (bi != (long)wi)
+        return 0;
+    rt_nearest_update(sc, r, xi, xt, &b, &bi, &eb);
+    return bi == (long)wi;
+}
+
+/* 1 if ray k's hit is the one every order of tests gives (see the top of the file) */
+static int rt_pk_sure(const rt_pk *p, int k)
+{
+    if ((p->over >> k) & 1u)
+        return 0;
+    const uint32_t wi = (uint32_t)p->bi[k];
+    for (int j = 0; j < p->nh[k]; j++) {
+        const rt_pk_rec *x = &p->rec[k][j];
+        if (x->i != wi && !rt_pk_beats(p->sc, &p->r[k], wi, p->best[k], x->i, x->t))
+            return 0;
+    }
+    return 1;
+}
+
+int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays, long *i,
+                      double *t, rt_rayx *rx, rt_packet_stats *ps)
+{
+    rt_pk p;
+    if (!rt_pk_setup(&p, sc, ctx, n, rays, 0, rx) || !rt_pk_walk(&p, ctx)) {
+        ps->fallback_packets++;
+        return 0;
+    }
+    ps->packets++;
+    for (int k = 0; k < p.n; k++) {
+        i[k] = p.bi[k];
+        t[k] = p.best[k];
+        if (p.bi[k] >= 0 && !rt_pk_sure(&p, k)) {
+            ps->fallback_rays++;
+            i[k] = rt_trace_nearest(sc, ctx, &rx[k], &t[k]);
+        }
+    }
+    return 1;
+}
+
+int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
+                       unsigned char *occ, rt_packet_stats *ps)
+{
+    rt_pk p;
+    rt_rayx rx[RT_PACKET];
+    if (!rt_pk_setup(&p, sc, ctx, n, rays, 1, rx) || !rt_pk_walk(&p, ctx)) {
+        ps->fallback_packets++;
+        return 0;
+    }
+    ps->packets++;
+    for (int k = 0; k < p.n; k++)
+        occ[k] = (p.hit >> k) & 1u;
+    return 1;
+}
+
+/* ---- the batch API ---- */
+
+/* the checks and the context of a packet call (rt_trace.c's rt_batch_begin) */
+static int rt_pk_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out,
+                       rt_ctx *c)
+{
+    if (!sc || (n && (!rays || !out)))
+        return RT_ERR_ARG;
+    if (!sc->committed)
+        return RT_ERR_STATE;
+    c->nprim = 0;
+    c->stamp = 0;
+    c->mbox = NULL;
+    c->hbox = rt_calloc_array(RT_HBOX, sizeof(uint64_t));
+    return c->hbox ? RT_OK : RT_ERR_NOMEM;
+}
+
+/* the nearest hits of a batch in packets of RT_PACKET rays; ps may be NULL */
+int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits,
+                              rt_packet_stats *ps)
+{
+    rt_packet_stats own = {0};
+    rt_ctx c;
+    const int rc = rt_pk_begin(sc, n, rays, hits, &c);
+    if (rc != RT_OK)
+        return rc;
+    for (size_t k0 = 0; k0 < n; k0 += RT_PACKET) {
+        const size_t m = n - k0 < RT_PACKET ? n - k0 : RT_PACKET;
+        long pi[RT_PACKET];
+        double pt[RT_PACKET];
+        rt_rayx rx[RT_PACKET];
+        const int packed = rt_packet_nearest(sc, &c, m, rays + k0, pi, pt, rx, ps ? ps : &own);
+        for (size_t j = 0; j < m; j++) {
+            const rt_ray *q = &rays[k0 + j];
+            long i = -1;
+            if (packed)
+                i = pi[j];
+            else if (rt_rayx_setup(&rx[j], q->org, q->dir, q->tmin, q->tmax))
+                i = rt_trace_nearest(sc, &c, &rx[j], &pt[j]);
+            if (i >= 0)
+                rt_fill_hit(sc, &rx[j], i, pt[j], &hits[k0 + j]);
+            else
+                hits[k0 + j] = (rt_hit){.t = INFINITY, .prim = -1};
+        }
+    }
+    rt_ctx_free(&c);
+    return RT_OK;
+}
+
+int rt_intersect_packet(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+{
+    return rt_intersect_packet_stats(sc, n, rays, hits, NULL);
+}
+
+/* any-hit answers of a batch in packets of RT_PACKET rays; ps may be NULL */
+int rt_occluded_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays,
+                             unsigned char *occluded, rt_packet_stats *ps)
+{
+    rt_packet_stats own = {0};
+    rt_ctx c;
+    const int rc = rt_pk_begin(sc, n, rays, occluded, &c);
+    if (rc != RT_OK)
+        return rc;
+    for (size_t k0 = 0; k0 < n; k0 += RT_PACKET) {
+        const size_t m = n - k0 < RT_PACKET ? n - k0 : RT_PACKET;
+        if (rt_packet_occluded(sc, &c, m, rays + k0, occluded + k0, ps ? ps : &own))
+            continue;
+        for (size_t j = 0; j < m; j++) {
+            rt_rayx r;
+            const rt_ray *q = &rays[k0 + j];
+            occluded[k0 + j] = rt_rayx_setup(&r, q->org, q->dir, q->tmin, q->tmax) &&
+                               rt_trace_transmit(sc, &c, &r, 1) == 0.0;
+        }
+    }
+    rt_ctx_free(&c);
+    return RT_OK;
+}
+
+int rt_occluded_packet(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
+{
+    return rt_occluded_packet_stats(sc, n, rays, occluded, NULL);
+}

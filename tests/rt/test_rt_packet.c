@@ -1,0 +1,381 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_rt_packet.c -- the coherent path (src/rt/rt_packet.c) against the single-ray path:
+ * rt_intersect_packet must return rt_intersect's hits bit for bit (primitive, t, side, point,
+ * normal) and rt_occluded_packet rt_occluded's answers, on
+ *  - the test meshes (tests/data/meshes; every triangle its own primitive id, so rays through
+ *    shared edges and vertices meet ties between ids) seen from random cameras, in 4 x 4
+ *    blocks of pixel rays at pitches from a tiny fraction of a grid cell to diverging, and
+ *    in packets of rays aimed exactly at neighbouring vertices and edge midpoints;
+ *  - coplanar and overlapping areas (the tie rule decides), a box resting on a floor, with
+ *    shadow rays to a point light;
+ *  - rays that cannot form a packet (zero direction components, NaN, mixed octants).
+ * Each check counts its rays and the rays whose answers differ (required 0), and that the
+ * packet path was taken (packets traced as packets > 0): a test that could not fail if the
+ * packet path were never used would prove nothing.
+ */
+#define GKS3D_RT_BUILDING 1
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "rt_check.h"
+#include "rt_internal.h"
+#include "rt_packet.h"
+#include "rt_testutil.h"
+
+/* 1 if the two hits are equal bit for bit in every field rt_intersect writes */
+static int same_hit(const rt_hit *a, const rt_hit *b)
+{
+    if (a->prim != b->prim)
+        return 0;
+    if (a->prim < 0)
+        return 1;
+    return !memcmp(&a->t, &b->t, sizeof a->t) && a->side == b->side &&
+           !memcmp(a->p, b->p, sizeof a->p) && !memcmp(a->ng, b->ng, sizeof a->ng);
+}
+
+typedef struct tally {
+    size_t rays, hits, differ, shadow, occluded, sdiffer;
+    rt_packet_stats ps;
+} tally;
+
+/* traces rays both ways (nearest hit, then shadow rays from the hits toward light) and counts */
+static void compare(const rt_scene *sc, size_t n, const rt_ray *rays, const double light[3],
+                    tally *ta)
+{
+    rt_hit *h1 = malloc(n * sizeof *h1), *h2 = malloc(n * sizeof *h2);
+    rt_ray *sr = malloc(n * sizeof *sr);
+    unsigned char *o1 = malloc(n), *o2 = malloc(n);
+    assert_true(h1 && h2 && sr && o1 && o2);
+    rtc_traps_on();
+    assert_int_equal(rt_intersect(sc, n, rays, h1), RT_OK);
+    assert_int_equal(rt_intersect_packet_stats(sc, n, rays, h2, &ta->ps), RT_OK);
+    rtc_traps_off();
+    size_t ns = 0;
+    for (size_t k = 0; k < n; k++) {
+        ta->rays++;
+        ta->hits += h1[k].prim >= 0;
+        if (!same_hit(&h1[k], &h2[k])) {
+            if (ta->differ < 5)
+                printf("  ray %zu differs: prim %d t %.17g vs prim %d t %.17g\n", k, h1[k].prim,
+                       h1[k].t, h2[k].prim, h2[k].t);
+            ta->differ++;
+        }
+        if (h1[k].prim < 0 || !light)
+            continue;
+        /* shadow ray: from the hit, moved off the surface toward the light's side, to it */
+        const double sg = h1[k].side ? -1.0 : 1.0;
+        rt_ray *r = &sr[ns++];
+        for (int i = 0; i < 3; i++) {
+            r->org[i] = h1[k].p[i] + sg * 1e-9 * h1[k].ng[i];
+            r->dir[i] = light[i] - r->org[i];
+        }
+        r->tmin = 0.0;
+        r->tmax = 1.0 - 1e-9;
+    }
+    rtc_traps_on();
+    assert_int_equal(rt_occluded(sc, ns, sr, o1), RT_OK);
+    assert_int_equal(rt_occluded_packet_stats(sc, ns, sr, o2, &ta->ps), RT_OK);
+    rtc_traps_off();
+    for (size_t k = 0; k < ns; k++) {
+        ta->shadow++;
+        ta->occluded += o1[k];
+        ta->sdiffer += o1[k] != o2[k];
+    }
+    free(h1);
+    free(h2);
+    free(sr);
+    free(o1);
+    free(o2);
+}
+
+static void report(const char *what, const tally *ta)
+{
+    printf("%s: %zu rays (%zu hit), %zu differ; %zu shadow rays (%zu occluded), %zu differ; "
+           "packets %llu traced, %llu to the single-ray path, %llu rays re-traced\n",
+           what, ta->rays, ta->hits, ta->differ, ta->shadow, ta->occluded, ta->sdiffer,
+           (unsigned long long)ta->ps.packets, (unsigned long long)ta->ps.fallback_packets,
+           (unsigned long long)ta->ps.fallback_rays);
+    assert_int_equal(ta->differ, 0);
+    assert_int_equal(ta->sdiffer, 0);
+    assert_true(ta->ps.packets > 0);
+}
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static void unit(double v[3])
+{
+    const double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int i = 0; i < 3; i++)
+        v[i] /= l;
+}
+
+/* W x H pinhole rays (W, H multiples of 4) from eye toward at, pixel pitch pitch (radians),
+   in 4 x 4 blocks, row by row within a block */
+static void camera_rays(const double eye[3], const double at[3], double pitch, int W, int H,
+                        double tmax, rt_ray *out)
+{
+    double f[3] = {at[0] - eye[0], at[1] - eye[1], at[2] - eye[2]}, u[3], v[3];
+    const double up[3] = {0.3, 1.0, 0.2};
+    unit(f);
+    cross(f, up, u);
+    unit(u);
+    cross(u, f, v);
+    size_t k = 0;
+    for (int by = 0; by < H; by += 4)
+        for (int bx = 0; bx < W; bx += 4)
+            for (int j = 0; j < 16; j++) {
+                const double x = (bx + j % 4 - W / 2 + 0.5) * pitch;
+                const double y = (by + j / 4 - H / 2 + 0.5) * pitch;
+                rt_ray *r = &out[k++];
+                for (int i = 0; i < 3; i++) {
+                    r->org[i] = eye[i];
+                    r->dir[i] = f[i] + x * u[i] + y * v[i];
+                }
+                r->tmin = 0.0;
+                r->tmax = tmax;
+            }
+}
+
+/* a random point in the box bb grown by g times its size around its centre */
+static void box_point(const double bb[6], double g, uint64_t *rng, double p[3])
+{
+    for (int i = 0; i < 3; i++) {
+        const double c = 0.5 * (bb[i] + bb[3 + i]), h = 0.5 * (bb[3 + i] - bb[i]) * g;
+        p[i] = c + h * (2.0 * rtu_rand(rng) - 1.0);
+    }
+}
+
+static void mesh_case(const char *path, int ncam)
+{
+    rtu_mesh m;
+    assert_int_equal(rtu_load_off(path, &m), 0);
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int si = rt_scene_add_surface(sc, &s);
+    assert_int_equal(rtu_mesh_add(&m, sc, si), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    double bb[6];
+    rtu_mesh_bbox(&m, bb);
+    const double diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                             (bb[5] - bb[2]) * (bb[5] - bb[2]));
+    enum { W = 32, H = 32 };
+    rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
+    assert_non_null(rays);
+    uint64_t rng = 12345;
+    tally ta = {0};
+    for (int c = 0; c < ncam; c++) {
+        /* eye outside (mostly) or inside the box; pitch from 1e-5 to 0.05 rad */
+        double eye[3], at[3], light[3];
+        box_point(bb, c % 5 == 4 ? 0.8 : 3.0, &rng, eye);
+        box_point(bb, 0.5, &rng, at);
+        box_point(bb, 2.5, &rng, light);
+        const double pitch = 1e-5 * pow(5000.0, rtu_rand(&rng));
+        const double tmax = c % 7 == 3 ? 0.6 * diag : INFINITY;
+        camera_rays(eye, at, pitch, W, H, tmax, rays);
+        compare(sc, (size_t)W * H, rays, light, &ta);
+    }
+    /* packets of rays aimed exactly at 16 consecutive vertices (neighbours in the file) and
+       at the midpoints of the edges of 16 consecutive faces: hits on shared edges and
+       vertices, where triangles of different ids tie */
+    size_t nv = (size_t)m.nv < 4096 ? (size_t)m.nv : 4096;
+    rt_ray *aim = malloc(nv * sizeof *aim);
+    assert_non_null(aim);
+    for (int c = 0; c < 4; c++) {
+        double eye[3];
+        box_point(bb, 2.5, &rng, eye);
+        const size_t v0 = (size_t)(rtu_rand(&rng) * (double)(m.nv - (int)nv));
+        for (size_t k = 0; k < nv; k++) {
+            const double *p = &m.xyz[3 * (v0 + k)];
+            for (int i = 0; i < 3; i++) {
+                aim[k].org[i] = eye[i];
+                aim[k].dir[i] = p[i] - eye[i];
+            }
+            aim[k].tmin = 0.0;
+            aim[k].tmax = INFINITY;
+        }
+        compare(sc, nv, aim, NULL, &ta);
+        size_t ne = 0;
+        for (size_t f = 0; f + 1 < (size_t)m.np && ne + 3 <= nv; f++) {
+            const int *ix = &m.idx[3 * f];
+            for (int e = 0; e < 3; e++) {
+                const double *a = &m.xyz[3 * ix[e]], *b = &m.xyz[3 * ix[(e + 1) % 3]];
+                for (int i = 0; i < 3; i++) {
+                    aim[ne].org[i] = eye[i];
+                    aim[ne].dir[i] = 0.5 * a[i] + 0.5 * b[i] - eye[i];
+                }
+                aim[ne].tmin = 0.0;
+                aim[ne].tmax = INFINITY;
+                ne++;
+            }
+        }
+        compare(sc, ne, aim, NULL, &ta);
+    }
+    report(path, &ta);
+    free(aim);
+    free(rays);
+    rt_scene_free(sc);
+    rtu_mesh_free(&m);
+}
+
+static void test_meshes(void **state)
+{
+    (void)state;
+    mesh_case(RT_DATA_DIR "/meshes/bunny00.off.gz", 40);
+    mesh_case(RT_DATA_DIR "/meshes/armadillo.off.gz", 25);
+    mesh_case(RT_DATA_DIR "/meshes/fandisk_large.off.gz", 25);
+}
+
+/* an axis-aligned rectangle [x0,x1] x [y0,y1] at height z (counter-clockwise from +z) */
+static int add_rect(rt_scene *sc, double x0, double y0, double x1, double y1, double z, int s)
+{
+    const double v[12] = {x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z};
+    const int n = 4;
+    return rt_scene_add_polygon(sc, 1, &n, v, s, s);
+}
+
+/* a box [x0,x1] x [y0,y1] x [z0,z1] as 12 triangles */
+static void add_box(rt_scene *sc, const double lo[3], const double hi[3], int s)
+{
+    static const int f[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (int q = 0; q < 6; q++)
+        for (int t = 0; t < 2; t++) {
+            double v[9];
+            const int c[3] = {f[q][0], f[q][1 + t], f[q][2 + t]};
+            for (int j = 0; j < 3; j++)
+                for (int a = 0; a < 3; a++)
+                    v[3 * j + a] = (c[j] >> a) & 1 ? hi[a] : lo[a];
+            const int n = 3;
+            assert_true(rt_scene_add_polygon(sc, 1, &n, v, s, s) >= 0);
+        }
+}
+
+/* coplanar and overlapping areas: a floor of 20 x 20 tiles, overlapping coplanar rectangles
+   of later ids, triangles sharing the floor's plane, and boxes resting on the floor (their
+   bottoms coplanar with it), traced from random cameras with shadow rays */
+static void test_coplanar(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int si = rt_scene_add_surface(sc, &s);
+    for (int i = 0; i < 20; i++)
+        for (int j = 0; j < 20; j++)
+            assert_true(add_rect(sc, i, j, i + 1, j + 1, 0.0, si) >= 0);
+    uint64_t rng = 777;
+    for (int k = 0; k < 60; k++) { /* overlapping coplanar rectangles at z = 0 and z = 1 */
+        const double x = 18.0 * rtu_rand(&rng), y = 18.0 * rtu_rand(&rng);
+        const double w = 0.5 + 3.0 * rtu_rand(&rng), h = 0.5 + 3.0 * rtu_rand(&rng);
+        assert_true(add_rect(sc, x, y, x + w, y + h, k % 2 ? 1.0 : 0.0, si) >= 0);
+    }
+    for (int k = 0; k < 30; k++) {
+        const double lo[3] = {18.0 * rtu_rand(&rng), 18.0 * rtu_rand(&rng), 0.0};
+        const double hi[3] = {lo[0] + 0.3 + 2.0 * rtu_rand(&rng), lo[1] + 0.3 + 2.0 * rtu_rand(&rng),
+                              0.2 + 2.0 * rtu_rand(&rng)};
+        add_box(sc, lo, hi, si);
+    }
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    const double bb[6] = {0, 0, 0, 20, 20, 3};
+    enum { W = 32, H = 32 };
+    rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
+    assert_non_null(rays);
+    tally ta = {0};
+    for (int c = 0; c < 60; c++) {
+        double eye[3], at[3], light[3];
+        box_point(bb, 1.5, &rng, eye);
+        eye[2] = 0.5 + 30.0 * rtu_rand(&rng) * rtu_rand(&rng); /* also grazing the floor */
+        box_point(bb, 0.8, &rng, at);
+        at[2] = 0.0;
+        box_point(bb, 1.0, &rng, light);
+        light[2] = 10.0;
+        camera_rays(eye, at, 1e-4 * pow(500.0, rtu_rand(&rng)), W, H, INFINITY, rays);
+        compare(sc, (size_t)W * H, rays, light, &ta);
+    }
+    report("coplanar", &ta);
+    free(rays);
+    rt_scene_free(sc);
+}
+
+/* rays that cannot form a packet: zero direction components, NaN, opposite octants in one
+   packet, a packet of fewer than RT_PACKET rays, empty batches and bad arguments */
+static void test_incoherent(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int si = rt_scene_add_surface(sc, &s);
+    const double c[3] = {0, 0, 0};
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 24, 12, si), 0);
+    rt_hit h;
+    rt_ray r0 = {{0, 0, 5}, {0, 0, -1}, 0, INFINITY};
+    assert_int_equal(rt_intersect_packet(sc, 1, &r0, &h), RT_ERR_STATE);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    assert_int_equal(rt_intersect_packet(NULL, 1, &r0, &h), RT_ERR_ARG);
+    assert_int_equal(rt_intersect_packet(sc, 1, NULL, &h), RT_ERR_ARG);
+    assert_int_equal(rt_occluded_packet(sc, 1, &r0, NULL), RT_ERR_ARG);
+    assert_int_equal(rt_intersect_packet(sc, 0, NULL, NULL), RT_OK);
+    enum { N = 16 * 40 + 7 };
+    rt_ray *rays = malloc(N * sizeof *rays);
+    assert_non_null(rays);
+    uint64_t rng = 99;
+    double e[3] = {0.0, 0.0, 5.0};
+    for (int k = 0; k < N; k++) {
+        rt_ray *r = &rays[k];
+        if (k % 16 == 0) { /* each packet from its own eye */
+            e[0] = 4.0 * rtu_rand(&rng) - 2.0;
+            e[1] = 4.0 * rtu_rand(&rng) - 2.0;
+        }
+        memcpy(r->org, e, sizeof e);
+        r->dir[0] = 0.5 - e[0] + 0.02 * (rtu_rand(&rng) - 0.5);
+        r->dir[1] = 0.5 - e[1] + 0.02 * (rtu_rand(&rng) - 0.5);
+        r->dir[2] = -5.0;
+        r->tmin = 0.0;
+        r->tmax = INFINITY;
+        const int kind = (k / 16) % 6;
+        if (kind == 1 && k % 16 == 3)
+            r->dir[0] = 0.0;                /* a zero component */
+        if (kind == 2 && k % 16 == 5)
+            r->dir[1] = NAN;                /* an unusable ray: a miss */
+        if (kind == 3 && k % 16 == 7)
+            r->dir[2] = 5.0, r->org[2] = -5.0; /* the other octant */
+        if (kind == 4)
+            rtu_rand_dir(&rng, r->dir);     /* random directions */
+    }
+    tally ta = {0};
+    compare(sc, N, rays, (const double[3]){3.0, 4.0, 5.0}, &ta);
+    report("incoherent", &ta);
+    assert_true(ta.ps.fallback_packets > 0);
+    free(rays);
+    rt_scene_free(sc);
+}
+
+int main(void)
+{
+    printf("packet kernel: %s\n", rt_packet_kernel_name());
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_incoherent),
+        cmocka_unit_test(test_coplanar),
+        cmocka_unit_test(test_meshes),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
