@@ -2,13 +2,13 @@
 /*
  * cmp_embree -- ours (rt_intersect / rt_occluded) vs Embree 3 (rtcIntersect1 / rtcOccluded1,
  * and its rtcIntersect16 packets on the primary rays), one thread, the same rays, same run;
- * ours' coherent path (rt_intersect_packet / rt_occluded_packet, 4x4 pixel blocks) beside.
+ * ours' coherent path (rt_intersect_packet / rt_occluded_packet, 8x8 pixel blocks) beside.
  *   cmp_embree rays RES mesh.off...   primary, shadow and incoherent Mrays/s, ratios, hit
  *                                     agreement; build time and memory of each mesh
  *   cmp_embree build                  build time and memory per primitive, 10^4 .. 10^6 triangles
  *   cmp_embree ours RES SET mesh.off  ours only, one pass over one ray set (SET: primary, shadow,
  *                                     inside, misses; the rays below; packets, shadowpk: the
- *                                     primary and shadow rays in 4x4 pixel blocks through the
+ *                                     primary and shadow rays in 8x8 pixel blocks through the
  *                                     packet path), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
  *   cmp_embree commit SRC KIND [T]   one rt_scene_commit on T threads (default 1) of SRC: N
@@ -311,22 +311,23 @@ static size_t make_ibox_rays(const bs_scene *s, size_t want, rt_ray *out, rt_ray
     return m;
 }
 
-/* the pixel index of the k-th ray of a res x res raster in 4x4 block order (blocks row by
-   row, rays row by row within a block; blocks cut at the raster's edge, so that with res not
-   a multiple of 4 later packets straddle blocks) */
+/* the pixel index of the k-th ray of a res x res raster in the order of ours' packets:
+   8x8 blocks (RT_PACKET rays) row by row, rays row by row within a block; blocks cut at the
+   raster's edge, so that with res not a multiple of 8 later packets straddle blocks */
+enum { PK_SIDE = 8 };
 static void block_order(int res, size_t *perm)
 {
     size_t k = 0;
-    for (int by = 0; by < res; by += 4)
-        for (int bx = 0; bx < res; bx += 4)
-            for (int j = 0; j < 16; j++) {
-                const int x = bx + j % 4, y = by + j / 4;
+    for (int by = 0; by < res; by += PK_SIDE)
+        for (int bx = 0; bx < res; bx += PK_SIDE)
+            for (int j = 0; j < PK_SIDE * PK_SIDE; j++) {
+                const int x = bx + j % PK_SIDE, y = by + j / PK_SIDE;
                 if (x < res && y < res)
                     perm[k++] = (size_t)y * (size_t)res + (size_t)x;
             }
 }
 
-/* ours' packet path on the primary rays in 4x4 pixel blocks (rt_intersect_packet), the
+/* ours' packet path on the primary rays in 8x8 pixel blocks (rt_intersect_packet), the
    reordering into blocks (blk) and of the hits back (bh -> hits) included, as Embree's packet
    set-up is */
 static double time_ours_packets(const rt_scene *sc, const rt_ray *rays, size_t n, const size_t *perm,
@@ -425,10 +426,11 @@ static int cmd_rays(int res, int nfiles, char **files)
            "CPU seconds of the tracing thread, best of %d interleaved runs\n",
            RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH, res, res, REPS);
     printf("E.pk16: Embree's rtcIntersect16 packets (4x4 pixel blocks) on the same primary rays; o/E16: ours' "
-           "single-ray path against them; o.pk16, pk/E16: ours' packet path (rt_intersect_packet, the same 4x4 "
-           "blocks); o.shpk, pk/E: ours' rt_occluded_packet on the shadow rays in block order against rtcOccluded1\n");
+           "single-ray path against them; o.pk, pk/E16: ours' packet path (rt_intersect_packet, 8x8 pixel "
+           "blocks) against them; o.shpk, pk/E: ours' rt_occluded_packet on the shadow rays in block order against "
+           "rtcOccluded1\n");
     printf("%-24s %7s | %8s %8s %6s | %8s %6s %8s %6s | %7s %8s %8s %6s %8s %6s | %s\n", "mesh", "tris", "o.prim",
-           "E.prim", "o/E", "E.pk16", "o/E16", "o.pk16", "pk/E16", "shadow", "o.shad", "E.shad", "o/E", "o.shpk",
+           "E.prim", "o/E", "E.pk16", "o/E16", "o.pk", "pk/E16", "shadow", "o.shad", "E.shad", "o/E", "o.shpk",
            "pk/E", "agreement (primary; shadow)");
     printf("%-24s %7s | %8s %8s %6s | %8s %6s %8s %6s | %7s %8s %8s %6s %8s %6s |\n", "", "", "Mrays/s", "Mrays/s",
            "", "Mrays/s", "", "Mrays/s", "", "rays", "Mrays/s", "Mrays/s", "", "Mrays/s", "");

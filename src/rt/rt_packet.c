@@ -63,13 +63,13 @@ typedef struct rt_pk {
     int n, any;
     int K, a1, a2;           /* the slicing axis and the two others */
     int sg;                  /* step along K: +1 or -1 */
-    uint32_t live;           /* rays still walking */
-    uint32_t hit;            /* any: rays that hit */
-    uint32_t over;           /* nearest: rays with more than RT_PK_REC hits */
-    uint32_t cand;           /* rays in the current slice: they test what it holds */
+    uint64_t live;           /* rays still walking */
+    uint64_t hit;            /* any: rays that hit */
+    uint64_t over;           /* nearest: rays with more than RT_PK_REC hits */
+    uint64_t cand;           /* rays in the current slice: they test what it holds */
     uint64_t *hbox;          /* the packet's mailbox (the context's small one) ... */
     uint64_t key;
-    uint32_t tmask[RT_HBOX]; /* ... and the rays each entry's primitive was tested for */
+    uint64_t tmask[RT_HBOX]; /* ... and the rays each entry's primitive was tested for */
     /* each ray's extent along K times sg (u = sg z): from its start to the end of its walk
        (the box exit, or its best hit plus 4 error bounds) */
     double us[RT_PACKET], ue[RT_PACKET];
@@ -83,7 +83,7 @@ typedef struct rt_pk {
     double oK[RT_PACKET], o1[RT_PACKET], o2[RT_PACKET], m1[RT_PACKET], m2[RT_PACKET];
     /* the frustum of the rays of fmask: their crossings of z = z0 within [lo, hi] and their
        slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
-    uint32_t fmask;
+    uint64_t fmask;
     double z0, lo[2], hi[2], mlo[2], mhi[2];
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
@@ -94,8 +94,8 @@ typedef struct rt_pk {
 
 /* ---- the cull kernels: rays of mask whose edge functions may not be mixed ---- */
 
-typedef uint32_t (*rt_pk_cull_fn)(const rt_pk *p, const double *v0, const double *v1,
-                                  const double *v2, uint32_t mask);
+typedef uint64_t (*rt_pk_cull_fn)(const rt_pk *p, const double *v0, const double *v1,
+                                  const double *v2, uint64_t mask);
 
 /* 1 unless the exact test's edge functions (the same operations) are non-zero and mixed */
 static inline int rt_pk_lane(const rt_pk *p, int k, const double *v0, const double *v1,
@@ -113,29 +113,29 @@ static inline int rt_pk_lane(const rt_pk *p, int k, const double *v0, const doub
     return zero | !mixed;
 }
 
-static uint32_t rt_pk_cull_scalar(const rt_pk *p, const double *v0, const double *v1,
-                                  const double *v2, uint32_t mask)
+static uint64_t rt_pk_cull_scalar(const rt_pk *p, const double *v0, const double *v1,
+                                  const double *v2, uint64_t mask)
 {
-    uint32_t out = 0;
-    for (uint32_t m = mask; m; m &= m - 1) {
-        const int k = __builtin_ctz(m);
+    uint64_t out = 0;
+    for (uint64_t m = mask; m; m &= m - 1) {
+        const int k = __builtin_ctzll(m);
         if (rt_pk_lane(p, k, v0, v1, v2))
-            out |= 1u << k;
+            out |= (uint64_t)1 << k;
     }
     return out;
 }
 
 #ifdef RT_PK_X86
 /* SSE2: 2 rays at a time */
-static uint32_t rt_pk_cull_sse(const rt_pk *p, const double *v0, const double *v1,
-                               const double *v2, uint32_t mask)
+static uint64_t rt_pk_cull_sse(const rt_pk *p, const double *v0, const double *v1,
+                               const double *v2, uint64_t mask)
 {
     const int kx = p->kx, ky = p->ky, kz = p->kz;
     const __m128d ax = _mm_set1_pd(v0[kx]), ay = _mm_set1_pd(v0[ky]), az = _mm_set1_pd(v0[kz]);
     const __m128d bx = _mm_set1_pd(v1[kx]), by = _mm_set1_pd(v1[ky]), bz = _mm_set1_pd(v1[kz]);
     const __m128d cx = _mm_set1_pd(v2[kx]), cy = _mm_set1_pd(v2[ky]), cz = _mm_set1_pd(v2[kz]);
     const __m128d z = _mm_setzero_pd();
-    uint32_t out = 0;
+    uint64_t out = 0;
     for (int k = 0; k < p->n; k += 2) {
         if (!((mask >> k) & 3u))
             continue;
@@ -159,22 +159,22 @@ static uint32_t rt_pk_cull_sse(const rt_pk *p, const double *v0, const double *v
         const __m128d pos = _mm_or_pd(_mm_or_pd(_mm_cmpgt_pd(U, z), _mm_cmpgt_pd(V, z)),
                                       _mm_cmpgt_pd(W, z));
         const __m128d keep = _mm_or_pd(zero, _mm_andnot_pd(_mm_and_pd(neg, pos), _mm_cmpeq_pd(z, z)));
-        out |= (uint32_t)_mm_movemask_pd(keep) << k;
+        out |= (uint64_t)_mm_movemask_pd(keep) << k;
     }
     return out & mask;
 }
 
 /* AVX2 (no FMA): 4 rays at a time */
-__attribute__((target("avx2"))) static uint32_t rt_pk_cull_avx2(const rt_pk *p, const double *v0,
+__attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, const double *v0,
                                                                 const double *v1,
-                                                                const double *v2, uint32_t mask)
+                                                                const double *v2, uint64_t mask)
 {
     const int kx = p->kx, ky = p->ky, kz = p->kz;
     const __m256d ax = _mm256_set1_pd(v0[kx]), ay = _mm256_set1_pd(v0[ky]), az = _mm256_set1_pd(v0[kz]);
     const __m256d bx = _mm256_set1_pd(v1[kx]), by = _mm256_set1_pd(v1[ky]), bz = _mm256_set1_pd(v1[kz]);
     const __m256d cx = _mm256_set1_pd(v2[kx]), cy = _mm256_set1_pd(v2[ky]), cz = _mm256_set1_pd(v2[kz]);
     const __m256d z = _mm256_setzero_pd();
-    uint32_t out = 0;
+    uint64_t out = 0;
     for (int k = 0; k < p->n; k += 4) {
         if (!((mask >> k) & 15u))
             continue;
@@ -203,7 +203,7 @@ __attribute__((target("avx2"))) static uint32_t rt_pk_cull_avx2(const rt_pk *p, 
                                          _mm256_cmp_pd(W, z, _CMP_GT_OQ));
         const unsigned mixed = (unsigned)_mm256_movemask_pd(_mm256_and_pd(neg, pos));
         const unsigned keep = (unsigned)_mm256_movemask_pd(zero) | (~mixed & 15u);
-        out |= keep << k;
+        out |= (uint64_t)keep << k;
     }
     return out & mask;
 }
@@ -339,7 +339,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
             return 0;
         if (!rt_pk_clip(p, k))
             continue; /* misses the grid box */
-        p->live |= 1u << k;
+        p->live |= (uint64_t)1 << k;
         p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
         p->usmax = p->us[k] > p->usmax ? p->us[k] : p->usmax;
     }
@@ -354,15 +354,15 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
 static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
 {
     if (p->any) {
-        p->hit |= 1u << k;
-        p->live &= ~(1u << k);
-        p->cand &= ~(1u << k);
+        p->hit |= (uint64_t)1 << k;
+        p->live &= ~((uint64_t)1 << k);
+        p->cand &= ~((uint64_t)1 << k);
         return;
     }
     if (p->nh[k] < RT_PK_REC)
         p->rec[k][p->nh[k]++] = (rt_pk_rec){i, t};
     else
-        p->over |= 1u << k;
+        p->over |= (uint64_t)1 << k;
     const long old = p->bi[k];
     rt_nearest_update(p->sc, &p->r[k], i, t, &p->best[k], &p->bi[k], &p->eb[k]);
     if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
@@ -381,7 +381,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
 {
     const uint64_t key = p->key | i;
     const uint32_t j = i % RT_HBOX;
-    uint32_t m = p->cand;
+    uint64_t m = p->cand;
     if (p->hbox[j] == key) {
         m &= ~p->tmask[j];
         if (!m)
@@ -396,7 +396,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
         const double *v[3];
         rt_tri_verts(sc, i, v);
         for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
-            const int k = __builtin_ctz(m);
+            const int k = __builtin_ctzll(m);
             double t;
             if (rt_isect_tri(&p->r[k], v[0], v[1], v[2], p->r[k].tmin, p->r[k].tmax, &t))
                 rt_pk_hit(p, k, i, t);
@@ -404,7 +404,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
         return;
     }
     for (; m; m &= m - 1) {
-        const int k = __builtin_ctz(m);
+        const int k = __builtin_ctzll(m);
         double t;
         if (rt_isect_prim(sc, &p->r[k], i, p->r[k].tmin, p->r[k].tmax, &t))
             rt_pk_hit(p, k, i, t);
@@ -420,7 +420,7 @@ static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint3
 /* ---- the walk by slices ---- */
 
 /* the frustum of the rays of mask (kept while the mask stays) */
-static void rt_pk_frustum(rt_pk *p, uint32_t mask)
+static void rt_pk_frustum(rt_pk *p, uint64_t mask)
 {
     if (mask == p->fmask)
         return;
@@ -429,7 +429,7 @@ static void rt_pk_frustum(rt_pk *p, uint32_t mask)
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     double mlo[2] = {INFINITY, INFINITY}, mhi[2] = {-INFINITY, -INFINITY};
     for (; mask; mask &= mask - 1) {
-        const int k = __builtin_ctz(mask);
+        const int k = __builtin_ctzll(mask);
         const double x[2] = {p->o1[k] + (z0 - p->oK[k]) * p->m1[k],
                              p->o2[k] + (z0 - p->oK[k]) * p->m2[k]};
         const double m[2] = {p->m1[k], p->m2[k]};
@@ -470,16 +470,16 @@ static inline double rt_pk_plane(const rt_box *g, int a, int b)
 }
 
 /* the rays of mask whose extent along K meets the slice between za and zb */
-static inline uint32_t rt_pk_in(const rt_pk *p, uint32_t mask, double za, double zb)
+static inline uint64_t rt_pk_in(const rt_pk *p, uint64_t mask, double za, double zb)
 {
     const double ua = p->sg > 0 ? za : -zb, ub = p->sg > 0 ? zb : -za;
     if (p->usmax <= ub + p->umg && p->uemin >= ua - p->umg)
         return mask; /* every ray meets it (the common case) */
-    uint32_t in = 0;
+    uint64_t in = 0;
     for (; mask; mask &= mask - 1) {
-        const int k = __builtin_ctz(mask);
+        const int k = __builtin_ctzll(mask);
         if (p->us[k] <= ub + p->umg && p->ue[k] >= ua - p->umg)
-            in |= 1u << k;
+            in |= (uint64_t)1 << k;
     }
     return in;
 }
@@ -487,7 +487,7 @@ static inline uint32_t rt_pk_in(const rt_pk *p, uint32_t mask, double za, double
 /* the second-level grid sg inside a top cell: its slices along K in the rays' direction,
    for the rays of the top slice (in) that meet each. 0 if a slice's footprint is too large
    (not coherent). */
-static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint32_t in)
+static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in)
 {
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &sg->b;
@@ -516,7 +516,7 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint32_
 
 /* one top cell for the rays of the slice (in): its own list, then its second-level grid;
    0: not coherent */
-static int rt_pk_cell_visit(rt_pk *p, rt_pk_cull_fn cull, size_t ci, uint32_t in)
+static int rt_pk_cell_visit(rt_pk *p, rt_pk_cull_fn cull, size_t ci, uint64_t in)
 {
     const rt_grid *g = &p->sc->grid;
     if (g->odist && g->odist[ci] != 0)
@@ -534,14 +534,14 @@ static void rt_pk_drop(rt_pk *p, double za, double zb)
     const double ua = p->sg > 0 ? za : -zb;
     if (p->uemin >= ua - p->umg)
         return; /* none ended */
-    for (uint32_t m = p->live; m; m &= m - 1) {
-        const int k = __builtin_ctz(m);
+    for (uint64_t m = p->live; m; m &= m - 1) {
+        const int k = __builtin_ctzll(m);
         if (p->ue[k] < ua - p->umg)
-            p->live &= ~(1u << k);
+            p->live &= ~((uint64_t)1 << k);
     }
     p->uemin = INFINITY; /* over the rays left */
-    for (uint32_t m = p->live; m; m &= m - 1)
-        p->uemin = p->ue[__builtin_ctz(m)] < p->uemin ? p->ue[__builtin_ctz(m)] : p->uemin;
+    for (uint64_t m = p->live; m; m &= m - 1)
+        p->uemin = p->ue[__builtin_ctzll(m)] < p->uemin ? p->ue[__builtin_ctzll(m)] : p->uemin;
 }
 
 static rt_pk_cull_fn rt_pk_cull;
@@ -567,15 +567,15 @@ static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
     if (!p->live)
         return 1;
     double u0 = INFINITY; /* the first start along K (times sg) */
-    for (uint32_t m = p->live; m; m &= m - 1)
-        u0 = p->us[__builtin_ctz(m)] < u0 ? p->us[__builtin_ctz(m)] : u0;
+    for (uint64_t m = p->live; m; m &= m - 1)
+        u0 = p->us[__builtin_ctzll(m)] < u0 ? p->us[__builtin_ctzll(m)] : u0;
     const int s0 = rt_pk_cell(b, K, p->sg * u0, -p->sg);
     p->z0 = rt_pk_plane(b, K, p->sg > 0 ? s0 : s0 + 1);
     for (int j = p->sg > 0 ? s0 : nK - 1 - s0; j < nK && p->live; j++) {
         const int s = p->sg > 0 ? j : nK - 1 - j;
         const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
         rt_pk_drop(p, za, zb);
-        const uint32_t in = rt_pk_in(p, p->live, za, zb);
+        const uint64_t in = rt_pk_in(p, p->live, za, zb);
         if (!in)
             continue;
         rt_pk_frustum(p, in);

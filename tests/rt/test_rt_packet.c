@@ -4,7 +4,7 @@
  * rt_intersect_packet must return rt_intersect's hits bit for bit (primitive, t, side, point,
  * normal) and rt_occluded_packet rt_occluded's answers, on
  *  - the test meshes (tests/data/meshes; every triangle its own primitive id, so rays through
- *    shared edges and vertices meet ties between ids) seen from random cameras, in 4 x 4
+ *    shared edges and vertices meet ties between ids) seen from random cameras, in 8 x 8
  *    blocks of pixel rays at pitches from a tiny fraction of a grid cell to diverging, and
  *    in packets of rays aimed exactly at neighbouring vertices and edge midpoints;
  *  - coplanar and overlapping areas (the tie rule decides), a box resting on a floor, with
@@ -123,8 +123,8 @@ static void unit(double v[3])
         v[i] /= l;
 }
 
-/* W x H pinhole rays (W, H multiples of 4) from eye toward at, pixel pitch pitch (radians),
-   in 4 x 4 blocks, row by row within a block */
+/* W x H pinhole rays (W, H multiples of 8) from eye toward at, pixel pitch pitch (radians),
+   in 8 x 8 blocks (one packet each), row by row within a block */
 static void camera_rays(const double eye[3], const double at[3], double pitch, int W, int H,
                         double tmax, rt_ray *out)
 {
@@ -135,11 +135,11 @@ static void camera_rays(const double eye[3], const double at[3], double pitch, i
     unit(u);
     cross(u, f, v);
     size_t k = 0;
-    for (int by = 0; by < H; by += 4)
-        for (int bx = 0; bx < W; bx += 4)
-            for (int j = 0; j < 16; j++) {
-                const double x = (bx + j % 4 - W / 2 + 0.5) * pitch;
-                const double y = (by + j / 4 - H / 2 + 0.5) * pitch;
+    for (int by = 0; by < H; by += 8)
+        for (int bx = 0; bx < W; bx += 8)
+            for (int j = 0; j < 64; j++) {
+                const double x = (bx + j % 8 - W / 2 + 0.5) * pitch;
+                const double y = (by + j / 8 - H / 2 + 0.5) * pitch;
                 rt_ray *r = &out[k++];
                 for (int i = 0; i < 3; i++) {
                     r->org[i] = eye[i];
@@ -334,14 +334,14 @@ static void test_incoherent(void **state)
     assert_int_equal(rt_intersect_packet(sc, 1, NULL, &h), RT_ERR_ARG);
     assert_int_equal(rt_occluded_packet(sc, 1, &r0, NULL), RT_ERR_ARG);
     assert_int_equal(rt_intersect_packet(sc, 0, NULL, NULL), RT_OK);
-    enum { N = 16 * 40 + 7 };
+    enum { N = RT_PACKET * 12 + 7 };
     rt_ray *rays = malloc(N * sizeof *rays);
     assert_non_null(rays);
     uint64_t rng = 99;
     double e[3] = {0.0, 0.0, 5.0};
     for (int k = 0; k < N; k++) {
         rt_ray *r = &rays[k];
-        if (k % 16 == 0) { /* each packet from its own eye */
+        if (k % RT_PACKET == 0) { /* each packet from its own eye */
             e[0] = 4.0 * rtu_rand(&rng) - 2.0;
             e[1] = 4.0 * rtu_rand(&rng) - 2.0;
         }
@@ -351,12 +351,12 @@ static void test_incoherent(void **state)
         r->dir[2] = -5.0;
         r->tmin = 0.0;
         r->tmax = INFINITY;
-        const int kind = (k / 16) % 6;
-        if (kind == 1 && k % 16 == 3)
+        const int kind = (k / RT_PACKET) % 6;
+        if (kind == 1 && k % RT_PACKET == 3)
             r->dir[0] = 0.0;                /* a zero component */
-        if (kind == 2 && k % 16 == 5)
+        if (kind == 2 && k % RT_PACKET == 5)
             r->dir[1] = NAN;                /* an unusable ray: a miss */
-        if (kind == 3 && k % 16 == 7)
+        if (kind == 3 && k % RT_PACKET == 7)
             r->dir[2] = 5.0, r->org[2] = -5.0; /* the other octant */
         if (kind == 4)
             rtu_rand_dir(&rng, r->dir);     /* random directions */
