@@ -41,6 +41,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #if defined(__x86_64__) || defined(__i386__)
@@ -271,12 +272,14 @@ static int rt_pk_clip(rt_pk *p, int k)
     return 1;
 }
 
-/* the signs of a direction's components (bit a: negative), -1 if one is zero */
-static int rt_pk_octant(const double d[3])
+/* the signs of a direction's components (bit a: negative), -1 if one is zero (or their
+   product underflows: then the packet takes the single-ray path, which is always right) */
+static inline int rt_pk_octant(const double d[3])
 {
-    if (d[0] == 0.0 || d[1] == 0.0 || d[2] == 0.0)
-        return -1;
-    return (d[0] < 0.0) | (d[1] < 0.0) << 1 | (d[2] < 0.0) << 2;
+    uint64_t b[3];
+    memcpy(b, d, sizeof b);
+    const int o = (int)(b[0] >> 63 | (b[1] >> 63) << 1 | (b[2] >> 63) << 2);
+    return d[0] * d[1] * d[2] != 0.0 ? o : -1;
 }
 
 /* ray k's per-ray data; 0 if it does not share the packet's axes and octant */
@@ -578,7 +581,7 @@ static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
         const uint64_t in = rt_pk_in(p, p->live, za, zb);
         if (!in)
             continue;
-        rt_pk_frustum(p, in);
+        rt_pk_frustum(p, p->live); /* of the rays still walking: kept over many slices */
         int c[4];
         rt_pk_rect(p, b, za, zb, c);
         if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXC)
@@ -624,6 +627,14 @@ static int rt_pk_sure(const rt_pk *p, int k)
     return 1;
 }
 
+/* packets traced as packets since the process started (tests) */
+static atomic_ullong rt_pk_traced;
+
+unsigned long long rt_packet_count(void)
+{
+    return atomic_load_explicit(&rt_pk_traced, memory_order_relaxed);
+}
+
 int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays, long *i,
                       double *t, rt_rayx *rx, rt_packet_stats *ps)
 {
@@ -633,6 +644,7 @@ int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *r
         return 0;
     }
     ps->packets++;
+    atomic_fetch_add_explicit(&rt_pk_traced, 1, memory_order_relaxed);
     for (int k = 0; k < p.n; k++) {
         i[k] = p.bi[k];
         t[k] = p.best[k];
@@ -654,6 +666,7 @@ int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *
         return 0;
     }
     ps->packets++;
+    atomic_fetch_add_explicit(&rt_pk_traced, 1, memory_order_relaxed);
     for (int k = 0; k < p.n; k++)
         occ[k] = (p.hit >> k) & 1u;
     return 1;

@@ -39,6 +39,10 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
 int rt_occluded_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays,
                              unsigned char *occluded, rt_packet_stats *ps);
 
+/* packets traced as packets (not handed to the single-ray walk) since the process started,
+   by every thread (tests: the renderer's eye rays took the coherent path) */
+unsigned long long rt_packet_count(void);
+
 /* the name of the kernel that culls rays of a packet ("avx2", "sse", "scalar") */
 const char *rt_packet_kernel_name(void);
 

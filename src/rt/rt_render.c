@@ -39,6 +39,7 @@
 #define _DEFAULT_SOURCE 1 /* madvise */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_packet.h"
 #include "rt_shade.h"
 
 #include <math.h>
@@ -88,6 +89,8 @@ typedef struct rt_job {
     uint32_t *cand;
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
+    int packets;        /* one-ray modes without candidate lists: eye rays in 8 x 8 packets
+                           (rt_packet.c; the same hits); 0 when GKS_RT_PACKETS=0 */
     rt_lbuf lbuf[RT_MAX_LIGHTS]; /* shadow-ray candidates per light (ok = 0: walk the grid) */
     unsigned short *cover_out; /* NULL, or per pixel: its eye rays that hit (rt_render_cover) */
     uint8_t *corner_hit;       /* corner mode with cover_out: per corner ray, 1 if it hit */
@@ -458,26 +461,15 @@ static void rt_secondary(rt_worker *w, const rt_surface *s, const double P[3], c
     }
 }
 
-/* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
-   cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
-static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
-                     int depth, double weight, int secondary, long from, const rt_cands *cand,
-                     double out[3])
+/* the colour of the ray (o, d) whose nearest hit is internal primitive i (< 0: none) at t
+   (rt_trace, and the eye rays traced in packets) */
+static void rt_shade_hit(rt_worker *w, const double o[3], const double d[3], int depth,
+                         double weight, long i, double t, double out[3])
 {
     const rt_job *job = w->job;
     const rt_scene *sc = job->sc;
     for (int c = 0; c < 3; c++)
         out[c] = job->o.background[c];
-    if (secondary && job->o.clip_secondary && !rt_clip_volume(job->cam, o, d, &tmin, &tmax))
-        return;
-    rt_rayx r;
-    if (!rt_rayx_setup(&r, o, d, tmin, tmax))
-        return;
-    if (from >= 0)
-        r.skip = (uint32_t)from;
-    double t;
-    long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
-                  : rt_trace_nearest(sc, &w->ctx, &r, &t);
     if (depth == 1) {
         w->st.eye_hits += i >= 0;
         w->eye_hit = i >= 0;
@@ -520,6 +512,29 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (depth >= job->o.max_depth)
         return;
     rt_secondary(w, s, P, N, Nsh, d, side, smooth, eps, depth, weight, i, out);
+}
+
+/* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
+   cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
+static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
+                     int depth, double weight, int secondary, long from, const rt_cands *cand,
+                     double out[3])
+{
+    const rt_job *job = w->job;
+    const rt_scene *sc = job->sc;
+    for (int c = 0; c < 3; c++)
+        out[c] = job->o.background[c];
+    if (secondary && job->o.clip_secondary && !rt_clip_volume(job->cam, o, d, &tmin, &tmax))
+        return;
+    rt_rayx r;
+    if (!rt_rayx_setup(&r, o, d, tmin, tmax))
+        return;
+    if (from >= 0)
+        r.skip = (uint32_t)from;
+    double t;
+    long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
+                  : rt_trace_nearest(sc, &w->ctx, &r, &t);
+    rt_shade_hit(w, o, d, depth, weight, i, t, out);
 }
 
 /* The picture is usually fresh from malloc (mmap): its first touch takes one page fault per
@@ -935,11 +950,83 @@ static void rt_eye_store(rt_worker *w, int x, int y, double col[3])
         job->cover_out[row + (size_t)x] = (unsigned short)w->eye_hit;
 }
 
+/* the nearest hits of the n rays pk (rt_packet_nearest, or one by one when they do not
+   form a packet) into pi, pt */
+static void rt_packet_eye(rt_worker *w, int n, const rt_ray *pk, long *pi, double *pt)
+{
+    const rt_scene *sc = w->job->sc;
+    rt_rayx rx[RT_PACKET];
+    rt_packet_stats ps = {0};
+    if (rt_packet_nearest(sc, &w->ctx, (size_t)n, pk, pi, pt, rx, &ps))
+        return;
+    for (int j = 0; j < n; j++)
+        pi[j] = rt_rayx_setup(&rx[j], pk[j].org, pk[j].dir, pk[j].tmin, pk[j].tmax)
+                    ? rt_trace_nearest(sc, &w->ctx, &rx[j], &pt[j])
+                    : -1;
+}
+
+/* The eye rays of a tile without candidate lists (one per corner or pixel centre, those the
+   cover mask does not cull) traced in packets of 8 x 8 (the hits of rt_trace_nearest, bit for
+   bit), then shaded in raster order as rt_tile_rows does: the same picture. */
+#define RT_PK_SIDE 8
+_Static_assert(RT_PK_SIDE * RT_PK_SIDE <= RT_PACKET, "a block is one packet");
+static void rt_tile_packets(rt_worker *w, int x0, int x1, int y0, int y1)
+{
+    rt_job *job = w->job;
+    const double off = job->o.corner_rays ? 0.0 : 0.5;
+    double xt[RT_TILE][4], yt[4], col[3];
+    rt_ray ray[RT_TILE][RT_TILE], pk[RT_PACKET];
+    int ok[RT_TILE][RT_TILE];
+    long hi[RT_TILE][RT_TILE], pi[RT_PACKET];
+    double ht[RT_TILE][RT_TILE], pt[RT_PACKET];
+    for (int x = x0; x < x1; x++)
+        rt_camera_xterm(job->cam, x + off, xt[x - x0]);
+    for (int y = y0; y < y1; y++) {
+        rt_camera_yterm(job->cam, y + off, yt);
+        rt_camera_rays_row(job->cam, (const double(*)[4])xt, x1 - x0, yt, ray[y - y0], ok[y - y0]);
+        const uint8_t *cov = job->cover ? job->cover + (size_t)y * (size_t)job->gw : NULL;
+        for (int x = x0; x < x1; x++)
+            ok[y - y0][x - x0] &= !cov || cov[x];
+    }
+    for (int by = 0; by < y1 - y0; by += RT_PK_SIDE)
+        for (int bx = 0; bx < x1 - x0; bx += RT_PK_SIDE) {
+            int n = 0;
+            for (int y = by; y < by + RT_PK_SIDE && y < y1 - y0; y++)
+                for (int x = bx; x < bx + RT_PK_SIDE && x < x1 - x0; x++)
+                    if (ok[y][x])
+                        pk[n++] = ray[y][x];
+            if (n)
+                rt_packet_eye(w, n, pk, pi, pt);
+            n = 0;
+            for (int y = by; y < by + RT_PK_SIDE && y < y1 - y0; y++)
+                for (int x = bx; x < bx + RT_PK_SIDE && x < x1 - x0; x++)
+                    if (ok[y][x]) {
+                        hi[y][x] = pi[n];
+                        ht[y][x] = pt[n++];
+                    }
+        }
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            w->st.eye_rays++;
+            w->eye_hit = 0;
+            const rt_ray *r = &ray[y - y0][x - x0];
+            if (ok[y - y0][x - x0])
+                rt_shade_hit(w, r->org, r->dir, 1, 1.0, hi[y - y0][x - x0], ht[y - y0][x - x0], col);
+            else
+                memcpy(col, job->o.background, sizeof col);
+            rt_eye_store(w, x, y, col);
+        }
+}
+
 /* one ray per corner or pixel centre over [x0,x1) x [y0,y1): x terms once per column, y
    terms once per row */
 static void rt_tile_rows(rt_worker *w, int x0, int x1, int y0, int y1)
 {
     rt_job *job = w->job;
+    if (job->packets && !job->cand_off) {
+        rt_tile_packets(w, x0, x1, y0, y1);
+        return;
+    }
     const double off = job->o.corner_rays ? 0.0 : 0.5;
     double xt[RT_TILE][4], xs[RT_TILE][4], yt[4], col[3];
     rt_ray ray[RT_TILE];
@@ -1486,6 +1573,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         job.cover = cv.mask;
         job.cand_off = cv.off;
         job.cand = cv.ids;
+        const char *pe = getenv("GKS_RT_PACKETS"); /* "0": every eye ray alone (tests) */
+        job.packets = !(pe && !strcmp(pe, "0"));
         rt_phase(&job, NULL, tp);
     }
     const double tl = rt_phase(&job, "light buffers", 0.0);

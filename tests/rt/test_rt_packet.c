@@ -369,12 +369,75 @@ static void test_incoherent(void **state)
     rt_scene_free(sc);
 }
 
+/* the renderer's eye rays in packets (rt_render.c: one-ray modes without candidate lists,
+   i.e. more than 16 candidates per ray on average): the same picture, bit for bit, as every
+   eye ray alone (GKS_RT_PACKETS=0), with corner rays and pixel-centre rays, and the packet
+   path taken */
+static void test_render(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    s.refl_eq = RT_REFL_SPECULAR;
+    s.ks = 0.3;
+    s.transparency = 0.0;
+    const int si = rt_scene_add_surface(sc, &s);
+    s.transparency = 0.4;
+    s.refr_index = 1.3;
+    const int st = rt_scene_add_surface(sc, &s);
+    uint64_t rng = 5;
+    for (int k = 0; k < 40; k++) { /* 40 layers of tilted triangles over the whole view */
+        const double z = -1.0 - 0.1 * k, a = 0.3 * (rtu_rand(&rng) - 0.5);
+        const double v[9] = {-4, -4, z - a, 4, -4, z + a, 0, 5, z};
+        const int n = 3;
+        assert_true(rt_scene_add_polygon(sc, 1, &n, v, k % 3 ? si : st, si) >= 0);
+    }
+    const double c[3] = {0.3, -0.2, -0.6};
+    assert_int_equal(rtu_add_sphere(sc, c, 0.3, 32, 16, si), 0);
+    rt_light l = {.type = RT_LIGHT_POSITIONAL, .color = {1, 1, 1}, .position = {1, 2, 2}, .c1 = 1};
+    assert_true(rt_scene_add_light(sc, &l) >= 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rtu_view v = {.win = {-1, 1, -1, 1}, .prp = {0, 0, 4}, .vpd = 0, .bpd = -6, .fpd = 0.9,
+                  .vp = {0, 1, 0, 1, 0, 1}, .perspective = 1};
+    double vm[4][4];
+    rtu_view_matrix(&v, vm);
+    rt_camera cam;
+    const double box[6] = {0, 1, 0, 1, 0, 1};
+    assert_int_equal(rt_camera_from_view(&cam, vm, box, 61, 47), RT_OK);
+    const size_t np = 61 * 47 * 3;
+    float *a = malloc(np * sizeof *a), *b = malloc(np * sizeof *b);
+    assert_true(a && b);
+    for (int corner = 0; corner < 2; corner++) {
+        rt_render_options o;
+        rt_render_options_default(&o);
+        o.corner_rays = corner;
+        o.threads = 2;
+        const unsigned long long before = rt_packet_count();
+        assert_int_equal(rt_render(sc, &cam, &o, a, NULL), RT_OK);
+        const unsigned long long used = rt_packet_count() - before;
+        setenv("GKS_RT_PACKETS", "0", 1);
+        assert_int_equal(rt_render(sc, &cam, &o, b, NULL), RT_OK);
+        unsetenv("GKS_RT_PACKETS");
+        const int same = !memcmp(a, b, np * sizeof *a);
+        printf("render (corner rays %d): %llu packets, pictures %s\n", corner, used,
+               same ? "identical" : "DIFFER");
+        assert_true(used > 0);
+        assert_true(same);
+    }
+    free(a);
+    free(b);
+    rt_scene_free(sc);
+}
+
 int main(void)
 {
     printf("packet kernel: %s\n", rt_packet_kernel_name());
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_incoherent),
         cmocka_unit_test(test_coplanar),
+        cmocka_unit_test(test_render),
         cmocka_unit_test(test_meshes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
