@@ -7,7 +7,9 @@
  * Leak probe: from a certified interior point, rays aimed exactly at every vertex and every
  * edge midpoint plus NRANDOM (default 10^6) random directions. A leak is a miss or a first hit
  * on the outer side (away from the aimed target). Printed per mesh for gksrt and for Embree in
- * its default and its robust mode (RTC_SCENE_FLAG_ROBUST; single precision).
+ * its default and its robust mode (RTC_SCENE_FLAG_ROBUST; single precision), and for gksrt's
+ * packet path (rt_intersect_packet on the same rays sorted by direction), with the rays whose
+ * hit differs from rt_intersect's.
  * -primary: SIZE x SIZE (512) camera rays as bench/rt/rt_bench -primary, one thread; Mrays/s of
  * gksrt (rt_intersect) and Embree (rtcIntersect1), hit agreement (same triangle, or both miss).
  */
@@ -43,6 +45,82 @@ static void count_leaks(const rt_hit *h, size_t n, size_t naimed, int inner, lea
         c->miss += h[k].prim < 0;
         c->outer += h[k].prim >= 0 && h[k].side != inner && !(aimed && fabs(h[k].t - 1.0) <= 1e-6);
     }
+}
+
+/* the order of the rays for the packet path: by octant of the direction, then by a Morton
+   code of its position on the cube face of its dominant axis (neighbouring directions form
+   packets) */
+typedef struct dir_key {
+    uint64_t key;
+    size_t k;
+} dir_key;
+
+static int cmp_key(const void *a, const void *b)
+{
+    const dir_key *x = a, *y = b;
+    return x->key < y->key ? -1 : x->key > y->key;
+}
+
+static uint64_t spread16(uint64_t v)
+{
+    uint64_t r = 0;
+    for (int b = 0; b < 16; b++)
+        r |= ((v >> b) & 1u) << (2 * b);
+    return r;
+}
+
+static dir_key *direction_order(const rt_ray *rays, size_t n)
+{
+    dir_key *o = malloc(n * sizeof *o);
+    if (!o)
+        return NULL;
+    for (size_t k = 0; k < n; k++) {
+        const double *d = rays[k].dir;
+        const double ax = fabs(d[0]), ay = fabs(d[1]), az = fabs(d[2]);
+        const int kz = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+        const double m = fabs(d[kz]) > 0.0 ? fabs(d[kz]) : 1.0;
+        const double u = d[(kz + 1) % 3] / m, v = d[(kz + 2) % 3] / m; /* in [-1, 1] */
+        const uint64_t qu = (uint64_t)((u + 1.0) * 32767.0), qv = (uint64_t)((v + 1.0) * 32767.0);
+        const uint64_t oct = (uint64_t)(d[0] < 0) | (uint64_t)(d[1] < 0) << 1 | (uint64_t)(d[2] < 0) << 2;
+        o[k].key = (oct << 36 | (uint64_t)kz << 32) | (spread16(qu) | spread16(qv) << 1);
+        o[k].k = k;
+    }
+    qsort(o, n, sizeof *o, cmp_key);
+    return o;
+}
+
+/* the leak rays again through the packet path (rt_intersect_packet), sorted by direction:
+   its leaks, and the rays whose hit differs from rt_intersect's (h) in primitive or t bits */
+static void packet_leaks(const rt_scene *sc, const rt_ray *rays, const rt_hit *h, size_t n,
+                         size_t naimed, int inner)
+{
+    dir_key *o = direction_order(rays, n);
+    rt_ray *r2 = malloc(n * sizeof *r2);
+    rt_hit *h2 = malloc(n * sizeof *h2), *h3 = malloc(n * sizeof *h3);
+    if (!o || !r2 || !h2 || !h3) {
+        printf("  gksrt packets: out of memory\n");
+        goto done;
+    }
+    for (size_t j = 0; j < n; j++)
+        r2[j] = rays[o[j].k];
+    double t0 = cpu_now();
+    rt_intersect_packet(sc, n, r2, h2);
+    const double tt = cpu_now() - t0;
+    size_t differ = 0;
+    for (size_t j = 0; j < n; j++) {
+        const rt_hit *a = &h[o[j].k], *b = &h2[j];
+        h3[o[j].k] = *b;
+        differ += a->prim != b->prim || (a->prim >= 0 && memcmp(&a->t, &b->t, sizeof a->t) != 0);
+    }
+    leak_count c;
+    count_leaks(h3, n, naimed, inner, &c);
+    printf("  gksrt packets (by direction) : %zu misses, %zu outer-side first hits, %zu rays differ "
+           "from rt_intersect  (%.2f Mrays/s)\n", c.miss, c.outer, differ, (double)n / tt * 1e-6);
+done:
+    free(o);
+    free(r2);
+    free(h2);
+    free(h3);
 }
 
 #ifdef RT_WITH_EMBREE
@@ -135,6 +213,7 @@ static int leak(const char *path, size_t nrand)
            nv, ne, nrand);
     printf("  gksrt (double, watertight)   : %zu misses, %zu outer-side first hits  "
            "(build %.3f s, %.2f Mrays/s)\n", c.miss, c.outer, tb, (double)n / tt * 1e-6);
+    packet_leaks(sc, rays, h, n, nv + ne, inner);
 #ifdef RT_WITH_EMBREE
     RTCDevice dev = rtcNewDevice("threads=1");
     for (int robust = 0; robust < 2; robust++) {
