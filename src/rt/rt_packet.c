@@ -5,13 +5,16 @@
  * two-level grid by slices, as in coherent grid traversal (Wald, Ize, Kensler, Knoll, Parker
  * 2006, "Ray Tracing Animated Scenes using Coherent Grid Traversal").
  *
- * Walk: the rays of a packet share the dominant axis K of their directions and the sign of
- * every component (else the packet is not coherent and its rays take the single-ray walk,
- * rt_trace.c). The grid is walked slice by slice along K in the rays' direction; in each slice
- * the packet's footprint is the rectangle of cells that holds the points where its rays cross
- * the slice's two planes (each ray is a line, so its part in the slice lies between its two
- * crossings), widened by 2^-20 of a cell for the roundings of those crossings (far below the
- * eps by which the build enlarges every cell, rt_build.c). A cell with a second-level grid is
+ * Walk: the rays of a packet share the axes of the exact test (kx, ky, kz: the dominant axis
+ * of the direction and its sign) and the sign of every component of their directions in the
+ * grid frame (rotated or not, rt_build.c), else the packet is not coherent and its rays take
+ * the single-ray walk (rt_trace.c). The grid is walked slice by slice along the first ray's
+ * dominant grid axis K in the rays' direction; in each slice the packet's footprint is the
+ * rectangle of cells between the bounds of the frustum of its rays at the slice's two planes:
+ * each ray crosses a plane z at x(z0) + (z - z0) m (z0 the first plane, m its slope), which
+ * lies between the rays' least x(z0) plus (z - z0) times their least slope and the greatest
+ * likewise (exact for rays from one point, as primary rays are), widened by 2^-20 of a cell
+ * for the roundings (far below the eps by which the build enlarges every cell, rt_build.c). A cell with a second-level grid is
  * walked the same way, by the second level's slices. Each primitive met is loaded once per
  * packet (the small mailbox, per packet) and tested for every ray still walking: a kernel
  * tests 4 (AVX2) or 2 (SSE2) rays at a time with the very operations of the exact double
@@ -90,6 +93,7 @@ typedef struct rt_pk {
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
     double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
+    double go[RT_PACKET][3], gd[RT_PACKET][3]; /* the rays in the grid frame (the walk's) */
     rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
 } rt_pk;
 
@@ -255,11 +259,11 @@ static inline int rt_pk_cell(const rt_box *g, int a, double x, double dir)
 static int rt_pk_clip(rt_pk *p, int k)
 {
     const rt_box *g = &p->sc->grid.b;
-    const rt_rayx *r = &p->r[k];
-    double t0 = r->tmin, t1 = r->tmax;
+    const double *o = p->go[k], *d = p->gd[k];
+    double t0 = p->r[k].tmin, t1 = p->r[k].tmax;
     for (int a = 0; a < 3; a++) {
-        const double inv = 1.0 / r->d[a];
-        const double ta = (g->lo[a] - r->o[a]) * inv, tb = (g->hi[a] - r->o[a]) * inv;
+        const double inv = 1.0 / d[a];
+        const double ta = (g->lo[a] - o[a]) * inv, tb = (g->hi[a] - o[a]) * inv;
         const double tn = ta < tb ? ta : tb, tf = ta < tb ? tb : ta;
         t0 = tn > t0 ? tn : t0;
         t1 = tf < t1 ? tf : t1;
@@ -267,8 +271,8 @@ static int rt_pk_clip(rt_pk *p, int k)
     if (!(t0 <= t1) || !isfinite(t0))
         return 0;
     p->t1[k] = t1;
-    p->us[k] = p->sg * (r->o[p->K] + t0 * r->d[p->K]);
-    p->ue[k] = p->sg * (r->o[p->K] + t1 * r->d[p->K]);
+    p->us[k] = p->sg * (o[p->K] + t0 * d[p->K]);
+    p->ue[k] = p->sg * (o[p->K] + t1 * d[p->K]);
     return 1;
 }
 
@@ -282,42 +286,49 @@ static inline int rt_pk_octant(const double d[3])
     return d[0] * d[1] * d[2] != 0.0 ? o : -1;
 }
 
-/* ray k's per-ray data; 0 if it does not share the packet's axes and octant */
+/* ray k's per-ray data; 0 if it does not share the packet's axes (of the exact test, in
+   VRC3) and octant (of the walk, in the grid frame) */
 static int rt_pk_ray(rt_pk *p, int k, int *oct)
 {
     const rt_rayx *r = &p->r[k];
-    const int o = rt_pk_octant(r->d);
-    if (o < 0 || (*oct >= 0 && (o != *oct || r->kz != p->kz)))
+    const rt_grid *g = &p->sc->grid;
+    double *go = p->go[k], *gd = p->gd[k];
+    rt_grid_point(g, r->o, go);
+    rt_grid_dir(g, r->d, gd);
+    const int o = rt_pk_octant(gd);
+    if (o < 0 || (*oct >= 0 && (o != *oct || r->kx != p->kx || r->ky != p->ky || r->kz != p->kz)))
         return 0;
     if (*oct < 0) {
         *oct = o;
         p->kx = r->kx;
         p->ky = r->ky;
-        p->kz = p->K = r->kz;
+        p->kz = r->kz;
+        const double ax = fabs(gd[0]), ay = fabs(gd[1]), az = fabs(gd[2]);
+        p->K = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
         p->a1 = (p->K + 1) % 3;
         p->a2 = (p->K + 2) % 3;
-        p->sg = r->d[p->K] > 0.0 ? 1 : -1;
+        p->sg = gd[p->K] > 0.0 ? 1 : -1;
     }
     p->ox[k] = r->o[p->kx];
     p->oy[k] = r->o[p->ky];
     p->oz[k] = r->o[p->kz];
     p->sx[k] = r->sx;
     p->sy[k] = r->sy;
-    p->oK[k] = r->o[p->K];
-    p->o1[k] = r->o[p->a1];
-    p->o2[k] = r->o[p->a2];
-    p->m1[k] = r->d[p->a1] / r->d[p->K];
-    p->m2[k] = r->d[p->a2] / r->d[p->K];
+    p->oK[k] = go[p->K];
+    p->o1[k] = go[p->a1];
+    p->o2[k] = go[p->a2];
+    p->m1[k] = gd[p->a1] / gd[p->K];
+    p->m2[k] = gd[p->a2] / gd[p->K];
     return 1;
 }
 
 /* the packet's rays: 1, or 0 if they are not coherent (different axes or octants, a zero
-   direction component, a rotated grid) */
+   direction component) */
 static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
                        int any, rt_rayx *rx)
 {
     const rt_grid *g = &sc->grid;
-    if (!sc->use_grid || g->rotated || n == 0 || n > RT_PACKET)
+    if (!sc->use_grid || n == 0 || n > RT_PACKET)
         return 0;
     p->sc = sc;
     p->n = (int)n;
@@ -371,7 +382,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
     if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
         const double te = p->best[k] + 4.0 * p->eb[k];
         if (te < p->t1[k]) {
-            p->ue[k] = p->sg * (p->r[k].o[p->K] + te * p->r[k].d[p->K]);
+            p->ue[k] = p->sg * (p->go[k][p->K] + te * p->gd[k][p->K]);
             p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
         }
     }

@@ -241,11 +241,24 @@ static void test_meshes(void **state)
     mesh_case(RT_DATA_DIR "/meshes/fandisk_large.off.gz", 25);
 }
 
+/* the coplanar scene's rotation (identity, or oblique: then the grid is laid out in a
+   rotated frame) applied to n points */
+static double rot[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+static void xf(double *v, int n)
+{
+    for (int k = 0; k < n; k++) {
+        const double p[3] = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+        for (int a = 0; a < 3; a++)
+            v[3 * k + a] = rot[a][0] * p[0] + rot[a][1] * p[1] + rot[a][2] * p[2];
+    }
+}
+
 /* an axis-aligned rectangle [x0,x1] x [y0,y1] at height z (counter-clockwise from +z) */
 static int add_rect(rt_scene *sc, double x0, double y0, double x1, double y1, double z, int s)
 {
-    const double v[12] = {x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z};
+    double v[12] = {x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z};
     const int n = 4;
+    xf(v, 4);
     return rt_scene_add_polygon(sc, 1, &n, v, s, s);
 }
 
@@ -262,16 +275,24 @@ static void add_box(rt_scene *sc, const double lo[3], const double hi[3], int s)
                 for (int a = 0; a < 3; a++)
                     v[3 * j + a] = (c[j] >> a) & 1 ? hi[a] : lo[a];
             const int n = 3;
+            xf(v, 3);
             assert_true(rt_scene_add_polygon(sc, 1, &n, v, s, s) >= 0);
         }
 }
 
 /* coplanar and overlapping areas: a floor of 20 x 20 tiles, overlapping coplanar rectangles
    of later ids, triangles sharing the floor's plane, and boxes resting on the floor (their
-   bottoms coplanar with it), traced from random cameras with shadow rays */
-static void test_coplanar(void **state)
+   bottoms coplanar with it), traced from random cameras with shadow rays; as it is, and
+   turned obliquely (rotated != 0: the grid in a rotated frame) */
+static void coplanar_case(int rotated)
 {
-    (void)state;
+    if (rotated) { /* 35 degrees about x, then 50 about z */
+        const double a = 35.0 * 3.14159265358979 / 180.0, b = 50.0 * 3.14159265358979 / 180.0;
+        const double r[3][3] = {{cos(b), -sin(b) * cos(a), sin(b) * sin(a)},
+                                {sin(b), cos(b) * cos(a), -cos(b) * sin(a)},
+                                {0.0, sin(a), cos(a)}};
+        memcpy(rot, r, sizeof rot);
+    }
     rt_scene *sc = rt_scene_new();
     assert_non_null(sc);
     rt_surface s;
@@ -293,6 +314,9 @@ static void test_coplanar(void **state)
         add_box(sc, lo, hi, si);
     }
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_int_equal(gi.rotated, rotated);
     const double bb[6] = {0, 0, 0, 20, 20, 3};
     enum { W = 32, H = 32 };
     rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
@@ -306,12 +330,24 @@ static void test_coplanar(void **state)
         at[2] = 0.0;
         box_point(bb, 1.0, &rng, light);
         light[2] = 10.0;
+        xf(eye, 1);
+        xf(at, 1);
+        xf(light, 1);
         camera_rays(eye, at, 1e-4 * pow(500.0, rtu_rand(&rng)), W, H, INFINITY, rays);
         compare(sc, (size_t)W * H, rays, light, &ta);
     }
-    report("coplanar", &ta);
+    report(rotated ? "coplanar, rotated grid" : "coplanar", &ta);
     free(rays);
     rt_scene_free(sc);
+    const double id[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    memcpy(rot, id, sizeof rot);
+}
+
+static void test_coplanar(void **state)
+{
+    (void)state;
+    coplanar_case(0);
+    coplanar_case(1);
 }
 
 /* rays that cannot form a packet: zero direction components, NaN, opposite octants in one
