@@ -93,7 +93,9 @@ typedef struct rt_pk {
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
     double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
-    double go[RT_PACKET][3], gd[RT_PACKET][3]; /* the rays in the grid frame (the walk's) */
+    const double *go[RT_PACKET], *gd[RT_PACKET]; /* the rays in the grid frame (the walk's):
+                                                    the rt_rayx's own, or in rot */
+    double rot[RT_PACKET][2][3];
     rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
 } rt_pk;
 
@@ -292,9 +294,15 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
 {
     const rt_rayx *r = &p->r[k];
     const rt_grid *g = &p->sc->grid;
-    double *go = p->go[k], *gd = p->gd[k];
-    rt_grid_point(g, r->o, go);
-    rt_grid_dir(g, r->d, gd);
+    const double *go = r->o, *gd = r->d;
+    if (g->rotated) {
+        rt_grid_point(g, r->o, p->rot[k][0]);
+        rt_grid_dir(g, r->d, p->rot[k][1]);
+        go = p->rot[k][0];
+        gd = p->rot[k][1];
+    }
+    p->go[k] = go;
+    p->gd[k] = gd;
     const int o = rt_pk_octant(gd);
     if (o < 0 || (*oct >= 0 && (o != *oct || r->kx != p->kx || r->ky != p->ky || r->kz != p->kz)))
         return 0;
