@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_packet.c -- the coherent path: packets of up to RT_PACKET rays (a 4 x 4 block of primary
+ * rt_packet.c -- the coherent path: packets of up to RT_PACKET rays (an 8 x 8 block of primary
  * rays, or shadow rays of neighbouring pixels toward one light) traced together through the
  * two-level grid by slices, as in coherent grid traversal (Wald, Ize, Kensler, Knoll, Parker
  * 2006, "Ray Tracing Animated Scenes using Coherent Grid Traversal").
@@ -14,9 +14,11 @@
  * each ray crosses a plane z at x(z0) + (z - z0) m (z0 the first plane, m its slope), which
  * lies between the rays' least x(z0) plus (z - z0) times their least slope and the greatest
  * likewise (exact for rays from one point, as primary rays are), widened by 2^-20 of a cell
- * for the roundings (far below the eps by which the build enlarges every cell, rt_build.c). A cell with a second-level grid is
- * walked the same way, by the second level's slices. Each primitive met is loaded once per
- * packet (the small mailbox, per packet) and tested for every ray still walking: a kernel
+ * for the roundings (far below the eps by which the build enlarges every cell, rt_build.c).
+ * A cell with a second-level grid is walked the same way, by the second level's slices. Each
+ * primitive met is loaded once per packet and tested for the rays whose extent along K meets
+ * the slice and that have not tested it yet (the small mailbox, each entry with the rays it
+ * was tested for; an entry taken by another primitive only repeats tests): a kernel
  * tests 4 (AVX2) or 2 (SSE2) rays at a time with the very operations of the exact double
  * test's edge functions (rt_isect_tri, rt_prim.h), so its signs are that test's bit for bit
  * (no FMA: the kernels are built for AVX2 without FMA, and the build has no -march), and only
@@ -27,7 +29,9 @@
  * Same hits as the single-ray walk: every primitive is tested on the whole range
  * [tmin, tmax] of each ray, so a ray's computed hits are those of the exact test, each t bit
  * for bit. A ray stops walking at the first slice beyond its best hit plus 4 times that hit's
- * error bound (rt_nearest_update), so every hit within its tie window is found. The
+ * error bound (rt_nearest_update), so every hit within its tie window is found (a new best
+ * hit whose window reaches further than the one before sends the ray to the single-ray walk:
+ * cells up to the new end may have been passed over for it). The
  * single-ray walk picks its hit by rt_nearest_update in the order of its cells, the packet in
  * another order; the tie rule is not transitive in general (docs/RAYTRACING.md, "Coplanar
  * surfaces"), so the packet's hit W is kept only when it wins the rule against every other
@@ -389,10 +393,16 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
     rt_nearest_update(p->sc, &p->r[k], i, t, &p->best[k], &p->bi[k], &p->eb[k]);
     if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
         const double te = p->best[k] + 4.0 * p->eb[k];
-        if (te < p->t1[k]) {
-            p->ue[k] = p->sg * (p->go[k][p->K] + te * p->gd[k][p->K]);
-            p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
-        }
+        const double tend = te < p->t1[k] ? te : p->t1[k];
+        const double ue = p->sg * (p->go[k][p->K] + tend * p->gd[k][p->K]);
+        /* a new best whose window reaches further than the last one's (a larger error
+           bound): cells between the two ends may have been passed over for this ray, so its
+           hits are not known to be complete: the single-ray walk decides */
+        if (ue > p->ue[k])
+            p->over |= (uint64_t)1 << k;
+        else
+            p->ue[k] = ue;
+        p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
     }
 }
 
