@@ -93,6 +93,7 @@ typedef struct rt_pk {
        slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
     uint64_t fmask;
     double z0, lo[2], hi[2], mlo[2], mhi[2];
+    double xmg[2];           /* margins along a1, a2: 2^-20 of a top cell */
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
@@ -369,8 +370,11 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
         p->usmax = p->us[k] > p->usmax ? p->us[k] : p->usmax;
     }
-    if (p->live)
+    if (p->live) {
         p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
+        p->xmg[0] = g->b.cw[p->a1] * RT_PK_MARGIN;
+        p->xmg[1] = g->b.cw[p->a2] * RT_PK_MARGIN;
+    }
     return 1;
 }
 
@@ -406,6 +410,29 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
     }
 }
 
+/* 1 if triangle v lies wholly outside the packet's frustum (of the rays still walking) on
+   one side along a1 or a2: the frustum's crossings of the plane z along K lie between
+   xl(z) = lo + (z - z0) * (z >= z0 ? mlo : mhi) and xh(z) likewise with mhi, mlo; xl is
+   concave and xh convex, so the points below xl (above xh) form a convex set, and a triangle
+   whose three vertices lie there (by the margin of 2^-20 of a top cell, for the roundings)
+   lies there whole and meets no ray of the frustum. Grid-frame coordinates: only for a grid
+   that is not rotated (then they are the vertices' own). */
+static inline int rt_pk_outside(const rt_pk *p, const double *const v[3])
+{
+    int below[2] = {1, 1}, above[2] = {1, 1};
+    for (int j = 0; j < 3; j++) {
+        const double dz = v[j][p->K] - p->z0;
+        for (int a = 0; a < 2; a++) {
+            const double x = v[j][a ? p->a2 : p->a1];
+            const double xl = p->lo[a] + dz * (dz >= 0.0 ? p->mlo[a] : p->mhi[a]);
+            const double xh = p->hi[a] + dz * (dz >= 0.0 ? p->mhi[a] : p->mlo[a]);
+            below[a] &= x < xl - p->xmg[a];
+            above[a] &= x > xh + p->xmg[a];
+        }
+    }
+    return below[0] | below[1] | above[0] | above[1];
+}
+
 /* primitive i for the rays of p->cand that have not tested it in this packet (the small
    mailbox with the rays each entry was tested for; an entry taken by another primitive
    only repeats tests, which give the same hits) */
@@ -427,6 +454,8 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
     if (i < sc->ntri) {
         const double *v[3];
         rt_tri_verts(sc, i, v);
+        if (!sc->grid.rotated && rt_pk_outside(p, v))
+            return;
         for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
             const int k = __builtin_ctzll(m);
             double t;
