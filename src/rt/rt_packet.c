@@ -415,11 +415,19 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
    xl(z) = lo + (z - z0) * (z >= z0 ? mlo : mhi) and xh(z) likewise with mhi, mlo; xl is
    concave and xh convex, so the points below xl (above xh) form a convex set, and a triangle
    whose three vertices lie there (by the margin of 2^-20 of a top cell, for the roundings)
-   lies there whole and meets no ray of the frustum. Grid-frame coordinates: only for a grid
-   that is not rotated (then they are the vertices' own). */
-static inline int rt_pk_outside(const rt_pk *p, const double *const v[3])
+   lies there whole and meets no ray of the frustum. In the grid frame: a rotated grid's
+   vertices are taken into it first (their roundings far below the margin). */
+static inline int rt_pk_outside(const rt_pk *p, const double *const vv[3])
 {
     int below[2] = {1, 1}, above[2] = {1, 1};
+    const rt_grid *g = &p->sc->grid;
+    double w[3][3];
+    const double *v[3] = {vv[0], vv[1], vv[2]};
+    if (g->rotated)
+        for (int j = 0; j < 3; j++) {
+            rt_grid_point(g, vv[j], w[j]);
+            v[j] = w[j];
+        }
     for (int j = 0; j < 3; j++) {
         const double dz = v[j][p->K] - p->z0;
         for (int a = 0; a < 2; a++) {
@@ -454,7 +462,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
     if (i < sc->ntri) {
         const double *v[3];
         rt_tri_verts(sc, i, v);
-        if (!sc->grid.rotated && rt_pk_outside(p, v))
+        if (rt_pk_outside(p, v))
             return;
         for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
             const int k = __builtin_ctzll(m);
