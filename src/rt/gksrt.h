@@ -316,10 +316,10 @@ RT_API int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigne
  * consecutive rays (the last packet may be shorter), each packet traced together through the
  * grid (coherent grid traversal: its triangles loaded once per packet, tested for several rays
  * at a time). Give it 8 x 8 blocks of neighbouring primary rays (row by row within a block),
- * or shadow rays of neighbouring points toward one point light, in the same order. The answers are those of
- * rt_intersect / rt_occluded bit for bit, for any rays: a packet whose rays do not share
- * the dominant axis and the signs of their directions, or whose footprint in the grid grows
- * too large (diverging rays), and any scene whose grid is rotated or absent, takes the
+ * or shadow rays of neighbouring points toward one point light, in the same order. The
+ * answers are those of rt_intersect / rt_occluded bit for bit, for any rays: a packet whose
+ * rays do not share the dominant axis and the signs of their directions, or whose footprint
+ * in the grid grows too large (diverging rays), and any scene without a grid, takes the
  * single-ray path; so does a ray whose nearest hit could depend on the order of the tests
  * (docs/RAYTRACING.md, "Packets"). Return values as rt_intersect / rt_occluded. */
 #define RT_PACKET 64
