@@ -89,6 +89,7 @@ typedef struct rt_pk {
     rt_pk_rec rec[RT_PACKET][RT_PK_REC];
     /* each ray's line: o[a1] + (z - o[K]) * m1, o[a2] + (z - o[K]) * m2 at z along K */
     double oK[RT_PACKET], o1[RT_PACKET], o2[RT_PACKET], m1[RT_PACKET], m2[RT_PACKET];
+    double nf[2][3];         /* the grid box's near and far plane per axis (rt_pk_clip) */
     /* the frustum of the rays of fmask: their crossings of z = z0 within [lo, hi] and their
        slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
     uint64_t fmask;
@@ -98,6 +99,7 @@ typedef struct rt_pk {
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
     double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
+    double usmin, uemax;     /* the first start and the last end of the rays (rt_pk_ends) */
     const double *go[RT_PACKET], *gd[RT_PACKET]; /* the rays in the grid frame (the walk's):
                                                     the rt_rayx's own, or in rot */
     double rot[RT_PACKET][2][3];
@@ -262,16 +264,17 @@ static inline int rt_pk_cell(const rt_box *g, int a, double x, double dir)
     return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
 }
 
-/* ray k's range cut to the grid box (as rt_dda_init clips): 0 if nothing is left */
+/* ray k's range cut to the grid box (as rt_dda_init clips): 0 if nothing is left. The
+   packet's octant gives each axis's near and far plane (nf: the box's lo and hi, swapped for a
+   negative component), so the slab's entry is (near - o) / d without a comparison, the same
+   value as the min of the two; along K of a grid that is not rotated 1 / d is the ray's sz. */
 static int rt_pk_clip(rt_pk *p, int k)
 {
-    const rt_box *g = &p->sc->grid.b;
     const double *o = p->go[k], *d = p->gd[k];
     double t0 = p->r[k].tmin, t1 = p->r[k].tmax;
     for (int a = 0; a < 3; a++) {
-        const double inv = 1.0 / d[a];
-        const double ta = (g->lo[a] - o[a]) * inv, tb = (g->hi[a] - o[a]) * inv;
-        const double tn = ta < tb ? ta : tb, tf = ta < tb ? tb : ta;
+        const double inv = a == p->K && !p->sc->grid.rotated ? p->r[k].sz : 1.0 / d[a];
+        const double tn = (p->nf[0][a] - o[a]) * inv, tf = (p->nf[1][a] - o[a]) * inv;
         t0 = tn > t0 ? tn : t0;
         t1 = tf < t1 ? tf : t1;
     }
@@ -321,6 +324,11 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
         p->a1 = (p->K + 1) % 3;
         p->a2 = (p->K + 2) % 3;
         p->sg = gd[p->K] > 0.0 ? 1 : -1;
+        const rt_box *b = &g->b;
+        for (int a = 0; a < 3; a++) {
+            p->nf[0][a] = gd[a] < 0.0 ? b->hi[a] : b->lo[a];
+            p->nf[1][a] = gd[a] < 0.0 ? b->lo[a] : b->hi[a];
+        }
     }
     p->ox[k] = r->o[p->kx];
     p->oy[k] = r->o[p->ky];
@@ -330,8 +338,16 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
     p->oK[k] = go[p->K];
     p->o1[k] = go[p->a1];
     p->o2[k] = go[p->a2];
-    p->m1[k] = gd[p->a1] / gd[p->K];
-    p->m2[k] = gd[p->a2] / gd[p->K];
+    if (g->rotated) {
+        p->m1[k] = gd[p->a1] / gd[p->K];
+        p->m2[k] = gd[p->a2] / gd[p->K];
+    } else { /* K is kz and a1, a2 are kx, ky (in this order for a positive d[kz]): the
+                slopes are the exact test's sx, sy (d * (1 / d[kz]), within an ulp of the
+                quotient, far inside the frustum's margin) */
+        const int pos = p->a1 == r->kx;
+        p->m1[k] = pos ? r->sx : r->sy;
+        p->m2[k] = pos ? r->sy : r->sx;
+    }
     return 1;
 }
 
@@ -350,9 +366,10 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->hbox = ctx->hbox;
     p->r = rx;
     p->uemin = INFINITY;
-    p->usmax = -INFINITY;
+    p->usmax = p->uemax = -INFINITY;
+    p->usmin = INFINITY;
     int oct = -1;
-    for (int k = 0; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
+    for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
     for (int k = 0; k < p->n; k++) {
         const rt_ray *q = &rays[k];
@@ -360,8 +377,10 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         p->eb[k] = 0.0;
         p->bi[k] = -1;
         p->nh[k] = 0;
-        if (!rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax))
+        if (!rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax)) {
+            p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
             continue; /* a miss, as on the single-ray walk */
+        }
         if (!rt_pk_ray(p, k, &oct))
             return 0;
         if (!rt_pk_clip(p, k))
@@ -369,6 +388,8 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         p->live |= (uint64_t)1 << k;
         p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
         p->usmax = p->us[k] > p->usmax ? p->us[k] : p->usmax;
+        p->usmin = p->us[k] < p->usmin ? p->us[k] : p->usmin;
+        p->uemax = p->ue[k] > p->uemax ? p->ue[k] : p->uemax;
     }
     if (p->live) {
         p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
@@ -613,6 +634,30 @@ static void rt_pk_drop(rt_pk *p, double za, double zb)
         p->uemin = p->ue[__builtin_ctzll(m)] < p->uemin ? p->ue[__builtin_ctzll(m)] : p->uemin;
 }
 
+/* the first top slice of the walk (index along K), with the frustum's plane z0 at its near
+   end (exact there for rays from one point, as primary rays are; a frustum from the far
+   end, where shadow rays toward a light converge, gave more instructions on the three
+   meshes), or -1 if the footprint of the first or the last slice exceeds RT_PK_MAXC: the
+   packet is not coherent, known before the walk (the frustum's width is convex along K, so
+   its widest slices are at the ends; the walk itself may narrow it as rays end). */
+static int rt_pk_ends(rt_pk *p)
+{
+    const rt_box *b = &p->sc->grid.b;
+    const int K = p->K;
+    const int s0 = rt_pk_cell(b, K, p->sg * p->usmin, -p->sg);
+    const int s1 = rt_pk_cell(b, K, p->sg * p->uemax, p->sg);
+    p->z0 = rt_pk_plane(b, K, p->sg > 0 ? s0 : s0 + 1);
+    rt_pk_frustum(p, p->live);
+    int c[4];
+    for (int e = 0; e < 2; e++) {
+        const int s = e ? s1 : s0;
+        rt_pk_rect(p, b, rt_pk_plane(b, K, s), rt_pk_plane(b, K, s + 1), c);
+        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXC)
+            return -1;
+    }
+    return s0;
+}
+
 static rt_pk_cull_fn rt_pk_cull;
 static pthread_once_t rt_pk_once = PTHREAD_ONCE_INIT;
 static const char *rt_pk_cull_name;
@@ -635,11 +680,9 @@ static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
     p->key = (uint64_t)ctx->stamp << 32;
     if (!p->live)
         return 1;
-    double u0 = INFINITY; /* the first start along K (times sg) */
-    for (uint64_t m = p->live; m; m &= m - 1)
-        u0 = p->us[__builtin_ctzll(m)] < u0 ? p->us[__builtin_ctzll(m)] : u0;
-    const int s0 = rt_pk_cell(b, K, p->sg * u0, -p->sg);
-    p->z0 = rt_pk_plane(b, K, p->sg > 0 ? s0 : s0 + 1);
+    const int s0 = rt_pk_ends(p);
+    if (s0 < 0)
+        return 0;
     for (int j = p->sg > 0 ? s0 : nK - 1 - s0; j < nK && p->live; j++) {
         const int s = p->sg > 0 ? j : nK - 1 - j;
         const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
