@@ -264,25 +264,67 @@ static inline int rt_pk_cell(const rt_box *g, int a, double x, double dir)
     return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
 }
 
-/* ray k's range cut to the grid box (as rt_dda_init clips): 0 if nothing is left. The
-   packet's octant gives each axis's near and far plane (nf: the box's lo and hi, swapped for a
-   negative component), so the slab's entry is (near - o) / d without a comparison, the same
-   value as the min of the two; along K of a grid that is not rotated 1 / d is the ray's sz. */
-static int rt_pk_clip(rt_pk *p, int k)
+/* ray k's extent along K from its range [t0, t1] in the grid box: 0 if nothing is left */
+static inline int rt_pk_range(rt_pk *p, int k, double t0, double t1)
 {
     const double *o = p->go[k], *d = p->gd[k];
-    double t0 = p->r[k].tmin, t1 = p->r[k].tmax;
-    for (int a = 0; a < 3; a++) {
-        const double inv = a == p->K && !p->sc->grid.rotated ? p->r[k].sz : 1.0 / d[a];
-        const double tn = (p->nf[0][a] - o[a]) * inv, tf = (p->nf[1][a] - o[a]) * inv;
-        t0 = tn > t0 ? tn : t0;
-        t1 = tf < t1 ? tf : t1;
-    }
     if (!(t0 <= t1) || !isfinite(t0))
         return 0;
     p->t1[k] = t1;
     p->us[k] = p->sg * (o[p->K] + t0 * d[p->K]);
     p->ue[k] = p->sg * (o[p->K] + t1 * d[p->K]);
+    return 1;
+}
+
+/* ray k's range cut to the grid box (as rt_dda_init clips): 0 if nothing is left. The
+   packet's octant gives each axis's near and far plane (nf: the box's lo and hi, swapped for a
+   negative component), so the slab's entry is (near - o) / d without a comparison, the same
+   value as the min of the two. */
+static int rt_pk_clip(rt_pk *p, int k)
+{
+    const double *o = p->go[k], *d = p->gd[k];
+    const double i0 = 1.0 / d[0], i1 = 1.0 / d[1], i2 = 1.0 / d[2];
+    const double n0 = (p->nf[0][0] - o[0]) * i0, f0 = (p->nf[1][0] - o[0]) * i0;
+    const double n1 = (p->nf[0][1] - o[1]) * i1, f1 = (p->nf[1][1] - o[1]) * i1;
+    const double n2 = (p->nf[0][2] - o[2]) * i2, f2 = (p->nf[1][2] - o[2]) * i2;
+    double t0 = p->r[k].tmin, t1 = p->r[k].tmax;
+    t0 = n0 > t0 ? n0 : t0;
+    t0 = n1 > t0 ? n1 : t0;
+    t0 = n2 > t0 ? n2 : t0;
+    t1 = f0 < t1 ? f0 : t1;
+    t1 = f1 < t1 ? f1 : t1;
+    t1 = f2 < t1 ? f2 : t1;
+    return rt_pk_range(p, k, t0, t1);
+}
+
+/* ray q (as given) against the grid box b of a grid that is not rotated: 1 and its range
+   t[0..1] in the box (t[0] > t[1]: it misses the box), or 0 if not judged here: rays with a
+   non-finite value or a component below 1e-250 (no operation below may raise an exception;
+   the tests trap them), which rt_rayx_setup or the packet's octant rejects. A ray that misses
+   the box is a miss on the single-ray walk too (every primitive lies inside the box, by the
+   build's eps; rt_rayx_setup flushes only components below 1e-150 of the largest, which turn
+   no miss of the box into a hit of a primitive), and needs neither rt_rayx_setup nor the
+   packet's per-ray data; for a ray walked, whose components are then all kept, the range is
+   the one rt_pk_clip computes, bit for bit (the entry and exit of each slab are the min and
+   max of the same two products). */
+static inline int rt_pk_tbox(const rt_box *b, const rt_ray *q, double t[2])
+{
+    const double *o = q->org, *d = q->dir;
+    if (!(isfinite(o[0]) & isfinite(o[1]) & isfinite(o[2]) & isfinite(d[0]) & isfinite(d[1]) &
+          isfinite(d[2]) & isfinite(q->tmin) & !isnan(q->tmax)))
+        return 0;
+    if (!((fabs(d[0]) >= 1e-250) & (fabs(d[1]) >= 1e-250) & (fabs(d[2]) >= 1e-250)))
+        return 0;
+    double t0 = q->tmin, t1 = q->tmax;
+    for (int a = 0; a < 3; a++) {
+        const double inv = 1.0 / d[a];
+        const double ta = (b->lo[a] - o[a]) * inv, tb = (b->hi[a] - o[a]) * inv;
+        const double tn = ta < tb ? ta : tb, tf = ta < tb ? tb : ta;
+        t0 = tn > t0 ? tn : t0;
+        t1 = tf < t1 ? tf : t1;
+    }
+    t[0] = t0;
+    t[1] = t1;
     return 1;
 }
 
@@ -368,6 +410,10 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->uemin = INFINITY;
     p->usmax = p->uemax = -INFINITY;
     p->usmin = INFINITY;
+    p->K = 0; /* set by the first ray that may be walked; if none: a packet of misses */
+    p->a1 = 1;
+    p->a2 = 2;
+    p->sg = 1;
     int oct = -1;
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
@@ -377,13 +423,19 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         p->eb[k] = 0.0;
         p->bi[k] = -1;
         p->nh[k] = 0;
+        double t[2] = {0.0, 0.0};
+        const int judged = !g->rotated && rt_pk_tbox(&g->b, q, t);
+        if (judged && !(t[0] <= t[1])) {
+            p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+            continue; /* a miss: the rest of the set-up only for rays that may be walked */
+        }
         if (!rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax)) {
             p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
             continue; /* a miss, as on the single-ray walk */
         }
         if (!rt_pk_ray(p, k, &oct))
             return 0;
-        if (!rt_pk_clip(p, k))
+        if (!(judged ? rt_pk_range(p, k, t[0], t[1]) : rt_pk_clip(p, k)))
             continue; /* misses the grid box */
         p->live |= (uint64_t)1 << k;
         p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
