@@ -424,7 +424,9 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         p->bi[k] = -1;
         p->nh[k] = 0;
         double t[2] = {0.0, 0.0};
-        const int judged = !g->rotated && rt_pk_tbox(&g->b, q, t);
+        /* not for any-hit rays: shadow rays start at surfaces inside the box, the test
+           would only add its cost (armadillo's shadow rays: +83 instructions per ray) */
+        const int judged = !g->rotated && !any && rt_pk_tbox(&g->b, q, t);
         if (judged && !(t[0] <= t[1])) {
             p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
             continue; /* a miss: the rest of the set-up only for rays that may be walked */
