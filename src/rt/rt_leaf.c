@@ -157,7 +157,7 @@ __attribute__((target("avx2"))) static uint32_t rt_leaf_avx2(const float *rows, 
 }
 #endif
 
-rt_leaf_fn rt_leaf_kernel(const char **name, rt_leaf_fn *fn4)
+int rt_simd_level(void)
 {
     const char *force = getenv("GKS_RT_SIMD");
     int level = 2; /* 0 scalar, 1 SSE, 2 AVX2: the widest allowed */
@@ -167,9 +167,21 @@ rt_leaf_fn rt_leaf_kernel(const char **name, rt_leaf_fn *fn4)
         level = 1;
 #ifdef RT_LEAF_X86
     __builtin_cpu_init();
+    if (level >= 2 && !__builtin_cpu_supports("avx2"))
+        level = 1;
+#else
+    level = 0;
+#endif
+    return level;
+}
+
+rt_leaf_fn rt_leaf_kernel(const char **name, rt_leaf_fn *fn4)
+{
+    const int level = rt_simd_level();
+#ifdef RT_LEAF_X86
     if (level >= 1)
         *fn4 = rt_leaf_sse;
-    if (level >= 2 && __builtin_cpu_supports("avx2")) {
+    if (level >= 2) {
         *name = "avx2";
         return rt_leaf_avx2;
     }

@@ -223,18 +223,12 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, 
 }
 #endif
 
-/* the kernel for this CPU, or the one GKS_RT_SIMD forces (as rt_leaf_kernel) */
+/* the kernel for this CPU, or the one GKS_RT_SIMD forces (rt_simd_level, as the leaves) */
 static rt_pk_cull_fn rt_pk_kernel(const char **name)
 {
-    const char *force = getenv("GKS_RT_SIMD");
-    int level = 2;
-    if (force && !strcmp(force, "scalar"))
-        level = 0;
-    else if (force && !strcmp(force, "sse"))
-        level = 1;
+    const int level = rt_simd_level();
 #ifdef RT_PK_X86
-    __builtin_cpu_init();
-    if (level >= 2 && __builtin_cpu_supports("avx2")) {
+    if (level >= 2) {
         *name = "avx2";
         return rt_pk_cull_avx2;
     }
