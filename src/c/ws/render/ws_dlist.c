@@ -197,7 +197,8 @@ static int same_attr(const ws_dl_chunk *c, const void *attr, size_t attr_size)
     if (!c->n_rec)
         return 0;
     const ws_dl_rec *l = &c->rec[c->n_rec - 1];
-    return l->attr_size == attr_size && memcmp(c->attr + l->attr, attr, attr_size) == 0;
+    return l->attr_size == attr_size &&
+           (attr_size == 0 || memcmp(c->attr + l->attr, attr, attr_size) == 0);
 }
 
 static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
