@@ -334,6 +334,7 @@ void rt_grid_free(rt_grid *g)
     free(g->subs);
     rt_big_free(&g->soff_m);
     rt_big_free(&g->srefs_m);
+    free(g->soff16);
     rt_leaves_free(g);
     memset(g, 0, sizeof *g);
 }
@@ -1108,6 +1109,37 @@ static void rt_top_compact(rt_grid *g, const uint8_t *keep)
     g->nrefs = w;
 }
 
+/* Every sub-grid's first reference (ref0); then, when no sub-grid has more than 65535
+ * references, the second level's 2-byte layout (rt_grid.soff16): each sub-grid's cell offsets
+ * relative to its ref0, its cells + 1 of them (the last its end), and the 4-byte offsets freed:
+ * 2 B per sub cell instead of 4, the same lists. Without memory for it, or with a larger
+ * sub-grid, the 4-byte layout stays (the walk reads either). */
+static void rt_sub_narrow(rt_grid *g)
+{
+    int narrow = g->nsubcells + g->nsubs <= UINT32_MAX; /* first16 fits in 32 bits */
+    for (size_t k = 0; k < g->nsubs; k++) {
+        rt_subgrid *sg = &g->subs[k];
+        const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
+        sg->ref0 = g->soff[sg->first];
+        sg->first16 = sg->first + (uint32_t)k;
+        narrow &= g->soff[sg->first + nc] - sg->ref0 <= UINT16_MAX;
+    }
+    uint16_t *o = narrow && g->nsubs ? rt_alloc_array(g->nsubcells + g->nsubs, sizeof(uint16_t)) : NULL;
+    if (!o)
+        return;
+    for (size_t k = 0; k < g->nsubs; k++) {
+        const rt_subgrid *sg = &g->subs[k];
+        const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
+        const uint32_t *from = g->soff + sg->first;
+        uint16_t *to = o + sg->first16;
+        for (size_t c = 0; c <= nc; c++)
+            to[c] = (uint16_t)(from[c] - sg->ref0);
+    }
+    g->soff16 = o;
+    rt_big_free(&g->soff_m);
+    g->soff = NULL;
+}
+
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
                              int sub_min)
 {
@@ -1166,6 +1198,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         g->nsubs = nsubs;
         g->soff[total] = (uint32_t)nref;
         rt_par_run(nt, rt_sub_place, &job);
+        rt_sub_narrow(g);
     }
     for (int k = 0; k < nt; k++) {
         free(part[k].subs);
@@ -1787,7 +1820,17 @@ static uint64_t rt_grid_hash(const rt_grid *g)
         h = rt_fnv_box(h, &g->subs[k].b);
         h = rt_fnv(h, &g->subs[k].first, sizeof g->subs[k].first);
     }
-    h = rt_fnv(h, g->soff, (g->nsubcells + 1) * sizeof *g->soff);
+    /* the absolute offsets whichever the layout (the hash of the 4-byte array) */
+    for (size_t k = 0; k < g->nsubs; k++) {
+        const rt_box *b = &g->subs[k].b;
+        const size_t nc = (size_t)b->n[0] * (size_t)b->n[1] * (size_t)b->n[2];
+        for (size_t c = 0; c < nc; c++) {
+            const uint32_t o = rt_sub_off(g, k, c);
+            h = rt_fnv(h, &o, sizeof o);
+        }
+    }
+    const uint32_t end = (uint32_t)g->nsrefs;
+    h = rt_fnv(h, &end, sizeof end);
     return rt_fnv(h, g->srefs, g->nsrefs * sizeof *g->srefs);
 }
 
@@ -1818,10 +1861,11 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
         if (n > gi->max_leaf_refs)
             gi->max_leaf_refs = n;
         if (g->sub && g->sub[ci] >= 0) {
-            const rt_subgrid *sg = &g->subs[g->sub[ci]];
+            const size_t si = (size_t)g->sub[ci];
+            const rt_subgrid *sg = &g->subs[si];
             size_t ns = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
             for (size_t k = 0; k < ns; k++) {
-                uint32_t m = g->soff[sg->first + k + 1] - g->soff[sg->first + k];
+                uint32_t m = rt_sub_off(g, si, k + 1) - rt_sub_off(g, si, k);
                 if (m > gi->max_leaf_refs)
                     gi->max_leaf_refs = m;
                 filled += m > 0 ? 1.0 / (double)(ns * g->ncells) : 0.0;

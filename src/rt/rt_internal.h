@@ -169,7 +169,9 @@ typedef struct rt_box {
 /* second level: a finer grid inside one crowded top-level cell */
 typedef struct rt_subgrid {
     rt_box b;
-    uint32_t first;    /* first of its cells in the grid's soff array */
+    uint32_t first;    /* first of its cells among the grid's sub cells (soff, sleaf) */
+    uint32_t ref0;     /* its first reference in srefs */
+    uint32_t first16;  /* its first cell offset in the grid's soff16 (first + its index) */
 } rt_subgrid;
 
 /* linear index of cell c in box g (x fastest) */
@@ -222,7 +224,12 @@ typedef struct rt_grid {
                           empty); 0: c itself is occupied */
     rt_subgrid *subs;
     size_t nsubs;
-    uint32_t *soff;    /* sub-grid cells + 1 */
+    /* second-level cell lists, in one of two layouts: soff16 != NULL (every sub-grid has
+       at most 65535 references): a sub-grid's cells have their first references at
+       srefs + ref0 + soff16[first16 + c], c = 0 .. its cells (the last: its end), 2 B per
+       cell; else soff (absolute, sub cells + 1 entries) */
+    uint32_t *soff;
+    uint16_t *soff16;
     uint32_t *srefs;
     size_t nsubcells, nsrefs;
     rt_big soff_m, srefs_m; /* the storage of soff and srefs */
@@ -236,6 +243,14 @@ typedef struct rt_grid {
     rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) ... */
     const char *leaf_name;        /* ... and the name of leaf_fn */
 } rt_grid;
+
+/* the first reference (in srefs) of cell c of sub-grid k, c = 0 .. its cells (the last: the
+   end of its last cell), in either layout of the second level */
+static inline uint32_t rt_sub_off(const rt_grid *g, size_t k, size_t c)
+{
+    const rt_subgrid *sg = &g->subs[k];
+    return g->soff16 ? sg->ref0 + g->soff16[sg->first16 + c] : g->soff[sg->first + c];
+}
 
 struct rt_scene {
     /* input */

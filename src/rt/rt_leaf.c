@@ -272,19 +272,50 @@ static int rt_leaf_min_env(void)
     return s && *s && end && !*end && v >= 1 && v <= (1L << 20) ? (int)v : -1;
 }
 
+/* the second level's absolute cell offsets (soff's layout) from its 2-byte layout, for the
+   passes below; NULL: no memory */
+static uint32_t *rt_sub_offsets(const rt_grid *g)
+{
+    uint32_t *o = rt_alloc_array(g->nsubcells + 1, sizeof(uint32_t));
+    for (size_t k = 0; o && k < g->nsubs; k++) {
+        const rt_box *b = &g->subs[k].b;
+        const size_t nc = (size_t)b->n[0] * (size_t)b->n[1] * (size_t)b->n[2];
+        for (size_t c = 0; c < nc; c++)
+            o[g->subs[k].first + c] = rt_sub_off(g, k, c);
+    }
+    if (o)
+        o[g->nsubcells] = (uint32_t)g->nsrefs;
+    return o;
+}
+
+static int rt_leaves_make(const rt_scene *sc, rt_grid *g, const uint32_t *soff, uint32_t lm);
+
 int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min)
 {
     g->leaf_fn = rt_leaf_kernel(&g->leaf_name, &g->leaf_fn4);
-    size_t nl = 0, lanes = 0;
     if (leaf_min == 0)
         leaf_min = rt_leaf_min_env();
     if (leaf_min <= 0)
         return RT_OK;
     const uint32_t lm = (uint32_t)leaf_min;
+    if (!g->soff16)
+        return rt_leaves_make(sc, g, g->soff, lm);
+    uint32_t *soff = rt_sub_offsets(g);
+    if (!soff)
+        return RT_ERR_NOMEM;
+    const int rc = rt_leaves_make(sc, g, soff, lm);
+    free(soff);
+    return rc;
+}
+
+/* the leaves of the top cells and of the sub cells (soff: their absolute offsets) */
+static int rt_leaves_make(const rt_scene *sc, rt_grid *g, const uint32_t *soff, uint32_t lm)
+{
+    size_t nl = 0, lanes = 0;
     const uint32_t *top_refs = g->refs;
     rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, NULL, &nl, &lanes, 0, lm);
     if (g->nsubcells)
-        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, NULL, &nl, &lanes, 0, lm);
+        rt_leaves_pass(sc, g, soff, g->srefs, g->nsubcells, NULL, &nl, &lanes, 0, lm);
     if (nl == 0 || nl >= UINT32_MAX || lanes >= UINT32_MAX)
         return RT_OK; /* no leaves: every list in double */
     g->tleaf = rt_alloc_array(g->ncells, sizeof(uint32_t));
@@ -303,7 +334,7 @@ int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min)
     nl = lanes = 0;
     rt_leaves_pass(sc, g, g->off, top_refs, g->ncells, g->tleaf, &nl, &lanes, 1, lm);
     if (g->nsubcells)
-        rt_leaves_pass(sc, g, g->soff, g->srefs, g->nsubcells, g->sleaf, &nl, &lanes, 1, lm);
+        rt_leaves_pass(sc, g, soff, g->srefs, g->nsubcells, g->sleaf, &nl, &lanes, 1, lm);
     return RT_OK;
 }
 

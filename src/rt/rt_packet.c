@@ -630,7 +630,10 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &sg->b;
     const int K = p->K, nK = b->n[K];
-    const uint32_t *off = g->soff + sg->first;
+    /* the cell lists in either layout of the second level (rt_internal.h) */
+    const uint16_t *off16 = g->soff16 ? g->soff16 + sg->first16 : NULL;
+    const uint32_t *off = g->soff16 ? NULL : g->soff + sg->first;
+    const uint32_t *srefs = g->soff16 ? g->srefs + sg->ref0 : g->srefs;
     for (int j = 0; j < nK; j++) {
         const int s = p->sg > 0 ? j : nK - 1 - j;
         const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
@@ -646,7 +649,9 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
         for (q[p->a2] = c[2]; q[p->a2] <= c[3]; q[p->a2]++)
             for (q[p->a1] = c[0]; q[p->a1] <= c[1]; q[p->a1]++) {
                 const size_t ci = rt_cell_index(b, q);
-                rt_pk_list(p, cull, g->srefs + off[ci], off[ci + 1] - off[ci]);
+                const uint32_t k0 = off16 ? off16[ci] : off[ci],
+                               k1 = off16 ? off16[ci + 1] : off[ci + 1];
+                rt_pk_list(p, cull, srefs + k0, k1 - k0);
             }
     }
     return 1;

@@ -568,7 +568,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 }
 
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
-                          const uint32_t *refs, const uint32_t *leaf, const int32_t *sub,
+                          const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf, const int32_t *sub,
                           const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
                           int clip)
 {
@@ -641,7 +641,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             }
             goto advance;
         }
-        const uint32_t k0 = off[ci], k1 = off[ci + 1];
+        /* the cell's list: 4-byte offsets (off) or a sub-grid's 2-byte ones (off16) */
+        const uint32_t k0 = off16 ? off16[ci] : off[ci], k1 = off16 ? off16[ci + 1] : off[ci + 1];
         if (k0 != k1) {
             if (rt_walk_cell(w, mode, refs + k0, k1 - k0, leaf ? leaf[ci] : 0))
                 return RT_WALK_BLOCKED;
@@ -675,16 +676,24 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
                                                          double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, g->srefs,
-                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 0);
+    const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
+    if (g->soff16) /* the 2-byte layout (rt_internal.h) */
+        return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0);
+    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
+                       t0, t1, 0);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, g->srefs,
-                       g->sleaf ? g->sleaf + sg->first : NULL, NULL, NULL, NULL, t0, t1, 0);
+    const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
+    if (g->soff16)
+        return rt_walk_box(w, 1, &sg->b, NULL, g->soff16 + sg->first16,
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0);
+    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
+                       t0, t1, 0);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
@@ -735,7 +744,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
             if (rs)
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
-            rt_walk_box(&w, 0, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
+            rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
                         rt_octant_cubes(g, &w.gr), t0, t1, 0);
         }
     }
@@ -787,7 +796,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
     if (rs)
         rt_rayx_shear(rs);
     w.stamp = rt_ctx_next(c);
-    if (rt_walk_box(&w, 1, &g->b, g->off, g->refs, g->tleaf, g->sub, g->subs,
+    if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
                     rt_octant_cubes(g, &w.gr), t0, t1, 0) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;

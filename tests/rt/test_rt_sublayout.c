@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_rt_sublayout.c -- the two layouts of the second level's cell offsets (rt_grid.soff16
+ * and soff, rt_build.c: rt_sub_narrow): 2-byte offsets relative to each sub-grid's first
+ * reference where no sub-grid has more than 65535 references, else the 4-byte absolute ones.
+ * A cluster of triangles in one top cell of a large box (a few triangles at its corners)
+ * gets a sub-grid; with 1500 triangles its references fit in 16 bits, with 20000 larger ones
+ * they do not. For each scene (1 and 2 build threads): the layout chosen is the one expected;
+ * every sub cell's list read through rt_sub_off is the list that the 4-byte layout of the same
+ * build held (rebuilt from the sub-grids' own counts: offsets ascending, ending at nsrefs,
+ * every reference a primitive); and rays through the cluster get the brute-force scene's hits
+ * bit for bit (rt_intersect, rt_occluded), the packet path the single-ray path's
+ * (rt_intersect_packet, rt_occluded_packet), so the walk reads either layout.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <cmocka.h>
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+#include "rt_packet.h"
+#include "rt_testutil.h"
+
+/* n triangles around random centres in [4.5, 5.5]^3, edges up to 2 * half, and one triangle
+   at each of the 8 corners of [0, 10]^3 (the box whose top cell holds the cluster) */
+static rt_scene *cluster_scene(int n, double half)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    const int three = 3;
+    uint64_t st = 4711;
+    for (int k = 0; k < n; k++) {
+        double c[3], v[9];
+        for (int i = 0; i < 3; i++)
+            c[i] = 4.5 + rtu_rand(&st);
+        for (int j = 0; j < 9; j++)
+            v[j] = c[j % 3] + half * (2.0 * rtu_rand(&st) - 1.0);
+        assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
+    }
+    for (int k = 0; k < 8; k++) {
+        const double x = k & 1 ? 10.0 : 0.0, y = k & 2 ? 10.0 : 0.0, z = k & 4 ? 10.0 : 0.0;
+        const double v[9] = {x, y, z, x + (x > 0 ? -0.1 : 0.1), y, z, x, y + (y > 0 ? -0.1 : 0.1), z};
+        assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
+    }
+    return sc;
+}
+
+/* the sub-grids' lists through rt_sub_off: contiguous, ascending, covering srefs once */
+static void check_lists(const rt_scene *sc)
+{
+    const rt_grid *g = &sc->grid;
+    assert_true(g->nsubs > 0);
+    uint32_t at = 0;
+    size_t cells = 0;
+    for (size_t k = 0; k < g->nsubs; k++) {
+        const rt_subgrid *sg = &g->subs[k];
+        const size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+        assert_int_equal(sg->first, cells);
+        assert_int_equal(sg->ref0, at);
+        for (size_t c = 0; c < nc; c++) {
+            const uint32_t a = rt_sub_off(g, k, c), e = rt_sub_off(g, k, c + 1);
+            assert_int_equal(a, at);
+            assert_true(e >= a);
+            for (uint32_t r = a; r < e; r++)
+                assert_true(g->srefs[r] < sc->nprim);
+            at = e;
+        }
+        cells += nc;
+    }
+    assert_int_equal(cells, g->nsubcells);
+    assert_int_equal(at, g->nsrefs);
+}
+
+static int same_hit(const rt_hit *a, const rt_hit *b)
+{
+    if (a->prim != b->prim)
+        return 0;
+    if (a->prim < 0)
+        return 1;
+    return !memcmp(&a->t, &b->t, sizeof a->t) && a->side == b->side &&
+           !memcmp(a->p, b->p, sizeof a->p) && !memcmp(a->ng, b->ng, sizeof a->ng);
+}
+
+/* 32 x 32 rays from an eye toward the cluster, in 8 x 8 blocks (one packet each) */
+#define SIDE 32
+static void make_rays(rt_ray *rays, const double eye[3])
+{
+    size_t n = 0;
+    for (int by = 0; by < SIDE; by += 8)
+        for (int bx = 0; bx < SIDE; bx += 8)
+            for (int j = 0; j < 8; j++)
+                for (int i = 0; i < 8; i++) {
+                    const double tx = 4.4 + 1.2 * (bx + i + 0.5) / SIDE,
+                                 ty = 4.4 + 1.2 * (by + j + 0.5) / SIDE, tz = 5.0;
+                    rt_ray *r = &rays[n++];
+                    r->org[0] = eye[0];
+                    r->org[1] = eye[1];
+                    r->org[2] = eye[2];
+                    r->dir[0] = tx - eye[0];
+                    r->dir[1] = ty - eye[1];
+                    r->dir[2] = tz - eye[2];
+                    r->tmin = 0.0;
+                    r->tmax = INFINITY;
+                }
+}
+
+static void check_scene(int n, double half, int want_narrow)
+{
+    rt_scene *br = cluster_scene(n, half);
+    const rt_build_options bo = {.brute_force = 1};
+    assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
+    const size_t nr = SIDE * SIDE;
+    rt_ray *rays = malloc(nr * sizeof *rays), *sr = malloc(nr * sizeof *sr);
+    rt_hit *hb = malloc(nr * sizeof *hb), *hg = malloc(nr * sizeof *hg), *hp = malloc(nr * sizeof *hp);
+    unsigned char *ob = malloc(nr), *og = malloc(nr), *op = malloc(nr);
+    assert_true(rays && sr && hb && hg && hp && ob && og && op);
+    const double eye[3] = {5.3, 4.6, -3.0};
+    make_rays(rays, eye);
+    assert_int_equal(rt_intersect(br, nr, rays, hb), RT_OK);
+    /* shadow rays from the hits toward a point light beside the eye */
+    size_t ns = 0, hits = 0;
+    for (size_t k = 0; k < nr; k++) {
+        if (hb[k].prim < 0)
+            continue;
+        hits++;
+        const double light[3] = {3.0, 7.0, -2.0}, sg = hb[k].side ? -1.0 : 1.0;
+        rt_ray *r = &sr[ns++];
+        for (int i = 0; i < 3; i++) {
+            r->org[i] = hb[k].p[i] + sg * 1e-9 * hb[k].ng[i];
+            r->dir[i] = light[i] - r->org[i];
+        }
+        r->tmin = 0.0;
+        r->tmax = 1.0 - 1e-9;
+    }
+    printf("%zu of %zu rays hit, %zu shadow rays\n", hits, nr, ns);
+    assert_true(hits > nr / 10); /* the rays meet the cluster */
+    assert_int_equal(rt_occluded(br, ns, sr, ob), RT_OK);
+    size_t occl = 0;
+    for (size_t k = 0; k < ns; k++)
+        occl += ob[k];
+    assert_true(occl > 0 && occl < ns);
+    for (int threads = 1; threads <= 2; threads++) {
+        rt_scene *sc = cluster_scene(n, half);
+        const rt_build_options o = {.brute_threshold = 0, .threads = threads};
+        assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
+        assert_true(sc->use_grid);
+        printf("%d triangles, %d thread(s): %zu sub-grids, %zu sub cells, %zu references, "
+               "%s offsets\n", n, threads, sc->grid.nsubs, sc->grid.nsubcells, sc->grid.nsrefs,
+               sc->grid.soff16 ? "2-byte" : "4-byte");
+        assert_int_equal(sc->grid.soff16 != NULL, want_narrow);
+        assert_int_equal(sc->grid.soff != NULL, !want_narrow);
+        check_lists(sc);
+        rt_packet_stats ps;
+        memset(&ps, 0, sizeof ps);
+        assert_int_equal(rt_intersect(sc, nr, rays, hg), RT_OK);
+        assert_int_equal(rt_intersect_packet_stats(sc, nr, rays, hp, &ps), RT_OK);
+        for (size_t k = 0; k < nr; k++) {
+            if (!same_hit(&hb[k], &hg[k]))
+                fail_msg("ray %zu: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
+            if (!same_hit(&hg[k], &hp[k]))
+                fail_msg("ray %zu: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
+        }
+        assert_int_equal(rt_occluded(sc, ns, sr, og), RT_OK);
+        assert_int_equal(rt_occluded_packet_stats(sc, ns, sr, op, &ps), RT_OK);
+        for (size_t k = 0; k < ns; k++) {
+            assert_int_equal(og[k], ob[k]);
+            assert_int_equal(op[k], ob[k]);
+        }
+        assert_true(ps.packets > 0); /* the packet path itself walked the sub-grid */
+        rt_scene_free(sc);
+    }
+    free(rays);
+    free(sr);
+    free(hb);
+    free(hg);
+    free(hp);
+    free(ob);
+    free(og);
+    free(op);
+    rt_scene_free(br);
+}
+
+static void test_narrow(void **state)
+{
+    (void)state;
+    check_scene(1500, 0.08, 1);
+}
+
+static void test_wide(void **state)
+{
+    (void)state;
+    check_scene(20000, 0.06, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_narrow),
+        cmocka_unit_test(test_wide),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
