@@ -947,6 +947,18 @@ static void rt_sub_cells(void *arg, int k, int n)
         pt->err = 1;
         return;
     }
+    /* room for the part's cells and references at once, so that they grow without copies
+       (realloc): about sub_factor cells per reference of a crowded cell, and as many
+       references as cells (1.0-1.4 times on the meshes and random triangles); a larger
+       part grows on from there, a failed reservation is only a lost head start */
+    size_t crowded = 0;
+    for (size_t ci = pt->c0; ci < pt->c1; ci++) {
+        const uint32_t cnt = g->off[ci + 1] - g->off[ci];
+        crowded += cnt > sub_min ? cnt : 0;
+    }
+    const size_t want = (size_t)(j->sub_factor * (double)crowded) + 1;
+    (void)(rt_big_grow(&pt->off, want, sizeof(uint32_t)) &&
+           rt_big_grow(&pt->refs, want, sizeof(uint32_t)));
     size_t total = 0;
     int err = 0;
     const size_t n0 = (size_t)g->b.n[0], n01 = n0 * (size_t)g->b.n[1];
