@@ -15,6 +15,7 @@
 #include <time.h>
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 /* Large arrays (vertices, references, cell offsets of big meshes: tens of MB read at random
@@ -183,6 +184,29 @@ int rt_big_grow(rt_big *b, size_t need, size_t es)
     }
 #endif
     return rt_grow(&b->p, &b->cap, need, es);
+}
+
+void rt_big_shrink(rt_big *b, size_t keep, size_t es)
+{
+    size_t bytes;
+    if (!b->p || !rt_mul_ok(keep, es, &bytes) || bytes == 0)
+        return;
+#ifdef RT_BIG_MAP
+    if (b->map_bytes) { /* the whole pages after the kept bytes go back to the system */
+        const long ps = sysconf(_SC_PAGESIZE);
+        const size_t pg = ps > 0 ? (size_t)ps : 4096;
+        const size_t at = (bytes + pg - 1) / pg * pg;
+        if (at < b->map_bytes && munmap((char *)b->p + at, b->map_bytes - at) == 0)
+            b->map_bytes = at;
+        b->cap = keep;
+        return;
+    }
+#endif
+    void *q = realloc(b->p, bytes);
+    if (q) {
+        b->p = q;
+        b->cap = keep;
+    }
 }
 
 void rt_big_free(rt_big *b)

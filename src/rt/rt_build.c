@@ -334,8 +334,7 @@ void rt_grid_free(rt_grid *g)
     free(g->subs);
     rt_big_free(&g->soff_m);
     rt_big_free(&g->srefs_m);
-    free(g->soff16);
-    rt_leaves_free(g);
+    rt_leaves_free(g); /* soff16 lives in soff_m */
     memset(g, 0, sizeof *g);
 }
 
@@ -1123,9 +1122,10 @@ static void rt_top_compact(rt_grid *g, const uint8_t *keep)
 
 /* Every sub-grid's first reference (ref0); then, when no sub-grid has more than 65535
  * references, the second level's 2-byte layout (rt_grid.soff16): each sub-grid's cell offsets
- * relative to its ref0, its cells + 1 of them (the last its end), and the 4-byte offsets freed:
- * 2 B per sub cell instead of 4, the same lists. Without memory for it, or with a larger
- * sub-grid, the 4-byte layout stays (the walk reads either). */
+ * relative to its ref0, its cells + 1 of them (the last its end), written over the 4-byte
+ * offsets, whose storage is then cut to the 2-byte array's size: 2 B per sub cell instead of
+ * 4, the same lists, no second array. With a larger sub-grid the 4-byte layout stays (the walk
+ * reads either). */
 static void rt_sub_narrow(rt_grid *g)
 {
     int narrow = g->nsubcells + g->nsubs <= UINT32_MAX; /* first16 fits in 32 bits */
@@ -1136,19 +1136,25 @@ static void rt_sub_narrow(rt_grid *g)
         sg->first16 = sg->first + (uint32_t)k;
         narrow &= g->soff[sg->first + nc] - sg->ref0 <= UINT16_MAX;
     }
-    uint16_t *o = narrow && g->nsubs ? rt_alloc_array(g->nsubcells + g->nsubs, sizeof(uint16_t)) : NULL;
-    if (!o)
+    if (!narrow || !g->nsubs)
         return;
+    /* in place, in the 4-byte array's storage, in order: 2-byte entry first16 + c of
+       sub-grid k lies at byte 2 (first + k + c), 4-byte entry first + c at 4 (first + c);
+       k <= first (every sub-grid has a cell), so no 2-byte entry reaches a 4-byte one not
+       yet read (the bytes are copied with memcpy: two types in one array) */
+    unsigned char *m = g->soff_m.p;
     for (size_t k = 0; k < g->nsubs; k++) {
         const rt_subgrid *sg = &g->subs[k];
         const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
-        const uint32_t *from = g->soff + sg->first;
-        uint16_t *to = o + sg->first16;
-        for (size_t c = 0; c <= nc; c++)
-            to[c] = (uint16_t)(from[c] - sg->ref0);
+        for (size_t c = 0; c <= nc; c++) {
+            uint32_t v;
+            memcpy(&v, m + 4 * ((size_t)sg->first + c), sizeof v);
+            const uint16_t r = (uint16_t)(v - sg->ref0);
+            memcpy(m + 2 * ((size_t)sg->first16 + c), &r, sizeof r);
+        }
     }
-    g->soff16 = o;
-    rt_big_free(&g->soff_m);
+    rt_big_shrink(&g->soff_m, g->nsubcells + g->nsubs, sizeof(uint16_t));
+    g->soff16 = g->soff_m.p;
     g->soff = NULL;
 }
 

@@ -33,6 +33,9 @@ typedef struct rt_big {
 /* room for at least need elements of size es (the same es every time): 1, or 0 (no storage;
    the array is unchanged) */
 int rt_big_grow(rt_big *b, size_t need, size_t es);
+/* gives back the storage beyond the first keep elements of size es (the data before stays in
+   place; a malloc'ed array may move, as realloc moves it); b then holds keep elements of es */
+void rt_big_shrink(rt_big *b, size_t keep, size_t es);
 void rt_big_free(rt_big *b);
 
 /* ---- the thread pool (rt_pool.c): fork-join loops ---- */
@@ -232,7 +235,7 @@ typedef struct rt_grid {
     uint16_t *soff16;
     uint32_t *srefs;
     size_t nsubcells, nsrefs;
-    rt_big soff_m, srefs_m; /* the storage of soff and srefs */
+    rt_big soff_m, srefs_m; /* the storage of soff (or soff16) and srefs */
     /* float leaves (rt_leaf.c; nearest-hit rays only): per top cell and per second-level
        cell 1 + its leaf's index, 0: the cell's list is tested in double (no list, fewer
        triangles than rt_build_options.leaf_min, or a primitive that is not a triangle).
