@@ -1146,11 +1146,15 @@ static void rt_sub_narrow(rt_grid *g)
     for (size_t k = 0; k < g->nsubs; k++) {
         const rt_subgrid *sg = &g->subs[k];
         const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
+        /* the sub-grid's fields in locals: the byte stores may alias them */
+        const uint32_t ref0 = sg->ref0;
+        const unsigned char *from = m + 4 * (size_t)sg->first;
+        unsigned char *to = m + 2 * (size_t)sg->first16;
         for (size_t c = 0; c <= nc; c++) {
             uint32_t v;
-            memcpy(&v, m + 4 * ((size_t)sg->first + c), sizeof v);
-            const uint16_t r = (uint16_t)(v - sg->ref0);
-            memcpy(m + 2 * ((size_t)sg->first16 + c), &r, sizeof r);
+            memcpy(&v, from + 4 * c, sizeof v);
+            const uint16_t r = (uint16_t)(v - ref0);
+            memcpy(to + 2 * c, &r, sizeof r);
         }
     }
     rt_big_shrink(&g->soff_m, g->nsubcells + g->nsubs, sizeof(uint16_t));
