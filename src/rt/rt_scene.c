@@ -1456,9 +1456,14 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
         (sc->mv_n.p ? 3 * sizeof(float) : 0) + (sc->mv_c.p ? 3 * sizeof(float) : 0);
     sc->tri_bytes = sc->ntri * sizeof *sc->prim + sc->ntri_plain * sizeof *sc->tri +
                     nmt * 3 * sizeof(uint32_t) + sc->nmv * mvb;
-    sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsrefs) * sizeof(uint32_t) +
-                                        (sc->grid.soff16 ? (sc->grid.nsubcells + sc->grid.nsubs) * sizeof(uint16_t)
-                                         : sc->grid.soff ? (sc->grid.nsubcells + 1) * sizeof(uint32_t) : 0) +
+    /* the second level's cell offsets: 2 B per cell and one per sub-grid, or 4 B per cell
+       and one (rt_internal.h) */
+    const rt_grid *gr = &sc->grid;
+    const size_t soff_bytes = gr->soff16 ? (gr->nsubcells + gr->nsubs) * sizeof(uint16_t)
+                              : gr->soff ? (gr->nsubcells + 1) * sizeof(uint32_t)
+                                         : 0;
+    sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsrefs) *
+                                            sizeof(uint32_t) + soff_bytes +
                                         sc->grid.nsubs * sizeof(rt_subgrid) +
                                         (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
                                         (sc->grid.odist ? 8 * sc->grid.ncells * sizeof(uint8_t) : 0) +

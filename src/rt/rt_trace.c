@@ -568,8 +568,8 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 }
 
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
-                          const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf, const int32_t *sub,
-                          const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
+                          const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf,
+                          const int32_t *sub, const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
                           int clip)
 {
     const rt_gray *gr = &w->gr;

@@ -48,7 +48,8 @@ static rt_scene *cluster_scene(int n, double half)
     }
     for (int k = 0; k < 8; k++) {
         const double x = k & 1 ? 10.0 : 0.0, y = k & 2 ? 10.0 : 0.0, z = k & 4 ? 10.0 : 0.0;
-        const double v[9] = {x, y, z, x + (x > 0 ? -0.1 : 0.1), y, z, x, y + (y > 0 ? -0.1 : 0.1), z};
+        const double dx = x > 0 ? -0.1 : 0.1, dy = y > 0 ? -0.1 : 0.1;
+        const double v[9] = {x, y, z, x + dx, y, z, x, y + dy, z};
         assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
     }
     return sc;
@@ -120,7 +121,8 @@ static void check_scene(int n, double half, int want_narrow)
     assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
     const size_t nr = SIDE * SIDE;
     rt_ray *rays = malloc(nr * sizeof *rays), *sr = malloc(nr * sizeof *sr);
-    rt_hit *hb = malloc(nr * sizeof *hb), *hg = malloc(nr * sizeof *hg), *hp = malloc(nr * sizeof *hp);
+    rt_hit *hb = malloc(nr * sizeof *hb), *hg = malloc(nr * sizeof *hg);
+    rt_hit *hp = malloc(nr * sizeof *hp);
     unsigned char *ob = malloc(nr), *og = malloc(nr), *op = malloc(nr);
     assert_true(rays && sr && hb && hg && hp && ob && og && op);
     const double eye[3] = {5.3, 4.6, -3.0};
