@@ -327,6 +327,166 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
     return 1;
 }
 
+/* ---- the batch API's set-up of four rays at a time ---- */
+
+/* What rt_rayx_check, rt_gray_init, rt_box_clip (the grid box), rt_dda_init and the walk's
+ * constants of rt_walk_box compute for one ray, for four rays in structure-of-arrays lanes
+ * (rt_setup4: GCC vector extensions, compiled for AVX2 (4 lanes in one register) and for
+ * the build's own target (SSE2 on x86-64: two registers of 2)). Every lane does the same IEEE
+ * operations in the same order as the one-ray code, and where that code picks between
+ * equal values it picks the same operand, so the walk starts from the same cell with the
+ * same boundaries, bit for bit. Lanes whose ray is unusual take the one-ray code instead:
+ * state 0 (a check fails, a direction component is 0 or flushed to 0 by rt_rayx_check, which
+ * the one-ray clip treats as a slab); state 1: a usable ray that misses the grid box;
+ * state 2: it enters, and the start below holds (no direction component 0). */
+typedef struct rt_pre4 {
+    int state[4];
+    int oct[4];            /* octant: bit a set for d[a] < 0 */
+    int c[3][4];           /* start cell */
+    double invd[3][4];     /* 1 / d */
+    double t0[4], t1[4];   /* the range clipped to the grid box */
+    double tn[3][4];       /* next cell boundary in ray parameter */
+    double dt[3][4];       /* a cell's width in ray parameter */
+    double it[3][4];       /* about 1 / dt (the jumps' counts) */
+} rt_pre4;
+
+typedef double rt_v4d __attribute__((vector_size(32)));
+typedef int64_t rt_v4l __attribute__((vector_size(32)));
+typedef int32_t rt_v4i __attribute__((vector_size(16)));
+
+/* m ? a : b for the compare masks (all bits set or clear per lane); |x| as bits (macros: a
+   function returning a 32-byte vector has a different ABI with and without AVX) */
+#define rt_v4sel(m, a, b) ((rt_v4d)(((m) & (rt_v4l)(a)) | (~(m) & (rt_v4l)(b))))
+#define rt_v4abits(x) ((rt_v4l)(x) & (rt_v4l){INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX})
+
+static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b,
+                                                                 const rt_ray *ray,
+                                                                 rt_pre4 *p)
+{
+    rt_v4d o[3], d[3];
+    for (int a = 0; a < 3; a++) {
+        o[a] = (rt_v4d){ray[0].org[a], ray[1].org[a], ray[2].org[a], ray[3].org[a]};
+        d[a] = (rt_v4d){ray[0].dir[a], ray[1].dir[a], ray[2].dir[a], ray[3].dir[a]};
+    }
+    rt_v4d tmin = {ray[0].tmin, ray[1].tmin, ray[2].tmin, ray[3].tmin};
+    rt_v4d tmax = {ray[0].tmax, ray[1].tmax, ray[2].tmax, ray[3].tmax};
+    /* rt_rayx_check's tests on the bits (signed compares: the sign bits are cleared) */
+    const double lim[3] = {RT_RAY_MAX, 1e-100, INFINITY};
+    int64_t blim[3];
+    memcpy(blim, lim, sizeof blim);
+    const rt_v4l big = {blim[0], blim[0], blim[0], blim[0]};
+    const rt_v4l small = {blim[1], blim[1], blim[1], blim[1]};
+    const rt_v4l inf = {blim[2], blim[2], blim[2], blim[2]};
+    const rt_v4l ad0 = rt_v4abits(d[0]), ad1 = rt_v4abits(d[1]), ad2 = rt_v4abits(d[2]);
+    rt_v4l bad = (ad0 > big) | (ad1 > big) | (ad2 > big) | (rt_v4abits(o[0]) > big) |
+                 (rt_v4abits(o[1]) > big) | (rt_v4abits(o[2]) > big) |
+                 (rt_v4abits(tmin) > big) | (rt_v4abits(tmax) > inf) |
+                 ((ad0 < small) & (ad1 < small) & (ad2 < small));
+    /* unusable lanes get a harmless ray before any floating operation (no NaN compared,
+       no division by 0: the tests trap FE_INVALID and FE_DIVBYZERO) */
+    const rt_v4d zero = {0.0, 0.0, 0.0, 0.0}, one = {1.0, 1.0, 1.0, 1.0};
+    for (int a = 0; a < 3; a++) {
+        o[a] = rt_v4sel(bad, zero, o[a]);
+        d[a] = rt_v4sel(bad, one, d[a]);
+    }
+    tmin = rt_v4sel(bad, zero, tmin);
+    tmax = rt_v4sel(bad, one, tmax);
+    bad |= tmin > tmax;
+    /* rt_rayx_check's flush: a component below 1e-150 of the largest (a ray with one is left
+       to the one-ray code, as is one with a 0 component) */
+    const rt_v4d a0 = (rt_v4d)rt_v4abits(d[0]), a1 = (rt_v4d)rt_v4abits(d[1]),
+                 a2 = (rt_v4d)rt_v4abits(d[2]);
+    rt_v4d dm = rt_v4sel(a0 > a1, a0, a1);
+    dm = rt_v4sel(dm > a2, dm, a2);
+    const rt_v4d tiny = 1e-150 * dm;
+    bad |= (a0 < tiny) | (a1 < tiny) | (a2 < tiny);
+    for (int a = 0; a < 3; a++) {
+        o[a] = rt_v4sel(bad, zero, o[a]);
+        d[a] = rt_v4sel(bad, one, d[a]);
+    }
+    tmin = rt_v4sel(bad, zero, tmin);
+    tmax = rt_v4sel(bad, one, tmax);
+    /* rt_gray_init's reciprocals and rt_box_clip's cut, axis by axis in its order */
+    rt_v4d invd[3], t0 = tmin, t1 = tmax;
+    for (int a = 0; a < 3; a++) {
+        invd[a] = one / d[a];
+        const rt_v4d ta = (b->lo[a] - o[a]) * invd[a], tb = (b->hi[a] - o[a]) * invd[a];
+        const rt_v4d tn = rt_v4sel(ta < tb, ta, tb), tf = rt_v4sel(ta > tb, ta, tb);
+        t0 = rt_v4sel(tn > t0, tn, t0);
+        t1 = rt_v4sel(tf < t1, tf, t1);
+    }
+    const rt_v4l in = (t0 <= t1) & (rt_v4abits(t0) < inf); /* no NaN here */
+    t0 = rt_v4sel(in, t0, zero); /* lanes that miss: a finite start (unused) */
+    /* rt_dda_init's start cell and next boundary, rt_walk_box's constants */
+    rt_v4l neg = {0, 0, 0, 0};
+    for (int a = 0; a < 3; a++) {
+        const rt_v4d na = {(double)b->n[a] - 1.0, (double)b->n[a] - 1.0,
+                           (double)b->n[a] - 1.0, (double)b->n[a] - 1.0};
+        const rt_v4d pa = o[a] + t0 * d[a];
+        rt_v4d f = (pa - b->lo[a]) * b->inv_cw[a];
+        f = rt_v4sel(f > zero, f, zero);
+        f = rt_v4sel(f < na, f, na);
+        const rt_v4i c = __builtin_convertvector(f, rt_v4i);
+        const rt_v4l pos = d[a] > zero;
+        const rt_v4d bd = __builtin_convertvector(c, rt_v4d) + rt_v4sel(pos, one, zero);
+        const rt_v4d nd = na + 1.0;
+        const rt_v4d hi = {b->hi[a], b->hi[a], b->hi[a], b->hi[a]};
+        const rt_v4d x = rt_v4sel(bd == nd, hi, b->lo[a] + bd * b->cw[a]);
+        const rt_v4d tn = (x - o[a]) * invd[a];
+        const rt_v4d ai = (rt_v4d)rt_v4abits(invd[a]), ad = (rt_v4d)rt_v4abits(d[a]);
+        memcpy(p->c[a], &c, sizeof p->c[a]);
+        memcpy(p->invd[a], &invd[a], sizeof p->invd[a]);
+        const rt_v4d dt = b->cw[a] * ai, it = ad * b->inv_cw[a];
+        memcpy(p->tn[a], &tn, sizeof p->tn[a]);
+        memcpy(p->dt[a], &dt, sizeof p->dt[a]);
+        memcpy(p->it[a], &it, sizeof p->it[a]);
+        neg |= (d[a] < zero) & (rt_v4l){(int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a,
+                                        (int64_t)1 << a};
+    }
+    memcpy(p->t0, &t0, sizeof p->t0);
+    memcpy(p->t1, &t1, sizeof p->t1);
+    const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
+    for (int j = 0; j < 4; j++) {
+        p->state[j] = (int)st[j];
+        p->oct[j] = (int)neg[j];
+    }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define RT_SETUP4_AVX2 1
+static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_box *b,
+                                                                    const rt_ray *ray,
+                                                                    rt_pre4 *p)
+{
+    rt_setup4_body(b, ray, p);
+}
+#endif
+
+static __attribute__((noinline)) void rt_setup4_plain(const rt_box *b, const rt_ray *ray,
+                                                      rt_pre4 *p)
+{
+    rt_setup4_body(b, ray, p);
+}
+
+typedef void (*rt_setup4_fn)(const rt_box *b, const rt_ray *ray, rt_pre4 *p);
+
+/* the four-ray set-up for this CPU and GKS_RT_SIMD (rt_simd_level: AVX2, SSE2 lanes, or none:
+   NULL, every ray through the one-ray code), NULL also where it does not apply (no grid, or a
+   rotated grid frame) */
+static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
+{
+    if (!sc->use_grid || sc->grid.rotated)
+        return NULL;
+    const int level = rt_simd_level();
+    if (level == 0)
+        return NULL;
+#ifdef RT_SETUP4_AVX2
+    if (level >= 2)
+        return rt_setup4_avx2;
+#endif
+    return rt_setup4_plain;
+}
+
 /* empty-space jumps from top cells whose empty cube in the ray's octant (rt_grid.odist) has
    an edge >= RT_JUMP_MIN; a restart costs a few steps, so shorter jumps do not pay
    (docs/bench/rt_tuning.md) */
@@ -570,26 +730,43 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf,
                           const int32_t *sub, const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
-                          int clip)
+                          int clip, const rt_pre4 *pre, int lane)
 {
     const rt_gray *gr = &w->gr;
-    rt_dda s;
-    if (!rt_dda_init(g, gr, t0, t1, clip, &s))
-        return RT_WALK_CONT;
     const int nn0 = g->n[0], nn1 = g->n[1], nn2 = g->n[2];
-    const int sx = s.step[0], sy = s.step[1], sz = s.step[2];
-    /* a cell's width in ray parameter per axis (0 for an axis that does not step) */
-    const double dtx = g->cw[0] * fabs(gr->invd[0]), dty = g->cw[1] * fabs(gr->invd[1]),
-                 dtz = g->cw[2] * fabs(gr->invd[2]);
-    /* about 1 / dt* (cells per unit of ray parameter): the jumps' boundary counts */
-    const double itx = fabs(gr->d[0]) * g->inv_cw[0], ity = fabs(gr->d[1]) * g->inv_cw[1],
-                 itz = fabs(gr->d[2]) * g->inv_cw[2];
+    int sx, sy, sz, cx, cy, cz;
+    double dtx, dty, dtz, itx, ity, itz, tx, ty, tz, tent;
+    if (pre) {
+        /* the start, steps and constants of the batch's four-ray set-up (rt_pre4: the
+           same values as below; no direction component is 0 there) */
+        const int oct = pre->oct[lane];
+        sx = 1 - 2 * (oct & 1);
+        sy = 1 - 2 * (oct >> 1 & 1);
+        sz = 1 - 2 * (oct >> 2);
+        cx = pre->c[0][lane], cy = pre->c[1][lane], cz = pre->c[2][lane];
+        tx = pre->tn[0][lane], ty = pre->tn[1][lane], tz = pre->tn[2][lane];
+        dtx = pre->dt[0][lane], dty = pre->dt[1][lane], dtz = pre->dt[2][lane];
+        itx = pre->it[0][lane], ity = pre->it[1][lane], itz = pre->it[2][lane];
+        tent = pre->t0[lane];
+        t1 = pre->t1[lane];
+    } else {
+        rt_dda s;
+        if (!rt_dda_init(g, gr, t0, t1, clip, &s))
+            return RT_WALK_CONT;
+        sx = s.step[0], sy = s.step[1], sz = s.step[2];
+        /* a cell's width in ray parameter per axis (0 for an axis that does not step) */
+        dtx = g->cw[0] * fabs(gr->invd[0]), dty = g->cw[1] * fabs(gr->invd[1]),
+        dtz = g->cw[2] * fabs(gr->invd[2]);
+        /* about 1 / dt* (cells per unit of ray parameter): the jumps' boundary counts */
+        itx = fabs(gr->d[0]) * g->inv_cw[0], ity = fabs(gr->d[1]) * g->inv_cw[1],
+        itz = fabs(gr->d[2]) * g->inv_cw[2];
+        cx = s.c[0], cy = s.c[1], cz = s.c[2];
+        tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
+        tent = s.t0;
+        t1 = s.t1;
+    }
     const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
-    int cx = s.c[0], cy = s.c[1], cz = s.c[2];
-    double tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
-    double tent = s.t0;
-    t1 = s.t1;
-    size_t ci = rt_cell_index(g, s.c);
+    size_t ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
     for (;;) {
         /* top level: dist > 0 marks an empty cell without a second-level grid (rt_build.c),
            passed with one load (the best hit cannot have changed there); dist is its empty
@@ -679,9 +856,9 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16) /* the 2-byte layout (rt_internal.h) */
         return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0);
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0);
     return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0);
+                       t0, t1, 0, NULL, 0);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
@@ -691,9 +868,9 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16)
         return rt_walk_box(w, 1, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0);
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0);
     return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0);
+                       t0, t1, 0, NULL, 0);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
@@ -745,7 +922,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
             rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                        rt_octant_cubes(g, &w.gr), t0, t1, 0);
+                        rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0);
         }
     }
     *tout = w.best;
@@ -797,7 +974,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         rt_rayx_shear(rs);
     w.stamp = rt_ctx_next(c);
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                    rt_octant_cubes(g, &w.gr), t0, t1, 0) == RT_WALK_BLOCKED)
+                    rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
 }
@@ -849,28 +1026,100 @@ static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, cons
     return rt_ctx_init_small(c);
 }
 
+/* the rt_rayx and grid-frame ray of lane j of a four-ray set-up in state 2 (ray: its input;
+   no component is flushed there, and the grid frame is not rotated) */
+RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, const rt_ray *ray)
+{
+    memcpy(r->o, ray->org, sizeof r->o);
+    memcpy(r->d, ray->dir, sizeof r->d);
+    r->tmin = ray->tmin;
+    r->tmax = ray->tmax;
+    r->skip = RT_NO_SKIP;
+    rt_rayx_shear(r);
+    memcpy(gr->o, ray->org, sizeof gr->o);
+    memcpy(gr->d, ray->dir, sizeof gr->d);
+    gr->invd[0] = p->invd[0][j];
+    gr->invd[1] = p->invd[1][j];
+    gr->invd[2] = p->invd[2][j];
+}
+
+/* the top-level walk of lane j of a four-ray set-up in state 2 (mode as rt_walk_box's) */
+RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_pre4 *p, int j)
+{
+    const rt_grid *g = &w->sc->grid;
+    return rt_walk_box(w, mode, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
+                       g->odist ? g->odist + (size_t)p->oct[j] * g->ncells : NULL, 0.0, 0.0, 0,
+                       p, j);
+}
+
+/* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j) */
+RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
+                                const rt_pre4 *p, int j)
+{
+    rt_rayx r;
+    double t;
+    long i = -1;
+    /* written after the trace: its lines arrive meanwhile */
+    __builtin_prefetch(h, 1);
+    __builtin_prefetch((const char *)h + sizeof *h - 1, 1);
+    if (p && p->state[j] == 2) {
+        rt_walkstate w;
+        rt_pre_ray(&r, &w.gr, p, j, ray);
+        rt_walkstate_init(&w, sc, c, &r, 0);
+        w.stamp = rt_ctx_next(c);
+        rt_walk_pre(&w, 0, p, j);
+        t = w.best;
+        i = w.bi;
+    } else if ((!p || p->state[j] == 0) &&
+               rt_rayx_check(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
+        i = rt_nearest_core(sc, c, &r, &r, &t);
+    if (i >= 0)
+        rt_fill_hit(sc, &r, i, t, h);
+    else /* every field written once (the output array is cold) */
+        *h = (rt_hit){.t = INFINITY, .prim = -1};
+}
+
 int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
 {
     rt_ctx c;
     const int rc = rt_batch_begin(sc, n, rays, hits, &c);
     if (rc != RT_OK)
         return rc;
-    for (size_t k = 0; k < n; k++) {
-        rt_rayx r;
-        double t;
-        long i = -1;
-        /* written after the trace: its lines arrive meanwhile */
-        __builtin_prefetch(&hits[k], 1);
-        __builtin_prefetch((const char *)&hits[k] + sizeof hits[k] - 1, 1);
-        if (rt_rayx_check(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
-            i = rt_nearest_core(sc, &c, &r, &r, &t);
-        if (i >= 0)
-            rt_fill_hit(sc, &r, i, t, &hits[k]);
-        else /* every field written once (the output array is cold) */
-            hits[k] = (rt_hit){.t = INFINITY, .prim = -1};
+    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    size_t k = 0;
+    if (setup4) {
+        rt_pre4 p;
+        for (; k + 4 <= n; k += 4) {
+            setup4(&sc->grid.b, rays + k, &p);
+            for (int j = 0; j < 4; j++)
+                rt_intersect_one(sc, &c, rays + k + j, hits + k + j, &p, j);
+        }
     }
+    for (; k < n; k++)
+        rt_intersect_one(sc, &c, rays + k, hits + k, NULL, 0);
     rt_ctx_free(&c);
     return RT_OK;
+}
+
+/* one ray of rt_occluded, as rt_intersect_one */
+RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray,
+                                        const rt_pre4 *p, int j)
+{
+    rt_rayx r;
+    if (p && p->state[j] == 2) {
+        c->blocker = -1;
+        rt_walkstate w;
+        rt_pre_ray(&r, &w.gr, p, j, ray);
+        rt_walkstate_init(&w, sc, c, &r, 1);
+        w.stamp = rt_ctx_next(c);
+        if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
+            return 1;
+        return w.T == 0.0;
+    }
+    if ((p && p->state[j] != 0) ||
+        !rt_rayx_check(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
+        return 0;
+    return rt_transmit_core(sc, c, &r, &r, 1) == 0.0;
 }
 
 int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
@@ -879,14 +1128,18 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
     const int rc = rt_batch_begin(sc, n, rays, occluded, &c);
     if (rc != RT_OK)
         return rc;
-    for (size_t k = 0; k < n; k++) {
-        rt_rayx r;
-        occluded[k] = 0;
-        if (!rt_rayx_check(&r, rays[k].org, rays[k].dir, rays[k].tmin, rays[k].tmax))
-            continue;
-        occluded[k] = rt_transmit_core(sc, &c, &r, &r, 1) == 0.0;
+    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    size_t k = 0;
+    if (setup4) {
+        rt_pre4 p;
+        for (; k + 4 <= n; k += 4) {
+            setup4(&sc->grid.b, rays + k, &p);
+            for (int j = 0; j < 4; j++)
+                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &p, j);
+        }
     }
+    for (; k < n; k++)
+        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, 0);
     rt_ctx_free(&c);
     return RT_OK;
 }
-

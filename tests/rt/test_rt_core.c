@@ -363,6 +363,68 @@ static void test_zero_component_on_cell_plane(void **state)
     free(rays);
 }
 
+/* The batch API sets rays up four at a time (rt_trace.c, rt_pre4) and gives the unusual ones
+   to the one-ray code: groups of four that mix ordinary rays with non-finite values (quiet
+   and signalling NaN, infinities), zero, tiny and flushed direction components, empty or
+   reversed ranges, origins beyond the range limit and rays that miss the grid box must give
+   the brute-force answers, also with a batch length that is not a multiple of four. Run with
+   the AVX2 lanes, the build's own lanes (GKS_RT_SIMD=sse) and none (scalar: one ray at a time). */
+static void test_batch_of_four_unusual_rays(void **state)
+{
+    (void)state;
+    enum { N = 4003 };
+    uint64_t snan_bits = 0x7ff0000000000001ULL;
+    double snan;
+    memcpy(&snan, &snan_bits, sizeof snan);
+    const double odd[] = {NAN, -NAN, snan, INFINITY, -INFINITY, 0.0, -0.0, 1e-160, -1e-170,
+                          1e-101, 2e100, -1e101, 1e300};
+    const int nodd = (int)(sizeof odd / sizeof odd[0]);
+    rt_ray *rays = malloc(N * sizeof *rays);
+    assert_non_null(rays);
+    rng_state = 4242;
+    for (int k = 0; k < N; k++) {
+        rt_ray *r = &rays[k];
+        for (int i = 0; i < 3; i++) {
+            r->org[i] = 3.0 * rnd() - 1.0;
+            r->dir[i] = (0.5 + 0.5 * rnd() - r->org[i]) * (rnd() < 0.5 ? 1.0 : 0.3);
+        }
+        r->tmin = 0.0;
+        r->tmax = k % 7 == 3 ? 0.8 : INFINITY;
+        const int kind = (int)(rnd() * 12.0);
+        const double v = odd[(int)(rnd() * nodd)];
+        const int a = (int)(rnd() * 3.0);
+        switch (kind) {
+        case 0: r->dir[a] = v; break;
+        case 1: r->org[a] = v; break;
+        case 2: r->tmin = v; break;
+        case 3: r->tmax = v; break;
+        case 4: r->dir[0] = r->dir[1] = r->dir[2] = v; break;
+        case 5: r->tmin = r->tmax + 1.0; break; /* reversed range (inf + 1: tmin = inf) */
+        case 6: r->org[a] = a == 0 ? 5.0 : -4.0; break; /* outside the box, mostly missing it */
+        case 7: r->dir[a] = 1e-155 * fabs(r->dir[(a + 1) % 3]); break; /* flushed to 0 */
+        default: break; /* an ordinary ray */
+        }
+    }
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_scene, rays, N);
+    const rt_build_options opts[2] = {{.brute_threshold = 0},
+                                      {.brute_threshold = 0, .grid_factor = 6.0}};
+    brute_ref_check(&br, build_scene, opts, 2, rays, N);
+    /* the groups of four from another start (other rays share a group) */
+    brute_ref sh;
+    brute_ref_init(&sh, N - 2);
+    brute_ref_trace(&sh, build_scene, rays + 2, N - 2);
+    brute_ref_check(&sh, build_scene, opts, 1, rays + 2, N - 2);
+    int nhit = 0;
+    for (int k = 0; k < N; k++)
+        nhit += br.hb[k].prim >= 0;
+    assert_true(nhit > N / 10);
+    brute_ref_free(&sh);
+    brute_ref_free(&br);
+    free(rays);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -370,6 +432,7 @@ int main(void)
         cmocka_unit_test(test_duplicate_tie),
         cmocka_unit_test(test_empty_space_jumps),
         cmocka_unit_test(test_zero_component_on_cell_plane),
+        cmocka_unit_test(test_batch_of_four_unusual_rays),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
