@@ -348,6 +348,7 @@ typedef struct rt_pre4 {
     double tn[3][4];       /* next cell boundary in ray parameter */
     double dt[3][4];       /* a cell's width in ray parameter */
     double it[3][4];       /* about 1 / dt (the jumps' counts) */
+    double o[3][4], d[3][4]; /* the ray in the grid frame (rt_gray_init) */
 } rt_pre4;
 
 typedef double rt_v4d __attribute__((vector_size(32)));
@@ -359,7 +360,7 @@ typedef int32_t rt_v4i __attribute__((vector_size(16)));
 #define rt_v4sel(m, a, b) ((rt_v4d)(((m) & (rt_v4l)(a)) | (~(m) & (rt_v4l)(b))))
 #define rt_v4abits(x) ((rt_v4l)(x) & (rt_v4l){INT64_MAX, INT64_MAX, INT64_MAX, INT64_MAX})
 
-static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b,
+static inline __attribute__((always_inline)) void rt_setup4_body(const rt_grid *g,
                                                                  const rt_ray *ray,
                                                                  rt_pre4 *p)
 {
@@ -382,9 +383,17 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b
                  (rt_v4abits(o[1]) > big) | (rt_v4abits(o[2]) > big) |
                  (rt_v4abits(tmin) > big) | (rt_v4abits(tmax) > inf) |
                  ((ad0 < small) & (ad1 < small) & (ad2 < small));
-    /* unusable lanes get a harmless ray before any floating operation (no NaN compared,
-       no division by 0: the tests trap FE_INVALID and FE_DIVBYZERO) */
+    /* rt_rayx_check's flush: a component below 1e-150 of the largest |d| (a ray with one is
+       left to the one-ray code, as is one with a 0 component), compared as bits (no NaN
+       compared: the tests trap FE_INVALID; the largest of a failed lane set to 1) */
+    rt_v4l dm = ((ad0 > ad1) & ad0) | (~(ad0 > ad1) & ad1);
+    dm = ((dm > ad2) & dm) | (~(dm > ad2) & ad2);
     const rt_v4d zero = {0.0, 0.0, 0.0, 0.0}, one = {1.0, 1.0, 1.0, 1.0};
+    const rt_v4l tiny = rt_v4abits(1e-150 * rt_v4sel(bad, one, dm));
+    bad |= (ad0 < tiny) | (ad1 < tiny) | (ad2 < tiny);
+    /* unusable lanes get a harmless ray before any other floating operation (no NaN
+       compared, no division by 0) */
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         o[a] = rt_v4sel(bad, zero, o[a]);
         d[a] = rt_v4sel(bad, one, d[a]);
@@ -392,22 +401,39 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b
     tmin = rt_v4sel(bad, zero, tmin);
     tmax = rt_v4sel(bad, one, tmax);
     bad |= tmin > tmax;
-    /* rt_rayx_check's flush: a component below 1e-150 of the largest (a ray with one is left
-       to the one-ray code, as is one with a 0 component) */
-    const rt_v4d a0 = (rt_v4d)rt_v4abits(d[0]), a1 = (rt_v4d)rt_v4abits(d[1]),
-                 a2 = (rt_v4d)rt_v4abits(d[2]);
-    rt_v4d dm = rt_v4sel(a0 > a1, a0, a1);
-    dm = rt_v4sel(dm > a2, dm, a2);
-    const rt_v4d tiny = 1e-150 * dm;
-    bad |= (a0 < tiny) | (a1 < tiny) | (a2 < tiny);
-    for (int a = 0; a < 3; a++) {
-        o[a] = rt_v4sel(bad, zero, o[a]);
-        d[a] = rt_v4sel(bad, one, d[a]);
+    const rt_box *b = &g->b;
+    if (g->rotated) {
+        /* rt_gray_init's rotation, the same sums in the same order; a lane whose rotated
+           direction has a component below 1e-150 of its largest (flushed there) is left to
+           the one-ray code, and gets the harmless ray again */
+        rt_v4d q[3], gd[3];
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++)
+            q[a] = o[a] - g->c[a];
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            gd[a] = g->R[a][0] * d[0] + g->R[a][1] * d[1] + g->R[a][2] * d[2];
+            o[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
+        }
+        const rt_v4l g0 = rt_v4abits(gd[0]), g1 = rt_v4abits(gd[1]), g2 = rt_v4abits(gd[2]);
+        rt_v4l gm = ((g0 > g1) & g0) | (~(g0 > g1) & g1);
+        gm = ((gm > g2) & gm) | (~(gm > g2) & g2);
+        const rt_v4l gt = rt_v4abits(1e-150 * (rt_v4d)gm);
+        bad |= (g0 < gt) | (g1 < gt) | (g2 < gt);
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            o[a] = rt_v4sel(bad, zero, o[a]);
+            d[a] = rt_v4sel(bad, one, gd[a]);
+        }
     }
-    tmin = rt_v4sel(bad, zero, tmin);
-    tmax = rt_v4sel(bad, one, tmax);
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        memcpy(p->o[a], &o[a], sizeof p->o[a]);
+        memcpy(p->d[a], &d[a], sizeof p->d[a]);
+    }
     /* rt_gray_init's reciprocals and rt_box_clip's cut, axis by axis in its order */
     rt_v4d invd[3], t0 = tmin, t1 = tmax;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         invd[a] = one / d[a];
         const rt_v4d ta = (b->lo[a] - o[a]) * invd[a], tb = (b->hi[a] - o[a]) * invd[a];
@@ -419,6 +445,7 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b
     t0 = rt_v4sel(in, t0, zero); /* lanes that miss: a finite start (unused) */
     /* rt_dda_init's start cell and next boundary, rt_walk_box's constants */
     rt_v4l neg = {0, 0, 0, 0};
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         const rt_v4d na = {(double)b->n[a] - 1.0, (double)b->n[a] - 1.0,
                            (double)b->n[a] - 1.0, (double)b->n[a] - 1.0};
@@ -446,36 +473,34 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_box *b
     memcpy(p->t0, &t0, sizeof p->t0);
     memcpy(p->t1, &t1, sizeof p->t1);
     const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
-    for (int j = 0; j < 4; j++) {
-        p->state[j] = (int)st[j];
-        p->oct[j] = (int)neg[j];
-    }
+    const rt_v4i st4 = __builtin_convertvector(st, rt_v4i), oct4 = __builtin_convertvector(neg, rt_v4i);
+    memcpy(p->state, &st4, sizeof p->state);
+    memcpy(p->oct, &oct4, sizeof p->oct);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #define RT_SETUP4_AVX2 1
-static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_box *b,
+static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_grid *g,
                                                                     const rt_ray *ray,
                                                                     rt_pre4 *p)
 {
-    rt_setup4_body(b, ray, p);
+    rt_setup4_body(g, ray, p);
 }
 #endif
 
-static __attribute__((noinline)) void rt_setup4_plain(const rt_box *b, const rt_ray *ray,
+static __attribute__((noinline)) void rt_setup4_plain(const rt_grid *g, const rt_ray *ray,
                                                       rt_pre4 *p)
 {
-    rt_setup4_body(b, ray, p);
+    rt_setup4_body(g, ray, p);
 }
 
-typedef void (*rt_setup4_fn)(const rt_box *b, const rt_ray *ray, rt_pre4 *p);
+typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
 
 /* the four-ray set-up for this CPU and GKS_RT_SIMD (rt_simd_level: AVX2, SSE2 lanes, or none:
-   NULL, every ray through the one-ray code), NULL also where it does not apply (no grid, or a
-   rotated grid frame) */
+   NULL, every ray through the one-ray code), NULL also without a grid */
 static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
 {
-    if (!sc->use_grid || sc->grid.rotated)
+    if (!sc->use_grid)
         return NULL;
     const int level = rt_simd_level();
     if (level == 0)
@@ -1027,7 +1052,7 @@ static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, cons
 }
 
 /* the rt_rayx and grid-frame ray of lane j of a four-ray set-up in state 2 (ray: its input;
-   no component is flushed there, and the grid frame is not rotated) */
+   no component is flushed there) */
 RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, const rt_ray *ray)
 {
     memcpy(r->o, ray->org, sizeof r->o);
@@ -1036,8 +1061,10 @@ RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, cons
     r->tmax = ray->tmax;
     r->skip = RT_NO_SKIP;
     rt_rayx_shear(r);
-    memcpy(gr->o, ray->org, sizeof gr->o);
-    memcpy(gr->d, ray->dir, sizeof gr->d);
+    for (int a = 0; a < 3; a++) {
+        gr->o[a] = p->o[a][j];
+        gr->d[a] = p->d[a][j];
+    }
     gr->invd[0] = p->invd[0][j];
     gr->invd[1] = p->invd[1][j];
     gr->invd[2] = p->invd[2][j];
@@ -1090,7 +1117,7 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
     if (setup4) {
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
-            setup4(&sc->grid.b, rays + k, &p);
+            setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++)
                 rt_intersect_one(sc, &c, rays + k + j, hits + k + j, &p, j);
         }
@@ -1133,7 +1160,7 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
     if (setup4) {
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
-            setup4(&sc->grid.b, rays + k, &p);
+            setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++)
                 occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &p, j);
         }

@@ -363,6 +363,33 @@ static void test_zero_component_on_cell_plane(void **state)
     free(rays);
 }
 
+/* 900 small triangles and two large ones near the oblique plane through (0.5, 0.5, 0.5)
+   spanned by (0.8, 0.6, 0) and (-0.36, 0.48, 0.8): a scene whose grid is laid out in a
+   rotated frame (checked below) */
+static void build_tilted(rt_scene *sc)
+{
+    rt_surface s;
+    rt_surface_default(&s);
+    int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    static const double e1[3] = {0.8, 0.6, 0.0}, e2[3] = {-0.36, 0.48, 0.8},
+                        n[3] = {0.48, -0.64, 0.6};
+    rng_state = 777;
+    for (int k = 0; k < 902; k++) {
+        const double size = k < 2 ? 1.6 : 0.06;
+        const double cu = k < 2 ? 0.0 : 1.6 * (rnd() - 0.5), cv = k < 2 ? 0.0 : 1.6 * (rnd() - 0.5);
+        double v[9];
+        for (int j = 0; j < 3; j++) {
+            const double u = cu + size * (k < 2 ? (j == 1) - 0.4 + 0.2 * k : rnd() - 0.5);
+            const double w = cv + size * (k < 2 ? (j == 2) - 0.4 : rnd() - 0.5);
+            const double h = k < 2 ? 0.0 : 0.05 * (rnd() - 0.5);
+            for (int i = 0; i < 3; i++)
+                v[3 * j + i] = 0.5 + u * e1[i] + w * e2[i] + h * n[i];
+        }
+        add_tri(sc, v, surf);
+    }
+}
+
 /* The batch API sets rays up four at a time (rt_trace.c, rt_pre4) and gives the unusual ones
    to the one-ray code: groups of four that mix ordinary rays with non-finite values (quiet
    and signalling NaN, infinities), zero, tiny and flushed direction components, empty or
@@ -420,6 +447,23 @@ static void test_batch_of_four_unusual_rays(void **state)
     for (int k = 0; k < N; k++)
         nhit += br.hb[k].prim >= 0;
     assert_true(nhit > N / 10);
+    /* and in a rotated grid frame */
+    rt_scene *t = rt_scene_new();
+    build_tilted(t);
+    assert_int_equal(rt_scene_commit(t, &opts[0]), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(t, &gi), RT_OK);
+    assert_int_equal(gi.rotated, 1);
+    rt_scene_free(t);
+    brute_ref tr;
+    brute_ref_init(&tr, N);
+    brute_ref_trace(&tr, build_tilted, rays, N);
+    brute_ref_check(&tr, build_tilted, opts, 1, rays, N);
+    nhit = 0;
+    for (int k = 0; k < N; k++)
+        nhit += tr.hb[k].prim >= 0;
+    assert_true(nhit > N / 20);
+    brute_ref_free(&tr);
     brute_ref_free(&sh);
     brute_ref_free(&br);
     free(rays);
