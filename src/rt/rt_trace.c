@@ -343,6 +343,7 @@ typedef struct rt_pre4 {
     int state[4];
     int oct[4];            /* octant: bit a set for d[a] < 0 */
     int c[3][4];           /* start cell */
+    int step[3][4];        /* 1 or -1 */
     double invd[3][4];     /* 1 / d */
     double t0[4], t1[4];   /* the range clipped to the grid box */
     double tn[3][4];       /* next cell boundary in ray parameter */
@@ -426,11 +427,6 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_grid *
             d[a] = rt_v4sel(bad, one, gd[a]);
         }
     }
-#pragma GCC unroll 3
-    for (int a = 0; a < 3; a++) {
-        memcpy(p->o[a], &o[a], sizeof p->o[a]);
-        memcpy(p->d[a], &d[a], sizeof p->d[a]);
-    }
     /* rt_gray_init's reciprocals and rt_box_clip's cut, axis by axis in its order */
     rt_v4d invd[3], t0 = tmin, t1 = tmax;
 #pragma GCC unroll 3
@@ -442,6 +438,18 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_grid *
         t1 = rt_v4sel(tf < t1, tf, t1);
     }
     const rt_v4l in = (t0 <= t1) & (rt_v4abits(t0) < inf); /* no NaN here */
+    const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
+    const rt_v4i st4 = __builtin_convertvector(st, rt_v4i);
+    memcpy(p->state, &st4, sizeof p->state);
+    /* no lane enters the box (rows of eye rays beside the scene): nothing more is read */
+    const rt_v4l go = st & (rt_v4l){2, 2, 2, 2};
+    if (!(go[0] | go[1] | go[2] | go[3]))
+        return;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        memcpy(p->o[a], &o[a], sizeof p->o[a]);
+        memcpy(p->d[a], &d[a], sizeof p->d[a]);
+    }
     t0 = rt_v4sel(in, t0, zero); /* lanes that miss: a finite start (unused) */
     /* rt_dda_init's start cell and next boundary, rt_walk_box's constants */
     rt_v4l neg = {0, 0, 0, 0};
@@ -467,14 +475,14 @@ static inline __attribute__((always_inline)) void rt_setup4_body(const rt_grid *
         memcpy(p->tn[a], &tn, sizeof p->tn[a]);
         memcpy(p->dt[a], &dt, sizeof p->dt[a]);
         memcpy(p->it[a], &it, sizeof p->it[a]);
-        neg |= (d[a] < zero) & (rt_v4l){(int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a,
-                                        (int64_t)1 << a};
+        const rt_v4l ng = d[a] < zero;
+        neg |= ng & (rt_v4l){(int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a};
+        const rt_v4i step = __builtin_convertvector((rt_v4l){1, 1, 1, 1} + (ng & 2 * ng), rt_v4i);
+        memcpy(p->step[a], &step, sizeof p->step[a]);
     }
     memcpy(p->t0, &t0, sizeof p->t0);
     memcpy(p->t1, &t1, sizeof p->t1);
-    const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
-    const rt_v4i st4 = __builtin_convertvector(st, rt_v4i), oct4 = __builtin_convertvector(neg, rt_v4i);
-    memcpy(p->state, &st4, sizeof p->state);
+    const rt_v4i oct4 = __builtin_convertvector(neg, rt_v4i);
     memcpy(p->oct, &oct4, sizeof p->oct);
 }
 
@@ -764,10 +772,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     if (pre) {
         /* the start, steps and constants of the batch's four-ray set-up (rt_pre4: the
            same values as below; no direction component is 0 there) */
-        const int oct = pre->oct[lane];
-        sx = 1 - 2 * (oct & 1);
-        sy = 1 - 2 * (oct >> 1 & 1);
-        sz = 1 - 2 * (oct >> 2);
+        sx = pre->step[0][lane], sy = pre->step[1][lane], sz = pre->step[2][lane];
         cx = pre->c[0][lane], cy = pre->c[1][lane], cz = pre->c[2][lane];
         tx = pre->tn[0][lane], ty = pre->tn[1][lane], tz = pre->tn[2][lane];
         dtx = pre->dt[0][lane], dty = pre->dt[1][lane], dtz = pre->dt[2][lane];
