@@ -331,14 +331,14 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
 
 /* What rt_rayx_check, rt_gray_init, rt_box_clip (the grid box), rt_dda_init and the walk's
  * constants of rt_walk_box compute for one ray, for four rays in structure-of-arrays lanes
- * (rt_setup4: GCC vector extensions, compiled for AVX2 (4 lanes in one register) and for
- * the build's own target (SSE2 on x86-64: two registers of 2)). Every lane does the same IEEE
- * operations in the same order as the one-ray code, and where that code picks between
- * equal values it picks the same operand, so the walk starts from the same cell with the
- * same boundaries, bit for bit. Lanes whose ray is unusual take the one-ray code instead:
- * state 0 (a check fails, a direction component is 0 or flushed to 0 by rt_rayx_check, which
- * the one-ray clip treats as a slab); state 1: a usable ray that misses the grid box;
- * state 2: it enters, and the start below holds (no direction component 0). */
+ * (rt_setup4: GCC vector extensions compiled for AVX2, 4 lanes in one register, chosen at run
+ * time). Every lane does the same IEEE operations in the same order as the one-ray code, and
+ * where that code picks between equal values it picks the same operand, so the walk starts
+ * from the same cell with the same boundaries, bit for bit. Lanes whose ray is unusual take
+ * the one-ray code instead: state 0 (a check fails, a direction component is 0 or flushed to
+ * 0 by rt_rayx_check or by the rotation into the grid frame, which the one-ray clip treats as
+ * a slab); state 1: a usable ray that misses the grid box; state 2: it enters, and the start
+ * below holds (no direction component 0). */
 typedef struct rt_pre4 {
     int state[4];
     int oct[4];            /* octant: bit a set for d[a] < 0 */
@@ -496,28 +496,21 @@ static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_gr
 }
 #endif
 
-static __attribute__((noinline)) void rt_setup4_plain(const rt_grid *g, const rt_ray *ray,
-                                                      rt_pre4 *p)
-{
-    rt_setup4_body(g, ray, p);
-}
-
 typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
 
-/* the four-ray set-up for this CPU and GKS_RT_SIMD (rt_simd_level: AVX2, SSE2 lanes, or none:
-   NULL, every ray through the one-ray code), NULL also without a grid */
+/* the four-ray set-up where the CPU has AVX2 and GKS_RT_SIMD allows it (rt_simd_level), with a
+   grid; otherwise NULL: every ray through the one-ray code. The same lanes in the build's own
+   SSE2 (two registers of 2, no 64-bit compare) cost more than the one-ray code: 1400
+   instructions per four rays against 360 (docs/bench/rt_tuning.md). */
 static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
 {
-    if (!sc->use_grid)
-        return NULL;
-    const int level = rt_simd_level();
-    if (level == 0)
-        return NULL;
 #ifdef RT_SETUP4_AVX2
-    if (level >= 2)
+    if (sc->use_grid && rt_simd_level() >= 2)
         return rt_setup4_avx2;
+#else
+    (void)sc;
 #endif
-    return rt_setup4_plain;
+    return NULL;
 }
 
 /* empty-space jumps from top cells whose empty cube in the ray's octant (rt_grid.odist) has

@@ -394,8 +394,9 @@ static void build_tilted(rt_scene *sc)
    to the one-ray code: groups of four that mix ordinary rays with non-finite values (quiet
    and signalling NaN, infinities), zero, tiny and flushed direction components, empty or
    reversed ranges, origins beyond the range limit and rays that miss the grid box must give
-   the brute-force answers, also with a batch length that is not a multiple of four. Run with
-   the AVX2 lanes, the build's own lanes (GKS_RT_SIMD=sse) and none (scalar: one ray at a time). */
+   the brute-force answers, also with a batch length that is not a multiple of four, and in a
+   rotated grid frame. Run with the AVX2 lanes where the CPU has them (rt_core) and without
+   (rt_core_scalar: one ray at a time). */
 static void test_batch_of_four_unusual_rays(void **state)
 {
     (void)state;
