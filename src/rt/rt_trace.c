@@ -23,6 +23,7 @@
 #include "rt_prim.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #if defined(__SSE2__)
@@ -498,6 +499,17 @@ static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_gr
 
 typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
 
+#ifdef RT_SETUP4_AVX2
+/* the CPU's level, read once per process as the packet path's (rt_simd_level reads the
+   environment: too slow for every call of a small batch) */
+static pthread_once_t rt_setup4_once = PTHREAD_ONCE_INIT;
+static int rt_setup4_level;
+static void rt_setup4_pick(void)
+{
+    rt_setup4_level = rt_simd_level();
+}
+#endif
+
 /* the four-ray set-up where the CPU has AVX2 and GKS_RT_SIMD allows it (rt_simd_level), with a
    grid; otherwise NULL: every ray through the one-ray code. The same lanes in the build's own
    SSE2 (two registers of 2, no 64-bit compare) cost more than the one-ray code: 1400
@@ -505,7 +517,8 @@ typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
 static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
 {
 #ifdef RT_SETUP4_AVX2
-    if (sc->use_grid && rt_simd_level() >= 2)
+    pthread_once(&rt_setup4_once, rt_setup4_pick);
+    if (sc->use_grid && rt_setup4_level >= 2)
         return rt_setup4_avx2;
 #else
     (void)sc;
