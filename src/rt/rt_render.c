@@ -40,6 +40,7 @@
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
 #include "rt_packet.h"
+#include "rt_prim.h"
 #include "rt_shade.h"
 
 #include <math.h>
@@ -87,6 +88,8 @@ typedef struct rt_job {
                            of those it can hit) are cand[cand_off[k] .. cand_off[k + 1] - 1];
                            NULL: none (then cover, if any) */
     uint32_t *cand;
+    double *cand_key;   /* with cand: per primitive a lower bound of the t at which an eye ray
+                           can hit it; every list is in ascending order of it (rt_cover_keys) */
     uint8_t *cover;     /* one-ray modes: per ray, 1 if a primitive's projection (with a
                            margin) reaches it; NULL: no culling */
     int packets;        /* one-ray modes without candidate lists: eye rays in 8 x 8 packets
@@ -214,6 +217,7 @@ static double rt_eps(const rt_scene *sc, const double p[3], double t)
 typedef struct rt_cands {
     const uint32_t *ids;
     size_t n;
+    const double *key; /* rt_job.cand_key */
 } rt_cands;
 
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
@@ -514,6 +518,30 @@ static void rt_shade_hit(rt_worker *w, const double o[3], const double d[3], int
     rt_secondary(w, s, P, N, Nsh, d, side, smooth, eps, depth, weight, i, out);
 }
 
+/* The nearest hit among an eye ray's candidates: rt_trace_list's tests and choice
+   (rt_nearest_update) in the list's order, which ascends in key, a lower bound of any hit's
+   t (rt_cover_keys). rt_trace_list tests a candidate only up to best + 2 eb (beyond it a hit
+   can neither win nor tie); once a key exceeds that, no later candidate can hit below it,
+   nor can best + 2 eb grow again (only an update could raise it, and an update needs such a
+   hit): the rest of the list is left out with the same answer. */
+static long rt_trace_cands(const rt_scene *sc, const rt_rayx *r, const rt_cands *c,
+                           double *tout)
+{
+    double best = INFINITY, eb = 0.0;
+    long bi = -1;
+    for (size_t k = 0; k < c->n; k++) {
+        const uint32_t i = c->ids[k];
+        const double lim = best + 2.0 * eb;
+        if (c->key[i] > lim)
+            break;
+        double t;
+        if (i != r->skip && rt_isect_prim(sc, r, i, r->tmin, lim < r->tmax ? lim : r->tmax, &t))
+            rt_nearest_update(sc, r, i, t, &best, &bi, &eb);
+    }
+    *tout = best;
+    return bi;
+}
+
 /* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
    cand: an eye ray's candidates (tested instead of walking the grid), or NULL */
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
@@ -532,8 +560,9 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
     if (from >= 0)
         r.skip = (uint32_t)from;
     double t;
-    long i = cand ? rt_trace_list(sc, &r, cand->ids, cand->n, &t)
-                  : rt_trace_nearest(sc, &w->ctx, &r, &t);
+    long i = !cand ? rt_trace_nearest(sc, &w->ctx, &r, &t)
+             : cand->key ? rt_trace_cands(sc, &r, cand, &t)
+                         : rt_trace_list(sc, &r, cand->ids, cand->n, &t);
     rt_shade_hit(w, o, d, depth, weight, i, t, out);
 }
 
@@ -677,6 +706,7 @@ static void rt_cover_convex(rt_cover_sink *s, int gw, int gh, double off, const 
 typedef struct rt_cover_out {
     uint8_t *mask;
     uint32_t *off, *ids;
+    double *key; /* with off and ids: rt_cover_keys' bounds (the lists in their order) */
 } rt_cover_out;
 
 /* Rays per frame up to which eye rays get candidate lists (4 bytes per ray), and at most
@@ -687,11 +717,13 @@ typedef struct rt_cover_out {
 /* one pass of primitives lo .. hi-1's projections into sink s; 0 if a vertex does not project */
 static int rt_cover_pass(const rt_scene *sc, const rt_camera *cam, const double vm[4][4],
                          double ws, double off, int gw, int gh, rt_cover_sink *s, size_t lo,
-                         size_t hi)
+                         size_t hi, const uint32_t *perm)
 {
     for (size_t j = lo; j < hi; j++) {
-        /* the fill pass goes backwards: each list ends up in ascending primitive order */
-        const size_t i = s->pass == RT_COVER_FILL ? hi - 1 - (j - lo) : j;
+        /* the fill pass goes backwards: each list ends up in the order of perm (NULL:
+           ascending primitive order) */
+        const size_t pj = s->pass == RT_COVER_FILL ? hi - 1 - (j - lo) : j;
+        const size_t i = perm ? perm[pj] : pj;
         double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY}, q[4][2], x[3];
         const size_t nv = rt_prim_nverts(sc, i);
         for (size_t k = 0; k < nv; k++) {
@@ -732,6 +764,7 @@ typedef struct rt_cover_job {
     size_t nrays;
     uint32_t *cnt[RT_PAR_MAX];
     uint32_t *ids;
+    const uint32_t *perm; /* the primitives in the lists' order (NULL: ascending) */
     uint64_t tot[RT_PAR_MAX];
     int ok[RT_PAR_MAX];
 } rt_cover_job;
@@ -742,7 +775,7 @@ static void rt_cover_part(void *arg, int k, int n)
     size_t lo, hi;
     rt_par_range(j->sc->nprim, k, n, &lo, &hi);
     rt_cover_sink s = {j->pass, NULL, j->cnt[k], j->ids, 0};
-    j->ok[k] = rt_cover_pass(j->sc, j->cam, j->vm, j->ws, j->off, j->gw, j->gh, &s, lo, hi);
+    j->ok[k] = rt_cover_pass(j->sc, j->cam, j->vm, j->ws, j->off, j->gw, j->gh, &s, lo, hi, j->perm);
 }
 
 static void rt_cover_total_part(void *arg, int k, int n)
@@ -851,7 +884,8 @@ static int rt_cover_lists_run(rt_cover_job *j, size_t budget)
 /* the candidate lists of the budget rays (out->off, out->ids): 1 made, 0 not (the mask alone
    will do), -1 no culling at all */
 static int rt_cover_lists(const rt_scene *sc, const rt_camera *cam, const double vm[4][4], double ws,
-                          double off, int gw, int gh, int threads, size_t budget, rt_cover_out *out)
+                          double off, int gw, int gh, int threads, size_t budget,
+                          const uint32_t *perm, rt_cover_out *out)
 {
     rt_cover_job *j = rt_calloc_array(1, sizeof *j);
     if (!j)
@@ -867,6 +901,7 @@ static int rt_cover_lists(const rt_scene *sc, const rt_camera *cam, const double
     j->gw = gw;
     j->gh = gh;
     j->nrays = budget;
+    j->perm = perm;
     while (j->nt < nt && (j->cnt[j->nt] = rt_calloc_array(budget + 1, sizeof(uint32_t))))
         j->nt++; /* fewer parts where memory runs short */
     const int r = j->nt > 0 ? rt_cover_lists_run(j, budget) : -1;
@@ -884,10 +919,102 @@ static int rt_cover_lists(const rt_scene *sc, const rt_camera *cam, const double
     return r;
 }
 
+typedef struct rt_keyed {
+    double key;
+    uint32_t i;
+} rt_keyed;
+
+/* ascending key, ties by ascending index (keys are never NaN) */
+static int rt_keyed_cmp(const void *pa, const void *pb)
+{
+    const rt_keyed *a = pa, *b = pb;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return a->i < b->i ? -1 : (a->i > b->i);
+}
+
+/* Eye rays start on one plane (the front plane of the display volume, mapped to VRC3) and
+ * have unit directions. With nu its unit normal (pointing along the rays) and c = nu . o for
+ * its points o, a ray from o reaches a point x at t = |x - o| >= (x - o) . nu = x . nu - c;
+ * every point of a primitive lies in the hull of its vertices, so no eye ray meets primitive
+ * i before key[i] = min over its vertices v of v . nu - c, less a margin (1e-7 of the
+ * coordinates' magnitude, against the rounding of the rays and of the hit tests: the
+ * traversal's own premise, that a hit's t lies within the build's far smaller eps of the
+ * primitive, see rt_build.c). *perm: the primitives in ascending key (ties: ascending
+ * index). 1 on success; 0 (no keys, no error) when the ray origins do not lie on one plane
+ * to 1e-9 of their magnitude or memory runs short. */
+static int rt_cover_keys(const rt_scene *sc, const rt_camera *cam, double **key, uint32_t **perm)
+{
+    *key = NULL;
+    *perm = NULL;
+    rt_ray r[5];
+    for (int k = 0; k < 5; k++) {
+        const double px = k == 4 ? 0.5 * cam->width : (k & 1) * cam->width;
+        const double py = k == 4 ? 0.5 * cam->height : (k >> 1) * cam->height;
+        if (rt_camera_ray(cam, px, py, &r[k]) != RT_OK)
+            return 0;
+    }
+    double a[3], b[3], nu[3];
+    for (int c = 0; c < 3; c++) {
+        a[c] = r[1].org[c] - r[0].org[c];
+        b[c] = r[2].org[c] - r[0].org[c];
+    }
+    nu[0] = a[1] * b[2] - a[2] * b[1];
+    nu[1] = a[2] * b[0] - a[0] * b[2];
+    nu[2] = a[0] * b[1] - a[1] * b[0];
+    const double ln = sqrt(dot3(nu, nu));
+    if (!(ln > 0.0) || !isfinite(ln))
+        return 0;
+    const double sg = dot3(nu, r[4].dir) < 0.0 ? -1.0 : 1.0;
+    for (int c = 0; c < 3; c++)
+        nu[c] *= sg / ln;
+    /* R: the magnitude of the coordinates involved */
+    double R = 0.0;
+    for (int c = 0; c < 6; c++)
+        R = fmax(R, fabs(sc->bbox[c]));
+    for (int k = 0; k < 5; k++)
+        R = fmax(R, rt_absmax3(r[k].org));
+    const double c0 = dot3(nu, r[0].org);
+    for (int k = 0; k < 5; k++)
+        if (!(fabs(dot3(nu, r[k].org) - c0) <= 1e-9 * R) || !(dot3(nu, r[k].dir) > 0.0))
+            return 0; /* not one plane, or a ray running back along it */
+    if (!(R > 0.0) || !isfinite(R))
+        return 0;
+    const double margin = 1e-7 * R;
+    double *kk = rt_alloc_array(sc->nprim, sizeof *kk);
+    uint32_t *pp = rt_alloc_array(sc->nprim, sizeof *pp);
+    rt_keyed *tmp = rt_alloc_array(sc->nprim, sizeof *tmp);
+    if (!kk || !pp || !tmp) {
+        free(kk);
+        free(pp);
+        free(tmp);
+        return 0;
+    }
+    for (size_t i = 0; i < sc->nprim; i++) {
+        double m = INFINITY, x[3];
+        const size_t nv = rt_prim_nverts(sc, i);
+        for (size_t k = 0; k < nv; k++) {
+            rt_prim_vertex(sc, i, k, x);
+            m = fmin(m, dot3(nu, x));
+        }
+        const double d = m - c0;
+        kk[i] = isfinite(d) ? d - margin - 1e-12 * fabs(d) : -INFINITY;
+    }
+    for (size_t i = 0; i < sc->nprim; i++)
+        tmp[i] = (rt_keyed){kk[i], (uint32_t)i};
+    qsort(tmp, sc->nprim, sizeof *tmp, rt_keyed_cmp);
+    for (size_t i = 0; i < sc->nprim; i++)
+        pp[i] = tmp[i].i;
+    free(tmp);
+    *key = kk;
+    *perm = pp;
+    return 1;
+}
+
 static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double off, int gw, int gh,
                              int threads)
 {
-    rt_cover_out none = {NULL, NULL, NULL}, out = none;
+    rt_cover_out none = {NULL, NULL, NULL, NULL}, out = none;
     if (sc->nprim == 0)
         return none;
     double vm[4][4], ws;
@@ -897,10 +1024,17 @@ static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double of
     if (!rt_cover_usable(sc, cam, (const double(*)[4])vm, ws, budget))
         return none;
     if (budget <= RT_CAND_RAYS && sc->nprim <= UINT32_MAX) {
+        double *key;
+        uint32_t *perm;
+        rt_cover_keys(sc, cam, &key, &perm);
         const int r = rt_cover_lists(sc, cam, (const double(*)[4])vm, ws, off, gw, gh, threads,
-                                     budget, &out);
-        if (r > 0)
+                                     budget, perm, &out);
+        free(perm);
+        if (r > 0) {
+            out.key = key;
             return out;
+        }
+        free(key);
         if (r < 0)
             return none;
         /* too many entries or no memory: the mask alone */
@@ -908,7 +1042,7 @@ static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double of
     rt_cover_sink s = {RT_COVER_MARK, rt_calloc_array(budget, 1), NULL, NULL, 0};
     if (!s.mask)
         return none;
-    if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s, 0, sc->nprim)) {
+    if (!rt_cover_pass(sc, cam, vm, ws, off, gw, gh, &s, 0, sc->nprim, NULL)) {
         free(s.mask);
         return none;
     }
@@ -1054,7 +1188,8 @@ static void rt_tile_rows(rt_worker *w, int x0, int x1, int y0, int y1)
             w->st.eye_rays++;
             w->eye_hit = 0;
             if (k >= 0 && ok[k]) {
-                const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0};
+                const rt_cands cd = {co ? job->cand + co[x] : NULL, co ? co[x + 1] - co[x] : 0,
+                                     job->cand_key};
                 rt_trace(w, ray[k].org, ray[k].dir, ray[k].tmin, ray[k].tmax, 1, 1.0, 0, -1,
                          co ? &cd : NULL, col);
             } else
@@ -1416,6 +1551,7 @@ static void rt_job_release(rt_job *job, rt_worker *w, int nt)
     free(job->cover);
     free(job->cand_off);
     free(job->cand);
+    free(job->cand_key);
 }
 
 int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options *opts,
@@ -1573,6 +1709,7 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         job.cover = cv.mask;
         job.cand_off = cv.off;
         job.cand = cv.ids;
+        job.cand_key = cv.key;
         const char *pe = getenv("GKS_RT_PACKETS"); /* "0": every eye ray alone (tests) */
         job.packets = !(pe && !strcmp(pe, "0"));
         rt_phase(&job, NULL, tp);
