@@ -40,7 +40,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RT_LBUF_CELLS_PER_PRIM 8.0 /* measured: docs/bench/rt_tuning.md */
+#define RT_LBUF_CELLS_PER_PRIM 16.0 /* measured: docs/bench/rt_tuning.md (2026-12-05) */
 #define RT_LBUF_MIN_CELLS 4096
 #define RT_LBUF_MAX_CELLS (1 << 20)
 #define RT_LBUF_MAX_ENTRIES (1u << 24) /* 64 MB of lists per light: beyond, no buffer */

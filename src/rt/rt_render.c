@@ -32,7 +32,9 @@
  * cell array's projected vertices, a polygon's box) are background without being traced; the
  * others test just the primitives whose projections reach them (per-ray candidate lists, a
  * superset of what they can hit: the grid is not walked), unless the lists would exceed
- * RT_CAND_PER_RAY entries per ray or the raster RT_CAND_RAYS rays (then the mask alone).
+ * RT_CAND_PER_RAY entries per ray or the raster RT_CAND_RAYS rays (then the mask alone);
+ * the lists ascend in a lower bound of the ray's t at the primitive, and a ray stops where
+ * that bound passes its best hit's tie window (rt_cover_keys, rt_trace_cands).
  * All of this leaves the picture and the ray counts bit for bit as the direct evaluation.
  */
 
