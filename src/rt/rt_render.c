@@ -316,10 +316,12 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
                 r.skip = (uint32_t)from;
                 int k = RT_SCACHE;
                 if (cache->live)
-                    for (k = 0; k < RT_SCACHE; k++)
+                    for (k = 0; k < RT_SCACHE; k++) {
+                        double tb; /* rt_hits_prim's test, inline (cached ids are valid) */
                         if (cache->id[k] >= 0 && cache->id[k] != from &&
-                            rt_hits_prim(sc, &r, cache->id[k]))
+                            rt_isect_prim(sc, &r, (size_t)cache->id[k], r.tmin, r.tmax, &tb))
                             break;
+                    }
                 if (k < RT_SCACHE) {
                     T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
                     rt_scache_front(cache, k, cache->id[k]);
