@@ -26,7 +26,7 @@
  * rays (SPD mode) are traced once each and kept in the picture itself (corner (x,y) at pixel
  * (x,y), the last row and column aside) and averaged in place at the end: no second
  * full-size buffer to page-fault in. Per worker: a mailbox and, per depth and light, the last
- * opaque shadow blocker, tested first (rt_hits_prim; an opaque hit answers as the traversal
+ * opaque shadow blocker, tested first (rt_isect_prim; an opaque hit answers as the traversal
  * would). Lights surely behind the surface are rejected before the square root. Eye rays
  * that no primitive's projection reaches (rt_cover: the convex hull of a triangle's, quad's or
  * cell array's projected vertices, a polygon's box) are background without being traced; the
