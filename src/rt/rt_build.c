@@ -520,24 +520,29 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
             }
         }
     }
-    /* memo of the Y group per x (this z slab) and of the Z group per (x, y): -1 unknown */
-    const int nx = c1[0] - c0[0] + 1, ny = c1[1] - c0[1] + 1;
-    signed char gy[RT_SPAN], gz[RT_SPAN * RT_SPAN];
-    memset(gz, -1, (size_t)(nx * ny));
+    /* memo of the Y group per x (this z slab) and of the Z group per (x, y), as bit masks
+       over x (RT_SPAN <= 32): bit ix of *k set when the group of that x is known, of *v when
+       it separates (no memset of byte arrays per slab and triangle) */
+    const int ny = c1[1] - c0[1] + 1;
+    uint32_t gzk[RT_SPAN], gzv[RT_SPAN];
+    for (int iy = 0; iy < ny; iy++)
+        gzk[iy] = gzv[iy] = 0;
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++) {
         rt_axis_cell *z = &ac[2][c[2] - c0[2]];
         if (z->sep)
             continue;
-        memset(gy, -1, (size_t)nx);
+        uint32_t gyk = 0, gyv = 0;
         for (c[1] = c0[1]; c[1] <= c1[1]; c[1]++) {
-            rt_axis_cell *y = &ac[1][c[1] - c0[1]];
+            const int iy = c[1] - c0[1];
+            rt_axis_cell *y = &ac[1][iy];
             if (y->sep)
                 continue;
             int gx = -1; /* the X group of this (y, z) */
-            signed char *gzy = gz + (size_t)(c[1] - c0[1]) * (size_t)nx;
+            uint32_t zk = gzk[iy], zv = gzv[iy];
             for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
                 const int ix = c[0] - c0[0];
+                const uint32_t bit = (uint32_t)1 << ix;
                 rt_axis_cell *x = &ac[0][ix];
                 if (x->sep)
                     continue;
@@ -548,17 +553,25 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
                     gx = rt_edge_group(y, z);
                 if (gx)
                     break; /* the same for every x of this row */
-                if (gzy[ix] < 0)
-                    gzy[ix] = (signed char)rt_edge_group(x, y);
-                if (gzy[ix])
+                if (!(zk & bit)) {
+                    zk |= bit;
+                    if (rt_edge_group(x, y))
+                        zv |= bit;
+                }
+                if (zv & bit)
                     continue;
-                if (gy[ix] < 0)
-                    gy[ix] = (signed char)rt_edge_group(z, x);
-                if (gy[ix])
+                if (!(gyk & bit)) {
+                    gyk |= bit;
+                    if (rt_edge_group(z, x))
+                        gyv |= bit;
+                }
+                if (gyv & bit)
                     continue;
                 if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
                     return 0;
             }
+            gzk[iy] = zk;
+            gzv[iy] = zv;
         }
     }
     return 1;
