@@ -248,6 +248,16 @@ const char *rt_packet_kernel_name(void)
     return name;
 }
 
+static rt_pk_cull_fn rt_pk_cull;
+static pthread_once_t rt_pk_once = PTHREAD_ONCE_INIT;
+static const char *rt_pk_cull_name;
+static int rt_pk_avx2; /* the AVX2 kernel was chosen: the set-up's box test is AVX2 too */
+static void rt_pk_choose(void)
+{
+    rt_pk_cull = rt_pk_kernel(&rt_pk_cull_name);
+    rt_pk_avx2 = !strcmp(rt_pk_cull_name, "avx2");
+}
+
 /* ---- set-up ---- */
 
 /* the cell of coordinate x along axis a of box g, lowered (dir -1) or raised (+1) by the
@@ -320,6 +330,148 @@ static inline int rt_pk_tbox(const rt_box *b, const rt_ray *q, double t[2])
     t[0] = t0;
     t[1] = t1;
     return 1;
+}
+
+#ifdef RT_PK_X86
+/* rt_pk_tbox for the four rays q[0..3] at once (AVX2, no FMA): the same operations in each
+   lane, so the same ranges bit for bit. The checks are made on the bits (integer compares:
+   no floating operation on a non-finite value), and the lanes of rays not judged get the
+   harmless values o = 0, d = 1 before any floating operation. Returns the judged rays (bit j:
+   ray j), their ranges in t0[0..3], t1[0..3]. */
+static inline __attribute__((target("avx2"), always_inline)) unsigned
+rt_pk_tbox4_body(const rt_grid *g, const int rotated, const rt_ray *q, double *t0, double *t1)
+{
+    const rt_box *b = &g->b;
+    __m256d x[4], y[4]; /* per ray: org[0..2], dir[0]; dir[1..2], tmin, tmax */
+    for (int j = 0; j < 4; j++) {
+        x[j] = _mm256_loadu_pd(q[j].org);
+        y[j] = _mm256_loadu_pd(q[j].dir + 1);
+    }
+    /* 4 x 4 transposes: v[0..7] = o0, o1, o2, d0, d1, d2, tmin, tmax of the four rays */
+    __m256d v[8];
+    for (int h = 0; h < 2; h++) {
+        const __m256d *w = h ? y : x;
+        const __m256d l01 = _mm256_unpacklo_pd(w[0], w[1]), h01 = _mm256_unpackhi_pd(w[0], w[1]);
+        const __m256d l23 = _mm256_unpacklo_pd(w[2], w[3]), h23 = _mm256_unpackhi_pd(w[2], w[3]);
+        v[4 * h + 0] = _mm256_permute2f128_pd(l01, l23, 0x20);
+        v[4 * h + 1] = _mm256_permute2f128_pd(h01, h23, 0x20);
+        v[4 * h + 2] = _mm256_permute2f128_pd(l01, l23, 0x31);
+        v[4 * h + 3] = _mm256_permute2f128_pd(h01, h23, 0x31);
+    }
+    const __m256i absm = _mm256_set1_epi64x(INT64_MAX);
+    const __m256i inf = _mm256_set1_epi64x(INT64_C(0x7ff0000000000000));
+    double lim = 1e-250;
+    int64_t blim;
+    memcpy(&blim, &lim, sizeof blim);
+    const __m256i small = _mm256_set1_epi64x(blim);
+    __m256i ok = _mm256_cmpeq_epi64(absm, absm);
+    for (int c = 0; c < 7; c++) { /* finite: |bits| < inf's */
+        const __m256i a = _mm256_and_si256(_mm256_castpd_si256(v[c]), absm);
+        ok = _mm256_and_si256(ok, _mm256_cmpgt_epi64(inf, a));
+        if (c >= 3 && c < 6) /* direction components of at least 1e-250 */
+            ok = _mm256_andnot_si256(_mm256_cmpgt_epi64(small, a), ok);
+    }
+    ok = _mm256_andnot_si256( /* tmax not NaN */
+        _mm256_cmpgt_epi64(_mm256_and_si256(_mm256_castpd_si256(v[7]), absm), inf), ok);
+    __m256d okd = _mm256_castsi256_pd(ok);
+    const __m256d one = _mm256_set1_pd(1.0);
+    if (rotated) { /* into the grid frame as rt_grid_point, rt_grid_dir (finite inputs
+                         only), and the checks again on the results */
+        __m256d q3[3], w[6];
+        for (int a = 0; a < 3; a++)
+            q3[a] = _mm256_sub_pd(_mm256_and_pd(okd, v[a]), _mm256_set1_pd(g->c[a]));
+        for (int a = 0; a < 3; a++) {
+            const __m256d r0 = _mm256_set1_pd(g->R[a][0]), r1 = _mm256_set1_pd(g->R[a][1]),
+                          r2 = _mm256_set1_pd(g->R[a][2]);
+            w[a] = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r0, q3[0]), _mm256_mul_pd(r1, q3[1])),
+                                 _mm256_mul_pd(r2, q3[2]));
+            const __m256d d0 = _mm256_and_pd(okd, v[3]), d1 = _mm256_and_pd(okd, v[4]),
+                          d2 = _mm256_and_pd(okd, v[5]);
+            w[3 + a] = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r0, d0), _mm256_mul_pd(r1, d1)),
+                                     _mm256_mul_pd(r2, d2));
+        }
+        for (int c = 0; c < 6; c++) {
+            const __m256i a = _mm256_and_si256(_mm256_castpd_si256(w[c]), absm);
+            ok = _mm256_and_si256(ok, _mm256_cmpgt_epi64(inf, a));
+            if (c >= 3)
+                ok = _mm256_andnot_si256(_mm256_cmpgt_epi64(small, a), ok);
+            v[c] = w[c];
+        }
+        okd = _mm256_castsi256_pd(ok);
+    }
+    __m256d T0 = _mm256_and_pd(okd, v[6]), T1 = _mm256_and_pd(okd, v[7]);
+    for (int a = 0; a < 3; a++) {
+        const __m256d o = _mm256_and_pd(okd, v[a]);
+        const __m256d d = _mm256_blendv_pd(one, v[3 + a], okd);
+        const __m256d inv = _mm256_div_pd(one, d);
+        const __m256d ta = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->lo[a]), o), inv);
+        const __m256d tb = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->hi[a]), o), inv);
+        /* tn = ta < tb ? ta : tb, tf = ta < tb ? tb : ta; t0 = tn > t0 ? tn : t0,
+           t1 = tf < t1 ? tf : t1 (min_pd(x, y) = x < y ? x : y, max_pd likewise) */
+        const __m256d tn = _mm256_min_pd(ta, tb), tf = _mm256_max_pd(tb, ta);
+        T0 = _mm256_max_pd(tn, T0);
+        T1 = _mm256_min_pd(tf, T1);
+    }
+    _mm256_storeu_pd(t0, T0);
+    _mm256_storeu_pd(t1, T1);
+    return (unsigned)_mm256_movemask_pd(okd);
+}
+
+/* the two cases in functions of their own (the grid frame's copies stay out of the other) */
+__attribute__((target("avx2"))) static unsigned rt_pk_tbox4_avx2(const rt_grid *g, const rt_ray *q,
+                                                                 double *t0, double *t1)
+{
+    return rt_pk_tbox4_body(g, 0, q, t0, t1);
+}
+
+__attribute__((target("avx2"))) static unsigned rt_pk_tbox4_rot_avx2(const rt_grid *g,
+                                                                     const rt_ray *q, double *t0,
+                                                                     double *t1)
+{
+    return rt_pk_tbox4_body(g, 1, q, t0, t1);
+}
+#endif
+
+/* rt_pk_tbox in the grid frame of g: the ray as given taken into a rotated grid's frame
+   (rt_grid_point, rt_grid_dir: only finite values, no operation on a non-finite one) and
+   judged there; the range of a rotated ray serves only to find misses of the box (the rays
+   walked are clipped by rt_pk_clip, from the rt_rayx) */
+static inline int rt_pk_tbox_g(const rt_grid *g, const rt_ray *q, double t[2])
+{
+    if (!g->rotated)
+        return rt_pk_tbox(&g->b, q, t);
+    const double *o = q->org, *d = q->dir;
+    if (!(isfinite(o[0]) & isfinite(o[1]) & isfinite(o[2]) & isfinite(d[0]) & isfinite(d[1]) &
+          isfinite(d[2]) & isfinite(q->tmin) & !isnan(q->tmax)))
+        return 0;
+    rt_ray w = *q;
+    rt_grid_point(g, q->org, w.org);
+    rt_grid_dir(g, q->dir, w.dir);
+    return rt_pk_tbox(&g->b, &w, t);
+}
+
+/* rt_pk_tbox_g for rays[0..n-1]: the mask of the rays judged, their ranges in t0[], t1[] */
+static uint64_t rt_pk_tboxes(const rt_grid *g, const rt_ray *rays, int n, double *t0, double *t1)
+{
+    uint64_t judged = 0;
+    int k = 0;
+#ifdef RT_PK_X86
+    if (rt_pk_avx2 && !g->rotated)
+        for (; k + 4 <= n; k += 4)
+            judged |= (uint64_t)rt_pk_tbox4_avx2(g, rays + k, t0 + k, t1 + k) << k;
+    else if (rt_pk_avx2)
+        for (; k + 4 <= n; k += 4)
+            judged |= (uint64_t)rt_pk_tbox4_rot_avx2(g, rays + k, t0 + k, t1 + k) << k;
+#endif
+    for (; k < n; k++) {
+        double t[2];
+        if (rt_pk_tbox_g(g, &rays[k], t)) {
+            judged |= (uint64_t)1 << k;
+            t0[k] = t[0];
+            t1[k] = t[1];
+        }
+    }
+    return judged;
 }
 
 /* the signs of a direction's components (bit a: negative), -1 if one is zero (or their
@@ -411,16 +563,19 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     int oct = -1;
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+    /* the box test of the rays as given: not for any-hit rays (shadow rays start at surfaces
+       inside the box, the test would only add its cost: armadillo's shadow rays, +83
+       instructions per ray) */
+    double tb0[RT_PACKET], tb1[RT_PACKET];
+    const uint64_t judged_m = !any ? rt_pk_tboxes(g, rays, p->n, tb0, tb1) : 0;
     for (int k = 0; k < p->n; k++) {
         const rt_ray *q = &rays[k];
         p->best[k] = INFINITY;
         p->eb[k] = 0.0;
         p->bi[k] = -1;
         p->nh[k] = 0;
-        double t[2] = {0.0, 0.0};
-        /* not for any-hit rays: shadow rays start at surfaces inside the box, the test
-           would only add its cost (armadillo's shadow rays: +83 instructions per ray) */
-        const int judged = !g->rotated && !any && rt_pk_tbox(&g->b, q, t);
+        const int judged = (judged_m >> k) & 1u;
+        const double t[2] = {judged ? tb0[k] : 0.0, judged ? tb1[k] : 0.0};
         if (judged && !(t[0] <= t[1])) {
             p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
             continue; /* a miss: the rest of the set-up only for rays that may be walked */
@@ -431,7 +586,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         }
         if (!rt_pk_ray(p, k, &oct))
             return 0;
-        if (!(judged ? rt_pk_range(p, k, t[0], t[1]) : rt_pk_clip(p, k)))
+        if (!(judged && !g->rotated ? rt_pk_range(p, k, t[0], t[1]) : rt_pk_clip(p, k)))
             continue; /* misses the grid box */
         p->live |= (uint64_t)1 << k;
         p->uemin = p->ue[k] < p->uemin ? p->ue[k] : p->uemin;
@@ -711,14 +866,6 @@ static int rt_pk_ends(rt_pk *p)
     return s0;
 }
 
-static rt_pk_cull_fn rt_pk_cull;
-static pthread_once_t rt_pk_once = PTHREAD_ONCE_INIT;
-static const char *rt_pk_cull_name;
-static void rt_pk_choose(void)
-{
-    rt_pk_cull = rt_pk_kernel(&rt_pk_cull_name);
-}
-
 /* the walk over the top level: 1, or 0 if the packet is not coherent */
 static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
 {
@@ -801,6 +948,7 @@ int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *r
                       double *t, rt_rayx *rx, rt_packet_stats *ps)
 {
     rt_pk p;
+    pthread_once(&rt_pk_once, rt_pk_choose);
     if (!rt_pk_setup(&p, sc, ctx, n, rays, 0, rx) || !rt_pk_walk(&p, ctx)) {
         ps->fallback_packets++;
         return 0;
