@@ -563,6 +563,15 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     int oct = -1;
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+    /* the lanes the AVX2 steps read for rays not walked: finite values (rt_pk_in_avx2,
+       rt_pk_frustum_avx2) */
+    memset(p->us, 0, sizeof p->us);
+    memset(p->ue, 0, sizeof p->ue);
+    memset(p->oK, 0, sizeof p->oK);
+    memset(p->o1, 0, sizeof p->o1);
+    memset(p->o2, 0, sizeof p->o2);
+    memset(p->m1, 0, sizeof p->m1);
+    memset(p->m2, 0, sizeof p->m2);
     /* the box test of the rays as given: not for any-hit rays (shadow rays start at surfaces
        inside the box, the test would only add its cost: armadillo's shadow rays, +83
        instructions per ray) */
@@ -710,6 +719,75 @@ static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint3
         rt_pk_prim(p, cull, refs[k]);
 }
 
+#ifdef RT_PK_X86
+/* the lanes of mask as an AVX2 mask of four doubles, lanes k .. k+3 */
+__attribute__((target("avx2"))) static inline __m256d rt_pk_lanes(uint64_t mask, int k)
+{
+    const __m256i bit = _mm256_set_epi64x(8, 4, 2, 1);
+    const __m256i m = _mm256_set1_epi64x((long long)((mask >> k) & 15u));
+    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(m, bit), bit));
+}
+
+/* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 4 rays a step; the lanes of
+   rays not in the mask hold finite values, set by rt_pk_setup) */
+__attribute__((target("avx2"))) static uint64_t rt_pk_in_avx2(const rt_pk *p, uint64_t mask,
+                                                              double ua, double ub)
+{
+    const __m256d va = _mm256_set1_pd(ua), vb = _mm256_set1_pd(ub);
+    uint64_t in = 0;
+    for (int k = 0; k < p->n; k += 4) {
+        if (!((mask >> k) & 15u))
+            continue;
+        const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k), vb, _CMP_LE_OQ);
+        const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k), va, _CMP_GE_OQ);
+        in |= (uint64_t)_mm256_movemask_pd(_mm256_and_pd(a, b)) << k;
+    }
+    return in & mask;
+}
+
+/* the frustum of the rays of mask (rt_pk_frustum; the same values: the least and the
+   greatest of the same crossings, in another order) */
+__attribute__((target("avx2"))) static void rt_pk_frustum_avx2(rt_pk *p, uint64_t mask)
+{
+    const __m256d z0 = _mm256_set1_pd(p->z0), pinf = _mm256_set1_pd(INFINITY),
+                  ninf = _mm256_set1_pd(-INFINITY);
+    __m256d lo1 = pinf, lo2 = pinf, hi1 = ninf, hi2 = ninf, ml1 = pinf, ml2 = pinf,
+            mh1 = ninf, mh2 = ninf;
+    for (int k = 0; k < p->n; k += 4) {
+        if (!((mask >> k) & 15u))
+            continue;
+        const __m256d sel = rt_pk_lanes(mask, k);
+        const __m256d dz = _mm256_sub_pd(z0, _mm256_loadu_pd(p->oK + k));
+        const __m256d m1 = _mm256_loadu_pd(p->m1 + k), m2 = _mm256_loadu_pd(p->m2 + k);
+        const __m256d x1 = _mm256_add_pd(_mm256_loadu_pd(p->o1 + k), _mm256_mul_pd(dz, m1));
+        const __m256d x2 = _mm256_add_pd(_mm256_loadu_pd(p->o2 + k), _mm256_mul_pd(dz, m2));
+        lo1 = _mm256_min_pd(lo1, _mm256_blendv_pd(pinf, x1, sel));
+        lo2 = _mm256_min_pd(lo2, _mm256_blendv_pd(pinf, x2, sel));
+        hi1 = _mm256_max_pd(hi1, _mm256_blendv_pd(ninf, x1, sel));
+        hi2 = _mm256_max_pd(hi2, _mm256_blendv_pd(ninf, x2, sel));
+        ml1 = _mm256_min_pd(ml1, _mm256_blendv_pd(pinf, m1, sel));
+        ml2 = _mm256_min_pd(ml2, _mm256_blendv_pd(pinf, m2, sel));
+        mh1 = _mm256_max_pd(mh1, _mm256_blendv_pd(ninf, m1, sel));
+        mh2 = _mm256_max_pd(mh2, _mm256_blendv_pd(ninf, m2, sel));
+    }
+    double v[8][4];
+    _mm256_storeu_pd(v[0], lo1);
+    _mm256_storeu_pd(v[1], lo2);
+    _mm256_storeu_pd(v[2], hi1);
+    _mm256_storeu_pd(v[3], hi2);
+    _mm256_storeu_pd(v[4], ml1);
+    _mm256_storeu_pd(v[5], ml2);
+    _mm256_storeu_pd(v[6], mh1);
+    _mm256_storeu_pd(v[7], mh2);
+    for (int a = 0; a < 2; a++) {
+        p->lo[a] = fmin(fmin(v[a][0], v[a][1]), fmin(v[a][2], v[a][3]));
+        p->hi[a] = fmax(fmax(v[2 + a][0], v[2 + a][1]), fmax(v[2 + a][2], v[2 + a][3]));
+        p->mlo[a] = fmin(fmin(v[4 + a][0], v[4 + a][1]), fmin(v[4 + a][2], v[4 + a][3]));
+        p->mhi[a] = fmax(fmax(v[6 + a][0], v[6 + a][1]), fmax(v[6 + a][2], v[6 + a][3]));
+    }
+}
+#endif
+
 /* ---- the walk by slices ---- */
 
 /* the frustum of the rays of mask (kept while the mask stays) */
@@ -718,6 +796,12 @@ static void rt_pk_frustum(rt_pk *p, uint64_t mask)
     if (mask == p->fmask)
         return;
     p->fmask = mask;
+#ifdef RT_PK_X86
+    if (rt_pk_avx2) {
+        rt_pk_frustum_avx2(p, mask);
+        return;
+    }
+#endif
     const double z0 = p->z0;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     double mlo[2] = {INFINITY, INFINITY}, mhi[2] = {-INFINITY, -INFINITY};
@@ -768,6 +852,10 @@ static inline uint64_t rt_pk_in(const rt_pk *p, uint64_t mask, double za, double
     const double ua = p->sg > 0 ? za : -zb, ub = p->sg > 0 ? zb : -za;
     if (p->usmax <= ub + p->umg && p->uemin >= ua - p->umg)
         return mask; /* every ray meets it (the common case) */
+#ifdef RT_PK_X86
+    if (rt_pk_avx2)
+        return rt_pk_in_avx2(p, mask, ua - p->umg, ub + p->umg);
+#endif
     uint64_t in = 0;
     for (; mask; mask &= mask - 1) {
         const int k = __builtin_ctzll(mask);
@@ -832,6 +920,11 @@ static void rt_pk_drop(rt_pk *p, double za, double zb)
     const double ua = p->sg > 0 ? za : -zb;
     if (p->uemin >= ua - p->umg)
         return; /* none ended */
+#ifdef RT_PK_X86
+    if (rt_pk_avx2)
+        p->live = rt_pk_in_avx2(p, p->live, ua - p->umg, INFINITY);
+    else
+#endif
     for (uint64_t m = p->live; m; m &= m - 1) {
         const int k = __builtin_ctzll(m);
         if (p->ue[k] < ua - p->umg)
