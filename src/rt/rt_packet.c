@@ -1136,14 +1136,27 @@ int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *
 {
     rt_pk p;
     rt_rayx rx[RT_PACKET];
-    if (!rt_pk_setup(&p, sc, ctx, n, rays, 1, rx) || !rt_pk_walk(&p, ctx)) {
+    pthread_once(&rt_pk_once, rt_pk_choose);
+    if (!rt_pk_setup(&p, sc, ctx, n, rays, 1, rx)) {
         ps->fallback_packets++;
         return 0;
     }
-    ps->packets++;
-    atomic_fetch_add_explicit(&rt_pk_traced, 1, memory_order_relaxed);
-    for (int k = 0; k < p.n; k++)
+    /* the rays not finished by a walk given up take the single-ray walk; a ray that hit
+       is occluded, one whose walk ended is not */
+    const uint64_t left = rt_pk_walk(&p, ctx) ? 0 : p.live;
+    if (left) {
+        ps->fallback_packets++;
+    } else {
+        ps->packets++;
+        atomic_fetch_add_explicit(&rt_pk_traced, 1, memory_order_relaxed);
+    }
+    for (int k = 0; k < p.n; k++) {
         occ[k] = (p.hit >> k) & 1u;
+        if ((left >> k) & 1u) {
+            ps->fallback_rays++;
+            occ[k] = rt_trace_transmit(sc, ctx, &rx[k], 1) == 0.0;
+        }
+    }
     return 1;
 }
 
