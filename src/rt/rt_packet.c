@@ -1177,6 +1177,21 @@ static int rt_pk_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const v
     return c->hbox ? RT_OK : RT_ERR_NOMEM;
 }
 
+/* rt_fill_hit (rt_trace.c) with the normal of primitive i given: the one rt_prim_ng gave
+   for the last hit of the same primitive (the same value: it depends on the primitive
+   only); the point and the side as rt_fill_hit computes them */
+static void rt_pk_fill_ng(const rt_scene *sc, const rt_rayx *r, long i, double t,
+                          const double ng[3], rt_hit *h)
+{
+    h->t = t;
+    h->prim = sc->prim[i].id;
+    memcpy(h->ng, ng, sizeof h->ng);
+    for (int j = 0; j < 3; j++)
+        h->p[j] = r->o[j] + t * r->d[j];
+    double den = h->ng[0] * r->d[0] + h->ng[1] * r->d[1] + h->ng[2] * r->d[2];
+    h->side = den > 0.0 ? 1 : 0;
+}
+
 /* the nearest hits of a batch in packets of RT_PACKET rays; ps may be NULL */
 int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits,
                               rt_packet_stats *ps)
@@ -1192,6 +1207,9 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
         double pt[RT_PACKET];
         rt_rayx rx[RT_PACKET];
         const int packed = rt_packet_nearest(sc, &c, m, rays + k0, pi, pt, rx, ps ? ps : &own);
+        long lasti = -1; /* the primitive of the last hit written (neighbouring rays often
+                            hit the same triangle) and that hit */
+        const rt_hit *last = NULL;
         for (size_t j = 0; j < m; j++) {
             const rt_ray *q = &rays[k0 + j];
             long i = -1;
@@ -1199,9 +1217,13 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
                 i = pi[j];
             else if (rt_rayx_setup(&rx[j], q->org, q->dir, q->tmin, q->tmax))
                 i = rt_trace_nearest(sc, &c, &rx[j], &pt[j]);
-            if (i >= 0)
+            if (i >= 0 && i == lasti) {
+                rt_pk_fill_ng(sc, &rx[j], i, pt[j], last->ng, &hits[k0 + j]);
+            } else if (i >= 0) {
                 rt_fill_hit(sc, &rx[j], i, pt[j], &hits[k0 + j]);
-            else
+                lasti = i;
+                last = &hits[k0 + j];
+            } else
                 hits[k0 + j] = (rt_hit){.t = INFINITY, .prim = -1};
         }
     }
