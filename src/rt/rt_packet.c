@@ -60,10 +60,6 @@
 #define RT_PK_MAXC 16    /* top cells per slice at most */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
-#define RT_PK_GROUP 16   /* rays per group of the frustum's four groups (AVX2; 8 rays
-                            per group in 8 groups: more instructions) */
-#define RT_PK_NG (RT_PACKET / RT_PK_GROUP)
-_Static_assert(RT_PK_NG == 4, "rt_pk_outside_groups: four groups of 16 rays in one vector");
 
 typedef struct rt_pk_rec {
     uint32_t i;
@@ -98,9 +94,6 @@ typedef struct rt_pk {
        slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
     uint64_t fmask;
     double z0, lo[2], hi[2], mlo[2], mhi[2];
-    /* with AVX2: the same bounds of each group of RT_PK_GROUP rays of fmask (rays
-       16 g .. 16 g + 15; a group without a ray of fmask: zeros), per axis a1 (0), a2 (1) */
-    double glo[2][RT_PK_NG], ghi[2][RT_PK_NG], gmlo[2][RT_PK_NG], gmhi[2][RT_PK_NG];
     double xmg[2];           /* margins along a1, a2: 2^-20 of a top cell */
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
@@ -618,133 +611,6 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     return 1;
 }
 
-#ifdef RT_PK_X86
-/* the lanes of mask as an AVX2 mask of four doubles, lanes k .. k+3 */
-__attribute__((target("avx2"))) static inline __m256d rt_pk_lanes(uint64_t mask, int k)
-{
-    const __m256i bit = _mm256_set_epi64x(8, 4, 2, 1);
-    const __m256i m = _mm256_set1_epi64x((long long)((mask >> k) & 15u));
-    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(m, bit), bit));
-}
-
-/* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 4 rays a step; the lanes of
-   rays not in the mask hold finite values, set by rt_pk_setup) */
-__attribute__((target("avx2"))) static uint64_t rt_pk_in_avx2(const rt_pk *p, uint64_t mask,
-                                                              double ua, double ub)
-{
-    const __m256d va = _mm256_set1_pd(ua), vb = _mm256_set1_pd(ub);
-    uint64_t in = 0;
-    for (int k = 0; k < p->n; k += 4) {
-        if (!((mask >> k) & 15u))
-            continue;
-        const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k), vb, _CMP_LE_OQ);
-        const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k), va, _CMP_GE_OQ);
-        in |= (uint64_t)_mm256_movemask_pd(_mm256_and_pd(a, b)) << k;
-    }
-    return in & mask;
-}
-
-/* the frustum of the rays of mask (rt_pk_frustum; the same values: the least and the
-   greatest of the same crossings, in another order), and the frustum of each group of
-   RT_PK_GROUP rays (glo .. gmhi) */
-__attribute__((target("avx2"))) static void rt_pk_frustum_avx2(rt_pk *p, uint64_t mask)
-{
-    const __m256d z0 = _mm256_set1_pd(p->z0), pinf = _mm256_set1_pd(INFINITY),
-                  ninf = _mm256_set1_pd(-INFINITY);
-    for (int a = 0; a < 2; a++) {
-        p->lo[a] = p->mlo[a] = INFINITY;
-        p->hi[a] = p->mhi[a] = -INFINITY;
-    }
-    const uint64_t gbits = 0xffffu; /* a group's rays */
-    for (int g = 0; g < RT_PK_NG; g++) {
-        if (!((mask >> (RT_PK_GROUP * g)) & gbits)) {
-            for (int a = 0; a < 2; a++)
-                p->glo[a][g] = p->ghi[a][g] = p->gmlo[a][g] = p->gmhi[a][g] = 0.0;
-            continue;
-        }
-        __m256d lo1 = pinf, lo2 = pinf, hi1 = ninf, hi2 = ninf, ml1 = pinf, ml2 = pinf,
-                mh1 = ninf, mh2 = ninf;
-        for (int k = RT_PK_GROUP * g; k < RT_PK_GROUP * (g + 1) && k < p->n; k += 4) {
-            if (!((mask >> k) & 15u))
-                continue;
-            const __m256d sel = rt_pk_lanes(mask, k);
-            const __m256d dz = _mm256_sub_pd(z0, _mm256_loadu_pd(p->oK + k));
-            const __m256d m1 = _mm256_loadu_pd(p->m1 + k), m2 = _mm256_loadu_pd(p->m2 + k);
-            const __m256d x1 = _mm256_add_pd(_mm256_loadu_pd(p->o1 + k), _mm256_mul_pd(dz, m1));
-            const __m256d x2 = _mm256_add_pd(_mm256_loadu_pd(p->o2 + k), _mm256_mul_pd(dz, m2));
-            lo1 = _mm256_min_pd(lo1, _mm256_blendv_pd(pinf, x1, sel));
-            lo2 = _mm256_min_pd(lo2, _mm256_blendv_pd(pinf, x2, sel));
-            hi1 = _mm256_max_pd(hi1, _mm256_blendv_pd(ninf, x1, sel));
-            hi2 = _mm256_max_pd(hi2, _mm256_blendv_pd(ninf, x2, sel));
-            ml1 = _mm256_min_pd(ml1, _mm256_blendv_pd(pinf, m1, sel));
-            ml2 = _mm256_min_pd(ml2, _mm256_blendv_pd(pinf, m2, sel));
-            mh1 = _mm256_max_pd(mh1, _mm256_blendv_pd(ninf, m1, sel));
-            mh2 = _mm256_max_pd(mh2, _mm256_blendv_pd(ninf, m2, sel));
-        }
-        double v[8][4];
-        _mm256_storeu_pd(v[0], lo1);
-        _mm256_storeu_pd(v[1], lo2);
-        _mm256_storeu_pd(v[2], hi1);
-        _mm256_storeu_pd(v[3], hi2);
-        _mm256_storeu_pd(v[4], ml1);
-        _mm256_storeu_pd(v[5], ml2);
-        _mm256_storeu_pd(v[6], mh1);
-        _mm256_storeu_pd(v[7], mh2);
-        for (int a = 0; a < 2; a++) {
-            p->glo[a][g] = fmin(fmin(v[a][0], v[a][1]), fmin(v[a][2], v[a][3]));
-            p->ghi[a][g] = fmax(fmax(v[2 + a][0], v[2 + a][1]), fmax(v[2 + a][2], v[2 + a][3]));
-            p->gmlo[a][g] = fmin(fmin(v[4 + a][0], v[4 + a][1]), fmin(v[4 + a][2], v[4 + a][3]));
-            p->gmhi[a][g] = fmax(fmax(v[6 + a][0], v[6 + a][1]), fmax(v[6 + a][2], v[6 + a][3]));
-            p->lo[a] = fmin(p->lo[a], p->glo[a][g]);
-            p->hi[a] = fmax(p->hi[a], p->ghi[a][g]);
-            p->mlo[a] = fmin(p->mlo[a], p->gmlo[a][g]);
-            p->mhi[a] = fmax(p->mhi[a], p->gmhi[a][g]);
-        }
-    }
-}
-
-/* rt_pk_outside for the four groups' frusta at once (lanes: the groups): the rays of the
-   groups whose frustum triangle v lies wholly outside of (the same test, the same margin);
-   a group without a ray of fmask may be given either way (none of its rays is asked) */
-__attribute__((target("avx2"))) static uint64_t rt_pk_outside_groups(const rt_pk *p,
-                                                                     const double *const vv[3])
-{
-    const rt_grid *g = &p->sc->grid;
-    double w[3][3];
-    const double *v[3] = {vv[0], vv[1], vv[2]};
-    if (g->rotated)
-        for (int j = 0; j < 3; j++) {
-            rt_grid_point(g, vv[j], w[j]);
-            v[j] = w[j];
-        }
-    const __m256d ones = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    __m256d out = _mm256_setzero_pd();
-    for (int a = 0; a < 2; a++) {
-        const int ax = a ? p->a2 : p->a1;
-        const __m256d lo = _mm256_loadu_pd(p->glo[a]), hi = _mm256_loadu_pd(p->ghi[a]);
-        const __m256d mlo = _mm256_loadu_pd(p->gmlo[a]), mhi = _mm256_loadu_pd(p->gmhi[a]);
-        const __m256d mg = _mm256_set1_pd(p->xmg[a]);
-        __m256d below = ones, above = ones;
-        for (int j = 0; j < 3; j++) {
-            const double dz = v[j][p->K] - p->z0;
-            const __m256d vdz = _mm256_set1_pd(dz), x = _mm256_set1_pd(v[j][ax]);
-            const __m256d xl = _mm256_add_pd(lo, _mm256_mul_pd(vdz, dz >= 0.0 ? mlo : mhi));
-            const __m256d xh = _mm256_add_pd(hi, _mm256_mul_pd(vdz, dz >= 0.0 ? mhi : mlo));
-            below = _mm256_and_pd(below, _mm256_cmp_pd(x, _mm256_sub_pd(xl, mg), _CMP_LT_OQ));
-            above = _mm256_and_pd(above, _mm256_cmp_pd(x, _mm256_add_pd(xh, mg), _CMP_GT_OQ));
-        }
-        out = _mm256_or_pd(out, _mm256_or_pd(below, above));
-    }
-    /* group g's rays: bits 16 g .. 16 g + 15 */
-    static const uint64_t rays[16] = {
-        0, 0xffffu, 0xffffu << 16, 0xffffffffu, 0xffffull << 32, 0xffff0000ffffull,
-        0xffffffff0000ull, 0xffffffffffffull, 0xffffull << 48, 0xffff00000000ffffull,
-        0xffff0000ffff0000ull, 0xffff0000ffffffffull, 0xffffffff00000000ull,
-        0xffffffff0000ffffull, 0xffffffffffff0000ull, ~0ull};
-    return rays[_mm256_movemask_pd(out)];
-}
-#endif
-
 /* ---- tests ---- */
 
 /* a hit of primitive i at t on ray k */
@@ -829,13 +695,6 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
     if (i < sc->ntri) {
         const double *v[3];
         rt_tri_verts(sc, i, v);
-#ifdef RT_PK_X86
-        if (rt_pk_avx2) { /* the groups of rays whose frustum it lies outside of */
-            m &= ~rt_pk_outside_groups(p, v);
-            if (!m)
-                return;
-        } else
-#endif
         if (rt_pk_outside(p, v))
             return;
         for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
@@ -859,6 +718,75 @@ static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint3
     for (uint32_t k = 0; k < n && p->cand; k++)
         rt_pk_prim(p, cull, refs[k]);
 }
+
+#ifdef RT_PK_X86
+/* the lanes of mask as an AVX2 mask of four doubles, lanes k .. k+3 */
+__attribute__((target("avx2"))) static inline __m256d rt_pk_lanes(uint64_t mask, int k)
+{
+    const __m256i bit = _mm256_set_epi64x(8, 4, 2, 1);
+    const __m256i m = _mm256_set1_epi64x((long long)((mask >> k) & 15u));
+    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(m, bit), bit));
+}
+
+/* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 4 rays a step; the lanes of
+   rays not in the mask hold finite values, set by rt_pk_setup) */
+__attribute__((target("avx2"))) static uint64_t rt_pk_in_avx2(const rt_pk *p, uint64_t mask,
+                                                              double ua, double ub)
+{
+    const __m256d va = _mm256_set1_pd(ua), vb = _mm256_set1_pd(ub);
+    uint64_t in = 0;
+    for (int k = 0; k < p->n; k += 4) {
+        if (!((mask >> k) & 15u))
+            continue;
+        const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k), vb, _CMP_LE_OQ);
+        const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k), va, _CMP_GE_OQ);
+        in |= (uint64_t)_mm256_movemask_pd(_mm256_and_pd(a, b)) << k;
+    }
+    return in & mask;
+}
+
+/* the frustum of the rays of mask (rt_pk_frustum; the same values: the least and the
+   greatest of the same crossings, in another order) */
+__attribute__((target("avx2"))) static void rt_pk_frustum_avx2(rt_pk *p, uint64_t mask)
+{
+    const __m256d z0 = _mm256_set1_pd(p->z0), pinf = _mm256_set1_pd(INFINITY),
+                  ninf = _mm256_set1_pd(-INFINITY);
+    __m256d lo1 = pinf, lo2 = pinf, hi1 = ninf, hi2 = ninf, ml1 = pinf, ml2 = pinf,
+            mh1 = ninf, mh2 = ninf;
+    for (int k = 0; k < p->n; k += 4) {
+        if (!((mask >> k) & 15u))
+            continue;
+        const __m256d sel = rt_pk_lanes(mask, k);
+        const __m256d dz = _mm256_sub_pd(z0, _mm256_loadu_pd(p->oK + k));
+        const __m256d m1 = _mm256_loadu_pd(p->m1 + k), m2 = _mm256_loadu_pd(p->m2 + k);
+        const __m256d x1 = _mm256_add_pd(_mm256_loadu_pd(p->o1 + k), _mm256_mul_pd(dz, m1));
+        const __m256d x2 = _mm256_add_pd(_mm256_loadu_pd(p->o2 + k), _mm256_mul_pd(dz, m2));
+        lo1 = _mm256_min_pd(lo1, _mm256_blendv_pd(pinf, x1, sel));
+        lo2 = _mm256_min_pd(lo2, _mm256_blendv_pd(pinf, x2, sel));
+        hi1 = _mm256_max_pd(hi1, _mm256_blendv_pd(ninf, x1, sel));
+        hi2 = _mm256_max_pd(hi2, _mm256_blendv_pd(ninf, x2, sel));
+        ml1 = _mm256_min_pd(ml1, _mm256_blendv_pd(pinf, m1, sel));
+        ml2 = _mm256_min_pd(ml2, _mm256_blendv_pd(pinf, m2, sel));
+        mh1 = _mm256_max_pd(mh1, _mm256_blendv_pd(ninf, m1, sel));
+        mh2 = _mm256_max_pd(mh2, _mm256_blendv_pd(ninf, m2, sel));
+    }
+    double v[8][4];
+    _mm256_storeu_pd(v[0], lo1);
+    _mm256_storeu_pd(v[1], lo2);
+    _mm256_storeu_pd(v[2], hi1);
+    _mm256_storeu_pd(v[3], hi2);
+    _mm256_storeu_pd(v[4], ml1);
+    _mm256_storeu_pd(v[5], ml2);
+    _mm256_storeu_pd(v[6], mh1);
+    _mm256_storeu_pd(v[7], mh2);
+    for (int a = 0; a < 2; a++) {
+        p->lo[a] = fmin(fmin(v[a][0], v[a][1]), fmin(v[a][2], v[a][3]));
+        p->hi[a] = fmax(fmax(v[2 + a][0], v[2 + a][1]), fmax(v[2 + a][2], v[2 + a][3]));
+        p->mlo[a] = fmin(fmin(v[4 + a][0], v[4 + a][1]), fmin(v[4 + a][2], v[4 + a][3]));
+        p->mhi[a] = fmax(fmax(v[6 + a][0], v[6 + a][1]), fmax(v[6 + a][2], v[6 + a][3]));
+    }
+}
+#endif
 
 /* ---- the walk by slices ---- */
 
