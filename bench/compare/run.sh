@@ -193,7 +193,7 @@ goals() {
     sec == "P" && /\.off / { pf = $(NF - 1) }
     # random triangles: o/E (separate triangles) and m/E (one indexed mesh, as Embree gets them)
     sec == "B" && $1 ~ /^[0-9]+$/ && NF > 20 {
-        ob = high(ob, $(NF - 3)); om = high(om, $(NF - 2)); bo = high(bo, $(NF - 1)); mo = high(mo, $NF)
+        ob = high(ob, $(NF - 4)); om = high(om, $(NF - 3)); bo = high(bo, $(NF - 1)); mo = high(mo, $NF)
     }
     sec == "S" && /\.nff / { if (su == "" || $4 + 0 < su) su = $4 + 0 }
     function line(name, fig, goal, ok) {
