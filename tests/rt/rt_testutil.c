@@ -629,3 +629,11 @@ int rtu_load_scene_vrc(const char *path, rtu_mesh *m, double bb[6])
     rtu_mesh_bbox(m, bb);
     return 0;
 }
+
+int rtu_same_hit(const rt_hit *a, const rt_hit *b)
+{
+    return a->prim == b->prim &&
+           (a->prim < 0 || (a->side == b->side && memcmp(&a->t, &b->t, sizeof a->t) == 0 &&
+                            memcmp(a->p, b->p, sizeof a->p) == 0 &&
+                            memcmp(a->ng, b->ng, sizeof a->ng) == 0));
+}

@@ -32,6 +32,10 @@ void rtu_view_projector(const rtu_view *v, double x, double y, double front[3], 
  * tests count rays per pixel and compare pixel values with closed forms. */
 void rtu_options_plain(rt_render_options *o);
 
+/* 1 if the two hits are equal bit for bit in every field rt_intersect writes (a miss: prim
+ * < 0 on both) */
+int rtu_same_hit(const rt_hit *a, const rt_hit *b);
+
 /* View orientation (world -> VRC): origin at 'from', n axis towards 'from' - 'at'. */
 void rtu_lookat(const double from[3], const double at[3], const double up[3], double m[4][4]);
 void rtu_xform_point(const double m[4][4], const double p[3], double out[3]);

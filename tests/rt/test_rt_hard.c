@@ -89,13 +89,6 @@ static int add_rect_z(rt_scene *sc, double x0, double y0, double x1, double y1, 
     return add_poly(sc, 4, v, s);
 }
 
-static int same_hit(const rt_hit *a, const rt_hit *b)
-{
-    return a->prim == b->prim && (a->prim < 0 ||
-           (a->side == b->side && memcmp(&a->t, &b->t, sizeof a->t) == 0 &&
-            memcmp(a->p, b->p, sizeof a->p) == 0 && memcmp(a->ng, b->ng, sizeof a->ng) == 0));
-}
-
 /* intersects the rays with sc committed as grid (opts) and as brute force: mismatches */
 static size_t grid_vs_brute(rt_scene *sc, const rt_build_options *opts, const rt_ray *rays, size_t n,
                             size_t *nhit)
@@ -122,7 +115,7 @@ static size_t grid_vs_brute(rt_scene *sc, const rt_build_options *opts, const rt
     rtc_traps_off();
     size_t bad = 0, hits = 0;
     for (size_t k = 0; k < n; k++) {
-        bad += !same_hit(&hg[k], &hb[k]) || og[k] != ob[k];
+        bad += !rtu_same_hit(&hg[k], &hb[k]) || og[k] != ob[k];
         hits += hg[k].prim >= 0;
     }
     if (nhit)
@@ -640,7 +633,7 @@ static void test_rotated_grid(void **state)
     assert_int_equal(rt_scene_commit(sc, &vrc), RT_OK);
     assert_int_equal(rt_intersect(sc, NR, rays, h2), RT_OK);
     for (int k = 0; k < NR; k++) {
-        bad2 += !same_hit(&h1[k], &h2[k]);
+        bad2 += !rtu_same_hit(&h1[k], &h2[k]);
         nhit += h1[k].prim >= 0;
     }
     free(h1);
@@ -871,7 +864,7 @@ static void test_coplanar(void **state)
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     for (size_t k = 0; k < n; k++) {
         assert_int_equal(rt_intersect(sc, 1, &rays[k], &h2[k]), RT_OK);
-        nondet += !same_hit(&h[k], &h2[k]);
+        nondet += !rtu_same_hit(&h[k], &h2[k]);
     }
     printf("coplanar: %zu rays, %zu wrong on z = 1, %zu not reproducible\n", n, wrong, nondet);
     assert_int_equal(wrong, 0);

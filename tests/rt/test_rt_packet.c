@@ -31,17 +31,6 @@
 #include "rt_packet.h"
 #include "rt_testutil.h"
 
-/* 1 if the two hits are equal bit for bit in every field rt_intersect writes */
-static int same_hit(const rt_hit *a, const rt_hit *b)
-{
-    if (a->prim != b->prim)
-        return 0;
-    if (a->prim < 0)
-        return 1;
-    return !memcmp(&a->t, &b->t, sizeof a->t) && a->side == b->side &&
-           !memcmp(a->p, b->p, sizeof a->p) && !memcmp(a->ng, b->ng, sizeof a->ng);
-}
-
 typedef struct tally {
     size_t rays, hits, differ, shadow, occluded, sdiffer;
     rt_packet_stats ps;
@@ -63,7 +52,7 @@ static void compare(const rt_scene *sc, size_t n, const rt_ray *rays, const doub
     for (size_t k = 0; k < n; k++) {
         ta->rays++;
         ta->hits += h1[k].prim >= 0;
-        if (!same_hit(&h1[k], &h2[k])) {
+        if (!rtu_same_hit(&h1[k], &h2[k])) {
             if (ta->differ < 5)
                 printf("  ray %zu differs: prim %d t %.17g vs prim %d t %.17g\n", k, h1[k].prim,
                        h1[k].t, h2[k].prim, h2[k].t);

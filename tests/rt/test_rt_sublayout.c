@@ -81,16 +81,6 @@ static void check_lists(const rt_scene *sc)
     assert_int_equal(at, g->nsrefs);
 }
 
-static int same_hit(const rt_hit *a, const rt_hit *b)
-{
-    if (a->prim != b->prim)
-        return 0;
-    if (a->prim < 0)
-        return 1;
-    return !memcmp(&a->t, &b->t, sizeof a->t) && a->side == b->side &&
-           !memcmp(a->p, b->p, sizeof a->p) && !memcmp(a->ng, b->ng, sizeof a->ng);
-}
-
 /* 32 x 32 rays from an eye toward the cluster, in 8 x 8 blocks (one packet each) */
 #define SIDE 32
 static void make_rays(rt_ray *rays, const double eye[3])
@@ -166,9 +156,9 @@ static void check_scene(int n, double half, int want_narrow)
         assert_int_equal(rt_intersect(sc, nr, rays, hg), RT_OK);
         assert_int_equal(rt_intersect_packet_stats(sc, nr, rays, hp, &ps), RT_OK);
         for (size_t k = 0; k < nr; k++) {
-            if (!same_hit(&hb[k], &hg[k]))
+            if (!rtu_same_hit(&hb[k], &hg[k]))
                 fail_msg("ray %zu: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
-            if (!same_hit(&hg[k], &hp[k]))
+            if (!rtu_same_hit(&hg[k], &hp[k]))
                 fail_msg("ray %zu: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
         }
         assert_int_equal(rt_occluded(sc, ns, sr, og), RT_OK);
