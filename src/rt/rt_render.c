@@ -251,6 +251,73 @@ static int rt_lbuf_nothing(const rt_lbuf *lb, const uint32_t *ids, uint32_t n, u
     return 1;
 }
 
+/* the transmittance of the shadow ray from o toward light li over [t0, t1] (t0 < t1), in
+   this order: the blocker cache (w->shadow_cache), the light's buffer (job->lbuf), the grid
+   walk; from is the primitive the ray leaves */
+static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const double o[3],
+                          const double L[3], double t0, double t1)
+{
+    const rt_scene *sc = w->job->sc;
+    const rt_job *job = w->job;
+    double T = 0.0;
+    rt_rayx r;
+    rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
+    const rt_lbuf *lb = &job->lbuf[li];
+    const uint32_t *ids = NULL;
+    uint32_t n = 0, zb = 0;
+    int f = -2; /* -2: the buffer not asked yet */
+    if (!cache->live && lb->ok) {
+        /* no blocker to probe: the buffer first, on the ray's origin and its direction
+           as rt_rayx_setup makes it (components below 1e-150 of the largest flushed
+           to 0), so the same answer as after the set-up; a list with nothing to test
+           below the origin's depth but the primitive the ray leaves answers "lit"
+           without the set-up (a quarter of gears' buffer rays) */
+        const double a0 = fabs(L[0]), a1 = fabs(L[1]), a2 = fabs(L[2]);
+        const double a01 = a0 > a1 ? a0 : a1, tiny = 1e-150 * (a01 > a2 ? a01 : a2);
+        memcpy(r.o, o, sizeof r.o);
+        r.d[0] = a0 < tiny ? 0.0 : L[0];
+        r.d[1] = a1 < tiny ? 0.0 : L[1];
+        r.d[2] = a2 < tiny ? 0.0 : L[2];
+        f = rt_lbuf_find(lb, &r, &ids, &n, &zb);
+    }
+    if (f == 0 || (f > 0 && rt_lbuf_nothing(lb, ids, n, zb, (uint32_t)from))) {
+        T = 1.0;
+        w->st.shadow_lbuf++;
+    } else if (!rt_rayx_setup(&r, o, L, t0, t1)) {
+        T = 1.0;
+    } else {
+        r.skip = (uint32_t)from;
+        int k = RT_SCACHE;
+        if (cache->live)
+            for (k = 0; k < RT_SCACHE; k++) {
+                double tb; /* rt_hits_prim's test, inline (cached ids are valid) */
+                if (cache->id[k] >= 0 && cache->id[k] != from &&
+                    rt_isect_prim(sc, &r, (size_t)cache->id[k], r.tmin, r.tmax, &tb))
+                    break;
+            }
+        if (k < RT_SCACHE) {
+            T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
+            rt_scache_front(cache, k, cache->id[k]);
+        } else {
+            /* the light buffer's candidates where it has them, else the walk */
+            if (f == -2)
+                f = lb->ok ? rt_lbuf_find(lb, &r, &ids, &n, &zb) : -1;
+            w->st.shadow_lbuf += f >= 0;
+            w->st.shadow_walks += f < 0;
+            if (f < 0)
+                T = rt_trace_transmit(sc, &w->ctx, &r, 0);
+            else if (f > 0)
+                T = rt_trace_transmit_list(sc, &w->ctx, &r, ids, n, lb->zb, zb);
+            else
+                T = 1.0;
+            cache->live = T == 0.0;
+            if (T == 0.0 && w->ctx.blocker >= 0)
+                rt_scache_front(cache, RT_SCACHE, w->ctx.blocker);
+        }
+    }
+    return T;
+}
+
 /* P the hit point, N the shading normal (facing the ray); shadow rays start at Ps + eps Ng
    (Ng the geometric normal facing the ray; Ps = P except for smooth areas) */
 static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3], const double P[3],
@@ -287,61 +354,7 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         } else if (t1 <= t0) {
             T = 1.0;
         } else {
-            rt_rayx r;
-            rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
-            const rt_lbuf *lb = &job->lbuf[li];
-            const uint32_t *ids = NULL;
-            uint32_t n = 0, zb = 0;
-            int f = -2; /* -2: the buffer not asked yet */
-            if (!cache->live && lb->ok) {
-                /* no blocker to probe: the buffer first, on the ray's origin and its direction
-                   as rt_rayx_setup makes it (components below 1e-150 of the largest flushed
-                   to 0), so the same answer as after the set-up; a list with nothing to test
-                   below the origin's depth but the primitive the ray leaves answers "lit"
-                   without the set-up (a quarter of gears' buffer rays) */
-                const double a0 = fabs(L[0]), a1 = fabs(L[1]), a2 = fabs(L[2]);
-                const double a01 = a0 > a1 ? a0 : a1, tiny = 1e-150 * (a01 > a2 ? a01 : a2);
-                memcpy(r.o, o, sizeof r.o);
-                r.d[0] = a0 < tiny ? 0.0 : L[0];
-                r.d[1] = a1 < tiny ? 0.0 : L[1];
-                r.d[2] = a2 < tiny ? 0.0 : L[2];
-                f = rt_lbuf_find(lb, &r, &ids, &n, &zb);
-            }
-            if (f == 0 || (f > 0 && rt_lbuf_nothing(lb, ids, n, zb, (uint32_t)from))) {
-                T = 1.0;
-                w->st.shadow_lbuf++;
-            } else if (!rt_rayx_setup(&r, o, L, t0, t1)) {
-                T = 1.0;
-            } else {
-                r.skip = (uint32_t)from;
-                int k = RT_SCACHE;
-                if (cache->live)
-                    for (k = 0; k < RT_SCACHE; k++) {
-                        double tb; /* rt_hits_prim's test, inline (cached ids are valid) */
-                        if (cache->id[k] >= 0 && cache->id[k] != from &&
-                            rt_isect_prim(sc, &r, (size_t)cache->id[k], r.tmin, r.tmax, &tb))
-                            break;
-                    }
-                if (k < RT_SCACHE) {
-                    T = 0.0; /* same answer as the traversal: an opaque primitive blocks */
-                    rt_scache_front(cache, k, cache->id[k]);
-                } else {
-                    /* the light buffer's candidates where it has them, else the walk */
-                    if (f == -2)
-                        f = lb->ok ? rt_lbuf_find(lb, &r, &ids, &n, &zb) : -1;
-                    w->st.shadow_lbuf += f >= 0;
-                    w->st.shadow_walks += f < 0;
-                    if (f < 0)
-                        T = rt_trace_transmit(sc, &w->ctx, &r, 0);
-                    else if (f > 0)
-                        T = rt_trace_transmit_list(sc, &w->ctx, &r, ids, n, lb->zb, zb);
-                    else
-                        T = 1.0;
-                    cache->live = T == 0.0;
-                    if (T == 0.0 && w->ctx.blocker >= 0)
-                        rt_scache_front(cache, RT_SCACHE, w->ctx.blocker);
-                }
-            }
+            T = rt_shadow_T(w, li, depth, from, o, L, t0, t1);
         }
         if (T == 0.0)
             continue;
