@@ -9,6 +9,9 @@
 #include "rt_internal.h"
 
 #include <math.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 
 /* Watertight ray/triangle test (Woop, Benthin, Wald 2013) of the triangle v0 v1 v2, double precision
@@ -23,6 +26,40 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
        the triangle, no gather through a stack copy) */
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double Az = v0[kz] - oz, Bz = v1[kz] - oz, Cz = v2[kz] - oz;
+#if defined(__SSE2__)
+    /* The same IEEE operations in SSE2 lanes (every x86-64 has SSE2; no FMA is formed
+       without -march): a vertex's (x, y) pair in one register, the pairs of U, V and of the
+       two products of W likewise; the signs and the zero test as compare masks. Each lane's
+       value is the scalar code's (below), bit for bit, so the hits are unchanged. */
+    const __m128d oxy = _mm_set_pd(oy, ox), sxy = _mm_loadu_pd(&r->sx);
+    const __m128d A = _mm_sub_pd(_mm_sub_pd(_mm_loadh_pd(_mm_load_sd(v0 + kx), v0 + ky), oxy),
+                                 _mm_mul_pd(sxy, _mm_set1_pd(Az)));
+    const __m128d B = _mm_sub_pd(_mm_sub_pd(_mm_loadh_pd(_mm_load_sd(v1 + kx), v1 + ky), oxy),
+                                 _mm_mul_pd(sxy, _mm_set1_pd(Bz)));
+    const __m128d C = _mm_sub_pd(_mm_sub_pd(_mm_loadh_pd(_mm_load_sd(v2 + kx), v2 + ky), oxy),
+                                 _mm_mul_pd(sxy, _mm_set1_pd(Cz)));
+    /* (U, V) = (Cx By - Cy Bx, Ax Cy - Ay Cx); W = Bx Ay - By Ax from (Bx Ay, By Ax) */
+    __m128d UV = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(C, A), _mm_unpackhi_pd(B, C)),
+                            _mm_mul_pd(_mm_unpackhi_pd(C, A), _mm_unpacklo_pd(B, C)));
+    const __m128d Wp = _mm_mul_pd(B, _mm_shuffle_pd(A, A, 1));
+    __m128d W2 = _mm_sub_pd(_mm_unpacklo_pd(Wp, Wp), _mm_unpackhi_pd(Wp, Wp)); /* (W, W) */
+    const __m128d z = _mm_setzero_pd();
+    if (_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(UV, z), _mm_cmpeq_pd(W2, z)))) {
+        const double Ax = _mm_cvtsd_f64(A), Ay = _mm_cvtsd_f64(_mm_unpackhi_pd(A, A));
+        const double Bx = _mm_cvtsd_f64(B), By = _mm_cvtsd_f64(_mm_unpackhi_pd(B, B));
+        const double Cx = _mm_cvtsd_f64(C), Cy = _mm_cvtsd_f64(_mm_unpackhi_pd(C, C));
+        UV = _mm_set_pd((double)((long double)Ax * Cy - (long double)Ay * Cx),
+                        (double)((long double)Cx * By - (long double)Cy * Bx));
+        W2 = _mm_set1_pd((double)((long double)Bx * Ay - (long double)By * Ax));
+    }
+    const int neg = _mm_movemask_pd(_mm_or_pd(_mm_cmplt_pd(UV, z), _mm_cmplt_pd(W2, z)));
+    const int pos = _mm_movemask_pd(_mm_or_pd(_mm_cmpgt_pd(UV, z), _mm_cmpgt_pd(W2, z)));
+    const double U = _mm_cvtsd_f64(UV), V = _mm_cvtsd_f64(_mm_unpackhi_pd(UV, UV));
+    const double W = _mm_cvtsd_f64(W2);
+    const double det = U + V + W;
+    if (((neg != 0) & (pos != 0)) | (det == 0.0))
+        return 0;
+#else
     const double Ax = (v0[kx] - ox) - r->sx * Az, Ay = (v0[ky] - oy) - r->sy * Az;
     const double Bx = (v1[kx] - ox) - r->sx * Bz, By = (v1[ky] - oy) - r->sy * Bz;
     const double Cx = (v2[kx] - ox) - r->sx * Cz, Cy = (v2[ky] - oy) - r->sy * Cz;
@@ -40,6 +77,7 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
     const double det = U + V + W;
     if (mixed | (det == 0.0))
         return 0;
+#endif
     const double T = U * (r->sz * Az) + V * (r->sz * Bz) + W * (r->sz * Cz);
     const double t = T / det;
     if (!(t >= tmin) | !(t <= tmax))
