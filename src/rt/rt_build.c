@@ -15,6 +15,7 @@
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -390,41 +391,50 @@ static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], dou
 /* Triangle t (edges e, normal n as rt_tri_box takes them) against the cells c0 .. c1 of g
  * (at most RT_SPAN per axis), pushing (base + cell, prim) for each cell it overlaps: the same
  * decisions as rt_tri_box cell by cell, bit for bit (a cell is taken when no test separates,
- * whatever the order of the tests). Every product that depends on one axis's cell only
- * (vertex offsets from the cell centre, their products with the edge and normal components,
- * the radii's terms) is computed once per axis and cell row. The 9 edge axes e_i x X, e_i x Y, e_i x Z come in
- * three groups, each depending on the cells of two axes only (e_i x X on the Y and Z cells):
- * a group's result is computed once per cell pair and kept for the other cells sharing it
+ * whatever the order of the tests). The face and plane tests are rt_tri_box's own, with their
+ * per-axis terms computed once per axis and cell row. The 9 edge axes a = e_i x X_g go
+ * through a margin filter (docs/RAYTRACING.md, "The build's margin filter"): with V0 the
+ * triangle's first vertex, a.(V_k - bc) = a.(V_k - V0) - a.(bc - V0); the first term takes
+ * two values per axis up to rounding (0 and s, a component of a cross product of the edges,
+ * per triangle), the second is a difference of two products that depend on one axis's cell
+ * each (per axis and cell row). Where the filter's value lies farther from the test's
+ * threshold than the error bound of both computations, it decides (separates / keeps); a
+ * cell left undecided by it gets rt_tri_box. Group g (the axes e_i x X_g) depends on the
+ * cells of the other two axes only: its result is kept for the cells sharing them
  * (X group: per row of the x loop; Y group: per x within a z slab; Z group: per (x, y) over
  * all z). 0: no memory. */
 enum { RT_SPAN = 32 };
 
 typedef struct rt_axis_cell {
-    double v[3];     /* t->v[k][a] - centre */
-    double ev[3][3]; /* [i][k]: e[i][b] * v[k] for the other axis b used with a (see below) */
-    double ew[3][3]; /* [i][k]: e[i][b'] * v[k], the second other axis */
-    double hr[3][2]; /* [i][0]: h * |e[i][b]|, [i][1]: h * |e[i][b']| */
-    double nv, nh;   /* n[a] * v[0], h * |n[a]| */
-    int sep;         /* the box face of this axis separates */
+    double bc, h;  /* the eps-enlarged cell box on this axis: centre, half size */
+    double v[3];   /* t->v[k][a] - bc (the face test) */
+    double cv[3];  /* [i]: e[i][b1] * (bc - V0[a]) + s_gi / 2, g = b2 (the group in which this
+                      axis is P, see rt_edge_filter) */
+    double cw[3];  /* [i]: e[i][b2] * (bc - V0[a]), for the group g = b1 (this axis is Q) */
+    double nv, nh; /* n[a] * v[0], h * |n[a]| */
+    int sep;       /* the box face of this axis separates */
 } rt_axis_cell;
 
-/* rt_tri_box's edge tests, with (X, Y, Z) the axes 0, 1, 2 and b1 = a + 1, b2 = a + 2:
-   X: ey * vz - ez * vy, h_y * |e_z| + h_z * |e_y|: ey*vz is ac[2].ew (b2 of 2 is 1),
-      ez*vy is ac[1].ev (b1 of 1 is 2); h_y|e_z| is ac[1].hr[0], h_z|e_y| ac[2].hr[1]
-   Y: ez * vx - ex * vz, h_x |e_z| + h_z |e_x|: ez*vx ac[0].ew, ex*vz ac[2].ev;
-      h_x|e_z| ac[0].hr[1], h_z|e_x| ac[2].hr[0]
-   Z: ex * vy - ey * vx, h_x |e_y| + h_y |e_x|: ex*vy ac[1].ew, ey*vx ac[0].ev;
-      h_x|e_y| ac[0].hr[0], h_y|e_x| ac[1].hr[1]
-   rt_edge_group(p, q) with (p, q) = (y, z), (z, x), (x, y): 1 if one of the group's three
-   axes separates */
-static inline int rt_edge_group(const rt_axis_cell *p, const rt_axis_cell *q)
+/* The filter of group g with P = g + 1, Q = g + 2 (mod 3), p and q the cells on P and Q:
+   for each edge i, m = q->cw[i] - p->cv[i] approximates a.(bc - V0) - s / 2; |m| > ro[i]:
+   the axis separates (rt_tri_box would find so); |m| <= ri[i]: it does not; between (or
+   NaN): undecided. Returns 1 when an axis of the group separates, 0 when none does, -1
+   when undecided. */
+static inline int rt_edge_filter(const double ro[3], const double ri[3], const rt_axis_cell *p,
+                                 const rt_axis_cell *q)
 {
-    for (int i = 0; i < 3; i++)
-        if (rt_sep(q->ew[i][0] - p->ev[i][0], q->ew[i][1] - p->ev[i][1], q->ew[i][2] - p->ev[i][2],
-                   p->hr[i][0] + q->hr[i][1]))
-            return 1;
-    return 0;
+    int r = 0;
+    for (int i = 0; i < 3; i++) {
+        const double m = fabs(q->cw[i] - p->cv[i]);
+        if (!(m <= ri[i])) {
+            if (m > ro[i])
+                return 1;
+            r = -1;
+        }
+    }
+    return r;
 }
+
 
 /* centre bc and half size h of the eps-enlarged cell q of g on axis a (rt_cell_box's box) */
 static inline void rt_axis_box(const rt_box *g, int a, int q, double eps, double *bc, double *h)
@@ -486,6 +496,83 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
     return 1;
 }
 
+/* cells whose triangle/box test the margin filter of rt_tri_cells left to rt_tri_box (process
+   total, for tests), and the filter's switch (1: on; 0: every cell through the edge tests of
+   rt_tri_box's operands, for tests comparing both) */
+static uint64_t rt_exact_cells;
+static int rt_filter_on = 1;
+
+uint64_t rt_build_exact_cells(void)
+{
+    return __atomic_load_n(&rt_exact_cells, __ATOMIC_RELAXED);
+}
+
+void rt_build_set_filter(int on)
+{
+    __atomic_store_n(&rt_filter_on, on != 0, __ATOMIC_RELAXED);
+}
+
+/* half the filter's s of group g (P, Q) for the three edges (rt_tri_cells) */
+#define RT_HALF_S(hg, P, Q)                                                                    \
+    do {                                                                                       \
+        (hg)[0] = 0.5 * (e[0][Q] * e[2][P] - e[0][P] * e[2][Q]);                               \
+        (hg)[1] = 0.5 * (e[1][P] * e[0][Q] - e[1][Q] * e[0][P]);                               \
+        (hg)[2] = (hg)[0];                                                                     \
+    } while (0)
+
+/* rt_edge_filter's bounds of group gi (P, Q) for the three edges (rt_tri_cells) */
+#define RT_BOUNDS(gi, P, Q)                                                                    \
+    do {                                                                                       \
+        for (int i = 0; i < 3; i++) {                                                          \
+            const double wr = fabs(hs[gi][i]) + (hmax[P] * ae[i][Q] + hmax[Q] * ae[i][P]);     \
+            ro[gi][i] = wr + B;                                                                \
+            ri[gi][i] = wr - Bi;                                                               \
+        }                                                                                      \
+    } while (0)
+
+/* the per-axis terms of rt_tri_cells for the cells c0[a] .. c1[a] of axis a (a constant where
+   it is inlined): the cell box, the face test, the plane's terms, the filter's products; L,
+   hmin, hmax as rt_tri_cells describes them */
+static inline __attribute__((always_inline)) void
+rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
+              const int c0[3], const int c1[3], double eps, const double hs[3][3],
+              const double ae[3][3], int a, rt_axis_cell *ac, double *L, double *hmin,
+              double *hmax)
+{
+    const int b1 = a == 2 ? 0 : a + 1, b2 = a == 0 ? 2 : a - 1;
+    const double o = t->v[0][a], na = n[a], ana = fabs(n[a]);
+    const double f0 = e[0][b1], f1 = e[1][b1], f2 = e[2][b1];
+    const double g0 = e[0][b2], g1 = e[1][b2], g2 = e[2][b2];
+    const double m0 = hs[b2][0], m1 = hs[b2][1], m2 = hs[b2][2];
+    double l = rt_dmax(ae[0][a], ae[2][a]), hn = HUGE_VAL, hx = 0.0;
+    for (int q = c0[a]; q <= c1[a]; q++) {
+        rt_axis_cell *x = &ac[q - c0[a]];
+        const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
+        const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
+        const double bc = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+        x->bc = bc;
+        x->h = h;
+        for (int k = 0; k < 3; k++)
+            x->v[k] = t->v[k][a] - bc;
+        x->sep = rt_sep(x->v[0], x->v[1], x->v[2], h);
+        x->nv = na * x->v[0];
+        x->nh = h * ana;
+        const double d = bc - o;
+        x->cv[0] = f0 * d + m0;
+        x->cv[1] = f1 * d + m1;
+        x->cv[2] = f2 * d + m2;
+        x->cw[0] = g0 * d;
+        x->cw[1] = g1 * d;
+        x->cw[2] = g2 * d;
+        l = rt_dmax(l, rt_dmax(fabs(d), h));
+        hn = rt_dmin(hn, h);
+        hx = rt_dmax(hx, h);
+    }
+    *L = l;
+    *hmin = hn;
+    *hmax = hx;
+}
+
 static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
                         const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
                         size_t prim)
@@ -497,36 +584,47 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
         if (r >= 0)
             return r;
     }
-    rt_axis_cell ac[3][RT_SPAN];
-    for (int a = 0; a < 3; a++) {
-        const int b1 = (a + 1) % 3, b2 = (a + 2) % 3;
-        for (int q = c0[a]; q <= c1[a]; q++) {
-            rt_axis_cell *x = &ac[a][q - c0[a]];
-            const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
-            const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
-            const double bc = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
-            for (int k = 0; k < 3; k++)
-                x->v[k] = t->v[k][a] - bc;
-            x->sep = rt_sep(x->v[0], x->v[1], x->v[2], h);
-            x->nv = n[a] * x->v[0];
-            x->nh = h * fabs(n[a]);
-            for (int i = 0; i < 3; i++) {
-                for (int k = 0; k < 3; k++) {
-                    x->ev[i][k] = e[i][b1] * x->v[k];
-                    x->ew[i][k] = e[i][b2] * x->v[k];
-                }
-                x->hr[i][0] = h * fabs(e[i][b1]);
-                x->hr[i][1] = h * fabs(e[i][b2]);
-            }
+    /* hs[gi][i] = s / 2, s = a.(V_j - V0), a = e_i x X_gi: j = 2 for edge 0 (d = V2 - V0 =
+       -e[2] as computed), j = 1 for edges 1 and 2 (d = V1 - V0 = e[0]); a.w = e_i[P] w_Q -
+       e_i[Q] w_P, P = gi + 1, Q = gi + 2. Edge 2's value is edge 0's (the same products). */
+    double hs[3][3];
+    RT_HALF_S(hs[0], 1, 2);
+    RT_HALF_S(hs[1], 2, 0);
+    RT_HALF_S(hs[2], 0, 1);
+    /* ae: |e|, emax its largest; L[a]: at least |V_k - V0|, |bc - V0| and h on axis a over the
+       cells of the range (|V1 - V0| = |e[0]|, |V2 - V0| = |e[2]|) */
+    double ae[3][3], emax = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int a = 0; a < 3; a++) {
+            ae[i][a] = fabs(e[i][a]);
+            emax = rt_dmax(emax, ae[i][a]);
         }
-    }
+    double L[3], hmin[3], hmax[3];
+    rt_axis_cell ac[3][RT_SPAN];
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 0, ac[0], &L[0], &hmin[0], &hmax[0]);
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 1, ac[1], &L[1], &hmin[1], &hmax[1]);
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 2, ac[2], &L[2], &hmin[2], &hmax[2]);
+    /* the bounds of rt_edge_filter: ro = |s|/2 + rho_max + B, ri = |s|/2 + rho_max - B - Dh,
+       rho_max = h_P |e_Q| + h_Q |e_P| with the largest h of the range's cells on P and Q,
+       B = 64 u emax (L_x + L_y + L_z) + 2^-1000 (at least 64 u G, G = |e_P| L_Q + |e_Q| L_P),
+       Dh = emax * sum (hmax - hmin) >= rho_max - rho_min: above the errors of the filter's and
+       rt_tri_box's computations together (docs/RAYTRACING.md, "The build's margin filter");
+       the filter off: B infinite, every cell undecided */
+    const double B = __atomic_load_n(&rt_filter_on, __ATOMIC_RELAXED)
+                         ? 64.0 * (DBL_EPSILON / 2) * emax * (L[0] + L[1] + L[2]) + 0x1p-1000
+                         : HUGE_VAL;
+    const double Bi = B + emax * ((hmax[0] - hmin[0]) + (hmax[1] - hmin[1]) + (hmax[2] - hmin[2]));
+    double ro[3][3], ri[3][3];
+    RT_BOUNDS(0, 1, 2);
+    RT_BOUNDS(1, 2, 0);
+    RT_BOUNDS(2, 0, 1);
     /* memo of the Y group per x (this z slab) and of the Z group per (x, y), as bit masks
        over x (RT_SPAN <= 32): bit ix of *k set when the group of that x is known, of *v when
-       it separates (no memset of byte arrays per slab and triangle) */
-    const int ny = c1[1] - c0[1] + 1;
+       it separates (no memset of byte arrays per slab and triangle); a group that the filter
+       leaves undecided is not kept (rare: every cell sharing it asks again) */
     uint32_t gzk[RT_SPAN], gzv[RT_SPAN];
-    for (int iy = 0; iy < ny; iy++)
-        gzk[iy] = gzv[iy] = 0;
+    int zfirst = 1; /* the first z slab tested: no memo yet (written by its rows) */
+    uint64_t nexact = 0;
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++) {
         rt_axis_cell *z = &ac[2][c[2] - c0[2]];
@@ -538,8 +636,8 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
             rt_axis_cell *y = &ac[1][iy];
             if (y->sep)
                 continue;
-            int gx = -1; /* the X group of this (y, z) */
-            uint32_t zk = gzk[iy], zv = gzv[iy];
+            int gx = 2; /* the X group of this (y, z); 2: not yet known */
+            uint32_t zk = zfirst ? 0 : gzk[iy], zv = zfirst ? 0 : gzv[iy];
             for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
                 const int ix = c[0] - c0[0];
                 const uint32_t bit = (uint32_t)1 << ix;
@@ -549,31 +647,47 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
                 const double pd = x->nv + y->nv + z->nv;
                 if (fabs(pd) > x->nh + y->nh + z->nh)
                     continue;
-                if (gx < 0)
-                    gx = rt_edge_group(y, z);
-                if (gx)
+                if (gx == 2)
+                    gx = rt_edge_filter(ro[0], ri[0], y, z);
+                if (gx > 0)
                     break; /* the same for every x of this row */
+                int und = gx < 0;
                 if (!(zk & bit)) {
-                    zk |= bit;
-                    if (rt_edge_group(x, y))
+                    const int r = rt_edge_filter(ro[2], ri[2], x, y);
+                    if (r >= 0)
+                        zk |= bit;
+                    if (r > 0)
                         zv |= bit;
+                    und |= r < 0;
                 }
                 if (zv & bit)
                     continue;
                 if (!(gyk & bit)) {
-                    gyk |= bit;
-                    if (rt_edge_group(z, x))
+                    const int r = rt_edge_filter(ro[1], ri[1], z, x);
+                    if (r >= 0)
+                        gyk |= bit;
+                    if (r > 0)
                         gyv |= bit;
+                    und |= r < 0;
                 }
                 if (gyv & bit)
                     continue;
+                if (und) {
+                    const double bc[3] = {x->bc, y->bc, z->bc}, h[3] = {x->h, y->h, z->h};
+                    nexact++;
+                    if (!rt_tri_box(t, e, n, bc, h))
+                        continue;
+                }
                 if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
                     return 0;
             }
             gzk[iy] = zk;
             gzv[iy] = zv;
         }
+        zfirst = 0;
     }
+    if (nexact)
+        __atomic_fetch_add(&rt_exact_cells, nexact, __ATOMIC_RELAXED);
     return 1;
 }
 

@@ -1,0 +1,246 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_rt_buildfilter.c -- the margin filter of the grid build (rt_build.c, rt_tri_cells;
+ * docs/RAYTRACING.md, "The build's margin filter") keeps the grid that the exact triangle/box
+ * tests make, where the filter cannot decide as well as where it can: the grid hash of each
+ * scene with the filter on equals the hash with it off (rt_build_set_filter(0): every cell
+ * through the exact test), on 1 and 2 build threads, and the filter did hand cells to the
+ * exact test (rt_build_exact_cells) on the scenes built for that.
+ * Scenes in [0, 8]^3 (two tiny anchor triangles fix the scene box, so that the build's eps =
+ * 1e-9 (scale + extent) = 1.6e-8 and the eps-enlarged cell boxes of an 8^3 grid over that box
+ * are known here exactly, computed as the build computes them):
+ *  - "touch": triangles with an edge whose projection along one axis passes through a corner
+ *    of a cell's enlarged box (the edge test's separation exactly 0 in exact arithmetic), or
+ *    1, 4 and 64 ulps and 1e-14 .. 1e-10 beside it, on both sides, for the three axes, the
+ *    four corners of a cell face and several cells; the third vertex on the far side of the
+ *    edge (the edge axis decides) or on the near side;
+ *  - "lattice": random triangles with vertices on the enlarged boxes' faces (q - eps, q + eps)
+ *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
+ *  - "lattice" again with the second level (crowded cells get sub-grids).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <cmocka.h>
+#define GKS3D_RT_BUILDING 1
+#include "rt_internal.h"
+#include "rt_testutil.h"
+
+enum { N = 8 }; /* grid cells per axis over [0, 8]^3: cell width 1 */
+
+static const double EPS = 1e-9 * (8.0 + 8.0); /* the build's eps for this scene box */
+
+/* the enlarged box of cell q on an axis as rt_build.c computes it (grid lo 0, cw 1, hi 8) */
+static double cell_lo(int q)
+{
+    return (q == 0 ? 0.0 : 0.0 + q * 1.0) - EPS;
+}
+
+static double cell_hi(int q)
+{
+    return (q == N - 1 ? 8.0 : 0.0 + (q + 1) * 1.0) + EPS;
+}
+
+typedef struct tris {
+    double *v; /* 9 per triangle */
+    size_t n, cap;
+} tris;
+
+static void add_tri(tris *t, const double v[9])
+{
+    if (t->n == t->cap) {
+        t->cap = t->cap ? 2 * t->cap : 256;
+        t->v = realloc(t->v, t->cap * 9 * sizeof(double));
+        assert_non_null(t->v);
+    }
+    memcpy(t->v + 9 * t->n++, v, 9 * sizeof(double));
+}
+
+/* a triangle given in (u, p, q) coordinates, where p and q are the two axes of the projection
+   and u the third: axis a of the triangle's points gets (u, p, q)[(a - ax + 3) % 3] */
+static void add_rot(tris *t, int ax, const double upq[3][3])
+{
+    double v[9];
+    for (int k = 0; k < 3; k++)
+        for (int a = 0; a < 3; a++)
+            v[3 * k + a] = upq[k][(a - ax + 3) % 3];
+    add_tri(t, v);
+}
+
+/* "touch": see the head comment */
+static void touch_scene(tris *t)
+{
+    const double offs[] = {0.0, 1e-14, 1e-13, 1e-12, 1e-10};
+    const int ulps[] = {1, 4, 64};
+    for (int ax = 0; ax < 3; ax++)
+        for (int qp = 2; qp <= 5; qp += 3)
+            for (int qq = 2; qq <= 5; qq += 3)
+                for (int corner = 0; corner < 4; corner++) {
+                    /* the corner (P, Q) of cell (qp, qq) in the projection; the cell lies on
+                       the side sp, sq of it (+1: towards larger coordinates) */
+                    const double P = corner & 1 ? cell_hi(qp) : cell_lo(qp);
+                    const double Q = corner & 2 ? cell_hi(qq) : cell_lo(qq);
+                    const double sp = corner & 1 ? -1.0 : 1.0, sq = corner & 2 ? -1.0 : 1.0;
+                    /* an edge through (P, Q) along (sp, -sq) keeps the cell on one side (the
+                       side of (sp, sq)); shifted by d along (sp, sq) */
+                    for (int side = -1; side <= 1; side += 2)
+                        for (int far = 0; far < 2; far++) {
+                            double ds[2 * (5 + 3)];
+                            int nd = 0;
+                            for (size_t k = 0; k < sizeof offs / sizeof *offs; k++)
+                                ds[nd++] = side * offs[k];
+                            for (size_t k = 0; k < sizeof ulps / sizeof *ulps; k++)
+                                ds[nd++] = side * ulps[k] * (nextafter(P, INFINITY) - P);
+                            for (int k = 0; k < nd; k++) {
+                                const double d = ds[k];
+                                const double p0 = P + d * sp, q0 = Q + d * sq;
+                                /* the third vertex: away from the cell (far) or towards it */
+                                const double w = far ? -1.0 : 1.0;
+                                const double upq[3][3] = {
+                                    {2.5, p0 - 1.0 * sp, q0 + 1.0 * sq},
+                                    {5.5, p0 + 1.0 * sp, q0 - 1.0 * sq},
+                                    {4.0, p0 + w * 0.75 * sp, q0 + w * 0.75 * sq},
+                                };
+                                add_rot(t, ax, upq);
+                            }
+                        }
+                }
+    /* planes through a cell corner, and a vertex on a cell face, exactly */
+    for (int q = 2; q <= 4; q++) {
+        const double X = cell_hi(q), Y = cell_hi(q + 1), Z = cell_lo(q);
+        const double v1[9] = {X + 1.0, Y, Z - 1.0, X, Y + 1.0, Z - 1.0, X, Y, Z};
+        add_tri(t, v1);
+        const double v2[9] = {X + 0.5, Y - 0.5, Z, X - 0.5, Y, Z + 0.5, X, Y + 0.5, Z - 0.5};
+        add_tri(t, v2);
+        const double v3[9] = {cell_lo(q), 3.25, 4.5, cell_lo(q) - 0.75, 4.75, 3.5,
+                              cell_lo(q) - 0.5, 3.5, 5.25};
+        add_tri(t, v3);
+    }
+}
+
+/* "lattice": n random triangles near the centre, vertices on q - eps, q + eps, q, q + 1/2 */
+static void lattice_scene(tris *t, int n, uint64_t seed)
+{
+    uint64_t st = seed;
+    for (int k = 0; k < n; k++) {
+        double v[9];
+        const int base[3] = {2 + (int)(4 * rtu_rand(&st)), 2 + (int)(4 * rtu_rand(&st)),
+                             2 + (int)(4 * rtu_rand(&st))};
+        for (int j = 0; j < 9; j++) {
+            const int q = base[j % 3] + (int)(3 * rtu_rand(&st)) - 1;
+            const int kind = (int)(4 * rtu_rand(&st));
+            v[j] = kind == 0 ? cell_lo(q) : kind == 1 ? cell_hi(q - 1) : kind == 2 ? q : q + 0.5;
+        }
+        add_tri(t, v);
+    }
+}
+
+static rt_scene *make_scene(const tris *t)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    const int three = 3;
+    /* the anchors: the scene box is [0, 8]^3 */
+    const double a0[9] = {0, 0, 0, 0.01, 0, 0, 0, 0.01, 0};
+    const double a1[9] = {8, 8, 8, 7.99, 8, 8, 8, 7.99, 8};
+    assert_true(rt_scene_add_polygon(sc, 1, &three, a0, surf, surf) >= 0);
+    assert_true(rt_scene_add_polygon(sc, 1, &three, a1, surf, surf) >= 0);
+    for (size_t k = 0; k < t->n; k++)
+        assert_true(rt_scene_add_polygon(sc, 1, &three, t->v + 9 * k, surf, surf) >= 0);
+    return sc;
+}
+
+/* commits t with the filter on and off on 1 and 2 threads; the hashes agree; returns the
+   cells the filter left to the exact test (1 thread) */
+static uint64_t check(const tris *t, int subgrids, const char *name)
+{
+    rt_scene *sc = make_scene(t);
+    uint64_t hash = 0, exact = 0;
+    for (int threads = 1; threads <= 2; threads++)
+        for (int on = 1; on >= 0; on--) {
+            rt_build_options o = {.brute_threshold = 0, .threads = threads,
+                                  .grid_res = {N, N, N}, .grid_box = {0, 0, 0, 8, 8, 8},
+                                  .no_subgrids = !subgrids, .sub_min = subgrids ? 4 : 0};
+            rt_build_set_filter(on);
+            const uint64_t e0 = rt_build_exact_cells();
+            const int rc = rt_scene_commit(sc, &o);
+            const uint64_t e1 = rt_build_exact_cells();
+            rt_build_set_filter(1);
+            assert_int_equal(rc, RT_OK);
+            assert_true(sc->use_grid);
+            /* the box this test computed the cells of */
+            assert_true(sc->scale == 8.0);
+            for (int a = 0; a < 3; a++) {
+                assert_true(sc->bbox[a] == 0.0 && sc->bbox[3 + a] == 8.0);
+                assert_true(sc->grid.b.lo[a] == 0.0 && sc->grid.b.hi[a] == 8.0);
+                assert_true(sc->grid.b.cw[a] == 1.0 && sc->grid.b.n[a] == N);
+            }
+            rt_grid_info gi;
+            assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+            if (threads == 1 && on)
+                exact = e1 - e0;
+            printf("%s, %d thread(s), filter %s: %zu triangles, grid %016llx, %llu refs, "
+                   "%llu sub refs, %llu cells to the exact test\n", name, threads,
+                   on ? "on" : "off", t->n, (unsigned long long)gi.hash,
+                   (unsigned long long)gi.refs, (unsigned long long)gi.subrefs,
+                   (unsigned long long)(e1 - e0));
+            if (hash == 0)
+                hash = gi.hash;
+            else if (gi.hash != hash)
+                fail_msg("%s: grid %016llx with the filter %s on %d thread(s), %016llx before",
+                         name, (unsigned long long)gi.hash, on ? "on" : "off", threads,
+                         (unsigned long long)hash);
+            if (subgrids)
+                assert_true(gi.subgrids > 0);
+        }
+    rt_scene_free(sc);
+    return exact;
+}
+
+static void test_touch(void **state)
+{
+    (void)state;
+    tris t = {0};
+    touch_scene(&t);
+    const uint64_t exact = check(&t, 0, "touch");
+    assert_true(exact > 0); /* the filter met separations within its bound */
+    free(t.v);
+}
+
+static void test_lattice(void **state)
+{
+    (void)state;
+    tris t = {0};
+    lattice_scene(&t, 3000, 99);
+    const uint64_t exact = check(&t, 0, "lattice");
+    assert_true(exact > 0);
+    free(t.v);
+}
+
+static void test_lattice_sub(void **state)
+{
+    (void)state;
+    tris t = {0};
+    lattice_scene(&t, 3000, 7);
+    (void)check(&t, 1, "lattice, second level");
+    free(t.v);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_touch),
+        cmocka_unit_test(test_lattice),
+        cmocka_unit_test(test_lattice_sub),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
