@@ -159,9 +159,18 @@ typedef struct rt_pair {
     uint32_t cell, prim;
 } rt_pair;
 
+/* the eps-enlarged cell boxes of a grid of at most RT_TAB cells per axis (a sub-grid) by
+   axis: centre and half size of cell q on axis a, the values rt_axis_box computes */
+enum { RT_TAB = 32 };
+typedef struct rt_cell_tab {
+    const rt_box *box; /* the grid they belong to */
+    double bc[3][RT_TAB], h[3][RT_TAB];
+} rt_cell_tab;
+
 /* one thread's build scratch: its (cell, primitive) pairs in primitive order, and with cnt
    (parallel top level) the number of its pairs per cell */
 typedef struct rt_build {
+    const rt_cell_tab *tab; /* the cell boxes of the grid being filled, or NULL (rt_sub_cells) */
     rt_pair *pairs;
     size_t npairs, cap;
     rt_clipbuf cb;
@@ -445,6 +454,27 @@ static inline void rt_axis_box(const rt_box *g, int a, int q, double eps, double
     *h = 0.5 * (hi - lo);
 }
 
+/* rt_axis_box's values, from tab when it is not NULL (then tab->box is g) */
+static inline void rt_tab_box(const rt_cell_tab *tab, const rt_box *g, int a, int q, double eps,
+                              double *bc, double *h)
+{
+    if (tab) {
+        *bc = tab->bc[a][q];
+        *h = tab->h[a][q];
+    } else {
+        rt_axis_box(g, a, q, eps, bc, h);
+    }
+}
+
+/* tab := the cell boxes of g (at most RT_TAB cells per axis), as rt_axis_box gives them */
+static void rt_tab_fill(rt_cell_tab *tab, const rt_box *g, double eps)
+{
+    tab->box = g;
+    for (int a = 0; a < 3; a++)
+        for (int q = 0; q < g->n[a]; q++)
+            rt_axis_box(g, a, q, eps, &tab->bc[a][q], &tab->h[a][q]);
+}
+
 /* Triangle t whose cells span one axis a only (c0 == c1 on the others), as rt_tri_cells
  * decides, with fewer tests. When the whole triangle lies in the cell's box shrunk by eps on
  * the two other axes, a cell of the row whose face test on a keeps it with that margin too
@@ -461,11 +491,12 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
                       const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
                       size_t prim, int a)
 {
+    const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
     double nv[3], nh[3], bc[3], h[3];
     for (int s = 0; s < 3; s++) {
         if (s == a)
             continue;
-        rt_axis_box(g, s, c0[s], eps, &bc[s], &h[s]);
+        rt_tab_box(tab, g, s, c0[s], eps, &bc[s], &h[s]);
         const double v0 = t->v[0][s] - bc[s], v1 = t->v[1][s] - bc[s], v2 = t->v[2][s] - bc[s];
         if (!(rt_dmin(v0, rt_dmin(v1, v2)) >= eps - h[s] &&
               rt_dmax(v0, rt_dmax(v1, v2)) <= h[s] - eps))
@@ -475,7 +506,7 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
     }
     int c[3] = {c0[0], c0[1], c0[2]};
     for (c[a] = c0[a]; c[a] <= c1[a]; c[a]++) {
-        rt_axis_box(g, a, c[a], eps, &bc[a], &h[a]);
+        rt_tab_box(tab, g, a, c[a], eps, &bc[a], &h[a]);
         const double v0 = t->v[0][a] - bc[a], v1 = t->v[1][a] - bc[a], v2 = t->v[2][a] - bc[a];
         const double mn = rt_dmin(v0, rt_dmin(v1, v2)), mx = rt_dmax(v0, rt_dmax(v1, v2));
         if (mn > h[a] || mx < -h[a]) /* the face test (rt_sep) */
@@ -536,8 +567,8 @@ void rt_build_set_filter(int on)
 static inline __attribute__((always_inline)) void
 rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
               const int c0[3], const int c1[3], double eps, const double hs[3][3],
-              const double ae[3][3], int a, rt_axis_cell *ac, double *L, double *hmin,
-              double *hmax)
+              const double ae[3][3], int a, const rt_cell_tab *tab, rt_axis_cell *ac,
+              double *L, double *hmin, double *hmax)
 {
     const int b1 = a == 2 ? 0 : a + 1, b2 = a == 0 ? 2 : a - 1;
     const double o = t->v[0][a], na = n[a], ana = fabs(n[a]);
@@ -547,9 +578,8 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt
     double l = rt_dmax(ae[0][a], ae[2][a]), hn = HUGE_VAL, hx = 0.0;
     for (int q = c0[a]; q <= c1[a]; q++) {
         rt_axis_cell *x = &ac[q - c0[a]];
-        const double lo = (q == 0 ? g->lo[a] : g->lo[a] + q * g->cw[a]) - eps;
-        const double hi = (q == g->n[a] - 1 ? g->hi[a] : g->lo[a] + (q + 1) * g->cw[a]) + eps;
-        const double bc = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+        double bc, h;
+        rt_tab_box(tab, g, a, q, eps, &bc, &h);
         x->bc = bc;
         x->h = h;
         for (int k = 0; k < 3; k++)
@@ -601,9 +631,10 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
         }
     double L[3], hmin[3], hmax[3];
     rt_axis_cell ac[3][RT_SPAN];
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 0, ac[0], &L[0], &hmin[0], &hmax[0]);
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 1, ac[1], &L[1], &hmin[1], &hmax[1]);
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 2, ac[2], &L[2], &hmin[2], &hmax[2]);
+    const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 0, tab, ac[0], &L[0], &hmin[0], &hmax[0]);
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 1, tab, ac[1], &L[1], &hmin[1], &hmax[1]);
+    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 2, tab, ac[2], &L[2], &hmin[2], &hmax[2]);
     /* the bounds of rt_edge_filter: ro = |s|/2 + rho_max + B, ri = |s|/2 + rho_max - B - Dh,
        rho_max = h_P |e_Q| + h_Q |e_P| with the largest h of the range's cells on P and Q,
        B = 64 u emax (L_x + L_y + L_z) + 2^-1000 (at least 64 u G, G = |e_P| L_Q + |e_Q| L_P),
@@ -1088,6 +1119,7 @@ static void rt_sub_cells(void *arg, int k, int n)
     size_t total = 0;
     int err = 0;
     const size_t n0 = (size_t)g->b.n[0], n01 = n0 * (size_t)g->b.n[1];
+    rt_cell_tab tab; /* the cell boxes of the sub-grid being filled (rt_tri_cells) */
     for (size_t ci = pt->c0; ci < pt->c1 && !err; ci++) {
         uint32_t cnt = g->off[ci + 1] - g->off[ci];
         g->sub[ci] = -1;
@@ -1114,7 +1146,7 @@ static void rt_sub_cells(void *arg, int k, int n)
             sg->b.lo[a] = rt_dmax(lo[a], rt_dmin(sb[a], mid - eps));
             sg->b.hi[a] = rt_dmin(hi[a], rt_dmax(sb[3 + a], mid + eps));
         }
-        rt_box_resolution(&sg->b, j->sub_factor * nsmall, 32);
+        rt_box_resolution(&sg->b, j->sub_factor * nsmall, RT_TAB); /* RT_TAB: rt_cell_tab */
         rt_box_finish(&sg->b);
         size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
         if (total + nc > UINT32_MAX - 1) {
@@ -1123,12 +1155,15 @@ static void rt_sub_cells(void *arg, int k, int n)
         }
         sg->first = (uint32_t)total;
         b->npairs = 0;
+        rt_tab_fill(&tab, &sg->b, eps);
+        b->tab = &tab;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
             if (!keep[r]) {
                 const int tri = sc->prim[g->refs[r]].kind == RT_KIND_TRI;
                 const double *tv = tri ? b->tpts + 9 * (size_t)(r - g->off[ci]) : NULL;
                 rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, tv, &err);
             }
+        b->tab = NULL;
         if (!err && pt->nref + b->npairs > UINT32_MAX - 1)
             err = 2;
         if (!err && (!rt_big_grow(&pt->off, total + nc, sizeof(uint32_t)) ||

@@ -16,7 +16,8 @@
  *    edge (the edge axis decides) or on the near side;
  *  - "lattice": random triangles with vertices on the enlarged boxes' faces (q - eps, q + eps)
  *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
- *  - "lattice" again with the second level (crowded cells get sub-grids).
+ *  - "lattice" again with the second level (crowded cells get sub-grids, whose cell boxes the
+ *    build takes from a table).
  */
 #include <stdarg.h>
 #include <stddef.h>
