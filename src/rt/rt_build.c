@@ -416,7 +416,6 @@ enum { RT_SPAN = 32 };
 
 typedef struct rt_axis_cell {
     double bc, h;  /* the eps-enlarged cell box on this axis: centre, half size */
-    double v[3];   /* t->v[k][a] - bc (the face test) */
     double cv[3];  /* [i]: e[i][b1] * (bc - V0[a]) + s_gi / 2, g = b2 (the group in which this
                       axis is P, see rt_edge_filter) */
     double cw[3];  /* [i]: e[i][b2] * (bc - V0[a]), for the group g = b1 (this axis is Q) */
@@ -487,9 +486,9 @@ static void rt_tab_fill(rt_cell_tab *tab, const rt_box *g, double eps)
  * same decision as rt_tri_cells', bit for bit).
  * Returns 1, 0 (no memory), or -1 when the triangle is not inside on the other two axes
  * (nothing pushed). */
-static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
-                      const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
-                      size_t prim, int a)
+static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], const double bb[6],
+                      const rt_box *g, const int c0[3], const int c1[3], double eps, rt_build *b,
+                      size_t base, size_t prim, int a)
 {
     const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
     double nv[3], nh[3], bc[3], h[3];
@@ -497,18 +496,16 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
         if (s == a)
             continue;
         rt_tab_box(tab, g, s, c0[s], eps, &bc[s], &h[s]);
-        const double v0 = t->v[0][s] - bc[s], v1 = t->v[1][s] - bc[s], v2 = t->v[2][s] - bc[s];
-        if (!(rt_dmin(v0, rt_dmin(v1, v2)) >= eps - h[s] &&
-              rt_dmax(v0, rt_dmax(v1, v2)) <= h[s] - eps))
+        /* min_k (V_k - bc) is (min_k V_k) - bc, bit for bit (rounding is monotonic) */
+        if (!(bb[s] - bc[s] >= eps - h[s] && bb[3 + s] - bc[s] <= h[s] - eps))
             return -1;
-        nv[s] = n[s] * v0;
+        nv[s] = n[s] * (t->v[0][s] - bc[s]);
         nh[s] = h[s] * fabs(n[s]);
     }
     int c[3] = {c0[0], c0[1], c0[2]};
     for (c[a] = c0[a]; c[a] <= c1[a]; c[a]++) {
         rt_tab_box(tab, g, a, c[a], eps, &bc[a], &h[a]);
-        const double v0 = t->v[0][a] - bc[a], v1 = t->v[1][a] - bc[a], v2 = t->v[2][a] - bc[a];
-        const double mn = rt_dmin(v0, rt_dmin(v1, v2)), mx = rt_dmax(v0, rt_dmax(v1, v2));
+        const double mn = bb[a] - bc[a], mx = bb[3 + a] - bc[a];
         if (mn > h[a] || mx < -h[a]) /* the face test (rt_sep) */
             continue;
         if (!(mn <= h[a] - eps && mx >= eps - h[a])) {
@@ -516,7 +513,7 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
                 return 0;
             continue;
         }
-        nv[a] = n[a] * v0;
+        nv[a] = n[a] * (t->v[0][a] - bc[a]);
         nh[a] = h[a] * fabs(n[a]);
         const double pd = nv[0] + nv[1] + nv[2];
         if (fabs(pd) > nh[0] + nh[1] + nh[2])
@@ -565,7 +562,8 @@ void rt_build_set_filter(int on)
    it is inlined): the cell box, the face test, the plane's terms, the filter's products; L,
    hmin, hmax as rt_tri_cells describes them */
 static inline __attribute__((always_inline)) void
-rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
+rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const double bb[6],
+              const rt_box *g,
               const int c0[3], const int c1[3], double eps, const double hs[3][3],
               const double ae[3][3], int a, const rt_cell_tab *tab, rt_axis_cell *ac,
               double *L, double *hmin, double *hmax)
@@ -582,10 +580,10 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt
         rt_tab_box(tab, g, a, q, eps, &bc, &h);
         x->bc = bc;
         x->h = h;
-        for (int k = 0; k < 3; k++)
-            x->v[k] = t->v[k][a] - bc;
-        x->sep = rt_sep(x->v[0], x->v[1], x->v[2], h);
-        x->nv = na * x->v[0];
+        /* rt_sep of V_k - bc: min_k (V_k - bc) is (min_k V_k) - bc, bit for bit (rounding
+           is monotonic), the same for max */
+        x->sep = bb[a] - bc > h || bb[3 + a] - bc < -h;
+        x->nv = na * (t->v[0][a] - bc);
         x->nh = h * ana;
         const double d = bc - o;
         x->cv[0] = f0 * d + m0;
@@ -603,14 +601,14 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt
     *hmax = hx;
 }
 
-static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const rt_box *g,
-                        const int c0[3], const int c1[3], double eps, rt_build *b, size_t base,
-                        size_t prim)
+static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3],
+                        const double bb[6], const rt_box *g, const int c0[3], const int c1[3],
+                        double eps, rt_build *b, size_t base, size_t prim)
 {
     const int spans = (c0[0] != c1[0]) + (c0[1] != c1[1]) + (c0[2] != c1[2]);
     if (spans == 1) {
         const int a = c0[0] != c1[0] ? 0 : c0[1] != c1[1] ? 1 : 2;
-        const int r = rt_tri_row(t, e, n, g, c0, c1, eps, b, base, prim, a);
+        const int r = rt_tri_row(t, e, n, bb, g, c0, c1, eps, b, base, prim, a);
         if (r >= 0)
             return r;
     }
@@ -632,9 +630,9 @@ static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3]
     double L[3], hmin[3], hmax[3];
     rt_axis_cell ac[3][RT_SPAN];
     const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 0, tab, ac[0], &L[0], &hmin[0], &hmax[0]);
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 1, tab, ac[1], &L[1], &hmin[1], &hmax[1]);
-    rt_axis_cells(t, e, n, g, c0, c1, eps, hs, ae, 2, tab, ac[2], &L[2], &hmin[2], &hmax[2]);
+    rt_axis_cells(t, e, n, bb, g, c0, c1, eps, hs, ae, 0, tab, ac[0], &L[0], &hmin[0], &hmax[0]);
+    rt_axis_cells(t, e, n, bb, g, c0, c1, eps, hs, ae, 1, tab, ac[1], &L[1], &hmin[1], &hmax[1]);
+    rt_axis_cells(t, e, n, bb, g, c0, c1, eps, hs, ae, 2, tab, ac[2], &L[2], &hmin[2], &hmax[2]);
     /* the bounds of rt_edge_filter: ro = |s|/2 + rho_max + B, ri = |s|/2 + rho_max - B - Dh,
        rho_max = h_P |e_Q| + h_Q |e_P| with the largest h of the range's cells on P and Q,
        B = 64 u emax (L_x + L_y + L_z) + 2^-1000 (at least 64 u G, G = |e_P| L_Q + |e_Q| L_P),
@@ -857,7 +855,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
     const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
                         c1[2] - c0[2] < RT_SPAN;
     if (p->kind == RT_KIND_TRI && by_axis) {
-        if (!rt_tri_cells(&q.tri, q.te, q.tn, g, c0, c1, eps, b, base, i))
+        if (!rt_tri_cells(&q.tri, q.te, q.tn, bb, g, c0, c1, eps, b, base, i))
             *err = 1;
         return;
     }
