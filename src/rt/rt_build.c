@@ -401,7 +401,8 @@ static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], dou
  * (at most RT_SPAN per axis), pushing (base + cell, prim) for each cell it overlaps: the same
  * decisions as rt_tri_box cell by cell, bit for bit (a cell is taken when no test separates,
  * whatever the order of the tests). The face and plane tests are rt_tri_box's own, with their
- * per-axis terms computed once per axis and cell row. The 9 edge axes a = e_i x X_g go
+ * per-axis terms computed once per axis and cell row (the face test from the triangle's box:
+ * the same values, see rt_axis_cells). The 9 edge axes a = e_i x X_g go
  * through a margin filter (docs/RAYTRACING.md, "The build's margin filter"): with V0 the
  * triangle's first vertex, a.(V_k - bc) = a.(V_k - V0) - a.(bc - V0); the first term takes
  * two values per axis up to rounding (0 and s, a component of a cross product of the edges,
