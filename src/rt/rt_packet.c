@@ -104,6 +104,9 @@ typedef struct rt_pk {
                                                     the rt_rayx's own, or in rot */
     double rot[RT_PACKET][2][3];
     rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
+    const rt_ray *rays;      /* the rays as given */
+    uint64_t made;           /* rays whose r[k] is made (rt_pk_make; all but after
+                                rt_pk_setup_avx2, which leaves them to the first exact test) */
 } rt_pk;
 
 /* ---- the cull kernels: rays of mask whose edge functions may not be mixed ---- */
@@ -539,6 +542,165 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
     return 1;
 }
 
+#ifdef RT_PK_X86
+/* The set-up of a packet of rays that are all plain (every check of rt_rayx_setup passed by
+   a wide margin, no component flushed), on a grid that is not rotated, 4 rays a step with
+   AVX2 (no FMA), and without the rays' rt_rayx: those are made by rt_pk_make when a ray
+   first reaches an exact test (most walked rays never do: the cull rules them out). Every
+   quantity is computed with the operations of the general set-up, lane by lane:
+   - the checks, in integer compares of the bits before any floating operation: origin and
+     tmin within 1e30, direction components within [1e-100, 1e30], tmax not NaN, and then
+     tmin <= tmax. Such a ray passes rt_rayx_check (RT_RAY_MAX 1e100, largest component at
+     least 1e-100) and keeps every component (none is below 1e-150 of the largest), so its
+     rt_rayx has the ray's own o and d; its octant's product of components is not 0 (at
+     least 1e-300);
+   - the exact test's axes (rt_rayx_shear's rule: kz the first of the largest |d|, kx and
+     ky swapped for a negative d[kz]) and the signs of the components, the same in every
+     lane (else the general set-up decides); kz is also the slicing axis K here (rt_pk_ray:
+     the same rule on the same d); sz = 1 / d[kz], sx = d[kx] sz, sy = d[ky] sz;
+   - the grid box's range (rt_pk_tbox's operations, as rt_pk_tbox4_body) and the extent
+     along K (rt_pk_range's).
+   Returns 0 if a ray is not plain or the rays do not share the axes and octant: then the
+   general set-up runs (and decides coherence as before). */
+__attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_ray *rays)
+{
+    const rt_box *b = &p->sc->grid.b;
+    const int n = p->n;
+    /* the packet's axes from ray 0 (rt_rayx_shear's rule) */
+    const double *d0 = rays[0].dir;
+    const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
+    const int kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
+    const int neg = d0[kz] < 0.0;
+    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
+    const int kx = next[neg][kz][0], ky = next[neg][kz][1];
+    const int sgn[3] = {d0[0] < 0.0, d0[1] < 0.0, d0[2] < 0.0};
+    double lim[3] = {1e30, 1e-100, INFINITY};
+    int64_t blim[3];
+    memcpy(blim, lim, sizeof blim);
+    const __m256i absm = _mm256_set1_epi64x(INT64_MAX);
+    const __m256i big = _mm256_set1_epi64x(blim[0]), small = _mm256_set1_epi64x(blim[1]),
+                  inf = _mm256_set1_epi64x(blim[2]);
+    const __m256d one = _mm256_set1_pd(1.0), sg = _mm256_set1_pd(neg ? -1.0 : 1.0);
+    const __m256d pinf = _mm256_set1_pd(INFINITY), ninf = _mm256_set1_pd(-INFINITY);
+    __m256d usmin = pinf, usmax = ninf, uemin = pinf, uemax = ninf;
+    uint64_t live = 0;
+    for (int k = 0; k < n; k += 4) {
+        const rt_ray *q = rays + k;
+        __m256d x[4], y[4], v[8];
+        for (int j = 0; j < 4; j++) {
+            x[j] = _mm256_loadu_pd(q[j].org);
+            y[j] = _mm256_loadu_pd(q[j].dir + 1);
+        }
+        for (int h = 0; h < 2; h++) { /* v[0..7] = o0, o1, o2, d0, d1, d2, tmin, tmax */
+            const __m256d *w = h ? y : x;
+            const __m256d l01 = _mm256_unpacklo_pd(w[0], w[1]),
+                          h01 = _mm256_unpackhi_pd(w[0], w[1]);
+            const __m256d l23 = _mm256_unpacklo_pd(w[2], w[3]),
+                          h23 = _mm256_unpackhi_pd(w[2], w[3]);
+            v[4 * h + 0] = _mm256_permute2f128_pd(l01, l23, 0x20);
+            v[4 * h + 1] = _mm256_permute2f128_pd(h01, h23, 0x20);
+            v[4 * h + 2] = _mm256_permute2f128_pd(l01, l23, 0x31);
+            v[4 * h + 3] = _mm256_permute2f128_pd(h01, h23, 0x31);
+        }
+        __m256i bad = _mm256_setzero_si256();
+        for (int c = 0; c < 7; c++) {
+            const __m256i a = _mm256_and_si256(_mm256_castpd_si256(v[c]), absm);
+            bad = _mm256_or_si256(bad, _mm256_cmpgt_epi64(a, big));
+            if (c >= 3 && c < 6)
+                bad = _mm256_or_si256(bad, _mm256_cmpgt_epi64(small, a));
+        }
+        bad = _mm256_or_si256(bad, _mm256_cmpgt_epi64(_mm256_and_si256(_mm256_castpd_si256(v[7]),
+                                                                       absm), inf));
+        if (!_mm256_testz_si256(bad, bad))
+            return 0;
+        /* every value checked: floating operations from here on */
+        if (_mm256_movemask_pd(_mm256_cmp_pd(v[6], v[7], _CMP_LE_OQ)) != 15)
+            return 0;
+        for (int a = 0; a < 3; a++) /* the octant */
+            if (_mm256_movemask_pd(v[3 + a]) != (sgn[a] ? 15 : 0))
+                return 0;
+        const __m256d fabsm = _mm256_castsi256_pd(absm);
+        const __m256d ax = _mm256_and_pd(v[3], fabsm), ay = _mm256_and_pd(v[4], fabsm),
+                      az = _mm256_and_pd(v[5], fabsm);
+        const int c1 = _mm256_movemask_pd(_mm256_or_pd(_mm256_cmp_pd(ax, ay, _CMP_LT_OQ),
+                                                       _mm256_cmp_pd(ax, az, _CMP_LT_OQ)));
+        const int c2 = _mm256_movemask_pd(_mm256_cmp_pd(ay, az, _CMP_LT_OQ));
+        if (kz == 0 ? c1 != 0 : (c1 != 15 || c2 != (kz == 2 ? 15 : 0)))
+            return 0; /* not the axes of ray 0 */
+        const __m256d sz = _mm256_div_pd(one, v[3 + kz]);
+        const __m256d sx = _mm256_mul_pd(v[3 + kx], sz), sy = _mm256_mul_pd(v[3 + ky], sz);
+        /* the box (rt_pk_tbox4_body's operations) */
+        __m256d T0 = v[6], T1 = v[7];
+        for (int a = 0; a < 3; a++) {
+            const __m256d inv = _mm256_div_pd(one, v[3 + a]);
+            const __m256d ta = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->lo[a]), v[a]), inv);
+            const __m256d tb = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->hi[a]), v[a]), inv);
+            const __m256d tn = _mm256_min_pd(ta, tb), tf = _mm256_max_pd(tb, ta);
+            T0 = _mm256_max_pd(tn, T0);
+            T1 = _mm256_min_pd(tf, T1);
+        }
+        /* walked: t0 <= t1 and t0 finite (rt_pk_range) */
+        const __m256i a0 = _mm256_and_si256(_mm256_castpd_si256(T0), absm);
+        const __m256d in = _mm256_and_pd(_mm256_cmp_pd(T0, T1, _CMP_LE_OQ),
+                                         _mm256_castsi256_pd(_mm256_cmpgt_epi64(inf, a0)));
+        const __m256d oK = v[kz], dK = v[3 + kz];
+        const __m256d us = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T0, dK)));
+        const __m256d ue = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T1, dK)));
+        /* rays not walked: 0 in every lane (harmless, never in a mask) */
+        _mm256_storeu_pd(p->ox + k, _mm256_and_pd(in, v[kx]));
+        _mm256_storeu_pd(p->oy + k, _mm256_and_pd(in, v[ky]));
+        _mm256_storeu_pd(p->oz + k, _mm256_and_pd(in, oK));
+        _mm256_storeu_pd(p->sx + k, _mm256_and_pd(in, sx));
+        _mm256_storeu_pd(p->sy + k, _mm256_and_pd(in, sy));
+        _mm256_storeu_pd(p->oK + k, _mm256_and_pd(in, oK));
+        /* K = kz; a1, a2 = kx, ky, swapped for a negative d[kz] (rt_pk_ray) */
+        _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, v[neg ? ky : kx]));
+        _mm256_storeu_pd(p->o2 + k, _mm256_and_pd(in, v[neg ? kx : ky]));
+        _mm256_storeu_pd(p->m1 + k, _mm256_and_pd(in, neg ? sy : sx));
+        _mm256_storeu_pd(p->m2 + k, _mm256_and_pd(in, neg ? sx : sy));
+        _mm256_storeu_pd(p->us + k, _mm256_and_pd(in, us));
+        _mm256_storeu_pd(p->ue + k, _mm256_and_pd(in, ue));
+        _mm256_storeu_pd(p->t1 + k, T1);
+        usmin = _mm256_min_pd(usmin, _mm256_blendv_pd(pinf, us, in));
+        usmax = _mm256_max_pd(usmax, _mm256_blendv_pd(ninf, us, in));
+        uemin = _mm256_min_pd(uemin, _mm256_blendv_pd(pinf, ue, in));
+        uemax = _mm256_max_pd(uemax, _mm256_blendv_pd(ninf, ue, in));
+        live |= (uint64_t)_mm256_movemask_pd(in) << k;
+    }
+    double e[4][4];
+    _mm256_storeu_pd(e[0], usmin);
+    _mm256_storeu_pd(e[1], usmax);
+    _mm256_storeu_pd(e[2], uemin);
+    _mm256_storeu_pd(e[3], uemax);
+    p->usmin = fmin(fmin(e[0][0], e[0][1]), fmin(e[0][2], e[0][3]));
+    p->usmax = fmax(fmax(e[1][0], e[1][1]), fmax(e[1][2], e[1][3]));
+    p->uemin = fmin(fmin(e[2][0], e[2][1]), fmin(e[2][2], e[2][3]));
+    p->uemax = fmax(fmax(e[3][0], e[3][1]), fmax(e[3][2], e[3][3]));
+    p->live = live;
+    p->made = 0;
+    p->kx = kx;
+    p->ky = ky;
+    p->kz = kz;
+    p->K = kz;
+    p->a1 = (kz + 1) % 3;
+    p->a2 = (kz + 2) % 3;
+    p->sg = neg ? -1 : 1;
+    for (int a = 0; a < 3; a++) {
+        p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
+        p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
+    }
+    for (int k = 0; k < n; k++) {
+        p->go[k] = p->r[k].o; /* the ray's own o and d once made (no component flushed) */
+        p->gd[k] = p->r[k].d;
+        p->best[k] = INFINITY;
+        p->eb[k] = 0.0;
+        p->bi[k] = -1;
+        p->nh[k] = 0;
+    }
+    return 1;
+}
+#endif
+
 /* the packet's rays: 1, or 0 if they are not coherent (different axes or octants, a zero
    direction component) */
 static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
@@ -550,9 +712,24 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->sc = sc;
     p->n = (int)n;
     p->any = any;
-    p->live = p->hit = p->over = p->fmask = 0;
+    p->hit = p->over = p->fmask = 0;
     p->hbox = ctx->hbox;
     p->r = rx;
+    p->rays = rays;
+    for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
+        p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+#ifdef RT_PK_X86
+    if (rt_pk_avx2 && !g->rotated && n % 4 == 0 && rt_pk_setup_avx2(p, rays)) {
+        if (p->live) {
+            p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
+            p->xmg[0] = g->b.cw[p->a1] * RT_PK_MARGIN;
+            p->xmg[1] = g->b.cw[p->a2] * RT_PK_MARGIN;
+        }
+        return 1;
+    }
+#endif
+    p->live = 0;
+    p->made = ~(uint64_t)0;
     p->uemin = INFINITY;
     p->usmax = p->uemax = -INFINITY;
     p->usmin = INFINITY;
@@ -561,8 +738,6 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->a2 = 2;
     p->sg = 1;
     int oct = -1;
-    for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
-        p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
     /* the lanes the AVX2 steps read for rays not walked: finite values (rt_pk_in_avx2,
        rt_pk_frustum_avx2) */
     memset(p->us, 0, sizeof p->us);
@@ -612,6 +787,18 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
 }
 
 /* ---- tests ---- */
+
+/* the rt_rayx of the rays of m not made yet (after rt_pk_setup_avx2: plain rays, for which
+   rt_rayx_setup succeeds) */
+static inline void rt_pk_make(rt_pk *p, uint64_t m)
+{
+    for (uint64_t w = m & ~p->made; w; w &= w - 1) {
+        const int k = __builtin_ctzll(w);
+        const rt_ray *q = &p->rays[k];
+        (void)rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax);
+    }
+    p->made |= m;
+}
 
 /* a hit of primitive i at t on ray k */
 static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
@@ -697,7 +884,9 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
         rt_tri_verts(sc, i, v);
         if (rt_pk_outside(p, v))
             return;
-        for (m = cull(p, v[0], v[1], v[2], m); m; m &= m - 1) {
+        m = cull(p, v[0], v[1], v[2], m);
+        rt_pk_make(p, m);
+        for (; m; m &= m - 1) {
             const int k = __builtin_ctzll(m);
             double t;
             if (rt_isect_tri(&p->r[k], v[0], v[1], v[2], p->r[k].tmin, p->r[k].tmax, &t))
@@ -705,6 +894,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
         }
         return;
     }
+    rt_pk_make(p, m);
     for (; m; m &= m - 1) {
         const int k = __builtin_ctzll(m);
         double t;
@@ -1072,6 +1262,7 @@ int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *
     /* the rays not finished by a walk given up take the single-ray walk; a ray that hit
        is occluded, one whose walk ended is not */
     const uint64_t left = rt_pk_walk(&p, ctx) ? 0 : p.live;
+    rt_pk_make(&p, left);
     if (left) {
         ps->fallback_packets++;
     } else {
