@@ -661,6 +661,8 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
         _mm256_storeu_pd(p->us + k, _mm256_and_pd(in, us));
         _mm256_storeu_pd(p->ue + k, _mm256_and_pd(in, ue));
         _mm256_storeu_pd(p->t1 + k, T1);
+        _mm256_storeu_pd(p->best + k, pinf);
+        _mm256_storeu_pd(p->eb + k, _mm256_setzero_pd());
         usmin = _mm256_min_pd(usmin, _mm256_blendv_pd(pinf, us, in));
         usmax = _mm256_max_pd(usmax, _mm256_blendv_pd(ninf, us, in));
         uemin = _mm256_min_pd(uemin, _mm256_blendv_pd(pinf, ue, in));
@@ -689,15 +691,9 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
         p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
         p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
     }
-    for (int k = 0; k < n; k++) {
-        p->go[k] = p->r[k].o; /* the ray's own o and d once made (no component flushed) */
-        p->gd[k] = p->r[k].d;
-        p->best[k] = INFINITY;
-        p->eb[k] = 0.0;
-        p->bi[k] = -1;
-        p->nh[k] = 0;
-    }
-    return 1;
+    memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
+    memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
+    return 1; /* go, gd: set by rt_pk_make */
 }
 #endif
 
@@ -796,6 +792,8 @@ static inline void rt_pk_make(rt_pk *p, uint64_t m)
         const int k = __builtin_ctzll(w);
         const rt_ray *q = &p->rays[k];
         (void)rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax);
+        p->go[k] = p->r[k].o; /* the ray's own o and d (no component flushed) */
+        p->gd[k] = p->r[k].d;
     }
     p->made |= m;
 }
