@@ -544,43 +544,60 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
 
 #ifdef RT_PK_X86
 /* The set-up of a packet of rays that are all plain (every check of rt_rayx_setup passed by
-   a wide margin, no component flushed), on a grid that is not rotated, 4 rays a step with
-   AVX2 (no FMA), and without the rays' rt_rayx: those are made by rt_pk_make when a ray
-   first reaches an exact test (most walked rays never do: the cull rules them out). Every
-   quantity is computed with the operations of the general set-up, lane by lane:
+   a wide margin, no component flushed), 4 rays a step with AVX2 (no FMA), and without the
+   rays' rt_rayx: those are made by rt_pk_make when a ray first reaches an exact test (most
+   walked rays never do: the cull rules them out). Every quantity is computed with the
+   operations of the general set-up, lane by lane:
    - the checks, in integer compares of the bits before any floating operation: origin and
-     tmin within 1e30, direction components within [1e-100, 1e30], tmax not NaN, and then
-     tmin <= tmax. Such a ray passes rt_rayx_check (RT_RAY_MAX 1e100, largest component at
-     least 1e-100) and keeps every component (none is below 1e-150 of the largest), so its
-     rt_rayx has the ray's own o and d; its octant's product of components is not 0 (at
-     least 1e-300);
+     tmin within 1e30, direction components within [1e-100, 1e30] (in the grid frame too),
+     tmax not NaN, and then tmin <= tmax. Such a ray passes rt_rayx_check (RT_RAY_MAX 1e100,
+     largest component at least 1e-100) and keeps every component (none is below 1e-150 of
+     the largest), so its rt_rayx has the ray's own o and d; the product of its components
+     in the grid frame is not 0 (at least 1e-300: rt_pk_octant);
    - the exact test's axes (rt_rayx_shear's rule: kz the first of the largest |d|, kx and
-     ky swapped for a negative d[kz]) and the signs of the components, the same in every
-     lane (else the general set-up decides); kz is also the slicing axis K here (rt_pk_ray:
-     the same rule on the same d); sz = 1 / d[kz], sx = d[kx] sz, sy = d[ky] sz;
-   - the grid box's range (rt_pk_tbox's operations, as rt_pk_tbox4_body) and the extent
-     along K (rt_pk_range's).
+     ky swapped for a negative d[kz]) and the signs of the components in the grid frame, the
+     same in every lane (else the general set-up decides); sz = 1 / d[kz], sx = d[kx] sz,
+     sy = d[ky] sz;
+   - on a rotated grid the ray in the grid frame as rt_grid_point and rt_grid_dir compute it
+     (rt_pk_make computes it again for the rays it makes, the same values), the slicing axis
+     K, the first of the largest components in the grid frame, from ray 0 (rt_pk_ray takes
+     it from the first ray walked: any K of the common octant walks right), the slopes
+     gd[a] / gd[K]; on a grid that is not rotated K = kz and the slopes are sx, sy (rt_pk_ray);
+   - the grid box's range (rt_pk_tbox's operations, as rt_pk_tbox4_body: the same values as
+     rt_pk_clip's) and the extent along K (rt_pk_range's).
    Returns 0 if a ray is not plain or the rays do not share the axes and octant: then the
    general set-up runs (and decides coherence as before). */
-__attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_ray *rays)
+static inline __attribute__((target("avx2"), always_inline)) int
+rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
 {
-    const rt_box *b = &p->sc->grid.b;
+    const rt_grid *g = &p->sc->grid;
+    const rt_box *b = &g->b;
     const int n = p->n;
-    /* the packet's axes from ray 0 (rt_rayx_shear's rule) */
+    /* the packet's axes from ray 0 (rt_rayx_shear's rule), its octant in the grid frame */
     const double *d0 = rays[0].dir;
     const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
     const int kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
     const int neg = d0[kz] < 0.0;
     static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
     const int kx = next[neg][kz][0], ky = next[neg][kz][1];
-    const int sgn[3] = {d0[0] < 0.0, d0[1] < 0.0, d0[2] < 0.0};
-    double lim[3] = {1e30, 1e-100, INFINITY};
+    double gd0[3] = {d0[0], d0[1], d0[2]};
+    if (rotated)
+        rt_grid_dir(g, d0, gd0);
+    const int sgn[3] = {gd0[0] < 0.0, gd0[1] < 0.0, gd0[2] < 0.0};
+    int K = kz;
+    if (rotated) {
+        const double gx = fabs(gd0[0]), gy = fabs(gd0[1]), gz = fabs(gd0[2]);
+        K = gx >= gy && gx >= gz ? 0 : (gy >= gz ? 1 : 2);
+    }
+    const int a1 = (K + 1) % 3, a2 = (K + 2) % 3;
+    const double lim[3] = {1e30, 1e-100, INFINITY};
     int64_t blim[3];
     memcpy(blim, lim, sizeof blim);
     const __m256i absm = _mm256_set1_epi64x(INT64_MAX);
+    const __m256d fabsm = _mm256_castsi256_pd(absm);
     const __m256i big = _mm256_set1_epi64x(blim[0]), small = _mm256_set1_epi64x(blim[1]),
                   inf = _mm256_set1_epi64x(blim[2]);
-    const __m256d one = _mm256_set1_pd(1.0), sg = _mm256_set1_pd(neg ? -1.0 : 1.0);
+    const __m256d one = _mm256_set1_pd(1.0), sg = _mm256_set1_pd(sgn[K] ? -1.0 : 1.0);
     const __m256d pinf = _mm256_set1_pd(INFINITY), ninf = _mm256_set1_pd(-INFINITY);
     __m256d usmin = pinf, usmax = ninf, uemin = pinf, uemax = ninf;
     uint64_t live = 0;
@@ -616,10 +633,6 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
         /* every value checked: floating operations from here on */
         if (_mm256_movemask_pd(_mm256_cmp_pd(v[6], v[7], _CMP_LE_OQ)) != 15)
             return 0;
-        for (int a = 0; a < 3; a++) /* the octant */
-            if (_mm256_movemask_pd(v[3 + a]) != (sgn[a] ? 15 : 0))
-                return 0;
-        const __m256d fabsm = _mm256_castsi256_pd(absm);
         const __m256d ax = _mm256_and_pd(v[3], fabsm), ay = _mm256_and_pd(v[4], fabsm),
                       az = _mm256_and_pd(v[5], fabsm);
         const int c1 = _mm256_movemask_pd(_mm256_or_pd(_mm256_cmp_pd(ax, ay, _CMP_LT_OQ),
@@ -627,14 +640,43 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
         const int c2 = _mm256_movemask_pd(_mm256_cmp_pd(ay, az, _CMP_LT_OQ));
         if (kz == 0 ? c1 != 0 : (c1 != 15 || c2 != (kz == 2 ? 15 : 0)))
             return 0; /* not the axes of ray 0 */
+        if (rotated && _mm256_movemask_pd(v[3 + kz]) != (neg ? 15 : 0))
+            return 0; /* (else the octant's check below) */
         const __m256d sz = _mm256_div_pd(one, v[3 + kz]);
         const __m256d sx = _mm256_mul_pd(v[3 + kx], sz), sy = _mm256_mul_pd(v[3 + ky], sz);
+        /* the ray in the grid frame: go[0..2], gd[0..2] (v's own on a grid not rotated) */
+        __m256d rv[6];
+#define RT_PK_GO(a) (rotated ? rv[a] : v[a])
+#define RT_PK_GD(a) (rotated ? rv[3 + (a)] : v[3 + (a)])
+        if (rotated) {
+            __m256d c3[3];
+            for (int a = 0; a < 3; a++)
+                c3[a] = _mm256_sub_pd(v[a], _mm256_set1_pd(g->c[a]));
+            for (int a = 0; a < 3; a++) {
+                const __m256d r0 = _mm256_set1_pd(g->R[a][0]), r1 = _mm256_set1_pd(g->R[a][1]),
+                              r2 = _mm256_set1_pd(g->R[a][2]);
+                rv[a] = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r0, c3[0]),
+                                                    _mm256_mul_pd(r1, c3[1])),
+                                      _mm256_mul_pd(r2, c3[2]));
+                rv[3 + a] = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(r0, v[3]),
+                                                        _mm256_mul_pd(r1, v[4])),
+                                          _mm256_mul_pd(r2, v[5]));
+                const __m256i m = _mm256_and_si256(_mm256_castpd_si256(rv[3 + a]), absm);
+                if (!_mm256_testz_si256(_mm256_or_si256(_mm256_cmpgt_epi64(m, big),
+                                                        _mm256_cmpgt_epi64(small, m)),
+                                        _mm256_set1_epi64x(-1)))
+                    return 0; /* a component in the grid frame below 1e-100 */
+            }
+        }
+        for (int a = 0; a < 3; a++) /* the octant in the grid frame */
+            if (_mm256_movemask_pd(RT_PK_GD(a)) != (sgn[a] ? 15 : 0))
+                return 0;
         /* the box (rt_pk_tbox4_body's operations) */
         __m256d T0 = v[6], T1 = v[7];
         for (int a = 0; a < 3; a++) {
-            const __m256d inv = _mm256_div_pd(one, v[3 + a]);
-            const __m256d ta = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->lo[a]), v[a]), inv);
-            const __m256d tb = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->hi[a]), v[a]), inv);
+            const __m256d inv = _mm256_div_pd(one, RT_PK_GD(a));
+            const __m256d ta = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->lo[a]), RT_PK_GO(a)), inv);
+            const __m256d tb = _mm256_mul_pd(_mm256_sub_pd(_mm256_set1_pd(b->hi[a]), RT_PK_GO(a)), inv);
             const __m256d tn = _mm256_min_pd(ta, tb), tf = _mm256_max_pd(tb, ta);
             T0 = _mm256_max_pd(tn, T0);
             T1 = _mm256_min_pd(tf, T1);
@@ -643,21 +685,30 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
         const __m256i a0 = _mm256_and_si256(_mm256_castpd_si256(T0), absm);
         const __m256d in = _mm256_and_pd(_mm256_cmp_pd(T0, T1, _CMP_LE_OQ),
                                          _mm256_castsi256_pd(_mm256_cmpgt_epi64(inf, a0)));
-        const __m256d oK = v[kz], dK = v[3 + kz];
+        const __m256d oK = RT_PK_GO(K), dK = RT_PK_GD(K);
         const __m256d us = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T0, dK)));
         const __m256d ue = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T1, dK)));
+        __m256d m1, m2;
+        if (rotated) {
+            m1 = _mm256_div_pd(RT_PK_GD(a1), dK);
+            m2 = _mm256_div_pd(RT_PK_GD(a2), dK);
+        } else { /* K = kz; a1, a2 = kx, ky, swapped for a negative d[kz] (rt_pk_ray) */
+            m1 = neg ? sy : sx;
+            m2 = neg ? sx : sy;
+        }
         /* rays not walked: 0 in every lane (harmless, never in a mask) */
         _mm256_storeu_pd(p->ox + k, _mm256_and_pd(in, v[kx]));
         _mm256_storeu_pd(p->oy + k, _mm256_and_pd(in, v[ky]));
-        _mm256_storeu_pd(p->oz + k, _mm256_and_pd(in, oK));
+        _mm256_storeu_pd(p->oz + k, _mm256_and_pd(in, v[kz]));
         _mm256_storeu_pd(p->sx + k, _mm256_and_pd(in, sx));
         _mm256_storeu_pd(p->sy + k, _mm256_and_pd(in, sy));
         _mm256_storeu_pd(p->oK + k, _mm256_and_pd(in, oK));
-        /* K = kz; a1, a2 = kx, ky, swapped for a negative d[kz] (rt_pk_ray) */
-        _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, v[neg ? ky : kx]));
-        _mm256_storeu_pd(p->o2 + k, _mm256_and_pd(in, v[neg ? kx : ky]));
-        _mm256_storeu_pd(p->m1 + k, _mm256_and_pd(in, neg ? sy : sx));
-        _mm256_storeu_pd(p->m2 + k, _mm256_and_pd(in, neg ? sx : sy));
+        _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, RT_PK_GO(a1)));
+        _mm256_storeu_pd(p->o2 + k, _mm256_and_pd(in, RT_PK_GO(a2)));
+#undef RT_PK_GO
+#undef RT_PK_GD
+        _mm256_storeu_pd(p->m1 + k, _mm256_and_pd(in, m1));
+        _mm256_storeu_pd(p->m2 + k, _mm256_and_pd(in, m2));
         _mm256_storeu_pd(p->us + k, _mm256_and_pd(in, us));
         _mm256_storeu_pd(p->ue + k, _mm256_and_pd(in, ue));
         _mm256_storeu_pd(p->t1 + k, T1);
@@ -683,10 +734,10 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
     p->kx = kx;
     p->ky = ky;
     p->kz = kz;
-    p->K = kz;
-    p->a1 = (kz + 1) % 3;
-    p->a2 = (kz + 2) % 3;
-    p->sg = neg ? -1 : 1;
+    p->K = K;
+    p->a1 = a1;
+    p->a2 = a2;
+    p->sg = sgn[K] ? -1 : 1;
     for (int a = 0; a < 3; a++) {
         p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
         p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
@@ -694,6 +745,18 @@ __attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_r
     memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
     memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
     return 1; /* go, gd: set by rt_pk_make */
+}
+
+/* the two cases in functions of their own (the grid frame's operations stay out of the
+   other) */
+__attribute__((target("avx2"))) static int rt_pk_setup_avx2(rt_pk *p, const rt_ray *rays)
+{
+    return rt_pk_setup_avx2_body(p, rays, 0);
+}
+
+__attribute__((target("avx2"))) static int rt_pk_setup_rot_avx2(rt_pk *p, const rt_ray *rays)
+{
+    return rt_pk_setup_avx2_body(p, rays, 1);
 }
 #endif
 
@@ -715,7 +778,8 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
 #ifdef RT_PK_X86
-    if (rt_pk_avx2 && !g->rotated && n % 4 == 0 && rt_pk_setup_avx2(p, rays)) {
+    if (rt_pk_avx2 && n % 4 == 0 &&
+        (g->rotated ? rt_pk_setup_rot_avx2(p, rays) : rt_pk_setup_avx2(p, rays))) {
         if (p->live) {
             p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
             p->xmg[0] = g->b.cw[p->a1] * RT_PK_MARGIN;
@@ -792,8 +856,15 @@ static inline void rt_pk_make(rt_pk *p, uint64_t m)
         const int k = __builtin_ctzll(w);
         const rt_ray *q = &p->rays[k];
         (void)rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax);
-        p->go[k] = p->r[k].o; /* the ray's own o and d (no component flushed) */
-        p->gd[k] = p->r[k].d;
+        if (p->sc->grid.rotated) { /* as rt_pk_ray */
+            rt_grid_point(&p->sc->grid, p->r[k].o, p->rot[k][0]);
+            rt_grid_dir(&p->sc->grid, p->r[k].d, p->rot[k][1]);
+            p->go[k] = p->rot[k][0];
+            p->gd[k] = p->rot[k][1];
+        } else { /* the ray's own o and d (no component flushed) */
+            p->go[k] = p->r[k].o;
+            p->gd[k] = p->r[k].d;
+        }
     }
     p->made |= m;
 }
