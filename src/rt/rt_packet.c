@@ -95,6 +95,9 @@ typedef struct rt_pk {
     uint64_t fmask;
     double z0, lo[2], hi[2], mlo[2], mhi[2];
     double xmg[2];           /* margins along a1, a2: 2^-20 of a top cell */
+    /* the frustum's bounds in the lanes of rt_pk_outside_avx2 (set by rt_pk_frustum_avx2):
+       lo[0], -hi[0], lo[1], -hi[1]; their slopes for z >= z0 and z < z0; the margins */
+    double ob[4], osp[4], osn[4], omg[4];
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
@@ -906,6 +909,9 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
    whose three vertices lie there (by the margin of 2^-20 of a top cell, for the roundings)
    lies there whole and meets no ray of the frustum. In the grid frame: a rotated grid's
    vertices are taken into it first (their roundings far below the margin). */
+#ifdef RT_PK_X86
+static int rt_pk_outside_avx2(const rt_pk *p, const double *const v[3]);
+#endif
 static inline int rt_pk_outside(const rt_pk *p, const double *const vv[3])
 {
     int below[2] = {1, 1}, above[2] = {1, 1};
@@ -917,6 +923,10 @@ static inline int rt_pk_outside(const rt_pk *p, const double *const vv[3])
             rt_grid_point(g, vv[j], w[j]);
             v[j] = w[j];
         }
+#ifdef RT_PK_X86
+    if (rt_pk_avx2)
+        return rt_pk_outside_avx2(p, v);
+#endif
     for (int j = 0; j < 3; j++) {
         const double dz = v[j][p->K] - p->z0;
         for (int a = 0; a < 2; a++) {
@@ -1044,6 +1054,37 @@ __attribute__((target("avx2"))) static void rt_pk_frustum_avx2(rt_pk *p, uint64_
         p->mlo[a] = fmin(fmin(v[4 + a][0], v[4 + a][1]), fmin(v[4 + a][2], v[4 + a][3]));
         p->mhi[a] = fmax(fmax(v[6 + a][0], v[6 + a][1]), fmax(v[6 + a][2], v[6 + a][3]));
     }
+    for (int a = 0; a < 2; a++) { /* rt_pk_outside_avx2's lanes */
+        p->ob[2 * a] = p->lo[a];
+        p->ob[2 * a + 1] = -p->hi[a];
+        p->osp[2 * a] = p->mlo[a];
+        p->osp[2 * a + 1] = -p->mhi[a];
+        p->osn[2 * a] = p->mhi[a];
+        p->osn[2 * a + 1] = -p->mlo[a];
+        p->omg[2 * a] = p->omg[2 * a + 1] = p->xmg[a];
+    }
+}
+
+/* rt_pk_outside for the vertices v (in the grid frame) with the same values: lanes 0 and 2
+   test x < xl - mg along a1 and a2, lanes 1 and 3 x > xh + mg as -x < -(xh + mg), which is
+   (-hi + dz (-m)) - mg with the same roundings (negation is exact and rounding is symmetric) */
+__attribute__((target("avx2"))) static int rt_pk_outside_avx2(const rt_pk *p,
+                                                              const double *const v[3])
+{
+    const __m256d b = _mm256_loadu_pd(p->ob), sp = _mm256_loadu_pd(p->osp),
+                  sn = _mm256_loadu_pd(p->osn), mg = _mm256_loadu_pd(p->omg);
+    const __m256d flip = _mm256_set_pd(-0.0, 0.0, -0.0, 0.0); /* lanes 1 and 3 negated */
+    __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    for (int j = 0; j < 3; j++) {
+        const double dz = v[j][p->K] - p->z0;
+        const __m256d bound =
+            _mm256_sub_pd(_mm256_add_pd(b, _mm256_mul_pd(_mm256_set1_pd(dz), dz >= 0.0 ? sp : sn)),
+                          mg);
+        const __m256d x = _mm256_xor_pd(
+            _mm256_set_pd(v[j][p->a2], v[j][p->a2], v[j][p->a1], v[j][p->a1]), flip);
+        all = _mm256_and_pd(all, _mm256_cmp_pd(x, bound, _CMP_LT_OQ));
+    }
+    return _mm256_movemask_pd(all) != 0;
 }
 #endif
 
