@@ -98,6 +98,8 @@ typedef struct rt_pk {
     /* the frustum's bounds in the lanes of rt_pk_outside_avx2 (set by rt_pk_frustum_avx2):
        lo[0], -hi[0], lo[1], -hi[1]; their slopes for z >= z0 and z < z0; the margins */
     double ob[4], osp[4], osn[4], omg[4];
+    /* and in rt_pk_rect_avx2's: lo[0], hi[0], lo[1], hi[1] and their slopes likewise */
+    double rb[4], rsp[4], rsn[4];
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
@@ -1062,7 +1064,38 @@ __attribute__((target("avx2"))) static void rt_pk_frustum_avx2(rt_pk *p, uint64_
         p->osn[2 * a] = p->mhi[a];
         p->osn[2 * a + 1] = -p->mlo[a];
         p->omg[2 * a] = p->omg[2 * a + 1] = p->xmg[a];
+        p->rb[2 * a] = p->lo[a];
+        p->rb[2 * a + 1] = p->hi[a];
+        p->rsp[2 * a] = p->mlo[a];
+        p->rsp[2 * a + 1] = p->mhi[a];
+        p->rsn[2 * a] = p->mhi[a];
+        p->rsn[2 * a + 1] = p->mlo[a];
     }
+}
+
+/* rt_pk_rect with the four bounds in lanes (lo1, hi1, lo2, hi2), the same values: the
+   lower bounds the min of their values at za and zb, the upper ones the max (min_pd and
+   max_pd select as the scalar compares do), then rt_pk_cell's operations and clamps */
+__attribute__((target("avx2"))) static void rt_pk_rect_avx2(const rt_pk *p, const rt_box *g,
+                                                            double za, double zb, int c[4])
+{
+    const double da = za - p->z0, db = zb - p->z0;
+    const __m256d b = _mm256_loadu_pd(p->rb), sp = _mm256_loadu_pd(p->rsp),
+                  sn = _mm256_loadu_pd(p->rsn);
+    const __m256d xa = _mm256_add_pd(b, _mm256_mul_pd(_mm256_set1_pd(da), da >= 0.0 ? sp : sn));
+    const __m256d xb = _mm256_add_pd(b, _mm256_mul_pd(_mm256_set1_pd(db), db >= 0.0 ? sp : sn));
+    /* lanes 0, 2: min; 1, 3: max */
+    const __m256d x = _mm256_blend_pd(_mm256_min_pd(xa, xb), _mm256_max_pd(xa, xb), 10);
+    const int a1 = p->a1, a2 = p->a2;
+    const __m256d lo = _mm256_set_pd(g->lo[a2], g->lo[a2], g->lo[a1], g->lo[a1]);
+    const __m256d iw = _mm256_set_pd(g->inv_cw[a2], g->inv_cw[a2], g->inv_cw[a1], g->inv_cw[a1]);
+    const __m256d top = _mm256_set_pd((double)(g->n[a2] - 1), (double)(g->n[a2] - 1),
+                                      (double)(g->n[a1] - 1), (double)(g->n[a1] - 1));
+    const __m256d mg = _mm256_set_pd(RT_PK_MARGIN, -RT_PK_MARGIN, RT_PK_MARGIN, -RT_PK_MARGIN);
+    /* f = (x - lo) * inv_cw + dir * margin; f <= 0: 0, f >= n - 1: n - 1, else (int)f */
+    const __m256d f = _mm256_add_pd(_mm256_mul_pd(_mm256_sub_pd(x, lo), iw), mg);
+    const __m256d fc = _mm256_min_pd(_mm256_max_pd(f, _mm256_setzero_pd()), top);
+    _mm_storeu_si128((__m128i *)c, _mm256_cvttpd_epi32(fc));
 }
 
 /* rt_pk_outside for the vertices v (in the grid frame) with the same values: lanes 0 and 2
@@ -1128,6 +1161,12 @@ static void rt_pk_frustum(rt_pk *p, uint64_t mask)
    x range at z0 and its slope range): c[0..3] = lo1, hi1, lo2, hi2 */
 static void rt_pk_rect(const rt_pk *p, const rt_box *g, double za, double zb, int c[4])
 {
+#ifdef RT_PK_X86
+    if (rt_pk_avx2) {
+        rt_pk_rect_avx2(p, g, za, zb, c);
+        return;
+    }
+#endif
     const double da = za - p->z0, db = zb - p->z0;
     for (int a = 0; a < 2; a++) {
         const double la = p->lo[a] + da * (da >= 0.0 ? p->mlo[a] : p->mhi[a]);
