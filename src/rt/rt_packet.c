@@ -72,7 +72,7 @@ typedef struct rt_pk {
     int K, a1, a2;           /* the slicing axis and the two others */
     int sg;                  /* step along K: +1 or -1 */
     uint64_t live;           /* rays still walking */
-    uint64_t hit;            /* any: rays that hit */
+    uint64_t hit;            /* rays that hit (any: occluded; nearest: a hit recorded) */
     uint64_t over;           /* nearest: rays with more than RT_PK_REC hits */
     uint64_t cand;           /* rays in the current slice: they test what it holds */
     uint64_t *hbox;          /* the packet's mailbox (the context's small one) ... */
@@ -883,6 +883,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
         p->cand &= ~((uint64_t)1 << k);
         return;
     }
+    p->hit |= (uint64_t)1 << k; /* nearest: rays with a hit */
     if (p->nh[k] < RT_PK_REC)
         p->rec[k][p->nh[k]++] = (rt_pk_rec){i, t};
     else
@@ -1387,10 +1388,11 @@ int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *r
     }
     ps->packets++;
     atomic_fetch_add_explicit(&rt_pk_traced, 1, memory_order_relaxed);
-    for (int k = 0; k < p.n; k++) {
-        i[k] = p.bi[k];
-        t[k] = p.best[k];
-        if (p.bi[k] >= 0 && !rt_pk_sure(&p, k)) {
+    memcpy(i, p.bi, (size_t)p.n * sizeof *i);
+    memcpy(t, p.best, (size_t)p.n * sizeof *t);
+    for (uint64_t m = p.hit; m; m &= m - 1) { /* the rays with a hit */
+        const int k = __builtin_ctzll(m);
+        if (!rt_pk_sure(&p, k)) {
             ps->fallback_rays++;
             i[k] = rt_trace_nearest(sc, ctx, &rx[k], &t[k]);
         }
