@@ -853,14 +853,52 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
 
 /* ---- tests ---- */
 
-/* the rt_rayx of the rays of m not made yet (after rt_pk_setup_avx2: plain rays, for which
-   rt_rayx_setup succeeds) */
+/* the rt_rayx of the rays of m not made yet (after rt_pk_setup_avx2: plain rays walked).
+   For a plain ray rt_rayx_setup passes every check and flushes nothing, so it makes the ray's
+   own o, d, tmin, tmax, no skip, the packet's axes, sz = 1 / d[kz] and the sx, sy the set-up
+   computed with its operations: written here directly. A build without NDEBUG (the tests')
+   compares them with rt_rayx_setup's byte for byte, takes rt_rayx_setup's on a difference
+   and counts it (rt_packet_make_differ: test_rt_packet requires 0), so that a change of
+   rt_rayx or rt_rayx_setup that this copy misses is caught. */
+#ifndef NDEBUG
+static atomic_ullong rt_pk_make_differ;
+#endif
+
+unsigned long long rt_packet_make_differ(void)
+{
+#ifndef NDEBUG
+    return atomic_load_explicit(&rt_pk_make_differ, memory_order_relaxed);
+#else
+    return 0;
+#endif
+}
+
 static inline void rt_pk_make(rt_pk *p, uint64_t m)
 {
     for (uint64_t w = m & ~p->made; w; w &= w - 1) {
         const int k = __builtin_ctzll(w);
         const rt_ray *q = &p->rays[k];
-        (void)rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax);
+        rt_rayx *r = &p->r[k];
+        memset(r, 0, sizeof *r);
+        memcpy(r->o, q->org, sizeof r->o);
+        memcpy(r->d, q->dir, sizeof r->d);
+        r->tmin = q->tmin;
+        r->tmax = q->tmax;
+        r->kx = p->kx;
+        r->ky = p->ky;
+        r->kz = p->kz;
+        r->sz = 1.0 / q->dir[p->kz];
+        r->sx = p->sx[k];
+        r->sy = p->sy[k];
+        r->skip = RT_NO_SKIP;
+#ifndef NDEBUG
+        rt_rayx ref;
+        memset(&ref, 0, sizeof ref);
+        if (!rt_rayx_setup(&ref, q->org, q->dir, q->tmin, q->tmax) || memcmp(&ref, r, sizeof ref)) {
+            atomic_fetch_add_explicit(&rt_pk_make_differ, 1, memory_order_relaxed);
+            *r = ref;
+        }
+#endif
         if (p->sc->grid.rotated) { /* as rt_pk_ray */
             rt_grid_point(&p->sc->grid, p->r[k].o, p->rot[k][0]);
             rt_grid_dir(&p->sc->grid, p->r[k].d, p->rot[k][1]);

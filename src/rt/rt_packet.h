@@ -43,6 +43,11 @@ int rt_occluded_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays,
    by every thread (tests: the renderer's eye rays took the coherent path) */
 unsigned long long rt_packet_count(void);
 
+/* rays whose rt_rayx the packet path wrote itself and found different from rt_rayx_setup's,
+   since the process started (builds without NDEBUG check every one; tests require 0; 0 in
+   builds with NDEBUG, which do not check) */
+unsigned long long rt_packet_make_differ(void);
+
 /* the name of the kernel that culls rays of a packet ("avx2", "sse", "scalar") */
 const char *rt_packet_kernel_name(void);
 
