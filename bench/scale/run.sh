@@ -64,9 +64,11 @@ for k in 1 2 3; do
   sleep 4; load=$(cut -d' ' -f1 /proc/loadavg)
   one=$(cd "$out" && "$bin" "$sp" -t 1 -o "$out/s1.png")
   echo "$one threads=1 load=$load"
+  echo "$one" >> "$out/split1"
   sleep 4; load=$(cut -d' ' -f1 /proc/loadavg)
   two=$(cd "$out" && "$bin" "$sp" -t 2 -o "$out/s2.png")
   echo "$two threads=2 load=$load"
+  echo "$two" >> "$out/split2"
   pairs="$pairs $(echo "$one" | sed 's/.* total=\([0-9.]*\).*/\1/'):$(echo "$two" | sed 's/.* total=\([0-9.]*\).*/\1/')"
   if cmp -s "$out/s1.png" "$out/s2.png" && cmp -s "$out/s1.png" "$out/s_$sp.png"; then
     echo "# pictures of 1 and 2 threads at n=$sp: equal (cmp)"
@@ -92,3 +94,22 @@ END {
   t1c = val(one, "cpu"); t2c = val(two, "cpu"); printf "info  1 -> 2 threads at n=%s by process CPU, last pair: %s s / %s s (work added by the second thread: %.0f %%)\n", ks, t1c, t2c, 100 * (t2c / t1c - 1);
   printf "info  bytes per triangle resident at n=%s: %s; largest scene in 23 GB by that: %.2g triangles\n", last, b[last], 23e9 / b[last];
 }' "$out/rows"
+# The split by stage of the pairs (issue 39 item 8), 1 -> 2 threads, each figure the median
+# of the three pairs: wall s of the calls (the application's thread's CPU; with 2 threads the
+# recording worker's CPU beside it), the build, the render and the rest of the update
+# (transfer, commit before the build, composition, PNG), with the ratio of each stage.
+awk '
+function val(s, k,   i, a, n) { n = split(s, a, " "); for (i = 1; i <= n; i++) if (index(a[i], k "=") == 1) return substr(a[i], length(k) + 2); return "" }
+function med(v, n,   i, j, x) { for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (v[j] < v[i]) { x = v[i]; v[i] = v[j]; v[j] = x } return v[int((n + 1) / 2)] }
+FNR == 1 { f++ }
+{ k = ++m[f]; n = val($0, "n"); c[f, "calls", k] = val($0, "calls"); c[f, "build", k] = val($0, "build");
+  c[f, "render", k] = val($0, "render"); c[f, "rest", k] = val($0, "update") - val($0, "build") - val($0, "render");
+  c[f, "app", k] = val($0, "app_us/call") * n / 1e6; c[f, "work", k] = val($0, "calls_cpu") - c[f, "app", k];
+  c[f, "uflt", k] = val($0, "upd_flt"); c[f, "cflt", k] = val($0, "calls_flt") }
+END {
+  split("calls app work build render rest cflt uflt", st, " ");
+  for (g = 1; g <= 2; g++) for (i = 1; i <= 8; i++) { for (k = 1; k <= m[g]; k++) v[k] = c[g, st[i], k]; md[g, st[i]] = med(v, m[g]) }
+  printf "split 1 thread:  calls %.3f s (application CPU %.3f s), build %.3f s, render %.3f s, rest of update %.3f s; page faults calls %d, update %d\n", md[1, "calls"], md[1, "app"], md[1, "build"], md[1, "render"], md[1, "rest"], md[1, "cflt"], md[1, "uflt"];
+  printf "split 2 threads: calls %.3f s (application CPU %.3f s, recording worker %.3f s), build %.3f s, render %.3f s, rest of update %.3f s; page faults calls %d, update %d\n", md[2, "calls"], md[2, "app"], md[2, "work"], md[2, "build"], md[2, "render"], md[2, "rest"], md[2, "cflt"], md[2, "uflt"];
+  printf "split ratios 1 -> 2 threads (medians of the pairs): calls %.2f, build %.2f, render %.2f, rest %.2f\n", md[1, "calls"] / md[2, "calls"], md[1, "build"] / md[2, "build"], md[1, "render"] / md[2, "render"], (md[2, "rest"] > 0 ? md[1, "rest"] / md[2, "rest"] : 0);
+}' "$out/split1" "$out/split2"

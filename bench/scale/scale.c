@@ -25,9 +25,17 @@
  * update_cpu: process CPU s of the two phases (all threads), cpu_us/call: calls_cpu / n,
  * app_us/call: CPU s of the application's thread in the calls / n (with 2 or more threads
  * the recording runs on a pool worker beside it; under load the better estimate of an idle
- * machine's us/call than the wall figure).
+ * machine's us/call than the wall figure); upd_app_cpu: CPU s of the application's thread in
+ * UPDATE WORKSTATION (the rest of update_cpu ran on the pool's workers); calls_flt, upd_flt:
+ * the process's minor page faults (first touches of memory) in the two phases, app_flt and
+ * upd_app_flt those of the application's thread (Linux: RUSAGE_THREAD; else -1); app_waits,
+ * upd_app_waits: how often the application's thread slept in the two phases (voluntary
+ * context switches: the recording's queue full, a pool's parts not done; else -1).
  * bench/scale/run.sh runs the series and prints the goals.
  */
+#if defined(__linux__) && !defined(_GNU_SOURCE)
+#define _GNU_SOURCE 1 /* RUSAGE_THREAD */
+#endif
 #include <gks.h>
 #include <math.h>
 #include <stdio.h>
@@ -51,6 +59,28 @@ static double clock_s(clockid_t c)
 }
 
 static double cpu(void) { return clock_s(CLOCK_PROCESS_CPUTIME_ID); }
+
+/* Minor page faults of the process (thread 0) or of the calling thread (thread 1; -1 where
+ * the system has no per-thread figure); *waits: the calling thread's voluntary context
+ * switches (it slept: waited for the recording's queue or a pool's parts), -1 unknown. */
+static long faults(int thread, long *waits)
+{
+    *waits = -1;
+    struct rusage u;
+#ifdef RUSAGE_THREAD
+    if (getrusage(thread ? RUSAGE_THREAD : RUSAGE_SELF, &u) != 0)
+        return -1;
+    if (thread)
+        *waits = u.ru_nvcsw;
+#else
+    if (thread || getrusage(RUSAGE_SELF, &u) != 0)
+        return -1;
+#endif
+    return u.ru_minflt;
+}
+
+/* b - a, or -1 if either is unknown */
+static long diff(long a, long b) { return a < 0 || b < 0 ? -1 : b - a; }
 
 static void escape_int(int id, int ws, int v)
 {
@@ -155,6 +185,8 @@ int main(int argc, char **argv)
                                        0.55 + r * sin(th) * sin(ph) };
         }
 
+    long v0, v1, v2;
+    const long f0 = faults(0, &v0), g0 = faults(1, &v0);
     double w0 = wall(), c0 = cpu(), a0 = clock_s(CLOCK_THREAD_CPUTIME_ID);
     gopen_gks(NULL, 0);
     gopen_ws(1, out, GWS_TYPE_PNG);
@@ -219,8 +251,10 @@ int main(int argc, char **argv)
         }
     free(g);
     double w1 = wall(), c1 = cpu(), a1 = clock_s(CLOCK_THREAD_CPUTIME_ID);
+    const long f1 = faults(0, &v1), g1 = faults(1, &v1);
     gupd_ws(1, GFLAG_PERFORM);
-    double w2 = wall(), c2 = cpu();
+    double w2 = wall(), c2 = cpu(), a2 = clock_s(CLOCK_THREAD_CPUTIME_ID);
+    const long f2 = faults(0, &v2), g2 = faults(1, &v2);
     Gfloat fl[2] = { 0 };
     Gint inw[1] = { 1 }, serr;
     Gescape_in_data sin_ = { .num_ints = 1, .ints = inw };
@@ -243,9 +277,11 @@ int main(int argc, char **argv)
     printf("surface=%s verts=%ld ", surface, verts);
     printf("n=%ld calls=%.3f update=%.3f build=%.3f render=%.3f total=%.3f close=%.3f "
            "cpu=%.2f rss=%.1f B/tri=%.0f us/call=%.3f calls_cpu=%.3f update_cpu=%.3f "
-           "cpu_us/call=%.3f app_us/call=%.3f\n",
+           "cpu_us/call=%.3f app_us/call=%.3f upd_app_cpu=%.3f calls_flt=%ld app_flt=%ld "
+           "upd_flt=%ld upd_app_flt=%ld app_waits=%ld upd_app_waits=%ld\n",
            drawn, w1 - w0, w2 - w1, fl[0], fl[1], w2 - w0, w3 - w2, cpu(), rss / 1048576.0,
            rss / (double)drawn, 1e6 * (w1 - w0) / (double)drawn, c1 - c0, c2 - c1,
-           1e6 * (c1 - c0) / (double)drawn, 1e6 * (a1 - a0) / (double)drawn);
+           1e6 * (c1 - c0) / (double)drawn, 1e6 * (a1 - a0) / (double)drawn, a2 - a1,
+           diff(f0, f1), diff(g0, g1), diff(f1, f2), diff(g1, g2), diff(v0, v1), diff(v1, v2));
     return 0;
 }
