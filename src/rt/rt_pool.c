@@ -175,7 +175,13 @@ void rt_par_run(int n, rt_par_fn fn, void *arg)
 
 /* ---- ordered queues ---- */
 
-#define RT_SERIAL_CAP 8 /* items queued at most: then the caller runs the oldest */
+/* Items queued at most: then the caller runs the oldest or waits. The workstation's recording
+ * queues display-list chunks of 2048 areas (about 0.3 ms of the application's calls each);
+ * its worker's cost per chunk is bursty (a chunk whose triangles start a fresh 2 MiB page
+ * of the scene's arrays takes 0.3-6 ms against 0.1 ms), so a short queue makes the
+ * application wait during a burst and the worker idle after it. 32 chunks (about 8 MB of
+ * the list) absorb a burst: see docs/bench/scale.md, 2026-12-05 21:20 UTC. */
+#define RT_SERIAL_CAP 32
 
 struct rt_serial {
     rt_serial_fn fn;
