@@ -1266,18 +1266,60 @@ static int display_volume(const gks_ws *ws, const Gview_rep3 *v, double b[6])
     return b[0] < b[1] && b[2] < b[3] && b[4] < b[5];
 }
 
-/* 1 if every sample of fb's pixels [ix0,ix1) x [iy0,iy1) has colour bg. */
-static int all_background(const gks_raster_fb *fb, int ix0, int ix1, int iy0, int iy1,
-                          const double bg[3])
+/* The composition's passes over a view's pixels, in parts by rows on the tracer's pool
+ * (rt_parallel_parts: part k of n takes rows [k*rows/n, (k+1)*rows/n)); each pixel is
+ * computed as on one thread, so the picture does not depend on the number of parts. */
+typedef struct compose_job {
+    gks_raster_fb *fb;
+    const float *rgb;         /* the traced pixels (compose_part) */
+    unsigned short *cnt;      /* their coverage counts (cnt_part sets them to 1) */
+    int per, ix0, ix1, iy0, iy1, w, h;
+    const double *bg;
+    atomic_int differs;       /* background_part: a sample differs from bg */
+} compose_job;
+
+static void part_rows(int rows, int k, int n, int *r0, int *r1)
 {
-    const float b[3] = { (float)bg[0], (float)bg[1], (float)bg[2] };
-    for (int y = iy0 * fb->ss; y < iy1 * fb->ss; y++) {
-        const float *d = fb->rgb + 3 * ((size_t)y * (size_t)fb->w + (size_t)(ix0 * fb->ss));
-        for (int x = ix0 * fb->ss; x < ix1 * fb->ss; x++, d += 3)
-            if (d[0] != b[0] || d[1] != b[1] || d[2] != b[2])
-                return 0;
+    *r0 = (int)((long long)rows * k / n);
+    *r1 = (int)((long long)rows * (k + 1) / n);
+}
+
+/* part k of n of all_background: its sample rows of the rectangle */
+static void background_part(void *arg, int k, int n)
+{
+    compose_job *j = arg;
+    const gks_raster_fb *fb = j->fb;
+    const float b[3] = { (float)j->bg[0], (float)j->bg[1], (float)j->bg[2] };
+    int y0, y1;
+    part_rows((j->iy1 - j->iy0) * fb->ss, k, n, &y0, &y1);
+    for (int y = j->iy0 * fb->ss + y0; y < j->iy0 * fb->ss + y1; y++) {
+        if (atomic_load_explicit(&j->differs, memory_order_relaxed))
+            return; /* another part found one: the answer is known */
+        const float *d = fb->rgb + 3 * ((size_t)y * (size_t)fb->w + (size_t)(j->ix0 * fb->ss));
+        for (int x = j->ix0 * fb->ss; x < j->ix1 * fb->ss; x++, d += 3)
+            if (d[0] != b[0] || d[1] != b[1] || d[2] != b[2]) {
+                atomic_store_explicit(&j->differs, 1, memory_order_relaxed);
+                return;
+            }
     }
-    return 1;
+}
+
+/* 1 if every sample of fb's pixels [ix0,ix1) x [iy0,iy1) has colour bg (j's rectangle). */
+static int all_background(compose_job *j, int threads)
+{
+    atomic_init(&j->differs, 0);
+    rt_parallel_parts(threads, background_part, j);
+    return !atomic_load(&j->differs);
+}
+
+/* part k of n of the coverage counts of a view without other content: every pixel 1 */
+static void cnt_part(void *arg, int k, int n)
+{
+    compose_job *j = arg;
+    int r0, r1;
+    part_rows(j->h, k, n, &r0, &r1);
+    for (size_t q = (size_t)r0 * (size_t)j->w; q < (size_t)r1 * (size_t)j->w; q++)
+        j->cnt[q] = 1;
 }
 
 static float clampf(double v, double hi) { return !(v > 0) ? 0.0f : v > hi ? (float)hi : (float)v; }
@@ -1312,15 +1354,16 @@ static int view_pixels(const gks_ws *ws, const Gview_rep3 *v, const double wsm[4
     return rt_camera_from_view(cam, v->map_matrix, nb, ix1 - ix0, iy1 - iy0) == RT_OK;
 }
 
-/* Composes the traced w x h pixels (rgb, rows top-first; cnt[k] of per sample rays hit)
- * into fb's pixels [ix0, ix0 + w) x [iy1 - h, iy1). rt rows are top-first; framebuffer
+/* Composes rows [row0, row1) of the traced w x h pixels (rgb, rows top-first; cnt[k] of per
+ * sample rays hit) into fb's pixels [ix0, ix0 + w) x [iy1 - h, iy1) (compose_part). rt rows are top-first; framebuffer
  * rows bottom-up, ss x ss samples per pixel. The traced colour T = a*H + (1-a)*bg for
  * coverage a: the pixel becomes a*clamp(H) + (1-a)*F over the framebuffer's F (exact for
  * unjittered samples). */
-static void compose_traced(gks_raster_fb *fb, const float *rgb, const unsigned short *cnt,
-                           int per, int ix0, int iy1, int w, int h, const double bg[3])
+static void compose_rows(gks_raster_fb *fb, const float *rgb, const unsigned short *cnt,
+                         int per, int ix0, int iy1, int w, int row0, int row1,
+                         const double bg[3])
 {
-    for (int row = 0; row < h; row++) {
+    for (int row = row0; row < row1; row++) {
         int j = iy1 - 1 - row;
         for (int c = 0; c < w; c++) {
             size_t k = (size_t)row * w + c;
@@ -1340,6 +1383,15 @@ static void compose_traced(gks_raster_fb *fb, const float *rgb, const unsigned s
                 }
         }
     }
+}
+
+/* part k of n of compose_traced: its rows of the traced pixels */
+static void compose_part(void *arg, int k, int n)
+{
+    compose_job *j = arg;
+    int r0, r1;
+    part_rows(j->h, k, n, &r0, &r1);
+    compose_rows(j->fb, j->rgb, j->cnt, j->per, j->ix0, j->iy1, j->w, r0, r1, j->bg);
 }
 
 /* Traces view vi into its display volume's pixels of fb; adds the ray statistics to *st and
@@ -1388,10 +1440,11 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
      * (T = a*H + (1-a)*bg): coverage is needed only over other content. */
     /* The same decision on every MPI rank (the annotations are the same): the tiles'
      * payloads, which carry the coverage when it is asked for, agree. */
-    const int need_cover = !all_background(fb, ix0, ix1, iy0, iy1, bg);
+    compose_job cj = { .fb = fb, .rgb = rgb, .cnt = cnt, .ix0 = ix0, .ix1 = ix1, .iy0 = iy0,
+                       .iy1 = iy1, .w = w, .h = h, .bg = bg };
+    const int need_cover = !all_background(&cj, o.threads);
     if (!need_cover) {
-        for (size_t k = 0; k < n; k++)
-            cnt[k] = 1;
+        rt_parallel_parts(o.threads, cnt_part, &cj);
     } else {
         per = o.corner_rays ? 4 : o.samples;
     }
@@ -1421,8 +1474,10 @@ static int render_view(ws_rt *r, const gks_ws *ws, int vi, const double wsm[4][4
     }
     rt_stats_add(st, &s);
     *traced = 1;
-    if (assemble) /* else the other ranks' pixels are rank 0's to compose */
-        compose_traced(fb, rgb, cnt, per, ix0, iy1, w, h, bg);
+    if (assemble) { /* else the other ranks' pixels are rank 0's to compose */
+        cj.per = per;
+        rt_parallel_parts(o.threads, compose_part, &cj);
+    }
 done:
     gks_free(rgb);
     gks_free(cnt);
