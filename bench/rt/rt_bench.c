@@ -177,6 +177,7 @@ int main(int argc, char **argv)
                "otherwise (blocker cache, trivially lit)\n",
                (unsigned long long)st.shadow_lbuf, (unsigned long long)st.shadow_walks,
                (unsigned long long)(st.shadow_rays - st.shadow_lbuf - st.shadow_walks));
+        printf("reflection rays: %llu from mirror buffers\n", (unsigned long long)st.reflection_mirror);
         if (out) {
             FILE *f = fopen(out, "wb");
             if (f) {

@@ -380,6 +380,8 @@ typedef struct rt_stats {
     uint64_t shadow_lbuf;             /* shadow rays answered from a light buffer's list */
     uint64_t shadow_walks;            /* shadow rays that walked the grid (the others: answered
                                          by the blocker cache, or trivially lit) */
+    uint64_t reflection_mirror;       /* reflection rays (of eye rays off a flat mirror)
+                                         answered from a mirror's list, not the grid walk */
     uint64_t grid_cells, grid_refs;   /* 0 when brute force */
     uint64_t prims;                   /* primitives kept at commit */
     double build_seconds;             /* commit time */
@@ -401,6 +403,7 @@ static inline void rt_stats_add(rt_stats *a, const rt_stats *b)
     a->refraction_rays += b->refraction_rays;
     a->shadow_lbuf += b->shadow_lbuf;
     a->shadow_walks += b->shadow_walks;
+    a->reflection_mirror += b->reflection_mirror;
     a->grid_cells += b->grid_cells;
     a->grid_refs += b->grid_refs;
     a->prims += b->prims;

@@ -520,12 +520,18 @@ typedef struct rt_lbuf {
 
 /* builds the buffer of light l; lb->ok = 0 (RT_OK) when the light gets none; RT_ERR_NOMEM */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb);
+/* the same without the primitives i with omit[i] != 0 in its lists (omit NULL: none) */
+int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int threads,
+                       rt_lbuf *lb);
 void rt_lbuf_free(rt_lbuf *lb);
 /* the candidates of a shadow ray toward lb's light: 1 with the list ids[0..n-1] and the
    bucket zb of the ray origin's depth (entries of a later bucket lie beyond the origin: they
    cannot be hit), 0 if no primitive can be hit, -1 if the ray must walk the grid */
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb);
+/* the same with *z the depth of the ray's origin (along ez from L) instead of its bucket */
+int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
+                   double *z);
 
 /* ---- smooth areas (rt_smooth.c) ---- */
 /* Interpolation at point P of committed primitive i (front normal ng): 0 if i has no vertex

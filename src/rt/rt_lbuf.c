@@ -289,6 +289,7 @@ typedef struct rt_lbuf_part {
 typedef struct rt_lbuf_job {
     const rt_scene *sc;
     rt_lbuf *lb;
+    const uint8_t *omit; /* NULL, or per primitive: 1 to leave it out of every list */
     double mx, my;
     uint32_t *first, *order;
     int32_t *rs;     /* all spans */
@@ -303,6 +304,12 @@ static void rt_lbuf_project_part(void *arg, int k, int n)
     rt_par_range(j->sc->nprim, k, n, &lo, &hi);
     pt->rc = 1;
     for (size_t i = lo; i < hi; i++) {
+        if (j->omit && j->omit[i]) { /* no spans; in bucket 0 of the order, filling nothing */
+            j->first[i] = (uint32_t)(pt->pp.nrs / 3);
+            j->lb->zb[i] = 0;
+            pt->bcount[1]++;
+            continue;
+        }
         const int pr = rt_lbuf_project(j->lb, j->sc, i, &pt->pp);
         j->first[i] = (uint32_t)(pt->pp.nrs / 3);
         const size_t nc_i = pr > 0 ? rt_lbuf_cells(j->lb, &pt->pp, j->mx, j->my) : SIZE_MAX;
@@ -473,6 +480,12 @@ static void rt_lbuf_lists(rt_lbuf_job *j, int nt, size_t nc, size_t total)
  * (chosen on SPD gears, docs/bench/rt_tuning.md). */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb)
 {
+    return rt_lbuf_build_omit(sc, l, NULL, threads, lb);
+}
+
+int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int threads,
+                       rt_lbuf *lb)
+{
     memset(lb, 0, sizeof *lb);
     if (l->type != RT_LIGHT_POSITIONAL && l->type != RT_LIGHT_SPOT &&
         l->type != RT_LIGHT_DIRECTIONAL)
@@ -490,7 +503,7 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *l
         rt_lbuf_free(lb);
         return RT_ERR_NOMEM;
     }
-    rt_lbuf_job j = {sc, lb, mx, my, rt_alloc_array(sc->nprim + 1, sizeof(uint32_t)), order,
+    rt_lbuf_job j = {sc, lb, omit, mx, my, rt_alloc_array(sc->nprim + 1, sizeof(uint32_t)), order,
                      NULL, NULL};
     int nt = threads < 1 ? 1 : threads; /* parts: a bucket count and spans of their own */
     if ((size_t)nt > sc->nprim / RT_LBUF_PART_PRIMS + 1)
@@ -524,8 +537,9 @@ int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *l
     return RT_OK;
 }
 
-int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
-                 uint32_t *zb)
+/* rt_lbuf_find and rt_lbuf_find_z: *z the depth of the ray's origin */
+static inline __attribute__((always_inline)) int
+rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n, double *zo)
 {
     double u, v, z;
     if (!rt_lbuf_proj(lb, r->o, &u, &v, &z) || !isfinite(u) || !isfinite(v))
@@ -554,6 +568,22 @@ int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint
     const size_t ci = (size_t)cy * (size_t)lb->nu + (size_t)cx;
     *ids = lb->ids + lb->off[ci];
     *n = lb->off[ci + 1] - lb->off[ci];
-    *zb = rt_lbuf_bucket(lb, z + lb->zeps);
+    *zo = z;
     return 1;
+}
+
+int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
+                 uint32_t *zb)
+{
+    double z;
+    const int f = rt_lbuf_find_at(lb, r, ids, n, &z);
+    if (f > 0)
+        *zb = rt_lbuf_bucket(lb, z + lb->zeps);
+    return f;
+}
+
+int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
+                   double *z)
+{
+    return rt_lbuf_find_at(lb, r, ids, n, z);
 }

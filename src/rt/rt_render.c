@@ -34,7 +34,9 @@
  * superset of what they can hit: the grid is not walked), unless the lists would exceed
  * RT_CAND_PER_RAY entries per ray or the raster RT_CAND_RAYS rays (then the mask alone);
  * the lists ascend in a lower bound of the ray's t at the primitive, and a ray stops where
- * that bound passes its best hit's tie window (rt_cover_keys, rt_trace_cands).
+ * that bound passes its best hit's tie window (rt_cover_keys, rt_trace_cands). Eye rays'
+ * reflections off a large flat mirror test the list of a light buffer built from the eye's
+ * mirror image (rt_job_mirrors, rt_mirror_nearest) instead of walking the grid.
  * All of this leaves the picture and the ray counts bit for bit as the direct evaluation.
  */
 
@@ -76,6 +78,15 @@ void rt_render_options_default(rt_render_options *o)
     o->light_buffers = 1;
 }
 
+/* A planar mirror (rt_job_mirrors): a light buffer built from the mirror image of the eye,
+   and the terms of its candidates' t bounds (rt_trace_mirror) */
+#define RT_MIRRORS 2
+typedef struct rt_mirror {
+    rt_lbuf lb;   /* ok = 0: none */
+    double zstep; /* depth per bucket of lb */
+    double k0;    /* lb.zlo less the margins (2 lb.zeps) */
+} rt_mirror;
+
 typedef struct rt_job {
     const rt_scene *sc;
     const rt_camera *cam;
@@ -97,6 +108,8 @@ typedef struct rt_job {
     int packets;        /* one-ray modes without candidate lists: eye rays in 8 x 8 packets
                            (rt_packet.c; the same hits); 0 when GKS_RT_PACKETS=0 */
     rt_lbuf lbuf[RT_MAX_LIGHTS]; /* shadow-ray candidates per light (ok = 0: walk the grid) */
+    rt_mirror mir[RT_MIRRORS];   /* planar mirrors' reflection-ray candidates (rt_job_mirrors) */
+    uint8_t *mir_of;             /* NULL, or per primitive: 0, or k + 1 for a member of mir[k] */
     unsigned short *cover_out; /* NULL, or per pixel: its eye rays that hit (rt_render_cover) */
     uint8_t *corner_hit;       /* corner mode with cover_out: per corner ray, 1 if it hit */
     int tiles_x, ntiles;
@@ -121,7 +134,7 @@ struct rt_frame {
    row-major (in corner mode the corner rays, before averaging), then, when rt_render_cover
    was asked for coverage, one uint16 per ray: its eye-ray hits (corner mode: 0/1 of the
    corner ray; else of the pixel's samples). */
-#define RT_PAYLOAD_COUNTERS 7
+#define RT_PAYLOAD_COUNTERS 8
 
 /* Shadow-ray blocker cache, one per (depth, light) and thread: the opaque primitives that
  * blocked the latest shadow rays, most recent first. After a blocked ray the next one (the
@@ -225,6 +238,8 @@ typedef struct rt_cands {
 static void rt_trace(rt_worker *w, const double o[3], const double d[3], double tmin, double tmax,
                      int depth, double weight, int secondary, long from, const rt_cands *cand,
                      double out[3]);
+static void rt_trace_mirror(rt_worker *w, const rt_mirror *m, const double o[3],
+                            const double d[3], int depth, double weight, long from, double out[3]);
 
 static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double side_eps,
                      const double d[3], int depth, double weight, int kind, long from,
@@ -238,6 +253,20 @@ static void rt_spawn(rt_worker *w, const double p[3], const double n[3], double 
     else
         w->st.refraction_rays++;
     rt_trace(w, o, d, 0.0, INFINITY, depth, weight, 1, from, NULL, out);
+}
+
+/* rt_spawn of the reflection ray of an eye ray off a member of mirror mir (not inline: in
+   rt_secondary it costs the other secondary rays 0.2 % of SPD mount's instructions) */
+static __attribute__((noinline)) void rt_spawn_mirror(rt_worker *w, const rt_mirror *mir,
+                                                      const double p[3], const double n[3],
+                                                      double side_eps, const double d[3],
+                                                      double weight, long from, double out[3])
+{
+    double o[3];
+    for (int i = 0; i < 3; i++)
+        o[i] = p[i] + side_eps * n[i];
+    w->st.reflection_rays++;
+    rt_trace_mirror(w, mir, o, d, 2, weight, from, out);
 }
 
 /* 1 if list ids[0..n-1] of a light buffer holds no primitive but skip up to depth bucket zb
@@ -497,7 +526,13 @@ static void rt_secondary(rt_worker *w, const rt_surface *s, const double P[3], c
         double l = sqrt(dot3(R, R));
         for (int c = 0; c < 3; c++)
             R[c] /= l;
-        rt_spawn(w, P, N, eps, R, depth + 1, weight * wrm, 0, i, col);
+        /* an eye ray's reflection off a flat mirror: the mirror's candidates */
+        const rt_mirror *mir = job->mir_of && depth == 1 && !smooth && job->mir_of[i]
+                                   ? &job->mir[job->mir_of[i] - 1] : NULL;
+        if (mir)
+            rt_spawn_mirror(w, mir, P, N, eps, R, weight * wrm, i, col);
+        else
+            rt_spawn(w, P, N, eps, R, depth + 1, weight * wrm, 0, i, col);
         for (int c = 0; c < 3; c++)
             out[c] += wr[c] * col[c];
     }
@@ -587,6 +622,66 @@ static long rt_trace_cands(const rt_scene *sc, const rt_rayx *r, const rt_cands 
     }
     *tout = best;
     return bi;
+}
+
+/* The nearest hit of ray r, a reflection of an eye ray off a member of mirror m, among m's
+   candidates: the list of the buffer's cell where r's footprint lies (else, -1, the grid
+   walk). The buffer is a light buffer (rt_lbuf.c) built from E', the mirror image of the
+   eye: the ray's line passes (within dev) through E', so its points at the depths of the
+   primitives project into the footprint, and the list is a superset of what it can hit (the
+   primitives left out of the buffer lie on the mirror's plane or behind it, where the ray,
+   eps above the plane and leaving it, never comes: see rt_job_mirrors). As rt_trace_cands,
+   in the list's order, which ascends in the depth bucket b of each primitive's nearest
+   vertex less zeps (depth: along ez from E'): the ray, of unit direction, gains at most its
+   t in depth, so it reaches no point of such a primitive before t = zlo + b zstep - z (z its
+   origin's depth), less zeps more for the rounding of z and of the hit's t (about 1e-15 of
+   the coordinates, zeps 1e-7 of the depths); once that passes best + 2 eb, no later
+   candidate can hit below it, and the rest of the list is left out with the same answer. */
+static long rt_mirror_nearest(rt_worker *w, const rt_mirror *m, const rt_rayx *r, double *tout)
+{
+    const rt_scene *sc = w->job->sc;
+    const uint32_t *ids = NULL;
+    uint32_t n = 0;
+    double z;
+    const int f = rt_lbuf_find_z(&m->lb, r, &ids, &n, &z);
+    if (f < 0)
+        return rt_trace_nearest(sc, &w->ctx, r, tout);
+    w->st.reflection_mirror++;
+    double best = INFINITY, eb = 0.0;
+    long bi = -1;
+    const double k0 = m->k0 - z, zstep = m->zstep;
+    const uint16_t *zb = m->lb.zb;
+    for (uint32_t k = 0; k < n; k++) {
+        const uint32_t i = ids[k];
+        const double lim = best + 2.0 * eb;
+        if (k0 + (double)zb[i] * zstep > lim)
+            break;
+        double t;
+        if (i != r->skip && rt_isect_prim(sc, r, i, r->tmin, lim < r->tmax ? lim : r->tmax, &t))
+            rt_nearest_update(sc, r, i, t, &best, &bi, &eb);
+    }
+    *tout = best;
+    return bi;
+}
+
+/* rt_trace of a reflection ray (o, d) from primitive from, a member of mirror m, with
+   rt_mirror_nearest instead of the walk */
+static void rt_trace_mirror(rt_worker *w, const rt_mirror *m, const double o[3],
+                            const double d[3], int depth, double weight, long from, double out[3])
+{
+    const rt_job *job = w->job;
+    double tmin = 0.0, tmax = INFINITY;
+    for (int c = 0; c < 3; c++)
+        out[c] = job->o.background[c];
+    if (job->o.clip_secondary && !rt_clip_volume(job->cam, o, d, &tmin, &tmax))
+        return;
+    rt_rayx r;
+    if (!rt_rayx_setup(&r, o, d, tmin, tmax))
+        return;
+    r.skip = (uint32_t)from;
+    double t;
+    const long i = rt_mirror_nearest(w, m, &r, &t);
+    rt_shade_hit(w, o, d, depth, weight, i, t, out);
 }
 
 /* from: the primitive a secondary ray leaves (never hit by it, rt_rayx.skip), -1 for eye rays;
@@ -1365,6 +1460,7 @@ static void rt_counters(const rt_stats *s, uint64_t c[RT_PAYLOAD_COUNTERS])
     c[4] = s->refraction_rays;
     c[5] = s->shadow_lbuf;
     c[6] = s->shadow_walks;
+    c[7] = s->reflection_mirror;
 }
 
 /* packs tile t traced by w (counters: the difference of w's stats to before) */
@@ -1437,6 +1533,7 @@ int rt_frame_store(rt_frame *f, int tile, const void *payload, size_t bytes)
     r->refraction_rays += c[4];
     r->shadow_lbuf += c[5];
     r->shadow_walks += c[6];
+    r->reflection_mirror += c[7];
     return RT_OK;
 }
 
@@ -1581,7 +1678,253 @@ static void rt_job_lbufs_free(rt_job *job)
 {
     for (int li = 0; li < RT_MAX_LIGHTS; li++)
         rt_lbuf_free(&job->lbuf[li]);
+    for (int k = 0; k < RT_MIRRORS; k++)
+        rt_lbuf_free(&job->mir[k].lb);
+    free(job->mir_of);
+    job->mir_of = NULL;
 }
+/* Planar mirrors. An eye ray's reflection off a flat primitive (geometric normal, no smooth
+ * normal) lies on the line through the mirror image E' of the eye in the primitive's plane,
+ * like a shadow ray on the line through its light: a light buffer built from E'
+ * (rt_lbuf_build_omit) gives it a short list of candidates in depth order instead of the
+ * grid walk (rt_trace_mirror). Mirrors: the planes of the flat primitives that reflect on
+ * the eye's side (specular ks > 0 or transparent), grouped by plane: a member's unit normal
+ * n (turned to the eye) within RT_MIRROR_NTOL of the group's in every component, each
+ * vertex v within delta of n . v = c. Built for at most RT_MIRRORS groups that cover the
+ * most raster area, when that area (an upper bound of their eye rays: it ignores what hides
+ * them) is at least RT_MIRROR_MIN_RAYS and RT_MIRROR_PER_PRIM times the primitives' number
+ * (a buffer's build costs about 1500 instructions per primitive, a reflection ray that takes
+ * the list saves about 1000: docs/bench/rt_tuning.md). Left out of a buffer: the primitives
+ * with every vertex at n . v - c <= delta (on the plane or behind it). A ray leaving a member
+ * starts eps >= 1e-9 of the scene's extent E above the member's plane (rt_eps; the hit point
+ * lies on it to the hit's error, about 1e-15 of the coordinates), and its direction R has
+ * R . N = cos_i >= 0 for the member's normal N (to the rounding), so R . n >= -2e-12 and
+ * within the scene box (t <= 1.8 E) it sinks by at most 4e-12 E: its points there stay
+ * above the plane by nearly eps. delta is 1e-3 of that, and the rounding of the tests is
+ * below 1e-3 of it when the coordinates' magnitude is at most RT_MIRROR_MAX_OFFSET times E
+ * (else no mirrors): no primitive left out can be hit. The perspective camera only (the
+ * eye: its projection reference point). */
+#define RT_MIRROR_MIN_RAYS 4096.0
+#define RT_MIRROR_PER_PRIM 4.0
+#define RT_MIRROR_MAX_OFFSET 1000.0
+
+typedef struct rt_mirror_key {
+    double n[3], c; /* the plane, n turned to the eye */
+    double area;    /* raster area of the primitive */
+    uint32_t i;
+} rt_mirror_key;
+
+/* by the normal rounded to RT_MIRROR_NQ, then c, then primitive */
+#define RT_MIRROR_NQ 0x1p40
+static int rt_mirror_qn_cmp(const double na[3], const double nb[3])
+{
+    for (int c = 0; c < 3; c++) {
+        const double qa = nearbyint(na[c] * RT_MIRROR_NQ), qb = nearbyint(nb[c] * RT_MIRROR_NQ);
+        if (qa != qb)
+            return qa < qb ? -1 : 1;
+    }
+    return 0;
+}
+
+static int rt_mirror_key_cmp(const void *pa, const void *pb)
+{
+    const rt_mirror_key *a = pa, *b = pb;
+    const int q = rt_mirror_qn_cmp(a->n, b->n);
+    if (q)
+        return q;
+    if (a->c != b->c)
+        return a->c < b->c ? -1 : 1;
+    return a->i < b->i ? -1 : (a->i > b->i);
+}
+
+/* 1 if unit normals a and b differ by at most RT_MIRROR_NTOL in every component */
+#define RT_MIRROR_NTOL 1e-12
+static int rt_mirror_same_n(const double a[3], const double b[3])
+{
+    return fabs(a[0] - b[0]) <= RT_MIRROR_NTOL && fabs(a[1] - b[1]) <= RT_MIRROR_NTOL &&
+           fabs(a[2] - b[2]) <= RT_MIRROR_NTOL;
+}
+
+/* the raster area of primitive i's projection (clipped to the raster by its box); the whole
+   raster when a vertex does not project */
+static double rt_mirror_area(const rt_scene *sc, const rt_camera *cam, const double vm[4][4],
+                             double ws, double gw, double gh, size_t i)
+{
+    const size_t nv = rt_prim_nverts(sc, i);
+    double bb[4] = {INFINITY, -INFINITY, INFINITY, -INFINITY}, a = 0.0, p0[2] = {0, 0}, pl[2];
+    for (size_t k = 0; k < nv; k++) {
+        double x[3], q[2];
+        rt_prim_vertex(sc, i, k, x);
+        if (!rt_camera_project(cam, vm, ws, x, &q[0], &q[1]))
+            return gw * gh;
+        if (k == 0)
+            memcpy(p0, q, sizeof p0);
+        else
+            a += pl[0] * q[1] - q[0] * pl[1];
+        memcpy(pl, q, sizeof pl);
+        bb[0] = fmin(bb[0], q[0]);
+        bb[1] = fmax(bb[1], q[0]);
+        bb[2] = fmin(bb[2], q[1]);
+        bb[3] = fmax(bb[3], q[1]);
+    }
+    if (nv == 0)
+        return 0.0;
+    a = 0.5 * fabs(a + pl[0] * p0[1] - p0[0] * pl[1]);
+    const double bw = bb[1] - bb[0], bh = bb[3] - bb[2];
+    const double cw = fmin(bb[1], gw) - fmax(bb[0], 0.0), ch = fmin(bb[3], gh) - fmax(bb[2], 0.0);
+    if (!(cw > 0.0) || !(ch > 0.0))
+        return 0.0;
+    if (sc->prim[i].kind == RT_KIND_POLY || !(bw * bh > 0.0))
+        return cw * ch; /* loops, or no area: the clipped box */
+    return fmin(a, bw * bh) * (cw * ch) / (bw * bh);
+}
+
+/* 1 if surface s spawns reflection rays (specular ks Cs > 0, or transparent: Fresnel) */
+static int rt_mirror_surf(const rt_surface *s)
+{
+    return (s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0 &&
+            fmax(s->specular[0], fmax(s->specular[1], s->specular[2])) > 0.0) ||
+           s->transparency > 0.0;
+}
+
+/* 1 if primitive i reflects on its side that faces point E; its plane (n turned to E, c) */
+static int rt_mirror_plane(const rt_scene *sc, size_t i, const double E[3], double n[3],
+                           double *c)
+{
+    const rt_prim *p = &sc->prim[i];
+    if (!rt_mirror_surf(rt_prim_surf(sc, p, 0)) && !rt_mirror_surf(rt_prim_surf(sc, p, 1)))
+        return 0; /* (before the normal: most primitives are not mirrors) */
+    double v[3];
+    rt_prim_ng(sc, i, n);
+    rt_prim_vertex(sc, i, 0, v);
+    const double h = dot3(n, E) - dot3(n, v);
+    if (h == 0.0 || !isfinite(h) || !rt_mirror_surf(rt_prim_surf(sc, p, h < 0.0)))
+        return 0;
+    for (int k = 0; k < 3; k++) /* (+ 0.0: -0 becomes +0, equal planes compare equal) */
+        n[k] = (h < 0.0 ? -n[k] : n[k]) + 0.0;
+    *c = dot3(n, v);
+    return 1;
+}
+
+/* 1 if every vertex v of primitive i has n . v - c <= delta (and >= -delta with two) */
+static int rt_mirror_below(const rt_scene *sc, size_t i, const double n[3], double c,
+                           double delta, int two)
+{
+    const size_t nv = rt_prim_nverts(sc, i);
+    for (size_t k = 0; k < nv; k++) {
+        double v[3];
+        rt_prim_vertex(sc, i, k, v);
+        const double h = dot3(n, v) - c;
+        if (!(h <= delta) || (two && !(h >= -delta)))
+            return 0;
+    }
+    return 1;
+}
+
+/* mirror m of plane (n, c) for the members keys[a..b-1]: its buffer from the eye's image,
+   the members marked in job->mir_of; RT_OK also when no buffer is made */
+static int rt_mirror_build(rt_job *job, int m, const rt_mirror_key *keys, size_t a, size_t b,
+                           double delta)
+{
+    const rt_scene *sc = job->sc;
+    const double *n = keys[a].n, c = keys[a].c, *E = job->cam->prp;
+    uint8_t *omit = rt_alloc_array(sc->nprim, 1);
+    if (!omit)
+        return RT_ERR_NOMEM;
+    for (size_t i = 0; i < sc->nprim; i++)
+        omit[i] = (uint8_t)rt_mirror_below(sc, i, n, c, delta, 0);
+    rt_light l;
+    memset(&l, 0, sizeof l);
+    l.type = RT_LIGHT_POSITIONAL;
+    const double h = dot3(n, E) - c;
+    for (int k = 0; k < 3; k++)
+        l.position[k] = E[k] - 2.0 * h * n[k];
+    rt_mirror *mi = &job->mir[m];
+    int rc = rt_lbuf_build_omit(sc, &l, omit, rt_par_threads(job->o.threads), &mi->lb);
+    free(omit);
+    if (rc != RT_OK || !mi->lb.ok)
+        return rc;
+    mi->zstep = mi->lb.zscale > 0.0 ? 1.0 / mi->lb.zscale : 0.0;
+    mi->k0 = mi->lb.zlo - 2.0 * mi->lb.zeps;
+    for (size_t k = a; k < b; k++)
+        job->mir_of[keys[k].i] = (uint8_t)(m + 1);
+    return RT_OK;
+}
+
+/* the mirrors of the frame (see above); RT_OK also when there are none */
+static int rt_job_mirrors(rt_job *job)
+{
+    const rt_scene *sc = job->sc;
+    const rt_camera *cam = job->cam;
+    const double rays = (double)job->gw * (double)job->gh * (double)(job->m * job->m);
+    if (!job->o.light_buffers || !sc->use_grid || sc->nprim == 0 || sc->nprim > UINT32_MAX ||
+        (double)sc->nprim > rays || job->o.max_depth < 2 || !cam->perspective)
+        return RT_OK;
+    double ext = 0.0, mag = 0.0;
+    for (int k = 0; k < 3; k++) {
+        ext = fmax(ext, sc->bbox[3 + k] - sc->bbox[k]);
+        mag = fmax(mag, fmax(fabs(sc->bbox[k]), fabs(sc->bbox[3 + k])));
+    }
+    mag = fmax(mag, rt_absmax3(cam->prp));
+    if (!(ext > 0.0) || !(mag <= RT_MIRROR_MAX_OFFSET * ext))
+        return RT_OK;
+    const double delta = 1e-3 * 1e-9 * ext; /* 1e-3 of rt_eps's least offset */
+    double vm[4][4], ws;
+    if (!rt_camera_vmap(cam, vm, &ws))
+        return RT_OK;
+    rt_mirror_key *keys = rt_alloc_array(sc->nprim, sizeof *keys);
+    if (!keys)
+        return RT_ERR_NOMEM;
+    size_t nk = 0;
+    for (size_t i = 0; i < sc->nprim; i++) {
+        rt_mirror_key *k = &keys[nk];
+        if ((sc->prim_vd && sc->prim_vd[i] != RT_NO_VD) || (i >= sc->ntri_plain && i < sc->ntri))
+            continue; /* vertex data or a mesh's triangle: maybe smooth */
+        if (!rt_mirror_plane(sc, i, cam->prp, k->n, &k->c))
+            continue;
+        k->i = (uint32_t)i;
+        k->area = rt_mirror_area(sc, cam, (const double(*)[4])vm, ws, job->gw, job->gh, i);
+        nk++;
+    }
+    qsort(keys, nk, sizeof *keys, rt_mirror_key_cmp);
+    /* the groups: runs of equal rounded n whose c lie within delta of the run's first;
+       members whose n is not the run's first's within RT_MIRROR_NTOL or with a vertex off
+       its plane by more than delta are dropped (their area too) */
+    size_t best[RT_MIRRORS][2] = {{0, 0}};
+    double barea[RT_MIRRORS] = {0.0};
+    for (size_t a = 0, b; a < nk; a = b) {
+        double area = 0.0, n[3], c = keys[a].c;
+        memcpy(n, keys[a].n, sizeof n);
+        size_t w = a; /* the members kept move to keys[a..w-1] */
+        for (b = a; b < nk && !rt_mirror_qn_cmp(keys[b].n, n) && keys[b].c - c <= delta; b++)
+            if (rt_mirror_same_n(keys[b].n, n) && rt_mirror_below(sc, keys[b].i, n, c, delta, 1)) {
+                area += keys[b].area;
+                keys[w] = keys[b];
+                keys[w++].c = c;
+            }
+        const double need = fmax(RT_MIRROR_MIN_RAYS, RT_MIRROR_PER_PRIM * (double)sc->nprim);
+        if (!(area * (double)(job->m * job->m) >= need))
+            continue;
+        int slot = -1; /* the smallest kept group, replaced if this one is larger */
+        for (int m = 0; m < RT_MIRRORS; m++)
+            if (barea[m] < area && (slot < 0 || barea[m] < barea[slot]))
+                slot = m;
+        if (slot >= 0) {
+            barea[slot] = area;
+            best[slot][0] = a;
+            best[slot][1] = w;
+        }
+    }
+    int rc = RT_OK;
+    if (barea[0] > 0.0 && !(job->mir_of = rt_calloc_array(sc->nprim, 1)))
+        rc = RT_ERR_NOMEM;
+    for (int m = 0; m < RT_MIRRORS && rc == RT_OK; m++)
+        if (barea[m] > 0.0)
+            rc = rt_mirror_build(job, m, keys, best[m][0], best[m][1], delta);
+    free(keys);
+    return rc;
+}
+
 
 /* frees what rt_render_cover allocated for the job and its nt workers w (w may be NULL) */
 static void rt_job_release(rt_job *job, rt_worker *w, int nt)
@@ -1763,6 +2106,8 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
     }
     const double tl = rt_phase(&job, "light buffers", 0.0);
     int rc = rt_job_lbufs(&job);
+    if (rc == RT_OK)
+        rc = rt_job_mirrors(&job);
     rt_phase(&job, NULL, tl);
     job.tiles_x = (job.gw + RT_TILE - 1) / RT_TILE;
     job.ntiles = job.tiles_x * ((job.gh + RT_TILE - 1) / RT_TILE);
