@@ -516,7 +516,20 @@ typedef struct rt_lbuf {
     double zlo, zscale;       /* depth bucket of z: (z - zlo) * zscale, clamped */
     uint32_t *off, *ids;      /* cell lists (nu * nv + 1 offsets), in order of zb */
     uint16_t *zb;             /* per primitive: bucket of its nearest depth (less zeps) */
+    float *edge;              /* per primitive 4 lines (a, b, c) on the plane, (a, b) unit:
+                                 a u + b v + c >= 0 holds on its projection (rt_lbuf_query) */
+    double emargin;           /* the lines' margin: the build's and their float rounding */
 } rt_lbuf;
+
+/* A shadow ray's place in a light buffer (rt_lbuf_query): its cell's list ids[0..n-1], the
+   depth bucket zb of its origin, its footprint's centre (u, v) and the bound -thr below
+   which a primitive's line at (u, v) shows that the ray surely misses it (float: the lines'
+   arithmetic) */
+typedef struct rt_lbuf_q {
+    const uint32_t *ids;
+    uint32_t n, zb;
+    float u, v, thr;
+} rt_lbuf_q;
 
 /* builds the buffer of light l; lb->ok = 0 (RT_OK) when the light gets none; RT_ERR_NOMEM */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb);
@@ -529,6 +542,18 @@ void rt_lbuf_free(rt_lbuf *lb);
    cannot be hit), 0 if no primitive can be hit, -1 if the ray must walk the grid */
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb);
+/* rt_lbuf_find with the footprint kept in *q (q->ids, n, zb as rt_lbuf_find's) */
+int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, rt_lbuf_q *q);
+/* the position of the next candidate of q's list from position k on, up to its bucket zb, but
+   skip, that the ray can hit (whose projection q's footprint does not surely miss); q->n
+   when there is none */
+uint32_t rt_lbuf_next(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k);
+/* the transmittance of shadow ray r over the candidates of q that rt_lbuf_next finds from
+   position k on (the ones it can hit, in list order), as rt_trace_transmit_list gives it
+   over the whole list: the product of the transparencies of the sides hit, 0 at the first
+   opaque primitive hit (*blocker: it; -1 otherwise) */
+double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *q,
+                        const rt_rayx *r, uint32_t k, long *blocker);
 /* the same with *z the depth of the ray's origin (along ez from L) instead of its bucket */
 int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                    double *z);

@@ -35,10 +35,14 @@
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_prim.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define RT_LBUF_CELLS_PER_PRIM 16.0 /* measured: docs/bench/rt_tuning.md (2026-12-05) */
 #define RT_LBUF_MIN_CELLS 4096
@@ -60,6 +64,7 @@ void rt_lbuf_free(rt_lbuf *lb)
     free(lb->off);
     free(lb->ids);
     free(lb->zb);
+    free(lb->edge);
     memset(lb, 0, sizeof *lb);
 }
 
@@ -196,6 +201,55 @@ static int rt_lbuf_project(const rt_lbuf *lb, const rt_scene *sc, size_t i, rt_l
     return 1;
 }
 
+/* Primitive i's lines (rt_lbuf.edge) from its projection pp: a triangle's, quad's or cell
+   array's convex polygon of projected vertices (its edges, turned so that the inside is
+   positive), a polygon's box; an edge or polygon without length or area: no line (0, 0, 1).
+   On the plane (u, v), from the cell units of pp (rounding ~1e-16 of the coordinates, far
+   below the build's margin). */
+static void rt_lbuf_edges(const rt_lbuf *lb, const rt_scene *sc, size_t i, const rt_lbuf_proj2 *pp,
+                          float *out)
+{
+    double q[4][2], L[4][3];
+    int n = 0;
+    const int kind = sc->prim[i].kind;
+    if (kind != RT_KIND_POLY && pp->n >= 3 && pp->n <= 4) {
+        n = (int)pp->n;
+        for (int k = 0; k < n; k++) {
+            q[k][0] = pp->q[2 * k] / lb->su + lb->u0;
+            q[k][1] = pp->q[2 * k + 1] / lb->sv + lb->v0;
+        }
+    } else { /* the box, counter-clockwise */
+        n = 4;
+        const double u0 = pp->bb[0] / lb->su + lb->u0, u1 = pp->bb[2] / lb->su + lb->u0;
+        const double v0 = pp->bb[1] / lb->sv + lb->v0, v1 = pp->bb[3] / lb->sv + lb->v0;
+        q[0][0] = u0, q[0][1] = v0, q[1][0] = u1, q[1][1] = v0;
+        q[2][0] = u1, q[2][1] = v1, q[3][0] = u0, q[3][1] = v1;
+    }
+    double area = 0.0;
+    for (int k = 0; k < n; k++) {
+        const double *p0 = q[k], *p1 = q[(k + 1) % n];
+        area += p0[0] * p1[1] - p1[0] * p0[1];
+    }
+    const double sg = area > 0.0 ? 1.0 : -1.0;
+    for (int k = 0; k < 4; k++) {
+        L[k][0] = L[k][1] = 0.0;
+        L[k][2] = 1.0;
+        if (k >= n || !(fabs(area) > 0.0) || !isfinite(area))
+            continue;
+        const double *p0 = q[k], *p1 = q[(k + 1) % n];
+        const double a = -sg * (p1[1] - p0[1]), b = sg * (p1[0] - p0[0]);
+        const double l = sqrt(a * a + b * b);
+        if (!(l > 0.0) || !isfinite(l))
+            continue;
+        L[k][0] = a / l;
+        L[k][1] = b / l;
+        L[k][2] = -(L[k][0] * p0[0] + L[k][1] * p0[1]);
+    }
+    for (int k = 0; k < 4; k++) /* a[4], b[4], c[4] */
+        for (int c = 0; c < 3; c++)
+            out[4 * c + k] = (float)L[k][c];
+}
+
 /* The cells the projection, enlarged by (mx, my) cell units, reaches; per row y (the strip
    [y - my, y + 1 + my]) from the u-range of the primitive within the strip: the u-range of
    its edges (every loop's, closed) clipped to the strip (the boundary of the part inside the
@@ -308,6 +362,8 @@ static void rt_lbuf_project_part(void *arg, int k, int n)
             j->first[i] = (uint32_t)(pt->pp.nrs / 3);
             j->lb->zb[i] = 0;
             pt->bcount[1]++;
+            for (int k = 0; k < 12; k++) /* no lines: (0, 0, 1) */
+                j->lb->edge[12 * i + (size_t)k] = k >= 8 ? 1.0f : 0.0f;
             continue;
         }
         const int pr = rt_lbuf_project(j->lb, j->sc, i, &pt->pp);
@@ -317,6 +373,7 @@ static void rt_lbuf_project_part(void *arg, int k, int n)
             pt->rc = pr == 0 ? 0 : -1;
             return;
         }
+        rt_lbuf_edges(j->lb, j->sc, i, &pt->pp, j->lb->edge + 12 * i);
         pt->total += nc_i;
         if (pt->total > RT_LBUF_MAX_ENTRIES) {
             pt->rc = 2;
@@ -425,6 +482,13 @@ static int rt_lbuf_layout(const rt_scene *sc, const rt_light *l, rt_lbuf *lb, do
     lb->zeps = RT_LBUF_BOX_MARGIN * (fabs(zmax) + fabs(zmin));
     lb->zlo = zmin;
     lb->zscale = zmax > zmin ? (double)RT_LBUF_BUCKETS / (zmax - zmin) : 0.0;
+    /* the lines' margin: e, and the float rounding of the lines (2^-24 of |a u| + |b v| +
+       |c| <= 4 A for points and vertices in the buffer, |u|, |v| <= A: 2^-22 A) and of their
+       evaluation in float (u, v rounded, two products, two sums: below 2^-20 A), taken 4
+       times */
+    const double A = fmax(fmax(fabs(lb->u0), fabs(lb->u0 + (double)lb->nu / lb->su)),
+                          fmax(fabs(lb->v0), fabs(lb->v0 + (double)lb->nv / lb->sv)));
+    lb->emargin = e + 0x1p-18 * A;
     *mx = e * lb->su; /* the margin e in cell units */
     *my = e * lb->sv;
     return 1;
@@ -498,7 +562,8 @@ int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omi
     uint32_t *order = rt_calloc_array(sc->nprim + RT_LBUF_BUCKETS + 1, sizeof(uint32_t));
     lb->off = rt_calloc_array(nc + 1, sizeof(uint32_t));
     lb->zb = rt_alloc_array(sc->nprim, sizeof(uint16_t));
-    if (!order || !lb->off || !lb->zb) {
+    lb->edge = rt_alloc_array(sc->nprim, 12 * sizeof(float));
+    if (!order || !lb->off || !lb->zb || !lb->edge) {
         free(order);
         rt_lbuf_free(lb);
         return RT_ERR_NOMEM;
@@ -537,9 +602,11 @@ int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omi
     return RT_OK;
 }
 
-/* rt_lbuf_find and rt_lbuf_find_z: *z the depth of the ray's origin */
+/* rt_lbuf_find, rt_lbuf_find_z and rt_lbuf_query: *zo the depth of the ray's origin, (*uo,
+   *vo) its projection, *mo the footprint's half side */
 static inline __attribute__((always_inline)) int
-rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n, double *zo)
+rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n, double *zo,
+                double *uo, double *vo, double *mo)
 {
     double u, v, z;
     if (!rt_lbuf_proj(lb, r->o, &u, &v, &z) || !isfinite(u) || !isfinite(v))
@@ -569,14 +636,17 @@ rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint3
     *ids = lb->ids + lb->off[ci];
     *n = lb->off[ci + 1] - lb->off[ci];
     *zo = z;
+    *uo = u;
+    *vo = v;
+    *mo = m;
     return 1;
 }
 
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb)
 {
-    double z;
-    const int f = rt_lbuf_find_at(lb, r, ids, n, &z);
+    double z, u, v, m;
+    const int f = rt_lbuf_find_at(lb, r, ids, n, &z, &u, &v, &m);
     if (f > 0)
         *zb = rt_lbuf_bucket(lb, z + lb->zeps);
     return f;
@@ -585,5 +655,85 @@ int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint
 int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                    double *z)
 {
-    return rt_lbuf_find_at(lb, r, ids, n, z);
+    double u, v, m;
+    return rt_lbuf_find_at(lb, r, ids, n, z, &u, &v, &m);
+}
+
+/* The footprint: every point of the ray at a primitive's depth projects within m of (u, v)
+   on each axis, within 1.5 m in any direction. A ray that the primitive tests take to hit a
+   primitive meets its projection there, to far less than the build's margin e; the lines
+   are those of the projection as the build computed it (the cells' lists were made from
+   the same points, enlarged by e), and their float rounding is below emargin - e. So a
+   primitive with a line below -(1.5 m + emargin) at (u, v) cannot be hit: thr. */
+int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, rt_lbuf_q *q)
+{
+    double z, m, u, v;
+    q->n = 0;
+    const int f = rt_lbuf_find_at(lb, r, &q->ids, &q->n, &z, &u, &v, &m);
+    if (f > 0) {
+        q->zb = rt_lbuf_bucket(lb, z + lb->zeps);
+        /* in float for the lines' arithmetic (its rounding: emargin); thr rounded up */
+        q->u = (float)u;
+        q->v = (float)v;
+        q->thr = (float)((1.5 * m + lb->emargin) * (1.0 + 0x1p-20));
+    }
+    return f;
+}
+
+static inline __attribute__((always_inline)) uint32_t
+rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k)
+{
+    const uint16_t *zb = lb->zb;
+#if defined(__SSE2__) /* the 4 lines at once */
+    const __m128 vu = _mm_set1_ps(q->u), vv = _mm_set1_ps(q->v), vt = _mm_set1_ps(-q->thr);
+#endif
+    for (; k < q->n; k++) {
+        const uint32_t i = q->ids[k];
+        if (zb[i] > q->zb)
+            return q->n;
+        const float *e = lb->edge + 12 * (size_t)i;
+#if defined(__SSE2__)
+        const __m128 val = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(e), vu),
+                                                 _mm_mul_ps(_mm_loadu_ps(e + 4), vv)),
+                                      _mm_loadu_ps(e + 8));
+        const int miss = _mm_movemask_ps(_mm_cmplt_ps(val, vt));
+#else
+        int miss = 0;
+        for (int c = 0; c < 4; c++)
+            miss |= (e[c] * q->u + e[4 + c] * q->v) + e[8 + c] < -q->thr;
+#endif
+        if (!(miss | (i == skip)))
+            return k;
+    }
+    return q->n;
+}
+
+uint32_t rt_lbuf_next(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k)
+{
+    return rt_lbuf_next_at(lb, q, skip, k);
+}
+
+double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *q,
+                        const rt_rayx *r, uint32_t k, long *blocker)
+{
+    double T = 1.0;
+    *blocker = -1;
+    for (; k < q->n; k = rt_lbuf_next_at(lb, q, r->skip, k + 1)) {
+        const uint32_t i = q->ids[k];
+        double t;
+        if (!rt_isect_prim(sc, r, i, r->tmin, r->tmax, &t))
+            continue;
+        const rt_prim *p = &sc->prim[i];
+        if (p->opaque) {
+            *blocker = (long)i;
+            return 0.0;
+        }
+        double ng[3];
+        rt_prim_ng(sc, i, ng);
+        const double den = ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2];
+        T *= rt_prim_surf(sc, p, den > 0.0 ? 1 : 0)->transparency;
+        if (!(T > 0.0))
+            return 0.0;
+    }
+    return T;
 }

@@ -269,20 +269,10 @@ static __attribute__((noinline)) void rt_spawn_mirror(rt_worker *w, const rt_mir
     rt_trace_mirror(w, mir, o, d, 2, weight, from, out);
 }
 
-/* 1 if list ids[0..n-1] of a light buffer holds no primitive but skip up to depth bucket zb
-   (rt_trace_transmit_list would test none) */
-static int rt_lbuf_nothing(const rt_lbuf *lb, const uint32_t *ids, uint32_t n, uint32_t zb,
-                           uint32_t skip)
-{
-    for (uint32_t k = 0; k < n && lb->zb[ids[k]] <= zb; k++)
-        if (ids[k] != skip)
-            return 0;
-    return 1;
-}
-
 /* the transmittance of the shadow ray from o toward light li over [t0, t1] (t0 < t1), in
-   this order: the blocker cache (w->shadow_cache), the light's buffer (job->lbuf), the grid
-   walk; from is the primitive the ray leaves */
+   this order: the blocker cache (w->shadow_cache), the light's buffer (job->lbuf: the
+   candidates of the ray's cell whose projection its footprint does not surely miss,
+   rt_lbuf_next), the grid walk; from is the primitive the ray leaves */
 static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const double o[3],
                           const double L[3], double t0, double t1)
 {
@@ -292,24 +282,25 @@ static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const doub
     rt_rayx r;
     rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
     const rt_lbuf *lb = &job->lbuf[li];
-    const uint32_t *ids = NULL;
-    uint32_t n = 0, zb = 0;
-    int f = -2; /* -2: the buffer not asked yet */
+    rt_lbuf_q q;
+    uint32_t k0 = 0; /* the first candidate of the buffer's list */
+    int f = -2;      /* -2: the buffer not asked yet */
     if (!cache->live && lb->ok) {
         /* no blocker to probe: the buffer first, on the ray's origin and its direction
            as rt_rayx_setup makes it (components below 1e-150 of the largest flushed
-           to 0), so the same answer as after the set-up; a list with nothing to test
-           below the origin's depth but the primitive the ray leaves answers "lit"
-           without the set-up (a quarter of gears' buffer rays) */
+           to 0), so the same answer as after the set-up; no candidate left answers "lit"
+           without the set-up */
         const double a0 = fabs(L[0]), a1 = fabs(L[1]), a2 = fabs(L[2]);
         const double a01 = a0 > a1 ? a0 : a1, tiny = 1e-150 * (a01 > a2 ? a01 : a2);
         memcpy(r.o, o, sizeof r.o);
         r.d[0] = a0 < tiny ? 0.0 : L[0];
         r.d[1] = a1 < tiny ? 0.0 : L[1];
         r.d[2] = a2 < tiny ? 0.0 : L[2];
-        f = rt_lbuf_find(lb, &r, &ids, &n, &zb);
+        f = rt_lbuf_query(lb, &r, &q);
+        if (f > 0)
+            k0 = rt_lbuf_next(lb, &q, (uint32_t)from, 0);
     }
-    if (f == 0 || (f > 0 && rt_lbuf_nothing(lb, ids, n, zb, (uint32_t)from))) {
+    if (f == 0 || (f > 0 && k0 == q.n)) {
         T = 1.0;
         w->st.shadow_lbuf++;
     } else if (!rt_rayx_setup(&r, o, L, t0, t1)) {
@@ -329,19 +320,25 @@ static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const doub
             rt_scache_front(cache, k, cache->id[k]);
         } else {
             /* the light buffer's candidates where it has them, else the walk */
-            if (f == -2)
-                f = lb->ok ? rt_lbuf_find(lb, &r, &ids, &n, &zb) : -1;
+            if (f == -2) {
+                f = lb->ok ? rt_lbuf_query(lb, &r, &q) : -1;
+                if (f > 0)
+                    k0 = rt_lbuf_next(lb, &q, (uint32_t)from, 0);
+            }
             w->st.shadow_lbuf += f >= 0;
             w->st.shadow_walks += f < 0;
-            if (f < 0)
+            long blocker = -1;
+            if (f < 0) {
                 T = rt_trace_transmit(sc, &w->ctx, &r, 0);
-            else if (f > 0)
-                T = rt_trace_transmit_list(sc, &w->ctx, &r, ids, n, lb->zb, zb);
-            else
+                blocker = w->ctx.blocker;
+            } else if (f > 0) {
+                T = rt_lbuf_transmit(sc, lb, &q, &r, k0, &blocker);
+            } else {
                 T = 1.0;
+            }
             cache->live = T == 0.0;
-            if (T == 0.0 && w->ctx.blocker >= 0)
-                rt_scache_front(cache, RT_SCACHE, w->ctx.blocker);
+            if (T == 0.0 && blocker >= 0)
+                rt_scache_front(cache, RT_SCACHE, blocker);
         }
     }
     return T;
