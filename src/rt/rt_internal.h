@@ -533,9 +533,10 @@ typedef struct rt_lbuf_q {
 
 /* builds the buffer of light l; lb->ok = 0 (RT_OK) when the light gets none; RT_ERR_NOMEM */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb);
-/* the same without the primitives i with omit[i] != 0 in its lists (omit NULL: none) */
-int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int threads,
-                       rt_lbuf *lb);
+/* the same without the primitives i with omit[i] != 0 in its lists (omit NULL: none), with
+   the lines for rt_lbuf_next when lines != 0 (edge NULL otherwise: rt_lbuf_find(_z) only) */
+int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int lines,
+                       int threads, rt_lbuf *lb);
 void rt_lbuf_free(rt_lbuf *lb);
 /* the candidates of a shadow ray toward lb's light: 1 with the list ids[0..n-1] and the
    bucket zb of the ray origin's depth (entries of a later bucket lie beyond the origin: they

@@ -362,7 +362,7 @@ static void rt_lbuf_project_part(void *arg, int k, int n)
             j->first[i] = (uint32_t)(pt->pp.nrs / 3);
             j->lb->zb[i] = 0;
             pt->bcount[1]++;
-            for (int k = 0; k < 12; k++) /* no lines: (0, 0, 1) */
+            for (int k = 0; j->lb->edge && k < 12; k++) /* no lines: (0, 0, 1) */
                 j->lb->edge[12 * i + (size_t)k] = k >= 8 ? 1.0f : 0.0f;
             continue;
         }
@@ -373,7 +373,8 @@ static void rt_lbuf_project_part(void *arg, int k, int n)
             pt->rc = pr == 0 ? 0 : -1;
             return;
         }
-        rt_lbuf_edges(j->lb, j->sc, i, &pt->pp, j->lb->edge + 12 * i);
+        if (j->lb->edge)
+            rt_lbuf_edges(j->lb, j->sc, i, &pt->pp, j->lb->edge + 12 * i);
         pt->total += nc_i;
         if (pt->total > RT_LBUF_MAX_ENTRIES) {
             pt->rc = 2;
@@ -544,11 +545,11 @@ static void rt_lbuf_lists(rt_lbuf_job *j, int nt, size_t nc, size_t total)
  * (chosen on SPD gears, docs/bench/rt_tuning.md). */
 int rt_lbuf_build(const rt_scene *sc, const rt_light *l, int threads, rt_lbuf *lb)
 {
-    return rt_lbuf_build_omit(sc, l, NULL, threads, lb);
+    return rt_lbuf_build_omit(sc, l, NULL, 1, threads, lb);
 }
 
-int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int threads,
-                       rt_lbuf *lb)
+int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omit, int lines,
+                       int threads, rt_lbuf *lb)
 {
     memset(lb, 0, sizeof *lb);
     if (l->type != RT_LIGHT_POSITIONAL && l->type != RT_LIGHT_SPOT &&
@@ -562,8 +563,9 @@ int rt_lbuf_build_omit(const rt_scene *sc, const rt_light *l, const uint8_t *omi
     uint32_t *order = rt_calloc_array(sc->nprim + RT_LBUF_BUCKETS + 1, sizeof(uint32_t));
     lb->off = rt_calloc_array(nc + 1, sizeof(uint32_t));
     lb->zb = rt_alloc_array(sc->nprim, sizeof(uint16_t));
-    lb->edge = rt_alloc_array(sc->nprim, 12 * sizeof(float));
-    if (!order || !lb->off || !lb->zb || !lb->edge) {
+    if (lines)
+        lb->edge = rt_alloc_array(sc->nprim, 12 * sizeof(float));
+    if (!order || !lb->off || !lb->zb || (lines && !lb->edge)) {
         free(order);
         rt_lbuf_free(lb);
         return RT_ERR_NOMEM;

@@ -1837,7 +1837,7 @@ static int rt_mirror_build(rt_job *job, int m, const rt_mirror_key *keys, size_t
     for (int k = 0; k < 3; k++)
         l.position[k] = E[k] - 2.0 * h * n[k];
     rt_mirror *mi = &job->mir[m];
-    int rc = rt_lbuf_build_omit(sc, &l, omit, rt_par_threads(job->o.threads), &mi->lb);
+    int rc = rt_lbuf_build_omit(sc, &l, omit, 0, rt_par_threads(job->o.threads), &mi->lb);
     free(omit);
     if (rc != RT_OK || !mi->lb.ok)
         return rc;
