@@ -153,6 +153,45 @@ static double rt_hit_err(const rt_scene *sc, const rt_rayx *r, size_t i, double 
     return e >= 0.0 ? e : INFINITY;
 }
 
+void rt_tri_err_init(const rt_scene *sc, uint32_t i, rt_tri_err *q)
+{
+    const rt_prim *pr = &sc->prim[i];
+    const double *a = rt_tri_vert(sc, pr->data, 0), *b = rt_tri_vert(sc, pr->data, 1),
+                 *c = rt_tri_vert(sc, pr->data, 2);
+    /* rt_hit_err's operations for a triangle, in its order */
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double ng[3];
+    ng[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    ng[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    ng[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    const double m = rt_absmax(ng, 3);
+    q->ok = m > 0.0 && isfinite(m);
+    if (!q->ok)
+        return;
+    const double im = 1.0 / m;
+    q->x = ng[0] * im;
+    q->y = ng[1] * im;
+    q->z = ng[2] * im;
+    q->nrm = sqrt(q->x * q->x + q->y * q->y + q->z * q->z);
+    /* a maximum of magnitudes is exact: with the ray's o and p below, rt_absmax5's value */
+    q->vmax = rt_max2(rt_absmax(a, 3), rt_max2(rt_absmax(b, 3), rt_absmax(c, 3)));
+}
+
+/* rt_hit_err of a triangle whose own part is q (q->ok) */
+static inline double rt_tri_hit_err(const rt_tri_err *q, const rt_rayx *r, double t)
+{
+    double p[3];
+    for (int k = 0; k < 3; k++)
+        p[k] = r->o[k] + t * r->d[k];
+    const double den = fabs(q->x * r->d[0] + q->y * r->d[1] + q->z * r->d[2]) / q->nrm;
+    const double s = rt_max2(q->vmax, rt_max2(rt_absmax(r->o, 3), rt_absmax(p, 3)));
+    if (!(den > 0.0))
+        return INFINITY;
+    const double e = RT_HIT_K * s / den;
+    return e >= 0.0 ? e : INFINITY;
+}
+
 /* Two hits tie when their distances differ by at most twice the smaller bound: the same
    plane's distance computed twice (coplanar faces: equal bounds), and a surface crossed at a
    grazing angle (a large bound) does not tie with one far behind it. A tie goes to the larger
@@ -168,6 +207,34 @@ void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double 
             return;
         if (t >= *best - tie) { /* a tie: the later area; within one area the nearer,
                                    at equal distance the primitive committed first */
+            const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
+            if (id < idb || (id == idb && (t > *best || (t == *best && (long)i > *bi))))
+                return;
+        }
+    }
+    *best = t;
+    *bi = (long)i;
+    *eb = e;
+}
+
+void rt_nearest_update_tri(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t,
+                           const rt_tri_err *q, double *best, long *bi, double *eb)
+{
+    /* beyond the best's window at its own bound: beyond it at the lesser bound of the two
+       too (2 * min(e, *eb) <= 2 * *eb, the sums rounded monotonically), so rt_nearest_update
+       returns without a change; e is not needed */
+    if (*bi >= 0 && t > *best + 2.0 * *eb)
+        return;
+    if (!q->ok) {
+        rt_nearest_update(sc, r, i, t, best, bi, eb);
+        return;
+    }
+    const double e = rt_tri_hit_err(q, r, t);
+    if (*bi >= 0) { /* rt_nearest_update's choice */
+        const double tie = 2.0 * (e < *eb ? e : *eb);
+        if (t > *best + tie)
+            return;
+        if (t >= *best - tie) {
             const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
             if (id < idb || (id == idb && (t > *best || (t == *best && (long)i > *bi))))
                 return;

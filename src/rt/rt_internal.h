@@ -407,6 +407,20 @@ typedef struct rt_rayx {
 void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t, double *best,
                        long *bi, double *eb);
 
+/* The part of a hit's error bound (rt_nearest_update) that depends on triangle primitive i
+   alone, computed once for the rays of a packet that hit it: its cross product scaled by the
+   largest component (x, y, z), that vector's length nrm, and the largest vertex coordinate
+   magnitude vmax; ok = 0 for a degenerate cross product (the general bound is taken). */
+typedef struct rt_tri_err {
+    double x, y, z, nrm, vmax;
+    int ok;
+} rt_tri_err;
+void rt_tri_err_init(const rt_scene *sc, uint32_t i, rt_tri_err *q);
+/* rt_nearest_update for triangle primitive i with q from rt_tri_err_init: the same choice and
+   values, bit for bit */
+void rt_nearest_update_tri(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t,
+                           const rt_tri_err *q, double *best, long *bi, double *eb);
+
 /* a ray in the grid frame (traversal only; primitive tests use the rt_rayx) */
 typedef struct rt_gray {
     double o[3], d[3], invd[3];

@@ -912,8 +912,9 @@ static inline void rt_pk_make(rt_pk *p, uint64_t m)
     p->made |= m;
 }
 
-/* a hit of primitive i at t on ray k */
-static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
+/* a hit of primitive i at t on ray k (q: triangle i's part of the error bound, made once
+   for the packet's rays by rt_tri_err_init; NULL for another kind) */
+static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q)
 {
     if (p->any) {
         p->hit |= (uint64_t)1 << k;
@@ -927,7 +928,10 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t)
     else
         p->over |= (uint64_t)1 << k;
     const long old = p->bi[k];
-    rt_nearest_update(p->sc, &p->r[k], i, t, &p->best[k], &p->bi[k], &p->eb[k]);
+    if (q)
+        rt_nearest_update_tri(p->sc, &p->r[k], i, t, q, &p->best[k], &p->bi[k], &p->eb[k]);
+    else
+        rt_nearest_update(p->sc, &p->r[k], i, t, &p->best[k], &p->bi[k], &p->eb[k]);
     if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
         const double te = p->best[k] + 4.0 * p->eb[k];
         const double tend = te < p->t1[k] ? te : p->t1[k];
@@ -1006,11 +1010,18 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
             return;
         m = cull(p, v[0], v[1], v[2], m);
         rt_pk_make(p, m);
+        rt_tri_err q;
+        int haveq = 0; /* q made at the first nearest hit */
         for (; m; m &= m - 1) {
             const int k = __builtin_ctzll(m);
             double t;
-            if (rt_isect_tri(&p->r[k], v[0], v[1], v[2], p->r[k].tmin, p->r[k].tmax, &t))
-                rt_pk_hit(p, k, i, t);
+            if (rt_isect_tri(&p->r[k], v[0], v[1], v[2], p->r[k].tmin, p->r[k].tmax, &t)) {
+                if (!haveq && !p->any) {
+                    rt_tri_err_init(sc, i, &q);
+                    haveq = 1;
+                }
+                rt_pk_hit(p, k, i, t, &q);
+            }
         }
         return;
     }
@@ -1019,7 +1030,7 @@ static void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
         const int k = __builtin_ctzll(m);
         double t;
         if (rt_isect_prim(sc, &p->r[k], i, p->r[k].tmin, p->r[k].tmax, &t))
-            rt_pk_hit(p, k, i, t);
+            rt_pk_hit(p, k, i, t, NULL);
     }
 }
 
