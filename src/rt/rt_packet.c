@@ -1511,6 +1511,9 @@ static void rt_pk_fill_ng(const rt_scene *sc, const rt_rayx *r, long i, double t
     h->side = den > 0.0 ? 1 : 0;
 }
 
+/* entries of the output's table of normals per packet (a power of 2) */
+#define RT_PK_NGC 16
+
 /* the nearest hits of a batch in packets of RT_PACKET rays; ps may be NULL */
 int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits,
                               rt_packet_stats *ps)
@@ -1526,9 +1529,13 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
         double pt[RT_PACKET];
         rt_rayx rx[RT_PACKET];
         const int packed = rt_packet_nearest(sc, &c, m, rays + k0, pi, pt, rx, ps ? ps : &own);
-        long lasti = -1; /* the primitive of the last hit written (neighbouring rays often
-                            hit the same triangle) and that hit */
-        const rt_hit *last = NULL;
+        /* the primitives whose normal this packet's output already holds, by the low bits
+           of their index, and a hit written with it (the rays of a packet hit a few
+           triangles, each several times, not always in a row) */
+        long ci[RT_PK_NGC];
+        const rt_hit *ch[RT_PK_NGC];
+        for (int s = 0; s < RT_PK_NGC; s++)
+            ci[s] = -1;
         for (size_t j = 0; j < m; j++) {
             const rt_ray *q = &rays[k0 + j];
             long i = -1;
@@ -1536,12 +1543,13 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
                 i = pi[j];
             else if (rt_rayx_setup(&rx[j], q->org, q->dir, q->tmin, q->tmax))
                 i = rt_trace_nearest(sc, &c, &rx[j], &pt[j]);
-            if (i >= 0 && i == lasti) {
-                rt_pk_fill_ng(sc, &rx[j], i, pt[j], last->ng, &hits[k0 + j]);
+            const int s = (int)((unsigned long)i % RT_PK_NGC);
+            if (i >= 0 && i == ci[s]) {
+                rt_pk_fill_ng(sc, &rx[j], i, pt[j], ch[s]->ng, &hits[k0 + j]);
             } else if (i >= 0) {
                 rt_fill_hit(sc, &rx[j], i, pt[j], &hits[k0 + j]);
-                lasti = i;
-                last = &hits[k0 + j];
+                ci[s] = i;
+                ch[s] = &hits[k0 + j];
             } else
                 hits[k0 + j] = (rt_hit){.t = INFINITY, .prim = -1};
         }
