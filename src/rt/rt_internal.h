@@ -77,6 +77,9 @@ typedef struct rt_quad {
     double n[3];
 } rt_quad;
 
+/* doubles per entry of rt_scene's edges */
+#define RT_EDGE_STRIDE 5
+
 typedef struct rt_poly {
     double n[3], d;     /* plane n.x = d, unit n */
     int ku, kv;         /* projection axes (dominant axis dropped) */
@@ -87,6 +90,8 @@ typedef struct rt_poly {
     double inv_h;       /* slabs per unit v */
     double cu, cv, rin2;/* disk around (cu,cv) crossed by no edge (radius^2, < 0: none) ... */
     int cin;            /* ... in which every point has this even-odd parity */
+    double rout2;       /* outside the disk around (cu,cv) of radius^2 rout2 (all vertices
+                           inside, with a margin): even-odd parity 0 */
     uint32_t nslab;     /* horizontal slabs over [vmin,vmax]; edge lists per slab */
     size_t slab0;       /* first entry in scene slab_off (nslab + 1 entries) */
     uint32_t pgrid;     /* 1 + index in scene pgrid (a big polygon's grid, rt_polygon.h), 0 */
@@ -305,7 +310,9 @@ struct rt_scene {
     double *uv; size_t nuv;           /* 2-D polygon vertices (pairs) */
     uint32_t *loops; size_t nloops;   /* loop vertex counts of committed polygons */
     size_t *slab_off; size_t nslab_off; /* per polygon slab: first edge in edges */
-    double *edges; size_t nedges;     /* (qu, qv, au, av) per edge per slab */
+    double *edges; size_t nedges;     /* RT_EDGE_STRIDE doubles per edge per slab: u0, v0, v1
+                                         (v0 < v1) and the differences u1 - u0, v1 - v0 as the
+                                         crossing test computed them (rt_isect_poly) */
     rt_pgrid *pgrid;                  /* per polygon (npoly), for those with pgrid != 0 */
     int use_grid;
     rt_grid grid;

@@ -156,6 +156,8 @@ static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_p
         *tout = t;
         return 1;
     }
+    if (du * du + dv * dv > p->rout2) /* beyond the disk holding all vertices: outside */
+        return 0;
     if (p->pgrid) { /* a big polygon: its point-in-polygon grid, the same rule */
         if (!rt_pgrid_parity(&sc->pgrid[p->pgrid - 1], pu, pv))
             return 0;
@@ -168,13 +170,14 @@ static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_p
         s = f > 0.0 ? (f >= (double)(p->nslab - 1) ? p->nslab - 1 : (uint32_t)f) : 0;
     }
     const size_t e0 = sc->slab_off[p->slab0 + s], e1 = sc->slab_off[p->slab0 + s + 1];
-    const double *e = sc->edges + 4 * e0;
+    const double *e = sc->edges + RT_EDGE_STRIDE * e0;
     /* branch-free even-odd count: edge (u0,v0)-(u1,v1), v0 < v1, straddles v = pv
-       half-open (v0 <= pv < v1) and crosses it right of pu */
+       half-open (v0 <= pv < v1) and crosses it right of pu: (pv - v0)(u1 - u0) >
+       (pu - u0)(v1 - v0), the differences u1 - u0, v1 - v0 stored (e[3], e[4]) */
     int inside = 0;
-    for (size_t k = e0; k < e1; k++, e += 4) {
-        const int st = (e[1] <= pv) & (pv < e[3]);
-        const int cr = (pv - e[1]) * (e[2] - e[0]) > (pu - e[0]) * (e[3] - e[1]);
+    for (size_t k = e0; k < e1; k++, e += RT_EDGE_STRIDE) {
+        const int st = (e[1] <= pv) & (pv < e[2]);
+        const int cr = (pv - e[1]) * e[3] > (pu - e[0]) * e[4];
         inside ^= st & cr;
     }
     if (!inside)

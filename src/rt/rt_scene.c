@@ -1246,7 +1246,7 @@ static void rt_poly_disk(const rt_scene *sc, rt_poly *p)
 {
     const double cu = 0.5 * (p->umin + p->umax), cv = 0.5 * (p->vmin + p->vmax);
     const double *lu = sc->uv + 2 * (size_t)p->uv0;
-    double dmin2 = INFINITY;
+    double dmin2 = INFINITY, dmax2 = 0.0;
     int in = 0;
     for (uint32_t l = 0; l < p->nloops; l++) {
         uint32_t m = sc->loops[p->loop0 + l];
@@ -1264,6 +1264,8 @@ static void rt_poly_disk(const rt_scene *sc, rt_poly *p)
             double d2 = dx * dx + dy * dy;
             if (d2 < dmin2)
                 dmin2 = d2;
+            const double au = a[0] - cu, av = a[1] - cv;
+            dmax2 = fmax(dmax2, au * au + av * av);
             q = a;
         }
         lu += 2 * (size_t)m;
@@ -1275,6 +1277,10 @@ static void rt_poly_disk(const rt_scene *sc, rt_poly *p)
     p->cv = cv;
     p->cin = in;
     p->rin2 = r > margin && isfinite(r) ? r * r * (1.0 - 1e-9) : -1.0;
+    /* the polygon lies in the disk through its farthest vertex; a point beyond it by the same
+       relative margin is far from every edge, so the crossing rule counts it outside */
+    const double ro = sqrt(dmax2) + margin;
+    p->rout2 = isfinite(ro) ? ro * ro * (1.0 + 1e-9) : INFINITY;
 }
 
 /* Per polygon: 2-D bounds and horizontal slabs, each listing the edges whose v range meets
@@ -1356,10 +1362,12 @@ static void rt_poly_fill(rt_scene *sc, const rt_poly *p, size_t *base, size_t *c
                         if (pass == 0) {
                             so[s + 1]++;
                         } else {
-                            /* stored upwards: (u0, v0, u1, v1) with v0 < v1 */
+                            /* stored upwards: (u0, v0, v1, u1 - u0, v1 - v0) with v0 < v1,
+                               the differences the crossing test of rt_isect_poly takes */
                             const double *lo = q[1] < a[1] ? q : a, *hi = q[1] < a[1] ? a : q;
-                            double *e = sc->edges + 4 * cursor[s]++;
-                            e[0] = lo[0]; e[1] = lo[1]; e[2] = hi[0]; e[3] = hi[1];
+                            double *e = sc->edges + RT_EDGE_STRIDE * cursor[s]++;
+                            e[0] = lo[0]; e[1] = lo[1]; e[2] = hi[1];
+                            e[3] = hi[0] - lo[0]; e[4] = hi[1] - lo[1];
                         }
                     }
                 }
@@ -1390,7 +1398,7 @@ static int rt_poly_slabs(rt_scene *sc)
         nedge_tot += entries;
     }
     sc->slab_off = rt_alloc_array(nslab_tot, sizeof(size_t));
-    sc->edges = rt_alloc_array(nedge_tot, 4 * sizeof(double));
+    sc->edges = rt_alloc_array(nedge_tot, RT_EDGE_STRIDE * sizeof(double));
     if (!sc->slab_off || !sc->edges)
         return RT_ERR_NOMEM;
     size_t cursor[1024];
@@ -1475,7 +1483,7 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                        sc->nquad * sizeof *sc->quad +
                        sc->npoly * sizeof *sc->poly + sc->ncell * sizeof *sc->cell +
                        sc->nuv * 2 * sizeof(double) + sc->nloops * sizeof(uint32_t) +
-                       sc->nslab_off * sizeof(size_t) + sc->nedges * 4 * sizeof(double) +
+                       sc->nslab_off * sizeof(size_t) + sc->nedges * RT_EDGE_STRIDE * sizeof(double) +
                        sc->nrgb * sizeof(float) + sc->nspair * sizeof *sc->spair +
                        sc->spair_hcap * sizeof *sc->spair_hash +
                        (sc->prim_vd ? sc->nprim * sizeof(uint32_t) + sc->nvd * sizeof *sc->vd +
