@@ -1303,7 +1303,7 @@ static int rt_poly_plan(rt_scene *sc, size_t k, size_t *ns_out, size_t *entries_
         p->vmax = fmax(p->vmax, uv[2 * i + 1]);
     }
     rt_poly_disk(sc, p);
-    size_t ns = nv <= 8 ? 1 : (nv + 3) / 4;
+    size_t ns = nv <= 8 ? 1 : (nv + 1) / 2;
     if (ns > 1024)
         ns = 1024;
     double h = p->vmax - p->vmin;
