@@ -615,8 +615,10 @@ rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint3
         return -1;
     double m = lb->slack;
     if (!lb->ortho) {
-        /* distance of the light from the ray line (d need not be a unit vector) */
-        const double w[3] = {lb->L[0] - r->o[0], lb->L[1] - r->o[1], lb->L[2] - r->o[2]};
+        /* distance of the light from the ray line (d need not be a unit vector); w = o - L as
+           rt_lbuf_proj computes it (shared), the negation of L - o bit for bit, so c is
+           negated exactly and dev2 is the same */
+        const double w[3] = {r->o[0] - lb->L[0], r->o[1] - lb->L[1], r->o[2] - lb->L[2]};
         const double c[3] = {w[1] * r->d[2] - w[2] * r->d[1], w[2] * r->d[0] - w[0] * r->d[2],
                              w[0] * r->d[1] - w[1] * r->d[0]};
         const double dev2 = rt_dot3(c, c) / rt_dot3(r->d, r->d);
