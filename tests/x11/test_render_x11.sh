@@ -103,7 +103,10 @@ rc=$?
 pid=$!
 i=0
 until win=$(xdotool search --name '^gks3d|^drag: turn' | head -1) && [ -n "$win" ]; do
-    i=$((i + 1)); [ $i -gt 1200 ] && { echo "FAIL: no second window"; exit 1; }
+    i=$((i + 1))
+    [ $i -gt 1200 ] && { echo "FAIL: no second window"; cat out2.txt err2.txt; exit 1; }
+    kill -0 $pid 2>/dev/null ||
+        { echo "FAIL: gks3d-render ended before its second window"; cat out2.txt err2.txt; exit 1; }
     sleep 0.1
 done
 sleep 0.5
