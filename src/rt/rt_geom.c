@@ -197,10 +197,9 @@ static inline double rt_tri_hit_err(const rt_tri_err *q, const rt_rayx *r, doubl
    grazing angle (a large bound) does not tie with one far behind it. A tie goes to the larger
    id (drawn later), as in the z-buffer and painter modes; between primitives of one id (the
    triangles of a mesh) to the nearer, at equal distance to the one committed first. */
-void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t, double *best,
-                       long *bi, double *eb)
+static inline void rt_nearest_take(const rt_scene *sc, uint32_t i, double t, double e,
+                                   double *best, long *bi, double *eb)
 {
-    const double e = rt_hit_err(sc, r, i, t);
     if (*bi >= 0) {
         const double tie = 2.0 * (e < *eb ? e : *eb);
         if (t > *best + tie)
@@ -217,6 +216,12 @@ void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double 
     *eb = e;
 }
 
+void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t, double *best,
+                       long *bi, double *eb)
+{
+    rt_nearest_take(sc, i, t, rt_hit_err(sc, r, i, t), best, bi, eb);
+}
+
 void rt_nearest_update_tri(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t,
                            const rt_tri_err *q, double *best, long *bi, double *eb)
 {
@@ -229,18 +234,5 @@ void rt_nearest_update_tri(const rt_scene *sc, const rt_rayx *r, uint32_t i, dou
         rt_nearest_update(sc, r, i, t, best, bi, eb);
         return;
     }
-    const double e = rt_tri_hit_err(q, r, t);
-    if (*bi >= 0) { /* rt_nearest_update's choice */
-        const double tie = 2.0 * (e < *eb ? e : *eb);
-        if (t > *best + tie)
-            return;
-        if (t >= *best - tie) {
-            const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
-            if (id < idb || (id == idb && (t > *best || (t == *best && (long)i > *bi))))
-                return;
-        }
-    }
-    *best = t;
-    *bi = (long)i;
-    *eb = e;
+    rt_nearest_take(sc, i, t, rt_tri_hit_err(q, r, t), best, bi, eb);
 }
