@@ -732,10 +732,16 @@ double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *
             *blocker = (long)i;
             return 0.0;
         }
-        double ng[3];
-        rt_prim_ng(sc, i, ng);
-        const double den = ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2];
-        T *= rt_prim_surf(sc, p, den > 0.0 ? 1 : 0)->transparency;
+        /* the transparency of the side hit; the side (the normal) only where they differ */
+        double tr = rt_prim_surf(sc, p, 0)->transparency;
+        const double tb = rt_prim_surf(sc, p, 1)->transparency;
+        if (tb != tr) {
+            double ng[3];
+            rt_prim_ng(sc, i, ng);
+            const double den = ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2];
+            tr = den > 0.0 ? tb : tr;
+        }
+        T *= tr;
         if (!(T > 0.0))
             return 0.0;
     }
