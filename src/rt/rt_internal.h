@@ -564,8 +564,9 @@ void rt_lbuf_free(rt_lbuf *lb);
    cannot be hit), 0 if no primitive can be hit, -1 if the ray must walk the grid */
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb);
-/* rt_lbuf_find with the footprint kept in *q (q->ids, n, zb as rt_lbuf_find's) */
-int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, rt_lbuf_q *q);
+/* rt_lbuf_find with the footprint kept in *q (q->ids, n, zb as rt_lbuf_find's); when it
+   returns 1, *k0 = rt_lbuf_next(lb, q, skip, 0) as well (one call for both) */
+int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, uint32_t skip, rt_lbuf_q *q, uint32_t *k0);
 /* the position of the next candidate of q's list from position k on, up to its bucket zb, but
    skip, that the ray can hit (whose projection q's footprint does not surely miss); q->n
    when there is none */

@@ -627,12 +627,14 @@ rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint3
     }
     const double x0 = (u - m - lb->u0) * lb->su, x1 = (u + m - lb->u0) * lb->su;
     const double y0 = (v - m - lb->v0) * lb->sv, y1 = (v + m - lb->v0) * lb->sv;
-    if (!(x1 >= 0.0 && y1 >= 0.0 && x0 < (double)lb->nu && y0 < (double)lb->nv)) {
+    /* wholly inside first (most rays); x0 <= x1 and y0 <= y1 (m >= 0), so that test and
+       the one for wholly outside never hold both */
+    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < (double)lb->nu && y1 < (double)lb->nv)) {
+        if (x1 >= 0.0 && y1 >= 0.0 && x0 < (double)lb->nu && y0 < (double)lb->nv)
+            return -1;
         *n = 0; /* wholly outside: the projections of all primitives lie inside */
         return 0;
     }
-    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < (double)lb->nu && y1 < (double)lb->nv))
-        return -1;
     const int cx = (int)x0, cy = (int)y0;
     if (cx != (int)x1 || cy != (int)y1)
         return -1;
@@ -669,7 +671,10 @@ int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, ui
    are those of the projection as the build computed it (the cells' lists were made from
    the same points, enlarged by e), and their float rounding is below emargin - e. So a
    primitive with a line below -(1.5 m + emargin) at (u, v) cannot be hit: thr. */
-int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, rt_lbuf_q *q)
+static inline __attribute__((always_inline)) uint32_t
+rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k);
+
+int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, uint32_t skip, rt_lbuf_q *q, uint32_t *k0)
 {
     double z, m, u, v;
     q->n = 0;
@@ -680,6 +685,7 @@ int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, rt_lbuf_q *q)
         q->u = (float)u;
         q->v = (float)v;
         q->thr = (float)((1.5 * m + lb->emargin) * (1.0 + 0x1p-20));
+        *k0 = rt_lbuf_next_at(lb, q, skip, 0);
     }
     return f;
 }

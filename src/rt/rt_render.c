@@ -296,9 +296,7 @@ static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const doub
         r.d[0] = a0 < tiny ? 0.0 : L[0];
         r.d[1] = a1 < tiny ? 0.0 : L[1];
         r.d[2] = a2 < tiny ? 0.0 : L[2];
-        f = rt_lbuf_query(lb, &r, &q);
-        if (f > 0)
-            k0 = rt_lbuf_next(lb, &q, (uint32_t)from, 0);
+        f = rt_lbuf_query(lb, &r, (uint32_t)from, &q, &k0);
     }
     if (f == 0 || (f > 0 && k0 == q.n)) {
         T = 1.0;
@@ -321,9 +319,7 @@ static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const doub
         } else {
             /* the light buffer's candidates where it has them, else the walk */
             if (f == -2) {
-                f = lb->ok ? rt_lbuf_query(lb, &r, &q) : -1;
-                if (f > 0)
-                    k0 = rt_lbuf_next(lb, &q, (uint32_t)from, 0);
+                f = lb->ok ? rt_lbuf_query(lb, &r, (uint32_t)from, &q, &k0) : -1;
             }
             w->st.shadow_lbuf += f >= 0;
             w->st.shadow_walks += f < 0;
