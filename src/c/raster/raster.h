@@ -61,10 +61,16 @@ typedef struct gks_raster_fb {
 /* Create a width x height framebuffer (1 <= width, height <= 65536, ss 1..4), cleared to
  * black and farthest depth. NULL on bad arguments or when memory is exhausted. */
 gks_raster_fb *gks_raster_fb_create(int width, int height, int ss);
+/* The same framebuffer with its samples not yet written (for a caller that clears it
+ * itself, e.g. in parts by gks_raster_fb_clear_rows: the clear is then its first touch). */
+gks_raster_fb *gks_raster_fb_alloc(int width, int height, int ss);
 /* Free a framebuffer (NULL is ignored). */
 void gks_raster_fb_free(gks_raster_fb *fb);
 /* Clear colour to rgb (components clamped to [0,1]; NULL = black) and depth to farthest. */
 void gks_raster_fb_clear(gks_raster_fb *fb, const float rgb[3]);
+/* The same for the sample rows [y0, y1) only (0 <= y0 <= y1 <= h; others are ignored), so
+ * that parts of the rows can be cleared on several threads with the same result. */
+void gks_raster_fb_clear_rows(gks_raster_fb *fb, const float rgb[3], int y0, int y1);
 /* Box-filter one image row (0 = top) to 8-bit RGB: 3*width bytes to out. E_ARG on NULL or
  * a bad row. */
 int gks_raster_fb_resolve_row(const gks_raster_fb *fb, int row, unsigned char *out);

@@ -9,6 +9,13 @@
 
 gks_raster_fb *gks_raster_fb_create(int width, int height, int ss)
 {
+    gks_raster_fb *fb = gks_raster_fb_alloc(width, height, ss);
+    gks_raster_fb_clear(fb, NULL);
+    return fb;
+}
+
+gks_raster_fb *gks_raster_fb_alloc(int width, int height, int ss)
+{
     if (width < 1 || height < 1 || width > 65536 || height > 65536 || ss < 1 || ss > 4)
         return NULL;
     gks_raster_fb *fb = gks_calloc_array(1, sizeof *fb);
@@ -31,7 +38,6 @@ gks_raster_fb *gks_raster_fb_create(int width, int height, int ss)
         gks_raster_fb_free(fb);
         return NULL;
     }
-    gks_raster_fb_clear(fb, NULL);
     return fb;
 }
 
@@ -53,14 +59,20 @@ static float clamp01(float v)
 
 void gks_raster_fb_clear(gks_raster_fb *fb, const float rgb[3])
 {
-    if (!fb)
+    if (fb)
+        gks_raster_fb_clear_rows(fb, rgb, 0, fb->h);
+}
+
+void gks_raster_fb_clear_rows(gks_raster_fb *fb, const float rgb[3], int y0, int y1)
+{
+    if (!fb || y0 < 0 || y1 > fb->h || y0 >= y1)
         return;
     float c[3] = {0.0f, 0.0f, 0.0f};
     if (rgb)
         for (int k = 0; k < 3; k++)
             c[k] = clamp01(rgb[k]);
-    size_t n = (size_t)fb->w * (size_t)fb->h;
-    for (size_t i = 0; i < n; i++) {
+    size_t n = (size_t)fb->w * (size_t)y1;
+    for (size_t i = (size_t)fb->w * (size_t)y0; i < n; i++) {
         fb->rgb[3 * i] = c[0];
         fb->rgb[3 * i + 1] = c[1];
         fb->rgb[3 * i + 2] = c[2];

@@ -69,6 +69,9 @@ typedef struct png_ws {
     gks_raster_fb *seen; /* pixel readback: the picture as png_update would write it now */
     int seen_ok;        /* seen is current: no output, clear or ESCAPE since it was made */
     seen_key *key;      /* ... and the workstation state it was made with */
+    unsigned char *rgb8; /* the written picture's 8-bit rows when resolved on the tracer's
+                            pool (write_picture), kept for the next frames of its size */
+    size_t rgb8_n;      /* its bytes */
 } png_ws;
 
 /* The base name B (file naming above). Several workstations opened without a connection
@@ -117,6 +120,7 @@ static void png_close(gks_ws *ws)
     gks_raster_fb_free(p->fb);
     gks_raster_fb_free(p->seen);
     gks_free(p->key);
+    gks_free(p->rgb8);
     ws_render_free(p->r);
     gks_free(p->base);
     gks_free(p);
@@ -129,6 +133,28 @@ static void image_size(const gks_ws *ws, int *w, int *h)
     *h = (int)ceil(ws->cur_vp.y_max - ws->cur_vp.y_min - 1e-9);
     if (*w < 1) *w = 1;
     if (*h < 1) *h = 1;
+}
+
+/* The thread count of the frame's parallel parts (GESC_RT_THREADS: 0 the online CPUs). */
+static int png_threads(const png_ws *p)
+{
+    rt_render_options o;
+    ws_rt_options(p->r->rt, &o);
+    return o.threads;
+}
+
+/* Sample rows [k*h/n, (k+1)*h/n) of a new framebuffer cleared to the background (part k of
+ * n on the tracer's pool; each sample as gks_raster_fb_clear writes it). */
+typedef struct clear_job {
+    gks_raster_fb *fb;
+    float bg[3];
+} clear_job;
+
+static void clear_part(void *arg, int k, int n)
+{
+    clear_job *j = arg;
+    const int h = j->fb->h;
+    gks_raster_fb_clear_rows(j->fb, j->bg, (int)((long)k * h / n), (int)((long)(k + 1) * h / n));
 }
 
 /* The framebuffer for the current viewport, created or re-created and cleared to
@@ -146,10 +172,11 @@ static gks_raster_fb *framebuffer(gks_ws *ws)
     if (p->fb && p->fb->width == w && p->fb->height == h)
         return p->fb;
     gks_raster_fb_free(p->fb);
-    p->fb = gks_raster_fb_create(w, h, p->ss);
-    if (p->fb) {
-        float bg[3] = { (float)ws->colr[0].red, (float)ws->colr[0].green, (float)ws->colr[0].blue };
-        gks_raster_fb_clear(p->fb, bg);
+    p->fb = gks_raster_fb_alloc(w, h, p->ss);
+    if (p->fb) { /* one pass, its first touch of the memory, in parts on the tracer's pool */
+        clear_job j = { p->fb, { (float)ws->colr[0].red, (float)ws->colr[0].green,
+                                 (float)ws->colr[0].blue } };
+        rt_parallel_parts(png_threads(p), clear_part, &j);
     }
     return p->fb;
 }
@@ -199,6 +226,43 @@ static int png_background(gks_ws *ws)
 static int ws_matrix(const gks_ws *ws, double m[4][4]);
 
 /* Writes the frame's file; recorded ray-tracing primitives are traced first. */
+/* Rows [k*h/n, (k+1)*h/n) of the picture resolved to 8 bits, each as
+ * gks_raster_fb_resolve_row makes it (part k of n on the tracer's pool). */
+typedef struct resolve_job {
+    const gks_raster_fb *pic;
+    unsigned char *rgb8;
+} resolve_job;
+
+static void resolve_part(void *arg, int k, int n)
+{
+    const resolve_job *j = arg;
+    const int h = j->pic->height;
+    const size_t row = 3 * (size_t)j->pic->width;
+    for (int y = (int)((long)k * h / n); y < (int)((long)(k + 1) * h / n); y++)
+        gks_raster_fb_resolve_row(j->pic, y, j->rgb8 + (size_t)y * row);
+}
+
+/* The picture into the file at path: with one thread (GESC_RT_THREADS 1) resolved row by
+ * row as libpng takes them; with more, the rows resolved first in parts on the tracer's
+ * pool into p->rgb8 (same bytes: the same function per row, the same PNG writer), so that
+ * the frame's serial tail after the render is the deflate alone. Without storage for the
+ * 8-bit copy it falls back to the rows one by one. A GKS_RASTER_* code. */
+static int write_picture(png_ws *p, const gks_raster_fb *pic, const char *path)
+{
+    const int threads = png_threads(p);
+    const size_t need = 3 * (size_t)pic->width * (size_t)pic->height;
+    if (threads != 1 && p->rgb8_n != need) {
+        gks_free(p->rgb8);
+        p->rgb8 = gks_alloc_array(need, 1);
+        p->rgb8_n = p->rgb8 ? need : 0;
+    }
+    if (threads == 1 || !p->rgb8)
+        return gks_raster_fb_write_png(pic, path, p->compression);
+    resolve_job j = { pic, p->rgb8 };
+    rt_parallel_parts(threads, resolve_part, &j);
+    return gks_raster_png_write_rgb8(path, pic->width, pic->height, p->rgb8, p->compression);
+}
+
 static int png_update(gks_ws *ws)
 {
     png_ws *p = ws->priv;
@@ -237,7 +301,7 @@ static int png_update(gks_ws *ws)
     if (c)
         return c;
     errno = 0;
-    int r = gks_raster_fb_write_png(pic, path, p->compression);
+    int r = write_picture(p, pic, path);
     if (r == GKS_RASTER_E_IO)
         gks_ws_note(ws, "cannot write \"%s\": %s", path, errno ? strerror(errno) : "write failed");
     gks_free(path);
