@@ -231,6 +231,12 @@ int gks_raster_fb_write_png(const gks_raster_fb *fb, const char *path, int compr
 /* Write w x h 8-bit RGB pixels (rgb8 row 0 = top) as PNG, compression as above. */
 int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned char *rgb8,
                               int compression);
+/* The same with the rows taken one at a time, in order from y = 0 (top), from row(user, y):
+ * 3*w bytes, read before the next call (the same file as gks_raster_png_write_rgb8 of those
+ * rows). For a caller that makes the rows while earlier ones are compressed. */
+typedef const unsigned char *(*gks_raster_row_fn)(void *user, int y);
+int gks_raster_png_write_rows(const char *path, int w, int h, gks_raster_row_fn row,
+                              void *user, int compression);
 /* Read any PNG as 8-bit RGB (alpha dropped, palette/grey expanded, 16-bit stripped):
  * *rgb8 (row 0 = top, free with gks_free), *w, *h. E_IO, E_FORMAT, E_NOMEM, E_ARG. */
 int gks_raster_png_read_rgb8(const char *path, int *w, int *h, unsigned char **rgb8);

@@ -39,16 +39,20 @@ typedef struct png_job {
     unsigned char *pix;
 } png_job;
 
-/* Where the rows come from: an 8-bit image, or a framebuffer resolved row by row into
- * buf (so no whole 8-bit copy of the frame is made). */
+/* Where the rows come from: an 8-bit image, a framebuffer resolved row by row into
+ * buf (so no whole 8-bit copy of the frame is made), or the caller's function. */
 typedef struct row_source {
     const unsigned char *rgb8;
     const gks_raster_fb *fb;
     unsigned char *buf;
+    gks_raster_row_fn row;
+    void *user;
 } row_source;
 
 static const unsigned char *source_row(const row_source *src, int w, int y)
 {
+    if (src->row)
+        return src->row(src->user, y);
     if (src->rgb8)
         return src->rgb8 + (size_t)y * (size_t)w * 3;
     gks_raster_fb_resolve_row(src->fb, y, src->buf);
@@ -133,6 +137,15 @@ int gks_raster_png_write_rgb8(const char *path, int w, int h, const unsigned cha
     if (!path || !rgb8 || w < 1 || h < 1 || bad_compression(compression))
         return GKS_RASTER_E_ARG;
     row_source src = { .rgb8 = rgb8 };
+    return write_png(path, w, h, &src, compression);
+}
+
+int gks_raster_png_write_rows(const char *path, int w, int h, gks_raster_row_fn row,
+                              void *user, int compression)
+{
+    if (!path || !row || w < 1 || h < 1 || bad_compression(compression))
+        return GKS_RASTER_E_ARG;
+    row_source src = { .row = row, .user = user };
     return write_png(path, w, h, &src, compression);
 }
 

@@ -33,6 +33,8 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <sched.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -226,27 +228,59 @@ static int png_background(gks_ws *ws)
 static int ws_matrix(const gks_ws *ws, double m[4][4]);
 
 /* Writes the frame's file; recorded ray-tracing primitives are traced first. */
-/* Rows [k*h/n, (k+1)*h/n) of the picture resolved to 8 bits, each as
- * gks_raster_fb_resolve_row makes it (part k of n on the tracer's pool). */
-typedef struct resolve_job {
+/* The written picture's rows resolved to 8 bits (each as gks_raster_fb_resolve_row makes
+ * it) by every part of a write on the tracer's pool while part 0 compresses them in order:
+ * a row is claimed by whichever part takes next, and done[y] says it is complete. */
+typedef struct write_job {
     const gks_raster_fb *pic;
     unsigned char *rgb8;
-} resolve_job;
+    atomic_uchar *done;
+    atomic_int next; /* the next row to claim */
+    const char *path;
+    int compression;
+    int rc;          /* part 0's GKS_RASTER_* code */
+} write_job;
 
-static void resolve_part(void *arg, int k, int n)
+/* Claims the next row and resolves it; 0 when every row was claimed. */
+static int resolve_next(write_job *j)
 {
-    const resolve_job *j = arg;
-    const int h = j->pic->height;
-    const size_t row = 3 * (size_t)j->pic->width;
-    for (int y = (int)((long)k * h / n); y < (int)((long)(k + 1) * h / n); y++)
-        gks_raster_fb_resolve_row(j->pic, y, j->rgb8 + (size_t)y * row);
+    const int y = atomic_fetch_add_explicit(&j->next, 1, memory_order_relaxed);
+    if (y >= j->pic->height)
+        return 0;
+    gks_raster_fb_resolve_row(j->pic, y, j->rgb8 + 3 * (size_t)j->pic->width * (size_t)y);
+    atomic_store_explicit(&j->done[y], 1, memory_order_release);
+    return 1;
+}
+
+/* gks_raster_row_fn of part 0: row y once complete; meanwhile the waiting part resolves
+ * rows itself (a claimed row that is not done is being resolved by a running part). */
+static const unsigned char *ready_row(void *user, int y)
+{
+    write_job *j = user;
+    while (!atomic_load_explicit(&j->done[y], memory_order_acquire))
+        if (!resolve_next(j))
+            sched_yield();
+    return j->rgb8 + 3 * (size_t)j->pic->width * (size_t)y;
+}
+
+static void write_part(void *arg, int k, int n)
+{
+    (void)n;
+    write_job *j = arg;
+    if (k == 0)
+        j->rc = gks_raster_png_write_rows(j->path, j->pic->width, j->pic->height, ready_row, j,
+                                          j->compression);
+    else
+        while (resolve_next(j))
+            ;
 }
 
 /* The picture into the file at path: with one thread (GESC_RT_THREADS 1) resolved row by
- * row as libpng takes them; with more, the rows resolved first in parts on the tracer's
- * pool into p->rgb8 (same bytes: the same function per row, the same PNG writer), so that
- * the frame's serial tail after the render is the deflate alone. Without storage for the
- * 8-bit copy it falls back to the rows one by one. A GKS_RASTER_* code. */
+ * row as libpng takes them; with more, the other parts on the tracer's pool resolve rows
+ * ahead into p->rgb8 while this thread compresses them (the same rows to the same PNG
+ * writer: the same bytes), so that the frame's serial tail is the compression alone.
+ * Without storage for the 8-bit copy it falls back to the rows one by one. A GKS_RASTER_*
+ * code. */
 static int write_picture(png_ws *p, const gks_raster_fb *pic, const char *path)
 {
     const int threads = png_threads(p);
@@ -256,11 +290,18 @@ static int write_picture(png_ws *p, const gks_raster_fb *pic, const char *path)
         p->rgb8 = gks_alloc_array(need, 1);
         p->rgb8_n = p->rgb8 ? need : 0;
     }
-    if (threads == 1 || !p->rgb8)
+    atomic_uchar *done = threads != 1 && p->rgb8
+                         ? gks_alloc_array((size_t)pic->height, sizeof *done) : NULL;
+    if (!done)
         return gks_raster_fb_write_png(pic, path, p->compression);
-    resolve_job j = { pic, p->rgb8 };
-    rt_parallel_parts(threads, resolve_part, &j);
-    return gks_raster_png_write_rgb8(path, pic->width, pic->height, p->rgb8, p->compression);
+    write_job j = { .pic = pic, .rgb8 = p->rgb8, .done = done, .path = path,
+                    .compression = p->compression, .rc = GKS_RASTER_E_IO };
+    atomic_init(&j.next, 0);
+    for (int y = 0; y < pic->height; y++)
+        atomic_init(&done[y], 0);
+    rt_parallel_parts(threads, write_part, &j);
+    gks_free(done);
+    return j.rc;
 }
 
 static int png_update(gks_ws *ws)
