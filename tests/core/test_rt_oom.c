@@ -177,15 +177,17 @@ static void test_each_allocation_fails(void **u)
      * queue (rt_serial_new) falls back to recording at the call, the coverage pass
      * (rt_cover) to the tracer without candidate lists, the depth order of the eye rays'
      * candidate lists (three arrays) to the lists in primitive order, the second level's
-     * reservation per build part to growing as it goes, and the shrink of its 2-byte
-     * offsets (rt_big_shrink) to keeping the larger block. The counts say how many. */
+     * reservation per build part to growing as it goes, the shrink of its 2-byte
+     * offsets (rt_big_shrink) to keeping the larger block, and the PNG workstation's 8-bit
+     * copy of the picture and its row flags (resolved on the pool, ws_png.c) to resolving
+     * the rows one by one as before. The counts say how many. */
     printf("RT_OOM: %ld allocations per frame (%ld of them the tracer's), each failed in turn: "
            "%ld reported 300, %ld absorbed with the same picture; of the %ld tracer "
            "allocations failed %ld reported 300; no other error\n",
            used, rt_used, reported, absorbed, rt_failed, rt_reported);
     assert_true(rt_failed >= rt_used);
     assert_int_equal(reported + absorbed, used);
-    assert_true(absorbed <= 10);
+    assert_true(absorbed <= 12);
     unlink("t_rt_oom.png");
 }
 

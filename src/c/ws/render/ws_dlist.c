@@ -32,7 +32,14 @@ struct ws_dlist {
     ws_dl_chunk *undo_chunk;
     size_t undo[N_ARR];
     int undo_reader;
+    /* released chunks kept for the next ones of the same size (at most N_SPARE, linked by
+       next): their pages are already in memory, where a new block would be first-touched
+       memory again (the tracer's worker releases a chunk every ~2000 areas) */
+    ws_dl_chunk *spare;
+    int n_spare;
 };
+
+enum { N_SPARE = 4 };
 
 static size_t round8(size_t n) { return (n + 7) & ~(size_t)7; }
 
@@ -53,12 +60,21 @@ ws_dlist *ws_dlist_new(void)
     return gks_calloc_array(1, sizeof(ws_dlist));
 }
 
-void ws_dlist_reset(ws_dlist *dl)
+/* Frees the chunks from c on (linked by next). */
+static void free_chunks(ws_dl_chunk *c)
 {
-    for (ws_dl_chunk *c = dl->first, *n; c; c = n) {
+    for (ws_dl_chunk *n; c; c = n) {
         n = c->next;
         gks_free(c);
     }
+}
+
+void ws_dlist_reset(ws_dlist *dl)
+{
+    free_chunks(dl->first);
+    free_chunks(dl->spare);
+    dl->spare = NULL;
+    dl->n_spare = 0;
     dl->first = dl->cur = dl->undo_chunk = NULL;
     memset(dl->n_rec, 0, sizeof dl->n_rec);
     dl->bytes = 0;
@@ -109,7 +125,14 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
             return 300;
         total += bytes;
     }
-    unsigned char *b = gks_alloc_array(1, total);
+    unsigned char *b = NULL;
+    if (dl->spare && dl->spare->bytes == total) { /* the same capacities: the same layout */
+        b = (unsigned char *)(void *)dl->spare;
+        dl->spare = dl->spare->next;
+        dl->n_spare--;
+    } else {
+        b = gks_alloc_array(1, total);
+    }
     if (!b)
         return 300;
     ws_dl_chunk *c = (ws_dl_chunk *)(void *)b;
@@ -165,7 +188,13 @@ void ws_dlist_trim(ws_dlist *dl)
         if (dl->undo_chunk == c)
             dl->undo_chunk = NULL;
         dl->bytes -= c->bytes;
-        gks_free(c);
+        if (dl->n_spare < N_SPARE) { /* kept for chunk_new; its fields are set again there */
+            c->next = dl->spare;
+            dl->spare = c;
+            dl->n_spare++;
+        } else {
+            gks_free(c);
+        }
     }
 }
 
