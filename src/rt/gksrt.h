@@ -511,7 +511,8 @@ RT_API int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_re
 /* Ordered background work on the tracer's thread pool (rt_pool.c): items pushed to an
  * rt_serial are passed to fn(user, item) one at a time, in push order, on a pool worker while
  * the pushing thread goes on (the GKS workstation records areas into its scene this way).
- * At most 8 items wait: a push beyond that runs the oldest on the pusher. fn must not block
+ * At most 32 items wait: a push beyond that runs the oldest on the pusher, or waits while the
+ * worker runs one. fn must not block
  * on the pusher. rt_serial_new returns NULL when threads (0: online CPUs) is below 2 or on
  * storage failure: the caller then does the work itself. rt_serial_drain returns when every
  * pushed item has run (its effects are then visible to the caller); rt_serial_free drains

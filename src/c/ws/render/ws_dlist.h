@@ -25,7 +25,9 @@
  * order. A chunk stays in the list until ws_dlist_reset (the frame boundary) unless every
  * reader with records in it (ws_dl_chunk.readers) has released it (ws_dlist_release: a
  * streaming reader such as the tracer's worker, which keeps what it read in its own scene);
- * the list then frees it, wherever it is in the list. A reader that keeps its records to the
+ * the list then takes it out, wherever it is in the list, and frees it or keeps it (up to 4,
+ * freed at ws_dlist_reset) for the next chunk of the same size, whose pages are then already
+ * in memory. A reader that keeps its records to the
  * end of the frame (the classic renderer) never releases, so a chunk with any of its records
  * stays. A record larger than a chunk gets a chunk of its own, sized to fit. Data flows one
  * way: renderer's recording -> list -> reader. A reader's own reset (ws_rt_reset,
