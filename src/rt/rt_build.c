@@ -1014,24 +1014,40 @@ static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6]
     rt_pts_bbox(b->pts, npts, bb);
 }
 
-/* The second level in parts of consecutive top cells (about equal references each), one
- * per thread: part k makes the grids of its cells with cells and references counted from its
- * own first ones; the parts are then laid out one after the other in cell order, which gives
- * the arrays one part would give. Each grid's (cell, primitive) pairs are sorted into the
- * part's own cell offsets and references as soon as the grid is made (the pair scratch holds
- * one grid's pairs only); the parts' arrays never move (rt_big); part 0's become the grid's
- * and the others are copied behind them (rt_sub_place). */
+/* The second level in chunks of consecutive top cells taken dynamically (the VM's vCPUs, and
+ * any machine's cores under other load, run at unequal speeds, which a static split cannot
+ * follow). Part 0 (the caller) takes chunks from the front of the top cells, the other parts
+ * from the back; each take is a share of the references left (1/(2n) of them, at least
+ * RT_SUB_CHUNK_MIN references), so the chunks shrink towards the meeting point and the parts
+ * end together. Part k makes the grids of its chunks into its own arrays, cells and
+ * references counted from its own first ones; chunk records say where. The chunks are then
+ * laid out one after the other in cell order, which gives the arrays one part would give
+ * whatever the chunks were: part 0's chunks are the front, so its arrays become the grid's
+ * (rt_big: grown in place) and the others' chunks are copied behind them (rt_sub_place).
+ * Each grid's (cell, primitive) pairs are sorted into the part's cell offsets and references
+ * as soon as the grid is made (the pair scratch holds one grid's pairs only). */
+#define RT_SUB_CHUNKS 512       /* chunk records at most at each end (then the rest at once) */
+#define RT_SUB_CHUNK_MIN 4096.0 /* references: the smallest chunk while more are left */
+#define RT_SUB_CELL_BITS 26     /* the take state's fields: top cells < 2^26 (2^25 at most) */
+
 typedef struct rt_sub_part {
-    size_t c0, c1;       /* top cells [c0, c1) */
     rt_subgrid *subs;    /* its grids (first: counted from its first sub cell) */
+    size_t capsubs;
     size_t nsubs, total; /* grids, their cells */
     rt_big off, refs;    /* uint32: per sub cell its first reference (counted from the part's
                             first), the references; total and nref of them */
     size_t nref;
-    size_t sub0, cell0, ref0; /* its first grid, sub cell and reference in the grid's arrays */
     int err;             /* 1: no memory, 2: too many cells */
     char pad[RT_LINE];   /* the next part on other cache lines (RT_LINE) */
 } rt_sub_part;
+
+typedef struct rt_sub_chunk {
+    size_t c0, c1;               /* top cells [c0, c1) */
+    int part;                    /* the part whose arrays hold its grids */
+    size_t sub_l, cell_l, ref_l; /* its first grid, sub cell and reference there */
+    size_t nsubs, ncell, nref;
+    size_t sub0, cell0, ref0;    /* its first grid, sub cell and reference in the grid's */
+} rt_sub_chunk;
 
 typedef struct rt_sub_job {
     rt_scene *sc;
@@ -1041,6 +1057,13 @@ typedef struct rt_sub_job {
     double eps, sub_factor;
     int sub_min;
     int nparts;
+    double chunk_min;    /* references */
+    uint64_t state;      /* atomic: cells [lo, hi) left, lo | hi << 26 | back chunks << 52 */
+    rt_sub_chunk *front; /* part 0's chunks in cell order, nfront of them */
+    size_t nfront;
+    rt_sub_chunk *back;  /* the others', in the order taken (cell order reversed) */
+    size_t nback;        /* after the run */
+    size_t front_max;    /* part 0's chunks at most (0: no limit; rt_build_set_chunks) */
 } rt_sub_job;
 
 /* The references of top cell ci (eps-enlarged box lo .. hi): keep[r] = 1 for the large ones
@@ -1083,10 +1106,65 @@ static uint32_t rt_sub_classify(const rt_scene *sc, rt_build *b, size_t ci, cons
     return nsmall;
 }
 
-static void rt_sub_cells(void *arg, int k, int n)
+/* the next chunk of part k into *ch (cells, and for the back its record's index in *slot):
+   1, or 0 when no cells are left */
+static int rt_sub_take(rt_sub_job *j, int k, size_t *c0, size_t *c1, size_t *slot)
 {
-    (void)n;
-    rt_sub_job *j = arg;
+    const uint32_t *off = j->sc->grid.off;
+    const uint64_t mask = ((uint64_t)1 << RT_SUB_CELL_BITS) - 1;
+    uint64_t s = __atomic_load_n(&j->state, __ATOMIC_ACQUIRE);
+    for (;;) {
+        const size_t lo = (size_t)(s & mask), hi = (size_t)(s >> RT_SUB_CELL_BITS & mask);
+        const size_t nb = (size_t)(s >> (2 * RT_SUB_CELL_BITS));
+        if (lo >= hi)
+            return 0;
+        double want = (double)(off[hi] - off[lo]) / (2.0 * j->nparts);
+        if (want < j->chunk_min)
+            want = j->chunk_min;
+        size_t a = lo, e = hi, l, h;
+        uint64_t ns;
+        if (k == 0 && j->nparts > 1 && j->front_max && j->nfront >= j->front_max)
+            return 0;
+        if (k == 0) { /* the first e > lo with off[e] - off[lo] >= want */
+            if (j->nparts > 1 && j->nfront < RT_SUB_CHUNKS - 1) {
+                for (l = lo + 1, h = hi; l < h;) {
+                    const size_t m = l + (h - l) / 2;
+                    if ((double)(off[m] - off[lo]) < want)
+                        l = m + 1;
+                    else
+                        h = m;
+                }
+                e = l;
+            }
+            ns = (uint64_t)e | (uint64_t)hi << RT_SUB_CELL_BITS |
+                 (uint64_t)nb << (2 * RT_SUB_CELL_BITS);
+        } else { /* the last a < hi with off[hi] - off[a] >= want */
+            if (nb < RT_SUB_CHUNKS - 1) {
+                for (l = lo, h = hi - 1; l < h;) {
+                    const size_t m = h - (h - l) / 2;
+                    if ((double)(off[hi] - off[m]) < want)
+                        h = m - 1;
+                    else
+                        l = m;
+                }
+                a = l;
+            }
+            ns = (uint64_t)lo | (uint64_t)a << RT_SUB_CELL_BITS |
+                 (uint64_t)(nb + 1) << (2 * RT_SUB_CELL_BITS);
+        }
+        if (__atomic_compare_exchange_n(&j->state, &s, ns, 0, __ATOMIC_ACQ_REL,
+                                        __ATOMIC_ACQUIRE)) {
+            *c0 = a;
+            *c1 = e;
+            *slot = k == 0 ? j->nfront++ : nb;
+            return 1;
+        }
+    }
+}
+
+/* the grids of the crowded cells of chunk ch into part k's arrays */
+static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab *tab)
+{
     rt_sub_part *pt = &j->part[k];
     rt_build *b = &j->b[k];
     rt_scene *sc = j->sc;
@@ -1094,32 +1172,29 @@ static void rt_sub_cells(void *arg, int k, int n)
     const double eps = j->eps;
     const uint32_t sub_min = (uint32_t)j->sub_min;
     uint8_t *keep = j->keep;
-    b->npairs = 0;
-    size_t ns = 0;
-    for (size_t ci = pt->c0; ci < pt->c1; ci++)
-        ns += g->off[ci + 1] - g->off[ci] > sub_min;
-    pt->subs = rt_alloc_array(ns ? ns : 1, sizeof(rt_subgrid));
-    if (!pt->subs) {
-        pt->err = 1;
-        return;
-    }
-    /* room for the part's cells and references at once, so that they grow without copies
-       (realloc): about sub_factor cells per reference of a crowded cell, and as many
+    ch->part = k;
+    ch->sub_l = pt->nsubs;
+    ch->cell_l = pt->total;
+    ch->ref_l = pt->nref;
+    /* room for the chunk's grids, cells and references at once, so that they grow without
+       copies (realloc): about sub_factor cells per reference of a crowded cell, and as many
        references as cells (1.0-1.4 times on the meshes and random triangles); a larger
-       part grows on from there, a failed reservation is only a lost head start */
-    size_t crowded = 0;
-    for (size_t ci = pt->c0; ci < pt->c1; ci++) {
+       chunk grows on from there, a failed reservation is only a lost head start */
+    size_t ns = 0, crowded = 0;
+    for (size_t ci = ch->c0; ci < ch->c1; ci++) {
         const uint32_t cnt = g->off[ci + 1] - g->off[ci];
+        ns += cnt > sub_min;
         crowded += cnt > sub_min ? cnt : 0;
     }
+    if (!rt_grow((void **)&pt->subs, &pt->capsubs, pt->nsubs + ns + 1, sizeof(rt_subgrid)))
+        return 1;
     const size_t want = (size_t)(j->sub_factor * (double)crowded) + 1;
-    (void)(rt_big_grow(&pt->off, want, sizeof(uint32_t)) &&
-           rt_big_grow(&pt->refs, want, sizeof(uint32_t)));
-    size_t total = 0;
+    (void)(rt_big_grow(&pt->off, pt->total + want, sizeof(uint32_t)) &&
+           rt_big_grow(&pt->refs, pt->nref + want, sizeof(uint32_t)));
+    size_t total = pt->total;
     int err = 0;
     const size_t n0 = (size_t)g->b.n[0], n01 = n0 * (size_t)g->b.n[1];
-    rt_cell_tab tab; /* the cell boxes of the sub-grid being filled (rt_tri_cells) */
-    for (size_t ci = pt->c0; ci < pt->c1 && !err; ci++) {
+    for (size_t ci = ch->c0; ci < ch->c1 && !err; ci++) {
         uint32_t cnt = g->off[ci + 1] - g->off[ci];
         g->sub[ci] = -1;
         if (cnt <= sub_min)
@@ -1154,8 +1229,8 @@ static void rt_sub_cells(void *arg, int k, int n)
         }
         sg->first = (uint32_t)total;
         b->npairs = 0;
-        rt_tab_fill(&tab, &sg->b, eps);
-        b->tab = &tab;
+        rt_tab_fill(tab, &sg->b, eps);
+        b->tab = tab;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
             if (!keep[r]) {
                 const int tri = sc->prim[g->refs[r]].kind == RT_KIND_TRI;
@@ -1191,7 +1266,28 @@ static void rt_sub_cells(void *arg, int k, int n)
         total += nc;
     }
     pt->total = total;
-    pt->err = err;
+    ch->nsubs = pt->nsubs - ch->sub_l;
+    ch->ncell = pt->total - ch->cell_l;
+    ch->nref = pt->nref - ch->ref_l;
+    return err;
+}
+
+static void rt_sub_cells(void *arg, int k, int n)
+{
+    (void)n;
+    rt_sub_job *j = arg;
+    rt_sub_part *pt = &j->part[k];
+    j->b[k].npairs = 0;
+    rt_cell_tab tab; /* the cell boxes of the sub-grid being filled (rt_tri_cells) */
+    size_t c0, c1, slot;
+    while (!pt->err && rt_sub_take(j, k, &c0, &c1, &slot)) {
+        rt_sub_chunk *ch = k == 0 ? &j->front[slot] : &j->back[slot];
+        ch->c0 = c0;
+        ch->c1 = c1;
+        pt->err = rt_sub_chunk_run(j, k, ch, &tab);
+    }
+    if (pt->err) /* the others stop at their next take */
+        __atomic_store_n(&j->state, 0, __ATOMIC_RELEASE);
 }
 
 /* [*a, *e): the part of [lo, hi) that lies in [from, from + len); 1 if it is not empty */
@@ -1202,9 +1298,10 @@ static inline int rt_span_cut(size_t lo, size_t hi, size_t from, size_t len, siz
     return *a < *e;
 }
 
-/* The grid's arrays are part 0's grown to the whole (rt_big: in place); the parts after it
- * are copied behind part 0's, cell offsets shifted by the part's first reference. Thread k of
- * n copies the k-th n-th of the cells after part 0's and of the references after part 0's. */
+/* The grid's arrays are part 0's grown to the whole (rt_big: in place); the chunks of the
+ * other parts (the back chunks) are copied behind part 0's, cell offsets shifted from their
+ * part's references to the grid's. Thread k of n copies the k-th n-th of the cells after part
+ * 0's and of the references after part 0's. */
 static void rt_sub_place(void *arg, int k, int n)
 {
     rt_sub_job *j = arg;
@@ -1213,56 +1310,60 @@ static void rt_sub_place(void *arg, int k, int n)
     uint32_t *soff = g->soff_m.p, *srefs = g->srefs_m.p;
     size_t lo, hi, a, e;
     rt_par_range(g->nsubcells - part[0].total, k, n, &lo, &hi);
-    for (int q = 1; q < j->nparts; q++) {
-        const rt_sub_part *pt = &part[q];
-        if (!rt_span_cut(lo + part[0].total, hi + part[0].total, pt->cell0, pt->total, &a, &e))
+    for (size_t q = 0; q < j->nback; q++) {
+        const rt_sub_chunk *ch = &j->back[q];
+        if (!rt_span_cut(lo + part[0].total, hi + part[0].total, ch->cell0, ch->ncell, &a, &e))
             continue;
-        const uint32_t *off = pt->off.p, r0 = (uint32_t)pt->ref0;
+        const uint32_t *off = (const uint32_t *)part[ch->part].off.p + ch->cell_l;
+        const uint32_t shift = (uint32_t)ch->ref0 - (uint32_t)ch->ref_l; /* mod 2^32 */
         for (size_t c = a; c < e; c++)
-            soff[c] = off[c - pt->cell0] + r0;
+            soff[c] = off[c - ch->cell0] + shift;
     }
     rt_par_range(g->nsrefs - part[0].nref, k, n, &lo, &hi);
-    for (int q = 1; q < j->nparts; q++) {
-        const rt_sub_part *pt = &part[q];
-        if (rt_span_cut(lo + part[0].nref, hi + part[0].nref, pt->ref0, pt->nref, &a, &e))
-            memcpy(srefs + a, (const uint32_t *)pt->refs.p + (a - pt->ref0),
+    for (size_t q = 0; q < j->nback; q++) {
+        const rt_sub_chunk *ch = &j->back[q];
+        if (rt_span_cut(lo + part[0].nref, hi + part[0].nref, ch->ref0, ch->nref, &a, &e))
+            memcpy(srefs + a,
+                   (const uint32_t *)part[ch->part].refs.p + ch->ref_l + (a - ch->ref0),
                    (e - a) * sizeof(uint32_t));
     }
 }
 
-/* the parts of the second level's build: cells [c0, c1) of part k from the first cell at
-   k/nt of the references */
-static void rt_sub_partition(const rt_grid *g, int nt, rt_sub_part *part)
+/* the chunks' places in the grid's arrays (front chunks, then back chunks in cell order: the
+   reverse of their taking), their sub-grids into g->subs (first cells shifted) and their top
+   cells' grid indices shifted; the totals into *nsubs, *total, *nref */
+static void rt_sub_merge(rt_sub_job *j, size_t *nsubs, size_t *total, size_t *nref)
 {
-    for (int k = 0; k < nt; k++) {
-        const uint64_t want = (uint64_t)g->nrefs * (uint64_t)k / (uint64_t)nt;
-        size_t l = 0, h = g->ncells;
-        while (l < h) {
-            size_t m = l + (h - l) / 2;
-            if (g->off[m] < want)
-                l = m + 1;
-            else
-                h = m;
-        }
-        part[k].c0 = k == 0 ? 0 : l;
-        if (k > 0)
-            part[k - 1].c1 = part[k].c0;
+    size_t s = 0, c = 0, r = 0;
+    for (size_t q = 0; q < j->nfront + j->nback; q++) {
+        rt_sub_chunk *ch = q < j->nfront ? &j->front[q] : &j->back[j->nback - 1 - (q - j->nfront)];
+        ch->sub0 = s;
+        ch->cell0 = c;
+        ch->ref0 = r;
+        s += ch->nsubs;
+        c += ch->ncell;
+        r += ch->nref;
     }
-    part[nt - 1].c1 = g->ncells;
+    *nsubs = s;
+    *total = c;
+    *nref = r;
 }
 
-/* the parts' sub-grids into g->subs, their first cells and the top cells' indices shifted by
-   the parts before */
-static void rt_sub_merge(rt_grid *g, const rt_sub_part *part, int nt)
+static void rt_sub_merge_subs(rt_grid *g, const rt_sub_job *j)
 {
-    for (int k = 0; k < nt; k++) {
-        for (size_t q = 0; q < part[k].nsubs; q++) {
-            g->subs[part[k].sub0 + q] = part[k].subs[q];
-            g->subs[part[k].sub0 + q].first += (uint32_t)part[k].cell0;
+    for (size_t q = 0; q < j->nfront + j->nback; q++) {
+        const rt_sub_chunk *ch = q < j->nfront ? &j->front[q] : &j->back[q - j->nfront];
+        const rt_subgrid *from = j->part[ch->part].subs + ch->sub_l;
+        const uint32_t shift = (uint32_t)ch->cell0 - (uint32_t)ch->cell_l; /* mod 2^32 */
+        for (size_t i = 0; i < ch->nsubs; i++) {
+            g->subs[ch->sub0 + i] = from[i];
+            g->subs[ch->sub0 + i].first += shift;
         }
-        for (size_t ci = part[k].c0; ci < part[k].c1 && part[k].sub0; ci++)
+        if (ch->sub0 == ch->sub_l)
+            continue;
+        for (size_t ci = ch->c0; ci < ch->c1; ci++)
             if (g->sub[ci] >= 0)
-                g->sub[ci] += (int32_t)part[k].sub0;
+                g->sub[ci] = (int32_t)((size_t)g->sub[ci] - ch->sub_l + ch->sub0);
     }
 }
 
@@ -1323,6 +1424,25 @@ static void rt_sub_narrow(rt_grid *g)
     g->soff = NULL;
 }
 
+/* for tests: the smallest chunk of the second level's dynamic parts in references (0: the
+   default, RT_SUB_CHUNK_MIN) and the front chunks that part 0 takes at most (0: no limit), so
+   that a test makes many chunks and chunks of the back on any machine (the grid stays the
+   same); the back chunks made (a process total) */
+static size_t rt_chunk_min = 0;
+static int rt_front_max = 0;
+static uint64_t rt_back_chunks = 0;
+
+void rt_build_set_chunks(size_t min_refs, int front_max)
+{
+    __atomic_store_n(&rt_chunk_min, min_refs, __ATOMIC_RELAXED);
+    __atomic_store_n(&rt_front_max, front_max, __ATOMIC_RELAXED);
+}
+
+uint64_t rt_build_back_chunks(void)
+{
+    return __atomic_load_n(&rt_back_chunks, __ATOMIC_RELAXED);
+}
+
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
                              int sub_min)
 {
@@ -1334,30 +1454,36 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         return RT_OK;
     if ((size_t)nt > g->ncells)
         nt = 1;
+    if (g->ncells >> RT_SUB_CELL_BITS)
+        return RT_ERR_LIMIT; /* not with the resolution rule's 2^25 cells at most */
     g->sub = rt_alloc_array(g->ncells, sizeof(int32_t));
     uint8_t *keep = rt_alloc_array(g->nrefs, 1);
+    rt_sub_chunk *chunks = rt_calloc_array(2 * RT_SUB_CHUNKS, sizeof(rt_sub_chunk));
     rt_sub_part part[RT_PAR_MAX];
     memset(part, 0, sizeof part);
-    if (!g->sub || !keep) {
+    if (!g->sub || !keep || !chunks) {
         free(keep);
+        free(chunks);
         return RT_ERR_NOMEM;
     }
     memset(keep, 1, g->nrefs);
-    rt_sub_partition(g, nt, part);
-    rt_sub_job job = {sc, bs, part, keep, eps, sub_factor, sub_min, nt};
+    const size_t cmin = __atomic_load_n(&rt_chunk_min, __ATOMIC_RELAXED);
+    rt_sub_job job = {.sc = sc, .b = bs, .part = part, .keep = keep, .eps = eps,
+                      .sub_factor = sub_factor, .sub_min = sub_min, .nparts = nt,
+                      .chunk_min = cmin ? (double)cmin : RT_SUB_CHUNK_MIN,
+                      .state = (uint64_t)g->ncells << RT_SUB_CELL_BITS,
+                      .front = chunks, .back = chunks + RT_SUB_CHUNKS,
+                      .front_max = (size_t)__atomic_load_n(&rt_front_max, __ATOMIC_RELAXED)};
     rt_par_run(nt, rt_sub_cells, &job);
+    job.nback = (size_t)(job.state >> (2 * RT_SUB_CELL_BITS));
+    __atomic_fetch_add(&rt_back_chunks, job.nback, __ATOMIC_RELAXED);
     int err = 0;
-    size_t nsubs = 0, total = 0, nref = 0;
-    for (int k = 0; k < nt; k++) {
+    for (int k = 0; k < nt; k++)
         if (part[k].err && !err)
             err = part[k].err;
-        part[k].sub0 = nsubs;
-        part[k].cell0 = total;
-        part[k].ref0 = nref;
-        nsubs += part[k].nsubs;
-        total += part[k].total;
-        nref += part[k].nref;
-    }
+    size_t nsubs = 0, total = 0, nref = 0;
+    if (!err)
+        rt_sub_merge(&job, &nsubs, &total, &nref);
     if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
         err = 2;
     if (!err) {
@@ -1375,12 +1501,11 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         g->srefs = g->srefs_m.p;
         g->nsubcells = total;
         g->nsrefs = nref;
-    }
-    if (!err) {
-        rt_sub_merge(g, part, nt);
+        rt_sub_merge_subs(g, &job);
         g->nsubs = nsubs;
         g->soff[total] = (uint32_t)nref;
-        rt_par_run(nt, rt_sub_place, &job);
+        if (job.nback)
+            rt_par_run(nt, rt_sub_place, &job);
         rt_sub_narrow(g);
     }
     for (int k = 0; k < nt; k++) {
@@ -1388,6 +1513,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         rt_big_free(&part[k].off);
         rt_big_free(&part[k].refs);
     }
+    free(chunks);
     if (!err)
         rt_top_compact(g, keep);
     free(keep);

@@ -520,6 +520,11 @@ void rt_grid_free(rt_grid *g);
    every cell through the exact test; the grid is the same either way) */
 uint64_t rt_build_exact_cells(void);
 void rt_build_set_filter(int on);
+/* for tests (rt_build.c): the smallest chunk of the second level's dynamic parts, in
+   references (0: the default), and the chunks part 0 takes at most (0: no limit); the grid is
+   the same whatever the chunks are. The chunks taken from the back (a process total). */
+void rt_build_set_chunks(size_t min_refs, int front_max);
+uint64_t rt_build_back_chunks(void);
 /* the vertices of committed primitive i: their number, and vertex k as traced (polygon
    vertices projected onto the polygon's plane; the 4 corners of a cell array) */
 size_t rt_prim_nverts(const rt_scene *sc, size_t i);
