@@ -256,7 +256,8 @@ typedef struct rt_build_options {
  * of the largest get 1 cell), at most 512 per axis and 2^25 cells. A top cell with more than
  * 8 references keeps its large primitives (spanning half the cell in two axes) in its own
  * list and puts the rest into a second-level grid of ~3 cells per reference (default
- * sub_factor; 4 beyond 10^4 primitives; at most 32 per axis) over the box of those parts.
+ * sub_factor; 4 beyond 10^4 primitives, there 0.5 and 0.7 times that in sub-grids with 1 or 2
+ * cells on their thinnest axis; at most 32 per axis) over the box of those parts.
  * Up to 10^4 primitives and with all grid options at their defaults, when at least 3/4 of
  * the occupied top cells hold more than 8 references (surfaces filling their cells evenly),
  * one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
