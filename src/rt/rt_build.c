@@ -602,9 +602,12 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
     *hmax = hx;
 }
 
-static int rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3],
-                        const double bb[6], const rt_box *g, const int c0[3], const int c1[3],
-                        double eps, rt_build *b, size_t base, size_t prim)
+/* always inlined into rt_insert, its one caller: gcc stopped inlining it when the top
+   level's loop changed (bunny commit 280 -> 298 M instructions) */
+static inline __attribute__((always_inline)) int
+rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const double bb[6],
+             const rt_box *g, const int c0[3], const int c1[3], double eps, rt_build *b,
+             size_t base, size_t prim)
 {
     const int spans = (c0[0] != c1[0]) + (c0[1] != c1[1]) + (c0[2] != c1[2]);
     if (spans == 1) {
@@ -899,71 +902,118 @@ static int rt_csr(const rt_build *b, size_t ncells, uint32_t **offp, uint32_t **
     return RT_OK;
 }
 
-/* The top level in nt parts of consecutive primitives, one per thread, each with its pairs
- * and its count of them per cell; the counts give each part's place in every cell's list
- * (after the parts before it), so the parts scatter their references in parallel into the
- * arrays one part would give. */
+/* The top level in chunks of consecutive primitives taken dynamically by the parts (a shared
+ * counter: a faster core takes more of them), each chunk with its own pairs and its own count
+ * of them per cell; the counts give each chunk's place in every cell's list (after the chunks
+ * before it), so the chunks scatter their references in parallel into the arrays one part
+ * would give. RT_TOP_CHUNKS chunks per part while their counts take at most 8 bytes per
+ * primitive, fewer (down to one per part) where cells are many. */
+#define RT_TOP_CHUNKS 16
+
+typedef struct rt_top_chunk {
+    rt_pair *pairs;
+    size_t npairs, cap;
+    uint32_t *cnt; /* per cell: its pairs there, then its first place in the cell's list */
+    int err;
+} rt_top_chunk;
+
 typedef struct rt_top_job {
     const rt_scene *sc;
     rt_build *b; /* per part */
-    int err[RT_PAR_MAX];
+    rt_top_chunk *chunk;
+    size_t nchunks;
+    size_t next; /* atomic: the next chunk to take (insertion), then to scatter */
     double eps;
     uint32_t *refs;
 } rt_top_job;
 
 static void rt_top_insert(void *arg, int k, int n)
 {
+    (void)n;
     rt_top_job *j = arg;
     const rt_grid *g = &j->sc->grid;
     rt_build *b = &j->b[k];
-    size_t lo, hi;
-    rt_par_range(j->sc->nprim, k, n, &lo, &hi);
-    b->npairs = 0;
-    if (n > 1 && !(b->cnt = rt_calloc_array(g->ncells, sizeof(uint32_t)))) {
-        j->err[k] = 1;
-        return;
+    size_t q;
+    while ((q = __atomic_fetch_add(&j->next, 1, __ATOMIC_RELAXED)) < j->nchunks) {
+        rt_top_chunk *ch = &j->chunk[q];
+        size_t lo, hi;
+        rt_par_range(j->sc->nprim, (int)q, (int)j->nchunks, &lo, &hi);
+        /* the part's scratch collects the chunk's pairs, which the chunk then keeps */
+        b->pairs = NULL;
+        b->npairs = b->cap = 0;
+        int err = 0;
+        for (size_t i = lo; i < hi && !err; i++)
+            rt_insert(j->sc, b, i, &g->b, 0, j->eps, NULL, &err);
+        ch->pairs = b->pairs;
+        ch->npairs = b->npairs;
+        ch->cap = b->cap;
+        b->pairs = NULL;
+        b->npairs = b->cap = 0;
+        if (!err && j->nchunks > 1) {
+            ch->cnt = rt_calloc_array(g->ncells, sizeof(uint32_t));
+            if (!ch->cnt)
+                err = 1;
+            for (size_t p = 0; p < ch->npairs && !err; p++)
+                ch->cnt[ch->pairs[p].cell]++;
+        }
+        ch->err = err;
     }
-    int err = 0;
-    for (size_t i = lo; i < hi && !err; i++)
-        rt_insert(j->sc, b, i, &g->b, 0, j->eps, NULL, &err);
-    j->err[k] = err;
 }
 
 static void rt_top_scatter(void *arg, int k, int n)
 {
+    (void)k;
     (void)n;
     rt_top_job *j = arg;
-    rt_build *b = &j->b[k];
-    uint32_t *at = b->cnt;
-    for (size_t q = 0; q < b->npairs; q++)
-        j->refs[at[b->pairs[q].cell]++] = b->pairs[q].prim;
+    size_t q;
+    while ((q = __atomic_fetch_add(&j->next, 1, __ATOMIC_RELAXED)) < j->nchunks) {
+        const rt_top_chunk *ch = &j->chunk[q];
+        uint32_t *at = ch->cnt;
+        for (size_t p = 0; p < ch->npairs; p++)
+            j->refs[at[ch->pairs[p].cell]++] = ch->pairs[p].prim;
+    }
 }
 
 static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
 {
     rt_grid *g = &sc->grid;
-    /* per-part counts cost 4 B per cell and part: only where cells do not outnumber
-       primitives (always with the default resolution rule) */
-    if ((double)g->ncells > (double)sc->nprim + 65536.0)
+    /* per-chunk counts cost 4 B per cell and chunk: at most 8 B per primitive (with the
+       default resolution rule, cells are a fraction of the primitives) */
+    size_t nchunks = 1;
+    if (nt > 1 && sc->nprim >= 2 * (size_t)nt) {
+        nchunks = (size_t)RT_TOP_CHUNKS * (size_t)nt;
+        while (nchunks > (size_t)nt && (double)nchunks * (double)g->ncells >
+                                             2.0 * (double)sc->nprim + 65536.0)
+            nchunks /= 2;
+        if ((double)nchunks * (double)g->ncells > 2.0 * (double)sc->nprim + 65536.0 ||
+            nchunks > sc->nprim)
+            nchunks = 1;
+    }
+    if (nchunks == 1)
         nt = 1;
     rt_top_job job;
     memset(&job, 0, sizeof job);
     job.sc = sc;
     job.b = bs;
     job.eps = eps;
+    job.nchunks = nchunks;
+    job.chunk = rt_calloc_array(nchunks, sizeof(rt_top_chunk));
+    if (!job.chunk)
+        return RT_ERR_NOMEM;
     rt_par_run(nt, rt_top_insert, &job);
     int rc = RT_OK;
     size_t total = 0;
-    for (int k = 0; k < nt; k++) {
-        if (job.err[k])
+    for (size_t q = 0; q < nchunks; q++) {
+        if (job.chunk[q].err)
             rc = RT_ERR_NOMEM;
-        total += bs[k].npairs;
+        total += job.chunk[q].npairs;
     }
     if (rc == RT_OK && total > UINT32_MAX - 1)
         rc = RT_ERR_LIMIT;
-    if (rc == RT_OK && nt == 1) {
+    if (rc == RT_OK && nchunks == 1) {
         g->nrefs = total;
-        rc = rt_csr(&bs[0], g->ncells, &g->off, &g->refs);
+        rt_build one = {.pairs = job.chunk[0].pairs, .npairs = job.chunk[0].npairs};
+        rc = rt_csr(&one, g->ncells, &g->off, &g->refs);
     } else if (rc == RT_OK) {
         g->off = rt_alloc_array(g->ncells + 1, sizeof(uint32_t));
         g->refs = job.refs = rt_alloc_array(total, sizeof(uint32_t));
@@ -972,25 +1022,24 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
         uint32_t run = 0;
         for (size_t c = 0; c < g->ncells && rc == RT_OK; c++) {
             g->off[c] = run;
-            for (int k = 0; k < nt; k++) {
-                const uint32_t m = bs[k].cnt[c];
-                bs[k].cnt[c] = run;
+            for (size_t q = 0; q < nchunks; q++) {
+                const uint32_t m = job.chunk[q].cnt[c];
+                job.chunk[q].cnt[c] = run;
                 run += m;
             }
         }
         if (rc == RT_OK) {
             g->off[g->ncells] = run;
             g->nrefs = total;
+            job.next = 0;
             rt_par_run(nt, rt_top_scatter, &job);
         }
     }
-    for (int k = 0; k < nt; k++) { /* the second level needs one grid's pairs at a time */
-        free(bs[k].cnt);
-        bs[k].cnt = NULL;
-        free(bs[k].pairs);
-        bs[k].pairs = NULL;
-        bs[k].npairs = bs[k].cap = 0;
+    for (size_t q = 0; q < nchunks; q++) { /* the second level needs one grid's pairs at a time */
+        free(job.chunk[q].cnt);
+        free(job.chunk[q].pairs);
     }
+    free(job.chunk);
     return rc;
 }
 
