@@ -1223,6 +1223,40 @@ static int rt_sub_take(rt_sub_job *j, int k, size_t *c0, size_t *c1, size_t *slo
     }
 }
 
+/* the resolution of sub-grid box sb for nsmall references: sub_factor cells per reference,
+   fewer when it comes out flat (RT_SUB_FLAT1, RT_SUB_FLAT2) */
+static void rt_sub_resolution(rt_box *sb, const rt_sub_job *j, uint32_t nsmall)
+{
+    rt_box_resolution(sb, j->sub_factor * nsmall, RT_TAB); /* RT_TAB: rt_cell_tab */
+    int thin = sb->n[0] < sb->n[1] ? sb->n[0] : sb->n[1];
+    thin = thin < sb->n[2] ? thin : sb->n[2];
+    if (thin <= 2 && j->flat[thin - 1] != 1.0)
+        rt_box_resolution(sb, j->flat[thin - 1] * j->sub_factor * nsmall, RT_TAB);
+}
+
+/* the pairs of the sub-grid just filled (nc cells from the part's cell total) into the part's
+   CSR arrays, stable (reference order kept within a cell): its entries of off serve as
+   counts, then as cursors */
+static void rt_sub_csr(rt_sub_part *pt, const rt_build *b, size_t total, size_t nc)
+{
+    uint32_t *off = (uint32_t *)pt->off.p + total, *refs = pt->refs.p;
+    memset(off, 0, nc * sizeof *off);
+    for (size_t q = 0; q < b->npairs; q++)
+        off[b->pairs[q].cell]++;
+    uint32_t run = (uint32_t)pt->nref;
+    for (size_t c = 0; c < nc; c++) {
+        const uint32_t m = off[c];
+        off[c] = run;
+        run += m;
+    }
+    for (size_t q = 0; q < b->npairs; q++)
+        refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+    for (size_t c = nc; c > 1; c--) /* off[c - 1] is now the start of c */
+        off[c - 1] = off[c - 2];
+    off[0] = (uint32_t)pt->nref;
+    pt->nref = run;
+}
+
 /* the grids of the crowded cells of chunk ch into part k's arrays */
 static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab *tab)
 {
@@ -1281,11 +1315,7 @@ static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab 
             sg->b.lo[a] = rt_dmax(lo[a], rt_dmin(sb[a], mid - eps));
             sg->b.hi[a] = rt_dmin(hi[a], rt_dmax(sb[3 + a], mid + eps));
         }
-        rt_box_resolution(&sg->b, j->sub_factor * nsmall, RT_TAB); /* RT_TAB: rt_cell_tab */
-        int thin = sg->b.n[0] < sg->b.n[1] ? sg->b.n[0] : sg->b.n[1];
-        thin = thin < sg->b.n[2] ? thin : sg->b.n[2];
-        if (thin <= 2 && j->flat[thin - 1] != 1.0) /* a flat one: fewer cells (RT_SUB_FLAT1) */
-            rt_box_resolution(&sg->b, j->flat[thin - 1] * j->sub_factor * nsmall, RT_TAB);
+        rt_sub_resolution(&sg->b, j, nsmall);
         rt_box_finish(&sg->b);
         size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
         if (total + nc > UINT32_MAX - 1) {
@@ -1310,24 +1340,7 @@ static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab 
             err = 1;
         if (err)
             break;
-        /* this grid's pairs into CSR (stable: reference order kept within a cell); its
-           entries of off serve as counts, then as cursors */
-        uint32_t *off = (uint32_t *)pt->off.p + total, *refs = pt->refs.p;
-        memset(off, 0, nc * sizeof *off);
-        for (size_t q = 0; q < b->npairs; q++)
-            off[b->pairs[q].cell]++;
-        uint32_t run = (uint32_t)pt->nref;
-        for (size_t c = 0; c < nc; c++) {
-            const uint32_t m = off[c];
-            off[c] = run;
-            run += m;
-        }
-        for (size_t q = 0; q < b->npairs; q++)
-            refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
-        for (size_t c = nc; c > 1; c--) /* off[c - 1] is now the start of c */
-            off[c - 1] = off[c - 2];
-        off[0] = (uint32_t)pt->nref;
-        pt->nref = run;
+        rt_sub_csr(pt, b, total, nc);
         total += nc;
     }
     pt->total = total;
