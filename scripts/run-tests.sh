@@ -68,8 +68,8 @@ ctest --test-dir build-asan --output-on-failure -j2
 echo "=== run-tests: ThreadSanitizer build (build-tsan), the threaded tests"
 unset ASAN_OPTIONS
 tsan_targets=(test_threads test_raytrace test_rt_oom test_rt_pool test_rt_render test_rt_tiles
-              test_rt_isect test_rt_smooth test_rt_cubes)
-tsan_tests='^(core_test_threads|core_test_raytrace|core_test_rt_oom|rt_(pool|render|tiles|isect|smooth|cubes))$'
+              test_rt_isect test_rt_smooth test_rt_cubes test_rt_buildparts)
+tsan_tests='^(core_test_threads|core_test_raytrace|core_test_rt_oom|rt_(pool|render|tiles|isect|smooth|cubes|buildparts))$'
 cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_TSAN=ON -DGKS_BUILD_BENCHMARKS=OFF -DGKS_BUILD_EXAMPLES=OFF "${tests[@]}"
 cmake --build build-tsan -j2 --target "${tsan_targets[@]}"
