@@ -568,6 +568,21 @@ void rtu_options_plain(rt_render_options *o)
     o->cutoff = 0.0;
 }
 
+rt_scene *rtu_scene_one_surface(int *surf)
+{
+    rt_scene *sc = rt_scene_new();
+    if (!sc)
+        return NULL;
+    rt_surface s;
+    rt_surface_default(&s);
+    *surf = rt_scene_add_surface(sc, &s);
+    if (*surf < 0) {
+        rt_scene_free(sc);
+        return NULL;
+    }
+    return sc;
+}
+
 int rtu_add_sphere(rt_scene *sc, const double c[3], double r, int nu, int nv, int s)
 {
     return rtu_add_sphere_data(sc, c, r, nu, nv, s, 0);

@@ -143,12 +143,9 @@ static void lattice_scene(tris *t, int n, uint64_t seed)
 
 static rt_scene *make_scene(const tris *t)
 {
-    rt_scene *sc = rt_scene_new();
+    int surf;
+    rt_scene *sc = rtu_scene_one_surface(&surf);
     assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int surf = rt_scene_add_surface(sc, &s);
-    assert_true(surf >= 0);
     const int three = 3;
     /* the anchors: the scene box is [0, 8]^3 */
     const double a0[9] = {0, 0, 0, 0.01, 0, 0, 0, 0.01, 0};

@@ -53,12 +53,9 @@ static double *cluster_tris(size_t n, uint64_t seed)
 
 static rt_scene *make_scene(const double *v, size_t n, int mesh)
 {
-    rt_scene *sc = rt_scene_new();
+    int surf;
+    rt_scene *sc = rtu_scene_one_surface(&surf);
     assert_non_null(sc);
-    rt_surface su;
-    rt_surface_default(&su);
-    const int surf = rt_scene_add_surface(sc, &su);
-    assert_true(surf >= 0);
     if (mesh) {
         uint32_t *idx = malloc(3 * n * sizeof(uint32_t));
         assert_non_null(idx);
@@ -116,28 +113,27 @@ static void check(rt_scene *sc, const rt_build_options *base, const char *name)
     assert_true(rt_build_back_chunks() > back0);
 }
 
+/* n clustered triangles from seed as separate triangles or as one mesh, built every way */
+static void check_cluster(size_t n, uint64_t seed, int mesh, const char *name)
+{
+    double *v = cluster_tris(n, seed);
+    rt_scene *sc = make_scene(v, n, mesh);
+    rt_build_options o = {.brute_threshold = 0};
+    check(sc, &o, name);
+    rt_scene_free(sc);
+    free(v);
+}
+
 static void test_separate(void **state)
 {
     (void)state;
-    const size_t n = 8000;
-    double *v = cluster_tris(n, 11);
-    rt_scene *sc = make_scene(v, n, 0);
-    rt_build_options o = {.brute_threshold = 0};
-    check(sc, &o, "separate triangles");
-    rt_scene_free(sc);
-    free(v);
+    check_cluster(8000, 11, 0, "separate triangles");
 }
 
 static void test_mesh(void **state)
 {
     (void)state;
-    const size_t n = 8000;
-    double *v = cluster_tris(n, 23);
-    rt_scene *sc = make_scene(v, n, 1);
-    rt_build_options o = {.brute_threshold = 0};
-    check(sc, &o, "mesh");
-    rt_scene_free(sc);
-    free(v);
+    check_cluster(8000, 23, 1, "mesh");
 }
 
 /* a coarse top level and many cells per reference below: sub-grids of more than 65535

@@ -30,12 +30,9 @@
    at each of the 8 corners of [0, 10]^3 (the box whose top cell holds the cluster) */
 static rt_scene *cluster_scene(int n, double half)
 {
-    rt_scene *sc = rt_scene_new();
+    int surf;
+    rt_scene *sc = rtu_scene_one_surface(&surf);
     assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int surf = rt_scene_add_surface(sc, &s);
-    assert_true(surf >= 0);
     const int three = 3;
     uint64_t st = 4711;
     for (int k = 0; k < n; k++) {
