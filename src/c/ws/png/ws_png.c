@@ -227,7 +227,6 @@ static int png_background(gks_ws *ws)
 
 static int ws_matrix(const gks_ws *ws, double m[4][4]);
 
-/* Writes the frame's file; recorded ray-tracing primitives are traced first. */
 /* The written picture's rows resolved to 8 bits (each as gks_raster_fb_resolve_row makes
  * it) by every part of a write on the tracer's pool while part 0 compresses them in order:
  * a row is claimed by whichever part takes next, and done[y] says it is complete. */
@@ -304,6 +303,7 @@ static int write_picture(png_ws *p, const gks_raster_fb *pic, const char *path)
     return j.rc;
 }
 
+/* Writes the frame's file; recorded ray-tracing primitives are traced first. */
 static int png_update(gks_ws *ws)
 {
     png_ws *p = ws->priv;
