@@ -214,17 +214,17 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, 
         const __m256d U = _mm256_sub_pd(_mm256_mul_pd(Cx, By), _mm256_mul_pd(Cy, Bx));
         const __m256d V = _mm256_sub_pd(_mm256_mul_pd(Ax, Cy), _mm256_mul_pd(Ay, Cx));
         const __m256d W = _mm256_sub_pd(_mm256_mul_pd(Bx, Ay), _mm256_mul_pd(By, Ax));
-        const __m256d zero = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_EQ_OQ),
-                                                       _mm256_cmp_pd(V, z, _CMP_EQ_OQ)),
-                                          _mm256_cmp_pd(W, z, _CMP_EQ_OQ));
-        const __m256d neg = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_LT_OQ),
-                                                      _mm256_cmp_pd(V, z, _CMP_LT_OQ)),
-                                         _mm256_cmp_pd(W, z, _CMP_LT_OQ));
-        const __m256d pos = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_GT_OQ),
-                                                      _mm256_cmp_pd(V, z, _CMP_GT_OQ)),
-                                         _mm256_cmp_pd(W, z, _CMP_GT_OQ));
-        const unsigned mixed = (unsigned)_mm256_movemask_pd(_mm256_and_pd(neg, pos));
-        const unsigned keep = (unsigned)_mm256_movemask_pd(zero) | (~mixed & 15u);
+        /* kept: a lane with a zero (or NaN: the exact test decides it) edge function, or
+           whose three sign bits agree. Without zeros and NaNs the sign bits are the signs,
+           so the lanes ruled out are exactly rt_pk_lane's "non-zero and mixed"; a NaN lane
+           is kept where rt_pk_lane's ordered compares might rule it out, which only leaves
+           one more ray to the exact test (its own ordered compares decide it the same). */
+        const __m256d zero = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(U, z, _CMP_EQ_UQ),
+                                                       _mm256_cmp_pd(V, z, _CMP_EQ_UQ)),
+                                          _mm256_cmp_pd(W, z, _CMP_EQ_UQ));
+        const unsigned differ = (unsigned)_mm256_movemask_pd(
+            _mm256_or_pd(_mm256_xor_pd(U, V), _mm256_xor_pd(U, W)));
+        const unsigned keep = (unsigned)_mm256_movemask_pd(zero) | (~differ & 15u);
         out |= (uint64_t)keep << k;
     }
     return out & mask;
