@@ -100,6 +100,14 @@ typedef struct rt_pk {
     double ob[4], osp[4], osn[4], omg[4];
     /* and in rt_pk_rect_avx2's: lo[0], hi[0], lo[1], hi[1] and their slopes likewise */
     double rb[4], rsp[4], rsn[4];
+    /* the frusta of the kernel's steps (rays 4s .. 4s+3, AVX2 only; rt_pk_steps): for
+       bound b (lo[0], -hi[0], lo[1], -hi[1] as ob) and step s, the bound at z0 less the
+       margin and its slopes for z >= z0 and z < z0; made once per packet at z0 from the rays
+       walked then (a superset of the rays of any later mask: still bounds) */
+    double stb[4][RT_PACKET / 4], stp[4][RT_PACKET / 4], stn[4][RT_PACKET / 4];
+    int steps;               /* stb, stp, stn are made: the cull takes its steps' test */
+    int sax;                 /* ... along a1 (0) or a2 (1): where the steps are narrower
+                                against the packet */
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
     int kx, ky, kz;
@@ -197,9 +205,12 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, 
     const __m256d cx = _mm256_set1_pd(v2[kx]), cy = _mm256_set1_pd(v2[ky]), cz = _mm256_set1_pd(v2[kz]);
     const __m256d z = _mm256_setzero_pd();
     uint64_t out = 0;
-    for (int k = 0; k < p->n; k += 4) {
-        if (!((mask >> k) & 15u))
-            continue;
+    /* the steps with a ray of mask: bit 4s set for step s (no branch per step: the steps'
+       test leaves sparse masks) */
+    uint64_t st = mask | mask >> 1;
+    st = (st | st >> 2) & UINT64_C(0x1111111111111111);
+    for (; st; st &= st - 1) {
+        const int k = __builtin_ctzll(st);
         const __m256d ox = _mm256_loadu_pd(p->ox + k), oy = _mm256_loadu_pd(p->oy + k),
                       oz = _mm256_loadu_pd(p->oz + k), sx = _mm256_loadu_pd(p->sx + k),
                       sy = _mm256_loadu_pd(p->sy + k);
@@ -777,6 +788,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->n = (int)n;
     p->any = any;
     p->hit = p->over = p->fmask = 0;
+    p->steps = 0;
     p->hbox = ctx->hbox;
     p->r = rx;
     p->rays = rays;
@@ -959,23 +971,12 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q
    lies there whole and meets no ray of the frustum. In the grid frame: a rotated grid's
    vertices are taken into it first (their roundings far below the margin). */
 #ifdef RT_PK_X86
-static int rt_pk_outside_avx2(const rt_pk *p, const double *const v[3]);
+static uint64_t rt_pk_pre_avx2(const rt_pk *p, const double *const v[3], uint64_t m);
+static void rt_pk_steps(rt_pk *p);
 #endif
-static inline int rt_pk_outside(const rt_pk *p, const double *const vv[3])
+static inline int rt_pk_outside(const rt_pk *p, const double *const v[3])
 {
     int below[2] = {1, 1}, above[2] = {1, 1};
-    const rt_grid *g = &p->sc->grid;
-    double w[3][3];
-    const double *v[3] = {vv[0], vv[1], vv[2]};
-    if (g->rotated)
-        for (int j = 0; j < 3; j++) {
-            rt_grid_point(g, vv[j], w[j]);
-            v[j] = w[j];
-        }
-#ifdef RT_PK_X86
-    if (rt_pk_avx2)
-        return rt_pk_outside_avx2(p, v);
-#endif
     for (int j = 0; j < 3; j++) {
         const double dz = v[j][p->K] - p->z0;
         for (int a = 0; a < 2; a++) {
@@ -997,7 +998,24 @@ static __attribute__((noinline)) void rt_pk_test(rt_pk *p, rt_pk_cull_fn cull, u
     if (i < sc->ntri) {
         const double *v[3];
         rt_tri_verts(sc, i, v);
-        if (rt_pk_outside(p, v))
+        /* the vertices in the grid frame (a rotated grid's: their roundings far below the
+           frustum's margin) */
+        const rt_grid *g = &sc->grid;
+        double w[3][3];
+        const double *gv[3] = {v[0], v[1], v[2]};
+        if (g->rotated)
+            for (int j = 0; j < 3; j++) {
+                rt_grid_point(g, v[j], w[j]);
+                gv[j] = w[j];
+            }
+#ifdef RT_PK_X86
+        if (rt_pk_avx2) /* the frustum, then its steps' frusta */
+            m = rt_pk_pre_avx2(p, gv, m);
+        else
+#endif
+            if (rt_pk_outside(p, gv))
+            m = 0;
+        if (!m)
             return;
         m = cull(p, v[0], v[1], v[2], m);
         rt_pk_make(p, m);
@@ -1163,8 +1181,8 @@ __attribute__((target("avx2"))) static void rt_pk_rect_avx2(const rt_pk *p, cons
 /* rt_pk_outside for the vertices v (in the grid frame) with the same values: lanes 0 and 2
    test x < xl - mg along a1 and a2, lanes 1 and 3 x > xh + mg as -x < -(xh + mg), which is
    (-hi + dz (-m)) - mg with the same roundings (negation is exact and rounding is symmetric) */
-__attribute__((target("avx2"))) static int rt_pk_outside_avx2(const rt_pk *p,
-                                                              const double *const v[3])
+static inline __attribute__((target("avx2"), always_inline)) int
+rt_pk_outside_avx2(const rt_pk *p, const double *const v[3])
 {
     const __m256d b = _mm256_loadu_pd(p->ob), sp = _mm256_loadu_pd(p->osp),
                   sn = _mm256_loadu_pd(p->osn), mg = _mm256_loadu_pd(p->omg);
@@ -1180,6 +1198,163 @@ __attribute__((target("avx2"))) static int rt_pk_outside_avx2(const rt_pk *p,
         all = _mm256_and_pd(all, _mm256_cmp_pd(x, bound, _CMP_LT_OQ));
     }
     return _mm256_movemask_pd(all) != 0;
+}
+
+/* lane j of the result: the least (mx 0) or greatest (1) of the four lanes of a[j] */
+__attribute__((target("avx2"))) static inline __m256d rt_pk_hred(const __m256d a[4], int mx)
+{
+    const __m256d l01 = _mm256_unpacklo_pd(a[0], a[1]), h01 = _mm256_unpackhi_pd(a[0], a[1]);
+    const __m256d l23 = _mm256_unpacklo_pd(a[2], a[3]), h23 = _mm256_unpackhi_pd(a[2], a[3]);
+    const __m256d t0 = mx ? _mm256_max_pd(l01, h01) : _mm256_min_pd(l01, h01);
+    const __m256d t1 = mx ? _mm256_max_pd(l23, h23) : _mm256_min_pd(l23, h23);
+    const __m256d u0 = _mm256_permute2f128_pd(t0, t1, 0x20),
+                  u1 = _mm256_permute2f128_pd(t0, t1, 0x31);
+    return mx ? _mm256_max_pd(u0, u1) : _mm256_min_pd(u0, u1);
+}
+
+/* x where |x| <= 1e100, else 0 (infinities too), by the bits */
+__attribute__((target("avx2"))) static inline __m256d rt_pk_tame(__m256d x)
+{
+    const double lim = 1e100;
+    int64_t bl;
+    memcpy(&bl, &lim, sizeof bl);
+    const __m256i a = _mm256_and_si256(_mm256_castpd_si256(x), _mm256_set1_epi64x(INT64_MAX));
+    return _mm256_andnot_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(a, _mm256_set1_epi64x(bl))), x);
+}
+
+/* the frusta of the cull kernel's steps (p->stb, stp, stn) from the rays of p->live at
+   p->z0: for each step the frustum of rt_pk_frustum (the same crossings of z0 and slopes)
+   of its rays walked; a step without one gets bounds of +inf (every triangle outside it) */
+__attribute__((target("avx2"))) static void rt_pk_steps(rt_pk *p)
+{
+    const __m256d z0 = _mm256_set1_pd(p->z0), pinf = _mm256_set1_pd(INFINITY),
+                  ninf = _mm256_set1_pd(-INFINITY), zero = _mm256_setzero_pd();
+    const __m256d neg = _mm256_set1_pd(-0.0);
+    const __m256d mg1 = _mm256_set1_pd(p->xmg[0]), mg2 = _mm256_set1_pd(p->xmg[1]);
+    /* the steps' widths along each axis at z0 and at the far end of the walk (dz1 from z0),
+       summed over the steps with rays, to choose the axis of the test */
+    const double far = fmin(fabs(p->sg * p->uemax - p->z0), 1e100); /* (finite) */
+    const __m256d dz1 = _mm256_set1_pd(far);
+    __m256d wsum[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
+    for (int k0 = 0; k0 < p->n; k0 += 16) {
+        /* q[c][i]: quantity c of the rays of step k0 / 4 + i (lanes: its four rays), set to
+           +inf (c even: a least) or -inf (odd: a greatest) for rays not walked */
+        __m256d q[8][4];
+        for (int i = 0; i < 4; i++) {
+            const int k = k0 + 4 * i;
+            if (k >= p->n) { /* no rays (lanes past n may hold anything) */
+                for (int c = 0; c < 8; c++)
+                    q[c][i] = c & 1 ? ninf : pinf;
+                continue;
+            }
+            const __m256d sel = rt_pk_lanes(p->live, k);
+            const __m256d dz = _mm256_sub_pd(z0, _mm256_loadu_pd(p->oK + k));
+            const __m256d m1 = _mm256_loadu_pd(p->m1 + k), m2 = _mm256_loadu_pd(p->m2 + k);
+            const __m256d x1 = _mm256_add_pd(_mm256_loadu_pd(p->o1 + k), _mm256_mul_pd(dz, m1));
+            const __m256d x2 = _mm256_add_pd(_mm256_loadu_pd(p->o2 + k), _mm256_mul_pd(dz, m2));
+            const __m256d v[4] = {x1, x2, m1, m2};
+            for (int c = 0; c < 4; c++) {
+                q[2 * c][i] = _mm256_blendv_pd(pinf, v[c], sel);
+                q[2 * c + 1][i] = _mm256_blendv_pd(ninf, v[c], sel);
+            }
+        }
+        __m256d r[8]; /* lo1, hi1, lo2, hi2, mlo1, mhi1, mlo2, mhi2 per step */
+        for (int c = 0; c < 8; c++)
+            r[c] = rt_pk_hred(q[c], c & 1);
+        /* a step without rays walked: lo = +inf, hi = -inf, slopes +inf / -inf: bounds +inf,
+           slopes 0 */
+        const __m256d none = _mm256_cmp_pd(r[0], pinf, _CMP_EQ_OQ);
+        const int s = k0 / 4;
+        for (int a = 0; a < 2; a++) {
+            const __m256d lo = r[2 * a], hi = r[2 * a + 1], ml = r[4 + 2 * a],
+                          mh = r[5 + 2 * a], mg = a ? mg2 : mg1;
+            /* the widths only guide the choice: from values within 1e100 (others and
+               those of steps without rays taken as 0, by the bits: no operation on an
+               infinity, none that can raise an exception) */
+            const __m256d lo0 = rt_pk_tame(lo), hi0 = rt_pk_tame(hi), ml0 = rt_pk_tame(ml),
+                          mh0 = rt_pk_tame(mh);
+            const __m256d w = _mm256_add_pd(_mm256_sub_pd(hi0, lo0),
+                                            _mm256_mul_pd(dz1, _mm256_sub_pd(mh0, ml0)));
+            wsum[a] = _mm256_add_pd(wsum[a], w);
+            _mm256_storeu_pd(p->stb[2 * a] + s, _mm256_blendv_pd(_mm256_sub_pd(lo, mg), pinf, none));
+            _mm256_storeu_pd(p->stb[2 * a + 1] + s,
+                             _mm256_blendv_pd(_mm256_sub_pd(_mm256_xor_pd(hi, neg), mg), pinf, none));
+            _mm256_storeu_pd(p->stp[2 * a] + s, _mm256_blendv_pd(ml, zero, none));
+            _mm256_storeu_pd(p->stp[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(mh, neg), zero, none));
+            _mm256_storeu_pd(p->stn[2 * a] + s, _mm256_blendv_pd(mh, zero, none));
+            _mm256_storeu_pd(p->stn[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(ml, neg), zero, none));
+        }
+    }
+    double ws[2][4];
+    _mm256_storeu_pd(ws[0], wsum[0]);
+    _mm256_storeu_pd(ws[1], wsum[1]);
+    double wa[2];
+    int ok = 1;
+    for (int a = 0; a < 2; a++) { /* against the packet's own width there (the frustum's
+                                      values are not NaN; inf or huge ones: no choice) */
+        ok &= (fabs(p->lo[a]) <= 1e100) & (fabs(p->hi[a]) <= 1e100) &
+              (fabs(p->mlo[a]) <= 1e100) & (fabs(p->mhi[a]) <= 1e100);
+        const double pw = ok ? (p->hi[a] - p->lo[a]) + far * (p->mhi[a] - p->mlo[a]) : 0.0;
+        if (!(pw > 0.0)) {
+            ok = 0;
+            break;
+        }
+        wa[a] = (ws[a][0] + ws[a][1] + ws[a][2] + ws[a][3]) / pw;
+    }
+    p->sax = ok && wa[1] < wa[0];
+    p->steps = 1;
+}
+
+/* the rays of the steps whose frustum may meet triangle v (in the grid frame): a step is
+   ruled out when the three vertices lie beyond one of its four bounds, by the margin
+   (rt_pk_outside's test and argument, on the step's frustum). Returns a ray mask. */
+static inline __attribute__((target("avx2"), always_inline)) uint64_t
+rt_pk_steps_in(const rt_pk *p, const double *const v[3])
+{
+    /* bit i of a 4-bit mask to bit 4i: the rays of step i */
+    static const uint16_t spread[16] = {0x0000, 0x000f, 0x00f0, 0x00ff, 0x0f00, 0x0f0f,
+                                        0x0ff0, 0x0fff, 0xf000, 0xf00f, 0xf0f0, 0xf0ff,
+                                        0xff00, 0xff0f, 0xfff0, 0xffff};
+    double dz[3];
+    const double *sl[3];
+    __m256d x[3][2];
+    const int b0 = 2 * p->sax, ax = p->sax ? p->a2 : p->a1;
+    for (int j = 0; j < 3; j++) {
+        dz[j] = v[j][p->K] - p->z0;
+        sl[j] = dz[j] >= 0.0 ? &p->stp[b0][0] : &p->stn[b0][0];
+        x[j][0] = _mm256_set1_pd(v[j][ax]);
+        x[j][1] = _mm256_set1_pd(-v[j][ax]);
+    }
+    uint64_t in = 0;
+    const int ns = (p->n + 3) / 4;
+    for (int s = 0; s < ns; s += 4) {
+        __m256d out = _mm256_setzero_pd();
+        for (int b = 0; b < 2; b++) {
+            const __m256d base = _mm256_loadu_pd(p->stb[b0 + b] + s);
+            __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+            for (int j = 0; j < 3; j++) {
+                const __m256d bound = _mm256_add_pd(
+                    base, _mm256_mul_pd(_mm256_set1_pd(dz[j]),
+                                        _mm256_loadu_pd(sl[j] + b * (RT_PACKET / 4) + s)));
+                all = _mm256_and_pd(all, _mm256_cmp_pd(x[j][b], bound, _CMP_LT_OQ));
+            }
+            out = _mm256_or_pd(out, all);
+        }
+        in |= (uint64_t)spread[~_mm256_movemask_pd(out) & 15] << (4 * s);
+    }
+    return in;
+}
+
+/* the rays of m that may meet triangle v (in the grid frame): none if it lies outside the
+   packet's frustum (rt_pk_outside), else those of the steps whose frusta it may meet
+   (rt_pk_steps_in, once the steps' frusta are made) */
+__attribute__((target("avx2"))) static uint64_t rt_pk_pre_avx2(const rt_pk *p,
+                                                               const double *const v[3],
+                                                               uint64_t m)
+{
+    if (rt_pk_outside_avx2(p, v))
+        return 0;
+    return p->steps ? m & rt_pk_steps_in(p, v) : m;
 }
 #endif
 
@@ -1350,6 +1525,10 @@ static int rt_pk_ends(rt_pk *p)
     const int s1 = rt_pk_cell(b, K, p->sg * p->uemax, p->sg);
     p->z0 = rt_pk_plane(b, K, p->sg > 0 ? s0 : s0 + 1);
     rt_pk_frustum(p, p->live);
+#ifdef RT_PK_X86
+    if (rt_pk_avx2)
+        rt_pk_steps(p);
+#endif
     int c[4];
     for (int e = 0; e < 2; e++) {
         const int s = e ? s1 : s0;
