@@ -971,7 +971,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q
    lies there whole and meets no ray of the frustum. In the grid frame: a rotated grid's
    vertices are taken into it first (their roundings far below the margin). */
 #ifdef RT_PK_X86
-static uint64_t rt_pk_pre_avx2(const rt_pk *p, const double *const v[3], uint64_t m);
+static uint64_t rt_pk_pre_avx2(rt_pk *p, const double *const v[3], uint64_t m);
 static void rt_pk_steps(rt_pk *p);
 #endif
 static inline int rt_pk_outside(const rt_pk *p, const double *const v[3])
@@ -1305,11 +1305,13 @@ __attribute__((target("avx2"))) static void rt_pk_steps(rt_pk *p)
     p->steps = 1;
 }
 
-/* the rays of the steps whose frustum may meet triangle v (in the grid frame): a step is
-   ruled out when the three vertices lie beyond one of its four bounds, by the margin
-   (rt_pk_outside's test and argument, on the step's frustum). Returns a ray mask. */
+/* the rays of m in the steps whose frustum may meet triangle v (in the grid frame): a step
+   is ruled out when the three vertices lie beyond one of its two bounds along p->sax, by the
+   margin (rt_pk_outside's test and argument, on the step's frustum; the margin is taken
+   from the bound at z0 before the slope's part is added, a rounding apart, far below it).
+   Four steps without a ray of m are skipped (shadow packets: rays that ended). */
 static inline __attribute__((target("avx2"), always_inline)) uint64_t
-rt_pk_steps_in(const rt_pk *p, const double *const v[3])
+rt_pk_steps_in(const rt_pk *p, const double *const v[3], uint64_t m)
 {
     /* bit i of a 4-bit mask to bit 4i: the rays of step i */
     static const uint16_t spread[16] = {0x0000, 0x000f, 0x00f0, 0x00ff, 0x0f00, 0x0f0f,
@@ -1328,6 +1330,8 @@ rt_pk_steps_in(const rt_pk *p, const double *const v[3])
     uint64_t in = 0;
     const int ns = (p->n + 3) / 4;
     for (int s = 0; s < ns; s += 4) {
+        if (!((m >> (4 * s)) & 0xffffu))
+            continue; /* no ray of m in these four steps */
         __m256d out = _mm256_setzero_pd();
         for (int b = 0; b < 2; b++) {
             const __m256d base = _mm256_loadu_pd(p->stb[b0 + b] + s);
@@ -1342,19 +1346,18 @@ rt_pk_steps_in(const rt_pk *p, const double *const v[3])
         }
         in |= (uint64_t)spread[~_mm256_movemask_pd(out) & 15] << (4 * s);
     }
-    return in;
+    return in & m;
 }
 
 /* the rays of m that may meet triangle v (in the grid frame): none if it lies outside the
    packet's frustum (rt_pk_outside), else those of the steps whose frusta it may meet
-   (rt_pk_steps_in, once the steps' frusta are made) */
-__attribute__((target("avx2"))) static uint64_t rt_pk_pre_avx2(const rt_pk *p,
-                                                               const double *const v[3],
+   (rt_pk_steps_in, once rt_pk_ends made the steps' frusta) */
+__attribute__((target("avx2"))) static uint64_t rt_pk_pre_avx2(rt_pk *p, const double *const v[3],
                                                                uint64_t m)
 {
     if (rt_pk_outside_avx2(p, v))
         return 0;
-    return p->steps ? m & rt_pk_steps_in(p, v) : m;
+    return p->steps ? rt_pk_steps_in(p, v, m) : m;
 }
 #endif
 
