@@ -23,6 +23,8 @@
  * test's edge functions (rt_isect_tri, rt_prim.h), so its signs are that test's bit for bit
  * (no FMA: the kernels are built for AVX2 without FMA, and the build has no -march), and only
  * rules out rays whose signs are mixed and non-zero; the exact test decides every other ray.
+ * Before it, a triangle beyond one of the bounds of the packet's frustum is skipped, and with
+ * AVX2 the kernel runs only the 4-ray steps whose own frusta it may meet (rt_pk_steps).
  * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (or RT_PK_MAXS
  * second-level cells) is handed to the single-ray walk as a whole.
  *
@@ -57,7 +59,7 @@
 #endif
 
 #define RT_PK_REC 8      /* hits recorded per ray (more: the ray is traced singly) */
-#define RT_PK_MAXC 16    /* top cells per slice at most */
+#define RT_PK_MAXC 12    /* top cells per slice at most (16 before the steps' frusta) */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
 
