@@ -1231,96 +1231,86 @@ __attribute__((target("avx2"))) static inline __m256d rt_pk_hred(const __m256d a
     return mx ? _mm256_max_pd(u0, u1) : _mm256_min_pd(u0, u1);
 }
 
-/* x where |x| <= 1e100, else 0 (infinities too), by the bits */
-__attribute__((target("avx2"))) static inline __m256d rt_pk_tame(__m256d x)
+/* the axis of the steps' test (p->sax): the one where the first step with a ray walked is
+   narrower against the packet (widths at z0 plus the slopes' spread times the walk's
+   length; a step of an 8x8 block is a half row, thin across it). Only a choice: values
+   beyond 1e100 (none is NaN) leave a1. */
+static int rt_pk_steps_axis(const rt_pk *p)
 {
-    const double lim = 1e100;
-    int64_t bl;
-    memcpy(&bl, &lim, sizeof bl);
-    const __m256i a = _mm256_and_si256(_mm256_castpd_si256(x), _mm256_set1_epi64x(INT64_MAX));
-    return _mm256_andnot_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(a, _mm256_set1_epi64x(bl))), x);
+    const double far = fmin(fabs(p->sg * p->uemax - p->z0), 1e100);
+    const int s0 = __builtin_ctzll(p->live) / 4;
+    double r[2];
+    for (int a = 0; a < 2; a++) {
+        const double *o = a ? p->o2 : p->o1, *m = a ? p->m2 : p->m1;
+        double lo = INFINITY, hi = -INFINITY, ml = INFINITY, mh = -INFINITY;
+        for (int k = 4 * s0; k < 4 * s0 + 4 && k < p->n; k++) {
+            if (!((p->live >> k) & 1u))
+                continue;
+            const double x = o[k] + (p->z0 - p->oK[k]) * m[k];
+            lo = x < lo ? x : lo;
+            hi = x > hi ? x : hi;
+            ml = m[k] < ml ? m[k] : ml;
+            mh = m[k] > mh ? m[k] : mh;
+        }
+        if (!((fabs(lo) <= 1e100) & (fabs(hi) <= 1e100) & (fabs(ml) <= 1e100) &
+              (fabs(mh) <= 1e100) & (fabs(p->lo[a]) <= 1e100) & (fabs(p->hi[a]) <= 1e100) &
+              (fabs(p->mlo[a]) <= 1e100) & (fabs(p->mhi[a]) <= 1e100)))
+            return 0;
+        const double pw = (p->hi[a] - p->lo[a]) + far * (p->mhi[a] - p->mlo[a]);
+        if (!(pw > 0.0))
+            return 0;
+        r[a] = ((hi - lo) + far * (mh - ml)) / pw;
+    }
+    return r[1] < r[0];
 }
 
-/* the frusta of the cull kernel's steps (p->stb, stp, stn) from the rays of p->live at
-   p->z0: for each step the frustum of rt_pk_frustum (the same crossings of z0 and slopes)
-   of its rays walked; a step without one gets bounds of +inf (every triangle outside it) */
+/* the frusta of the cull kernel's steps along p->sax (p->stb, stp, stn) from the rays of
+   p->live at p->z0: for each step the frustum of rt_pk_frustum (the same crossings of z0
+   and slopes) of its rays walked; a step without one gets bounds of +inf (every triangle
+   outside it) */
 __attribute__((target("avx2"))) static void rt_pk_steps(rt_pk *p)
 {
     const __m256d z0 = _mm256_set1_pd(p->z0), pinf = _mm256_set1_pd(INFINITY),
                   ninf = _mm256_set1_pd(-INFINITY), zero = _mm256_setzero_pd();
     const __m256d neg = _mm256_set1_pd(-0.0);
-    const __m256d mg1 = _mm256_set1_pd(p->xmg[0]), mg2 = _mm256_set1_pd(p->xmg[1]);
-    /* the steps' widths along each axis at z0 and at the far end of the walk (dz1 from z0),
-       summed over the steps with rays, to choose the axis of the test */
-    const double far = fmin(fabs(p->sg * p->uemax - p->z0), 1e100); /* (finite) */
-    const __m256d dz1 = _mm256_set1_pd(far);
-    __m256d wsum[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()};
+    p->sax = rt_pk_steps_axis(p);
+    const int a = p->sax;
+    const double *oa = a ? p->o2 : p->o1, *ma = a ? p->m2 : p->m1;
+    const __m256d mg = _mm256_set1_pd(p->xmg[a]);
     for (int k0 = 0; k0 < p->n; k0 += 16) {
         /* q[c][i]: quantity c of the rays of step k0 / 4 + i (lanes: its four rays), set to
            +inf (c even: a least) or -inf (odd: a greatest) for rays not walked */
-        __m256d q[8][4];
+        __m256d q[4][4];
         for (int i = 0; i < 4; i++) {
             const int k = k0 + 4 * i;
             if (k >= p->n) { /* no rays (lanes past n may hold anything) */
-                for (int c = 0; c < 8; c++)
+                for (int c = 0; c < 4; c++)
                     q[c][i] = c & 1 ? ninf : pinf;
                 continue;
             }
             const __m256d sel = rt_pk_lanes(p->live, k);
             const __m256d dz = _mm256_sub_pd(z0, _mm256_loadu_pd(p->oK + k));
-            const __m256d m1 = _mm256_loadu_pd(p->m1 + k), m2 = _mm256_loadu_pd(p->m2 + k);
-            const __m256d x1 = _mm256_add_pd(_mm256_loadu_pd(p->o1 + k), _mm256_mul_pd(dz, m1));
-            const __m256d x2 = _mm256_add_pd(_mm256_loadu_pd(p->o2 + k), _mm256_mul_pd(dz, m2));
-            const __m256d v[4] = {x1, x2, m1, m2};
-            for (int c = 0; c < 4; c++) {
-                q[2 * c][i] = _mm256_blendv_pd(pinf, v[c], sel);
-                q[2 * c + 1][i] = _mm256_blendv_pd(ninf, v[c], sel);
-            }
+            const __m256d m = _mm256_loadu_pd(ma + k);
+            const __m256d x = _mm256_add_pd(_mm256_loadu_pd(oa + k), _mm256_mul_pd(dz, m));
+            q[0][i] = _mm256_blendv_pd(pinf, x, sel);
+            q[1][i] = _mm256_blendv_pd(ninf, x, sel);
+            q[2][i] = _mm256_blendv_pd(pinf, m, sel);
+            q[3][i] = _mm256_blendv_pd(ninf, m, sel);
         }
-        __m256d r[8]; /* lo1, hi1, lo2, hi2, mlo1, mhi1, mlo2, mhi2 per step */
-        for (int c = 0; c < 8; c++)
-            r[c] = rt_pk_hred(q[c], c & 1);
-        /* a step without rays walked: lo = +inf, hi = -inf, slopes +inf / -inf: bounds +inf,
-           slopes 0 */
-        const __m256d none = _mm256_cmp_pd(r[0], pinf, _CMP_EQ_OQ);
+        /* lo, hi, mlo, mhi per step */
+        const __m256d lo = rt_pk_hred(q[0], 0), hi = rt_pk_hred(q[1], 1),
+                      ml = rt_pk_hred(q[2], 0), mh = rt_pk_hred(q[3], 1);
+        /* a step without rays walked: lo = +inf: bounds +inf, slopes 0 */
+        const __m256d none = _mm256_cmp_pd(lo, pinf, _CMP_EQ_OQ);
         const int s = k0 / 4;
-        for (int a = 0; a < 2; a++) {
-            const __m256d lo = r[2 * a], hi = r[2 * a + 1], ml = r[4 + 2 * a],
-                          mh = r[5 + 2 * a], mg = a ? mg2 : mg1;
-            /* the widths only guide the choice: from values within 1e100 (others and
-               those of steps without rays taken as 0, by the bits: no operation on an
-               infinity, none that can raise an exception) */
-            const __m256d lo0 = rt_pk_tame(lo), hi0 = rt_pk_tame(hi), ml0 = rt_pk_tame(ml),
-                          mh0 = rt_pk_tame(mh);
-            const __m256d w = _mm256_add_pd(_mm256_sub_pd(hi0, lo0),
-                                            _mm256_mul_pd(dz1, _mm256_sub_pd(mh0, ml0)));
-            wsum[a] = _mm256_add_pd(wsum[a], w);
-            _mm256_storeu_pd(p->stb[2 * a] + s, _mm256_blendv_pd(_mm256_sub_pd(lo, mg), pinf, none));
-            _mm256_storeu_pd(p->stb[2 * a + 1] + s,
-                             _mm256_blendv_pd(_mm256_sub_pd(_mm256_xor_pd(hi, neg), mg), pinf, none));
-            _mm256_storeu_pd(p->stp[2 * a] + s, _mm256_blendv_pd(ml, zero, none));
-            _mm256_storeu_pd(p->stp[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(mh, neg), zero, none));
-            _mm256_storeu_pd(p->stn[2 * a] + s, _mm256_blendv_pd(mh, zero, none));
-            _mm256_storeu_pd(p->stn[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(ml, neg), zero, none));
-        }
+        _mm256_storeu_pd(p->stb[2 * a] + s, _mm256_blendv_pd(_mm256_sub_pd(lo, mg), pinf, none));
+        _mm256_storeu_pd(p->stb[2 * a + 1] + s,
+                         _mm256_blendv_pd(_mm256_sub_pd(_mm256_xor_pd(hi, neg), mg), pinf, none));
+        _mm256_storeu_pd(p->stp[2 * a] + s, _mm256_blendv_pd(ml, zero, none));
+        _mm256_storeu_pd(p->stp[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(mh, neg), zero, none));
+        _mm256_storeu_pd(p->stn[2 * a] + s, _mm256_blendv_pd(mh, zero, none));
+        _mm256_storeu_pd(p->stn[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(ml, neg), zero, none));
     }
-    double ws[2][4];
-    _mm256_storeu_pd(ws[0], wsum[0]);
-    _mm256_storeu_pd(ws[1], wsum[1]);
-    double wa[2];
-    int ok = 1;
-    for (int a = 0; a < 2; a++) { /* against the packet's own width there (the frustum's
-                                      values are not NaN; inf or huge ones: no choice) */
-        ok &= (fabs(p->lo[a]) <= 1e100) & (fabs(p->hi[a]) <= 1e100) &
-              (fabs(p->mlo[a]) <= 1e100) & (fabs(p->mhi[a]) <= 1e100);
-        const double pw = ok ? (p->hi[a] - p->lo[a]) + far * (p->mhi[a] - p->mlo[a]) : 0.0;
-        if (!(pw > 0.0)) {
-            ok = 0;
-            break;
-        }
-        wa[a] = (ws[a][0] + ws[a][1] + ws[a][2] + ws[a][3]) / pw;
-    }
-    p->sax = ok && wa[1] < wa[0];
     p->steps = 1;
 }
 
