@@ -1307,9 +1307,11 @@ __attribute__((target("avx2"))) static void rt_pk_steps(rt_pk *p)
         _mm256_storeu_pd(p->stb[2 * a + 1] + s,
                          _mm256_blendv_pd(_mm256_sub_pd(_mm256_xor_pd(hi, neg), mg), pinf, none));
         _mm256_storeu_pd(p->stp[2 * a] + s, _mm256_blendv_pd(ml, zero, none));
-        _mm256_storeu_pd(p->stp[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(mh, neg), zero, none));
+        _mm256_storeu_pd(p->stp[2 * a + 1] + s,
+                         _mm256_blendv_pd(_mm256_xor_pd(mh, neg), zero, none));
         _mm256_storeu_pd(p->stn[2 * a] + s, _mm256_blendv_pd(mh, zero, none));
-        _mm256_storeu_pd(p->stn[2 * a + 1] + s, _mm256_blendv_pd(_mm256_xor_pd(ml, neg), zero, none));
+        _mm256_storeu_pd(p->stn[2 * a + 1] + s,
+                         _mm256_blendv_pd(_mm256_xor_pd(ml, neg), zero, none));
     }
     p->steps = 1;
 }
