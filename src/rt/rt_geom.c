@@ -58,6 +58,28 @@ static double rt_absmax(const double *v, int n)
     return m;
 }
 
+/* fmax(a, b) inline, the same value for every input: b if a is NaN, a if b is NaN (fmax is
+   a libm call here) */
+static inline double rt_fmax2(double a, double b)
+{
+    return (a > b || b != b) ? a : b;
+}
+
+/* rt_absmax(v, 12) (a quad's four vertices): with SSE2 two lanes at a time, the same value
+   (a maximum of magnitudes of finite values: committed vertices) */
+static inline double rt_absmax12(const double *v)
+{
+#if defined(__SSE2__)
+    const __m128d sg = _mm_set1_pd(-0.0);
+    __m128d m = _mm_andnot_pd(sg, _mm_loadu_pd(v));
+    for (int k = 2; k < 12; k += 2)
+        m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadu_pd(v + k)));
+    return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
+#else
+    return rt_absmax(v, 12);
+#endif
+}
+
 /* The largest coordinate magnitude of the five points a, b, c, o, p (a hit's triangle, the
    ray's origin and the hit point): with SSE2 (every x86-64) two lanes at a time. A maximum
    of magnitudes is exact, so the order does not change the value (finite inputs: committed
@@ -142,7 +164,26 @@ static double rt_hit_err(const rt_scene *sc, const rt_rayx *r, size_t i, double 
             s = rt_absmax5(a, b, c, r->o, p);
         }
     }
-    if (!(m > 0.0 && isfinite(m))) {
+    if (pr->kind == RT_KIND_QUAD || pr->kind == RT_KIND_POLY) {
+        /* rt_prim_ng's normal and rt_prim_mag's bound read in place, without the calls
+           (the eye lists' and the walks' hits on quads and polygons: gears, mount): the
+           general path's values, bit for bit */
+        const double *n;
+        double mg;
+        if (pr->kind == RT_KIND_QUAD) {
+            const rt_quad *q = &sc->quad[pr->data];
+            n = q->n;
+            mg = rt_absmax12(&q->v[0][0]);
+        } else {
+            const rt_poly *q = &sc->poly[pr->data];
+            const double uv[4] = {q->umin, q->umax, q->vmin, q->vmax};
+            n = q->n;
+            mg = rt_fmax2(rt_absmax(uv, 4),
+                          rt_absmax(p, 3) + (q->umax - q->umin) + (q->vmax - q->vmin));
+        }
+        den = fabs(n[0] * r->d[0] + n[1] * r->d[1] + n[2] * r->d[2]);
+        s = rt_max2(mg, rt_max2(rt_absmax(r->o, 3), rt_absmax(p, 3)));
+    } else if (!(m > 0.0 && isfinite(m))) {
         rt_prim_ng(sc, i, ng);
         den = fabs(ng[0] * r->d[0] + ng[1] * r->d[1] + ng[2] * r->d[2]);
         s = rt_max2(rt_prim_mag(sc, i, p), rt_max2(rt_absmax(r->o, 3), rt_absmax(p, 3)));
