@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * rt_geom.c -- the front normal of a committed primitive (rt_prim_ng), at its hits and in
+ * rt_geom.c -- the front normal of a committed triangle (rt_prim_ng_tri), at its hits and in
  * the grid's build (rt_trace.c, rt_render.c, rt_build.c). A leaf below the scene and the
  * grid, so that neither calls the other back.
  */
@@ -13,28 +13,11 @@
 #include <emmintrin.h>
 #endif
 
-void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
+void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3])
 {
-    const rt_prim *p = &sc->prim[i];
-    const double *n;
-    switch (p->kind) {
-    case RT_KIND_TRI: {
-        const double *v[3];
-        rt_tri_verts(sc, p->data, v);
-        rt_tri_unit_normal(v[0], v[1], v[2], ng);
-        return;
-    }
-    case RT_KIND_QUAD:
-        n = sc->quad[p->data].n;
-        break;
-    case RT_KIND_POLY:
-        n = sc->poly[p->data].n;
-        break;
-    default:
-        n = sc->cell[p->data].n;
-        break;
-    }
-    memcpy(ng, n, 3 * sizeof(double));
+    const double *v[3];
+    rt_tri_verts(sc, sc->prim[i].data, v);
+    rt_tri_unit_normal(v[0], v[1], v[2], ng);
 }
 
 /* The bound K * u of the relative position error behind a computed distance
