@@ -13,6 +13,7 @@
  * largest empty cube starting there (empty-space jumps of the traversal).
  */
 #define GKS3D_RT_BUILDING 1
+#include "rt_geom.h"
 #include "rt_internal.h"
 
 #include <float.h>

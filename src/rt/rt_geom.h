@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * rt_geom.h -- the normal of a triangle, inline: the scene checks every triangle added with
- * rt_tri_normal_sane (rt_scene.c, a hot path), rt_geom.c gives rt_tri_unit_normal at hits.
+ * rt_tri_normal_sane (rt_scene.c, a hot path), rt_geom.c gives rt_tri_unit_normal at hits;
+ * and the front normal of any committed primitive (rt_prim_ng).
  * Private to src/rt.
  */
 #ifndef GKS3D_RT_GEOM_H
@@ -86,5 +87,31 @@ static inline void rt_tri_unit_normal(const double *v0, const double *v1, const 
         return;
     }
     (void)rt_tri_normal_sane(v0, v1, v2, n);
+}
+
+/* the front unit normal of committed triangle primitive i (rt_geom.c) */
+void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3]);
+/* the front unit normal of committed primitive i: a triangle's computed (rt_prim_ng_tri), the
+   stored one of a quad, polygon or cell array copied inline (no call: the shading of every
+   hit asks for it) */
+static inline void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
+{
+    const rt_prim *p = &sc->prim[i];
+    const double *n;
+    switch (p->kind) {
+    case RT_KIND_TRI:
+        rt_prim_ng_tri(sc, i, ng);
+        return;
+    case RT_KIND_QUAD:
+        n = sc->quad[p->data].n;
+        break;
+    case RT_KIND_POLY:
+        n = sc->poly[p->data].n;
+        break;
+    default:
+        n = sc->cell[p->data].n;
+        break;
+    }
+    memcpy(ng, n, 3 * sizeof(double));
 }
 #endif

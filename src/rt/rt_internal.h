@@ -377,31 +377,6 @@ static inline void rt_tri_prefetch(const rt_scene *sc, size_t t)
     __builtin_prefetch(p + sizeof(rt_tri) - 1);
 }
 
-/* the front unit normal of committed triangle primitive i (rt_geom.c) */
-void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3]);
-/* the front unit normal of committed primitive i: a triangle's computed (rt_prim_ng_tri), the
-   stored one of a quad, polygon or cell array copied inline (no call: the shading of every
-   hit asks for it) */
-static inline void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
-{
-    const rt_prim *p = &sc->prim[i];
-    const double *n;
-    switch (p->kind) {
-    case RT_KIND_TRI:
-        rt_prim_ng_tri(sc, i, ng);
-        return;
-    case RT_KIND_QUAD:
-        n = sc->quad[p->data].n;
-        break;
-    case RT_KIND_POLY:
-        n = sc->poly[p->data].n;
-        break;
-    default:
-        n = sc->cell[p->data].n;
-        break;
-    }
-    memcpy(ng, n, 3 * sizeof(double));
-}
 /* grows the box bb (lo xyz, hi xyz) by the point p */
 static inline void rt_bbox_add(double bb[6], const double p[3])
 {

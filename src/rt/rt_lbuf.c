@@ -34,6 +34,7 @@
  * docs/bench/rt_tuning.md).
  */
 #define GKS3D_RT_BUILDING 1
+#include "rt_geom.h"
 #include "rt_internal.h"
 #include "rt_prim.h"
 

@@ -42,6 +42,7 @@
 
 #define _DEFAULT_SOURCE 1 /* madvise */
 #define GKS3D_RT_BUILDING 1
+#include "rt_geom.h"
 #include "rt_internal.h"
 #include "rt_packet.h"
 #include "rt_prim.h"

@@ -18,6 +18,7 @@
  * far from any occupied one the walk jumps to where the ray leaves the empty block around it.
  */
 #define GKS3D_RT_BUILDING 1
+#include "rt_geom.h"
 #include "rt_internal.h"
 #include "rt_packet.h"
 #include "rt_prim.h"
