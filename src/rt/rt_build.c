@@ -1702,6 +1702,8 @@ typedef struct rt_frame_job {
     const rt_scene *sc;
     rt_build *b;       /* per part */
     size_t stride;     /* rt_frame_box: every stride-th primitive */
+    const double *fp;  /* ... or these nfp points (rt_frame_points), when not NULL */
+    size_t nfp;
     size_t skip_lo, skip_hi; /* rt_frame_cand_part: primitives left out */
     int err[RT_PAR_MAX];
     double bb[RT_PAR_MAX][6];
@@ -1717,12 +1719,26 @@ static void rt_frame_box_part(void *arg, int k, int n)
     rt_build *b = &j->b[k];
     double bb[6]; /* here, not in j: the parts' boxes share cache lines there */
     size_t lo, hi;
-    rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     int err = 0;
     for (int a = 0; a < 3; a++) {
         bb[a] = INFINITY;
         bb[3 + a] = -INFINITY;
     }
+    if (j->fp) {
+        rt_par_range(j->nfp, k, n, &lo, &hi);
+        for (size_t q = lo; q < hi; q++) {
+            double p[3];
+            rt_grid_point(&sc->grid, j->fp + 3 * q, p);
+            for (int a = 0; a < 3; a++) {
+                bb[a] = rt_dmin(bb[a], p[a]);
+                bb[3 + a] = rt_dmax(bb[3 + a], p[a]);
+            }
+        }
+        memcpy(j->bb[k], bb, sizeof bb);
+        j->err[k] = 0;
+        return;
+    }
+    rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     for (size_t m = lo; m < hi && !err; m++) {
         size_t npts = rt_prim_points(sc, b, &sc->prim[m * j->stride], &err);
         for (size_t q = 0; q < npts; q++) {
@@ -1738,9 +1754,10 @@ static void rt_frame_box_part(void *arg, int k, int n)
     j->err[k] = err;
 }
 
-/* box of all primitive points (every stride-th primitive) in the current grid frame, in nt
-   parts (b: nt scratches) */
-static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, double bb[6])
+/* box of all primitive points (every stride-th primitive; or the nfp points fp when fp is not
+   NULL) in the current grid frame, in nt parts (b: nt scratches) */
+static int rt_frame_box_of(const rt_scene *sc, rt_build *b, int nt, size_t stride,
+                           const double *fp, size_t nfp, double bb[6])
 {
     rt_frame_job *j = rt_calloc_array(1, sizeof *j);
     if (!j)
@@ -1748,8 +1765,11 @@ static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, 
     j->sc = sc;
     j->b = b;
     j->stride = stride;
-    if ((size_t)nt > sc->nprim / stride / 4096 + 1)
-        nt = (int)(sc->nprim / stride / 4096 + 1);
+    j->fp = fp;
+    j->nfp = nfp;
+    const size_t items = fp ? nfp / 3 : sc->nprim / stride;
+    if ((size_t)nt > items / 4096 + 1)
+        nt = (int)(items / 4096 + 1);
     rt_par_run(nt, rt_frame_box_part, j);
     int err = 0;
     for (int a = 0; a < 3; a++) {
@@ -1765,6 +1785,60 @@ static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, 
     }
     free(j);
     return err ? RT_ERR_NOMEM : RT_OK;
+}
+
+static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, double bb[6])
+{
+    return rt_frame_box_of(sc, b, nt, stride, NULL, 0, bb);
+}
+
+/* The points whose box rt_frame_box takes (every stride-th primitive's), into *fp (*nfp of
+ * them, 3 doubles each), a shared mesh vertex once: a box does not depend on repeats or the
+ * order of its points, so rt_frame_box_of over them gives the same box, and a frame's pass
+ * then rotates each vertex of a closed mesh once instead of about six times (each in about
+ * six triangles) and gathers no index triples. 0, or 1 when out of memory. */
+static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, double **fp,
+                           size_t *nfp)
+{
+    const size_t ns = (sc->nprim + stride - 1) / stride;
+    uint8_t *seen = sc->nmv ? rt_calloc_array(sc->nmv, 1) : NULL;
+    double *p = NULL;
+    size_t cap = 0, n = 0;
+    int err = sc->nmv && !seen;
+    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    for (size_t m = 0; m < ns && !err; m++) {
+        const size_t i = m * stride;
+        const rt_prim *pr = &sc->prim[i];
+        if (pr->kind == RT_KIND_TRI && pr->data >= sc->ntri_plain) {
+            if (!rt_grow((void **)&p, &cap, 3 * (n + 3), sizeof(double))) {
+                err = 1;
+                break;
+            }
+            const uint32_t *ix = sc->ctri[pr->data - sc->ntri_plain];
+            for (int k = 0; k < 3; k++) {
+                if (seen[ix[k]])
+                    continue;
+                seen[ix[k]] = 1;
+                memcpy(p + 3 * n++, X[ix[k]], 3 * sizeof(double));
+            }
+            continue;
+        }
+        const size_t np = rt_prim_points(sc, b, pr, &err);
+        if (err || !rt_grow((void **)&p, &cap, 3 * (n + np), sizeof(double))) {
+            err = 1;
+            break;
+        }
+        memcpy(p + 3 * n, b->pts, 3 * np * sizeof(double));
+        n += np;
+    }
+    free(seen);
+    if (err) {
+        free(p);
+        return 1;
+    }
+    *fp = p;
+    *nfp = n;
+    return 0;
 }
 
 /* mean |n_x| + |n_y| + |n_z| of the m unit normals ng (of every stride-th primitive) in the
@@ -1915,6 +1989,21 @@ static int rt_frame_cands(const rt_scene *sc, const rt_frame_job *j, int nt, rt_
     return err;
 }
 
+/* rt_frame_box of every primitive (stride 1), through rt_frame_points when meshes share
+   vertices */
+static int rt_frame_box_all(const rt_scene *sc, rt_build *b, int nt, double bb[6])
+{
+    if (sc->ntri == sc->ntri_plain)
+        return rt_frame_box(sc, b, nt, 1, bb);
+    double *fp = NULL;
+    size_t nfp = 0;
+    if (rt_frame_points(sc, b, 1, &fp, &nfp))
+        return RT_ERR_NOMEM;
+    const int rc = rt_frame_box_of(sc, b, nt, 1, fp, nfp, bb);
+    free(fp);
+    return rc;
+}
+
 /* the frame of the grid (b: nt scratches, one per part); when the frame is rotated and the
    sample was every primitive (stride 1), fb = the box of all primitive points in it (what
    rt_frame_box with stride 1 gives; the pass that judged the frame made it) and *have_fb = 1 */
@@ -1949,9 +2038,15 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         return RT_ERR_NOMEM;
     for (size_t k = 0; k < ns; k++)
         rt_prim_ng(sc, k * stride, sn[k]);
-    double bb[6];
-    int rc = rt_frame_box(sc, b, nt, stride, bb);
-    const double vol0 = rt_box_volume(bb), s0 = rt_frame_normals(sc, (const double(*)[3])sn, ns);
+    /* the sample's points for the full passes (rt_frame_points): at once when meshes share
+       vertices, else when a candidate first needs a full pass */
+    double *fp = NULL, bb[6];
+    size_t nfp = 0;
+    int rc = sc->ntri > sc->ntri_plain && rt_frame_points(sc, b, stride, &fp, &nfp) ? RT_ERR_NOMEM
+                                                                                     : RT_OK;
+    if (rc == RT_OK)
+        rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
+    const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0, s0 = rt_frame_normals(sc, (const double(*)[3])sn, ns);
     double best = INFINITY, bestR[3][3];
     int found = 0;
     for (int a = 0; a < 3; a++)
@@ -1974,7 +2069,10 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
             g->rotated = 0;
             continue;
         }
-        rc = rt_frame_box(sc, b, nt, stride, bb);
+        if (!fp && rt_frame_points(sc, b, stride, &fp, &nfp))
+            rc = RT_ERR_NOMEM;
+        if (rc == RT_OK)
+            rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
         g->rotated = 0;
         const double r = rt_box_volume(bb) / vol0;
         const double E = cbrt(r * r) * dz;
@@ -1987,6 +2085,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         }
     }
     free(sn);
+    free(fp);
     if (err)
         rc = RT_ERR_NOMEM;
     if (rc == RT_OK && found) {
@@ -2083,7 +2182,7 @@ static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_
         if (rc == RT_OK && g->rotated && have)
             memcpy(fb, rb, sizeof fb);
         else if (rc == RT_OK && g->rotated)
-            rc = rt_frame_box(sc, bs, nt, 1, fb);
+            rc = rt_frame_box_all(sc, bs, nt, fb);
     }
     *mx = 0.0;
     for (int a = 0; a < 3; a++)
