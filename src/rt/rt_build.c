@@ -168,8 +168,7 @@ typedef struct rt_cell_tab {
     double bc[3][RT_TAB], h[3][RT_TAB];
 } rt_cell_tab;
 
-/* one thread's build scratch: its (cell, primitive) pairs in primitive order, and with cnt
-   (parallel top level) the number of its pairs per cell */
+/* one thread's build scratch: its (cell, primitive) pairs in primitive order */
 typedef struct rt_build {
     const rt_cell_tab *tab; /* the cell boxes of the grid being filled, or NULL (rt_sub_cells) */
     rt_pair *pairs;
@@ -180,7 +179,6 @@ typedef struct rt_build {
     double *tpts;      /* the second level: the grid-frame vertices of the triangles of the
                           top cell at hand (9 doubles per reference; rt_sub_cells) */
     size_t captpts;
-    uint32_t *cnt;
     char pad[RT_LINE]; /* the next part's scratch on other cache lines (RT_LINE) */
 } rt_build;
 
@@ -191,7 +189,6 @@ static void rt_build_free(rt_build *b)
     free(b->pts);
     free(b->tpts);
     free(b->pairs);
-    free(b->cnt);
     memset(b, 0, sizeof *b);
 }
 
@@ -203,8 +200,6 @@ static int rt_build_push(rt_build *b, size_t cell, size_t prim)
     b->pairs[b->npairs].cell = (uint32_t)cell;
     b->pairs[b->npairs].prim = (uint32_t)prim;
     b->npairs++;
-    if (b->cnt)
-        b->cnt[cell]++;
     return 1;
 }
 
@@ -584,7 +579,7 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
         x->h = h;
         /* rt_sep of V_k - bc: min_k (V_k - bc) is (min_k V_k) - bc, bit for bit (rounding
            is monotonic), the same for max */
-        x->sep = bb[a] - bc > h || bb[3 + a] - bc < -h;
+        x->sep = (bb[a] - bc > h) | (bb[3 + a] - bc < -h); /* both: no branch */
         x->nv = na * (t->v[0][a] - bc);
         x->nh = h * ana;
         const double d = bc - o;
@@ -736,17 +731,14 @@ typedef struct rt_ins {
 static void rt_ins_init(const rt_scene *sc, const rt_build *b, const rt_prim *p, rt_ins *q)
 {
     const rt_grid *gr = &sc->grid;
-    double n0[3], d0;
     q->p = p;
-    q->d = 0.0;
-    rt_prim_plane(sc, p, n0, &d0);
-    rt_grid_dir(gr, n0, q->n);
-    if (p->kind != RT_KIND_TRI)
+    if (p->kind != RT_KIND_TRI) { /* a triangle's plane is not used: SAT instead */
+        double n0[3], d0;
+        rt_prim_plane(sc, p, n0, &d0);
+        rt_grid_dir(gr, n0, q->n);
         q->d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
-    memset(q->te, 0, sizeof q->te);
-    memset(q->tn, 0, sizeof q->tn);
-    if (p->kind != RT_KIND_TRI)
         return;
+    }
     memcpy(q->tri.v, b->pts, sizeof q->tri.v);
     for (int j = 0; j < 3; j++) {
         q->te[0][j] = q->tri.v[1][j] - q->tri.v[0][j];
