@@ -2060,17 +2060,21 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
-        const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
         const double dz = fabs(g->R[0][2]) + fabs(g->R[1][2]) + fabs(g->R[2][2]);
         /* first a lower bound of E from a subset of the sample (every RT_FRAME_PRE-th of it:
            the same point values, so a box inside the sample's and a volume no larger; the
-           factor covers cbrt's rounding): a candidate it rules out skips the full pass */
+           factor covers cbrt's rounding): a candidate it rules out skips the full pass (and
+           the normals' pass, when the bound alone rules it out) */
         rc = rt_frame_box(sc, b, nt, stride * RT_FRAME_PRE, bb);
         const double rl = rt_box_volume(bb) / vol0;
         const double El = cbrt(rl * rl) * dz * (1.0 - 1e-9);
-        if (rc != RT_OK || (El >= RT_FRAME_EYE && (S >= RT_FRAME_SEC || El >= RT_FRAME_EYE_MAX)) ||
-            El * S >= best) {
+        if (rc != RT_OK || El >= RT_FRAME_EYE_MAX) {
+            g->rotated = 0;
+            continue;
+        }
+        const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
+        if ((El >= RT_FRAME_EYE && S >= RT_FRAME_SEC) || El * S >= best) {
             g->rotated = 0;
             continue;
         }
