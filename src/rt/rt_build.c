@@ -1994,6 +1994,24 @@ static int rt_frame_cands(const rt_scene *sc, const rt_frame_job *j, int nt, rt_
     return err;
 }
 
+/* the unit normals of every stride-th primitive (ns of them) into *sn, and s0 = their
+   rt_frame_normals in the unrotated frame (the grid's rotation is off while it is taken) */
+static int rt_frame_sample_ng(rt_scene *sc, size_t stride, size_t ns, double (**sn)[3],
+                              double *s0)
+{
+    double (*n)[3] = rt_alloc_array(ns ? ns : 1, sizeof *n);
+    if (!n)
+        return RT_ERR_NOMEM;
+    for (size_t k = 0; k < ns; k++)
+        rt_prim_ng(sc, k * stride, n[k]);
+    const int rot = sc->grid.rotated;
+    sc->grid.rotated = 0;
+    *s0 = rt_frame_normals(sc, (const double(*)[3])n, ns);
+    sc->grid.rotated = rot;
+    *sn = n;
+    return RT_OK;
+}
+
 /* rt_frame_box of every primitive (stride 1), through rt_frame_points when meshes share
    vertices */
 static int rt_frame_box_all(const rt_scene *sc, rt_build *b, int nt, double bb[6])
@@ -2036,13 +2054,10 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         return RT_ERR_NOMEM;
     size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
     *have_fb = 0;
-    /* the sample's normals, once for all candidates (a triangle's is recomputed) */
+    /* the sample's normals, once for all candidates (a triangle's is recomputed), and s0 in
+       the unrotated frame: made when a candidate first needs its S (rt_frame_sample_ng) */
     const size_t ns = (sc->nprim + stride - 1) / stride;
-    double (*sn)[3] = rt_alloc_array(ns ? ns : 1, sizeof *sn);
-    if (!sn)
-        return RT_ERR_NOMEM;
-    for (size_t k = 0; k < ns; k++)
-        rt_prim_ng(sc, k * stride, sn[k]);
+    double (*sn)[3] = NULL, s0 = 0.0;
     /* the sample's points for the full passes (rt_frame_points): at once when meshes share
        vertices, else when a candidate first needs a full pass */
     double *fp = NULL, bb[6];
@@ -2051,12 +2066,12 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
                                                                                      : RT_OK;
     if (rc == RT_OK)
         rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
-    const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0, s0 = rt_frame_normals(sc, (const double(*)[3])sn, ns);
+    const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0;
     double best = INFINITY, bestR[3][3];
     int found = 0;
     for (int a = 0; a < 3; a++)
         g->c[a] = 0.5 * (sc->bbox[a] + sc->bbox[3 + a]);
-    for (int k = 0; k < nc && rc == RT_OK && vol0 > 0.0 && s0 > 0.0; k++) {
+    for (int k = 0; k < nc && rc == RT_OK && vol0 > 0.0; k++) {
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
@@ -2072,6 +2087,12 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         if (rc != RT_OK || El >= RT_FRAME_EYE_MAX) {
             g->rotated = 0;
             continue;
+        }
+        if (!sn && rt_frame_sample_ng(sc, stride, ns, &sn, &s0) != RT_OK)
+            rc = RT_ERR_NOMEM;
+        if (rc != RT_OK || !(s0 > 0.0)) { /* no S: no candidate is taken */
+            g->rotated = 0;
+            break;
         }
         const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
         if ((El >= RT_FRAME_EYE && S >= RT_FRAME_SEC) || El * S >= best) {
