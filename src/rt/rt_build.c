@@ -741,12 +741,12 @@ rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const dou
 /* a primitive's geometry in the grid frame, for the cell tests of rt_insert */
 typedef struct rt_ins {
     const rt_prim *p;
-    rt_tri tri;                 /* a triangle: its vertices (b->pts), edges and normal */
+    rt_tri tri;                 /* a triangle: its vertices (grid frame), edges and normal */
     double te[3][3], tn[3];
     double n[3], d;             /* the plane (d: other kinds only) */
 } rt_ins;
 
-static void rt_ins_init(const rt_scene *sc, const rt_build *b, const rt_prim *p, rt_ins *q)
+static void rt_ins_init(const rt_scene *sc, const double *pts, const rt_prim *p, rt_ins *q)
 {
     const rt_grid *gr = &sc->grid;
     q->p = p;
@@ -757,7 +757,7 @@ static void rt_ins_init(const rt_scene *sc, const rt_build *b, const rt_prim *p,
         q->d = gr->rotated ? d0 - (n0[0] * gr->c[0] + n0[1] * gr->c[1] + n0[2] * gr->c[2]) : d0;
         return;
     }
-    memcpy(q->tri.v, b->pts, sizeof q->tri.v);
+    memcpy(q->tri.v, pts, sizeof q->tri.v);
     for (int j = 0; j < 3; j++) {
         q->te[0][j] = q->tri.v[1][j] - q->tri.v[0][j];
         q->te[1][j] = q->tri.v[2][j] - q->tri.v[1][j];
@@ -840,15 +840,15 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
 {
     const rt_prim *p = &sc->prim[i];
     size_t npts = 3;
-    if (tv) { /* b->pts holds 9 doubles: rt_prim_gbox put this triangle there before */
-        memcpy(b->pts, tv, 9 * sizeof(double));
-    } else {
+    const double *pts = tv; /* a triangle's 9 coordinates (tv), or b->pts */
+    if (!tv) {
         npts = rt_prim_gpoints(sc, b, p, err);
         if (*err)
             return;
+        pts = b->pts;
     }
     double bb[6];
-    rt_pts_bbox(b->pts, npts, bb);
+    rt_pts_bbox(pts, npts, bb);
     int c0[3], c1[3];
     for (int a = 0; a < 3; a++) {
         if (bb[a] - eps > g->hi[a] || bb[3 + a] + eps < g->lo[a])
@@ -863,7 +863,7 @@ static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g
         return;
     }
     rt_ins q;
-    rt_ins_init(sc, b, p, &q);
+    rt_ins_init(sc, pts, p, &q);
     const int by_axis = c1[0] - c0[0] < RT_SPAN && c1[1] - c0[1] < RT_SPAN &&
                         c1[2] - c0[2] < RT_SPAN;
     if (p->kind == RT_KIND_TRI && by_axis) {
@@ -1815,7 +1815,7 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
         const size_t i = m * stride;
         const rt_prim *pr = &sc->prim[i];
         if (pr->kind == RT_KIND_TRI && pr->data >= sc->ntri_plain) {
-            if (!rt_grow((void **)&p, &cap, 3 * (n + 3), sizeof(double))) {
+            if (3 * (n + 3) > cap && !rt_grow((void **)&p, &cap, 3 * (n + 3), sizeof(double))) {
                 err = 1;
                 break;
             }
