@@ -10,7 +10,8 @@
  * cell box enlarged by eps = 1e-9 * (scene magnitude + extent), far above the rounding of the
  * rotation and of hit points near cell faces. Resolution rule and its measurements: gksrt.h
  * (RT_GRID_FACTOR_DEFAULT). The top level also stores, per cell and octant of directions, the
- * largest empty cube starting there (empty-space jumps of the traversal).
+ * largest empty cube starting there (empty-space jumps of the traversal), and the grid a
+ * k-DOP of the occupied space (the rays' walks start and end at it).
  */
 #define GKS3D_RT_BUILDING 1
 #include "rt_geom.h"
@@ -21,6 +22,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* min / max without libm calls (fmin/fmax are not inlined without -ffast-math); the build
    only sees finite values; a NaN in the second operand returns the first, as fmin/fmax do */
@@ -1664,6 +1668,119 @@ static int rt_empty_cubes(rt_grid *g, int nt)
     return RT_OK;
 }
 
+/* the extremes of box [lo, hi]'s corners along the k-DOP's directions into kd_lo, kd_hi */
+static void rt_kdop_add(rt_grid *g, const double lo[3], const double hi[3])
+{
+    for (int q = 0; q < 8; q++) {
+        double s[RT_KDOP];
+        RT_KDOP_PROJ(s, q & 1 ? hi[0] : lo[0], q & 2 ? hi[1] : lo[1], q & 4 ? hi[2] : lo[2]);
+        for (int j = 0; j < RT_KDOP; j++) {
+            g->kd_lo[j] = rt_dmin(g->kd_lo[j], s[j]);
+            g->kd_hi[j] = rt_dmax(g->kd_hi[j], s[j]);
+        }
+    }
+}
+
+/* the extremes of the mesh vertices along the k-DOP's directions (in the grid frame) into
+   kd_lo, kd_hi: with SSE2 the projections in pairs (s0 s1, s2 s3, s4 s5, s6 s7, s8 s9 of
+   RT_KDOP_PROJ: x + (y, -y), then (x + y) + (z, -z) and so on; a + (-b) is a - b exactly) */
+static void rt_kdop_mesh(const rt_scene *sc, rt_grid *g)
+{
+    const double *X = sc->mv_xyz.p;
+#if defined(__SSE2__)
+    __m128d lo[5], hi[5];
+    for (int k = 0; k < 5; k++) {
+        lo[k] = _mm_set1_pd(INFINITY);
+        hi[k] = _mm_set1_pd(-INFINITY);
+    }
+    for (size_t v = 0; v < sc->nmv; v++) {
+        double p[3];
+        rt_grid_point(g, X + 3 * v, p);
+        const __m128d x = _mm_set1_pd(p[0]), y = _mm_set1_pd(p[1]);
+        const __m128d ny = _mm_set_pd(-p[1], p[1]), nz = _mm_set_pd(-p[2], p[2]);
+        const __m128d xy = _mm_add_pd(x, ny);
+        const __m128d q[5] = {_mm_add_pd(_mm_unpacklo_pd(xy, xy), nz),
+                              _mm_add_pd(_mm_unpackhi_pd(xy, xy), nz), xy, _mm_add_pd(x, nz),
+                              _mm_add_pd(y, nz)};
+        for (int k = 0; k < 5; k++) {
+            lo[k] = _mm_min_pd(lo[k], q[k]);
+            hi[k] = _mm_max_pd(hi[k], q[k]);
+        }
+    }
+    for (int k = 0; k < 5; k++) {
+        _mm_storeu_pd(g->kd_lo + 2 * k, lo[k]);
+        _mm_storeu_pd(g->kd_hi + 2 * k, hi[k]);
+    }
+#else
+    for (int j = 0; j < RT_KDOP; j++) {
+        g->kd_lo[j] = INFINITY;
+        g->kd_hi[j] = -INFINITY;
+    }
+    for (size_t v = 0; v < sc->nmv; v++) {
+        double p[3], s[RT_KDOP];
+        rt_grid_point(g, X + 3 * v, p);
+        RT_KDOP_PROJ(s, p[0], p[1], p[2]);
+        for (int j = 0; j < RT_KDOP; j++) {
+            g->kd_lo[j] = rt_dmin(g->kd_lo[j], s[j]);
+            g->kd_hi[j] = rt_dmax(g->kd_hi[j], s[j]);
+        }
+    }
+#endif
+}
+
+/* the extremes of the corners of the top cells with a list (their boxes enlarged by eps, as
+   the lists were made) and of the second-level grids' boxes (each holds its primitives'
+   parts in its cell) into kd_lo, kd_hi; without an occupied cell the grid box's own */
+static void rt_kdop_cells(rt_grid *g, double eps)
+{
+    const rt_box *b = &g->b;
+    for (int j = 0; j < RT_KDOP; j++) {
+        g->kd_lo[j] = INFINITY;
+        g->kd_hi[j] = -INFINITY;
+    }
+    const size_t n0 = (size_t)b->n[0], n01 = n0 * (size_t)b->n[1];
+    int any = 0;
+    for (size_t ci = 0; ci < g->ncells; ci++) {
+        if (g->off[ci + 1] != g->off[ci]) {
+            const int c[3] = {(int)(ci % n0), (int)(ci % n01 / n0), (int)(ci / n01)};
+            double lo[3], hi[3];
+            rt_cell_box(b, c, eps, lo, hi);
+            rt_kdop_add(g, lo, hi);
+            any = 1;
+        } else if (g->sub && g->sub[ci] >= 0) {
+            const rt_box *sb = &g->subs[g->sub[ci]].b;
+            rt_kdop_add(g, sb->lo, sb->hi);
+            any = 1;
+        }
+    }
+    if (!any)
+        rt_kdop_add(g, b->lo, b->hi);
+}
+
+/* The k-DOP of the occupied space (rt_grid.kd_lo, kd_hi). When every primitive is a mesh
+ * triangle: the extremes of the mesh vertices (exact; vertices of culled triangles only
+ * widen it). Otherwise those of the occupied cells' boxes, whose corners lie up to a cell
+ * beyond the surface along the diagonals (on the meshes they turn away about half as many
+ * in-box misses as the vertices do: docs/bench/rt_tuning.md). Padded by four times the
+ * grid box's pad: the clip of a ray to the slabs rounds as its clip to the grid box does
+ * (rt_trace.c), in sums of up to three coordinates. */
+static void rt_occupied_kdop(const rt_scene *sc, rt_grid *g, double eps)
+{
+    if (sc->ntri_plain == 0 && sc->ntri == sc->nprim && sc->nmv > 0)
+        rt_kdop_mesh(sc, g);
+    else
+        rt_kdop_cells(g, eps);
+    const rt_box *b = &g->b;
+    double mx = 0.0;
+    for (int a = 0; a < 3; a++)
+        mx = rt_dmax(mx, b->hi[a] - b->lo[a]);
+    const double pad = 4.0 * (1e-6 * mx + 1e-12 * sc->scale);
+    for (int j = 0; j < RT_KDOP; j++) {
+        g->kd_lo[j] -= pad;
+        g->kd_hi[j] += pad;
+    }
+}
+
 /* Grid frame. A scene seen obliquely (a floor at 30 degrees to the view direction, as in the
  * SPD scenes traced in VRC3) has a VRC3-aligned bounding box that is mostly empty: rays then
  * step through many empty cells. But the volume alone overrates a rotation (empty cells cost
@@ -2332,6 +2449,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         bs[k].gv = NULL;
     if (rc == RT_OK)
         rc = rt_empty_cubes(g, nt);
+    if (rc == RT_OK)
+        rt_occupied_kdop(sc, g, eps);
     if (rc == RT_OK)
         rc = rt_leaves_build(sc, g, o ? o->leaf_min : 0);
     for (int k = 0; k < nt; k++)

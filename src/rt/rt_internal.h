@@ -215,6 +215,18 @@ typedef struct rt_fray {
 typedef uint32_t (*rt_leaf_fn)(const float *rows, uint32_t L, uint32_t n, const rt_fray *f,
                                uint32_t *cand);
 
+/* The occupied space's k-DOP (rt_grid.kd_lo, kd_hi): the coordinates of a point (x, y, z) of
+   the grid frame along the 4 diagonals of a cell and the 6 diagonals of its faces, written
+   for doubles and for GCC's vectors of them (rt_trace.c's four-ray set-up). */
+#define RT_KDOP 10
+#define RT_KDOP_PROJ(s, x, y, z)                                                           \
+    do {                                                                                   \
+        const __typeof__(x) kp_xy_ = (x) + (y), kp_xmy_ = (x) - (y);                      \
+        (s)[0] = kp_xy_ + (z), (s)[1] = kp_xy_ - (z), (s)[2] = kp_xmy_ + (z),              \
+        (s)[3] = kp_xmy_ - (z), (s)[4] = kp_xy_, (s)[5] = kp_xmy_, (s)[6] = (x) + (z),     \
+        (s)[7] = (x) - (z), (s)[8] = (y) + (z), (s)[9] = (y) - (z);                        \
+    } while (0)
+
 typedef struct rt_grid {
     int rotated;       /* 0: grid axes = VRC3 axes; 1: grid frame p' = R (p - c) */
     int all_opaque;    /* every primitive opaque: transmittance rays stop at the first hit */
@@ -230,6 +242,11 @@ typedef struct rt_grid {
                           without references or a sub-grid that has c as its corner and
                           extends from c in o's directions (cells beyond the box count as
                           empty); 0: c itself is occupied */
+    /* the k-DOP of the occupied cells: every point of every primitive p (in the grid frame)
+       has kd_lo[j] <= s_j(p) <= kd_hi[j], s = RT_KDOP_PROJ(p), with a pad beyond the
+       roundings of a ray's clip to it (rt_trace.c: rays that miss it skip the walk, and
+       the walk of the others starts and ends at it) */
+    double kd_lo[RT_KDOP], kd_hi[RT_KDOP];
     rt_subgrid *subs;
     size_t nsubs;
     /* second-level cell lists, in one of two layouts: soff16 != NULL (every sub-grid has

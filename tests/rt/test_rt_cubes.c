@@ -6,7 +6,12 @@
  * references and no second-level grid, capped at 255; 0 for an occupied cell. Scenes: sparse
  * clusters in a large box (wide empty regions, long cubes) with 1 and 2 build threads and a
  * grid of unequal axes; a single triangle (cubes reach the box's faces).
+ * The occupied space's k-DOP (rt_grid.kd_lo, kd_hi, from the cells or from a mesh's
+ * vertices): every vertex lies inside its slabs, the slabs cut the box's corners, and rays
+ * clipped to it (in-box misses, exact diagonals that run parallel to slabs, rays aimed at
+ * vertices) find the same hits as the brute-force test of every primitive.
  */
+#include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -79,6 +84,33 @@ static void check_cubes(const rt_scene *sc)
     assert_true(nlong > 0);
 }
 
+/* every vertex (n of them, in the grid frame) inside the k-DOP's slabs; the slabs cut off a
+   corner of the box */
+static void check_kdop(const rt_scene *sc, const double *v, size_t n)
+{
+    const rt_grid *g = &sc->grid;
+    for (size_t k = 0; k < n; k++) {
+        double p[3], s[RT_KDOP];
+        rt_grid_point(g, v + 3 * k, p);
+        RT_KDOP_PROJ(s, p[0], p[1], p[2]);
+        for (int j = 0; j < RT_KDOP; j++)
+            if (!(g->kd_lo[j] < s[j] && s[j] < g->kd_hi[j]))
+                fail_msg("vertex %zu outside slab %d: %g not in [%g, %g]", k, j, s[j],
+                         g->kd_lo[j], g->kd_hi[j]);
+    }
+    int cut = 0;
+    for (int q = 0; q < 8; q++) {
+        double s[RT_KDOP];
+        RT_KDOP_PROJ(s, q & 1 ? g->b.hi[0] : g->b.lo[0], q & 2 ? g->b.hi[1] : g->b.lo[1],
+                     q & 4 ? g->b.hi[2] : g->b.lo[2]);
+        for (int j = 0; j < RT_KDOP; j++)
+            cut += s[j] < g->kd_lo[j] || s[j] > g->kd_hi[j];
+    }
+    assert_true(cut > 0);
+}
+
+static double cl_v[5 * 40 * 9];
+
 static void add_clusters(rt_scene *sc)
 {
     rt_surface s;
@@ -94,6 +126,7 @@ static void add_clusters(rt_scene *sc)
             double v[9];
             for (int j = 0; j < 9; j++)
                 v[j] = ctr[j % 3] + 0.6 * (rtu_rand(&st) - 0.5);
+            memcpy(cl_v + 9 * (40 * c + k), v, sizeof v);
             const int n = 3;
             assert_true(rt_scene_add_polygon(sc, 1, &n, v, surf, surf) >= 0);
         }
@@ -116,6 +149,8 @@ static void test_cubes_clusters(void **state)
         add_clusters(sc);
         assert_int_equal(rt_scene_commit(sc, &opts[k]), RT_OK);
         check_cubes(sc);
+        if (!opts[k].grid_res[0])
+            check_kdop(sc, cl_v, 5 * 40 * 3);
         rt_scene_free(sc);
     }
 }
@@ -138,11 +173,82 @@ static void test_cubes_one_triangle(void **state)
     rt_scene_free(sc);
 }
 
+/* the clusters as one indexed mesh, with the options o */
+static rt_scene *clusters_mesh(const rt_build_options *o)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    add_clusters(sc); /* fills cl_v; the scene is dropped */
+    rt_scene_free(sc);
+    sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int surf = rt_scene_add_surface(sc, &s);
+    static uint32_t idx[5 * 40 * 3];
+    for (uint32_t k = 0; k < 5 * 40 * 3; k++)
+        idx[k] = k;
+    assert_true(rt_scene_add_mesh(sc, 5 * 40 * 3, cl_v, NULL, NULL, 5 * 40, idx, surf, surf) >= 0);
+    assert_int_equal(rt_scene_commit(sc, o), RT_OK);
+    return sc;
+}
+
+static void test_kdop_mesh(void **state)
+{
+    (void)state;
+    enum { NR = 20000 };
+    const rt_build_options og = {.brute_threshold = 0, .threads = 1};
+    const rt_build_options ob = {.brute_force = 1};
+    rt_scene *sc = clusters_mesh(&og), *bf = clusters_mesh(&ob);
+    check_kdop(sc, cl_v, 5 * 40 * 3);
+    rt_ray *r = malloc(NR * sizeof *r);
+    rt_hit *h = malloc(NR * sizeof *h), *hb = malloc(NR * sizeof *hb);
+    assert_true(r && h && hb);
+    uint64_t st = 5;
+    for (int k = 0; k < NR; k++) {
+        /* from a sphere around the box into it; every third along an exact diagonal (slabs
+           it runs parallel to), every third aimed at a vertex */
+        double u[3], n2 = 0.0;
+        for (int i = 0; i < 3; i++) {
+            u[i] = rtu_rand(&st) - 0.5;
+            n2 += u[i] * u[i];
+        }
+        for (int i = 0; i < 3; i++) {
+            r[k].org[i] = 5.0 + 20.0 * u[i] / sqrt(n2);
+            const double at = k % 3 == 2 ? cl_v[9 * (k % 200) + i] : 10.0 * rtu_rand(&st);
+            r[k].dir[i] = at - r[k].org[i];
+            if (k % 3 == 1)
+                r[k].dir[i] = r[k].dir[i] < 0.0 ? -1.0 : 1.0;
+        }
+        if (k % 6 == 1)
+            r[k].dir[k % 18 / 6] = 0.0;
+        r[k].tmin = 0.0;
+        r[k].tmax = INFINITY;
+    }
+    assert_int_equal(rt_intersect(sc, NR, r, h), RT_OK);
+    assert_int_equal(rt_intersect(bf, NR, r, hb), RT_OK);
+    int nhit = 0, nmiss = 0;
+    for (int k = 0; k < NR; k++) {
+        if (h[k].prim != hb[k].prim || memcmp(&h[k].t, &hb[k].t, sizeof h[k].t) != 0)
+            fail_msg("ray %d: prim %d t %.17g, brute force prim %d t %.17g", k, h[k].prim,
+                     h[k].t, hb[k].prim, hb[k].t);
+        nhit += h[k].prim >= 0;
+        nmiss += h[k].prim < 0;
+    }
+    assert_true(nhit > NR / 20 && nmiss > NR / 20);
+    free(r);
+    free(h);
+    free(hb);
+    rt_scene_free(sc);
+    rt_scene_free(bf);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cubes_clusters),
         cmocka_unit_test(test_cubes_one_triangle),
+        cmocka_unit_test(test_kdop_mesh),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
