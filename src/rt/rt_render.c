@@ -92,6 +92,7 @@ typedef struct rt_job {
     const rt_scene *sc;
     const rt_camera *cam;
     rt_render_options o;
+    double eps_box;     /* the scene extent's part of rt_eps: 1e-9 of its largest side */
     float *rgb;
     float *edge;        /* corner mode: corners (w, 0..h) then (0..w-1, h), RGB; the others are
                            kept in rgb itself (corner (x,y) at pixel (x,y)) until averaged */
@@ -155,7 +156,8 @@ static void rt_scache_front(rt_scache *c, int k, long b)
     if (k == RT_SCACHE)
         for (k = 0; k < RT_SCACHE - 1 && c->id[k] != b; k++)
             ;
-    memmove(c->id + 1, c->id, (size_t)k * sizeof c->id[0]);
+    for (; k > 0; k--) /* (memmove of at most 3 entries: a libc call) */
+        c->id[k] = c->id[k - 1];
     c->id[0] = b;
 }
 
@@ -222,11 +224,24 @@ static inline double rt_absmax3(const double v[3])
     return m > c ? m : c;
 }
 
-/* offset of secondary ray origins from the surface (see the file comment) */
-static double rt_eps(const rt_scene *sc, const double p[3], double t)
+/* the part of rt_eps that depends on the scene alone (rt_job.eps_box) */
+static double rt_eps_box(const rt_scene *sc)
 {
     const double e[3] = {sc->bbox[3] - sc->bbox[0], sc->bbox[4] - sc->bbox[1], sc->bbox[5] - sc->bbox[2]};
-    return 1e-12 * (rt_absmax3(p) + fabs(t)) + 1e-9 * rt_absmax3(e) + 1e-300;
+    return 1e-9 * rt_absmax3(e);
+}
+
+/* offset of secondary ray origins from the surface (see the file comment) */
+static double rt_eps(const rt_job *job, const double p[3], double t)
+{
+    return 1e-12 * (rt_absmax3(p) + fabs(t)) + job->eps_box + 1e-300;
+}
+
+/* fmax(a, b) inline, the same value for every input as glibc's: b if a is NaN, a if b is
+   NaN, b when they compare equal (fmax is a libm call at this build's flags) */
+static inline double rt_fmax2(double a, double b)
+{
+    return (a > b || b != b) ? a : b;
 }
 
 /* the candidate primitives of an eye ray (rt_job.cand) */
@@ -271,18 +286,16 @@ static __attribute__((noinline)) void rt_spawn_mirror(rt_worker *w, const rt_mir
 }
 
 /* the transmittance of the shadow ray from o toward light li over [t0, t1] (t0 < t1), in
-   this order: the blocker cache (w->shadow_cache), the light's buffer (job->lbuf: the
-   candidates of the ray's cell whose projection its footprint does not surely miss,
-   rt_lbuf_next), the grid walk; from is the primitive the ray leaves */
-static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const double o[3],
-                          const double L[3], double t0, double t1)
+   this order: the blocker cache (cache: w->shadow_cache's entry of the ray's depth and
+   light), the light's buffer (lb, job->lbuf[li]: the candidates of the ray's cell whose
+   projection its footprint does not surely miss, rt_lbuf_next), the grid walk; from is the
+   primitive the ray leaves */
+static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, long from,
+                          const double o[3], const double L[3], double t0, double t1)
 {
     const rt_scene *sc = w->job->sc;
-    const rt_job *job = w->job;
     double T = 0.0;
     rt_rayx r;
-    rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)sc->nlights + (size_t)li];
-    const rt_lbuf *lb = &job->lbuf[li];
     rt_lbuf_q q;
     uint32_t k0 = 0; /* the first candidate of the buffer's list */
     int f = -2;      /* -2: the buffer not asked yet */
@@ -342,15 +355,27 @@ static double rt_shadow_T(rt_worker *w, int li, int depth, long from, const doub
 }
 
 /* P the hit point, N the shading normal (facing the ray); shadow rays start at Ps + eps Ng
-   (Ng the geometric normal facing the ray; Ps = P except for smooth areas) */
+   (Ng the geometric normal facing the ray; Ps = P except for smooth areas). What does not
+   depend on the light (the shadow rays' origin, the diffuse colour times kd, the surface's
+   fields) is taken once per hit. */
 static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3], const double P[3],
                             const double N[3], const double Ps[3], const double Ng[3],
                             const double d[3], double eps, int depth, long from, double out[3])
 {
-    const rt_scene *sc = w->job->sc;
     const rt_job *job = w->job;
-    for (int li = 0; li < sc->nlights; li++) {
-        if (!(s->light_mask >> li & 1u))
+    const rt_scene *sc = job->sc;
+    const int nl = sc->nlights, direct = s->refl_eq >= RT_REFL_DIFFUSE;
+    const int spec_on = s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0;
+    const int clip = job->o.clip_secondary;
+    const uint64_t mask = s->light_mask;
+    double o[3], kdO[3]; /* the shadow rays' origin; kd Od */
+    for (int c = 0; c < 3; c++) {
+        o[c] = Ps[c] + eps * Ng[c];
+        kdO[c] = s->kd * Od[c];
+    }
+    rt_scache *cache = &w->shadow_cache[(size_t)depth * (size_t)nl];
+    for (int li = 0; li < nl; li++) {
+        if (!(mask >> li & 1u))
             continue;
         const rt_light *l = &sc->light[li];
         if (l->type == RT_LIGHT_AMBIENT) {
@@ -358,7 +383,7 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
                 out[c] += s->ka * Od[c] * l->color[c];
             continue;
         }
-        if (s->refl_eq < RT_REFL_DIFFUSE)
+        if (!direct)
             continue;
         rt_light_term lt; /* rt_shade.h, shared with the classic modes */
         if (!rt_light_term_at(l, P, N, &lt))
@@ -366,30 +391,27 @@ static void rt_shade_lights(rt_worker *w, const rt_surface *s, const double Od[3
         const double *L = lt.L;
         const double dist = lt.dist;
         /* shadow ray */
-        double o[3];
-        for (int c = 0; c < 3; c++)
-            o[c] = Ps[c] + eps * Ng[c];
         double t0 = 0.0, t1 = l->type == RT_LIGHT_DIRECTIONAL ? INFINITY : dist * (1.0 - 1e-12) - eps;
         w->st.shadow_rays++;
         double T = 0.0;
-        if (job->o.clip_secondary && !rt_clip_volume(job->cam, o, L, &t0, &t1)) {
+        if (clip && !rt_clip_volume(job->cam, o, L, &t0, &t1)) {
             T = 1.0;
         } else if (t1 <= t0) {
             T = 1.0;
         } else {
-            T = rt_shadow_T(w, li, depth, from, o, L, t0, t1);
+            T = rt_shadow_T(w, &cache[li], &job->lbuf[li], from, o, L, t0, t1);
         }
         if (T == 0.0)
             continue;
         /* attenuation and spot factor only for light that arrives */
         double f = T * rt_light_att(l, &lt) * rt_light_spot(l, &lt);
         double spec = 0.0;
-        if (s->refl_eq == RT_REFL_SPECULAR && s->ks > 0.0) {
+        if (spec_on) {
             const double E[3] = {-d[0], -d[1], -d[2]};
             spec = rt_spec_term(N, &lt, E, s->ks, s->spec_exp);
         }
         for (int c = 0; c < 3; c++)
-            out[c] += f * l->color[c] * (s->kd * Od[c] * lt.NL + spec * s->specular[c]);
+            out[c] += f * l->color[c] * (kdO[c] * lt.NL + spec * s->specular[c]);
     }
 }
 
@@ -512,7 +534,7 @@ static void rt_secondary(rt_worker *w, const rt_surface *s, const double P[3], c
             wr[c] += s->transparency * F;
         wt = refract ? s->transparency * (1.0 - F) : 0.0;
     }
-    double wrm = fmax(wr[0], fmax(wr[1], wr[2]));
+    double wrm = rt_fmax2(wr[0], rt_fmax2(wr[1], wr[2]));
     if (wrm > 0.0 && !(job->o.cutoff > 0.0 && weight * wrm < job->o.cutoff)) {
         double R[3], col[3];
         for (int c = 0; c < 3; c++)
@@ -582,7 +604,7 @@ static void rt_shade_hit(rt_worker *w, const double o[3], const double d[3], int
     if (smooth)
         rt_smooth_normal(job->o.smooth, side, P, N, d, Ns, Ps);
     const double *Nsh = smooth ? Ns : N, *Psh = smooth ? Ps : P;
-    double eps = rt_eps(sc, P, t);
+    double eps = rt_eps(job, P, t);
     if (s->refl_eq == RT_REFL_NONE) {
         memcpy(out, Od, sizeof Od);
     } else {
@@ -2078,6 +2100,7 @@ int rt_render_cover(const rt_scene *sc, const rt_camera *cam, const rt_render_op
         return RT_ERR_ARG;
     job.t0 = rt_now(); /* render_seconds: with the eye-ray lists and light buffers built here */
     job.sc = sc;
+    job.eps_box = rt_eps_box(sc);
     job.cam = cam;
     job.rgb = rgb;
     job.m = m;
