@@ -585,8 +585,12 @@ void rt_lbuf_free(rt_lbuf *lb);
 int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n,
                  uint32_t *zb);
 /* rt_lbuf_find with the footprint kept in *q (q->ids, n, zb as rt_lbuf_find's); when it
-   returns 1, *k0 = rt_lbuf_next(lb, q, skip, 0) as well (one call for both) */
-int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, uint32_t skip, rt_lbuf_q *q, uint32_t *k0);
+   returns 1, *k0 the first candidate from position 0 on that rt_lbuf_next finds and whose
+   plane test does not reject r (a quad's or polygon's, rt_prim_plane_t, with the values of
+   its exact test: r's o, d, tmin and tmax as rt_rayx_setup makes them), q->n when there is
+   none */
+int rt_lbuf_query(const rt_scene *sc, const rt_lbuf *lb, const rt_rayx *r, uint32_t skip,
+                  rt_lbuf_q *q, uint32_t *k0);
 /* the position of the next candidate of q's list from position k on, up to its bucket zb, but
    skip, that the ray can hit (whose projection q's footprint does not surely miss); q->n
    when there is none */

@@ -671,11 +671,26 @@ int rt_lbuf_find_z(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, ui
    primitive meets its projection there, to far less than the build's margin e; the lines
    are those of the projection as the build computed it (the cells' lists were made from
    the same points, enlarged by e), and their float rounding is below emargin - e. So a
-   primitive with a line below -(1.5 m + emargin) at (u, v) cannot be hit: thr. */
+   primitive with a line below -(1.5 m + emargin) at (u, v) cannot be hit: thr. With sc
+   (the query's first candidate, r's range set), a quad or polygon whose exact test would
+   reject r at its plane is passed over as well (rt_lbuf_plane_misses): 55 % of gears'
+   exact shadow tests, which then often leave no candidate and no set-up. */
 static inline __attribute__((always_inline)) uint32_t
-rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k);
+rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k,
+                const rt_scene *sc, const rt_rayx *r);
 
-int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, uint32_t skip, rt_lbuf_q *q, uint32_t *k0)
+/* 1 when the plane part of primitive i's exact test (rt_prim_plane_t) rejects ray r, with
+   the same values: a quad or polygon whose plane r does not cross within [tmin, tmax]; 0
+   otherwise (a triangle's test needs the ray's shear, rt_rayx_setup) */
+static inline int rt_lbuf_plane_misses(const rt_scene *sc, const rt_rayx *r, uint32_t i)
+{
+    double t = 0.0;
+    const int p = rt_prim_plane_t(sc, r, i, &t);
+    return p == 0 || (p > 0 && !(t >= r->tmin && t <= r->tmax));
+}
+
+int rt_lbuf_query(const rt_scene *sc, const rt_lbuf *lb, const rt_rayx *r, uint32_t skip,
+                  rt_lbuf_q *q, uint32_t *k0)
 {
     double z, m, u, v;
     q->n = 0;
@@ -686,13 +701,14 @@ int rt_lbuf_query(const rt_lbuf *lb, const rt_rayx *r, uint32_t skip, rt_lbuf_q 
         q->u = (float)u;
         q->v = (float)v;
         q->thr = (float)((1.5 * m + lb->emargin) * (1.0 + 0x1p-20));
-        *k0 = rt_lbuf_next_at(lb, q, skip, 0);
+        *k0 = rt_lbuf_next_at(lb, q, skip, 0, sc, r);
     }
     return f;
 }
 
 static inline __attribute__((always_inline)) uint32_t
-rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k)
+rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k,
+                const rt_scene *sc, const rt_rayx *r)
 {
     const uint16_t *zb = lb->zb;
 #if defined(__SSE2__) /* the 4 lines at once */
@@ -713,7 +729,7 @@ rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k
         for (int c = 0; c < 4; c++)
             miss |= (e[c] * q->u + e[4 + c] * q->v) + e[8 + c] < -q->thr;
 #endif
-        if (!(miss | (i == skip)))
+        if (!(miss | (i == skip)) && !(sc && i >= sc->ntri && rt_lbuf_plane_misses(sc, r, i)))
             return k;
     }
     return q->n;
@@ -721,7 +737,7 @@ rt_lbuf_next_at(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k
 
 uint32_t rt_lbuf_next(const rt_lbuf *lb, const rt_lbuf_q *q, uint32_t skip, uint32_t k)
 {
-    return rt_lbuf_next_at(lb, q, skip, k);
+    return rt_lbuf_next_at(lb, q, skip, k, NULL, NULL);
 }
 
 double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *q,
@@ -729,7 +745,7 @@ double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *
 {
     double T = 1.0;
     *blocker = -1;
-    for (; k < q->n; k = rt_lbuf_next_at(lb, q, r->skip, k + 1)) {
+    for (; k < q->n; k = rt_lbuf_next_at(lb, q, r->skip, k + 1, NULL, NULL)) {
         const uint32_t i = q->ids[k];
         double t;
         if (!rt_isect_prim(sc, r, i, r->tmin, r->tmax, &t))

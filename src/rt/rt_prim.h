@@ -100,9 +100,9 @@ static inline __attribute__((always_inline)) double rt_edge(double px, double py
    is checked first: a quad is often crossed behind the origin (the floor tiles around the
    point a shadow or reflection ray leaves) or beyond the nearest hit so far, and then its
    edge functions are not needed (the same hits and t as testing the edges first). */
-static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r, const rt_quad *q,
-                                                               double tmin, double tmax,
-                                                               double *tout)
+/* the t at which ray r crosses a quad's plane: 0 when it is parallel (den == 0) */
+static inline __attribute__((always_inline)) int rt_quad_plane_t(const rt_rayx *r, const rt_quad *q,
+                                                                 double *t)
 {
     const double *o = r->o;
     const double den = q->n[0] * r->d[0] + q->n[1] * r->d[1] + q->n[2] * r->d[2];
@@ -111,7 +111,18 @@ static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r,
     double A[3];
     for (int j = 0; j < 3; j++)
         A[j] = q->v[0][j] - o[j];
-    const double t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / den;
+    *t = (q->n[0] * A[0] + q->n[1] * A[1] + q->n[2] * A[2]) / den;
+    return 1;
+}
+
+static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r, const rt_quad *q,
+                                                               double tmin, double tmax,
+                                                               double *tout)
+{
+    const double *o = r->o;
+    double t;
+    if (!rt_quad_plane_t(r, q, &t))
+        return 0;
     if (!(t >= tmin) | !(t <= tmax))
         return 0;
     const int kx = r->kx, ky = r->ky, kz = r->kz;
@@ -133,14 +144,24 @@ static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r,
     return 1;
 }
 
-/* plane hit + exact-sign even-odd crossing test on the dominant-axis projection */
-static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_poly *p,
-                                double tmin, double tmax, double *tout)
+/* the t at which ray r crosses a polygon's plane: 0 when it is parallel (den == 0) */
+static inline __attribute__((always_inline)) int rt_poly_plane_t(const rt_rayx *r, const rt_poly *p,
+                                                                 double *t)
 {
     const double den = p->n[0] * r->d[0] + p->n[1] * r->d[1] + p->n[2] * r->d[2];
     if (den == 0.0)
         return 0;
-    const double t = (p->d - (p->n[0] * r->o[0] + p->n[1] * r->o[1] + p->n[2] * r->o[2])) / den;
+    *t = (p->d - (p->n[0] * r->o[0] + p->n[1] * r->o[1] + p->n[2] * r->o[2])) / den;
+    return 1;
+}
+
+/* plane hit + exact-sign even-odd crossing test on the dominant-axis projection */
+static inline int rt_isect_poly(const rt_scene *sc, const rt_rayx *r, const rt_poly *p,
+                                double tmin, double tmax, double *tout)
+{
+    double t;
+    if (!rt_poly_plane_t(r, p, &t))
+        return 0;
     if (!(t >= tmin && t <= tmax))
         return 0;
     const double pu = r->o[p->ku] + t * r->d[p->ku];
@@ -203,6 +224,28 @@ static inline int rt_isect_cell(const rt_rayx *r, const rt_cell *c, double tmin,
         return 0;
     *tout = t;
     return 1;
+}
+
+/* The plane part of primitive i's test (rt_isect_prim), which needs only the ray's origin
+   and direction: for a quad or polygon 1 with *t where r crosses its plane (the test then
+   rejects t outside [tmin, tmax]), or 0 when r is parallel to it (the test rejects); -1
+   for a triangle or cell array (not computed here) */
+static inline __attribute__((always_inline)) int rt_prim_plane_t(const rt_scene *sc, const rt_rayx *r,
+                                                                 size_t i, double *t)
+{
+    if (i < sc->ntri)
+        return -1;
+    if (i - sc->ntri < sc->nquad)
+        return rt_quad_plane_t(r, &sc->quad[i - sc->ntri], t);
+    const rt_prim *p = &sc->prim[i];
+    switch (p->kind) {
+    case RT_KIND_QUAD:
+        return rt_quad_plane_t(r, &sc->quad[p->data], t);
+    case RT_KIND_POLY:
+        return rt_poly_plane_t(r, &sc->poly[p->data], t);
+    default:
+        return -1;
+    }
 }
 
 static inline __attribute__((always_inline)) int rt_isect_prim(const rt_scene *sc, const rt_rayx *r, size_t i, double tmin,

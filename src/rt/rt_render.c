@@ -300,9 +300,10 @@ static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, lon
     uint32_t k0 = 0; /* the first candidate of the buffer's list */
     int f = -2;      /* -2: the buffer not asked yet */
     if (!cache->live && lb->ok) {
-        /* no blocker to probe: the buffer first, on the ray's origin and its direction
-           as rt_rayx_setup makes it (components below 1e-150 of the largest flushed
-           to 0), so the same answer as after the set-up; no candidate left answers "lit"
+        /* no blocker to probe: the buffer first, on the ray's origin, range and direction
+           as rt_rayx_setup makes them (components below 1e-150 of the largest flushed
+           to 0), so the same answer as after the set-up; no candidate left (none whose
+           projection the footprint reaches and whose plane test passes) answers "lit"
            without the set-up */
         const double a0 = fabs(L[0]), a1 = fabs(L[1]), a2 = fabs(L[2]);
         const double a01 = a0 > a1 ? a0 : a1, tiny = 1e-150 * (a01 > a2 ? a01 : a2);
@@ -310,7 +311,9 @@ static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, lon
         r.d[0] = a0 < tiny ? 0.0 : L[0];
         r.d[1] = a1 < tiny ? 0.0 : L[1];
         r.d[2] = a2 < tiny ? 0.0 : L[2];
-        f = rt_lbuf_query(lb, &r, (uint32_t)from, &q, &k0);
+        r.tmin = t0;
+        r.tmax = t1;
+        f = rt_lbuf_query(sc, lb, &r, (uint32_t)from, &q, &k0);
     }
     if (f == 0 || (f > 0 && k0 == q.n)) {
         T = 1.0;
@@ -333,7 +336,7 @@ static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, lon
         } else {
             /* the light buffer's candidates where it has them, else the walk */
             if (f == -2) {
-                f = lb->ok ? rt_lbuf_query(lb, &r, (uint32_t)from, &q, &k0) : -1;
+                f = lb->ok ? rt_lbuf_query(sc, lb, &r, (uint32_t)from, &q, &k0) : -1;
             }
             w->st.shadow_lbuf += f >= 0;
             w->st.shadow_walks += f < 0;
