@@ -105,11 +105,12 @@ FNR == 1 { f++ }
 { k = ++m[f]; n = val($0, "n"); c[f, "calls", k] = val($0, "calls"); c[f, "build", k] = val($0, "build");
   c[f, "render", k] = val($0, "render"); c[f, "rest", k] = val($0, "update") - val($0, "build") - val($0, "render");
   c[f, "app", k] = val($0, "app_us/call") * n / 1e6; c[f, "work", k] = val($0, "calls_cpu") - c[f, "app", k];
-  c[f, "uflt", k] = val($0, "upd_flt"); c[f, "cflt", k] = val($0, "calls_flt") }
+  c[f, "uflt", k] = val($0, "upd_flt"); c[f, "cflt", k] = val($0, "calls_flt");
+  c[f, "asys", k] = val($0, "app_sys"); c[f, "wsys", k] = val($0, "calls_sys") - val($0, "app_sys") }
 END {
-  split("calls app work build render rest cflt uflt", st, " ");
-  for (g = 1; g <= 2; g++) for (i = 1; i <= 8; i++) { for (k = 1; k <= m[g]; k++) v[k] = c[g, st[i], k]; md[g, st[i]] = med(v, m[g]) }
+  split("calls app work build render rest cflt uflt asys wsys", st, " ");
+  for (g = 1; g <= 2; g++) for (i = 1; i <= 10; i++) { for (k = 1; k <= m[g]; k++) v[k] = c[g, st[i], k]; md[g, st[i]] = med(v, m[g]) }
   printf "split 1 thread:  calls %.3f s (application CPU %.3f s), build %.3f s, render %.3f s, rest of update %.3f s; page faults calls %d, update %d\n", md[1, "calls"], md[1, "app"], md[1, "build"], md[1, "render"], md[1, "rest"], md[1, "cflt"], md[1, "uflt"];
-  printf "split 2 threads: calls %.3f s (application CPU %.3f s, recording worker %.3f s), build %.3f s, render %.3f s, rest of update %.3f s; page faults calls %d, update %d\n", md[2, "calls"], md[2, "app"], md[2, "work"], md[2, "build"], md[2, "render"], md[2, "rest"], md[2, "cflt"], md[2, "uflt"];
+  printf "split 2 threads: calls %.3f s (application CPU %.3f s, recording worker %.3f s; of them system CPU, mostly first touches: %.3f s, %.3f s), build %.3f s, render %.3f s, rest of update %.3f s; page faults calls %d, update %d\n", md[2, "calls"], md[2, "app"], md[2, "work"], md[2, "asys"], md[2, "wsys"], md[2, "build"], md[2, "render"], md[2, "rest"], md[2, "cflt"], md[2, "uflt"];
   printf "split ratios 1 -> 2 threads (medians of the pairs): calls %.2f, build %.2f, render %.2f, rest %.2f\n", md[1, "calls"] / md[2, "calls"], md[1, "build"] / md[2, "build"], md[1, "render"] / md[2, "render"], (md[2, "rest"] > 0 ? md[1, "rest"] / md[2, "rest"] : 0);
 }' "$out/split1" "$out/split2"

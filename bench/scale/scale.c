@@ -30,7 +30,10 @@
  * the process's minor page faults (first touches of memory) in the two phases, app_flt and
  * upd_app_flt those of the application's thread (Linux: RUSAGE_THREAD; else -1); app_waits,
  * upd_app_waits: how often the application's thread slept in the two phases (voluntary
- * context switches: the recording's queue full, a pool's parts not done; else -1).
+ * context switches: the recording's queue full, a pool's parts not done; else -1);
+ * calls_usr, calls_sys, upd_usr, upd_sys: the process's user and system CPU s in the two
+ * phases, app_usr, app_sys, upd_app_usr, upd_app_sys those of the application's thread
+ * (system CPU here is mostly first touches of memory; -1 where unknown).
  * bench/scale/run.sh runs the series and prints the goals.
  */
 #if defined(__linux__) && !defined(_GNU_SOURCE)
@@ -78,6 +81,27 @@ static long faults(int thread, long *waits)
 #endif
     return u.ru_minflt;
 }
+
+/* User and system CPU s of the process (thread 0) or of the calling thread (thread 1; both
+ * -1 where the system has no per-thread figure): system CPU is mostly the kernel's page
+ * faults here, so the split says whether a phase's CPU went to first touches of memory. */
+static void usr_sys(int thread, double *usr, double *sys)
+{
+    struct rusage u;
+    *usr = *sys = -1;
+#ifdef RUSAGE_THREAD
+    if (getrusage(thread ? RUSAGE_THREAD : RUSAGE_SELF, &u) != 0)
+        return;
+#else
+    if (thread || getrusage(RUSAGE_SELF, &u) != 0)
+        return;
+#endif
+    *usr = (double)u.ru_utime.tv_sec + 1e-6 * (double)u.ru_utime.tv_usec;
+    *sys = (double)u.ru_stime.tv_sec + 1e-6 * (double)u.ru_stime.tv_usec;
+}
+
+/* b - a, or -1 if either is unknown */
+static double fdiff(double a, double b) { return a < 0 || b < 0 ? -1 : b - a; }
 
 /* b - a, or -1 if either is unknown */
 static long diff(long a, long b) { return a < 0 || b < 0 ? -1 : b - a; }
@@ -186,7 +210,10 @@ int main(int argc, char **argv)
         }
 
     long v0, v1, v2;
+    double pu[3], ps[3], tu[3], ts[3]; /* process and thread user / system CPU at 3 points */
     const long f0 = faults(0, &v0), g0 = faults(1, &v0);
+    usr_sys(0, &pu[0], &ps[0]);
+    usr_sys(1, &tu[0], &ts[0]);
     double w0 = wall(), c0 = cpu(), a0 = clock_s(CLOCK_THREAD_CPUTIME_ID);
     gopen_gks(NULL, 0);
     gopen_ws(1, out, GWS_TYPE_PNG);
@@ -252,9 +279,13 @@ int main(int argc, char **argv)
     free(g);
     double w1 = wall(), c1 = cpu(), a1 = clock_s(CLOCK_THREAD_CPUTIME_ID);
     const long f1 = faults(0, &v1), g1 = faults(1, &v1);
+    usr_sys(0, &pu[1], &ps[1]);
+    usr_sys(1, &tu[1], &ts[1]);
     gupd_ws(1, GFLAG_PERFORM);
     double w2 = wall(), c2 = cpu(), a2 = clock_s(CLOCK_THREAD_CPUTIME_ID);
     const long f2 = faults(0, &v2), g2 = faults(1, &v2);
+    usr_sys(0, &pu[2], &ps[2]);
+    usr_sys(1, &tu[2], &ts[2]);
     Gfloat fl[2] = { 0 };
     Gint inw[1] = { 1 }, serr;
     Gescape_in_data sin_ = { .num_ints = 1, .ints = inw };
@@ -278,10 +309,14 @@ int main(int argc, char **argv)
     printf("n=%ld calls=%.3f update=%.3f build=%.3f render=%.3f total=%.3f close=%.3f "
            "cpu=%.2f rss=%.1f B/tri=%.0f us/call=%.3f calls_cpu=%.3f update_cpu=%.3f "
            "cpu_us/call=%.3f app_us/call=%.3f upd_app_cpu=%.3f calls_flt=%ld app_flt=%ld "
-           "upd_flt=%ld upd_app_flt=%ld app_waits=%ld upd_app_waits=%ld\n",
+           "upd_flt=%ld upd_app_flt=%ld app_waits=%ld upd_app_waits=%ld ",
            drawn, w1 - w0, w2 - w1, fl[0], fl[1], w2 - w0, w3 - w2, cpu(), rss / 1048576.0,
            rss / (double)drawn, 1e6 * (w1 - w0) / (double)drawn, c1 - c0, c2 - c1,
            1e6 * (c1 - c0) / (double)drawn, 1e6 * (a1 - a0) / (double)drawn, a2 - a1,
            diff(f0, f1), diff(g0, g1), diff(f1, f2), diff(g1, g2), diff(v0, v1), diff(v1, v2));
+    printf("calls_usr=%.3f calls_sys=%.3f app_usr=%.3f app_sys=%.3f upd_usr=%.3f upd_sys=%.3f "
+           "upd_app_usr=%.3f upd_app_sys=%.3f\n",
+           fdiff(pu[0], pu[1]), fdiff(ps[0], ps[1]), fdiff(tu[0], tu[1]), fdiff(ts[0], ts[1]),
+           fdiff(pu[1], pu[2]), fdiff(ps[1], ps[2]), fdiff(tu[1], tu[2]), fdiff(ts[1], ts[2]));
     return 0;
 }
