@@ -157,6 +157,12 @@ typedef struct rt_vertex_data {
 RT_API int rt_scene_add_polygon_data(rt_scene *sc, int nloops, const int *loop_counts,
                                      const double *xyz, const rt_vertex_data *vd,
                                      int front_surface, int back_surface);
+/* Where the next n triangles added to sc would be written in its input arrays (vertices, then
+ * records): up to 2 byte ranges [lo[i], hi[i]) of storage it has already reserved, so that
+ * another thread can make those pages present ahead of the writer (madvise
+ * MADV_POPULATE_WRITE, which never changes their contents). Returns the number of ranges: 0
+ * while the arrays are small (on malloc, where they may still move). Reads sc only. */
+RT_API int rt_scene_input_next(const rt_scene *sc, size_t n, void *lo[2], void *hi[2]);
 
 /* An indexed triangle mesh in VRC3 (a GKS mesh primitive WITH DATA kept whole: triangle
  * strips, quadrilateral meshes split into triangles, sets of fill area sets' triangles):
@@ -522,6 +528,9 @@ typedef struct rt_serial rt_serial;
 typedef void (*rt_serial_fn)(void *user, void *item);
 RT_API rt_serial *rt_serial_new(int threads, rt_serial_fn fn, void *user);
 RT_API void rt_serial_push(rt_serial *s, void *item);
+/* 1 if a push now would wait: 32 items wait and the oldest is being run (the pusher may do
+ * other useful work first), else 0. */
+RT_API int rt_serial_full(rt_serial *s);
 RT_API void rt_serial_drain(rt_serial *s);
 RT_API void rt_serial_free(rt_serial *s);
 

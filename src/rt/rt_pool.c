@@ -259,6 +259,14 @@ void rt_serial_push(rt_serial *s, void *item)
     pthread_mutex_unlock(&pool.lock);
 }
 
+int rt_serial_full(rt_serial *s)
+{
+    pthread_mutex_lock(&pool.lock);
+    const int full = s->count == RT_SERIAL_CAP && s->running;
+    pthread_mutex_unlock(&pool.lock);
+    return full;
+}
+
 void rt_serial_drain(rt_serial *s)
 {
     if (!s)

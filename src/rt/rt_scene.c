@@ -44,6 +44,22 @@ void rt_surface_default(rt_surface *s)
 static rt_tri *in_tris(const rt_scene *sc) { return sc->in_tri.p; }
 static rt_prim *in_tri_prims(const rt_scene *sc) { return sc->in_tri_prim.p; }
 
+int rt_scene_input_next(const rt_scene *sc, size_t n, void *lo[2], void *hi[2])
+{
+    const rt_big *b[2] = { &sc->in_tri, &sc->in_tri_prim };
+    const size_t es[2] = { sizeof(rt_tri), sizeof(rt_prim) };
+    int k = 0;
+    for (int i = 0; i < 2; i++) {
+        if (!b[i]->map_bytes || sc->nintri > b[i]->cap) /* on malloc: it may move */
+            continue;
+        const size_t room = b[i]->cap - sc->nintri, m = n < room ? n : room;
+        lo[k] = (char *)b[i]->p + sc->nintri * es[i];
+        hi[k] = (char *)lo[k] + m * es[i];
+        k++;
+    }
+    return k;
+}
+
 static int rt_tri_prim(rt_scene *sc, const double *v, int id, int front, int back,
                        rt_prim *pr);
 static void rt_tri_bbox(const rt_scene *sc, size_t lo, size_t hi, double bb[6]);

@@ -102,12 +102,47 @@ static void test_sizes(void **u)
     assert_int_equal(cap, 0);
 }
 
+/* rt_scene_input_next: no ranges while the triangle arrays are on malloc; once they are
+ * reserved, where the next triangles go, moving on by one triangle's bytes per triangle */
+static void test_input_next(void **u)
+{
+    (void)u;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int surf = rt_scene_add_surface(sc, &s);
+    void *lo[2], *hi[2];
+    const int cnt[1] = { 3 };
+    const size_t big = ((size_t)8 << 20) / sizeof(rt_prim); /* both arrays beyond 4 MiB */
+    for (size_t i = 0; i <= big; i++) {
+        const double x = (double)(i % 1000), y = (double)(i / 1000);
+        const double v[9] = { x, y, 0, x + 1, y, 0, x, y + 1, 0 };
+        if (i == 10)
+            assert_int_equal(rt_scene_input_next(sc, 100, lo, hi), 0);
+        assert_true(rt_scene_add_polygon(sc, 1, cnt, v, surf, surf) >= 0);
+    }
+#if defined(__linux__) /* the arrays are reserved mappings there (rt_big) */
+    assert_int_equal(rt_scene_input_next(sc, 100, lo, hi), 2);
+    assert_int_equal((char *)hi[0] - (char *)lo[0], 100 * sizeof(rt_tri));
+    assert_int_equal((char *)hi[1] - (char *)lo[1], 100 * sizeof(rt_prim));
+    void *lo2[2], *hi2[2];
+    const double v[9] = { 0, 0, 1, 1, 0, 1, 0, 1, 1 };
+    assert_true(rt_scene_add_polygon(sc, 1, cnt, v, surf, surf) >= 0);
+    assert_int_equal(rt_scene_input_next(sc, 100, lo2, hi2), 2);
+    assert_ptr_equal(lo2[0], (char *)lo[0] + sizeof(rt_tri));
+    assert_ptr_equal(lo2[1], (char *)lo[1] + sizeof(rt_prim));
+#endif
+    rt_scene_free(sc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_big),
         cmocka_unit_test(test_grow),
         cmocka_unit_test(test_sizes),
+        cmocka_unit_test(test_input_next),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -130,12 +131,50 @@ static void test_serial(void **u)
     free(s.got);
 }
 
+/* an item that runs until the test opens its gate */
+typedef struct gate {
+    atomic_int started, open;
+} gate;
+
+static void hold(void *user, void *item)
+{
+    gate *g = user;
+    if (item) {
+        atomic_store(&g->started, 1);
+        while (!atomic_load(&g->open))
+            sched_yield();
+    }
+}
+
+/* rt_serial_full says 1 exactly when a push would wait: 32 items queued while one runs */
+static void test_serial_full(void **u)
+{
+    (void)u;
+    gate g = { 0 };
+    rt_serial *q = rt_serial_new(2, hold, &g);
+    assert_non_null(q);
+    assert_int_equal(rt_serial_full(q), 0);
+    rt_serial_push(q, &g); /* runs on the worker and holds it */
+    while (!atomic_load(&g.started))
+        sched_yield();
+    for (int i = 0; i < 32; i++) {
+        assert_int_equal(rt_serial_full(q), 0);
+        rt_serial_push(q, NULL);
+    }
+    assert_int_equal(rt_serial_full(q), 1);
+    atomic_store(&g.open, 1);
+    rt_serial_drain(q);
+    assert_int_equal(rt_serial_full(q), 0);
+    rt_serial_free(q);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_par_run),
         cmocka_unit_test(test_par_concurrent),
         cmocka_unit_test(test_serial),
+        cmocka_unit_test(test_serial_full),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

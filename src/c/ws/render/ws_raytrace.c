@@ -11,6 +11,9 @@
  * ignored by the tracer (a traced surface covers them). Lights the tracer rejects (a spot
  * light of spread 0, a zero direction) are left out. Documentation: docs/RAYTRACING.md.
  */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE 1 /* madvise, MADV_POPULATE_WRITE */
+#endif
 #include "ws_raytrace.h"
 #include "ws_vrc.h"
 #include "gks_alloc.h"
@@ -22,9 +25,13 @@
 #include <stdatomic.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 /* The attributes a pair of tracer surfaces is made of (consecutive areas of one attribute
  * setting share one pair). */
@@ -50,6 +57,16 @@ typedef struct rt_view_rec {
  * them; attributes an rt_attr. */
 enum { DL_POLY = 1 };
 
+/* Where the recording worker's scene writes its next triangles (rt_scene_input_next: up to
+ * two byte ranges of reserved storage), published by the worker after each chunk for the
+ * application's thread, which makes those pages present while it would otherwise wait for a
+ * full queue (prefault_step). A sequence lock: seq odd while the worker writes. */
+typedef struct pf_window {
+    atomic_uint seq;
+    atomic_int n;
+    _Atomic uintptr_t lo[2], hi[2];
+} pf_window;
+
 struct ws_rt {
     rt_view_rec view[GKS_MAX_VIEW_IND + 1];
     size_t count;            /* tracer primitives recorded (or queued) */
@@ -64,6 +81,8 @@ struct ws_rt {
     rt_view_rec *wvr;
     atomic_int werr;
     size_t wlost;
+    pf_window pf;            /* the worker's scene: where its next triangles go */
+    uintptr_t pf_done[2];    /* the application's side: end of what it made present there */
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
     int share_tiles;         /* the next frames' tiles are shared by the MPI ranks */
@@ -150,6 +169,88 @@ ws_rt *ws_rt_new(ws_dlist *dl)
     return r;
 }
 
+/* How far ahead of the worker its scene's storage is made present: the storage of its next
+ * PF_TRIS triangles (9 MiB of vertices, 64 of the queue's chunks), in steps of PF_STEP (one
+ * huge page of the arrays), never in the worker's current huge page or the one after it, so
+ * that the two threads do not fault the same page at the same time (the records' 1.5 MiB
+ * lie within that gap: the worker touches them itself). */
+#define PF_TRIS ((size_t)1 << 17)
+#define PF_STEP ((uintptr_t)2 << 20)
+
+/* The worker's side: where sc writes its next PF_TRIS triangles (n 0: nowhere known). */
+static void pf_publish(ws_rt *r, const rt_scene *sc)
+{
+    void *lo[2] = { NULL, NULL }, *hi[2] = { NULL, NULL };
+    const int n = sc ? rt_scene_input_next(sc, PF_TRIS, lo, hi) : 0;
+    const unsigned q = atomic_load_explicit(&r->pf.seq, memory_order_relaxed);
+    atomic_store_explicit(&r->pf.seq, q + 1, memory_order_relaxed);
+    /* release stores (no fences, which ThreadSanitizer does not model): a reader that sees
+       any of them sees seq odd afterwards */
+    for (int i = 0; i < 2; i++) {
+        atomic_store_explicit(&r->pf.lo[i], (uintptr_t)lo[i], memory_order_release);
+        atomic_store_explicit(&r->pf.hi[i], (uintptr_t)hi[i], memory_order_release);
+    }
+    atomic_store_explicit(&r->pf.n, n, memory_order_release);
+    atomic_store_explicit(&r->pf.seq, q + 2, memory_order_release);
+}
+
+/* The application's side: the published ranges (their number), or 0 while the worker is
+ * writing them (the caller then waits for the queue as before: nothing here spins). */
+static int pf_read(ws_rt *r, uintptr_t lo[2], uintptr_t hi[2])
+{
+    const unsigned q = atomic_load_explicit(&r->pf.seq, memory_order_acquire);
+    if (q & 1u)
+        return 0;
+    const int n = atomic_load_explicit(&r->pf.n, memory_order_acquire);
+    for (int i = 0; i < 2; i++) {
+        lo[i] = atomic_load_explicit(&r->pf.lo[i], memory_order_acquire);
+        hi[i] = atomic_load_explicit(&r->pf.hi[i], memory_order_acquire);
+    }
+    return atomic_load_explicit(&r->pf.seq, memory_order_relaxed) == q ? n : 0;
+}
+
+/* Makes the pages of [a, e) present (contents unchanged; whole pages from a's). */
+static int pf_populate(uintptr_t a, uintptr_t e)
+{
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    const long ps = sysconf(_SC_PAGESIZE);
+    if (ps <= 0 || (ps & (ps - 1)) != 0)
+        return 0;
+    const uintptr_t pg = (uintptr_t)ps;
+    a &= ~(pg - 1);
+    e = (e + pg - 1) & ~(pg - 1);
+    return e > a && madvise((void *)a, e - a, MADV_POPULATE_WRITE) == 0;
+#else
+    (void)a, (void)e;
+    return 0;
+#endif
+}
+
+/* While the queue is full, the application's thread makes the next pages of the worker's
+ * scene present (up to PF_STEP per call), ahead of the worker: on this VM the first touch of
+ * fresh memory is most of the worker's time in the calls (docs/bench/rt_tuning.md,
+ * 2026-12-06), so the thread that would wait takes part of it. 1 if it did some, 0 if
+ * nothing is left to do. */
+static int prefault_step(ws_rt *r)
+{
+    uintptr_t lo[2], hi[2];
+    const int n = pf_read(r, lo, hi);
+    for (int i = 0; i < n; i++) {
+        const uintptr_t end = hi[i];
+        const uintptr_t from = (lo[i] & ~(PF_STEP - 1)) + 2 * PF_STEP;
+        const uintptr_t d = r->pf_done[i] <= end ? r->pf_done[i] : 0; /* beyond: another scene's */
+        uintptr_t a = d > from ? d : from;
+        if (a >= end)
+            continue;
+        uintptr_t e = (a & ~(PF_STEP - 1)) + PF_STEP;
+        e = e < end ? e : end;
+        r->pf_done[i] = e;
+        if (pf_populate(a, e))
+            return 1;
+    }
+    return 0;
+}
+
 /* Waits until every queued area is in its scene (the scenes are then as if each area had
  * been recorded at its call). Returns the first error of the worker since the last sync
  * (300 or 308) or 0; its areas are not counted. */
@@ -158,6 +259,8 @@ static int ws_rt_sync(ws_rt *r)
     if (r->queue) {
         ws_dlist_seal(r->dl); /* the chunk being filled to the queue */
         rt_serial_drain(r->queue);
+        pf_publish(r, NULL); /* no worker at work now; its scenes may change */
+        r->pf_done[0] = r->pf_done[1] = 0;
         ws_dlist_trim(r->dl); /* every chunk is in the scenes: freed (unless the classic
                                  renderer has records in it) */
         r->count -= r->wlost;
@@ -815,6 +918,7 @@ static void rec_run(void *user, void *item)
         if (e)
             atomic_compare_exchange_strong(&r->werr, &none, e);
     }
+    pf_publish(r, r->wvr ? r->wvr->sc : NULL);
     ws_dlist_release(c, WS_DL_TRACER);
 }
 
@@ -822,8 +926,12 @@ static void rec_run(void *user, void *item)
  * classic renderer's records stays where it is). */
 static void queue_chunk(void *user, ws_dl_chunk *c)
 {
-    if (c->readers & WS_DL_TRACER)
-        rt_serial_push(((ws_rt *)user)->queue, c);
+    ws_rt *r = user;
+    if (!(c->readers & WS_DL_TRACER))
+        return;
+    while (rt_serial_full(r->queue) && prefault_step(r))
+        ;
+    rt_serial_push(r->queue, c);
 }
 
 /* The queue of the asynchronous recording, started at the first area (rt_serial_new once:
