@@ -25,6 +25,9 @@
  * rules out rays whose signs are mixed and non-zero; the exact test decides every other ray.
  * Before it, a triangle beyond one of the bounds of the packet's frustum is skipped, and with
  * AVX2 the kernel runs only the 4-ray steps whose own frusta it may meet (rt_pk_steps).
+ * An any-hit packet's AVX2 kernel also takes the exact test's t and range test for the rays
+ * whose edge functions are non-zero with one sign, with its operations: it decides those rays
+ * itself (a shadow ray's own surface, crossed behind its origin, is ruled out there).
  * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (or RT_PK_MAXS
  * second-level cells) is handed to the single-ray walk as a whole.
  *
@@ -112,6 +115,8 @@ typedef struct rt_pk {
                                 against the packet */
     /* the cull kernel's inputs in the rays' common axis order kx, ky, kz */
     double ox[RT_PACKET], oy[RT_PACKET], oz[RT_PACKET], sx[RT_PACKET], sy[RT_PACKET];
+    /* and the exact test's sz, tmin, tmax (the AVX2 kernel's range test) */
+    double sz[RT_PACKET], tn[RT_PACKET], tx[RT_PACKET];
     int kx, ky, kz;
     double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
     double usmin, uemax;     /* the first start and the last end of the rays (rt_pk_ends) */
@@ -196,17 +201,27 @@ static uint64_t rt_pk_cull_sse(const rt_pk *p, const double *v0, const double *v
     return out & mask;
 }
 
-/* AVX2 (no FMA): 4 rays at a time */
-__attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, const double *v0,
-                                                                const double *v1,
-                                                                const double *v2, uint64_t mask)
+/* the lanes of mask as an AVX2 mask of four doubles, lanes k .. k+3 */
+__attribute__((target("avx2"))) static inline __m256d rt_pk_lanes(uint64_t mask, int k)
+{
+    const __m256i bit = _mm256_set_epi64x(8, 4, 2, 1);
+    const __m256i m = _mm256_set1_epi64x((long long)((mask >> k) & 15u));
+    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(m, bit), bit));
+}
+
+/* AVX2 (no FMA): 4 rays at a time. any: an any-hit packet's kernel, which also decides the
+   rays whose edge functions are non-zero with one sign: their t by the exact test's
+   operations, a hit within its range (*sure), no hit outside (ruled out) */
+static inline __attribute__((target("avx2"), always_inline)) uint64_t
+rt_pk_cull_avx2_body(const rt_pk *p, const double *v0, const double *v1, const double *v2,
+                     uint64_t mask, const int any, uint64_t *sure)
 {
     const int kx = p->kx, ky = p->ky, kz = p->kz;
     const __m256d ax = _mm256_set1_pd(v0[kx]), ay = _mm256_set1_pd(v0[ky]), az = _mm256_set1_pd(v0[kz]);
     const __m256d bx = _mm256_set1_pd(v1[kx]), by = _mm256_set1_pd(v1[ky]), bz = _mm256_set1_pd(v1[kz]);
     const __m256d cx = _mm256_set1_pd(v2[kx]), cy = _mm256_set1_pd(v2[ky]), cz = _mm256_set1_pd(v2[kz]);
-    const __m256d z = _mm256_setzero_pd();
-    uint64_t out = 0;
+    const __m256d z = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+    uint64_t out = 0, hit = 0;
     /* the steps with a ray of mask: bit 4s set for step s (no branch per step: the steps'
        test leaves sparse masks) */
     uint64_t st = mask | mask >> 1;
@@ -237,10 +252,61 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, 
                                           _mm256_cmp_pd(W, z, _CMP_EQ_UQ));
         const unsigned differ = (unsigned)_mm256_movemask_pd(
             _mm256_or_pd(_mm256_xor_pd(U, V), _mm256_xor_pd(U, W)));
-        const unsigned keep = (unsigned)_mm256_movemask_pd(zero) | (~differ & 15u);
+        const unsigned zb = (unsigned)_mm256_movemask_pd(zero);
+        unsigned keep = zb;
+        if (!any)
+            keep |= ~differ & 15u;
+        else if (~differ & ~zb & 15u) {
+            /* the rays of mask whose three edge functions are non-zero with one sign (the
+               exact test passes its edge test for them): the exact test's det = U + V + W,
+               T and t = T / det with its operations, and its range test. The other lanes take
+               harmless values first (U = V = W = 1, Az = Bz = Cz = sz = 0), so no operation
+               is made that the exact test would not make on its own rays. A ray within
+               [tmin, tmax] is a hit of the exact test (its t these bits), one outside is not. */
+            const __m256d dm = _mm256_castsi256_pd(_mm256_cmpgt_epi64(
+                _mm256_setzero_si256(),
+                _mm256_castpd_si256(_mm256_or_pd(_mm256_xor_pd(U, V), _mm256_xor_pd(U, W)))));
+            const __m256d ss = _mm256_andnot_pd(_mm256_or_pd(dm, zero), rt_pk_lanes(mask, k));
+            const __m256d u = _mm256_blendv_pd(one, U, ss), vv = _mm256_blendv_pd(one, V, ss),
+                          w = _mm256_blendv_pd(one, W, ss);
+            const __m256d sz = _mm256_and_pd(ss, _mm256_loadu_pd(p->sz + k));
+            const __m256d az = _mm256_and_pd(ss, Az), bz2 = _mm256_and_pd(ss, Bz),
+                          cz2 = _mm256_and_pd(ss, Cz);
+            const __m256d det = _mm256_add_pd(_mm256_add_pd(u, vv), w);
+            const __m256d T = _mm256_add_pd(
+                _mm256_add_pd(_mm256_mul_pd(u, _mm256_mul_pd(sz, az)),
+                              _mm256_mul_pd(vv, _mm256_mul_pd(sz, bz2))),
+                _mm256_mul_pd(w, _mm256_mul_pd(sz, cz2)));
+            const __m256d t = _mm256_div_pd(T, det);
+            const __m256d tin = _mm256_and_pd(
+                _mm256_cmp_pd(t, _mm256_and_pd(ss, _mm256_loadu_pd(p->tn + k)), _CMP_GE_OQ),
+                _mm256_cmp_pd(t, _mm256_and_pd(ss, _mm256_loadu_pd(p->tx + k)), _CMP_LE_OQ));
+            const unsigned h = (unsigned)_mm256_movemask_pd(_mm256_and_pd(ss, tin));
+            keep |= h;
+            hit |= (uint64_t)h << k;
+        }
         out |= (uint64_t)keep << k;
     }
+    *sure = hit & mask;
     return out & mask;
+}
+
+__attribute__((target("avx2"))) static uint64_t rt_pk_cull_avx2(const rt_pk *p, const double *v0,
+                                                                const double *v1,
+                                                                const double *v2, uint64_t mask)
+{
+    uint64_t sure;
+    return rt_pk_cull_avx2_body(p, v0, v1, v2, mask, 0, &sure);
+}
+
+/* the any-hit kernel: the rays to give the exact test; the hits it found in *sure */
+__attribute__((target("avx2"))) static uint64_t rt_pk_cull_any_avx2(const rt_pk *p,
+                                                                    const double *v0,
+                                                                    const double *v1,
+                                                                    const double *v2,
+                                                                    uint64_t mask, uint64_t *sure)
+{
+    return rt_pk_cull_avx2_body(p, v0, v1, v2, mask, 1, sure);
 }
 #endif
 
@@ -560,6 +626,9 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
     p->oy[k] = r->o[p->ky];
     p->oz[k] = r->o[p->kz];
     p->sx[k] = r->sx;
+    p->sz[k] = r->sz;
+    p->tn[k] = r->tmin;
+    p->tx[k] = r->tmax;
     p->sy[k] = r->sy;
     p->oK[k] = go[p->K];
     p->o1[k] = go[p->a1];
@@ -607,7 +676,7 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
 {
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &g->b;
-    const int n = p->n;
+    const int n = p->n, any = p->any;
     /* the packet's axes from ray 0 (rt_rayx_shear's rule), its octant in the grid frame */
     const double *d0 = rays[0].dir;
     const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
@@ -737,6 +806,11 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
         _mm256_storeu_pd(p->oz + k, _mm256_and_pd(in, v[kz]));
         _mm256_storeu_pd(p->sx + k, _mm256_and_pd(in, sx));
         _mm256_storeu_pd(p->sy + k, _mm256_and_pd(in, sy));
+        if (any) { /* the any-hit kernel's range test */
+            _mm256_storeu_pd(p->sz + k, _mm256_and_pd(in, sz));
+            _mm256_storeu_pd(p->tn + k, _mm256_and_pd(in, v[6]));
+            _mm256_storeu_pd(p->tx + k, _mm256_and_pd(in, v[7]));
+        }
         _mm256_storeu_pd(p->oK + k, _mm256_and_pd(in, oK));
         _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, RT_PK_GO(a1)));
         _mm256_storeu_pd(p->o2 + k, _mm256_and_pd(in, RT_PK_GO(a2)));
@@ -795,6 +869,13 @@ __attribute__((target("avx2"))) static int rt_pk_setup_rot_avx2(rt_pk *p, const 
 }
 #endif
 
+/* the kernels' lane k for a ray not walked: harmless values */
+static inline void rt_pk_lane0(rt_pk *p, int k)
+{
+    p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+    p->sz[k] = p->tn[k] = p->tx[k] = 0.0;
+}
+
 /* the packet's rays: 1, or 0 if they are not coherent (different axes or octants, a zero
    direction component) */
 static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
@@ -812,7 +893,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->r = rx;
     p->rays = rays;
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
-        p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+        rt_pk_lane0(p, k);
 #ifdef RT_PK_X86
     if (rt_pk_avx2 && n % 4 == 0 &&
         (g->rotated ? rt_pk_setup_rot_avx2(p, rays) : rt_pk_setup_avx2(p, rays))) {
@@ -857,11 +938,11 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         const int judged = (judged_m >> k) & 1u;
         const double t[2] = {judged ? tb0[k] : 0.0, judged ? tb1[k] : 0.0};
         if (judged && !(t[0] <= t[1])) {
-            p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+            rt_pk_lane0(p, k);
             continue; /* a miss: the rest of the set-up only for rays that may be walked */
         }
         if (!rt_rayx_setup(&p->r[k], q->org, q->dir, q->tmin, q->tmax)) {
-            p->ox[k] = p->oy[k] = p->oz[k] = p->sx[k] = p->sy[k] = 0.0;
+            rt_pk_lane0(p, k);
             continue; /* a miss, as on the single-ray walk */
         }
         if (!rt_pk_ray(p, k, &oct))
@@ -1036,7 +1117,19 @@ static __attribute__((noinline)) void rt_pk_test(rt_pk *p, rt_pk_cull_fn cull, u
             m = 0;
         if (!m)
             return;
-        m = cull(p, v[0], v[1], v[2], m);
+#ifdef RT_PK_X86
+        if (p->any && rt_pk_avx2) {
+            uint64_t sure;
+            m = rt_pk_cull_any_avx2(p, v[0], v[1], v[2], m, &sure);
+            if (sure) { /* hits, as the exact test finds them */
+                p->hit |= sure;
+                p->live &= ~sure;
+                p->cand &= ~sure;
+                m &= ~sure;
+            }
+        } else
+#endif
+            m = cull(p, v[0], v[1], v[2], m);
         rt_pk_make(p, m);
         rt_tri_err q;
         int haveq = 0; /* q made at the first nearest hit */
@@ -1090,14 +1183,6 @@ static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint3
 }
 
 #ifdef RT_PK_X86
-/* the lanes of mask as an AVX2 mask of four doubles, lanes k .. k+3 */
-__attribute__((target("avx2"))) static inline __m256d rt_pk_lanes(uint64_t mask, int k)
-{
-    const __m256i bit = _mm256_set_epi64x(8, 4, 2, 1);
-    const __m256i m = _mm256_set1_epi64x((long long)((mask >> k) & 15u));
-    return _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(m, bit), bit));
-}
-
 /* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 4 rays a step; the lanes of
    rays not in the mask hold finite values, set by rt_pk_setup) */
 __attribute__((target("avx2"))) static uint64_t rt_pk_in_avx2(const rt_pk *p, uint64_t mask,
