@@ -29,7 +29,9 @@
  * whose edge functions are non-zero with one sign, with its operations: it decides those rays
  * itself (a shadow ray's own surface, crossed behind its origin, is ruled out there).
  * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (or RT_PK_MAXS
- * second-level cells) is handed to the single-ray walk as a whole.
+ * second-level cells) is handed to the single-ray walk as a whole; an any-hit packet's rays
+ * of other axes or another octant than its first ray walked are traced singly, the others
+ * stay a packet.
  *
  * Same hits as the single-ray walk: every primitive is tested on the whole range
  * [tmin, tmax] of each ray, so a ray's computed hits are those of the exact test, each t bit
@@ -125,6 +127,8 @@ typedef struct rt_pk {
     double rot[RT_PACKET][2][3];
     rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
     const rt_ray *rays;      /* the rays as given */
+    uint64_t alone;          /* any-hit: rays left to the single-ray walk by the set-up (not
+                                of the packet's axes and octant) */
     uint64_t made;           /* rays whose r[k] is made (rt_pk_make; all but after
                                 rt_pk_setup_avx2, which leaves them to the first exact test) */
 } rt_pk;
@@ -887,7 +891,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->sc = sc;
     p->n = (int)n;
     p->any = any;
-    p->hit = p->over = p->fmask = 0;
+    p->hit = p->over = p->fmask = p->alone = 0;
     p->steps = 0;
     p->hbox = ctx->hbox;
     p->r = rx;
@@ -945,8 +949,15 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
             rt_pk_lane0(p, k);
             continue; /* a miss, as on the single-ray walk */
         }
-        if (!rt_pk_ray(p, k, &oct))
-            return 0;
+        if (!rt_pk_ray(p, k, &oct)) {
+            if (!any)
+                return 0;
+            /* an any-hit ray of other axes or another octant: traced singly, the others
+               stay a packet (shadow rays toward a light near a diagonal of the grid) */
+            p->alone |= (uint64_t)1 << k;
+            rt_pk_lane0(p, k);
+            continue;
+        }
         if (!(judged && !g->rotated ? rt_pk_range(p, k, t[0], t[1]) : rt_pk_clip(p, k)))
             continue; /* misses the grid box */
         p->live |= (uint64_t)1 << k;
@@ -1780,7 +1791,7 @@ int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *
     }
     /* the rays not finished by a walk given up take the single-ray walk; a ray that hit
        is occluded, one whose walk ended is not */
-    const uint64_t left = rt_pk_walk(&p, ctx) ? 0 : p.live;
+    const uint64_t left = (rt_pk_walk(&p, ctx) ? 0 : p.live) | p.alone;
     rt_pk_make(&p, left);
     if (left) {
         ps->fallback_packets++;
