@@ -1,10 +1,17 @@
 /* SPDX-License-Identifier: MIT */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE 1 /* madvise, MADV_POPULATE_WRITE */
+#endif
 #include "gks_alloc.h"
 #include "gks_export.h"
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #ifdef GKS_FAULT_INJECTION
 /* Failure injection state (SQLite test_malloc style), only in the test build of the
@@ -98,6 +105,23 @@ char *gks_strdup(const char *s)
 void gks_free(void *p)
 {
     free(p);
+}
+
+int gks_populate(const void *p, size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+    const long ps = sysconf(_SC_PAGESIZE);
+    if (bytes == 0 || ps <= 0 || (ps & (ps - 1)) != 0 || (uintptr_t)p > UINTPTR_MAX - bytes)
+        return 0;
+    const uintptr_t pg = (uintptr_t)ps;
+    const uintptr_t a = (uintptr_t)p & ~(pg - 1);
+    const uintptr_t last = ((uintptr_t)p + bytes - 1) & ~(pg - 1);
+    return madvise((void *)a, last - a + pg, MADV_POPULATE_WRITE) == 0;
+#else
+    (void)p;
+    (void)bytes;
+    return 0;
+#endif
 }
 
 #ifdef GKS_FAULT_INJECTION

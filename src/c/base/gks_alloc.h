@@ -26,6 +26,13 @@ char *gks_strdup(const char *s);
 /* strndup through the funnel (copies at most n bytes, always terminates). */
 char *gks_strndup(const char *s, size_t n);
 void gks_free(void *p);
+/* Makes the pages holding [p, p + bytes) present for writing in one call (Linux
+ * madvise(MADV_POPULATE_WRITE); contents unchanged): a first touch of fresh memory costs one
+ * page fault per 4 KiB, ~10 us each in the virtual machines measured, about three times the
+ * populate's cost per page (docs/bench/scale.md). The range must lie in memory the caller
+ * owns; its first and last pages are included whole (a page that holds a mapped byte is
+ * mapped whole). 1 if done, 0 if not (bytes 0, another system, an older kernel). */
+int gks_populate(const void *p, size_t bytes);
 
 #ifdef GKS_FAULT_INJECTION
 /* Test hooks, only in the test build of the modules (gks3d_test): make the Nth allocation

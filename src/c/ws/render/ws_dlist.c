@@ -3,17 +3,10 @@
  * ws_dlist.c -- the retained display list of one frame (ws_dlist.h): chunks allocated in one
  * block each, with fixed capacities, filled in order and handed to the sink when sealed.
  */
-#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
-#define _DEFAULT_SOURCE 1 /* madvise, MADV_POPULATE_WRITE */
-#endif
 #include "ws_dlist.h"
 #include "gks_alloc.h"
 #include <limits.h>
 #include <string.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
 
 /* The arrays of a chunk, in the order of ws_dl_chunk.cap. */
 enum { A_REC, A_XYZ, A_NRM, A_RGB, A_CNT, A_IDX, A_ATTR, N_ARR };
@@ -112,26 +105,6 @@ void ws_dlist_seal(ws_dlist *dl)
         dl->sink(dl->sink_user, c);
 }
 
-/* Makes the whole pages inside [p, p + bytes) present in one call: a new chunk's records,
- * vertices and counts are written at once by the appending thread, and one page fault per
- * 4 KiB costs ~10 us in the virtual machine measured, about three times the populate's cost
- * per page (docs/bench/scale.md). Contents unchanged; errors (older kernels) ignored. */
-static void populate(void *p, size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-    const long ps = sysconf(_SC_PAGESIZE);
-    if (ps <= 0 || (ps & (ps - 1)) != 0)
-        return;
-    const uintptr_t pg = (uintptr_t)ps;
-    const uintptr_t a = ((uintptr_t)p + pg - 1) & ~(pg - 1), e = ((uintptr_t)p + bytes) & ~(pg - 1);
-    if (e > a)
-        (void)madvise((void *)a, e - a, MADV_POPULATE_WRITE);
-#else
-    (void)p;
-    (void)bytes;
-#endif
-}
-
 /* A new chunk with room for at least want[] (and the defaults), linked after the current one,
  * which is sealed. 0 or 300 (nothing changed). */
 static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
@@ -160,7 +133,7 @@ static int chunk_new(ws_dlist *dl, const size_t want[N_ARR])
     } else {
         b = gks_alloc_array(1, total);
         if (b) /* the records, vertices (normals, colours) and counts */
-            populate(b, off[A_IDX]);
+            (void)gks_populate(b, off[A_IDX]); /* written at once by the appender */
     }
     if (!b)
         return 300;

@@ -11,9 +11,6 @@
  * ignored by the tracer (a traced surface covers them). Lights the tracer rejects (a spot
  * light of spread 0, a zero direction) are left out. Documentation: docs/RAYTRACING.md.
  */
-#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
-#define _DEFAULT_SOURCE 1 /* madvise, MADV_POPULATE_WRITE */
-#endif
 #include "ws_raytrace.h"
 #include "ws_vrc.h"
 #include "gks_alloc.h"
@@ -29,9 +26,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 /* The attributes a pair of tracer surfaces is made of (consecutive areas of one attribute
  * setting share one pair). */
@@ -209,23 +203,6 @@ static int pf_read(ws_rt *r, uintptr_t lo[2], uintptr_t hi[2])
     return atomic_load_explicit(&r->pf.seq, memory_order_relaxed) == q ? n : 0;
 }
 
-/* Makes the pages of [a, e) present (contents unchanged; whole pages from a's). */
-static int pf_populate(uintptr_t a, uintptr_t e)
-{
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-    const long ps = sysconf(_SC_PAGESIZE);
-    if (ps <= 0 || (ps & (ps - 1)) != 0)
-        return 0;
-    const uintptr_t pg = (uintptr_t)ps;
-    a &= ~(pg - 1);
-    e = (e + pg - 1) & ~(pg - 1);
-    return e > a && madvise((void *)a, e - a, MADV_POPULATE_WRITE) == 0;
-#else
-    (void)a, (void)e;
-    return 0;
-#endif
-}
-
 /* While the queue is full, the application's thread makes the next pages of the worker's
  * scene present (up to PF_STEP per call), ahead of the worker: on this VM the first touch of
  * fresh memory is most of the worker's time in the calls (docs/bench/rt_tuning.md,
@@ -245,7 +222,7 @@ static int prefault_step(ws_rt *r)
         uintptr_t e = (a & ~(PF_STEP - 1)) + PF_STEP;
         e = e < end ? e : end;
         r->pf_done[i] = e;
-        if (pf_populate(a, e))
+        if (gks_populate((const void *)a, e - a))
             return 1;
     }
     return 0;
