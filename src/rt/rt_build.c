@@ -1816,6 +1816,19 @@ static double rt_box_volume(const double bb[6])
     return rt_dmax(e[0], 1e-3 * mx) * rt_dmax(e[1], 1e-3 * mx) * rt_dmax(e[2], 1e-3 * mx);
 }
 
+/* Widens bb (min xyz, max xyz) by the n points pts, each rotated into the grid's frame. */
+static void rt_box_add_points(const rt_grid *g, const double *pts, size_t n, double bb[6])
+{
+    for (size_t q = 0; q < n; q++) {
+        double p[3];
+        rt_grid_point(g, pts + 3 * q, p);
+        for (int a = 0; a < 3; a++) {
+            bb[a] = rt_dmin(bb[a], p[a]);
+            bb[3 + a] = rt_dmax(bb[3 + a], p[a]);
+        }
+    }
+}
+
 /* The frame's passes over all primitives (the candidates, the boxes) run in nt parts of
  * consecutive primitives on the pool, each with its own scratch (b[k]); their results are
  * merged in part order into what one pass gives: the boxes are minima and maxima, the
@@ -1848,14 +1861,7 @@ static void rt_frame_box_part(void *arg, int k, int n)
     }
     if (j->fp) {
         rt_par_range(j->nfp, k, n, &lo, &hi);
-        for (size_t q = lo; q < hi; q++) {
-            double p[3];
-            rt_grid_point(&sc->grid, j->fp + 3 * q, p);
-            for (int a = 0; a < 3; a++) {
-                bb[a] = rt_dmin(bb[a], p[a]);
-                bb[3 + a] = rt_dmax(bb[3 + a], p[a]);
-            }
-        }
+        rt_box_add_points(&sc->grid, j->fp + 3 * lo, hi - lo, bb);
         memcpy(j->bb[k], bb, sizeof bb);
         j->err[k] = 0;
         return;
@@ -1863,14 +1869,7 @@ static void rt_frame_box_part(void *arg, int k, int n)
     rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     for (size_t m = lo; m < hi && !err; m++) {
         size_t npts = rt_prim_points(sc, b, &sc->prim[m * j->stride], &err);
-        for (size_t q = 0; q < npts; q++) {
-            double p[3];
-            rt_grid_point(&sc->grid, b->pts + 3 * q, p);
-            for (int a = 0; a < 3; a++) {
-                bb[a] = rt_dmin(bb[a], p[a]);
-                bb[3 + a] = rt_dmax(bb[3 + a], p[a]);
-            }
-        }
+        rt_box_add_points(&sc->grid, b->pts, npts, bb);
     }
     memcpy(j->bb[k], bb, sizeof bb);
     j->err[k] = err;
