@@ -512,17 +512,26 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
         t0 = rt_v4sel(tn > t0, tn, t0);
         t1 = rt_v4sel(tf < t1, tf, t1);
     }
+    /* no usable lane enters the box (rows of eye rays beside the scene): the k-DOP can only
+       shorten the ranges, so every usable lane misses (state 1; a lane the k-DOP would have
+       left to the one-ray code as parallel to a slab misses the box there as well), and
+       nothing more is read */
+    rt_v4l in = (t0 <= t1) & (rt_v4abits(t0) < inf); /* no NaN here */
+    if (!_mm256_movemask_pd((__m256d)(in & ~bad))) {
+        const rt_v4i st4 = __builtin_convertvector(~bad & (rt_v4l){1, 1, 1, 1}, rt_v4i);
+        memcpy(p->state, &st4, sizeof p->state);
+        return;
+    }
     /* and rt_kdop_clip's cut to the occupied space's slabs */
     rt_v4l par;
     rt_kdop4(g, o, d, &t0, &t1, &par);
     bad |= par;
-    const rt_v4l in = (t0 <= t1) & (rt_v4abits(t0) < inf); /* no NaN here */
+    in = (t0 <= t1) & (rt_v4abits(t0) < inf);
     const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
     const rt_v4i st4 = __builtin_convertvector(st, rt_v4i);
     memcpy(p->state, &st4, sizeof p->state);
-    /* no lane enters the box (rows of eye rays beside the scene): nothing more is read */
-    const rt_v4l go = st & (rt_v4l){2, 2, 2, 2};
-    if (!(go[0] | go[1] | go[2] | go[3]))
+    /* no lane enters the k-DOP: nothing more is read */
+    if (!_mm256_movemask_pd((__m256d)(in & ~bad)))
         return;
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
