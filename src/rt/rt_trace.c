@@ -1175,6 +1175,12 @@ RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_pre4 *p, int j)
                        p, j);
 }
 
+/* the answer of a ray that misses: every field written once (the output array is cold) */
+static inline void rt_miss_hit(rt_hit *h)
+{
+    *h = (rt_hit){.t = INFINITY, .prim = -1};
+}
+
 /* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j) */
 RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
                                 const rt_pre4 *p, int j)
@@ -1198,8 +1204,17 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         i = rt_nearest_core(sc, c, &r, &r, &t);
     if (i >= 0)
         rt_fill_hit(sc, &r, i, t, h);
-    else /* every field written once (the output array is cold) */
-        *h = (rt_hit){.t = INFINITY, .prim = -1};
+    else
+        rt_miss_hit(h);
+}
+
+/* 1 if every lane of a four-ray set-up is a usable ray that misses (state 1) */
+static inline int rt_pre4_all_miss(const rt_pre4 *p)
+{
+    _Static_assert(sizeof p->state == 2 * sizeof(uint64_t), "four 32-bit states");
+    uint64_t s[2];
+    memcpy(s, p->state, sizeof s);
+    return s[0] == s[1] && s[0] == ((uint64_t)1 << 32 | 1);
 }
 
 int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
@@ -1214,6 +1229,11 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
+            if (rt_pre4_all_miss(&p)) { /* rows of eye rays beside the scene */
+                for (int j = 0; j < 4; j++)
+                    rt_miss_hit(hits + k + j);
+                continue;
+            }
             for (int j = 0; j < 4; j++)
                 rt_intersect_one(sc, &c, rays + k + j, hits + k + j, &p, j);
         }
