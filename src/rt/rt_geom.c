@@ -13,6 +13,15 @@
 #include <emmintrin.h>
 #endif
 
+/* rt_tri_unit_normal's fallback (slivers, extreme coordinates), out of line: inlined, its
+   scaled computation made the compiler load and spill the vertices for it ahead of the
+   common path's test, about 70 instructions per hit of a ray */
+__attribute__((noinline, cold)) void rt_tri_unit_normal_slow(const double *v0, const double *v1,
+                                                             const double *v2, double n[3])
+{
+    (void)rt_tri_normal_sane(v0, v1, v2, n);
+}
+
 void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3])
 {
     const double *v[3];

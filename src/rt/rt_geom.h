@@ -68,6 +68,7 @@ static inline int rt_tri_normal_sane(const double *v0, const double *v1, const d
    is ill-conditioned (the sine of the angle at v0 below 1e-11: a sliver, whose cross product
    loses digits), or its square leaves the range of normal doubles (coordinates beyond about
    1e75 or below 1e-75), rt_tri_normal_sane's scaled computation is taken instead. */
+void rt_tri_unit_normal_slow(const double *v0, const double *v1, const double *v2, double n[3]);
 static inline void rt_tri_unit_normal(const double *v0, const double *v1, const double *v2,
                                       double n[3])
 {
@@ -86,7 +87,7 @@ static inline void rt_tri_unit_normal(const double *v0, const double *v1, const 
         n[2] = c2 / len;
         return;
     }
-    (void)rt_tri_normal_sane(v0, v1, v2, n);
+    rt_tri_unit_normal_slow(v0, v1, v2, n);
 }
 
 /* the front unit normal of committed triangle primitive i (rt_geom.c) */
