@@ -226,37 +226,11 @@ static inline int rt_dda_cell(const rt_box *g, const rt_gray *r, double t, int a
     return f <= 0.0 ? 0 : (f >= (double)(g->n[a] - 1) ? g->n[a] - 1 : (int)f);
 }
 
-/* cuts the ray part [*t0, *t1] to box g: 0 if nothing remains */
-static inline __attribute__((always_inline)) int rt_box_clip(const rt_box *g, const rt_gray *r,
-                                                             double *t0p, double *t1p)
+/* rt_box_clip's loop: any ray (a direction component 0 is a slab test) */
+static inline __attribute__((always_inline)) int rt_box_clip_loop(const rt_box *g, const rt_gray *r,
+                                                                  double *t0p, double *t1p)
 {
     double t0 = *t0p, t1 = *t1p;
-#if defined(__SSE2__)
-    /* no component 0 (the usual ray): the same operations with axes 0-1 in two SSE2 lanes,
-       the range cut axis by axis in the loop's order (max_sd / min_sd keep the loop's pick
-       between +0 and -0) */
-    const __m128d z = _mm_setzero_pd(), d01 = _mm_loadu_pd(r->d), d2 = _mm_load_sd(r->d + 2);
-    if (!_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(d01, z), _mm_cmpeq_sd(d2, z)))) {
-        const __m128d o01 = _mm_loadu_pd(r->o), i01 = _mm_loadu_pd(r->invd);
-        const __m128d o2 = _mm_load_sd(r->o + 2), i2 = _mm_load_sd(r->invd + 2);
-        const __m128d ta01 = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(g->lo), o01), i01);
-        const __m128d tb01 = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(g->hi), o01), i01);
-        const __m128d ta2 = _mm_mul_sd(_mm_sub_sd(_mm_load_sd(g->lo + 2), o2), i2);
-        const __m128d tb2 = _mm_mul_sd(_mm_sub_sd(_mm_load_sd(g->hi + 2), o2), i2);
-        const __m128d tn01 = _mm_min_pd(ta01, tb01), tf01 = _mm_max_pd(ta01, tb01);
-        const __m128d tn2 = _mm_min_sd(ta2, tb2), tf2 = _mm_max_sd(ta2, tb2);
-        __m128d v0 = _mm_max_sd(tn01, _mm_set_sd(t0)), v1 = _mm_min_sd(tf01, _mm_set_sd(t1));
-        v0 = _mm_max_sd(_mm_unpackhi_pd(tn01, tn01), v0);
-        v1 = _mm_min_sd(_mm_unpackhi_pd(tf01, tf01), v1);
-        t0 = _mm_cvtsd_f64(_mm_max_sd(tn2, v0));
-        t1 = _mm_cvtsd_f64(_mm_min_sd(tf2, v1));
-        if (!(t0 <= t1) || !isfinite(t0))
-            return 0;
-        *t0p = t0;
-        *t1p = t1;
-        return 1;
-    }
-#endif
     for (int a = 0; a < 3; a++) {
         if (r->d[a] == 0.0) { /* +0.0 and -0.0 */
             if (r->o[a] < g->lo[a] || r->o[a] > g->hi[a])
@@ -276,6 +250,51 @@ static inline __attribute__((always_inline)) int rt_box_clip(const rt_box *g, co
     *t0p = t0;
     *t1p = t1;
     return 1;
+}
+
+/* rt_box_clip for a ray known to have no direction component 0 (the four-ray set-up's rays:
+   the walk's sub-grid clips skip the test) */
+static inline __attribute__((always_inline)) int rt_box_clip_nz(const rt_box *g, const rt_gray *r,
+                                                                double *t0p, double *t1p)
+{
+#if defined(__SSE2__)
+    /* the same operations as the loop with axes 0-1 in two SSE2 lanes, the range cut axis by
+       axis in the loop's order (max_sd / min_sd keep the loop's pick between +0 and -0) */
+    double t0 = *t0p, t1 = *t1p;
+    const __m128d o01 = _mm_loadu_pd(r->o), i01 = _mm_loadu_pd(r->invd);
+    const __m128d o2 = _mm_load_sd(r->o + 2), i2 = _mm_load_sd(r->invd + 2);
+    const __m128d ta01 = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(g->lo), o01), i01);
+    const __m128d tb01 = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(g->hi), o01), i01);
+    const __m128d ta2 = _mm_mul_sd(_mm_sub_sd(_mm_load_sd(g->lo + 2), o2), i2);
+    const __m128d tb2 = _mm_mul_sd(_mm_sub_sd(_mm_load_sd(g->hi + 2), o2), i2);
+    const __m128d tn01 = _mm_min_pd(ta01, tb01), tf01 = _mm_max_pd(ta01, tb01);
+    const __m128d tn2 = _mm_min_sd(ta2, tb2), tf2 = _mm_max_sd(ta2, tb2);
+    __m128d v0 = _mm_max_sd(tn01, _mm_set_sd(t0)), v1 = _mm_min_sd(tf01, _mm_set_sd(t1));
+    v0 = _mm_max_sd(_mm_unpackhi_pd(tn01, tn01), v0);
+    v1 = _mm_min_sd(_mm_unpackhi_pd(tf01, tf01), v1);
+    t0 = _mm_cvtsd_f64(_mm_max_sd(tn2, v0));
+    t1 = _mm_cvtsd_f64(_mm_min_sd(tf2, v1));
+    if (!(t0 <= t1) || !isfinite(t0))
+        return 0;
+    *t0p = t0;
+    *t1p = t1;
+    return 1;
+#else
+    return rt_box_clip_loop(g, r, t0p, t1p);
+#endif
+}
+
+/* cuts the ray part [*t0, *t1] to box g: 0 if nothing remains */
+static inline __attribute__((always_inline)) int rt_box_clip(const rt_box *g, const rt_gray *r,
+                                                             double *t0p, double *t1p)
+{
+#if defined(__SSE2__)
+    /* no component 0 (the usual ray): the SSE2 lanes */
+    const __m128d z = _mm_setzero_pd(), d01 = _mm_loadu_pd(r->d), d2 = _mm_load_sd(r->d + 2);
+    if (!_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(d01, z), _mm_cmpeq_sd(d2, z))))
+        return rt_box_clip_nz(g, r, t0p, t1p);
+#endif
+    return rt_box_clip_loop(g, r, t0p, t1p);
 }
 
 /* The cut of the ray part [*t0, *t1] (clipped to the grid box) to the slabs of the occupied
@@ -952,7 +971,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             const rt_subgrid *sg = &subs[sub[ci]];
             double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
             s1 = RT_MIN(s1, t1);
-            if (rt_box_clip(&sg->b, gr, &s0, &s1)) {
+            if (pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1) : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0 ? rt_walk_sub_nearest(w, sg, s0, s1)
                                    : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
