@@ -1233,7 +1233,8 @@ static inline int rt_pre4_all_miss(const rt_pre4 *p)
     _Static_assert(sizeof p->state == 2 * sizeof(uint64_t), "four 32-bit states");
     uint64_t s[2];
     memcpy(s, p->state, sizeof s);
-    return s[0] == s[1] && s[0] == ((uint64_t)1 << 32 | 1);
+    const uint64_t one2 = (uint64_t)1 << 32 | 1;
+    return ((s[0] ^ one2) | (s[1] ^ one2)) == 0; /* one branch */
 }
 
 int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
