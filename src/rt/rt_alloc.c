@@ -93,6 +93,16 @@ void *rt_alloc_array(size_t n, size_t size)
     return p;
 }
 
+void *rt_alloc_lines(size_t n, size_t size)
+{
+    size_t bytes;
+    if (!rt_mul_ok(n, size, &bytes) || bytes > SIZE_MAX - RT_LINE || RT_INJECTED_FAILURE())
+        return NULL;
+    /* C11's aligned_alloc takes a size that is a multiple of the alignment */
+    const size_t lines = bytes ? (bytes - 1) / RT_LINE + 1 : 1;
+    return aligned_alloc(RT_LINE, lines * RT_LINE);
+}
+
 void *rt_calloc_array(size_t n, size_t size)
 {
     size_t bytes;

@@ -1576,7 +1576,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
     if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
         err = 2;
     if (!err) {
-        g->subs = rt_alloc_array(nsubs ? nsubs : 1, sizeof(rt_subgrid));
+        g->subs = rt_alloc_lines(nsubs ? nsubs : 1, sizeof(rt_subgrid));
         if (!g->subs || !rt_big_grow(&part[0].off, total + 1, sizeof(uint32_t)) ||
             !rt_big_grow(&part[0].refs, nref ? nref : 1, sizeof(uint32_t)))
             err = 1;

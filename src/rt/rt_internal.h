@@ -18,6 +18,8 @@
 
 /* ---- allocation funnel (rt_alloc.c) ---- */
 void *rt_alloc_array(size_t n, size_t size);
+/* rt_alloc_array's n elements starting on a cache line (RT_LINE bytes; free() frees them) */
+void *rt_alloc_lines(size_t n, size_t size);
 void *rt_calloc_array(size_t n, size_t size);
 void *rt_realloc_array(void *p, size_t n, size_t size);
 /* Grows *p (element size es) so that it holds at least need elements; *cap updated. */
@@ -174,13 +176,19 @@ typedef struct rt_box {
     int n[3];
 } rt_box;
 
-/* second level: a finer grid inside one crowded top-level cell */
+/* second level: a finer grid inside one crowded top-level cell. Two cache lines, the grid's
+   array of them starting on a line (rt_alloc_lines): the top walk's clip to the box (a third
+   of the rays miss it) reads the first line (lo, hi), a walk of it both; on malloc's 16-byte
+   alignment a record spanned three lines unless the array happened to start on a line
+   (docs/bench/rt_tuning.md) */
 typedef struct rt_subgrid {
     rt_box b;
     uint32_t first;    /* first of its cells among the grid's sub cells (soff, sleaf) */
     uint32_t ref0;     /* its first reference in srefs */
     uint32_t first16;  /* its first cell offset in the grid's soff16 (first + its index) */
 } rt_subgrid;
+_Static_assert(sizeof(rt_subgrid) == 2 * RT_LINE && offsetof(rt_subgrid, b.hi) + 24 <= RT_LINE,
+               "rt_subgrid: two cache lines, the box's clip in the first");
 
 /* linear index of cell c in box g (x fastest) */
 static inline size_t rt_cell_index(const rt_box *g, const int c[3])

@@ -3,7 +3,8 @@
  * test_rt_alloc.c -- the tracer's allocation funnel (src/rt/rt_alloc.c): arrays grown by
  * rt_grow and rt_big_grow keep their values; an rt_big, once large, never moves again and
  * (on Linux) is one mapping, so growing it touches only the pages it newly uses; sizes that
- * overflow are refused without changing anything.
+ * overflow are refused without changing anything; rt_alloc_lines' arrays start on a cache
+ * line.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -100,6 +101,16 @@ static void test_sizes(void **u)
     assert_false(rt_grow(&q, &cap, SIZE_MAX / 2, 8));
     assert_null(q);
     assert_int_equal(cap, 0);
+    assert_null(rt_alloc_lines(SIZE_MAX / 2, 4));
+    assert_null(rt_alloc_lines(1, SIZE_MAX - 8));
+    const size_t n[] = {0, 1, 3, 17, 1000};
+    for (size_t k = 0; k < sizeof n / sizeof n[0]; k++) {
+        unsigned char *l = rt_alloc_lines(n[k], sizeof(rt_subgrid));
+        assert_non_null(l);
+        assert_int_equal((uintptr_t)l % RT_LINE, 0);
+        memset(l, 0xA5, n[k] * sizeof(rt_subgrid)); /* all of it usable (valgrind, ASan) */
+        free(l);
+    }
 }
 
 /* rt_scene_input_next: no ranges while the triangle arrays are on malloc; once they are

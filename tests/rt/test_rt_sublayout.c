@@ -10,7 +10,8 @@
  * build held (rebuilt from the sub-grids' own counts: offsets ascending, ending at nsrefs,
  * every reference a primitive); and rays through the cluster get the brute-force scene's hits
  * bit for bit (rt_intersect, rt_occluded), the packet path the single-ray path's
- * (rt_intersect_packet, rt_occluded_packet), so the walk reads either layout.
+ * (rt_intersect_packet, rt_occluded_packet), so the walk reads either layout. The sub-grid
+ * records start on cache lines.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -57,6 +58,9 @@ static void check_lists(const rt_scene *sc)
 {
     const rt_grid *g = &sc->grid;
     assert_true(g->nsubs > 0);
+    /* the records on cache lines, two each (rt_internal.h: the walk reads one or two) */
+    assert_int_equal((uintptr_t)g->subs % RT_LINE, 0);
+    assert_int_equal(sizeof *g->subs, 2 * RT_LINE);
     uint32_t at = 0;
     size_t cells = 0;
     for (size_t k = 0; k < g->nsubs; k++) {
