@@ -11,6 +11,9 @@
  *                                     primary and shadow rays in 8x8 pixel blocks through the
  *                                     packet path), for profilers: e.g.
  *                                     valgrind --tool=callgrind --toggle-collect=ours_pass
+ *   cmp_embree embree RES SET mesh.off  Embree only on the same rays (the single-ray sets, the
+ *                                     rays made by ours as above): rtcIntersect1 / rtcOccluded1,
+ *                                     --toggle-collect=embree_pass
  *   cmp_embree commit SRC KIND [T]   one rt_scene_commit on T threads (default 1) of SRC: N
  *                                     random triangles (as in build) or a mesh file, KIND tri
  *                                     (separate triangles) or mesh (one indexed mesh); prints
@@ -1436,8 +1439,17 @@ static size_t ours_block_set(const bs_scene *s, int res, int shadow, const rt_ra
     return m;
 }
 
-/* ours only on one ray set, traced once after the rays are made (for callgrind/perf) */
-static int cmd_ours(int res, const char *set, const char *file)
+/* the one traced pass of cmd_ours' Embree run (callgrind --toggle-collect=embree_pass):
+   rtcIntersect1 or rtcOccluded1 per ray, as the rays command times them */
+__attribute__((noinline)) static double embree_pass(RTCScene esc, const bs_scene *s, int shadow, size_t m,
+                                                    const rt_ray *rays, em_res *er)
+{
+    return shadow ? time_embree_shadow(esc, rays, m, er) : time_embree_primary(esc, s, rays, m, er);
+}
+
+/* ours only (embree = 0) or Embree only (1: the single-ray sets) on one ray set, traced once
+   after the rays are made (for callgrind/perf); the rays are made by ours either way */
+static int cmd_ours(int res, const char *set, const char *file, int embree)
 {
     bs_scene s;
     char err[512];
@@ -1478,6 +1490,33 @@ static int cmd_ours(int res, const char *set, const char *file)
         m = ours_block_set(&s, res, shadow, rays, hits, set_rays, src);
     } else {
         fprintf(stderr, "unknown ray set %s (primary, shadow, inside, misses, packets, shadowpk)\n", set);
+        goto done;
+    }
+    if (embree) {
+        if (packets) {
+            fprintf(stderr, "embree: single-ray sets only (primary, shadow, inside, misses)\n");
+            goto done;
+        }
+        RTCDevice dev = rtcNewDevice("threads=1,set_affinity=0");
+        RTCScene esc = dev ? em_scene(dev, s.verts_vrc, s.nverts, s.tris, s.ntris) : NULL;
+        em_res er = {bs_alloc(m ? m : 1, sizeof(int)), bs_alloc(m ? m : 1, sizeof(float)), occ};
+        size_t nh = 0;
+        if (esc && er.prim && er.t) {
+            rtcCommitScene(esc);
+            const double te = embree_pass(esc, &s, shadow, m, set_rays, &er);
+            for (size_t k = 0; k < m; k++)
+                nh += shadow ? occ[k] : er.prim[k] >= 0;
+            printf("%s %s: %zu rays, Embree %.3f s CPU, %.2f Mrays/s (one pass), %zu %s\n", file, set, m, te,
+                   te > 0 ? m / te * 1e-6 : 0.0, nh, shadow ? "occluded" : "hits");
+            rc = 0;
+        } else
+            fprintf(stderr, "Embree scene failed\n");
+        free(er.prim);
+        free(er.t);
+        if (esc)
+            rtcReleaseScene(esc);
+        if (dev)
+            rtcReleaseDevice(dev);
         goto done;
     }
     double t0 = bs_thread_cpu();
@@ -1544,13 +1583,13 @@ int main(int argc, char **argv)
         return cmd_build();
     if ((argc == 4 || argc == 5) && !strcmp(argv[1], "commit"))
         return cmd_commit(argv[2], argv[3], argc == 5 ? atoi(argv[4]) : 1);
-    if (argc == 5 && !strcmp(argv[1], "ours")) {
+    if (argc == 5 && (!strcmp(argv[1], "ours") || !strcmp(argv[1], "embree"))) {
         int res = atoi(argv[2]);
         if (res < 1 || res > 8192) {
             fprintf(stderr, "bad resolution\n");
             return 2;
         }
-        return cmd_ours(res, argv[3], argv[4]);
+        return cmd_ours(res, argv[3], argv[4], !strcmp(argv[1], "embree"));
     }
     if (argc >= 4 && !strcmp(argv[1], "judge")) {
         int res = atoi(argv[2]);
@@ -1560,7 +1599,7 @@ int main(int argc, char **argv)
         }
         return cmd_judge(res, argc - 3, argv + 3);
     }
-    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours RES SET mesh.off"
+    fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours|embree RES SET mesh.off"
                     " | cmp_embree judge RES mesh.off... | cmp_embree commit N|mesh.off tri|mesh [THREADS]\n");
     return 2;
 }
