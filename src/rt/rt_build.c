@@ -302,14 +302,24 @@ static inline void rt_pts_bbox(const double *pts, size_t npts, double bb[6])
         }
 }
 
-static int rt_cell_of(const rt_box *g, double x, int a)
+/* the cell of coordinate x on axis a of g, clamped to the grid (NaN: 0); in SSE2 with
+   maxsd / minsd instead of branches, which the build's boxes take at random (gcc makes
+   branches of the plain C: 0.5 M mispredicted of 5.8 M in a commit of 10^5 random
+   triangles) */
+static inline int rt_cell_of(const rt_box *g, double x, int a)
 {
-    double f = (x - g->lo[a]) * g->inv_cw[a];
+    const double f = (x - g->lo[a]) * g->inv_cw[a];
+#if defined(__SSE2__)
+    /* maxsd gives its second operand 0 when f is NaN, minsd the first when not above */
+    const __m128d c = _mm_max_sd(_mm_set_sd(f), _mm_setzero_pd());
+    return _mm_cvttsd_si32(_mm_min_sd(c, _mm_set_sd((double)(g->n[a] - 1))));
+#else
     if (!(f > 0.0))
         return 0;
     if (f >= (double)(g->n[a] - 1))
         return g->n[a] - 1;
     return (int)f;
+#endif
 }
 
 /* cells ~= target, as cubic as the box allows; dims thinner than 1/1000 of the largest get 1 */
