@@ -682,9 +682,17 @@ rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const dou
     /* memo of the Y group per x (this z slab) and of the Z group per (x, y), as bit masks
        over x (RT_SPAN <= 32): bit ix of *k set when the group of that x is known, of *v when
        it separates (no memset of byte arrays per slab and triangle); a group that the filter
-       leaves undecided is not kept (rare: every cell sharing it asks again) */
+       leaves undecided is not kept (rare: every cell sharing it asks again). The Z memo's
+       first 8 rows cleared at once (a fixed size: stores, no loop; a test of the first slab
+       per row instead was a branch taken at random) */
     uint32_t gzk[RT_SPAN], gzv[RT_SPAN];
-    int zfirst = 1; /* the first z slab tested: no memo yet (written by its rows) */
+    if (c1[1] - c0[1] < 8) {
+        for (int i = 0; i < 8; i++) /* a fixed count: unrolled stores */
+            gzk[i] = gzv[i] = 0;
+    } else {
+        memset(gzk, 0, sizeof gzk);
+        memset(gzv, 0, sizeof gzv);
+    }
     uint64_t nexact = 0;
     int c[3];
     for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++) {
@@ -698,7 +706,7 @@ rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const dou
             if (y->sep)
                 continue;
             int gx = 2; /* the X group of this (y, z); 2: not yet known */
-            uint32_t zk = zfirst ? 0 : gzk[iy], zv = zfirst ? 0 : gzv[iy];
+            uint32_t zk = gzk[iy], zv = gzv[iy];
             for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
                 const int ix = c[0] - c0[0];
                 const uint32_t bit = (uint32_t)1 << ix;
@@ -745,7 +753,6 @@ rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const dou
             gzk[iy] = zk;
             gzv[iy] = zv;
         }
-        zfirst = 0;
     }
     if (nexact)
         __atomic_fetch_add(&rt_exact_cells, nexact, __ATOMIC_RELAXED);
