@@ -603,28 +603,37 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
     const double g0 = e[0][b2], g1 = e[1][b2], g2 = e[2][b2];
     const double m0 = hs[b2][0], m1 = hs[b2][1], m2 = hs[b2][2];
     double l = rt_dmax(ae[0][a], ae[2][a]), hn = HUGE_VAL, hx = 0.0;
-    for (int q = c0[a]; q <= c1[a]; q++) {
-        rt_axis_cell *x = &ac[q - c0[a]];
-        double bc, h;
-        rt_tab_box(tab, g, a, q, eps, &bc, &h);
-        x->bc = bc;
-        x->h = h;
-        /* rt_sep of V_k - bc: min_k (V_k - bc) is (min_k V_k) - bc, bit for bit (rounding
-           is monotonic), the same for max */
-        x->sep = (bb[a] - bc > h) | (bb[3 + a] - bc < -h); /* both: no branch */
-        x->nv = na * (t->v[0][a] - bc);
-        x->nh = h * ana;
-        const double d = bc - o;
-        x->cv[0] = f0 * d + m0;
-        x->cv[1] = f1 * d + m1;
-        x->cv[2] = f2 * d + m2;
-        x->cw[0] = g0 * d;
-        x->cw[1] = g1 * d;
-        x->cw[2] = g2 * d;
-        l = rt_dmax(l, rt_dmax(fabs(d), h));
-        hn = rt_dmin(hn, h);
-        hx = rt_dmax(hx, h);
+#define RT_AXIS_CELL(q)                                                                        \
+    do {                                                                                       \
+        rt_axis_cell *x = &ac[(q) - c0[a]];                                                    \
+        double bc, h;                                                                          \
+        rt_tab_box(tab, g, a, (q), eps, &bc, &h);                                              \
+        x->bc = bc;                                                                            \
+        x->h = h;                                                                              \
+        x->sep = (bb[a] - bc > h) | (bb[3 + a] - bc < -h); /* both: no branch */               \
+        x->nv = na * (t->v[0][a] - bc);                                                        \
+        x->nh = h * ana;                                                                       \
+        const double d = bc - o;                                                               \
+        x->cv[0] = f0 * d + m0;                                                                \
+        x->cv[1] = f1 * d + m1;                                                                \
+        x->cv[2] = f2 * d + m2;                                                                \
+        x->cw[0] = g0 * d;                                                                     \
+        x->cw[1] = g1 * d;                                                                     \
+        x->cw[2] = g2 * d;                                                                     \
+        l = rt_dmax(l, rt_dmax(fabs(d), h));                                                   \
+        hn = rt_dmin(hn, h);                                                                   \
+        hx = rt_dmax(hx, h);                                                                   \
+    } while (0)
+    /* rt_sep of V_k - bc: min_k (V_k - bc) is (min_k V_k) - bc, bit for bit (rounding is
+       monotonic), the same for max. The first two cells written out (most ranges have one
+       or two cells per axis): fewer loop tests */
+    RT_AXIS_CELL(c0[a]);
+    if (c1[a] > c0[a]) {
+        RT_AXIS_CELL(c0[a] + 1);
+        for (int q = c0[a] + 2; q <= c1[a]; q++)
+            RT_AXIS_CELL(q);
     }
+#undef RT_AXIS_CELL
     *L = l;
     *hmin = hn;
     *hmax = hx;
