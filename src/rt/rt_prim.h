@@ -15,16 +15,15 @@
 
 
 /* Watertight ray/triangle test (Woop, Benthin, Wald 2013) of the triangle v0 v1 v2, double precision
- * with a long double fallback for edge functions that evaluate to exactly 0. */
-static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, const double *v0,
-                                                              const double *v1, const double *v2,
-                                                              double tmin, double tmax,
-                                                              double *tout)
+ * with a long double fallback for edge functions that evaluate to exactly 0. rt_isect_tri_k:
+ * the ray's axis order (kx, ky, kz, as r's) and its origin's components in that order (ox, oy,
+ * oz) given as values, so that a caller that knows the order at compile time (rt_trace.c's
+ * any-hit lists of mesh triangles) loads the vertices' components at constant offsets. */
+static inline __attribute__((always_inline)) int
+rt_isect_tri_k(const rt_rayx *r, int kx, int ky, int kz, double ox, double oy, double oz,
+               const double *v0, const double *v1, const double *v2, double tmin, double tmax,
+               double *tout)
 {
-    const int kx = r->kx, ky = r->ky, kz = r->kz;
-    /* only the components in the ray's axis order are formed (loaded by index straight from
-       the triangle, no gather through a stack copy) */
-    const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double Az = v0[kz] - oz, Bz = v1[kz] - oz, Cz = v2[kz] - oz;
 #if defined(__SSE2__)
     /* The same IEEE operations in SSE2 lanes (every x86-64 has SSE2; no FMA is formed
@@ -84,6 +83,18 @@ static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, 
         return 0;
     *tout = t;
     return 1;
+}
+
+static inline __attribute__((always_inline)) int rt_isect_tri(const rt_rayx *r, const double *v0,
+                                                              const double *v1, const double *v2,
+                                                              double tmin, double tmax,
+                                                              double *tout)
+{
+    const int kx = r->kx, ky = r->ky, kz = r->kz;
+    /* only the components in the ray's axis order are formed (loaded by index straight from
+       the triangle, no gather through a stack copy) */
+    return rt_isect_tri_k(r, kx, ky, kz, r->o[kx], r->o[ky], r->o[kz], v0, v1, v2, tmin, tmax,
+                          tout);
 }
 
 /* edge function of the sheared 2-D edge p -> q: exactly negated for q -> p (watertight) */

@@ -671,6 +671,22 @@ RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i,
 
 enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
 
+/* rt_walkstate.any_hit: 0 transmittance; RT_ANY_HIT the first hit blocks; RT_ANY_MESH (bit 0
+   kept, so every other test takes it as RT_ANY_HIT) also every primitive a mesh triangle, no
+   skipped primitive and a CPU with AVX2 (rt_occluded's rays, rt_anyhit_kind): the cell lists
+   through rt_cell_anyhit_mesh, the second-level walks through rt_walk_sub_anyhit */
+enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
+
+/* AVX2's encoding for the RT_ANY_MESH walks: three-operand instructions, no register copies
+   (with the lists' constant axis order 12-15 % fewer instructions on the meshes' shadow rays);
+   no FMA is formed, so the operations and their bits are the SSE2 code's
+   (docs/bench/rt_tuning.md) */
+#ifdef RT_SETUP4_AVX2
+#define RT_ANYHIT_TARGET __attribute__((target("avx2")))
+#else
+#define RT_ANYHIT_TARGET
+#endif
+
 typedef struct rt_walkstate {
     const rt_scene *sc;
     rt_ctx *c;
@@ -686,6 +702,7 @@ typedef struct rt_walkstate {
 
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the empty cubes of the
  * ray's octant in dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
@@ -782,6 +799,58 @@ static __attribute__((noinline)) void rt_cell_nearest(rt_walkstate *w, const uin
     }
 }
 
+/* an any-hit cell list of mesh triangles only (RT_ANY_MESH), the ray's axis order (kx, ky, kz)
+   known at compile time: the vertices' components at constant offsets, the ray's origin in
+   registers for the whole list, no primitive kind to tell, no skipped primitive. The tests,
+   their order and the blocker are rt_cell_transmit's; 1 if blocked. */
+RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx,
+                                    int ky, int kz)
+{
+    const rt_scene *sc = w->sc;
+    const rt_rayx *r = w->r;
+    const uint32_t(*ct)[3] = sc->ctri;
+    const double(*X)[3] = (const double(*)[3])sc->mv_xyz.p;
+    const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
+    const double tmin = r->tmin, tmax = r->tmax;
+    uint64_t *const hbox = w->c->hbox;
+    const uint64_t key = (uint64_t)w->stamp << 32;
+    for (uint32_t k = 0; k < n; k++) {
+        const uint32_t i = refs[k];
+        if (hbox[i % RT_HBOX] == (key | i))
+            continue;
+        hbox[i % RT_HBOX] = key | i;
+        const uint32_t *ix = ct[i];
+        double t;
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0]], X[ix[1]], X[ix[2]], tmin, tmax,
+                           &t)) {
+            w->T = 0.0;
+            w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static __attribute__((noinline)) RT_ANYHIT_TARGET int
+rt_cell_anyhit_mesh(rt_walkstate *w, const uint32_t *refs, uint32_t n)
+{
+    /* the six axis orders of rt_rayx_shear (ky = 3 - kx - kz) */
+    switch (w->r->kz * 4 + w->r->kx) {
+    case 0 * 4 + 1:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 1, 2, 0);
+    case 0 * 4 + 2:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 2, 1, 0);
+    case 1 * 4 + 2:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 2, 0, 1);
+    case 1 * 4 + 0:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 0, 2, 1);
+    case 2 * 4 + 0:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 0, 1, 2);
+    default:
+        return rt_cell_anyhit_mesh_k(w, refs, n, 1, 0, 2);
+    }
+}
+
 /* 1 if blocked */
 static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uint32_t *refs,
                                                       uint32_t n)
@@ -865,6 +934,8 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
         rt_cell_nearest(w, refs, n);
     else if (w->any_hit && lf)
         return rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1);
+    else if (w->any_hit == RT_ANY_MESH)
+        return rt_cell_anyhit_mesh(w, refs, n);
     else
         return rt_cell_transmit(w, refs, n);
     return 0;
@@ -973,7 +1044,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             s1 = RT_MIN(s1, t1);
             if (pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1) : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0 ? rt_walk_sub_nearest(w, sg, s0, s1)
-                                   : rt_walk_sub_transmit(w, sg, s0, s1);
+                         : w->any_hit == RT_ANY_MESH ? rt_walk_sub_anyhit(w, sg, s0, s1)
+                                                     : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
                     return st;
             }
@@ -1001,8 +1073,7 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
                        t0, t1, 0, NULL, 0);
 }
 
-static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
-                                                          double t0, double t1)
+RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
@@ -1011,6 +1082,19 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
                            g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0);
     return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
                        t0, t1, 0, NULL, 0);
+}
+
+static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
+                                                          double t0, double t1)
+{
+    return rt_walk_sub_mode1(w, sg, t0, t1);
+}
+
+/* the same for RT_ANY_MESH walks, in AVX2's encoding */
+static __attribute__((noinline)) RT_ANYHIT_TARGET int
+rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
+{
+    return rt_walk_sub_mode1(w, sg, t0, t1);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
@@ -1119,8 +1203,14 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
     return w.T;
 }
 
+static int rt_anyhit_kind(const rt_scene *sc);
+
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
 {
+    /* any-hit rays without a skipped primitive (the packet path's rays traced singly) as
+       rt_occluded's */
+    if (any_hit && r->skip == RT_NO_SKIP)
+        any_hit = rt_anyhit_kind(sc);
     return rt_transmit_core(sc, c, r, NULL, any_hit);
 }
 
@@ -1264,16 +1354,16 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
     return RT_OK;
 }
 
-/* one ray of rt_occluded, as rt_intersect_one */
+/* one ray of rt_occluded, as rt_intersect_one; ah: rt_anyhit_kind's */
 RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray,
-                                        const rt_pre4 *p, int j)
+                                        const rt_pre4 *p, int j, int ah)
 {
     rt_rayx r;
     if (p && p->state[j] == 2) {
         c->blocker = -1;
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
-        rt_walkstate_init(&w, sc, c, &r, 1);
+        rt_walkstate_init(&w, sc, c, &r, ah);
         w.stamp = rt_ctx_next(c);
         if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
             return 1;
@@ -1282,7 +1372,21 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
     if ((p && p->state[j] != 0) ||
         !rt_rayx_check(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
         return 0;
-    return rt_transmit_core(sc, c, &r, &r, 1) == 0.0;
+    return rt_transmit_core(sc, c, &r, &r, ah) == 0.0;
+}
+
+/* the any-hit kind of rt_occluded's walks: RT_ANY_MESH where the scene's primitives are all
+   mesh triangles and the CPU has AVX2 (its rays never skip a primitive) */
+static int rt_anyhit_kind(const rt_scene *sc)
+{
+#ifdef RT_SETUP4_AVX2
+    pthread_once(&rt_setup4_once, rt_setup4_pick);
+    if (rt_setup4_level >= 2 && sc->use_grid && sc->ntri_plain == 0 && sc->ntri == sc->nprim)
+        return RT_ANY_MESH;
+#else
+    (void)sc;
+#endif
+    return RT_ANY_HIT;
 }
 
 int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
@@ -1292,17 +1396,18 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
     if (rc != RT_OK)
         return rc;
     const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    const int ah = rt_anyhit_kind(sc);
     size_t k = 0;
     if (setup4) {
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++)
-                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &p, j);
+                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &p, j, ah);
         }
     }
     for (; k < n; k++)
-        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, 0);
+        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, 0, ah);
     rt_ctx_free(&c);
     return RT_OK;
 }

@@ -5,7 +5,9 @@
  * picture bit for bit as its triangles given one by one (rt_scene_add_polygon_data) and the
  * same hits (distance, side), with a lone triangle beside it, whole and with culling (a degenerate triangle among them: the
  * commit's compacted copy); it needs fewer bytes per triangle; bad input is rejected with
- * nothing added; truncation and an abandoned reservation leave the scene as before.
+ * nothing added; truncation and an abandoned reservation leave the scene as before. Shadow
+ * rays over a scene of mesh triangles only (rt_occluded's any-hit lists of mesh triangles, one
+ * per axis order of the rays) answer as without a grid.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -18,6 +20,7 @@
 #include <string.h>
 
 #include "gksrt.h"
+#include "rt_check.h"
 #include "rt_testutil.h"
 
 enum { N = 13, SZ = 64 }; /* N x N vertices */
@@ -207,9 +210,93 @@ static void test_bad_input(void **state)
     rt_scene_free(sc);
 }
 
+/* the field alone as a mesh, committed with a grid or without one (brute) */
+static rt_scene *mesh_only(int brute)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface su;
+    rt_surface_default(&su);
+    int s = rt_scene_add_surface(sc, &su);
+    const size_t nt = (N - 1) * (N - 1) * 2;
+    assert_int_equal(rt_scene_add_mesh(sc, N * N, xyz, NULL, NULL, nt, idx, s, s), 0);
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = -1;
+    bo.brute_force = brute;
+    assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+    return sc;
+}
+
+/* Shadow rays from points of the field (hits of rays from above) to lights on four sides and
+ * above and below, the origin moved towards the light by 1e-6 of the way (the ray starts beside
+ * its own triangle, which it crosses behind itself), and rays up and down through the field:
+ * every axis order of the rays' shear occurs. The same answers with the grid as without, and
+ * per light and direction blocked rays where the field can block them. */
+static void test_occluded_mesh_only(void **state)
+{
+    (void)state;
+    field();
+    rt_scene *g = mesh_only(0), *b = mesh_only(1);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+    assert_true(gi.cells + gi.subcells > 1);
+    enum { M = 29, NL = 6, NS = NL + 2 };
+    static const double light[NL][3] = {{3, 0.3, 0.2},  {-3, -0.2, 0.15}, {0.2, 3, 0.25},
+                                        {-0.1, -3, 0.3}, {0.3, 0.1, 3},   {-0.2, 0.3, -3}};
+    static rt_ray down[M * M], rays[NS][M * M];
+    static rt_hit hit[M * M];
+    static unsigned char og[M * M], ob[M * M];
+    for (int j = 0; j < M; j++)
+        for (int i = 0; i < M; i++)
+            down[j * M + i] = (rt_ray){.org = {-0.95 + 1.9 * i / (M - 1), -0.95 + 1.9 * j / (M - 1), 2},
+                                       .dir = {0, 0, -1},
+                                       .tmin = 0,
+                                       .tmax = INFINITY};
+    assert_int_equal(rt_intersect(b, M * M, down, hit), RT_OK);
+    size_t n[NS] = {0};
+    for (int l = 0; l < NL; l++)
+        for (int k = 0; k < M * M; k++) {
+            if (hit[k].prim < 0)
+                continue;
+            rt_ray *r = &rays[l][n[l]++];
+            for (int q = 0; q < 3; q++) {
+                r->org[q] = hit[k].p[q] + 1e-6 * (light[l][q] - hit[k].p[q]);
+                r->dir[q] = light[l][q] - r->org[q];
+            }
+            r->tmin = 0;
+            r->tmax = 1 - 1e-6;
+        }
+    for (int k = 0; k < M * M; k++) { /* through the field, up and down, ending before or past it */
+        const double x = 0.6 * down[k].org[0], y = 0.6 * down[k].org[1], e = k % 3 ? 1.0 : 0.1;
+        rays[NL][n[NL]++] = (rt_ray){.org = {x, y, -2}, .dir = {0.3, -0.2, 4}, .tmin = 0, .tmax = e};
+        rays[NL + 1][n[NL + 1]++] = (rt_ray){.org = {x, y, 2}, .dir = {-0.2, 0.3, -4}, .tmin = 0, .tmax = e};
+    }
+    for (int l = 0; l < NS; l++) {
+        assert_true(n[l] > M * M / 2);
+        rtc_traps_on();
+        assert_int_equal(rt_occluded(g, n[l], rays[l], og), RT_OK);
+        assert_int_equal(rt_occluded(b, n[l], rays[l], ob), RT_OK);
+        rtc_traps_off();
+        size_t blocked = 0;
+        for (size_t k = 0; k < n[l]; k++) {
+            assert_int_equal(og[k], ob[k]);
+            blocked += ob[k];
+        }
+        /* the lights above and below the height field light every point; the others are low */
+        if (l == 4 || l == 5)
+            assert_int_equal(blocked, 0);
+        else
+            assert_true(blocked > n[l] / 50 && blocked < n[l]);
+    }
+    rt_scene_free(g);
+    rt_scene_free(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_occluded_mesh_only),
         cmocka_unit_test(test_same_picture),
         cmocka_unit_test(test_same_picture_culled),
         cmocka_unit_test(test_bad_input),
