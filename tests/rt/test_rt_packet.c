@@ -397,6 +397,57 @@ static void test_incoherent(void **state)
     rt_scene_free(sc);
 }
 
+/* shadow packets by the spread of their origins against the grid's cells there: 64 shadow
+   rays from a small patch of a finely tessellated sphere are traced as a packet; 64 from
+   points along a line across many second-level cells (yet few top cells) are handed to
+   the single-ray walk (their packet's tests would cost more than their single walks); the
+   answers are rt_occluded's either way */
+static void test_spread(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    const int si = rt_scene_add_surface(sc, &s);
+    const double c[3] = {0, 0, 0}, light[3] = {5.0, 6.0, 100.0};
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 256, 128, si), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    printf("spread: grid %llu cells, %llu sub-grids of %llu cells\n",
+           (unsigned long long)gi.cells, (unsigned long long)gi.subgrids,
+           (unsigned long long)gi.subcells);
+    rt_ray rays[RT_PACKET];
+    unsigned char o1[RT_PACKET], o2[RT_PACKET];
+    for (int wide = 0; wide < 2; wide++) {
+        for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
+            const double x = wide ? 0.2 + 0.005 * k : 0.3 + 0.001 * (k % 8);
+            const double y = wide ? 0.3 : 0.3 + 0.001 * (k / 8);
+            const double z = sqrt(1.0 - x * x - y * y) + 1e-6;
+            const double o[3] = {x, y, z};
+            for (int i = 0; i < 3; i++) {
+                rays[k].org[i] = o[i];
+                rays[k].dir[i] = light[i] - o[i];
+            }
+            rays[k].tmin = 0.0;
+            rays[k].tmax = 1.0;
+        }
+        rt_packet_stats ps = {0};
+        rtc_traps_on();
+        assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
+        assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
+        rtc_traps_off();
+        printf("spread: %s patch: %llu packets traced, %llu to the single-ray path\n",
+               wide ? "wide" : "small", (unsigned long long)ps.packets,
+               (unsigned long long)ps.fallback_packets);
+        assert_memory_equal(o1, o2, RT_PACKET);
+        assert_int_equal(ps.packets, wide ? 0 : 1);
+        assert_int_equal(ps.fallback_packets, wide ? 1 : 0);
+    }
+    rt_scene_free(sc);
+}
+
 /* the renderer's eye rays in packets (rt_render.c: one-ray modes without candidate lists,
    i.e. more than 16 candidates per ray on average): the same picture, bit for bit, as every
    eye ray alone (GKS_RT_PACKETS=0), with corner rays and pixel-centre rays, and the packet
@@ -464,6 +515,7 @@ int main(void)
     printf("packet kernel: %s\n", rt_packet_kernel_name());
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_incoherent),
+        cmocka_unit_test(test_spread),
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_render),
         cmocka_unit_test(test_meshes),
