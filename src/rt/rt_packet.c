@@ -28,11 +28,11 @@
  * An any-hit packet's AVX2 kernel also takes the exact test's t and range test for the rays
  * whose edge functions are non-zero with one sign, with its operations: it decides those rays
  * itself (a shadow ray's own surface, crossed behind its origin, is ruled out there).
- * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (or RT_PK_MAXS
- * second-level cells) is handed to the single-ray walk as a whole, and so is an any-hit
- * packet whose frustum is wider than RT_PK_SPREAD cells of the grid where its walk starts
- * (rt_pk_spread); an any-hit packet's rays of other axes or another octant than its first
- * ray walked are traced singly, the others stay a packet.
+ * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (RT_PK_MAXCA for an
+ * any-hit packet; or RT_PK_MAXS second-level cells) is handed to the single-ray walk as a
+ * whole, and so is an any-hit packet whose frustum is wider than RT_PK_SPREAD cells of the
+ * grid where its walk starts (rt_pk_spread); an any-hit packet's rays of other axes or
+ * another octant than its first ray walked are traced singly, the others stay a packet.
  *
  * Same hits as the single-ray walk: every primitive is tested on the whole range
  * [tmin, tmax] of each ray, so a ray's computed hits are those of the exact test, each t bit
@@ -66,6 +66,7 @@
 
 #define RT_PK_REC 8      /* hits recorded per ray (more: the ray is traced singly) */
 #define RT_PK_MAXC 12    /* top cells per slice at most (16 before the steps' frusta) */
+#define RT_PK_MAXCA 10   /* any-hit: top cells per slice at most (with RT_PK_SPREAD) */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
 #define RT_PK_SPREAD 16.0 /* any-hit: the frustum's width at the start, in cells, at most */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
@@ -1685,9 +1686,10 @@ static double rt_pk_spread(const rt_pk *p, int s0)
 /* the first top slice of the walk (index along K), with the frustum's plane z0 at its near
    end (exact there for rays from one point, as primary rays are; a frustum from the far
    end, where shadow rays toward a light converge, gave more instructions on the three
-   meshes), or -1 if the footprint of the first or the last slice exceeds RT_PK_MAXC: the
-   packet is not coherent, known before the walk (the frustum's width is convex along K, so
-   its widest slices are at the ends; the walk itself may narrow it as rays end). */
+   meshes), or -1 if the footprint of the first or the last slice exceeds RT_PK_MAXC
+   (any-hit: RT_PK_MAXCA, or the spread exceeds RT_PK_SPREAD): the packet is not coherent,
+   known before the walk (the frustum's width is convex along K, so its widest slices are
+   at the ends; the walk itself may narrow it as rays end). */
 static int rt_pk_ends(rt_pk *p)
 {
     const rt_box *b = &p->sc->grid.b;
@@ -1706,7 +1708,7 @@ static int rt_pk_ends(rt_pk *p)
     for (int e = 0; e < 2; e++) {
         const int s = e ? s1 : s0;
         rt_pk_rect(p, b, rt_pk_plane(b, K, s), rt_pk_plane(b, K, s + 1), c);
-        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXC)
+        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > (p->any ? RT_PK_MAXCA : RT_PK_MAXC))
             return -1;
     }
     if (p->any && rt_pk_spread(p, s0) >= RT_PK_SPREAD)
@@ -1741,7 +1743,7 @@ static int rt_pk_walk(rt_pk *p, rt_ctx *ctx)
         rt_pk_frustum(p, p->live); /* of the rays still walking: kept over many slices */
         int c[4];
         rt_pk_rect(p, b, za, zb, c);
-        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXC)
+        if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > (p->any ? RT_PK_MAXCA : RT_PK_MAXC))
             return 0;
         int q[3];
         q[K] = s;
