@@ -81,7 +81,7 @@ void rtu_nff_view(const rtu_mesh *m, const double bb_vrc[6], rtu_view *v);
 rt_scene *rtu_nff_scene(const char *path, double sky, int w, int h, rt_camera *cam);
 
 /* A new scene with one surface, rt_surface_default's, whose index goes to *surf; NULL when
- * either cannot be made (the scenes of the build tests) */
+ * either cannot be made (the scenes of the build and packet tests) */
 rt_scene *rtu_scene_one_surface(int *surf);
 
 /* ---- closed-mesh leak probe (test_rt_hard, bench/rt/rt_leak) ---- */

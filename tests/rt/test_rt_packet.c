@@ -347,11 +347,9 @@ static void test_coplanar(void **state)
 static void test_incoherent(void **state)
 {
     (void)state;
-    rt_scene *sc = rt_scene_new();
+    int si;
+    rt_scene *sc = rtu_scene_one_surface(&si);
     assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int si = rt_scene_add_surface(sc, &s);
     const double c[3] = {0, 0, 0};
     assert_int_equal(rtu_add_sphere(sc, c, 1.0, 24, 12, si), 0);
     rt_hit h;
@@ -405,11 +403,9 @@ static void test_incoherent(void **state)
 static void test_spread(void **state)
 {
     (void)state;
-    rt_scene *sc = rt_scene_new();
+    int si;
+    rt_scene *sc = rtu_scene_one_surface(&si);
     assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int si = rt_scene_add_surface(sc, &s);
     const double c[3] = {0, 0, 0}, light[3] = {5.0, 6.0, 100.0};
     assert_int_equal(rtu_add_sphere(sc, c, 1.0, 256, 128, si), 0);
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
