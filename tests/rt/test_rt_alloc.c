@@ -16,6 +16,7 @@
 #include <cmocka.h>
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
+#include "rt_testutil.h"
 
 /* lines of /proc/self/maps that overlap [p, p + n); -1 if the file cannot be read */
 static int mappings_over(const void *p, size_t n)
@@ -118,11 +119,9 @@ static void test_sizes(void **u)
 static void test_input_next(void **u)
 {
     (void)u;
-    rt_scene *sc = rt_scene_new();
+    int surf;
+    rt_scene *sc = rtu_scene_one_surface(&surf);
     assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int surf = rt_scene_add_surface(sc, &s);
     void *lo[2], *hi[2];
     const int cnt[1] = { 3 };
     const size_t big = ((size_t)8 << 20) / sizeof(rt_prim); /* both arrays beyond 4 MiB */
