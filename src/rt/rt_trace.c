@@ -331,9 +331,11 @@ static inline __attribute__((always_inline)) int rt_kdop_clip(const rt_grid *g, 
 
 /* Sets up the DDA over box g for the ray part [t0, t1]. clip = 1: the range is first cut
  * to the box (0 if nothing remains); clip = 0 (the range is already inside the box up to
- * rounding, or cut by rt_box_clip): the start cell is clamped into the box instead. */
+ * rounding, or cut by rt_box_clip): the start cell is clamped into the box instead. step:
+ * the ray's steps when known (rt_walkstate.step, the sign of each direction component as
+ * computed here), else NULL. */
 static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, const rt_gray *r, double t0, double t1, int clip,
-                              rt_dda *s)
+                              const int *step, rt_dda *s)
 {
     if (clip && !rt_box_clip(g, r, &t0, &t1))
         return 0;
@@ -360,18 +362,23 @@ static inline __attribute__((always_inline)) int rt_dda_init(const rt_box *g, co
         const __m128d tn = _mm_mul_pd(_mm_sub_pd(x, o), _mm_loadu_pd(r->invd));
         _mm_storeu_pd(s->tnext, _mm_or_pd(_mm_and_pd(zero, _mm_set1_pd(INFINITY)),
                                           _mm_andnot_pd(zero, tn)));
-        s->step[0] = (r->d[0] > 0.0) - (r->d[0] < 0.0);
-        s->step[1] = (r->d[1] > 0.0) - (r->d[1] < 0.0);
+        if (step) {
+            s->step[0] = step[0];
+            s->step[1] = step[1];
+        } else {
+            s->step[0] = (r->d[0] > 0.0) - (r->d[0] < 0.0);
+            s->step[1] = (r->d[1] > 0.0) - (r->d[1] < 0.0);
+        }
         a = 2;
     }
 #endif
     for (; a < 3; a++) {
         const int c = rt_dda_cell(g, r, t0, a);
         s->c[a] = c;
-        if (r->d[a] > 0.0) {
+        if (step ? step[a] > 0 : r->d[a] > 0.0) {
             s->step[a] = 1;
             s->tnext[a] = rt_dda_bound(g, r, c + 1, a);
-        } else if (r->d[a] < 0.0) {
+        } else if (step ? step[a] < 0 : r->d[a] < 0.0) {
             s->step[a] = -1;
             s->tnext[a] = rt_dda_bound(g, r, c, a);
         } else {
@@ -674,7 +681,7 @@ enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
 /* rt_walkstate.any_hit: 0 transmittance; RT_ANY_HIT the first hit blocks; RT_ANY_MESH (bit 0
    kept, so every other test takes it as RT_ANY_HIT) also every primitive a mesh triangle, no
    skipped primitive and a CPU with AVX2 (rt_occluded's rays, rt_anyhit_kind): the cell lists
-   through rt_cell_anyhit_mesh, the second-level walks through rt_walk_sub_anyhit */
+   through rt_walkstate.list (rt_anyhit_list), the second-level walks through rt_walk_sub_anyhit */
 enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 
 /* AVX2's encoding for the RT_ANY_MESH walks: three-operand instructions, no register copies
@@ -687,18 +694,28 @@ enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 #define RT_ANYHIT_TARGET
 #endif
 
-typedef struct rt_walkstate {
+typedef struct rt_walkstate rt_walkstate;
+/* an any-hit cell list of mesh triangles (RT_ANY_MESH): 1 if blocked */
+typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t n);
+
+struct rt_walkstate {
     const rt_scene *sc;
     rt_ctx *c;
     const rt_rayx *r;
     rt_gray gr;
     uint32_t stamp;
     int any_hit;
+    int step[3]; /* the ray's DDA steps (-1, 0, 1 per axis: the sign of its grid-frame
+                    direction), set by the top-level walk of modes 1 and 2 for their
+                    second-level walks (nearest-hit walks, with few second-level walks
+                    per ray, compute their own as before) */
+    rt_anyhit_list_fn list; /* RT_ANY_MESH walks: the copy for the ray's axis order
+                               (rt_anyhit_list), chosen once per ray */
     double best;
     long bi;
     double ebest; /* the best hit's error bound (rt_nearest_update) */
     double T;
-} rt_walkstate;
+};
 
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
@@ -707,8 +724,10 @@ static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the empty cubes of the
  * ray's octant in dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
  * boundary beyond the best hit (t1 lowered to it); mode 1: transmittance, BLOCKED when an
- * opaque primitive is hit. Mailboxes: see the top of the file. Direction components exactly
- * +0.0 or -0.0 never step. */
+ * opaque primitive is hit; mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see
+ * the top of the file. Direction components exactly +0.0 or -0.0 never step. step: NULL, or
+ * for a second-level walk of modes 1 and 2 the ray's steps, which their top level stores in
+ * rt_walkstate.step (rt_dda_init). */
 /* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
  * that the ray crosses up to the jump parameter tj, from its next boundary t on (cell width dt
  * in ray parameter, it about 1 / dt); j = t + k dt is the cube's far face. The exit axis
@@ -831,23 +850,39 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
     return 0;
 }
 
-static __attribute__((noinline)) RT_ANYHIT_TARGET int
-rt_cell_anyhit_mesh(rt_walkstate *w, const uint32_t *refs, uint32_t n)
+/* one copy of the list per axis order of the shear (ky = 3 - kx - kz) */
+#define RT_CELL_ANYHIT(KX, KY, KZ)                                                              \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_anyhit_##KX##KY##KZ(       \
+        rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
+    {                                                                                         \
+        return rt_cell_anyhit_mesh_k(w, refs, n, KX, KY, KZ);                                 \
+    }
+RT_CELL_ANYHIT(1, 2, 0)
+RT_CELL_ANYHIT(2, 1, 0)
+RT_CELL_ANYHIT(2, 0, 1)
+RT_CELL_ANYHIT(0, 2, 1)
+RT_CELL_ANYHIT(0, 1, 2)
+RT_CELL_ANYHIT(1, 0, 2)
+#undef RT_CELL_ANYHIT
+
+/* the list copy for the axis order of r (sheared: rt_rayx_shear), taken once per ray rather
+   than per list (a switch per list cost about 10 instructions of some 4 lists per shadow
+   ray, with the register saves of a function holding all six copies) */
+static rt_anyhit_list_fn rt_anyhit_list(const rt_rayx *r)
 {
-    /* the six axis orders of rt_rayx_shear (ky = 3 - kx - kz) */
-    switch (w->r->kz * 4 + w->r->kx) {
+    switch (r->kz * 4 + r->kx) {
     case 0 * 4 + 1:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 1, 2, 0);
+        return rt_cell_anyhit_120;
     case 0 * 4 + 2:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 2, 1, 0);
+        return rt_cell_anyhit_210;
     case 1 * 4 + 2:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 2, 0, 1);
+        return rt_cell_anyhit_201;
     case 1 * 4 + 0:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 0, 2, 1);
+        return rt_cell_anyhit_021;
     case 2 * 4 + 0:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 0, 1, 2);
+        return rt_cell_anyhit_012;
     default:
-        return rt_cell_anyhit_mesh_k(w, refs, n, 1, 0, 2);
+        return rt_cell_anyhit_102;
     }
 }
 
@@ -924,10 +959,13 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
 }
 
 /* the n > 0 primitives of one cell list (lf: 1 + its float leaf, 0: none): 1 when an opaque
-   primitive blocks a transmittance ray (mode 1) */
+   primitive blocks a transmittance ray (mode 1, and mode 2: mode 1 for a walk known to be
+   RT_ANY_MESH's, rt_walk_sub_anyhit) */
 RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
                            uint32_t lf)
 {
+    if (mode == 2)
+        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1) : w->list(w, refs, n);
     if (mode == 0 && lf)
         (void)rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0);
     else if (mode == 0)
@@ -935,7 +973,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
     else if (w->any_hit && lf)
         return rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1);
     else if (w->any_hit == RT_ANY_MESH)
-        return rt_cell_anyhit_mesh(w, refs, n);
+        return w->list(w, refs, n);
     else
         return rt_cell_transmit(w, refs, n);
     return 0;
@@ -944,7 +982,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf,
                           const int32_t *sub, const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
-                          int clip, const rt_pre4 *pre, int lane)
+                          int clip, const rt_pre4 *pre, int lane, const int *step)
 {
     const rt_gray *gr = &w->gr;
     const int nn0 = g->n[0], nn1 = g->n[1], nn2 = g->n[2];
@@ -962,7 +1000,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         t1 = pre->t1[lane];
     } else {
         rt_dda s;
-        if (!rt_dda_init(g, gr, t0, t1, clip, &s))
+        if (!rt_dda_init(g, gr, t0, t1, clip, step, &s))
             return RT_WALK_CONT;
         sx = s.step[0], sy = s.step[1], sz = s.step[2];
         /* a cell's width in ray parameter per axis (0 for an axis that does not step) */
@@ -975,6 +1013,12 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tx = s.tnext[0], ty = s.tnext[1], tz = s.tnext[2];
         tent = s.t0;
         t1 = s.t1;
+    }
+    if (sub && mode != 0) { /* any-hit and transmittance walks' top level: the steps for
+                               their second-level walks (rt_dda_init) */
+        w->step[0] = sx;
+        w->step[1] = sy;
+        w->step[2] = sz;
     }
     const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
     size_t ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
@@ -1068,33 +1112,35 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16) /* the 2-byte layout (rt_internal.h) */
         return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0);
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
     return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0, NULL, 0);
+                       t0, t1, 0, NULL, 0, NULL);
 }
 
-RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
+RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0,
+                                double t1)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16)
-        return rt_walk_box(w, 1, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0);
-    return rt_walk_box(w, 1, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0, NULL, 0);
+        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0,
+                           w->step);
+    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
+                       NULL, t0, t1, 0, NULL, 0, w->step);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
-    return rt_walk_sub_mode1(w, sg, t0, t1);
+    return rt_walk_sub_mode1(w, 1, sg, t0, t1);
 }
 
-/* the same for RT_ANY_MESH walks, in AVX2's encoding */
+/* the same for RT_ANY_MESH walks (mode 2: the lists' kind known), in AVX2's encoding */
 static __attribute__((noinline)) RT_ANYHIT_TARGET int
 rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
 {
-    return rt_walk_sub_mode1(w, sg, t0, t1);
+    return rt_walk_sub_mode1(w, 2, sg, t0, t1);
 }
 
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
@@ -1118,6 +1164,7 @@ RT_INLINE void rt_walkstate_init(rt_walkstate *w, const rt_scene *sc, rt_ctx *c,
     w->r = r;
     w->stamp = 0;
     w->any_hit = any_hit;
+    w->list = NULL;
     w->best = INFINITY;
     w->bi = -1;
     w->ebest = 0.0;
@@ -1146,7 +1193,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
             rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                        rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0);
+                        rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL);
         }
     }
     *tout = w.best;
@@ -1196,9 +1243,11 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         return w.T;
     if (rs)
         rt_rayx_shear(rs);
+    if (w.any_hit == RT_ANY_MESH)
+        w.list = rt_anyhit_list(r);
     w.stamp = rt_ctx_next(c);
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                    rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0) == RT_WALK_BLOCKED)
+                    rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
 }
@@ -1281,7 +1330,7 @@ RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_pre4 *p, int j)
     const rt_grid *g = &w->sc->grid;
     return rt_walk_box(w, mode, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
                        g->odist ? g->odist + (size_t)p->oct[j] * g->ncells : NULL, 0.0, 0.0, 0,
-                       p, j);
+                       p, j, NULL);
 }
 
 /* the answer of a ray that misses: every field written once (the output array is cold) */
@@ -1364,6 +1413,8 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, ah);
+        if (ah == RT_ANY_MESH)
+            w.list = rt_anyhit_list(&r);
         w.stamp = rt_ctx_next(c);
         if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
             return 1;
