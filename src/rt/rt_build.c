@@ -2337,6 +2337,54 @@ static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opt
                                   o->sub_min > 0 || rt_opt_pos(o->sub_factor)));
 }
 
+/* The top level for primitives that are large against its cells. Beyond RT_GRID_KNEE
+ * primitives the top level mainly skips empty space and the second level resolves the
+ * primitives; when a typical primitive's box spans more than RT_TOP_EXT_LARGE of a top cell
+ * per axis (a volume of random triangles: a median of 0.28-0.49 at 3*10^4-10^6; the test
+ * meshes, surfaces: 0.12-0.17), each is inserted into several top cells and so into several
+ * sub-grids (2.2 per triangle at 10^5), each copy at the cost of its exact cell tests, and
+ * the sub-grids split the space where no empty space is left to skip. Then the top cells
+ * are widened to RT_TOP_EXT_TARGET times that median: fewer, larger sub-grids (measured:
+ * docs/bench/rt_tuning.md, 2026-12-06). The median of a sample of at most
+ * RT_TOP_EXT_SAMPLE primitives (every nprim / RT_TOP_EXT_SAMPLE + 1-th), each one's box
+ * extent over the cell width averaged over the axes: a few huge primitives (a floor under a
+ * small object) do not move it. */
+#define RT_TOP_EXT_SAMPLE 1024
+#define RT_TOP_EXT_LARGE 0.25
+#define RT_TOP_EXT_TARGET 0.1
+
+static int rt_cmp_double(const void *x, const void *y)
+{
+    const double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g)
+{
+    double r[RT_TOP_EXT_SAMPLE];
+    const size_t stride = sc->nprim / RT_TOP_EXT_SAMPLE + 1;
+    size_t m = 0, nlarge = 0;
+    int err = 0;
+    for (size_t i = 0; i < sc->nprim && !err; i += stride) {
+        double bb[6];
+        rt_prim_gbox(sc, b, i, bb, &err);
+        r[m] = ((bb[3] - bb[0]) * g->inv_cw[0] + (bb[4] - bb[1]) * g->inv_cw[1] +
+                (bb[5] - bb[2]) * g->inv_cw[2]) / 3.0;
+        nlarge += r[m++] > RT_TOP_EXT_LARGE;
+    }
+    if (err)
+        return RT_ERR_NOMEM;
+    /* the median r[m / 2] of the sorted sample is above RT_TOP_EXT_LARGE exactly when
+       m - m / 2 values are: counted, so that most scenes need no sort */
+    if (nlarge < m - m / 2)
+        return RT_OK;
+    qsort(r, m, sizeof *r, rt_cmp_double);
+    const double med = r[m / 2];
+    const double k = RT_TOP_EXT_TARGET / med;
+    rt_box_resolution(g, (double)g->n[0] * g->n[1] * g->n[2] * k * k * k, 512);
+    return RT_OK;
+}
+
 /* the grid's frame and box (rotated or not, padded, an explicit box where it holds the
    scene) and its top-level resolution */
 static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_options *o,
@@ -2377,6 +2425,9 @@ static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_
         }
     } else {
         rt_box_resolution(&g->b, rt_top_cells(o, go->factor, (double)sc->nprim), 512);
+        rt_box_finish(&g->b);
+        if (rc == RT_OK && go->all_default && (double)sc->nprim > RT_GRID_KNEE)
+            rc = rt_top_coarsen(sc, bs, &g->b);
     }
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];

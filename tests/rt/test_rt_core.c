@@ -199,6 +199,70 @@ static void test_settings_equal_brute(void **state)
     free(rays);
 }
 
+/* NB random triangles in the unit cube, each within a cube of side SIDE * NB^(-1/3) around its
+   centre (SIDE 2: the random triangles of the build benchmark, large against the top cells
+   of the default rule beyond 10^4 primitives) */
+enum { NB = 12000 };
+static double big_side;
+
+static void build_big(rt_scene *sc)
+{
+    rt_surface s;
+    rt_surface_default(&s);
+    int surf = rt_scene_add_surface(sc, &s);
+    assert_true(surf >= 0);
+    rng_state = 4242;
+    const double side = big_side * pow((double)NB, -1.0 / 3.0);
+    for (int k = 0; k < NB; k++) {
+        double c[3], v[9];
+        for (int i = 0; i < 3; i++)
+            c[i] = rnd();
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                v[3 * j + i] = c[i] + side * (rnd() - 0.5);
+        add_tri(sc, v, surf);
+    }
+}
+
+/* primitives large against the default rule's top cells get a coarser top level (rt_build.c,
+   RT_TOP_EXT_LARGE): far fewer top cells than the 14^3 of the rule for 12000 primitives,
+   the same answers as brute force; triangles a third the size keep the rule's top level */
+static void test_large_prims_coarse_top(void **state)
+{
+    (void)state;
+    enum { N = 2000 };
+    const rt_build_options dflt = {.brute_threshold = 0};
+    rt_ray *rays = malloc(N * sizeof *rays);
+    assert_non_null(rays);
+    make_rays(rays, N);
+    big_side = 2.0;
+    rt_scene *sc = rt_scene_new();
+    build_big(sc);
+    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_true(gi.cells < 100);
+    assert_true(gi.subgrids > 0);
+    rt_scene_free(sc);
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_big, rays, N);
+    int nhit = 0;
+    for (int k = 0; k < N; k++)
+        nhit += br.hb[k].prim >= 0;
+    assert_true(nhit > N / 4);
+    brute_ref_check(&br, build_big, &dflt, 1, rays, N);
+    brute_ref_free(&br);
+    big_side = 2.0 / 3.0;
+    sc = rt_scene_new();
+    build_big(sc);
+    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_true(gi.cells > 1000);
+    rt_scene_free(sc);
+    free(rays);
+}
+
 /* duplicates: the tie rule must pick the larger id (drawn later) whichever copy the grid
    meets first */
 static void test_duplicate_tie(void **state)
@@ -474,6 +538,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_settings_equal_brute),
+        cmocka_unit_test(test_large_prims_coarse_top),
         cmocka_unit_test(test_duplicate_tie),
         cmocka_unit_test(test_empty_space_jumps),
         cmocka_unit_test(test_zero_component_on_cell_plane),
