@@ -96,6 +96,9 @@ typedef struct rt_job {
     float *rgb;
     float *edge;        /* corner mode: corners (w, 0..h) then (0..w-1, h), RGB; the others are
                            kept in rgb itself (corner (x,y) at pixel (x,y)) until averaged */
+    float *corner_next; /* after edge in its block: one row of corners per resolve part but the
+                           last, the next part's first row as traced (rt_corner_part) */
+    int corner_parts;   /* the rows corner_next has room for, + 1 */
     int gw, gh;         /* ray grid size (pixels or corners) */
     int m;              /* strata per axis */
     uint32_t *cand_off; /* one-ray modes, rays up to RT_CAND_RAYS: candidates of ray k (the
@@ -729,9 +732,10 @@ static void rt_trace(rt_worker *w, const double o[3], const double d[3], double 
 
 /* The picture is usually fresh from malloc (mmap): its first touch takes one page fault per
    4 KiB, ~10 us each in the virtual machine measured (512x512 RGB floats: 9 ms, more than
-   tracing half of tetra). Populating the pages in one call costs a third of that. Contents are
-   unchanged; whole pages inside the buffer only; errors (older kernels) ignored. */
-static void rt_prefault(void *p, size_t bytes)
+   tracing half of tetra). Populating the pages in one call costs a third of that. Part k of n
+   of the pages (each tracing thread its share); contents are unchanged; whole pages inside the
+   buffer only; errors (older kernels) ignored. */
+static void rt_prefault(void *p, size_t bytes, int k, int n)
 {
 #if defined(__linux__) && defined(MADV_POPULATE_WRITE)
     long ps = sysconf(_SC_PAGESIZE);
@@ -739,11 +743,17 @@ static void rt_prefault(void *p, size_t bytes)
         return;
     uintptr_t pg = (uintptr_t)ps;
     uintptr_t a = ((uintptr_t)p + pg - 1) & ~(pg - 1), e = ((uintptr_t)p + bytes) & ~(pg - 1);
-    if (e > a && e - a >= 16 * pg)
-        (void)madvise((void *)a, e - a, MADV_POPULATE_WRITE);
+    if (e <= a || e - a < 16 * pg)
+        return;
+    size_t lo, hi; /* part k's pages */
+    rt_par_range((e - a) / pg, k, n, &lo, &hi);
+    if (hi > lo)
+        (void)madvise((void *)(a + lo * pg), (hi - lo) * pg, MADV_POPULATE_WRITE);
 #else
     (void)p;
     (void)bytes;
+    (void)k;
+    (void)n;
 #endif
 }
 
@@ -1212,7 +1222,7 @@ static rt_cover_out rt_cover(const rt_scene *sc, const rt_camera *cam, double of
 }
 
 /* where corner ray (x, y) is kept: in the picture itself at pixel (x, y), the last column and
-   row of corners in job->edge (see rt_corner_average) */
+   row of corners in job->edge (see rt_corner_rows) */
 static float *rt_corner_at(const rt_job *job, int x, int y)
 {
     const int W = job->cam->width, H = job->cam->height;
@@ -1418,15 +1428,17 @@ static inline void rt_corner_mean(float *k00, const float *k10, const float *k01
     }
 }
 
-static void rt_corner_average(const rt_job *job)
+/* corner rays' rows [y0, y1) averaged into pixels in place, left to right and top to bottom
+   (corner x + 1 and the row below are read before they are replaced); below: the corners
+   under row y1 - 1 as traced (the next row, or the edge row under the last) */
+static void rt_corner_rows(const rt_job *job, size_t y0, size_t y1, const float *below)
 {
-    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height;
+    const size_t W = (size_t)job->cam->width;
     float *rgb = job->rgb;
     const float *edge = job->edge;
-    for (size_t y = 0; y < H; y++) {
+    for (size_t y = y0; y < y1; y++) {
         float *r0 = rgb + 3 * y * W;
-        const float *r1 = y + 1 < H ? rgb + 3 * (y + 1) * W : edge + 3 * (H + 1);
-        /* left to right in place: corner x + 1 of this row is read before it is replaced */
+        const float *r1 = y + 1 < y1 ? rgb + 3 * (y + 1) * W : below;
         for (size_t x = 0; x + 1 < W; x++)
             rt_corner_mean(r0 + 3 * x, r0 + 3 * (x + 1), r1 + 3 * x, r1 + 3 * (x + 1));
         rt_corner_mean(r0 + 3 * (W - 1), edge + 3 * y, r1 + 3 * (W - 1), edge + 3 * (y + 1));
@@ -1673,8 +1685,13 @@ static void rt_work(rt_worker *w)
    worker gets do not change the picture) */
 static void rt_work_part(void *arg, int k, int n)
 {
-    (void)n;
-    rt_work((rt_worker *)arg + k);
+    rt_worker *w = (rt_worker *)arg + k;
+    const rt_job *job = w->job;
+    /* part k's share of the picture's pages made present first (rt_prefault): each thread
+       its own, not the calling thread all of them before the tiles */
+    rt_prefault(job->rgb, (size_t)job->cam->width * (size_t)job->cam->height * 3 * sizeof(float),
+                k, n);
+    rt_work(w);
 }
 
 /* light buffers (rt_lbuf.c) for the lights of the scene, when asked for and when they pay:
@@ -1969,15 +1986,32 @@ int rt_render(const rt_scene *sc, const rt_camera *cam, const rt_render_options 
     return rt_render_cover(sc, cam, opts, rgb, NULL, stats);
 }
 
-/* cover[y*W + x] = corner hits of corners (x,y), (x+1,y), (x,y+1), (x+1,y+1) */
-static void rt_corner_cover(const rt_job *job)
+/* cover[y*W + x] = corner hits of corners (x,y), (x+1,y), (x,y+1), (x+1,y+1), rows [y0, y1) */
+static void rt_corner_cover_rows(const rt_job *job, size_t y0, size_t y1)
 {
-    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height, G = W + 1;
+    const size_t W = (size_t)job->cam->width, G = W + 1;
     const uint8_t *h = job->corner_hit;
-    for (size_t y = 0; y < H; y++)
+    for (size_t y = y0; y < y1; y++)
         for (size_t x = 0; x < W; x++)
             job->cover_out[y * W + x] = (unsigned short)(h[y * G + x] + h[y * G + x + 1] +
                                                          h[(y + 1) * G + x] + h[(y + 1) * G + x + 1]);
+}
+
+/* part k of the corner rays' resolve (rt_par_run): rows [y0, y1) averaged, and their cover
+   made from the corners' hit flags when asked for. Part k's last row reads the first row of
+   part k + 1 as traced, which that part replaces: rt_job_trace saved it in job->corner_next
+   (row k) before the parts ran, so every pixel is the mean of the same corners, in the same
+   order, as in one pass. */
+static void rt_corner_part(void *arg, int k, int n)
+{
+    const rt_job *job = arg;
+    const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height;
+    size_t y0, y1;
+    rt_par_range(H, k, n, &y0, &y1);
+    rt_corner_rows(job, y0, y1,
+                   y1 == H ? job->edge + 3 * (H + 1) : job->corner_next + 3 * W * (size_t)k);
+    if (job->corner_hit)
+        rt_corner_cover_rows(job, y0, y1);
 }
 
 /* the options' and the camera's checks; *m = the samples' grid side (samples = m * m) */
@@ -2003,7 +2037,14 @@ static int rt_render_check(const rt_render_options *o, const rt_camera *cam, int
 /* corner rays: the picture's edge row and column, and with a cover the corners' hit flags */
 static int rt_job_corner_bufs(rt_job *job)
 {
-    job->edge = rt_alloc_array((size_t)job->gw + (size_t)job->gh - 1, 3 * sizeof(float));
+    /* the resolve's parts: as many as the frame's threads, one row each but the first */
+    job->corner_parts = rt_par_threads(job->o.threads);
+    if (job->corner_parts > job->cam->height)
+        job->corner_parts = job->cam->height;
+    const size_t ne = (size_t)job->gw + (size_t)job->gh - 1;
+    const size_t nn = (size_t)(job->corner_parts - 1) * (size_t)job->cam->width;
+    job->edge = rt_alloc_array(ne + nn, 3 * sizeof(float));
+    job->corner_next = job->edge ? job->edge + 3 * ne : NULL;
     if (job->cover_out)
         job->corner_hit = rt_alloc_array((size_t)job->gw, (size_t)job->gh);
     if (!job->edge || (job->cover_out && !job->corner_hit)) {
@@ -2067,7 +2108,6 @@ static int rt_job_trace(rt_job *job, rt_worker *w, int nt, size_t max_payload, i
     *traced = 1;
     int rc = RT_OK;
     pthread_mutex_init(&job->lock, NULL);
-    rt_prefault(job->rgb, (size_t)job->cam->width * (size_t)job->cam->height * 3 * sizeof(float));
     rt_par_run(nt, rt_work_part, w); /* the pool's threads (rt_pool.c): tiles by a counter */
     int whole = 1; /* the frame is complete here */
     if (job->hook) {
@@ -2077,10 +2117,17 @@ static int rt_job_trace(rt_job *job, rt_worker *w, int nt, size_t max_payload, i
         whole = e > 0;
     }
     pthread_mutex_destroy(&job->lock);
-    if (job->o.corner_rays && whole && rc == RT_OK)
-        rt_corner_average(job);
-    if (job->corner_hit && whole && rc == RT_OK)
-        rt_corner_cover(job);
+    if (job->o.corner_rays && whole && rc == RT_OK) { /* corners to pixels (rt_corner_part) */
+        const int parts = nt < job->corner_parts ? nt : job->corner_parts;
+        const size_t W = (size_t)job->cam->width, H = (size_t)job->cam->height;
+        for (int k = 0; k + 1 < parts; k++) {
+            size_t y0, y1;
+            rt_par_range(H, k, parts, &y0, &y1);
+            memcpy(job->corner_next + 3 * W * (size_t)k, job->rgb + 3 * W * y1,
+                   3 * W * sizeof(float));
+        }
+        rt_par_run(parts, rt_corner_part, job);
+    }
     return rc;
 }
 

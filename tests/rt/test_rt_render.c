@@ -580,6 +580,20 @@ static void test_threads(void **state)
     render(sc, &cam, &o, b, &s3);
     assert_memory_equal(a, b, N * sizeof(float));
     assert_int_equal(s1.eye_rays, 25 * 21);
+    /* corner rays resolved to pixels in parts of rows on the pool (rt_corner_part, each part's
+       last row reading the next part's first as traced): the same pixels and cover for 1 to 5
+       parts, i.e. up to 4 part boundaries in the 20 rows */
+    unsigned short ca[24 * 20], cb[24 * 20];
+    o.threads = 1;
+    assert_int_equal(rt_render_cover(sc, &cam, &o, a, ca, NULL), RT_OK);
+    for (int t = 2; t <= 5; t++) {
+        o.threads = t;
+        memset(b, 0, N * sizeof(float));
+        memset(cb, 0xff, sizeof cb);
+        assert_int_equal(rt_render_cover(sc, &cam, &o, b, cb, NULL), RT_OK);
+        assert_memory_equal(a, b, N * sizeof(float));
+        assert_memory_equal(ca, cb, sizeof ca);
+    }
     /* bad options */
     o.samples = 3;
     assert_int_equal(rt_render(sc, &cam, &o, a, NULL), RT_ERR_ARG);
