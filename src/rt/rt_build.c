@@ -273,7 +273,7 @@ static inline size_t rt_prim_gpoints(const rt_scene *sc, rt_build *b, const rt_p
     if (b->gv && p->kind == RT_KIND_TRI && p->data >= sc->ntri_plain && b->cappts >= 9) {
         const uint32_t *ix = sc->ctri[p->data - sc->ntri_plain];
         for (int k = 0; k < 3; k++)
-            memcpy(b->pts + 3 * k, b->gv + 3 * (size_t)ix[k], 3 * sizeof(double));
+            memcpy(b->pts + 3 * k, b->gv + 3 * (size_t)(ix[k] & sc->vmask), 3 * sizeof(double));
         return 3;
     }
     const size_t npts = rt_prim_points(sc, b, p, err);
@@ -1963,10 +1963,11 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
             }
             const uint32_t *ix = sc->ctri[pr->data - sc->ntri_plain];
             for (int k = 0; k < 3; k++) {
-                if (seen[ix[k]])
+                const uint32_t v = ix[k] & sc->vmask;
+                if (seen[v])
                     continue;
-                seen[ix[k]] = 1;
-                memcpy(p + 3 * n++, X[ix[k]], 3 * sizeof(double));
+                seen[v] = 1;
+                memcpy(p + 3 * n++, X[v], 3 * sizeof(double));
             }
             continue;
         }

@@ -230,11 +230,20 @@ static inline double rt_tri_hit_err(const rt_tri_err *q, const rt_rayx *r, doubl
     return e >= 0.0 ? e : INFINITY;
 }
 
+/* the order of primitive i in the tie rule: its index, or for a mesh triangle of meshes in
+   spatial order (compared only with triangles of its own mesh) its given position */
+static inline size_t rt_prim_given(const rt_scene *sc, size_t i)
+{
+    if (sc->vmask != UINT32_MAX && i >= sc->ntri_plain && i < sc->ntri)
+        return rt_ctri_given(sc->ctri[i - sc->ntri_plain]);
+    return i;
+}
+
 /* Two hits tie when their distances differ by at most twice the smaller bound: the same
    plane's distance computed twice (coplanar faces: equal bounds), and a surface crossed at a
    grazing angle (a large bound) does not tie with one far behind it. A tie goes to the larger
    id (drawn later), as in the z-buffer and painter modes; between primitives of one id (the
-   triangles of a mesh) to the nearer, at equal distance to the one committed first. */
+   triangles of a mesh) to the nearer, at equal distance to the one given first (rt_prim_given). */
 static inline void rt_nearest_take(const rt_scene *sc, uint32_t i, double t, double e,
                                    double *best, long *bi, double *eb)
 {
@@ -243,9 +252,11 @@ static inline void rt_nearest_take(const rt_scene *sc, uint32_t i, double t, dou
         if (t > *best + tie)
             return;
         if (t >= *best - tie) { /* a tie: the later area; within one area the nearer,
-                                   at equal distance the primitive committed first */
+                                   at equal distance the primitive given first */
             const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
-            if (id < idb || (id == idb && (t > *best || (t == *best && (long)i > *bi))))
+            if (id < idb ||
+                (id == idb && (t > *best || (t == *best && rt_prim_given(sc, i) >
+                                                               rt_prim_given(sc, (size_t)*bi)))))
                 return;
         }
     }

@@ -316,6 +316,14 @@ struct rt_scene {
     rt_mesh *mesh; size_t nmesh, capmesh;
     rt_big mv_xyz, mv_n, mv_c; size_t nmv;
     rt_big mtri; size_t nmtri;
+    /* The meshes in spatial order (rt_scene_mesh_end): each mesh's index triples sorted,
+       each word of a triple (mtri, ctri) holding a vertex index in its low RT_VBITS bits and
+       10 bits of the triangle's given position within its mesh above them (rt_ctri_given),
+       for the tie rule's "given first". vmask: the vertex-index bits of a word, RT_VMASK
+       while the meshes are sorted, all ones when they keep the given order
+       (mesh_given_order: a mesh beyond the limits was added) */
+    uint32_t vmask;
+    int mesh_given_order;
     int mesh_open;                    /* rt_scene_mesh_begin's reservation at mesh[nmesh] */
     /* committed */
     int committed;
@@ -326,7 +334,8 @@ struct rt_scene {
                                          tri[i], else the mesh triangle ctri[i - ntri_plain] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
     size_t ntri_plain;
-    uint32_t (*ctri)[3];              /* committed mesh triangles: vertex indices (mv_xyz) */
+    uint32_t (*ctri)[3];              /* committed mesh triangles: vertex indices (mv_xyz, the
+                                         bits of vmask) and given positions (rt_ctri_given) */
     int ctri_owned;                   /* 1: a compacted copy, 0: ctri == mtri (all kept) */
     int prim_owned;                   /* 1: prim is allocated, 0: prim == in_tri_prim.p */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
@@ -348,6 +357,17 @@ struct rt_scene {
     size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
 
+/* the vertex-index bits of a mesh triangle's index word while the meshes are in spatial
+   order (rt_scene.vmask) */
+#define RT_VBITS 22
+#define RT_VMASK (((uint32_t)1 << RT_VBITS) - 1)
+/* a mesh triangle's given position within its mesh, from its index triple ix (meshes in
+   spatial order: rt_scene.vmask == RT_VMASK) */
+static inline uint32_t rt_ctri_given(const uint32_t ix[3])
+{
+    return ix[0] >> RT_VBITS | (ix[1] >> RT_VBITS) << 10 | (ix[2] >> RT_VBITS) << 20;
+}
+
 /* The three vertices of committed triangle primitive i (0 <= i < ntri; a triangle
    primitive's data is its index i): every reader of committed triangle vertices goes through
    this, rt_tri_copy, rt_tri_vert and rt_tri_prefetch, so the vertices' storage is known in
@@ -362,11 +382,11 @@ static inline void rt_tri_verts(const rt_scene *sc, size_t i, const double *v[3]
         v[2] = sc->tri[i].v[2];
         return;
     }
-    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const uint32_t *ix = sc->ctri[i - sc->ntri_plain], vm = sc->vmask;
     const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
-    v[0] = X[ix[0]];
-    v[1] = X[ix[1]];
-    v[2] = X[ix[2]];
+    v[0] = X[ix[0] & vm];
+    v[1] = X[ix[1] & vm];
+    v[2] = X[ix[2] & vm];
 }
 /* The nine coordinates of committed triangle primitive i into out (rt_tri_verts' vertices):
    a plain triangle's 72 bytes in one copy, a mesh triangle's three gathered, no loop. */
@@ -376,18 +396,19 @@ static inline void rt_tri_copy(const rt_scene *sc, size_t i, double out[9])
         memcpy(out, sc->tri[i].v, 9 * sizeof(double));
         return;
     }
-    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const uint32_t *ix = sc->ctri[i - sc->ntri_plain], vm = sc->vmask;
     const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
-    memcpy(out, X[ix[0]], 3 * sizeof(double));
-    memcpy(out + 3, X[ix[1]], 3 * sizeof(double));
-    memcpy(out + 6, X[ix[2]], 3 * sizeof(double));
+    memcpy(out, X[ix[0] & vm], 3 * sizeof(double));
+    memcpy(out + 3, X[ix[1] & vm], 3 * sizeof(double));
+    memcpy(out + 6, X[ix[2] & vm], 3 * sizeof(double));
 }
 /* Vertex k (0, 1, 2) of committed triangle primitive t (rt_tri_verts). */
 static inline const double *rt_tri_vert(const rt_scene *sc, size_t t, int k)
 {
     if (t < sc->ntri_plain)
         return sc->tri[t].v[k];
-    return (const double *)sc->mv_xyz.p + 3 * (size_t)sc->ctri[t - sc->ntri_plain][k];
+    return (const double *)sc->mv_xyz.p +
+           3 * (size_t)(sc->ctri[t - sc->ntri_plain][k] & sc->vmask);
 }
 /* starts loading the vertices of committed triangle t (both cache lines of a plain one's 72
    bytes; a mesh triangle's indices) */

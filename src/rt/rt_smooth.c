@@ -138,7 +138,8 @@ static int rt_smooth_mesh(const rt_scene *sc, size_t i, const double P[3], const
     const double ax = fabs(ng[0]), ay = fabs(ng[1]), az = fabs(ng[2]);
     const int kd = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
     const int ku = (kd + 1) % 3, kv = (kd + 2) % 3;
-    const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
+    const uint32_t *cx = sc->ctri[i - sc->ntri_plain];
+    const uint32_t ix[3] = {cx[0] & sc->vmask, cx[1] & sc->vmask, cx[2] & sc->vmask};
     const double *X = sc->mv_xyz.p;
     const float *N = sc->mv_n.p, *C = sc->mv_c.p;
     double s[3][2];

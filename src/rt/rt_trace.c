@@ -666,7 +666,7 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
 /* nearest-hit update for primitive i (mailboxed by the caller): the tests up to where a hit
    could still tie with the best (2 * eb beyond it), the choice in rt_nearest_update (ties in
    distance go to the area drawn later, equal distances within one area (a mesh's triangles
-   share its id) to the primitive committed first, so the picture does not depend on the
+   share its id) to the primitive given first, so the picture does not depend on the
    order of the cell lists) */
 RT_INLINE void rt_nearest_prim(const rt_scene *sc, const rt_rayx *r, uint32_t i, double *best,
                                long *bi, double *eb)
@@ -827,7 +827,7 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
-    const uint32_t(*ct)[3] = sc->ctri;
+    const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
     const double(*X)[3] = (const double(*)[3])sc->mv_xyz.p;
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double tmin = r->tmin, tmax = r->tmax;
@@ -840,8 +840,8 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0]], X[ix[1]], X[ix[2]], tmin, tmax,
-                           &t)) {
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0] & vm], X[ix[1] & vm],
+                           X[ix[2] & vm], tmin, tmax, &t)) {
             w->T = 0.0;
             w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
             return 1;

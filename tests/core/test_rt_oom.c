@@ -180,7 +180,8 @@ static void test_each_allocation_fails(void **u)
      * reservation per build part to growing as it goes, the shrink of its 2-byte
      * offsets (rt_big_shrink) to keeping the larger block, and the PNG workstation's 8-bit
      * copy of the picture and its row flags (resolved on the pool, ws_png.c) to resolving
-     * the rows one by one as before. The counts say how many. */
+     * the rows one by one as before, and the block of a mesh's sort into spatial order
+     * (rt_scene_mesh_end) to the given order. The counts say how many. */
     printf("RT_OOM: %ld allocations per frame (%ld of them the tracer's), each failed in turn: "
            "%ld reported 300, %ld absorbed with the same picture; of the %ld tracer "
            "allocations failed %ld reported 300; no other error\n",

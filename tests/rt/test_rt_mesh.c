@@ -7,7 +7,8 @@
  * commit's compacted copy); it needs fewer bytes per triangle; bad input is rejected with
  * nothing added; truncation and an abandoned reservation leave the scene as before. Shadow
  * rays over a scene of mesh triangles only (rt_occluded's any-hit lists of mesh triangles, one
- * per axis order of the rays) answer as without a grid.
+ * per axis order of the rays) answer as without a grid. Ties between a mesh's triangles go to
+ * the one given first although the mesh is stored in spatial order.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -293,6 +294,41 @@ static void test_occluded_mesh_only(void **state)
     rt_scene_free(b);
 }
 
+/* Two coplanar triangles of one mesh facing opposite ways, overlapping where a ray hits them
+ * both at the same distance (exact: small integers, an axis-parallel ray): the hit is the
+ * triangle given first, in either order, although the mesh is stored in spatial order (the
+ * second triangle's centre comes first in it), with a grid and without one. */
+static void test_tie_given_first(void **state)
+{
+    (void)state;
+    /* up: normal +z, centre (0, 0); down: normal -z, centre (-8/3, -8/3); (-1, -1) in both */
+    static const double v[6 * 3] = {-2, -2, 0, 4, -2, 0, -2, 4, 0,
+                                    -8, -8, 0, -8, 8, 0, 8, -8, 0};
+    static const uint32_t up_down[6] = {0, 1, 2, 3, 4, 5}, down_up[6] = {3, 4, 5, 0, 1, 2};
+    const rt_ray ray = {.org = {-1, -1, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
+    for (int order = 0; order < 2; order++)
+        for (int brute = 0; brute < 2; brute++) {
+            rt_scene *sc = rt_scene_new();
+            assert_non_null(sc);
+            rt_surface su;
+            rt_surface_default(&su);
+            const int s = rt_scene_add_surface(sc, &su);
+            assert_int_equal(rt_scene_add_mesh(sc, 6, v, NULL, NULL, 2,
+                                               order ? down_up : up_down, s, s), 0);
+            rt_build_options bo;
+            memset(&bo, 0, sizeof bo);
+            bo.brute_threshold = -1;
+            bo.brute_force = brute;
+            assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+            rt_hit h;
+            assert_int_equal(rt_intersect(sc, 1, &ray, &h), RT_OK);
+            assert_int_equal(h.prim, 0);
+            assert_true(h.t == 5.0);
+            assert_true(h.ng[2] == (order ? -1.0 : 1.0));
+            rt_scene_free(sc);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -300,6 +336,7 @@ int main(void)
         cmocka_unit_test(test_same_picture),
         cmocka_unit_test(test_same_picture_culled),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_tie_given_first),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
