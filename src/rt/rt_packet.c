@@ -96,7 +96,8 @@ typedef struct rt_pk {
     double best[RT_PACKET], eb[RT_PACKET];
     long bi[RT_PACKET];
     uint8_t nh[RT_PACKET];
-    rt_pk_rec rec[RT_PACKET][RT_PK_REC];
+    /* ray k's j-th hit in rec[j][k]: the first hits of a packet's rays on 16 lines, not 64 */
+    rt_pk_rec rec[RT_PK_REC][RT_PACKET];
     /* each ray's line: o[a1] + (z - o[K]) * m1, o[a2] + (z - o[K]) * m2 at z along K */
     double oK[RT_PACKET], o1[RT_PACKET], o2[RT_PACKET], m1[RT_PACKET], m2[RT_PACKET];
     double nf[2][3];         /* the grid box's near and far plane per axis (rt_pk_clip) */
@@ -1054,7 +1055,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q
     }
     p->hit |= (uint64_t)1 << k; /* nearest: rays with a hit */
     if (p->nh[k] < RT_PK_REC)
-        p->rec[k][p->nh[k]++] = (rt_pk_rec){i, t};
+        p->rec[p->nh[k]++][k] = (rt_pk_rec){i, t};
     else
         p->over |= (uint64_t)1 << k;
     const long old = p->bi[k];
@@ -1779,7 +1780,7 @@ static int rt_pk_sure(const rt_pk *p, int k)
         return 0;
     const uint32_t wi = (uint32_t)p->bi[k];
     for (int j = 0; j < p->nh[k]; j++) {
-        const rt_pk_rec *x = &p->rec[k][j];
+        const rt_pk_rec *x = &p->rec[j][k];
         if (x->i != wi && !rt_pk_beats(p->sc, &p->r[k], wi, p->best[k], x->i, x->t))
             return 0;
     }
