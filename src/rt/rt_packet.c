@@ -818,6 +818,10 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
             _mm256_storeu_pd(p->sz + k, _mm256_and_pd(in, sz));
             _mm256_storeu_pd(p->tn + k, _mm256_and_pd(in, v[6]));
             _mm256_storeu_pd(p->tx + k, _mm256_and_pd(in, v[7]));
+        } else { /* the nearest hit's records (an any-hit packet's rays only end) */
+            _mm256_storeu_pd(p->t1 + k, T1);
+            _mm256_storeu_pd(p->best + k, pinf);
+            _mm256_storeu_pd(p->eb + k, _mm256_setzero_pd());
         }
         _mm256_storeu_pd(p->oK + k, _mm256_and_pd(in, oK));
         _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, RT_PK_GO(a1)));
@@ -828,9 +832,6 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
         _mm256_storeu_pd(p->m2 + k, _mm256_and_pd(in, m2));
         _mm256_storeu_pd(p->us + k, _mm256_and_pd(in, us));
         _mm256_storeu_pd(p->ue + k, _mm256_and_pd(in, ue));
-        _mm256_storeu_pd(p->t1 + k, T1);
-        _mm256_storeu_pd(p->best + k, pinf);
-        _mm256_storeu_pd(p->eb + k, _mm256_setzero_pd());
         usmin = _mm256_min_pd(usmin, _mm256_blendv_pd(pinf, us, in));
         usmax = _mm256_max_pd(usmax, _mm256_blendv_pd(ninf, us, in));
         uemin = _mm256_min_pd(uemin, _mm256_blendv_pd(pinf, ue, in));
@@ -859,8 +860,10 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
         p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
         p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
     }
-    memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
-    memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
+    if (!any) {
+        memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
+        memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
+    }
     return 1; /* go, gd: set by rt_pk_make */
 }
 
