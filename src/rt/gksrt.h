@@ -314,9 +314,10 @@ typedef struct rt_hit {
     double ng[3];    /* unit geometric normal of the front side */
 } rt_hit;
 
-/* Nearest hit for n rays (ties in t: smallest primitive id; within a mesh, the triangle given
- * first). RT_ERR_STATE if not committed,
- * RT_ERR_NOMEM. Grid and brute force give bit-identical results. */
+/* Nearest hit for n rays (ties in t within the intersection's error bound: the larger primitive
+ * id, the area drawn later; within a mesh the nearer, at equal t the triangle given first).
+ * RT_ERR_STATE if not committed, RT_ERR_NOMEM. Grid and brute force give bit-identical
+ * results. */
 RT_API int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits);
 /* occluded[k] = 1 if ray k hits anything in [tmin,tmax], else 0 (transparency ignored). */
 RT_API int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded);

@@ -634,10 +634,11 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m)
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
         sc->mesh_given_order = 0;
+        sc->vlimit = (size_t)RT_VMASK + 1;
     }
     if (sc->mesh_given_order)
         return;
-    if (sc->nmv + m->nv > (size_t)RT_VMASK + 1 || m->nt > ((size_t)1 << 30)) {
+    if (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 30)) {
         rt_meshes_given_order(sc);
         return;
     }

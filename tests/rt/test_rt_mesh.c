@@ -22,6 +22,8 @@
 
 #include "gksrt.h"
 #include "rt_check.h"
+#define GKS3D_RT_BUILDING 1 /* the scene's mesh order and its vertex limit (test_given_order_back) */
+#include "rt_internal.h"
 #include "rt_testutil.h"
 
 enum { N = 13, SZ = 64 }; /* N x N vertices */
@@ -329,6 +331,86 @@ static void test_tie_given_first(void **state)
         }
 }
 
+
+/* The scene's meshes put back in their given order when a mesh beyond the limits of the
+   spatial order is added (here a lowered vertex limit): every triangle of the first mesh back
+   at its given position with its vertices in their roles, the index words without positions,
+   a later mesh left in its given order, and the same answers as a scene in spatial order. */
+static void test_given_order_back(void **state)
+{
+    (void)state;
+    enum { N = 12 }; /* a bumpy N x N vertex sheet at z near -10, triangles row by row */
+    static double sheet[N * N * 3];
+    static uint32_t six[2 * (N - 1) * (N - 1) * 3];
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            double *p = sheet + 3 * (j * N + i);
+            p[0] = -6.0 + i;
+            p[1] = -6.0 + j;
+            p[2] = -10.0 + 0.25 * ((i * 7 + j * 3) % 5);
+        }
+    size_t nt = 0;
+    for (int j = 0; j + 1 < N; j++)
+        for (int i = 0; i + 1 < N; i++) {
+            const uint32_t a = (uint32_t)(j * N + i), b = a + 1, c = a + N, d = c + 1;
+            const uint32_t q[6] = {a, b, d, a, d, c};
+            memcpy(six + 3 * nt, q, sizeof q);
+            nt += 2;
+        }
+    /* the tie pair of test_tie_given_first, the later-given triangle facing down */
+    static const double v[6 * 3] = {-2, -2, 0, 4, -2, 0, -2, 4, 0, -8, -8, 0, -8, 8, 0, 8, -8, 0};
+    static const uint32_t down_up[6] = {3, 4, 5, 0, 1, 2};
+    rt_scene *sc[2];
+    for (int k = 0; k < 2; k++) {
+        int s;
+        sc[k] = rtu_scene_one_surface(&s);
+        assert_non_null(sc[k]);
+        assert_int_equal(rt_scene_add_mesh(sc[k], N * N, sheet, NULL, NULL, nt, six, s, s), 0);
+        if (k == 1) { /* the spatial order moved the sheet's triangles */
+            assert_int_equal(sc[k]->vmask, RT_VMASK);
+            size_t moved = 0;
+            for (size_t t = 0; t < nt; t++)
+                moved += rt_ctri_given(((const uint32_t (*)[3])sc[k]->mtri.p)[t]) != t;
+            assert_true(moved > nt / 2);
+            sc[k]->vlimit = N * N + 5; /* the next mesh goes beyond it */
+        }
+        assert_int_equal(rt_scene_add_mesh(sc[k], 6, v, NULL, NULL, 2, down_up, s, s), 1);
+        assert_int_equal(rt_scene_add_mesh(sc[k], N * N, sheet, NULL, NULL, nt, six, s, s), 2);
+    }
+    assert_int_equal(sc[0]->vmask, RT_VMASK);
+    assert_int_equal(sc[1]->vmask, UINT32_MAX);
+    const uint32_t (*T)[3] = (const uint32_t (*)[3])sc[1]->mtri.p;
+    const double (*X)[3] = (const double (*)[3])sc[1]->mv_xyz.p;
+    for (size_t t = 0; t < nt; t++) /* both sheets: the given triangles, vertices in their roles */
+        for (int k = 0; k < 3; k++) {
+            assert_memory_equal(X[T[t][k]], sheet + 3 * six[3 * t + k], 3 * sizeof(double));
+            assert_memory_equal(X[T[nt + 2 + t][k]], sheet + 3 * six[3 * t + k], 3 * sizeof(double));
+        }
+    for (int k = 0; k < 2; k++)
+        assert_int_equal(rt_scene_commit(sc[k], NULL), RT_OK);
+    for (int j = 0; j < 40; j++) /* the same answers, the tie included */
+        for (int i = 0; i < 40; i++) {
+            const rt_ray ray = {.org = {-7.0 + 0.35 * i, -7.0 + 0.35 * j, 5},
+                                .dir = {0.01 * (i % 3), -0.01 * (j % 2), -1},
+                                .tmin = 0,
+                                .tmax = INFINITY};
+            rt_hit h[2];
+            for (int k = 0; k < 2; k++)
+                assert_int_equal(rt_intersect(sc[k], 1, &ray, &h[k]), RT_OK);
+            assert_int_equal(h[0].prim, h[1].prim);
+            assert_memory_equal(&h[0].t, &h[1].t, sizeof h[0].t);
+            assert_memory_equal(h[0].ng, h[1].ng, sizeof h[0].ng);
+        }
+    const rt_ray tie = {.org = {-1, -1, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
+    for (int k = 0; k < 2; k++) {
+        rt_hit h;
+        assert_int_equal(rt_intersect(sc[k], 1, &tie, &h), RT_OK);
+        assert_int_equal(h.prim, 1);
+        assert_true(h.ng[2] == -1.0); /* the triangle given first faces down */
+        rt_scene_free(sc[k]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -337,6 +419,7 @@ int main(void)
         cmocka_unit_test(test_same_picture_culled),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_tie_given_first),
+        cmocka_unit_test(test_given_order_back),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
