@@ -213,22 +213,26 @@ static void test_bad_input(void **state)
     rt_scene_free(sc);
 }
 
-/* the field alone as a mesh, committed with a grid or without one (brute) */
-static rt_scene *mesh_only(int brute)
+/* one mesh of nv vertices xyz and nt index triples ix, committed with a grid or without one
+   (brute) */
+static rt_scene *one_mesh(size_t nv, const double *v, size_t nt, const uint32_t *ix, int brute)
 {
-    rt_scene *sc = rt_scene_new();
+    int s;
+    rt_scene *sc = rtu_scene_one_surface(&s);
     assert_non_null(sc);
-    rt_surface su;
-    rt_surface_default(&su);
-    int s = rt_scene_add_surface(sc, &su);
-    const size_t nt = (N - 1) * (N - 1) * 2;
-    assert_int_equal(rt_scene_add_mesh(sc, N * N, xyz, NULL, NULL, nt, idx, s, s), 0);
+    assert_int_equal(rt_scene_add_mesh(sc, nv, v, NULL, NULL, nt, ix, s, s), 0);
     rt_build_options bo;
     memset(&bo, 0, sizeof bo);
     bo.brute_threshold = -1;
     bo.brute_force = brute;
     assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
     return sc;
+}
+
+/* the field alone as a mesh, committed with a grid or without one (brute) */
+static rt_scene *mesh_only(int brute)
+{
+    return one_mesh(N * N, xyz, (N - 1) * (N - 1) * 2, idx, brute);
 }
 
 /* Shadow rays from points of the field (hits of rays from above) to lights on four sides and
@@ -310,18 +314,7 @@ static void test_tie_given_first(void **state)
     const rt_ray ray = {.org = {-1, -1, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
     for (int order = 0; order < 2; order++)
         for (int brute = 0; brute < 2; brute++) {
-            rt_scene *sc = rt_scene_new();
-            assert_non_null(sc);
-            rt_surface su;
-            rt_surface_default(&su);
-            const int s = rt_scene_add_surface(sc, &su);
-            assert_int_equal(rt_scene_add_mesh(sc, 6, v, NULL, NULL, 2,
-                                               order ? down_up : up_down, s, s), 0);
-            rt_build_options bo;
-            memset(&bo, 0, sizeof bo);
-            bo.brute_threshold = -1;
-            bo.brute_force = brute;
-            assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+            rt_scene *sc = one_mesh(6, v, 2, order ? down_up : up_down, brute);
             rt_hit h;
             assert_int_equal(rt_intersect(sc, 1, &ray, &h), RT_OK);
             assert_int_equal(h.prim, 0);
