@@ -320,11 +320,10 @@ struct rt_scene {
        each word of a triple (mtri, ctri) holding a vertex index in its low RT_VBITS bits and
        10 bits of the triangle's given position within its mesh above them (rt_ctri_given),
        for the tie rule's "given first". vmask: the vertex-index bits of a word, RT_VMASK
-       while the meshes are sorted, all ones when they keep the given order
-       (mesh_given_order: a mesh beyond the limits was added); vlimit: the vertices the
-       scene's meshes may have in spatial order, RT_VMASK + 1 (set lower by a test) */
+       while the meshes are sorted, all ones once a mesh beyond the limits was added (every
+       mesh in its given order from then on); vlimit: the vertices the scene's meshes may
+       have in spatial order, RT_VMASK + 1 (set lower by a test) */
     uint32_t vmask;
-    int mesh_given_order;
     size_t vlimit;
     int mesh_open;                    /* rt_scene_mesh_begin's reservation at mesh[nmesh] */
     /* committed */

@@ -617,7 +617,6 @@ static void rt_meshes_given_order(rt_scene *sc)
                 T[t][k] &= RT_VMASK;
     }
     sc->vmask = UINT32_MAX;
-    sc->mesh_given_order = 1;
 }
 
 /* Added mesh m (its indices global and checked) stored in spatial order: its vertices in the
@@ -633,10 +632,9 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m)
 {
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
-        sc->mesh_given_order = 0;
         sc->vlimit = (size_t)RT_VMASK + 1;
     }
-    if (sc->mesh_given_order)
+    if (sc->vmask == UINT32_MAX) /* the given order from now on */
         return;
     if (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 30)) {
         rt_meshes_given_order(sc);
