@@ -709,8 +709,10 @@ struct rt_walkstate {
                     direction), set by the top-level walk of modes 1 and 2 for their
                     second-level walks (nearest-hit walks, with few second-level walks
                     per ray, compute their own as before) */
-    rt_anyhit_list_fn list; /* RT_ANY_MESH walks: the copy for the ray's axis order
-                               (rt_anyhit_list), chosen once per ray */
+    rt_anyhit_list_fn list; /* RT_ANY_MESH walks and nearest-hit walks of a scene of mesh
+                               triangles only (rt_mesh_only): the cell list's copy for the
+                               ray's axis order (rt_anyhit_list, rt_nearest_list), chosen once
+                               per ray; NULL: the general lists */
     double best;
     long bi;
     double ebest; /* the best hit's error bound (rt_nearest_update) */
@@ -718,14 +720,16 @@ struct rt_walkstate {
 };
 
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the empty cubes of the
  * ray's octant in dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
- * boundary beyond the best hit (t1 lowered to it); mode 1: transmittance, BLOCKED when an
- * opaque primitive is hit; mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see
- * the top of the file. Direction components exactly +0.0 or -0.0 never step. step: NULL, or
+ * boundary beyond the best hit (t1 lowered to it); mode 3: mode 0 of a scene of mesh triangles
+ * only, its cell lists through rt_walkstate.list (rt_nearest_list), its second-level walks
+ * rt_walk_sub_nearest_mesh; mode 1: transmittance, BLOCKED when an opaque primitive is hit;
+ * mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see the top of the file. Direction components exactly +0.0 or -0.0 never step. step: NULL, or
  * for a second-level walk of modes 1 and 2 the ray's steps, which their top level stores in
  * rt_walkstate.step (rt_dda_init). */
 /* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
@@ -886,6 +890,73 @@ static rt_anyhit_list_fn rt_anyhit_list(const rt_rayx *r)
     }
 }
 
+/* a nearest-hit cell list of mesh triangles only (rt_walk_box's mode 3), the ray's axis
+   order (kx, ky, kz) known at compile time, as rt_cell_anyhit_mesh_k for any-hit rays: the
+   mesh's index triples and vertices read directly, the ray's origin in registers, no
+   primitive kind to tell, no skipped primitive. The tests, their order, their search bound
+   and the choice are rt_cell_nearest's (rt_nearest_prim), so the hits are the same bits.
+   Returns 0 (the list type of rt_walkstate.list). */
+RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx,
+                                     int ky, int kz)
+{
+    const rt_scene *sc = w->sc;
+    const rt_rayx *r = w->r;
+    const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
+    const double(*X)[3] = (const double(*)[3])sc->mv_xyz.p;
+    const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
+    const double tmin = r->tmin, tmax = r->tmax;
+    uint64_t *const hbox = w->c->hbox;
+    const uint64_t key = (uint64_t)w->stamp << 32;
+    if (n >= 2) /* rt_prefetch_tris: the index triples */
+        for (uint32_t k = 0; k < n; k++)
+            __builtin_prefetch(ct[refs[k]]);
+    for (uint32_t k = 0; k < n; k++) {
+        const uint32_t i = refs[k];
+        if (hbox[i % RT_HBOX] == (key | i))
+            continue;
+        hbox[i % RT_HBOX] = key | i;
+        const uint32_t *ix = ct[i];
+        double t;
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0] & vm], X[ix[1] & vm],
+                           X[ix[2] & vm], tmin, RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
+            rt_nearest_update(sc, r, i, t, &w->best, &w->bi, &w->ebest);
+    }
+    return 0;
+}
+
+#define RT_CELL_NEAREST(KX, KY, KZ)                                                             \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_nearest_##KX##KY##KZ(      \
+        rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
+    {                                                                                         \
+        return rt_cell_nearest_mesh_k(w, refs, n, KX, KY, KZ);                                \
+    }
+RT_CELL_NEAREST(1, 2, 0)
+RT_CELL_NEAREST(2, 1, 0)
+RT_CELL_NEAREST(2, 0, 1)
+RT_CELL_NEAREST(0, 2, 1)
+RT_CELL_NEAREST(0, 1, 2)
+RT_CELL_NEAREST(1, 0, 2)
+#undef RT_CELL_NEAREST
+
+/* the nearest-hit list copy for the axis order of r (rt_anyhit_list's choice) */
+static rt_anyhit_list_fn rt_nearest_list(const rt_rayx *r)
+{
+    switch (r->kz * 4 + r->kx) {
+    case 0 * 4 + 1:
+        return rt_cell_nearest_120;
+    case 0 * 4 + 2:
+        return rt_cell_nearest_210;
+    case 1 * 4 + 2:
+        return rt_cell_nearest_201;
+    case 1 * 4 + 0:
+        return rt_cell_nearest_021;
+    case 2 * 4 + 0:
+        return rt_cell_nearest_012;
+    default:
+        return rt_cell_nearest_102;
+    }
+}
+
 /* 1 if blocked */
 static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uint32_t *refs,
                                                       uint32_t n)
@@ -966,6 +1037,8 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 {
     if (mode == 2)
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1) : w->list(w, refs, n);
+    if (mode == 3)
+        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0) : w->list(w, refs, n);
     if (mode == 0 && lf)
         (void)rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0);
     else if (mode == 0)
@@ -1014,8 +1087,9 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = s.t0;
         t1 = s.t1;
     }
-    if (sub && mode != 0) { /* any-hit and transmittance walks' top level: the steps for
-                               their second-level walks (rt_dda_init) */
+    if (sub && (mode == 1 || mode == 2)) { /* any-hit and transmittance walks' top level:
+                                              the steps for their second-level walks
+                                              (rt_dda_init) */
         w->step[0] = sx;
         w->step[1] = sy;
         w->step[2] = sz;
@@ -1087,7 +1161,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
             s1 = RT_MIN(s1, t1);
             if (pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1) : rt_box_clip(&sg->b, gr, &s0, &s1)) {
-                int st = mode == 0 ? rt_walk_sub_nearest(w, sg, s0, s1)
+                int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
+                         : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
                          : w->any_hit == RT_ANY_MESH ? rt_walk_sub_anyhit(w, sg, s0, s1)
                                                      : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
@@ -1098,7 +1173,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
            Once a cell is left whose exit is beyond it, every primitive hit up to there has
            been tested (the cells that hold the ray points up to it were all visited, and
            each holds every primitive crossing it). */
-        if (mode == 0 && w->best + 2.0 * w->ebest < t1)
+        if ((mode == 0 || mode == 3) && w->best + 2.0 * w->ebest < t1)
             t1 = w->best + 2.0 * w->ebest;
     advance:
         RT_ADVANCE();
@@ -1114,6 +1189,20 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
         return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
                            g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
     return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
+                       t0, t1, 0, NULL, 0, NULL);
+}
+
+/* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3: the lists
+   through rt_walkstate.list), in AVX2's encoding as the any-hit ones below */
+static __attribute__((noinline)) RT_ANYHIT_TARGET int
+rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
+{
+    const rt_grid *g = &w->sc->grid;
+    const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
+    if (g->soff16)
+        return rt_walk_box(w, 3, &sg->b, NULL, g->soff16 + sg->first16,
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
+    return rt_walk_box(w, 3, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
                        t0, t1, 0, NULL, 0, NULL);
 }
 
@@ -1253,6 +1342,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
 }
 
 static int rt_anyhit_kind(const rt_scene *sc);
+static int rt_mesh_only(const rt_scene *sc);
 
 double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int any_hit)
 {
@@ -1339,9 +1429,9 @@ static inline void rt_miss_hit(rt_hit *h)
     *h = (rt_hit){.t = INFINITY, .prim = -1};
 }
 
-/* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j) */
+/* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j); mesh: rt_mesh_only's */
 RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
-                                const rt_pre4 *p, int j)
+                                const rt_pre4 *p, int j, int mesh)
 {
     rt_rayx r;
     double t;
@@ -1353,8 +1443,10 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, 0);
+        if (mesh)
+            w.list = rt_nearest_list(&r);
         w.stamp = rt_ctx_next(c);
-        rt_walk_pre(&w, 0, p, j);
+        rt_walk_pre(&w, mesh ? 3 : 0, p, j);
         t = w.best;
         i = w.bi;
     } else if ((!p || p->state[j] == 0) &&
@@ -1376,13 +1468,10 @@ static inline int rt_pre4_all_miss(const rt_pre4 *p)
     return ((s[0] ^ one2) | (s[1] ^ one2)) == 0; /* one branch */
 }
 
-int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+/* rt_intersect's rays (setup4: NULL, or the four-ray set-up; mesh: rt_mesh_only's) */
+RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
+                                 rt_hit *hits, rt_setup4_fn setup4, int mesh)
 {
-    rt_ctx c;
-    const int rc = rt_batch_begin(sc, n, rays, hits, &c);
-    if (rc != RT_OK)
-        return rc;
-    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     size_t k = 0;
     if (setup4) {
         rt_pre4 p;
@@ -1394,11 +1483,39 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
                 continue;
             }
             for (int j = 0; j < 4; j++)
-                rt_intersect_one(sc, &c, rays + k + j, hits + k + j, &p, j);
+                rt_intersect_one(sc, c, rays + k + j, hits + k + j, &p, j, mesh);
         }
     }
     for (; k < n; k++)
-        rt_intersect_one(sc, &c, rays + k, hits + k, NULL, 0);
+        rt_intersect_one(sc, c, rays + k, hits + k, NULL, 0, mesh);
+}
+
+static __attribute__((noinline)) void rt_intersect_any(const rt_scene *sc, rt_ctx *c, size_t n,
+                                                       const rt_ray *rays, rt_hit *hits,
+                                                       rt_setup4_fn setup4)
+{
+    rt_intersect_rays(sc, c, n, rays, hits, setup4, 0);
+}
+
+/* the same for a scene of mesh triangles only (rt_mesh_only): the walks of mode 3 */
+static __attribute__((noinline)) void
+rt_intersect_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays, rt_hit *hits,
+                  rt_setup4_fn setup4)
+{
+    rt_intersect_rays(sc, c, n, rays, hits, setup4, 1);
+}
+
+int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
+{
+    rt_ctx c;
+    const int rc = rt_batch_begin(sc, n, rays, hits, &c);
+    if (rc != RT_OK)
+        return rc;
+    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    if (rt_mesh_only(sc))
+        rt_intersect_mesh(sc, &c, n, rays, hits, setup4);
+    else
+        rt_intersect_any(sc, &c, n, rays, hits, setup4);
     rt_ctx_free(&c);
     return RT_OK;
 }
@@ -1426,18 +1543,24 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
     return rt_transmit_core(sc, c, &r, &r, ah) == 0.0;
 }
 
-/* the any-hit kind of rt_occluded's walks: RT_ANY_MESH where the scene's primitives are all
-   mesh triangles and the CPU has AVX2 (its rays never skip a primitive) */
-static int rt_anyhit_kind(const rt_scene *sc)
+/* 1 where the batch API's walks take the cell lists of mesh triangles (rt_anyhit_list,
+   rt_nearest_list): a grid over mesh triangles only and a CPU with AVX2 (the batch API's
+   rays never skip a primitive) */
+static int rt_mesh_only(const rt_scene *sc)
 {
 #ifdef RT_SETUP4_AVX2
     pthread_once(&rt_setup4_once, rt_setup4_pick);
-    if (rt_setup4_level >= 2 && sc->use_grid && sc->ntri_plain == 0 && sc->ntri == sc->nprim)
-        return RT_ANY_MESH;
+    return rt_setup4_level >= 2 && sc->use_grid && sc->ntri_plain == 0 && sc->ntri == sc->nprim;
 #else
     (void)sc;
+    return 0;
 #endif
-    return RT_ANY_HIT;
+}
+
+/* the any-hit kind of rt_occluded's walks: RT_ANY_MESH where rt_mesh_only */
+static int rt_anyhit_kind(const rt_scene *sc)
+{
+    return rt_mesh_only(sc) ? RT_ANY_MESH : RT_ANY_HIT;
 }
 
 int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
