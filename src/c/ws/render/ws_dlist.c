@@ -244,9 +244,58 @@ static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
            (!want[A_RGB] || c->n_xyz + want[A_RGB] <= c->cap[A_RGB]);
 }
 
+/* The state before an append, for ws_dlist_unappend. */
+static void undo_note(ws_dlist *dl, ws_dl_chunk *c, unsigned reader)
+{
+    dl->undo_chunk = c;
+    dl->undo[A_REC] = c->n_rec;
+    dl->undo[A_XYZ] = c->n_xyz;
+    dl->undo[A_NRM] = c->n_nrm;
+    dl->undo[A_RGB] = c->n_rgb;
+    dl->undo[A_CNT] = c->n_cnt;
+    dl->undo[A_IDX] = c->n_idx;
+    dl->undo[A_ATTR] = c->n_attr;
+    dl->undo_reader = reader_ix(reader);
+}
+
+/* The common record, made as ws_dlist_append's general path makes it: one facet of loops
+ * taking its vertices in order, with no normals, colours, indices or own data, and the
+ * attributes of the previous record in the open current chunk, which has room for it (the
+ * tracer's areas between attribute changes). Returns 0 (appended) or -1 (not this case:
+ * nothing changed). */
+static int append_plain(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr,
+                        size_t attr_size, const ws_dl_need *need, ws_dl_put *put)
+{
+    ws_dl_chunk *c = dl->cur;
+    const size_t nv = need->n_vtx, nl = (size_t)need->n_loops;
+    if (!c || c->sealed || need->flags || need->n_facets || need->n_idx || need->data_size ||
+        need->n_loops < 0 || (unsigned)kind > UCHAR_MAX || (unsigned)view > UCHAR_MAX ||
+        attr_size > UINT32_MAX / 4 || c->n_rec >= c->cap[A_REC] ||
+        nv > c->cap[A_XYZ] - c->n_xyz || nl > c->cap[A_CNT] - c->n_cnt ||
+        !same_attr(c, attr, attr_size))
+        return -1; /* n_vtx fits a chunk's 32-bit capacity, n_loops its counts */
+    undo_note(dl, c, reader);
+    c->readers |= reader;
+    ws_dl_rec *r = &c->rec[c->n_rec++];
+    *r = (ws_dl_rec){ .kind = (unsigned char)kind, .view = (unsigned char)view,
+                      .reader = (unsigned char)reader, .n_loops = need->n_loops,
+                      .attr = c->rec[c->n_rec - 2].attr, .attr_size = (uint32_t)attr_size,
+                      .data = (uint32_t)c->n_attr, .vtx = (uint32_t)c->n_xyz,
+                      .n_vtx = (uint32_t)nv, .cnt = (uint32_t)c->n_cnt,
+                      .idx = (uint32_t)c->n_idx };
+    c->n_xyz += nv;
+    c->n_cnt += nl;
+    *put = (ws_dl_put){ .rec = r, .xyz = nv ? c->xyz + 3 * (size_t)r->vtx : NULL,
+                        .loops = nl ? c->cnt + r->cnt : NULL };
+    dl->n_rec[dl->undo_reader]++;
+    return 0;
+}
+
 int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put)
 {
+    if (append_plain(dl, reader, kind, view, attr, attr_size, need, put) == 0)
+        return 0;
     size_t want[N_ARR];
     if (kind < 0 || kind > UCHAR_MAX || view < 0 || view > UCHAR_MAX ||
         need_of(need, attr_size, want))
@@ -266,10 +315,7 @@ int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const voi
             return 300;
         c = dl->cur;
     }
-    dl->undo_chunk = c;
-    for (int a = 0; a < N_ARR; a++)
-        dl->undo[a] = *fill_of(c, a);
-    dl->undo_reader = reader_ix(reader);
+    undo_note(dl, c, reader);
     c->readers |= reader;
     ws_dl_rec *r = &c->rec[c->n_rec++];
     *r = (ws_dl_rec){ .kind = (unsigned char)kind, .view = (unsigned char)view,
