@@ -38,6 +38,17 @@ static gks_segment *open_segment(void)
     return sl->open_seg ? gks_seg_find(sl->segs, sl->open_seg) : NULL;
 }
 
+void gks_pipe_norm_facts(gks_pipe_norm *nc)
+{
+    const double (*m)[4] = (const double (*)[4])nc->m;
+    const double *b = nc->box;
+    nc->axis_aligned = m[0][1] == 0 && m[0][2] == 0 && m[1][0] == 0 && m[1][2] == 0 &&
+                       m[2][0] == 0 && m[2][1] == 0;
+    /* the sum is finite only if each limit is (an overflow only means the points' own
+     * checks are made) */
+    nc->box_finite = nc->clip_on && isfinite(((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+}
+
 int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box[6], int clip_on)
 {
     memcpy(nc->m, m, sizeof nc->m);
@@ -47,6 +58,7 @@ int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box
     memcpy(nc->box, box, sizeof nc->box);
     nc->clip_on = clip_on;
     nc->seg = NULL;
+    gks_pipe_norm_facts(nc);
     gks_xform_clip_init(&nc->clip);
     nc->clip.wmin = 0.0; /* NDC3 points have w = 1: no eye plane to keep off */
     if (clip_on && gks_xform_clip_add_box(&nc->clip, box, GKS_XFORM_CLIP_ALL))
@@ -111,6 +123,7 @@ static int norm_make(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec
     if (seg) {
         gks_xform_mat34_multiply(seg->tran, pm, nc->m);
         gks_xform_mat34_multiply(seg->tran, n, nc->pat);
+        gks_pipe_norm_facts(nc);
     }
     if (!ov) {
         memcpy(norm_cache.w, w, sizeof w);

@@ -25,6 +25,10 @@ typedef struct gks_pipe_norm {
     int clip_on;
     double box[6];             /* the clipping volume: the viewport 3 when created */
     gks_segment *seg;          /* the open segment (current state only), else NULL */
+    /* facts of m and the clipping volume that areas use (gks_pipe_norm_facts, made again
+       wherever m, box or clip_on change): m maps each coordinate by its own row alone (a
+       scale and a shift per axis, no rotation or shear); clipping is on with a finite box */
+    int axis_aligned, box_finite;
 } gks_pipe_norm;
 
 /* The recorded normalization a primitive performed by INTERPRET ITEM enters the pipeline
@@ -38,6 +42,9 @@ typedef struct gks_rec_xf {
     int clip_on;
     int ndc_pts;
 } gks_rec_xf;
+
+/* Sets nc's axis_aligned and box_finite from its m, box and clip_on. */
+void gks_pipe_norm_facts(gks_pipe_norm *nc);
 
 /* xf NULL below: the current normalization. */
 /* The context of the current state, or of the recorded normalization xf: 0, or 308 if

@@ -272,18 +272,14 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
     return err;
 }
 
-/* Whether m maps each coordinate by its own row alone: a scale and a shift per axis (the
- * normalization, with no segment transformation or one without rotation and shear). Then
- * emit_area maps a point by m[k][k] * c + m[k][3] per axis, which equals the full row: with
- * the other coordinates finite their products with the zero entries are zeros, which
- * change a non-zero sum by nothing (a zero sum, whose sign they may change, is made again
- * by the full row); a non-finite coordinate makes its own axis non-finite, so the area is
- * dropped as in the full mapping, and an overflow is the same sum's. */
-static int axis_aligned(const double (*m)[4])
-{
-    return m[0][1] == 0 && m[0][2] == 0 && m[1][0] == 0 && m[1][2] == 0 && m[2][0] == 0 &&
-           m[2][1] == 0;
-}
+/* nc->axis_aligned (gks_pipe_norm_facts): m maps each coordinate by its own row alone, a
+ * scale and a shift per axis (the normalization, with no segment transformation or one
+ * without rotation and shear). Then emit_area maps a point by m[k][k] * c + m[k][3] per
+ * axis, which equals the full row: with the other coordinates finite their products with
+ * the zero entries are zeros, which change a non-zero sum by nothing (a zero sum, whose sign
+ * they may change, is made again by the full row); a non-finite coordinate makes its own
+ * axis non-finite, so the area is dropped as in the full mapping, and an overflow is the
+ * same sum's. */
 
 #define AREA_SMALL 16 /* areas up to this many points and loops use stack buffers */
 
@@ -303,16 +299,15 @@ static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, 
         goto done;
     }
     const double (*m)[4] = (const double (*)[4])nc->m;
-    if (s->p3 && axis_aligned(m)) {
+    if (s->p3 && nc->axis_aligned) {
         /* m and the box in locals: the stores into pts could alias nc for the compiler */
         const double a0 = m[0][0], a1 = m[1][1], a2 = m[2][2];
         const double t0 = m[0][3], t1 = m[1][3], t2 = m[2][3];
         const int clip_on = nc->clip_on;
         double b[6];
         memcpy(b, nc->box, sizeof b);
-        /* a point in a finite box is finite: then its own check is not needed (the sum is
-         * finite only if each limit is; an overflow only means the checks are made) */
-        const int box_finite = clip_on && isfinite(((b[0] + b[1]) + (b[2] + b[3])) + (b[4] + b[5]));
+        /* a point in a finite box is finite: then its own check is not needed */
+        const int box_finite = nc->box_finite;
         const Gpoint3 *q = s->p3;
         for (size_t i = 0; i < n; i++) {
             const double x = q[i].x, y = q[i].y, z = q[i].z;
