@@ -891,6 +891,72 @@ static void test_threads_identical(void **u)
     free(c.rgb);
 }
 
+/* Areas queued with 2 threads under view orientations other than the identity: view 1
+ * turns NDC3 by 90 degrees, scales it by 2 and shifts it (its mapping takes it back into the
+ * picture); view 2 scales x by 3e100, so the areas reaching x > 1/3 are beyond the tracer's
+ * coordinate range (clipped at the call to the display volume, x in [0, 1] of VRC3) and the
+ * others not. With 2 threads the recording
+ * worker maps the first kind to VRC3 itself with the orientation each area was queued
+ * with (views alternate area by area): the file is bit-identical to the one thread's. */
+static void oriented_picture(const char *file, int threads)
+{
+    open_png(1, file, GHLHSR_RAYTRACE);
+    assert_int_equal(esc1(GESC_RT_THREADS, 1, threads), 0);
+    Gview_rep3 v;
+    memset(&v, 0, sizeof v);
+    const double ori[4][4] = { { 0, -2, 0, 1.5 }, { 2, 0, 0, -0.5 }, { 0, 0, 1, 0 },
+                               { 0, 0, 0, 1 } };
+    const double map[4][4] = { { 0.5, 0, 0, 0.25 }, { 0, 0.5, 0, 0.25 }, { 0, 0, 1, 0 },
+                               { 0, 0, 0, 1 } };
+    memcpy(v.ori_matrix, ori, sizeof ori);
+    memcpy(v.map_matrix, map, sizeof map);
+    v.clip_limit = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+    v.xy_clip = v.back_clip = v.front_clip = GIND_CLIP;
+    gset_view_rep3(1, 1, &v);
+    memset(&v, 0, sizeof v);
+    for (int i = 0; i < 4; i++)
+        v.ori_matrix[i][i] = v.map_matrix[i][i] = 1;
+    v.ori_matrix[0][0] = 3e100; /* its display volume stays x in [0, 1] of VRC3 */
+    v.clip_limit = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+    v.xy_clip = v.back_clip = v.front_clip = GIND_CLIP;
+    gset_view_rep3(1, 2, &v);
+    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0.3, -0.5, -0.8 },
+                         { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 2, &l);
+    Grgb c = { 0.9, 0.6, 0.3 };
+    lit_setup(&c);
+    for (int k = 0; k < 40; k++) {
+        const double x = 0.02 * k, y = 0.3 + 0.01 * k, z = 0.2 + 0.015 * k;
+        Gpoint3 t[4] = { { x, y, z }, { x + 0.3, y - 0.1, z + 0.1 }, { x + 0.1, y + 0.4, z },
+                         { x, y + 0.3, z + 0.05 } };
+        Gpoint_list3 pl = { 3 + k % 2, t };
+        gset_view_ind(1 + k % 2);
+        gfill_area3(&pl);
+    }
+    gdeactivate_ws(1);
+    gclose_ws(1);
+}
+
+static void test_threads_oriented(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    oriented_picture("t_rt_ori1.png", 1);
+    oriented_picture("t_rt_ori2.png", 2);
+    gclose_gks();
+    no_errors();
+    assert_same_file("t_rt_ori1.png", "t_rt_ori2.png");
+    image a;
+    assert_true(read_png("t_rt_ori1.png", &a));
+    int lit = 0;
+    for (int y = 0; y < a.h; y++)
+        for (int x = 0; x < a.w; x++)
+            lit += px(&a, x, y)[2] < 200; /* not the white background */
+    assert_true(lit > 200);
+    free(a.rgb);
+}
+
 /* Samples per pixel: a red square over [0.2,0.8]^2 (edge at pixel 12.8): 1 sample leaves
  * pixel 12 white, 16 samples cover 1 of its 4 strata columns: 1/4 red over white. Workstation
  * 3 also has a polyline (an annotation) far from the square, so its picture is composed by
@@ -1938,6 +2004,7 @@ int main(void)
         cmocka_unit_test(test_default_sampling),
         cmocka_unit_test(test_depth_mirror),
         cmocka_unit_test(test_threads_identical),
+        cmocka_unit_test(test_threads_oriented),
         cmocka_unit_test(test_samples_edges),
         cmocka_unit_test(test_cutoff),
         cmocka_unit_test(test_progress),

@@ -290,6 +290,21 @@ void ws_rt_set_share_tiles(ws_rt *r, int on) { r->share_tiles = on != 0; }
 
 static int clamp_view(int v) { return v >= 0 && v <= GKS_MAX_VIEW_IND ? v : 0; }
 
+/* The attributes of prim into *a, field by field (rt_attr has no padding: its bytes are
+ * compared by the display list). */
+_Static_assert(sizeof(rt_attr) ==
+                   sizeof(Grgb) + 2 * sizeof(Garea_props) + 2 * sizeof(int) + sizeof(uint64_t),
+               "rt_attr has padding");
+static void attr_set(rt_attr *a, const gks_prim *prim)
+{
+    a->colour = prim->colour;
+    a->props[0] = prim->area_props[0];
+    a->props[1] = prim->area_props[1];
+    a->refl_eq[0] = prim->refl_eq[0];
+    a->refl_eq[1] = prim->refl_eq[1];
+    a->light_mask = prim->light_mask;
+}
+
 /* The attributes of prim. */
 static rt_attr attr_of(const gks_prim *prim)
 {
@@ -952,9 +967,9 @@ static int queue_countable(const gks_prim *prim, int *nl, size_t *np, unsigned *
 }
 
 /* prim's loops of 3 or more points into counts and their VRC3 points (view orientation ori,
- * as ws_vrc_points computes them) into xyz; returns the largest |coordinate| (max_abs). */
-static double queue_points(const gks_prim *prim, const double (*ori)[4], int *counts,
-                           double *xyz)
+ * as ws_vrc_points computes them) into xyz; returns whether their max_abs is above
+ * RT_COORD_MAX. */
+static int queue_points(const gks_prim *prim, const double (*ori)[4], int *counts, double *xyz)
 {
     const int affine = ws_vrc_affine(ori);
     size_t src = 0, q = 0;
@@ -971,14 +986,15 @@ static double queue_points(const gks_prim *prim, const double (*ori)[4], int *co
                     ws_vrc_point_affine(ori, p->x, p->y, p->z, o);
                 else
                     ws_vrc_point(ori, p->x, p->y, p->z, o);
-                for (int j = 0; j < 3; j++)
-                    if (fabs(o[j]) > big)
-                        big = fabs(o[j]);
+                for (int j = 0; j < 3; j++) { /* a NaN leaves big as it is */
+                    const double a = fabs(o[j]);
+                    big = a > big ? a : big;
+                }
             }
         }
         src += m;
     }
-    return big;
+    return big > RT_COORD_MAX;
 }
 
 /* The vertex data of prim's loops of 3 or more points, as push_polygon has them: normals
@@ -1020,18 +1036,20 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     double nm[3][3];
     if ((data & WS_DL_NORMALS) && gks_xform_normal_matrix(ws->views[vi].ori_matrix, nm))
         data &= ~(unsigned)WS_DL_NORMALS; /* a singular view orientation: no usable normals */
-    const rt_attr a = attr_of(prim);
+    rt_attr a;
+    attr_set(&a, prim);
     const ws_dl_need need = { .n_vtx = np, .flags = data, .n_loops = nl };
     ws_dl_put put;
     if (ws_dlist_append(r->dl, WS_DL_TRACER, DL_POLY, vi, &a, sizeof a, &need, &put))
         return 300;
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
-    /* max_abs of the VRC3 coordinates, as the synchronous path finds it */
-    if (queue_points(prim, ori, put.loops, put.xyz) > RT_COORD_MAX) {
+    /* the VRC3 coordinates against the range, as the synchronous path checks their max_abs */
+    if (queue_points(prim, ori, put.loops, put.xyz)) {
         ws_dlist_unappend(r->dl);
         return 0; /* beyond the tracer's range: the synchronous path clips it */
     }
-    queue_data(prim, (const double (*)[3])nm, put.nrm, put.rgb);
+    if (data)
+        queue_data(prim, (const double (*)[3])nm, put.nrm, put.rgb);
     r->count++;
     return 1;
 }
