@@ -421,7 +421,7 @@ static int ours_stats(rt_scene *sc, rt_stats *rs)
    committed scene: rt_scene_add_mesh (the copy, and the spatial order the tracer stores a
    mesh in) and the commit on 1 thread, process CPU seconds in *secs; the statistics in *rs.
    0, or -1 on failure. */
-static int build_ours_mesh(const double *v, size_t nv, const uint32_t *ix, size_t nt, double *secs, rt_stats *rs)
+__attribute__((noinline)) static int build_ours_mesh(const double *v, size_t nv, const uint32_t *ix, size_t nt, double *secs, rt_stats *rs)
 {
     rt_scene *sc = rt_scene_new();
     rt_surface su;
@@ -441,7 +441,7 @@ static int build_ours_mesh(const double *v, size_t nv, const uint32_t *ix, size_
 
 /* Embree's side of build_ours_mesh: em_scene (the float buffers) and rtcCommitScene, process
    CPU seconds; the scene released. 0, or -1 on failure. */
-static int build_embree_mesh(RTCDevice dev, const double *v, size_t nv, const uint32_t *ix, size_t nt, double *secs)
+__attribute__((noinline)) static int build_embree_mesh(RTCDevice dev, const double *v, size_t nv, const uint32_t *ix, size_t nt, double *secs)
 {
     const double t0 = bs_process_cpu();
     RTCScene es = em_scene(dev, v, nv, ix, nt);
