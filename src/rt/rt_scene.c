@@ -384,10 +384,13 @@ int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_
    with a vertex that is not sane or that rt_tri_prim would find degenerate is dropped (never
    traced), the kept ones moved to the front of the part's range in order; the box of the kept
    ones and their frame candidates (rt_fcands: ranked as the grid's frame choice ranks them);
-   the normals and colours finite (else bad). What the commit did for every mesh triangle at
-   every commit (the check and the box here, the ranking in the frame choice's pass), done
-   once here, where the caller (the workstation's recording) may overlap it with the
-   application's calls. The same kept triangles, box and candidates for any number of parts. */
+   the normals and colours finite (else bad); with sum, each kept triangle's vertex sum (the
+   centre's coordinates times 3, which rt_mesh_sort's order is made of) at its kept place, so
+   that the sort does not gather the vertices in the given order a second time. What the
+   commit did for every mesh triangle at every commit (the check and the box here, the ranking
+   in the frame choice's pass), done once here, where the caller (the workstation's recording)
+   may overlap it with the application's calls. The same kept triangles, box and candidates
+   for any number of parts. */
 typedef struct rt_mesh_add_part {
     double bb[6];
     size_t kept;
@@ -400,10 +403,20 @@ typedef struct rt_mesh_add_job {
     uint32_t *ix;             /* the mesh's index triples */
     const double (*X)[3];     /* the scene's mesh vertices (global indices) */
     const float *n, *c;       /* the mesh's normals, colours (NULL: none) */
+    double (*sum)[3];         /* per triangle: its vertex sum (NULL: not wanted) */
     _Alignas(RT_LINE) rt_mesh_add_part part[RT_PAR_MAX];
 } rt_mesh_add_job;
 
-static inline int rt_tri_surely_sane(const double *v0, const double *v1, const double *v2);
+static inline int rt_tri_surely_sane_ext(const double *v0, const double *v1, const double *v2,
+                                         double ext);
+
+/* *l, *h := the least and the greatest of a, b, c, the first of equal values kept */
+static inline void rt_minmax3(double a, double b, double c, double *l, double *h)
+{
+    const double l1 = b < a ? b : a, h1 = b > a ? b : a;
+    *l = c < l1 ? c : l1;
+    *h = c > h1 ? c : h1;
+}
 
 static void rt_mesh_add_run(void *arg, int k, int n)
 {
@@ -415,10 +428,8 @@ static void rt_mesh_add_run(void *arg, int k, int n)
     for (size_t i = lo; i < hi; i++)
         if ((j->n && !isfinite(j->n[i])) || (j->c && !isfinite(j->c[i])))
             o->bad = 1;
-    for (int i = 0; i < 3; i++) {
-        o->bb[i] = INFINITY;
-        o->bb[3 + i] = -INFINITY;
-    }
+    double bb0 = INFINITY, bb1 = INFINITY, bb2 = INFINITY;
+    double bb3 = -INFINITY, bb4 = -INFINITY, bb5 = -INFINITY;
     rt_par_range(m->nt, k, n, &lo, &hi);
     w = lo;
     for (size_t t = lo; t < hi && !o->bad; t++) {
@@ -430,10 +441,34 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         const uint32_t a = q[0] + (uint32_t)m->v0, b = q[1] + (uint32_t)m->v0,
                        c = q[2] + (uint32_t)m->v0;
         const double *A = j->X[a], *B = j->X[b], *C = j->X[c];
-        double nrm[3];
-        if (!sane3(A) || !sane3(B) || !sane3(C) ||
-            !(rt_tri_surely_sane(A, B, C) || rt_tri_normal_sane(A, B, C, nrm)))
+        if (!sane3(A) || !sane3(B) || !sane3(C))
             continue;
+        /* the triangle's box, the first of equal values kept (-0 or +0, as rt_bbox_add
+           growing a box by A, B, C in turn keeps them), its extent for rt_tri_surely_sane's
+           test (hi - lo is the same value whichever zero is kept), and the vertex sum; axis
+           by axis written out (gcc keeps 3-element loops and their arrays in memory) */
+        double l0, h0, l1, h1, l2, h2;
+        rt_minmax3(A[0], B[0], C[0], &l0, &h0);
+        rt_minmax3(A[1], B[1], C[1], &l1, &h1);
+        rt_minmax3(A[2], B[2], C[2], &l2, &h2);
+        double ext = h0 - l0 > 0.0 ? h0 - l0 : 0.0;
+        ext = h1 - l1 > ext ? h1 - l1 : ext;
+        ext = h2 - l2 > ext ? h2 - l2 : ext;
+        const double s0 = A[0] + B[0] + C[0], s1 = A[1] + B[1] + C[1], s2 = A[2] + B[2] + C[2];
+        double nrm[3];
+        if (!(rt_tri_surely_sane_ext(A, B, C, ext) || rt_tri_normal_sane(A, B, C, nrm)))
+            continue;
+        bb0 = l0 < bb0 ? l0 : bb0;
+        bb1 = l1 < bb1 ? l1 : bb1;
+        bb2 = l2 < bb2 ? l2 : bb2;
+        bb3 = h0 > bb3 ? h0 : bb3;
+        bb4 = h1 > bb4 ? h1 : bb4;
+        bb5 = h2 > bb5 ? h2 : bb5;
+        if (j->sum) {
+            j->sum[w][0] = s0;
+            j->sum[w][1] = s1;
+            j->sum[w][2] = s2;
+        }
         double p[9];
         memcpy(p, A, 3 * sizeof(double));
         memcpy(p + 3, B, 3 * sizeof(double));
@@ -443,16 +478,16 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         d[0] = a;
         d[1] = b;
         d[2] = c;
-        rt_bbox_add(o->bb, A);
-        rt_bbox_add(o->bb, B);
-        rt_bbox_add(o->bb, C);
     }
+    const double bb[6] = {bb0, bb1, bb2, bb3, bb4, bb5};
+    memcpy(o->bb, bb, sizeof bb);
     o->kept = w - lo;
 }
 
 /* rt_mesh_add_run on the pool's threads (parts of at least 16384 triangles); the kept
-   triangles closed up, in order; the box into m. RT_OK or RT_ERR_ARG (nothing added). */
-static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
+   triangles closed up, in order (and their vertex sums into sum, NULL: none); the box into m.
+   RT_OK or RT_ERR_ARG (nothing added). */
+static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m, double (*sum)[3])
 {
     rt_mesh_add_job job, *j = &job; /* 13 KiB: no allocation that could fail */
     memset(j, 0, sizeof *j);
@@ -461,6 +496,7 @@ static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
     j->X = (const double (*)[3])sc->mv_xyz.p;
     j->n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
     j->c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
+    j->sum = sum;
     int np = rt_par_pool_threads();
     if ((size_t)np > m->nt / 16384 + 1)
         np = (int)(m->nt / 16384 + 1);
@@ -478,8 +514,11 @@ static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m)
         rt_par_range(m->nt, k, np, &lo, &hi);
         bad |= o->bad;
         rt_fcands_merge(&m->cands, &o->cands, w);
-        if (w < lo && o->kept)
+        if (w < lo && o->kept) {
             memmove(j->ix + 3 * w, j->ix + 3 * lo, 3 * o->kept * sizeof(uint32_t));
+            if (sum)
+                memmove(sum + w, sum + lo, o->kept * sizeof *sum);
+        }
         w += o->kept;
         for (int i = 0; i < 3; i++) {
             m->bb[i] = fmin(m->bb[i], o->bb[i]);
@@ -510,26 +549,54 @@ static uint32_t rt_morton30(const double lo[3], const double sc[3], const double
     return c;
 }
 
-/* LSD radix sort of a[0 .. n-1] by their 30-bit codes in bits 32-61 (10 a pass; stable:
-   equal codes keep their order) with b of the same size; the sorted keys end in b */
-static void rt_sort_codes(uint64_t *a, uint64_t *b, size_t n)
+/* LSD radix sort of a[0 .. n-1] by their 30-bit codes in bits 32-61, with b of the same size;
+   returns the sorted keys (a or b). Four passes of 8 bits (stable: equal codes keep their
+   order), every pass's counts from one read of the keys, a pass whose digit is the same for
+   every key skipped: 256 lists written at once fit the first-level cache where 1024 did not
+   (three passes of 10 bits missed it about twice a key and pass). */
+static uint64_t *rt_sort_codes(uint64_t *a, uint64_t *b, size_t n)
 {
-    static const int sh[3] = {32, 42, 52};
+    uint32_t cnt[4][256];
+    memset(cnt, 0, sizeof cnt);
+    for (size_t v = 0; v < n; v++) {
+        const uint32_t c = (uint32_t)(a[v] >> 32);
+        cnt[0][c & 0xff]++;
+        cnt[1][c >> 8 & 0xff]++;
+        cnt[2][c >> 16 & 0xff]++;
+        cnt[3][c >> 24]++;
+    }
     uint64_t *from = a, *to = b;
-    for (int q = 0; q < 3; q++) {
-        size_t cnt[1025] = {0};
+    for (int q = 0; q < 4; q++) {
+        uint32_t *k = cnt[q], run = 0;
+        if (n && k[(uint32_t)(a[0] >> (32 + 8 * q)) & 0xff] == n)
+            continue; /* one digit for all: the order stays */
+        for (int d = 0; d < 256; d++) {
+            const uint32_t x = k[d];
+            k[d] = run;
+            run += x;
+        }
+        const int sh = 32 + 8 * q;
         for (size_t v = 0; v < n; v++)
-            cnt[(from[v] >> sh[q] & 0x3ff) + 1]++;
-        for (int d = 0; d < 1024; d++)
-            cnt[d + 1] += cnt[d];
-        for (size_t v = 0; v < n; v++)
-            to[cnt[from[v] >> sh[q] & 0x3ff]++] = from[v];
+            to[k[from[v] >> sh & 0xff]++] = from[v];
         uint64_t *x = from;
         from = to;
         to = x;
     }
-    if (from != b) /* three passes end in b */
-        memcpy(b, from, n * sizeof *b);
+    return from;
+}
+
+/* the place of key x in the sorted keys s[0 .. n-1] (x is one of them) */
+static size_t rt_sorted_place(const uint64_t *s, size_t n, uint64_t x)
+{
+    size_t lo = 0, hi = n; /* s[lo] <= x < s[hi] */
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (s[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
 }
 
 /* Added mesh m in spatial order: its triangles sorted by the Morton code of their centres in
@@ -537,30 +604,29 @@ static void rt_sort_codes(uint64_t *a, uint64_t *b, size_t n)
    indices (rt_ctri_given), the frame candidates' indices renumbered to match; its vertices
    renumbered in the order of their first use by the sorted triangles (unused ones last, in
    the given order), with the same coordinates, normals and colours, each triangle's vertices
-   in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes. */
+   in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes, tmp holding
+   the triangles' vertex sums on entry (rt_mesh_add_check). */
 static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, void *tmp)
 {
     const size_t nt = m->nt, nv = m->nv;
     const uint32_t v0 = (uint32_t)m->v0;
     uint32_t (*T)[3] = (uint32_t (*)[3])sc->mtri.p + m->t0;
     double (*X)[3] = (double (*)[3])sc->mv_xyz.p + m->v0;
+    const double (*sum)[3] = tmp;
     double lo[3], sk[3];
     for (int k = 0; k < 3; k++) { /* centres as sums of three: the box taken three times */
         const double w = 3.0 * (m->bb[3 + k] - m->bb[k]);
         lo[k] = 3.0 * m->bb[k];
         sk[k] = w > 0.0 ? 1024.0 / w : 0.0;
     }
-    for (size_t t = 0; t < nt; t++) {
-        const double *a = X[T[t][0] - v0], *b = X[T[t][1] - v0], *c = X[T[t][2] - v0];
-        const double sum[3] = {a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]};
-        key[t] = (uint64_t)rt_morton30(lo, sk, sum) << 32 | t;
-    }
-    uint64_t *s = key + nt;
-    rt_sort_codes(key, s, nt);
     for (size_t t = 0; t < nt; t++)
-        to[(uint32_t)s[t]] = (uint32_t)t;
+        key[t] = (uint64_t)rt_morton30(lo, sk, sum[t]) << 32 | t;
+    uint64_t cand[RT_FRAME_CAND]; /* the candidates' keys, found again once sorted */
     for (int q = 0; q < m->cands.nc; q++)
-        m->cands.cand[q] = to[m->cands.cand[q]];
+        cand[q] = key[m->cands.cand[q]];
+    const uint64_t *s = rt_sort_codes(key, key + nt, nt);
+    for (int q = 0; q < m->cands.nc; q++)
+        m->cands.cand[q] = rt_sorted_place(s, nt, cand[q]);
     /* the triples in the new order (the given ones copied to tmp), vertices numbered at
        their first use */
     uint32_t (*G)[3] = tmp;
@@ -570,11 +636,12 @@ static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, 
     uint32_t next = 0;
     for (size_t t = 0; t < nt; t++) {
         const uint32_t o = (uint32_t)s[t];
-        for (int k = 0; k < 3; k++) {
-            const uint32_t v = G[o][k] - v0;
-            if (to[v] == UINT32_MAX)
-                to[v] = next++;
-            T[t][k] = (v0 + to[v]) | (o >> (10 * k) & 0x3ffu) << RT_VBITS;
+        for (int k = 0; k < 3; k++) { /* a new number without a branch (taken at random) */
+            const uint32_t v = G[o][k] - v0, u = to[v], fresh = u == UINT32_MAX;
+            const uint32_t x = fresh ? next : u;
+            to[v] = x;
+            next += fresh;
+            T[t][k] = (v0 + x) | (o >> (10 * k) & 0x3ffu) << RT_VBITS;
         }
     }
     for (size_t v = 0; v < nv; v++)
@@ -626,9 +693,10 @@ static void rt_meshes_given_order(rt_scene *sc)
    in space, so their index triples and vertices then share cache lines (a ray's chain
    reference -> index triple -> three vertices misses less). The same coordinates, the same
    triangles with their vertices in their given roles, the tie rule on the given positions:
-   every answer stays bit for bit; no byte more at rest. Without the temporary memory the
-   given order is kept with the positions written (nothing else changes). */
-static void rt_mesh_order(rt_scene *sc, rt_mesh *m)
+   every answer stays bit for bit; no byte more at rest. key: rt_mesh_order_mem's block with
+   the triangles' vertex sums (rt_mesh_add_check), or NULL: without it the given order is
+   kept with the positions written (nothing else changes). */
+static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n)
 {
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
@@ -640,10 +708,6 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m)
         rt_meshes_given_order(sc);
         return;
     }
-    /* one block of 48 bytes per triangle or vertex (the larger count n): the sort's keys
-       (16 n), its copies (24 n) and the new numbers (4 n) */
-    const size_t n = m->nv > m->nt ? m->nv : m->nt;
-    uint64_t *key = rt_alloc_array(n ? n : 1, 48);
     if (key) {
         rt_mesh_sort(sc, m, key, (uint32_t *)(key + 5 * n), key + 2 * n);
     } else {
@@ -652,7 +716,6 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m)
             for (int k = 0; k < 3; k++)
                 T[t][k] |= ((uint32_t)t >> (10 * k) & 0x3ffu) << RT_VBITS;
     }
-    free(key);
 }
 
 int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
@@ -663,10 +726,19 @@ int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
     rt_mesh *m = &sc->mesh[sc->nmesh];
     if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
         return RT_ERR_ARG;
-    const int rc = rt_mesh_add_check(sc, m);
+    /* rt_mesh_order's memory, taken before the check so that the check leaves the vertex
+       sums there: one block of 48 bytes per triangle or vertex (the larger count n, as
+       given): the sort's keys (16 n), its copies and the sums (24 n) and the new numbers
+       (4 n); none when the scene keeps the given order */
+    const size_t n = m->nv > m->nt ? m->nv : m->nt;
+    uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX ? rt_alloc_array(n ? n : 1, 48)
+                                                             : NULL;
+    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL);
+    if (rc == RT_OK)
+        rt_mesh_order(sc, m, key, n);
+    free(key);
     if (rc != RT_OK)
         return rc;
-    rt_mesh_order(sc, m);
     m->id = (uint32_t)sc->nids;
     m->front = front_surface;
     m->back = back_surface;
@@ -919,22 +991,29 @@ static int rt_prim_init(rt_scene *sc, rt_prim *pr, int id, int front, int back)
    (1e-12 ext^2, ext the largest extent); both computations round by ~1e-15 ext^2, so its
    Newell normal's length then passes the tolerance. 0: not sure (ask rt_tri_normal_sane).
    The add-time check of a triangle (which keeps no normal) without its 15 divisions. */
+/* rt_tri_surely_sane's test once the triangle's extent ext (its box's largest side) is known */
+static inline int rt_tri_surely_sane_ext(const double *v0, const double *v1, const double *v2,
+                                         double ext)
+{
+    if (!(ext > 0.0) || !(ext < 1e100))
+        return 0;
+    const double e10 = v1[0] - v0[0], e11 = v1[1] - v0[1], e12 = v1[2] - v0[2];
+    const double e20 = v2[0] - v0[0], e21 = v2[1] - v0[1], e22 = v2[2] - v0[2];
+    const double c0 = e11 * e22 - e12 * e21, c1 = e12 * e20 - e10 * e22,
+                 c2 = e10 * e21 - e11 * e20;
+    const double t = 1e-11 * ext * ext;
+    return c0 * c0 + c1 * c1 + c2 * c2 > t * t;
+}
+
 static inline int rt_tri_surely_sane(const double *v0, const double *v1, const double *v2)
 {
-    double ext = 0.0, e1[3], e2[3];
+    double ext = 0.0;
     for (int j = 0; j < 3; j++) {
         const double a = v0[j] < v1[j] ? v0[j] : v1[j], b = v0[j] < v1[j] ? v1[j] : v0[j];
         const double lo = a < v2[j] ? a : v2[j], hi = b > v2[j] ? b : v2[j];
         ext = hi - lo > ext ? hi - lo : ext;
-        e1[j] = v1[j] - v0[j];
-        e2[j] = v2[j] - v0[j];
     }
-    if (!(ext > 0.0) || !(ext < 1e100))
-        return 0;
-    const double c0 = e1[1] * e2[2] - e1[2] * e2[1], c1 = e1[2] * e2[0] - e1[0] * e2[2],
-                 c2 = e1[0] * e2[1] - e1[1] * e2[0];
-    const double t = 1e-11 * ext * ext;
-    return c0 * c0 + c1 * c1 + c2 * c2 > t * t;
+    return rt_tri_surely_sane_ext(v0, v1, v2, ext);
 }
 
 /* The primitive record of the triangle v (9 doubles) of id and surfaces front, back, as the
