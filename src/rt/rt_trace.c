@@ -729,7 +729,8 @@ static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, 
  * boundary beyond the best hit (t1 lowered to it); mode 3: mode 0 of a scene of mesh triangles
  * only, its cell lists through rt_walkstate.list (rt_nearest_list), its second-level walks
  * rt_walk_sub_nearest_mesh; mode 1: transmittance, BLOCKED when an opaque primitive is hit;
- * mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see the top of the file. Direction components exactly +0.0 or -0.0 never step. step: NULL, or
+ * mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see the top of the file.
+ * Direction components exactly +0.0 or -0.0 never step. step: NULL, or
  * for a second-level walk of modes 1 and 2 the ray's steps, which their top level stores in
  * rt_walkstate.step (rt_dda_init). */
 /* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
