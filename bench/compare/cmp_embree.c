@@ -18,7 +18,9 @@
  *                                     random triangles (as in build) or a mesh file, KIND tri
  *                                     (separate triangles) or mesh (one indexed mesh); prints
  *                                     its CPU time and the grid's hash (the same hash, the same
- *                                     grid), for profilers: --toggle-collect=commit_pass
+ *                                     grid), for profilers: --toggle-collect=commit_pass;
+ *                                     KIND embree: Embree's rtcCommitScene of N random
+ *                                     triangles as build gives them (embree_commit_pass)
  *   cmp_embree judge RES mesh.off...  the disagreements on the primary, inside, misses and
  *                                     shadow rays, judged in exact rational arithmetic (GMP) on
  *                                     the inputs each tracer was given; ours also on Embree's
@@ -1354,6 +1356,50 @@ __attribute__((noinline)) static int commit_pass(rt_scene *sc, int threads)
     return rt_scene_commit(sc, &o);
 }
 
+/* Embree's counterpart of commit_pass: rtcCommitScene of the em_scene made before it (callgrind
+   --toggle-collect=embree_commit_pass) */
+__attribute__((noinline)) static void embree_commit_pass(RTCScene es)
+{
+    rtcCommitScene(es);
+}
+
+/* cmd_commit's "embree" kind: N random triangles as cmd_build gives them to Embree (one mesh
+   of 3N unshared float vertices), one rtcCommitScene on a 1-thread device; prints its process
+   CPU seconds and Embree's memory per triangle (the device's memory monitor) */
+static int cmd_commit_embree(size_t n)
+{
+    em_mem mem;
+    atomic_init(&mem.bytes, 0);
+    atomic_init(&mem.peak, 0);
+    double *v = NULL;
+    uint32_t *ix = NULL;
+    RTCDevice dev = rtcNewDevice("threads=1,set_affinity=0");
+    RTCScene es = NULL;
+    if (dev) {
+        rtcSetDeviceMemoryMonitorFunction(dev, em_monitor, &mem);
+        if (random_tris(n, &v, &ix) == 0)
+            es = em_scene(dev, v, 3 * n, ix, n);
+    }
+    free(v);
+    free(ix);
+    if (!es) {
+        fprintf(stderr, "cannot make the scene\n");
+        if (dev)
+            rtcReleaseDevice(dev);
+        return 1;
+    }
+    const long long before = atomic_load(&mem.bytes);
+    const double t0 = bs_process_cpu();
+    embree_commit_pass(es);
+    const double t = bs_process_cpu() - t0;
+    const long long emem = atomic_load(&mem.bytes);
+    printf("%zu embree, 1 thread: commit %.4f s CPU; %.1f B/tri (%.1f before the commit)\n", n, t,
+           (double)emem / (double)n, (double)before / (double)n);
+    rtcReleaseScene(es);
+    rtcReleaseDevice(dev);
+    return 0;
+}
+
 /* one commit for profilers and for checking that a change of the build keeps the grid: SRC a
    number N (cmd_build's N random triangles) or a mesh file (as cmd_rays loads it); kind "tri"
    (separate triangles, rt_scene_add_polygon) or "mesh" (one indexed mesh); prints the commit's
@@ -1361,6 +1407,15 @@ __attribute__((noinline)) static int commit_pass(rt_scene *sc, int threads)
 static int cmd_commit(const char *src, const char *kind, int threads)
 {
     const int mesh = !strcmp(kind, "mesh");
+    if (!strcmp(kind, "embree")) {
+        char *e;
+        const unsigned long long ne = strtoull(src, &e, 10);
+        if (*e != '\0' || ne == 0 || ne > 100000000ULL) {
+            fprintf(stderr, "embree: N random triangles only\n");
+            return 1;
+        }
+        return cmd_commit_embree((size_t)ne);
+    }
     rt_scene *sc = NULL;
     bs_scene s;
     memset(&s, 0, sizeof s);
@@ -1616,6 +1671,6 @@ int main(int argc, char **argv)
         return cmd_judge(res, argc - 3, argv + 3);
     }
     fprintf(stderr, "usage: cmp_embree rays RES mesh.off... | cmp_embree build | cmp_embree ours|embree RES SET mesh.off"
-                    " | cmp_embree judge RES mesh.off... | cmp_embree commit N|mesh.off tri|mesh [THREADS]\n");
+                    " | cmp_embree judge RES mesh.off... | cmp_embree commit N|mesh.off tri|mesh [THREADS] | cmp_embree commit N embree\n");
     return 2;
 }

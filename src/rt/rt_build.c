@@ -2312,6 +2312,7 @@ typedef struct rt_grid_opts {
     int no_subgrids;
     int all_default;    /* no resolution option given: the uniform alternative may replace
                            the two levels */
+    int coarse;         /* the top level widened for large primitives (rt_top_coarsen) */
 } rt_grid_opts;
 
 static int rt_opt_pos(double x)
@@ -2336,6 +2337,7 @@ static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opt
     go->all_default = !go->explicit_res &&
                       !(given && (rt_opt_pos(o->grid_factor) || o->no_subgrids ||
                                   o->sub_min > 0 || rt_opt_pos(o->sub_factor)));
+    go->coarse = 0;
 }
 
 /* The top level for primitives that are large against its cells. Beyond RT_GRID_KNEE
@@ -2349,9 +2351,17 @@ static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opt
  * docs/bench/rt_tuning.md, 2026-12-06). The median of a sample of at most
  * RT_TOP_EXT_SAMPLE primitives (every nprim / RT_TOP_EXT_SAMPLE + 1-th), each one's box
  * extent over the cell width averaged over the axes: a few huge primitives (a floor under a
- * small object) do not move it. */
+ * small object) do not move it.
+ * At or below RT_GRID_KNEE primitives (0.25 top cells per primitive) the trigger is
+ * RT_TOP_EXT_LARGE_SMALL: random triangles' medians there are 0.55-0.60 (3,000-10,000), the
+ * SPD scenes' 0.20-0.26 (teapot 0.203, mount-tessellated 0.218, gears 0.224, tetra 0.258), so
+ * they keep their grids. A widened top level is all crowded, so it always gets the second
+ * level (not the uniform alternative of RT_UNIFORM_SHARE), with RT_SUB_FACTOR cells per
+ * reference at any size: its triangles span several sub cells each, and fewer cells cut the
+ * references and exact tests per triangle more than they cost its rays (2026-12-06). */
 #define RT_TOP_EXT_SAMPLE 1024
 #define RT_TOP_EXT_LARGE 0.25
+#define RT_TOP_EXT_LARGE_SMALL 0.4
 #define RT_TOP_EXT_TARGET 0.1
 
 static int rt_cmp_double(const void *x, const void *y)
@@ -2360,8 +2370,11 @@ static int rt_cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
-static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g)
+/* the top level g widened for large primitives (above); *coarse = 1 when it was */
+static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g, int *coarse)
 {
+    const double large =
+        (double)sc->nprim > RT_GRID_KNEE ? RT_TOP_EXT_LARGE : RT_TOP_EXT_LARGE_SMALL;
     double r[RT_TOP_EXT_SAMPLE];
     const size_t stride = sc->nprim / RT_TOP_EXT_SAMPLE + 1;
     size_t m = 0, nlarge = 0;
@@ -2371,11 +2384,11 @@ static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g)
         rt_prim_gbox(sc, b, i, bb, &err);
         r[m] = ((bb[3] - bb[0]) * g->inv_cw[0] + (bb[4] - bb[1]) * g->inv_cw[1] +
                 (bb[5] - bb[2]) * g->inv_cw[2]) / 3.0;
-        nlarge += r[m++] > RT_TOP_EXT_LARGE;
+        nlarge += r[m++] > large;
     }
     if (err)
         return RT_ERR_NOMEM;
-    /* the median r[m / 2] of the sorted sample is above RT_TOP_EXT_LARGE exactly when
+    /* the median r[m / 2] of the sorted sample is above the trigger exactly when
        m - m / 2 values are: counted, so that most scenes need no sort */
     if (nlarge < m - m / 2)
         return RT_OK;
@@ -2383,13 +2396,14 @@ static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g)
     const double med = r[m / 2];
     const double k = RT_TOP_EXT_TARGET / med;
     rt_box_resolution(g, (double)g->n[0] * g->n[1] * g->n[2] * k * k * k, 512);
+    *coarse = 1;
     return RT_OK;
 }
 
 /* the grid's frame and box (rotated or not, padded, an explicit box where it holds the
    scene) and its top-level resolution */
 static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_options *o,
-                             const rt_grid_opts *go, double *mx)
+                             rt_grid_opts *go, double *mx)
 {
     rt_grid *g = &sc->grid;
     double fb[6];
@@ -2427,8 +2441,10 @@ static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_
     } else {
         rt_box_resolution(&g->b, rt_top_cells(o, go->factor, (double)sc->nprim), 512);
         rt_box_finish(&g->b);
-        if (rc == RT_OK && go->all_default && (double)sc->nprim > RT_GRID_KNEE)
-            rc = rt_top_coarsen(sc, bs, &g->b);
+        if (rc == RT_OK && go->all_default)
+            rc = rt_top_coarsen(sc, bs, &g->b, &go->coarse);
+        if (go->coarse)
+            go->sub_factor = RT_SUB_FACTOR;
     }
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
@@ -2442,7 +2458,7 @@ static int rt_grid_levels(rt_scene *sc, rt_build *bs, int nt, const rt_grid_opts
     rt_grid *g = &sc->grid;
     int rc = rt_top_level(sc, bs, nt, eps);
     int no_subgrids = go->no_subgrids;
-    if (rc == RT_OK && go->all_default && (double)sc->nprim <= RT_GRID_KNEE &&
+    if (rc == RT_OK && go->all_default && !go->coarse && (double)sc->nprim <= RT_GRID_KNEE &&
         rt_crowded_share(g, (uint32_t)go->sub_min) >= RT_UNIFORM_SHARE) {
         /* occupancy nearly uniform: one fine level instead (see RT_UNIFORM_SHARE) */
         free(g->off);

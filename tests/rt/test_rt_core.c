@@ -199,10 +199,11 @@ static void test_settings_equal_brute(void **state)
     free(rays);
 }
 
-/* NB random triangles in the unit cube, each within a cube of side SIDE * NB^(-1/3) around its
-   centre (SIDE 2: the random triangles of the build benchmark, large against the top cells
-   of the default rule beyond 10^4 primitives) */
+/* big_n random triangles in the unit cube, each within a cube of side big_side * big_n^(-1/3)
+   around its centre (big_side 2: the random triangles of the build benchmark, large against
+   the top cells of the default rule) */
 enum { NB = 12000 };
+static int big_n = NB;
 static double big_side;
 
 static void build_big(rt_scene *sc)
@@ -212,8 +213,8 @@ static void build_big(rt_scene *sc)
     int surf = rt_scene_add_surface(sc, &s);
     assert_true(surf >= 0);
     rng_state = 4242;
-    const double side = big_side * pow((double)NB, -1.0 / 3.0);
-    for (int k = 0; k < NB; k++) {
+    const double side = big_side * pow((double)big_n, -1.0 / 3.0);
+    for (int k = 0; k < big_n; k++) {
         double c[3], v[9];
         for (int i = 0; i < 3; i++)
             c[i] = rnd();
@@ -260,6 +261,47 @@ static void test_large_prims_coarse_top(void **state)
     assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
     assert_true(gi.cells > 1000);
     rt_scene_free(sc);
+    free(rays);
+}
+
+/* the same at or below 10^4 primitives (RT_TOP_EXT_LARGE_SMALL): 5000 such triangles get a
+   widened top level with sub-grids (the rule alone gives 11^3 top cells, and the uniform
+   level of RT_UNIFORM_SHARE 40,000), RT_SUB_FACTOR second-level cells per reference (3.5 sub
+   cells per triangle; RT_SUB_FACTOR_LARGE would give 4.4) and brute force's answers;
+   triangles a third of their size (median box 0.2 of a top cell, as the SPD scenes' 0.20-0.26)
+   keep the rule's grid */
+static void test_large_prims_coarse_top_small(void **state)
+{
+    (void)state;
+    enum { N = 2000 };
+    const rt_build_options dflt = {.brute_threshold = 0};
+    rt_ray *rays = malloc(N * sizeof *rays);
+    assert_non_null(rays);
+    make_rays(rays, N);
+    big_n = 5000;
+    big_side = 2.0;
+    rt_scene *sc = rt_scene_new();
+    build_big(sc);
+    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_true(gi.cells < 100);
+    assert_true(gi.subgrids > 0);
+    assert_true(gi.subcells < 4 * (uint64_t)big_n);
+    rt_scene_free(sc);
+    brute_ref br;
+    brute_ref_init(&br, N);
+    brute_ref_trace(&br, build_big, rays, N);
+    brute_ref_check(&br, build_big, &dflt, 1, rays, N);
+    brute_ref_free(&br);
+    big_side = 2.0 / 3.0;
+    sc = rt_scene_new();
+    build_big(sc);
+    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_true(gi.cells > 1000);
+    rt_scene_free(sc);
+    big_n = NB;
     free(rays);
 }
 
@@ -539,6 +581,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_settings_equal_brute),
         cmocka_unit_test(test_large_prims_coarse_top),
+        cmocka_unit_test(test_large_prims_coarse_top_small),
         cmocka_unit_test(test_duplicate_tie),
         cmocka_unit_test(test_empty_space_jumps),
         cmocka_unit_test(test_zero_component_on_cell_plane),
