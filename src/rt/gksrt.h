@@ -259,16 +259,18 @@ typedef struct rt_build_options {
 /* Grid resolution rule: top level cells ~= factor * primitives (default 0.25; with the default
  * factor and more than 10^4 primitives: 0.25 * 10^4 * sqrt(primitives / 10^4), i.e. factor
  * 0.079 at 10^5 and 0.025 at 10^6), as cubic as the grid box allows (axes thinner than 1/1000
- * of the largest get 1 cell), at most 512 per axis and 2^25 cells; there, when the median
- * primitive's box spans more than 1/4 of a top cell per axis (a volume of large random
- * triangles, not a surface mesh), top cells 10 times the median extent. A top cell with more than
+ * of the largest get 1 cell), at most 512 per axis and 2^25 cells. With all grid options at
+ * their defaults, when the median primitive's box spans more than 1/4 of a top cell per axis
+ * beyond 10^4 primitives, or more than 0.4 up to 10^4 (a volume of large random triangles,
+ * not a surface mesh), top cells 10 times the median extent, always with a second level of
+ * ~3 cells per reference. A top cell with more than
  * 8 references keeps its large primitives (spanning half the cell in two axes) in its own
  * list and puts the rest into a second-level grid of ~3 cells per reference (default
  * sub_factor; 4 beyond 10^4 primitives, there 0.5 and 0.7 times that in sub-grids with 1 or 2
  * cells on their thinnest axis; at most 32 per axis) over the box of those parts.
  * Up to 10^4 primitives and with all grid options at their defaults, when at least 3/4 of
- * the occupied top cells hold more than 8 references (surfaces filling their cells evenly),
- * one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
+ * the occupied top cells hold more than 8 references (surfaces filling their cells evenly)
+ * and the top level was not widened, one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
  * explicit grid_factor or sub_factor is always used as given (linearly). The measurements
  * behind these numbers: docs/bench/rt_tuning.md. */
 #define RT_GRID_FACTOR_DEFAULT 0.25
