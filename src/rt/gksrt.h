@@ -176,8 +176,8 @@ RT_API int rt_scene_input_next(const rt_scene *sc, size_t n, void *lo[2], void *
  * the front; data interpolated barycentrically); degenerate triangles are dropped when the
  * mesh is added. All triangles carry the one id returned (hits report it). Returns the id or
  * RT_ERR_ARG (a NULL array with counts > 0, an index >= nverts, non-finite normals or
- * colours, a bad surface id), RT_ERR_NOMEM, RT_ERR_LIMIT (more than 2^32 - 1 vertices or
- * 2^31 triangles in the scene's meshes). */
+ * colours, a bad surface id), RT_ERR_NOMEM, RT_ERR_LIMIT (more than (2^32 - 1) / 3
+ * vertices or 2^31 triangles in the scene's meshes). */
 RT_API int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz,
                              const double *normals, const double *colours, size_t ntris,
                              const uint32_t *idx, int front_surface, int back_surface);

@@ -273,7 +273,7 @@ static inline size_t rt_prim_gpoints(const rt_scene *sc, rt_build *b, const rt_p
     if (b->gv && p->kind == RT_KIND_TRI && p->data >= sc->ntri_plain && b->cappts >= 9) {
         const uint32_t *ix = sc->ctri[p->data - sc->ntri_plain];
         for (int k = 0; k < 3; k++)
-            memcpy(b->pts + 3 * k, b->gv + 3 * (size_t)(ix[k] & sc->vmask), 3 * sizeof(double));
+            memcpy(b->pts + 3 * k, b->gv + (ix[k] & sc->vmask), 3 * sizeof(double));
         return 3;
     }
     const size_t npts = rt_prim_points(sc, b, p, err);
@@ -1952,7 +1952,7 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
     double *p = NULL;
     size_t cap = 0, n = 0;
     int err = sc->nmv && !seen;
-    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    const double *X = sc->mv_xyz.p;
     for (size_t m = 0; m < ns && !err; m++) {
         const size_t i = m * stride;
         const rt_prim *pr = &sc->prim[i];
@@ -1963,11 +1963,11 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
             }
             const uint32_t *ix = sc->ctri[pr->data - sc->ntri_plain];
             for (int k = 0; k < 3; k++) {
-                const uint32_t v = ix[k] & sc->vmask;
+                const uint32_t e = ix[k] & sc->vmask, v = e / 3; /* offset, vertex */
                 if (seen[v])
                     continue;
                 seen[v] = 1;
-                memcpy(p + 3 * n++, X[v], 3 * sizeof(double));
+                memcpy(p + 3 * n++, X + e, 3 * sizeof(double));
             }
             continue;
         }

@@ -159,8 +159,8 @@ void rt_fcands_tri(rt_fcands *l, const double pts[9], size_t i);
 void rt_fcands_merge(rt_fcands *l, const rt_fcands *from, size_t off);
 
 /* an indexed mesh (rt_scene_add_mesh): its triangles nt input triangles from t0 in the
-   scene's mtri (indices into mv_xyz, global), its vertices nv from v0 (mv_xyz; mv_n and mv_c
-   where has_n, has_c); every triangle has the mesh's id and surfaces */
+   scene's mtri (offsets 3 v into mv_xyz, global: rt_scene.vmask), its vertices nv from v0
+   (mv_xyz; mv_n and mv_c where has_n, has_c); every triangle has the mesh's id and surfaces */
 typedef struct rt_mesh {
     uint32_t id;
     int front, back;
@@ -316,13 +316,15 @@ struct rt_scene {
     rt_mesh *mesh; size_t nmesh, capmesh;
     rt_big mv_xyz, mv_n, mv_c; size_t nmv;
     rt_big mtri; size_t nmtri;
-    /* The meshes in spatial order (rt_scene_mesh_end): each mesh's index triples sorted,
-       each word of a triple (mtri, ctri) holding a vertex index in its low RT_VBITS bits and
-       10 bits of the triangle's given position within its mesh above them (rt_ctri_given),
-       for the tie rule's "given first". vmask: the vertex-index bits of a word, RT_VMASK
-       while the meshes are sorted, all ones once a mesh beyond the limits was added (every
-       mesh in its given order from then on); vlimit: the vertices the scene's meshes may
-       have in spatial order, RT_VMASK + 1 (set lower by a test) */
+    /* The meshes' index words (mtri, ctri) hold each vertex as its element offset 3 v into
+       mv_xyz (and mv_n, mv_c), so that a reader's address is the offset scaled by the element
+       size, the multiply by 3 done once when the mesh is added. The meshes in spatial order
+       (rt_scene_mesh_end): each mesh's index triples sorted, the offset in the low RT_VBITS
+       bits of a word and 8 bits of the triangle's given position within its mesh above it
+       (rt_ctri_given), for the tie rule's "given first". vmask: the offset bits of a word,
+       RT_VMASK while the meshes are sorted, all ones once a mesh beyond the limits was added
+       (every mesh in its given order from then on); vlimit: the vertices the scene's meshes
+       may have in spatial order, RT_VMASK / 3 + 1 (set lower by a test) */
     uint32_t vmask;
     size_t vlimit;
     int mesh_open;                    /* rt_scene_mesh_begin's reservation at mesh[nmesh] */
@@ -335,8 +337,9 @@ struct rt_scene {
                                          tri[i], else the mesh triangle ctri[i - ntri_plain] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
     size_t ntri_plain;
-    uint32_t (*ctri)[3];              /* committed mesh triangles: vertex indices (mv_xyz, the
-                                         bits of vmask) and given positions (rt_ctri_given) */
+    uint32_t (*ctri)[3];              /* committed mesh triangles: vertex offsets (3 v into
+                                         mv_xyz, the bits of vmask) and given positions
+                                         (rt_ctri_given) */
     int ctri_owned;                   /* 1: a compacted copy, 0: ctri == mtri (all kept) */
     int prim_owned;                   /* 1: prim is allocated, 0: prim == in_tri_prim.p */
     rt_quad *quad; size_t nquad;      /* ntri <= i < ntri + nquad: quad[i - ntri] */
@@ -358,15 +361,23 @@ struct rt_scene {
     size_t tri_bytes, grid_bytes;     /* parts of memory_bytes (rt_stats) */
 };
 
-/* the vertex-index bits of a mesh triangle's index word while the meshes are in spatial
-   order (rt_scene.vmask) */
-#define RT_VBITS 22
+/* the vertex-offset bits (3 v) of a mesh triangle's index word while the meshes are in
+   spatial order (rt_scene.vmask): 5,592,406 vertices in the scene; the 8 bits above hold a
+   third of the triangle's given position, 2^24 triangles a mesh */
+#define RT_VBITS 24
+/* the vertices a scene's meshes may have: every offset 3 v fits in an index word */
+#define RT_MAX_MESH_VERTS (UINT32_MAX / 3)
 #define RT_VMASK (((uint32_t)1 << RT_VBITS) - 1)
 /* a mesh triangle's given position within its mesh, from its index triple ix (meshes in
    spatial order: rt_scene.vmask == RT_VMASK) */
 static inline uint32_t rt_ctri_given(const uint32_t ix[3])
 {
-    return ix[0] >> RT_VBITS | (ix[1] >> RT_VBITS) << 10 | (ix[2] >> RT_VBITS) << 20;
+    return ix[0] >> RT_VBITS | (ix[1] >> RT_VBITS) << 8 | (ix[2] >> RT_VBITS) << 16;
+}
+/* the given position's bits that word k (0, 1, 2) of a triple holds */
+static inline uint32_t rt_ctri_given_bits(uint32_t given, int k)
+{
+    return (given >> (8 * k) & 0xffu) << RT_VBITS;
 }
 
 /* The three vertices of committed triangle primitive i (0 <= i < ntri; a triangle
@@ -384,10 +395,10 @@ static inline void rt_tri_verts(const rt_scene *sc, size_t i, const double *v[3]
         return;
     }
     const uint32_t *ix = sc->ctri[i - sc->ntri_plain], vm = sc->vmask;
-    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
-    v[0] = X[ix[0] & vm];
-    v[1] = X[ix[1] & vm];
-    v[2] = X[ix[2] & vm];
+    const double *X = sc->mv_xyz.p;
+    v[0] = X + (ix[0] & vm);
+    v[1] = X + (ix[1] & vm);
+    v[2] = X + (ix[2] & vm);
 }
 /* The nine coordinates of committed triangle primitive i into out (rt_tri_verts' vertices):
    a plain triangle's 72 bytes in one copy, a mesh triangle's three gathered, no loop. */
@@ -398,18 +409,17 @@ static inline void rt_tri_copy(const rt_scene *sc, size_t i, double out[9])
         return;
     }
     const uint32_t *ix = sc->ctri[i - sc->ntri_plain], vm = sc->vmask;
-    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
-    memcpy(out, X[ix[0] & vm], 3 * sizeof(double));
-    memcpy(out + 3, X[ix[1] & vm], 3 * sizeof(double));
-    memcpy(out + 6, X[ix[2] & vm], 3 * sizeof(double));
+    const double *X = sc->mv_xyz.p;
+    memcpy(out, X + (ix[0] & vm), 3 * sizeof(double));
+    memcpy(out + 3, X + (ix[1] & vm), 3 * sizeof(double));
+    memcpy(out + 6, X + (ix[2] & vm), 3 * sizeof(double));
 }
 /* Vertex k (0, 1, 2) of committed triangle primitive t (rt_tri_verts). */
 static inline const double *rt_tri_vert(const rt_scene *sc, size_t t, int k)
 {
     if (t < sc->ntri_plain)
         return sc->tri[t].v[k];
-    return (const double *)sc->mv_xyz.p +
-           3 * (size_t)(sc->ctri[t - sc->ntri_plain][k] & sc->vmask);
+    return (const double *)sc->mv_xyz.p + (sc->ctri[t - sc->ntri_plain][k] & sc->vmask);
 }
 /* starts loading the vertices of committed triangle t (both cache lines of a plain one's 72
    bytes; a mesh triangle's indices) */

@@ -358,7 +358,7 @@ int rt_scene_mesh_begin(rt_scene *sc, size_t nverts, int has_n, int has_c, size_
     if (!sc || !f)
         return RT_ERR_ARG;
     memset(f, 0, sizeof *f);
-    if (sc->nids >= INT_MAX || nverts > (size_t)UINT32_MAX - sc->nmv ||
+    if (sc->nids >= INT_MAX || nverts > (size_t)RT_MAX_MESH_VERTS - sc->nmv ||
         ntris > ((size_t)1 << 31) - sc->nmtri)
         return RT_ERR_LIMIT;
     const size_t nv = sc->nmv + nverts, nt = sc->nmtri + ntris;
@@ -600,11 +600,11 @@ static size_t rt_sorted_place(const uint64_t *s, size_t n, uint64_t x)
 }
 
 /* Added mesh m in spatial order: its triangles sorted by the Morton code of their centres in
-   its box (ties: the given order), each triple's given position written above its vertex
-   indices (rt_ctri_given), the frame candidates' indices renumbered to match; its vertices
-   renumbered in the order of their first use by the sorted triangles (unused ones last, in
-   the given order), with the same coordinates, normals and colours, each triangle's vertices
-   in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes, tmp holding
+   its box (ties: the given order), each triple's vertices written as offsets 3 v with the
+   given position above them (rt_ctri_given), the frame candidates' indices renumbered to
+   match; its vertices renumbered in the order of their first use by the sorted triangles
+   (unused ones last, in the given order), with the same coordinates, normals and colours,
+   each triangle's vertices in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes, tmp holding
    the triangles' vertex sums on entry (rt_mesh_add_check). */
 static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, void *tmp)
 {
@@ -641,7 +641,7 @@ static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, 
             const uint32_t x = fresh ? next : u;
             to[v] = x;
             next += fresh;
-            T[t][k] = (v0 + x) | (o >> (10 * k) & 0x3ffu) << RT_VBITS;
+            T[t][k] = 3 * (v0 + x) | rt_ctri_given_bits(o, k);
         }
     }
     for (size_t v = 0; v < nv; v++)
@@ -686,36 +686,44 @@ static void rt_meshes_given_order(rt_scene *sc)
     sc->vmask = UINT32_MAX;
 }
 
+/* added mesh m's index words (vertex indices, global) as the vertices' offsets 3 v, the
+   position of each triangle above them (rt_ctri_given) when given */
+static void rt_mesh_offsets(rt_scene *sc, rt_mesh *m, int given)
+{
+    uint32_t (*T)[3] = (uint32_t (*)[3])sc->mtri.p + m->t0;
+    for (size_t t = 0; t < m->nt; t++)
+        for (int k = 0; k < 3; k++)
+            T[t][k] = 3 * T[t][k] | (given ? rt_ctri_given_bits((uint32_t)t, k) : 0u);
+}
+
 /* Added mesh m (its indices global and checked) stored in spatial order: its vertices in the
    order of their first use, its triangles in the Morton order of their centres (rt_mesh_sort),
-   while the scene's vertices fit in RT_VBITS bits and the mesh's triangles in 30; else the
-   given order for every mesh from now on. The triangles of a cell list are near each other
-   in space, so their index triples and vertices then share cache lines (a ray's chain
-   reference -> index triple -> three vertices misses less). The same coordinates, the same
-   triangles with their vertices in their given roles, the tie rule on the given positions:
-   every answer stays bit for bit; no byte more at rest. key: rt_mesh_order_mem's block with
-   the triangles' vertex sums (rt_mesh_add_check), or NULL: without it the given order is
-   kept with the positions written (nothing else changes). */
+   while the scene's vertices' offsets fit in RT_VBITS bits and the mesh's triangles in 24;
+   else the given order for every mesh from now on. The triangles of a cell list are near
+   each other in space, so their index triples and vertices then share cache lines (a ray's
+   chain reference -> index triple -> three vertices misses less). The same coordinates, the
+   same triangles with their vertices in their given roles, the tie rule on the given
+   positions: every answer stays bit for bit; no byte more at rest. key: rt_scene_mesh_end's
+   block with the triangles' vertex sums (rt_mesh_add_check), or NULL: without it the given
+   order is kept with the positions written (nothing else changes). Either way the index
+   words end as offsets (rt_scene.vmask). */
 static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n)
 {
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
-        sc->vlimit = (size_t)RT_VMASK + 1;
+        sc->vlimit = (size_t)RT_VMASK / 3 + 1;
     }
-    if (sc->vmask == UINT32_MAX) /* the given order from now on */
-        return;
-    if (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 30)) {
+    if (sc->vmask != UINT32_MAX &&
+        (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 24)))
         rt_meshes_given_order(sc);
+    if (sc->vmask == UINT32_MAX) { /* the given order from now on */
+        rt_mesh_offsets(sc, m, 0);
         return;
     }
-    if (key) {
+    if (key)
         rt_mesh_sort(sc, m, key, (uint32_t *)(key + 5 * n), key + 2 * n);
-    } else {
-        uint32_t (*T)[3] = (uint32_t (*)[3])sc->mtri.p + m->t0;
-        for (size_t t = 0; t < m->nt; t++)
-            for (int k = 0; k < 3; k++)
-                T[t][k] |= ((uint32_t)t >> (10 * k) & 0x3ffu) << RT_VBITS;
-    }
+    else
+        rt_mesh_offsets(sc, m, 1);
 }
 
 int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
@@ -1174,7 +1182,7 @@ static void rt_commit_mesh_part(void *arg, int part, int nparts)
     rt_scene *sc = j->sc;
     const int cull = j->o && j->o->ncull > 0;
     const uint32_t (*in)[3] = (const uint32_t (*)[3])sc->mtri.p;
-    const double (*X)[3] = (const double (*)[3])sc->mv_xyz.p;
+    const double *X = sc->mv_xyz.p;
     double *bb = j->bb[part];
     size_t lo, hi, kept = 0, mi = 0;
     rt_par_range(sc->nmtri, part, nparts, &lo, &hi);
@@ -1202,7 +1210,7 @@ static void rt_commit_mesh_part(void *arg, int part, int nparts)
         *pr = j->tpl[mi];
         pr->data = (uint32_t)(j->base + t);
         const uint32_t vm = sc->vmask;
-        const double *a = X[in[t][0] & vm], *b = X[in[t][1] & vm], *c = X[in[t][2] & vm];
+        const double *a = X + (in[t][0] & vm), *b = X + (in[t][1] & vm), *c = X + (in[t][2] & vm);
         double v[9];
         memcpy(v, a, sizeof v / 3);
         memcpy(v + 3, b, sizeof v / 3);

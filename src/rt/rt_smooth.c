@@ -144,15 +144,15 @@ static int rt_smooth_mesh(const rt_scene *sc, size_t i, const double P[3], const
     const float *N = sc->mv_n.p, *C = sc->mv_c.p;
     double s[3][2];
     for (int j = 0; j < 3; j++) {
-        s[j][0] = X[3 * (size_t)ix[j] + ku] - P[ku];
-        s[j][1] = X[3 * (size_t)ix[j] + kv] - P[kv];
+        s[j][0] = X[ix[j] + ku] - P[ku];
+        s[j][1] = X[ix[j] + kv] - P[kv];
     }
     rt_acc a;
     memset(&a, 0, sizeof a);
     for (int j = 0; j < 3; j++) {
         const double *p = s[(j + 1) % 3], *q = s[(j + 2) % 3];
-        const size_t v = ix[j];
-        rt_acc_vert(&a, X + 3 * v, m->has_n ? N + 3 * v : NULL, m->has_c ? C + 3 * v : NULL,
+        const size_t e = ix[j]; /* the vertex's element offset, 3 v */
+        rt_acc_vert(&a, X + e, m->has_n ? N + e : NULL, m->has_c ? C + e : NULL,
                     p[0] * q[1] - p[1] * q[0], P);
     }
     return rt_smooth_end(&a, m->has_n, m->has_c, ng, n, ps, rgb);

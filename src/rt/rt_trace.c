@@ -833,7 +833,7 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
     const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
-    const double(*X)[3] = (const double(*)[3])sc->mv_xyz.p;
+    const double *X = sc->mv_xyz.p;
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double tmin = r->tmin, tmax = r->tmax;
     uint64_t *const hbox = w->c->hbox;
@@ -845,8 +845,8 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0] & vm], X[ix[1] & vm],
-                           X[ix[2] & vm], tmin, tmax, &t)) {
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + (ix[0] & vm), X + (ix[1] & vm),
+                           X + (ix[2] & vm), tmin, tmax, &t)) {
             w->T = 0.0;
             w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
             return 1;
@@ -903,7 +903,7 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
     const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
-    const double(*X)[3] = (const double(*)[3])sc->mv_xyz.p;
+    const double *X = sc->mv_xyz.p;
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double tmin = r->tmin, tmax = r->tmax;
     uint64_t *const hbox = w->c->hbox;
@@ -918,8 +918,8 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X[ix[0] & vm], X[ix[1] & vm],
-                           X[ix[2] & vm], tmin, RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + (ix[0] & vm), X + (ix[1] & vm),
+                           X + (ix[2] & vm), tmin, RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
             rt_nearest_update(sc, r, i, t, &w->best, &w->bi, &w->ebest);
     }
     return 0;

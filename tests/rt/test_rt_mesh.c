@@ -194,6 +194,9 @@ static void test_bad_input(void **state)
     assert_int_equal(rt_scene_count(sc), 0);
     /* an abandoned reservation adds nothing; the next mesh is whole */
     rt_mesh_fill f;
+    /* every vertex's offset 3 v fits in an index word: (2^32 - 1) / 3 vertices at most */
+    assert_int_equal(rt_scene_mesh_begin(sc, (size_t)UINT32_MAX / 3 + 1, 0, 0, 1, &f),
+                     RT_ERR_LIMIT);
     assert_int_equal(rt_scene_mesh_begin(sc, 3, 1, 0, 1, &f), RT_OK);
     assert_non_null(f.xyz);
     assert_non_null(f.normals);
@@ -419,11 +422,12 @@ static void test_given_order_back(void **state)
     assert_int_equal(sc[0]->vmask, RT_VMASK);
     assert_int_equal(sc[1]->vmask, UINT32_MAX);
     const uint32_t (*T)[3] = (const uint32_t (*)[3])sc[1]->mtri.p;
-    const double (*X)[3] = (const double (*)[3])sc[1]->mv_xyz.p;
+    const double *X = sc[1]->mv_xyz.p; /* the words are the vertices' offsets 3 v */
     for (size_t t = 0; t < nt; t++) /* both sheets: the given triangles, vertices in their roles */
         for (int k = 0; k < 3; k++) {
-            assert_memory_equal(X[T[t][k]], sheet + 3 * six[3 * t + k], 3 * sizeof(double));
-            assert_memory_equal(X[T[nt + 2 + t][k]], sheet + 3 * six[3 * t + k], 3 * sizeof(double));
+            assert_memory_equal(X + T[t][k], sheet + 3 * six[3 * t + k], 3 * sizeof(double));
+            assert_memory_equal(X + T[nt + 2 + t][k], sheet + 3 * six[3 * t + k],
+                                3 * sizeof(double));
         }
     for (int k = 0; k < 2; k++)
         assert_int_equal(rt_scene_commit(sc[k], NULL), RT_OK);
