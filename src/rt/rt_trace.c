@@ -614,10 +614,12 @@ typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
 /* the CPU's level, read once per process as the packet path's (rt_simd_level reads the
    environment: too slow for every call of a small batch) */
 static pthread_once_t rt_setup4_once = PTHREAD_ONCE_INIT;
-static int rt_setup4_level;
+static int rt_setup4_level, rt_setup4_bmi;
 static void rt_setup4_pick(void)
 {
     rt_setup4_level = rt_simd_level();
+    __builtin_cpu_init();
+    rt_setup4_bmi = __builtin_cpu_supports("bmi"); /* the any-hit lists' andn */
 }
 #endif
 
@@ -680,16 +682,16 @@ enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
 
 /* rt_walkstate.any_hit: 0 transmittance; RT_ANY_HIT the first hit blocks; RT_ANY_MESH (bit 0
    kept, so every other test takes it as RT_ANY_HIT) also every primitive a mesh triangle, no
-   skipped primitive and a CPU with AVX2 (rt_occluded's rays, rt_anyhit_kind): the cell lists
+   skipped primitive and a CPU with AVX2 and BMI (rt_occluded's rays, rt_anyhit_kind): the cell lists
    through rt_walkstate.list (rt_anyhit_list), the second-level walks through rt_walk_sub_anyhit */
 enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 
 /* AVX2's encoding for the RT_ANY_MESH walks: three-operand instructions, no register copies
    (with the lists' constant axis order 12-15 % fewer instructions on the meshes' shadow rays);
    no FMA is formed, so the operations and their bits are the SSE2 code's
-   (docs/bench/rt_tuning.md) */
+   (docs/bench/rt_tuning.md); BMI for the lists' andn (rt_word_offset) */
 #ifdef RT_SETUP4_AVX2
-#define RT_ANYHIT_TARGET __attribute__((target("avx2")))
+#define RT_ANYHIT_TARGET __attribute__((target("avx2,bmi")))
 #else
 #define RT_ANYHIT_TARGET
 #endif
@@ -713,6 +715,9 @@ struct rt_walkstate {
                                triangles only (rt_mesh_only): the cell list's copy for the
                                ray's axis order (rt_anyhit_list, rt_nearest_list), chosen once
                                per ray; NULL: the general lists */
+    uint32_t vnmask; /* RT_ANY_MESH walks: ~rt_scene.vmask, read from memory by the lists so
+                        that BMI's andn masks an index word in one instruction (no copy of
+                        the mask per vertex) */
     double best;
     long bi;
     double ebest; /* the best hit's error bound (rt_nearest_update) */
@@ -823,6 +828,20 @@ static __attribute__((noinline)) void rt_cell_nearest(rt_walkstate *w, const uin
     }
 }
 
+/* the vertex offset of index word *p, ~nm & *p (nm: ~rt_scene.vmask), in one BMI andn from
+   memory (a plain & costs a copy of the mask per word: and is destructive); as 64 bits, the
+   32-bit andn having cleared the upper half */
+RT_INLINE uint64_t rt_word_offset(uint32_t nm, const uint32_t *p)
+{
+#ifdef RT_SETUP4_AVX2
+    uint64_t r;
+    __asm__("andn %2, %k1, %k0" : "=r"(r) : "r"(nm), "m"(*p));
+    return r;
+#else
+    return ~nm & *p;
+#endif
+}
+
 /* an any-hit cell list of mesh triangles only (RT_ANY_MESH), the ray's axis order (kx, ky, kz)
    known at compile time: the vertices' components at constant offsets, the ray's origin in
    registers for the whole list, no primitive kind to tell, no skipped primitive. The tests,
@@ -832,7 +851,7 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
-    const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
+    const uint32_t(*ct)[3] = sc->ctri, nm = w->vnmask;
     const double *X = sc->mv_xyz.p;
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double tmin = r->tmin, tmax = r->tmax;
@@ -845,8 +864,9 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + (ix[0] & vm), X + (ix[1] & vm),
-                           X + (ix[2] & vm), tmin, tmax, &t)) {
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + rt_word_offset(nm, ix),
+                           X + rt_word_offset(nm, ix + 1), X + rt_word_offset(nm, ix + 2), tmin,
+                           tmax, &t)) {
             w->T = 0.0;
             w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
             return 1;
@@ -1333,8 +1353,10 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         return w.T;
     if (rs)
         rt_rayx_shear(rs);
-    if (w.any_hit == RT_ANY_MESH)
+    if (w.any_hit == RT_ANY_MESH) {
         w.list = rt_anyhit_list(r);
+        w.vnmask = ~sc->vmask;
+    }
     w.stamp = rt_ctx_next(c);
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
                     rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL) == RT_WALK_BLOCKED)
@@ -1531,8 +1553,10 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, ah);
-        if (ah == RT_ANY_MESH)
+        if (ah == RT_ANY_MESH) {
             w.list = rt_anyhit_list(&r);
+            w.vnmask = ~sc->vmask;
+        }
         w.stamp = rt_ctx_next(c);
         if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
             return 1;
@@ -1545,13 +1569,14 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
 }
 
 /* 1 where the batch API's walks take the cell lists of mesh triangles (rt_anyhit_list,
-   rt_nearest_list): a grid over mesh triangles only and a CPU with AVX2 (the batch API's
-   rays never skip a primitive) */
+   rt_nearest_list): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
+   API's rays never skip a primitive) */
 static int rt_mesh_only(const rt_scene *sc)
 {
 #ifdef RT_SETUP4_AVX2
     pthread_once(&rt_setup4_once, rt_setup4_pick);
-    return rt_setup4_level >= 2 && sc->use_grid && sc->ntri_plain == 0 && sc->ntri == sc->nprim;
+    return rt_setup4_level >= 2 && rt_setup4_bmi && sc->use_grid && sc->ntri_plain == 0 &&
+           sc->ntri == sc->nprim;
 #else
     (void)sc;
     return 0;
