@@ -922,7 +922,7 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
-    const uint32_t(*ct)[3] = sc->ctri, vm = sc->vmask;
+    const uint32_t(*ct)[3] = sc->ctri, nm = w->vnmask;
     const double *X = sc->mv_xyz.p;
     const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
     const double tmin = r->tmin, tmax = r->tmax;
@@ -938,8 +938,9 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + (ix[0] & vm), X + (ix[1] & vm),
-                           X + (ix[2] & vm), tmin, RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
+        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + rt_word_offset(nm, ix),
+                           X + rt_word_offset(nm, ix + 1), X + rt_word_offset(nm, ix + 2), tmin,
+                           RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
             rt_nearest_update(sc, r, i, t, &w->best, &w->bi, &w->ebest);
     }
     return 0;
@@ -1466,8 +1467,10 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, 0);
-        if (mesh)
+        if (mesh) {
             w.list = rt_nearest_list(&r);
+            w.vnmask = ~sc->vmask;
+        }
         w.stamp = rt_ctx_next(c);
         rt_walk_pre(&w, mesh ? 3 : 0, p, j);
         t = w.best;
