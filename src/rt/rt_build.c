@@ -1642,7 +1642,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
  * neighbour beyond the box counting as 255: the largest-square recurrence in 3-D, one sweep
  * from o's far corner back (the neighbours are done first). A ray whose steps lie in octant o
  * is inside that cube from where it enters c until it leaves one of the cube's far faces, so
- * the traversal jumps there (rt_trace.c). Octants are independent: one per pool part. */
+ * the traversal jumps there (rt_trace.c). Then the stored bytes: m capped at RT_CUBE_MAX (a
+ * smaller cube is empty as well), an occupied cell's 0 replaced by RT_CUBE_OCC and what the
+ * cell holds. Octants are independent: one per pool part. */
 static void rt_empty_cubes_part(void *arg, int k, int n)
 {
     rt_grid *g = arg;
@@ -1679,6 +1681,13 @@ static void rt_empty_cubes_part(void *arg, int k, int n)
                     m[ci] = (uint8_t)(v < 255 ? v + 1 : 255);
                 }
             }
+        }
+        for (size_t ci = 0; ci < g->ncells; ci++) {
+            if (m[ci] == 0)
+                m[ci] = (uint8_t)(RT_CUBE_OCC | (g->off[ci + 1] != g->off[ci] ? RT_CUBE_LIST : 0) |
+                                  (g->sub && g->sub[ci] >= 0 ? RT_CUBE_SUB : 0));
+            else if (m[ci] > RT_CUBE_MAX)
+                m[ci] = RT_CUBE_MAX;
         }
     }
 }

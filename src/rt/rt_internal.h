@@ -181,6 +181,11 @@ typedef struct rt_box {
    of the rays miss it) reads the first line (lo, hi), a walk of it both; on malloc's 16-byte
    alignment a record spanned three lines unless the array happened to start on a line
    (docs/bench/rt_tuning.md) */
+/* rt_grid.odist's byte of a top cell: an empty cell's cube edge (1 .. RT_CUBE_MAX), or for an
+   occupied cell RT_CUBE_OCC with RT_CUBE_LIST (its own list is not empty) and RT_CUBE_SUB (it
+   has a second-level grid) */
+enum { RT_CUBE_MAX = 127, RT_CUBE_OCC = 128, RT_CUBE_LIST = 1, RT_CUBE_SUB = 2 };
+
 typedef struct rt_subgrid {
     rt_box b;
     uint32_t first;    /* first of its cells among the grid's sub cells (soff, sleaf) */
@@ -246,10 +251,12 @@ typedef struct rt_grid {
     int32_t *sub;      /* per top cell: sub-grid index or -1; NULL if there are none */
     uint8_t *odist;    /* empty cubes: 8 arrays of ncells, one per octant o of directions
                           (bit a of o set: negative along axis a); cell c's entry in array o
-                          is the edge m (in cells, at most 255) of the largest cube of cells
-                          without references or a sub-grid that has c as its corner and
-                          extends from c in o's directions (cells beyond the box count as
-                          empty); 0: c itself is occupied */
+                          is the edge m (in cells, 1 <= m <= RT_CUBE_MAX) of the largest cube
+                          of cells without references or a sub-grid that has c as its corner
+                          and extends from c in o's directions (cells beyond the box count as
+                          empty); an occupied c has RT_CUBE_OCC and what it holds (RT_CUBE_LIST,
+                          RT_CUBE_SUB), so the walk loads only the offsets or the sub-grid
+                          index it needs */
     /* the k-DOP of the occupied cells: every point of every primitive p (in the grid frame)
        has kd_lo[j] <= s_j(p) <= kd_hi[j], s = RT_KDOP_PROJ(p), with a pad beyond the
        roundings of a ray's clip to it (rt_trace.c: rays that miss it skip the walk, and

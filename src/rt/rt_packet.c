@@ -1599,11 +1599,14 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
 static int rt_pk_cell_visit(rt_pk *p, rt_pk_cull_fn cull, size_t ci, uint64_t in)
 {
     const rt_grid *g = &p->sc->grid;
-    if (g->odist && g->odist[ci] != 0)
+    /* the cell's byte (rt_grid.odist, built with the grid): empty, or what it holds */
+    const unsigned kind = g->odist[ci];
+    if (kind < RT_CUBE_OCC)
         return 1; /* empty, no second level */
     p->cand = in & p->live;
-    rt_pk_list(p, cull, g->refs + g->off[ci], g->off[ci + 1] - g->off[ci]);
-    if (g->sub && g->sub[ci] >= 0 && (in & p->live))
+    if (kind & RT_CUBE_LIST)
+        rt_pk_list(p, cull, g->refs + g->off[ci], g->off[ci + 1] - g->off[ci]);
+    if ((kind & RT_CUBE_SUB) && (in & p->live))
         return rt_pk_sub(p, cull, &g->subs[g->sub[ci]], in);
     return 1;
 }

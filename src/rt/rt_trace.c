@@ -413,6 +413,8 @@ typedef struct rt_pre4 {
     double dt[3][4];       /* a cell's width in ray parameter */
     double it[3][4];       /* about 1 / dt (the jumps' counts) */
     double o[3][4], d[3][4]; /* the ray in the grid frame (rt_gray_init) */
+    int kx[4], ky[4], kz[4]; /* rt_rayx_shear of the input direction */
+    double sx[4], sy[4], sz[4];
 } rt_pre4;
 
 typedef double rt_v4d __attribute__((vector_size(32)));
@@ -463,6 +465,39 @@ rt_kdop4(const rt_grid *g, const rt_v4d o[3], const rt_v4d d[3], rt_v4d *t0, rt_
     *par = (rt_v4l)pm;
 }
 
+/* rt_rayx_shear of the four lanes' directions d (the input directions: no component of a
+   lane in state 2 is flushed), the same rule and operations: kz the first of the largest
+   |d| ((ax < ay) | (ax < az)) * (1 + (ay < az)), kx and ky after it in cyclic order, swapped
+   for a negative d[kz]; sz = 1 / d[kz], sx = d[kx] sz, sy = d[ky] sz. One set of lanes
+   instead of a shear per walked ray (some 40 instructions each). */
+static inline __attribute__((always_inline, target("avx2"))) void rt_shear4(const rt_v4d d[3],
+                                                                          rt_pre4 *p)
+{
+    const rt_v4d ax = (rt_v4d)rt_v4abits(d[0]), ay = (rt_v4d)rt_v4abits(d[1]),
+                 az = (rt_v4d)rt_v4abits(d[2]);
+    const rt_v4l one = {1, 1, 1, 1};
+    const rt_v4l m1 = (ax < ay) | (ax < az), m2 = ay < az;
+    const rt_v4l kz = (m1 & one) + (m1 & m2 & one);
+    const rt_v4d dz = rt_v4sel(kz == 0, d[0], rt_v4sel(kz == 1, d[1], d[2]));
+    const rt_v4l ng = (dz < (rt_v4d){0.0, 0.0, 0.0, 0.0}) & one;
+    /* (kz + 1 + neg) % 3 and (kz + 2 - neg) % 3 */
+    rt_v4l kx = kz + one + ng, ky = kz + 2 * one - ng;
+    kx -= (kx >= 3 * one) & (3 * one);
+    ky -= (ky >= 3 * one) & (3 * one);
+    const rt_v4d dx = rt_v4sel(kx == 0, d[0], rt_v4sel(kx == 1, d[1], d[2]));
+    const rt_v4d dy = rt_v4sel(ky == 0, d[0], rt_v4sel(ky == 1, d[1], d[2]));
+    const rt_v4d sz = (rt_v4d){1.0, 1.0, 1.0, 1.0} / dz, sx = dx * sz, sy = dy * sz;
+    const rt_v4i kx4 = __builtin_convertvector(kx, rt_v4i),
+                 ky4 = __builtin_convertvector(ky, rt_v4i),
+                 kz4 = __builtin_convertvector(kz, rt_v4i);
+    memcpy(p->kx, &kx4, sizeof p->kx);
+    memcpy(p->ky, &ky4, sizeof p->ky);
+    memcpy(p->kz, &kz4, sizeof p->kz);
+    memcpy(p->sx, &sx, sizeof p->sx);
+    memcpy(p->sy, &sy, sizeof p->sy);
+    memcpy(p->sz, &sz, sizeof p->sz);
+}
+
 static inline __attribute__((always_inline, target("avx2"))) void
 rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
 {
@@ -503,6 +538,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     tmin = rt_v4sel(bad, zero, tmin);
     tmax = rt_v4sel(bad, one, tmax);
     bad |= tmin > tmax;
+    const rt_v4d din[3] = {d[0], d[1], d[2]}; /* the rt_rayx's direction (rt_pre_ray) */
     const rt_box *b = &g->b;
     if (g->rotated) {
         /* rt_gray_init's rotation, the same sums in the same order; a lane whose rotated
@@ -598,6 +634,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     memcpy(p->t1, &t1, sizeof p->t1);
     const rt_v4i oct4 = __builtin_convertvector(neg, rt_v4i);
     memcpy(p->oct, &oct4, sizeof p->oct);
+    rt_shear4(din, p);
 }
 
 static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_grid *g,
@@ -729,13 +766,14 @@ static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, doubl
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
-/* 3D-DDA over one box (top level: with second-level cells in sub and the empty cubes of the
- * ray's octant in dist; second level: both NULL). mode 0: nearest hit, leaves at the first cell
- * boundary beyond the best hit (t1 lowered to it); mode 3: mode 0 of a scene of mesh triangles
- * only, its cell lists through rt_walkstate.list (rt_nearest_list), its second-level walks
- * rt_walk_sub_nearest_mesh; mode 1: transmittance, BLOCKED when an opaque primitive is hit;
- * mode 2: mode 1 of an RT_ANY_MESH second-level walk. Mailboxes: see the top of the file.
- * Direction components exactly +0.0 or -0.0 never step. step: NULL, or
+/* 3D-DDA over one box (top level: with second-level cells in sub and the cells' bytes of the
+ * ray's octant in dist, rt_grid.odist, never NULL there; second level: both NULL). mode 0:
+ * nearest hit, leaves at the first cell boundary beyond the best hit (t1 lowered to it);
+ * mode 3: mode 0 of a scene of mesh triangles only, its cell lists through rt_walkstate.list
+ * (rt_nearest_list), its second-level walks rt_walk_sub_nearest_mesh; mode 1: transmittance,
+ * BLOCKED when an opaque primitive is hit; mode 2: mode 1 of an RT_ANY_MESH second-level walk.
+ * Mailboxes: see the top of the file. Direction components exactly +0.0 or -0.0 never step.
+ * step: NULL, or
  * for a second-level walk of modes 1 and 2 the ray's steps, which their top level stores in
  * rt_walkstate.step (rt_dda_init). */
 /* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
@@ -1119,11 +1157,13 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
     size_t ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
     for (;;) {
-        /* top level: dist > 0 marks an empty cell without a second-level grid (rt_build.c),
-           passed with one load (the best hit cannot have changed there); dist is its empty
-           cube's edge in the ray's octant */
-        if (dist && dist[ci] != 0) {
-            if (dist[ci] < RT_JUMP_MIN)
+        /* top level: the cell's byte in dist (rt_grid.odist). Below RT_CUBE_OCC an empty cell
+           without a second-level grid, passed with one load (the best hit cannot have
+           changed there), the byte its empty cube's edge in the ray's octant; else what the
+           cell holds, so that only the offsets or the sub-grid index it has are loaded */
+        unsigned kind = RT_CUBE_LIST | RT_CUBE_SUB;
+        if (dist && (kind = dist[ci]) < RT_CUBE_OCC) {
+            if (kind < RT_JUMP_MIN)
                 goto advance;
             /* empty-space jump: the cells from this one to dist - 1 further on each axis in
                the ray's step directions are empty, and the ray stays in that cube (it moves
@@ -1134,7 +1174,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                which references it (cells are enlarged by eps at build, rt_build.c).
                A parameter that overflows (extreme directions): ordinary steps instead.
                The far faces are the walk's next boundaries plus k cell widths. */
-            const int k = dist[ci] - 1;
+            const int k = (int)kind - 1;
             const double jx = tx + (double)k * dtx, jy = ty + (double)k * dty,
                          jz = tz + (double)k * dtz;
             const double tj = RT_MIN(jx, RT_MIN(jy, jz));
@@ -1169,14 +1209,18 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             }
             goto advance;
         }
-        /* the cell's list: 4-byte offsets (off) or a sub-grid's 2-byte ones (off16) */
-        const uint32_t k0 = off16 ? off16[ci] : off[ci], k1 = off16 ? off16[ci + 1] : off[ci + 1];
-        if (k0 != k1) {
-            if (rt_walk_cell(w, mode, refs + k0, k1 - k0, leaf ? leaf[ci] : 0))
-                return RT_WALK_BLOCKED;
-        } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
-            goto advance;
-        if (sub && sub[ci] >= 0) {
+        /* the cell's list: 4-byte offsets (off) or a sub-grid's 2-byte ones (off16); a top
+           cell whose byte says it has none is not looked up */
+        if (kind & RT_CUBE_LIST) {
+            const uint32_t k0 = off16 ? off16[ci] : off[ci],
+                           k1 = off16 ? off16[ci + 1] : off[ci + 1];
+            if (dist || k0 != k1) {
+                if (rt_walk_cell(w, mode, refs + k0, k1 - k0, leaf ? leaf[ci] : 0))
+                    return RT_WALK_BLOCKED;
+            } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
+                goto advance;
+        }
+        if (sub && (dist ? (kind & RT_CUBE_SUB) != 0 : sub[ci] >= 0)) {
             /* the sub-grid's box clip here: a third of the rays that cross a crowded top
                cell miss its sub-grid's box, and then need no call */
             const rt_subgrid *sg = &subs[sub[ci]];
@@ -1254,15 +1298,25 @@ rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
     return rt_walk_sub_mode1(w, 2, sg, t0, t1);
 }
 
+/* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
+   before use_grid is set), and saying so lets the top walk's inlined copies drop their tests
+   of dist against NULL */
+static inline const uint8_t *rt_cubes_of(const rt_grid *g, size_t o)
+{
+    const uint8_t *d = g->odist + o * g->ncells;
+    __asm__("" : "+r"(d)); /* one value: not split into base and offset in the walk */
+    if (!d)
+        __builtin_unreachable();
+    return d;
+}
+
 /* the top level's empty cubes for the ray's octant (the signs of its steps: a component
    +0.0 or -0.0 does not step, and the cube covers its slice either way) */
 static inline const uint8_t *rt_octant_cubes(const rt_grid *g, const rt_gray *gr)
 {
-    if (!g->odist)
-        return NULL;
     const size_t o = (size_t)(gr->d[0] < 0.0) | (size_t)(gr->d[1] < 0.0) << 1 |
                      (size_t)(gr->d[2] < 0.0) << 2;
-    return g->odist + o * g->ncells;
+    return rt_cubes_of(g, o);
 }
 
 /* the walk state of a ray r: no hit yet (fields one by one: an initialiser would also
@@ -1419,8 +1473,8 @@ static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, cons
     return rt_ctx_init_small(c);
 }
 
-/* the rt_rayx and grid-frame ray of lane j of a four-ray set-up in state 2 (ray: its input;
-   no component is flushed there) */
+/* the rt_rayx (its shear from the set-up: rt_shear4) and grid-frame ray of lane j of a
+   four-ray set-up in state 2 (ray: its input; no component is flushed there) */
 RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, const rt_ray *ray)
 {
     memcpy(r->o, ray->org, sizeof r->o);
@@ -1428,7 +1482,12 @@ RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, cons
     r->tmin = ray->tmin;
     r->tmax = ray->tmax;
     r->skip = RT_NO_SKIP;
-    rt_rayx_shear(r);
+    r->kx = p->kx[j];
+    r->ky = p->ky[j];
+    r->kz = p->kz[j];
+    r->sx = p->sx[j];
+    r->sy = p->sy[j];
+    r->sz = p->sz[j];
     for (int a = 0; a < 3; a++) {
         gr->o[a] = p->o[a][j];
         gr->d[a] = p->d[a][j];
@@ -1443,7 +1502,7 @@ RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_pre4 *p, int j)
 {
     const rt_grid *g = &w->sc->grid;
     return rt_walk_box(w, mode, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                       g->odist ? g->odist + (size_t)p->oct[j] * g->ncells : NULL, 0.0, 0.0, 0,
+                       rt_cubes_of(g, (size_t)p->oct[j]), 0.0, 0.0, 0,
                        p, j, NULL);
 }
 

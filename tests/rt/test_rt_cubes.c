@@ -65,23 +65,35 @@ static void check_cubes(const rt_scene *sc)
     const rt_grid *g = &sc->grid;
     assert_true(sc->use_grid);
     assert_non_null(g->odist);
-    size_t nempty = 0, nlong = 0;
+    size_t nempty = 0, nlong = 0, nlist = 0, nsub = 0;
     for (int o = 0; o < 8; o++)
         for (int z = 0; z < g->b.n[2]; z++)
             for (int y = 0; y < g->b.n[1]; y++)
                 for (int x = 0; x < g->b.n[0]; x++) {
                     const size_t ci = ((size_t)z * g->b.n[1] + y) * g->b.n[0] + x;
-                    const int want = occupied(g, x, y, z) ? 0 : brute_cube(g, x, y, z, o);
+                    /* an occupied cell: what it holds; an empty one: its cube, capped */
+                    const int list = g->off[ci + 1] != g->off[ci];
+                    const int sub = g->sub && g->sub[ci] >= 0;
+                    const int cube = occupied(g, x, y, z) ? 0 : brute_cube(g, x, y, z, o);
+                    const int want = cube == 0 ? RT_CUBE_OCC | (list ? RT_CUBE_LIST : 0) |
+                                                     (sub ? RT_CUBE_SUB : 0)
+                                     : cube < RT_CUBE_MAX ? cube
+                                                          : RT_CUBE_MAX;
                     const int got = g->odist[(size_t)o * g->ncells + ci];
                     if (got != want)
-                        fail_msg("cell (%d,%d,%d) octant %d: cube %d, brute force %d", x, y, z, o,
-                                 got, want);
-                    nempty += want > 0;
-                    nlong += want >= 4;
+                        fail_msg("cell (%d,%d,%d) octant %d: byte %d, brute force %d", x, y, z,
+                                 o, got, want);
+                    nempty += cube > 0;
+                    nlong += cube >= 4;
+                    nlist += list;
+                    nsub += sub;
                 }
-    /* the scenes have empty cells and cubes long enough for jumps */
+    /* the scenes have empty cells and cubes long enough for jumps, cells with lists, and
+       second-level grids where the grid has any */
     assert_true(nempty > 0);
     assert_true(nlong > 0);
+    assert_true(nlist > 0);
+    assert_true(!g->sub || nsub > 0);
 }
 
 /* every vertex (n of them, in the grid frame) inside the k-DOP's slabs; the slabs cut off a
@@ -155,22 +167,40 @@ static void test_cubes_clusters(void **state)
     }
 }
 
+/* one triangle in the middle of a small grid, and at one end of a long row of cells (cubes
+   beyond RT_CUBE_MAX, stored capped) */
 static void test_cubes_one_triangle(void **state)
 {
     (void)state;
-    rt_scene *sc = rt_scene_new();
-    assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    const int surf = rt_scene_add_surface(sc, &s);
-    const double v[9] = {4.9, 5.0, 5.0, 5.1, 5.0, 5.0, 5.0, 5.1, 5.05};
-    const int n = 3;
-    assert_true(rt_scene_add_polygon(sc, 1, &n, v, surf, surf) >= 0);
-    const rt_build_options o = {.brute_threshold = 0, .threads = 1, .grid_res = {12, 10, 8},
-                                .grid_box = {0, 0, 0, 10, 10, 10}};
-    assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
-    check_cubes(sc);
-    rt_scene_free(sc);
+    for (int k = 0; k < 2; k++) {
+        rt_scene *sc = rt_scene_new();
+        assert_non_null(sc);
+        rt_surface s;
+        rt_surface_default(&s);
+        const int surf = rt_scene_add_surface(sc, &s);
+        const double x = k ? 9.95 : 5.0;
+        const double v[9] = {x - 0.01, 5.0, 5.0, x + 0.01, 5.0, 5.0, x, 5.1, 5.05};
+        const int n = 3;
+        assert_true(rt_scene_add_polygon(sc, 1, &n, v, surf, surf) >= 0);
+        const rt_build_options o = {.brute_threshold = 0, .threads = 1,
+                                    .grid_res = {k ? 200 : 12, k ? 3 : 10, k ? 2 : 8},
+                                    .grid_box = {0, 0, 0, 10, 10, 10}};
+        assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
+        if (!k) {
+            check_cubes(sc);
+        } else {
+            /* the brute force is too slow for cubes this long: the first cell's cube towards
+               the triangle (about 198 cells) is stored as RT_CUBE_MAX, and every empty cell's
+               byte is a cube edge */
+            const rt_grid *g = &sc->grid;
+            assert_int_equal(g->odist[0], RT_CUBE_MAX);
+            for (size_t i = 0; i < 8 * g->ncells; i++)
+                if (!occupied(g, (int)(i % g->ncells % 200), (int)(i % g->ncells / 200 % 3),
+                              (int)(i % g->ncells / 600)))
+                    assert_true(g->odist[i] >= 1 && g->odist[i] <= RT_CUBE_MAX);
+        }
+        rt_scene_free(sc);
+    }
 }
 
 /* the clusters as one indexed mesh, with the options o */
@@ -227,6 +257,15 @@ static void test_kdop_mesh(void **state)
     }
     assert_int_equal(rt_intersect(sc, NR, r, h), RT_OK);
     assert_int_equal(rt_intersect(bf, NR, r, hb), RT_OK);
+    /* one ray per call (the one-ray set-up and its shear, rt_rayx_shear) against the batch's
+       four-ray set-up (rt_shear4): the same hits, bit for bit */
+    for (int k = 0; k < NR; k += 7) {
+        rt_hit h1;
+        assert_int_equal(rt_intersect(sc, 1, &r[k], &h1), RT_OK);
+        if (h1.prim != h[k].prim || memcmp(&h1.t, &h[k].t, sizeof h1.t) != 0)
+            fail_msg("ray %d alone: prim %d t %.17g, in the batch prim %d t %.17g", k, h1.prim,
+                     h1.t, h[k].prim, h[k].t);
+    }
     int nhit = 0, nmiss = 0;
     for (int k = 0; k < NR; k++) {
         if (h[k].prim != hb[k].prim || memcmp(&h[k].t, &hb[k].t, sizeof h[k].t) != 0)
