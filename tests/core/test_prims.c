@@ -406,6 +406,75 @@ static void test_fill_area3_mapping_exact(void **state)
     assert_true(drawn > 100 && dropped > 100); /* both outcomes were tested */
 }
 
+/* The normalization's context is kept between primitives while the current window and
+ * viewport 3, clipping indicator and transformation number give the same one
+ * (gks_pipe_norm.c): a change of any one of the twelve limits, or of the clipping
+ * indicator, between two FILL AREA 3 must reach the next area's NDC3 points. */
+static void fill_area3_expect(const Glimit3 *w, const Glimit3 *v)
+{
+    const Gpoint3 t[3] = { { 1, 1, 1 }, { 0, 0, 0 }, { 1, 0, 0.5 } };
+    Gpoint_list3 l = { 3, (Gpoint3 *)t };
+    cap.n = 0;
+    gfill_area3(&l);
+    expect_no_error();
+    assert_int_equal(cap.n, 1);
+    const gks_prim *p = &cap.rec[0].p;
+    assert_int_equal(p->n_points, 3);
+    for (int i = 0; i < 3; i++) {
+        const double c[3] = { t[i].x, t[i].y, t[i].z };
+        const double wl[3][2] = { { w->x_min, w->x_max }, { w->y_min, w->y_max },
+                                  { w->z_min, w->z_max } };
+        const double vl[3][2] = { { v->x_min, v->x_max }, { v->y_min, v->y_max },
+                                  { v->z_min, v->z_max } };
+        const double got[3] = { p->pts[i].x, p->pts[i].y, p->pts[i].z };
+        for (int k = 0; k < 3; k++) {
+            const double s = (vl[k][1] - vl[k][0]) / (wl[k][1] - wl[k][0]);
+            assert_true(fabs(got[k] - (vl[k][0] + (c[k] - wl[k][0]) * s)) < 1e-12);
+        }
+    }
+}
+
+static void test_fill_area3_norm_context_fresh(void **state)
+{
+    (void)state;
+    const Glimit3 unit = { 0, 1, 0, 1, 0, 1 };
+    gset_fill_int_style(GSTYLE_SOLID);
+    for (int k = 0; k < 12; k++) {
+        Glimit3 w = unit, v = unit;
+        gset_win3(1, &w);
+        gset_vp3(1, &v);
+        gsel_norm_tran(1);
+        fill_area3_expect(&w, &v); /* the context of the unit limits, kept */
+        double *lim = k < 6 ? &w.x_min + k : &v.x_min + (k - 6);
+        if (k < 6) /* a larger window, a smaller viewport: the points stay inside */
+            *lim = k % 2 ? 2.0 : -1.0;
+        else
+            *lim = k % 2 ? 0.75 : 0.25;
+        gset_win3(1, &w);
+        gset_vp3(1, &v);
+        fill_area3_expect(&w, &v);
+    }
+    /* the clipping indicator alone: the area reaches x = 2 beyond the viewport */
+    const Glimit3 right = { 0, 0.5, 0, 1, 0, 1 };
+    gset_win3(2, &unit);
+    gset_vp3(2, &right);
+    gsel_norm_tran(2);
+    const Gpoint3 t[3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 1, 0 } };
+    Gpoint_list3 l = { 3, (Gpoint3 *)t };
+    for (int clip = 1; clip >= 0; clip--)
+        for (int again = 0; again < 2; again++) {
+            gset_clip_ind(clip ? GIND_CLIP : GIND_NO_CLIP);
+            cap.n = 0;
+            gfill_area3(&l);
+            expect_no_error();
+            assert_int_equal(cap.n, 1);
+            double xmax = 0;
+            for (int i = 0; i < cap.rec[0].p.n_points; i++)
+                xmax = fmax(xmax, cap.rec[0].p.pts[i].x);
+            assert_true(clip ? xmax <= 0.5 : xmax == 1.0);
+        }
+}
+
 static void test_fill_area_errors_and_hostile(void **state)
 {
     (void)state;
@@ -682,6 +751,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_text_errors, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fill_area_set_hole_and_edges, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fill_area3_mapping_exact, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_fill_area3_norm_context_fresh, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fill_area_errors_and_hostile, setup, teardown),
         cmocka_unit_test_setup_teardown(test_large_fill_area, setup, teardown),
         cmocka_unit_test_setup_teardown(test_cell_array, setup, teardown),

@@ -62,7 +62,14 @@ unsigned gks_function_states(int fctid)
  * the binding's error report) check gks_thread_mine themselves. A thread is identified by
  * the address of its own thread-local byte (no pthread_t comparison needed). */
 static _Atomic uintptr_t gks_owner;          /* 0: GKS is closed and nobody opens it */
+/* The initial-exec model: the byte is found at a fixed offset from the thread pointer
+ * instead of through __tls_get_addr on every entry point (one byte of the static TLS
+ * block that the C library keeps spare for libraries it loads later). */
+#if defined(__GNUC__) && defined(__ELF__)
+static _Thread_local char gks_thread_self __attribute__((tls_model("initial-exec")));
+#else
 static _Thread_local char gks_thread_self;
+#endif
 static _Atomic(Gerr_handler) gks_foreign_handler; /* the handler as a refused call sees it */
 
 static uintptr_t thread_self(void)

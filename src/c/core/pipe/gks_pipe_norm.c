@@ -24,11 +24,22 @@ static int same_bits(const double *a, const double *b, size_t n)
     return 1;
 }
 
-/* Whether the limit l holds the six numbers b (gks_limit3_array's order) bit for bit. */
-static int same_limit(const double b[6], const Glimit3 *l)
+/* Whether the normalization transformations a and b (window and viewport 3, 12 doubles)
+ * are the same bit for bit: every pair compared, no early exit (a reduction the compiler
+ * makes in vector registers; it runs per primitive). */
+static int same_tran(const gks_norm_tran *a, const gks_norm_tran *b)
 {
-    const double v[6] = { l->x_min, l->x_max, l->y_min, l->y_max, l->z_min, l->z_max };
-    return same_bits(b, v, 6);
+    enum { N = sizeof(gks_norm_tran) / sizeof(uint64_t) };
+    _Static_assert(sizeof(gks_norm_tran) == 12 * sizeof(double), "no padding in gks_norm_tran");
+    const unsigned char *pa = (const unsigned char *)a, *pb = (const unsigned char *)b;
+    uint64_t d = 0;
+    for (size_t i = 0; i < N; i++) {
+        uint64_t x, y;
+        memcpy(&x, pa + i * sizeof x, sizeof x);
+        memcpy(&y, pb + i * sizeof y, sizeof y);
+        d |= x ^ y;
+    }
+    return d == 0;
 }
 
 /* The open segment, or NULL. */
@@ -72,7 +83,7 @@ int gks_pipe_norm_from(gks_pipe_norm *nc, const double m[3][4], const double box
  * normalization (INTERPRET ITEM). */
 static struct {
     int valid;
-    double w[6], v[6];
+    gks_norm_tran tr; /* the current window and viewport 3, as the state list holds them */
     int clip_on;
     const gks_segment *seg;
     double stran[3][4];
@@ -84,8 +95,7 @@ static int cache_current(const gks_state_list *sl, const gks_segment *seg)
 {
     const gks_norm_tran *tr = &sl->tran[sl->cur_tnr];
     return norm_cache.valid && norm_cache.clip_on == (sl->clip_ind == GIND_CLIP) &&
-           norm_cache.seg == seg && same_limit(norm_cache.w, &tr->win) &&
-           same_limit(norm_cache.v, &tr->vp) &&
+           norm_cache.seg == seg && same_tran(&norm_cache.tr, tr) &&
            (!seg || same_bits(&norm_cache.stran[0][0], &seg->tran[0][0], 12));
 }
 
@@ -94,6 +104,9 @@ static int cache_current(const gks_state_list *sl, const gks_segment *seg)
  * clipping indicator is on. For a recorded normalization (ov), its matrix and clipping
  * volume replace the current ones, and NDC3 points enter through the identity. Made here
  * when the cache does not hold it (gks_pipe_norm_get, which runs per primitive, checks). */
+#if defined(__GNUC__)
+__attribute__((noinline)) /* apart: the cache's hit, per primitive, stays a short leaf */
+#endif
 static int norm_make(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec_xf *ov)
 {
     static const double id[3][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 } };
@@ -126,8 +139,7 @@ static int norm_make(const gks_pipe_norm **ncp, gks_pipe_norm *nc, const gks_rec
         gks_pipe_norm_facts(nc);
     }
     if (!ov) {
-        memcpy(norm_cache.w, w, sizeof w);
-        memcpy(norm_cache.v, box, sizeof box);
+        norm_cache.tr = sl->tran[sl->cur_tnr];
         norm_cache.clip_on = clip_on;
         norm_cache.seg = seg;
         if (seg)

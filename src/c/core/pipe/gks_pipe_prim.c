@@ -267,7 +267,8 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
             p->attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
         if (!err)
             err = gks_pipe_send(ws, p);
-        gks_free(pat);
+        if (pat)
+            gks_free(pat);
     }
     return err;
 }
