@@ -159,15 +159,15 @@ static void clear_part(void *arg, int k, int n)
     gks_raster_fb_clear_rows(j->fb, j->bg, (int)((long)k * h / n), (int)((long)(k + 1) * h / n));
 }
 
-/* The framebuffer for the current viewport, created or re-created and cleared to
- * colour 0 when its size changed; NULL on storage overflow. */
-static gks_raster_fb *framebuffer(gks_ws *ws)
+/* framebuffer() when the viewport is not the one fb was sized for (apart, so that the check
+ * per primitive is a short inline test). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static gks_raster_fb *framebuffer_resize(gks_ws *ws)
 {
     png_ws *p = ws->priv;
     const Glimit3 *vp = &ws->cur_vp;
-    if (p->fb && vp->x_min == p->fb_vp.x_min && vp->x_max == p->fb_vp.x_max &&
-        vp->y_min == p->fb_vp.y_min && vp->y_max == p->fb_vp.y_max)
-        return p->fb; /* the viewport it was sized for: no size to recompute per primitive */
     int w, h;
     image_size(ws, &w, &h);
     p->fb_vp = *vp;
@@ -181,6 +181,18 @@ static gks_raster_fb *framebuffer(gks_ws *ws)
         rt_parallel_parts(png_threads(p), clear_part, &j);
     }
     return p->fb;
+}
+
+/* The framebuffer for the current viewport, created or re-created and cleared to
+ * colour 0 when its size changed; NULL on storage overflow. */
+static inline gks_raster_fb *framebuffer(gks_ws *ws)
+{
+    const png_ws *p = ws->priv;
+    const Glimit3 *vp = &ws->cur_vp;
+    if (p->fb && vp->x_min == p->fb_vp.x_min && vp->x_max == p->fb_vp.x_max &&
+        vp->y_min == p->fb_vp.y_min && vp->y_max == p->fb_vp.y_max)
+        return p->fb; /* the viewport it was sized for: no size to recompute per primitive */
+    return framebuffer_resize(ws);
 }
 
 static int png_clear(gks_ws *ws)

@@ -26,6 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 /* The attributes a pair of tracer surfaces is made of (consecutive areas of one attribute
  * setting share one pair). */
@@ -966,12 +969,62 @@ static int queue_countable(const gks_prim *prim, int *nl, size_t *np, unsigned *
     return total == (size_t)prim->n_points && *nl > 0;
 }
 
+#if defined(__SSE2__)
+/* queue_points for an affine ori (ws_vrc_affine): rows 0 and 1 of ws_vrc_point_affine in
+ * the two lanes of SSE2 registers, row 2 alone, each lane with the same operations in the
+ * same order (no fused multiply-add: baseline x86-64), so the points are the same bit for
+ * bit; the matrix is loaded once (the stores into xyz could alias it for the compiler).
+ * _mm_max_pd(a, big) is a > big ? a : big per lane, as the scalar loop keeps its maximum
+ * (a NaN leaves it). */
+static int queue_points_affine(const gks_prim *prim, const double (*ori)[4], int *counts,
+                               double *xyz)
+{
+    const __m128d c0 = _mm_set_pd(ori[1][0], ori[0][0]), c1 = _mm_set_pd(ori[1][1], ori[0][1]);
+    const __m128d c2 = _mm_set_pd(ori[1][2], ori[0][2]), c3 = _mm_set_pd(ori[1][3], ori[0][3]);
+    const double r0 = ori[2][0], r1 = ori[2][1], r2 = ori[2][2], r3 = ori[2][3];
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d big01 = _mm_setzero_pd();
+    double big2 = 0.0;
+    size_t src = 0, q = 0;
+    int nl = 0;
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        if (m >= 3) {
+            counts[nl++] = (int)m;
+            for (size_t i = 0; i < m; i++, q += 3) {
+                const Gpoint3 *p = &prim->pts[src + i];
+                const double x = p->x, y = p->y, z = p->z;
+                const __m128d o01 = _mm_add_pd(
+                    _mm_add_pd(_mm_add_pd(_mm_mul_pd(c0, _mm_set1_pd(x)),
+                                          _mm_mul_pd(c1, _mm_set1_pd(y))),
+                               _mm_mul_pd(c2, _mm_set1_pd(z))),
+                    c3);
+                const double o2 = r0 * x + r1 * y + r2 * z + r3;
+                _mm_storeu_pd(xyz + q, o01);
+                xyz[q + 2] = o2;
+                big01 = _mm_max_pd(_mm_andnot_pd(sign, o01), big01);
+                const double a = fabs(o2);
+                big2 = a > big2 ? a : big2;
+            }
+        }
+        src += m;
+    }
+    double b[2];
+    _mm_storeu_pd(b, big01);
+    return b[0] > RT_COORD_MAX || b[1] > RT_COORD_MAX || big2 > RT_COORD_MAX;
+}
+#endif
+
 /* prim's loops of 3 or more points into counts and their VRC3 points (view orientation ori,
  * as ws_vrc_points computes them) into xyz; returns whether their max_abs is above
  * RT_COORD_MAX. */
 static int queue_points(const gks_prim *prim, const double (*ori)[4], int *counts, double *xyz)
 {
     const int affine = ws_vrc_affine(ori);
+#if defined(__SSE2__)
+    if (affine) /* the common case in two lanes: see queue_points_affine */
+        return queue_points_affine(prim, ori, counts, xyz);
+#endif
     size_t src = 0, q = 0;
     double big = 0.0;
     int nl = 0;
