@@ -1200,9 +1200,22 @@ static uint32_t rt_sub_classify(const rt_scene *sc, rt_build *b, size_t ci, cons
     }
     for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !*err; r++) {
         double bb[6];
-        rt_prim_gbox(sc, b, g->refs[r], bb, err);
-        if (sc->prim[g->refs[r]].kind == RT_KIND_TRI && !*err)
-            memcpy(b->tpts + 9 * (size_t)(r - g->off[ci]), b->pts, 9 * sizeof(double));
+        const rt_prim *p = &sc->prim[g->refs[r]];
+        if (p->kind == RT_KIND_TRI) { /* rt_prim_gpoints' values, made in place */
+            double *tv = b->tpts + 9 * (size_t)(r - g->off[ci]);
+            if (b->gv && p->data >= sc->ntri_plain) {
+                const uint32_t *ix = sc->ctri[p->data - sc->ntri_plain];
+                for (int k = 0; k < 3; k++)
+                    memcpy(tv + 3 * k, b->gv + (ix[k] & sc->vmask), 3 * sizeof(double));
+            } else {
+                rt_tri_copy(sc, p->data, tv);
+                for (int k = 0; k < 3 && g->rotated; k++)
+                    rt_grid_point(g, tv + 3 * k, tv + 3 * k);
+            }
+            rt_pts_bbox(tv, 3, bb);
+        } else {
+            rt_prim_gbox(sc, b, g->refs[r], bb, err);
+        }
         int span = 0;
         for (int a = 0; a < 3; a++) {
             bb[a] = rt_dmax(bb[a] - eps, lo[a]);
