@@ -270,9 +270,9 @@ typedef struct rt_build_options {
  * cells on their thinnest axis; at most 32 per axis) over the box of those parts.
  * Up to 10^4 primitives and with all grid options at their defaults, when at least 3/4 of
  * the occupied top cells hold more than 8 references (surfaces filling their cells evenly)
- * and the top level was not widened, one level of 8 cells per primitive replaces the two. Below 4 primitives: no grid. An
- * explicit grid_factor or sub_factor is always used as given (linearly). The measurements
- * behind these numbers: docs/bench/rt_tuning.md. */
+ * and the top level was not widened, one level of 8 cells per primitive replaces the two.
+ * Below 4 primitives: no grid. An explicit grid_factor or sub_factor is always used as
+ * given (linearly). The measurements behind these numbers: docs/bench/rt_tuning.md. */
 #define RT_GRID_FACTOR_DEFAULT 0.25
 #define RT_BRUTE_THRESHOLD_DEFAULT 4
 
