@@ -913,42 +913,6 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
     return 0;
 }
 
-/* one copy of the list per axis order of the shear (ky = 3 - kx - kz) */
-#define RT_CELL_ANYHIT(KX, KY, KZ)                                                              \
-    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_anyhit_##KX##KY##KZ(       \
-        rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
-    {                                                                                         \
-        return rt_cell_anyhit_mesh_k(w, refs, n, KX, KY, KZ);                                 \
-    }
-RT_CELL_ANYHIT(1, 2, 0)
-RT_CELL_ANYHIT(2, 1, 0)
-RT_CELL_ANYHIT(2, 0, 1)
-RT_CELL_ANYHIT(0, 2, 1)
-RT_CELL_ANYHIT(0, 1, 2)
-RT_CELL_ANYHIT(1, 0, 2)
-#undef RT_CELL_ANYHIT
-
-/* the list copy for the axis order of r (sheared: rt_rayx_shear), taken once per ray rather
-   than per list (a switch per list cost about 10 instructions of some 4 lists per shadow
-   ray, with the register saves of a function holding all six copies) */
-static rt_anyhit_list_fn rt_anyhit_list(const rt_rayx *r)
-{
-    switch (r->kz * 4 + r->kx) {
-    case 0 * 4 + 1:
-        return rt_cell_anyhit_120;
-    case 0 * 4 + 2:
-        return rt_cell_anyhit_210;
-    case 1 * 4 + 2:
-        return rt_cell_anyhit_201;
-    case 1 * 4 + 0:
-        return rt_cell_anyhit_021;
-    case 2 * 4 + 0:
-        return rt_cell_anyhit_012;
-    default:
-        return rt_cell_anyhit_102;
-    }
-}
-
 /* a nearest-hit cell list of mesh triangles only (rt_walk_box's mode 3), the ray's axis
    order (kx, ky, kz) known at compile time, as rt_cell_anyhit_mesh_k for any-hit rays: the
    mesh's index triples and vertices read directly, the ray's origin in registers, no
@@ -984,37 +948,64 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
     return 0;
 }
 
-#define RT_CELL_NEAREST(KX, KY, KZ)                                                             \
+/* one copy of each list per axis order of the shear (ky = 3 - kx - kz) */
+#define RT_CELL_LISTS(KX, KY, KZ)                                                               \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_anyhit_##KX##KY##KZ(       \
+        rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
+    {                                                                                         \
+        return rt_cell_anyhit_mesh_k(w, refs, n, KX, KY, KZ);                                 \
+    }                                                                                         \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_nearest_##KX##KY##KZ(      \
         rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
     {                                                                                         \
         return rt_cell_nearest_mesh_k(w, refs, n, KX, KY, KZ);                                \
     }
-RT_CELL_NEAREST(1, 2, 0)
-RT_CELL_NEAREST(2, 1, 0)
-RT_CELL_NEAREST(2, 0, 1)
-RT_CELL_NEAREST(0, 2, 1)
-RT_CELL_NEAREST(0, 1, 2)
-RT_CELL_NEAREST(1, 0, 2)
-#undef RT_CELL_NEAREST
+RT_CELL_LISTS(1, 2, 0)
+RT_CELL_LISTS(2, 1, 0)
+RT_CELL_LISTS(2, 0, 1)
+RT_CELL_LISTS(0, 2, 1)
+RT_CELL_LISTS(0, 1, 2)
+RT_CELL_LISTS(1, 0, 2)
+#undef RT_CELL_LISTS
 
-/* the nearest-hit list copy for the axis order of r (rt_anyhit_list's choice) */
-static rt_anyhit_list_fn rt_nearest_list(const rt_rayx *r)
+/* the copies by the axis order of the shear, in rt_list_order's numbering */
+static const rt_anyhit_list_fn rt_anyhit_lists[6] = {
+    rt_cell_anyhit_120, rt_cell_anyhit_210, rt_cell_anyhit_201,
+    rt_cell_anyhit_021, rt_cell_anyhit_012, rt_cell_anyhit_102};
+static const rt_anyhit_list_fn rt_nearest_lists[6] = {
+    rt_cell_nearest_120, rt_cell_nearest_210, rt_cell_nearest_201,
+    rt_cell_nearest_021, rt_cell_nearest_012, rt_cell_nearest_102};
+
+/* the number of r's axis order (sheared: rt_rayx_shear) among the lists' copies; the copy is
+   taken once per ray rather than per list (a switch per list cost about 10 instructions of
+   some 4 lists per shadow ray, with the register saves of a function holding all six) */
+static int rt_list_order(const rt_rayx *r)
 {
     switch (r->kz * 4 + r->kx) {
     case 0 * 4 + 1:
-        return rt_cell_nearest_120;
+        return 0;
     case 0 * 4 + 2:
-        return rt_cell_nearest_210;
+        return 1;
     case 1 * 4 + 2:
-        return rt_cell_nearest_201;
+        return 2;
     case 1 * 4 + 0:
-        return rt_cell_nearest_021;
+        return 3;
     case 2 * 4 + 0:
-        return rt_cell_nearest_012;
+        return 4;
     default:
-        return rt_cell_nearest_102;
+        return 5;
     }
+}
+
+/* the any-hit and the nearest-hit list copies for the axis order of r */
+static rt_anyhit_list_fn rt_anyhit_list(const rt_rayx *r)
+{
+    return rt_anyhit_lists[rt_list_order(r)];
+}
+
+static rt_anyhit_list_fn rt_nearest_list(const rt_rayx *r)
+{
+    return rt_nearest_lists[rt_list_order(r)];
 }
 
 /* 1 if blocked */
