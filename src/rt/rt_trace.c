@@ -880,12 +880,16 @@ RT_INLINE uint64_t rt_word_offset(uint32_t nm, const uint32_t *p)
 #endif
 }
 
-/* an any-hit cell list of mesh triangles only (RT_ANY_MESH), the ray's axis order (kx, ky, kz)
-   known at compile time: the vertices' components at constant offsets, the ray's origin in
-   registers for the whole list, no primitive kind to tell, no skipped primitive. The tests,
-   their order and the blocker are rt_cell_transmit's; 1 if blocked. */
-RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx,
-                                    int ky, int kz)
+/* a cell list of mesh triangles only, the ray's axis order (kx, ky, kz) and the kind known at
+   compile time: the vertices' components at constant offsets, the ray's origin in registers
+   for the whole list, the mesh's index triples and vertices read directly, no primitive kind
+   to tell, no skipped primitive. nearest 0: an any-hit list (RT_ANY_MESH), the tests, their
+   order and the blocker rt_cell_transmit's, 1 if blocked; nearest 1: a nearest-hit list
+   (rt_walk_box's mode 3), the tests, their order, their search bound and the choice
+   rt_cell_nearest's (rt_nearest_prim), so the hits are the same bits, 0 (the list type of
+   rt_walkstate.list). */
+RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx, int ky,
+                             int kz, int nearest)
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
@@ -895,42 +899,7 @@ RT_INLINE int rt_cell_anyhit_mesh_k(rt_walkstate *w, const uint32_t *refs, uint3
     const double tmin = r->tmin, tmax = r->tmax;
     uint64_t *const hbox = w->c->hbox;
     const uint64_t key = (uint64_t)w->stamp << 32;
-    for (uint32_t k = 0; k < n; k++) {
-        const uint32_t i = refs[k];
-        if (hbox[i % RT_HBOX] == (key | i))
-            continue;
-        hbox[i % RT_HBOX] = key | i;
-        const uint32_t *ix = ct[i];
-        double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + rt_word_offset(nm, ix),
-                           X + rt_word_offset(nm, ix + 1), X + rt_word_offset(nm, ix + 2), tmin,
-                           tmax, &t)) {
-            w->T = 0.0;
-            w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
-            return 1;
-        }
-    }
-    return 0;
-}
-
-/* a nearest-hit cell list of mesh triangles only (rt_walk_box's mode 3), the ray's axis
-   order (kx, ky, kz) known at compile time, as rt_cell_anyhit_mesh_k for any-hit rays: the
-   mesh's index triples and vertices read directly, the ray's origin in registers, no
-   primitive kind to tell, no skipped primitive. The tests, their order, their search bound
-   and the choice are rt_cell_nearest's (rt_nearest_prim), so the hits are the same bits.
-   Returns 0 (the list type of rt_walkstate.list). */
-RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx,
-                                     int ky, int kz)
-{
-    const rt_scene *sc = w->sc;
-    const rt_rayx *r = w->r;
-    const uint32_t(*ct)[3] = sc->ctri, nm = w->vnmask;
-    const double *X = sc->mv_xyz.p;
-    const double ox = r->o[kx], oy = r->o[ky], oz = r->o[kz];
-    const double tmin = r->tmin, tmax = r->tmax;
-    uint64_t *const hbox = w->c->hbox;
-    const uint64_t key = (uint64_t)w->stamp << 32;
-    if (n >= 2) /* rt_prefetch_tris: the index triples */
+    if (nearest && n >= 2) /* rt_prefetch_tris: the index triples */
         for (uint32_t k = 0; k < n; k++)
             __builtin_prefetch(ct[refs[k]]);
     for (uint32_t k = 0; k < n; k++) {
@@ -940,10 +909,17 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
         hbox[i % RT_HBOX] = key | i;
         const uint32_t *ix = ct[i];
         double t;
-        if (rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + rt_word_offset(nm, ix),
-                           X + rt_word_offset(nm, ix + 1), X + rt_word_offset(nm, ix + 2), tmin,
-                           RT_MIN(w->best + 2.0 * w->ebest, tmax), &t))
+        if (!rt_isect_tri_k(r, kx, ky, kz, ox, oy, oz, X + rt_word_offset(nm, ix),
+                            X + rt_word_offset(nm, ix + 1), X + rt_word_offset(nm, ix + 2), tmin,
+                            nearest ? RT_MIN(w->best + 2.0 * w->ebest, tmax) : tmax, &t))
+            continue;
+        if (nearest) {
             rt_nearest_update(sc, r, i, t, &w->best, &w->bi, &w->ebest);
+        } else {
+            w->T = 0.0;
+            w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
+            return 1;
+        }
     }
     return 0;
 }
@@ -953,12 +929,12 @@ RT_INLINE int rt_cell_nearest_mesh_k(rt_walkstate *w, const uint32_t *refs, uint
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_anyhit_##KX##KY##KZ(       \
         rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
     {                                                                                         \
-        return rt_cell_anyhit_mesh_k(w, refs, n, KX, KY, KZ);                                 \
+        return rt_cell_mesh_k(w, refs, n, KX, KY, KZ, 0);                                     \
     }                                                                                         \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_nearest_##KX##KY##KZ(      \
         rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
     {                                                                                         \
-        return rt_cell_nearest_mesh_k(w, refs, n, KX, KY, KZ);                                \
+        return rt_cell_mesh_k(w, refs, n, KX, KY, KZ, 1);                                     \
     }
 RT_CELL_LISTS(1, 2, 0)
 RT_CELL_LISTS(2, 1, 0)
