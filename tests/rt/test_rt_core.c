@@ -225,17 +225,18 @@ static void build_big(rt_scene *sc)
     }
 }
 
-/* primitives large against the default rule's top cells get a coarser top level (rt_build.c,
-   RT_TOP_EXT_LARGE): far fewer top cells than the 14^3 of the rule for 12000 primitives,
-   the same answers as brute force; triangles a third the size keep the rule's top level */
-static void test_large_prims_coarse_top(void **state)
+/* n random triangles of build_big (side 2) committed with default options get a widened top
+   level (fewer than 100 cells, with sub-grids; with sub_max, fewer second-level cells than
+   that many per triangle) and brute force's answers; triangles a third the size keep the
+   rule's top level (more than 1000 cells) */
+static void check_coarse_top(int n, double sub_max)
 {
-    (void)state;
     enum { N = 2000 };
     const rt_build_options dflt = {.brute_threshold = 0};
     rt_ray *rays = malloc(N * sizeof *rays);
     assert_non_null(rays);
     make_rays(rays, N);
+    big_n = n;
     big_side = 2.0;
     rt_scene *sc = rt_scene_new();
     build_big(sc);
@@ -244,6 +245,8 @@ static void test_large_prims_coarse_top(void **state)
     assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
     assert_true(gi.cells < 100);
     assert_true(gi.subgrids > 0);
+    if (sub_max > 0)
+        assert_true((double)gi.subcells < sub_max * n);
     rt_scene_free(sc);
     brute_ref br;
     brute_ref_init(&br, N);
@@ -261,48 +264,27 @@ static void test_large_prims_coarse_top(void **state)
     assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
     assert_true(gi.cells > 1000);
     rt_scene_free(sc);
+    big_n = NB;
     free(rays);
 }
 
-/* the same at or below 10^4 primitives (RT_TOP_EXT_LARGE_SMALL): 5000 such triangles get a
-   widened top level with sub-grids (the rule alone gives 11^3 top cells, and the uniform
-   level of RT_UNIFORM_SHARE 40,000), RT_SUB_FACTOR second-level cells per reference (3.5 sub
-   cells per triangle; RT_SUB_FACTOR_LARGE would give 4.4) and brute force's answers;
-   triangles a third of their size (median box 0.2 of a top cell, as the SPD scenes' 0.20-0.26)
-   keep the rule's grid */
+/* primitives large against the default rule's top cells get a coarser top level (rt_build.c,
+   RT_TOP_EXT_LARGE): far fewer top cells than the 14^3 of the rule for 12000 primitives */
+static void test_large_prims_coarse_top(void **state)
+{
+    (void)state;
+    check_coarse_top(NB, 0.0);
+}
+
+/* the same at or below 10^4 primitives (RT_TOP_EXT_LARGE_SMALL): 5000 such triangles (the
+   rule alone gives 11^3 top cells, and the uniform level of RT_UNIFORM_SHARE 40,000) with
+   RT_SUB_FACTOR second-level cells per reference (3.5 sub cells per triangle;
+   RT_SUB_FACTOR_LARGE would give 4.4); triangles a third of their size (median box 0.2 of a
+   top cell, as the SPD scenes' 0.20-0.26) keep the rule's grid */
 static void test_large_prims_coarse_top_small(void **state)
 {
     (void)state;
-    enum { N = 2000 };
-    const rt_build_options dflt = {.brute_threshold = 0};
-    rt_ray *rays = malloc(N * sizeof *rays);
-    assert_non_null(rays);
-    make_rays(rays, N);
-    big_n = 5000;
-    big_side = 2.0;
-    rt_scene *sc = rt_scene_new();
-    build_big(sc);
-    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
-    rt_grid_info gi;
-    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
-    assert_true(gi.cells < 100);
-    assert_true(gi.subgrids > 0);
-    assert_true(gi.subcells < 4 * (uint64_t)big_n);
-    rt_scene_free(sc);
-    brute_ref br;
-    brute_ref_init(&br, N);
-    brute_ref_trace(&br, build_big, rays, N);
-    brute_ref_check(&br, build_big, &dflt, 1, rays, N);
-    brute_ref_free(&br);
-    big_side = 2.0 / 3.0;
-    sc = rt_scene_new();
-    build_big(sc);
-    assert_int_equal(rt_scene_commit(sc, &dflt), RT_OK);
-    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
-    assert_true(gi.cells > 1000);
-    rt_scene_free(sc);
-    big_n = NB;
-    free(rays);
+    check_coarse_top(5000, 4.0);
 }
 
 /* duplicates: the tie rule must pick the larger id (drawn later) whichever copy the grid
