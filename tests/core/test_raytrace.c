@@ -895,9 +895,9 @@ static void test_threads_identical(void **u)
  * turns NDC3 by 90 degrees, scales it by 2 and shifts it (its mapping takes it back into the
  * picture); view 2 scales x by 3e100, so the areas reaching x > 1/3 are beyond the tracer's
  * coordinate range (clipped at the call to the display volume, x in [0, 1] of VRC3) and the
- * others not. With 2 threads the recording
- * worker maps the first kind to VRC3 itself with the orientation each area was queued
- * with (views alternate area by area): the file is bit-identical to the one thread's. */
+ * others not. With 2 threads the areas are queued (their VRC3 points made on the
+ * application's thread with the orientation of each area's view, the views alternating area
+ * by area, then recorded by the worker): the file is bit-identical to the one thread's. */
 static void oriented_picture(const char *file, int threads)
 {
     open_png(1, file, GHLHSR_RAYTRACE);
