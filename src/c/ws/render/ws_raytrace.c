@@ -311,10 +311,8 @@ static void attr_set(rt_attr *a, const gks_prim *prim)
 /* The attributes of prim. */
 static rt_attr attr_of(const gks_prim *prim)
 {
-    rt_attr a = { .colour = prim->colour, .refl_eq = { prim->refl_eq[0], prim->refl_eq[1] },
-                  .light_mask = prim->light_mask };
-    a.props[0] = prim->area_props[0];
-    a.props[1] = prim->area_props[1];
+    rt_attr a;
+    attr_set(&a, prim);
     return a;
 }
 
