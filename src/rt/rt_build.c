@@ -2029,17 +2029,59 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
     return 0;
 }
 
-/* mean |n_x| + |n_y| + |n_z| of the m unit normals ng (of every stride-th primitive) in the
-   current grid frame; 0 if there are none */
-static double rt_frame_normals(const rt_scene *sc, const double (*ng)[3], size_t m)
+/* S of nk candidate frames at once: S[k] = the mean |n_x| + |n_y| + |n_z| of the m unit
+   normals (nx, ny, nz: m each) taken into frame R[k] (rt_grid_dir's products and sums, each
+   frame's sum over the normals in their order: the values one pass per frame gives), 0 if
+   there are none. One pass over the normals for every frame (the normals are read once, not
+   once per frame: they do not fit the D1 cache); in SSE2 two normals side by side, their
+   terms added to a frame's sum one after the other. */
+static void rt_frame_normals(const double *nx, const double *ny, const double *nz, size_t m,
+                             const double (*R)[3][3], int nk, double *S)
 {
-    double sum = 0.0;
-    for (size_t k = 0; k < m; k++) {
-        double q[3];
-        rt_grid_dir(&sc->grid, ng[k], q);
-        sum += fabs(q[0]) + fabs(q[1]) + fabs(q[2]);
+    double sum[RT_FRAME_CAND] = {0};
+    size_t i = 0;
+#if defined(__SSE2__)
+    /* blocks of normals that stay in the D1 cache, each taken by every frame in turn (the
+       frame's entries in registers), two normals side by side and their terms added to the
+       frame's sum one after the other */
+    const __m128d sg = _mm_set1_pd(-0.0);
+    for (size_t i0 = 0; i0 + 2 <= m; i0 = i) {
+        const size_t i1 = m - i0 > 512 ? i0 + 512 : m - (m - i0) % 2;
+        for (int k = 0; k < nk; k++) {
+            const __m128d r0 = _mm_set1_pd(R[k][0][0]), r1 = _mm_set1_pd(R[k][0][1]),
+                          r2 = _mm_set1_pd(R[k][0][2]), r3 = _mm_set1_pd(R[k][1][0]),
+                          r4 = _mm_set1_pd(R[k][1][1]), r5 = _mm_set1_pd(R[k][1][2]),
+                          r6 = _mm_set1_pd(R[k][2][0]), r7 = _mm_set1_pd(R[k][2][1]),
+                          r8 = _mm_set1_pd(R[k][2][2]);
+            double s = sum[k];
+            for (i = i0; i < i1; i += 2) {
+                const __m128d x = _mm_loadu_pd(nx + i), y = _mm_loadu_pd(ny + i),
+                              z = _mm_loadu_pd(nz + i);
+                const __m128d q0 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r0, x), _mm_mul_pd(r1, y)),
+                                              _mm_mul_pd(r2, z));
+                const __m128d q1 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r3, x), _mm_mul_pd(r4, y)),
+                                              _mm_mul_pd(r5, z));
+                const __m128d q2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(r6, x), _mm_mul_pd(r7, y)),
+                                              _mm_mul_pd(r8, z));
+                const __m128d a = _mm_add_pd(_mm_add_pd(_mm_andnot_pd(sg, q0),
+                                                        _mm_andnot_pd(sg, q1)),
+                                             _mm_andnot_pd(sg, q2));
+                s = (s + _mm_cvtsd_f64(a)) + _mm_cvtsd_f64(_mm_unpackhi_pd(a, a));
+            }
+            sum[k] = s;
+        }
+        i = i1;
     }
-    return m ? sum / (double)m : 0.0;
+#endif
+    for (; i < m; i++)
+        for (int k = 0; k < nk; k++) {
+            double q[3];
+            for (int a = 0; a < 3; a++)
+                q[a] = R[k][a][0] * nx[i] + R[k][a][1] * ny[i] + R[k][a][2] * nz[i];
+            sum[k] += fabs(q[0]) + fabs(q[1]) + fabs(q[2]);
+        }
+    for (int k = 0; k < nk; k++)
+        S[k] = m ? sum[k] / (double)m : 0.0;
 }
 
 /* frame of primitive i: rows (edge, normal x edge, normal); 0 if degenerate */
@@ -2177,20 +2219,24 @@ static int rt_frame_cands(const rt_scene *sc, const rt_frame_job *j, int nt, rt_
     return err;
 }
 
-/* the unit normals of every stride-th primitive (ns of them) into *sn, and s0 = their
-   rt_frame_normals in the unrotated frame (the grid's rotation is off while it is taken) */
-static int rt_frame_sample_ng(rt_scene *sc, size_t stride, size_t ns, double (**sn)[3],
+/* the unit normals of every stride-th primitive (ns of them) into *sn (3 ns: the x, the y,
+   then the z components), and s0 = their mean |n_x| + |n_y| + |n_z| in the unrotated frame
+   (the sum in the normals' order) */
+static int rt_frame_sample_ng(const rt_scene *sc, size_t stride, size_t ns, double **sn,
                               double *s0)
 {
-    double (*n)[3] = rt_alloc_array(ns ? ns : 1, sizeof *n);
+    double *n = rt_alloc_array(ns ? 3 * ns : 1, sizeof *n), sum = 0.0;
     if (!n)
         return RT_ERR_NOMEM;
-    for (size_t k = 0; k < ns; k++)
-        rt_prim_ng(sc, k * stride, n[k]);
-    const int rot = sc->grid.rotated;
-    sc->grid.rotated = 0;
-    *s0 = rt_frame_normals(sc, (const double(*)[3])n, ns);
-    sc->grid.rotated = rot;
+    for (size_t k = 0; k < ns; k++) {
+        double q[3];
+        rt_prim_ng(sc, k * stride, q);
+        n[k] = q[0];
+        n[ns + k] = q[1];
+        n[2 * ns + k] = q[2];
+        sum += fabs(q[0]) + fabs(q[1]) + fabs(q[2]);
+    }
+    *s0 = ns ? sum / (double)ns : 0.0;
     *sn = n;
     return RT_OK;
 }
@@ -2238,9 +2284,9 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     size_t stride = sc->nprim / RT_FRAME_SAMPLE + 1;
     *have_fb = 0;
     /* the sample's normals, once for all candidates (a triangle's is recomputed), and s0 in
-       the unrotated frame: made when a candidate first needs its S (rt_frame_sample_ng) */
+       the unrotated frame: made when a candidate passes its bound (rt_frame_sample_ng) */
     const size_t ns = (sc->nprim + stride - 1) / stride;
-    double (*sn)[3] = NULL, s0 = 0.0;
+    double *sn = NULL, s0 = 0.0;
     /* the sample's points for the full passes (rt_frame_points): at once when meshes share
        vertices, else when a candidate first needs a full pass */
     double *fp = NULL, bb[6];
@@ -2254,44 +2300,53 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     int found = 0;
     for (int a = 0; a < 3; a++)
         g->c[a] = 0.5 * (sc->bbox[a] + sc->bbox[3 + a]);
+    /* first each candidate's lower bound of E from a subset of the sample (every
+       RT_FRAME_PRE-th of it: the same point values, so a box inside the sample's and a volume
+       no larger; the factor covers cbrt's rounding): a candidate it rules out needs neither
+       S nor the full pass. The nl others are kept in order with their frames, bounds and
+       view terms, their S then taken in one pass over the sample's normals. */
+    double Rk[RT_FRAME_CAND][3][3], El[RT_FRAME_CAND], dzk[RT_FRAME_CAND], S[RT_FRAME_CAND];
+    int nl = 0;
     for (int k = 0; k < nc && rc == RT_OK && vol0 > 0.0; k++) {
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
         const double dz = fabs(g->R[0][2]) + fabs(g->R[1][2]) + fabs(g->R[2][2]);
-        /* first a lower bound of E from a subset of the sample (every RT_FRAME_PRE-th of it:
-           the same point values, so a box inside the sample's and a volume no larger; the
-           factor covers cbrt's rounding): a candidate it rules out skips the full pass (and
-           the normals' pass, when the bound alone rules it out) */
         rc = rt_frame_box(sc, b, nt, stride * RT_FRAME_PRE, bb);
+        g->rotated = 0;
         const double rl = rt_box_volume(bb) / vol0;
-        const double El = cbrt(rl * rl) * dz * (1.0 - 1e-9);
-        if (rc != RT_OK || El >= RT_FRAME_EYE_MAX) {
-            g->rotated = 0;
+        const double e = cbrt(rl * rl) * dz * (1.0 - 1e-9);
+        if (rc != RT_OK || e >= RT_FRAME_EYE_MAX)
             continue;
-        }
-        if (!sn && rt_frame_sample_ng(sc, stride, ns, &sn, &s0) != RT_OK)
-            rc = RT_ERR_NOMEM;
-        if (rc != RT_OK || !(s0 > 0.0)) { /* no S: no candidate is taken */
-            g->rotated = 0;
-            break;
-        }
-        const double S = rt_frame_normals(sc, (const double(*)[3])sn, ns) / s0;
-        if ((El >= RT_FRAME_EYE && S >= RT_FRAME_SEC) || El * S >= best) {
-            g->rotated = 0;
+        memcpy(Rk[nl], g->R, sizeof Rk[nl]);
+        El[nl] = e;
+        dzk[nl++] = dz;
+    }
+    if (rc == RT_OK && nl > 0)
+        rc = rt_frame_sample_ng(sc, stride, ns, &sn, &s0);
+    if (rc == RT_OK && nl > 0 && s0 > 0.0) { /* no S: no candidate is taken */
+        rt_frame_normals(sn, sn + ns, sn + 2 * ns, ns, (const double(*)[3][3])Rk, nl, S);
+        for (int k = 0; k < nl; k++)
+            S[k] /= s0;
+    } else {
+        nl = 0;
+    }
+    for (int k = 0; k < nl && rc == RT_OK; k++) {
+        if ((El[k] >= RT_FRAME_EYE && S[k] >= RT_FRAME_SEC) || El[k] * S[k] >= best)
             continue;
-        }
         if (!fp && rt_frame_points(sc, b, stride, &fp, &nfp))
             rc = RT_ERR_NOMEM;
+        memcpy(g->R, Rk[k], sizeof g->R);
+        g->rotated = 1;
         if (rc == RT_OK)
             rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
         g->rotated = 0;
         const double r = rt_box_volume(bb) / vol0;
-        const double E = cbrt(r * r) * dz;
-        const int ok = E < RT_FRAME_EYE || (S < RT_FRAME_SEC && E < RT_FRAME_EYE_MAX);
-        if (ok && E * S < best) {
-            best = E * S;
+        const double E = cbrt(r * r) * dzk[k];
+        const int ok = E < RT_FRAME_EYE || (S[k] < RT_FRAME_SEC && E < RT_FRAME_EYE_MAX);
+        if (ok && E * S[k] < best) {
+            best = E * S[k];
             memcpy(bestR, g->R, sizeof bestR);
             memcpy(fb, bb, 6 * sizeof(double));
             found = 1;
