@@ -1979,14 +1979,38 @@ static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, 
     return rt_frame_box_of(sc, b, nt, stride, NULL, 0, bb);
 }
 
+/* The number of mesh vertices the primitives use when every primitive is a mesh triangle and
+ * they use exactly the first ones of the scene's vertex array (each mesh's vertices in the
+ * order of their first use, rt_mesh_sort, every mesh but the last using all of its own); else
+ * 0. Then the points of all primitives are those vertices. */
+static size_t rt_mesh_used_prefix(const rt_scene *sc)
+{
+    if (sc->nmesh == 0 || sc->ntri_plain != 0 || sc->ntri != sc->nmtri || sc->nprim != sc->nmtri)
+        return 0;
+    for (size_t mi = 0; mi + 1 < sc->nmesh; mi++)
+        if (sc->mesh[mi].nused != sc->mesh[mi].nv)
+            return 0;
+    const rt_mesh *m = &sc->mesh[sc->nmesh - 1];
+    return m->nused ? m->v0 + m->nused : 0;
+}
+
 /* The points whose box rt_frame_box takes (every stride-th primitive's), into *fp (*nfp of
  * them, 3 doubles each), a shared mesh vertex once: a box does not depend on repeats or the
  * order of its points, so rt_frame_box_of over them gives the same box, and a frame's pass
  * then rotates each vertex of a closed mesh once instead of about six times (each in about
- * six triangles) and gathers no index triples. 0, or 1 when out of memory. */
-static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, double **fp,
-                           size_t *nfp)
+ * six triangles) and gathers no index triples. With stride 1 and rt_mesh_used_prefix's
+ * vertices, *fp is the scene's vertex array itself (no copy); else a copy, also in *own for
+ * the caller to free (NULL: nothing to free). 0, or 1 when out of memory. */
+static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, const double **fp,
+                           size_t *nfp, double **own)
 {
+    *own = NULL;
+    const size_t nu = stride == 1 ? rt_mesh_used_prefix(sc) : 0;
+    if (nu) {
+        *fp = sc->mv_xyz.p;
+        *nfp = nu;
+        return 0;
+    }
     const size_t ns = (sc->nprim + stride - 1) / stride;
     uint8_t *seen = sc->nmv ? rt_calloc_array(sc->nmv, 1) : NULL;
     double *p = NULL;
@@ -2024,7 +2048,7 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, doubl
         free(p);
         return 1;
     }
-    *fp = p;
+    *fp = *own = p;
     *nfp = n;
     return 0;
 }
@@ -2247,12 +2271,13 @@ static int rt_frame_box_all(const rt_scene *sc, rt_build *b, int nt, double bb[6
 {
     if (sc->ntri == sc->ntri_plain)
         return rt_frame_box(sc, b, nt, 1, bb);
-    double *fp = NULL;
+    const double *fp = NULL;
+    double *own;
     size_t nfp = 0;
-    if (rt_frame_points(sc, b, 1, &fp, &nfp))
+    if (rt_frame_points(sc, b, 1, &fp, &nfp, &own))
         return RT_ERR_NOMEM;
     const int rc = rt_frame_box_of(sc, b, nt, 1, fp, nfp, bb);
-    free(fp);
+    free(own);
     return rc;
 }
 
@@ -2289,10 +2314,12 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     double *sn = NULL, s0 = 0.0;
     /* the sample's points for the full passes (rt_frame_points): at once when meshes share
        vertices, else when a candidate first needs a full pass */
-    double *fp = NULL, bb[6];
+    const double *fp = NULL;
+    double *fp_own = NULL, bb[6];
     size_t nfp = 0;
-    int rc = sc->ntri > sc->ntri_plain && rt_frame_points(sc, b, stride, &fp, &nfp) ? RT_ERR_NOMEM
-                                                                                     : RT_OK;
+    int rc = sc->ntri > sc->ntri_plain && rt_frame_points(sc, b, stride, &fp, &nfp, &fp_own)
+                 ? RT_ERR_NOMEM
+                 : RT_OK;
     if (rc == RT_OK)
         rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
     const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0;
@@ -2335,7 +2362,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     for (int k = 0; k < nl && rc == RT_OK; k++) {
         if ((El[k] >= RT_FRAME_EYE && S[k] >= RT_FRAME_SEC) || El[k] * S[k] >= best)
             continue;
-        if (!fp && rt_frame_points(sc, b, stride, &fp, &nfp))
+        if (!fp && rt_frame_points(sc, b, stride, &fp, &nfp, &fp_own))
             rc = RT_ERR_NOMEM;
         memcpy(g->R, Rk[k], sizeof g->R);
         g->rotated = 1;
@@ -2353,7 +2380,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         }
     }
     free(sn);
-    free(fp);
+    free(fp_own);
     if (err)
         rc = RT_ERR_NOMEM;
     if (rc == RT_OK && found) {

@@ -168,6 +168,8 @@ typedef struct rt_mesh {
     size_t t0, nt, v0, nv;
     double bb[6];       /* box of its triangles (degenerate ones were dropped when added) */
     rt_fcands cands;     /* its triangles' frame candidates (indices from its first) */
+    size_t nused;        /* stored in spatial order: its vertices used by its triangles, the
+                            first nused (rt_mesh_sort); 0: not known */
 } rt_mesh;
 
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */

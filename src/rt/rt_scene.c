@@ -644,6 +644,7 @@ static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, 
             T[t][k] = 3 * (v0 + x) | rt_ctri_given_bits(o, k);
         }
     }
+    m->nused = next;
     for (size_t v = 0; v < nv; v++)
         if (to[v] == UINT32_MAX)
             to[v] = next++;

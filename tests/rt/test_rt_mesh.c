@@ -8,7 +8,8 @@
  * nothing added; truncation and an abandoned reservation leave the scene as before. Shadow
  * rays over a scene of mesh triangles only (rt_occluded's any-hit lists of mesh triangles, one
  * per axis order of the rays) answer as without a grid. Ties between a mesh's triangles go to
- * the one given first although the mesh is stored in spatial order.
+ * the one given first although the mesh is stored in spatial order. Vertices that no kept
+ * triangle uses leave the grid of a rotated frame as it is.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -454,6 +455,66 @@ static void test_given_order_back(void **state)
     }
 }
 
+/* A tilted sheet laid out in a rotated grid frame: the frame's box is that of the vertices the
+ * triangles use, so vertices no triangle uses (one never named, three named only by a
+ * degenerate triangle, which is dropped) leave the grid as it is, however far away they lie
+ * (the frame choice reads a spatially ordered mesh's used vertices in place). */
+static void test_unused_vertices_frame(void **state)
+{
+    (void)state;
+    enum { M = 12, NX = 4 }; /* M x M sheet vertices, NX extra ones first */
+    static double v[(NX + M * M) * 3];
+    static uint32_t ix[(2 * (M - 1) * (M - 1) + 1) * 3];
+    const double far[NX][3] = {{100, 100, 100}, {200, 200, 200}, {300, 300, 300}, {-50, 80, 20}};
+    memcpy(v, far, sizeof far);
+    const double ca = cos(0.5), sa = sin(0.5), cb = cos(0.3), sb = sin(0.3);
+    for (int j = 0; j < M; j++)
+        for (int i = 0; i < M; i++) {
+            const double x = -3.0 + 0.5 * i, y = -3.0 + 0.5 * j, z = 0.05 * ((i * 7 + j * 3) % 5);
+            const double y1 = ca * y - sa * z, z1 = sa * y + ca * z; /* tilted about x, then z */
+            double *p = v + 3 * (NX + j * M + i);
+            p[0] = cb * x - sb * y1;
+            p[1] = sb * x + cb * y1;
+            p[2] = z1;
+        }
+    size_t nt = 0;
+    for (int j = 0; j + 1 < M; j++)
+        for (int i = 0; i + 1 < M; i++) {
+            const uint32_t a = (uint32_t)(NX + j * M + i), b = a + 1, c = a + M, d = c + 1;
+            const uint32_t q[6] = {a, b, d, a, d, c};
+            memcpy(ix + 3 * nt, q, sizeof q);
+            nt += 2;
+        }
+    rt_grid_info gi[2];
+    for (int k = 0; k < 2; k++) {
+        int s;
+        rt_scene *sc = rtu_scene_one_surface(&s);
+        assert_non_null(sc);
+        if (k == 0) { /* the sheet's vertices only */
+            static uint32_t ix0[2 * (M - 1) * (M - 1) * 3];
+            for (size_t e = 0; e < 3 * nt; e++)
+                ix0[e] = ix[e] - NX;
+            assert_int_equal(rt_scene_add_mesh(sc, M * M, v + 3 * NX, NULL, NULL, nt, ix0, s, s), 0);
+        } else { /* the far ones too, the degenerate triangle among the others */
+            static uint32_t ix1[(2 * (M - 1) * (M - 1) + 1) * 3];
+            memcpy(ix1, ix, 3 * 40 * sizeof(uint32_t));
+            const uint32_t deg[3] = {0, 1, 2}; /* three points on a line */
+            memcpy(ix1 + 3 * 40, deg, sizeof deg);
+            memcpy(ix1 + 3 * 41, ix + 3 * 40, 3 * (nt - 40) * sizeof(uint32_t));
+            assert_int_equal(rt_scene_add_mesh(sc, NX + M * M, v, NULL, NULL, nt + 1, ix1, s, s), 0);
+        }
+        rt_build_options bo;
+        memset(&bo, 0, sizeof bo);
+        bo.brute_threshold = -1;
+        assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+        assert_int_equal(rt_scene_grid_info(sc, &gi[k]), RT_OK);
+        rt_scene_free(sc);
+    }
+    assert_int_equal(gi[0].rotated, 1); /* the case at hand: a rotated frame */
+    assert_int_equal(gi[1].prims, gi[0].prims);
+    assert_true(gi[1].hash == gi[0].hash);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -464,6 +525,7 @@ int main(void)
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_tie_given_first),
         cmocka_unit_test(test_given_order_back),
+        cmocka_unit_test(test_unused_vertices_frame),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
