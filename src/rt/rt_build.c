@@ -2252,7 +2252,61 @@ static int rt_frame_sample_ng(const rt_scene *sc, size_t stride, size_t ns, doub
     double *n = rt_alloc_array(ns ? 3 * ns : 1, sizeof *n), sum = 0.0;
     if (!n)
         return RT_ERR_NOMEM;
-    for (size_t k = 0; k < ns; k++) {
+    size_t k = 0;
+#if defined(__SSE2__)
+    /* two triangles side by side: rt_tri_unit_normal's operations in its order (sqrt and
+       division correctly rounded in lanes as in scalars), so the same normals; a pair with a
+       lane outside its common path (or not two triangles) goes through rt_prim_ng */
+    for (; k + 2 <= ns; k += 2) {
+        const rt_prim *p0 = &sc->prim[k * stride], *p1 = &sc->prim[(k + 1) * stride];
+        int done = 0;
+        if (p0->kind == RT_KIND_TRI && p1->kind == RT_KIND_TRI) {
+            const double *a[3], *c[3];
+            rt_tri_verts(sc, p0->data, a);
+            rt_tri_verts(sc, p1->data, c);
+            __m128d v0[3], e1[3], e2[3];
+            for (int j = 0; j < 3; j++) {
+                v0[j] = _mm_set_pd(c[0][j], a[0][j]);
+                e1[j] = _mm_sub_pd(_mm_set_pd(c[1][j], a[1][j]), v0[j]);
+                e2[j] = _mm_sub_pd(_mm_set_pd(c[2][j], a[2][j]), v0[j]);
+            }
+            const __m128d c0 = _mm_sub_pd(_mm_mul_pd(e1[1], e2[2]), _mm_mul_pd(e1[2], e2[1]));
+            const __m128d c1 = _mm_sub_pd(_mm_mul_pd(e1[2], e2[0]), _mm_mul_pd(e1[0], e2[2]));
+            const __m128d c2 = _mm_sub_pd(_mm_mul_pd(e1[0], e2[1]), _mm_mul_pd(e1[1], e2[0]));
+            const __m128d l2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(c0, c0), _mm_mul_pd(c1, c1)),
+                                          _mm_mul_pd(c2, c2));
+            const __m128d a2 = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(e1[0], e1[0]), _mm_mul_pd(e1[1], e1[1])),
+                _mm_mul_pd(e1[2], e1[2]));
+            const __m128d b2 = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(e2[0], e2[0]), _mm_mul_pd(e2[1], e2[1])),
+                _mm_mul_pd(e2[2], e2[2]));
+            const __m128d ab = _mm_mul_pd(a2, b2);
+            const __m128d ok =
+                _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(l2, _mm_mul_pd(_mm_set1_pd(1e-22), ab)),
+                                      _mm_cmpgt_pd(l2, _mm_set1_pd(1e-290))),
+                           _mm_cmplt_pd(ab, _mm_set1_pd(1e290)));
+            if (_mm_movemask_pd(ok) == 3) {
+                const __m128d len = _mm_sqrt_pd(l2);
+                _mm_storeu_pd(n + k, _mm_div_pd(c0, len));
+                _mm_storeu_pd(n + ns + k, _mm_div_pd(c1, len));
+                _mm_storeu_pd(n + 2 * ns + k, _mm_div_pd(c2, len));
+                done = 1;
+            }
+        }
+        for (size_t q = k; q < k + 2; q++) {
+            if (!done) {
+                double g[3];
+                rt_prim_ng(sc, q * stride, g);
+                n[q] = g[0];
+                n[ns + q] = g[1];
+                n[2 * ns + q] = g[2];
+            }
+            sum += fabs(n[q]) + fabs(n[ns + q]) + fabs(n[2 * ns + q]);
+        }
+    }
+#endif
+    for (; k < ns; k++) {
         double q[3];
         rt_prim_ng(sc, k * stride, q);
         n[k] = q[0];
