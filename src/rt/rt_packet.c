@@ -30,9 +30,10 @@
  * itself (a shadow ray's own surface, crossed behind its origin, is ruled out there).
  * A packet whose footprint in one slice exceeds RT_PK_MAXC top cells (RT_PK_MAXCA for an
  * any-hit packet; or RT_PK_MAXS second-level cells) is handed to the single-ray walk as a
- * whole, and so is an any-hit packet whose frustum is wider than RT_PK_SPREAD cells of the
- * grid where its walk starts (rt_pk_spread); an any-hit packet's rays of other axes or
- * another octant than its first ray walked are traced singly, the others stay a packet.
+ * whole, and so is an any-hit packet whose frustum is RT_PK_SPREAD cells wide or more, or
+ * covers RT_PK_AREA cells or more, in the grid where its walk starts (rt_pk_spread); an
+ * any-hit packet's rays of other axes or another octant than its first ray walked are
+ * traced singly, the others stay a packet.
  *
  * Same hits as the single-ray walk: every primitive is tested on the whole range
  * [tmin, tmax] of each ray, so a ray's computed hits are those of the exact test, each t bit
@@ -68,7 +69,8 @@
 #define RT_PK_MAXC 12    /* top cells per slice at most (16 before the steps' frusta) */
 #define RT_PK_MAXCA 10   /* any-hit: top cells per slice at most (with RT_PK_SPREAD) */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
-#define RT_PK_SPREAD 16.0 /* any-hit: the frustum's width at the start, in cells, at most */
+#define RT_PK_SPREAD 16.0 /* any-hit: the frustum's width at the start, in cells, below */
+#define RT_PK_AREA 64.0  /* any-hit: (width + 1) (height + 1) there, in cells, below */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
 
 typedef struct rt_pk_rec {
@@ -1658,17 +1660,21 @@ static double rt_pk_zend(const rt_pk *p, double zn)
     return fabs(z - zn) <= 16.0 * (b->hi[p->K] - b->lo[p->K]) ? z : zn;
 }
 
-/* the width of an any-hit packet's frustum where its walk starts (the near plane of top
-   slice s0), in cells of the grid found there (the second-level grid of the top cell at the
-   frustum's middle, or the top level's): the spread of the rays' origins against the
-   density of the primitives around them. Shadow rays whose origins lie more than
-   RT_PK_SPREAD such cells apart share few cells and primitives, and the packet's tests
-   cost more than the rays' single walks (callgrind, shadow rays of 8x8 pixel blocks at
-   256^2 and 1024^2 pixels: packets 12 or more cells wide mostly took 1.3-2.2 times their rays'
-   single walks on armadillo and bunny, 0.9-1.5 times on fandisk, whose larger triangles
-   span more cells; narrower ones mostly far less). 0 if the bounds there are not finite
-   (only operations that raise no exception). */
-static double rt_pk_spread(const rt_pk *p, int s0)
+/* 1 if an any-hit packet's rays are too spread to be walked together: its frustum where its
+   walk starts (the near plane of top slice s0), measured in cells of the grid found there
+   (the second-level grid of the top cell at the frustum's middle, or the top level's), is
+   RT_PK_SPREAD or more cells wide along a1 or a2, or covers (w1 + 1) (w2 + 1) >= RT_PK_AREA
+   cells: the spread of the rays' origins against the density of the primitives around
+   them. Such rays share few cells and primitives, and the packet's tests cost more than the
+   rays' single walks (callgrind, shadow rays of 8x8 pixel blocks: packets 12 or more cells
+   wide mostly took 1.3-2.2 times their rays' single walks on armadillo and bunny, 0.9-1.5
+   times on fandisk, whose larger triangles span more cells; by the area, at 1024^2 pixels
+   packets of 64-96 cells took 1.24 times (armadillo), 0.83 (bunny), 0.76 (fandisk), of 96
+   or more 1.43, 1.18, 0.90, and at 256^2 pixels, where an 8x8 block covers 16 times the
+   surface, 1.4-2.0 times on all three; the width alone passes square patches that the area
+   catches). 0 if the bounds there are not finite (only operations that raise no
+   exception). */
+static int rt_pk_spread(const rt_pk *p, int s0)
 {
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &g->b;
@@ -1678,7 +1684,7 @@ static double rt_pk_spread(const rt_pk *p, int s0)
         lo[a] = p->lo[a] + dz * (dz >= 0.0 ? p->mlo[a] : p->mhi[a]);
         hi[a] = p->hi[a] + dz * (dz >= 0.0 ? p->mhi[a] : p->mlo[a]);
         if (!(fabs(lo[a]) <= 1e100 && fabs(hi[a]) <= 1e100))
-            return 0.0; /* bounds not finite (a grid of few cells): left as they were */
+            return 0; /* bounds not finite (a grid of few cells): left as they were */
     }
     int q[3];
     q[p->K] = s0;
@@ -1687,16 +1693,17 @@ static double rt_pk_spread(const rt_pk *p, int s0)
     const size_t ci = rt_cell_index(b, q);
     const rt_box *cb = g->sub && g->sub[ci] >= 0 ? &g->subs[g->sub[ci]].b : b;
     const double w1 = (hi[0] - lo[0]) * cb->inv_cw[p->a1], w2 = (hi[1] - lo[1]) * cb->inv_cw[p->a2];
-    return w1 > w2 ? w1 : w2;
+    return (w1 > w2 ? w1 : w2) >= RT_PK_SPREAD || (w1 + 1.0) * (w2 + 1.0) >= RT_PK_AREA;
 }
 
 /* the first top slice of the walk (index along K), with the frustum's plane z0 at its near
    end (exact there for rays from one point, as primary rays are; a frustum from the far
    end, where shadow rays toward a light converge, gave more instructions on the three
    meshes), or -1 if the footprint of the first or the last slice exceeds RT_PK_MAXC
-   (any-hit: RT_PK_MAXCA, or the spread exceeds RT_PK_SPREAD): the packet is not coherent,
-   known before the walk (the frustum's width is convex along K, so its widest slices are
-   at the ends; the walk itself may narrow it as rays end). */
+   (any-hit: RT_PK_MAXCA, or rt_pk_spread): the packet is not coherent, known before the
+   walk (the frustum's width is convex along K, so its widest slices are at the ends; the
+   walk itself may narrow it as rays end). The steps' frusta are made only for a packet that
+   is walked. */
 static int rt_pk_ends(rt_pk *p)
 {
     const rt_box *b = &p->sc->grid.b;
@@ -1707,10 +1714,6 @@ static int rt_pk_ends(rt_pk *p)
     if (p->any)
         p->z0 = rt_pk_zend(p, p->z0);
     rt_pk_frustum(p, p->live);
-#ifdef RT_PK_X86
-    if (rt_pk_avx2)
-        rt_pk_steps(p);
-#endif
     int c[4];
     for (int e = 0; e < 2; e++) {
         const int s = e ? s1 : s0;
@@ -1718,8 +1721,12 @@ static int rt_pk_ends(rt_pk *p)
         if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > (p->any ? RT_PK_MAXCA : RT_PK_MAXC))
             return -1;
     }
-    if (p->any && rt_pk_spread(p, s0) >= RT_PK_SPREAD)
+    if (p->any && rt_pk_spread(p, s0))
         return -1;
+#ifdef RT_PK_X86
+    if (rt_pk_avx2) /* only for a packet that is walked */
+        rt_pk_steps(p);
+#endif
     return s0;
 }
 

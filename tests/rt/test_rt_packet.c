@@ -397,9 +397,11 @@ static void test_incoherent(void **state)
 
 /* shadow packets by the spread of their origins against the grid's cells there: 64 shadow
    rays from a small patch of a finely tessellated sphere are traced as a packet; 64 from
-   points along a line across many second-level cells (yet few top cells) are handed to
-   the single-ray walk (their packet's tests would cost more than their single walks); the
-   answers are rt_occluded's either way */
+   points along a line across many second-level cells (yet few top cells), and 64 from a
+   square patch narrower than the width limit but of more cells than the area limit (traced
+   as a packet without that limit: checked), are handed to the single-ray walk (their
+   packet's tests would cost more than their single walks); the answers are rt_occluded's
+   either way */
 static void test_spread(void **state)
 {
     (void)state;
@@ -416,10 +418,14 @@ static void test_spread(void **state)
            (unsigned long long)gi.subcells);
     rt_ray rays[RT_PACKET];
     unsigned char o1[RT_PACKET], o2[RT_PACKET];
-    for (int wide = 0; wide < 2; wide++) {
+    static const char *const name[3] = {"small", "wide", "square"};
+    for (int wide = 0; wide < 3; wide++) {
+        /* the square's side 8 x 0.014: single from a spacing of about 0.0116 (0.0093 stays a
+           packet) */
+        const double sq = wide == 2 ? 0.014 : 0.001;
         for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
-            const double x = wide ? 0.2 + 0.005 * k : 0.3 + 0.001 * (k % 8);
-            const double y = wide ? 0.3 : 0.3 + 0.001 * (k / 8);
+            const double x = wide == 1 ? 0.2 + 0.005 * k : 0.3 + sq * (k % 8);
+            const double y = wide == 1 ? 0.3 : 0.3 + sq * (k / 8);
             const double z = sqrt(1.0 - x * x - y * y) + 1e-6;
             const double o[3] = {x, y, z};
             for (int i = 0; i < 3; i++) {
@@ -435,7 +441,7 @@ static void test_spread(void **state)
         assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
         rtc_traps_off();
         printf("spread: %s patch: %llu packets traced, %llu to the single-ray path\n",
-               wide ? "wide" : "small", (unsigned long long)ps.packets,
+               name[wide], (unsigned long long)ps.packets,
                (unsigned long long)ps.fallback_packets);
         assert_memory_equal(o1, o2, RT_PACKET);
         assert_int_equal(ps.packets, wide ? 0 : 1);
