@@ -70,7 +70,7 @@
 #define RT_PK_MAXCA 10   /* any-hit: top cells per slice at most (with RT_PK_SPREAD) */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
 #define RT_PK_SPREAD 16.0 /* any-hit: the frustum's width at the start, in cells, below */
-#define RT_PK_AREA 64.0  /* any-hit: (width + 1) (height + 1) there, in cells, below */
+#define RT_PK_AREA 80.0  /* any-hit: (width + 1) (height + 1) there, in cells, below */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
 
 typedef struct rt_pk_rec {
