@@ -43,21 +43,29 @@ rt_isect_tri_k(const rt_rayx *r, int kx, int ky, int kz, double ox, double oy, d
     const __m128d Wp = _mm_mul_pd(B, _mm_shuffle_pd(A, A, 1));
     __m128d W2 = _mm_sub_pd(_mm_unpacklo_pd(Wp, Wp), _mm_unpackhi_pd(Wp, Wp)); /* (W, W) */
     const __m128d z = _mm_setzero_pd();
-    if (_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(UV, z), _mm_cmpeq_pd(W2, z)))) {
+    if (__builtin_expect(_mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(UV, z), _mm_cmpeq_pd(W2, z))),
+                         0)) {
         const double Ax = _mm_cvtsd_f64(A), Ay = _mm_cvtsd_f64(_mm_unpackhi_pd(A, A));
         const double Bx = _mm_cvtsd_f64(B), By = _mm_cvtsd_f64(_mm_unpackhi_pd(B, B));
         const double Cx = _mm_cvtsd_f64(C), Cy = _mm_cvtsd_f64(_mm_unpackhi_pd(C, C));
         UV = _mm_set_pd((double)((long double)Ax * Cy - (long double)Ay * Cx),
                         (double)((long double)Cx * By - (long double)Cy * Bx));
         W2 = _mm_set1_pd((double)((long double)Bx * Ay - (long double)By * Ax));
+        const int neg = _mm_movemask_pd(_mm_or_pd(_mm_cmplt_pd(UV, z), _mm_cmplt_pd(W2, z)));
+        const int pos = _mm_movemask_pd(_mm_or_pd(_mm_cmpgt_pd(UV, z), _mm_cmpgt_pd(W2, z)));
+        const double U0 = _mm_cvtsd_f64(UV), V0 = _mm_cvtsd_f64(_mm_unpackhi_pd(UV, UV));
+        if (((neg != 0) & (pos != 0)) | (U0 + V0 + _mm_cvtsd_f64(W2) == 0.0))
+            return 0;
+    } else if (_mm_movemask_pd(_mm_xor_pd(UV, W2))) {
+        /* no edge function is +-0 here: the signs are mixed exactly when U's or V's sign
+           bit differs from W's (a NaN, whatever its sign bit, ends at t = NaN below and is
+           rejected either way), and U + V + W of three nonzero values of one sign is not 0:
+           the same answers as the general test above, in four instructions */
+        return 0;
     }
-    const int neg = _mm_movemask_pd(_mm_or_pd(_mm_cmplt_pd(UV, z), _mm_cmplt_pd(W2, z)));
-    const int pos = _mm_movemask_pd(_mm_or_pd(_mm_cmpgt_pd(UV, z), _mm_cmpgt_pd(W2, z)));
     const double U = _mm_cvtsd_f64(UV), V = _mm_cvtsd_f64(_mm_unpackhi_pd(UV, UV));
     const double W = _mm_cvtsd_f64(W2);
     const double det = U + V + W;
-    if (((neg != 0) & (pos != 0)) | (det == 0.0))
-        return 0;
 #else
     const double Ax = (v0[kx] - ox) - r->sx * Az, Ay = (v0[ky] - oy) - r->sy * Az;
     const double Bx = (v1[kx] - ox) - r->sx * Bz, By = (v1[ky] - oy) - r->sy * Bz;
