@@ -720,7 +720,7 @@ enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
 /* rt_walkstate.any_hit: 0 transmittance; RT_ANY_HIT the first hit blocks; RT_ANY_MESH (bit 0
    kept, so every other test takes it as RT_ANY_HIT) also every primitive a mesh triangle, no
    skipped primitive and a CPU with AVX2 and BMI (rt_occluded's rays, rt_anyhit_kind): the cell lists
-   through rt_walkstate.list (rt_anyhit_list), the second-level walks through rt_walk_sub_anyhit */
+   through rt_walkstate.list (rt_anyhit_list), the second-level walks through rt_walkstate.sub */
 enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 
 /* AVX2's encoding for the RT_ANY_MESH walks: three-operand instructions, no register copies
@@ -736,6 +736,13 @@ enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 typedef struct rt_walkstate rt_walkstate;
 /* an any-hit cell list of mesh triangles (RT_ANY_MESH): 1 if blocked */
 typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t n);
+/* an RT_ANY_MESH second-level walk: rt_walk_sub_anyhit_O for the ray's axis order O */
+typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+
+/* rt_walk_box's modes 8 + O: the second-level walks of RT_ANY_MESH rays of axis order O
+   (rt_list_order's number), mode 1 with the any-hit list of that order inlined in the walk
+   (rt_cell_mesh_k), so the list's call and register saves are not paid per cell list */
+#define RT_MODE_ANYK 8
 
 struct rt_walkstate {
     const rt_scene *sc;
@@ -745,13 +752,15 @@ struct rt_walkstate {
     uint32_t stamp;
     int any_hit;
     int step[3]; /* the ray's DDA steps (-1, 0, 1 per axis: the sign of its grid-frame
-                    direction), set by the top-level walk of modes 1 and 2 for their
+                    direction), set by the top-level walk of mode 1 for their
                     second-level walks (nearest-hit walks, with few second-level walks
                     per ray, compute their own as before) */
     rt_anyhit_list_fn list; /* RT_ANY_MESH walks and nearest-hit walks of a scene of mesh
                                triangles only (rt_mesh_only): the cell list's copy for the
                                ray's axis order (rt_anyhit_list, rt_nearest_list), chosen once
                                per ray; NULL: the general lists */
+    rt_sub_walk_fn sub; /* RT_ANY_MESH walks: the second-level walk for the ray's axis
+                           order (rt_walk_sub_anyhit_O), chosen with list */
     uint32_t vnmask; /* RT_ANY_MESH walks: ~rt_scene.vmask, read from memory by the lists so
                         that BMI's andn masks an index word in one instruction (no copy of
                         the mask per vertex) */
@@ -764,18 +773,18 @@ struct rt_walkstate {
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
-static int rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the cells' bytes of the
  * ray's octant in dist, rt_grid.odist, never NULL there; second level: both NULL). mode 0:
  * nearest hit, leaves at the first cell boundary beyond the best hit (t1 lowered to it);
  * mode 3: mode 0 of a scene of mesh triangles only, its cell lists through rt_walkstate.list
  * (rt_nearest_list), its second-level walks rt_walk_sub_nearest_mesh; mode 1: transmittance,
- * BLOCKED when an opaque primitive is hit; mode 2: mode 1 of an RT_ANY_MESH second-level walk.
+ * BLOCKED when an opaque primitive is hit; modes RT_MODE_ANYK + O: mode 1 of an RT_ANY_MESH
+ * second-level walk of a ray of axis order O, its cell lists inlined.
  * Mailboxes: see the top of the file. Direction components exactly +0.0 or -0.0 never step.
  * step: NULL, or
- * for a second-level walk of modes 1 and 2 the ray's steps, which their top level stores in
- * rt_walkstate.step (rt_dda_init). */
+ * for a second-level walk of modes 1 and RT_MODE_ANYK + O the ray's steps, which their top
+ * level stores in rt_walkstate.step (rt_dda_init). */
 /* An empty-space jump along one stepping axis (rt_walk_box): the cell boundaries of the axis
  * that the ray crosses up to the jump parameter tj, from its next boundary t on (cell width dt
  * in ray parameter, it about 1 / dt); j = t + k dt is the cube's far face. The exit axis
@@ -1057,13 +1066,17 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
 }
 
 /* the n > 0 primitives of one cell list (lf: 1 + its float leaf, 0: none): 1 when an opaque
-   primitive blocks a transmittance ray (mode 1, and mode 2: mode 1 for a walk known to be
-   RT_ANY_MESH's, rt_walk_sub_anyhit) */
+   primitive blocks a transmittance ray (mode 1, and modes RT_MODE_ANYK + O: mode 1 for a walk
+   known to be RT_ANY_MESH's with the ray's axis order O, rt_walk_sub_anyhit_O) */
 RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
                            uint32_t lf)
 {
-    if (mode == 2)
-        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1) : w->list(w, refs, n);
+    if (mode >= RT_MODE_ANYK) { /* the axis order's numbering as rt_list_order's */
+        const int o = mode - RT_MODE_ANYK, kz = o >> 1;
+        const int kx = o == 0 || o == 5 ? 1 : o == 1 || o == 2 ? 2 : 0;
+        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1)
+                  : rt_cell_mesh_k(w, refs, n, kx, 3 - kx - kz, kz, 0);
+    }
     if (mode == 3)
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0) : w->list(w, refs, n);
     if (mode == 0 && lf)
@@ -1114,9 +1127,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = s.t0;
         t1 = s.t1;
     }
-    if (sub && (mode == 1 || mode == 2)) { /* any-hit and transmittance walks' top level:
-                                              the steps for their second-level walks
-                                              (rt_dda_init) */
+    if (sub && mode == 1) { /* any-hit and transmittance walks' top level: the steps for
+                               their second-level walks (rt_dda_init) */
         w->step[0] = sx;
         w->step[1] = sy;
         w->step[2] = sz;
@@ -1196,7 +1208,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             if (pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1) : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
                          : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
-                         : w->any_hit == RT_ANY_MESH ? rt_walk_sub_anyhit(w, sg, s0, s1)
+                         : w->any_hit == RT_ANY_MESH ? w->sub(w, sg, s0, s1)
                                                      : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
                     return st;
@@ -1258,12 +1270,24 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
     return rt_walk_sub_mode1(w, 1, sg, t0, t1);
 }
 
-/* the same for RT_ANY_MESH walks (mode 2: the lists' kind known), in AVX2's encoding */
-static __attribute__((noinline)) RT_ANYHIT_TARGET int
-rt_walk_sub_anyhit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
-{
-    return rt_walk_sub_mode1(w, 2, sg, t0, t1);
-}
+/* the same for RT_ANY_MESH walks (modes RT_MODE_ANYK + O: the lists' kind and axis order
+   known), in AVX2's encoding, one per axis order in rt_list_order's numbering */
+#define RT_SUB_ANYHIT(O)                                                                      \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_anyhit_##O(             \
+        rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
+    {                                                                                         \
+        return rt_walk_sub_mode1(w, RT_MODE_ANYK + O, sg, t0, t1);                            \
+    }
+RT_SUB_ANYHIT(0)
+RT_SUB_ANYHIT(1)
+RT_SUB_ANYHIT(2)
+RT_SUB_ANYHIT(3)
+RT_SUB_ANYHIT(4)
+RT_SUB_ANYHIT(5)
+#undef RT_SUB_ANYHIT
+static const rt_sub_walk_fn rt_sub_anyhit[6] = {rt_walk_sub_anyhit_0, rt_walk_sub_anyhit_1,
+                                                rt_walk_sub_anyhit_2, rt_walk_sub_anyhit_3,
+                                                rt_walk_sub_anyhit_4, rt_walk_sub_anyhit_5};
 
 /* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
    before use_grid is set), and saying so lets the top walk's inlined copies drop their tests
@@ -1377,6 +1401,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         rt_rayx_shear(rs);
     if (w.any_hit == RT_ANY_MESH) {
         w.list = rt_anyhit_list(r);
+        w.sub = rt_sub_anyhit[rt_list_order(r)];
         w.vnmask = ~sc->vmask;
     }
     w.stamp = rt_ctx_next(c);
@@ -1584,6 +1609,7 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
         rt_walkstate_init(&w, sc, c, &r, ah);
         if (ah == RT_ANY_MESH) {
             w.list = rt_anyhit_list(&r);
+            w.sub = rt_sub_anyhit[rt_list_order(&r)];
             w.vnmask = ~sc->vmask;
         }
         w.stamp = rt_ctx_next(c);
