@@ -1111,7 +1111,47 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         itx = pre->it[0][lane], ity = pre->it[1][lane], itz = pre->it[2][lane];
         tent = pre->t0[lane];
         t1 = pre->t1[lane];
-    } else {
+    }
+#ifdef RT_SETUP4_AVX2
+    else if (mode >= RT_MODE_ANYK) {
+        /* RT_ANY_MESH second-level walks (AVX2 functions, rt_walk_sub_anyhit_O; no clip, the
+           ray's steps given): rt_dda_init's start and the constants below for the three
+           axes in the lanes of one vector, lane 3 zero, with the operations of its SSE2
+           lanes, so the same start cell and boundaries bit for bit; no branch per axis */
+        const rt_v4l m3 = {-1, -1, -1, 0};
+        const rt_v4d z = {0.0, 0.0, 0.0, 0.0}, one = {1.0, 1.0, 1.0, 1.0};
+        rt_v4d o, d, lo, hi, cw, icw;
+        rt_v4i n4;
+        memcpy(&o, (const char *)gr + offsetof(rt_gray, o), sizeof o);
+        memcpy(&d, (const char *)gr + offsetof(rt_gray, d), sizeof d);
+        memcpy(&lo, (const char *)g + offsetof(rt_box, lo), sizeof lo);
+        memcpy(&hi, (const char *)g + offsetof(rt_box, hi), sizeof hi);
+        memcpy(&cw, (const char *)g + offsetof(rt_box, cw), sizeof cw);
+        memcpy(&icw, (const char *)g + offsetof(rt_box, inv_cw), sizeof icw);
+        memcpy(&n4, (const char *)g + offsetof(rt_box, n), sizeof n4);
+        o = (rt_v4d)((rt_v4l)o & m3), d = (rt_v4d)((rt_v4l)d & m3);
+        lo = (rt_v4d)((rt_v4l)lo & m3), hi = (rt_v4d)((rt_v4l)hi & m3);
+        cw = (rt_v4d)((rt_v4l)cw & m3), icw = (rt_v4d)((rt_v4l)icw & m3);
+        const rt_v4d id = {gr->invd[0], gr->invd[1], gr->invd[2], 0.0};
+        const rt_v4d nd = __builtin_convertvector(n4, rt_v4d), nm1 = nd - one;
+        rt_v4d f = (o + t0 * d - lo) * icw;
+        f = rt_v4sel(f > z, f, z);
+        f = rt_v4sel(f < nm1, f, nm1);
+        const rt_v4i c = __builtin_convertvector(f, rt_v4i);
+        const rt_v4d b = __builtin_convertvector(c, rt_v4d) + rt_v4sel(d > z, one, z);
+        const rt_v4d x = rt_v4sel(b == nd, hi, lo + b * cw);
+        const rt_v4d tn = rt_v4sel(d == z, ((rt_v4d){INFINITY, INFINITY, INFINITY, INFINITY}),
+                                   (x - o) * id);
+        const rt_v4d dt = cw * (rt_v4d)rt_v4abits(id);
+        sx = step[0], sy = step[1], sz = step[2];
+        cx = c[0], cy = c[1], cz = c[2];
+        tx = tn[0], ty = tn[1], tz = tn[2];
+        dtx = dt[0], dty = dt[1], dtz = dt[2];
+        itx = ity = itz = 0.0; /* the jumps' counts: no jumps below the top level */
+        tent = t0;
+    }
+#endif
+    else {
         rt_dda s;
         if (!rt_dda_init(g, gr, t0, t1, clip, step, &s))
             return RT_WALK_CONT;
