@@ -733,6 +733,37 @@ enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 #define RT_ANYHIT_TARGET
 #endif
 
+/* rt_box_clip_nz with the three axes in three lanes of GCC's four-double vectors (one AVX2
+   register in the mode-3 top walk, rt_intersect_mesh's encoding): the same operations, the range
+   cut axis by axis in the same order (the same picks between +0 and -0). Lane 3 holds the field
+   after each array (d[0], d[2] rotated in after invd, hi[0], cw[0]: finite), not read. Besides
+   being shorter than the SSE2 form (no scalar third axis), it has no scalar zero-extended into
+   a register, which GCC does with a vmovq that valgrind 3.19 cannot decode in AVX2's encoding
+   (rt_nearest_apart). */
+static inline __attribute__((always_inline)) int rt_box_clip_nz4(const rt_box *g, const rt_gray *r,
+                                                                 double *t0p, double *t1p)
+{
+    rt_v4d o, di, lo, hi;
+    memcpy(&o, r->o, sizeof o);
+    memcpy(&di, r->d + 2, sizeof di); /* d[2], invd[0..2]: the struct's last 32 bytes */
+    memcpy(&lo, g->lo, sizeof lo);
+    memcpy(&hi, g->hi, sizeof hi);
+    const rt_v4d invd = __builtin_shufflevector(di, di, 1, 2, 3, 0);
+    const rt_v4d ta = (lo - o) * invd, tb = (hi - o) * invd;
+    const rt_v4d tn = rt_v4sel(ta < tb, ta, tb), tf = rt_v4sel(ta > tb, ta, tb);
+    double t0 = *t0p, t1 = *t1p;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        t0 = tn[a] > t0 ? tn[a] : t0;
+        t1 = tf[a] < t1 ? tf[a] : t1;
+    }
+    if (!(t0 <= t1) || !isfinite(t0))
+        return 0;
+    *t0p = t0;
+    *t1p = t1;
+    return 1;
+}
+
 typedef struct rt_walkstate rt_walkstate;
 /* an any-hit cell list of mesh triangles (RT_ANY_MESH): 1 if blocked */
 typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t n);
@@ -1245,7 +1276,9 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             const rt_subgrid *sg = &subs[sub[ci]];
             double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
             s1 = RT_MIN(s1, t1);
-            if (pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1) : rt_box_clip(&sg->b, gr, &s0, &s1)) {
+            if (mode == 3 && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
+                : pre      ? rt_box_clip_nz(&sg->b, gr, &s0, &s1)
+                           : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
                          : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
                          : w->any_hit == RT_ANY_MESH ? w->sub(w, sg, s0, s1)
@@ -1544,6 +1577,18 @@ static inline void rt_miss_hit(rt_hit *h)
     *h = (rt_hit){.t = INFINITY, .prim = -1};
 }
 
+/* rt_nearest_core of a ray that rt_intersect_mesh leaves to the one-ray code (the set-up's
+   state 0, the batch's last rays), out of line: that walk (mode 0) and its SSE2 clips stay in
+   the build's own encoding. In the mesh loop's AVX2 encoding GCC zero-extends the clips' scalars
+   with a register-to-register vmovq, which GNU as encodes as VEX 66 0F D6 when the source is
+   xmm8-15, and valgrind 3.19 cannot decode that ("unhandled instruction bytes: 0xC5 0x79 0xD6"):
+   callgrind could not measure the loop. */
+static __attribute__((noinline)) long rt_nearest_apart(const rt_scene *sc, rt_ctx *c, rt_rayx *r,
+                                                       double *tout)
+{
+    return rt_nearest_core(sc, c, r, r, tout);
+}
+
 /* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j); mesh: rt_mesh_only's */
 RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
                                 const rt_pre4 *p, int j, int mesh)
@@ -1568,7 +1613,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         i = w.bi;
     } else if ((!p || p->state[j] == 0) &&
                rt_rayx_check(&r, ray->org, ray->dir, ray->tmin, ray->tmax))
-        i = rt_nearest_core(sc, c, &r, &r, &t);
+        i = mesh ? rt_nearest_apart(sc, c, &r, &t) : rt_nearest_core(sc, c, &r, &r, &t);
     if (i >= 0)
         rt_fill_hit(sc, &r, i, t, h);
     else
@@ -1614,8 +1659,9 @@ static __attribute__((noinline)) void rt_intersect_any(const rt_scene *sc, rt_ct
     rt_intersect_rays(sc, c, n, rays, hits, setup4, 0);
 }
 
-/* the same for a scene of mesh triangles only (rt_mesh_only): the walks of mode 3 */
-static __attribute__((noinline)) void
+/* the same for a scene of mesh triangles only (rt_mesh_only): the walks of mode 3, the top
+   level's too in AVX2's encoding (RT_ANYHIT_TARGET: the CPU has AVX2 and BMI here) */
+static __attribute__((noinline)) RT_ANYHIT_TARGET void
 rt_intersect_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays, rt_hit *hits,
                   rt_setup4_fn setup4)
 {
