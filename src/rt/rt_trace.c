@@ -498,16 +498,32 @@ static inline __attribute__((always_inline, target("avx2"))) void rt_shear4(cons
     memcpy(p->sz, &sz, sizeof p->sz);
 }
 
+/* two fields of the four rays' records, the doubles at k and k + 1 (org[0..2], dir[0..2],
+   tmin, tmax), in lanes: the pairs of rays 0 and 2 and of rays 1 and 3 in the halves of two
+   registers, unpacked (6 instructions for two fields; lane by lane the bits of the input) */
+_Static_assert(sizeof(rt_ray) == 8 * sizeof(double) && offsetof(rt_ray, tmax) == 7 * sizeof(double),
+               "rt_ray: eight doubles");
+static inline __attribute__((always_inline, target("avx2"))) void
+rt_rays4_pair(const rt_ray *ray, int k, rt_v4d *lo, rt_v4d *hi)
+{
+#define RT_RAY_AT(j) ((const double *)(const void *)(ray + (j)) + k)
+    const __m256d e = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(RT_RAY_AT(0))),
+                                           _mm_loadu_pd(RT_RAY_AT(2)), 1);
+    const __m256d f = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(RT_RAY_AT(1))),
+                                           _mm_loadu_pd(RT_RAY_AT(3)), 1);
+#undef RT_RAY_AT
+    *lo = (rt_v4d)_mm256_unpacklo_pd(e, f);
+    *hi = (rt_v4d)_mm256_unpackhi_pd(e, f);
+}
+
 static inline __attribute__((always_inline, target("avx2"))) void
 rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
 {
-    rt_v4d o[3], d[3];
-    for (int a = 0; a < 3; a++) {
-        o[a] = (rt_v4d){ray[0].org[a], ray[1].org[a], ray[2].org[a], ray[3].org[a]};
-        d[a] = (rt_v4d){ray[0].dir[a], ray[1].dir[a], ray[2].dir[a], ray[3].dir[a]};
-    }
-    rt_v4d tmin = {ray[0].tmin, ray[1].tmin, ray[2].tmin, ray[3].tmin};
-    rt_v4d tmax = {ray[0].tmax, ray[1].tmax, ray[2].tmax, ray[3].tmax};
+    rt_v4d o[3], d[3], tmin, tmax;
+    rt_rays4_pair(ray, 0, &o[0], &o[1]);
+    rt_rays4_pair(ray, 2, &o[2], &d[0]);
+    rt_rays4_pair(ray, 4, &d[1], &d[2]);
+    rt_rays4_pair(ray, 6, &tmin, &tmax);
     /* rt_rayx_check's tests on the bits (signed compares: the sign bits are cleared) */
     const double lim[3] = {RT_RAY_MAX, 1e-100, INFINITY};
     int64_t blim[3];
