@@ -749,7 +749,7 @@ enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 #define RT_ANYHIT_TARGET
 #endif
 
-/* the start of a walk computed ahead of rt_walk_box (rt_dda_start_nz): its cells, steps,
+/* the start of a walk computed ahead of rt_walk_box (rt_dda_start4): its cells, steps,
    next boundaries and cells' widths in ray parameter per axis (lane 3 unused) */
 typedef struct rt_ddastart {
     int c[4], step[4];
@@ -757,16 +757,17 @@ typedef struct rt_ddastart {
 } rt_ddastart;
 
 #ifdef RT_SETUP4_AVX2
-/* rt_dda_init (clip 0) and rt_walk_box's cell widths in ray parameter (cw |invd|) for a ray
-   with no direction component 0 (the four-ray set-up's rays) over a sub-grid's box: the
-   three axes in three lanes of one AVX2 register, each lane the operations of rt_dda_init's
-   SSE2 lanes (the same bits; the steps are the signs of d). Lane 3 holds the field that follows
-   each array (of the ray: d[0], invd[0] and, moved to lane 3, d[2]; of the box: hi[0], cw[0],
-   inv_cw[0], the bits of n[0..1], and the sub-grid record's first); all are finite, d[0] and
-   invd[0] nonzero, so no operation there divides, compares a NaN or converts one; the lane is
-   not read. */
+/* rt_dda_init (clip 0) and rt_walk_box's cell widths in ray parameter (cw |invd|) over a
+   sub-grid's box: the three axes in three lanes of one AVX2 register, each lane the operations
+   of rt_dda_init's SSE2 lanes (the same bits). step NULL: a ray with no direction component 0
+   (the four-ray set-up's rays), the steps the signs of d; else the ray's steps (the any-hit
+   walks' rays: a component 0 has step 0 and its next boundary at +inf, as rt_dda_init has it).
+   Lane 3 holds the field that follows each array (of the ray: d[0], invd[0] and, moved to
+   lane 3, d[2]; of the box: hi[0], cw[0], inv_cw[0], the bits of n[0..1], and the sub-grid
+   record's first); all are finite, d[0] and invd[0] nonzero, so no operation there divides,
+   compares a NaN or converts one; the lane is not read. */
 static inline __attribute__((always_inline, target("avx2"))) void
-rt_dda_start_nz(const rt_subgrid *sg, const rt_gray *r, double t0, rt_ddastart *s)
+rt_dda_start4(const rt_subgrid *sg, const rt_gray *r, double t0, const int *step, rt_ddastart *s)
 {
     const rt_box *g = &sg->b;
     const __m256d z = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
@@ -785,10 +786,15 @@ rt_dda_start_nz(const rt_subgrid *sg, const rt_gray *r, double t0, rt_ddastart *
     const __m256d xl = _mm256_add_pd(lo, _mm256_mul_pd(b, cw));
     const __m256d x = _mm256_blendv_pd(xl, _mm256_loadu_pd(g->hi), _mm256_cmp_pd(b, nd, _CMP_EQ_OQ));
     const __m256d sgn = _mm256_set1_pd(-0.0);
+    __m256d tn = _mm256_mul_pd(_mm256_sub_pd(x, o), invd);
     _mm_storeu_si128((__m128i *)s->c, c);
-    _mm_storeu_si128((__m128i *)s->step,
-                     _mm256_cvttpd_epi32(_mm256_blendv_pd(_mm256_set1_pd(-1.0), one, pos)));
-    _mm256_storeu_pd(s->tn, _mm256_mul_pd(_mm256_sub_pd(x, o), invd));
+    if (step) {
+        tn = _mm256_blendv_pd(tn, _mm256_set1_pd(INFINITY), _mm256_cmp_pd(d, z, _CMP_EQ_OQ));
+        s->step[0] = step[0], s->step[1] = step[1], s->step[2] = step[2];
+    } else
+        _mm_storeu_si128((__m128i *)s->step,
+                         _mm256_cvttpd_epi32(_mm256_blendv_pd(_mm256_set1_pd(-1.0), one, pos)));
+    _mm256_storeu_pd(s->tn, tn);
     _mm256_storeu_pd(s->dt, _mm256_mul_pd(cw, _mm256_andnot_pd(sgn, invd)));
 }
 #endif
@@ -1204,54 +1210,14 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = pre->t0[lane];
         t1 = pre->t1[lane];
     } else if (start) {
-        /* a second-level walk's start computed ahead (rt_dda_start_nz; no jumps there) */
+        /* a second-level walk's start computed ahead (rt_dda_start4; no jumps there) */
         sx = start->step[0], sy = start->step[1], sz = start->step[2];
         cx = start->c[0], cy = start->c[1], cz = start->c[2];
         tx = start->tn[0], ty = start->tn[1], tz = start->tn[2];
         dtx = start->dt[0], dty = start->dt[1], dtz = start->dt[2];
         itx = ity = itz = 0.0;
         tent = t0;
-    }
-#ifdef RT_SETUP4_AVX2
-    else if (mode >= RT_MODE_ANYK) {
-        /* RT_ANY_MESH second-level walks (AVX2 functions, rt_walk_sub_anyhit_O; no clip, the
-           ray's steps given): rt_dda_init's start and the constants below for the three
-           axes in the lanes of one vector, lane 3 zero, with the operations of its SSE2
-           lanes, so the same start cell and boundaries bit for bit; no branch per axis */
-        const rt_v4l m3 = {-1, -1, -1, 0};
-        const rt_v4d z = {0.0, 0.0, 0.0, 0.0}, one = {1.0, 1.0, 1.0, 1.0};
-        rt_v4d o, d, lo, hi, cw, icw;
-        rt_v4i n4;
-        memcpy(&o, (const char *)gr + offsetof(rt_gray, o), sizeof o);
-        memcpy(&d, (const char *)gr + offsetof(rt_gray, d), sizeof d);
-        memcpy(&lo, (const char *)g + offsetof(rt_box, lo), sizeof lo);
-        memcpy(&hi, (const char *)g + offsetof(rt_box, hi), sizeof hi);
-        memcpy(&cw, (const char *)g + offsetof(rt_box, cw), sizeof cw);
-        memcpy(&icw, (const char *)g + offsetof(rt_box, inv_cw), sizeof icw);
-        memcpy(&n4, (const char *)g + offsetof(rt_box, n), sizeof n4);
-        o = (rt_v4d)((rt_v4l)o & m3), d = (rt_v4d)((rt_v4l)d & m3);
-        lo = (rt_v4d)((rt_v4l)lo & m3), hi = (rt_v4d)((rt_v4l)hi & m3);
-        cw = (rt_v4d)((rt_v4l)cw & m3), icw = (rt_v4d)((rt_v4l)icw & m3);
-        const rt_v4d id = {gr->invd[0], gr->invd[1], gr->invd[2], 0.0};
-        const rt_v4d nd = __builtin_convertvector(n4, rt_v4d), nm1 = nd - one;
-        rt_v4d f = (o + t0 * d - lo) * icw;
-        f = rt_v4sel(f > z, f, z);
-        f = rt_v4sel(f < nm1, f, nm1);
-        const rt_v4i c = __builtin_convertvector(f, rt_v4i);
-        const rt_v4d b = __builtin_convertvector(c, rt_v4d) + rt_v4sel(d > z, one, z);
-        const rt_v4d x = rt_v4sel(b == nd, hi, lo + b * cw);
-        const rt_v4d tn = rt_v4sel(d == z, ((rt_v4d){INFINITY, INFINITY, INFINITY, INFINITY}),
-                                   (x - o) * id);
-        const rt_v4d dt = cw * (rt_v4d)rt_v4abits(id);
-        sx = step[0], sy = step[1], sz = step[2];
-        cx = c[0], cy = c[1], cz = c[2];
-        tx = tn[0], ty = tn[1], tz = tn[2];
-        dtx = dt[0], dty = dt[1], dtz = dt[2];
-        itx = ity = itz = 0.0; /* the jumps' counts: no jumps below the top level */
-        tent = t0;
-    }
-#endif
-    else {
+    } else {
         rt_dda s;
         if (!rt_dda_init(g, gr, t0, t1, clip, step, &s))
             return RT_WALK_CONT;
@@ -1389,7 +1355,7 @@ rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, doubl
     const rt_ddastart *start = NULL;
 #ifdef RT_SETUP4_AVX2
     rt_ddastart st;
-    rt_dda_start_nz(sg, &w->gr, t0, &st);
+    rt_dda_start4(sg, &w->gr, t0, NULL, &st);
     start = &st;
 #endif
     if (g->soff16)
@@ -1401,31 +1367,42 @@ rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, doubl
 }
 
 RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0,
-                                double t1)
+                                double t1, const rt_ddastart *start)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16)
         return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
                            g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0,
-                           w->step, NULL);
+                           w->step, start);
     return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, w->step, NULL);
+                       NULL, t0, t1, 0, NULL, 0, w->step, start);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
-    return rt_walk_sub_mode1(w, 1, sg, t0, t1);
+    return rt_walk_sub_mode1(w, 1, sg, t0, t1, NULL);
 }
 
 /* the same for RT_ANY_MESH walks (modes RT_MODE_ANYK + O: the lists' kind and axis order
    known), in AVX2's encoding, one per axis order in rt_list_order's numbering */
+RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_anyk(rt_walkstate *w, int mode, const rt_subgrid *sg,
+                                                 double t0, double t1)
+{
+#ifdef RT_SETUP4_AVX2
+    rt_ddastart st; /* the start in AVX2 lanes, the ray's steps given (no clip here) */
+    rt_dda_start4(sg, &w->gr, t0, w->step, &st);
+    return rt_walk_sub_mode1(w, mode, sg, t0, t1, &st);
+#else
+    return rt_walk_sub_mode1(w, mode, sg, t0, t1, NULL);
+#endif
+}
 #define RT_SUB_ANYHIT(O)                                                                      \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_anyhit_##O(             \
         rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
     {                                                                                         \
-        return rt_walk_sub_mode1(w, RT_MODE_ANYK + O, sg, t0, t1);                            \
+        return rt_walk_sub_anyk(w, RT_MODE_ANYK + O, sg, t0, t1);                             \
     }
 RT_SUB_ANYHIT(0)
 RT_SUB_ANYHIT(1)
