@@ -400,8 +400,8 @@ typedef struct rt_stats {
     double render_seconds;
     size_t memory_bytes;              /* scene + grid */
     size_t tri_bytes;                 /* of memory_bytes: the triangles' records (rt_prim and
-                                         the vertices, rt_tri; a mesh's: rt_prim, the index
-                                         triples and its shared vertex data) */
+                                         the vertices, rt_tri; a mesh's: one rt_prim for the
+                                         mesh, the index triples and its shared vertex data) */
     size_t grid_bytes;                /* of memory_bytes: both grid levels */
 } rt_stats;
 

@@ -212,9 +212,9 @@ static int rt_build_push(rt_build *b, size_t cell, size_t prim)
 /* Number of vertices of primitive i as rt_prim_vertex gives them */
 size_t rt_prim_nverts(const rt_scene *sc, size_t i)
 {
-    const rt_prim *p = &sc->prim[i];
-    if (p->kind == RT_KIND_TRI)
+    if (i < sc->ntri)
         return 3;
+    const rt_prim *p = rt_prim_rest(sc, i);
     if (p->kind == RT_KIND_QUAD || p->kind == RT_KIND_CELL)
         return 4;
     const rt_poly *po = &sc->poly[p->data];
@@ -229,10 +229,12 @@ size_t rt_prim_nverts(const rt_scene *sc, size_t i)
    hull); the 4 corners of a cell array. */
 void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
 {
-    const rt_prim *p = &sc->prim[i];
-    if (p->kind == RT_KIND_TRI) {
-        memcpy(out, rt_tri_vert(sc, p->data, (int)k), 3 * sizeof(double));
-    } else if (p->kind == RT_KIND_QUAD) {
+    if (i < sc->ntri) {
+        memcpy(out, rt_tri_vert(sc, i, (int)k), 3 * sizeof(double));
+        return;
+    }
+    const rt_prim *p = rt_prim_rest(sc, i);
+    if (p->kind == RT_KIND_QUAD) {
         memcpy(out, sc->quad[p->data].v[k], 3 * sizeof(double));
     } else if (p->kind == RT_KIND_CELL) {
         const rt_cell *c = &sc->cell[p->data];
@@ -248,15 +250,15 @@ void rt_prim_vertex(const rt_scene *sc, size_t i, size_t k, double out[3])
     }
 }
 
-/* 3-D points of the triangle / polygon / cell outline(s) lying on the traced plane (VRC3),
-   rt_prim_vertex's, into the build's scratch */
-static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+/* 3-D points of the triangle / polygon / cell outline(s) of primitive i lying on the traced
+   plane (VRC3), rt_prim_vertex's, into the build's scratch */
+static size_t rt_prim_points(const rt_scene *sc, rt_build *b, size_t i, int *err)
 {
-    if (p->kind == RT_KIND_TRI && b->cappts >= 9) { /* the common case, without calls */
-        rt_tri_copy(sc, p->data, b->pts);
+    if (i < sc->ntri && b->cappts >= 9) { /* the common case, without calls */
+        rt_tri_copy(sc, i, b->pts);
         return 3;
     }
-    const size_t i = (size_t)(p - sc->prim), nv = rt_prim_nverts(sc, i);
+    const size_t nv = rt_prim_nverts(sc, i);
     if (!rt_grow((void **)&b->pts, &b->cappts, 3 * nv, sizeof(double))) {
         *err = 1;
         return 0;
@@ -268,15 +270,15 @@ static size_t rt_prim_points(const rt_scene *sc, rt_build *b, const rt_prim *p, 
 
 /* rt_prim_points' points taken into the grid frame (rt_grid_point): a mesh triangle's from
    b->gv when the grid is rotated, the same values rotated once per vertex */
-static inline size_t rt_prim_gpoints(const rt_scene *sc, rt_build *b, const rt_prim *p, int *err)
+static inline size_t rt_prim_gpoints(const rt_scene *sc, rt_build *b, size_t i, int *err)
 {
-    if (b->gv && p->kind == RT_KIND_TRI && p->data >= sc->ntri_plain && b->cappts >= 9) {
-        const uint32_t *ix = sc->ctri[p->data - sc->ntri_plain];
+    if (b->gv && i < sc->ntri && i >= sc->ntri_plain && b->cappts >= 9) {
+        const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
         for (int k = 0; k < 3; k++)
             memcpy(b->pts + 3 * k, b->gv + (ix[k] & sc->vmask), 3 * sizeof(double));
         return 3;
     }
-    const size_t npts = rt_prim_points(sc, b, p, err);
+    const size_t npts = rt_prim_points(sc, b, i, err);
     for (size_t k = 0; k < npts && sc->grid.rotated; k++)
         rt_grid_point(&sc->grid, b->pts + 3 * k, b->pts + 3 * k);
     return npts;
@@ -886,11 +888,11 @@ static void rt_ins_cell_box(const rt_box *g, const rt_axis_boxes *ab, const int 
 static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
                       double eps, const double *tv, int *err)
 {
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim pr = rt_prim_geo(sc, i), *p = &pr; /* (q's below: its lifetime) */
     size_t npts = 3;
     const double *pts = tv; /* a triangle's 9 coordinates (tv), or b->pts */
     if (!tv) {
-        npts = rt_prim_gpoints(sc, b, p, err);
+        npts = rt_prim_gpoints(sc, b, i, err);
         if (*err)
             return;
         pts = b->pts;
@@ -1124,7 +1126,7 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
 /* bounding box of primitive i in the grid frame (its points in the frame left in b->pts) */
 static void rt_prim_gbox(const rt_scene *sc, rt_build *b, size_t i, double bb[6], int *err)
 {
-    size_t npts = rt_prim_gpoints(sc, b, &sc->prim[i], err);
+    size_t npts = rt_prim_gpoints(sc, b, i, err);
     rt_pts_bbox(b->pts, npts, bb);
 }
 
@@ -1200,15 +1202,15 @@ static uint32_t rt_sub_classify(const rt_scene *sc, rt_build *b, size_t ci, cons
     }
     for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !*err; r++) {
         double bb[6];
-        const rt_prim *p = &sc->prim[g->refs[r]];
-        if (p->kind == RT_KIND_TRI) { /* rt_prim_gpoints' values, made in place */
+        const size_t i = g->refs[r];
+        if (i < sc->ntri) { /* rt_prim_gpoints' values, made in place */
             double *tv = b->tpts + 9 * (size_t)(r - g->off[ci]);
-            if (b->gv && p->data >= sc->ntri_plain) {
-                const uint32_t *ix = sc->ctri[p->data - sc->ntri_plain];
+            if (b->gv && i >= sc->ntri_plain) {
+                const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
                 for (int k = 0; k < 3; k++)
                     memcpy(tv + 3 * k, b->gv + (ix[k] & sc->vmask), 3 * sizeof(double));
             } else {
-                rt_tri_copy(sc, p->data, tv);
+                rt_tri_copy(sc, i, tv);
                 for (int k = 0; k < 3 && g->rotated; k++)
                     rt_grid_point(g, tv + 3 * k, tv + 3 * k);
             }
@@ -1395,7 +1397,7 @@ static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab 
         b->tab = tab;
         for (uint32_t r = g->off[ci]; r < g->off[ci + 1] && !err; r++)
             if (!keep[r]) {
-                const int tri = sc->prim[g->refs[r]].kind == RT_KIND_TRI;
+                const int tri = g->refs[r] < sc->ntri;
                 const double *tv = tri ? b->tpts + 9 * (size_t)(r - g->off[ci]) : NULL;
                 rt_insert(sc, b, g->refs[r], &sg->b, 0, eps, tv, &err);
             }
@@ -1934,7 +1936,7 @@ static void rt_frame_box_part(void *arg, int k, int n)
     }
     rt_par_range((sc->nprim + j->stride - 1) / j->stride, k, n, &lo, &hi);
     for (size_t m = lo; m < hi && !err; m++) {
-        size_t npts = rt_prim_points(sc, b, &sc->prim[m * j->stride], &err);
+        size_t npts = rt_prim_points(sc, b, m * j->stride, &err);
         rt_box_add_points(&sc->grid, b->pts, npts, bb);
     }
     memcpy(j->bb[k], bb, sizeof bb);
@@ -2019,13 +2021,12 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, const
     const double *X = sc->mv_xyz.p;
     for (size_t m = 0; m < ns && !err; m++) {
         const size_t i = m * stride;
-        const rt_prim *pr = &sc->prim[i];
-        if (pr->kind == RT_KIND_TRI && pr->data >= sc->ntri_plain) {
+        if (i < sc->ntri && i >= sc->ntri_plain) {
             if (3 * (n + 3) > cap && !rt_grow((void **)&p, &cap, 3 * (n + 3), sizeof(double))) {
                 err = 1;
                 break;
             }
-            const uint32_t *ix = sc->ctri[pr->data - sc->ntri_plain];
+            const uint32_t *ix = sc->ctri[i - sc->ntri_plain];
             for (int k = 0; k < 3; k++) {
                 const uint32_t e = ix[k] & sc->vmask, v = e / 3; /* offset, vertex */
                 if (seen[v])
@@ -2035,7 +2036,7 @@ static int rt_frame_points(const rt_scene *sc, rt_build *b, size_t stride, const
             }
             continue;
         }
-        const size_t np = rt_prim_points(sc, b, pr, &err);
+        const size_t np = rt_prim_points(sc, b, i, &err);
         if (err || !rt_grow((void **)&p, &cap, 3 * (n + np), sizeof(double))) {
             err = 1;
             break;
@@ -2111,8 +2112,7 @@ static void rt_frame_normals(const double *nx, const double *ny, const double *n
 /* frame of primitive i: rows (edge, normal x edge, normal); 0 if degenerate */
 static int rt_prim_frame(const rt_scene *sc, rt_build *b, size_t i, double R[3][3], int *err)
 {
-    const rt_prim *p = &sc->prim[i];
-    size_t npts = rt_prim_points(sc, b, p, err);
+    size_t npts = rt_prim_points(sc, b, i, err);
     double n[3];
     rt_prim_ng(sc, i, n);
     double best = 0.0, u[3] = {0, 0, 0};
@@ -2198,11 +2198,11 @@ static void rt_frame_cand_part(void *arg, int k, int n)
     const size_t a0 = lo, a1 = hi < j->skip_lo ? hi : j->skip_lo;
     const size_t b0 = (lo > j->skip_lo ? lo : j->skip_lo) + skip, b1 = hi + skip;
     for (size_t i = a0; i < a1 && !err; i++) {
-        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        size_t npts = rt_prim_points(sc, b, i, &err);
         rt_cand_add(area, cand, &nc, rt_pts_area(b->pts, npts), i);
     }
     for (size_t i = b0; i < b1 && !err; i++) {
-        size_t npts = rt_prim_points(sc, b, &sc->prim[i], &err);
+        size_t npts = rt_prim_points(sc, b, i, &err);
         rt_cand_add(area, cand, &nc, rt_pts_area(b->pts, npts), i);
     }
     memcpy(j->area[k], area, (size_t)nc * sizeof *area);
@@ -2258,12 +2258,12 @@ static int rt_frame_sample_ng(const rt_scene *sc, size_t stride, size_t ns, doub
        division correctly rounded in lanes as in scalars), so the same normals; a pair with a
        lane outside its common path (or not two triangles) goes through rt_prim_ng */
     for (; k + 2 <= ns; k += 2) {
-        const rt_prim *p0 = &sc->prim[k * stride], *p1 = &sc->prim[(k + 1) * stride];
+        const rt_prim p0 = rt_prim_geo(sc, k * stride), p1 = rt_prim_geo(sc, (k + 1) * stride);
         int done = 0;
-        if (p0->kind == RT_KIND_TRI && p1->kind == RT_KIND_TRI) {
+        if (p0.kind == RT_KIND_TRI && p1.kind == RT_KIND_TRI) {
             const double *a[3], *c[3];
-            rt_tri_verts(sc, p0->data, a);
-            rt_tri_verts(sc, p1->data, c);
+            rt_tri_verts(sc, p0.data, a);
+            rt_tri_verts(sc, p1.data, c);
             __m128d v0[3], e1[3], e2[3];
             for (int j = 0; j < 3; j++) {
                 v0[j] = _mm_set_pd(c[0][j], a[0][j]);
@@ -2728,9 +2728,13 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rt_grid_free(g);
         return rc;
     }
-    g->all_opaque = 1;
-    for (size_t i = 0; i < sc->nprim; i++)
+    g->all_opaque = 1; /* the stored records, then those of the meshes that kept triangles */
+    for (size_t i = 0; i < sc->nprim - (sc->ntri - sc->ntri_plain); i++)
         g->all_opaque &= sc->prim[i].opaque != 0;
+    for (size_t m = 0, end = sc->ntri_plain; m < sc->nmesh && sc->ntri > sc->ntri_plain; m++) {
+        g->all_opaque &= sc->cmesh[m].end == end || sc->cmesh[m].rec.opaque != 0;
+        end = sc->cmesh[m].end;
+    }
     sc->use_grid = 1;
     return RT_OK;
 }

@@ -25,7 +25,7 @@ __attribute__((noinline, cold)) void rt_tri_unit_normal_slow(const double *v0, c
 void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3])
 {
     const double *v[3];
-    rt_tri_verts(sc, sc->prim[i].data, v);
+    rt_tri_verts(sc, i, v);
     rt_tri_unit_normal(v[0], v[1], v[2], ng);
 }
 
@@ -101,7 +101,7 @@ static inline double rt_absmax5(const double *a, const double *b, const double *
    a cell array's corner P plus its edges. */
 static double rt_prim_mag(const rt_scene *sc, size_t i, const double p[3])
 {
-    const rt_prim *pr = &sc->prim[i];
+    const rt_prim geo = rt_prim_geo(sc, i), *pr = &geo;
     switch (pr->kind) {
     case RT_KIND_TRI:
         return fmax(rt_absmax(rt_tri_vert(sc, pr->data, 0), 3),
@@ -137,7 +137,7 @@ static inline __attribute__((always_inline)) double rt_hit_err(const rt_scene *s
                                                                 double t)
 {
     double ng[3], p[3], den, s;
-    const rt_prim *pr = &sc->prim[i];
+    const rt_prim geo = rt_prim_geo(sc, i), *pr = &geo;
     for (int k = 0; k < 3; k++)
         p[k] = r->o[k] + t * r->d[k];
     int done = 0; /* den and s set */
@@ -193,9 +193,8 @@ static inline __attribute__((always_inline)) double rt_hit_err(const rt_scene *s
 
 void rt_tri_err_init(const rt_scene *sc, uint32_t i, rt_tri_err *q)
 {
-    const rt_prim *pr = &sc->prim[i];
-    const double *a = rt_tri_vert(sc, pr->data, 0), *b = rt_tri_vert(sc, pr->data, 1),
-                 *c = rt_tri_vert(sc, pr->data, 2);
+    const double *a = rt_tri_vert(sc, i, 0), *b = rt_tri_vert(sc, i, 1),
+                 *c = rt_tri_vert(sc, i, 2);
     /* rt_hit_err's operations for a triangle, in its order */
     const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
@@ -253,7 +252,7 @@ static inline void rt_nearest_take(const rt_scene *sc, uint32_t i, double t, dou
             return;
         if (t >= *best - tie) { /* a tie: the later area; within one area the nearer,
                                    at equal distance the primitive given first */
-            const int id = sc->prim[i].id, idb = sc->prim[*bi].id;
+            const int id = rt_prim_id(sc, i), idb = rt_prim_id(sc, (size_t)*bi);
             if (id < idb ||
                 (id == idb && (t > *best || (t == *best && rt_prim_given(sc, i) >
                                                                rt_prim_given(sc, (size_t)*bi)))))

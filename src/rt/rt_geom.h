@@ -97,12 +97,13 @@ void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3]);
    hit asks for it) */
 static inline void rt_prim_ng(const rt_scene *sc, size_t i, double ng[3])
 {
-    const rt_prim *p = &sc->prim[i];
-    const double *n;
-    switch (p->kind) {
-    case RT_KIND_TRI:
+    if (i < sc->ntri) {
         rt_prim_ng_tri(sc, i, ng);
         return;
+    }
+    const rt_prim *p = rt_prim_rest(sc, i);
+    const double *n;
+    switch (p->kind) {
     case RT_KIND_QUAD:
         n = sc->quad[p->data].n;
         break;

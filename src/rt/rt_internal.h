@@ -110,7 +110,8 @@ typedef struct rt_cell {
 
 /* 12 bytes per primitive. The front normal is not stored: rt_prim_ng gives it (the plane
    normal of a quad, polygon or cell; a triangle's computed from its vertices at each use by
-   rt_tri_unit_normal, the same bits every time). */
+   rt_tri_unit_normal, the same bits every time). A triangle's data is its primitive index.
+   Mesh triangles have no record stored: their mesh's (rt_cmesh) is theirs (rt_prim_at). */
 #define RT_SPAIR_MAX ((uint32_t)1 << 29) /* distinct surface pairs at most (sp's bits) */
 typedef struct rt_prim {
     int id;             /* user id */
@@ -171,6 +172,14 @@ typedef struct rt_mesh {
     size_t nused;        /* stored in spatial order: its vertices used by its triangles, the
                             first nused (rt_mesh_sort); 0: not known */
 } rt_mesh;
+
+/* the committed triangles of one mesh (rt_scene.cmesh): the primitives from the previous
+   entry's end (the first: ntri_plain) up to end share the record rec (data aside: a
+   triangle's is its index) */
+typedef struct rt_cmesh {
+    size_t end;
+    rt_prim rec;
+} rt_cmesh;
 
 /* an axis-aligned box cut into n[0] x n[1] x n[2] equal cells */
 typedef struct rt_box {
@@ -341,7 +350,11 @@ struct rt_scene {
     int committed;
     uint32_t *prim_vd;                /* per committed prim: its rt_vd or RT_NO_VD; NULL
                                          when the scene has no vertex data */
+    /* the records of the primitives that are not mesh triangles: those of primitives
+       i < ntri_plain at prim[i], those of i >= ntri at prim[i - (ntri - ntri_plain)]
+       (rt_prim_at, rt_prim_geo; nprim counts the mesh triangles too) */
     rt_prim *prim; size_t nprim;
+    rt_cmesh *cmesh;                  /* per mesh (nmesh): its committed triangles' record */
     rt_tri *tri; size_t ntri;         /* prim index i < ntri: a triangle; i < ntri_plain:
                                          tri[i], else the mesh triangle ctri[i - ntri_plain] */
     int tri_owned;                    /* 1: tri is a culled copy, 0: tri == in_tri */
@@ -441,6 +454,57 @@ static inline void rt_tri_prefetch(const rt_scene *sc, size_t t)
     const char *p = (const char *)&sc->tri[t];
     __builtin_prefetch(p);
     __builtin_prefetch(p + sizeof(rt_tri) - 1);
+}
+
+/* the stored record of committed primitive i >= ntri (not a triangle) */
+static inline const rt_prim *rt_prim_rest(const rt_scene *sc, size_t i)
+{
+    return &sc->prim[i - (sc->ntri - sc->ntri_plain)];
+}
+/* the record of committed mesh triangle i (ntri_plain <= i < ntri): its mesh's, found by
+   the meshes' ends (one mesh: no search) */
+static inline const rt_prim *rt_cmesh_rec(const rt_scene *sc, size_t i)
+{
+    size_t lo = 0, hi = sc->nmesh - 1; /* the last mesh ends at ntri */
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (sc->cmesh[mid].end <= i)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return &sc->cmesh[lo].rec;
+}
+/* the stored record of committed primitive i, or a mesh triangle's mesh's (its data is not
+   the triangle's: rt_prim_at) */
+static inline const rt_prim *rt_prim_rec(const rt_scene *sc, size_t i)
+{
+    const size_t nmc = sc->ntri - sc->ntri_plain;
+    if (i - sc->ntri_plain < nmc)
+        return rt_cmesh_rec(sc, i);
+    return &sc->prim[i < sc->ntri_plain ? i : i - nmc];
+}
+/* the record of committed primitive i (a mesh triangle's made from its mesh's) */
+static inline rt_prim rt_prim_at(const rt_scene *sc, size_t i)
+{
+    rt_prim p = *rt_prim_rec(sc, i);
+    if (i < sc->ntri)
+        p.data = (uint32_t)i;
+    return p;
+}
+/* the kind and data of committed primitive i, what its geometry needs (rt_prim_at's, the
+   other fields not set for a triangle: no mesh search) */
+static inline rt_prim rt_prim_geo(const rt_scene *sc, size_t i)
+{
+    if (i < sc->ntri)
+        return (rt_prim){.kind = RT_KIND_TRI, .data = (uint32_t)i};
+    return *rt_prim_rest(sc, i);
+}
+/* the user id and the opacity of committed primitive i */
+static inline int rt_prim_id(const rt_scene *sc, size_t i) { return rt_prim_rec(sc, i)->id; }
+static inline int rt_prim_opaque(const rt_scene *sc, size_t i)
+{
+    return rt_prim_rec(sc, i)->opaque;
 }
 
 /* grows the box bb (lo xyz, hi xyz) by the point p */

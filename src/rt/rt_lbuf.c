@@ -176,8 +176,9 @@ static int rt_lbuf_project(const rt_lbuf *lb, const rt_scene *sc, size_t i, rt_l
     pp->n = rt_prim_nverts(sc, i);
     pp->loops = NULL;
     pp->nloops = 1;
-    if (sc->prim[i].kind == RT_KIND_POLY) {
-        const rt_poly *po = &sc->poly[sc->prim[i].data];
+    const rt_prim geo = rt_prim_geo(sc, i);
+    if (geo.kind == RT_KIND_POLY) {
+        const rt_poly *po = &sc->poly[geo.data];
         pp->loops = sc->loops + po->loop0;
         pp->nloops = po->nloops;
     }
@@ -212,7 +213,7 @@ static void rt_lbuf_edges(const rt_lbuf *lb, const rt_scene *sc, size_t i, const
 {
     double q[4][2], L[4][3];
     int n = 0;
-    const int kind = sc->prim[i].kind;
+    const int kind = rt_prim_geo(sc, i).kind;
     if (kind != RT_KIND_POLY && pp->n >= 3 && pp->n <= 4) {
         n = (int)pp->n;
         for (int k = 0; k < n; k++) {
@@ -750,7 +751,7 @@ double rt_lbuf_transmit(const rt_scene *sc, const rt_lbuf *lb, const rt_lbuf_q *
         double t;
         if (!rt_isect_prim(sc, r, i, r->tmin, r->tmax, &t))
             continue;
-        const rt_prim *p = &sc->prim[i];
+        const rt_prim *p = rt_prim_rec(sc, i);
         if (p->opaque) {
             *blocker = (long)i;
             return 0.0;

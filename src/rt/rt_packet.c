@@ -1885,7 +1885,7 @@ static void rt_pk_fill_ng(const rt_scene *sc, const rt_rayx *r, long i, double t
                           const double ng[3], rt_hit *h)
 {
     h->t = t;
-    h->prim = sc->prim[i].id;
+    h->prim = rt_prim_id(sc, (size_t)i);
     memcpy(h->ng, ng, sizeof h->ng);
     for (int j = 0; j < 3; j++)
         h->p[j] = r->o[j] + t * r->d[j];

@@ -256,7 +256,7 @@ static inline __attribute__((always_inline)) int rt_prim_plane_t(const rt_scene 
         return -1;
     if (i - sc->ntri < sc->nquad)
         return rt_quad_plane_t(r, &sc->quad[i - sc->ntri], t);
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim *p = rt_prim_rest(sc, i);
     switch (p->kind) {
     case RT_KIND_QUAD:
         return rt_quad_plane_t(r, &sc->quad[p->data], t);
@@ -277,7 +277,7 @@ static inline __attribute__((always_inline)) int rt_isect_prim(const rt_scene *s
     }
     if (i - sc->ntri < sc->nquad)
         return rt_isect_quad(r, &sc->quad[i - sc->ntri], tmin, tmax, t);
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim *p = rt_prim_rest(sc, i);
     switch (p->kind) {
     case RT_KIND_TRI: {
         const double *v[3];

@@ -584,7 +584,7 @@ static void rt_shade_hit(rt_worker *w, const double o[3], const double d[3], int
     }
     if (i < 0)
         return;
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim *p = rt_prim_rec(sc, (size_t)i); /* (a cell's data: its own record) */
     double P[3], N[3];
     for (int c = 0; c < 3; c++)
         P[c] = o[c] + t * d[c];
@@ -911,7 +911,7 @@ static int rt_cover_pass(const rt_scene *sc, const rt_camera *cam, const double 
             bb[2] = fmin(bb[2], pv);
             bb[3] = fmax(bb[3], pv);
         }
-        const int kind = sc->prim[i].kind;
+        const int kind = rt_prim_geo(sc, i).kind;
         const int convex = kind == RT_KIND_TRI || kind == RT_KIND_QUAD || kind == RT_KIND_CELL;
         s->prim = (uint32_t)i;
         rt_cover_convex(s, gw, gh, off, (const double(*)[2])q, convex ? (int)nv : 0, bb,
@@ -1810,7 +1810,7 @@ static double rt_mirror_area(const rt_scene *sc, const rt_camera *cam, const dou
     const double cw = fmin(bb[1], gw) - fmax(bb[0], 0.0), ch = fmin(bb[3], gh) - fmax(bb[2], 0.0);
     if (!(cw > 0.0) || !(ch > 0.0))
         return 0.0;
-    if (sc->prim[i].kind == RT_KIND_POLY || !(bw * bh > 0.0))
+    if (rt_prim_geo(sc, i).kind == RT_KIND_POLY || !(bw * bh > 0.0))
         return cw * ch; /* loops, or no area: the clipped box */
     return fmin(a, bw * bh) * (cw * ch) / (bw * bh);
 }
@@ -1827,7 +1827,7 @@ static int rt_mirror_surf(const rt_surface *s)
 static int rt_mirror_plane(const rt_scene *sc, size_t i, const double E[3], double n[3],
                            double *c)
 {
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim *p = rt_prim_rec(sc, i);
     if (!rt_mirror_surf(rt_prim_surf(sc, p, 0)) && !rt_mirror_surf(rt_prim_surf(sc, p, 1)))
         return 0; /* (before the normal: most primitives are not mirrors) */
     double v[3];

@@ -80,6 +80,7 @@ static void rt_scene_uncommit(rt_scene *sc)
     if (sc->prim_owned)
         free(sc->prim);
     sc->prim = NULL; sc->nprim = 0; sc->prim_owned = 0;
+    free(sc->cmesh); sc->cmesh = NULL;
     if (sc->tri_owned)
         free(sc->tri);
     sc->tri = NULL; sc->ntri = 0; sc->tri_owned = 0;
@@ -1160,19 +1161,18 @@ static int rt_commit_tris(rt_scene *sc, const rt_build_options *o, double bb[6])
     return RT_OK;
 }
 
-/* The meshes' triangles after the plain ones (ntri_plain), in id order, with their records
-   (data: the primitive index, as a plain triangle's). Degenerate ones were dropped when the
-   mesh was added (rt_scene_mesh_end), which also made each mesh's box: without culling the
-   commit only writes the records and ctri is the input's index triples. With culling the
-   culled ones are left out and the box is of the kept ones: the kept index triples are a
-   compacted copy (ctri_owned). In nt parts of consecutive triangles (threads): each part
-   writes the records of its triangles at their input places (id RT_CULLED: left out); a
-   serial pass closes the gaps, so the result is the same for any nt. */
+/* The meshes' triangles after the plain ones (ntri_plain), in id order. They have no records
+   of their own: a mesh's committed triangles share its record (rt_scene.cmesh). Degenerate
+   ones were dropped when the mesh was added (rt_scene_mesh_end), which also made each mesh's
+   box: without culling the commit only makes the meshes' records and ctri is the input's
+   index triples. With culling the culled ones are left out and the box is of the kept ones:
+   the kept index triples are a compacted copy (ctri_owned). In nt parts of consecutive
+   triangles (threads): each part marks its culled triangles; a serial pass closes the gaps,
+   so the result is the same for any nt. */
 typedef struct rt_mesh_job {
     rt_scene *sc;
     const rt_build_options *o;
-    const rt_prim *tpl;       /* per mesh: its triangles' record (id, surfaces) */
-    size_t base;              /* the first mesh triangle's primitive index */
+    uint8_t *cut;             /* per input mesh triangle: 1 culled */
     double bb[RT_PAR_MAX][6];
     size_t kept[RT_PAR_MAX];
 } rt_mesh_job;
@@ -1181,45 +1181,25 @@ static void rt_commit_mesh_part(void *arg, int part, int nparts)
 {
     rt_mesh_job *j = arg;
     rt_scene *sc = j->sc;
-    const int cull = j->o && j->o->ncull > 0;
     const uint32_t (*in)[3] = (const uint32_t (*)[3])sc->mtri.p;
     const double *X = sc->mv_xyz.p;
+    const uint32_t vm = sc->vmask;
     double *bb = j->bb[part];
-    size_t lo, hi, kept = 0, mi = 0;
+    size_t lo, hi, kept = 0;
     rt_par_range(sc->nmtri, part, nparts, &lo, &hi);
     for (int i = 0; i < 3; i++) {
         bb[i] = INFINITY;
         bb[3 + i] = -INFINITY;
     }
-    if (!cull) { /* the records only: per mesh, its triangles in this part */
-        for (size_t t = lo; t < hi; mi++) {
-            const size_t e = sc->mesh[mi].t0 + sc->mesh[mi].nt;
-            const rt_prim r = j->tpl[mi];
-            rt_prim *pr = sc->prim + j->base;
-            for (; t < hi && t < e; t++) {
-                pr[t] = r;
-                pr[t].data = (uint32_t)(j->base + t);
-            }
-        }
-        j->kept[part] = hi - lo;
-        return;
-    }
     for (size_t t = lo; t < hi; t++) {
-        while (t >= sc->mesh[mi].t0 + sc->mesh[mi].nt)
-            mi++;
-        rt_prim *pr = &sc->prim[j->base + t];
-        *pr = j->tpl[mi];
-        pr->data = (uint32_t)(j->base + t);
-        const uint32_t vm = sc->vmask;
         const double *a = X + (in[t][0] & vm), *b = X + (in[t][1] & vm), *c = X + (in[t][2] & vm);
         double v[9];
         memcpy(v, a, sizeof v / 3);
         memcpy(v + 3, b, sizeof v / 3);
         memcpy(v + 6, c, sizeof v / 3);
-        if (rt_culled(j->o, v, 3, 0)) {
-            pr->id = RT_CULLED;
+        j->cut[t] = (uint8_t)rt_culled(j->o, v, 3, 0);
+        if (j->cut[t])
             continue;
-        }
         rt_bbox_add(bb, a);
         rt_bbox_add(bb, b);
         rt_bbox_add(bb, c);
@@ -1233,76 +1213,86 @@ static int rt_commit_mesh(rt_scene *sc, const rt_build_options *o, double bb[6])
     sc->ntri_plain = sc->ntri;
     if (sc->nmtri == 0)
         return RT_OK;
-    rt_mesh_job *j = rt_alloc_array(1, sizeof *j);
-    rt_prim *tpl = rt_calloc_array(sc->nmesh, sizeof *tpl);
-    int rc = j && tpl ? RT_OK : RT_ERR_NOMEM;
-    for (size_t mi = 0; mi < sc->nmesh && rc == RT_OK; mi++) {
+    const int cull = o && o->ncull > 0;
+    sc->cmesh = rt_calloc_array(sc->nmesh, sizeof *sc->cmesh);
+    if (!sc->cmesh)
+        return RT_ERR_NOMEM;
+    for (size_t mi = 0; mi < sc->nmesh; mi++) {
         const rt_mesh *m = &sc->mesh[mi];
-        rc = rt_prim_init(sc, &tpl[mi], (int)m->id, m->front, m->back);
-        tpl[mi].kind = RT_KIND_TRI;
+        const int rc = rt_prim_init(sc, &sc->cmesh[mi].rec, (int)m->id, m->front, m->back);
+        if (rc != RT_OK)
+            return rc;
+        sc->cmesh[mi].rec.kind = RT_KIND_TRI;
+        sc->cmesh[mi].end = sc->ntri_plain + m->t0 + m->nt;
     }
-    if (rc != RT_OK) {
+    uint32_t (*in)[3] = sc->mtri.p;
+    sc->ctri = in;
+    sc->ctri_owned = 0;
+    if (!cull) {
+        for (size_t mi = 0; mi < sc->nmesh; mi++) /* the boxes made when added */
+            for (int i = 0; i < 3; i++) {
+                bb[i] = fmin(bb[i], sc->mesh[mi].bb[i]);
+                bb[3 + i] = fmax(bb[3 + i], sc->mesh[mi].bb[3 + i]);
+            }
+        sc->nprim += sc->nmtri;
+        sc->ntri = sc->ntri_plain + sc->nmtri;
+        return RT_OK;
+    }
+    rt_mesh_job *j = rt_alloc_array(1, sizeof *j);
+    uint8_t *cut = rt_alloc_array(sc->nmtri, 1);
+    if (!j || !cut) {
         free(j);
-        free(tpl);
-        return rc;
+        free(cut);
+        return RT_ERR_NOMEM;
     }
     j->sc = sc;
     j->o = o;
-    j->tpl = tpl;
-    j->base = sc->nprim;
-    int nt = rt_par_threads(o ? o->threads : 0);
+    j->cut = cut;
+    int nt = rt_par_threads(o->threads);
     if ((size_t)nt > sc->nmtri / 16384 + 1)
         nt = (int)(sc->nmtri / 16384 + 1);
     rt_par_run(nt, rt_commit_mesh_part, j);
-    const int cull = o && o->ncull > 0;
     size_t kept = 0;
     for (int k = 0; k < nt; k++) {
         kept += j->kept[k];
-        for (int i = 0; i < 3 && cull; i++) {
+        for (int i = 0; i < 3; i++) {
             bb[i] = fmin(bb[i], j->bb[k][i]);
             bb[3 + i] = fmax(bb[3 + i], j->bb[k][3 + i]);
         }
     }
-    for (size_t mi = 0; mi < sc->nmesh && !cull; mi++) /* the boxes made when added */
-        for (int i = 0; i < 3; i++) {
-            bb[i] = fmin(bb[i], sc->mesh[mi].bb[i]);
-            bb[3 + i] = fmax(bb[3 + i], sc->mesh[mi].bb[3 + i]);
-        }
-    const size_t base = j->base;
     free(j);
-    free(tpl);
-    uint32_t (*in)[3] = sc->mtri.p;
-    sc->ctri = in;
-    sc->ctri_owned = 0;
     if (kept < sc->nmtri) { /* close the gaps, in order, in a copy of the index triples */
         sc->ctri = rt_alloc_array(kept ? kept : 1, sizeof *sc->ctri);
-        if (!sc->ctri)
+        if (!sc->ctri) {
+            free(cut);
             return RT_ERR_NOMEM;
-        sc->ctri_owned = 1;
-        size_t w = 0;
-        for (size_t t = 0; t < sc->nmtri; t++) {
-            if (sc->prim[base + t].id == RT_CULLED)
-                continue;
-            sc->prim[base + w] = sc->prim[base + t];
-            sc->prim[base + w].data = (uint32_t)(base + w);
-            memcpy(sc->ctri[w], in[t], sizeof *sc->ctri);
-            w++;
         }
+        sc->ctri_owned = 1;
+        size_t w = 0, mi = 0;
+        for (size_t t = 0; t < sc->nmtri; t++) {
+            for (; t >= sc->mesh[mi].t0 + sc->mesh[mi].nt; mi++) /* meshes before t's */
+                sc->cmesh[mi].end = sc->ntri_plain + w;
+            if (!cut[t])
+                memcpy(sc->ctri[w++], in[t], sizeof *sc->ctri);
+        }
+        for (; mi < sc->nmesh; mi++)
+            sc->cmesh[mi].end = sc->ntri_plain + w;
     }
+    free(cut);
     sc->nprim += kept;
     sc->ntri = sc->ntri_plain + kept;
     return RT_OK;
 }
 
-/* The committed arrays of every kind for the input (prim: the triangles' records grown in
-   place unless culling makes a copy). RT_OK or RT_ERR_NOMEM. */
+/* The committed arrays of every kind for the input (prim: the plain triangles' records grown
+   in place unless culling makes a copy; mesh triangles have none). RT_OK or RT_ERR_NOMEM. */
 static int rt_commit_alloc(rt_scene *sc, const rt_build_options *o)
 {
     const size_t n = sc->nin;
     if (o && o->ncull > 0) {
-        sc->prim = rt_alloc_array(sc->nintri + sc->nmtri + n, sizeof *sc->prim);
+        sc->prim = rt_alloc_array(sc->nintri + n + 1, sizeof *sc->prim);
         sc->prim_owned = 1;
-    } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + sc->nmtri + n + 1, sizeof(rt_prim))) {
+    } else if (rt_big_grow(&sc->in_tri_prim, sc->nintri + n + 1, sizeof(rt_prim))) {
         sc->prim = in_tri_prims(sc); /* the other kinds' records follow the triangles' */
     }
     sc->quad = rt_alloc_array(n, sizeof *sc->quad);
@@ -1407,17 +1397,17 @@ static int rt_commit_poly(rt_scene *sc, const rt_in_prim *in, const double *v, s
     return 1;
 }
 
-/* Stable partition of the records from first on: quads, then the rest, so that the prim
-   index alone selects the fast paths (i < ntri: a triangle; i < ntri + nquad: quad[i -
-   ntri]). RT_OK or RT_ERR_NOMEM. */
+/* Stable partition of the stored records from first on (to the last, of primitive nprim -
+   1): quads, then the rest, so that the prim index alone selects the fast paths (i < ntri: a
+   triangle; i < ntri + nquad: quad[i - ntri]). RT_OK or RT_ERR_NOMEM. */
 static int rt_quads_first(rt_scene *sc, size_t first)
 {
-    const size_t nrest = sc->nprim - first;
+    const size_t last = sc->nprim - (sc->ntri - sc->ntri_plain), nrest = last - first;
     rt_prim *tmp = rt_alloc_array(nrest, sizeof *tmp);
     if (!tmp)
         return RT_ERR_NOMEM;
     size_t qa = 0, qb = sc->nquad;
-    for (size_t i = first; i < sc->nprim; i++) {
+    for (size_t i = first; i < last; i++) {
         if (sc->prim[i].kind == RT_KIND_QUAD)
             tmp[qa++] = sc->prim[i];
         else
@@ -1441,7 +1431,8 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         rc = rt_commit_mesh(sc, o, bb);
     if (rc != RT_OK)
         return rc;
-    const size_t first = sc->nprim; /* the other kinds from here */
+    const size_t nmc = sc->ntri - sc->ntri_plain, first = sc->nprim - nmc; /* the other
+                                                      kinds' records from here */
     for (size_t id = 0; id < sc->nin; id++) {
         const rt_in_prim *in = &sc->in[id];
         const double *v = sc->in_xyz + in->xyz0;
@@ -1456,7 +1447,7 @@ static int rt_commit_prims(rt_scene *sc, const rt_build_options *o)
         double pb[6], c[3], ext;
         if (!rt_points_frame(v, nv, pb, c, &ext))
             continue;
-        rt_prim *pr = &sc->prim[sc->nprim];
+        rt_prim *pr = &sc->prim[sc->nprim - nmc];
         memset(pr, 0, sizeof *pr);
         rc = rt_prim_init(sc, pr, in->id, in->front, in->back);
         if (rc != RT_OK)
@@ -1691,7 +1682,7 @@ static int rt_vd_commit(rt_scene *sc)
     if (!sc->prim_vd)
         return RT_ERR_NOMEM;
     for (size_t i = 0; i < sc->nprim; i++) {
-        uint32_t id = (uint32_t)sc->prim[i].id;
+        uint32_t id = (uint32_t)rt_prim_id(sc, i);
         size_t lo = 0, hi = sc->nvd; /* records are in ascending id order */
         while (lo < hi) {
             size_t mid = lo + (hi - lo) / 2;
@@ -1731,7 +1722,9 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
     }
     const size_t nmt = sc->ntri - sc->ntri_plain, mvb = 3 * sizeof(double) +
         (sc->mv_n.p ? 3 * sizeof(float) : 0) + (sc->mv_c.p ? 3 * sizeof(float) : 0);
-    sc->tri_bytes = sc->ntri * sizeof *sc->prim + sc->ntri_plain * sizeof *sc->tri +
+    /* the records: the plain triangles' and, per mesh, one for its triangles */
+    const size_t cmesh_bytes = nmt ? sc->nmesh * sizeof *sc->cmesh : 0;
+    sc->tri_bytes = sc->ntri_plain * (sizeof *sc->prim + sizeof *sc->tri) + cmesh_bytes +
                     nmt * 3 * sizeof(uint32_t) + sc->nmv * mvb;
     /* the second level's cell offsets: 2 B per cell and one per sub-grid, or 4 B per cell
        and one (rt_internal.h) */
@@ -1746,7 +1739,7 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                                         (sc->grid.odist ? 8 * sc->grid.ncells * sizeof(uint8_t) : 0) +
                                         rt_leaves_bytes(&sc->grid)
                                   : 0;
-    sc->memory_bytes = sizeof *sc + sc->nprim * sizeof *sc->prim +
+    sc->memory_bytes = sizeof *sc + (sc->nprim - nmt) * sizeof *sc->prim + cmesh_bytes +
                        sc->ntri_plain * sizeof *sc->tri + nmt * 3 * sizeof(uint32_t) +
                        sc->nmv * mvb +
                        sc->nquad * sizeof *sc->quad +

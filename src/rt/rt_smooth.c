@@ -132,7 +132,7 @@ static const rt_mesh *rt_mesh_of(const rt_scene *sc, uint32_t id)
 static int rt_smooth_mesh(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
                           double n[3], double ps[3], double rgb[3])
 {
-    const rt_mesh *m = rt_mesh_of(sc, (uint32_t)sc->prim[i].id);
+    const rt_mesh *m = rt_mesh_of(sc, (uint32_t)rt_prim_id(sc, i));
     if (!m || (!m->has_n && !m->has_c))
         return 0;
     const double ax = fabs(ng[0]), ay = fabs(ng[1]), az = fabs(ng[2]);

@@ -703,7 +703,7 @@ static inline __attribute__((always_inline)) int rt_transmit_prim(rt_ctx *c, con
     double t;
     if (!rt_isect_prim(sc, r, i, r->tmin, r->tmax, &t))
         return 1;
-    const rt_prim *p = &sc->prim[i];
+    const rt_prim *p = rt_prim_rec(sc, i); /* (opacity and surfaces) */
     if (any_hit || p->opaque) {
         *T = 0.0;
         c->blocker = p->opaque ? (long)i : -1;
@@ -1023,7 +1023,7 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, 
             rt_nearest_update(sc, r, i, t, &w->best, &w->bi, &w->ebest);
         } else {
             w->T = 0.0;
-            w->c->blocker = sc->prim[i].opaque ? (long)i : -1;
+            w->c->blocker = rt_prim_opaque(sc, i) ? (long)i : -1;
             return 1;
         }
     }
@@ -1571,9 +1571,8 @@ int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i)
 /* also the packet path's (rt_packet.h) */
 void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit *h)
 {
-    const rt_prim *p = &sc->prim[i];
     h->t = t;
-    h->prim = p->id;
+    h->prim = rt_prim_id(sc, (size_t)i);
     rt_prim_ng(sc, (size_t)i, h->ng);
     for (int j = 0; j < 3; j++)
         h->p[j] = r->o[j] + t * r->d[j];

@@ -9,7 +9,9 @@
  * rays over a scene of mesh triangles only (rt_occluded's any-hit lists of mesh triangles, one
  * per axis order of the rays) answer as without a grid. Ties between a mesh's triangles go to
  * the one given first although the mesh is stored in spatial order. Vertices that no kept
- * triangle uses leave the grid of a rotated frame as it is.
+ * triangle uses leave the grid of a rotated frame as it is. Mesh triangles keep no record of
+ * their own: each takes its mesh's id and surfaces, also when culling leaves a mesh out or in
+ * part.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -515,6 +517,115 @@ static void test_unused_vertices_frame(void **state)
     assert_true(gi[1].hash == gi[0].hash);
 }
 
+/* Meshes keep no record per triangle: their committed triangles take their mesh's id and
+ * surfaces (rt_prim_at). Five meshes of four triangles side by side (two unit squares each,
+ * mesh k over x in [3k, 3k + 2]; mesh 3 transparent), a lone triangle before them and a
+ * quad after them, whole and culled at x = 7.5 (meshes 0 and 1 wholly left out, mesh 2 half):
+ * every committed primitive's record, the scene's bytes of triangle records, and the ids the
+ * rays down onto each triangle hit, with the grid and by brute force, single and in packets. */
+enum { NMESH = 5 };
+
+static rt_scene *meshes_scene(int cull, int grid, int *mid)
+{
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface su;
+    rt_surface_default(&su);
+    int s[NMESH];
+    for (int k = 0; k < NMESH; k++) {
+        su.transparency = k == 3 ? 0.5 : 0.0;
+        s[k] = rt_scene_add_surface(sc, &su);
+        assert_true(s[k] >= 0);
+    }
+    const int three = 3, four = 4;
+    const double lone[9] = {15, 0, 0, 16, 0, 0, 15, 1, 0};
+    assert_int_equal(rt_scene_add_polygon(sc, 1, &three, lone, s[0], s[0]), 0);
+    for (int k = 0; k < NMESH; k++) {
+        double v[6][3];
+        for (int j = 0; j < 6; j++) { /* 0 1 2 along y = 0, 3 4 5 along y = 1 */
+            v[j][0] = 3.0 * k + j % 3;
+            v[j][1] = j / 3;
+            v[j][2] = 0.0;
+        }
+        const uint32_t ix[12] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+        mid[k] = rt_scene_add_mesh(sc, 6, &v[0][0], NULL, NULL, 4, ix, s[k], s[k]);
+        assert_int_equal(mid[k], k + 1);
+    }
+    const double quad[12] = {18, 0, 0, 19, 0, 0, 19, 1, 0, 18, 1, 0};
+    assert_int_equal(rt_scene_add_polygon(sc, 1, &four, quad, s[1], s[1]), NMESH + 1);
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = grid ? -1 : 1000;
+    bo.threads = 2;
+    if (cull) {
+        bo.ncull = 1;
+        bo.cull[0][0] = 1;
+        bo.cull[0][3] = -7.5;
+        bo.cull_eps = 1e-9;
+    }
+    assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+    return sc;
+}
+
+static void test_mesh_records(void **state)
+{
+    (void)state;
+    for (int c = 0; c < 4; c++) {
+        const int cull = c & 1, grid = c >> 1;
+        int mid[NMESH];
+        rt_scene *sc = meshes_scene(cull, grid, mid);
+        /* the kept triangles per mesh, in mesh order after the lone one */
+        const size_t kept[NMESH] = {cull ? 0 : 4, cull ? 0 : 4, cull ? 2 : 4, 4, 4};
+        size_t nmt = 0;
+        for (int k = 0; k < NMESH; k++)
+            nmt += kept[k];
+        assert_int_equal(sc->ntri_plain, 1);
+        assert_int_equal(sc->ntri, 1 + nmt);
+        assert_int_equal(sc->nprim, 2 + nmt);
+        size_t i = 1;
+        for (int k = 0; k < NMESH; k++)
+            for (size_t t = 0; t < kept[k]; t++, i++) {
+                const rt_prim p = rt_prim_at(sc, i);
+                assert_int_equal(p.id, mid[k]);
+                assert_int_equal(p.kind, RT_KIND_TRI);
+                assert_int_equal(p.data, i);
+                assert_int_equal(p.opaque, k != 3);
+                assert_int_equal(rt_prim_id(sc, i), mid[k]);
+                assert_int_equal(rt_prim_opaque(sc, i), k != 3);
+                assert_true(rt_prim_surf(sc, &p, 0)->transparency == (k == 3 ? 0.5 : 0.0));
+            }
+        assert_int_equal(rt_prim_at(sc, 0).id, 0);
+        assert_int_equal(rt_prim_at(sc, i).id, NMESH + 1);
+        assert_int_equal(rt_prim_at(sc, i).kind, RT_KIND_QUAD);
+        assert_int_equal(rt_prim_geo(sc, i).kind, RT_KIND_QUAD);
+        /* the records' bytes: the lone triangle's (record and vertices) and one per mesh */
+        assert_int_equal(sc->tri_bytes, sizeof(rt_prim) + sizeof(rt_tri) + NMESH * sizeof(rt_cmesh) +
+                                            nmt * 3 * sizeof(uint32_t) + NMESH * 6 * 3 * sizeof(double));
+        /* rays down onto the centre of each triangle */
+        rt_ray r[4 * NMESH + 2];
+        int want[4 * NMESH + 2];
+        int n = 0;
+        for (int k = 0; k < NMESH; k++)
+            for (int q = 0; q < 4; q++) {
+                const double x = 3.0 * k + (q >= 2) + (q % 2 ? 0.3 : 0.7), y = q % 2 ? 0.7 : 0.3;
+                r[n] = (rt_ray){.org = {x, y, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
+                want[n++] = cull && (k < 2 || (k == 2 && q < 2)) ? -1 : mid[k];
+            }
+        r[n] = (rt_ray){.org = {15.3, 0.3, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
+        want[n++] = 0;
+        r[n] = (rt_ray){.org = {18.5, 0.5, 5}, .dir = {0, 0, -1}, .tmin = 0, .tmax = INFINITY};
+        want[n++] = NMESH + 1;
+        rt_hit h[4 * NMESH + 2], hp[4 * NMESH + 2];
+        assert_int_equal(rt_intersect(sc, (size_t)n, r, h), RT_OK);
+        assert_int_equal(rt_intersect_packet(sc, (size_t)n, r, hp), RT_OK);
+        for (int k = 0; k < n; k++) {
+            assert_int_equal(h[k].prim, want[k]);
+            assert_int_equal(hp[k].prim, want[k]);
+        }
+        rt_scene_free(sc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -526,6 +637,7 @@ int main(void)
         cmocka_unit_test(test_tie_given_first),
         cmocka_unit_test(test_given_order_back),
         cmocka_unit_test(test_unused_vertices_frame),
+        cmocka_unit_test(test_mesh_records),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
