@@ -637,6 +637,125 @@ static void test_area_attrs_kept_and_renewed(void **state)
     remove("test_attrs_memo18.png");
 }
 
+/* The number the core gives an area's resolved attributes (gks_prim.attr_gen), on which a
+ * driver may reuse what it made of the last area's attributes: the same while nothing that
+ * feeds them changes, a new one after each kind of change below (an individual attribute,
+ * an aspect source flag, a bundle representation, the colour table, the lighting and
+ * shading attributes, the view index, the identifiers, edges of FILL AREA SET 3 against
+ * FILL AREA 3, the workstation opened again), 0 for a pattern (not kept). And over every
+ * area received: two areas of one non-zero number have the same attributes. */
+static uint64_t area3(void)
+{
+    Gpoint3 p[3] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.5, 0.9, 0.5 } };
+    Gpoint_list3 l = { 3, p };
+    gfill_area3(&l);
+    return last()->attr_gen;
+}
+
+/* One change: the next area has a new number, kept by the area after it; field says the
+ * change reached the primitive (compared with the area before the change). */
+#define GEN_CHANGED(change, field)                                                         \
+    do {                                                                                   \
+        const gks_prim before = *last();                                                   \
+        change;                                                                            \
+        const uint64_t g_ = area3();                                                       \
+        assert_true(g_ != 0 && g_ != before.attr_gen);                                      \
+        assert_true(memcmp(&before.field, &last()->field, sizeof before.field) != 0);      \
+        assert_true(area3() == g_);                                                        \
+    } while (0)
+
+/* The attributes of p, all but the geometry, with the geometry's fields cleared. */
+static gks_prim attrs_only(const gks_prim *p)
+{
+    gks_prim a;
+    memcpy(&a, p, sizeof a); /* with its padding: compared bytewise */
+    a.n_loops = a.n_points = 0;
+    a.loop_counts = NULL;
+    a.pts = NULL;
+    return a;
+}
+
+static void test_area_attr_gen(void **state)
+{
+    (void)state;
+    gopen_ws(2, "test_attrs_gen", GWS_TYPE_PNG);
+    gactivate_ws(2);
+    gdeactivate_ws(1);
+    gset_fill_int_style(GSTYLE_SOLID);
+    gset_fill_colr_ind(2);
+    const uint64_t g0 = area3();
+    assert_true(g0 != 0);
+    assert_true(area3() == g0);
+    /* an individual attribute, the colour table */
+    GEN_CHANGED(gset_fill_colr_ind(3), colour);
+    GEN_CHANGED(gset_colr_rep(2, 3, &(Gcolr_rep){ { 0.25, 0.5, 0.75 } }), colour);
+    /* an aspect source flag, then the bundle it selects */
+    Gfill_bundle fb = { GSTYLE_SOLID, 1, 4 };
+    gset_fill_rep(2, 6, &fb);
+    gset_fill_ind(6);
+    Gasfs a;
+    memset(&a, 0, sizeof a);
+    for (Gasf *f = &a.linetype; f <= &a.fill_colr_ind; f++)
+        *f = GASF_INDIV;
+    a.fill_colr_ind = GASF_BUNDLED;
+    GEN_CHANGED(gset_asfs(&a), colour);
+    fb.colr_ind = 5;
+    GEN_CHANGED(gset_fill_rep(2, 6, &fb), colour);
+    /* the lighting and shading attributes, the view index, the identifiers */
+    GEN_CHANGED(gset_area_props(&(Garea_props){ 0.1, 0.7, 0.2, { 1, 1, 1 }, 2, 0, 1 }),
+                area_props[0]);
+    GEN_CHANGED(gset_back_area_props(&(Garea_props){ 0.3, 0.5, 0, { 1, 0, 1 }, 1, 0, 1 }),
+                area_props[1]);
+    GEN_CHANGED(gset_refl_eq(GREFL_AMB_DIFF), refl_eq[0]);
+    GEN_CHANGED(gset_back_refl_eq(GREFL_AMBIENT), refl_eq[1]);
+    Gint on = 2;
+    GEN_CHANGED(gset_light_src_state(&(Gint_list){ 1, &on }, NULL), light_mask);
+    GEN_CHANGED(gset_int_shad_meth(GSHAD_NORM), shading[0]);
+    GEN_CHANGED(gset_view_ind(1), view_ind);
+    GEN_CHANGED(gset_hlhsr_id(4), attrs.hlhsr_id);
+    GEN_CHANGED(gset_pick_id(8), attrs.pick_id);
+    /* edges: FILL AREA SET 3 has them, FILL AREA 3 with the same attributes not */
+    gset_edge_flag(GEDGE_ON);
+    const uint64_t g_area = area3();
+    Gpoint3 p[3] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.5, 0.9, 0.5 } };
+    Gpoint_list3 l = { 3, p };
+    gfill_area_set3(&(Gpoint_list_list3){ 1, &l });
+    const uint64_t g_set = last()->attr_gen;
+    assert_int_equal(last()->attrs.edge_flag, 1);
+    assert_true(g_set != 0 && g_set != g_area);
+    assert_true(area3() == g_area);
+    assert_int_equal(last()->attrs.edge_flag, 0);
+    gfill_area_set3(&(Gpoint_list_list3){ 1, &l });
+    assert_true(last()->attr_gen == g_set);
+    /* the same workstation closed and opened again */
+    const uint64_t g_old = area3();
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    gopen_ws(2, "test_attrs_gen", GWS_TYPE_PNG);
+    gactivate_ws(2);
+    const uint64_t g_new = area3();
+    assert_true(g_new != 0 && g_new != g_old);
+    /* a pattern: no number */
+    gset_fill_int_style(GSTYLE_PAT);
+    gset_fill_style_ind(1);
+    assert_true(area3() == 0);
+    assert_int_equal(last()->attrs.int_style, GSTYLE_PAT);
+    gset_fill_int_style(GSTYLE_SOLID);
+    assert_true(area3() != 0);
+    /* every pair of areas received with one number: the same attributes */
+    assert_true(cap.n <= CAP_MAX_PRIMS);
+    for (int i = 0; i < cap.n; i++)
+        for (int j = i + 1; j < cap.n; j++) {
+            if (cap.rec[i].p.attr_gen == 0 || cap.rec[i].p.attr_gen != cap.rec[j].p.attr_gen)
+                continue;
+            const gks_prim x = attrs_only(&cap.rec[i].p), y = attrs_only(&cap.rec[j].p);
+            assert_memory_equal(&x, &y, sizeof x);
+        }
+    gdeactivate_ws(2);
+    gclose_ws(2);
+    remove("test_attrs_gen.png");
+}
+
 /* The same switch observed in pixels: a solid triangle drawn with the individual colour
  * (blue) and then, after SET ASPECT SOURCE FLAGS, with the bundled one (red, fill bundle
  * 6). Exact colours at the centroid: solid fills have no anti-aliasing here. */
@@ -812,6 +931,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_description_tables, setup, teardown),
         cmocka_unit_test_setup_teardown(test_asf_resolution_at_driver, setup, teardown),
         cmocka_unit_test_setup_teardown(test_area_attrs_kept_and_renewed, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_area_attr_gen, setup, teardown),
         cmocka_unit_test_setup_teardown(test_asf_in_pixels, setup, teardown),
         cmocka_unit_test_setup_teardown(test_text_extent, setup, teardown),
         cmocka_unit_test_setup_teardown(test_derived_fonts, setup, teardown),

@@ -91,6 +91,8 @@ typedef struct gks_area_memo {
     gks_cur_attrs a;
     gks_prim p;                 /* the primitive sent, geometry set by each caller */
     int edge_flag;              /* p.attrs.edge_flag as resolved */
+    uint64_t attr_gen;          /* p.attr_gen for a FILL AREA SET (+ 1: the same without
+                                   edges, for a FILL AREA whose edge flag is cleared) */
 } gks_area_memo;
 
 typedef struct gks_norm_tran {
@@ -154,6 +156,8 @@ typedef struct gks_context {
     uint64_t tables_gen;           /* changes with every change of a workstation's bundle,
                                       pattern or colour table and at OPEN and CLOSE
                                       WORKSTATION (gks_ws_tables_changed) */
+    uint64_t prim_attr_gen;        /* the last gks_prim.attr_gen given (gks_area_memo:
+                                      2 per resolved set of attributes), never reset */
 } gks_context;
 
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.

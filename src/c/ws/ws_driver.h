@@ -154,6 +154,13 @@ typedef struct gks_prim {
     int has_fnormal;
     Gvec3 fnormal;
     int shading[2];           /* front, back interior shading method, GSHAD_* (1..3) */
+    /* A number for the attributes: every field above but the geometry (n_loops,
+     * loop_counts, n_points, pts) and the data (vnormals, vcolours, has_fnormal, fnormal).
+     * Two primitives with the same non-zero attr_gen have the same attributes, so a
+     * driver that keeps what it made of the last one's may reuse it without looking at
+     * them; 0: no such promise (compare them). The core never gives a number to two
+     * different sets of attributes in a process. */
+    uint64_t attr_gen;
 } gks_prim;
 
 /* TEXT (3) as text, for a driver that draws the characters itself (the optional entry

@@ -267,8 +267,8 @@ int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[
     return 0;
 }
 
-gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
-                             gks_prim *buf, Grgb **pattern, int *err)
+gks_prim *gks_attr_area_make(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                             int edges, gks_prim *buf, Grgb **pattern, int *err)
 {
     gks_context *c = gks_ctx();
     gks_area_memo *e = &c->sl->area_memo[(unsigned)ws->id % GKS_MAX_OPEN_WS];
@@ -282,21 +282,27 @@ gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const dou
         ((gen && e->attrs_gen == gen) || memcmp(&e->a, a, sizeof *a) == 0)) {
         assert(memcmp(&e->a, a, sizeof *a) == 0); /* a write past gks_attrs_w */
         e->attrs_gen = gen;
-        e->p.attrs.edge_flag = e->edge_flag; /* the caller may have cleared it */
-        return &e->p;
+        return gks_attr_area_kept(e, edges);
     }
     *buf = (gks_prim){ .kind = GKS_PRIM_FILL_AREA, .n_loops = 1 };
     gks_pipe_prim_common(buf, a);
     *err = gks_attr_prim_fill(ws, a, m, buf, pattern);
+    const int flag = buf->attrs.edge_flag;
+    if (!edges)
+        buf->attrs.edge_flag = 0;
     if (*err || *pattern) {
         e->ws = NULL;
-        return buf;
+        return buf; /* attr_gen 0: not kept */
     }
     e->ws = ws;
     e->tables_gen = c->tables_gen;
     e->attrs_gen = gen;
     memcpy(&e->a, a, sizeof *a); /* with its padding: compared bytewise */
+    e->edge_flag = flag;
+    /* a new number for the set with edges (as resolved) and the next for it without */
+    c->prim_attr_gen += 2;
+    e->attr_gen = c->prim_attr_gen - 1;
+    buf->attr_gen = e->attr_gen + (uint64_t)(flag && !edges);
     e->p = *buf;
-    e->edge_flag = buf->attrs.edge_flag;
     return &e->p;
 }

@@ -13,6 +13,8 @@
 #include "gks_private.h"
 #include "gks_context.h"
 #include "gks_text_layout.h"
+#include <assert.h>
+#include <string.h>
 
 /* The workstation's output description table (never NULL). */
 const gks_wdt_output *gks_attr_wdt(const gks_ws *ws);
@@ -49,12 +51,41 @@ int gks_attr_prim_fill(const gks_ws *ws, const gks_cur_attrs *a, const double m[
                        gks_prim *p, Grgb **pattern);
 /* The primitive of an area for ws: zero but for kind GKS_PRIM_FILL_AREA, n_loops 1, the
  * attributes of gks_pipe_prim_common and gks_attr_prim_fill (the same values, *pattern
- * likewise, *err 0 or 300), resolved once while the current attributes a and the
- * workstation tables stay the same: the primitive kept in the state list
- * (gks_area_memo), or buf when it is not kept (a pattern, an error). The caller sets the
- * geometry and may clear attrs.edge_flag, nothing else, and sends it before the next call. */
-gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
-                             gks_prim *buf, Grgb **pattern, int *err);
+ * likewise, *err 0 or 300), attrs.edge_flag cleared unless edges (FILL AREA SET),
+ * resolved once while the current attributes a and the workstation tables stay the same:
+ * the primitive kept in the state list (gks_area_memo), with its attr_gen (a new number
+ * whenever it is made again; one for the set with edges, the next for the same cleared),
+ * or buf when it is not kept (a pattern, an error; attr_gen 0). The caller sets the
+ * geometry, nothing else, and sends it before the next call. gks_attr_area_prim is the
+ * common case inline (the state list's attributes unwritten since the primitive was kept),
+ * gks_attr_area_make every case. */
+gks_prim *gks_attr_area_make(const gks_ws *ws, const gks_cur_attrs *a, const double m[3][4],
+                             int edges, gks_prim *buf, Grgb **pattern, int *err);
+
+/* The primitive kept in e, for an area with edges or not (gks_attr_area_prim). */
+static inline gks_prim *gks_attr_area_kept(gks_area_memo *e, int edges)
+{
+    const int cleared = e->edge_flag && !edges;
+    e->p.attrs.edge_flag = e->edge_flag && edges;
+    e->p.attr_gen = e->attr_gen + (uint64_t)cleared;
+    return &e->p;
+}
+
+static inline gks_prim *gks_attr_area_prim(const gks_ws *ws, const gks_cur_attrs *a,
+                                           const double m[3][4], int edges, gks_prim *buf,
+                                           Grgb **pattern, int *err)
+{
+    const gks_context *c = gks_ctx();
+    gks_area_memo *e = &c->sl->area_memo[(unsigned)ws->id % GKS_MAX_OPEN_WS];
+    if (e->ws == ws && e->tables_gen == c->tables_gen && a == &c->sl->attrs &&
+        e->attrs_gen == c->sl->attrs_gen) {
+        assert(memcmp(&e->a, a, sizeof *a) == 0); /* a write past gks_attrs_w */
+        *pattern = NULL;
+        *err = 0;
+        return gks_attr_area_kept(e, edges);
+    }
+    return gks_attr_area_make(ws, a, m, edges, buf, pattern, err);
+}
 void gks_attr_prim_line(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 void gks_attr_prim_marker(const gks_ws *ws, const gks_cur_attrs *a, gks_prim *p);
 #endif

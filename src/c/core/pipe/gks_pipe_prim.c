@@ -258,13 +258,12 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
     while (!err && (ws = gks_pipe_next_ws(t))) {
         gks_prim buf, *p;
         Grgb *pat;
-        p = gks_attr_area_prim(ws, t->a, t->pat_m, &buf, &pat, &err);
+        /* GKS-3D edges belong to FILL AREA SET */
+        p = gks_attr_area_prim(ws, t->a, t->pat_m, is_set, &buf, &pat, &err);
         p->n_loops = nl;
         p->loop_counts = counts;
         p->n_points = m;
         p->pts = pts;
-        if (!is_set)
-            p->attrs.edge_flag = 0; /* GKS-3D edges belong to FILL AREA SET */
         if (!err)
             err = gks_pipe_send(ws, p);
         if (pat)
