@@ -2,10 +2,10 @@
 /*
  * test_ws_dlist.c -- the render layer's display list (src/c/ws/render/ws_dlist.h): records
  * with their vertices, per-vertex data, counts and indices read back as written; equal
- * consecutive attributes stored once; chunks that never move once written, sealed to the
- * sink in order; released chunks freed, those a reader still keeps not (two readers on one
- * list, each reading and counting its own records); a record larger than a chunk in a chunk
- * of its own; the last record taken
+ * consecutive attributes stored once (by their bytes or by the caller's key); chunks that
+ * never move once written, sealed to the sink in order; released chunks freed, those a
+ * reader still keeps not (two readers on one list, each reading and counting its own
+ * records); a record larger than a chunk in a chunk of its own; the last record taken
  * back; counts out of range refused; and every allocation of a workload failed in turn
  * (gks_alloc_fail_after): 300 and the list as before the failing call. And gks_populate,
  * with which a new chunk's pages are made present: contents kept, no fault left to take.
@@ -399,6 +399,81 @@ static void test_unappend_and_limits(void **state)
     ws_dlist_free(dl);
 }
 
+/* Appends a keyed polygon record (ws_dlist_append_keyed) of 3 vertices; a NULL: by the key
+ * alone. Returns its result. */
+static int add_keyed(ws_dlist *dl, unsigned reader, uint64_t key, const attr *a)
+{
+    ws_dl_put p;
+    const ws_dl_need need = { .n_vtx = 3, .n_loops = 1 };
+    int e = ws_dlist_append_keyed(dl, reader, 7, 0, key, a, sizeof(attr), &need, &p);
+    if (!e) {
+        memset(p.xyz, 0, 9 * sizeof *p.xyz);
+        p.loops[0] = 3;
+    }
+    return e;
+}
+
+/* Keyed attributes: a record after the last one appended, of the same reader and non-zero
+ * key, shares its attributes without them (attr NULL); any other case asks for them (-1,
+ * the list unchanged) or compares their bytes as ws_dlist_append does. */
+static void test_keyed(void **state)
+{
+    (void)state;
+    ws_dlist *dl = ws_dlist_new();
+    const attr a = { { 0.5, 0, 1 }, 4 }, b = { { 0, 1, 0 }, 4 };
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 5, NULL), -1); /* no record yet */
+    assert_null(ws_dlist_first(dl));
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 5, &a), 0);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 5, NULL), 0);
+    const ws_dl_chunk *c = ws_dlist_first(dl);
+    assert_int_equal(c->n_rec, 2);
+    assert_int_equal(c->rec[1].attr, c->rec[0].attr);
+    assert_memory_equal(c->attr + c->rec[1].attr, &a, sizeof a);
+    /* another key, key 0, another reader's record between: the attributes are asked for */
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 6, NULL), -1);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 0, NULL), -1);
+    assert_int_equal(c->n_rec, 2);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 6, &b), 0);
+    assert_int_not_equal(c->rec[2].attr, c->rec[1].attr);
+    assert_memory_equal(c->attr + c->rec[2].attr, &b, sizeof b);
+    assert_int_equal(add_keyed(dl, WS_DL_CLASSIC, 6, NULL), -1);
+    assert_int_equal(add_classic(dl, 8), 0);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 6, NULL), -1);
+    /* an equal key's bytes are not compared: the record after an unkeyed one compares them */
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 6, &b), 0);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, &b), 0);
+    assert_int_equal(c->rec[5].attr, c->rec[4].attr);
+    /* the last record taken back: the key before it again */
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 8, &a), 0);
+    ws_dlist_unappend(dl);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 8, NULL), -1);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), 0);
+    assert_int_equal(c->rec[6].attr, c->rec[5].attr);
+    /* a record sharing them taken back: the fills as before, the key kept */
+    const size_t nr = c->n_rec, nx = c->n_xyz, nc = c->n_cnt, na = c->n_attr;
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), 0);
+    ws_dlist_unappend(dl);
+    assert_true(c->n_rec == nr && c->n_xyz == nx && c->n_cnt == nc && c->n_attr == na);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 6);
+    /* a new chunk copies them: asked for at the chunk's end, and after a seal */
+    const size_t n = c->cap[0] - c->n_rec;
+    for (size_t k = 0; k < n; k++)
+        assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), 0);
+    assert_null(c->next);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), -1);
+    assert_null(c->next);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, &b), 0);
+    assert_non_null(c->next);
+    assert_memory_equal(c->next->attr + c->next->rec[0].attr, &b, sizeof b);
+    ws_dlist_seal(dl);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), -1);
+    assert_int_equal(ws_dlist_count(dl, WS_DL_TRACER), 6 + n + 1);
+    /* a new frame forgets the key */
+    ws_dlist_reset(dl);
+    assert_int_equal(add_keyed(dl, WS_DL_TRACER, 7, NULL), -1);
+    ws_dlist_free(dl);
+}
+
 /* A workload of 3000 records (some of them large, with data) and a seal; each failing
  * append must return 300 and leave the list as it was. Returns the failures seen. */
 static int workload(ws_dlist *dl, sink_log *log)
@@ -517,6 +592,7 @@ int main(void)
         cmocka_unit_test(test_release),
         cmocka_unit_test(test_two_readers),
         cmocka_unit_test(test_unappend_and_limits),
+        cmocka_unit_test(test_keyed),
         cmocka_unit_test(test_oom),
         cmocka_unit_test(test_populate),
     };

@@ -32,6 +32,12 @@ struct ws_dlist {
     ws_dl_chunk *undo_chunk;
     size_t undo[N_ARR];
     int undo_reader;
+    int undo_plain;            /* append_plain's: only n_rec, n_xyz, n_cnt changed */
+    uint64_t undo_key;
+    const ws_dl_chunk *undo_key_chunk;
+    /* the key of the last record appended (ws_dlist_append_keyed; 0: none) and its chunk */
+    uint64_t key;
+    const ws_dl_chunk *key_chunk;
     /* released chunks kept for the next ones of the same size (at most N_SPARE, linked by
        next): their pages are already in memory, where a new block would be first-touched
        memory again (the tracer's worker releases a chunk every ~2000 areas) */
@@ -76,6 +82,8 @@ void ws_dlist_reset(ws_dlist *dl)
     dl->spare = NULL;
     dl->n_spare = 0;
     dl->first = dl->cur = dl->undo_chunk = NULL;
+    dl->key = 0;
+    dl->key_chunk = NULL;
     memset(dl->n_rec, 0, sizeof dl->n_rec);
     dl->bytes = 0;
     dl->used_arr = 0;
@@ -222,14 +230,19 @@ static int need_of(const ws_dl_need *need, size_t attr_size, size_t want[N_ARR])
     return 0;
 }
 
-/* The attributes of c's last record are attr (attr_size bytes). */
-static int same_attr(const ws_dl_chunk *c, const void *attr, size_t attr_size)
+/* The attributes of c's last record are reader's attributes of key and attr (attr_size
+ * bytes): by the key (ws_dlist_append_keyed), else by their bytes (attr NULL: never). */
+static int same_attr(const ws_dlist *dl, const ws_dl_chunk *c, unsigned reader, uint64_t key,
+                     const void *attr, size_t attr_size)
 {
     if (!c->n_rec)
         return 0;
     const ws_dl_rec *l = &c->rec[c->n_rec - 1];
-    return l->attr_size == attr_size &&
-           (attr_size == 0 || memcmp(c->attr + l->attr, attr, attr_size) == 0);
+    if (l->attr_size != attr_size)
+        return 0;
+    if (key && key == dl->key && c == dl->key_chunk && l->reader == reader)
+        return 1; /* the last record appended, with these attributes */
+    return attr && (attr_size == 0 || memcmp(c->attr + l->attr, attr, attr_size) == 0);
 }
 
 static int fits(ws_dl_chunk *c, const size_t want[N_ARR])
@@ -256,6 +269,9 @@ static void undo_note(ws_dlist *dl, ws_dl_chunk *c, unsigned reader)
     dl->undo[A_IDX] = c->n_idx;
     dl->undo[A_ATTR] = c->n_attr;
     dl->undo_reader = reader_ix(reader);
+    dl->undo_plain = 0;
+    dl->undo_key = dl->key;
+    dl->undo_key_chunk = dl->key_chunk;
 }
 
 /* The common record, made as ws_dlist_append's general path makes it: one facet of loops
@@ -263,18 +279,27 @@ static void undo_note(ws_dlist *dl, ws_dl_chunk *c, unsigned reader)
  * attributes of the previous record in the open current chunk, which has room for it (the
  * tracer's areas between attribute changes). Returns 0 (appended) or -1 (not this case:
  * nothing changed). */
-static int append_plain(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr,
-                        size_t attr_size, const ws_dl_need *need, ws_dl_put *put)
+static int append_plain(ws_dlist *dl, unsigned reader, int kind, int view, uint64_t key,
+                        const void *attr, size_t attr_size, const ws_dl_need *need,
+                        ws_dl_put *put)
 {
     ws_dl_chunk *c = dl->cur;
     const size_t nv = need->n_vtx, nl = (size_t)need->n_loops;
     if (!c || c->sealed || need->flags || need->n_facets || need->n_idx || need->data_size ||
         need->n_loops < 0 || (unsigned)kind > UCHAR_MAX || (unsigned)view > UCHAR_MAX ||
-        attr_size > UINT32_MAX / 4 || c->n_rec >= c->cap[A_REC] ||
-        nv > c->cap[A_XYZ] - c->n_xyz || nl > c->cap[A_CNT] - c->n_cnt ||
-        !same_attr(c, attr, attr_size))
-        return -1; /* n_vtx fits a chunk's 32-bit capacity, n_loops its counts */
-    undo_note(dl, c, reader);
+        c->n_rec >= c->cap[A_REC] || nv > c->cap[A_XYZ] - c->n_xyz ||
+        nl > c->cap[A_CNT] - c->n_cnt || !same_attr(dl, c, reader, key, attr, attr_size))
+        return -1; /* n_vtx fits a chunk's 32-bit capacity, n_loops its counts; attr_size
+                      is the last record's */
+    /* undo_note for the three fills this record changes */
+    dl->undo_chunk = c;
+    dl->undo[A_REC] = c->n_rec;
+    dl->undo[A_XYZ] = c->n_xyz;
+    dl->undo[A_CNT] = c->n_cnt;
+    dl->undo_reader = reader_ix(reader);
+    dl->undo_plain = 1;
+    dl->undo_key = dl->key;
+    dl->undo_key_chunk = dl->key_chunk;
     c->readers |= reader;
     ws_dl_rec *r = &c->rec[c->n_rec++];
     *r = (ws_dl_rec){ .kind = (unsigned char)kind, .view = (unsigned char)view,
@@ -288,27 +313,32 @@ static int append_plain(ws_dlist *dl, unsigned reader, int kind, int view, const
     *put = (ws_dl_put){ .rec = r, .xyz = nv ? c->xyz + 3 * (size_t)r->vtx : NULL,
                         .loops = nl ? c->cnt + r->cnt : NULL };
     dl->n_rec[dl->undo_reader]++;
+    dl->key = key;
+    dl->key_chunk = c;
     return 0;
 }
 
-int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
-                    const ws_dl_need *need, ws_dl_put *put)
+/* ws_dlist_append_keyed for every record append_plain does not make. */
+static int append_general(ws_dlist *dl, unsigned reader, int kind, int view, uint64_t key,
+                          const void *attr, size_t attr_size, const ws_dl_need *need,
+                          ws_dl_put *put)
 {
-    if (append_plain(dl, reader, kind, view, attr, attr_size, need, put) == 0)
-        return 0;
     size_t want[N_ARR];
     if (kind < 0 || kind > UCHAR_MAX || view < 0 || view > UCHAR_MAX ||
         need_of(need, attr_size, want))
         return 300;
-    for (int a = A_NRM; a <= A_IDX; a++) /* new chunks have room for these from now on */
-        if (want[a] && a != A_CNT)
-            dl->used_arr |= 1u << a;
     ws_dl_chunk *c = dl->cur;
-    int shared = c && !c->sealed && same_attr(c, attr, attr_size);
+    int shared = c && !c->sealed && same_attr(dl, c, reader, key, attr, attr_size);
     const size_t data_bytes = round8(need->data_size);
     if (shared)
         want[A_ATTR] = data_bytes;
-    if (!c || !fits(c, want)) {
+    const int fresh = !c || !fits(c, want);
+    if (!attr && attr_size && (fresh || !shared))
+        return -1; /* the attributes are copied: the caller gives them */
+    for (int a = A_NRM; a <= A_IDX; a++) /* new chunks have room for these from now on */
+        if (want[a] && a != A_CNT)
+            dl->used_arr |= 1u << a;
+    if (fresh) {
         want[A_ATTR] = round8(attr_size) + data_bytes;
         shared = 0;
         if (chunk_new(dl, want))
@@ -348,7 +378,24 @@ int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const voi
                         .idx = want[A_IDX] ? c->idx + r->idx : NULL,
                         .data = need->data_size ? c->attr + r->data : NULL };
     dl->n_rec[dl->undo_reader]++;
+    dl->key = key;
+    dl->key_chunk = c;
     return 0;
+}
+
+int ws_dlist_append_keyed(ws_dlist *dl, unsigned reader, int kind, int view, uint64_t key,
+                          const void *attr, size_t attr_size, const ws_dl_need *need,
+                          ws_dl_put *put)
+{
+    if (append_plain(dl, reader, kind, view, key, attr, attr_size, need, put) == 0)
+        return 0;
+    return append_general(dl, reader, kind, view, key, attr, attr_size, need, put);
+}
+
+int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr,
+                    size_t attr_size, const ws_dl_need *need, ws_dl_put *put)
+{
+    return ws_dlist_append_keyed(dl, reader, kind, view, 0, attr, attr_size, need, put);
 }
 
 void ws_dlist_unappend(ws_dlist *dl)
@@ -357,7 +404,10 @@ void ws_dlist_unappend(ws_dlist *dl)
     if (!c || c != dl->cur || c->sealed)
         return;
     for (int a = 0; a < N_ARR; a++)
-        *fill_of(c, a) = dl->undo[a];
+        if (!dl->undo_plain || a == A_REC || a == A_XYZ || a == A_CNT)
+            *fill_of(c, a) = dl->undo[a];
+    dl->key = dl->undo_key;
+    dl->key_chunk = dl->undo_key_chunk;
     dl->undo_chunk = NULL;
     dl->n_rec[dl->undo_reader]--; /* c->readers keeps the bit: a reader of c reads nothing */
 }

@@ -131,6 +131,17 @@ void ws_dlist_set_sink(ws_dlist *dl, ws_dlist_sink fn, void *user);
  * unchanged). */
 int ws_dlist_append(ws_dlist *dl, unsigned reader, int kind, int view, const void *attr, size_t attr_size,
                     const ws_dl_need *need, ws_dl_put *put);
+/* ws_dlist_append with a key for the attributes (0: none). A non-zero key that equals the
+ * key of the last record appended, when that record is reader's, of attr_size bytes of
+ * attributes and in the open current chunk, shares that record's attributes without
+ * comparing them: the caller promises that one reader never gives one non-zero key to two
+ * different attribute contents (such as gks_prim.attr_gen for attributes made from the
+ * primitive's alone). attr may be NULL: then the record is appended only when it shares
+ * them that way; otherwise -1 (nothing changed: call again with attr). Returns 0, 300 or
+ * -1. */
+int ws_dlist_append_keyed(ws_dlist *dl, unsigned reader, int kind, int view, uint64_t key,
+                          const void *attr, size_t attr_size, const ws_dl_need *need,
+                          ws_dl_put *put);
 /* Takes back the record just appended (before any other call on dl). */
 void ws_dlist_unappend(ws_dlist *dl);
 /* Seals the chunk being filled (to the sink) if it has records. */
