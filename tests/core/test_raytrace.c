@@ -957,6 +957,87 @@ static void test_threads_oriented(void **u)
     free(a.rgb);
 }
 
+/* Queued areas whose attributes change between calls: with 2 threads the display list's
+ * record after one of the same attribute number (gks_prim.attr_gen) shares its attributes
+ * unseen, so each kind of change that feeds the tracer's attributes must reach the next
+ * area. Eight columns of two triangles each, one change before each column: an individual
+ * colour, the colour table, an aspect source flag, a fill bundle, the area properties, the
+ * light sources' state (the ambient light off), the reflectance equation. The file equals
+ * the one thread's (which records each area with its own attributes), and each column
+ * differs from the one before it. */
+static Gasfs asfs_with(Gasf fill_colr)
+{
+    Gasfs a;
+    memset(&a, 0, sizeof a);
+    for (Gasf *f = &a.linetype; f <= &a.fill_colr_ind; f++)
+        *f = GASF_INDIV;
+    a.fill_colr_ind = fill_colr;
+    return a;
+}
+
+static void attr_changes_picture(const char *file, int threads)
+{
+    open_png(1, file, GHLHSR_RAYTRACE);
+    assert_int_equal(esc1(GESC_RT_THREADS, 1, threads), 0);
+    const Gasfs indiv = asfs_with(GASF_INDIV), bundled = asfs_with(GASF_BUNDLED);
+    gset_asfs(&indiv); /* as the picture before left them */
+    Glight_src_rep amb = { GLIGHT_AMBIENT, { 0.3, 0.3, 0.3 }, { 0, 0, 0 }, { 0, 0, 0 },
+                           { 1, 0 }, 0, 1 };
+    Glight_src_rep l = { GLIGHT_DIRECTIONAL, { 1, 1, 1 }, { 0, 0, 0 }, { 0, -0.6, -0.8 },
+                         { 1, 0 }, 0, 1 };
+    gset_light_src_rep(1, 1, &amb);
+    gset_light_src_rep(1, 2, &l);
+    Grgb c = { 0.9, 0.6, 0.3 };
+    lit_setup(&c);
+    gset_colr_rep(1, 3, &(Gcolr_rep){ { 0.2, 0.8, 0.4 } });
+    gset_colr_rep(1, 4, &(Gcolr_rep){ { 0.3, 0.3, 0.9 } });
+    gset_fill_rep(1, 5, &(Gfill_bundle){ GSTYLE_SOLID, 1, 4 });
+    gset_fill_ind(5);
+    Gint both[2] = { 1, 2 }, one = 1;
+    gset_light_src_state(&(Gint_list){ 2, both }, NULL);
+    for (int k = 0; k < 8; k++) {
+        switch (k) {
+        case 1: gset_fill_colr_ind(3); break;
+        case 2: gset_colr_rep(1, 3, &(Gcolr_rep){ { 0.8, 0.2, 0.7 } }); break;
+        case 3: gset_asfs(&bundled); break;
+        case 4: gset_fill_rep(1, 5, &(Gfill_bundle){ GSTYLE_SOLID, 1, 2 }); break;
+        case 5: gset_area_props(&(Garea_props){ 0.2, 0.5, 0, { 1, 1, 1 }, 1, 0, 1 }); break;
+        case 6: gset_light_src_state(NULL, &(Gint_list){ 1, &one }); break;
+        case 7: gset_refl_eq(GREFL_NONE); break;
+        default: break;
+        }
+        const double x0 = 0.125 * k, x1 = x0 + 0.125;
+        Gpoint3 t0[3] = { { x0, 0.1, 0.5 }, { x1, 0.1, 0.5 }, { x1, 0.9, 0.5 } };
+        Gpoint3 t1[3] = { { x0, 0.1, 0.5 }, { x1, 0.9, 0.5 }, { x0, 0.9, 0.5 } };
+        gfill_area3(&(Gpoint_list3){ 3, t0 });
+        gfill_area3(&(Gpoint_list3){ 3, t1 });
+    }
+    gdeactivate_ws(1);
+    gclose_ws(1);
+}
+
+static void test_threads_attr_changes(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    attr_changes_picture("t_rt_attr1.png", 1);
+    attr_changes_picture("t_rt_attr2.png", 2);
+    gclose_gks();
+    no_errors();
+    assert_same_file("t_rt_attr1.png", "t_rt_attr2.png");
+    image a;
+    assert_true(read_png("t_rt_attr1.png", &a));
+    for (int k = 1; k < 8; k++) { /* the columns' centres, above and below the diagonal */
+        for (int y = 16; y <= 48; y += 32) {
+            const unsigned char *p = px(&a, 8 * k - 4, y), *q = px(&a, 8 * k + 4, y);
+            if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2])
+                fail_msg("column %d equals column %d at y %d", k, k - 1, y);
+        }
+    }
+    free(a.rgb);
+}
+
 /* Samples per pixel: a red square over [0.2,0.8]^2 (edge at pixel 12.8): 1 sample leaves
  * pixel 12 white, 16 samples cover 1 of its 4 strata columns: 1/4 red over white. Workstation
  * 3 also has a polyline (an annotation) far from the square, so its picture is composed by
@@ -2005,6 +2086,7 @@ int main(void)
         cmocka_unit_test(test_depth_mirror),
         cmocka_unit_test(test_threads_identical),
         cmocka_unit_test(test_threads_oriented),
+        cmocka_unit_test(test_threads_attr_changes),
         cmocka_unit_test(test_samples_edges),
         cmocka_unit_test(test_cutoff),
         cmocka_unit_test(test_progress),

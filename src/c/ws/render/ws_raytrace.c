@@ -1087,11 +1087,22 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     double nm[3][3];
     if ((data & WS_DL_NORMALS) && gks_xform_normal_matrix(ws->views[vi].ori_matrix, nm))
         data &= ~(unsigned)WS_DL_NORMALS; /* a singular view orientation: no usable normals */
-    rt_attr a;
-    attr_set(&a, prim);
     const ws_dl_need need = { .n_vtx = np, .flags = data, .n_loops = nl };
     ws_dl_put put;
-    if (ws_dlist_append(r->dl, WS_DL_TRACER, DL_POLY, vi, &a, sizeof a, &need, &put))
+    /* rt_attr is made from the primitive's attributes alone: the core's number for them
+     * (gks_prim.attr_gen) keys it, and the record after one of the same number shares its
+     * attributes without making or comparing them */
+    int e = prim->attr_gen ? ws_dlist_append_keyed(r->dl, WS_DL_TRACER, DL_POLY, vi,
+                                                   prim->attr_gen, NULL, sizeof(rt_attr),
+                                                   &need, &put)
+                           : -1;
+    if (e < 0) {
+        rt_attr a;
+        attr_set(&a, prim);
+        e = ws_dlist_append_keyed(r->dl, WS_DL_TRACER, DL_POLY, vi, prim->attr_gen, &a,
+                                  sizeof a, &need, &put);
+    }
+    if (e)
         return 300;
     const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
     /* the VRC3 coordinates against the range, as the synchronous path checks their max_abs */
@@ -1114,6 +1125,8 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
  * primitives in the same order as with one thread. The checks that decide an area's fate
  * are made here at the call; only a storage failure of the worker comes later: it is reported
  * (300) by the next area or frame of this workstation, that area not recorded. */
+static int record_sync(ws_rt *r, const gks_ws *ws, const gks_prim *prim);
+
 int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
     if (prim->kind == GKS_PRIM_FILL_AREA) {
@@ -1123,6 +1136,14 @@ int ws_rt_record(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
         if (q)
             return q == 1 ? 0 : q;
     }
+    return record_sync(r, ws, prim);
+}
+
+/* ws_rt_record's synchronous path (apart, so that the queued area's call has no frame of
+ * its own). */
+__attribute__((noinline)) static int record_sync(ws_rt *r, const gks_ws *ws,
+                                                 const gks_prim *prim)
+{
     int se = ws_rt_sync(r);
     if (se)
         return se;
