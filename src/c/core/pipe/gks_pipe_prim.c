@@ -249,9 +249,12 @@ int gks_pipe_text(int fctid, const gks_rec_xf *xf, const double pos[3], const do
 
 /* ------------------------------------------------------------------ FILL AREA (SET) */
 /* Send an area (nl loops, counts[k] points each, m points in all, NDC3) to the target's
- * workstations. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. */
-static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, int is_set,
-                         gks_pipe_target *t)
+ * workstations. is_set: FILL AREA SET (edges apply). Returns 0 or an error number. Inline
+ * (as emit_area in gks_pipe_area): the calls of an area are the application's thread's
+ * work per FILL AREA, each with its frame. */
+__attribute__((always_inline)) static inline int dispatch_area(int nl, const int *counts, int m,
+                                                               const Gpoint3 *pts, int is_set,
+                                                               gks_pipe_target *t)
 {
     int err = 0;
     gks_ws *ws;
@@ -286,8 +289,10 @@ static int dispatch_area(int nl, const int *counts, int m, const Gpoint3 *pts, i
 /* An area: nloops loops (loop k: cnt[k] >= 3 points, n in all) taken from s one after the
  * other, mapped by nc. is_set: FILL AREA SET. An area inside the clipping region (the
  * common case) goes to the drivers without a clipping pass (24 bytes per vertex). */
-static int emit_area(const gks_pipe_norm *nc, size_t nloops, const size_t *cnt, size_t n,
-                     const gks_pipe_src *s, int is_set, gks_pipe_target *t)
+__attribute__((always_inline)) static inline int emit_area(const gks_pipe_norm *nc, size_t nloops,
+                                                           const size_t *cnt, size_t n,
+                                                           const gks_pipe_src *s, int is_set,
+                                                           gks_pipe_target *t)
 {
     Gpoint3 pts_small[AREA_SMALL];
     int counts_small[AREA_SMALL];
