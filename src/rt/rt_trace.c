@@ -840,6 +840,11 @@ typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, 
    (rt_list_order's number), mode 1 with the any-hit list of that order inlined in the walk
    (rt_cell_mesh_k), so the list's call and register saves are not paid per cell list */
 #define RT_MODE_ANYK 8
+/* rt_walk_box's modes 16 + O: the top-level walk of an RT_ANY_MESH ray of axis order O from
+   its four-ray set-up (rt_occluded_mesh, AVX2's encoding): mode 1 with the cell lists of that
+   order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and the second-level walk
+   rt_walk_sub_anyhit_O called directly */
+#define RT_MODE_ANYTOP 16
 
 struct rt_walkstate {
     const rt_scene *sc;
@@ -870,6 +875,8 @@ struct rt_walkstate {
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
+RT_INLINE int rt_walk_sub_anyhit_o(rt_walkstate *w, int o, const rt_subgrid *sg, double t0,
+                                   double t1);
 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the cells' bytes of the
  * ray's octant in dist, rt_grid.odist, never NULL there; second level: both NULL). mode 0:
@@ -1169,7 +1176,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
                            uint32_t lf)
 {
     if (mode >= RT_MODE_ANYK) { /* the axis order's numbering as rt_list_order's */
-        const int o = mode - RT_MODE_ANYK, kz = o >> 1;
+        const int o = mode & 7, kz = o >> 1;
         const int kx = o == 0 || o == 5 ? 1 : o == 1 || o == 2 ? 2 : 0;
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1)
                   : rt_cell_mesh_k(w, refs, n, kx, 3 - kx - kz, kz, 0);
@@ -1233,7 +1240,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = s.t0;
         t1 = s.t1;
     }
-    if (sub && mode == 1) { /* any-hit and transmittance walks' top level: the steps for
+    if (sub && (mode == 1 || mode >= RT_MODE_ANYTOP)) { /* any-hit and transmittance walks'
+                               top level: the steps for
                                their second-level walks (rt_dda_init) */
         w->step[0] = sx;
         w->step[1] = sy;
@@ -1311,11 +1319,12 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             const rt_subgrid *sg = &subs[sub[ci]];
             double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
             s1 = RT_MIN(s1, t1);
-            if (mode == 3 && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
+            if ((mode == 3 || mode >= RT_MODE_ANYTOP) && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
                 : pre      ? rt_box_clip_nz(&sg->b, gr, &s0, &s1)
                            : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
                          : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
+                         : mode >= RT_MODE_ANYTOP ? rt_walk_sub_anyhit_o(w, mode & 7, sg, s0, s1)
                          : w->any_hit == RT_ANY_MESH ? w->sub(w, sg, s0, s1)
                                                      : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
@@ -1414,6 +1423,26 @@ RT_SUB_ANYHIT(5)
 static const rt_sub_walk_fn rt_sub_anyhit[6] = {rt_walk_sub_anyhit_0, rt_walk_sub_anyhit_1,
                                                 rt_walk_sub_anyhit_2, rt_walk_sub_anyhit_3,
                                                 rt_walk_sub_anyhit_4, rt_walk_sub_anyhit_5};
+
+/* rt_walk_sub_anyhit_O for an axis order o known at compile time: a direct call */
+RT_INLINE int rt_walk_sub_anyhit_o(rt_walkstate *w, int o, const rt_subgrid *sg, double t0,
+                                   double t1)
+{
+    switch (o) {
+    case 0:
+        return rt_walk_sub_anyhit_0(w, sg, t0, t1);
+    case 1:
+        return rt_walk_sub_anyhit_1(w, sg, t0, t1);
+    case 2:
+        return rt_walk_sub_anyhit_2(w, sg, t0, t1);
+    case 3:
+        return rt_walk_sub_anyhit_3(w, sg, t0, t1);
+    case 4:
+        return rt_walk_sub_anyhit_4(w, sg, t0, t1);
+    default:
+        return rt_walk_sub_anyhit_5(w, sg, t0, t1);
+    }
+}
 
 /* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
    before use_grid is set), and saying so lets the top walk's inlined copies drop their tests
@@ -1761,6 +1790,68 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
     return rt_transmit_core(sc, c, &r, &r, ah) == 0.0;
 }
 
+/* the top-level walk of an RT_ANY_MESH ray of axis order O in lane j of its four-ray set-up
+   (rt_walk_box's mode RT_MODE_ANYTOP + O), in AVX2's encoding: 1 if blocked (the lists of
+   mesh triangles never lower the transmittance without blocking) */
+#define RT_OCC_TOP(O)                                                                         \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_occluded_top_##O(               \
+        rt_walkstate *w, const rt_pre4 *p, int j)                                            \
+    {                                                                                         \
+        return rt_walk_pre(w, RT_MODE_ANYTOP + O, p, j) == RT_WALK_BLOCKED;                   \
+    }
+RT_OCC_TOP(0)
+RT_OCC_TOP(1)
+RT_OCC_TOP(2)
+RT_OCC_TOP(3)
+RT_OCC_TOP(4)
+RT_OCC_TOP(5)
+#undef RT_OCC_TOP
+typedef int (*rt_occ_top_fn)(rt_walkstate *w, const rt_pre4 *p, int j);
+static const rt_occ_top_fn rt_occ_top[6] = {rt_occluded_top_0, rt_occluded_top_1,
+                                            rt_occluded_top_2, rt_occluded_top_3,
+                                            rt_occluded_top_4, rt_occluded_top_5};
+
+/* rt_occluded_one of a ray that rt_occluded_mesh leaves to the one-ray code (the set-up's
+   state 0, the batch's last rays), out of line in the build's own encoding, as
+   rt_nearest_apart and for its reason */
+static __attribute__((noinline)) unsigned char rt_occluded_apart(const rt_scene *sc, rt_ctx *c,
+                                                                 const rt_ray *ray)
+{
+    return rt_occluded_one(sc, c, ray, NULL, 0, RT_ANY_MESH);
+}
+
+/* rt_occluded's rays in a scene of mesh triangles only (rt_mesh_only, so RT_ANY_MESH walks),
+   in AVX2's encoding: the set-up's rays take the top walk of their axis order */
+static __attribute__((noinline)) RT_ANYHIT_TARGET void
+rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
+                 unsigned char *occluded, rt_setup4_fn setup4)
+{
+    size_t k = 0;
+    if (setup4) {
+        rt_pre4 p;
+        for (; k + 4 <= n; k += 4) {
+            setup4(&sc->grid, rays + k, &p);
+            for (int j = 0; j < 4; j++) {
+                unsigned char o = 0;
+                if (p.state[j] == 2) {
+                    c->blocker = -1;
+                    rt_rayx r;
+                    rt_walkstate w;
+                    rt_pre_ray(&r, &w.gr, &p, j, rays + k + j);
+                    rt_walkstate_init(&w, sc, c, &r, RT_ANY_MESH);
+                    w.vnmask = ~sc->vmask;
+                    w.stamp = rt_ctx_next(c);
+                    o = (unsigned char)rt_occ_top[rt_list_order(&r)](&w, &p, j);
+                } else if (p.state[j] == 0)
+                    o = rt_occluded_apart(sc, c, rays + k + j);
+                occluded[k + j] = o;
+            }
+        }
+    }
+    for (; k < n; k++)
+        occluded[k] = rt_occluded_apart(sc, c, rays + k);
+}
+
 /* 1 where the batch API's walks take the cell lists of mesh triangles (rt_anyhit_list,
    rt_nearest_list): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
    API's rays never skip a primitive) */
@@ -1790,6 +1881,11 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
         return rc;
     const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     const int ah = rt_anyhit_kind(sc);
+    if (ah == RT_ANY_MESH) {
+        rt_occluded_mesh(sc, &c, n, rays, occluded, setup4);
+        rt_ctx_free(&c);
+        return RT_OK;
+    }
     size_t k = 0;
     if (setup4) {
         rt_pre4 p;
