@@ -842,8 +842,8 @@ typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, 
 #define RT_MODE_ANYK 8
 /* rt_walk_box's modes 16 + O: the top-level walk of an RT_ANY_MESH ray of axis order O from
    its four-ray set-up (rt_occluded_mesh, AVX2's encoding): mode 1 with the cell lists of that
-   order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and the second-level walk
-   rt_walk_sub_anyhit_O called directly */
+   order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and the second-level walk of
+   that order inlined (rt_walk_sub_anyhit_o) */
 #define RT_MODE_ANYTOP 16
 
 struct rt_walkstate {
@@ -875,8 +875,8 @@ struct rt_walkstate {
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
-RT_INLINE int rt_walk_sub_anyhit_o(rt_walkstate *w, int o, const rt_subgrid *sg, double t0,
-                                   double t1);
+static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
+                                                       const rt_subgrid *sg, double t0, double t1);
 
 /* 3D-DDA over one box (top level: with second-level cells in sub and the cells' bytes of the
  * ray's octant in dist, rt_grid.odist, never NULL there; second level: both NULL). mode 0:
@@ -1424,24 +1424,16 @@ static const rt_sub_walk_fn rt_sub_anyhit[6] = {rt_walk_sub_anyhit_0, rt_walk_su
                                                 rt_walk_sub_anyhit_2, rt_walk_sub_anyhit_3,
                                                 rt_walk_sub_anyhit_4, rt_walk_sub_anyhit_5};
 
-/* rt_walk_sub_anyhit_O for an axis order o known at compile time: a direct call */
-RT_INLINE int rt_walk_sub_anyhit_o(rt_walkstate *w, int o, const rt_subgrid *sg, double t0,
-                                   double t1)
+/* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time, for the
+   top walk of mode RT_MODE_ANYTOP + o, which inlines it (rt_occluded_top_O's flatten: one
+   encoding, no call, no register saves of a callee). Not always_inline: rt_walk_box calls it
+   and it calls rt_walk_box, a cycle GCC refuses to inline by force; flatten inlines it once
+   (the inner walk's own call of it is dead code, its mode being RT_MODE_ANYK + o), and the
+   walk's copies in the build's own encoding keep a dead call rather than a target mismatch. */
+static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
+                                                       const rt_subgrid *sg, double t0, double t1)
 {
-    switch (o) {
-    case 0:
-        return rt_walk_sub_anyhit_0(w, sg, t0, t1);
-    case 1:
-        return rt_walk_sub_anyhit_1(w, sg, t0, t1);
-    case 2:
-        return rt_walk_sub_anyhit_2(w, sg, t0, t1);
-    case 3:
-        return rt_walk_sub_anyhit_3(w, sg, t0, t1);
-    case 4:
-        return rt_walk_sub_anyhit_4(w, sg, t0, t1);
-    default:
-        return rt_walk_sub_anyhit_5(w, sg, t0, t1);
-    }
+    return rt_walk_sub_anyk(w, RT_MODE_ANYK + o, sg, t0, t1);
 }
 
 /* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
@@ -1791,10 +1783,11 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
 }
 
 /* the top-level walk of an RT_ANY_MESH ray of axis order O in lane j of its four-ray set-up
-   (rt_walk_box's mode RT_MODE_ANYTOP + O), in AVX2's encoding: 1 if blocked (the lists of
-   mesh triangles never lower the transmittance without blocking) */
+   (rt_walk_box's mode RT_MODE_ANYTOP + O) with its second-level walks inlined (flatten), in
+   AVX2's encoding: 1 if blocked (the lists of mesh triangles never lower the transmittance
+   without blocking) */
 #define RT_OCC_TOP(O)                                                                         \
-    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_occluded_top_##O(               \
+    static __attribute__((noinline, flatten)) RT_ANYHIT_TARGET int rt_occluded_top_##O(      \
         rt_walkstate *w, const rt_pre4 *p, int j)                                            \
     {                                                                                         \
         return rt_walk_pre(w, RT_MODE_ANYTOP + O, p, j) == RT_WALK_BLOCKED;                   \
