@@ -735,8 +735,9 @@ enum { RT_WALK_CONT = 0, RT_WALK_BLOCKED = 2 };
 
 /* rt_walkstate.any_hit: 0 transmittance; RT_ANY_HIT the first hit blocks; RT_ANY_MESH (bit 0
    kept, so every other test takes it as RT_ANY_HIT) also every primitive a mesh triangle, no
-   skipped primitive and a CPU with AVX2 and BMI (rt_occluded's rays, rt_anyhit_kind): the cell lists
-   through rt_walkstate.list (rt_anyhit_list), the second-level walks through rt_walkstate.sub */
+   skipped primitive and a CPU with AVX2 and BMI (rt_occluded's rays, rt_anyhit_kind): the walks
+   of modes RT_MODE_ANYTOP + O, their second-level walks and cell lists inlined
+   (rt_occluded_top_O, rt_transmit_top_O) */
 enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 
 /* AVX2's encoding for the RT_ANY_MESH walks: three-operand instructions, no register copies
@@ -831,19 +832,17 @@ static inline __attribute__((always_inline)) int rt_box_clip_nz4(const rt_box *g
 }
 
 typedef struct rt_walkstate rt_walkstate;
-/* an any-hit cell list of mesh triangles (RT_ANY_MESH): 1 if blocked */
+/* a nearest-hit cell list of mesh triangles (rt_nearest_list) */
 typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t n);
-/* an RT_ANY_MESH second-level walk: rt_walk_sub_anyhit_O for the ray's axis order O */
-typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
 /* rt_walk_box's modes 8 + O: the second-level walks of RT_ANY_MESH rays of axis order O
    (rt_list_order's number), mode 1 with the any-hit list of that order inlined in the walk
    (rt_cell_mesh_k), so the list's call and register saves are not paid per cell list */
 #define RT_MODE_ANYK 8
-/* rt_walk_box's modes 16 + O: the top-level walk of an RT_ANY_MESH ray of axis order O from
-   its four-ray set-up (rt_occluded_mesh, AVX2's encoding): mode 1 with the cell lists of that
-   order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and the second-level walk of
-   that order inlined (rt_walk_sub_anyhit_o) */
+/* rt_walk_box's modes 16 + O: the top-level walk of an RT_ANY_MESH ray of axis order O (AVX2's
+   encoding: rt_occluded_top_O from the four-ray set-up, rt_transmit_top_O without): mode 1
+   with the cell lists of that order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and
+   the second-level walk of that order inlined (rt_walk_sub_anyhit_o) */
 #define RT_MODE_ANYTOP 16
 
 struct rt_walkstate {
@@ -854,15 +853,14 @@ struct rt_walkstate {
     uint32_t stamp;
     int any_hit;
     int step[3]; /* the ray's DDA steps (-1, 0, 1 per axis: the sign of its grid-frame
-                    direction), set by the top-level walk of mode 1 for their
+                    direction), set by the top-level walks of mode 1 (and
+                    RT_MODE_ANYTOP + O) for their
                     second-level walks (nearest-hit walks, with few second-level walks
                     per ray, compute their own as before) */
-    rt_anyhit_list_fn list; /* RT_ANY_MESH walks and nearest-hit walks of a scene of mesh
-                               triangles only (rt_mesh_only): the cell list's copy for the
-                               ray's axis order (rt_anyhit_list, rt_nearest_list), chosen once
-                               per ray; NULL: the general lists */
-    rt_sub_walk_fn sub; /* RT_ANY_MESH walks: the second-level walk for the ray's axis
-                           order (rt_walk_sub_anyhit_O), chosen with list */
+    rt_anyhit_list_fn list; /* nearest-hit walks of a scene of mesh triangles only
+                               (rt_mesh_only): the cell list's copy for the ray's axis order
+                               (rt_nearest_list), chosen once per ray; NULL: the general
+                               lists */
     uint32_t vnmask; /* RT_ANY_MESH walks: ~rt_scene.vmask, read from memory by the lists so
                         that BMI's andn masks an index word in one instruction (no copy of
                         the mask per vertex) */
@@ -1039,11 +1037,6 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, 
 
 /* one copy of each list per axis order of the shear (ky = 3 - kx - kz) */
 #define RT_CELL_LISTS(KX, KY, KZ)                                                               \
-    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_anyhit_##KX##KY##KZ(       \
-        rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
-    {                                                                                         \
-        return rt_cell_mesh_k(w, refs, n, KX, KY, KZ, 0);                                     \
-    }                                                                                         \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_nearest_##KX##KY##KZ(      \
         rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
     {                                                                                         \
@@ -1058,9 +1051,6 @@ RT_CELL_LISTS(1, 0, 2)
 #undef RT_CELL_LISTS
 
 /* the copies by the axis order of the shear, in rt_list_order's numbering */
-static const rt_anyhit_list_fn rt_anyhit_lists[6] = {
-    rt_cell_anyhit_120, rt_cell_anyhit_210, rt_cell_anyhit_201,
-    rt_cell_anyhit_021, rt_cell_anyhit_012, rt_cell_anyhit_102};
 static const rt_anyhit_list_fn rt_nearest_lists[6] = {
     rt_cell_nearest_120, rt_cell_nearest_210, rt_cell_nearest_201,
     rt_cell_nearest_021, rt_cell_nearest_012, rt_cell_nearest_102};
@@ -1086,12 +1076,7 @@ static int rt_list_order(const rt_rayx *r)
     }
 }
 
-/* the any-hit and the nearest-hit list copies for the axis order of r */
-static rt_anyhit_list_fn rt_anyhit_list(const rt_rayx *r)
-{
-    return rt_anyhit_lists[rt_list_order(r)];
-}
-
+/* the nearest-hit list copy for the axis order of r */
 static rt_anyhit_list_fn rt_nearest_list(const rt_rayx *r)
 {
     return rt_nearest_lists[rt_list_order(r)];
@@ -1170,8 +1155,8 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
 }
 
 /* the n > 0 primitives of one cell list (lf: 1 + its float leaf, 0: none): 1 when an opaque
-   primitive blocks a transmittance ray (mode 1, and modes RT_MODE_ANYK + O: mode 1 for a walk
-   known to be RT_ANY_MESH's with the ray's axis order O, rt_walk_sub_anyhit_O) */
+   primitive blocks a transmittance ray (mode 1, and modes RT_MODE_ANYK + O, RT_MODE_ANYTOP + O:
+   mode 1 for a walk known to be RT_ANY_MESH's with the ray's axis order O) */
 RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
                            uint32_t lf)
 {
@@ -1189,8 +1174,6 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
         rt_cell_nearest(w, refs, n);
     else if (w->any_hit && lf)
         return rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1);
-    else if (w->any_hit == RT_ANY_MESH)
-        return w->list(w, refs, n);
     else
         return rt_cell_transmit(w, refs, n);
     return 0;
@@ -1319,14 +1302,19 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             const rt_subgrid *sg = &subs[sub[ci]];
             double s0 = tent, s1 = RT_MIN(tx, RT_MIN(ty, tz));
             s1 = RT_MIN(s1, t1);
+            /* AVX2's encoding (modes 3, RT_MODE_ANYTOP + O): the clip in lanes, a direction
+               component 0 (a step 0) to the loop; rt_box_clip's SSE2 zero test would load
+               d[2] with a register vmovq (rt_nearest_apart) */
             if ((mode == 3 || mode >= RT_MODE_ANYTOP) && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
-                : pre      ? rt_box_clip_nz(&sg->b, gr, &s0, &s1)
-                           : rt_box_clip(&sg->b, gr, &s0, &s1)) {
+                : pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1)
+                : mode >= RT_MODE_ANYTOP
+                    ? (sx && sy && sz ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
+                                      : rt_box_clip_loop(&sg->b, gr, &s0, &s1))
+                    : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
                          : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
                          : mode >= RT_MODE_ANYTOP ? rt_walk_sub_anyhit_o(w, mode & 7, sg, s0, s1)
-                         : w->any_hit == RT_ANY_MESH ? w->sub(w, sg, s0, s1)
-                                                     : rt_walk_sub_transmit(w, sg, s0, s1);
+                                                  : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
                     return st;
             }
@@ -1395,7 +1383,7 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
 }
 
 /* the same for RT_ANY_MESH walks (modes RT_MODE_ANYK + O: the lists' kind and axis order
-   known), in AVX2's encoding, one per axis order in rt_list_order's numbering */
+   known), in AVX2's encoding (rt_walk_sub_anyhit_o) */
 RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_anyk(rt_walkstate *w, int mode, const rt_subgrid *sg,
                                                  double t0, double t1)
 {
@@ -1407,23 +1395,6 @@ RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_anyk(rt_walkstate *w, int mode, const
     return rt_walk_sub_mode1(w, mode, sg, t0, t1, NULL);
 #endif
 }
-#define RT_SUB_ANYHIT(O)                                                                      \
-    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_anyhit_##O(             \
-        rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
-    {                                                                                         \
-        return rt_walk_sub_anyk(w, RT_MODE_ANYK + O, sg, t0, t1);                             \
-    }
-RT_SUB_ANYHIT(0)
-RT_SUB_ANYHIT(1)
-RT_SUB_ANYHIT(2)
-RT_SUB_ANYHIT(3)
-RT_SUB_ANYHIT(4)
-RT_SUB_ANYHIT(5)
-#undef RT_SUB_ANYHIT
-static const rt_sub_walk_fn rt_sub_anyhit[6] = {rt_walk_sub_anyhit_0, rt_walk_sub_anyhit_1,
-                                                rt_walk_sub_anyhit_2, rt_walk_sub_anyhit_3,
-                                                rt_walk_sub_anyhit_4, rt_walk_sub_anyhit_5};
-
 /* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time, for the
    top walk of mode RT_MODE_ANYTOP + o, which inlines it (rt_occluded_top_O's flatten: one
    encoding, no call, no register saves of a callee). Not always_inline: rt_walk_box calls it
@@ -1520,6 +1491,31 @@ long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, si
     return bi;
 }
 
+/* the top-level walk of an RT_ANY_MESH ray of axis order O over [t0, t1] (its part in the
+   grid's box and k-DOP), without a four-ray set-up (rt_transmit_core: the packet path's rays
+   traced singly, the batch's rays left to the one-ray code): mode RT_MODE_ANYTOP + O with its
+   second-level walks inlined (flatten), in AVX2's encoding; 1 if blocked */
+#define RT_TRANSMIT_TOP(O)                                                                    \
+    static __attribute__((noinline, flatten)) RT_ANYHIT_TARGET int rt_transmit_top_##O(      \
+        rt_walkstate *w, double t0, double t1)                                               \
+    {                                                                                         \
+        const rt_grid *g = &w->sc->grid;                                                      \
+        return rt_walk_box(w, RT_MODE_ANYTOP + O, &g->b, g->off, NULL, g->refs, g->tleaf,     \
+                           g->sub, g->subs, rt_octant_cubes(g, &w->gr), t0, t1, 0, NULL, 0,  \
+                           NULL, NULL) == RT_WALK_BLOCKED;                                    \
+    }
+RT_TRANSMIT_TOP(0)
+RT_TRANSMIT_TOP(1)
+RT_TRANSMIT_TOP(2)
+RT_TRANSMIT_TOP(3)
+RT_TRANSMIT_TOP(4)
+RT_TRANSMIT_TOP(5)
+#undef RT_TRANSMIT_TOP
+typedef int (*rt_transmit_top_fn)(rt_walkstate *w, double t0, double t1);
+static const rt_transmit_top_fn rt_transmit_top[6] = {rt_transmit_top_0, rt_transmit_top_1,
+                                                      rt_transmit_top_2, rt_transmit_top_3,
+                                                      rt_transmit_top_4, rt_transmit_top_5};
+
 /* transmittance along r; rs as in rt_nearest_core */
 RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, rt_rayx *rs,
                                   int any_hit)
@@ -1546,12 +1542,11 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         return w.T;
     if (rs)
         rt_rayx_shear(rs);
-    if (w.any_hit == RT_ANY_MESH) {
-        w.list = rt_anyhit_list(r);
-        w.sub = rt_sub_anyhit[rt_list_order(r)];
-        w.vnmask = ~sc->vmask;
-    }
     w.stamp = rt_ctx_next(c);
+    if (w.any_hit == RT_ANY_MESH) {
+        w.vnmask = ~sc->vmask;
+        return rt_transmit_top[rt_list_order(r)](&w, t0, t1) ? 0.0 : w.T;
+    }
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
                     rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL, NULL) == RT_WALK_BLOCKED)
         return 0.0;
@@ -1765,12 +1760,7 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
         c->blocker = -1;
         rt_walkstate w;
         rt_pre_ray(&r, &w.gr, p, j, ray);
-        rt_walkstate_init(&w, sc, c, &r, ah);
-        if (ah == RT_ANY_MESH) {
-            w.list = rt_anyhit_list(&r);
-            w.sub = rt_sub_anyhit[rt_list_order(&r)];
-            w.vnmask = ~sc->vmask;
-        }
+        rt_walkstate_init(&w, sc, c, &r, ah); /* RT_ANY_HIT: rt_occluded_mesh has the others */
         w.stamp = rt_ctx_next(c);
         if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
             return 1;
