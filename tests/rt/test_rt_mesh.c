@@ -244,8 +244,9 @@ static rt_scene *mesh_only(int brute)
 /* Shadow rays from points of the field (hits of rays from above) to lights on four sides and
  * above and below, the origin moved towards the light by 1e-6 of the way (the ray starts beside
  * its own triangle, which it crosses behind itself), and rays up and down through the field:
- * every axis order of the rays' shear occurs. The same answers with the grid as without, and
- * per light and direction blocked rays where the field can block them. */
+ * every axis order of the rays' shear occurs; each set also one ray a call, and rays straight
+ * down. The same answers with the grid as without, and per light and direction blocked rays
+ * where the field can block them. */
 static void test_occluded_mesh_only(void **state)
 {
     (void)state;
@@ -296,12 +297,32 @@ static void test_occluded_mesh_only(void **state)
             assert_int_equal(og[k], ob[k]);
             blocked += ob[k];
         }
+        /* one ray a call: no four-ray set-up, the one-ray code's walk (rt_transmit_core) */
+        for (size_t k = 0; k < n[l]; k++) {
+            unsigned char o1 = 2;
+            assert_int_equal(rt_occluded(g, 1, rays[l] + k, &o1), RT_OK);
+            assert_int_equal(o1, ob[k]);
+        }
         /* the lights above and below the height field light every point; the others are low */
         if (l == 4 || l == 5)
             assert_int_equal(blocked, 0);
         else
             assert_true(blocked > n[l] / 50 && blocked < n[l]);
     }
+    /* straight down (two direction components 0: no step on x and y, the sub-grids' clip
+       without lanes), ending above the field or past it */
+    for (int k = 0; k < M * M; k++)
+        down[k].tmax = k % 2 ? 1.0 : 3.0;
+    rtc_traps_on();
+    assert_int_equal(rt_occluded(g, M * M, down, og), RT_OK);
+    assert_int_equal(rt_occluded(b, M * M, down, ob), RT_OK);
+    rtc_traps_off();
+    size_t blocked = 0;
+    for (int k = 0; k < M * M; k++) {
+        assert_int_equal(og[k], ob[k]);
+        blocked += ob[k];
+    }
+    assert_true(blocked > 0 && blocked < M * M / 2 + 1);
     rt_scene_free(g);
     rt_scene_free(b);
 }
