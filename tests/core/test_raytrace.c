@@ -22,6 +22,7 @@
 #include "ws_render.h"
 #include "ws_shade.h"
 #include "gks_alloc.h"
+#include "gks_context.h" /* gks_ws_lookup: the view table's number */
 
 static void assert_near(const image *img, int x, int y, double r, double g, double b)
 {
@@ -895,9 +896,10 @@ static void test_threads_identical(void **u)
  * turns NDC3 by 90 degrees, scales it by 2 and shifts it (its mapping takes it back into the
  * picture); view 2 scales x by 3e100, so the areas reaching x > 1/3 are beyond the tracer's
  * coordinate range (clipped at the call to the display volume, x in [0, 1] of VRC3) and the
- * others not. With 2 threads the areas are queued (their VRC3 points made on the
- * application's thread with the orientation of each area's view, the views alternating area
- * by area, then recorded by the worker): the file is bit-identical to the one thread's. */
+ * others not; the last area, in view 2 from x 0 to 1, is in sight once clipped. With 2 threads the areas are queued (with the orientation of each area's view,
+ * the views alternating area by area: view 1's points mapped by the worker, view 2's mapped
+ * at the call, where the range is decided, then recorded by the worker): the file is
+ * bit-identical to the one thread's. */
 static void oriented_picture(const char *file, int threads)
 {
     open_png(1, file, GHLHSR_RAYTRACE);
@@ -933,6 +935,10 @@ static void oriented_picture(const char *file, int threads)
         gset_view_ind(1 + k % 2);
         gfill_area3(&pl);
     }
+    /* beyond the range too, and in sight once clipped: a band across the bottom */
+    Gpoint3 far[3] = { { 0, 0.05, 0.5 }, { 1, 0.05, 0.5 }, { 0, 0.25, 0.5 } };
+    gset_view_ind(2);
+    gfill_area3(&(Gpoint_list3){ 3, far });
     gdeactivate_ws(1);
     gclose_ws(1);
 }
@@ -954,6 +960,103 @@ static void test_threads_oriented(void **u)
         for (int x = 0; x < a.w; x++)
             lit += px(&a, x, y)[2] < 200; /* not the white background */
     assert_true(lit > 200);
+    for (int x = 4; x < 60; x += 8) /* the band clipped at the call */
+        assert_true(px(&a, x, 9)[2] < 200);
+    free(a.rgb);
+}
+
+/* The view table's number (gks_ws.views_gen): not 0, a new one at each SET VIEW
+ * REPRESENTATION 3 (an equal representation too), none at other calls, different on two
+ * workstations. */
+static void test_views_gen(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    n_captured = 0;
+    open_png(1, "t_rt_vg1.png", GHLHSR_RAYTRACE);
+    open_png(2, "t_rt_vg2.png", GHLHSR_RAYTRACE);
+    const gks_ws *w1 = gks_ws_lookup(1), *w2 = gks_ws_lookup(2);
+    assert_non_null(w1);
+    assert_non_null(w2);
+    const uint64_t g1 = w1->views_gen, g2 = w2->views_gen;
+    assert_true(g1 != 0 && g2 != 0 && g1 != g2);
+    Gview_rep3 v;
+    Gint err;
+    ginq_view_rep3(1, 1, &err, &v);
+    assert_int_equal(err, 0);
+    gset_view_ind(1);
+    Gpoint3 t[3] = { { 0.1, 0.1, 0.5 }, { 0.9, 0.1, 0.5 }, { 0.5, 0.9, 0.5 } };
+    gfill_area3(&(Gpoint_list3){ 3, t });
+    gset_fill_colr_ind(2);
+    assert_true(w1->views_gen == g1 && w2->views_gen == g2);
+    gset_view_rep3(1, 1, &v); /* the same representation: a new number all the same */
+    const uint64_t h1 = w1->views_gen;
+    assert_true(h1 != g1 && h1 != g2 && w2->views_gen == g2);
+    v.ori_matrix[1][3] = 0.25;
+    gset_view_rep3(2, 3, &v);
+    assert_true(w2->views_gen != g2 && w2->views_gen != h1 && w1->views_gen == h1);
+    no_errors();
+    EXPECT(gset_view_rep3(1, 0, &v), 515, GFN_SVWR); /* refused: the table unchanged */
+    assert_true(w1->views_gen == h1);
+    gdeactivate_ws(1);
+    gdeactivate_ws(2);
+    gclose_ws(1);
+    gclose_ws(2);
+    gclose_gks();
+}
+
+/* Queued areas of one attribute setting whose view's orientation changes between calls:
+ * with 2 threads the worker maps their points with the orientation the display list's
+ * record keeps, whose key follows the view table's number (gks_ws.views_gen) as well as
+ * the attributes'. Eight columns of two triangles each, the same attributes, view 1
+ * shifted in y by -0.05 more before each column. The file equals the one thread's (which
+ * maps each area at its call), and each column's pixels differ from the one before. */
+static void view_changes_picture(const char *file, int threads)
+{
+    open_png(1, file, GHLHSR_RAYTRACE);
+    assert_int_equal(esc1(GESC_RT_THREADS, 1, threads), 0);
+    Grgb c = { 0.9, 0.6, 0.3 };
+    lit_setup(&c);
+    Gview_rep3 v;
+    memset(&v, 0, sizeof v);
+    for (int i = 0; i < 4; i++)
+        v.ori_matrix[i][i] = v.map_matrix[i][i] = 1;
+    v.clip_limit = (Glimit3){ 0, 1, 0, 1, 0, 1 };
+    v.xy_clip = v.back_clip = v.front_clip = GIND_CLIP;
+    gset_view_ind(1);
+    for (int k = 0; k < 8; k++) {
+        v.ori_matrix[1][3] = -0.05 * k;
+        gset_view_rep3(1, 1, &v);
+        const double x0 = 0.125 * k, x1 = x0 + 0.125;
+        Gpoint3 t0[3] = { { x0, 0.3, 0.5 }, { x1, 0.3, 0.5 }, { x1, 0.9, 0.5 } };
+        Gpoint3 t1[3] = { { x0, 0.3, 0.5 }, { x1, 0.9, 0.5 }, { x0, 0.9, 0.5 } };
+        gfill_area3(&(Gpoint_list3){ 3, t0 });
+        gfill_area3(&(Gpoint_list3){ 3, t1 });
+    }
+    gdeactivate_ws(1);
+    gclose_ws(1);
+}
+
+static void test_threads_view_changes(void **u)
+{
+    (void)u;
+    reset_gks();
+    gopen_gks(NULL, 0);
+    view_changes_picture("t_rt_view1.png", 1);
+    view_changes_picture("t_rt_view2.png", 2);
+    gclose_gks();
+    no_errors();
+    assert_same_file("t_rt_view1.png", "t_rt_view2.png");
+    image a;
+    assert_true(read_png("t_rt_view1.png", &a));
+    for (int k = 1; k < 8; k++) { /* the columns' centres, top to bottom */
+        int same = 1;
+        for (int y = 0; y < a.h; y++)
+            same &= memcmp(px(&a, 8 * k - 4, y), px(&a, 8 * k + 4, y), 3) == 0;
+        if (same)
+            fail_msg("column %d equals column %d", k, k - 1);
+    }
     free(a.rgb);
 }
 
@@ -2087,6 +2190,8 @@ int main(void)
         cmocka_unit_test(test_threads_identical),
         cmocka_unit_test(test_threads_oriented),
         cmocka_unit_test(test_threads_attr_changes),
+        cmocka_unit_test(test_views_gen),
+        cmocka_unit_test(test_threads_view_changes),
         cmocka_unit_test(test_samples_edges),
         cmocka_unit_test(test_cutoff),
         cmocka_unit_test(test_progress),

@@ -158,6 +158,7 @@ typedef struct gks_context {
                                       WORKSTATION (gks_ws_tables_changed) */
     uint64_t prim_attr_gen;        /* the last gks_prim.attr_gen given (gks_area_memo:
                                       2 per resolved set of attributes), never reset */
+    uint64_t views_gen;            /* the last gks_ws.views_gen given, never reset */
 } gks_context;
 
 /* The current normalization transformation WC3 -> NDC3 as a 3x4 matrix.

@@ -123,6 +123,7 @@ gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv)
         r->clip_limit = (Glimit3){ 0, 1, 0, 1, 0, 1 };
         r->xy_clip = r->back_clip = r->front_clip = GIND_CLIP;
     }
+    gks_ws_views_changed(ws);
     ws->hlhsr_mode = GHLHSR_NONE;
     for (int v = 0; v <= GKS_MAX_VIEW_IND; v++)
         ws->view_pri[v] = v;

@@ -38,6 +38,11 @@ const gks_ws_desc *gks_inq_ws_type(Gint ws_type, int out, Gint *err);
  * deferral from the description table). NULL on storage overflow. */
 gks_ws *gks_ws_create(int ws_id, const char *conn_id, const gks_ws_driver *drv);
 void gks_ws_destroy(gks_ws *ws);
+/* ws's view table changed (or is new): a new gks_ws.views_gen. */
+static inline void gks_ws_views_changed(gks_ws *ws)
+{
+    ws->views_gen = ++gks_ctx()->views_gen;
+}
 /* The services gks_ws_create gives every workstation (ws->host). */
 extern const gks_ws_host gks_ws_core_host;
 

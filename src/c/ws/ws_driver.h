@@ -235,6 +235,11 @@ struct gks_ws {
     Glimit3 req_vp, cur_vp;       /* workstation viewport, DC */
     Grgb *colr;                   /* colour table, desc->n_colr entries */
     Gview_rep3 views[GKS_MAX_VIEW_IND + 1]; /* view table; 0 fixed: identity, NPC cube */
+    /* A number for the view table: a new one whenever an entry is set (SET VIEW
+     * REPRESENTATION 3) and at OPEN WORKSTATION, never given to two tables in a process,
+     * so a driver that keeps what it made of the table (such as a copy of an orientation
+     * matrix) may reuse it while the number stays; 0: no such promise. */
+    uint64_t views_gen;
     int hlhsr_mode;
     int view_pri[GKS_MAX_VIEW_IND + 1]; /* view transformation input priority, highest first */
     unsigned char *colr_defined;

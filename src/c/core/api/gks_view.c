@@ -54,6 +54,7 @@ GKS_API void gset_view_rep3(Gint ws_id, Gint view_ind, const Gview_rep3 *rep)
         (unsigned)rep->front_clip > GIND_CLIP)
         GKS_FAIL(2000, GFN_SVWR);
     ws->views[view_ind] = *rep;
+    gks_ws_views_changed(ws);
     GKS_MF_WS(SVWR, ws_id, view_ind, &rep->ori_matrix[0][0], &rep->map_matrix[0][0],
               &rep->clip_limit.x_min, rep->xy_clip, rep->back_clip, rep->front_clip);
 }

@@ -49,10 +49,19 @@ typedef struct rt_view_rec {
     size_t nsmask, capsmask;
 } rt_view_rec;
 
-/* Record kind of a FILL AREA (SET) in the display list (ws_dlist.h): its loops of 3 or more
- * points in VRC3, with their VRC3 unit normals and colours where it is shaded smooth and has
- * them; attributes an rt_attr. */
-enum { DL_POLY = 1 };
+/* Record kinds of a FILL AREA (SET) in the display list (ws_dlist.h): its loops of 3 or more
+ * points, with their VRC3 unit normals and colours where it is shaded smooth and has them;
+ * attributes an rt_qattr. DL_POLY: the points in VRC3; DL_POLY_NDC: in NDC3, for the
+ * recording worker to map with the record's orientation (rt_qattr.ori, affine), known at
+ * the call to stay within the tracer's range there. */
+enum { DL_POLY = 1, DL_POLY_NDC = 2 };
+
+/* A queued area's attributes: the tracer's, and the first three rows of its view's
+ * orientation matrix (a DL_POLY_NDC record's points go through them on the worker). */
+typedef struct rt_qattr {
+    rt_attr a;
+    double ori[3][4];
+} rt_qattr;
 
 /* Where the recording worker's scene writes its next triangles (rt_scene_input_next: up to
  * two byte ranges of reserved storage), published by the worker after each chunk for the
@@ -79,6 +88,14 @@ struct ws_rt {
     atomic_int werr;
     size_t wlost;
     pf_window pf;            /* the worker's scene: where its next triangles go */
+    double *wxyz;            /* the worker's VRC3 points of a DL_POLY_NDC record of more */
+    size_t wcap;             /* than STACK_POINTS points (room for wcap points) */
+    /* the application's side: the display list's key of the queued areas' rt_qattr for
+     * the core's numbers kattr (gks_prim.attr_gen) and kviews (gks_ws.views_gen), and the
+     * largest |coordinate| klim of a point that its orientation keeps in range (-1: none,
+     * the points are mapped at the call); keys counts the keys given */
+    uint64_t kattr, kviews, key, keys;
+    double klim;
     uintptr_t pf_done[2];    /* the application's side: end of what it made present there */
     rt_render_options opts;  /* set by the ESCAPEs */
     rt_stats last;           /* of the last traced picture */
@@ -282,6 +299,7 @@ void ws_rt_free(ws_rt *r)
     ws_rt_reset(r);
     if (r->own_dl)
         ws_dlist_free(r->dl);
+    gks_free(r->wxyz);
     gks_free(r);
 }
 
@@ -871,6 +889,30 @@ static int record_cells(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 
 /* ---- asynchronous recording ---------------------------------------------------------- */
 
+/* n points p (3 doubles each) through the affine orientation rows ori into o, as
+ * queue_points computes them (the same operations in the same order: the same values bit
+ * for bit): ws_vrc_point_affine, with rows 0 and 1 in the two lanes of SSE2 registers. */
+static void vrc_points_affine(const double (*ori)[4], const double *p, size_t n, double *o)
+{
+#if defined(__SSE2__)
+    const __m128d c0 = _mm_set_pd(ori[1][0], ori[0][0]), c1 = _mm_set_pd(ori[1][1], ori[0][1]);
+    const __m128d c2 = _mm_set_pd(ori[1][2], ori[0][2]), c3 = _mm_set_pd(ori[1][3], ori[0][3]);
+    const double r0 = ori[2][0], r1 = ori[2][1], r2 = ori[2][2], r3 = ori[2][3];
+    for (size_t i = 0; i < 3 * n; i += 3) {
+        const double x = p[i], y = p[i + 1], z = p[i + 2];
+        const __m128d o01 = _mm_add_pd(
+            _mm_add_pd(_mm_add_pd(_mm_mul_pd(c0, _mm_set1_pd(x)), _mm_mul_pd(c1, _mm_set1_pd(y))),
+                       _mm_mul_pd(c2, _mm_set1_pd(z))),
+            c3);
+        _mm_storeu_pd(o + i, o01);
+        o[i + 2] = r0 * x + r1 * y + r2 * z + r3;
+    }
+#else
+    for (size_t i = 0; i < 3 * n; i += 3)
+        ws_vrc_point_affine(ori, p[i], p[i + 1], p[i + 2], o + i);
+#endif
+}
+
 /* The worker's side: the tracer's records of a sealed chunk of the display list into the
  * views' scenes (the classic renderer's records in it are skipped), then the chunk released. rt_serial runs the chunks one at a time in queue order, so
  * the scenes get the areas in call order, with the surfaces the synchronous path would have
@@ -881,23 +923,38 @@ static void rec_run(void *user, void *item)
     ws_dl_chunk *c = item;
     size_t attr = SIZE_MAX;
     int view = -1;
+    rt_qattr qa;
+    double sxyz[3 * STACK_POINTS];
     for (size_t k = 0; k < c->n_rec; k++) {
         const ws_dl_rec *h = &c->rec[k];
         if (h->reader != WS_DL_TRACER)
             continue;
         int e = 0;
         if (h->attr != attr || h->view != view) {
-            rt_attr a;
-            memcpy(&a, c->attr + h->attr, sizeof a);
+            memcpy(&qa, c->attr + h->attr, sizeof qa);
             attr = h->attr;
             view = h->view;
-            e = view_surfaces(r, view, &a, &r->wvr);
+            e = view_surfaces(r, view, &qa.a, &r->wvr);
         }
         rt_view_rec *vr = r->wvr;
         const rt_vertex_data vd = {
             h->flags & WS_DL_NORMALS ? c->nrm + 3 * (size_t)h->vtx : NULL,
             h->flags & WS_DL_COLOURS ? c->rgb + 3 * (size_t)h->vtx : NULL };
         const double *xyz = c->xyz + 3 * (size_t)h->vtx;
+        if (h->kind == DL_POLY_NDC && vr) { /* NDC3 points: into VRC3 here */
+            double *o = sxyz;
+            if (h->n_vtx > STACK_POINTS) {
+                o = r->wcap >= h->n_vtx || !gks_grow(&r->wxyz, &r->wcap, h->n_vtx,
+                                                     3 * sizeof *r->wxyz)
+                        ? r->wxyz
+                        : NULL;
+                if (!o)
+                    vr = NULL; /* no storage: lost as if the scene had none */
+            }
+            if (o)
+                vrc_points_affine((const double (*)[4])qa.ori, xyz, h->n_vtx, o);
+            xyz = o;
+        }
         const int *cnt = c->cnt + h->cnt;
         int id = !vr ? RT_ERR_NOMEM
                  : h->flags ? rt_scene_add_polygon_data(vr->sc, h->n_loops, cnt, xyz, &vd,
@@ -1070,10 +1127,83 @@ static void queue_data(const gks_prim *prim, const double nm[3][3], double *nrm,
     }
 }
 
+/* The largest |coordinate| of a point that the affine orientation ori maps within
+ * RT_COORD_MAX, rounding included: L with (row's |linear part| sum) L + |translation| <=
+ * RT_COORD_MAX / 2 for every row, the factor 2 far above the rounding of the point's four
+ * operations and of L itself; -1 (none) for an orientation that is not affine. */
+static double ori_limit(const double (*ori)[4])
+{
+    if (!ws_vrc_affine(ori))
+        return -1.0;
+    double s = 0.0, t = 0.0;
+    for (int i = 0; i < 3; i++) {
+        s = fmax(s, fabs(ori[i][0]) + fabs(ori[i][1]) + fabs(ori[i][2]));
+        t = fmax(t, fabs(ori[i][3]));
+    }
+    if (!(t <= 0.5 * RT_COORD_MAX))
+        return -1.0;
+    return s > 0.0 ? (0.5 * RT_COORD_MAX - t) / s : INFINITY;
+}
+
+/* prim's loops of 3 or more points into counts and their points as they are into xyz;
+ * returns the largest |coordinate| among them (a NaN left out: the orientation makes all
+ * three coordinates of such a point NaN, which the range check leaves out as well). */
+static double queue_points_ndc(const gks_prim *prim, int *counts, double *xyz)
+{
+    size_t src = 0, q = 0;
+    int nl = 0;
+#if defined(__SSE2__)
+    const __m128d sign = _mm_set1_pd(-0.0);
+    __m128d big = _mm_setzero_pd(); /* _mm_max_pd(a, big): a > big ? a : big per lane */
+#else
+    double big = 0.0;
+#endif
+    for (int k = 0; k < prim->n_loops; k++) {
+        size_t m = (size_t)prim->loop_counts[k];
+        if (m >= 3) {
+            counts[nl++] = (int)m;
+            const double *p = &prim->pts[src].x;
+            double *o = xyz + q;
+            const size_t n = 3 * m;
+            size_t i = 0;
+#if defined(__SSE2__)
+            for (; i + 4 <= n; i += 4) {
+                const __m128d v0 = _mm_loadu_pd(p + i), v1 = _mm_loadu_pd(p + i + 2);
+                _mm_storeu_pd(o + i, v0);
+                _mm_storeu_pd(o + i + 2, v1);
+                big = _mm_max_pd(_mm_andnot_pd(sign, v0), big);
+                big = _mm_max_pd(_mm_andnot_pd(sign, v1), big);
+            }
+            for (; i < n; i++) { /* the upper lane 0 */
+                const __m128d v = _mm_load_sd(p + i);
+                _mm_store_sd(o + i, v);
+                big = _mm_max_pd(_mm_andnot_pd(sign, v), big);
+            }
+#else
+            for (; i < n; i++) {
+                const double a = fabs(o[i] = p[i]);
+                big = a > big ? a : big;
+            }
+#endif
+            q += n;
+        }
+        src += m;
+    }
+#if defined(__SSE2__)
+    double b[2];
+    _mm_storeu_pd(b, big);
+    return b[0] > b[1] ? b[0] : b[1];
+#else
+    return big;
+#endif
+}
+
 /* The asynchronous path of a FILL AREA (SET): a record of the display list with its loops of
- * 3 or more points in VRC3 and their vertex data, computed here on the caller's thread; a
- * sealed chunk goes to the queue. Returns 1 (queued), 0 (not for this path: the caller records
- * it synchronously, which also drops what this path would drop) or 300. */
+ * 3 or more points and their vertex data, made here on the caller's thread; a sealed chunk
+ * goes to the queue. The points are mapped into VRC3 here when that is needed to know
+ * whether they are in the tracer's range; else the worker maps them (DL_POLY_NDC). Returns
+ * 1 (queued), 0 (not for this path: the caller records it synchronously, which also drops
+ * what this path would drop) or 300. */
 static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
 {
     int nl;
@@ -1084,31 +1214,49 @@ static int queue_fill_area(ws_rt *r, const gks_ws *ws, const gks_prim *prim)
     if (np > QUEUE_MAX_POINTS)
         return 0; /* a large area: synchronous */
     const int vi = clamp_view(prim->view_ind);
+    const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
     double nm[3][3];
     if ((data & WS_DL_NORMALS) && gks_xform_normal_matrix(ws->views[vi].ori_matrix, nm))
         data &= ~(unsigned)WS_DL_NORMALS; /* a singular view orientation: no usable normals */
+    /* rt_qattr is made from the primitive's attributes and the view table alone: the
+     * core's numbers for them (gks_prim.attr_gen, gks_ws.views_gen) give it a key, and the
+     * record after one of the same key shares its attributes without making or comparing
+     * them */
+    uint64_t key = 0;
+    if (prim->attr_gen && ws->views_gen) {
+        if (prim->attr_gen != r->kattr || ws->views_gen != r->kviews) {
+            r->kattr = prim->attr_gen;
+            r->kviews = ws->views_gen;
+            r->key = ++r->keys;
+            r->klim = ori_limit(ori);
+        }
+        key = r->key;
+    }
+    /* points go as they are, for the worker, where the orientation surely keeps them in
+     * range (checked when they are in the record: else mapped here, DL_POLY) */
+    const int kind = key && r->klim >= 0.0 ? DL_POLY_NDC : DL_POLY;
     const ws_dl_need need = { .n_vtx = np, .flags = data, .n_loops = nl };
     ws_dl_put put;
-    /* rt_attr is made from the primitive's attributes alone: the core's number for them
-     * (gks_prim.attr_gen) keys it, and the record after one of the same number shares its
-     * attributes without making or comparing them */
-    int e = prim->attr_gen ? ws_dlist_append_keyed(r->dl, WS_DL_TRACER, DL_POLY, vi,
-                                                   prim->attr_gen, NULL, sizeof(rt_attr),
-                                                   &need, &put)
-                           : -1;
+    int e = key ? ws_dlist_append_keyed(r->dl, WS_DL_TRACER, kind, vi, key, NULL,
+                                        sizeof(rt_qattr), &need, &put)
+                : -1;
     if (e < 0) {
-        rt_attr a;
-        attr_set(&a, prim);
-        e = ws_dlist_append_keyed(r->dl, WS_DL_TRACER, DL_POLY, vi, prim->attr_gen, &a,
-                                  sizeof a, &need, &put);
+        rt_qattr a;
+        attr_set(&a.a, prim);
+        memcpy(a.ori, ori, sizeof a.ori);
+        e = ws_dlist_append_keyed(r->dl, WS_DL_TRACER, kind, vi, key, &a, sizeof a, &need,
+                                  &put);
     }
     if (e)
         return 300;
-    const double (*ori)[4] = (const double (*)[4])ws->views[vi].ori_matrix;
-    /* the VRC3 coordinates against the range, as the synchronous path checks their max_abs */
-    if (queue_points(prim, ori, put.loops, put.xyz)) {
-        ws_dlist_unappend(r->dl);
-        return 0; /* beyond the tracer's range: the synchronous path clips it */
+    if (kind != DL_POLY_NDC || !(queue_points_ndc(prim, put.loops, put.xyz) <= r->klim)) {
+        put.rec->kind = DL_POLY;
+        /* the VRC3 coordinates against the range, as the synchronous path checks their
+         * max_abs */
+        if (queue_points(prim, ori, put.loops, put.xyz)) {
+            ws_dlist_unappend(r->dl);
+            return 0; /* beyond the tracer's range: the synchronous path clips it */
+        }
     }
     if (data)
         queue_data(prim, (const double (*)[3])nm, put.nrm, put.rgb);
