@@ -701,7 +701,7 @@ int rt_lbuf_find(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint
    returns 1, *k0 the first candidate from position 0 on that rt_lbuf_next finds and whose
    plane test does not reject r (a quad's or polygon's, rt_prim_plane_t, with the values of
    its exact test: r's o, d, tmin and tmax as rt_rayx_setup makes them), q->n when there is
-   none */
+   none (rt_lbuf.h: the same inline, rt_lbuf_query_at) */
 int rt_lbuf_query(const rt_scene *sc, const rt_lbuf *lb, const rt_rayx *r, uint32_t skip,
                   rt_lbuf_q *q, uint32_t *k0);
 /* the position of the next candidate of q's list from position k on, up to its bucket zb, but

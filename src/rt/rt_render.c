@@ -44,6 +44,7 @@
 #define GKS3D_RT_BUILDING 1
 #include "rt_geom.h"
 #include "rt_internal.h"
+#include "rt_lbuf.h"
 #include "rt_packet.h"
 #include "rt_prim.h"
 #include "rt_shade.h"
@@ -316,7 +317,7 @@ static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, lon
         r.d[2] = a2 < tiny ? 0.0 : L[2];
         r.tmin = t0;
         r.tmax = t1;
-        f = rt_lbuf_query(sc, lb, &r, (uint32_t)from, &q, &k0);
+        f = rt_lbuf_query_at(sc, lb, &r, (uint32_t)from, &q, &k0); /* rt_lbuf.h, inline */
     }
     if (f == 0 || (f > 0 && k0 == q.n)) {
         T = 1.0;
