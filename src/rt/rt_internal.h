@@ -582,6 +582,9 @@ void rt_ctx_free(rt_ctx *c);
 
 /* 0 if the ray is unusable (non-finite, zero direction, NaN range). r->skip = RT_NO_SKIP. */
 int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax);
+/* rt_rayx_setup for r whose o, d, tmin and tmax are already what rt_rayx_setup would make
+   of them (d's components below 1e-150 of the largest flushed to 0): its checks and shear */
+int rt_rayx_setup_made(rt_rayx *r);
 
 /* nearest hit: returns internal prim index or -1; *t set. side of hit in *side. */
 long rt_trace_nearest(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, double *t);

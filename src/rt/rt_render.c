@@ -322,8 +322,8 @@ static double rt_shadow_T(rt_worker *w, rt_scache *cache, const rt_lbuf *lb, lon
     if (f == 0 || (f > 0 && k0 == q.n)) {
         T = 1.0;
         w->st.shadow_lbuf++;
-    } else if (!rt_rayx_setup(&r, o, L, t0, t1)) {
-        T = 1.0;
+    } else if (!(f == -2 ? rt_rayx_setup(&r, o, L, t0, t1) : rt_rayx_setup_made(&r))) {
+        T = 1.0; /* (f != -2: the query made r's o, d and range as rt_rayx_setup would) */
     } else {
         r.skip = (uint32_t)from;
         int k = RT_SCACHE;

@@ -61,9 +61,9 @@ static inline uint64_t rt_umax(uint64_t a, uint64_t b)
 
 /* the checks of rt_rayx_setup and the ray's origin, direction and range; the shear for
    the primitive tests (rt_rayx_shear) not yet */
-static inline __attribute__((always_inline)) int rt_rayx_check(rt_rayx *r, const double o[3],
+static inline __attribute__((always_inline)) int rt_rayx_valid(const double o[3],
                                                                const double d[3], double tmin,
-                                                               double tmax)
+                                                               double tmax, uint64_t *bdo)
 {
     /* origin, direction and tmin finite with |x| <= RT_RAY_MAX, tmax not NaN, tmin <= tmax,
        and a direction whose largest component is >= 1e-100 (the t range stays meaningful):
@@ -77,6 +77,17 @@ static inline __attribute__((always_inline)) int rt_rayx_check(rt_rayx *r, const
         (rt_abits(tmax) > rt_abits(INFINITY)))
         return 0;
     if (tmin > tmax) /* both not NaN here */
+        return 0;
+    *bdo = bd; /* the bits of the largest |d[i]| */
+    return 1;
+}
+
+static inline __attribute__((always_inline)) int rt_rayx_check(rt_rayx *r, const double o[3],
+                                                               const double d[3], double tmin,
+                                                               double tmax)
+{
+    uint64_t bd;
+    if (!rt_rayx_valid(o, d, tmin, tmax, &bd))
         return 0;
     double dm;
     memcpy(&dm, &bd, sizeof dm); /* the largest |d[i]| */
@@ -118,6 +129,18 @@ int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin,
 {
     if (!rt_rayx_check(r, o, d, tmin, tmax))
         return 0;
+    rt_rayx_shear(r);
+    return 1;
+}
+
+/* rt_rayx_setup(r, o, d, tmin, tmax) for r whose o, d, tmin and tmax are already what it
+   would make of them (d's flushed components change neither its largest one nor a check) */
+int rt_rayx_setup_made(rt_rayx *r)
+{
+    uint64_t bd;
+    if (!rt_rayx_valid(r->o, r->d, r->tmin, r->tmax, &bd))
+        return 0;
+    r->skip = RT_NO_SKIP;
     rt_rayx_shear(r);
     return 1;
 }
