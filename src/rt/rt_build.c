@@ -2335,6 +2335,23 @@ static int rt_frame_box_all(const rt_scene *sc, rt_build *b, int nt, double bb[6
     return rc;
 }
 
+/* The union of the meshes' boxes (each its kept triangles' box, rt_mesh_add_check) into bb:
+ * in the unrotated frame the box of the points rt_frame_points gives in place (the used
+ * vertices of meshes that hold every primitive are exactly their kept triangles' vertices), up
+ * to the sign of a zero bound, which no extent and so no volume sees; no pass over them. */
+static void rt_meshes_box(const rt_scene *sc, double bb[6])
+{
+    for (int a = 0; a < 3; a++) {
+        bb[a] = INFINITY;
+        bb[3 + a] = -INFINITY;
+    }
+    for (size_t mi = 0; mi < sc->nmesh; mi++)
+        for (int a = 0; a < 3; a++) {
+            bb[a] = rt_dmin(bb[a], sc->mesh[mi].bb[a]);
+            bb[3 + a] = rt_dmax(bb[3 + a], sc->mesh[mi].bb[3 + a]);
+        }
+}
+
 /* the frame of the grid (b: nt scratches, one per part); when the frame is rotated and the
    sample was every primitive (stride 1), fb = the box of all primitive points in it (what
    rt_frame_box with stride 1 gives; the pass that judged the frame made it) and *have_fb = 1 */
@@ -2374,7 +2391,9 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     int rc = sc->ntri > sc->ntri_plain && rt_frame_points(sc, b, stride, &fp, &nfp, &fp_own)
                  ? RT_ERR_NOMEM
                  : RT_OK;
-    if (rc == RT_OK)
+    if (rc == RT_OK && fp && !fp_own)
+        rt_meshes_box(sc, bb);
+    else if (rc == RT_OK)
         rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
     const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0;
     double best = INFINITY, bestR[3][3];
