@@ -2565,6 +2565,40 @@ static int rt_cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* The k-th smallest (from 0) of the n values r, r[k] once r is sorted (r may be reordered).
+ * Values that are all non-negative (+0 to infinity) order as their bit patterns do, so it is
+ * found digit by digit, 8 bits at a time from the top: each pass counts the digits of the
+ * values that have the digits found so far, without a branch per value (a sort's comparisons
+ * are taken at random: about 6,000 mispredicted of 1024 values); else qsort. */
+static double rt_kth_smallest(double *r, size_t n, size_t k)
+{
+    int plain = 1;
+    for (size_t i = 0; i < n; i++)
+        plain &= r[i] >= 0.0 && !signbit(r[i]);
+    if (!plain) {
+        qsort(r, n, sizeof *r, rt_cmp_double);
+        return r[k];
+    }
+    uint64_t want = 0, mask = 0;
+    for (int sh = 56; sh >= 0; sh -= 8) {
+        uint32_t cnt[256];
+        memset(cnt, 0, sizeof cnt);
+        for (size_t i = 0; i < n; i++) {
+            uint64_t x;
+            memcpy(&x, &r[i], sizeof x);
+            cnt[x >> sh & 0xff] += (x & mask) == want;
+        }
+        uint32_t d = 0;
+        while (k >= cnt[d])
+            k -= cnt[d++];
+        want |= (uint64_t)d << sh;
+        mask |= (uint64_t)0xff << sh;
+    }
+    double v;
+    memcpy(&v, &want, sizeof v);
+    return v;
+}
+
 /* the top level g widened for large primitives (above); *coarse = 1 when it was */
 static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g, int *coarse)
 {
@@ -2587,8 +2621,7 @@ static int rt_top_coarsen(const rt_scene *sc, rt_build *b, rt_box *g, int *coars
        m - m / 2 values are: counted, so that most scenes need no sort */
     if (nlarge < m - m / 2)
         return RT_OK;
-    qsort(r, m, sizeof *r, rt_cmp_double);
-    const double med = r[m / 2];
+    const double med = rt_kth_smallest(r, m, m / 2);
     const double k = RT_TOP_EXT_TARGET / med;
     rt_box_resolution(g, (double)g->n[0] * g->n[1] * g->n[2] * k * k * k, 512);
     *coarse = 1;
