@@ -2573,7 +2573,7 @@ static int rt_cmp_double(const void *x, const void *y)
  * found digit by digit, 8 bits at a time from the top: each pass counts the digits of the
  * values that have the digits found so far, without a branch per value (a sort's comparisons
  * are taken at random: about 6,000 mispredicted of 1024 values); else qsort. */
-static double rt_kth_smallest(double *r, size_t n, size_t k)
+double rt_kth_smallest(double *r, size_t n, size_t k)
 {
     int plain = 1;
     for (size_t i = 0; i < n; i++)

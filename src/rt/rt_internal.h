@@ -651,6 +651,9 @@ void rt_grid_free(rt_grid *g);
    every cell through the exact test; the grid is the same either way) */
 uint64_t rt_build_exact_cells(void);
 void rt_build_set_filter(int on);
+/* the k-th smallest (from 0) of the n values r, the value r[k] has once r is sorted (r may be
+   reordered; rt_build.c, the top level's median extent) */
+double rt_kth_smallest(double *r, size_t n, size_t k);
 /* for tests (rt_build.c): the smallest chunk of the second level's dynamic parts, in
    references (0: the default), and the chunks part 0 takes at most (0: no limit); the grid is
    the same whatever the chunks are. The chunks taken from the back (a process total). */

@@ -10,6 +10,9 @@
  * triangles in clusters (crowded top cells, sub-grids) with large ones through them, as
  * separate triangles and as one indexed mesh, and a scene of sub-grids whose lists exceed
  * the 2-byte offsets (the 4-byte layout).
+ * Also rt_kth_smallest, the median of the top level's extent sample: the value qsort puts at
+ * place k, for every k, on samples with repeats, zeros, tiny and huge values and infinity,
+ * and on samples that take qsort itself (a negative zero, a negative value).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -18,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <float.h>
 #include <math.h>
 #include <cmocka.h>
 #define GKS3D_RT_BUILDING 1
@@ -155,12 +159,60 @@ static void test_wide(void **state)
     free(v);
 }
 
+static int cmp_d(const void *x, const void *y)
+{
+    const double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+/* rt_kth_smallest against qsort for every k of sample v (n values) */
+static void check_kth(const double *v, size_t n)
+{
+    double *s = malloc(n * sizeof *s), *w = malloc(n * sizeof *w);
+    assert_non_null(s);
+    assert_non_null(w);
+    memcpy(s, v, n * sizeof *s);
+    qsort(s, n, sizeof *s, cmp_d);
+    for (size_t k = 0; k < n; k++) {
+        memcpy(w, v, n * sizeof *w);
+        const double got = rt_kth_smallest(w, n, k);
+        assert_memory_equal(&got, &s[k], sizeof got); /* the same bits */
+    }
+    free(s);
+    free(w);
+}
+
+static void test_kth_smallest(void **state)
+{
+    (void)state;
+    enum { M = 300 };
+    double v[M];
+    uint64_t seed = 7;
+    for (int t = 0; t < 6; t++) {
+        for (int i = 0; i < M; i++) {
+            const double x = rnd(&seed);
+            /* t 0: spread over 40 binades; 1: few distinct values (repeats); 2: values
+               differing in their last bits only; 3: zeros, subnormals, huge, infinity */
+            v[i] = t == 0   ? ldexp(x, (int)(40 * rnd(&seed)) - 20)
+                   : t == 1 ? floor(8 * x)
+                   : t == 2 ? 1.0 + (double)(int)(16 * x) * DBL_EPSILON
+                   : t == 3 ? (x < 0.2 ? 0.0 : x < 0.3 ? 4.9e-324 * (1 + i) : x < 0.4 ? INFINITY
+                                                         : x < 0.5 ? 1e300 : x)
+                   : t == 4 ? (i == 17 ? -0.0 : x) /* a negative zero: qsort */
+                            : (i == 5 ? -x : x);   /* a negative value: qsort */
+        }
+        check_kth(v, M);
+        check_kth(v, 1 + (size_t)t);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_separate),
         cmocka_unit_test(test_mesh),
         cmocka_unit_test(test_wide),
+        cmocka_unit_test(test_kth_smallest),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
