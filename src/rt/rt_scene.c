@@ -426,9 +426,11 @@ static void rt_mesh_add_run(void *arg, int k, int n)
     rt_mesh_add_part *o = &j->part[k];
     size_t lo, hi, w;
     rt_par_range(3 * m->nv, k, n, &lo, &hi);
-    for (size_t i = lo; i < hi; i++)
-        if ((j->n && !isfinite(j->n[i])) || (j->c && !isfinite(j->c[i])))
-            o->bad = 1;
+    const float *nf = j->n, *cf = j->c; /* no pass over the vertices without either */
+    if (nf || cf)
+        for (size_t i = lo; i < hi; i++)
+            if ((nf && !isfinite(nf[i])) || (cf && !isfinite(cf[i])))
+                o->bad = 1;
     double bb0 = INFINITY, bb1 = INFINITY, bb2 = INFINITY;
     double bb3 = -INFINITY, bb4 = -INFINITY, bb5 = -INFINITY;
     rt_par_range(m->nt, k, n, &lo, &hi);
