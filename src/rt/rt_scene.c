@@ -402,7 +402,8 @@ typedef struct rt_mesh_add_part {
 typedef struct rt_mesh_add_job {
     const rt_mesh *m;
     uint32_t *ix;             /* the mesh's index triples */
-    const double (*X)[3];     /* the scene's mesh vertices (global indices) */
+    const double (*X)[3];     /* the mesh's vertices (its own indices): the scene's copy, or
+                                 the caller's array that rt_scene_add_mesh adds */
     const float *n, *c;       /* the mesh's normals, colours (NULL: none) */
     double (*sum)[3];         /* per triangle: its vertex sum (NULL: not wanted) */
     _Alignas(RT_LINE) rt_mesh_add_part part[RT_PAR_MAX];
@@ -443,7 +444,7 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         }
         const uint32_t a = q[0] + (uint32_t)m->v0, b = q[1] + (uint32_t)m->v0,
                        c = q[2] + (uint32_t)m->v0;
-        const double *A = j->X[a], *B = j->X[b], *C = j->X[c];
+        const double *A = j->X[q[0]], *B = j->X[q[1]], *C = j->X[q[2]];
         if (!sane3(A) || !sane3(B) || !sane3(C))
             continue;
         /* the triangle's box, the first of equal values kept (-0 or +0, as rt_bbox_add
@@ -487,16 +488,17 @@ static void rt_mesh_add_run(void *arg, int k, int n)
     o->kept = w - lo;
 }
 
-/* rt_mesh_add_run on the pool's threads (parts of at least 16384 triangles); the kept
-   triangles closed up, in order (and their vertex sums into sum, NULL: none); the box into m.
-   RT_OK or RT_ERR_ARG (nothing added). */
-static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m, double (*sum)[3])
+/* rt_mesh_add_run on the pool's threads (parts of at least 16384 triangles) over the mesh's
+   vertices (src: the caller's, not yet copied; NULL: the scene's); the kept triangles closed
+   up, in order (and their vertex sums into sum, NULL: none); the box into m. RT_OK or
+   RT_ERR_ARG (nothing added). */
+static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m, double (*sum)[3], const double *src)
 {
     rt_mesh_add_job job, *j = &job; /* 13 KiB: no allocation that could fail */
     memset(j, 0, sizeof *j);
     j->m = m;
     j->ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
-    j->X = (const double (*)[3])sc->mv_xyz.p;
+    j->X = (const double (*)[3])(src ? src : (const double *)sc->mv_xyz.p + 3 * m->v0);
     j->n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
     j->c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
     j->sum = sum;
@@ -608,8 +610,11 @@ static size_t rt_sorted_place(const uint64_t *s, size_t n, uint64_t x)
    match; its vertices renumbered in the order of their first use by the sorted triangles
    (unused ones last, in the given order), with the same coordinates, normals and colours,
    each triangle's vertices in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes, tmp holding
-   the triangles' vertex sums on entry (rt_mesh_add_check). */
-static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, void *tmp)
+   the triangles' vertex sums on entry (rt_mesh_add_check). src: the vertices in the given
+   order when the scene's copy is not yet made (rt_scene_add_mesh: they are placed from the
+   caller's array, no copy first), or NULL. */
+static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, void *tmp,
+                         const double *src)
 {
     const size_t nt = m->nt, nv = m->nv;
     const uint32_t v0 = (uint32_t)m->v0;
@@ -651,9 +656,12 @@ static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, 
     for (size_t v = 0; v < nv; v++)
         if (to[v] == UINT32_MAX)
             to[v] = next++;
-    memcpy(tmp, X, nv * 3 * sizeof(double));
+    if (!src) {
+        memcpy(tmp, X, nv * 3 * sizeof(double));
+        src = tmp;
+    }
     for (size_t v = 0; v < nv; v++)
-        memcpy(X[to[v]], (const double *)tmp + 3 * v, 3 * sizeof(double));
+        memcpy(X[to[v]], src + 3 * v, 3 * sizeof(double));
     rt_big *fl[2] = {m->has_n ? &sc->mv_n : NULL, m->has_c ? &sc->mv_c : NULL};
     for (int k = 0; k < 2; k++) {
         if (!fl[k])
@@ -711,7 +719,7 @@ static void rt_mesh_offsets(rt_scene *sc, rt_mesh *m, int given)
    block with the triangles' vertex sums (rt_mesh_add_check), or NULL: without it the given
    order is kept with the positions written (nothing else changes). Either way the index
    words end as offsets (rt_scene.vmask). */
-static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n)
+static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n, const double *src)
 {
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
@@ -720,17 +728,20 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n)
     if (sc->vmask != UINT32_MAX &&
         (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 24)))
         rt_meshes_given_order(sc);
-    if (sc->vmask == UINT32_MAX) { /* the given order from now on */
-        rt_mesh_offsets(sc, m, 0);
+    if (sc->vmask != UINT32_MAX && key) {
+        rt_mesh_sort(sc, m, key, (uint32_t *)(key + 5 * n), key + 2 * n, src);
         return;
     }
-    if (key)
-        rt_mesh_sort(sc, m, key, (uint32_t *)(key + 5 * n), key + 2 * n);
-    else
-        rt_mesh_offsets(sc, m, 1);
+    if (src) /* the given order: the vertices as given */
+        memcpy((double *)sc->mv_xyz.p + 3 * m->v0, src, m->nv * 3 * sizeof(double));
+    /* with the positions written unless the given order holds from now on */
+    rt_mesh_offsets(sc, m, sc->vmask != UINT32_MAX);
 }
 
-int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
+/* rt_scene_mesh_end with the vertices of the open mesh in src (its nv, 3 doubles each) when
+   they are not yet in the scene's array (rt_scene_add_mesh: the check reads them there and
+   the spatial order places them from there, no copy of them first), or NULL */
+static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const double *src)
 {
     if (!sc || !sc->mesh_open)
         return RT_ERR_STATE;
@@ -745,9 +756,9 @@ int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
     const size_t n = m->nv > m->nt ? m->nv : m->nt;
     uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX ? rt_alloc_array(n ? n : 1, 48)
                                                              : NULL;
-    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL);
+    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL, src);
     if (rc == RT_OK)
-        rt_mesh_order(sc, m, key, n);
+        rt_mesh_order(sc, m, key, n, src);
     free(key);
     if (rc != RT_OK)
         return rc;
@@ -759,6 +770,11 @@ int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
     sc->nmtri += m->nt;
     sc->committed = 0;
     return (int)sc->nids++;
+}
+
+int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
+{
+    return rt_mesh_end(sc, front_surface, back_surface, NULL);
 }
 
 int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const double *normals,
@@ -774,8 +790,6 @@ int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const doub
     const int rc = rt_scene_mesh_begin(sc, nverts, normals != NULL, colours != NULL, ntris, &f);
     if (rc != RT_OK)
         return rc;
-    if (nverts)
-        memcpy(f.xyz, xyz, 3 * nverts * sizeof(double));
     for (size_t i = 0; i < nverts; i++) {
         if (normals)
             rt_mesh_store_normal(f.normals + 3 * i, normals + 3 * i);
@@ -784,7 +798,7 @@ int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const doub
     }
     if (ntris)
         memcpy(f.idx, idx, 3 * ntris * sizeof(uint32_t));
-    return rt_scene_mesh_end(sc, front_surface, back_surface);
+    return rt_mesh_end(sc, front_surface, back_surface, nverts ? xyz : NULL);
 }
 
 int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
