@@ -1874,6 +1874,10 @@ static void rt_occupied_kdop(const rt_scene *sc, rt_grid *g, double eps)
 #define RT_FRAME_EYE_MAX 1.5
 #define RT_FRAME_SAMPLE 50000
 #define RT_FRAME_PRE 64 /* the subset of the sample for a candidate's first estimate */
+#define RT_FRAME_PRE_V 16 /* ... when the sample's points are the vertex array in place: every
+                             16th vertex or sparser, no more points than the triangles' subset
+                             has (in the order of first use, spread over the meshes; read in
+                             order, no triangle's index triple and vertices gathered) */
 
 static double rt_box_volume(const double bb[6])
 {
@@ -1908,8 +1912,9 @@ typedef struct rt_frame_job {
     const rt_scene *sc;
     rt_build *b;       /* per part */
     size_t stride;     /* rt_frame_box: every stride-th primitive */
-    const double *fp;  /* ... or these nfp points (rt_frame_points), when not NULL */
+    const double *fp;  /* ... or these nfp points (rt_frame_points), when not NULL, */
     size_t nfp;
+    size_t pstride;    /* every pstride-th of them */
     size_t skip_lo, skip_hi; /* rt_frame_cand_part: primitives left out */
     int err[RT_PAR_MAX];
     double bb[RT_PAR_MAX][6];
@@ -1930,6 +1935,14 @@ static void rt_frame_box_part(void *arg, int k, int n)
         bb[a] = INFINITY;
         bb[3 + a] = -INFINITY;
     }
+    if (j->fp && j->pstride > 1) {
+        rt_par_range((j->nfp + j->pstride - 1) / j->pstride, k, n, &lo, &hi);
+        for (size_t m = lo; m < hi; m++)
+            rt_box_add_points(&sc->grid, j->fp + 3 * m * j->pstride, 1, bb);
+        memcpy(j->bb[k], bb, sizeof bb);
+        j->err[k] = 0;
+        return;
+    }
     if (j->fp) {
         rt_par_range(j->nfp, k, n, &lo, &hi);
         rt_box_add_points(&sc->grid, j->fp + 3 * lo, hi - lo, bb);
@@ -1946,10 +1959,10 @@ static void rt_frame_box_part(void *arg, int k, int n)
     j->err[k] = err;
 }
 
-/* box of all primitive points (every stride-th primitive; or the nfp points fp when fp is not
-   NULL) in the current grid frame, in nt parts (b: nt scratches) */
+/* box of all primitive points (every stride-th primitive; or every pstride-th of the nfp
+   points fp when fp is not NULL) in the current grid frame, in nt parts (b: nt scratches) */
 static int rt_frame_box_of(const rt_scene *sc, rt_build *b, int nt, size_t stride,
-                           const double *fp, size_t nfp, double bb[6])
+                           const double *fp, size_t nfp, size_t pstride, double bb[6])
 {
     rt_frame_job *j = rt_calloc_array(1, sizeof *j);
     if (!j)
@@ -1959,7 +1972,8 @@ static int rt_frame_box_of(const rt_scene *sc, rt_build *b, int nt, size_t strid
     j->stride = stride;
     j->fp = fp;
     j->nfp = nfp;
-    const size_t items = fp ? nfp / 3 : sc->nprim / stride;
+    j->pstride = pstride;
+    const size_t items = fp ? nfp / pstride / 3 : sc->nprim / stride;
     if ((size_t)nt > items / 4096 + 1)
         nt = (int)(items / 4096 + 1);
     rt_par_run(nt, rt_frame_box_part, j);
@@ -1981,7 +1995,7 @@ static int rt_frame_box_of(const rt_scene *sc, rt_build *b, int nt, size_t strid
 
 static int rt_frame_box(const rt_scene *sc, rt_build *b, int nt, size_t stride, double bb[6])
 {
-    return rt_frame_box_of(sc, b, nt, stride, NULL, 0, bb);
+    return rt_frame_box_of(sc, b, nt, stride, NULL, 0, 1, bb);
 }
 
 /* The number of mesh vertices the primitives use when every primitive is a mesh triangle and
@@ -2333,7 +2347,7 @@ static int rt_frame_box_all(const rt_scene *sc, rt_build *b, int nt, double bb[6
     size_t nfp = 0;
     if (rt_frame_points(sc, b, 1, &fp, &nfp, &own))
         return RT_ERR_NOMEM;
-    const int rc = rt_frame_box_of(sc, b, nt, 1, fp, nfp, bb);
+    const int rc = rt_frame_box_of(sc, b, nt, 1, fp, nfp, 1, bb);
     free(own);
     return rc;
 }
@@ -2397,26 +2411,30 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
     if (rc == RT_OK && fp && !fp_own)
         rt_meshes_box(sc, bb);
     else if (rc == RT_OK)
-        rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
+        rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, 1, bb);
     const double vol0 = rc == RT_OK ? rt_box_volume(bb) : 0.0;
     double best = INFINITY, bestR[3][3];
     int found = 0;
     for (int a = 0; a < 3; a++)
         g->c[a] = 0.5 * (sc->bbox[a] + sc->bbox[3 + a]);
     /* first each candidate's lower bound of E from a subset of the sample (every
-       RT_FRAME_PRE-th of it: the same point values, so a box inside the sample's and a volume
+       RT_FRAME_PRE-th of it, or every RT_FRAME_PRE_V-th of its points when they are the
+       vertex array in place: the same point values, so a box inside the sample's and a volume
        no larger; the factor covers cbrt's rounding): a candidate it rules out needs neither
        S nor the full pass. The nl others are kept in order with their frames, bounds and
        view terms, their S then taken in one pass over the sample's normals. */
     double Rk[RT_FRAME_CAND][3][3], El[RT_FRAME_CAND], dzk[RT_FRAME_CAND], S[RT_FRAME_CAND];
     int nl = 0;
+    size_t vstride = RT_FRAME_PRE * nfp / (3 * sc->nprim + 1);
+    vstride = vstride > RT_FRAME_PRE_V ? vstride : RT_FRAME_PRE_V;
     for (int k = 0; k < nc && rc == RT_OK && vol0 > 0.0; k++) {
         if (!rt_prim_frame(sc, b, cand[k], g->R, &err))
             continue;
         g->rotated = 1;
         /* the view direction (VRC3 z) in the candidate frame: column 2 of R */
         const double dz = fabs(g->R[0][2]) + fabs(g->R[1][2]) + fabs(g->R[2][2]);
-        rc = rt_frame_box(sc, b, nt, stride * RT_FRAME_PRE, bb);
+        rc = fp && !fp_own ? rt_frame_box_of(sc, b, nt, 1, fp, nfp, vstride, bb)
+                           : rt_frame_box(sc, b, nt, stride * RT_FRAME_PRE, bb);
         g->rotated = 0;
         const double rl = rt_box_volume(bb) / vol0;
         const double e = cbrt(rl * rl) * dz * (1.0 - 1e-9);
@@ -2443,7 +2461,7 @@ static int rt_choose_frame(rt_scene *sc, rt_build *b, int nt, double fb[6], int 
         memcpy(g->R, Rk[k], sizeof g->R);
         g->rotated = 1;
         if (rc == RT_OK)
-            rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, bb);
+            rc = rt_frame_box_of(sc, b, nt, stride, fp, nfp, 1, bb);
         g->rotated = 0;
         const double r = rt_box_volume(bb) / vol0;
         const double E = cbrt(r * r) * dzk[k];
