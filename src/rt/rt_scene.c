@@ -401,7 +401,8 @@ typedef struct rt_mesh_add_part {
 
 typedef struct rt_mesh_add_job {
     const rt_mesh *m;
-    uint32_t *ix;             /* the mesh's index triples */
+    uint32_t *ix;             /* the mesh's index triples, the kept ones written there */
+    const uint32_t *six;      /* ... as given, read from here (the caller's, or ix) */
     const double (*X)[3];     /* the mesh's vertices (its own indices): the scene's copy, or
                                  the caller's array that rt_scene_add_mesh adds */
     const float *n, *c;       /* the mesh's normals, colours (NULL: none) */
@@ -437,7 +438,7 @@ static void rt_mesh_add_run(void *arg, int k, int n)
     rt_par_range(m->nt, k, n, &lo, &hi);
     w = lo;
     for (size_t t = lo; t < hi && !o->bad; t++) {
-        uint32_t *q = j->ix + 3 * t;
+        const uint32_t *q = j->six + 3 * t;
         if (q[0] >= m->nv || q[1] >= m->nv || q[2] >= m->nv) {
             o->bad = 1;
             break;
@@ -489,15 +490,17 @@ static void rt_mesh_add_run(void *arg, int k, int n)
 }
 
 /* rt_mesh_add_run on the pool's threads (parts of at least 16384 triangles) over the mesh's
-   vertices (src: the caller's, not yet copied; NULL: the scene's); the kept triangles closed
-   up, in order (and their vertex sums into sum, NULL: none); the box into m. RT_OK or
-   RT_ERR_ARG (nothing added). */
-static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m, double (*sum)[3], const double *src)
+   vertices and index triples (src, srcix: the caller's, not yet copied; NULL: the scene's);
+   the kept triangles closed up in the scene's triples, in order (and their vertex sums into
+   sum, NULL: none); the box into m. RT_OK or RT_ERR_ARG (nothing added). */
+static int rt_mesh_add_check(rt_scene *sc, rt_mesh *m, double (*sum)[3], const double *src,
+                             const uint32_t *srcix)
 {
     rt_mesh_add_job job, *j = &job; /* 13 KiB: no allocation that could fail */
     memset(j, 0, sizeof *j);
     j->m = m;
     j->ix = (uint32_t *)sc->mtri.p + 3 * m->t0;
+    j->six = srcix ? srcix : j->ix;
     j->X = (const double (*)[3])(src ? src : (const double *)sc->mv_xyz.p + 3 * m->v0);
     j->n = m->has_n ? (const float *)sc->mv_n.p + 3 * m->v0 : NULL;
     j->c = m->has_c ? (const float *)sc->mv_c.p + 3 * m->v0 : NULL;
@@ -738,10 +741,12 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n, con
     rt_mesh_offsets(sc, m, sc->vmask != UINT32_MAX);
 }
 
-/* rt_scene_mesh_end with the vertices of the open mesh in src (its nv, 3 doubles each) when
-   they are not yet in the scene's array (rt_scene_add_mesh: the check reads them there and
-   the spatial order places them from there, no copy of them first), or NULL */
-static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const double *src)
+/* rt_scene_mesh_end with the vertices of the open mesh in src (its nv, 3 doubles each) and
+   its index triples in srcix (nt) when they are not yet in the scene's arrays
+   (rt_scene_add_mesh: the check reads them there, writes the kept triples into the scene's,
+   and the spatial order places the vertices from there, no copy of them first), or NULL */
+static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const double *src,
+                       const uint32_t *srcix)
 {
     if (!sc || !sc->mesh_open)
         return RT_ERR_STATE;
@@ -756,7 +761,7 @@ static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const 
     const size_t n = m->nv > m->nt ? m->nv : m->nt;
     uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX ? rt_alloc_array(n ? n : 1, 48)
                                                              : NULL;
-    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL, src);
+    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL, src, srcix);
     if (rc == RT_OK)
         rt_mesh_order(sc, m, key, n, src);
     free(key);
@@ -774,7 +779,7 @@ static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const 
 
 int rt_scene_mesh_end(rt_scene *sc, int front_surface, int back_surface)
 {
-    return rt_mesh_end(sc, front_surface, back_surface, NULL);
+    return rt_mesh_end(sc, front_surface, back_surface, NULL, NULL);
 }
 
 int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const double *normals,
@@ -796,9 +801,8 @@ int rt_scene_add_mesh(rt_scene *sc, size_t nverts, const double *xyz, const doub
         if (colours)
             rt_mesh_store_colour(f.colours + 3 * i, colours + 3 * i);
     }
-    if (ntris)
-        memcpy(f.idx, idx, 3 * ntris * sizeof(uint32_t));
-    return rt_mesh_end(sc, front_surface, back_surface, nverts ? xyz : NULL);
+    return rt_mesh_end(sc, front_surface, back_surface, nverts ? xyz : NULL,
+                       ntris ? idx : NULL);
 }
 
 int rt_scene_add_cell_array(rt_scene *sc, const double P[3], const double Q[3], const double R[3],
