@@ -351,7 +351,7 @@ static void test_incoherent(void **state)
     rt_scene *sc = rtu_scene_one_surface(&si);
     assert_non_null(sc);
     const double c[3] = {0, 0, 0};
-    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 24, 12, si), 0);
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 48, 24, si), 0);
     rt_hit h;
     rt_ray r0 = {{0, 0, 5}, {0, 0, -1}, 0, INFINITY};
     assert_int_equal(rt_intersect_packet(sc, 1, &r0, &h), RT_ERR_STATE);
@@ -450,6 +450,56 @@ static void test_spread(void **state)
     rt_scene_free(sc);
 }
 
+/* shadow packets on a coarse mesh, whose top cells have no second-level grids: 64 shadow
+   rays from a small patch are traced as a packet; 64 from a patch whose frustum at the
+   start covers 4 or more top cells (a few cells wide, far below the limits counted in
+   second-level cells) are handed to the single-ray walk (traced as a packet without that
+   limit: checked); the answers are rt_occluded's either way */
+static void test_spread_top(void **state)
+{
+    (void)state;
+    int si;
+    rt_scene *sc = rtu_scene_one_surface(&si);
+    assert_non_null(sc);
+    const double c[3] = {0, 0, 0}, light[3] = {5.0, 6.0, 100.0};
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 48, 24, si), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    printf("spread_top: grid %llu cells, %llu sub-grids\n", (unsigned long long)gi.cells,
+           (unsigned long long)gi.subgrids);
+    assert_int_equal(gi.subgrids, 0);
+    rt_ray rays[RT_PACKET];
+    unsigned char o1[RT_PACKET], o2[RT_PACKET];
+    for (int wide = 0; wide < 2; wide++) {
+        /* the wide patch's spacing 0.014, about 1.3 top cells across (0.01 stays a packet;
+           without the top cells' area limit 0.014 does too: checked) */
+        const double sq = wide ? 0.014 : 0.002;
+        for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
+            const double x = 0.05 + sq * (k % 8), y = 0.05 + sq * (k / 8);
+            const double o[3] = {x, y, sqrt(1.0 - x * x - y * y) + 1e-3};
+            for (int i = 0; i < 3; i++) {
+                rays[k].org[i] = o[i];
+                rays[k].dir[i] = light[i] - o[i];
+            }
+            rays[k].tmin = 0.0;
+            rays[k].tmax = 1.0;
+        }
+        rt_packet_stats ps = {0};
+        rtc_traps_on();
+        assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
+        assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
+        rtc_traps_off();
+        printf("spread_top: %s patch: %llu packets traced, %llu to the single-ray path\n",
+               wide ? "wide" : "small", (unsigned long long)ps.packets,
+               (unsigned long long)ps.fallback_packets);
+        assert_memory_equal(o1, o2, RT_PACKET);
+        assert_int_equal(ps.packets, wide ? 0 : 1);
+        assert_int_equal(ps.fallback_packets, wide ? 1 : 0);
+    }
+    rt_scene_free(sc);
+}
+
 /* the renderer's eye rays in packets (rt_render.c: one-ray modes without candidate lists,
    i.e. more than 16 candidates per ray on average): the same picture, bit for bit, as every
    eye ray alone (GKS_RT_PACKETS=0), with corner rays and pixel-centre rays, and the packet
@@ -518,6 +568,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_incoherent),
         cmocka_unit_test(test_spread),
+        cmocka_unit_test(test_spread_top),
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_render),
         cmocka_unit_test(test_meshes),
