@@ -855,8 +855,11 @@ static inline __attribute__((always_inline)) int rt_box_clip_nz4(const rt_box *g
 }
 
 typedef struct rt_walkstate rt_walkstate;
-/* a nearest-hit cell list of mesh triangles (rt_nearest_list) */
+/* a nearest-hit cell list of mesh triangles (rt_nearest_lists) */
 typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t n);
+/* a second-level walk of mode 3 (nearest hit, mesh triangles only) of a ray of axis order O:
+   rt_walk_sub_nearest_O */
+typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 
 /* rt_walk_box's modes 8 + O: the second-level walks of RT_ANY_MESH rays of axis order O
    (rt_list_order's number), mode 1 with the any-hit list of that order inlined in the walk
@@ -867,6 +870,11 @@ typedef int (*rt_anyhit_list_fn)(rt_walkstate *w, const uint32_t *refs, uint32_t
    with the cell lists of that order inlined, the sub-grid clip in lanes (rt_box_clip_nz4) and
    the second-level walk of that order inlined (rt_walk_sub_anyhit_o) */
 #define RT_MODE_ANYTOP 16
+/* rt_walk_box's modes 24 + O: the second-level walks of mode 3 (nearest hit, mesh triangles
+   only) of rays of axis order O, the nearest-hit list of that order inlined likewise. Their
+   boxes have no second level, so the tests of modes RT_MODE_ANYTOP + O on a cell's sub-grid
+   (mode >= RT_MODE_ANYTOP) never meet them */
+#define RT_MODE_NEARK 24
 
 struct rt_walkstate {
     const rt_scene *sc;
@@ -882,8 +890,10 @@ struct rt_walkstate {
                     per ray, compute their own as before) */
     rt_anyhit_list_fn list; /* nearest-hit walks of a scene of mesh triangles only
                                (rt_mesh_only): the cell list's copy for the ray's axis order
-                               (rt_nearest_list), chosen once per ray; NULL: the general
+                               (rt_nearest_lists), chosen once per ray; NULL: the general
                                lists */
+    rt_sub_walk_fn sub; /* mode 3: the second-level walk for the ray's axis order
+                           (rt_walk_sub_nearest_O), chosen with list */
     uint32_t vnmask; /* RT_ANY_MESH walks: ~rt_scene.vmask, read from memory by the lists so
                         that BMI's andn masks an index word in one instruction (no copy of
                         the mask per vertex) */
@@ -894,7 +904,6 @@ struct rt_walkstate {
 };
 
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
-static int rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
                                                        const rt_subgrid *sg, double t0, double t1);
@@ -903,9 +912,10 @@ static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
  * ray's octant in dist, rt_grid.odist, never NULL there; second level: both NULL). mode 0:
  * nearest hit, leaves at the first cell boundary beyond the best hit (t1 lowered to it);
  * mode 3: mode 0 of a scene of mesh triangles only, its cell lists through rt_walkstate.list
- * (rt_nearest_list), its second-level walks rt_walk_sub_nearest_mesh; mode 1: transmittance,
+ * (rt_nearest_lists), its second-level walks through rt_walkstate.sub; mode 1: transmittance,
  * BLOCKED when an opaque primitive is hit; modes RT_MODE_ANYK + O: mode 1 of an RT_ANY_MESH
- * second-level walk of a ray of axis order O, its cell lists inlined.
+ * second-level walk of a ray of axis order O, its cell lists inlined; modes RT_MODE_NEARK + O:
+ * mode 3's second-level walk of a ray of axis order O, its cell lists inlined.
  * Mailboxes: see the top of the file. Direction components exactly +0.0 or -0.0 never step.
  * step: NULL, or
  * for a second-level walk of modes 1 and RT_MODE_ANYK + O the ray's steps, which their top
@@ -1099,12 +1109,6 @@ static int rt_list_order(const rt_rayx *r)
     }
 }
 
-/* the nearest-hit list copy for the axis order of r */
-static rt_anyhit_list_fn rt_nearest_list(const rt_rayx *r)
-{
-    return rt_nearest_lists[rt_list_order(r)];
-}
-
 /* 1 if blocked */
 static __attribute__((noinline)) int rt_cell_transmit(rt_walkstate *w, const uint32_t *refs,
                                                       uint32_t n)
@@ -1179,15 +1183,17 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
 
 /* the n > 0 primitives of one cell list (lf: 1 + its float leaf, 0: none): 1 when an opaque
    primitive blocks a transmittance ray (mode 1, and modes RT_MODE_ANYK + O, RT_MODE_ANYTOP + O:
-   mode 1 for a walk known to be RT_ANY_MESH's with the ray's axis order O) */
+   mode 1 for a walk known to be RT_ANY_MESH's with the ray's axis order O; modes
+   RT_MODE_NEARK + O, mode 3's walks of axis order O, rt_walk_sub_nearest_O, never block) */
 RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
                            uint32_t lf)
 {
     if (mode >= RT_MODE_ANYK) { /* the axis order's numbering as rt_list_order's */
+        const int nearest = mode >= RT_MODE_NEARK;
         const int o = mode & 7, kz = o >> 1;
         const int kx = o == 0 || o == 5 ? 1 : o == 1 || o == 2 ? 2 : 0;
-        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 1)
-                  : rt_cell_mesh_k(w, refs, n, kx, 3 - kx - kz, kz, 0);
+        return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], !nearest)
+                  : rt_cell_mesh_k(w, refs, n, kx, 3 - kx - kz, kz, nearest);
     }
     if (mode == 3)
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0) : w->list(w, refs, n);
@@ -1335,7 +1341,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                                       : rt_box_clip_loop(&sg->b, gr, &s0, &s1))
                     : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
-                         : mode == 3 ? rt_walk_sub_nearest_mesh(w, sg, s0, s1)
+                         : mode == 3 ? w->sub(w, sg, s0, s1)
                          : mode >= RT_MODE_ANYTOP ? rt_walk_sub_anyhit_o(w, mode & 7, sg, s0, s1)
                                                   : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
@@ -1346,7 +1352,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
            Once a cell is left whose exit is beyond it, every primitive hit up to there has
            been tested (the cells that hold the ray points up to it were all visited, and
            each holds every primitive crossing it). */
-        if ((mode == 0 || mode == 3) && w->best + 2.0 * w->ebest < t1)
+        if ((mode == 0 || mode == 3 || mode >= RT_MODE_NEARK) && w->best + 2.0 * w->ebest < t1)
             t1 = w->best + 2.0 * w->ebest;
     advance:
         RT_ADVANCE();
@@ -1365,10 +1371,11 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
                        t0, t1, 0, NULL, 0, NULL, NULL);
 }
 
-/* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3: the lists
-   through rt_walkstate.list), in AVX2's encoding as the any-hit ones below */
-static __attribute__((noinline)) RT_ANYHIT_TARGET int
-rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)
+/* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3's second
+   level, modes RT_MODE_NEARK + O: the lists' axis order known and their bodies inlined), in
+   AVX2's encoding as the any-hit ones below, one per axis order in rt_list_order's numbering */
+RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_neark(rt_walkstate *w, int mode, const rt_subgrid *sg,
+                                                  double t0, double t1)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
@@ -1379,12 +1386,28 @@ rt_walk_sub_nearest_mesh(rt_walkstate *w, const rt_subgrid *sg, double t0, doubl
     start = &st;
 #endif
     if (g->soff16)
-        return rt_walk_box(w, 3, &sg->b, NULL, g->soff16 + sg->first16,
+        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
                            g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL,
                            start);
-    return rt_walk_box(w, 3, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0, NULL, 0, NULL, start);
+    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
+                       NULL, t0, t1, 0, NULL, 0, NULL, start);
 }
+#define RT_SUB_NEAREST(O)                                                                     \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_##O(            \
+        rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
+    {                                                                                         \
+        return rt_walk_sub_neark(w, RT_MODE_NEARK + O, sg, t0, t1);                           \
+    }
+RT_SUB_NEAREST(0)
+RT_SUB_NEAREST(1)
+RT_SUB_NEAREST(2)
+RT_SUB_NEAREST(3)
+RT_SUB_NEAREST(4)
+RT_SUB_NEAREST(5)
+#undef RT_SUB_NEAREST
+static const rt_sub_walk_fn rt_sub_nearest[6] = {rt_walk_sub_nearest_0, rt_walk_sub_nearest_1,
+                                                 rt_walk_sub_nearest_2, rt_walk_sub_nearest_3,
+                                                 rt_walk_sub_nearest_4, rt_walk_sub_nearest_5};
 
 RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0,
                                 double t1, const rt_ddastart *start)
@@ -1695,7 +1718,9 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, 0);
         if (mesh) {
-            w.list = rt_nearest_list(&r);
+            const int o = rt_list_order(&r);
+            w.list = rt_nearest_lists[o];
+            w.sub = rt_sub_nearest[o];
             w.vnmask = ~sc->vmask;
         }
         w.stamp = rt_ctx_next(c);
@@ -1859,7 +1884,7 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
 }
 
 /* 1 where the batch API's walks take the cell lists of mesh triangles (rt_anyhit_list,
-   rt_nearest_list): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
+   rt_nearest_lists): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
    API's rays never skip a primitive) */
 static int rt_mesh_only(const rt_scene *sc)
 {
