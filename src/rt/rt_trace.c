@@ -1676,13 +1676,36 @@ RT_INLINE void rt_pre_ray(rt_rayx *r, rt_gray *gr, const rt_pre4 *p, int j, cons
     gr->invd[2] = p->invd[2][j];
 }
 
-/* the top-level walk of lane j of a four-ray set-up in state 2 (mode as rt_walk_box's) */
-RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_pre4 *p, int j)
+/* the top grid's values that a batch's walks read (rt_walk_pre), copied once per batch
+   (rt_topgrid_of): read from the grid, they were reloaded and spilled again for every ray,
+   since the compiler must assume that the walk's stores (the mailbox, the hits) and calls
+   may change the grid */
+typedef struct rt_topgrid {
+    rt_box b;
+    const uint32_t *off, *refs, *leaf;
+    const int32_t *sub;
+    const rt_subgrid *subs;
+    const uint8_t *odist;
+    size_t ncells;
+} rt_topgrid;
+
+RT_INLINE rt_topgrid rt_topgrid_of(const rt_grid *g)
 {
-    const rt_grid *g = &w->sc->grid;
-    return rt_walk_box(w, mode, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                       rt_cubes_of(g, (size_t)p->oct[j]), 0.0, 0.0, 0,
-                       p, j, NULL, NULL);
+    return (rt_topgrid){.b = g->b, .off = g->off, .refs = g->refs, .leaf = g->tleaf,
+                        .sub = g->sub, .subs = g->subs, .odist = g->odist, .ncells = g->ncells};
+}
+
+/* the top-level walk of lane j of a four-ray set-up in state 2 (mode as rt_walk_box's; tg:
+   the grid's values, rt_topgrid_of) */
+RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_topgrid *tg, const rt_pre4 *p,
+                          int j)
+{
+    const uint8_t *dist = tg->odist + (size_t)p->oct[j] * tg->ncells; /* as rt_cubes_of */
+    __asm__("" : "+r"(dist));
+    if (!dist)
+        __builtin_unreachable();
+    return rt_walk_box(w, mode, &tg->b, tg->off, NULL, tg->refs, tg->leaf, tg->sub, tg->subs,
+                       dist, 0.0, 0.0, 0, p, j, NULL, NULL);
 }
 
 /* the answer of a ray that misses: every field written once (the output array is cold) */
@@ -1703,9 +1726,10 @@ static __attribute__((noinline)) long rt_nearest_apart(const rt_scene *sc, rt_ct
     return rt_nearest_core(sc, c, r, r, tout);
 }
 
-/* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j); mesh: rt_mesh_only's */
+/* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j), tg the grid's values
+   (rt_topgrid_of); mesh: rt_mesh_only's */
 RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
-                                const rt_pre4 *p, int j, int mesh)
+                                const rt_topgrid *tg, const rt_pre4 *p, int j, int mesh)
 {
     rt_rayx r;
     double t;
@@ -1724,7 +1748,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
             w.vnmask = ~sc->vmask;
         }
         w.stamp = rt_ctx_next(c);
-        rt_walk_pre(&w, mesh ? 3 : 0, p, j);
+        rt_walk_pre(&w, mesh ? 3 : 0, tg, p, j);
         t = w.best;
         i = w.bi;
     } else if ((!p || p->state[j] == 0) &&
@@ -1752,6 +1776,7 @@ RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const 
 {
     size_t k = 0;
     if (setup4) {
+        const rt_topgrid tg = rt_topgrid_of(&sc->grid);
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
@@ -1761,11 +1786,11 @@ RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const 
                 continue;
             }
             for (int j = 0; j < 4; j++)
-                rt_intersect_one(sc, c, rays + k + j, hits + k + j, &p, j, mesh);
+                rt_intersect_one(sc, c, rays + k + j, hits + k + j, &tg, &p, j, mesh);
         }
     }
     for (; k < n; k++)
-        rt_intersect_one(sc, c, rays + k, hits + k, NULL, 0, mesh);
+        rt_intersect_one(sc, c, rays + k, hits + k, NULL, NULL, 0, mesh);
 }
 
 static __attribute__((noinline)) void rt_intersect_any(const rt_scene *sc, rt_ctx *c, size_t n,
@@ -1801,7 +1826,7 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
 
 /* one ray of rt_occluded, as rt_intersect_one; ah: rt_anyhit_kind's */
 RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray,
-                                        const rt_pre4 *p, int j, int ah)
+                                        const rt_topgrid *tg, const rt_pre4 *p, int j, int ah)
 {
     rt_rayx r;
     if (p && p->state[j] == 2) {
@@ -1810,7 +1835,7 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, ah); /* RT_ANY_HIT: rt_occluded_mesh has the others */
         w.stamp = rt_ctx_next(c);
-        if (rt_walk_pre(&w, 1, p, j) == RT_WALK_BLOCKED)
+        if (rt_walk_pre(&w, 1, tg, p, j) == RT_WALK_BLOCKED)
             return 1;
         return w.T == 0.0;
     }
@@ -1826,9 +1851,9 @@ RT_INLINE unsigned char rt_occluded_one(const rt_scene *sc, rt_ctx *c, const rt_
    without blocking) */
 #define RT_OCC_TOP(O)                                                                         \
     static __attribute__((noinline, flatten)) RT_ANYHIT_TARGET int rt_occluded_top_##O(      \
-        rt_walkstate *w, const rt_pre4 *p, int j)                                            \
+        rt_walkstate *w, const rt_topgrid *tg, const rt_pre4 *p, int j)                      \
     {                                                                                         \
-        return rt_walk_pre(w, RT_MODE_ANYTOP + O, p, j) == RT_WALK_BLOCKED;                   \
+        return rt_walk_pre(w, RT_MODE_ANYTOP + O, tg, p, j) == RT_WALK_BLOCKED;               \
     }
 RT_OCC_TOP(0)
 RT_OCC_TOP(1)
@@ -1837,7 +1862,7 @@ RT_OCC_TOP(3)
 RT_OCC_TOP(4)
 RT_OCC_TOP(5)
 #undef RT_OCC_TOP
-typedef int (*rt_occ_top_fn)(rt_walkstate *w, const rt_pre4 *p, int j);
+typedef int (*rt_occ_top_fn)(rt_walkstate *w, const rt_topgrid *tg, const rt_pre4 *p, int j);
 static const rt_occ_top_fn rt_occ_top[6] = {rt_occluded_top_0, rt_occluded_top_1,
                                             rt_occluded_top_2, rt_occluded_top_3,
                                             rt_occluded_top_4, rt_occluded_top_5};
@@ -1848,7 +1873,7 @@ static const rt_occ_top_fn rt_occ_top[6] = {rt_occluded_top_0, rt_occluded_top_1
 static __attribute__((noinline)) unsigned char rt_occluded_apart(const rt_scene *sc, rt_ctx *c,
                                                                  const rt_ray *ray)
 {
-    return rt_occluded_one(sc, c, ray, NULL, 0, RT_ANY_MESH);
+    return rt_occluded_one(sc, c, ray, NULL, NULL, 0, RT_ANY_MESH);
 }
 
 /* rt_occluded's rays in a scene of mesh triangles only (rt_mesh_only, so RT_ANY_MESH walks),
@@ -1860,6 +1885,7 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
     size_t k = 0;
     if (setup4) {
         rt_pre4 p;
+        const rt_topgrid tg = rt_topgrid_of(&sc->grid);
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++) {
@@ -1872,7 +1898,7 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
                     rt_walkstate_init(&w, sc, c, &r, RT_ANY_MESH);
                     w.vnmask = ~sc->vmask;
                     w.stamp = rt_ctx_next(c);
-                    o = (unsigned char)rt_occ_top[rt_list_order(&r)](&w, &p, j);
+                    o = (unsigned char)rt_occ_top[rt_list_order(&r)](&w, &tg, &p, j);
                 } else if (p.state[j] == 0)
                     o = rt_occluded_apart(sc, c, rays + k + j);
                 occluded[k + j] = o;
@@ -1919,15 +1945,16 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
     }
     size_t k = 0;
     if (setup4) {
+        const rt_topgrid tg = rt_topgrid_of(&sc->grid);
         rt_pre4 p;
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++)
-                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &p, j, ah);
+                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &tg, &p, j, ah);
         }
     }
     for (; k < n; k++)
-        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, 0, ah);
+        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, NULL, 0, ah);
     rt_ctx_free(&c);
     return RT_OK;
 }
