@@ -430,6 +430,10 @@ typedef struct rt_pre4 {
     int oct[4];            /* octant: bit a set for d[a] < 0 */
     int c[3][4];           /* start cell */
     int step[3][4];        /* 1 or -1 */
+    int ci[4];             /* the start cell's index (c2 n1 + c1) n0 + c0 */
+    int dy[4], dz[4];      /* the index's steps along y and z, step[1] n0 and step[2] n0 n1
+                              (32 bits: the set-up is taken for top grids of fewer than 2^31
+                              cells only, rt_setup4_choose) */
     double invd[3][4];     /* 1 / d */
     double t0[4], t1[4];   /* the range clipped to the grid box */
     double tn[3][4];       /* next cell boundary in ray parameter */
@@ -642,6 +646,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     t0 = rt_v4sel(in, t0, zero); /* lanes that miss: a finite start (unused) */
     /* rt_dda_init's start cell and next boundary, rt_walk_box's constants */
     rt_v4l neg = {0, 0, 0, 0};
+    rt_v4i cs[3], ss[3];
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         const rt_v4d na = {(double)b->n[a] - 1.0, (double)b->n[a] - 1.0,
@@ -668,7 +673,14 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
         neg |= ng & (rt_v4l){(int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a};
         const rt_v4i step = __builtin_convertvector((rt_v4l){1, 1, 1, 1} + (ng & 2 * ng), rt_v4i);
         memcpy(p->step[a], &step, sizeof p->step[a]);
+        cs[a] = c;
+        ss[a] = step;
     }
+    const int32_t n0 = b->n[0], n01 = b->n[0] * b->n[1];
+    const rt_v4i ci = (cs[2] * b->n[1] + cs[1]) * n0 + cs[0], dy = ss[1] * n0, dz = ss[2] * n01;
+    memcpy(p->ci, &ci, sizeof p->ci);
+    memcpy(p->dy, &dy, sizeof p->dy);
+    memcpy(p->dz, &dz, sizeof p->dz);
     memcpy(p->t0, &t0, sizeof p->t0);
     memcpy(p->t1, &t1, sizeof p->t1);
     const rt_v4i oct4 = __builtin_convertvector(neg, rt_v4i);
@@ -700,14 +712,16 @@ static void rt_setup4_pick(void)
 #endif
 
 /* the four-ray set-up where the CPU has AVX2 and GKS_RT_SIMD allows it (rt_simd_level), with a
-   grid; otherwise NULL: every ray through the one-ray code. The same lanes in the build's own
+   grid of fewer than 2^31 top cells (rt_pre4's 32-bit cell indices; a grid that large, with
+   its 4-byte offset per cell, is far beyond what the build chooses); otherwise NULL: every ray
+   through the one-ray code. The same lanes in the build's own
    SSE2 (two registers of 2, no 64-bit compare) cost more than the one-ray code: 1400
    instructions per four rays against 360 (docs/bench/rt_tuning.md). */
 static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
 {
 #ifdef RT_SETUP4_AVX2
     pthread_once(&rt_setup4_once, rt_setup4_pick);
-    if (sc->use_grid && rt_setup4_level >= 2)
+    if (sc->use_grid && rt_setup4_level >= 2 && sc->grid.ncells < (size_t)INT32_MAX)
         return rt_setup4_avx2;
 #else
     (void)sc;
@@ -1259,8 +1273,10 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         w->step[1] = sy;
         w->step[2] = sz;
     }
-    const ptrdiff_t dx = sx, dy = (ptrdiff_t)sy * nn0, dz = (ptrdiff_t)sz * nn0 * nn1;
-    size_t ci = ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
+    const ptrdiff_t dx = sx, dy = pre ? pre->dy[lane] : (ptrdiff_t)sy * nn0,
+                    dz = pre ? pre->dz[lane] : (ptrdiff_t)sz * nn0 * nn1;
+    size_t ci = pre ? (size_t)(uint32_t)pre->ci[lane]
+                    : ((size_t)cz * (size_t)nn1 + (size_t)cy) * (size_t)nn0 + (size_t)cx;
     for (;;) {
         /* top level: the cell's byte in dist (rt_grid.odist). Below RT_CUBE_OCC an empty cell
            without a second-level grid, passed with one load (the best hit cannot have
