@@ -972,7 +972,7 @@ static inline int rt_jump_cells(double t, double j, double tj, double it, int k)
                 return RT_WALK_CONT;                                        \
             ci += dx;                                                       \
             tent = tx;                                                      \
-            tx += dtx;                                                      \
+            tx += RT_DT(0, dtx);                                            \
         } else if (ty <= tz) {                                              \
             if (ty > t1)                                                    \
                 return RT_WALK_CONT;                                        \
@@ -981,7 +981,7 @@ static inline int rt_jump_cells(double t, double j, double tj, double it, int k)
                 return RT_WALK_CONT;                                        \
             ci += dy;                                                       \
             tent = ty;                                                      \
-            ty += dty;                                                      \
+            ty += RT_DT(1, dty);                                            \
         } else {                                                            \
             if (tz > t1)                                                    \
                 return RT_WALK_CONT;                                        \
@@ -990,7 +990,7 @@ static inline int rt_jump_cells(double t, double j, double tj, double it, int k)
                 return RT_WALK_CONT;                                        \
             ci += dz;                                                       \
             tent = tz;                                                      \
-            tz += dtz;                                                      \
+            tz += RT_DT(2, dtz);                                            \
         }                                                                   \
     } while (0)
 
@@ -1273,6 +1273,11 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         w->step[1] = sy;
         w->step[2] = sz;
     }
+    /* the set-up's walks read the cells' widths in ray parameter and their inverses from its
+       record where they are used: held in registers, they were spilled at the ray's start
+       and around every second-level walk's call */
+#define RT_DT(a, v) (pre ? pre->dt[a][lane] : (v))
+#define RT_IT(a, v) (pre ? pre->it[a][lane] : (v))
     const ptrdiff_t dx = sx, dy = pre ? pre->dy[lane] : (ptrdiff_t)sy * nn0,
                     dz = pre ? pre->dz[lane] : (ptrdiff_t)sz * nn0 * nn1;
     size_t ci = pre ? (size_t)(uint32_t)pre->ci[lane]
@@ -1296,8 +1301,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                A parameter that overflows (extreme directions): ordinary steps instead.
                The far faces are the walk's next boundaries plus k cell widths. */
             const int k = (int)kind - 1;
-            const double jx = tx + (double)k * dtx, jy = ty + (double)k * dty,
-                         jz = tz + (double)k * dtz;
+            const double jx = tx + (double)k * RT_DT(0, dtx), jy = ty + (double)k * RT_DT(1, dty),
+                         jz = tz + (double)k * RT_DT(2, dtz);
             const double tj = RT_MIN(jx, RT_MIN(jy, jz));
             if (isfinite(tj)) {
                 if (tj > t1)
@@ -1307,19 +1312,19 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                    widths further: the walk's own drifted boundaries, as RT_ADVANCE keeps
                    them; an axis that does not step keeps its cell and INFINITY */
                 if (sx) {
-                    const int m = rt_jump_cells(tx, jx, tj, itx, k);
+                    const int m = rt_jump_cells(tx, jx, tj, RT_IT(0, itx), k);
                     cx += sx * m;
-                    tx += (double)m * dtx;
+                    tx += (double)m * RT_DT(0, dtx);
                 }
                 if (sy) {
-                    const int m = rt_jump_cells(ty, jy, tj, ity, k);
+                    const int m = rt_jump_cells(ty, jy, tj, RT_IT(1, ity), k);
                     cy += sy * m;
-                    ty += (double)m * dty;
+                    ty += (double)m * RT_DT(1, dty);
                 }
                 if (sz) {
-                    const int m = rt_jump_cells(tz, jz, tj, itz, k);
+                    const int m = rt_jump_cells(tz, jz, tj, RT_IT(2, itz), k);
                     cz += sz * m;
-                    tz += (double)m * dtz;
+                    tz += (double)m * RT_DT(2, dtz);
                 }
                 if ((unsigned)cx >= (unsigned)nn0 || (unsigned)cy >= (unsigned)nn1 ||
                     (unsigned)cz >= (unsigned)nn2)
@@ -1373,6 +1378,8 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
     advance:
         RT_ADVANCE();
     }
+#undef RT_DT
+#undef RT_IT
 }
 
 static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg,
