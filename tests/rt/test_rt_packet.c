@@ -395,6 +395,34 @@ static void test_incoherent(void **state)
     rt_scene_free(sc);
 }
 
+/* 64 shadow rays from the points org[k] (just outside a sphere) to light, tmin 0, tmax 1:
+   the packet path answers as rt_occluded does, as one packet traced (single 0) or handed
+   whole to the single-ray walk (single 1) */
+static void check_shadow_patch(rt_scene *sc, const double light[3],
+                               const double org[RT_PACKET][3], int single, const char *what)
+{
+    rt_ray rays[RT_PACKET];
+    unsigned char o1[RT_PACKET], o2[RT_PACKET];
+    for (int k = 0; k < RT_PACKET; k++) {
+        for (int i = 0; i < 3; i++) {
+            rays[k].org[i] = org[k][i];
+            rays[k].dir[i] = light[i] - org[k][i];
+        }
+        rays[k].tmin = 0.0;
+        rays[k].tmax = 1.0;
+    }
+    rt_packet_stats ps = {0};
+    rtc_traps_on();
+    assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
+    assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
+    rtc_traps_off();
+    printf("%s: %llu packets traced, %llu to the single-ray path\n", what,
+           (unsigned long long)ps.packets, (unsigned long long)ps.fallback_packets);
+    assert_memory_equal(o1, o2, RT_PACKET);
+    assert_int_equal(ps.packets, single ? 0 : 1);
+    assert_int_equal(ps.fallback_packets, single ? 1 : 0);
+}
+
 /* shadow packets by the spread of their origins against the grid's cells there: 64 shadow
    rays from a small patch of a finely tessellated sphere are traced as a packet; 64 from
    points along a line across many second-level cells (yet few top cells), and 64 from a
@@ -416,36 +444,19 @@ static void test_spread(void **state)
     printf("spread: grid %llu cells, %llu sub-grids of %llu cells\n",
            (unsigned long long)gi.cells, (unsigned long long)gi.subgrids,
            (unsigned long long)gi.subcells);
-    rt_ray rays[RT_PACKET];
-    unsigned char o1[RT_PACKET], o2[RT_PACKET];
-    static const char *const name[3] = {"small", "wide", "square"};
+    static const char *const name[3] = {"spread: small patch", "spread: wide patch",
+                                        "spread: square patch"};
     for (int wide = 0; wide < 3; wide++) {
         /* the square's spacing 0.015: single from about 0.013 (0.0125 stays a packet; without
            the area limit 0.018 does too) */
         const double sq = wide == 2 ? 0.015 : 0.001;
+        double org[RT_PACKET][3];
         for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
             const double x = wide == 1 ? 0.2 + 0.005 * k : 0.3 + sq * (k % 8);
             const double y = wide == 1 ? 0.3 : 0.3 + sq * (k / 8);
-            const double z = sqrt(1.0 - x * x - y * y) + 1e-6;
-            const double o[3] = {x, y, z};
-            for (int i = 0; i < 3; i++) {
-                rays[k].org[i] = o[i];
-                rays[k].dir[i] = light[i] - o[i];
-            }
-            rays[k].tmin = 0.0;
-            rays[k].tmax = 1.0;
+            org[k][0] = x, org[k][1] = y, org[k][2] = sqrt(1.0 - x * x - y * y) + 1e-6;
         }
-        rt_packet_stats ps = {0};
-        rtc_traps_on();
-        assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
-        assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
-        rtc_traps_off();
-        printf("spread: %s patch: %llu packets traced, %llu to the single-ray path\n",
-               name[wide], (unsigned long long)ps.packets,
-               (unsigned long long)ps.fallback_packets);
-        assert_memory_equal(o1, o2, RT_PACKET);
-        assert_int_equal(ps.packets, wide ? 0 : 1);
-        assert_int_equal(ps.fallback_packets, wide ? 1 : 0);
+        check_shadow_patch(sc, light, org, wide != 0, name[wide]);
     }
     rt_scene_free(sc);
 }
@@ -469,33 +480,17 @@ static void test_spread_top(void **state)
     printf("spread_top: grid %llu cells, %llu sub-grids\n", (unsigned long long)gi.cells,
            (unsigned long long)gi.subgrids);
     assert_int_equal(gi.subgrids, 0);
-    rt_ray rays[RT_PACKET];
-    unsigned char o1[RT_PACKET], o2[RT_PACKET];
     for (int wide = 0; wide < 2; wide++) {
         /* the wide patch's spacing 0.014, about 1.3 top cells across (0.01 stays a packet;
            without the top cells' area limit 0.014 does too: checked) */
         const double sq = wide ? 0.014 : 0.002;
+        double org[RT_PACKET][3];
         for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
             const double x = 0.05 + sq * (k % 8), y = 0.05 + sq * (k / 8);
-            const double o[3] = {x, y, sqrt(1.0 - x * x - y * y) + 1e-3};
-            for (int i = 0; i < 3; i++) {
-                rays[k].org[i] = o[i];
-                rays[k].dir[i] = light[i] - o[i];
-            }
-            rays[k].tmin = 0.0;
-            rays[k].tmax = 1.0;
+            org[k][0] = x, org[k][1] = y, org[k][2] = sqrt(1.0 - x * x - y * y) + 1e-3;
         }
-        rt_packet_stats ps = {0};
-        rtc_traps_on();
-        assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
-        assert_int_equal(rt_occluded_packet_stats(sc, RT_PACKET, rays, o2, &ps), RT_OK);
-        rtc_traps_off();
-        printf("spread_top: %s patch: %llu packets traced, %llu to the single-ray path\n",
-               wide ? "wide" : "small", (unsigned long long)ps.packets,
-               (unsigned long long)ps.fallback_packets);
-        assert_memory_equal(o1, o2, RT_PACKET);
-        assert_int_equal(ps.packets, wide ? 0 : 1);
-        assert_int_equal(ps.fallback_packets, wide ? 1 : 0);
+        check_shadow_patch(sc, light, org, wide, wide ? "spread_top: wide patch"
+                                                      : "spread_top: small patch");
     }
     rt_scene_free(sc);
 }
