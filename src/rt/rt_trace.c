@@ -787,56 +787,6 @@ enum { RT_ANY_HIT = 1, RT_ANY_MESH = 3 };
 #define RT_ANYHIT_TARGET
 #endif
 
-/* the start of a walk computed ahead of rt_walk_box (rt_dda_start4): its cells, steps,
-   next boundaries and cells' widths in ray parameter per axis (lane 3 unused) */
-typedef struct rt_ddastart {
-    int c[4], step[4];
-    double tn[4], dt[4];
-} rt_ddastart;
-
-#ifdef RT_SETUP4_AVX2
-/* rt_dda_init (clip 0) and rt_walk_box's cell widths in ray parameter (cw |invd|) over a
-   sub-grid's box: the three axes in three lanes of one AVX2 register, each lane the operations
-   of rt_dda_init's SSE2 lanes (the same bits). step NULL: a ray with no direction component 0
-   (the four-ray set-up's rays), the steps the signs of d; else the ray's steps (the any-hit
-   walks' rays: a component 0 has step 0 and its next boundary at +inf, as rt_dda_init has it).
-   Lane 3 holds the field that follows each array (of the ray: d[0], invd[0] and, moved to
-   lane 3, d[2]; of the box: hi[0], cw[0], inv_cw[0], the bits of n[0..1], and the sub-grid
-   record's first); all are finite, d[0] and invd[0] nonzero, so no operation there divides,
-   compares a NaN or converts one; the lane is not read. */
-static inline __attribute__((always_inline, target("avx2"))) void
-rt_dda_start4(const rt_subgrid *sg, const rt_gray *r, double t0, const int *step, rt_ddastart *s)
-{
-    const rt_box *g = &sg->b;
-    const __m256d z = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-    const __m256d o = _mm256_loadu_pd(r->o), d = _mm256_loadu_pd(r->d);
-    /* invd[0..2] from the load that ends with the struct: (d[2], invd[0], invd[1], invd[2])
-       rotated by one lane */
-    const __m256d invd = _mm256_permute4x64_pd(_mm256_loadu_pd(r->d + 2), 0x39);
-    const __m256d lo = _mm256_loadu_pd(g->lo), cw = _mm256_loadu_pd(g->cw);
-    const __m256d nd = _mm256_cvtepi32_pd(_mm_loadu_si128((const __m128i *)g->n));
-    const __m256d p = _mm256_add_pd(o, _mm256_mul_pd(_mm256_set1_pd(t0), d));
-    const __m256d f = _mm256_mul_pd(_mm256_sub_pd(p, lo), _mm256_loadu_pd(g->inv_cw));
-    const __m128i c =
-        _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(f, z), _mm256_sub_pd(nd, one)));
-    const __m256d pos = _mm256_cmp_pd(d, z, _CMP_GT_OQ);
-    const __m256d b = _mm256_add_pd(_mm256_cvtepi32_pd(c), _mm256_and_pd(pos, one));
-    const __m256d xl = _mm256_add_pd(lo, _mm256_mul_pd(b, cw));
-    const __m256d x = _mm256_blendv_pd(xl, _mm256_loadu_pd(g->hi), _mm256_cmp_pd(b, nd, _CMP_EQ_OQ));
-    const __m256d sgn = _mm256_set1_pd(-0.0);
-    __m256d tn = _mm256_mul_pd(_mm256_sub_pd(x, o), invd);
-    _mm_storeu_si128((__m128i *)s->c, c);
-    if (step) {
-        tn = _mm256_blendv_pd(tn, _mm256_set1_pd(INFINITY), _mm256_cmp_pd(d, z, _CMP_EQ_OQ));
-        s->step[0] = step[0], s->step[1] = step[1], s->step[2] = step[2];
-    } else
-        _mm_storeu_si128((__m128i *)s->step,
-                         _mm256_cvttpd_epi32(_mm256_blendv_pd(_mm256_set1_pd(-1.0), one, pos)));
-    _mm256_storeu_pd(s->tn, tn);
-    _mm256_storeu_pd(s->dt, _mm256_mul_pd(cw, _mm256_andnot_pd(sgn, invd)));
-}
-#endif
-
 /* rt_box_clip_nz with the three axes in three lanes of GCC's four-double vectors (one AVX2
    register in the mode-3 top walk, rt_intersect_mesh's encoding): the same operations, the range
    cut axis by axis in the same order (the same picks between +0 and -0). Lane 3 holds the field
@@ -1225,8 +1175,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
                           const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf,
                           const int32_t *sub, const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
-                          int clip, const rt_pre4 *pre, int lane, const int *step,
-                          const rt_ddastart *start)
+                          int clip, const rt_pre4 *pre, int lane, const int *step)
 {
     const rt_gray *gr = &w->gr;
     const int nn0 = g->n[0], nn1 = g->n[1], nn2 = g->n[2];
@@ -1242,14 +1191,6 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         itx = pre->it[0][lane], ity = pre->it[1][lane], itz = pre->it[2][lane];
         tent = pre->t0[lane];
         t1 = pre->t1[lane];
-    } else if (start) {
-        /* a second-level walk's start computed ahead (rt_dda_start4; no jumps there) */
-        sx = start->step[0], sy = start->step[1], sz = start->step[2];
-        cx = start->c[0], cy = start->c[1], cz = start->c[2];
-        tx = start->tn[0], ty = start->tn[1], tz = start->tn[2];
-        dtx = start->dt[0], dty = start->dt[1], dtz = start->dt[2];
-        itx = ity = itz = 0.0;
-        tent = t0;
     } else {
         rt_dda s;
         if (!rt_dda_init(g, gr, t0, t1, clip, step, &s))
@@ -1389,9 +1330,9 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16) /* the 2-byte layout (rt_internal.h) */
         return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL, NULL);
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
     return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0, NULL, 0, NULL, NULL);
+                       t0, t1, 0, NULL, 0, NULL);
 }
 
 /* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3's second
@@ -1402,18 +1343,11 @@ RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_neark(rt_walkstate *w, int mode, cons
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
-    const rt_ddastart *start = NULL;
-#ifdef RT_SETUP4_AVX2
-    rt_ddastart st;
-    rt_dda_start4(sg, &w->gr, t0, NULL, &st);
-    start = &st;
-#endif
     if (g->soff16)
         return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL,
-                           start);
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
     return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, NULL, start);
+                       NULL, t0, t1, 0, NULL, 0, NULL);
 }
 #define RT_SUB_NEAREST(O)                                                                     \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_##O(            \
@@ -1433,22 +1367,22 @@ static const rt_sub_walk_fn rt_sub_nearest[6] = {rt_walk_sub_nearest_0, rt_walk_
                                                  rt_walk_sub_nearest_4, rt_walk_sub_nearest_5};
 
 RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0,
-                                double t1, const rt_ddastart *start)
+                                double t1)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16)
         return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
                            g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0,
-                           w->step, start);
+                           w->step);
     return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, w->step, start);
+                       NULL, t0, t1, 0, NULL, 0, w->step);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
-    return rt_walk_sub_mode1(w, 1, sg, t0, t1, NULL);
+    return rt_walk_sub_mode1(w, 1, sg, t0, t1);
 }
 
 /* the same for RT_ANY_MESH walks (modes RT_MODE_ANYK + O: the lists' kind and axis order
@@ -1456,13 +1390,7 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
 RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_anyk(rt_walkstate *w, int mode, const rt_subgrid *sg,
                                                  double t0, double t1)
 {
-#ifdef RT_SETUP4_AVX2
-    rt_ddastart st; /* the start in AVX2 lanes, the ray's steps given (no clip here) */
-    rt_dda_start4(sg, &w->gr, t0, w->step, &st);
-    return rt_walk_sub_mode1(w, mode, sg, t0, t1, &st);
-#else
-    return rt_walk_sub_mode1(w, mode, sg, t0, t1, NULL);
-#endif
+    return rt_walk_sub_mode1(w, mode, sg, t0, t1);
 }
 /* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time, for the
    top walk of mode RT_MODE_ANYTOP + o, which inlines it (rt_occluded_top_O's flatten: one
@@ -1536,7 +1464,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
             rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                        rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL, NULL);
+                        rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL);
         }
     }
     *tout = w.best;
@@ -1571,7 +1499,7 @@ long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, si
         const rt_grid *g = &w->sc->grid;                                                      \
         return rt_walk_box(w, RT_MODE_ANYTOP + O, &g->b, g->off, NULL, g->refs, g->tleaf,     \
                            g->sub, g->subs, rt_octant_cubes(g, &w->gr), t0, t1, 0, NULL, 0,  \
-                           NULL, NULL) == RT_WALK_BLOCKED;                                    \
+                           NULL) == RT_WALK_BLOCKED;                                    \
     }
 RT_TRANSMIT_TOP(0)
 RT_TRANSMIT_TOP(1)
@@ -1617,7 +1545,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         return rt_transmit_top[rt_list_order(r)](&w, t0, t1) ? 0.0 : w.T;
     }
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
-                    rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL, NULL) == RT_WALK_BLOCKED)
+                    rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
 }
@@ -1728,7 +1656,7 @@ RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_topgrid *tg, const
     if (!dist)
         __builtin_unreachable();
     return rt_walk_box(w, mode, &tg->b, tg->off, NULL, tg->refs, tg->leaf, tg->sub, tg->subs,
-                       dist, 0.0, 0.0, 0, p, j, NULL, NULL);
+                       dist, 0.0, 0.0, 0, p, j, NULL);
 }
 
 /* the answer of a ray that misses: every field written once (the output array is cold) */
