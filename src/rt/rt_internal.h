@@ -461,9 +461,9 @@ static inline const rt_prim *rt_prim_rest(const rt_scene *sc, size_t i)
 {
     return &sc->prim[i - (sc->ntri - sc->ntri_plain)];
 }
-/* the record of committed mesh triangle i (ntri_plain <= i < ntri): its mesh's, found by
-   the meshes' ends (one mesh: no search) */
-static inline const rt_prim *rt_cmesh_rec(const rt_scene *sc, size_t i)
+/* the mesh of committed mesh triangle i (ntri_plain <= i < ntri): its index in sc->mesh and
+   sc->cmesh, found by the meshes' ends (one mesh: no search) */
+static inline size_t rt_cmesh_of(const rt_scene *sc, size_t i)
 {
     size_t lo = 0, hi = sc->nmesh - 1; /* the last mesh ends at ntri */
     while (lo < hi) {
@@ -473,7 +473,12 @@ static inline const rt_prim *rt_cmesh_rec(const rt_scene *sc, size_t i)
         else
             hi = mid;
     }
-    return &sc->cmesh[lo].rec;
+    return lo;
+}
+/* the record of committed mesh triangle i: its mesh's */
+static inline const rt_prim *rt_cmesh_rec(const rt_scene *sc, size_t i)
+{
+    return &sc->cmesh[rt_cmesh_of(sc, i)].rec;
 }
 /* the stored record of committed primitive i, or a mesh triangle's mesh's (its data is not
    the triangle's: rt_prim_at) */

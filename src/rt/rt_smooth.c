@@ -113,27 +113,13 @@ static inline void rt_acc_add(rt_acc *a, const rt_scene *sc, const rt_vd *r, siz
 static int rt_smooth_end(const rt_acc *a, int has_n, int has_c, const double ng[3], double n[3],
                          double ps[3], double rgb[3]);
 
-/* the mesh record of id (records in ascending id order), NULL if none */
-static const rt_mesh *rt_mesh_of(const rt_scene *sc, uint32_t id)
-{
-    size_t lo = 0, hi = sc->nmesh;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (sc->mesh[mid].id < id)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < sc->nmesh && sc->mesh[lo].id == id ? &sc->mesh[lo] : NULL;
-}
-
 /* rt_smooth_at of mesh triangle primitive i: the barycentric weights of a lone triangle
    (below), over the shared vertex data */
 static int rt_smooth_mesh(const rt_scene *sc, size_t i, const double P[3], const double ng[3],
                           double n[3], double ps[3], double rgb[3])
 {
-    const rt_mesh *m = rt_mesh_of(sc, (uint32_t)rt_prim_id(sc, i));
-    if (!m || (!m->has_n && !m->has_c))
+    const rt_mesh *m = &sc->mesh[rt_cmesh_of(sc, i)];
+    if (!m->has_n && !m->has_c)
         return 0;
     const double ax = fabs(ng[0]), ay = fabs(ng[1]), az = fabs(ng[2]);
     const int kd = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;

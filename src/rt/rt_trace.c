@@ -1323,37 +1323,34 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
 #undef RT_IT
 }
 
-static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg,
-                                                         double t0, double t1)
+/* the walk of second-level grid sg over [t0, t1] in mode mode (rt_walk_box's; step: NULL, or
+   the ray's steps that the top walk of modes 1 and RT_MODE_ANYTOP + O stored) */
+RT_INLINE int rt_walk_sub(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0, double t1,
+                          const int *step)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
     if (g->soff16) /* the 2-byte layout (rt_internal.h) */
-        return rt_walk_box(w, 0, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
-    return rt_walk_box(w, 0, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL, NULL,
-                       t0, t1, 0, NULL, 0, NULL);
+        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
+                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, step);
+    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
+                       NULL, t0, t1, 0, NULL, 0, step);
+}
+
+static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg,
+                                                         double t0, double t1)
+{
+    return rt_walk_sub(w, 0, sg, t0, t1, NULL);
 }
 
 /* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3's second
    level, modes RT_MODE_NEARK + O: the lists' axis order known and their bodies inlined), in
    AVX2's encoding as the any-hit ones below, one per axis order in rt_list_order's numbering */
-RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_neark(rt_walkstate *w, int mode, const rt_subgrid *sg,
-                                                  double t0, double t1)
-{
-    const rt_grid *g = &w->sc->grid;
-    const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
-    if (g->soff16)
-        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, NULL);
-    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, NULL);
-}
 #define RT_SUB_NEAREST(O)                                                                     \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_##O(            \
         rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
     {                                                                                         \
-        return rt_walk_sub_neark(w, RT_MODE_NEARK + O, sg, t0, t1);                           \
+        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL);                           \
     }
 RT_SUB_NEAREST(0)
 RT_SUB_NEAREST(1)
@@ -1366,42 +1363,23 @@ static const rt_sub_walk_fn rt_sub_nearest[6] = {rt_walk_sub_nearest_0, rt_walk_
                                                  rt_walk_sub_nearest_2, rt_walk_sub_nearest_3,
                                                  rt_walk_sub_nearest_4, rt_walk_sub_nearest_5};
 
-RT_INLINE int rt_walk_sub_mode1(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0,
-                                double t1)
-{
-    const rt_grid *g = &w->sc->grid;
-    const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
-    if (g->soff16)
-        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0,
-                           w->step);
-    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, w->step);
-}
-
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
-    return rt_walk_sub_mode1(w, 1, sg, t0, t1);
+    return rt_walk_sub(w, 1, sg, t0, t1, w->step);
 }
 
-/* the same for RT_ANY_MESH walks (modes RT_MODE_ANYK + O: the lists' kind and axis order
-   known), in AVX2's encoding (rt_walk_sub_anyhit_o) */
-RT_INLINE RT_ANYHIT_TARGET int rt_walk_sub_anyk(rt_walkstate *w, int mode, const rt_subgrid *sg,
-                                                 double t0, double t1)
-{
-    return rt_walk_sub_mode1(w, mode, sg, t0, t1);
-}
-/* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time, for the
-   top walk of mode RT_MODE_ANYTOP + o, which inlines it (rt_occluded_top_O's flatten: one
-   encoding, no call, no register saves of a callee). Not always_inline: rt_walk_box calls it
-   and it calls rt_walk_box, a cycle GCC refuses to inline by force; flatten inlines it once
-   (the inner walk's own call of it is dead code, its mode being RT_MODE_ANYK + o), and the
-   walk's copies in the build's own encoding keep a dead call rather than a target mismatch. */
+/* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time (modes
+   RT_MODE_ANYK + o: the lists' kind and axis order known), for the top walk of mode
+   RT_MODE_ANYTOP + o, which inlines it (rt_occluded_top_O's flatten: one encoding, no call, no
+   register saves of a callee). Not always_inline: rt_walk_box calls it and it calls
+   rt_walk_box, a cycle GCC refuses to inline by force; flatten inlines it once (the inner
+   walk's own call of it is dead code, its mode being RT_MODE_ANYK + o), and the walk's copies
+   in the build's own encoding keep a dead call rather than a target mismatch. */
 static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
                                                        const rt_subgrid *sg, double t0, double t1)
 {
-    return rt_walk_sub_anyk(w, RT_MODE_ANYK + o, sg, t0, t1);
+    return rt_walk_sub(w, RT_MODE_ANYK + o, sg, t0, t1, w->step);
 }
 
 /* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
@@ -1860,8 +1838,8 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
         occluded[k] = rt_occluded_apart(sc, c, rays + k);
 }
 
-/* 1 where the batch API's walks take the cell lists of mesh triangles (rt_anyhit_list,
-   rt_nearest_lists): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
+/* 1 where the batch API's walks take the cell lists of mesh triangles (rt_cell_mesh_k's
+   copies per axis order): a grid over mesh triangles only and a CPU with AVX2 and BMI (the batch
    API's rays never skip a primitive) */
 static int rt_mesh_only(const rt_scene *sc)
 {

@@ -3,8 +3,8 @@
  * test_rt_smooth.c -- smooth areas (rt_scene_add_polygon_data): interpolated vertex normals
  * reproduce the Lambert shading of the exact sphere, flat facets do not; vertex colours are
  * interpolated linearly (barycentric in triangles, mean value coordinates in polygons, equal
- * along a shared edge); bad vertex data is rejected; scenes without vertex data render as
- * before (the same bits whatever rt_render_options.smooth says).
+ * along a shared edge), each mesh's from its own; bad vertex data is rejected; scenes without
+ * vertex data render as before (the same bits whatever rt_render_options.smooth says).
  *
  * Tolerance of the sphere test: 0.01 per channel (2.6 of 255 output levels), over pixels whose
  * exact normal is at least 0.3 towards the viewer and whose exact N.L is not within 0.1 of 0
@@ -238,6 +238,49 @@ static void test_flat_unchanged(void **state)
     assert_memory_equal(img[0], img[2], sizeof img[0]);
 }
 
+/* meshes take their own vertex data: three meshes side by side (squares of two triangles
+   over x in [3k, 3k + 2]), the first with red vertex colours, the second with none (its
+   surface's colour), the third with green ones; a ray down onto each gets its own mesh's */
+static void test_mesh_colours_own(void **state)
+{
+    (void)state;
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface su;
+    rt_surface_default(&su);
+    su.refl_eq = RT_REFL_NONE;
+    su.diffuse[0] = 0.2, su.diffuse[1] = 0.3, su.diffuse[2] = 0.4;
+    const int s = rt_scene_add_surface(sc, &su);
+    const uint32_t ix[6] = {0, 1, 2, 0, 2, 3};
+    const double want[3][3] = {{1, 0, 0}, {0.2, 0.3, 0.4}, {0, 1, 0}};
+    for (int k = 0; k < 3; k++) {
+        const double x0 = 3.0 * k;
+        const double v[12] = {x0, 0, -1, x0 + 2, 0, -1, x0 + 2, 2, -1, x0, 2, -1};
+        double c[12];
+        for (int j = 0; j < 12; j++)
+            c[j] = want[k][j % 3];
+        assert_true(rt_scene_add_mesh(sc, 4, v, NULL, k == 1 ? NULL : c, 2, ix, s, s) >= 0);
+    }
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rtu_view vw = {.win = {0, 9, 0, 3}, .prp = {4.5, 1.5, 10}, .vpd = 0, .bpd = -5, .fpd = 5,
+                   .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
+    double m[4][4];
+    rtu_view_matrix(&vw, m);
+    rt_camera cam;
+    assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, 9, 3), RT_OK);
+    rt_render_options o;
+    rtu_options_plain(&o);
+    o.threads = 1;
+    float rgb[9 * 3 * 3];
+    assert_int_equal(rt_render(sc, &cam, &o, rgb, NULL), RT_OK);
+    for (int k = 0; k < 3; k++) { /* pixel (3k + 1, 1): centre (3k + 1.5, 1.5), in mesh k */
+        const float *p = rgb + 3 * (1 * 9 + 3 * k + 1);
+        for (int a = 0; a < 3; a++)
+            assert_float_equal(p[a], want[k][a], 1e-6);
+    }
+    rt_scene_free(sc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -245,6 +288,7 @@ int main(void)
         cmocka_unit_test(test_colours),
         cmocka_unit_test(test_shared_edge),
         cmocka_unit_test(test_flat_unchanged),
+        cmocka_unit_test(test_mesh_colours_own),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
