@@ -99,6 +99,12 @@ wait $pid
 rc=$?
 [ $rc -eq 0 ] || echo "FAIL: exit status $rc after key 0"
 # 5. closing the window (here: destroyed by xdotool) ends the program too, status 0
+# (the server first answers again: the first program and xdotool have just disconnected)
+i=0
+while ! xdotool getmouselocation >/dev/null 2>&1; do
+    i=$((i + 1)); [ $i -gt 100 ] && { echo "FAIL: Xvfb no longer answers"; xvfb_state; exit 1; }
+    sleep 0.1
+done
 "$render" fig3.gksm --x11 --frames 3 --size 60 >out2.txt 2>err2.txt &
 pid=$!
 i=0
@@ -106,7 +112,8 @@ until win=$(xdotool search --name '^gks3d|^drag: turn' | head -1) && [ -n "$win"
     i=$((i + 1))
     [ $i -gt 1200 ] && { echo "FAIL: no second window"; cat out2.txt err2.txt; exit 1; }
     kill -0 $pid 2>/dev/null ||
-        { echo "FAIL: gks3d-render ended before its second window"; cat out2.txt err2.txt; exit 1; }
+        { echo "FAIL: gks3d-render ended before its second window"; cat out2.txt err2.txt
+          xvfb_state; exit 1; }
     sleep 0.1
 done
 sleep 0.5

@@ -5,6 +5,7 @@
 #   xvfb_start         an Xvfb of its own, started in the current folder (display.txt,
 #                      xvfb.log), DISPLAY exported, killed when the script exits; skip (77)
 #                      if it does not start or (with xdotool present) does not answer
+#   xvfb_state         whether that Xvfb still runs, and its log's end (for a FAIL message)
 xvfb_need() {
     for t in "$@"; do
         if ! command -v "$t" >/dev/null 2>&1; then
@@ -24,11 +25,23 @@ xvfb_stop() {
     wait "$xpid" 2>/dev/null
 }
 
+# Prints whether the test's Xvfb still runs, and its log: for a failure's message.
+xvfb_state() {
+    if kill -0 "${xpid:-0}" 2>/dev/null; then echo "Xvfb (pid $xpid, :$(cat display.txt)) runs"
+    else echo "Xvfb (pid ${xpid:-none}) has exited"; fi
+    tail -5 xvfb.log 2>/dev/null
+}
+
 xvfb_start() {
     # Xvfb picks a free display itself and writes its number (-displayfd): no race with
     # other X servers started at the same time (parallel tests, other users).
+    # -noreset: by default the server resets when its last client disconnects, and a client
+    # that connects during that reset is refused (seen: x11_render_turn's second
+    # gks3d-render, started right after the first one and xdotool had exited, "no X
+    # display to open"); a test's server lives only as long as its test anyway.
     rm -f display.txt
-    Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
+    Xvfb -displayfd 3 -screen 0 1024x1024x24 -nolisten tcp -noreset 3>display.txt \
+        >xvfb.log 2>&1 &
     xpid=$!
     trap xvfb_stop EXIT
     i=0
