@@ -3,9 +3,10 @@
 # fuzz.sh -- fuzz the untrusted-input readers with libFuzzer for a fixed budget.
 #   scripts/fuzz.sh [seconds per target, default 60]
 # Installs clang and its libFuzzer runtime from Debian if missing, builds each target with
-# -fsanitize=fuzzer,address,undefined, runs it on a copy of the committed corpus
-# (tests/fuzz/corpus_*), and on a crash copies the input into the corpus (so the replay
-# test `fuzz_*_replay` keeps it as a regression test) and fails.
+# -fsanitize=fuzzer,address,undefined (the library compiled once for all of them), runs each
+# on a copy of the committed corpus (tests/fuzz/corpus_*), two targets at a time, and on a
+# crash copies the input into the corpus (so the replay test `fuzz_*_replay` keeps it as a
+# regression test) and fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 budget=${1:-60}
@@ -39,50 +40,77 @@ flags=(-g -O1 -fsanitize=fuzzer,address,undefined,float-cast-overflow,pointer-ov
        -fno-sanitize-recover=undefined,float-cast-overflow,pointer-overflow
        -DGKS3D_BUILDING -DGKS_FAULT_INJECTION -D_POSIX_C_SOURCE=200809L "${incs[@]}" -Iinclude
        -I"$out/include") # GKS_FAULT_INJECTION: the test hooks (fuzz_state fails allocations)
-clang "${flags[@]}" tests/fuzz/fuzz_gksm.c src/c/ws/mf/gks_mf_codec.c src/c/base/gks_alloc.c \
-    -lm -o "$out/fuzz_gksm"
-# The MI workstation target runs the whole library (reader, interpreter, pipeline).
 # rt_mpi.c (MPI), ws_cairo.c and ws_x11.c (cairo, X11) are optional drivers built only when
 # found (src/rt, src/c/ws CMake); the fuzz builds go without them, as the driver list allows.
 mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' -not -name rt_mpi.c -not -name ws_cairo.c -not -name ws_x11.c | sort)
-clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_mi.c "${lib_srcs[@]}" -lpng -lpthread -lm \
-    -o "$out/fuzz_mi"
-# The state machine: random call sequences through the whole library.
-clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_state.c "${lib_srcs[@]}" -lpng -lpthread -lm \
-    -o "$out/fuzz_state"
-# Input scripts: the script reader and the measure process behind every input function.
-clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_input.c "${lib_srcs[@]}" -lpng -lpthread -lm \
-    -o "$out/fuzz_input"
-# gks3d-render's entry (src/tools/gks3d_render.c, included by the target) on metafiles:
-# its corpus is the MI target's (corpus_mi), copied to corpus_render below.
-clang "${flags[@]}" -Isrc/rt tests/fuzz/fuzz_render.c "${lib_srcs[@]}" -lpng -lpthread -lm \
-    -o "$out/fuzz_render"
+# The library is compiled once (two compilers at a time, one object per source) and linked
+# into each target that runs it: the instrumentation (-fsanitize=fuzzer on an object is the
+# coverage only; the fuzzer's main comes at the link) is the same for all of them.
+mkdir -p "$out/obj"
+objs=()
+for src in "${lib_srcs[@]}"; do objs+=("$out/obj/$(echo "${src%.c}" | tr / _).o"); done
+for i in "${!lib_srcs[@]}"; do
+    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
+    clang "${flags[@]}" -Isrc/rt -c "${lib_srcs[$i]}" -o "${objs[$i]}" &
+done
+while [ -n "$(jobs -rp)" ]; do wait -n; done # a failed compile stops the script (set -e)
+obj_of() { echo "$out/obj/$(echo "${1%.c}" | tr / _).o"; }
+clang "${flags[@]}" tests/fuzz/fuzz_gksm.c "$(obj_of src/c/ws/mf/gks_mf_codec.c)" \
+    "$(obj_of src/c/base/gks_alloc.c)" -lm -o "$out/fuzz_gksm"
+# The MI workstation target runs the whole library (reader, interpreter, pipeline); the state
+# machine random call sequences through it; the input target the script reader and the measure
+# process behind every input function; the render target gks3d-render's entry
+# (src/tools/gks3d_render.c, included by the target) on metafiles: its corpus is the MI
+# target's (corpus_mi), copied to corpus_render below.
+for t in mi state input render; do
+    clang "${flags[@]}" -Isrc/rt "tests/fuzz/fuzz_$t.c" "${objs[@]}" -lpng -lpthread -lm \
+        -o "$out/fuzz_$t" &
+    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
+done
 # The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
 clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
     -o "$out/fuzz_scene"
+while [ -n "$(jobs -rp)" ]; do wait -n; done
 
-status=0
-for target in gksm mi state input scene render; do
-    work="$out/corpus_$target"
-    src="tests/fuzz/corpus_$target"
+# Each target fuzzes for the budget in a scratch folder of its own (fuzz_state's workstations
+# write files relative to it), two at a time (the machine's two cores); a crash's input is
+# copied into the corpus, so that the replay test `fuzz_*_replay` keeps it as a regression test.
+fuzz_one() {
+    local target=$1 work="$out/corpus_$1" src="tests/fuzz/corpus_$1"
     [ "$target" = render ] && src=tests/fuzz/corpus_mi # the metafile corpus
-    rm -rf "$work"
+    rm -rf "$work" "$out/$target.status"
     cp -r "$src" "$work"
-    echo "fuzz: $target for ${budget}s"
-    # run in a scratch folder: fuzz_state's workstations write files relative to it
     mkdir -p "$out/run_$target"
-    if ! (cd "$out/run_$target" && "../fuzz_$target" -max_total_time="$budget" -max_len=65536 \
+    if (cd "$out/run_$target" && "../fuzz_$target" -max_total_time="$budget" -max_len=65536 \
             -timeout=10 -rss_limit_mb=2048 -artifact_prefix="../$target-" "../corpus_$target" \
             2>"../$target.log"); then
-        tail -40 "$out/$target.log"
-        for a in "$out/$target-"*; do
-            [ -e "$a" ] || continue
-            cp "$a" "$src/regress-$(basename "$a")"
-            echo "fuzz: kept $a as $src/regress-$(basename "$a")"
-        done
-        status=1
+        echo ok > "$out/$target.status"
     else
-        grep -E '^#[0-9]+.*(DONE|pulse)' "$out/$target.log" | tail -1
+        echo failed > "$out/$target.status"
     fi
+}
+targets=(gksm mi state input scene render)
+for target in "${targets[@]}"; do
+    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n || true; done
+    echo "fuzz: $target for ${budget}s"
+    fuzz_one "$target" &
+done
+while [ -n "$(jobs -rp)" ]; do wait -n || true; done
+status=0
+for target in "${targets[@]}"; do
+    src="tests/fuzz/corpus_$target"
+    [ "$target" = render ] && src=tests/fuzz/corpus_mi
+    if [ "$(cat "$out/$target.status" 2>/dev/null)" = ok ]; then
+        echo "fuzz: $target: $(grep -E '^#[0-9]+.*(DONE|pulse)' "$out/$target.log" | tail -1)"
+        continue
+    fi
+    echo "fuzz: $target FAILED"
+    tail -40 "$out/$target.log"
+    for a in "$out/$target-"*; do
+        [ -e "$a" ] || continue
+        cp "$a" "$src/regress-$(basename "$a")"
+        echo "fuzz: kept $a as $src/regress-$(basename "$a")"
+    done
+    status=1
 done
 exit $status
