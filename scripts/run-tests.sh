@@ -21,9 +21,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each stage's line says when it starts, in seconds since the script started (bash's SECONDS).
+stage() { echo "=== run-tests (${SECONDS} s): $*"; }
 scripts/setup.sh
 
-echo "=== run-tests: Debug build with -Werror (build-test)"
+stage "Debug build with -Werror (build-test)"
 tests=(-DBUILD_TESTING=ON -DGKS_REQUIRE_TESTS=ON)
 cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_BUILD_BENCHMARKS=ON "${tests[@]}"
@@ -35,7 +37,7 @@ ctest --test-dir build-test --output-on-failure -j2
 off=()
 while IFS= read -r name; do off+=("-D$name=OFF"); done < <(
     sed -n 's/^\(GKS_WITH_[A-Z0-9_]*\):BOOL=.*/\1/p' build-test/CMakeCache.txt | sort)
-echo "=== run-tests: every optional dependency off (build-min): ${off[*]}"
+stage "every optional dependency off (build-min): ${off[*]}"
 cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Release -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_BUILD_BENCHMARKS=OFF "${tests[@]}" "${off[@]}"
 cmake --build build-min -j2
@@ -43,7 +45,7 @@ ctest --test-dir build-min --output-on-failure -j2
 cmake -S . -B build-min -DGKS_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build-min -j2
 
-echo "=== run-tests: sanitizer build (build-asan)"
+stage "sanitizer build (build-asan)"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-g -O1" \
       -DGKS_WERROR=ON -DGKS_SANITIZE=ON "${tests[@]}"
 cmake --build build-asan -j2
@@ -70,7 +72,7 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # ran in the two stages before.
 ctest --test-dir build-asan --output-on-failure -j2 -LE nocode
 
-echo "=== run-tests: ThreadSanitizer build (build-tsan), the threaded tests"
+stage "ThreadSanitizer build (build-tsan), the threaded tests"
 unset ASAN_OPTIONS
 tsan_targets=(test_threads test_raytrace test_rt_oom test_rt_pool test_rt_render test_rt_tiles
               test_rt_isect test_rt_smooth test_rt_cubes test_rt_buildparts)
@@ -82,6 +84,6 @@ cmake --build build-tsan -j2 --target "${tsan_targets[@]}"
 TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" \
     ctest --test-dir build-tsan --output-on-failure --no-tests=error -j2 -R "$tsan_tests"
 
-echo "=== run-tests: fuzzing the metafile reader (libFuzzer, ${FUZZ_SECONDS:-30} s)"
+stage "fuzzing the untrusted-input readers (libFuzzer, ${FUZZ_SECONDS:-30} s a target)"
 scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
-echo "=== run-tests: all passed"
+stage "all passed"
