@@ -658,6 +658,128 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
     *hmax = hx;
 }
 
+/* Triangle t whose cells span two axes with one cell on the third, a (c0[a] == c1[a]), as
+ * rt_tri_cells decides, with fewer tests. When the whole triangle lies in that cell's box
+ * shrunk by eps on a, the triangle meets a cell of the range exactly when its projection
+ * along a meets the cell's rectangle, and the projection's separating axes are the faces of
+ * the two other axes, P and Q, and the three axes e_i x X_a of the filter's group a. A cell
+ * whose face tests keep it with a margin of eps and whose group-a filter keeps it with a
+ * margin of eps (|e_i| on P and Q): the projection meets the rectangle shrunk by eps, so a
+ * point of the triangle lies at least eps inside the cell's box on every axis, and every
+ * axis of rt_tri_box keeps it (rt_tri_row's argument); no plane test and no other group is
+ * needed. A face test or the filter that separates decides as in rt_tri_cells; the cells
+ * left between (a margin under eps, or undecided by the filter) get rt_tri_box. Returns 1, 0
+ * (no memory), or -1 when the triangle is not inside on a (nothing pushed). */
+static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
+                       const double bb[6], const rt_box *g, const int c0[3], const int c1[3],
+                       double eps, rt_build *b, size_t base, size_t prim, int a)
+{
+    const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
+    double bca, ha;
+    rt_tab_box(tab, g, a, c0[a], eps, &bca, &ha);
+    if (!(bb[a] - bca >= eps - ha && bb[3 + a] - bca <= ha - eps))
+        return -1;
+    const int P = a == 2 ? 0 : a + 1, Q = a == 0 ? 2 : a - 1; /* group a's P and Q */
+    double hs[3]; /* rt_tri_cells' hs[a] */
+    RT_HALF_S(hs, P, Q);
+    double emax = 0.0;
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++)
+            emax = rt_dmax(emax, fabs(e[i][k]));
+    /* the cells of P (cv: P's terms of group a) and of Q (cw), as rt_axis_cells makes them;
+       out: the face test separates, in: it keeps with the margin; L, hmin, hmax as there */
+    double cv[RT_SPAN][3], cw[RT_SPAN][3], bcp[RT_SPAN], hp[RT_SPAN], bcq[RT_SPAN], hq[RT_SPAN];
+    uint32_t outp = 0, inp = 0, outq = 0, inq = 0;
+    double L[3], hmin[2], hmax[2];
+#define RT_SLAB_AXIS(X, O, BCS, HS, OUT, IN, S, TERMS)                                        \
+    do {                                                                                       \
+        const double o = t->v[0][X], f0 = e[0][O], f1 = e[1][O], f2 = e[2][O];                 \
+        double l = rt_dmax(fabs(e[0][X]), fabs(e[2][X])), hn = HUGE_VAL, hx = 0.0;             \
+        for (int q = c0[X]; q <= c1[X]; q++) {                                                 \
+            const int k = q - c0[X];                                                           \
+            double bc, h;                                                                      \
+            rt_tab_box(tab, g, X, q, eps, &bc, &h);                                            \
+            BCS[k] = bc;                                                                       \
+            HS[k] = h;                                                                         \
+            const double mn = bb[X] - bc, mx = bb[3 + X] - bc;                                 \
+            OUT |= (uint32_t)((mn > h) | (mx < -h)) << k;                                      \
+            IN |= (uint32_t)((mn <= h - eps) & (mx >= eps - h)) << k;                          \
+            const double d = bc - o;                                                           \
+            TERMS;                                                                             \
+            l = rt_dmax(l, rt_dmax(fabs(d), h));                                               \
+            hn = rt_dmin(hn, h);                                                               \
+            hx = rt_dmax(hx, h);                                                               \
+        }                                                                                      \
+        L[S] = l;                                                                              \
+        hmin[S] = hn;                                                                          \
+        hmax[S] = hx;                                                                          \
+    } while (0)
+    RT_SLAB_AXIS(P, Q, bcp, hp, outp, inp, 0,
+                 (cv[k][0] = f0 * d + hs[0], cv[k][1] = f1 * d + hs[1], cv[k][2] = f2 * d + hs[2]));
+    RT_SLAB_AXIS(Q, P, bcq, hq, outq, inq, 1,
+                 (cw[k][0] = f0 * d, cw[k][1] = f1 * d, cw[k][2] = f2 * d));
+#undef RT_SLAB_AXIS
+    L[2] = rt_dmax(rt_dmax(fabs(e[0][a]), fabs(e[2][a])), rt_dmax(fabs(bca - t->v[0][a]), ha));
+    /* rt_tri_cells' bounds of group a (B, Dh over the range's cells; a has one cell), the
+       inner one less eps (|e_i| on P and Q): the shrunk rectangle's half extent on the axis */
+    const double B = __atomic_load_n(&rt_filter_on, __ATOMIC_RELAXED)
+                         ? 64.0 * (DBL_EPSILON / 2) * emax * (L[0] + L[1] + L[2]) + 0x1p-1000
+                         : HUGE_VAL;
+    const double Bi = B + emax * ((hmax[0] - hmin[0]) + (hmax[1] - hmin[1]));
+    double ro[3], ri[3];
+    for (int i = 0; i < 3; i++) {
+        const double aP = fabs(e[i][P]), aQ = fabs(e[i][Q]);
+        const double wr = fabs(hs[i]) + (hmax[0] * aQ + hmax[1] * aP);
+        ro[i] = wr + B;
+        ri[i] = wr - Bi - eps * (aP + aQ);
+    }
+    uint64_t nexact = 0;
+    int c[3];
+    c[a] = c0[a];
+    for (c[Q] = c0[Q]; c[Q] <= c1[Q]; c[Q]++) {
+        const int kq = c[Q] - c0[Q];
+        if (outq >> kq & 1)
+            continue;
+        const double *w = cw[kq];
+        for (c[P] = c0[P]; c[P] <= c1[P]; c[P]++) {
+            const int kp = c[P] - c0[P];
+            if (outp >> kp & 1)
+                continue;
+            const double *v = cv[kp];
+            int r = 0;
+            for (int i = 0; i < 3; i++) {
+                const double m = fabs(w[i] - v[i]);
+                if (!(m <= ri[i])) {
+                    if (m > ro[i]) {
+                        r = 1;
+                        break;
+                    }
+                    r = -1;
+                }
+            }
+            if (r > 0)
+                continue;
+            if (r < 0 || !(inp >> kp & inq >> kq & 1)) {
+                double bc[3], h[3];
+                bc[a] = bca;
+                h[a] = ha;
+                bc[P] = bcp[kp];
+                h[P] = hp[kp];
+                bc[Q] = bcq[kq];
+                h[Q] = hq[kq];
+                nexact++;
+                if (!rt_tri_box(t, e, n, bc, h))
+                    continue;
+            }
+            if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
+                return 0;
+        }
+    }
+    if (nexact)
+        __atomic_fetch_add(&rt_exact_cells, nexact, __ATOMIC_RELAXED);
+    return 1;
+}
+
 /* always inlined into rt_insert, its one caller: gcc stopped inlining it when the top
    level's loop changed (bunny commit 280 -> 298 M instructions) */
 static inline __attribute__((always_inline)) int
@@ -669,6 +791,12 @@ rt_tri_cells(const rt_tri *t, const double e[3][3], const double n[3], const dou
     if (spans == 1) {
         const int a = c0[0] != c1[0] ? 0 : c0[1] != c1[1] ? 1 : 2;
         const int r = rt_tri_row(t, e, n, bb, g, c0, c1, eps, b, base, prim, a);
+        if (r >= 0)
+            return r;
+    }
+    for (int a = 0; a < 3 && spans < 3; a++) { /* a row not inside on both: on one of them? */
+        const int r = c0[a] == c1[a] ? rt_tri_slab(t, e, n, bb, g, c0, c1, eps, b, base, prim, a)
+                                     : -1;
         if (r >= 0)
             return r;
     }

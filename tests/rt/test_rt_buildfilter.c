@@ -14,6 +14,8 @@
  *    1, 4 and 64 ulps and 1e-14 .. 1e-10 beside it, on both sides, for the three axes, the
  *    four corners of a cell face and several cells; the third vertex on the far side of the
  *    edge (the edge axis decides) or on the near side;
+ *  - "slab": the same edges on triangles inside one cell on the third axis, whose cells the
+ *    build decides in the projection along that axis (rt_tri_slab);
  *  - "lattice": random triangles with vertices on the enlarged boxes' faces (q - eps, q + eps)
  *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
  *  - "lattice" again with the second level (crowded cells get sub-grids, whose cell boxes the
@@ -73,8 +75,9 @@ static void add_rot(tris *t, int ax, const double upq[3][3])
     add_tri(t, v);
 }
 
-/* "touch": see the head comment */
-static void touch_scene(tris *t)
+/* the edges of "touch" (see the head comment), the triangles' vertices at u[0], u[1], u[2]
+   on the third axis */
+static void touch_edges(tris *t, const double u[3])
 {
     const double offs[] = {0.0, 1e-14, 1e-13, 1e-12, 1e-10};
     const int ulps[] = {1, 4, 64};
@@ -103,14 +106,20 @@ static void touch_scene(tris *t)
                                 /* the third vertex: away from the cell (far) or towards it */
                                 const double w = far ? -1.0 : 1.0;
                                 const double upq[3][3] = {
-                                    {2.5, p0 - 1.0 * sp, q0 + 1.0 * sq},
-                                    {5.5, p0 + 1.0 * sp, q0 - 1.0 * sq},
-                                    {4.0, p0 + w * 0.75 * sp, q0 + w * 0.75 * sq},
+                                    {u[0], p0 - 1.0 * sp, q0 + 1.0 * sq},
+                                    {u[1], p0 + 1.0 * sp, q0 - 1.0 * sq},
+                                    {u[2], p0 + w * 0.75 * sp, q0 + w * 0.75 * sq},
                                 };
                                 add_rot(t, ax, upq);
                             }
                         }
                 }
+}
+
+/* "touch": see the head comment */
+static void touch_scene(tris *t)
+{
+    touch_edges(t, (const double[3]){2.5, 5.5, 4.0});
     /* planes through a cell corner, and a vertex on a cell face, exactly */
     for (int q = 2; q <= 4; q++) {
         const double X = cell_hi(q), Y = cell_hi(q + 1), Z = cell_lo(q);
@@ -122,6 +131,18 @@ static void touch_scene(tris *t)
                               cell_lo(q) - 0.5, 3.5, 5.25};
         add_tri(t, v3);
     }
+}
+
+/* "slab": the edges of "touch" on triangles that lie inside one cell on the third axis (the
+   build's rt_tri_slab: its cells decided in the projection along that axis), in the middle of
+   the cell and as close to its faces as the cell range of one cell allows (2 eps inside,
+   where the enlarged box is 3 eps away), tilted both ways */
+static void slab_scene(tris *t)
+{
+    touch_edges(t, (const double[3]){4.25, 4.75, 4.5});
+    touch_edges(t, (const double[3]){4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS, 4.5});
+    touch_edges(t, (const double[3]){5.0 - 2.0 * EPS, 4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS});
+    touch_edges(t, (const double[3]){4.5, 4.5, 4.5});
 }
 
 /* "lattice": n random triangles near the centre, vertices on q - eps, q + eps, q, q + 1/2 */
@@ -214,6 +235,16 @@ static void test_touch(void **state)
     free(t.v);
 }
 
+static void test_slab(void **state)
+{
+    (void)state;
+    tris t = {0};
+    slab_scene(&t);
+    const uint64_t exact = check(&t, 0, "slab");
+    assert_true(exact > 0);
+    free(t.v);
+}
+
 static void test_lattice(void **state)
 {
     (void)state;
@@ -237,6 +268,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_touch),
+        cmocka_unit_test(test_slab),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_lattice_sub),
     };
