@@ -374,6 +374,8 @@ void rt_grid_free(rt_grid *g)
     free(g->subs);
     rt_big_free(&g->soff_m);
     rt_big_free(&g->srefs_m);
+    free(g->sref16);
+    free(g->sloc);
     rt_leaves_free(g); /* soff16 lives in soff_m */
     memset(g, 0, sizeof *g);
 }
@@ -1702,6 +1704,58 @@ static void rt_sub_narrow(rt_grid *g)
     g->soff = NULL;
 }
 
+/* A widened top level's sub-grids (rt_top_coarsen) hold triangles that span several of
+ * their cells: about 7 references per triangle from 1.2 sub-grids each on random triangles,
+ * so a sub-grid names the same few primitives again and again. Their references become
+ * 2-byte indices into a table of the primitives each sub-grid holds (rt_grid.sref16, sloc:
+ * 2 B per reference and 4 B per primitive and sub-grid, instead of 4 B per reference;
+ * random triangles 27-31 -> 19-21 B a triangle), the same lists in the same order; the
+ * walks read a cell's list through the table. Needs the 2-byte offsets' layout (at most
+ * 65535 references a sub-grid, so as many primitives) and no float leaves (they read srefs);
+ * without the memory for the new arrays srefs stays. The meshes' sub-grids (about 4
+ * references per insertion) keep srefs: their rays would pay the table's load per
+ * reference (docs/bench/rt_tuning.md, 2026-12-06). */
+static void rt_sub_local(rt_grid *g, size_t nprim)
+{
+    if (!g->soff16 || !g->srefs || !g->nsubs || !g->nsrefs || g->tleaf)
+        return;
+    /* where[i]: 1 + primitive i's index in the table of the sub-grid being made, 0: none */
+    uint32_t *where = rt_calloc_array(nprim ? nprim : 1, sizeof(uint32_t));
+    uint16_t *r16 = rt_alloc_array(g->nsrefs, sizeof(uint16_t));
+    uint32_t *loc = rt_alloc_array(g->nsrefs, sizeof(uint32_t));
+    if (!where || !r16 || !loc) {
+        free(where);
+        free(r16);
+        free(loc);
+        return;
+    }
+    const uint32_t *refs = g->srefs;
+    uint32_t nl = 0;
+    for (size_t k = 0; k < g->nsubs; k++) {
+        rt_subgrid *sg = &g->subs[k];
+        const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
+        const uint32_t r0 = sg->ref0, r1 = r0 + g->soff16[sg->first16 + nc], l0 = nl;
+        sg->loc0 = l0;
+        for (uint32_t j = r0; j < r1; j++) {
+            const uint32_t i = refs[j];
+            if (!where[i]) {
+                loc[nl++] = i;
+                where[i] = nl - l0;
+            }
+            r16[j] = (uint16_t)(where[i] - 1);
+        }
+        for (uint32_t q = l0; q < nl; q++)
+            where[loc[q]] = 0;
+    }
+    free(where);
+    uint32_t *fit = realloc(loc, (size_t)nl * sizeof *loc);
+    rt_big_free(&g->srefs_m);
+    g->srefs = NULL;
+    g->sref16 = r16;
+    g->sloc = fit ? fit : loc;
+    g->nsloc = nl;
+}
+
 /* for tests: the smallest chunk of the second level's dynamic parts in references (0: the
    default, RT_SUB_CHUNK_MIN) and the front chunks that part 0 takes at most (0: no limit), so
    that a test makes many chunks and chunks of the back on any machine (the grid stays the
@@ -2700,13 +2754,17 @@ static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opt
  * RT_TOP_EXT_LARGE_SMALL: random triangles' medians there are 0.55-0.60 (3,000-10,000), the
  * SPD scenes' 0.20-0.26 (teapot 0.203, mount-tessellated 0.218, gears 0.224, tetra 0.258), so
  * they keep their grids. A widened top level is all crowded, so it always gets the second
- * level (not the uniform alternative of RT_UNIFORM_SHARE), with RT_SUB_FACTOR cells per
- * reference at any size: its triangles span several sub cells each, and fewer cells cut the
- * references and exact tests per triangle more than they cost its rays (2026-12-06). */
+ * level (not the uniform alternative of RT_UNIFORM_SHARE), with RT_SUB_FACTOR_COARSE cells
+ * per reference at any size: its triangles span several sub cells each, and fewer cells cut
+ * the references and exact tests per triangle more than they cost its rays (2026-12-06: 3
+ * instead of 4; 2.5 with the 2-byte references of rt_sub_local, which cost the commit a
+ * pass: random triangles 3.8 -> 3.1 sub cells and 7.7 -> 7.2 references a triangle at 10^6,
+ * build instructions as with 3 and no table, rays 1-3 % more than with 3). */
 #define RT_TOP_EXT_SAMPLE 1024
 #define RT_TOP_EXT_LARGE 0.25
 #define RT_TOP_EXT_LARGE_SMALL 0.4
 #define RT_TOP_EXT_TARGET 0.1
+#define RT_SUB_FACTOR_COARSE 2.5
 
 static int rt_cmp_double(const void *x, const void *y)
 {
@@ -2821,7 +2879,7 @@ static int rt_grid_frame_box(rt_scene *sc, rt_build *bs, int nt, const rt_build_
         if (rc == RT_OK && go->all_default)
             rc = rt_top_coarsen(sc, bs, &g->b, &go->coarse);
         if (go->coarse)
-            go->sub_factor = RT_SUB_FACTOR;
+            go->sub_factor = RT_SUB_FACTOR_COARSE;
     }
     rt_box_finish(&g->b);
     g->ncells = (size_t)g->b.n[0] * (size_t)g->b.n[1] * (size_t)g->b.n[2];
@@ -2923,6 +2981,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rt_occupied_kdop(sc, g, eps);
     if (rc == RT_OK)
         rc = rt_leaves_build(sc, g, o ? o->leaf_min : 0);
+    if (rc == RT_OK && go.coarse)
+        rt_sub_local(g, sc->nprim);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {
@@ -2989,7 +3049,16 @@ static uint64_t rt_grid_hash(const rt_grid *g)
     }
     const uint32_t end = (uint32_t)g->nsrefs;
     h = rt_fnv(h, &end, sizeof end);
-    return rt_fnv(h, g->srefs, g->nsrefs * sizeof *g->srefs);
+    if (g->srefs)
+        return rt_fnv(h, g->srefs, g->nsrefs * sizeof *g->srefs);
+    /* the primitive indices whichever the layout (the sub-grids' references in order) */
+    for (size_t k = 0; k < g->nsubs; k++) {
+        const rt_subgrid *sg = &g->subs[k];
+        const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
+        for (uint32_t j = sg->ref0; j < sg->ref0 + g->soff16[sg->first16 + nc]; j++)
+            h = rt_fnv(h, &g->sloc[sg->loc0 + g->sref16[j]], sizeof(uint32_t));
+    }
+    return h;
 }
 
 int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)

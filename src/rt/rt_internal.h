@@ -202,6 +202,7 @@ typedef struct rt_subgrid {
     uint32_t first;    /* first of its cells among the grid's sub cells (soff, sleaf) */
     uint32_t ref0;     /* its first reference in srefs */
     uint32_t first16;  /* its first cell offset in the grid's soff16 (first + its index) */
+    uint32_t loc0;     /* its first primitive in the grid's sloc (sref16's layout) */
 } rt_subgrid;
 _Static_assert(sizeof(rt_subgrid) == 2 * RT_LINE && offsetof(rt_subgrid, b.hi) + 24 <= RT_LINE,
                "rt_subgrid: two cache lines, the box's clip in the first");
@@ -278,11 +279,17 @@ typedef struct rt_grid {
     /* second-level cell lists, in one of two layouts: soff16 != NULL (every sub-grid has
        at most 65535 references): a sub-grid's cells have their first references at
        srefs + ref0 + soff16[first16 + c], c = 0 .. its cells (the last: its end), 2 B per
-       cell; else soff (absolute, sub cells + 1 entries) */
+       cell; else soff (absolute, sub cells + 1 entries). The references themselves in one
+       of two layouts: srefs (4-byte primitive indices), or, on a widened top level's
+       sub-grids (rt_build.c, rt_sub_local), sref16 != NULL (soff16 too, srefs NULL): a
+       sub-grid's reference j is primitive sloc[loc0 + sref16[ref0 + j]], 2 B per reference
+       and 4 B per primitive the sub-grid holds */
     uint32_t *soff;
     uint16_t *soff16;
     uint32_t *srefs;
-    size_t nsubcells, nsrefs;
+    uint16_t *sref16;
+    uint32_t *sloc;
+    size_t nsubcells, nsrefs, nsloc;
     rt_big soff_m, srefs_m; /* the storage of soff (or soff16) and srefs */
     /* float leaves (rt_leaf.c; nearest-hit rays only): per top cell and per second-level
        cell 1 + its leaf's index, 0: the cell's list is tested in double (no list, fewer

@@ -1574,7 +1574,10 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
     /* the cell lists in either layout of the second level (rt_internal.h) */
     const uint16_t *off16 = g->soff16 ? g->soff16 + sg->first16 : NULL;
     const uint32_t *off = g->soff16 ? NULL : g->soff + sg->first;
-    const uint32_t *srefs = g->soff16 ? g->srefs + sg->ref0 : g->srefs;
+    const uint32_t *srefs = g->sref16 ? NULL : g->soff16 ? g->srefs + sg->ref0 : g->srefs;
+    /* or 2-byte references into the sub-grid's table of primitives */
+    const uint16_t *r16 = g->sref16 ? g->sref16 + sg->ref0 : NULL;
+    const uint32_t *loc = g->sref16 ? g->sloc + sg->loc0 : NULL;
     for (int j = 0; j < nK; j++) {
         const int s = p->sg > 0 ? j : nK - 1 - j;
         const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
@@ -1592,7 +1595,11 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
                 const size_t ci = rt_cell_index(b, q);
                 const uint32_t k0 = off16 ? off16[ci] : off[ci],
                                k1 = off16 ? off16[ci + 1] : off[ci + 1];
-                rt_pk_list(p, cull, srefs + k0, k1 - k0);
+                if (r16)
+                    for (uint32_t k = k0; k < k1; k++)
+                        rt_pk_prim(p, cull, loc[r16[k]]);
+                else
+                    rt_pk_list(p, cull, srefs + k0, k1 - k0);
             }
     }
     return 1;

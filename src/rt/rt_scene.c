@@ -1754,8 +1754,11 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
     const size_t soff_bytes = gr->soff16 ? (gr->nsubcells + gr->nsubs) * sizeof(uint16_t)
                               : gr->soff ? (gr->nsubcells + 1) * sizeof(uint32_t)
                                          : 0;
-    sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs + sc->grid.nsrefs) *
-                                            sizeof(uint32_t) + soff_bytes +
+    const size_t srefs_bytes = gr->sref16 ? gr->nsrefs * sizeof(uint16_t) +
+                                                gr->nsloc * sizeof(uint32_t)
+                                          : gr->nsrefs * sizeof(uint32_t);
+    sc->grid_bytes = sc->use_grid ? (sc->grid.ncells + 1 + sc->grid.nrefs) *
+                                            sizeof(uint32_t) + srefs_bytes + soff_bytes +
                                         sc->grid.nsubs * sizeof(rt_subgrid) +
                                         (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
                                         (sc->grid.odist ? 8 * sc->grid.ncells * sizeof(uint8_t) : 0) +

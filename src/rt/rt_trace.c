@@ -996,8 +996,8 @@ RT_INLINE uint64_t rt_word_offset(uint32_t nm, const uint32_t *p)
    (rt_walk_box's mode 3), the tests, their order, their search bound and the choice
    rt_cell_nearest's (rt_nearest_prim), so the hits are the same bits, 0 (the list type of
    rt_walkstate.list). */
-RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, int kx, int ky,
-                             int kz, int nearest)
+RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, const uint16_t *r16,
+                             const uint32_t *loc, uint32_t n, int kx, int ky, int kz, int nearest)
 {
     const rt_scene *sc = w->sc;
     const rt_rayx *r = w->r;
@@ -1007,11 +1007,13 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, 
     const double tmin = r->tmin, tmax = r->tmax;
     uint64_t *const hbox = w->c->hbox;
     const uint64_t key = (uint64_t)w->stamp << 32;
+    /* the list: refs, or 2-byte references r16 into a sub-grid's table loc (rt_grid.sref16) */
+#define RT_REF(k) (r16 ? loc[r16[k]] : refs[k])
     if (nearest && n >= 2) /* rt_prefetch_tris: the index triples */
         for (uint32_t k = 0; k < n; k++)
-            __builtin_prefetch(ct[refs[k]]);
+            __builtin_prefetch(ct[RT_REF(k)]);
     for (uint32_t k = 0; k < n; k++) {
-        const uint32_t i = refs[k];
+        const uint32_t i = RT_REF(k);
         if (hbox[i % RT_HBOX] == (key | i))
             continue;
         hbox[i % RT_HBOX] = key | i;
@@ -1029,6 +1031,7 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, 
             return 1;
         }
     }
+#undef RT_REF
     return 0;
 }
 
@@ -1037,7 +1040,7 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, uint32_t n, 
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_cell_nearest_##KX##KY##KZ(      \
         rt_walkstate *w, const uint32_t *refs, uint32_t n)                                    \
     {                                                                                         \
-        return rt_cell_mesh_k(w, refs, n, KX, KY, KZ, 1);                                     \
+        return rt_cell_mesh_k(w, refs, NULL, NULL, n, KX, KY, KZ, 1);                         \
     }
 RT_CELL_LISTS(1, 2, 0)
 RT_CELL_LISTS(2, 1, 0)
@@ -1149,15 +1152,19 @@ static __attribute__((noinline)) int rt_leaf_walk(rt_walkstate *w, const rt_leaf
    primitive blocks a transmittance ray (mode 1, and modes RT_MODE_ANYK + O, RT_MODE_ANYTOP + O:
    mode 1 for a walk known to be RT_ANY_MESH's with the ray's axis order O; modes
    RT_MODE_NEARK + O, mode 3's walks of axis order O, rt_walk_sub_nearest_O, never block) */
-RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint32_t n,
-                           uint32_t lf)
+/* the references of a cell of a sub-grid with a table of primitives (rt_grid.sref16) made
+   into primitive indices at a time, on the stack */
+#define RT_LOCAL_CHUNK 32
+
+RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, const uint16_t *r16,
+                           const uint32_t *loc, uint32_t n, uint32_t lf)
 {
     if (mode >= RT_MODE_ANYK) { /* the axis order's numbering as rt_list_order's */
         const int nearest = mode >= RT_MODE_NEARK;
         const int o = mode & 7, kz = o >> 1;
         const int kx = o == 0 || o == 5 ? 1 : o == 1 || o == 2 ? 2 : 0;
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], !nearest)
-                  : rt_cell_mesh_k(w, refs, n, kx, 3 - kx - kz, kz, nearest);
+                  : rt_cell_mesh_k(w, refs, r16, loc, n, kx, 3 - kx - kz, kz, nearest);
     }
     if (mode == 3)
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0) : w->list(w, refs, n);
@@ -1173,7 +1180,8 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, uint
 }
 
 RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint32_t *off,
-                          const uint16_t *off16, const uint32_t *refs, const uint32_t *leaf,
+                          const uint16_t *off16, const uint32_t *refs, const uint16_t *refs16,
+                          const uint32_t *loc, const uint32_t *leaf,
                           const int32_t *sub, const rt_subgrid *subs, const uint8_t *dist, double t0, double t1,
                           int clip, const rt_pre4 *pre, int lane, const int *step)
 {
@@ -1281,8 +1289,26 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         if (kind & RT_CUBE_LIST) {
             const uint32_t k0 = off16 ? off16[ci] : off[ci],
                            k1 = off16 ? off16[ci + 1] : off[ci + 1];
-            if (dist || k0 != k1) {
-                if (rt_walk_cell(w, mode, refs + k0, k1 - k0, leaf ? leaf[ci] : 0))
+            if (refs16 && mode >= RT_MODE_ANYK) { /* a sub-grid's table of primitives
+                             (rt_grid.sref16) read by the mesh lists themselves */
+                if (k0 == k1)
+                    goto advance;
+                if (rt_walk_cell(w, mode, NULL, refs16 + k0, loc, k1 - k0, 0))
+                    return RT_WALK_BLOCKED;
+            } else if (refs16) { /* the others' lists made from it in pieces, each tested in
+                             order as the whole would be */
+                if (k0 == k1)
+                    goto advance;
+                for (uint32_t k = k0; k < k1; k += RT_LOCAL_CHUNK) {
+                    uint32_t buf[RT_LOCAL_CHUNK];
+                    const uint32_t m = RT_MIN(k1 - k, (uint32_t)RT_LOCAL_CHUNK);
+                    for (uint32_t j = 0; j < m; j++)
+                        buf[j] = loc[refs16[k + j]];
+                    if (rt_walk_cell(w, mode, buf, NULL, NULL, m, 0))
+                        return RT_WALK_BLOCKED;
+                }
+            } else if (dist || k0 != k1) {
+                if (rt_walk_cell(w, mode, refs + k0, NULL, NULL, k1 - k0, leaf ? leaf[ci] : 0))
                     return RT_WALK_BLOCKED;
             } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
                 goto advance;
@@ -1324,33 +1350,47 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
 }
 
 /* the walk of second-level grid sg over [t0, t1] in mode mode (rt_walk_box's; step: NULL, or
-   the ray's steps that the top walk of modes 1 and RT_MODE_ANYTOP + O stored) */
+   the ray's steps that the top walk of modes 1 and RT_MODE_ANYTOP + O stored); local: 1 the
+   references' 2-byte layout (rt_grid.sref16), 0 the 4-byte one, -1 the grid's */
 RT_INLINE int rt_walk_sub(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0, double t1,
-                          const int *step)
+                          const int *step, int local)
 {
     const rt_grid *g = &w->sc->grid;
     const uint32_t *leaf = g->sleaf ? g->sleaf + sg->first : NULL;
+    if (local > 0 || (local < 0 && g->sref16)) /* 2-byte references into the sub-grid's
+                                                  table (rt_internal.h) */
+        return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16, NULL,
+                           g->sref16 + sg->ref0, g->sloc + sg->loc0, NULL, NULL, NULL, NULL,
+                           t0, t1, 0, NULL, 0, step);
     if (g->soff16) /* the 2-byte layout (rt_internal.h) */
         return rt_walk_box(w, mode, &sg->b, NULL, g->soff16 + sg->first16,
-                           g->srefs + sg->ref0, leaf, NULL, NULL, NULL, t0, t1, 0, NULL, 0, step);
-    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, leaf, NULL, NULL,
-                       NULL, t0, t1, 0, NULL, 0, step);
+                           g->srefs + sg->ref0, NULL, NULL, leaf, NULL, NULL, NULL, t0, t1, 0,
+                           NULL, 0, step);
+    return rt_walk_box(w, mode, &sg->b, g->soff + sg->first, NULL, g->srefs, NULL, NULL, leaf,
+                       NULL, NULL, NULL, t0, t1, 0, NULL, 0, step);
 }
 
 static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg,
                                                          double t0, double t1)
 {
-    return rt_walk_sub(w, 0, sg, t0, t1, NULL);
+    return rt_walk_sub(w, 0, sg, t0, t1, NULL, -1);
 }
 
 /* the same for the nearest-hit walks of a scene of mesh triangles only (mode 3's second
    level, modes RT_MODE_NEARK + O: the lists' axis order known and their bodies inlined), in
-   AVX2's encoding as the any-hit ones below, one per axis order in rt_list_order's numbering */
+   AVX2's encoding as the any-hit ones below, one per axis order in rt_list_order's numbering,
+   and one per axis order for the references' 2-byte layout (rt_grid.sref16), the layout
+   chosen with the copy, once per ray, not per sub-grid */
 #define RT_SUB_NEAREST(O)                                                                     \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_##O(            \
         rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
     {                                                                                         \
-        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL);                           \
+        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL, 0);                        \
+    }                                                                                         \
+    static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_local_##O(      \
+        rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
+    {                                                                                         \
+        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL, 1);                        \
     }
 RT_SUB_NEAREST(0)
 RT_SUB_NEAREST(1)
@@ -1362,11 +1402,14 @@ RT_SUB_NEAREST(5)
 static const rt_sub_walk_fn rt_sub_nearest[6] = {rt_walk_sub_nearest_0, rt_walk_sub_nearest_1,
                                                  rt_walk_sub_nearest_2, rt_walk_sub_nearest_3,
                                                  rt_walk_sub_nearest_4, rt_walk_sub_nearest_5};
+static const rt_sub_walk_fn rt_sub_nearest_local[6] = {
+    rt_walk_sub_nearest_local_0, rt_walk_sub_nearest_local_1, rt_walk_sub_nearest_local_2,
+    rt_walk_sub_nearest_local_3, rt_walk_sub_nearest_local_4, rt_walk_sub_nearest_local_5};
 
 static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg,
                                                           double t0, double t1)
 {
-    return rt_walk_sub(w, 1, sg, t0, t1, w->step);
+    return rt_walk_sub(w, 1, sg, t0, t1, w->step, -1);
 }
 
 /* the second-level walk of an RT_ANY_MESH ray of axis order o known at compile time (modes
@@ -1379,7 +1422,7 @@ static __attribute__((noinline)) int rt_walk_sub_transmit(rt_walkstate *w, const
 static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
                                                        const rt_subgrid *sg, double t0, double t1)
 {
-    return rt_walk_sub(w, RT_MODE_ANYK + o, sg, t0, t1, w->step);
+    return rt_walk_sub(w, RT_MODE_ANYK + o, sg, t0, t1, w->step, -1);
 }
 
 /* the top level's cubes of octant o: a built grid always has them (rt_build.c builds them
@@ -1441,7 +1484,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
             if (rs)
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
-            rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
+            rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, NULL, NULL, g->tleaf, g->sub, g->subs,
                         rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL);
         }
     }
@@ -1475,9 +1518,9 @@ long rt_trace_list(const rt_scene *sc, const rt_rayx *r, const uint32_t *ids, si
         rt_walkstate *w, double t0, double t1)                                               \
     {                                                                                         \
         const rt_grid *g = &w->sc->grid;                                                      \
-        return rt_walk_box(w, RT_MODE_ANYTOP + O, &g->b, g->off, NULL, g->refs, g->tleaf,     \
-                           g->sub, g->subs, rt_octant_cubes(g, &w->gr), t0, t1, 0, NULL, 0,  \
-                           NULL) == RT_WALK_BLOCKED;                                    \
+        return rt_walk_box(w, RT_MODE_ANYTOP + O, &g->b, g->off, NULL, g->refs, NULL, NULL,  \
+                           g->tleaf, g->sub, g->subs, rt_octant_cubes(g, &w->gr), t0, t1, 0,  \
+                           NULL, 0, NULL) == RT_WALK_BLOCKED;                                 \
     }
 RT_TRANSMIT_TOP(0)
 RT_TRANSMIT_TOP(1)
@@ -1522,7 +1565,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
         w.vnmask = ~sc->vmask;
         return rt_transmit_top[rt_list_order(r)](&w, t0, t1) ? 0.0 : w.T;
     }
-    if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, g->tleaf, g->sub, g->subs,
+    if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, NULL, NULL, g->tleaf, g->sub, g->subs,
                     rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL) == RT_WALK_BLOCKED)
         return 0.0;
     return w.T;
@@ -1616,12 +1659,14 @@ typedef struct rt_topgrid {
     const rt_subgrid *subs;
     const uint8_t *odist;
     size_t ncells;
+    const rt_sub_walk_fn *subn; /* the nearest-hit second-level walks of the grid's layout */
 } rt_topgrid;
 
 RT_INLINE rt_topgrid rt_topgrid_of(const rt_grid *g)
 {
     return (rt_topgrid){.b = g->b, .off = g->off, .refs = g->refs, .leaf = g->tleaf,
-                        .sub = g->sub, .subs = g->subs, .odist = g->odist, .ncells = g->ncells};
+                        .sub = g->sub, .subs = g->subs, .odist = g->odist, .ncells = g->ncells,
+                        .subn = g->sref16 ? rt_sub_nearest_local : rt_sub_nearest};
 }
 
 /* the top-level walk of lane j of a four-ray set-up in state 2 (mode as rt_walk_box's; tg:
@@ -1633,8 +1678,8 @@ RT_INLINE int rt_walk_pre(rt_walkstate *w, int mode, const rt_topgrid *tg, const
     __asm__("" : "+r"(dist));
     if (!dist)
         __builtin_unreachable();
-    return rt_walk_box(w, mode, &tg->b, tg->off, NULL, tg->refs, tg->leaf, tg->sub, tg->subs,
-                       dist, 0.0, 0.0, 0, p, j, NULL);
+    return rt_walk_box(w, mode, &tg->b, tg->off, NULL, tg->refs, NULL, NULL, tg->leaf, tg->sub,
+                       tg->subs, dist, 0.0, 0.0, 0, p, j, NULL);
 }
 
 /* the answer of a ray that misses: every field written once (the output array is cold) */
@@ -1673,7 +1718,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         if (mesh) {
             const int o = rt_list_order(&r);
             w.list = rt_nearest_lists[o];
-            w.sub = rt_sub_nearest[o];
+            w.sub = tg->subn[o];
             w.vnmask = ~sc->vmask;
         }
         w.stamp = rt_ctx_next(c);

@@ -278,9 +278,9 @@ static void test_large_prims_coarse_top(void **state)
 
 /* the same at or below 10^4 primitives (RT_TOP_EXT_LARGE_SMALL): 5000 such triangles (the
    rule alone gives 11^3 top cells, and the uniform level of RT_UNIFORM_SHARE 40,000) with
-   RT_SUB_FACTOR second-level cells per reference (3.5 sub cells per triangle;
-   RT_SUB_FACTOR_LARGE would give 4.4); triangles a third of their size (median box 0.2 of a
-   top cell, as the SPD scenes' 0.20-0.26) keep the rule's grid */
+   RT_SUB_FACTOR_COARSE second-level cells per reference (fewer than 4 sub cells per
+   triangle; RT_SUB_FACTOR_LARGE would give 4.4); triangles a third of their size (median
+   box 0.2 of a top cell, as the SPD scenes' 0.20-0.26) keep the rule's grid */
 static void test_large_prims_coarse_top_small(void **state)
 {
     (void)state;

@@ -11,7 +11,8 @@
  * every reference a primitive); and rays through the cluster get the brute-force scene's hits
  * bit for bit (rt_intersect, rt_occluded), the packet path the single-ray path's
  * (rt_intersect_packet, rt_occluded_packet), so the walk reads either layout. The sub-grid
- * records start on cache lines.
+ * records start on cache lines. And the references' 2-byte layout of widened top levels
+ * (rt_grid.sref16: indices into each sub-grid's table of primitives), test_local.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -194,11 +195,147 @@ static void test_wide(void **state)
     check_scene(20000, 0.06, 0);
 }
 
+/* n random triangles in the unit cube, each within a cube of side 2 n^(-1/3) around its
+   centre (the build benchmark's), large against the default rule's top cells, as separate
+   triangles or as one mesh of 3 n unshared vertices */
+static rt_scene *big_scene(int n, int mesh)
+{
+    int surf;
+    rt_scene *sc = rtu_scene_one_surface(&surf);
+    assert_non_null(sc);
+    double *v = malloc((size_t)n * 9 * sizeof *v);
+    uint32_t *ix = malloc((size_t)n * 3 * sizeof *ix);
+    assert_true(v && ix);
+    uint64_t st = 99;
+    const double side = 2.0 * pow((double)n, -1.0 / 3.0);
+    const int three = 3;
+    for (int t = 0; t < n; t++) {
+        double c[3];
+        for (int i = 0; i < 3; i++)
+            c[i] = rtu_rand(&st);
+        for (int j = 0; j < 9; j++)
+            v[9 * t + j] = c[j % 3] + side * (rtu_rand(&st) - 0.5);
+        for (int k = 0; k < 3; k++)
+            ix[3 * t + k] = (uint32_t)(3 * t + k);
+        if (!mesh)
+            assert_true(rt_scene_add_polygon(sc, 1, &three, v + 9 * t, surf, surf) >= 0);
+    }
+    if (mesh)
+        assert_true(rt_scene_add_mesh(sc, 3 * (size_t)n, v, NULL, NULL, (size_t)n, ix, surf,
+                                      surf) >= 0);
+    free(v);
+    free(ix);
+    return sc;
+}
+
+/* A widened top level's sub-grids (rt_build.c: rt_top_coarsen, rt_sub_local) hold 2-byte
+   references into a table of each sub-grid's primitives: the layout is chosen (srefs gone),
+   each table names distinct primitives, every reference is inside its table, the grid's
+   bytes count 2 per reference; rays from inside the cloud in all directions get the
+   brute-force scene's hits and occlusion bit for bit, single rays and packets, as separate
+   triangles (the general lists) and as one mesh (the mesh lists), on 1 and 2 threads. */
+static void test_local(void **state)
+{
+    (void)state;
+    enum { N = 12000, NR = 4096 };
+    rt_ray *rays = malloc(NR * sizeof *rays);
+    rt_hit *hb = malloc(NR * sizeof *hb), *hg = malloc(NR * sizeof *hg),
+           *hp = malloc(NR * sizeof *hp);
+    unsigned char *ob = malloc(NR), *og = malloc(NR), *op = malloc(NR);
+    assert_true(rays && hb && hg && hp && ob && og && op);
+    uint64_t st = 7;
+    for (int k = 0; k < NR; k++) { /* 8 x 8 blocks of rays from one point each */
+        rt_ray *r = &rays[k];
+        if (k % 64 == 0)
+            for (int i = 0; i < 3; i++)
+                r->org[i] = 0.2 + 0.6 * rtu_rand(&st);
+        else
+            memcpy(r->org, rays[k - 1].org, sizeof r->org);
+        for (int i = 0; i < 3; i++)
+            r->dir[i] = 2.0 * rtu_rand(&st) - 1.0;
+        r->tmin = 0.0;
+        r->tmax = k % 2 ? INFINITY : 0.05;
+    }
+    for (int mesh = 0; mesh <= 1; mesh++) {
+        rt_scene *br = big_scene(N, mesh);
+        const rt_build_options bo = {.brute_force = 1};
+        assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
+        assert_int_equal(rt_intersect(br, NR, rays, hb), RT_OK);
+        assert_int_equal(rt_occluded(br, NR, rays, ob), RT_OK);
+        for (int threads = 1; threads <= 2; threads++) {
+            rt_scene *sc = big_scene(N, mesh);
+            const rt_build_options o = {.brute_threshold = 0, .threads = threads};
+            assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
+            const rt_grid *g = &sc->grid;
+            assert_true(sc->use_grid && g->ncells < 100 && g->nsubs > 0);
+            /* float leaves (GKS_RT_LEAF_MIN, the _leaves runs) read srefs: kept then */
+            const int local = g->tleaf == NULL;
+            assert_int_equal(g->sref16 != NULL, local);
+            assert_int_equal(g->srefs == NULL, local);
+            assert_non_null(g->soff16);
+            unsigned char *seen = calloc(sc->nprim, 1);
+            assert_non_null(seen);
+            size_t at = 0;
+            for (size_t k = 0; local && k < g->nsubs; k++) {
+                const rt_subgrid *sg = &g->subs[k];
+                const size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+                const uint32_t l1 = k + 1 < g->nsubs ? g->subs[k + 1].loc0 : (uint32_t)g->nsloc;
+                assert_int_equal(sg->loc0, at);
+                assert_true(l1 > sg->loc0);
+                for (uint32_t q = sg->loc0; q < l1; q++) {
+                    assert_true(g->sloc[q] < sc->nprim);
+                    assert_false(seen[g->sloc[q]]);
+                    seen[g->sloc[q]] = 1;
+                }
+                for (uint32_t r = 0; r < rt_sub_off(g, k, nc) - sg->ref0; r++)
+                    assert_true(g->sref16[sg->ref0 + r] < l1 - sg->loc0);
+                for (uint32_t q = sg->loc0; q < l1; q++)
+                    seen[g->sloc[q]] = 0;
+                at = l1;
+            }
+            free(seen);
+            assert_true(!local || sc->grid_bytes < g->nsrefs * sizeof(uint32_t));
+            printf("%s, %d thread(s): %zu sub-grids, %zu references, %zu in tables, %.1f grid "
+                   "B/tri\n", mesh ? "mesh" : "triangles", threads, g->nsubs, g->nsrefs,
+                   g->nsloc, (double)sc->grid_bytes / N);
+            rt_packet_stats ps;
+            memset(&ps, 0, sizeof ps);
+            assert_int_equal(rt_intersect(sc, NR, rays, hg), RT_OK);
+            assert_int_equal(rt_intersect_packet_stats(sc, NR, rays, hp, &ps), RT_OK);
+            size_t hits = 0;
+            for (int k = 0; k < NR; k++) {
+                hits += hb[k].prim >= 0;
+                if (!rtu_same_hit(&hb[k], &hg[k]))
+                    fail_msg("ray %d: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
+                if (!rtu_same_hit(&hg[k], &hp[k]))
+                    fail_msg("ray %d: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
+            }
+            assert_true(hits > NR / 4 && hits < NR);
+            assert_int_equal(rt_occluded(sc, NR, rays, og), RT_OK);
+            assert_int_equal(rt_occluded_packet_stats(sc, NR, rays, op, &ps), RT_OK);
+            for (int k = 0; k < NR; k++) {
+                assert_int_equal(og[k], ob[k]);
+                assert_int_equal(op[k], ob[k]);
+            }
+            rt_scene_free(sc);
+        }
+        rt_scene_free(br);
+    }
+    free(rays);
+    free(hb);
+    free(hg);
+    free(hp);
+    free(ob);
+    free(og);
+    free(op);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_narrow),
         cmocka_unit_test(test_wide),
+        cmocka_unit_test(test_local),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
