@@ -682,6 +682,7 @@ typedef struct rt_lbuf {
     int ortho;                /* directional light: projection along ez */
     double L[3];              /* light position (ortho: scene box centre) */
     double ex[3], ey[3], ez[3];
+    double exy[3][2];         /* (ex[k], ey[k]): u and v in two lanes (rt_lbuf_find_at) */
     double u0, v0, su, sv;    /* cell of plane point (u, v): ((u - u0) su, (v - v0) sv) */
     int nu, nv;
     double slack, kdev, zeps; /* query margin: slack + 2 kdev * (light's distance from ray) */

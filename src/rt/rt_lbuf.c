@@ -124,6 +124,10 @@ static int rt_lbuf_axes(rt_lbuf *lb, const double bb[6], const rt_light *l)
     lb->ey[0] = ez[1] * ex[2] - ez[2] * ex[1];
     lb->ey[1] = ez[2] * ex[0] - ez[0] * ex[2];
     lb->ey[2] = ez[0] * ex[1] - ez[1] * ex[0];
+    for (int a = 0; a < 3; a++) {
+        lb->exy[a][0] = lb->ex[a];
+        lb->exy[a][1] = lb->ey[a];
+    }
     return 1;
 }
 

@@ -11,6 +11,7 @@
 #include "rt_prim.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -53,6 +54,59 @@ static inline __attribute__((always_inline)) int
 rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint32_t *n, double *zo,
                 double *uo, double *vo, double *mo)
 {
+#if defined(__SSE2__)
+    /* rt_lbuf_proj and the footprint below with u and v in two SSE2 lanes: the same
+       operations lane by lane (rt_lbuf.exy: the pairs of ex and ey; u0 v0, su sv and nu nv
+       pairs in the record); the finiteness test in quiet compares (no FE_INVALID) */
+    _Static_assert(offsetof(rt_lbuf, v0) == offsetof(rt_lbuf, u0) + sizeof(double) &&
+                       offsetof(rt_lbuf, sv) == offsetof(rt_lbuf, su) + sizeof(double) &&
+                       offsetof(rt_lbuf, nv) == offsetof(rt_lbuf, nu) + sizeof(int),
+                   "rt_lbuf: (u0, v0), (su, sv), (nu, nv) in pairs");
+    const double w[3] = {r->o[0] - lb->L[0], r->o[1] - lb->L[1], r->o[2] - lb->L[2]};
+    const double z = rt_lbuf_dot3(w, lb->ez);
+    __m128d uv = _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(w[0]), _mm_loadu_pd(lb->exy[0])),
+                                       _mm_mul_pd(_mm_set1_pd(w[1]), _mm_loadu_pd(lb->exy[1]))),
+                            _mm_mul_pd(_mm_set1_pd(w[2]), _mm_loadu_pd(lb->exy[2])));
+    if (!lb->ortho) {
+        if (!(z > 0.0))
+            return -1;
+        uv = _mm_div_pd(uv, _mm_set1_pd(z));
+    }
+    if (_mm_movemask_pd(_mm_or_pd(_mm_cmpunord_pd(uv, uv),
+                                  _mm_cmpeq_pd(_mm_andnot_pd(_mm_set1_pd(-0.0), uv),
+                                               _mm_set1_pd(INFINITY)))))
+        return -1;
+    double m = lb->slack;
+    if (!lb->ortho) { /* as below */
+        const double c[3] = {w[1] * r->d[2] - w[2] * r->d[1], w[2] * r->d[0] - w[0] * r->d[2],
+                             w[0] * r->d[1] - w[1] * r->d[0]};
+        const double dev2 = rt_lbuf_dot3(c, c) / rt_lbuf_dot3(r->d, r->d);
+        m += 2.0 * sqrt(dev2) * lb->kdev;
+    }
+    const __m128d mm = _mm_set1_pd(m), o0 = _mm_loadu_pd(&lb->u0), s = _mm_loadu_pd(&lb->su);
+    const __m128d lo = _mm_mul_pd(_mm_sub_pd(_mm_sub_pd(uv, mm), o0), s);
+    const __m128d hi = _mm_mul_pd(_mm_sub_pd(_mm_add_pd(uv, mm), o0), s);
+    const __m128d nn = _mm_cvtepi32_pd(_mm_loadl_epi64((const __m128i *)(const void *)&lb->nu));
+    const __m128d zero = _mm_setzero_pd();
+    if (_mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(lo, zero), _mm_cmplt_pd(hi, nn))) != 3) {
+        if (_mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(hi, zero), _mm_cmplt_pd(lo, nn))) == 3)
+            return -1;
+        *n = 0; /* wholly outside: the projections of all primitives lie inside */
+        return 0;
+    }
+    const __m128i c0 = _mm_cvttpd_epi32(lo), c1 = _mm_cvttpd_epi32(hi);
+    if (_mm_movemask_epi8(_mm_cmpeq_epi32(c0, c1)) != 0xffff)
+        return -1;
+    const int cx = _mm_cvtsi128_si32(c0), cy = _mm_cvtsi128_si32(_mm_shuffle_epi32(c0, 1));
+    const size_t ci = (size_t)cy * (size_t)lb->nu + (size_t)cx;
+    *ids = lb->ids + lb->off[ci];
+    *n = lb->off[ci + 1] - lb->off[ci];
+    *zo = z;
+    *uo = _mm_cvtsd_f64(uv);
+    *vo = _mm_cvtsd_f64(_mm_unpackhi_pd(uv, uv));
+    *mo = m;
+    return 1;
+#else
     double u, v, z;
     if (!rt_lbuf_proj(lb, r->o, &u, &v, &z) || !isfinite(u) || !isfinite(v))
         return -1;
@@ -89,6 +143,7 @@ rt_lbuf_find_at(const rt_lbuf *lb, const rt_rayx *r, const uint32_t **ids, uint3
     *vo = v;
     *mo = m;
     return 1;
+#endif
 }
 
 /* 1 when the plane part of primitive i's exact test (rt_prim_plane_t) rejects ray r, with
