@@ -57,21 +57,6 @@ static inline double rt_fmax2(double a, double b)
     return (a > b || b != b) ? a : b;
 }
 
-/* rt_absmax(v, 12) (a quad's four vertices): with SSE2 two lanes at a time, the same value
-   (a maximum of magnitudes of finite values: committed vertices) */
-static inline double rt_absmax12(const double *v)
-{
-#if defined(__SSE2__)
-    const __m128d sg = _mm_set1_pd(-0.0);
-    __m128d m = _mm_andnot_pd(sg, _mm_loadu_pd(v));
-    for (int k = 2; k < 12; k += 2)
-        m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadu_pd(v + k)));
-    return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
-#else
-    return rt_absmax(v, 12);
-#endif
-}
-
 /* The largest coordinate magnitude of the five points a, b, c, o, p (a hit's triangle, the
    ray's origin and the hit point): with SSE2 (every x86-64) two lanes at a time. A maximum
    of magnitudes is exact, so the order does not change the value (finite inputs: committed
@@ -168,12 +153,11 @@ static inline __attribute__((always_inline)) double rt_hit_err(const rt_scene *s
         if (pr->kind == RT_KIND_QUAD) {
             const rt_quad *q = &sc->quad[pr->data];
             n = q->n;
-            mg = rt_absmax12(&q->v[0][0]);
+            mg = q->vmax; /* rt_absmax(&q->v[0][0], 12), kept with the quad */
         } else {
             const rt_poly *q = &sc->poly[pr->data];
-            const double uv[4] = {q->umin, q->umax, q->vmin, q->vmax};
             n = q->n;
-            mg = rt_fmax2(rt_absmax(uv, 4),
+            mg = rt_fmax2(q->uvmax, /* rt_absmax of its bounds, kept with the polygon */
                           rt_absmax(p, 3) + (q->umax - q->umin) + (q->vmax - q->vmin));
         }
         den = fabs(n[0] * r->d[0] + n[1] * r->d[1] + n[2] * r->d[2]);

@@ -77,6 +77,7 @@ typedef struct rt_tri {
 typedef struct rt_quad {
     double v[4][3];
     double n[3];
+    double vmax; /* the largest |v[k][j]| (rt_hit_err's bound, read per hit) */
 } rt_quad;
 
 /* doubles per entry of rt_scene's edges */
@@ -89,6 +90,7 @@ typedef struct rt_poly {
     uint32_t loop0;     /* first loop count in scene loops array */
     uint32_t nloops;
     double umin, umax, vmin, vmax; /* 2-D bounds (exact reject) */
+    double uvmax;       /* the largest of |umin|, |umax|, |vmin|, |vmax| (rt_hit_err) */
     double inv_h;       /* slabs per unit v */
     double cu, cv, rin2;/* disk around (cu,cv) crossed by no edge (radius^2, < 0: none) ... */
     int cin;            /* ... in which every point has this even-odd parity */

@@ -145,6 +145,36 @@ static inline __attribute__((always_inline)) int rt_isect_quad(const rt_rayx *r,
     if (!(t >= tmin) | !(t <= tmax))
         return 0;
     const int kx = r->kx, ky = r->ky, kz = r->kz;
+#if defined(__SSE2__)
+    {
+        /* the same operations with a vertex's (x, y) in two SSE2 lanes and two edge functions
+           a register (e0 e1, e2 e3), each value the scalar code's below, bit for bit; when
+           none is 0 or NaN, each is < 0 or > 0 as its sign bit says, so the signs are mixed
+           exactly when the four sign bits are; otherwise the scalar code decides */
+        const __m128d oxy = _mm_set_pd(o[ky], o[kx]), sxy = _mm_loadu_pd(&r->sx);
+        __m128d P[4];
+        for (int k = 0; k < 4; k++) {
+            const double *v = q->v[k];
+            P[k] = _mm_sub_pd(_mm_sub_pd(_mm_loadh_pd(_mm_load_sd(v + kx), v + ky), oxy),
+                              _mm_mul_pd(sxy, _mm_set1_pd(v[kz] - o[kz])));
+        }
+        /* e_k = x_k+1 y_k - y_k+1 x_k (rt_edge) */
+        const __m128d E01 = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(P[1], P[2]), _mm_unpackhi_pd(P[0], P[1])),
+                                       _mm_mul_pd(_mm_unpackhi_pd(P[1], P[2]), _mm_unpacklo_pd(P[0], P[1])));
+        const __m128d E23 = _mm_sub_pd(_mm_mul_pd(_mm_unpacklo_pd(P[3], P[0]), _mm_unpackhi_pd(P[2], P[3])),
+                                       _mm_mul_pd(_mm_unpackhi_pd(P[3], P[0]), _mm_unpacklo_pd(P[2], P[3])));
+        const __m128d z = _mm_setzero_pd();
+        const __m128d sp = _mm_or_pd(_mm_or_pd(_mm_cmpeq_pd(E01, z), _mm_cmpeq_pd(E23, z)),
+                                     _mm_cmpunord_pd(E01, E23));
+        if (__builtin_expect(!_mm_movemask_pd(sp), 1)) {
+            const int m = _mm_movemask_pd(E01) | _mm_movemask_pd(E23) << 2;
+            if (m != 0 && m != 15)
+                return 0;
+            *tout = t;
+            return 1;
+        }
+    }
+#endif
     double x[4], y[4];
     for (int k = 0; k < 4; k++) {
         double az = q->v[k][kz] - o[kz];

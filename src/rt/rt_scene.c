@@ -1382,6 +1382,9 @@ static int rt_commit_poly(rt_scene *sc, const rt_in_prim *in, const double *v, s
         rt_quad *q = &sc->quad[sc->nquad];
         memcpy(q->v, v, 12 * sizeof(double));
         memcpy(q->n, nrm, sizeof q->n);
+        q->vmax = 0.0; /* a maximum of magnitudes: exact in any order */
+        for (int i = 0; i < 12; i++)
+            q->vmax = fabs(v[i]) > q->vmax ? fabs(v[i]) : q->vmax;
         pr->kind = RT_KIND_QUAD;
         pr->data = (uint32_t)sc->nquad++;
         for (int i = 0; i < 4; i++)
@@ -1582,6 +1585,10 @@ static int rt_poly_plan(rt_scene *sc, size_t k, size_t *ns_out, size_t *entries_
         p->vmin = fmin(p->vmin, uv[2 * i + 1]);
         p->vmax = fmax(p->vmax, uv[2 * i + 1]);
     }
+    const double ub[4] = {p->umin, p->umax, p->vmin, p->vmax};
+    p->uvmax = 0.0; /* a maximum of magnitudes: exact in any order */
+    for (int i = 0; i < 4; i++)
+        p->uvmax = fabs(ub[i]) > p->uvmax ? fabs(ub[i]) : p->uvmax;
     rt_poly_disk(sc, p);
     /* one slab per vertex above 8: fewer edges per slab in the crossing loop (SPD gears'
        144-gons; measured in docs/bench/rt_tuning.md) */

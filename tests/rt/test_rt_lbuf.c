@@ -15,7 +15,9 @@
  * array, mirrors for shadow rays from secondary hits) under positional, spot and directional
  * lights and a light inside the scene box (no buffer: the walk), also translated by 1e6 and
  * with the light 1e4 away; secondary rays clipped to the display volume; a grazing light on
- * a finely tessellated sphere; the SPD gears (glass, 144-gons, five lights).
+ * a finely tessellated sphere; the SPD gears (glass, 144-gons, five lights), whose quads and
+ * polygons also check the parts of the hits' error bounds kept with their records
+ * (check_hit_bounds).
  * Mirror buffers (rt_render.c, rt_job_mirrors: eye rays' reflections off a flat floor take
  * a list built from the eye's mirror image) are on with light buffers: the same comparison
  * covers them: they must have answered 30 % of the reflection rays on the level floor
@@ -337,6 +339,24 @@ static void test_grazing_sphere(void **state)
 }
 
 /* SPD gears at 128x128 (corner rays, depth 5): glass, 144-gons, five positional lights */
+/* the hit error bounds' parts kept with the records (rt_quad.vmax, rt_poly.uvmax, read by
+   rt_hit_err per hit): the largest magnitude of the quad's coordinates and of the polygon's
+   2-D bounds, as rt_absmax would find it */
+static void check_hit_bounds(const rt_scene *sc)
+{
+    for (size_t k = 0; k < sc->nquad; k++) {
+        double m = 0.0;
+        for (int j = 0; j < 12; j++)
+            m = fmax(m, fabs(sc->quad[k].v[j / 3][j % 3]));
+        assert_true(sc->quad[k].vmax == m);
+    }
+    for (size_t k = 0; k < sc->npoly; k++) {
+        const rt_poly *p = &sc->poly[k];
+        const double m = fmax(fmax(fabs(p->umin), fabs(p->umax)), fmax(fabs(p->vmin), fabs(p->vmax)));
+        assert_true(p->uvmax == m);
+    }
+}
+
 static void test_gears(void **state)
 {
     (void)state;
@@ -363,6 +383,8 @@ static void test_gears(void **state)
         rt_surface_default(&s);
         assert_int_equal(rtu_mesh_add(&m, sc, rt_scene_add_surface(sc, &s)), 0);
         assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+        assert_true(sc->nquad > 0 && sc->npoly > 0);
+        check_hit_bounds(sc);
         rt_render_options o;
         rt_render_options_default(&o);
         o.cutoff = 0.0;
