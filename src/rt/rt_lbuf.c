@@ -163,9 +163,14 @@ static int rt_lbuf_project(const rt_lbuf *lb, const rt_scene *sc, size_t i, rt_l
         return -1;
     pp->bb[0] = pp->bb[1] = pp->zmin = INFINITY;
     pp->bb[2] = pp->bb[3] = -INFINITY;
+    /* a quad's vertices read in place (rt_prim_vertex's, without a call per vertex) */
+    const double *qv = geo.kind == RT_KIND_QUAD ? &sc->quad[geo.data].v[0][0] : NULL;
     for (size_t k = 0; k < pp->n; k++) {
         double p[3], u, v, z;
-        rt_prim_vertex(sc, i, k, p);
+        if (qv)
+            memcpy(p, qv + 3 * k, sizeof p);
+        else
+            rt_prim_vertex(sc, i, k, p);
         if (!rt_lbuf_proj(lb, p, &u, &v, &z) || !isfinite(u) || !isfinite(v))
             return 0;
         const double x = (u - lb->u0) * lb->su, y = (v - lb->v0) * lb->sv;
