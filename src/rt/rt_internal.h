@@ -613,6 +613,9 @@ double rt_trace_transmit(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, int an
    order of zb[id] and up to the first zb[id] > zbo (a light buffer's list, rt_lbuf_find) */
 double rt_trace_transmit_list(const rt_scene *sc, rt_ctx *c, const rt_rayx *r,
                               const uint32_t *ids, uint32_t n, const uint16_t *zb, uint32_t zbo);
+/* rt_occluded's answers for rays[0..n-1] in context c (a batch context: its small mailbox) */
+void rt_occluded_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
+                      unsigned char *occluded);
 /* 1 if the ray hits internal primitive i within its range */
 int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
 

@@ -1961,18 +1961,14 @@ static int rt_anyhit_kind(const rt_scene *sc)
     return rt_mesh_only(sc) ? RT_ANY_MESH : RT_ANY_HIT;
 }
 
-int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
+void rt_occluded_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
+                      unsigned char *occluded)
 {
-    rt_ctx c;
-    const int rc = rt_batch_begin(sc, n, rays, occluded, &c);
-    if (rc != RT_OK)
-        return rc;
     const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     const int ah = rt_anyhit_kind(sc);
     if (ah == RT_ANY_MESH) {
-        rt_occluded_mesh(sc, &c, n, rays, occluded, setup4);
-        rt_ctx_free(&c);
-        return RT_OK;
+        rt_occluded_mesh(sc, c, n, rays, occluded, setup4);
+        return;
     }
     size_t k = 0;
     if (setup4) {
@@ -1981,11 +1977,20 @@ int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char 
         for (; k + 4 <= n; k += 4) {
             setup4(&sc->grid, rays + k, &p);
             for (int j = 0; j < 4; j++)
-                occluded[k + j] = rt_occluded_one(sc, &c, rays + k + j, &tg, &p, j, ah);
+                occluded[k + j] = rt_occluded_one(sc, c, rays + k + j, &tg, &p, j, ah);
         }
     }
     for (; k < n; k++)
-        occluded[k] = rt_occluded_one(sc, &c, rays + k, NULL, NULL, 0, ah);
+        occluded[k] = rt_occluded_one(sc, c, rays + k, NULL, NULL, 0, ah);
+}
+
+int rt_occluded(const rt_scene *sc, size_t n, const rt_ray *rays, unsigned char *occluded)
+{
+    rt_ctx c;
+    const int rc = rt_batch_begin(sc, n, rays, occluded, &c);
+    if (rc != RT_OK)
+        return rc;
+    rt_occluded_rays(sc, &c, n, rays, occluded);
     rt_ctx_free(&c);
     return RT_OK;
 }
