@@ -71,8 +71,8 @@
 #define RT_PK_MAXCA 10   /* any-hit: top cells per slice at most (with RT_PK_SPREAD) */
 #define RT_PK_MAXS 64    /* second-level cells per slice at most */
 #define RT_PK_SPREAD 16.0 /* any-hit: the frustum's width at the start, in cells, below */
-#define RT_PK_AREA 80.0  /* any-hit: (width + 1) (height + 1) there, in cells, below */
-#define RT_PK_AREAT 4.0  /* ... in top cells, if the start's middle top cell has no sub-grid */
+#define RT_PK_AREA 48.0  /* any-hit: (width + 1) (height + 1) there, in cells, below */
+#define RT_PK_AREAT 3.0  /* ... in top cells, if the start's middle top cell has no sub-grid */
 #define RT_PK_MARGIN 0x1p-20 /* of a cell: the crossings' roundings */
 
 typedef struct rt_pk_rec {
@@ -1685,8 +1685,10 @@ static double rt_pk_zend(const rt_pk *p, double zn)
    primitives each, and the limit is (w1 + 1) (w2 + 1) >= RT_PK_AREAT top cells (at 256^2
    pixels such packets cost more than their rays alone, at 1024^2 mostly less: 4 top cells
    gave 3.6-4.4 % fewer instructions on armadillo and bunny at 256^2, 0.4 % on fandisk,
-   and 0.03-2.6 % fewer at 1024^2). 0 if the bounds there are not finite (only operations
-   that raise no exception). */
+   and 0.03-2.6 % fewer at 1024^2). The area limits 48 and 3 (80 and 4 before) are those of
+   the rays given up going to rt_occluded's walks, which cost less than the single-ray code
+   they took before (rt_packet_occluded). 0 if the bounds there are not finite (only
+   operations that raise no exception). */
 static int rt_pk_spread(const rt_pk *p, int s0)
 {
     const rt_grid *g = &p->sc->grid;

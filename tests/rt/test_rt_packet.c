@@ -447,8 +447,8 @@ static void test_spread(void **state)
     static const char *const name[3] = {"spread: small patch", "spread: wide patch",
                                         "spread: square patch"};
     for (int wide = 0; wide < 3; wide++) {
-        /* the square's spacing 0.015: single from about 0.013 (0.0125 stays a packet; without
-           the area limit 0.018 does too) */
+        /* the square's spacing 0.015: about 9 second-level cells across, below the width
+           limit, above the area limit (without that limit 0.018 stays a packet) */
         const double sq = wide == 2 ? 0.015 : 0.001;
         double org[RT_PACKET][3];
         for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
@@ -463,7 +463,7 @@ static void test_spread(void **state)
 
 /* shadow packets on a coarse mesh, whose top cells have no second-level grids: 64 shadow
    rays from a small patch are traced as a packet; 64 from a patch whose frustum at the
-   start covers 4 or more top cells (a few cells wide, far below the limits counted in
+   start covers 3 or more top cells (a few cells wide, far below the limits counted in
    second-level cells) are handed to the single-ray walk (traced as a packet without that
    limit: checked); the answers are rt_occluded's either way */
 static void test_spread_top(void **state)
@@ -481,8 +481,8 @@ static void test_spread_top(void **state)
            (unsigned long long)gi.subgrids);
     assert_int_equal(gi.subgrids, 0);
     for (int wide = 0; wide < 2; wide++) {
-        /* the wide patch's spacing 0.014, about 1.3 top cells across (0.01 stays a packet;
-           without the top cells' area limit 0.014 does too: checked) */
+        /* the wide patch's spacing 0.014, about 1.3 top cells across (without the top
+           cells' area limit it stays a packet: checked) */
         const double sq = wide ? 0.014 : 0.002;
         double org[RT_PACKET][3];
         for (int k = 0; k < RT_PACKET; k++) { /* just outside the sphere near its top */
