@@ -1205,16 +1205,25 @@ static void rt_pk_list(rt_pk *p, rt_pk_cull_fn cull, const uint32_t *refs, uint3
 }
 
 #ifdef RT_PK_X86
-/* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 4 rays a step; the lanes of
-   rays not in the mask hold finite values, set by rt_pk_setup) */
+/* the rays k of mask with us[k] <= ub and ue[k] >= ua (AVX2, 8 rays a step without a
+   branch per step, then 4; the lanes of the packet's rays not in the mask hold finite
+   values, set by rt_pk_setup) */
 __attribute__((target("avx2"))) static uint64_t rt_pk_in_avx2(const rt_pk *p, uint64_t mask,
                                                               double ua, double ub)
 {
     const __m256d va = _mm256_set1_pd(ua), vb = _mm256_set1_pd(ub);
     uint64_t in = 0;
-    for (int k = 0; k < p->n; k += 4) {
-        if (!((mask >> k) & 15u))
-            continue;
+    int k = 0;
+    for (; k + 8 <= p->n; k += 8) {
+        const __m256d a0 = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k), vb, _CMP_LE_OQ);
+        const __m256d b0 = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k), va, _CMP_GE_OQ);
+        const __m256d a1 = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k + 4), vb, _CMP_LE_OQ);
+        const __m256d b1 = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k + 4), va, _CMP_GE_OQ);
+        const unsigned m = (unsigned)_mm256_movemask_pd(_mm256_and_pd(a0, b0)) |
+                           (unsigned)_mm256_movemask_pd(_mm256_and_pd(a1, b1)) << 4;
+        in |= (uint64_t)m << k;
+    }
+    for (; k < p->n; k += 4) {
         const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(p->us + k), vb, _CMP_LE_OQ);
         const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(p->ue + k), va, _CMP_GE_OQ);
         in |= (uint64_t)_mm256_movemask_pd(_mm256_and_pd(a, b)) << k;
