@@ -237,7 +237,7 @@ static rt_scene *big_scene(int n, int mesh)
 static void test_local(void **state)
 {
     (void)state;
-    enum { N = 12000, NR = 4096 };
+    enum { N = 3000, NR = 1024 };
     rt_ray *rays = malloc(NR * sizeof *rays);
     rt_hit *hb = malloc(NR * sizeof *hb), *hg = malloc(NR * sizeof *hg),
            *hp = malloc(NR * sizeof *hp);
