@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # run-tests.sh -- set up, then run the whole test suite three times:
-#   ./build-test  Debug, -DGKS_WERROR=ON, benchmarks built too (not run)
+#   ./build-test  Debug at -Og (the tests of the tracer run several times faster than at -O0,
+#                 the times are in README.md), -DGKS_WERROR=ON, benchmarks built too (not run)
 #   ./build-min   Release (-O2, so that warnings only the optimizer finds, such as
 #                 -Wmaybe-uninitialized, fail too), -DGKS_WERROR=ON, every optional dependency
 #                 off (each GKS_WITH_* option, the Fortran binding included), benchmarks off;
@@ -27,7 +28,8 @@ scripts/setup.sh
 
 stage "Debug build with -Werror (build-test)"
 tests=(-DBUILD_TESTING=ON -DGKS_REQUIRE_TESTS=ON)
-cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
+cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS_DEBUG="-g -Og" \
+      -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_BUILD_BENCHMARKS=ON "${tests[@]}"
 cmake --build build-test -j2
 ctest --test-dir build-test --output-on-failure -j2
