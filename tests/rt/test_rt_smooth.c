@@ -30,6 +30,19 @@
 
 enum { SZ = 96 };
 
+/* sc rendered through view vw (rtu_view_matrix) onto a w x h raster with options o into rgb;
+   returns the camera (for the rays of chosen pixels) */
+static rt_camera render_view(rt_scene *sc, const rtu_view *vw, int w, int h,
+                             const rt_render_options *o, float *rgb)
+{
+    double m[4][4];
+    rtu_view_matrix(vw, m);
+    rt_camera cam;
+    assert_int_equal(rt_camera_from_view(&cam, m, vw->vp, w, h), RT_OK);
+    assert_int_equal(rt_render(sc, &cam, o, rgb, NULL), RT_OK);
+    return cam;
+}
+
 /* largest channel error against the exact sphere over the compared pixels (see above) */
 static double sphere_error(int normals, int mode)
 {
@@ -52,17 +65,13 @@ static double sphere_error(int normals, int mode)
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     rtu_view vw = {.win = {-1.1, 1.1, -1.1, 1.1}, .prp = {0, 0, 10}, .vpd = 0, .bpd = -5,
                    .fpd = 5, .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
-    double m[4][4];
-    rtu_view_matrix(&vw, m);
-    rt_camera cam;
-    assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, SZ, SZ), RT_OK);
     rt_render_options o;
     rtu_options_plain(&o);
     o.smooth = mode;
     o.threads = 2;
     float *rgb = malloc(3 * SZ * SZ * sizeof(float));
     assert_non_null(rgb);
-    assert_int_equal(rt_render(sc, &cam, &o, rgb, NULL), RT_OK);
+    const rt_camera cam = render_view(sc, &vw, SZ, SZ, &o, rgb);
     double L[3], l = sqrt(ldir[0] * ldir[0] + ldir[1] * ldir[1] + ldir[2] * ldir[2]);
     for (int k = 0; k < 3; k++)
         L[k] = -ldir[k] / l;
@@ -138,15 +147,11 @@ static void test_colours(void **state)
     /* rays straight down at chosen points; expected colours by linear interpolation */
     rtu_view vw = {.win = {0, 2, 0, 2}, .prp = {1, 1, 10}, .vpd = 0, .bpd = -5, .fpd = 5,
                    .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
-    double m[4][4];
-    rtu_view_matrix(&vw, m);
-    rt_camera cam;
-    assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, 8, 8), RT_OK);
     rt_render_options o;
     rtu_options_plain(&o);
     o.threads = 1;
     float rgb[8 * 8 * 3];
-    assert_int_equal(rt_render(sc, &cam, &o, rgb, NULL), RT_OK);
+    render_view(sc, &vw, 8, 8, &o, rgb);
     /* pixel (0,7): centre (0.125, 0.125) in the triangle: colours (1-x-y, x, y) */
     const float *p = rgb + 3 * (7 * 8 + 0);
     assert_float_equal(p[0], 0.75, 1e-6);
@@ -186,14 +191,10 @@ static void test_shared_edge(void **state)
         /* one pixel whose centre is (0.3, 0.7) on the edge x + y = 1 */
         rtu_view vw = {.win = {0.25, 0.35, 0.65, 0.75}, .prp = {0.3, 0.7, 10}, .vpd = 0,
                        .bpd = -5, .fpd = 5, .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
-        double m[4][4];
-        rtu_view_matrix(&vw, m);
-        rt_camera cam;
-        assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, 1, 1), RT_OK);
         rt_render_options o;
         rtu_options_plain(&o);
         o.threads = 1;
-        assert_int_equal(rt_render(sc, &cam, &o, col[which], NULL), RT_OK);
+        render_view(sc, &vw, 1, 1, &o, col[which]);
         rt_scene_free(sc);
     }
     for (int k = 0; k < 3; k++) {
@@ -224,14 +225,10 @@ static void test_flat_unchanged(void **state)
         assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
         rtu_view vw = {.win = {-1.2, 1.2, -1.2, 1.2}, .prp = {0, 0, 10}, .vpd = 0, .bpd = -5,
                        .fpd = 5, .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
-        double m[4][4];
-        rtu_view_matrix(&vw, m);
-        rt_camera cam;
-        assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, 32, 32), RT_OK);
         rt_render_options o;
         rt_render_options_default(&o);
         o.smooth = mode;
-        assert_int_equal(rt_render(sc, &cam, &o, img[mode], NULL), RT_OK);
+        render_view(sc, &vw, 32, 32, &o, img[mode]);
         rt_scene_free(sc);
     }
     assert_memory_equal(img[0], img[1], sizeof img[0]);
@@ -264,15 +261,11 @@ static void test_mesh_colours_own(void **state)
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     rtu_view vw = {.win = {0, 9, 0, 3}, .prp = {4.5, 1.5, 10}, .vpd = 0, .bpd = -5, .fpd = 5,
                    .vp = {0, 1, 0, 1, 0, 1}, .perspective = 0};
-    double m[4][4];
-    rtu_view_matrix(&vw, m);
-    rt_camera cam;
-    assert_int_equal(rt_camera_from_view(&cam, m, vw.vp, 9, 3), RT_OK);
     rt_render_options o;
     rtu_options_plain(&o);
     o.threads = 1;
     float rgb[9 * 3 * 3];
-    assert_int_equal(rt_render(sc, &cam, &o, rgb, NULL), RT_OK);
+    render_view(sc, &vw, 9, 3, &o, rgb);
     for (int k = 0; k < 3; k++) { /* pixel (3k + 1, 1): centre (3k + 1.5, 1.5), in mesh k */
         const float *p = rgb + 3 * (1 * 9 + 3 * k + 1);
         for (int a = 0; a < 3; a++)

@@ -106,6 +106,39 @@ static void make_rays(rt_ray *rays, const double eye[3])
                 }
 }
 
+/* sc's answers against the brute-force scene's, bit for bit: the nearest hits of rays[0..nr-1]
+   (hb, brute force) by single rays and by packets, and the occlusion of shadows[0..ns-1] (ob)
+   by single rays and by packets; returns the packet paths' statistics */
+static rt_packet_stats check_answers(rt_scene *sc, size_t nr, const rt_ray *rays,
+                                     const rt_hit *hb, size_t ns, const rt_ray *shadows,
+                                     const unsigned char *ob)
+{
+    rt_hit *hg = malloc(nr * sizeof *hg), *hp = malloc(nr * sizeof *hp);
+    unsigned char *og = malloc(ns ? ns : 1), *op = malloc(ns ? ns : 1);
+    assert_true(hg && hp && og && op);
+    rt_packet_stats ps;
+    memset(&ps, 0, sizeof ps);
+    assert_int_equal(rt_intersect(sc, nr, rays, hg), RT_OK);
+    assert_int_equal(rt_intersect_packet_stats(sc, nr, rays, hp, &ps), RT_OK);
+    for (size_t k = 0; k < nr; k++) {
+        if (!rtu_same_hit(&hb[k], &hg[k]))
+            fail_msg("ray %zu: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
+        if (!rtu_same_hit(&hg[k], &hp[k]))
+            fail_msg("ray %zu: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
+    }
+    assert_int_equal(rt_occluded(sc, ns, shadows, og), RT_OK);
+    assert_int_equal(rt_occluded_packet_stats(sc, ns, shadows, op, &ps), RT_OK);
+    for (size_t k = 0; k < ns; k++) {
+        assert_int_equal(og[k], ob[k]);
+        assert_int_equal(op[k], ob[k]);
+    }
+    free(hg);
+    free(hp);
+    free(og);
+    free(op);
+    return ps;
+}
+
 static void check_scene(int n, double half, int want_narrow)
 {
     rt_scene *br = cluster_scene(n, half);
@@ -113,10 +146,9 @@ static void check_scene(int n, double half, int want_narrow)
     assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
     const size_t nr = SIDE * SIDE;
     rt_ray *rays = malloc(nr * sizeof *rays), *sr = malloc(nr * sizeof *sr);
-    rt_hit *hb = malloc(nr * sizeof *hb), *hg = malloc(nr * sizeof *hg);
-    rt_hit *hp = malloc(nr * sizeof *hp);
-    unsigned char *ob = malloc(nr), *og = malloc(nr), *op = malloc(nr);
-    assert_true(rays && sr && hb && hg && hp && ob && og && op);
+    rt_hit *hb = malloc(nr * sizeof *hb);
+    unsigned char *ob = malloc(nr);
+    assert_true(rays && sr && hb && ob);
     const double eye[3] = {5.3, 4.6, -3.0};
     make_rays(rays, eye);
     assert_int_equal(rt_intersect(br, nr, rays, hb), RT_OK);
@@ -153,33 +185,14 @@ static void check_scene(int n, double half, int want_narrow)
         assert_int_equal(sc->grid.soff16 != NULL, want_narrow);
         assert_int_equal(sc->grid.soff != NULL, !want_narrow);
         check_lists(sc);
-        rt_packet_stats ps;
-        memset(&ps, 0, sizeof ps);
-        assert_int_equal(rt_intersect(sc, nr, rays, hg), RT_OK);
-        assert_int_equal(rt_intersect_packet_stats(sc, nr, rays, hp, &ps), RT_OK);
-        for (size_t k = 0; k < nr; k++) {
-            if (!rtu_same_hit(&hb[k], &hg[k]))
-                fail_msg("ray %zu: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
-            if (!rtu_same_hit(&hg[k], &hp[k]))
-                fail_msg("ray %zu: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
-        }
-        assert_int_equal(rt_occluded(sc, ns, sr, og), RT_OK);
-        assert_int_equal(rt_occluded_packet_stats(sc, ns, sr, op, &ps), RT_OK);
-        for (size_t k = 0; k < ns; k++) {
-            assert_int_equal(og[k], ob[k]);
-            assert_int_equal(op[k], ob[k]);
-        }
+        const rt_packet_stats ps = check_answers(sc, nr, rays, hb, ns, sr, ob);
         assert_true(ps.packets > 0); /* the packet path itself walked the sub-grid */
         rt_scene_free(sc);
     }
     free(rays);
     free(sr);
     free(hb);
-    free(hg);
-    free(hp);
     free(ob);
-    free(og);
-    free(op);
     rt_scene_free(br);
 }
 
@@ -239,10 +252,9 @@ static void test_local(void **state)
     (void)state;
     enum { N = 3000, NR = 1024 };
     rt_ray *rays = malloc(NR * sizeof *rays);
-    rt_hit *hb = malloc(NR * sizeof *hb), *hg = malloc(NR * sizeof *hg),
-           *hp = malloc(NR * sizeof *hp);
-    unsigned char *ob = malloc(NR), *og = malloc(NR), *op = malloc(NR);
-    assert_true(rays && hb && hg && hp && ob && og && op);
+    rt_hit *hb = malloc(NR * sizeof *hb);
+    unsigned char *ob = malloc(NR);
+    assert_true(rays && hb && ob);
     uint64_t st = 7;
     for (int k = 0; k < NR; k++) { /* 8 x 8 blocks of rays from one point each */
         rt_ray *r = &rays[k];
@@ -262,6 +274,10 @@ static void test_local(void **state)
         assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
         assert_int_equal(rt_intersect(br, NR, rays, hb), RT_OK);
         assert_int_equal(rt_occluded(br, NR, rays, ob), RT_OK);
+        size_t hits = 0;
+        for (int k = 0; k < NR; k++)
+            hits += hb[k].prim >= 0;
+        assert_true(hits > NR / 4 && hits < NR);
         for (int threads = 1; threads <= 2; threads++) {
             rt_scene *sc = big_scene(N, mesh);
             const rt_build_options o = {.brute_threshold = 0, .threads = threads};
@@ -298,36 +314,14 @@ static void test_local(void **state)
             printf("%s, %d thread(s): %zu sub-grids, %zu references, %zu in tables, %.1f grid "
                    "B/tri\n", mesh ? "mesh" : "triangles", threads, g->nsubs, g->nsrefs,
                    g->nsloc, (double)sc->grid_bytes / N);
-            rt_packet_stats ps;
-            memset(&ps, 0, sizeof ps);
-            assert_int_equal(rt_intersect(sc, NR, rays, hg), RT_OK);
-            assert_int_equal(rt_intersect_packet_stats(sc, NR, rays, hp, &ps), RT_OK);
-            size_t hits = 0;
-            for (int k = 0; k < NR; k++) {
-                hits += hb[k].prim >= 0;
-                if (!rtu_same_hit(&hb[k], &hg[k]))
-                    fail_msg("ray %d: grid prim %d, brute force %d", k, hg[k].prim, hb[k].prim);
-                if (!rtu_same_hit(&hg[k], &hp[k]))
-                    fail_msg("ray %d: packet prim %d, single %d", k, hp[k].prim, hg[k].prim);
-            }
-            assert_true(hits > NR / 4 && hits < NR);
-            assert_int_equal(rt_occluded(sc, NR, rays, og), RT_OK);
-            assert_int_equal(rt_occluded_packet_stats(sc, NR, rays, op, &ps), RT_OK);
-            for (int k = 0; k < NR; k++) {
-                assert_int_equal(og[k], ob[k]);
-                assert_int_equal(op[k], ob[k]);
-            }
+            check_answers(sc, NR, rays, hb, NR, rays, ob);
             rt_scene_free(sc);
         }
         rt_scene_free(br);
     }
     free(rays);
     free(hb);
-    free(hg);
-    free(hp);
     free(ob);
-    free(og);
-    free(op);
 }
 
 int main(void)
