@@ -46,15 +46,22 @@ mapfile -t lib_srcs < <(find src/c src/rt -name '*.c' -not -name rt_mpi.c -not -
 # The library is compiled once (two compilers at a time, one object per source) and linked
 # into each target that runs it: the instrumentation (-fsanitize=fuzzer on an object is the
 # coverage only; the fuzzer's main comes at the link) is the same for all of them.
+# Jobs in the background, two at a time (the machine's two cores): at_most_two before each
+# start, wait_all at the end; a job that fails stops the script when waited for (set -e), and
+# as the objects and targets of an earlier run are removed first, one whose failure came
+# between two waits leaves a file missing that the next link or run needs.
+at_most_two() { while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done; }
+wait_all() { while [ -n "$(jobs -rp)" ]; do wait -n; done; }
+rm -rf "$out/obj" "$out"/fuzz_*
 mkdir -p "$out/obj"
+obj_of() { echo "$out/obj/$(echo "${1%.c}" | tr / _).o"; } # src/c/x/y.c -> obj/src_c_x_y.o
 objs=()
-for src in "${lib_srcs[@]}"; do objs+=("$out/obj/$(echo "${src%.c}" | tr / _).o"); done
+for src in "${lib_srcs[@]}"; do objs+=("$(obj_of "$src")"); done
 for i in "${!lib_srcs[@]}"; do
-    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
+    at_most_two
     clang "${flags[@]}" -Isrc/rt -c "${lib_srcs[$i]}" -o "${objs[$i]}" &
 done
-while [ -n "$(jobs -rp)" ]; do wait -n; done # a failed compile stops the script (set -e)
-obj_of() { echo "$out/obj/$(echo "${1%.c}" | tr / _).o"; }
+wait_all
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c "$(obj_of src/c/ws/mf/gks_mf_codec.c)" \
     "$(obj_of src/c/base/gks_alloc.c)" -lm -o "$out/fuzz_gksm"
 # The MI workstation target runs the whole library (reader, interpreter, pipeline); the state
@@ -63,14 +70,14 @@ clang "${flags[@]}" tests/fuzz/fuzz_gksm.c "$(obj_of src/c/ws/mf/gks_mf_codec.c)
 # (src/tools/gks3d_render.c, included by the target) on metafiles: its corpus is the MI
 # target's (corpus_mi), copied to corpus_render below.
 for t in mi state input render; do
+    at_most_two
     clang "${flags[@]}" -Isrc/rt "tests/fuzz/fuzz_$t.c" "${objs[@]}" -lpng -lpthread -lm \
         -o "$out/fuzz_$t" &
-    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n; done
 done
 # The scene readers (NFF, OFF, PLY) of the examples and benchmarks.
 clang "${flags[@]}" -Iexamples/c tests/fuzz/fuzz_scene.c examples/c/scene_io.c -lz -lm \
     -o "$out/fuzz_scene"
-while [ -n "$(jobs -rp)" ]; do wait -n; done
+wait_all
 
 # Each target fuzzes for the budget in a scratch folder of its own (fuzz_state's workstations
 # write files relative to it), two at a time (the machine's two cores); a crash's input is
@@ -78,7 +85,7 @@ while [ -n "$(jobs -rp)" ]; do wait -n; done
 fuzz_one() {
     local target=$1 work="$out/corpus_$1" src="tests/fuzz/corpus_$1"
     [ "$target" = render ] && src=tests/fuzz/corpus_mi # the metafile corpus
-    rm -rf "$work" "$out/$target.status"
+    rm -rf "$work" "$out/$target.status" "$out/$target-"* # and an earlier run's crash inputs
     cp -r "$src" "$work"
     mkdir -p "$out/run_$target"
     if (cd "$out/run_$target" && "../fuzz_$target" -max_total_time="$budget" -max_len=65536 \
@@ -91,11 +98,11 @@ fuzz_one() {
 }
 targets=(gksm mi state input scene render)
 for target in "${targets[@]}"; do
-    while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n || true; done
+    at_most_two # fuzz_one returns 0: its result is in $out/$target.status
     echo "fuzz: $target for ${budget}s"
     fuzz_one "$target" &
 done
-while [ -n "$(jobs -rp)" ]; do wait -n || true; done
+wait_all
 status=0
 for target in "${targets[@]}"; do
     src="tests/fuzz/corpus_$target"
