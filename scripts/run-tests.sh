@@ -7,7 +7,8 @@
 #                 -Wmaybe-uninitialized, fail too), -DGKS_WERROR=ON, every optional dependency
 #                 off (each GKS_WITH_* option, the Fortran binding included), benchmarks off;
 #                 then the benchmarks are built there as well, so that their code without any
-#                 peer compiles
+#                 peer compiles; the checks of sources and documents (ctest label nocode,
+#                 the same in every build) are left out
 #   ./build-asan  Debug at -O1 (AddressSanitizer's documentation advises -O1 or more for
 #                 speed; the times are in README.md), -DGKS_WERROR=ON -DGKS_SANITIZE=ON
 #                 (AddressSanitizer + UBSan, LeakSanitizer on when it works here, see below);
@@ -43,7 +44,7 @@ stage "every optional dependency off (build-min): ${off[*]}"
 cmake -S . -B build-min -DCMAKE_BUILD_TYPE=Release -DGKS_WERROR=ON -DGKS_SANITIZE=OFF \
       -DGKS_BUILD_BENCHMARKS=OFF "${tests[@]}" "${off[@]}"
 cmake --build build-min -j2
-ctest --test-dir build-min --output-on-failure -j2
+ctest --test-dir build-min --output-on-failure -j2 -LE nocode
 cmake -S . -B build-min -DGKS_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build-min -j2
 
@@ -71,7 +72,7 @@ fi
 export ASAN_OPTIONS="detect_leaks=$detect_leaks"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The checks of the sources and documents (label nocode) run none of the library's code: they
-# ran in the two stages before.
+# ran in the first stage.
 ctest --test-dir build-asan --output-on-failure -j2 -LE nocode
 
 stage "ThreadSanitizer build (build-tsan), the threaded tests"
