@@ -1113,6 +1113,7 @@ typedef struct rt_top_job {
     size_t next; /* atomic: the next chunk to take (insertion), then to scatter */
     double eps;
     uint32_t *refs;
+    const rt_cell_tab *tab; /* the top grid's cell boxes (at most RT_TAB cells per axis), or NULL */
 } rt_top_job;
 
 static void rt_top_insert(void *arg, int k, int n)
@@ -1121,6 +1122,7 @@ static void rt_top_insert(void *arg, int k, int n)
     rt_top_job *j = arg;
     const rt_grid *g = &j->sc->grid;
     rt_build *b = &j->b[k];
+    b->tab = j->tab;
     size_t q;
     while ((q = __atomic_fetch_add(&j->next, 1, __ATOMIC_RELAXED)) < j->nchunks) {
         rt_top_chunk *ch = &j->chunk[q];
@@ -1146,6 +1148,7 @@ static void rt_top_insert(void *arg, int k, int n)
         }
         ch->err = err;
     }
+    b->tab = NULL;
 }
 
 static void rt_top_scatter(void *arg, int k, int n)
@@ -1185,6 +1188,13 @@ static int rt_top_level(rt_scene *sc, rt_build *bs, int nt, double eps)
     job.b = bs;
     job.eps = eps;
     job.nchunks = nchunks;
+    /* the cell boxes from a table, as in the second level's grids, where it fits: a load
+       each instead of rt_axis_box's products and end tests */
+    rt_cell_tab tab;
+    if (g->b.n[0] <= RT_TAB && g->b.n[1] <= RT_TAB && g->b.n[2] <= RT_TAB) {
+        rt_tab_fill(&tab, &g->b, eps);
+        job.tab = &tab;
+    }
     job.chunk = rt_calloc_array(nchunks, sizeof(rt_top_chunk));
     if (!job.chunk)
         return RT_ERR_NOMEM;
