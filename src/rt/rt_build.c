@@ -1873,50 +1873,57 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
  * the traversal jumps there (rt_trace.c). Then the stored bytes: m capped at RT_CUBE_MAX (a
  * smaller cube is empty as well), an occupied cell's 0 replaced by RT_CUBE_OCC and what the
  * cell holds. Octants are independent: one per pool part. */
+typedef struct rt_cubes_job {
+    rt_grid *g;
+    const uint8_t *occ; /* per top cell: 0 when empty, else its stored byte (RT_CUBE_OCC ...) */
+} rt_cubes_job;
+
 static void rt_empty_cubes_part(void *arg, int k, int n)
 {
-    rt_grid *g = arg;
+    const rt_cubes_job *j = arg;
+    rt_grid *g = j->g;
+    const uint8_t *occ = j->occ;
     const int n0 = g->b.n[0], n1 = g->b.n[1], n2 = g->b.n[2];
     const ptrdiff_t s1 = n0, s2 = (ptrdiff_t)n0 * n1;
+    /* the row of a neighbour beyond the box (a grid has at most 1024 cells per axis:
+       rt_grid_options, rt_box_resolution) */
+    uint8_t none[1024];
+    memset(none, 255, sizeof none);
     for (int o = k; o < 8; o += n) {
         uint8_t *m = g->odist + (size_t)o * g->ncells;
         /* sweep against o's directions: x from the end for a positive x step, and so on */
         const int dx = o & 1 ? 1 : -1, dy = o & 2 ? 1 : -1, dz = o & 4 ? 1 : -1;
-        const ptrdiff_t ex = -dx, ey = -dy * s1, ez = -dz * s2; /* index of the neighbour */
+        const int x0 = dx > 0 ? 0 : n0 - 1;
         for (int z = dz > 0 ? 0 : n2 - 1; z >= 0 && z < n2; z += dz) {
             const int iz = (unsigned)(z - dz) < (unsigned)n2; /* neighbour in z inside */
             for (int y = dy > 0 ? 0 : n1 - 1; y >= 0 && y < n1; y += dy) {
                 const int iy = (unsigned)(y - dy) < (unsigned)n1;
-                for (int x = dx > 0 ? 0 : n0 - 1; x >= 0 && x < n0; x += dx) {
-                    const size_t ci = (size_t)z * (size_t)s2 + (size_t)y * (size_t)s1 + (size_t)x;
-                    if (g->off[ci + 1] != g->off[ci] || (g->sub && g->sub[ci] >= 0)) {
-                        m[ci] = 0;
-                        continue;
-                    }
-                    const int ix = (unsigned)(x - dx) < (unsigned)n0;
-                    int v = 255;
-#define RT_CUBE_NB(cond, d) \
-    if ((cond) && m[(ptrdiff_t)ci + (d)] < v) \
-        v = m[(ptrdiff_t)ci + (d)];
-                    RT_CUBE_NB(ix, ex)
-                    RT_CUBE_NB(iy, ey)
-                    RT_CUBE_NB(iz, ez)
-                    RT_CUBE_NB(ix && iy, ex + ey)
-                    RT_CUBE_NB(ix && iz, ex + ez)
-                    RT_CUBE_NB(iy && iz, ey + ez)
-                    RT_CUBE_NB(ix && iy && iz, ex + ey + ez)
-#undef RT_CUBE_NB
-                    m[ci] = (uint8_t)(v < 255 ? v + 1 : 255);
+                uint8_t *row = m + (size_t)z * (size_t)s2 + (size_t)y * (size_t)s1;
+                const uint8_t *oc = occ + (row - m);
+                /* the rows of the neighbours behind in y, in z and in both (none beyond) */
+                const uint8_t *ry = iy ? row - dy * s1 : none, *rz = iz ? row - dz * s2 : none;
+                const uint8_t *ryz = iy && iz ? row - dy * s1 - dz * s2 : none;
+                /* p: the cell behind in x; a, b, c: ry, rz, ryz there (255 before the row) */
+                unsigned p = 255, a = 255, b = 255, c = 255;
+                for (int i = 0, x = x0; i < n0; i++, x += dx) {
+                    const unsigned vy = ry[x], vz = rz[x], vyz = ryz[x];
+                    unsigned v = p < vy ? p : vy;
+                    v = vz < v ? vz : v;
+                    v = vyz < v ? vyz : v;
+                    v = a < v ? a : v;
+                    v = b < v ? b : v;
+                    v = c < v ? c : v;
+                    v = oc[x] ? 0 : v < 255 ? v + 1 : 255;
+                    row[x] = (uint8_t)v;
+                    p = v;
+                    a = vy;
+                    b = vz;
+                    c = vyz;
                 }
             }
         }
-        for (size_t ci = 0; ci < g->ncells; ci++) {
-            if (m[ci] == 0)
-                m[ci] = (uint8_t)(RT_CUBE_OCC | (g->off[ci + 1] != g->off[ci] ? RT_CUBE_LIST : 0) |
-                                  (g->sub && g->sub[ci] >= 0 ? RT_CUBE_SUB : 0));
-            else if (m[ci] > RT_CUBE_MAX)
-                m[ci] = RT_CUBE_MAX;
-        }
+        for (size_t ci = 0; ci < g->ncells; ci++)
+            m[ci] = occ[ci] ? occ[ci] : m[ci] > RT_CUBE_MAX ? RT_CUBE_MAX : m[ci];
     }
 }
 
@@ -1924,10 +1931,21 @@ static int rt_empty_cubes(rt_grid *g, int nt)
 {
     if (g->ncells > SIZE_MAX / 8)
         return RT_ERR_LIMIT;
-    g->odist = rt_alloc_array(g->ncells, 8);
-    if (!g->odist)
+    uint8_t *occ = malloc(g->ncells);
+    g->odist = occ ? rt_alloc_array(g->ncells, 8) : NULL;
+    if (!g->odist) {
+        free(occ);
         return RT_ERR_NOMEM;
-    rt_par_run(nt < 8 ? nt : 8, rt_empty_cubes_part, g);
+    }
+    for (size_t ci = 0; ci < g->ncells; ci++) {
+        const int list = g->off[ci + 1] != g->off[ci], sub = g->sub && g->sub[ci] >= 0;
+        occ[ci] = (uint8_t)(list || sub ? RT_CUBE_OCC | (list ? RT_CUBE_LIST : 0) |
+                                              (sub ? RT_CUBE_SUB : 0)
+                                        : 0);
+    }
+    rt_cubes_job j = {.g = g, .occ = occ};
+    rt_par_run(nt < 8 ? nt : 8, rt_empty_cubes_part, &j);
+    free(occ);
     return RT_OK;
 }
 
