@@ -2393,13 +2393,12 @@ static inline double rt_pts_area(const double *pts, size_t npts)
 {
     double bb[6];
     rt_pts_bbox(pts, npts, bb);
-    double e[3] = {bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]};
-    return rt_dmax(e[0] * e[1], rt_dmax(e[1] * e[2], e[0] * e[2]));
+    return rt_fcands_area(bb[3] - bb[0], bb[4] - bb[1], bb[5] - bb[2]);
 }
 
-void rt_fcands_tri(rt_fcands *l, const double pts[9], size_t i)
+void rt_fcands_add(rt_fcands *l, double ar, size_t i)
 {
-    rt_cand_add(l->area, l->cand, &l->nc, rt_pts_area(pts, 3), i);
+    rt_cand_add(l->area, l->cand, &l->nc, ar, i);
 }
 
 void rt_fcands_merge(rt_fcands *l, const rt_fcands *from, size_t off)

@@ -156,8 +156,20 @@ typedef struct rt_fcands {
     size_t cand[RT_FRAME_CAND];
     int nc;
 } rt_fcands;
-/* the triangle pts (9 coordinates) of index i into l, ranked as the frame choice ranks it */
-void rt_fcands_tri(rt_fcands *l, const double pts[9], size_t i);
+/* the area the frame choice ranks a primitive by: the largest face of its box, of extents
+   (max - min of its points) ex, ey, ez */
+static inline double rt_fcands_area(double ex, double ey, double ez)
+{
+    const double a = ey * ez, b = ex * ez, m = b > a ? b : a, c = ex * ey;
+    return m > c ? m : c;
+}
+/* the primitive of index i and rt_fcands_area ar into l, ranked as the frame choice ranks it */
+void rt_fcands_add(rt_fcands *l, double ar, size_t i);
+/* 1 if rt_fcands_add(l, ar, ...) would change l (a cheap test before the call) */
+static inline int rt_fcands_takes(const rt_fcands *l, double ar)
+{
+    return l->nc < RT_FRAME_CAND || l->area[RT_FRAME_CAND - 1] < ar;
+}
 /* the list from, its indices + off, into l, as if its primitives came after l's */
 void rt_fcands_merge(rt_fcands *l, const rt_fcands *from, size_t off);
 

@@ -474,11 +474,11 @@ static void rt_mesh_add_run(void *arg, int k, int n)
             j->sum[w][1] = s1;
             j->sum[w][2] = s2;
         }
-        double p[9];
-        memcpy(p, A, 3 * sizeof(double));
-        memcpy(p + 3, B, 3 * sizeof(double));
-        memcpy(p + 6, C, 3 * sizeof(double));
-        rt_fcands_tri(&o->cands, p, w - lo);
+        /* the frame candidates' rank from the box made here (rt_pts_bbox's values); a call
+           only for a triangle that enters the list */
+        const double ar = rt_fcands_area(h0 - l0, h1 - l1, h2 - l2);
+        if (rt_fcands_takes(&o->cands, ar))
+            rt_fcands_add(&o->cands, ar, w - lo);
         uint32_t *d = j->ix + 3 * w++;
         d[0] = a;
         d[1] = b;
