@@ -1913,7 +1913,8 @@ static void rt_empty_cubes_part(void *arg, int k, int n)
                     v = a < v ? a : v;
                     v = b < v ? b : v;
                     v = c < v ? c : v;
-                    v = oc[x] ? 0 : v < 255 ? v + 1 : 255;
+                    /* 0 when occupied, else v + 1 up to 255: no branch (taken at random) */
+                    v = (v + (v < 255)) & (0u - (oc[x] == 0));
                     row[x] = (uint8_t)v;
                     p = v;
                     a = vy;
@@ -1922,8 +1923,10 @@ static void rt_empty_cubes_part(void *arg, int k, int n)
                 }
             }
         }
-        for (size_t ci = 0; ci < g->ncells; ci++)
-            m[ci] = occ[ci] ? occ[ci] : m[ci] > RT_CUBE_MAX ? RT_CUBE_MAX : m[ci];
+        for (size_t ci = 0; ci < g->ncells; ci++) { /* an occupied cell's m is 0 */
+            const unsigned v = m[ci];
+            m[ci] = (uint8_t)(occ[ci] | (v > RT_CUBE_MAX ? RT_CUBE_MAX : v));
+        }
     }
 }
 
