@@ -446,8 +446,6 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         const uint32_t a = q[0] + (uint32_t)m->v0, b = q[1] + (uint32_t)m->v0,
                        c = q[2] + (uint32_t)m->v0;
         const double *A = j->X[q[0]], *B = j->X[q[1]], *C = j->X[q[2]];
-        if (!sane3(A) || !sane3(B) || !sane3(C))
-            continue;
         /* the triangle's box, the first of equal values kept (-0 or +0, as rt_bbox_add
            growing a box by A, B, C in turn keeps them), its extent for rt_tri_surely_sane's
            test (hi - lo is the same value whichever zero is kept), and the vertex sum; axis
@@ -456,10 +454,18 @@ static void rt_mesh_add_run(void *arg, int k, int n)
         rt_minmax3(A[0], B[0], C[0], &l0, &h0);
         rt_minmax3(A[1], B[1], C[1], &l1, &h1);
         rt_minmax3(A[2], B[2], C[2], &l2, &h2);
+        const double s0 = A[0] + B[0] + C[0], s1 = A[1] + B[1] + C[1], s2 = A[2] + B[2] + C[2];
+        /* sane3 of A, B and C: a finite sum of the sums has finite addends, and then the box
+           bounds every coordinate's size (one test, not nine of each kind); a sum that
+           overflows takes sane3 itself */
+        const int fin = isfinite(s0 + s1 + s2);
+        if (fin ? !((l0 >= -RT_COORD_MAX) & (l1 >= -RT_COORD_MAX) & (l2 >= -RT_COORD_MAX) &
+                    (h0 <= RT_COORD_MAX) & (h1 <= RT_COORD_MAX) & (h2 <= RT_COORD_MAX))
+                : !(sane3(A) && sane3(B) && sane3(C)))
+            continue;
         double ext = h0 - l0 > 0.0 ? h0 - l0 : 0.0;
         ext = h1 - l1 > ext ? h1 - l1 : ext;
         ext = h2 - l2 > ext ? h2 - l2 : ext;
-        const double s0 = A[0] + B[0] + C[0], s1 = A[1] + B[1] + C[1], s2 = A[2] + B[2] + C[2];
         double nrm[3];
         if (!(rt_tri_surely_sane_ext(A, B, C, ext) || rt_tri_normal_sane(A, B, C, nrm)))
             continue;

@@ -219,6 +219,45 @@ static void test_bad_input(void **state)
     rt_scene_free(sc);
 }
 
+/* triangles with a vertex that is not finite or lies beyond RT_COORD_MAX on an axis are
+   not kept, whichever coordinate it is and in either direction (the check tests them through
+   the triangle's box and vertex sums) */
+static void test_bad_vertices_dropped(void **state)
+{
+    (void)state;
+    const double big = 2 * RT_COORD_MAX;
+    double v[3 * 28] = {0, 0, 0, 1, 0, 0, 0, 1, 0, /* 0-2: a sane triangle */
+                        NAN, 0.5, 0, 0.5, INFINITY, 0, 0.5, 0.5, -INFINITY,
+                        big, 0.5, 0, 0.5, -big, 0, 0.5, 0.5, big,
+                        -1, 0, 0}; /* 9: sane */
+    uint32_t ix[3 * 16] = {0, 1, 2, 0, 1, 3, 0, 1, 4, 0, 2, 5, 3, 4, 5,
+                           0, 1, 6, 0, 1, 7, 0, 2, 8, 1, 2, 6, 2, 0, 9};
+    /* 10-27: six well-shaped triangles (edges 1e90) at +-2 RT_COORD_MAX on one axis each */
+    for (int k = 0; k < 6; k++) {
+        for (int q = 0; q < 3; q++) {
+            double *p = v + 3 * (10 + 3 * k + q);
+            p[0] = p[1] = p[2] = 0.0;
+            p[(k / 2 + 1) % 3] = q == 1 ? 1e90 : 0.0;
+            p[(k / 2 + 2) % 3] = q == 2 ? 1e90 : 0.0;
+            p[k / 2] = k % 2 ? -big : big;
+            ix[3 * (10 + k) + q] = (uint32_t)(10 + 3 * k + q);
+        }
+    }
+    int s;
+    rt_scene *sc = rtu_scene_one_surface(&s);
+    assert_non_null(sc);
+    assert_int_equal(rt_scene_add_mesh(sc, 28, v, NULL, NULL, 16, ix, s, s), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
+    assert_int_equal(gi.prims, 2); /* (0, 1, 2) and (2, 0, 9) */
+    rt_ray r = {.org = {0.25, 0.25, 1}, .dir = {0, 0, -1}, .tmin = 0, .tmax = 10};
+    rt_hit h;
+    assert_int_equal(rt_intersect(sc, 1, &r, &h), RT_OK);
+    assert_true(h.t > 0.99 && h.t < 1.01);
+    rt_scene_free(sc);
+}
+
 /* one mesh of nv vertices xyz and nt index triples ix, committed with a grid or without one
    (brute) */
 static rt_scene *one_mesh(size_t nv, const double *v, size_t nt, const uint32_t *ix, int brute)
@@ -655,6 +694,7 @@ int main(void)
         cmocka_unit_test(test_same_picture),
         cmocka_unit_test(test_same_picture_culled),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_bad_vertices_dropped),
         cmocka_unit_test(test_tie_given_first),
         cmocka_unit_test(test_given_order_back),
         cmocka_unit_test(test_unused_vertices_frame),
