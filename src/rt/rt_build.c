@@ -1293,6 +1293,9 @@ typedef struct rt_sub_part {
     rt_big off, refs;    /* uint32: per sub cell its first reference (counted from the part's
                             first), the references; total and nref of them */
     size_t nref;
+    rt_big loc;          /* uint32, with rt_sub_job.local: its grids' tables of primitives
+                            (rt_sub_csr), nloc entries */
+    size_t nloc;
     int err;             /* 1: no memory, 2: too many cells */
     char pad[RT_LINE];   /* the next part on other cache lines (RT_LINE) */
 } rt_sub_part;
@@ -1300,9 +1303,12 @@ typedef struct rt_sub_part {
 typedef struct rt_sub_chunk {
     size_t c0, c1;               /* top cells [c0, c1) */
     int part;                    /* the part whose arrays hold its grids */
+    uint32_t loc_l;              /* its first table entry there (rt_sub_job.local) */
     size_t sub_l, cell_l, ref_l; /* its first grid, sub cell and reference there */
     size_t nsubs, ncell, nref;
     size_t sub0, cell0, ref0;    /* its first grid, sub cell and reference in the grid's */
+    uint32_t nloc, loc0;         /* its table entries, the first in the grid's (fewer than
+                                    references, so 32 bits: the records stay small) */
 } rt_sub_chunk;
 
 typedef struct rt_sub_job {
@@ -1314,6 +1320,7 @@ typedef struct rt_sub_job {
     double flat[2];      /* factors of sub_factor for 1 and 2 cells on the thinnest axis */
     int sub_min;
     int nparts;
+    int local;           /* references as indices into each grid's table (rt_sub_csr) */
     double chunk_min;    /* references */
     uint64_t state;      /* atomic: cells [lo, hi) left, lo | hi << 26 | back chunks << 52 */
     rt_sub_chunk *front; /* part 0's chunks in cell order, nfront of them */
@@ -1443,10 +1450,16 @@ static void rt_sub_resolution(rt_box *sb, const rt_sub_job *j, uint32_t nsmall)
         rt_box_resolution(sb, j->flat[thin - 1] * j->sub_factor * nsmall, RT_TAB);
 }
 
-/* the pairs of the sub-grid just filled (nc cells from the part's cell total) into the part's
-   CSR arrays, stable (reference order kept within a cell): its entries of off serve as
-   counts, then as cursors */
-static void rt_sub_csr(rt_sub_part *pt, const rt_build *b, size_t total, size_t nc)
+/* The pairs of the sub-grid just filled (nc cells from the part's cell total) into the part's
+ * CSR arrays, stable (reference order kept within a cell): its entries of off serve as
+ * counts, then as cursors. With loc (rt_sub_job.local) the grid's table of primitives as well:
+ * the primitives that got a pair, in the order of their insertion, into loc, and as
+ * references their indices there. One insertion's pairs are consecutive and two consecutive
+ * insertions are of different primitives (a top cell lists each once), so a pair's index is
+ * the number of changes of primitive before it, counted without a branch; returns the
+ * table's length (0 without loc). */
+static uint32_t rt_sub_csr(rt_sub_part *pt, const rt_build *b, size_t total, size_t nc,
+                           uint32_t *loc)
 {
     uint32_t *off = (uint32_t *)pt->off.p + total, *refs = pt->refs.p;
     memset(off, 0, nc * sizeof *off);
@@ -1458,12 +1471,26 @@ static void rt_sub_csr(rt_sub_part *pt, const rt_build *b, size_t total, size_t 
         off[c] = run;
         run += m;
     }
-    for (size_t q = 0; q < b->npairs; q++)
-        refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+    uint32_t l = 0;
+    if (loc && b->npairs) {
+        uint32_t prev = b->pairs[0].prim;
+        for (size_t q = 0; q < b->npairs; q++) {
+            const uint32_t i = b->pairs[q].prim;
+            l += i != prev;
+            prev = i;
+            loc[l] = i;
+            refs[off[b->pairs[q].cell]++] = l;
+        }
+        l++;
+    } else {
+        for (size_t q = 0; q < b->npairs; q++)
+            refs[off[b->pairs[q].cell]++] = b->pairs[q].prim;
+    }
     for (size_t c = nc; c > 1; c--) /* off[c - 1] is now the start of c */
         off[c - 1] = off[c - 2];
     off[0] = (uint32_t)pt->nref;
     pt->nref = run;
+    return l;
 }
 
 /* the grids of the crowded cells of chunk ch into part k's arrays */
@@ -1480,6 +1507,7 @@ static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab 
     ch->sub_l = pt->nsubs;
     ch->cell_l = pt->total;
     ch->ref_l = pt->nref;
+    ch->loc_l = (uint32_t)pt->nloc;
     /* room for the chunk's grids, cells and references at once, so that they grow without
        copies (realloc): about sub_factor cells per reference of a crowded cell, and twice as
        many references as cells (1.07-1.42 times on the meshes, 2.0-2.1 on random triangles,
@@ -1548,17 +1576,20 @@ static int rt_sub_chunk_run(rt_sub_job *j, int k, rt_sub_chunk *ch, rt_cell_tab 
         if (!err && pt->nref + b->npairs > UINT32_MAX - 1)
             err = 2;
         if (!err && (!rt_big_grow(&pt->off, total + nc, sizeof(uint32_t)) ||
-                     !rt_big_grow(&pt->refs, pt->nref + b->npairs, sizeof(uint32_t))))
+                     !rt_big_grow(&pt->refs, pt->nref + b->npairs, sizeof(uint32_t)) ||
+                     (j->local && !rt_big_grow(&pt->loc, pt->nloc + nsmall, sizeof(uint32_t)))))
             err = 1;
         if (err)
             break;
-        rt_sub_csr(pt, b, total, nc);
+        sg->loc0 = (uint32_t)pt->nloc; /* counted from the part's first entry */
+        pt->nloc += rt_sub_csr(pt, b, total, nc, j->local ? (uint32_t *)pt->loc.p + pt->nloc : NULL);
         total += nc;
     }
     pt->total = total;
     ch->nsubs = pt->nsubs - ch->sub_l;
     ch->ncell = pt->total - ch->cell_l;
     ch->nref = pt->nref - ch->ref_l;
+    ch->nloc = (uint32_t)(pt->nloc - ch->loc_l);
     return err;
 }
 
@@ -1622,21 +1653,24 @@ static void rt_sub_place(void *arg, int k, int n)
 /* the chunks' places in the grid's arrays (front chunks, then back chunks in cell order: the
    reverse of their taking), their sub-grids into g->subs (first cells shifted) and their top
    cells' grid indices shifted; the totals into *nsubs, *total, *nref */
-static void rt_sub_merge(rt_sub_job *j, size_t *nsubs, size_t *total, size_t *nref)
+static void rt_sub_merge(rt_sub_job *j, size_t *nsubs, size_t *total, size_t *nref, size_t *nloc)
 {
-    size_t s = 0, c = 0, r = 0;
+    size_t s = 0, c = 0, r = 0, l = 0;
     for (size_t q = 0; q < j->nfront + j->nback; q++) {
         rt_sub_chunk *ch = q < j->nfront ? &j->front[q] : &j->back[j->nback - 1 - (q - j->nfront)];
         ch->sub0 = s;
         ch->cell0 = c;
         ch->ref0 = r;
+        ch->loc0 = (uint32_t)l;
         s += ch->nsubs;
         c += ch->ncell;
         r += ch->nref;
+        l += ch->nloc;
     }
     *nsubs = s;
     *total = c;
     *nref = r;
+    *nloc = l;
 }
 
 static void rt_sub_merge_subs(rt_grid *g, const rt_sub_job *j)
@@ -1645,10 +1679,15 @@ static void rt_sub_merge_subs(rt_grid *g, const rt_sub_job *j)
         const rt_sub_chunk *ch = q < j->nfront ? &j->front[q] : &j->back[q - j->nfront];
         const rt_subgrid *from = j->part[ch->part].subs + ch->sub_l;
         const uint32_t shift = (uint32_t)ch->cell0 - (uint32_t)ch->cell_l; /* mod 2^32 */
+        const uint32_t lshift = (uint32_t)ch->loc0 - (uint32_t)ch->loc_l;
         for (size_t i = 0; i < ch->nsubs; i++) {
             g->subs[ch->sub0 + i] = from[i];
             g->subs[ch->sub0 + i].first += shift;
+            g->subs[ch->sub0 + i].loc0 += lshift;
         }
+        if (g->sloc && ch->nloc)
+            memcpy(g->sloc + ch->loc0, (const uint32_t *)j->part[ch->part].loc.p + ch->loc_l,
+                   ch->nloc * sizeof(uint32_t));
         if (ch->sub0 == ch->sub_l)
             continue;
         for (size_t ci = ch->c0; ci < ch->c1; ci++)
@@ -1720,50 +1759,59 @@ static void rt_sub_narrow(rt_grid *g)
  * 2-byte indices into a table of the primitives each sub-grid holds (rt_grid.sref16, sloc:
  * 2 B per reference and 4 B per primitive and sub-grid, instead of 4 B per reference;
  * random triangles 27-31 -> 19-21 B a triangle), the same lists in the same order; the
- * walks read a cell's list through the table. Needs the 2-byte offsets' layout (at most
- * 65535 references a sub-grid, so as many primitives) and no float leaves (they read srefs);
- * without the memory for the new arrays srefs stays. The meshes' sub-grids (about 4
+ * walks read a cell's list through the table. The build makes the tables and the indices
+ * (rt_sub_csr, rt_sub_job.local: srefs holds the indices, sloc the tables); here they are
+ * narrowed to 2 bytes when the second level has the 2-byte offsets' layout (at most 65535
+ * references a sub-grid, so as many primitives), else, or without the memory for them,
+ * made primitive indices again (srefs, sloc freed). With leaves (float leaves may be made:
+ * they read srefs) both are kept until rt_sub_local_end. The meshes' sub-grids (about 4
  * references per insertion) keep srefs: their rays would pay the table's load per
  * reference (docs/bench/rt_tuning.md, 2026-12-06). */
-static void rt_sub_local(rt_grid *g, size_t nprim)
+static void rt_sub_local(rt_grid *g, int leaves)
 {
-    if (!g->soff16 || !g->srefs || !g->nsubs || !g->nsrefs || g->tleaf)
+    if (!g->sloc)
         return;
-    /* where[i]: 1 + primitive i's index in the table of the sub-grid being made, 0: none */
-    uint32_t *where = rt_calloc_array(nprim ? nprim : 1, sizeof(uint32_t));
-    uint16_t *r16 = rt_alloc_array(g->nsrefs, sizeof(uint16_t));
-    uint32_t *loc = rt_alloc_array(g->nsrefs, sizeof(uint32_t));
-    if (!where || !r16 || !loc) {
-        free(where);
-        free(r16);
-        free(loc);
-        return;
-    }
-    const uint32_t *refs = g->srefs;
-    uint32_t nl = 0;
-    for (size_t k = 0; k < g->nsubs; k++) {
-        rt_subgrid *sg = &g->subs[k];
+    uint32_t *refs = g->srefs;
+    uint16_t *r16 = g->soff16 && g->nsubs && g->nsrefs
+                        ? rt_alloc_array(g->nsrefs, sizeof(uint16_t)) : NULL;
+    for (size_t j = 0; r16 && j < g->nsrefs; j++)
+        r16[j] = (uint16_t)refs[j];
+    for (size_t k = 0; (!r16 || leaves) && k < g->nsubs; k++) {
+        const rt_subgrid *sg = &g->subs[k];
         const size_t nc = (size_t)sg->b.n[0] * (size_t)sg->b.n[1] * (size_t)sg->b.n[2];
-        const uint32_t r0 = sg->ref0, r1 = r0 + g->soff16[sg->first16 + nc], l0 = nl;
-        sg->loc0 = l0;
-        for (uint32_t j = r0; j < r1; j++) {
-            const uint32_t i = refs[j];
-            if (!where[i]) {
-                loc[nl++] = i;
-                where[i] = nl - l0;
-            }
-            r16[j] = (uint16_t)(where[i] - 1);
-        }
-        for (uint32_t q = l0; q < nl; q++)
-            where[loc[q]] = 0;
+        const uint32_t *loc = g->sloc + sg->loc0;
+        for (uint32_t j = sg->ref0, e = rt_sub_off(g, k, nc); j < e; j++)
+            refs[j] = loc[refs[j]];
     }
-    free(where);
-    uint32_t *fit = realloc(loc, (size_t)nl * sizeof *loc);
-    rt_big_free(&g->srefs_m);
-    g->srefs = NULL;
+    if (!r16) {
+        free(g->sloc);
+        g->sloc = NULL;
+        g->nsloc = 0;
+        return;
+    }
     g->sref16 = r16;
-    g->sloc = fit ? fit : loc;
-    g->nsloc = nl;
+    if (!leaves) {
+        rt_big_free(&g->srefs_m);
+        g->srefs = NULL;
+    }
+}
+
+/* after the float leaves: the layout that rt_sub_local left both of, the one the walks read
+   (srefs with leaves, else sref16 and sloc) */
+static void rt_sub_local_end(rt_grid *g)
+{
+    if (!g->sref16 || !g->srefs)
+        return;
+    if (g->tleaf) {
+        free(g->sref16);
+        free(g->sloc);
+        g->sref16 = NULL;
+        g->sloc = NULL;
+        g->nsloc = 0;
+    } else {
+        rt_big_free(&g->srefs_m);
+        g->srefs = NULL;
+    }
 }
 
 /* for tests: the smallest chunk of the second level's dynamic parts in references (0: the
@@ -1786,7 +1834,7 @@ uint64_t rt_build_back_chunks(void)
 }
 
 static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, double sub_factor,
-                             const double flat[2], int sub_min)
+                             const double flat[2], int sub_min, int local)
 {
     rt_grid *g = &sc->grid;
     size_t nsub = 0;
@@ -1812,7 +1860,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
     const size_t cmin = __atomic_load_n(&rt_chunk_min, __ATOMIC_RELAXED);
     rt_sub_job job = {.sc = sc, .b = bs, .part = part, .keep = keep, .eps = eps,
                       .sub_factor = sub_factor, .flat = {flat[0], flat[1]},
-                      .sub_min = sub_min, .nparts = nt,
+                      .sub_min = sub_min, .nparts = nt, .local = local,
                       .chunk_min = cmin ? (double)cmin : RT_SUB_CHUNK_MIN,
                       .state = (uint64_t)g->ncells << RT_SUB_CELL_BITS,
                       .front = chunks, .back = chunks + RT_SUB_CHUNKS,
@@ -1824,9 +1872,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
     for (int k = 0; k < nt; k++)
         if (part[k].err && !err)
             err = part[k].err;
-    size_t nsubs = 0, total = 0, nref = 0;
+    size_t nsubs = 0, total = 0, nref = 0, nloc = 0;
     if (!err)
-        rt_sub_merge(&job, &nsubs, &total, &nref);
+        rt_sub_merge(&job, &nsubs, &total, &nref, &nloc);
     if (!err && (total > UINT32_MAX - 1 || nref > UINT32_MAX - 1))
         err = 2;
     if (!err) {
@@ -1834,6 +1882,9 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         if (!g->subs || !rt_big_grow(&part[0].off, total + 1, sizeof(uint32_t)) ||
             !rt_big_grow(&part[0].refs, nref ? nref : 1, sizeof(uint32_t)))
             err = 1;
+        if (!err && local && !(g->sloc = rt_alloc_array(nloc ? nloc : 1, sizeof(uint32_t))))
+            err = 1;
+        g->nsloc = nloc;
     }
     if (!err) {
         g->soff_m = part[0].off;
@@ -1855,6 +1906,7 @@ static int rt_build_subgrids(rt_scene *sc, rt_build *bs, int nt, double eps, dou
         free(part[k].subs);
         rt_big_free(&part[k].off);
         rt_big_free(&part[k].refs);
+        rt_big_free(&part[k].loc);
     }
     free(chunks);
     if (!err)
@@ -2936,7 +2988,8 @@ static int rt_grid_levels(rt_scene *sc, rt_build *bs, int nt, const rt_grid_opts
         no_subgrids = 1;
     }
     if (rc == RT_OK && !no_subgrids)
-        rc = rt_build_subgrids(sc, bs, nt, eps, go->sub_factor, go->sub_flat, go->sub_min);
+        rc = rt_build_subgrids(sc, bs, nt, eps, go->sub_factor, go->sub_flat, go->sub_min,
+                               go->coarse);
     return rc;
 }
 
@@ -3010,9 +3063,11 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
     if (rc == RT_OK)
         rt_occupied_kdop(sc, g, eps);
     if (rc == RT_OK)
+        rt_sub_local(g, rt_leaves_min(o ? o->leaf_min : 0) > 0);
+    if (rc == RT_OK)
         rc = rt_leaves_build(sc, g, o ? o->leaf_min : 0);
-    if (rc == RT_OK && go.coarse)
-        rt_sub_local(g, sc->nprim);
+    if (rc == RT_OK)
+        rt_sub_local_end(g);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {

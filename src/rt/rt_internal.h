@@ -633,6 +633,9 @@ int rt_hits_prim(const rt_scene *sc, const rt_rayx *r, long i);
 
 /* float leaves (rt_leaf.c), built after the grid: RT_OK or RT_ERR_NOMEM; and their bytes */
 int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min);
+/* the smallest leaf rt_leaves_build(.., leaf_min) takes: leaf_min, or GKS_RT_LEAF_MIN's when
+   it is 0; no leaves when it is not above 0 */
+int rt_leaves_min(int leaf_min);
 size_t rt_leaves_bytes(const rt_grid *g);
 void rt_leaves_free(rt_grid *g);
 /* The widest SIMD level this CPU runs and GKS_RT_SIMD (scalar, sse) allows: 0 scalar, 1 SSE2,

@@ -290,11 +290,15 @@ static uint32_t *rt_sub_offsets(const rt_grid *g)
 
 static int rt_leaves_make(const rt_scene *sc, rt_grid *g, const uint32_t *soff, uint32_t lm);
 
+int rt_leaves_min(int leaf_min)
+{
+    return leaf_min == 0 ? rt_leaf_min_env() : leaf_min;
+}
+
 int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min)
 {
     g->leaf_fn = rt_leaf_kernel(&g->leaf_name, &g->leaf_fn4);
-    if (leaf_min == 0)
-        leaf_min = rt_leaf_min_env();
+    leaf_min = rt_leaves_min(leaf_min);
     if (leaf_min <= 0)
         return RT_OK;
     const uint32_t lm = (uint32_t)leaf_min;
