@@ -12,7 +12,9 @@
  * bit for bit (rt_intersect, rt_occluded), the packet path the single-ray path's
  * (rt_intersect_packet, rt_occluded_packet), so the walk reads either layout. The sub-grid
  * records start on cache lines. And the references' 2-byte layout of widened top levels
- * (rt_grid.sref16: indices into each sub-grid's table of primitives), test_local.
+ * (rt_grid.sref16: indices into each sub-grid's table of primitives), test_local; a widened
+ * level whose sub-grid has more than 65535 references keeps primitive indices,
+ * test_wide_coarse.
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -28,15 +30,31 @@
 #include "rt_packet.h"
 #include "rt_testutil.h"
 
+/* the triangles at the 8 corners of [0, 10]^3 */
+static void add_corners(rt_scene *sc, int surf)
+{
+    const int three = 3;
+    for (int k = 0; k < 8; k++) {
+        const double x = k & 1 ? 10.0 : 0.0, y = k & 2 ? 10.0 : 0.0, z = k & 4 ? 10.0 : 0.0;
+        const double dx = x > 0 ? -0.1 : 0.1, dy = y > 0 ? -0.1 : 0.1;
+        const double v[9] = {x, y, z, x + dx, y, z, x, y + dy, z};
+        assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
+    }
+}
+
 /* n triangles around random centres in [4.5, 5.5]^3, edges up to 2 * half, and one triangle
-   at each of the 8 corners of [0, 10]^3 (the box whose top cell holds the cluster) */
-static rt_scene *cluster_scene(int n, double half)
+   at each of the 8 corners of [0, 10]^3 (the box whose top cell holds the cluster), after the
+   cluster or, with corners_first, before it (the cluster's primitive indices then differ from
+   their places in a table of the sub-grid's primitives) */
+static rt_scene *cluster_scene(int n, double half, int corners_first)
 {
     int surf;
     rt_scene *sc = rtu_scene_one_surface(&surf);
     assert_non_null(sc);
     const int three = 3;
     uint64_t st = 4711;
+    if (corners_first)
+        add_corners(sc, surf);
     for (int k = 0; k < n; k++) {
         double c[3], v[9];
         for (int i = 0; i < 3; i++)
@@ -45,12 +63,8 @@ static rt_scene *cluster_scene(int n, double half)
             v[j] = c[j % 3] + half * (2.0 * rtu_rand(&st) - 1.0);
         assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
     }
-    for (int k = 0; k < 8; k++) {
-        const double x = k & 1 ? 10.0 : 0.0, y = k & 2 ? 10.0 : 0.0, z = k & 4 ? 10.0 : 0.0;
-        const double dx = x > 0 ? -0.1 : 0.1, dy = y > 0 ? -0.1 : 0.1;
-        const double v[9] = {x, y, z, x + dx, y, z, x, y + dy, z};
-        assert_true(rt_scene_add_polygon(sc, 1, &three, v, surf, surf) >= 0);
-    }
+    if (!corners_first)
+        add_corners(sc, surf);
     return sc;
 }
 
@@ -139,9 +153,13 @@ static rt_packet_stats check_answers(rt_scene *sc, size_t nr, const rt_ray *rays
     return ps;
 }
 
-static void check_scene(int n, double half, int want_narrow)
+/* n triangles of cluster_scene(n, half, coarse) with the grid of 1 and 2 threads: the
+   offsets' layout (want_narrow: the 2-byte one), with coarse a widened top level (fewer than
+   100 cells) whose references are primitive indices (srefs, no tables), the lists and the
+   answers */
+static void check_scene(int n, double half, int want_narrow, int coarse)
 {
-    rt_scene *br = cluster_scene(n, half);
+    rt_scene *br = cluster_scene(n, half, coarse);
     const rt_build_options bo = {.brute_force = 1};
     assert_int_equal(rt_scene_commit(br, &bo), RT_OK);
     const size_t nr = SIDE * SIDE;
@@ -175,15 +193,19 @@ static void check_scene(int n, double half, int want_narrow)
         occl += ob[k];
     assert_true(occl > 0 && occl < ns);
     for (int threads = 1; threads <= 2; threads++) {
-        rt_scene *sc = cluster_scene(n, half);
+        rt_scene *sc = cluster_scene(n, half, coarse);
         const rt_build_options o = {.brute_threshold = 0, .threads = threads};
         assert_int_equal(rt_scene_commit(sc, &o), RT_OK);
         assert_true(sc->use_grid);
-        printf("%d triangles, %d thread(s): %zu sub-grids, %zu sub cells, %zu references, "
-               "%s offsets\n", n, threads, sc->grid.nsubs, sc->grid.nsubcells, sc->grid.nsrefs,
-               sc->grid.soff16 ? "2-byte" : "4-byte");
+        printf("%d triangles, %d thread(s): %zu top cells, %zu sub-grids, %zu sub cells, %zu "
+               "references, %s offsets\n", n, threads, sc->grid.ncells, sc->grid.nsubs,
+               sc->grid.nsubcells, sc->grid.nsrefs, sc->grid.soff16 ? "2-byte" : "4-byte");
         assert_int_equal(sc->grid.soff16 != NULL, want_narrow);
         assert_int_equal(sc->grid.soff != NULL, !want_narrow);
+        if (coarse) {
+            assert_true(sc->grid.ncells < 100);
+            assert_true(sc->grid.srefs && !sc->grid.sref16 && !sc->grid.sloc);
+        }
         check_lists(sc);
         const rt_packet_stats ps = check_answers(sc, nr, rays, hb, ns, sr, ob);
         assert_true(ps.packets > 0); /* the packet path itself walked the sub-grid */
@@ -199,13 +221,22 @@ static void check_scene(int n, double half, int want_narrow)
 static void test_narrow(void **state)
 {
     (void)state;
-    check_scene(1500, 0.08, 1);
+    check_scene(1500, 0.08, 1, 0);
 }
 
 static void test_wide(void **state)
 {
     (void)state;
-    check_scene(20000, 0.06, 0);
+    check_scene(20000, 0.06, 0, 0);
+}
+
+/* a widened top level (rt_build.c: rt_top_coarsen; larger triangles: 27 top cells) whose one
+   sub-grid has more than 65535 references: its build made 2-byte-able table indices
+   (rt_sub_csr), which become primitive indices again with the 4-byte offsets (rt_sub_local) */
+static void test_wide_coarse(void **state)
+{
+    (void)state;
+    check_scene(20000, 0.3, 0, 1);
 }
 
 /* n random triangles in the unit cube, each within a cube of side 2 n^(-1/3) around its
@@ -329,6 +360,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_narrow),
         cmocka_unit_test(test_wide),
+        cmocka_unit_test(test_wide_coarse),
         cmocka_unit_test(test_local),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
