@@ -2875,9 +2875,10 @@ static void rt_grid_options(const rt_build_options *o, size_t nprim, rt_grid_opt
  * level (not the uniform alternative of RT_UNIFORM_SHARE), with RT_SUB_FACTOR_COARSE cells
  * per reference at any size: its triangles span several sub cells each, and fewer cells cut
  * the references and exact tests per triangle more than they cost its rays (2026-12-06: 3
- * instead of 4; 2.5 with the 2-byte references of rt_sub_local, which cost the commit a
- * pass: random triangles 3.8 -> 3.1 sub cells and 7.7 -> 7.2 references a triangle at 10^6,
- * build instructions as with 3 and no table, rays 1-3 % more than with 3). */
+ * instead of 4; 2.5 with the 2-byte references of rt_sub_local, whose tables then cost the
+ * commit a pass, made in the build's CSR pass since: random triangles 3.8 -> 3.1 sub cells
+ * and 7.7 -> 7.2 references a triangle at 10^6, build instructions as with 3 and no table,
+ * rays 1-3 % more than with 3). */
 #define RT_TOP_EXT_SAMPLE 1024
 #define RT_TOP_EXT_LARGE 0.25
 #define RT_TOP_EXT_LARGE_SMALL 0.4
