@@ -294,6 +294,8 @@ typedef struct rt_grid_info {
                                 references of both levels, empty cubes): equal
                                 hashes, the same grid; 0 without a grid */
     uint64_t float_leaves, float_lanes; /* cell lists also kept as float leaves, their lanes */
+    uint64_t flat_subgrids;  /* sub-grids whose triangles lie in one plane (rt_occluded skips
+                                them where the ray's segment stays on one side) */
     const char *simd;        /* their test's kernel: "avx2", "sse", "scalar" ("none": no grid;
                                 a static string) */
 } rt_grid_info;

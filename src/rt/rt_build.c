@@ -381,6 +381,8 @@ void rt_grid_free(rt_grid *g)
     free(g->sref16);
     free(g->sloc);
     rt_leaves_free(g); /* soff16 lives in soff_m */
+    free(g->subplane);
+    free(g->splanes);
     memset(g, 0, sizeof *g);
 }
 
@@ -3065,6 +3067,151 @@ static int rt_mesh_gframe(const rt_scene *sc, int nt, double **gv)
     return RT_OK;
 }
 
+/* primitive j of sub-grid k's reference r (either layout) */
+static inline uint32_t rt_sub_ref(const rt_grid *g, const rt_subgrid *sg, uint32_t r)
+{
+    return g->sref16 ? g->sloc[sg->loc0 + g->sref16[r]] : g->srefs[r];
+}
+
+/* Sub-grid k's plane (rt_subplane) if its triangles lie within RT_FLAT_TOL of the scene's
+   scale of one plane: 1, else 0, -1 when out of memory. *seen: per triangle the last
+   sub-grid (1 + k) that looked at it, so that a triangle in several of the sub-grid's cells
+   is looked at once (allocated at the first use). The margin's constants (RT_FLAT_K1 the
+   bound of the watertight test's distance from its plane, in u S^3): docs/RAYTRACING.md,
+   "Flat sub-grids". */
+#define RT_FLAT_TOL 0x1p-30
+#define RT_FLAT_K1 16384.0
+/* min and max as one instruction each (no libm call; a NaN coordinate makes the
+   triangle's |N| NaN, and then the sub-grid keeps no plane) */
+#define RT_FMIN(a, b) ((a) < (b) ? (a) : (b))
+#define RT_FMAX(a, b) ((a) > (b) ? (a) : (b))
+static int rt_sub_plane(const rt_scene *sc, const rt_grid *g, size_t k, uint32_t **seen,
+                        rt_subplane *pl)
+{
+    const rt_subgrid *sg = &g->subs[k];
+    const size_t nc = (size_t)sg->b.n[0] * sg->b.n[1] * sg->b.n[2];
+    const uint32_t a = rt_sub_off(g, k, 0), b = rt_sub_off(g, k, nc), mark = (uint32_t)k + 1;
+    const double u = 0x1p-53, S = sc->scale, tol = RT_FLAT_TOL * S;
+    if (a == b || !(S > 0.0) || !(S < 1e100))
+        return 0;
+    /* the unit normal of the first triangle */
+    const uint32_t j0 = rt_sub_ref(g, sg, a);
+    const double *v0 = rt_tri_vert(sc, j0, 0), *v1 = rt_tri_vert(sc, j0, 1),
+                 *v2 = rt_tri_vert(sc, j0, 2);
+    double n[3];
+    n[0] = (v1[1] - v0[1]) * (v2[2] - v0[2]) - (v1[2] - v0[2]) * (v2[1] - v0[1]);
+    n[1] = (v1[2] - v0[2]) * (v2[0] - v0[0]) - (v1[0] - v0[0]) * (v2[2] - v0[2]);
+    n[2] = (v1[0] - v0[0]) * (v2[1] - v0[1]) - (v1[1] - v0[1]) * (v2[0] - v0[0]);
+    const double ln = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(ln > 0.0))
+        return 0;
+    for (int i = 0; i < 3; i++)
+        n[i] /= ln;
+    /* the slab over the first few references' vertices first: most sub-grids of curved
+       surfaces are left here, before the per-triangle marks (seen) are touched */
+    double lo = INFINITY, hi = -INFINITY;
+    for (uint32_t r = a; r < b && r < a + 16; r++) {
+        const uint32_t j = rt_sub_ref(g, sg, r);
+        if (j >= sc->ntri)
+            return 0;
+        for (int q = 0; q < 3; q++) {
+            const double *v = rt_tri_vert(sc, j, q);
+            const double d = n[0] * v[0] + n[1] * v[1] + n[2] * v[2];
+            lo = RT_FMIN(lo, d);
+            hi = RT_FMAX(hi, d);
+        }
+        if (!(hi - lo <= tol))
+            return 0;
+    }
+    if (!*seen && !(*seen = rt_calloc_array(sc->ntri, sizeof **seen)))
+        return -1;
+    uint32_t *const mk = *seen;
+    /* per distinct triangle: the slab of n . v over its vertices (left as soon as it is
+       thicker than tol), and from its edges e1, e2 and cross product N (max norms; |N| taken
+       less the cross product's rounding, 48 u |e1| |e2|) the largest (|e1| + |e2|) / |N| and
+       1 / |N| */
+    double qmax = 0.0, rmax = 0.0;
+    for (uint32_t r = a; r < b; r++) {
+        const uint32_t j = rt_sub_ref(g, sg, r);
+        if (j >= sc->ntri)
+            return 0;
+        if (mk[j] == mark)
+            continue;
+        mk[j] = mark;
+        const double *w0 = rt_tri_vert(sc, j, 0), *w1 = rt_tri_vert(sc, j, 1),
+                     *w2 = rt_tri_vert(sc, j, 2);
+        const double d0 = n[0] * w0[0] + n[1] * w0[1] + n[2] * w0[2],
+                     d1 = n[0] * w1[0] + n[1] * w1[1] + n[2] * w1[2],
+                     d2 = n[0] * w2[0] + n[1] * w2[1] + n[2] * w2[2];
+        lo = RT_FMIN(lo, RT_FMIN(d0, RT_FMIN(d1, d2)));
+        hi = RT_FMAX(hi, RT_FMAX(d0, RT_FMAX(d1, d2)));
+        if (!(hi - lo <= tol))
+            return 0;
+        double e1[3], e2[3], N[3];
+        for (int i = 0; i < 3; i++) {
+            e1[i] = w1[i] - w0[i];
+            e2[i] = w2[i] - w0[i];
+        }
+        N[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        N[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        N[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        const double m1 = RT_FMAX(fabs(e1[0]), RT_FMAX(fabs(e1[1]), fabs(e1[2]))),
+                     m2 = RT_FMAX(fabs(e2[0]), RT_FMAX(fabs(e2[1]), fabs(e2[2])));
+        const double low = RT_FMAX(fabs(N[0]), RT_FMAX(fabs(N[1]), fabs(N[2]))) -
+                           48.0 * u * m1 * m2;
+        if (!(low > 0.0))
+            return 0;
+        qmax = RT_FMAX(qmax, 1.7320508075688772 * (m1 + m2) / low);
+        rmax = RT_FMAX(rmax, 1.0 / low);
+    }
+    /* |n| <= 1 + 4 u; n . v rounds by at most 3.01 u |n|_1 S <= 6 u S; the exact n . e of
+       an edge is then at most (hi - lo) + 12 u S, and sin(n, N) <= |n . e1| |e2| +
+       |n . e2| |e1| over |N| */
+    pl->n[0] = n[0];
+    pl->n[1] = n[1];
+    pl->n[2] = n[2];
+    pl->lo = lo - 8.0 * u * S;
+    pl->hi = hi + 8.0 * u * S;
+    pl->ka = 4.0 * 1.7320508075688772 * (hi - lo + 12.0 * u * S) * qmax * 1.001;
+    pl->kb = RT_FLAT_K1 * u * rmax * 1.001;
+    return isfinite(pl->ka) && isfinite(pl->kb) && isfinite(pl->lo) && isfinite(pl->hi);
+}
+
+/* rt_grid.subplane and splanes, for the sub-grids of a scene of mesh triangles only */
+static int rt_sub_planes(const rt_scene *sc, rt_grid *g)
+{
+    if (sc->ntri_plain != 0 || sc->ntri != sc->nprim || !g->nsubs || g->nsubs >= UINT32_MAX)
+        return RT_OK;
+    uint32_t *of = rt_calloc_array(g->nsubs, sizeof *of), *seen = NULL;
+    rt_subplane *pl = NULL;
+    size_t np = 0, cap = 0;
+    int rc = of ? RT_OK : RT_ERR_NOMEM;
+    for (size_t k = 0; k < g->nsubs && rc == RT_OK; k++) {
+        rt_subplane p;
+        const int f = rt_sub_plane(sc, g, k, &seen, &p);
+        if (f < 0)
+            rc = RT_ERR_NOMEM;
+        if (f <= 0)
+            continue;
+        if (!rt_grow((void **)&pl, &cap, np + 1, sizeof *pl)) {
+            rc = RT_ERR_NOMEM;
+            break;
+        }
+        pl[np++] = p;
+        of[k] = (uint32_t)np;
+    }
+    free(seen);
+    if (rc != RT_OK || !np) {
+        free(of);
+        free(pl);
+        return rc;
+    }
+    g->subplane = of;
+    g->splanes = pl;
+    g->nsplanes = np;
+    return RT_OK;
+}
+
 int rt_grid_build(rt_scene *sc, const rt_build_options *o)
 {
     int thr = o && o->brute_threshold >= 0 ? o->brute_threshold : RT_BRUTE_THRESHOLD_DEFAULT;
@@ -3105,6 +3252,8 @@ int rt_grid_build(rt_scene *sc, const rt_build_options *o)
         rc = rt_leaves_build(sc, g, o ? o->leaf_min : 0);
     if (rc == RT_OK)
         rt_sub_local_end(g);
+    if (rc == RT_OK)
+        rc = rt_sub_planes(sc, g);
     for (int k = 0; k < nt; k++)
         rt_build_free(&bs[k]);
     if (rc != RT_OK) {
@@ -3201,6 +3350,7 @@ int rt_scene_grid_info(const rt_scene *sc, rt_grid_info *gi)
     gi->cells = g->ncells;
     gi->refs = g->nrefs;
     gi->subgrids = g->nsubs;
+    gi->flat_subgrids = g->nsplanes;
     gi->subcells = g->nsubcells;
     gi->subrefs = g->nsrefs;
     double filled = 0.0;

@@ -314,7 +314,23 @@ typedef struct rt_grid {
     float *lf; uint32_t *lid; size_t nlanes;
     rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) ... */
     const char *leaf_name;        /* ... and the name of leaf_fn */
+    /* flat sub-grids (rt_build.c, rt_sub_planes; any-hit rays of mesh-only scenes): per
+       sub-grid 1 + the index of its plane in splanes, 0: none; NULL: no sub-grid is flat */
+    uint32_t *subplane;
+    struct rt_subplane *splanes; size_t nsplanes;
 } rt_grid;
+
+/* The plane of a flat sub-grid: every vertex v of every triangle it references has
+   lo <= n . v <= hi (as computed, rounded outwards). A segment o + t d, t in [tmin, tmax],
+   whose ends p0, p1 both have n . p > hi + m or both n . p < lo - m, with the margin
+   m = ka S + kb S^3 + 16 u S' (S >= |coordinate| of the scene's vertices and of o, S' >= S
+   and those of p0 and p1, u = 2^-53), crosses none of its triangles for the watertight test
+   (docs/RAYTRACING.md, "Flat sub-grids"). */
+typedef struct rt_subplane {
+    double n[3];
+    double lo, hi;
+    double ka, kb;
+} rt_subplane;
 
 /* the first reference (in srefs) of cell c of sub-grid k, c = 0 .. its cells (the last: the
    end of its last cell), in either layout of the second level */

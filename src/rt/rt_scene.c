@@ -1775,7 +1775,10 @@ int rt_scene_commit(rt_scene *sc, const rt_build_options *opts)
                                         sc->grid.nsubs * sizeof(rt_subgrid) +
                                         (sc->grid.sub ? sc->grid.ncells * sizeof(int32_t) : 0) +
                                         (sc->grid.odist ? 8 * sc->grid.ncells * sizeof(uint8_t) : 0) +
-                                        rt_leaves_bytes(&sc->grid)
+                                        rt_leaves_bytes(&sc->grid) +
+                                        (sc->grid.subplane ? sc->grid.nsubs * sizeof(uint32_t) +
+                                                                 sc->grid.nsplanes * sizeof(rt_subplane)
+                                                           : 0)
                                   : 0;
     sc->memory_bytes = sizeof *sc + (sc->nprim - nmt) * sizeof *sc->prim + cmesh_bytes +
                        sc->ntri_plain * sizeof *sc->tri + nmt * 3 * sizeof(uint32_t) +

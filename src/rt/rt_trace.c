@@ -37,6 +37,7 @@
 
 #define RT_RAY_MAX 1e100
 #define RT_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define RT_MAX(a, b) ((a) > (b) ? (a) : (b))
 
 static inline double rt_max3(double a, double b, double c)
 {
@@ -918,11 +919,58 @@ struct rt_walkstate {
     uint32_t vnmask; /* RT_ANY_MESH walks: ~rt_scene.vmask, read from memory by the lists so
                         that BMI's andn masks an index word in one instruction (no copy of
                         the mask per vertex) */
+    /* RT_ANY_MESH walks of a grid with flat sub-grids (rt_grid.subplane, else NULL): the
+       segment's ends p0, p1, and S, S^3 and the ends' rounding pe of the planes' margin
+       (rt_subplane) */
+    const uint32_t *spl;
+    const rt_subplane *spp;
+    double p0[3], p1[3], S, S3, pe;
     double best;
     long bi;
     double ebest; /* the best hit's error bound (rt_nearest_update) */
     double T;
 };
+
+/* an RT_ANY_MESH walk's data for the flat sub-grids' test (rt_sub_flat): none when the
+   grid has no flat sub-grid */
+RT_INLINE void rt_walk_flat_init(rt_walkstate *w, const rt_scene *sc, const rt_rayx *r)
+{
+    w->spl = sc->grid.subplane;
+    if (!w->spl)
+        return;
+    w->spp = sc->grid.splanes;
+    double S = sc->scale, Sp;
+    for (int k = 0; k < 3; k++)
+        S = RT_MAX(S, fabs(r->o[k]));
+    Sp = S;
+    for (int k = 0; k < 3; k++) {
+        w->p0[k] = r->o[k] + r->tmin * r->d[k];
+        w->p1[k] = r->o[k] + r->tmax * r->d[k];
+        Sp = RT_MAX(Sp, RT_MAX(fabs(w->p0[k]), fabs(w->p1[k])));
+    }
+    /* S: the vertices and the origin, Sp: the segment's ends too (they bound the exact
+       ends: those differ from the computed ones by a rounding, 0x1p-40 is far more); S^3
+       rounded up likewise; inf (or NaN) skips nothing */
+    w->S = S * (1.0 + 0x1p-40);
+    w->S3 = w->S * w->S * w->S * (1.0 + 0x1p-40);
+    w->pe = 16.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
+}
+
+/* 1 when the ray's segment [tmin, tmax] lies beyond plane j - 1 of rt_grid.splanes (a flat
+   sub-grid's) by its margin on one side: none of the sub-grid's triangles can be hit
+   (rt_subplane), so its walk is not needed (the walk would only mark its triangles in the
+   mailbox: a later test of one of them misses as well). A segment with an infinite end has
+   an infinite or NaN margin and skips nothing. Out of line: inlined in the top walks it took
+   registers from them (bunny and armadillo shadow rays, without flat sub-grids, +1.9 %) */
+static __attribute__((noinline)) int rt_sub_flat(const rt_walkstate *w, uint32_t j)
+{
+    const rt_subplane *p = &w->spp[j - 1];
+    const double s0 = p->n[0] * w->p0[0] + p->n[1] * w->p0[1] + p->n[2] * w->p0[2];
+    const double s1 = p->n[0] * w->p1[0] + p->n[1] * w->p1[1] + p->n[2] * w->p1[2];
+    const double m = p->ka * w->S + p->kb * w->S3 + w->pe;
+    const double hi = p->hi + m, lo = p->lo - m;
+    return (s0 > hi && s1 > hi) | (s0 < lo && s1 < lo);
+}
 
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
@@ -1370,7 +1418,9 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             } else if (!sub) /* an empty second-level cell: no test, the best hit unchanged */
                 goto advance;
         }
-        if (sub && (dist ? (kind & RT_CUBE_SUB) != 0 : sub[ci] >= 0)) {
+        if (sub && (dist ? (kind & RT_CUBE_SUB) != 0 : sub[ci] >= 0) &&
+            !(mode >= RT_MODE_ANYTOP && __builtin_expect(w->spl != NULL, 0) &&
+              w->spl[sub[ci]] && rt_sub_flat(w, w->spl[sub[ci]]))) {
             /* the sub-grid's box clip here: a third of the rays that cross a crowded top
                cell miss its sub-grid's box, and then need no call */
             const rt_subgrid *sg = &subs[sub[ci]];
@@ -1620,6 +1670,7 @@ RT_INLINE double rt_transmit_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *
     w.stamp = rt_ctx_next(c);
     if (w.any_hit == RT_ANY_MESH) {
         w.vnmask = ~sc->vmask;
+        rt_walk_flat_init(&w, sc, r);
         return rt_transmit_top[rt_list_order(r)](&w, t0, t1) ? 0.0 : w.T;
     }
     if (rt_walk_box(&w, 1, &g->b, g->off, NULL, g->refs, NULL, NULL, g->tleaf, g->sub, g->subs,
@@ -1928,6 +1979,7 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
                     rt_pre_ray(&r, &w.gr, &p, j, rays + k + j);
                     rt_walkstate_init(&w, sc, c, &r, RT_ANY_MESH);
                     w.vnmask = ~sc->vmask;
+                    rt_walk_flat_init(&w, sc, &r);
                     w.stamp = rt_ctx_next(c);
                     o = (unsigned char)rt_occ_top[rt_list_order(&r)](&w, &tg, &p, j);
                 } else if (p.state[j] == 0)

@@ -366,6 +366,119 @@ static void test_occluded_mesh_only(void **state)
     rt_scene_free(b);
 }
 
+/* A tilted plane as one mesh (scales 1 and 1000, the latter moved off the origin): its
+ * sub-grids are flat (rt_grid_info.flat_subgrids), and rt_occluded skips the walk of one where
+ * the ray's segment stays beyond its plane (rt_subplane). Against the scene without a grid:
+ * shadow rays from points just above the plane to lights above it (never blocked), rays that
+ * end exactly at their nearest hit (tmax its t, from above and from below: always blocked,
+ * the end lying on the plane within the test's roundings, which a margin too small would
+ * put beyond the plane's slab), ending just short of it, and crossing it; in batches and one
+ * ray a call. */
+static void test_occluded_flat(void **state)
+{
+    (void)state;
+    enum { F = 48, M = 600, NL = 5 };
+    static double v[F * F * 3];
+    static uint32_t ix[(F - 1) * (F - 1) * 6];
+    static rt_ray down[M], rays[4][M];
+    static rt_hit hit[M];
+    static unsigned char og[M], ob[M];
+    static const double light[NL][3] = {{0.3, 0.2, 3}, {-2, 0.5, 1.5}, {0.4, -2, 1.2},
+                                        {1.5, 1.9, 1.4}, {-0.1, 0.2, 9}};
+    for (int sc = 0; sc < 2; sc++) {
+        const double s = sc ? 1000.0 : 1.0, off = sc ? 3217.0 : 0.0;
+        for (int j = 0; j < F; j++)
+            for (int i = 0; i < F; i++) {
+                double *p = v + 3 * (j * F + i);
+                p[0] = s * (-1 + 2.0 * i / (F - 1)) + off;
+                p[1] = s * (-1 + 2.0 * j / (F - 1)) - 0.5 * off;
+                p[2] = 0.37 * p[0] - 0.21 * p[1] + 0.1 * s;
+            }
+        for (int j = 0; j + 1 < F; j++)
+            for (int i = 0; i + 1 < F; i++) {
+                uint32_t k = (uint32_t)(j * F + i), *t = ix + 6 * (j * (F - 1) + i);
+                t[0] = k, t[1] = k + 1, t[2] = k + F + 1, t[3] = k, t[4] = k + F + 1, t[5] = k + F;
+            }
+        /* a coarse top level, so that its cells have second-level grids */
+        int sf;
+        rt_scene *g = rtu_scene_one_surface(&sf),
+                 *b = one_mesh(F * F, v, (F - 1) * (F - 1) * 2, ix, 1);
+        assert_non_null(g);
+        assert_int_equal(rt_scene_add_mesh(g, F * F, v, NULL, NULL, (F - 1) * (F - 1) * 2, ix, sf, sf), 0);
+        rt_build_options bo;
+        memset(&bo, 0, sizeof bo);
+        bo.brute_threshold = -1;
+        bo.grid_res[0] = bo.grid_res[1] = bo.grid_res[2] = 4;
+        bo.sub_min = 8;
+        assert_int_equal(rt_scene_commit(g, &bo), RT_OK);
+        rt_grid_info gi;
+        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+        assert_true(gi.flat_subgrids > 0);
+        uint64_t st = 0x9E3779B97F4A7C15ull;
+        for (int k = 0; k < M; k++) { /* from above to points of the plane */
+            double q[3];
+            for (int a = 0; a < 3; a++) {
+                st = st * 6364136223846793005ull + 1442695040888963407ull;
+                q[a] = (double)(st >> 11) * 0x1p-53 * 1.8 - 0.9;
+            }
+            const double x = s * q[0] + off, y = s * q[1] - 0.5 * off,
+                         z = 0.37 * x - 0.21 * y + 0.1 * s;
+            const double h = (k % 2 ? 1.0 : -1.0) * s * (0.5 + fabs(q[2])); /* above, below */
+            down[k] = (rt_ray){.org = {x + 0.3 * h * q[2], y - 0.2 * h, z + h},
+                               .dir = {-0.3 * h * q[2], 0.2 * h, -h},
+                               .tmin = 0,
+                               .tmax = INFINITY};
+            down[k].org[0] += 0.01 * s * q[1]; /* not quite at the aimed point: any slope */
+        }
+        assert_int_equal(rt_intersect(g, M, down, hit), RT_OK);
+        size_t n = 0;
+        for (int k = 0; k < M; k++) {
+            if (hit[k].prim < 0)
+                continue;
+            rays[0][n] = down[k]; /* ending exactly at the hit */
+            rays[0][n].tmax = hit[k].t;
+            rays[1][n] = down[k]; /* ending just short of it */
+            rays[1][n].tmax = hit[k].t * (1 - 1e-9);
+            rays[2][n] = down[k]; /* through it */
+            rays[2][n].tmax = 2 * hit[k].t;
+            const double *L = light[k % NL];
+            rt_ray *r = &rays[3][n]; /* from just above the plane to a light above it */
+            for (int a = 0; a < 3; a++) {
+                const double la = s * L[a] + (a == 0 ? off : a == 1 ? -0.5 * off : 0.0);
+                r->org[a] = hit[k].p[a];
+                r->dir[a] = la - hit[k].p[a];
+            }
+            r->org[2] += (0.37 * r->dir[0] - 0.21 * r->dir[1] < r->dir[2] ? 1e-6 : -1e-6) * s;
+            for (int a = 0; a < 3; a++)
+                r->dir[a] = (s * L[a] + (a == 0 ? off : a == 1 ? -0.5 * off : 0.0)) - r->org[a];
+            r->tmin = 0;
+            r->tmax = 1 - 1e-6;
+            n++;
+        }
+        assert_true(n > M / 2);
+        for (int l = 0; l < 4; l++) {
+            rtc_traps_on();
+            assert_int_equal(rt_occluded(g, n, rays[l], og), RT_OK);
+            assert_int_equal(rt_occluded(b, n, rays[l], ob), RT_OK);
+            rtc_traps_off();
+            size_t blocked = 0;
+            for (size_t k = 0; k < n; k++) {
+                assert_int_equal(og[k], ob[k]);
+                blocked += ob[k];
+                unsigned char o1 = 2;
+                assert_int_equal(rt_occluded(g, 1, rays[l] + k, &o1), RT_OK);
+                assert_int_equal(o1, ob[k]);
+            }
+            if (l == 0 || l == 2)
+                assert_int_equal(blocked, n);
+            if (l == 3)
+                assert_int_equal(blocked, 0);
+        }
+        rt_scene_free(g);
+        rt_scene_free(b);
+    }
+}
+
 /* Rays of every axis order of the shear (each axis the largest component, either sign) at
  * points of the field's box from 3 units away, in batches (the four-ray set-up, whose lanes
  * take the nearest-hit lists of mesh triangles on a CPU with AVX2): the same answers with the
@@ -690,6 +803,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_occluded_mesh_only),
+        cmocka_unit_test(test_occluded_flat),
         cmocka_unit_test(test_intersect_mesh_only),
         cmocka_unit_test(test_same_picture),
         cmocka_unit_test(test_same_picture_culled),
