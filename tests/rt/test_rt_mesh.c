@@ -372,8 +372,8 @@ static void test_occluded_mesh_only(void **state)
  * shadow rays from points just above the plane to lights above it (never blocked), rays that
  * end exactly at their nearest hit (tmax its t, from above and from below: always blocked,
  * the end lying on the plane within the test's roundings, which a margin too small would
- * put beyond the plane's slab), ending just short of it, and crossing it; in batches and one
- * ray a call. */
+ * put beyond the plane's slab), ending just short of it, and crossing it; in batches, as
+ * packets and one ray a call. */
 static void test_occluded_flat(void **state)
 {
     (void)state;
@@ -465,6 +465,13 @@ static void test_occluded_flat(void **state)
             for (size_t k = 0; k < n; k++) {
                 assert_int_equal(og[k], ob[k]);
                 blocked += ob[k];
+            }
+            /* the packet path (its rays given up are traced singly, with the same walks) */
+            rtc_traps_on();
+            assert_int_equal(rt_occluded_packet(g, n, rays[l], og), RT_OK);
+            rtc_traps_off();
+            for (size_t k = 0; k < n; k++) {
+                assert_int_equal(og[k], ob[k]);
                 unsigned char o1 = 2;
                 assert_int_equal(rt_occluded(g, 1, rays[l] + k, &o1), RT_OK);
                 assert_int_equal(o1, ob[k]);
