@@ -1187,8 +1187,8 @@ static __attribute__((noinline)) void rt_pk_test(rt_pk *p, rt_pk_cull_fn cull, u
 
 /* primitive i for the rays of p->cand (an any-hit packet's: p->live) that have not tested
    it in this packet (the small mailbox with the rays each entry was tested for; an entry
-   taken by another primitive only repeats tests, which give the same hits). Inline: most visits are repeats (64 % of
-   bunny's primary ones), which end here without a call. */
+   taken by another primitive only repeats tests, which give the same hits). Inline: most
+   visits are repeats (64 % of bunny's primary ones), which end here without a call. */
 static inline void rt_pk_prim(rt_pk *p, rt_pk_cull_fn cull, uint32_t i)
 {
     const uint64_t key = p->key | i;
@@ -1595,6 +1595,8 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
     /* or 2-byte references into the sub-grid's table of primitives */
     const uint16_t *r16 = g->sref16 ? g->sref16 + sg->ref0 : NULL;
     const uint32_t *loc = g->sref16 ? g->sloc + sg->loc0 : NULL;
+    /* a cell's index (rt_cell_index) in steps along each axis */
+    const size_t st[3] = {1, (size_t)b->n[0], (size_t)b->n[0] * (size_t)b->n[1]};
     for (int j = 0; j < nK; j++) {
         const int s = p->sg > 0 ? j : nK - 1 - j;
         const double za = rt_pk_plane(b, K, s), zb = rt_pk_plane(b, K, s + 1);
@@ -1612,11 +1614,30 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
         rt_pk_rect(p, b, za, zb, c);
         if ((c[1] - c[0] + 1) * (c[3] - c[2] + 1) > RT_PK_MAXS)
             return 0;
-        int q[3];
-        q[K] = s;
-        for (q[p->a2] = c[2]; q[p->a2] <= c[3]; q[p->a2]++)
-            for (q[p->a1] = c[0]; q[p->a1] <= c[1]; q[p->a1]++) {
-                const size_t ci = rt_cell_index(b, q);
+        /* the rectangle by rows along the inner axis ia: along the grid's x axis (a1, or
+           a2 for an any-hit packet, whose answers do not depend on the order of its tests)
+           a row's cells are consecutive and their lists lie one after another, read as one
+           list (the same primitives in the same order as cell by cell, without the loop's
+           branches per cell: most of the cells met are empty) */
+        const int swap = p->any && p->a2 == 0;
+        const int ia = swap ? p->a2 : p->a1, oa = swap ? p->a1 : p->a2;
+        const int ilo = c[2 * swap], ihi = c[2 * swap + 1];
+        const int olo = c[2 - 2 * swap], ohi = c[3 - 2 * swap];
+        const size_t si = st[ia], so = st[oa];
+        size_t row = (size_t)s * st[K] + (size_t)olo * so + (size_t)ilo * si;
+        for (int o = olo; o <= ohi; o++, row += so) {
+            if (ia == 0) { /* the row as one list */
+                const size_t e = row + (size_t)(ihi - ilo + 1);
+                const uint32_t k0 = off16 ? off16[row] : off[row], k1 = off16 ? off16[e] : off[e];
+                if (r16)
+                    for (uint32_t k = k0; k < k1; k++)
+                        rt_pk_prim(p, cull, loc[r16[k]]);
+                else
+                    rt_pk_list(p, cull, srefs + k0, k1 - k0);
+                continue;
+            }
+            size_t ci = row;
+            for (int i = ilo; i <= ihi; i++, ci += si) {
                 const uint32_t k0 = off16 ? off16[ci] : off[ci],
                                k1 = off16 ? off16[ci + 1] : off[ci + 1];
                 if (r16)
@@ -1625,6 +1646,7 @@ static int rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_
                 else
                     rt_pk_list(p, cull, srefs + k0, k1 - k0);
             }
+        }
     }
     return 1;
 }
