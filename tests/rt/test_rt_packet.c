@@ -495,6 +495,54 @@ static void test_spread_top(void **state)
     rt_scene_free(sc);
 }
 
+/* an any-hit packet tests a primitive for all its rays still walking, those that start
+   beyond it too: 64 shadow rays toward a light above, from points at 8 heights over a finely
+   tessellated sphere (second-level grids), under a square at a height between them. The rays
+   that start below the square are occluded, those above it are not (the square lies behind
+   their origins, where the packet tests it for them too); one packet is traced and answers
+   as rt_occluded does, with both kinds of rays in it */
+static void test_shadow_depths(void **state)
+{
+    (void)state;
+    int si;
+    rt_scene *sc = rtu_scene_one_surface(&si);
+    assert_non_null(sc);
+    const double c[3] = {0, 0, 0}, light[3] = {0.4, 0.45, 40.0};
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 256, 128, si), 0);
+    /* the square at z = 1.04 over the patch, and a triangle far aside at z = 1.2 that
+       takes the grid box above the rays' origins */
+    const double v[7 * 3] = {0.2,  0.2,  1.04, 0.5,  0.2,  1.04, 0.5, 0.5, 1.04, 0.2, 0.5, 1.04,
+                             -0.9, -0.9, 1.2,  -0.8, -0.9, 1.2,  -0.9, -0.8, 1.2};
+    const uint32_t idx[3 * 3] = {0, 1, 2, 0, 2, 3, 4, 5, 6};
+    assert_true(rt_scene_add_mesh(sc, 7, v, NULL, NULL, 3, idx, si, si) >= 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    double org[RT_PACKET][3];
+    for (int k = 0; k < RT_PACKET; k++) { /* row k / 8 at 1.005 + 0.01 (k / 8): 4 below */
+        org[k][0] = 0.3 + 0.002 * (k % 8);
+        org[k][1] = 0.3 + 0.002 * (k / 8);
+        org[k][2] = 1.005 + 0.01 * (k / 8);
+    }
+    rt_ray rays[RT_PACKET];
+    unsigned char o[RT_PACKET];
+    for (int k = 0; k < RT_PACKET; k++) {
+        for (int i = 0; i < 3; i++) {
+            rays[k].org[i] = org[k][i];
+            rays[k].dir[i] = light[i] - org[k][i];
+        }
+        rays[k].tmin = 0.0;
+        rays[k].tmax = 1.0;
+    }
+    assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o), RT_OK);
+    int n = 0;
+    for (int k = 0; k < RT_PACKET; k++) {
+        assert_int_equal(o[k], k / 8 < 4); /* under the square: occluded */
+        n += o[k];
+    }
+    assert_int_equal(n, 32);
+    check_shadow_patch(sc, light, org, 0, "shadow_depths");
+    rt_scene_free(sc);
+}
+
 /* the renderer's eye rays in packets (rt_render.c: one-ray modes without candidate lists,
    i.e. more than 16 candidates per ray on average): the same picture, bit for bit, as every
    eye ray alone (GKS_RT_PACKETS=0), with corner rays and pixel-centre rays, and the packet
@@ -564,6 +612,7 @@ int main(void)
         cmocka_unit_test(test_incoherent),
         cmocka_unit_test(test_spread),
         cmocka_unit_test(test_spread_top),
+        cmocka_unit_test(test_shadow_depths),
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_render),
         cmocka_unit_test(test_meshes),
