@@ -3076,11 +3076,13 @@ static inline uint32_t rt_sub_ref(const rt_grid *g, const rt_subgrid *sg, uint32
 /* Sub-grid k's plane (rt_subplane) if its triangles lie within RT_FLAT_TOL of the scene's
    scale of one plane: 1, else 0, -1 when out of memory. *seen: per triangle the last
    sub-grid (1 + k) that looked at it, so that a triangle in several of the sub-grid's cells
-   is looked at once (allocated at the first use). The margin's constants (RT_FLAT_K1 the
-   bound of the watertight test's distance from its plane, in u S^3): docs/RAYTRACING.md,
-   "Flat sub-grids". */
+   is looked at once (allocated at the first use; a flat fandisk sub-grid references each
+   triangle about 6 times, so a test per reference mispredicted at first references). The
+   margin's constants (RT_FLAT_K1 the bound of the watertight test's distance from its
+   plane, in u S^3): docs/RAYTRACING.md, "Flat sub-grids". */
 #define RT_FLAT_TOL 0x1p-30
 #define RT_FLAT_K1 16384.0
+#define RT_FLAT_CHUNK 64u
 /* min and max as one instruction each (no libm call; a NaN coordinate makes the
    triangle's |N| NaN, and then the sub-grid keeps no plane) */
 #define RT_FMIN(a, b) ((a) < (b) ? (a) : (b))
@@ -3125,45 +3127,54 @@ static int rt_sub_plane(const rt_scene *sc, const rt_grid *g, size_t k, uint32_t
     }
     if (!*seen && !(*seen = rt_calloc_array(sc->ntri, sizeof **seen)))
         return -1;
-    uint32_t *const mk = *seen;
-    /* per distinct triangle: the slab of n . v over its vertices (left as soon as it is
-       thicker than tol), and from its edges e1, e2 and cross product N (max norms; |N| taken
-       less the cross product's rounding, 48 u |e1| |e2|) the largest (|e1| + |e2|) / |N| and
-       1 / |N| */
-    double qmax = 0.0, rmax = 0.0;
-    for (uint32_t r = a; r < b; r++) {
-        const uint32_t j = rt_sub_ref(g, sg, r);
-        if (j >= sc->ntri)
-            return 0;
-        if (mk[j] == mark)
-            continue;
-        mk[j] = mark;
-        const double *w0 = rt_tri_vert(sc, j, 0), *w1 = rt_tri_vert(sc, j, 1),
-                     *w2 = rt_tri_vert(sc, j, 2);
-        const double d0 = n[0] * w0[0] + n[1] * w0[1] + n[2] * w0[2],
-                     d1 = n[0] * w1[0] + n[1] * w1[1] + n[2] * w1[2],
-                     d2 = n[0] * w2[0] + n[1] * w2[1] + n[2] * w2[2];
-        lo = RT_FMIN(lo, RT_FMIN(d0, RT_FMIN(d1, d2)));
-        hi = RT_FMAX(hi, RT_FMAX(d0, RT_FMAX(d1, d2)));
-        if (!(hi - lo <= tol))
-            return 0;
-        double e1[3], e2[3], N[3];
-        for (int i = 0; i < 3; i++) {
-            e1[i] = w1[i] - w0[i];
-            e2[i] = w2[i] - w0[i];
+    /* per distinct triangle, in chunks of RT_FLAT_CHUNK references (those of a chunk not
+       seen before gathered without a branch per reference; a curved sub-grid is left in
+       its first chunks): the slab of n . v over its vertices (left as soon as it is thicker
+       than tol), and from its edges e1, e2 and cross product N (max norms; |N| taken less
+       the cross product's rounding, 48 u |e1| |e2|) the largest (|e1| + |e2|) / |N| and the
+       least such |N| (1 / that is the largest 1 / |N|: a correctly rounded division is
+       monotonic). A scene of mesh triangles only: every reference is a mesh triangle. */
+    uint32_t *const mk = *seen, ds[RT_FLAT_CHUNK];
+    double qmax = 0.0, lmin = INFINITY;
+    for (uint32_t r0 = a; r0 < b; r0 += RT_FLAT_CHUNK) {
+        const uint32_t r1 = b - r0 < RT_FLAT_CHUNK ? b : r0 + RT_FLAT_CHUNK;
+        uint32_t nd = 0;
+        for (uint32_t r = r0; r < r1; r++) {
+            const uint32_t j = rt_sub_ref(g, sg, r);
+            ds[nd] = j;
+            nd += mk[j] != mark;
+            mk[j] = mark;
         }
-        N[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        N[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        N[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        const double m1 = RT_FMAX(fabs(e1[0]), RT_FMAX(fabs(e1[1]), fabs(e1[2]))),
-                     m2 = RT_FMAX(fabs(e2[0]), RT_FMAX(fabs(e2[1]), fabs(e2[2])));
-        const double low = RT_FMAX(fabs(N[0]), RT_FMAX(fabs(N[1]), fabs(N[2]))) -
-                           48.0 * u * m1 * m2;
-        if (!(low > 0.0))
-            return 0;
-        qmax = RT_FMAX(qmax, 1.7320508075688772 * (m1 + m2) / low);
-        rmax = RT_FMAX(rmax, 1.0 / low);
+        for (uint32_t t = 0; t < nd; t++) {
+            const double *w[3];
+            rt_tri_verts(sc, ds[t], w);
+            const double *w0 = w[0], *w1 = w[1], *w2 = w[2];
+            const double d0 = n[0] * w0[0] + n[1] * w0[1] + n[2] * w0[2],
+                         d1 = n[0] * w1[0] + n[1] * w1[1] + n[2] * w1[2],
+                         d2 = n[0] * w2[0] + n[1] * w2[1] + n[2] * w2[2];
+            lo = RT_FMIN(lo, RT_FMIN(d0, RT_FMIN(d1, d2)));
+            hi = RT_FMAX(hi, RT_FMAX(d0, RT_FMAX(d1, d2)));
+            if (!(hi - lo <= tol))
+                return 0;
+            double e1[3], e2[3], N[3];
+            for (int i = 0; i < 3; i++) {
+                e1[i] = w1[i] - w0[i];
+                e2[i] = w2[i] - w0[i];
+            }
+            N[0] = e1[1] * e2[2] - e1[2] * e2[1];
+            N[1] = e1[2] * e2[0] - e1[0] * e2[2];
+            N[2] = e1[0] * e2[1] - e1[1] * e2[0];
+            const double m1 = RT_FMAX(fabs(e1[0]), RT_FMAX(fabs(e1[1]), fabs(e1[2]))),
+                         m2 = RT_FMAX(fabs(e2[0]), RT_FMAX(fabs(e2[1]), fabs(e2[2])));
+            const double low = RT_FMAX(fabs(N[0]), RT_FMAX(fabs(N[1]), fabs(N[2]))) -
+                               48.0 * u * m1 * m2;
+            if (!(low > 0.0))
+                return 0;
+            qmax = RT_FMAX(qmax, 1.7320508075688772 * (m1 + m2) / low);
+            lmin = RT_FMIN(lmin, low);
+        }
     }
+    const double rmax = 1.0 / lmin;
     /* |n| <= 1 + 4 u; n . v rounds by at most 3.01 u |n|_1 S <= 6 u S; the exact n . e of
        an edge is then at most (hi - lo) + 12 u S, and sin(n, N) <= |n . e1| |e2| +
        |n . e2| |e1| over |N| */
