@@ -3220,6 +3220,7 @@ static int rt_sub_planes(const rt_scene *sc, rt_grid *g)
     g->subplane = of;
     g->splanes = pl;
     g->nsplanes = np;
+    g->subplane_near = sc->nmesh == 1 ? of : NULL;
     return RT_OK;
 }
 

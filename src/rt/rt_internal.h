@@ -314,10 +314,15 @@ typedef struct rt_grid {
     float *lf; uint32_t *lid; size_t nlanes;
     rt_leaf_fn leaf_fn, leaf_fn4; /* the kernels chosen for this CPU (rt_leaf_kernel) ... */
     const char *leaf_name;        /* ... and the name of leaf_fn */
-    /* flat sub-grids (rt_build.c, rt_sub_planes; any-hit rays of mesh-only scenes): per
+    /* flat sub-grids (rt_build.c, rt_sub_planes; any-hit rays of mesh-only scenes, nearest-hit
+       rays of one-mesh scenes through subplane_near): per
        sub-grid 1 + the index of its plane in splanes, 0: none; NULL: no sub-grid is flat */
     uint32_t *subplane;
     struct rt_subplane *splanes; size_t nsplanes;
+    /* subplane where the nearest-hit walks skip flat sub-grids too, else NULL (a scene of
+       one mesh: its hits are ordered by distance, then by the given order, so the answer
+       does not depend on the order of the tests; docs/RAYTRACING.md, "Flat sub-grids") */
+    const uint32_t *subplane_near;
 } rt_grid;
 
 /* The plane of a flat sub-grid: every vertex v of every triangle it references has

@@ -972,6 +972,38 @@ static __attribute__((noinline)) int rt_sub_flat(const rt_walkstate *w, uint32_t
     return (s0 > hi && s1 > hi) | (s0 < lo && s1 < lo);
 }
 
+/* 1 when a nearest-hit walk need not walk the flat sub-grid of plane j - 1 over [t0, t1]
+   (its range in the top cell, clipped to the sub-grid's box and to the best hit's window):
+   the origin lies within 64 times the scene's scale S0 and the ray is not grazing the
+   plane (|n . d| at least 2^-9 plus k_a of sqrt(3) max |d[k]|), so that a hit's error
+   along the ray stays below the cells' enlargement, and both ends of [t0, t1] lie beyond
+   the slab by the margin on one side, the ends' rounding term doubled (32 u S'). No
+   triangle of the sub-grid then has a computed hit or a crossing in [t0, t1]; the proof
+   that the answer stays the same: docs/RAYTRACING.md, "Flat sub-grids". The ray's values
+   (S, S^3) are computed here, not per ray: most rays never call it. Out of line as
+   rt_sub_flat. */
+static __attribute__((noinline)) int rt_sub_flat_near(const rt_walkstate *w, uint32_t j,
+                                                      double t0, double t1)
+{
+    const rt_subplane *p = &w->sc->grid.splanes[j - 1];
+    const double *o = w->r->o, *d = w->r->d, S0 = w->sc->scale;
+    const double S = RT_MAX(S0, RT_MAX(fabs(o[0]), RT_MAX(fabs(o[1]), fabs(o[2])))),
+                 dm = RT_MAX(fabs(d[0]), RT_MAX(fabs(d[1]), fabs(d[2])));
+    const double nd = p->n[0] * d[0] + p->n[1] * d[1] + p->n[2] * d[2];
+    if (!(S <= 64.0 * S0) ||
+        !(fabs(nd) >= (0x1p-9 + p->ka) * 1.7320508075688772 * dm * (1.0 + 0x1p-40)))
+        return 0;
+    /* the heights n . (o + t d) of the ends as n . o + t (n . d): within 25 u S' of the exact
+       ones, S' = S + max(|t0|, |t1|) max |d[k]| (>= the ends' coordinates) */
+    const double no = p->n[0] * o[0] + p->n[1] * o[1] + p->n[2] * o[2];
+    const double s0 = no + t0 * nd, s1 = no + t1 * nd;
+    const double Su = S * (1.0 + 0x1p-40), Sp = Su + RT_MAX(fabs(t0), fabs(t1)) * dm;
+    const double m = p->ka * Su + p->kb * (Su * Su * Su * (1.0 + 0x1p-40)) +
+                     32.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
+    const double hi = p->hi + m, lo = p->lo - m;
+    return (s0 > hi && s1 > hi) | (s0 < lo && s1 < lo);
+}
+
 static int rt_walk_sub_nearest(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static int rt_walk_sub_transmit(rt_walkstate *w, const rt_subgrid *sg, double t0, double t1);
 static inline RT_ANYHIT_TARGET int rt_walk_sub_anyhit_o(rt_walkstate *w, int o,
@@ -1435,6 +1467,11 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                     ? (sx && sy && sz ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
                                       : rt_box_clip_loop(&sg->b, gr, &s0, &s1))
                     : rt_box_clip(&sg->b, gr, &s0, &s1)) {
+                /* nearest-hit walks: a flat sub-grid whose plane the range does not cross
+                   (rt_sub_flat_near) is not walked */
+                if ((mode == 0 || mode == 3) && __builtin_expect(w->spl != NULL, 0) &&
+                    w->spl[sub[ci]] && rt_sub_flat_near(w, w->spl[sub[ci]], s0, s1))
+                    goto lower;
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
                          : mode == 3 ? w->sub(w, sg, s0, s1)
                          : mode >= RT_MODE_ANYTOP ? rt_walk_sub_anyhit_o(w, mode & 7, sg, s0, s1)
@@ -1447,6 +1484,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
            Once a cell is left whose exit is beyond it, every primitive hit up to there has
            been tested (the cells that hold the ray points up to it were all visited, and
            each holds every primitive crossing it). */
+    lower:
         if ((mode == 0 || mode == 3 || mode >= RT_MODE_NEARK) && w->best + 2.0 * w->ebest < t1)
             t1 = w->best + 2.0 * w->ebest;
     advance:
@@ -1591,6 +1629,7 @@ RT_INLINE long rt_nearest_core(const rt_scene *sc, rt_ctx *c, const rt_rayx *r, 
             if (rs)
                 rt_rayx_shear(rs);
             w.stamp = rt_ctx_next(c);
+            w.spl = g->subplane_near; /* rt_sub_flat_near */
             rt_walk_box(&w, 0, &g->b, g->off, NULL, g->refs, NULL, NULL, g->tleaf, g->sub, g->subs,
                         rt_octant_cubes(g, &w.gr), t0, t1, 0, NULL, 0, NULL);
         }
@@ -1768,13 +1807,15 @@ typedef struct rt_topgrid {
     const uint8_t *odist;
     size_t ncells;
     const rt_sub_walk_fn *subn; /* the nearest-hit second-level walks of the grid's layout */
+    const uint32_t *splnear;    /* rt_grid.subplane_near */
 } rt_topgrid;
 
 RT_INLINE rt_topgrid rt_topgrid_of(const rt_grid *g)
 {
     return (rt_topgrid){.b = g->b, .off = g->off, .refs = g->refs, .leaf = g->tleaf,
                         .sub = g->sub, .subs = g->subs, .odist = g->odist, .ncells = g->ncells,
-                        .subn = g->sref16 ? rt_sub_nearest_local : rt_sub_nearest};
+                        .subn = g->sref16 ? rt_sub_nearest_local : rt_sub_nearest,
+                        .splnear = g->subplane_near};
 }
 
 /* the top-level walk of lane j of a four-ray set-up in state 2 (mode as rt_walk_box's; tg:
@@ -1830,6 +1871,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
             w.vnmask = ~sc->vmask;
         }
         w.stamp = rt_ctx_next(c);
+        w.spl = tg->splnear; /* rt_sub_flat_near */
         rt_walk_pre(&w, mesh ? 3 : 0, tg, p, j);
         t = w.best;
         i = w.bi;

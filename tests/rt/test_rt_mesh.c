@@ -486,6 +486,118 @@ static void test_occluded_flat(void **state)
     }
 }
 
+/* the hits of rays n rays through g and b, in a batch (the four-ray set-up's walks) and one
+   ray a call (the one-ray walk): bit for bit the same; the number of rays that hit */
+static size_t same_hits(rt_scene *g, rt_scene *b, size_t n, const rt_ray *rays, rt_hit *hg,
+                        rt_hit *hb)
+{
+    rtc_traps_on();
+    assert_int_equal(rt_intersect(g, n, rays, hg), RT_OK);
+    assert_int_equal(rt_intersect(b, n, rays, hb), RT_OK);
+    rtc_traps_off();
+    size_t hits = 0;
+    for (size_t k = 0; k < n; k++) {
+        assert_memory_equal(&hg[k], &hb[k], sizeof hg[k]);
+        hits += hb[k].prim >= 0;
+        rt_hit h1;
+        assert_int_equal(rt_intersect(g, 1, rays + k, &h1), RT_OK);
+        assert_memory_equal(&h1, &hb[k], sizeof h1);
+    }
+    return hits;
+}
+
+/* The nearest-hit walks skip a flat sub-grid whose plane their range in the top cell does not
+ * cross (rt_grid.subplane_near, a scene of one mesh). A tilted plane as one mesh (scales 1 and
+ * 1000, off the origin) against the scene without a grid, bit for bit: rays from above and
+ * below to points of the plane, steep and nearly grazing (slopes 0.02 and 0.004: they pass
+ * many flat sub-grids before their hit; the second is inside the skip's grazing limit), and
+ * each of them again ending exactly at its hit (tmax its t: the range's end lies on the plane
+ * within the roundings, which a margin too small puts beyond the slab, and the hit is lost),
+ * starting exactly at it (tmin its t) and ending just short of it; in batches and one ray a
+ * call. The triangles' shared edges and vertices give ties between triangles. */
+static void test_intersect_flat(void **state)
+{
+    (void)state;
+    enum { F = 48, M = 800 };
+    static double v[F * F * 3];
+    static uint32_t ix[(F - 1) * (F - 1) * 6];
+    static rt_ray rays[4][M];
+    static rt_hit hg[M], hb[M];
+    for (int sc = 0; sc < 2; sc++) {
+        const double s = sc ? 1000.0 : 1.0, off = sc ? 3217.0 : 0.0;
+        for (int j = 0; j < F; j++)
+            for (int i = 0; i < F; i++) {
+                double *p = v + 3 * (j * F + i);
+                p[0] = s * (-1 + 2.0 * i / (F - 1)) + off;
+                p[1] = s * (-1 + 2.0 * j / (F - 1)) - 0.5 * off;
+                p[2] = 0.37 * p[0] - 0.21 * p[1] + 0.1 * s;
+            }
+        for (int j = 0; j + 1 < F; j++)
+            for (int i = 0; i + 1 < F; i++) {
+                uint32_t k = (uint32_t)(j * F + i), *t = ix + 6 * (j * (F - 1) + i);
+                t[0] = k, t[1] = k + 1, t[2] = k + F + 1, t[3] = k, t[4] = k + F + 1, t[5] = k + F;
+            }
+        int sf;
+        rt_scene *g = rtu_scene_one_surface(&sf),
+                 *b = one_mesh(F * F, v, (F - 1) * (F - 1) * 2, ix, 1);
+        assert_non_null(g);
+        assert_int_equal(rt_scene_add_mesh(g, F * F, v, NULL, NULL, (F - 1) * (F - 1) * 2, ix, sf, sf), 0);
+        rt_build_options bo;
+        memset(&bo, 0, sizeof bo);
+        bo.brute_threshold = -1;
+        bo.grid_res[0] = bo.grid_res[1] = bo.grid_res[2] = 4;
+        bo.sub_min = 8;
+        assert_int_equal(rt_scene_commit(g, &bo), RT_OK);
+        rt_grid_info gi;
+        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+        assert_true(gi.flat_subgrids > 0);
+        uint64_t st = 0x2545F4914F6CDD1Dull;
+        for (int k = 0; k < M; k++) { /* to points of the plane, some on its edges */
+            double q[4];
+            for (int a = 0; a < 4; a++) {
+                st = st * 6364136223846793005ull + 1442695040888963407ull;
+                q[a] = (double)(st >> 11) * 0x1p-53 * 1.8 - 0.9;
+            }
+            if (k % 5 == 0) /* on a vertex of the mesh */
+                q[0] = round(q[0] * (F - 1) / 2) * 2.0 / (F - 1);
+            const double x = s * q[0] + off, y = s * q[1] - 0.5 * off,
+                         z = 0.37 * x - 0.21 * y + 0.1 * s;
+            /* along the plane (its unit vectors in x and y, turned by q[3]) and off it by
+               slope: steep, shallow (0.02) or grazing (0.004) */
+            const double c = cos(3.2 * q[3]), sn = sin(3.2 * q[3]);
+            const double slope = k % 3 == 0 ? 1.5 : k % 3 == 1 ? 0.02 : 0.004;
+            double dir[3] = {c, sn, 0.37 * c - 0.21 * sn}, nrm[3] = {-0.37, 0.21, 1.0};
+            const double side = k % 2 ? 1.0 : -1.0, len = 1.2 * s;
+            for (int a = 0; a < 3; a++)
+                dir[a] = dir[a] - side * slope * nrm[a];
+            const double pt[3] = {x, y, z};
+            rt_ray *r = &rays[0][k];
+            for (int a = 0; a < 3; a++) {
+                r->org[a] = pt[a] - len * dir[a];
+                r->dir[a] = dir[a] * (0.5 + fabs(q[2]));
+            }
+            r->tmin = 0;
+            r->tmax = INFINITY;
+        }
+        assert_true(same_hits(g, b, M, rays[0], hg, hb) > M / 2);
+        size_t n = 0;
+        for (int k = 0; k < M; k++) {
+            if (hb[k].prim < 0)
+                continue;
+            rays[1][n] = rays[2][n] = rays[3][n] = rays[0][k];
+            rays[1][n].tmax = hb[k].t;           /* ending exactly at the hit */
+            rays[2][n].tmin = hb[k].t;           /* starting exactly at it */
+            rays[3][n].tmax = hb[k].t * (1 - 1e-9); /* ending just short of it */
+            n++;
+        }
+        assert_int_equal(same_hits(g, b, n, rays[1], hg, hb), n);
+        (void)same_hits(g, b, n, rays[2], hg, hb);
+        assert_int_equal(same_hits(g, b, n, rays[3], hg, hb), 0);
+        rt_scene_free(g);
+        rt_scene_free(b);
+    }
+}
+
 /* Rays of every axis order of the shear (each axis the largest component, either sign) at
  * points of the field's box from 3 units away, in batches (the four-ray set-up, whose lanes
  * take the nearest-hit lists of mesh triangles on a CPU with AVX2): the same answers with the
@@ -811,6 +923,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_occluded_mesh_only),
         cmocka_unit_test(test_occluded_flat),
+        cmocka_unit_test(test_intersect_flat),
         cmocka_unit_test(test_intersect_mesh_only),
         cmocka_unit_test(test_same_picture),
         cmocka_unit_test(test_same_picture_culled),
