@@ -1593,8 +1593,9 @@ static inline uint64_t rt_pk_in(const rt_pk *p, uint64_t mask, double za, double
 }
 
 /* the second-level grid sg inside a top cell: its slices along K in the rays' direction,
-   for the rays of the top slice (in) that meet each. 0 if a slice's footprint is too large
-   (not coherent). */
+   for the rays of the top slice (in) that meet each (an any-hit packet: for its rays still
+   walking of in, those that may hit the sub-grid's triangles). 0 if a slice's footprint is
+   too large (not coherent). */
 static inline __attribute__((always_inline)) int
 rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const int any)
 {
@@ -1617,7 +1618,9 @@ rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const
             const double ua = p->sg > 0 ? za : -zb, ub = p->sg > 0 ? zb : -za;
             if (!(p->usmin <= ub + p->umg && p->uemax >= ua - p->umg))
                 continue;
-            p->cand = p->live;
+            p->cand = p->live & in;
+            if (!p->cand)
+                continue;
         } else {
             p->cand = rt_pk_in(p, in & p->live, za, zb);
             if (!p->cand)
@@ -1664,6 +1667,42 @@ rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const
     return 1;
 }
 
+/* the rays of mask whose segment [tmin, tmax] may cross the flat sub-grid of plane j - 1 of
+   rt_grid.splanes: those of the others lie beyond its slab by the margin on one side, so
+   they cannot hit its triangles anywhere (rt_trace.c's rt_sub_flat, ray by ray, the same
+   values; docs/RAYTRACING.md, "Flat sub-grids"). The any-hit mailbox (rt_pk_prim) then
+   holds a primitive tested for the rays of the test, each ray still walking either tested
+   it or cannot hit it: a ray left out that meets one of those triangles in another cell
+   skips it there too, rightly. Out of line: most cells have no flat sub-grid. */
+static __attribute__((noinline)) uint64_t rt_pk_flat(const rt_pk *p, uint32_t j, uint64_t mask)
+{
+    const rt_subplane *pl = &p->sc->grid.splanes[j - 1];
+    uint64_t keep = 0;
+    for (; mask; mask &= mask - 1) {
+        const int k = __builtin_ctzll(mask);
+        const rt_ray *r = &p->rays[k];
+        double S = p->sc->scale, Sp, p0[3], p1[3];
+        for (int a = 0; a < 3; a++)
+            S = fabs(r->org[a]) > S ? fabs(r->org[a]) : S;
+        Sp = S;
+        for (int a = 0; a < 3; a++) {
+            p0[a] = r->org[a] + r->tmin * r->dir[a];
+            p1[a] = r->org[a] + r->tmax * r->dir[a];
+            Sp = fabs(p0[a]) > Sp ? fabs(p0[a]) : Sp;
+            Sp = fabs(p1[a]) > Sp ? fabs(p1[a]) : Sp;
+        }
+        S *= 1.0 + 0x1p-40;
+        const double S3 = S * S * S * (1.0 + 0x1p-40), pe = 16.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
+        const double s0 = pl->n[0] * p0[0] + pl->n[1] * p0[1] + pl->n[2] * p0[2];
+        const double s1 = pl->n[0] * p1[0] + pl->n[1] * p1[1] + pl->n[2] * p1[2];
+        const double m = pl->ka * S + pl->kb * S3 + pe;
+        const double hi = pl->hi + m, lo = pl->lo - m;
+        if (!((s0 > hi && s1 > hi) | (s0 < lo && s1 < lo)))
+            keep |= (uint64_t)1 << k;
+    }
+    return keep;
+}
+
 /* one top cell for the rays of the slice (in): its own list, then its second-level grid;
    0: not coherent */
 static inline __attribute__((always_inline)) int
@@ -1677,8 +1716,15 @@ rt_pk_cell_visit(rt_pk *p, rt_pk_cull_fn cull, size_t ci, uint64_t in, const int
     p->cand = any ? p->live : in & p->live;
     if (kind & RT_CUBE_LIST)
         rt_pk_list(p, cull, g->refs + g->off[ci], g->off[ci + 1] - g->off[ci], any);
-    if ((kind & RT_CUBE_SUB) && (in & p->live))
-        return rt_pk_sub(p, cull, &g->subs[g->sub[ci]], in, any);
+    if ((kind & RT_CUBE_SUB) && (in & p->live)) {
+        if (!any)
+            return rt_pk_sub(p, cull, &g->subs[g->sub[ci]], in, 0);
+        /* an any-hit packet: its rays still walking, less those a flat sub-grid's plane
+           rules out (rt_pk_flat) */
+        const uint32_t j = g->subplane ? g->subplane[g->sub[ci]] : 0;
+        const uint64_t keep = j ? rt_pk_flat(p, j, p->live) : ~(uint64_t)0;
+        return keep ? rt_pk_sub(p, cull, &g->subs[g->sub[ci]], keep, 1) : 1;
+    }
     return 1;
 }
 

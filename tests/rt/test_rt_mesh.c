@@ -481,6 +481,52 @@ static void test_occluded_flat(void **state)
             if (l == 3)
                 assert_int_equal(blocked, 0);
         }
+        /* coherent packets (rt_occluded_packet's own walks, which leave the rays of a
+           flat sub-grid out of its walk when their segments stay beyond its plane): 8 x 8
+           blocks of rays from a light to neighbouring points of the plane, ending exactly
+           at their nearest hit, and from just above those hits back to the light */
+        static rt_ray pk[2][M];
+        size_t np = 0;
+        for (int blk = 0; blk < M / 64 && np + 64 <= M; blk++) {
+            const double *L = light[blk % NL];
+            const double la[3] = {s * L[0] + off, s * L[1] - 0.5 * off, s * L[2]};
+            const double cx = s * (-0.8 + 1.6 * ((blk * 7) % 9) / 8.0) + off,
+                         cy = s * (-0.8 + 1.6 * ((blk * 4) % 9) / 8.0) - 0.5 * off;
+            rt_ray blkr[64];
+            for (int q = 0; q < 64; q++) {
+                const double x = cx + s * 0.013 * (q % 8), y = cy + s * 0.011 * (q / 8),
+                             z = 0.37 * x - 0.21 * y + 0.1 * s;
+                blkr[q] = (rt_ray){.org = {la[0], la[1], la[2]},
+                                   .dir = {x - la[0], y - la[1], z - la[2]},
+                                   .tmin = 0,
+                                   .tmax = INFINITY};
+            }
+            assert_int_equal(rt_intersect(b, 64, blkr, hit), RT_OK);
+            for (int q = 0; q < 64; q++) {
+                assert_true(hit[q].prim >= 0);
+                pk[0][np + q] = blkr[q];
+                pk[0][np + q].tmax = hit[q].t;
+                rt_ray *r = &pk[1][np + q];
+                for (int a = 0; a < 3; a++)
+                    r->org[a] = hit[q].p[a];
+                r->org[2] += (la[2] > 0.37 * la[0] - 0.21 * la[1] ? 1e-6 : -1e-6) * s;
+                for (int a = 0; a < 3; a++)
+                    r->dir[a] = la[a] - r->org[a];
+                r->tmin = 0;
+                r->tmax = 1 - 1e-6;
+            }
+            np += 64;
+        }
+        for (int l = 0; l < 2; l++) {
+            rtc_traps_on();
+            assert_int_equal(rt_occluded_packet(g, np, pk[l], og), RT_OK);
+            assert_int_equal(rt_occluded(b, np, pk[l], ob), RT_OK);
+            rtc_traps_off();
+            for (size_t k = 0; k < np; k++)
+                assert_int_equal(og[k], l == 0 ? 1 : 0);
+            for (size_t k = 0; k < np; k++)
+                assert_int_equal(ob[k], l == 0 ? 1 : 0);
+        }
         rt_scene_free(g);
         rt_scene_free(b);
     }
