@@ -987,16 +987,20 @@ static __attribute__((noinline)) int rt_sub_flat_near(const rt_walkstate *w, uin
 {
     const rt_subplane *p = &w->sc->grid.splanes[j - 1];
     const double *o = w->r->o, *d = w->r->d, S0 = w->sc->scale;
+    /* the heights n . (o + t d) of the ends as n . o + t (n . d): within 25 u S' of the exact
+       ones, S' = S + max(|t0|, |t1|) max |d[k]| (>= the ends' coordinates) */
+    const double nd = p->n[0] * d[0] + p->n[1] * d[1] + p->n[2] * d[2];
+    const double no = p->n[0] * o[0] + p->n[1] * o[1] + p->n[2] * o[2];
+    const double s0 = no + t0 * nd, s1 = no + t1 * nd;
+    /* first without the margin: a range that meets the slab itself (the sub-grid a ray
+       hits) leaves here */
+    if (!((s0 > p->hi && s1 > p->hi) | (s0 < p->lo && s1 < p->lo)))
+        return 0;
     const double S = RT_MAX(S0, RT_MAX(fabs(o[0]), RT_MAX(fabs(o[1]), fabs(o[2])))),
                  dm = RT_MAX(fabs(d[0]), RT_MAX(fabs(d[1]), fabs(d[2])));
-    const double nd = p->n[0] * d[0] + p->n[1] * d[1] + p->n[2] * d[2];
     if (!(S <= 64.0 * S0) ||
         !(fabs(nd) >= (0x1p-9 + p->ka) * 1.7320508075688772 * dm * (1.0 + 0x1p-40)))
         return 0;
-    /* the heights n . (o + t d) of the ends as n . o + t (n . d): within 25 u S' of the exact
-       ones, S' = S + max(|t0|, |t1|) max |d[k]| (>= the ends' coordinates) */
-    const double no = p->n[0] * o[0] + p->n[1] * o[1] + p->n[2] * o[2];
-    const double s0 = no + t0 * nd, s1 = no + t1 * nd;
     const double Su = S * (1.0 + 0x1p-40), Sp = Su + RT_MAX(fabs(t0), fabs(t1)) * dm;
     const double m = p->ka * Su + p->kb * (Su * Su * Su * (1.0 + 0x1p-40)) +
                      32.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
