@@ -2024,7 +2024,7 @@ static int rt_empty_cubes(rt_grid *g, int nt)
 {
     if (g->ncells > SIZE_MAX / 8)
         return RT_ERR_LIMIT;
-    uint8_t *occ = malloc(g->ncells);
+    uint8_t *occ = rt_alloc_array(g->ncells, 1);
     g->odist = occ ? rt_alloc_array(g->ncells, 8) : NULL;
     if (!g->odist) {
         free(occ);
