@@ -366,6 +366,44 @@ static void test_occluded_mesh_only(void **state)
     rt_scene_free(b);
 }
 
+/* The tilted plane of the flat sub-grid tests: an FLAT_F x FLAT_F mesh of z = 0.37 x -
+   0.21 y + 0.1 s over [-s, s]^2 moved by (off, -off / 2), as g (a grid with a coarse top
+   level, so that its cells have second-level grids, some of them flat) and b (no grid). */
+enum { FLAT_F = 48 };
+static void flat_plane(double s, double off, rt_scene **gp, rt_scene **bp)
+{
+    enum { F = FLAT_F };
+    static double v[F * F * 3];
+    static uint32_t ix[(F - 1) * (F - 1) * 6];
+    for (int j = 0; j < F; j++)
+        for (int i = 0; i < F; i++) {
+            double *p = v + 3 * (j * F + i);
+            p[0] = s * (-1 + 2.0 * i / (F - 1)) + off;
+            p[1] = s * (-1 + 2.0 * j / (F - 1)) - 0.5 * off;
+            p[2] = 0.37 * p[0] - 0.21 * p[1] + 0.1 * s;
+        }
+    for (int j = 0; j + 1 < F; j++)
+        for (int i = 0; i + 1 < F; i++) {
+            uint32_t k = (uint32_t)(j * F + i), *t = ix + 6 * (j * (F - 1) + i);
+            t[0] = k, t[1] = k + 1, t[2] = k + F + 1, t[3] = k, t[4] = k + F + 1, t[5] = k + F;
+        }
+    int sf;
+    rt_scene *g = rtu_scene_one_surface(&sf), *b = one_mesh(F * F, v, (F - 1) * (F - 1) * 2, ix, 1);
+    assert_non_null(g);
+    assert_int_equal(rt_scene_add_mesh(g, F * F, v, NULL, NULL, (F - 1) * (F - 1) * 2, ix, sf, sf), 0);
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = -1;
+    bo.grid_res[0] = bo.grid_res[1] = bo.grid_res[2] = 4;
+    bo.sub_min = 8;
+    assert_int_equal(rt_scene_commit(g, &bo), RT_OK);
+    rt_grid_info gi;
+    assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
+    assert_true(gi.flat_subgrids > 0);
+    *gp = g;
+    *bp = b;
+}
+
 /* A tilted plane as one mesh (scales 1 and 1000, the latter moved off the origin): its
  * sub-grids are flat (rt_grid_info.flat_subgrids), and rt_occluded skips the walk of one where
  * the ray's segment stays beyond its plane (rt_subplane). Against the scene without a grid:
@@ -377,9 +415,7 @@ static void test_occluded_mesh_only(void **state)
 static void test_occluded_flat(void **state)
 {
     (void)state;
-    enum { F = 48, M = 600, NL = 5 };
-    static double v[F * F * 3];
-    static uint32_t ix[(F - 1) * (F - 1) * 6];
+    enum { F = FLAT_F, M = 600, NL = 5 };
     static rt_ray down[M], rays[4][M];
     static rt_hit hit[M];
     static unsigned char og[M], ob[M];
@@ -387,33 +423,8 @@ static void test_occluded_flat(void **state)
                                         {1.5, 1.9, 1.4}, {-0.1, 0.2, 9}};
     for (int sc = 0; sc < 2; sc++) {
         const double s = sc ? 1000.0 : 1.0, off = sc ? 3217.0 : 0.0;
-        for (int j = 0; j < F; j++)
-            for (int i = 0; i < F; i++) {
-                double *p = v + 3 * (j * F + i);
-                p[0] = s * (-1 + 2.0 * i / (F - 1)) + off;
-                p[1] = s * (-1 + 2.0 * j / (F - 1)) - 0.5 * off;
-                p[2] = 0.37 * p[0] - 0.21 * p[1] + 0.1 * s;
-            }
-        for (int j = 0; j + 1 < F; j++)
-            for (int i = 0; i + 1 < F; i++) {
-                uint32_t k = (uint32_t)(j * F + i), *t = ix + 6 * (j * (F - 1) + i);
-                t[0] = k, t[1] = k + 1, t[2] = k + F + 1, t[3] = k, t[4] = k + F + 1, t[5] = k + F;
-            }
-        /* a coarse top level, so that its cells have second-level grids */
-        int sf;
-        rt_scene *g = rtu_scene_one_surface(&sf),
-                 *b = one_mesh(F * F, v, (F - 1) * (F - 1) * 2, ix, 1);
-        assert_non_null(g);
-        assert_int_equal(rt_scene_add_mesh(g, F * F, v, NULL, NULL, (F - 1) * (F - 1) * 2, ix, sf, sf), 0);
-        rt_build_options bo;
-        memset(&bo, 0, sizeof bo);
-        bo.brute_threshold = -1;
-        bo.grid_res[0] = bo.grid_res[1] = bo.grid_res[2] = 4;
-        bo.sub_min = 8;
-        assert_int_equal(rt_scene_commit(g, &bo), RT_OK);
-        rt_grid_info gi;
-        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
-        assert_true(gi.flat_subgrids > 0);
+        rt_scene *g, *b;
+        flat_plane(s, off, &g, &b);
         uint64_t st = 0x9E3779B97F4A7C15ull;
         for (int k = 0; k < M; k++) { /* from above to points of the plane */
             double q[3];
@@ -564,39 +575,13 @@ static size_t same_hits(rt_scene *g, rt_scene *b, size_t n, const rt_ray *rays, 
 static void test_intersect_flat(void **state)
 {
     (void)state;
-    enum { F = 48, M = 800 };
-    static double v[F * F * 3];
-    static uint32_t ix[(F - 1) * (F - 1) * 6];
+    enum { F = FLAT_F, M = 800 };
     static rt_ray rays[4][M];
     static rt_hit hg[M], hb[M];
     for (int sc = 0; sc < 2; sc++) {
         const double s = sc ? 1000.0 : 1.0, off = sc ? 3217.0 : 0.0;
-        for (int j = 0; j < F; j++)
-            for (int i = 0; i < F; i++) {
-                double *p = v + 3 * (j * F + i);
-                p[0] = s * (-1 + 2.0 * i / (F - 1)) + off;
-                p[1] = s * (-1 + 2.0 * j / (F - 1)) - 0.5 * off;
-                p[2] = 0.37 * p[0] - 0.21 * p[1] + 0.1 * s;
-            }
-        for (int j = 0; j + 1 < F; j++)
-            for (int i = 0; i + 1 < F; i++) {
-                uint32_t k = (uint32_t)(j * F + i), *t = ix + 6 * (j * (F - 1) + i);
-                t[0] = k, t[1] = k + 1, t[2] = k + F + 1, t[3] = k, t[4] = k + F + 1, t[5] = k + F;
-            }
-        int sf;
-        rt_scene *g = rtu_scene_one_surface(&sf),
-                 *b = one_mesh(F * F, v, (F - 1) * (F - 1) * 2, ix, 1);
-        assert_non_null(g);
-        assert_int_equal(rt_scene_add_mesh(g, F * F, v, NULL, NULL, (F - 1) * (F - 1) * 2, ix, sf, sf), 0);
-        rt_build_options bo;
-        memset(&bo, 0, sizeof bo);
-        bo.brute_threshold = -1;
-        bo.grid_res[0] = bo.grid_res[1] = bo.grid_res[2] = 4;
-        bo.sub_min = 8;
-        assert_int_equal(rt_scene_commit(g, &bo), RT_OK);
-        rt_grid_info gi;
-        assert_int_equal(rt_scene_grid_info(g, &gi), RT_OK);
-        assert_true(gi.flat_subgrids > 0);
+        rt_scene *g, *b;
+        flat_plane(s, off, &g, &b);
         uint64_t st = 0x2545F4914F6CDD1Dull;
         for (int k = 0; k < M; k++) { /* to points of the plane, some on its edges */
             double q[4];
