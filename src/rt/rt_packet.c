@@ -1681,23 +1681,9 @@ static __attribute__((noinline)) uint64_t rt_pk_flat(const rt_pk *p, uint32_t j,
     for (; mask; mask &= mask - 1) {
         const int k = __builtin_ctzll(mask);
         const rt_ray *r = &p->rays[k];
-        double S = p->sc->scale, Sp, p0[3], p1[3];
-        for (int a = 0; a < 3; a++)
-            S = fabs(r->org[a]) > S ? fabs(r->org[a]) : S;
-        Sp = S;
-        for (int a = 0; a < 3; a++) {
-            p0[a] = r->org[a] + r->tmin * r->dir[a];
-            p1[a] = r->org[a] + r->tmax * r->dir[a];
-            Sp = fabs(p0[a]) > Sp ? fabs(p0[a]) : Sp;
-            Sp = fabs(p1[a]) > Sp ? fabs(p1[a]) : Sp;
-        }
-        S *= 1.0 + 0x1p-40;
-        const double S3 = S * S * S * (1.0 + 0x1p-40), pe = 16.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
-        const double s0 = pl->n[0] * p0[0] + pl->n[1] * p0[1] + pl->n[2] * p0[2];
-        const double s1 = pl->n[0] * p1[0] + pl->n[1] * p1[1] + pl->n[2] * p1[2];
-        const double m = pl->ka * S + pl->kb * S3 + pe;
-        const double hi = pl->hi + m, lo = pl->lo - m;
-        if (!((s0 > hi && s1 > hi) | (s0 < lo && s1 < lo)))
+        rt_flatseg fs;
+        rt_flatseg_init(&fs, r->org, r->dir, r->tmin, r->tmax, p->sc->scale);
+        if (!rt_flat_beyond(pl, &fs))
             keep |= (uint64_t)1 << k;
     }
     return keep;

@@ -924,7 +924,7 @@ struct rt_walkstate {
        (rt_subplane) */
     const uint32_t *spl;
     const rt_subplane *spp;
-    double p0[3], p1[3], S, S3, pe;
+    rt_flatseg fs;
     double best;
     long bi;
     double ebest; /* the best hit's error bound (rt_nearest_update) */
@@ -939,21 +939,7 @@ RT_INLINE void rt_walk_flat_init(rt_walkstate *w, const rt_scene *sc, const rt_r
     if (!w->spl)
         return;
     w->spp = sc->grid.splanes;
-    double S = sc->scale, Sp;
-    for (int k = 0; k < 3; k++)
-        S = RT_MAX(S, fabs(r->o[k]));
-    Sp = S;
-    for (int k = 0; k < 3; k++) {
-        w->p0[k] = r->o[k] + r->tmin * r->d[k];
-        w->p1[k] = r->o[k] + r->tmax * r->d[k];
-        Sp = RT_MAX(Sp, RT_MAX(fabs(w->p0[k]), fabs(w->p1[k])));
-    }
-    /* S: the vertices and the origin, Sp: the segment's ends too (they bound the exact
-       ends: those differ from the computed ones by a rounding, 0x1p-40 is far more); S^3
-       rounded up likewise; inf (or NaN) skips nothing */
-    w->S = S * (1.0 + 0x1p-40);
-    w->S3 = w->S * w->S * w->S * (1.0 + 0x1p-40);
-    w->pe = 16.0 * 0x1p-53 * Sp * (1.0 + 0x1p-40);
+    rt_flatseg_init(&w->fs, r->o, r->d, r->tmin, r->tmax, sc->scale);
 }
 
 /* 1 when the ray's segment [tmin, tmax] lies beyond plane j - 1 of rt_grid.splanes (a flat
@@ -964,12 +950,7 @@ RT_INLINE void rt_walk_flat_init(rt_walkstate *w, const rt_scene *sc, const rt_r
    registers from them (bunny and armadillo shadow rays, without flat sub-grids, +1.9 %) */
 static __attribute__((noinline)) int rt_sub_flat(const rt_walkstate *w, uint32_t j)
 {
-    const rt_subplane *p = &w->spp[j - 1];
-    const double s0 = p->n[0] * w->p0[0] + p->n[1] * w->p0[1] + p->n[2] * w->p0[2];
-    const double s1 = p->n[0] * w->p1[0] + p->n[1] * w->p1[1] + p->n[2] * w->p1[2];
-    const double m = p->ka * w->S + p->kb * w->S3 + w->pe;
-    const double hi = p->hi + m, lo = p->lo - m;
-    return (s0 > hi && s1 > hi) | (s0 < lo && s1 < lo);
+    return rt_flat_beyond(&w->spp[j - 1], &w->fs);
 }
 
 /* 1 when a nearest-hit walk need not walk the flat sub-grid of plane j - 1 over [t0, t1]
