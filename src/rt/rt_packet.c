@@ -123,6 +123,10 @@ typedef struct rt_pk {
     double ob[4], osp[4], osn[4], omg[4];
     /* and in rt_pk_rect_avx2's: lo[0], hi[0], lo[1], hi[1] and their slopes likewise */
     double rb[4], rsp[4], rsn[4];
+    /* any-hit packets in a grid with flat sub-grids: ray k's segment values for their
+       planes' test (rt_flatseg), made at its first flat sub-grid, for the rays of fsok */
+    uint64_t fsok;
+    rt_flatseg fs[RT_PACKET];
     /* the frusta of the kernel's steps (rays 4s .. 4s+3, AVX2 only; rt_pk_steps): for
        bound b (lo[0], -hi[0], lo[1], -hi[1] as ob) and step s, the bound at z0 less the
        margin and its slopes for z >= z0 and z < z0; made once per packet at z0 from the rays
@@ -915,6 +919,7 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
     p->hbox = ctx->hbox;
     p->r = rx;
     p->rays = rays;
+    p->fsok = 0;
     for (int k = p->n; k < RT_PACKET; k++) /* lanes without a ray: harmless, never in a mask */
         rt_pk_lane0(p, k);
 #ifdef RT_PK_X86
@@ -1669,21 +1674,25 @@ rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const
 
 /* the rays of mask whose segment [tmin, tmax] may cross the flat sub-grid of plane j - 1 of
    rt_grid.splanes: those of the others lie beyond its slab by the margin on one side, so
-   they cannot hit its triangles anywhere (rt_trace.c's rt_sub_flat, ray by ray, the same
-   values; docs/RAYTRACING.md, "Flat sub-grids"). The any-hit mailbox (rt_pk_prim) then
+   they cannot hit its triangles anywhere (rt_flat_beyond, as rt_trace.c's rt_sub_flat;
+   docs/RAYTRACING.md, "Flat sub-grids"). The any-hit mailbox (rt_pk_prim) then
    holds a primitive tested for the rays of the test, each ray still walking either tested
    it or cannot hit it: a ray left out that meets one of those triangles in another cell
    skips it there too, rightly. Out of line: most cells have no flat sub-grid. */
-static __attribute__((noinline)) uint64_t rt_pk_flat(const rt_pk *p, uint32_t j, uint64_t mask)
+static __attribute__((noinline)) uint64_t rt_pk_flat(rt_pk *p, uint32_t j, uint64_t mask)
 {
     const rt_subplane *pl = &p->sc->grid.splanes[j - 1];
+    /* a ray's segment values once per packet: an any-hit ray's segment does not change */
+    for (uint64_t m = mask & ~p->fsok; m; m &= m - 1) {
+        const int k = __builtin_ctzll(m);
+        const rt_ray *r = &p->rays[k];
+        rt_flatseg_init(&p->fs[k], r->org, r->dir, r->tmin, r->tmax, p->sc->scale);
+    }
+    p->fsok |= mask;
     uint64_t keep = 0;
     for (; mask; mask &= mask - 1) {
         const int k = __builtin_ctzll(mask);
-        const rt_ray *r = &p->rays[k];
-        rt_flatseg fs;
-        rt_flatseg_init(&fs, r->org, r->dir, r->tmin, r->tmax, p->sc->scale);
-        if (!rt_flat_beyond(pl, &fs))
+        if (!rt_flat_beyond(pl, &p->fs[k]))
             keep |= (uint64_t)1 << k;
     }
     return keep;
