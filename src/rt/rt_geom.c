@@ -9,9 +9,6 @@
 
 #include <math.h>
 #include <string.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 /* rt_tri_unit_normal's fallback (slivers, extreme coordinates), out of line: inlined, its
    scaled computation made the compiler load and spill the vertices for it ahead of the
@@ -29,55 +26,11 @@ void rt_prim_ng_tri(const rt_scene *sc, size_t i, double ng[3])
     rt_tri_unit_normal(v[0], v[1], v[2], ng);
 }
 
-/* The bound K * u of the relative position error behind a computed distance
-   (docs/RAYTRACING.md, "Coplanar surfaces"): u = 2^-53; 16 roundings counted (vertices into
-   VRC3: 4; the test's origin subtraction and shear: 2; edge functions or plane numerator: 3;
-   T or numerator with the shear scale: 4; denominator: 2; division: 1), times sqrt(3) from the
-   maximum norms used for the magnitudes to the Euclidean length. */
-#define RT_HIT_K (16.0 * 1.7320508075688772 * 0x1p-53)
-
-/* max(a, b) of non-negative values, inline (fmax is a libm call here) */
-static inline double rt_max2(double a, double b)
-{
-    return a > b ? a : b;
-}
-
-static double rt_absmax(const double *v, int n)
-{
-    double m = 0.0;
-    for (int k = 0; k < n; k++)
-        m = rt_max2(m, fabs(v[k]));
-    return m;
-}
-
 /* fmax(a, b) inline, the same value for every input: b if a is NaN, a if b is NaN (fmax is
    a libm call here) */
 static inline double rt_fmax2(double a, double b)
 {
     return (a > b || b != b) ? a : b;
-}
-
-/* The largest coordinate magnitude of the five points a, b, c, o, p (a hit's triangle, the
-   ray's origin and the hit point): with SSE2 (every x86-64) two lanes at a time. A maximum
-   of magnitudes is exact, so the order does not change the value (finite inputs: committed
-   vertices, a checked ray); the scalar loop where SSE2 is absent. */
-static inline double rt_absmax5(const double *a, const double *b, const double *c,
-                                const double *o, const double *p)
-{
-#if defined(__SSE2__)
-    const __m128d sg = _mm_set1_pd(-0.0);
-    __m128d m = _mm_max_pd(_mm_andnot_pd(sg, _mm_loadu_pd(a)), _mm_andnot_pd(sg, _mm_loadu_pd(b)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadu_pd(c)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadu_pd(o)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadu_pd(p)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadh_pd(_mm_load_sd(a + 2), b + 2)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_loadh_pd(_mm_load_sd(c + 2), o + 2)));
-    m = _mm_max_pd(m, _mm_andnot_pd(sg, _mm_load_sd(p + 2)));
-    return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
-#else
-    return rt_max2(rt_max2(rt_absmax(a, 3), rt_max2(rt_absmax(b, 3), rt_absmax(c, 3))),
-                   rt_max2(rt_absmax(o, 3), rt_absmax(p, 3)));
-#endif
 }
 
 /* An upper bound of the largest coordinate magnitude of primitive i's vertices (p: a point
@@ -127,23 +80,11 @@ static inline __attribute__((always_inline)) double rt_hit_err(const rt_scene *s
         p[k] = r->o[k] + t * r->d[k];
     int done = 0; /* den and s set */
     if (pr->kind == RT_KIND_TRI) {
-        /* |n . d| / |n| of the plain cross product (scaled by its largest component, so
-           that nothing overflows): the unit normal's cosine up to a few roundings, far
-           cheaper than rt_prim_ng's robust normal; a degenerate one falls back to that */
-        const double *a = rt_tri_vert(sc, pr->data, 0), *b = rt_tri_vert(sc, pr->data, 1),
-                     *c = rt_tri_vert(sc, pr->data, 2);
-        const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        ng[0] = e1[1] * e2[2] - e1[2] * e2[1];
-        ng[1] = e1[2] * e2[0] - e1[0] * e2[2];
-        ng[2] = e1[0] * e2[1] - e1[1] * e2[0];
-        const double m = rt_absmax(ng, 3);
-        if (m > 0.0 && isfinite(m)) {
-            const double im = 1.0 / m, x = ng[0] * im, y = ng[1] * im, z = ng[2] * im;
-            den = fabs(x * r->d[0] + y * r->d[1] + z * r->d[2]) / sqrt(x * x + y * y + z * z);
-            s = rt_absmax5(a, b, c, r->o, p);
-            done = 1;
-        }
+        const double e = rt_tri_hit_err_v(r, t, rt_tri_vert(sc, pr->data, 0),
+                                          rt_tri_vert(sc, pr->data, 1),
+                                          rt_tri_vert(sc, pr->data, 2));
+        if (e >= 0.0)
+            return e;
     } else if (pr->kind == RT_KIND_QUAD || pr->kind == RT_KIND_POLY) {
         /* rt_prim_ng's normal and rt_prim_mag's bound read in place, without the calls
            (the eye lists' and the walks' hits on quads and polygons: gears, mount): the
@@ -252,6 +193,12 @@ void rt_nearest_update(const rt_scene *sc, const rt_rayx *r, uint32_t i, double 
                        long *bi, double *eb)
 {
     rt_nearest_take(sc, i, t, rt_hit_err(sc, r, i, t), best, bi, eb);
+}
+
+void rt_nearest_take_e(const rt_scene *sc, uint32_t i, double t, double e, double *best, long *bi,
+                       double *eb)
+{
+    rt_nearest_take(sc, i, t, e, best, bi, eb);
 }
 
 void rt_nearest_update_tri(const rt_scene *sc, const rt_rayx *r, uint32_t i, double t,
