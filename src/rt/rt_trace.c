@@ -1150,9 +1150,10 @@ RT_INLINE int rt_cell_mesh_k(rt_walkstate *w, const uint32_t *refs, const uint16
     const uint64_t key = (uint64_t)w->stamp << 32;
     /* the list: refs, or 2-byte references r16 into a sub-grid's table loc (rt_grid.sref16) */
 #define RT_REF(k) (r16 ? loc[r16[k]] : refs[k])
-    if (nearest && n >= 2) /* rt_prefetch_tris: the index triples */
-        for (uint32_t k = 0; k < n; k++)
-            __builtin_prefetch(ct[RT_REF(k)]);
+    /* no pass prefetching the list's index triples ahead of the tests (rt_prefetch_tris):
+       it cost about 7 instructions per reference and a mispredicted loop exit per list
+       (bunny primary 3 % of instructions, 9 % of mispredicts) and timed no faster
+       (docs/bench/rt_tuning.md) */
     for (uint32_t k = 0; k < n; k++) {
         const uint32_t i = RT_REF(k);
         if (hbox[i % RT_HBOX] == (key | i))
