@@ -499,6 +499,8 @@ typedef struct rt_pre4 {
     double it[3][4];       /* about 1 / dt (the jumps' counts) */
     double o[3][4], d[3][4]; /* the ray in the grid frame (rt_gray_init) */
     int kx[4], ky[4], kz[4]; /* rt_rayx_shear of the input direction */
+    int ord[4];              /* its axis order in rt_list_order's numbering, 2 kz + (the
+                                order swapped for a negative d[kz]) */
     double sx[4], sy[4], sz[4];
 } rt_pre4;
 
@@ -572,6 +574,8 @@ static inline __attribute__((always_inline, target("avx2"))) void rt_shear4(cons
     const rt_v4d dx = rt_v4sel(kx == 0, d[0], rt_v4sel(kx == 1, d[1], d[2]));
     const rt_v4d dy = rt_v4sel(ky == 0, d[0], rt_v4sel(ky == 1, d[1], d[2]));
     const rt_v4d sz = (rt_v4d){1.0, 1.0, 1.0, 1.0} / dz, sx = dx * sz, sy = dy * sz;
+    const rt_v4i ord4 = __builtin_convertvector(kz + kz + ng, rt_v4i);
+    memcpy(p->ord, &ord4, sizeof p->ord);
     const rt_v4i kx4 = __builtin_convertvector(kx, rt_v4i),
                  ky4 = __builtin_convertvector(ky, rt_v4i),
                  kz4 = __builtin_convertvector(kz, rt_v4i);
@@ -1890,7 +1894,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         rt_pre_ray(&r, &w.gr, p, j, ray);
         rt_walkstate_init(&w, sc, c, &r, 0);
         if (mesh) {
-            const int o = rt_list_order(&r);
+            const int o = p->ord[j]; /* rt_list_order(&r) */
             w.list = rt_nearest_lists[o];
             w.sub = tg->subn[o];
             w.vnmask = ~sc->vmask;
@@ -2051,7 +2055,7 @@ rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
                     w.vnmask = ~sc->vmask;
                     rt_walk_flat_init(&w, sc, &r);
                     w.stamp = rt_ctx_next(c);
-                    o = (unsigned char)rt_occ_top[rt_list_order(&r)](&w, &tg, &p, j);
+                    o = (unsigned char)rt_occ_top[p.ord[j]](&w, &tg, &p, j);
                 } else if (p.state[j] == 0)
                     o = rt_occluded_apart(sc, c, rays + k + j);
                 occluded[k + j] = o;
