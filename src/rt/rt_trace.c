@@ -910,10 +910,9 @@ struct rt_walkstate {
     uint32_t stamp;
     int any_hit;
     int step[3]; /* the ray's DDA steps (-1, 0, 1 per axis: the sign of its grid-frame
-                    direction), set by the top-level walks of mode 1 (and
-                    RT_MODE_ANYTOP + O) for their
-                    second-level walks (nearest-hit walks, with few second-level walks
-                    per ray, compute their own as before) */
+                    direction), set by the top-level walks of modes 1, 3 and
+                    RT_MODE_ANYTOP + O for their second-level walks (mode 0's compute
+                    their own) */
     rt_anyhit_list_fn list; /* nearest-hit walks of a scene of mesh triangles only
                                (rt_mesh_only): the cell list's copy for the ray's axis order
                                (rt_nearest_lists), chosen once per ray; NULL: the general
@@ -1362,9 +1361,9 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = s.t0;
         t1 = s.t1;
     }
-    if (sub && (mode == 1 || mode >= RT_MODE_ANYTOP)) { /* any-hit and transmittance walks'
-                               top level: the steps for
-                               their second-level walks (rt_dda_init) */
+    if (sub && (mode == 1 || mode == 3 || mode >= RT_MODE_ANYTOP)) { /* any-hit,
+                               transmittance and mesh nearest-hit walks' top level: the
+                               steps for their second-level walks (rt_dda_init) */
         w->step[0] = sx;
         w->step[1] = sy;
         w->step[2] = sz;
@@ -1505,7 +1504,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
 }
 
 /* the walk of second-level grid sg over [t0, t1] in mode mode (rt_walk_box's; step: NULL, or
-   the ray's steps that the top walk of modes 1 and RT_MODE_ANYTOP + O stored); local: 1 the
+   the ray's steps that the top walk of modes 1, 3 and RT_MODE_ANYTOP + O stored); local: 1 the
    references' 2-byte layout (rt_grid.sref16), 0 the 4-byte one, -1 the grid's */
 RT_INLINE int rt_walk_sub(rt_walkstate *w, int mode, const rt_subgrid *sg, double t0, double t1,
                           const int *step, int local)
@@ -1540,12 +1539,12 @@ static __attribute__((noinline)) int rt_walk_sub_nearest(rt_walkstate *w, const 
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_##O(            \
         rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
     {                                                                                         \
-        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL, 0);                        \
+        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, w->step, 0);                     \
     }                                                                                         \
     static __attribute__((noinline)) RT_ANYHIT_TARGET int rt_walk_sub_nearest_local_##O(      \
         rt_walkstate *w, const rt_subgrid *sg, double t0, double t1)                           \
     {                                                                                         \
-        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, NULL, 1);                        \
+        return rt_walk_sub(w, RT_MODE_NEARK + O, sg, t0, t1, w->step, 1);                     \
     }
 RT_SUB_NEAREST(0)
 RT_SUB_NEAREST(1)
