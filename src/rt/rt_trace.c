@@ -517,6 +517,17 @@ typedef int32_t rt_v4i __attribute__((vector_size(16)));
 #define RT_SETUP4_AVX2 1
 #include <immintrin.h>
 
+/* a < b ? a : b and a > b ? a : b (either NaN: b) as one instruction each (GCC's vectors
+   make a compare and a blend) */
+#define rt_v4min(a, b) ((rt_v4d)_mm256_min_pd((__m256d)(a), (__m256d)(b)))
+#define rt_v4max(a, b) ((rt_v4d)_mm256_max_pd((__m256d)(a), (__m256d)(b)))
+
+/* the low 32 bits of each 64-bit lane of x (__builtin_convertvector's truncation to rt_v4i):
+   one lane permutation (GCC narrows with an extract and two shuffles) */
+#define rt_v4narrow(x)                                                                     \
+    ((rt_v4i)_mm256_castsi256_si128(                                                       \
+        _mm256_permutevar8x32_epi32((__m256i)(x), _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))))
+
 /* rt_kdop_clip's cut of the four lanes' [t0, t1] to the occupied space's slabs (o, d: the
    rays in the grid frame); a lane with a slab it runs (nearly) parallel to is marked in
    *par and left to the one-ray code, which skips that slab (rare: |s_j(d)| below
@@ -574,11 +585,9 @@ static inline __attribute__((always_inline, target("avx2"))) void rt_shear4(cons
     const rt_v4d dx = rt_v4sel(kx == 0, d[0], rt_v4sel(kx == 1, d[1], d[2]));
     const rt_v4d dy = rt_v4sel(ky == 0, d[0], rt_v4sel(ky == 1, d[1], d[2]));
     const rt_v4d sz = (rt_v4d){1.0, 1.0, 1.0, 1.0} / dz, sx = dx * sz, sy = dy * sz;
-    const rt_v4i ord4 = __builtin_convertvector(kz + kz + ng, rt_v4i);
+    const rt_v4i ord4 = rt_v4narrow(kz + kz + ng);
     memcpy(p->ord, &ord4, sizeof p->ord);
-    const rt_v4i kx4 = __builtin_convertvector(kx, rt_v4i),
-                 ky4 = __builtin_convertvector(ky, rt_v4i),
-                 kz4 = __builtin_convertvector(kz, rt_v4i);
+    const rt_v4i kx4 = rt_v4narrow(kx), ky4 = rt_v4narrow(ky), kz4 = rt_v4narrow(kz);
     memcpy(p->kx, &kx4, sizeof p->kx);
     memcpy(p->ky, &ky4, sizeof p->ky);
     memcpy(p->kz, &kz4, sizeof p->kz);
@@ -675,9 +684,10 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     for (int a = 0; a < 3; a++) {
         invd[a] = one / d[a];
         const rt_v4d ta = (b->lo[a] - o[a]) * invd[a], tb = (b->hi[a] - o[a]) * invd[a];
-        const rt_v4d tn = rt_v4sel(ta < tb, ta, tb), tf = rt_v4sel(ta > tb, ta, tb);
-        t0 = rt_v4sel(tn > t0, tn, t0);
-        t1 = rt_v4sel(tf < t1, tf, t1);
+        /* min (a, b) and max (a, b) pick a where a < b (a > b), else b: the selects' picks */
+        const rt_v4d tn = rt_v4min(ta, tb), tf = rt_v4max(ta, tb);
+        t0 = rt_v4max(tn, t0);
+        t1 = rt_v4min(tf, t1);
     }
     /* no usable lane enters the box (rows of eye rays beside the scene): the k-DOP can only
        shorten the ranges, so every usable lane misses (state 1; a lane the k-DOP would have
@@ -685,7 +695,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
        nothing more is read */
     rt_v4l in = (t0 <= t1) & (rt_v4abits(t0) < inf); /* no NaN here */
     if (!_mm256_movemask_pd((__m256d)(in & ~bad))) {
-        const rt_v4i st4 = __builtin_convertvector(~bad & (rt_v4l){1, 1, 1, 1}, rt_v4i);
+        const rt_v4i st4 = rt_v4narrow((~bad & (rt_v4l){1, 1, 1, 1}));
         memcpy(p->state, &st4, sizeof p->state);
         return;
     }
@@ -695,7 +705,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     bad |= par;
     in = (t0 <= t1) & (rt_v4abits(t0) < inf);
     const rt_v4l st = ~bad & ((in & (rt_v4l){2, 2, 2, 2}) | (~in & (rt_v4l){1, 1, 1, 1}));
-    const rt_v4i st4 = __builtin_convertvector(st, rt_v4i);
+    const rt_v4i st4 = rt_v4narrow(st);
     memcpy(p->state, &st4, sizeof p->state);
     /* no lane enters the k-DOP: nothing more is read */
     if (!_mm256_movemask_pd((__m256d)(in & ~bad)))
@@ -707,19 +717,23 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     }
     t0 = rt_v4sel(in, t0, zero); /* lanes that miss: a finite start (unused) */
     /* rt_dda_init's start cell and next boundary, rt_walk_box's constants */
-    rt_v4l neg = {0, 0, 0, 0};
+    rt_v4i neg = {0, 0, 0, 0};
     rt_v4i cs[3], ss[3];
+    /* the steps and the octant from the sign bits in 32-bit lanes (the high halves of d's
+       lanes; d[a] < 0 is its sign bit here: no lane in state 2 has a component 0 or NaN):
+       AVX2 has no narrowing of 64-bit lanes to 32 in one instruction */
+    const __m256i hi32 = _mm256_setr_epi32(1, 3, 5, 7, 1, 3, 5, 7);
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         const rt_v4d na = {(double)b->n[a] - 1.0, (double)b->n[a] - 1.0,
                            (double)b->n[a] - 1.0, (double)b->n[a] - 1.0};
         const rt_v4d pa = o[a] + t0 * d[a];
         rt_v4d f = (pa - b->lo[a]) * b->inv_cw[a];
-        f = rt_v4sel(f > zero, f, zero);
-        f = rt_v4sel(f < na, f, na);
+        f = rt_v4min(rt_v4max(f, zero), na);
         const rt_v4i c = __builtin_convertvector(f, rt_v4i);
         const rt_v4l pos = d[a] > zero;
-        const rt_v4d bd = __builtin_convertvector(c, rt_v4d) + rt_v4sel(pos, one, zero);
+        /* (GCC converts rt_v4i to four doubles in two halves) */
+        const rt_v4d bd = (rt_v4d)_mm256_cvtepi32_pd((__m128i)c) + rt_v4sel(pos, one, zero);
         const rt_v4d nd = na + 1.0;
         const rt_v4d hi = {b->hi[a], b->hi[a], b->hi[a], b->hi[a]};
         const rt_v4d x = rt_v4sel(bd == nd, hi, b->lo[a] + bd * b->cw[a]);
@@ -731,9 +745,10 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
         memcpy(p->tn[a], &tn, sizeof p->tn[a]);
         memcpy(p->dt[a], &dt, sizeof p->dt[a]);
         memcpy(p->it[a], &it, sizeof p->it[a]);
-        const rt_v4l ng = d[a] < zero;
-        neg |= ng & (rt_v4l){(int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a, (int64_t)1 << a};
-        const rt_v4i step = __builtin_convertvector((rt_v4l){1, 1, 1, 1} + (ng & 2 * ng), rt_v4i);
+        const rt_v4i ng = (rt_v4i)_mm_srai_epi32(
+            _mm256_castsi256_si128(_mm256_permutevar8x32_epi32((__m256i)d[a], hi32)), 31);
+        neg |= ng & (rt_v4i){1 << a, 1 << a, 1 << a, 1 << a};
+        const rt_v4i step = ng | (rt_v4i){1, 1, 1, 1};
         memcpy(p->step[a], &step, sizeof p->step[a]);
         cs[a] = c;
         ss[a] = step;
@@ -745,8 +760,7 @@ rt_setup4_body(const rt_grid *g, const rt_ray *ray, rt_pre4 *p)
     memcpy(p->dz, &dz, sizeof p->dz);
     memcpy(p->t0, &t0, sizeof p->t0);
     memcpy(p->t1, &t1, sizeof p->t1);
-    const rt_v4i oct4 = __builtin_convertvector(neg, rt_v4i);
-    memcpy(p->oct, &oct4, sizeof p->oct);
+    memcpy(p->oct, &neg, sizeof p->oct);
     rt_shear4(din, p);
 }
 
