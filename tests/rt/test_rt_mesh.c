@@ -280,6 +280,29 @@ static rt_scene *mesh_only(int brute)
     return one_mesh(N * N, xyz, (N - 1) * (N - 1) * 2, idx, brute);
 }
 
+/* the field's triangles as lone polygons (plain triangles, ids 0 ..; the degenerate one takes
+   its id and is dropped), committed with a grid: hits whose records take the general path
+   (rt_fill_hit), against which the mesh-only scenes' records (made inline) are checked */
+static rt_scene *lone_only(void)
+{
+    int s;
+    rt_scene *sc = rtu_scene_one_surface(&s);
+    assert_non_null(sc);
+    const int three = 3;
+    for (size_t t = 0; t < (N - 1) * (N - 1) * 2; t++) {
+        double v[9];
+        for (int k = 0; k < 3; k++)
+            for (int q = 0; q < 3; q++)
+                v[3 * k + q] = xyz[3 * idx[3 * t + k] + q];
+        assert_int_equal(rt_scene_add_polygon(sc, 1, &three, v, s, s), (int)t);
+    }
+    rt_build_options bo;
+    memset(&bo, 0, sizeof bo);
+    bo.brute_threshold = -1;
+    assert_int_equal(rt_scene_commit(sc, &bo), RT_OK);
+    return sc;
+}
+
 /* Shadow rays from points of the field (hits of rays from above) to lights on four sides and
  * above and below, the origin moved towards the light by 1e-6 of the way (the ray starts beside
  * its own triangle, which it crosses behind itself), and rays up and down through the field:
@@ -632,15 +655,16 @@ static void test_intersect_flat(void **state)
 /* Rays of every axis order of the shear (each axis the largest component, either sign) at
  * points of the field's box from 3 units away, in batches (the four-ray set-up, whose lanes
  * take the nearest-hit lists of mesh triangles on a CPU with AVX2): the same answers with the
- * grid as without, bit for bit, and hits in every order. */
+ * grid as without, bit for bit, and hits in every order; and the hit records of the mesh-only
+ * scene (made inline, rt_fill_hit_mesh) those of the same triangles given alone (rt_fill_hit). */
 static void test_intersect_mesh_only(void **state)
 {
     (void)state;
     field();
-    rt_scene *g = mesh_only(0), *b = mesh_only(1);
+    rt_scene *g = mesh_only(0), *b = mesh_only(1), *l = lone_only();
     enum { M = 400 };
     static rt_ray rays[M];
-    static rt_hit hg[M], hb[M];
+    static rt_hit hg[M], hb[M], hl[M];
     uint32_t seed = 12345;
 #define RND() ((seed = seed * 1664525u + 1013904223u) >> 8) * (1.0 / 16777216.0)
     for (int a = 0; a < 3; a++)
@@ -659,6 +683,7 @@ static void test_intersect_mesh_only(void **state)
             rtc_traps_on();
             assert_int_equal(rt_intersect(g, M, rays, hg), RT_OK);
             assert_int_equal(rt_intersect(b, M, rays, hb), RT_OK);
+            assert_int_equal(rt_intersect(l, M, rays, hl), RT_OK);
             rtc_traps_off();
             int hits = 0;
             for (int k = 0; k < M; k++) {
@@ -666,6 +691,17 @@ static void test_intersect_mesh_only(void **state)
                 assert_true(hg[k].t == hb[k].t || (isinf(hg[k].t) && isinf(hb[k].t)));
                 assert_int_equal(hg[k].side, hb[k].side);
                 assert_memory_equal(hg[k].ng, hb[k].ng, sizeof hg[k].ng);
+                /* the record as the general path makes it for the same triangle given alone
+                   (none of these rays meets a shared edge, where the tie rules of one mesh and
+                   of lone areas could pick different neighbours): the same distance, point,
+                   normal and side, bit for bit */
+                assert_int_equal(hg[k].prim >= 0, hl[k].prim >= 0);
+                if (hg[k].prim >= 0) {
+                    assert_true(hg[k].t == hl[k].t);
+                    assert_memory_equal(hg[k].p, hl[k].p, sizeof hg[k].p);
+                    assert_memory_equal(hg[k].ng, hl[k].ng, sizeof hg[k].ng);
+                    assert_int_equal(hg[k].side, hl[k].side);
+                }
                 hits += hg[k].prim >= 0;
             }
             assert_true(hits > M / 10);
@@ -673,6 +709,7 @@ static void test_intersect_mesh_only(void **state)
 #undef RND
     rt_scene_free(g);
     rt_scene_free(b);
+    rt_scene_free(l);
 }
 
 /* Two coplanar triangles of one mesh facing opposite ways, overlapping where a ray hits them
