@@ -398,11 +398,10 @@ static void test_incoherent(void **state)
 /* 64 shadow rays from the points org[k] (just outside a sphere) to light, tmin 0, tmax 1:
    the packet path answers as rt_occluded does, as one packet traced (single 0) or handed
    whole to the single-ray walk (single 1) */
-static void check_shadow_patch(rt_scene *sc, const double light[3],
-                               const double org[RT_PACKET][3], int single, const char *what)
+/* the shadow rays from the points org to the light: segments ending at it */
+static void shadow_rays(const double light[3], const double org[RT_PACKET][3],
+                        rt_ray rays[RT_PACKET])
 {
-    rt_ray rays[RT_PACKET];
-    unsigned char o1[RT_PACKET], o2[RT_PACKET];
     for (int k = 0; k < RT_PACKET; k++) {
         for (int i = 0; i < 3; i++) {
             rays[k].org[i] = org[k][i];
@@ -411,6 +410,25 @@ static void check_shadow_patch(rt_scene *sc, const double light[3],
         rays[k].tmin = 0.0;
         rays[k].tmax = 1.0;
     }
+}
+
+/* a scene of one surface (*si) holding the unit sphere at the origin in slices x stacks
+   triangles, not committed */
+static rt_scene *sphere_scene(int slices, int stacks, int *si)
+{
+    rt_scene *sc = rtu_scene_one_surface(si);
+    assert_non_null(sc);
+    const double c[3] = {0, 0, 0};
+    assert_int_equal(rtu_add_sphere(sc, c, 1.0, slices, stacks, *si), 0);
+    return sc;
+}
+
+static void check_shadow_patch(rt_scene *sc, const double light[3],
+                               const double org[RT_PACKET][3], int single, const char *what)
+{
+    rt_ray rays[RT_PACKET];
+    unsigned char o1[RT_PACKET], o2[RT_PACKET];
+    shadow_rays(light, org, rays);
     rt_packet_stats ps = {0};
     rtc_traps_on();
     assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o1), RT_OK);
@@ -434,10 +452,8 @@ static void test_spread(void **state)
 {
     (void)state;
     int si;
-    rt_scene *sc = rtu_scene_one_surface(&si);
-    assert_non_null(sc);
-    const double c[3] = {0, 0, 0}, light[3] = {5.0, 6.0, 100.0};
-    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 256, 128, si), 0);
+    rt_scene *sc = sphere_scene(256, 128, &si);
+    const double light[3] = {5.0, 6.0, 100.0};
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     rt_grid_info gi;
     assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
@@ -470,10 +486,8 @@ static void test_spread_top(void **state)
 {
     (void)state;
     int si;
-    rt_scene *sc = rtu_scene_one_surface(&si);
-    assert_non_null(sc);
-    const double c[3] = {0, 0, 0}, light[3] = {5.0, 6.0, 100.0};
-    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 48, 24, si), 0);
+    rt_scene *sc = sphere_scene(48, 24, &si);
+    const double light[3] = {5.0, 6.0, 100.0};
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
     rt_grid_info gi;
     assert_int_equal(rt_scene_grid_info(sc, &gi), RT_OK);
@@ -505,10 +519,8 @@ static void test_shadow_depths(void **state)
 {
     (void)state;
     int si;
-    rt_scene *sc = rtu_scene_one_surface(&si);
-    assert_non_null(sc);
-    const double c[3] = {0, 0, 0}, light[3] = {0.4, 0.45, 40.0};
-    assert_int_equal(rtu_add_sphere(sc, c, 1.0, 256, 128, si), 0);
+    rt_scene *sc = sphere_scene(256, 128, &si);
+    const double light[3] = {0.4, 0.45, 40.0};
     /* the square at z = 1.04 over the patch, and a triangle far aside at z = 1.2 that
        takes the grid box above the rays' origins */
     const double v[7 * 3] = {0.2,  0.2,  1.04, 0.5,  0.2,  1.04, 0.5, 0.5, 1.04, 0.2, 0.5, 1.04,
@@ -524,14 +536,7 @@ static void test_shadow_depths(void **state)
     }
     rt_ray rays[RT_PACKET];
     unsigned char o[RT_PACKET];
-    for (int k = 0; k < RT_PACKET; k++) {
-        for (int i = 0; i < 3; i++) {
-            rays[k].org[i] = org[k][i];
-            rays[k].dir[i] = light[i] - org[k][i];
-        }
-        rays[k].tmin = 0.0;
-        rays[k].tmax = 1.0;
-    }
+    shadow_rays(light, org, rays);
     assert_int_equal(rt_occluded(sc, RT_PACKET, rays, o), RT_OK);
     int n = 0;
     for (int k = 0; k < RT_PACKET; k++) {
