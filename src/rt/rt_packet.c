@@ -1597,6 +1597,29 @@ static inline uint64_t rt_pk_in(const rt_pk *p, uint64_t mask, double za, double
     return in;
 }
 
+/* a second-level grid's cell lists in either layout (rt_internal.h): 4-byte offsets into
+   srefs, or 2-byte ones (off16) into srefs or into 2-byte references r16 to its table loc */
+typedef struct rt_pk_lists {
+    const uint16_t *off16;
+    const uint32_t *off, *srefs;
+    const uint16_t *r16;
+    const uint32_t *loc;
+} rt_pk_lists;
+
+/* the references of cells c0 .. c1 - 1 of a second-level grid, consecutive in its lists */
+static inline __attribute__((always_inline)) void
+rt_pk_cells(rt_pk *p, rt_pk_cull_fn cull, const rt_pk_lists *l, size_t c0, size_t c1,
+            const int any)
+{
+    const uint32_t k0 = l->off16 ? l->off16[c0] : l->off[c0],
+                   k1 = l->off16 ? l->off16[c1] : l->off[c1];
+    if (l->r16)
+        for (uint32_t k = k0; k < k1; k++)
+            rt_pk_prim(p, cull, l->loc[l->r16[k]], any);
+    else
+        rt_pk_list(p, cull, l->srefs + k0, k1 - k0, any);
+}
+
 /* the second-level grid sg inside a top cell: its slices along K in the rays' direction,
    for the rays of the top slice (in) that meet each (an any-hit packet: for its rays still
    walking of in, those that may hit the sub-grid's triangles). 0 if a slice's footprint is
@@ -1607,13 +1630,13 @@ rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &sg->b;
     const int K = p->K, nK = b->n[K];
-    /* the cell lists in either layout of the second level (rt_internal.h) */
-    const uint16_t *off16 = g->soff16 ? g->soff16 + sg->first16 : NULL;
-    const uint32_t *off = g->soff16 ? NULL : g->soff + sg->first;
-    const uint32_t *srefs = g->sref16 ? NULL : g->soff16 ? g->srefs + sg->ref0 : g->srefs;
-    /* or 2-byte references into the sub-grid's table of primitives */
-    const uint16_t *r16 = g->sref16 ? g->sref16 + sg->ref0 : NULL;
-    const uint32_t *loc = g->sref16 ? g->sloc + sg->loc0 : NULL;
+    const rt_pk_lists l = {
+        .off16 = g->soff16 ? g->soff16 + sg->first16 : NULL,
+        .off = g->soff16 ? NULL : g->soff + sg->first,
+        .srefs = g->sref16 ? NULL : g->soff16 ? g->srefs + sg->ref0 : g->srefs,
+        .r16 = g->sref16 ? g->sref16 + sg->ref0 : NULL,
+        .loc = g->sref16 ? g->sloc + sg->loc0 : NULL,
+    };
     /* a cell's index (rt_cell_index) in steps along each axis */
     const size_t st[3] = {1, (size_t)b->n[0], (size_t)b->n[0] * (size_t)b->n[1]};
     for (int j = 0; j < nK; j++) {
@@ -1648,25 +1671,12 @@ rt_pk_sub(rt_pk *p, rt_pk_cull_fn cull, const rt_subgrid *sg, uint64_t in, const
         size_t row = (size_t)s * st[K] + (size_t)olo * so + (size_t)ilo * si;
         for (int o = olo; o <= ohi; o++, row += so) {
             if (ia == 0) { /* the row as one list */
-                const size_t e = row + (size_t)(ihi - ilo + 1);
-                const uint32_t k0 = off16 ? off16[row] : off[row], k1 = off16 ? off16[e] : off[e];
-                if (r16)
-                    for (uint32_t k = k0; k < k1; k++)
-                        rt_pk_prim(p, cull, loc[r16[k]], any);
-                else
-                    rt_pk_list(p, cull, srefs + k0, k1 - k0, any);
+                rt_pk_cells(p, cull, &l, row, row + (size_t)(ihi - ilo + 1), any);
                 continue;
             }
             size_t ci = row;
-            for (int i = ilo; i <= ihi; i++, ci += si) {
-                const uint32_t k0 = off16 ? off16[ci] : off[ci],
-                               k1 = off16 ? off16[ci + 1] : off[ci + 1];
-                if (r16)
-                    for (uint32_t k = k0; k < k1; k++)
-                        rt_pk_prim(p, cull, loc[r16[k]], any);
-                else
-                    rt_pk_list(p, cull, srefs + k0, k1 - k0, any);
-            }
+            for (int i = ilo; i <= ihi; i++, ci += si)
+                rt_pk_cells(p, cull, &l, ci, ci + 1, any);
         }
     }
     return 1;
