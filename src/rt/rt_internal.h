@@ -697,8 +697,9 @@ int rt_leaves_build(const rt_scene *sc, rt_grid *g, int leaf_min);
 int rt_leaves_min(int leaf_min);
 size_t rt_leaves_bytes(const rt_grid *g);
 void rt_leaves_free(rt_grid *g);
-/* The widest SIMD level this CPU runs and GKS_RT_SIMD (scalar, sse) allows: 0 scalar, 1 SSE2,
- * 2 AVX2; the float leaves and the packet path choose their kernels by it. */
+/* The widest SIMD level this CPU runs and GKS_RT_SIMD (scalar, sse, avx2) allows: 0 scalar,
+ * 1 SSE2, 2 AVX2, 3 AVX-512 (F, VL and DQ); the float leaves, the packet path and the batch
+ * set-up choose their kernels by it (a kernel a level lacks is the next narrower one's). */
 int rt_simd_level(void);
 /* the kernel of the float test for this CPU, or the one GKS_RT_SIMD forces ("scalar", "sse",
    "avx2": no wider than the CPU has), and its name; *fn4 the one for leaves of 4 lanes */

@@ -160,13 +160,20 @@ __attribute__((target("avx2"))) static uint32_t rt_leaf_avx2(const float *rows, 
 int rt_simd_level(void)
 {
     const char *force = getenv("GKS_RT_SIMD");
-    int level = 2; /* 0 scalar, 1 SSE, 2 AVX2: the widest allowed */
+    int level = 3; /* 0 scalar, 1 SSE, 2 AVX2, 3 AVX-512: the widest allowed */
     if (force && !strcmp(force, "scalar"))
         level = 0;
     else if (force && !strcmp(force, "sse"))
         level = 1;
+    else if (force && !strcmp(force, "avx2"))
+        level = 2;
 #ifdef RT_LEAF_X86
     __builtin_cpu_init();
+    /* AVX-512 as the kernels use it: foundation, 128/256-bit forms (VL) and the 64-bit
+       integer and mask forms (DQ) */
+    if (level >= 3 && !(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                        __builtin_cpu_supports("avx512dq")))
+        level = 2;
     if (level >= 2 && !__builtin_cpu_supports("avx2"))
         level = 1;
 #else
