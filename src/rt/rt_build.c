@@ -470,6 +470,16 @@ typedef struct rt_axis_cell {
 static inline int rt_edge_filter(const double ro[3], const double ri[3], const rt_axis_cell *p,
                                  const rt_axis_cell *q)
 {
+#if defined(__SSE2__)
+    /* edges 0 and 1 in SSE2 lanes (the same operations: the same m), edge 2 alone, the
+       answers combined without a branch per edge */
+    const __m128d m01 = _mm_andnot_pd(_mm_set1_pd(-0.0),
+                                      _mm_sub_pd(_mm_loadu_pd(q->cw), _mm_loadu_pd(p->cv)));
+    const double m2 = fabs(q->cw[2] - p->cv[2]);
+    const int sep = _mm_movemask_pd(_mm_cmpgt_pd(m01, _mm_loadu_pd(ro))) | (m2 > ro[2]);
+    const int und = _mm_movemask_pd(_mm_cmpnle_pd(m01, _mm_loadu_pd(ri))) | !(m2 <= ri[2]);
+    return sep ? 1 : -(und != 0);
+#else
     int r = 0;
     for (int i = 0; i < 3; i++) {
         const double m = fabs(q->cw[i] - p->cv[i]);
@@ -480,6 +490,7 @@ static inline int rt_edge_filter(const double ro[3], const double ri[3], const r
         }
     }
     return r;
+#endif
 }
 
 
@@ -741,6 +752,9 @@ static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
         ro[i] = wr + B;
         ri[i] = wr - Bi - eps * (aP + aQ);
     }
+#if defined(__SSE2__)
+    const __m128d ro01 = _mm_loadu_pd(ro), ri01 = _mm_loadu_pd(ri);
+#endif
     uint64_t nexact = 0;
     int c[3];
     c[a] = c0[a];
@@ -754,20 +768,27 @@ static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
             if (outp >> kp & 1)
                 continue;
             const double *v = cv[kp];
-            int r = 0;
+            /* rt_edge_filter's answer for the three edges: sep, one separates; und, one is
+               not kept by the inner bound (NaN included) */
+#if defined(__SSE2__)
+            /* edges 0 and 1 in SSE2 lanes (the same operations: the same m), edge 2 alone,
+               the answers combined without a branch per edge */
+            const __m128d m01 = _mm_andnot_pd(_mm_set1_pd(-0.0),
+                                              _mm_sub_pd(_mm_loadu_pd(w), _mm_loadu_pd(v)));
+            const double m2 = fabs(w[2] - v[2]);
+            const int sep = _mm_movemask_pd(_mm_cmpgt_pd(m01, ro01)) | (m2 > ro[2]);
+            const int und = _mm_movemask_pd(_mm_cmpnle_pd(m01, ri01)) | !(m2 <= ri[2]);
+#else
+            int sep = 0, und = 0;
             for (int i = 0; i < 3; i++) {
                 const double m = fabs(w[i] - v[i]);
-                if (!(m <= ri[i])) {
-                    if (m > ro[i]) {
-                        r = 1;
-                        break;
-                    }
-                    r = -1;
-                }
+                sep |= m > ro[i];
+                und |= !(m <= ri[i]);
             }
-            if (r > 0)
+#endif
+            if (sep)
                 continue;
-            if (r < 0 || !(inp >> kp & inq >> kq & 1)) {
+            if (und || !(inp >> kp & inq >> kq & 1)) {
                 double bc[3], h[3];
                 bc[a] = bca;
                 h[a] = ha;
@@ -944,10 +965,12 @@ static void rt_ins_init(const rt_scene *sc, const double *pts, const rt_prim *p,
         return;
     }
     memcpy(q->tri.v, pts, sizeof q->tri.v);
+    /* the edges from pts, not from the copy just stored: a load of the copy spanning two of
+       the copy's stores cannot be forwarded from them and waits for the stores */
     for (int j = 0; j < 3; j++) {
-        q->te[0][j] = q->tri.v[1][j] - q->tri.v[0][j];
-        q->te[1][j] = q->tri.v[2][j] - q->tri.v[1][j];
-        q->te[2][j] = q->tri.v[0][j] - q->tri.v[2][j];
+        q->te[0][j] = pts[3 + j] - pts[j];
+        q->te[1][j] = pts[6 + j] - pts[3 + j];
+        q->te[2][j] = pts[j] - pts[6 + j];
     }
     q->tn[0] = q->te[0][1] * q->te[1][2] - q->te[0][2] * q->te[1][1];
     q->tn[1] = q->te[0][2] * q->te[1][0] - q->te[0][0] * q->te[1][2];
@@ -1024,7 +1047,16 @@ static void rt_ins_cell_box(const rt_box *g, const rt_axis_boxes *ab, const int 
 static void rt_insert(const rt_scene *sc, rt_build *b, size_t i, const rt_box *g, size_t base,
                       double eps, const double *tv, int *err)
 {
-    const rt_prim pr = rt_prim_geo(sc, i), *p = &pr; /* (q's below: its lifetime) */
+    /* a triangle's kind from a constant record (its other fields are not read here): a
+       record made on the stack for every insertion was stored in parts and loaded whole,
+       a load that waits for the stores */
+    static const rt_prim tri_geo = {.kind = RT_KIND_TRI};
+    rt_prim pr; /* (q's below: its lifetime) */
+    const rt_prim *p = &tri_geo;
+    if (i >= sc->ntri) {
+        pr = rt_prim_geo(sc, i);
+        p = &pr;
+    }
     size_t npts = 3;
     const double *pts = tv; /* a triangle's 9 coordinates (tv), or b->pts */
     if (!tv) {
