@@ -770,9 +770,278 @@ static __attribute__((target("avx2"), noinline)) void rt_setup4_avx2(const rt_gr
 {
     rt_setup4_body(g, ray, p);
 }
+
+/* ---- the same set-up for eight rays in AVX-512's 8 double lanes ---- */
+
+/* rt_setup4_body for eight rays at once (rt_setup8_avx512, CPUs of rt_simd_level 3): the same
+   operations per lane in the same order, the lanes' selects as mask registers, min and max as
+   the same instructions at twice the width; the results stored as two rt_pre4 records (rays
+   0-3, 4-7), so the walks read what the four-ray set-up writes. A group of eight rays that
+   all miss the grid box stops after the box clip, as a group of four does. */
+#define RT_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
+
+/* eight doubles of v into field f of the two records (lanes 0-3, 4-7); eight 32-bit ints */
+#define RT_ST8D(p, f, v)                                                                   \
+    (_mm256_storeu_pd((p)[0].f, _mm512_castpd512_pd256(v)),                               \
+     _mm256_storeu_pd((p)[1].f, _mm512_extractf64x4_pd((v), 1)))
+#define RT_ST8I(p, f, v)                                                                   \
+    (_mm_storeu_si128((__m128i *)(void *)(p)[0].f, _mm256_castsi256_si128(v)),            \
+     _mm_storeu_si128((__m128i *)(void *)(p)[1].f, _mm256_extracti128_si256((v), 1)))
+
+/* |x| as 64-bit integers (the sign bit cleared) */
+static inline __attribute__((always_inline)) RT_AVX512 __m512i rt_v8abits(__m512d x)
+{
+    return _mm512_and_si512(_mm512_castpd_si512(x), _mm512_set1_epi64(INT64_MAX));
+}
+
+/* rt_kdop4 in 8 lanes */
+static inline __attribute__((always_inline)) RT_AVX512 void
+rt_kdop8(const rt_grid *g, const __m512d o[3], const __m512d d[3], __m512d *t0, __m512d *t1,
+         __mmask8 *par)
+{
+    __m512d po[RT_KDOP], pd[RT_KDOP];
+    RT_KDOP_PROJ(po, o[0], o[1], o[2]);
+    RT_KDOP_PROJ(pd, d[0], d[1], d[2]);
+    const __m512d one = _mm512_set1_pd(1.0);
+    const __m512d dn = _mm512_mul_pd(
+        _mm512_set1_pd(RT_KDOP_PAR),
+        _mm512_add_pd(_mm512_add_pd(_mm512_abs_pd(d[0]), _mm512_abs_pd(d[1])),
+                      _mm512_abs_pd(d[2])));
+    __m512d k0 = *t0, k1 = *t1;
+    __mmask8 pm = 0;
+#pragma GCC unroll 10
+    for (int j = 0; j < RT_KDOP; j++) {
+        const __m512d pj = pd[j], oj = po[j];
+        const __mmask8 pl = _mm512_cmp_pd_mask(_mm512_abs_pd(pj), dn, _CMP_LT_OQ);
+        pm |= pl;
+        const __m512d iv = _mm512_div_pd(one, _mm512_mask_blend_pd(pl, pj, one));
+        const __m512d ta = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(g->kd_lo[j]), oj), iv);
+        const __m512d tb = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(g->kd_hi[j]), oj), iv);
+        k0 = _mm512_max_pd(_mm512_min_pd(ta, tb), k0);
+        k1 = _mm512_min_pd(_mm512_max_pd(ta, tb), k1);
+    }
+    *t0 = k0;
+    *t1 = k1;
+    *par = pm;
+}
+
+/* rt_shear4 in 8 lanes (kz, kx, ky and the order in 32-bit lanes) */
+static inline __attribute__((always_inline)) RT_AVX512 void rt_shear8(const __m512d d[3],
+                                                                     rt_pre4 *p)
+{
+    const __m512d ax = _mm512_abs_pd(d[0]), ay = _mm512_abs_pd(d[1]), az = _mm512_abs_pd(d[2]);
+    const __mmask8 m1 = _mm512_cmp_pd_mask(ax, ay, _CMP_LT_OQ) |
+                        _mm512_cmp_pd_mask(ax, az, _CMP_LT_OQ),
+                   m2 = _mm512_cmp_pd_mask(ay, az, _CMP_LT_OQ);
+    const __mmask8 z1 = m1 & ~m2, z2 = m1 & m2; /* kz == 1, kz == 2 */
+    const __m512d dz = _mm512_mask_blend_pd(z2, _mm512_mask_blend_pd(z1, d[0], d[1]), d[2]);
+    const __mmask8 ng = _mm512_cmp_pd_mask(dz, _mm512_setzero_pd(), _CMP_LT_OQ);
+    const __m256i one = _mm256_set1_epi32(1), three = _mm256_set1_epi32(3);
+    const __m256i kz = _mm256_add_epi32(_mm256_maskz_mov_epi32(m1, one),
+                                        _mm256_maskz_mov_epi32(z2, one));
+    const __m256i n = _mm256_maskz_mov_epi32(ng, one);
+    __m256i kx = _mm256_add_epi32(_mm256_add_epi32(kz, one), n);
+    __m256i ky = _mm256_sub_epi32(_mm256_add_epi32(kz, _mm256_set1_epi32(2)), n);
+    kx = _mm256_mask_sub_epi32(kx, _mm256_cmpge_epi32_mask(kx, three), kx, three);
+    ky = _mm256_mask_sub_epi32(ky, _mm256_cmpge_epi32_mask(ky, three), ky, three);
+    const __mmask8 x1 = _mm256_cmpeq_epi32_mask(kx, one),
+                   x2 = _mm256_cmpeq_epi32_mask(kx, _mm256_set1_epi32(2)),
+                   y1 = _mm256_cmpeq_epi32_mask(ky, one),
+                   y2 = _mm256_cmpeq_epi32_mask(ky, _mm256_set1_epi32(2));
+    const __m512d dx = _mm512_mask_blend_pd(x2, _mm512_mask_blend_pd(x1, d[0], d[1]), d[2]);
+    const __m512d dy = _mm512_mask_blend_pd(y2, _mm512_mask_blend_pd(y1, d[0], d[1]), d[2]);
+    const __m512d sz = _mm512_div_pd(_mm512_set1_pd(1.0), dz), sx = _mm512_mul_pd(dx, sz),
+                  sy = _mm512_mul_pd(dy, sz);
+    const __m256i ord = _mm256_add_epi32(_mm256_add_epi32(kz, kz), n);
+    RT_ST8I(p, ord, ord);
+    RT_ST8I(p, kx, kx);
+    RT_ST8I(p, ky, ky);
+    RT_ST8I(p, kz, kz);
+    RT_ST8D(p, sx, sx);
+    RT_ST8D(p, sy, sy);
+    RT_ST8D(p, sz, sz);
+}
+
+/* the eight rays' records in lanes: org[0..2], dir[0..2], tmin, tmax as v[0..7] (rays j and
+   j + 4 in the halves of a register, two unpacks and a permutation of two per field pair) */
+static inline __attribute__((always_inline)) RT_AVX512 void rt_rays8(const rt_ray *ray,
+                                                                    __m512d v[8])
+{
+    __m512d a[4], b[4];
+#pragma GCC unroll 4
+    for (int j = 0; j < 4; j++) {
+        const double *r = (const double *)(const void *)(ray + j);
+        const double *s = (const double *)(const void *)(ray + j + 4);
+        a[j] = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(r)),
+                                  _mm256_loadu_pd(s), 1);
+        b[j] = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(r + 4)),
+                                  _mm256_loadu_pd(s + 4), 1);
+    }
+    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13),
+                  hi = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+#pragma GCC unroll 2
+    for (int h = 0; h < 2; h++) {
+        const __m512d *x = h ? b : a;
+        const __m512d l01 = _mm512_unpacklo_pd(x[0], x[1]), h01 = _mm512_unpackhi_pd(x[0], x[1]);
+        const __m512d l23 = _mm512_unpacklo_pd(x[2], x[3]), h23 = _mm512_unpackhi_pd(x[2], x[3]);
+        v[4 * h + 0] = _mm512_permutex2var_pd(l01, lo, l23);
+        v[4 * h + 1] = _mm512_permutex2var_pd(h01, lo, h23);
+        v[4 * h + 2] = _mm512_permutex2var_pd(l01, hi, l23);
+        v[4 * h + 3] = _mm512_permutex2var_pd(h01, hi, h23);
+    }
+}
+
+static __attribute__((noinline)) RT_AVX512 void rt_setup8_avx512(const rt_grid *g,
+                                                                const rt_ray *ray, rt_pre4 *p)
+{
+    __m512d v[8];
+    rt_rays8(ray, v);
+    __m512d o[3] = {v[0], v[1], v[2]}, d[3] = {v[3], v[4], v[5]}, tmin = v[6], tmax = v[7];
+    const double lim[3] = {RT_RAY_MAX, 1e-100, INFINITY};
+    int64_t blim[3];
+    memcpy(blim, lim, sizeof blim);
+    const __m512i vbig = _mm512_set1_epi64(blim[0]), vsmall = _mm512_set1_epi64(blim[1]),
+                  vinf = _mm512_set1_epi64(blim[2]);
+    const __m512i ad0 = rt_v8abits(d[0]), ad1 = rt_v8abits(d[1]), ad2 = rt_v8abits(d[2]);
+    __mmask8 bad = _mm512_cmpgt_epi64_mask(ad0, vbig) | _mm512_cmpgt_epi64_mask(ad1, vbig) |
+                   _mm512_cmpgt_epi64_mask(ad2, vbig) |
+                   _mm512_cmpgt_epi64_mask(rt_v8abits(o[0]), vbig) |
+                   _mm512_cmpgt_epi64_mask(rt_v8abits(o[1]), vbig) |
+                   _mm512_cmpgt_epi64_mask(rt_v8abits(o[2]), vbig) |
+                   _mm512_cmpgt_epi64_mask(rt_v8abits(tmin), vbig) |
+                   _mm512_cmpgt_epi64_mask(rt_v8abits(tmax), vinf) |
+                   (_mm512_cmplt_epi64_mask(ad0, vsmall) & _mm512_cmplt_epi64_mask(ad1, vsmall) &
+                    _mm512_cmplt_epi64_mask(ad2, vsmall));
+    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
+    const __m512i dm = _mm512_max_epi64(_mm512_max_epi64(ad0, ad1), ad2);
+    const __m512i tiny = rt_v8abits(_mm512_mul_pd(
+        _mm512_set1_pd(1e-150), _mm512_mask_blend_pd(bad, _mm512_castsi512_pd(dm), one)));
+    bad |= _mm512_cmplt_epi64_mask(ad0, tiny) | _mm512_cmplt_epi64_mask(ad1, tiny) |
+           _mm512_cmplt_epi64_mask(ad2, tiny);
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        o[a] = _mm512_mask_blend_pd(bad, o[a], zero);
+        d[a] = _mm512_mask_blend_pd(bad, d[a], one);
+    }
+    tmin = _mm512_mask_blend_pd(bad, tmin, zero);
+    tmax = _mm512_mask_blend_pd(bad, tmax, one);
+    bad |= _mm512_cmp_pd_mask(tmin, tmax, _CMP_GT_OQ);
+    const __m512d din[3] = {d[0], d[1], d[2]};
+    const rt_box *b = &g->b;
+    if (g->rotated) {
+        __m512d q[3], gd[3];
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++)
+            q[a] = _mm512_sub_pd(o[a], _mm512_set1_pd(g->c[a]));
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            const __m512d r0 = _mm512_set1_pd(g->R[a][0]), r1 = _mm512_set1_pd(g->R[a][1]),
+                          r2 = _mm512_set1_pd(g->R[a][2]);
+            gd[a] = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r0, d[0]), _mm512_mul_pd(r1, d[1])),
+                                  _mm512_mul_pd(r2, d[2]));
+            o[a] = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r0, q[0]), _mm512_mul_pd(r1, q[1])),
+                                 _mm512_mul_pd(r2, q[2]));
+        }
+        const __m512i g0 = rt_v8abits(gd[0]), g1 = rt_v8abits(gd[1]), g2 = rt_v8abits(gd[2]);
+        const __m512i gm = _mm512_max_epi64(_mm512_max_epi64(g0, g1), g2);
+        const __m512i gt =
+            rt_v8abits(_mm512_mul_pd(_mm512_set1_pd(1e-150), _mm512_castsi512_pd(gm)));
+        bad |= _mm512_cmplt_epi64_mask(g0, gt) | _mm512_cmplt_epi64_mask(g1, gt) |
+               _mm512_cmplt_epi64_mask(g2, gt);
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; a++) {
+            o[a] = _mm512_mask_blend_pd(bad, o[a], zero);
+            d[a] = _mm512_mask_blend_pd(bad, gd[a], one);
+        }
+    }
+    __m512d invd[3], t0 = tmin, t1 = tmax;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        invd[a] = _mm512_div_pd(one, d[a]);
+        const __m512d ta = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(b->lo[a]), o[a]), invd[a]);
+        const __m512d tb = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(b->hi[a]), o[a]), invd[a]);
+        t0 = _mm512_max_pd(_mm512_min_pd(ta, tb), t0);
+        t1 = _mm512_min_pd(_mm512_max_pd(ta, tb), t1);
+    }
+    __mmask8 in = _mm512_cmp_pd_mask(t0, t1, _CMP_LE_OQ) &
+                  _mm512_cmplt_epi64_mask(rt_v8abits(t0), vinf);
+    const __m256i one32 = _mm256_set1_epi32(1);
+    if (!(in & ~bad)) {
+        const __m256i st = _mm256_maskz_mov_epi32((__mmask8)~bad, one32);
+        RT_ST8I(p, state, st);
+        return;
+    }
+    __mmask8 par;
+    rt_kdop8(g, o, d, &t0, &t1, &par);
+    bad |= par;
+    in = _mm512_cmp_pd_mask(t0, t1, _CMP_LE_OQ) & _mm512_cmplt_epi64_mask(rt_v8abits(t0), vinf);
+    const __m256i st = _mm256_maskz_mov_epi32(
+        (__mmask8)~bad, _mm256_mask_blend_epi32(in, one32, _mm256_set1_epi32(2)));
+    RT_ST8I(p, state, st);
+    if (!(in & ~bad))
+        return;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        RT_ST8D(p, o[a], o[a]);
+        RT_ST8D(p, d[a], d[a]);
+    }
+    t0 = _mm512_maskz_mov_pd(in, t0);
+    __m256i neg = _mm256_setzero_si256(), cs[3], ss[3];
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        const __m512d na = _mm512_set1_pd((double)b->n[a] - 1.0);
+        const __m512d lo = _mm512_set1_pd(b->lo[a]), icw = _mm512_set1_pd(b->inv_cw[a]),
+                      cw = _mm512_set1_pd(b->cw[a]);
+        const __m512d pa = _mm512_add_pd(o[a], _mm512_mul_pd(t0, d[a]));
+        __m512d f = _mm512_mul_pd(_mm512_sub_pd(pa, lo), icw);
+        f = _mm512_min_pd(_mm512_max_pd(f, zero), na);
+        const __m256i c = _mm512_cvttpd_epi32(f);
+        const __mmask8 pos = _mm512_cmp_pd_mask(d[a], zero, _CMP_GT_OQ);
+        const __m512d bd = _mm512_add_pd(_mm512_cvtepi32_pd(c), _mm512_maskz_mov_pd(pos, one));
+        const __m512d nd = _mm512_add_pd(na, one);
+        const __m512d x = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(bd, nd, _CMP_EQ_OQ),
+                                               _mm512_add_pd(lo, _mm512_mul_pd(bd, cw)),
+                                               _mm512_set1_pd(b->hi[a]));
+        const __m512d tn = _mm512_mul_pd(_mm512_sub_pd(x, o[a]), invd[a]);
+        const __m512d dt = _mm512_mul_pd(cw, _mm512_abs_pd(invd[a])),
+                      it = _mm512_mul_pd(_mm512_abs_pd(d[a]), icw);
+        RT_ST8I(p, c[a], c);
+        RT_ST8D(p, invd[a], invd[a]);
+        RT_ST8D(p, tn[a], tn);
+        RT_ST8D(p, dt[a], dt);
+        RT_ST8D(p, it[a], it);
+        /* d[a] < 0 is its sign bit here (no lane in state 2 has a component 0 or NaN) */
+        const __mmask8 ng = _mm512_movepi64_mask(_mm512_castpd_si512(d[a]));
+        neg = _mm256_mask_or_epi32(neg, ng, neg, _mm256_set1_epi32(1 << a));
+        const __m256i step = _mm256_mask_blend_epi32(ng, one32, _mm256_set1_epi32(-1));
+        RT_ST8I(p, step[a], step);
+        cs[a] = c;
+        ss[a] = step;
+    }
+    const __m256i n0 = _mm256_set1_epi32(b->n[0]), n1 = _mm256_set1_epi32(b->n[1]),
+                  n01 = _mm256_set1_epi32(b->n[0] * b->n[1]);
+    const __m256i ci = _mm256_add_epi32(
+        _mm256_mullo_epi32(_mm256_add_epi32(_mm256_mullo_epi32(cs[2], n1), cs[1]), n0), cs[0]);
+    const __m256i dy = _mm256_mullo_epi32(ss[1], n0), dz = _mm256_mullo_epi32(ss[2], n01);
+    RT_ST8I(p, ci, ci);
+    RT_ST8I(p, dy, dy);
+    RT_ST8I(p, dz, dz);
+    RT_ST8D(p, t0, t0);
+    RT_ST8D(p, t1, t1);
+    RT_ST8I(p, oct, neg);
+    rt_shear8(din, p);
+}
+#undef RT_ST8D
+#undef RT_ST8I
 #endif
 
 typedef void (*rt_setup4_fn)(const rt_grid *g, const rt_ray *ray, rt_pre4 *p);
+
+/* the batch's set-up: four rays into p[0] (four), and where the CPU has AVX-512 eight rays
+   into p[0] and p[1] (eight; else NULL) */
+typedef struct rt_setup {
+    rt_setup4_fn four, eight;
+} rt_setup;
 
 #ifdef RT_SETUP4_AVX2
 /* the CPU's level, read once per process as the packet path's (rt_simd_level reads the
@@ -787,18 +1056,21 @@ static void rt_setup4_pick(void)
 }
 #endif
 
-/* the four-ray set-up where the CPU has AVX2 and GKS_RT_SIMD allows it (rt_simd_level), with a
+/* the four-ray set-up where the CPU has AVX2 and GKS_RT_SIMD allows it (rt_simd_level), and the
+   eight-ray one where it has AVX-512 (level 3), with a
    grid of fewer than 2^31 top cells (rt_pre4's 32-bit cell indices; a grid that large, with
    its 4-byte offset per cell, is far beyond what the build chooses); otherwise NULL: every ray
    through the one-ray code. The same lanes in the build's own
    SSE2 (two registers of 2, no 64-bit compare) cost more than the one-ray code: 1400
    instructions per four rays against 360 (docs/bench/rt_tuning.md). */
-static rt_setup4_fn rt_setup4_choose(const rt_scene *sc)
+static const rt_setup *rt_setup4_choose(const rt_scene *sc)
 {
 #ifdef RT_SETUP4_AVX2
+    static const rt_setup avx2 = {rt_setup4_avx2, NULL},
+                          avx512 = {rt_setup4_avx2, rt_setup8_avx512};
     pthread_once(&rt_setup4_once, rt_setup4_pick);
     if (sc->use_grid && rt_setup4_level >= 2 && sc->grid.ncells < (size_t)INT32_MAX)
-        return rt_setup4_avx2;
+        return rt_setup4_level >= 3 ? &avx512 : &avx2;
 #else
     (void)sc;
 #endif
@@ -1929,6 +2201,19 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         rt_miss_hit(h);
 }
 
+/* the set-up of rays k.. of n (n - k >= 4) into p: eight rays where su has the eight-ray set-up
+   and eight are left, else four; the number of records filled (2 or 1) */
+static inline int rt_setup_next(const rt_setup *su, const rt_grid *g, const rt_ray *rays,
+                                size_t k, size_t n, rt_pre4 p[2])
+{
+    if (su->eight && k + 8 <= n) {
+        su->eight(g, rays + k, p);
+        return 2;
+    }
+    su->four(g, rays + k, p);
+    return 1;
+}
+
 /* 1 if every lane of a four-ray set-up is a usable ray that misses (state 1) */
 static inline int rt_pre4_all_miss(const rt_pre4 *p)
 {
@@ -1941,21 +2226,23 @@ static inline int rt_pre4_all_miss(const rt_pre4 *p)
 
 /* rt_intersect's rays (setup4: NULL, or the four-ray set-up; mesh: rt_mesh_only's) */
 RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
-                                 rt_hit *hits, rt_setup4_fn setup4, int mesh)
+                                 rt_hit *hits, const rt_setup *setup4, int mesh)
 {
     size_t k = 0;
     if (setup4) {
         const rt_topgrid tg = rt_topgrid_of(&sc->grid);
-        rt_pre4 p;
-        for (; k + 4 <= n; k += 4) {
-            setup4(&sc->grid, rays + k, &p);
-            if (rt_pre4_all_miss(&p)) { /* rows of eye rays beside the scene */
+        rt_pre4 p[2];
+        while (k + 4 <= n) {
+            const int m = rt_setup_next(setup4, &sc->grid, rays, k, n, p);
+            for (int h = 0; h < m; h++, k += 4) {
+                if (rt_pre4_all_miss(p + h)) { /* rows of eye rays beside the scene */
+                    for (int j = 0; j < 4; j++)
+                        rt_miss_hit(hits + k + j);
+                    continue;
+                }
                 for (int j = 0; j < 4; j++)
-                    rt_miss_hit(hits + k + j);
-                continue;
+                    rt_intersect_one(sc, c, rays + k + j, hits + k + j, &tg, p + h, j, mesh);
             }
-            for (int j = 0; j < 4; j++)
-                rt_intersect_one(sc, c, rays + k + j, hits + k + j, &tg, &p, j, mesh);
         }
     }
     for (; k < n; k++)
@@ -1964,7 +2251,7 @@ RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const 
 
 static __attribute__((noinline)) void rt_intersect_any(const rt_scene *sc, rt_ctx *c, size_t n,
                                                        const rt_ray *rays, rt_hit *hits,
-                                                       rt_setup4_fn setup4)
+                                                       const rt_setup *setup4)
 {
     rt_intersect_rays(sc, c, n, rays, hits, setup4, 0);
 }
@@ -1973,7 +2260,7 @@ static __attribute__((noinline)) void rt_intersect_any(const rt_scene *sc, rt_ct
    level's too in AVX2's encoding (RT_ANYHIT_TARGET: the CPU has AVX2 and BMI here) */
 static __attribute__((noinline)) RT_ANYHIT_TARGET void
 rt_intersect_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays, rt_hit *hits,
-                  rt_setup4_fn setup4)
+                  const rt_setup *setup4)
 {
     rt_intersect_rays(sc, c, n, rays, hits, setup4, 1);
 }
@@ -1984,7 +2271,7 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
     const int rc = rt_batch_begin(sc, n, rays, hits, &c);
     if (rc != RT_OK)
         return rc;
-    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    const rt_setup *setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     if (rt_mesh_only(sc))
         rt_intersect_mesh(sc, &c, n, rays, hits, setup4);
     else
@@ -2049,29 +2336,32 @@ static __attribute__((noinline)) unsigned char rt_occluded_apart(const rt_scene 
    in AVX2's encoding: the set-up's rays take the top walk of their axis order */
 static __attribute__((noinline)) RT_ANYHIT_TARGET void
 rt_occluded_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
-                 unsigned char *occluded, rt_setup4_fn setup4)
+                 unsigned char *occluded, const rt_setup *setup4)
 {
     size_t k = 0;
     if (setup4) {
-        rt_pre4 p;
+        rt_pre4 pp[2];
         const rt_topgrid tg = rt_topgrid_of(&sc->grid);
-        for (; k + 4 <= n; k += 4) {
-            setup4(&sc->grid, rays + k, &p);
-            for (int j = 0; j < 4; j++) {
-                unsigned char o = 0;
-                if (p.state[j] == 2) {
-                    c->blocker = -1;
-                    rt_rayx r;
-                    rt_walkstate w;
-                    rt_pre_ray(&r, &w.gr, &p, j, rays + k + j);
-                    rt_walkstate_init(&w, sc, c, &r, RT_ANY_MESH);
-                    w.vnmask = ~sc->vmask;
-                    rt_walk_flat_init(&w, sc, &r);
-                    w.stamp = rt_ctx_next(c);
-                    o = (unsigned char)rt_occ_top[p.ord[j]](&w, &tg, &p, j);
-                } else if (p.state[j] == 0)
-                    o = rt_occluded_apart(sc, c, rays + k + j);
-                occluded[k + j] = o;
+        while (k + 4 <= n) {
+            const int m = rt_setup_next(setup4, &sc->grid, rays, k, n, pp);
+            for (int h = 0; h < m; h++, k += 4) {
+                const rt_pre4 *p = pp + h;
+                for (int j = 0; j < 4; j++) {
+                    unsigned char o = 0;
+                    if (p->state[j] == 2) {
+                        c->blocker = -1;
+                        rt_rayx r;
+                        rt_walkstate w;
+                        rt_pre_ray(&r, &w.gr, p, j, rays + k + j);
+                        rt_walkstate_init(&w, sc, c, &r, RT_ANY_MESH);
+                        w.vnmask = ~sc->vmask;
+                        rt_walk_flat_init(&w, sc, &r);
+                        w.stamp = rt_ctx_next(c);
+                        o = (unsigned char)rt_occ_top[p->ord[j]](&w, &tg, p, j);
+                    } else if (p->state[j] == 0)
+                        o = rt_occluded_apart(sc, c, rays + k + j);
+                    occluded[k + j] = o;
+                }
             }
         }
     }
@@ -2103,7 +2393,7 @@ static int rt_anyhit_kind(const rt_scene *sc)
 void rt_occluded_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
                       unsigned char *occluded)
 {
-    const rt_setup4_fn setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
+    const rt_setup *setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     const int ah = rt_anyhit_kind(sc);
     if (ah == RT_ANY_MESH) {
         rt_occluded_mesh(sc, c, n, rays, occluded, setup4);
@@ -2112,11 +2402,12 @@ void rt_occluded_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *ray
     size_t k = 0;
     if (setup4) {
         const rt_topgrid tg = rt_topgrid_of(&sc->grid);
-        rt_pre4 p;
-        for (; k + 4 <= n; k += 4) {
-            setup4(&sc->grid, rays + k, &p);
-            for (int j = 0; j < 4; j++)
-                occluded[k + j] = rt_occluded_one(sc, c, rays + k + j, &tg, &p, j, ah);
+        rt_pre4 p[2];
+        while (k + 4 <= n) {
+            const int m = rt_setup_next(setup4, &sc->grid, rays, k, n, p);
+            for (int h = 0; h < m; h++, k += 4)
+                for (int j = 0; j < 4; j++)
+                    occluded[k + j] = rt_occluded_one(sc, c, rays + k + j, &tg, p + h, j, ah);
         }
     }
     for (; k < n; k++)
