@@ -332,6 +332,99 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_cull_any_avx2(const rt_pk 
 {
     return rt_pk_cull_avx2_body(p, v0, v1, v2, mask, 1, sure);
 }
+
+/* AVX-512 (F, VL, DQ; no FMA): the AVX2 kernel's operations on 8 rays at a time, in mask
+   registers. The lanes of rays not in mask are loaded as 0 (masked loads: harmless values,
+   never in the result). */
+#define RT_PK_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
+static inline RT_PK_AVX512 __attribute__((always_inline)) uint64_t
+rt_pk_cull_avx512_body(const rt_pk *p, const double *v0, const double *v1, const double *v2,
+                       uint64_t mask, const int any, uint64_t *sure)
+{
+    const int kx = p->kx, ky = p->ky, kz = p->kz;
+    const __m512d ax = _mm512_set1_pd(v0[kx]), ay = _mm512_set1_pd(v0[ky]), az = _mm512_set1_pd(v0[kz]);
+    const __m512d bx = _mm512_set1_pd(v1[kx]), by = _mm512_set1_pd(v1[ky]), bz = _mm512_set1_pd(v1[kz]);
+    const __m512d cx = _mm512_set1_pd(v2[kx]), cy = _mm512_set1_pd(v2[ky]), cz = _mm512_set1_pd(v2[kz]);
+    const __m512d z = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
+    uint64_t out = 0, hit = 0;
+    /* the 8-ray steps with a ray of mask: bit 8s set for step s */
+    uint64_t st = mask | mask >> 1;
+    st |= st >> 2;
+    st = (st | st >> 4) & UINT64_C(0x0101010101010101);
+    for (; st; st &= st - 1) {
+        const int k = __builtin_ctzll(st);
+        const __mmask8 lm = (__mmask8)(mask >> k);
+        const __m512d ox = _mm512_maskz_loadu_pd(lm, p->ox + k),
+                      oy = _mm512_maskz_loadu_pd(lm, p->oy + k),
+                      oz = _mm512_maskz_loadu_pd(lm, p->oz + k),
+                      sx = _mm512_maskz_loadu_pd(lm, p->sx + k),
+                      sy = _mm512_maskz_loadu_pd(lm, p->sy + k);
+        const __m512d Az = _mm512_sub_pd(az, oz), Bz = _mm512_sub_pd(bz, oz),
+                      Cz = _mm512_sub_pd(cz, oz);
+        const __m512d Ax = _mm512_sub_pd(_mm512_sub_pd(ax, ox), _mm512_mul_pd(sx, Az));
+        const __m512d Ay = _mm512_sub_pd(_mm512_sub_pd(ay, oy), _mm512_mul_pd(sy, Az));
+        const __m512d Bx = _mm512_sub_pd(_mm512_sub_pd(bx, ox), _mm512_mul_pd(sx, Bz));
+        const __m512d By = _mm512_sub_pd(_mm512_sub_pd(by, oy), _mm512_mul_pd(sy, Bz));
+        const __m512d Cx = _mm512_sub_pd(_mm512_sub_pd(cx, ox), _mm512_mul_pd(sx, Cz));
+        const __m512d Cy = _mm512_sub_pd(_mm512_sub_pd(cy, oy), _mm512_mul_pd(sy, Cz));
+        const __m512d U = _mm512_sub_pd(_mm512_mul_pd(Cx, By), _mm512_mul_pd(Cy, Bx));
+        const __m512d V = _mm512_sub_pd(_mm512_mul_pd(Ax, Cy), _mm512_mul_pd(Ay, Cx));
+        const __m512d W = _mm512_sub_pd(_mm512_mul_pd(Bx, Ay), _mm512_mul_pd(By, Ax));
+        /* kept: as the AVX2 kernel (a zero or NaN edge function, or three equal sign bits) */
+        const __mmask8 zb = _mm512_cmp_pd_mask(U, z, _CMP_EQ_UQ) |
+                            _mm512_cmp_pd_mask(V, z, _CMP_EQ_UQ) |
+                            _mm512_cmp_pd_mask(W, z, _CMP_EQ_UQ);
+        const __mmask8 differ = _mm512_movepi64_mask(_mm512_castpd_si512(
+            _mm512_or_pd(_mm512_xor_pd(U, V), _mm512_xor_pd(U, W))));
+        unsigned keep = zb;
+        if (!any)
+            keep |= (unsigned)(__mmask8)~differ;
+        else {
+            /* the rays of mask whose edge functions are non-zero with one sign: the exact
+               test's det, T, t and range test, as the AVX2 kernel (other lanes: U = V = W =
+               1, Az = Bz = Cz = sz = 0, harmless) */
+            const __mmask8 ss = (__mmask8)(~differ & ~zb & lm);
+            if (ss) {
+                const __m512d u = _mm512_mask_blend_pd(ss, one, U),
+                              vv = _mm512_mask_blend_pd(ss, one, V),
+                              w = _mm512_mask_blend_pd(ss, one, W);
+                const __m512d sz = _mm512_maskz_loadu_pd(ss, p->sz + k);
+                const __m512d az2 = _mm512_maskz_mov_pd(ss, Az), bz2 = _mm512_maskz_mov_pd(ss, Bz),
+                              cz2 = _mm512_maskz_mov_pd(ss, Cz);
+                const __m512d det = _mm512_add_pd(_mm512_add_pd(u, vv), w);
+                const __m512d T = _mm512_add_pd(
+                    _mm512_add_pd(_mm512_mul_pd(u, _mm512_mul_pd(sz, az2)),
+                                  _mm512_mul_pd(vv, _mm512_mul_pd(sz, bz2))),
+                    _mm512_mul_pd(w, _mm512_mul_pd(sz, cz2)));
+                const __m512d t = _mm512_div_pd(T, det);
+                const __mmask8 h =
+                    _mm512_mask_cmp_pd_mask(ss, t, _mm512_maskz_loadu_pd(ss, p->tn + k), _CMP_GE_OQ) &
+                    _mm512_mask_cmp_pd_mask(ss, t, _mm512_maskz_loadu_pd(ss, p->tx + k), _CMP_LE_OQ);
+                keep |= h;
+                hit |= (uint64_t)h << k;
+            }
+        }
+        out |= (uint64_t)(keep & 0xffu) << k;
+    }
+    *sure = hit & mask;
+    return out & mask;
+}
+
+RT_PK_AVX512 static uint64_t rt_pk_cull_avx512(const rt_pk *p, const double *v0,
+                                                const double *v1, const double *v2,
+                                                uint64_t mask)
+{
+    uint64_t sure;
+    return rt_pk_cull_avx512_body(p, v0, v1, v2, mask, 0, &sure);
+}
+
+/* the any-hit kernel: the rays to give the exact test; the hits it found in *sure */
+RT_PK_AVX512 static uint64_t rt_pk_cull_any_avx512(const rt_pk *p, const double *v0,
+                                                    const double *v1, const double *v2,
+                                                    uint64_t mask, uint64_t *sure)
+{
+    return rt_pk_cull_avx512_body(p, v0, v1, v2, mask, 1, sure);
+}
 #endif
 
 /* the kernel for this CPU, or the one GKS_RT_SIMD forces (rt_simd_level, as the leaves) */
@@ -339,6 +432,10 @@ static rt_pk_cull_fn rt_pk_kernel(const char **name)
 {
     const int level = rt_simd_level();
 #ifdef RT_PK_X86
+    if (level >= 3) {
+        *name = "avx512";
+        return rt_pk_cull_avx512;
+    }
     if (level >= 2) {
         *name = "avx2";
         return rt_pk_cull_avx2;
@@ -362,11 +459,14 @@ const char *rt_packet_kernel_name(void)
 static rt_pk_cull_fn rt_pk_cull;
 static pthread_once_t rt_pk_once = PTHREAD_ONCE_INIT;
 static const char *rt_pk_cull_name;
-static int rt_pk_avx2; /* the AVX2 kernel was chosen: the set-up's box test is AVX2 too */
+static int rt_pk_avx2;   /* the AVX2 or AVX-512 kernel was chosen: the set-up's box test,
+                            the frustum's and the steps' are AVX2 (or AVX-512) too */
+static int rt_pk_avx512; /* the AVX-512 kernel was chosen (rt_simd_level() >= 3) */
 static void rt_pk_choose(void)
 {
     rt_pk_cull = rt_pk_kernel(&rt_pk_cull_name);
-    rt_pk_avx2 = !strcmp(rt_pk_cull_name, "avx2");
+    rt_pk_avx512 = !strcmp(rt_pk_cull_name, "avx512");
+    rt_pk_avx2 = rt_pk_avx512 || !strcmp(rt_pk_cull_name, "avx2");
 }
 
 /* ---- set-up ---- */
@@ -894,6 +994,200 @@ __attribute__((target("avx2"))) static int rt_pk_setup_rot_avx2(rt_pk *p, const 
 {
     return rt_pk_setup_avx2_body(p, rays, 1);
 }
+
+/* rt_pk_setup_avx2_body with AVX-512: 8 rays a step (n a multiple of 8), the same checks and
+   operations per lane, in mask registers */
+static inline RT_PK_AVX512 __attribute__((always_inline)) int
+rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
+{
+    const rt_grid *g = &p->sc->grid;
+    const rt_box *b = &g->b;
+    const int n = p->n, any = p->any;
+    /* the packet's axes from ray 0 (rt_rayx_shear's rule), its octant in the grid frame */
+    const double *d0 = rays[0].dir;
+    const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
+    const int kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
+    const int neg = d0[kz] < 0.0;
+    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
+    const int kx = next[neg][kz][0], ky = next[neg][kz][1];
+    double gd0[3] = {d0[0], d0[1], d0[2]};
+    if (rotated)
+        rt_grid_dir(g, d0, gd0);
+    const int sgn[3] = {gd0[0] < 0.0, gd0[1] < 0.0, gd0[2] < 0.0};
+    int K = kz;
+    if (rotated) {
+        const double gx = fabs(gd0[0]), gy = fabs(gd0[1]), gz = fabs(gd0[2]);
+        K = gx >= gy && gx >= gz ? 0 : (gy >= gz ? 1 : 2);
+    }
+    const int a1 = (K + 1) % 3, a2 = (K + 2) % 3;
+    const double lim[3] = {1e30, 1e-100, INFINITY};
+    int64_t blim[3];
+    memcpy(blim, lim, sizeof blim);
+    const __m512i absm = _mm512_set1_epi64(INT64_MAX);
+    const __m512i big = _mm512_set1_epi64(blim[0]), small = _mm512_set1_epi64(blim[1]),
+                  inf = _mm512_set1_epi64(blim[2]);
+    const __m512d one = _mm512_set1_pd(1.0), sg = _mm512_set1_pd(sgn[K] ? -1.0 : 1.0);
+    const __m512d pinf = _mm512_set1_pd(INFINITY), ninf = _mm512_set1_pd(-INFINITY);
+    const __mmask8 negk = neg ? 0xff : 0;
+    __m512d usmin = pinf, usmax = ninf, uemin = pinf, uemax = ninf;
+    uint64_t live = 0;
+    for (int k = 0; k < n; k += 8) {
+        const rt_ray *q = rays + k;
+        /* 8 x 8 transpose: v[0..7] = o0, o1, o2, d0, d1, d2, tmin, tmax of the eight rays */
+        __m512d r[8], t[8], h[8], v[8];
+        for (int j = 0; j < 8; j++)
+            r[j] = _mm512_loadu_pd(q[j].org); /* org, dir, tmin, tmax: 8 doubles */
+        for (int j = 0; j < 4; j++) { /* t[2j]: even components of rays 2j, 2j+1; t[2j+1] odd */
+            t[2 * j] = _mm512_unpacklo_pd(r[2 * j], r[2 * j + 1]);
+            t[2 * j + 1] = _mm512_unpackhi_pd(r[2 * j], r[2 * j + 1]);
+        }
+        for (int e = 0; e < 2; e++) { /* per parity e: rays 0-3 and 4-7 by 256-bit halves */
+            h[4 * e + 0] = _mm512_shuffle_f64x2(t[e], t[2 + e], 0x44);
+            h[4 * e + 1] = _mm512_shuffle_f64x2(t[4 + e], t[6 + e], 0x44);
+            h[4 * e + 2] = _mm512_shuffle_f64x2(t[e], t[2 + e], 0xee);
+            h[4 * e + 3] = _mm512_shuffle_f64x2(t[4 + e], t[6 + e], 0xee);
+        }
+        for (int e = 0; e < 2; e++) {
+            v[e] = _mm512_shuffle_f64x2(h[4 * e], h[4 * e + 1], 0x88);
+            v[2 + e] = _mm512_shuffle_f64x2(h[4 * e], h[4 * e + 1], 0xdd);
+            v[4 + e] = _mm512_shuffle_f64x2(h[4 * e + 2], h[4 * e + 3], 0x88);
+            v[6 + e] = _mm512_shuffle_f64x2(h[4 * e + 2], h[4 * e + 3], 0xdd);
+        }
+        __mmask8 bad = 0;
+        for (int c = 0; c < 7; c++) {
+            const __m512i a = _mm512_and_si512(_mm512_castpd_si512(v[c]), absm);
+            bad |= _mm512_cmpgt_epi64_mask(a, big);
+            if (c >= 3 && c < 6)
+                bad |= _mm512_cmpgt_epi64_mask(small, a);
+        }
+        bad |= _mm512_cmpgt_epi64_mask(_mm512_and_si512(_mm512_castpd_si512(v[7]), absm), inf);
+        if (bad)
+            return 0;
+        /* every value checked: floating operations from here on */
+        if (_mm512_cmp_pd_mask(v[6], v[7], _CMP_LE_OQ) != 0xff)
+            return 0;
+        const __m512d ax = _mm512_abs_pd(v[3]), ay = _mm512_abs_pd(v[4]), az = _mm512_abs_pd(v[5]);
+        const __mmask8 c1 = _mm512_cmp_pd_mask(ax, ay, _CMP_LT_OQ) |
+                            _mm512_cmp_pd_mask(ax, az, _CMP_LT_OQ);
+        const __mmask8 c2 = _mm512_cmp_pd_mask(ay, az, _CMP_LT_OQ);
+        if (kz == 0 ? c1 != 0 : (c1 != 0xff || c2 != (kz == 2 ? 0xff : 0)))
+            return 0; /* not the axes of ray 0 */
+        if (rotated && _mm512_movepi64_mask(_mm512_castpd_si512(v[3 + kz])) != negk)
+            return 0; /* (else the octant's check below) */
+        const __m512d sz = _mm512_div_pd(one, v[3 + kz]);
+        const __m512d sx = _mm512_mul_pd(v[3 + kx], sz), sy = _mm512_mul_pd(v[3 + ky], sz);
+        /* the ray in the grid frame: go[0..2], gd[0..2] (v's own on a grid not rotated) */
+        __m512d rv[6];
+#define RT_PK_GO(a) (rotated ? rv[a] : v[a])
+#define RT_PK_GD(a) (rotated ? rv[3 + (a)] : v[3 + (a)])
+        if (rotated) {
+            __m512d c3[3];
+            for (int a = 0; a < 3; a++)
+                c3[a] = _mm512_sub_pd(v[a], _mm512_set1_pd(g->c[a]));
+            for (int a = 0; a < 3; a++) {
+                const __m512d r0 = _mm512_set1_pd(g->R[a][0]), r1 = _mm512_set1_pd(g->R[a][1]),
+                              r2 = _mm512_set1_pd(g->R[a][2]);
+                rv[a] = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r0, c3[0]),
+                                                    _mm512_mul_pd(r1, c3[1])),
+                                      _mm512_mul_pd(r2, c3[2]));
+                rv[3 + a] = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r0, v[3]),
+                                                        _mm512_mul_pd(r1, v[4])),
+                                          _mm512_mul_pd(r2, v[5]));
+                const __m512i m = _mm512_and_si512(_mm512_castpd_si512(rv[3 + a]), absm);
+                if (_mm512_cmpgt_epi64_mask(m, big) | _mm512_cmpgt_epi64_mask(small, m))
+                    return 0; /* a component in the grid frame below 1e-100 */
+            }
+        }
+        for (int a = 0; a < 3; a++) /* the octant in the grid frame */
+            if (_mm512_movepi64_mask(_mm512_castpd_si512(RT_PK_GD(a))) != (sgn[a] ? 0xff : 0))
+                return 0;
+        /* the box (rt_pk_tbox4_body's operations) */
+        __m512d T0 = v[6], T1 = v[7];
+        for (int a = 0; a < 3; a++) {
+            const __m512d inv = _mm512_div_pd(one, RT_PK_GD(a));
+            const __m512d ta = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(b->lo[a]), RT_PK_GO(a)), inv);
+            const __m512d tb = _mm512_mul_pd(_mm512_sub_pd(_mm512_set1_pd(b->hi[a]), RT_PK_GO(a)), inv);
+            const __m512d tn = _mm512_min_pd(ta, tb), tf = _mm512_max_pd(tb, ta);
+            T0 = _mm512_max_pd(tn, T0);
+            T1 = _mm512_min_pd(tf, T1);
+        }
+        /* walked: t0 <= t1 and t0 finite (rt_pk_range) */
+        const __m512i a0 = _mm512_and_si512(_mm512_castpd_si512(T0), absm);
+        const __mmask8 in = _mm512_cmp_pd_mask(T0, T1, _CMP_LE_OQ) & _mm512_cmpgt_epi64_mask(inf, a0);
+        const __m512d oK = RT_PK_GO(K), dK = RT_PK_GD(K);
+        const __m512d us = _mm512_mul_pd(sg, _mm512_add_pd(oK, _mm512_mul_pd(T0, dK)));
+        const __m512d ue = _mm512_mul_pd(sg, _mm512_add_pd(oK, _mm512_mul_pd(T1, dK)));
+        __m512d m1, m2;
+        if (rotated) {
+            m1 = _mm512_div_pd(RT_PK_GD(a1), dK);
+            m2 = _mm512_div_pd(RT_PK_GD(a2), dK);
+        } else { /* K = kz; a1, a2 = kx, ky, swapped for a negative d[kz] (rt_pk_ray) */
+            m1 = neg ? sy : sx;
+            m2 = neg ? sx : sy;
+        }
+        /* rays not walked: 0 in every lane (harmless, never in a mask) */
+        _mm512_storeu_pd(p->ox + k, _mm512_maskz_mov_pd(in, v[kx]));
+        _mm512_storeu_pd(p->oy + k, _mm512_maskz_mov_pd(in, v[ky]));
+        _mm512_storeu_pd(p->oz + k, _mm512_maskz_mov_pd(in, v[kz]));
+        _mm512_storeu_pd(p->sx + k, _mm512_maskz_mov_pd(in, sx));
+        _mm512_storeu_pd(p->sy + k, _mm512_maskz_mov_pd(in, sy));
+        if (any) { /* the any-hit kernel's range test */
+            _mm512_storeu_pd(p->sz + k, _mm512_maskz_mov_pd(in, sz));
+            _mm512_storeu_pd(p->tn + k, _mm512_maskz_mov_pd(in, v[6]));
+            _mm512_storeu_pd(p->tx + k, _mm512_maskz_mov_pd(in, v[7]));
+        } else { /* the nearest hit's records (an any-hit packet's rays only end) */
+            _mm512_storeu_pd(p->t1 + k, T1);
+            _mm512_storeu_pd(p->best + k, pinf);
+            _mm512_storeu_pd(p->eb + k, _mm512_setzero_pd());
+        }
+        _mm512_storeu_pd(p->oK + k, _mm512_maskz_mov_pd(in, oK));
+        _mm512_storeu_pd(p->o1 + k, _mm512_maskz_mov_pd(in, RT_PK_GO(a1)));
+        _mm512_storeu_pd(p->o2 + k, _mm512_maskz_mov_pd(in, RT_PK_GO(a2)));
+#undef RT_PK_GO
+#undef RT_PK_GD
+        _mm512_storeu_pd(p->m1 + k, _mm512_maskz_mov_pd(in, m1));
+        _mm512_storeu_pd(p->m2 + k, _mm512_maskz_mov_pd(in, m2));
+        _mm512_storeu_pd(p->us + k, _mm512_maskz_mov_pd(in, us));
+        _mm512_storeu_pd(p->ue + k, _mm512_maskz_mov_pd(in, ue));
+        usmin = _mm512_min_pd(usmin, _mm512_mask_blend_pd(in, pinf, us));
+        usmax = _mm512_max_pd(usmax, _mm512_mask_blend_pd(in, ninf, us));
+        uemin = _mm512_min_pd(uemin, _mm512_mask_blend_pd(in, pinf, ue));
+        uemax = _mm512_max_pd(uemax, _mm512_mask_blend_pd(in, ninf, ue));
+        live |= (uint64_t)in << k;
+    }
+    p->usmin = _mm512_reduce_min_pd(usmin);
+    p->usmax = _mm512_reduce_max_pd(usmax);
+    p->uemin = _mm512_reduce_min_pd(uemin);
+    p->uemax = _mm512_reduce_max_pd(uemax);
+    p->live = live;
+    p->made = 0;
+    p->kx = kx;
+    p->ky = ky;
+    p->kz = kz;
+    p->K = K;
+    p->a1 = a1;
+    p->a2 = a2;
+    p->sg = sgn[K] ? -1 : 1;
+    for (int a = 0; a < 3; a++) {
+        p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
+        p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
+    }
+    if (!any) {
+        memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
+        memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
+    }
+    return 1; /* go, gd: set by rt_pk_make */
+}
+
+RT_PK_AVX512 static int rt_pk_setup_avx512(rt_pk *p, const rt_ray *rays)
+{
+    return rt_pk_setup_avx512_body(p, rays, 0);
+}
+
+RT_PK_AVX512 static int rt_pk_setup_rot_avx512(rt_pk *p, const rt_ray *rays)
+{
+    return rt_pk_setup_avx512_body(p, rays, 1);
+}
 #endif
 
 /* the kernels' lane k for a ray not walked: harmless values */
@@ -924,7 +1218,9 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
         rt_pk_lane0(p, k);
 #ifdef RT_PK_X86
     if (rt_pk_avx2 && n % 4 == 0 &&
-        (g->rotated ? rt_pk_setup_rot_avx2(p, rays) : rt_pk_setup_avx2(p, rays))) {
+        (rt_pk_avx512 && n % 8 == 0
+             ? (g->rotated ? rt_pk_setup_rot_avx512(p, rays) : rt_pk_setup_avx512(p, rays))
+             : (g->rotated ? rt_pk_setup_rot_avx2(p, rays) : rt_pk_setup_avx2(p, rays)))) {
         if (p->live) {
             p->umg = g->b.cw[p->K] * RT_PK_MARGIN;
             p->xmg[0] = g->b.cw[p->a1] * RT_PK_MARGIN;
@@ -1107,6 +1403,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q
    vertices are taken into it first (their roundings far below the margin). */
 #ifdef RT_PK_X86
 static uint64_t rt_pk_pre_avx2(rt_pk *p, const double *const v[3], uint64_t m);
+static uint64_t rt_pk_pre_avx512(rt_pk *p, const double *const v[3], uint64_t m);
 static void rt_pk_steps(rt_pk *p);
 #endif
 static inline int rt_pk_outside(const rt_pk *p, const double *const v[3])
@@ -1144,7 +1441,9 @@ static __attribute__((noinline)) void rt_pk_test(rt_pk *p, rt_pk_cull_fn cull, u
                 gv[j] = w[j];
             }
 #ifdef RT_PK_X86
-        if (rt_pk_avx2) /* the frustum, then its steps' frusta */
+        if (rt_pk_avx512) /* the frustum, then its steps' frusta */
+            m = rt_pk_pre_avx512(p, gv, m);
+        else if (rt_pk_avx2)
             m = rt_pk_pre_avx2(p, gv, m);
         else
 #endif
@@ -1155,7 +1454,8 @@ static __attribute__((noinline)) void rt_pk_test(rt_pk *p, rt_pk_cull_fn cull, u
 #ifdef RT_PK_X86
         if (p->any && rt_pk_avx2) {
             uint64_t sure;
-            m = rt_pk_cull_any_avx2(p, v[0], v[1], v[2], m, &sure);
+            m = rt_pk_avx512 ? rt_pk_cull_any_avx512(p, v[0], v[1], v[2], m, &sure)
+                             : rt_pk_cull_any_avx2(p, v[0], v[1], v[2], m, &sure);
             if (sure) { /* hits, as the exact test finds them */
                 p->hit |= sure;
                 p->live &= ~sure;
@@ -1419,7 +1719,7 @@ __attribute__((target("avx2"))) static void rt_pk_steps(rt_pk *p)
     const int a = p->sax;
     const double *oa = a ? p->o2 : p->o1, *ma = a ? p->m2 : p->m1;
     const __m256d mg = _mm256_set1_pd(p->xmg[a]);
-    for (int k0 = 0; k0 < p->n; k0 += 16) {
+    for (int k0 = 0; k0 < RT_PACKET; k0 += 16) { /* all 16 steps: the AVX-512 test reads 8 */
         /* q[c][i]: quantity c of the rays of step k0 / 4 + i (lanes: its four rays), set to
            +inf (c even: a least) or -inf (odd: a greatest) for rays not walked */
         __m256d q[4][4];
@@ -1511,6 +1811,55 @@ __attribute__((target("avx2"))) static uint64_t rt_pk_pre_avx2(rt_pk *p, const d
     if (rt_pk_outside_avx2(p, v))
         return 0;
     return p->steps ? rt_pk_steps_in(p, v, m) : m;
+}
+
+/* rt_pk_steps_in with AVX-512: 8 steps at a time (the same bounds and compares per step) */
+static inline RT_PK_AVX512 __attribute__((always_inline)) uint64_t
+rt_pk_steps_in_avx512(const rt_pk *p, const double *const v[3], uint64_t m)
+{
+    /* bit i of a 4-bit mask to bit 4i: the rays of step i */
+    static const uint16_t spread[16] = {0x0000, 0x000f, 0x00f0, 0x00ff, 0x0f00, 0x0f0f,
+                                        0x0ff0, 0x0fff, 0xf000, 0xf00f, 0xf0f0, 0xf0ff,
+                                        0xff00, 0xff0f, 0xfff0, 0xffff};
+    double dz[3];
+    const double *sl[3];
+    __m512d x[3][2];
+    const int b0 = 2 * p->sax, ax = p->sax ? p->a2 : p->a1;
+    for (int j = 0; j < 3; j++) {
+        dz[j] = v[j][p->K] - p->z0;
+        sl[j] = dz[j] >= 0.0 ? &p->stp[b0][0] : &p->stn[b0][0];
+        x[j][0] = _mm512_set1_pd(v[j][ax]);
+        x[j][1] = _mm512_set1_pd(-v[j][ax]);
+    }
+    uint64_t in = 0;
+    const int ns = (p->n + 3) / 4;
+    for (int s = 0; s < ns; s += 8) {
+        if (!((m >> (4 * s)) & 0xffffffffu))
+            continue; /* no ray of m in these eight steps */
+        __mmask8 out = 0;
+        for (int b = 0; b < 2; b++) {
+            const __m512d base = _mm512_loadu_pd(p->stb[b0 + b] + s);
+            __mmask8 all = 0xff;
+            for (int j = 0; j < 3; j++) {
+                const __m512d bound = _mm512_add_pd(
+                    base, _mm512_mul_pd(_mm512_set1_pd(dz[j]),
+                                        _mm512_loadu_pd(sl[j] + b * (RT_PACKET / 4) + s)));
+                all = _mm512_mask_cmp_pd_mask(all, x[j][b], bound, _CMP_LT_OQ);
+            }
+            out |= all;
+        }
+        const unsigned i8 = (unsigned)(__mmask8)~out;
+        in |= ((uint64_t)spread[i8 & 15u] | (uint64_t)spread[i8 >> 4] << 16) << (4 * s);
+    }
+    return in & m;
+}
+
+/* rt_pk_pre_avx2 with the steps' test in AVX-512 */
+RT_PK_AVX512 static uint64_t rt_pk_pre_avx512(rt_pk *p, const double *const v[3], uint64_t m)
+{
+    if (rt_pk_outside_avx2(p, v))
+        return 0;
+    return p->steps ? rt_pk_steps_in_avx512(p, v, m) : m;
 }
 #endif
 
