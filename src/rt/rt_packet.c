@@ -19,8 +19,8 @@
  * primitive met is loaded once per packet and tested for the rays whose extent along K meets
  * the slice (an any-hit packet: for all its rays still walking, below) and that have not
  * tested it yet (the small mailbox, each entry with the rays it was tested for; an entry
- * taken by another primitive only repeats tests): a kernel
- * tests 4 (AVX2) or 2 (SSE2) rays at a time with the very operations of the exact double
+ * taken by another primitive only repeats tests): a kernel tests 8 (AVX-512), 4 (AVX2) or
+ * 2 (SSE2) rays at a time with the very operations of the exact double
  * test's edge functions (rt_isect_tri, rt_prim.h), so its signs are that test's bit for bit
  * (no FMA: the kernels are built for AVX2 without FMA, and the build has no -march), and only
  * rules out rays whose signs are mixed and non-zero; the exact test decides every other ray.
