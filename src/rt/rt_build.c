@@ -677,6 +677,50 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
     *hmax = hx;
 }
 
+/* rt_tri_slab's filter of group a for the cells of a range, row by row: for row kq of Q (not
+   in outq) and cell kp of P, edge i: m = |cw[kq][i] - cvT[i][kp]| (rt_edge_filter's m);
+   bit kp of sepm[kq] set when m > ro[i] for an edge, of undm[kq] when !(m <= ri[i]) for one
+   (NaN included); bits at np and above are arbitrary. The cells of a row side by side in
+   lanes, two at a time (cvT[i][np] defined), without a branch per cell. */
+static void rt_slab_masks(const double cvT[3][RT_SPAN + 1], int np, const double cw[][3], int nq,
+                          uint32_t outq, const double ro[3], const double ri[3], uint32_t *sepm,
+                          uint32_t *undm)
+{
+    for (int kq = 0; kq < nq; kq++) {
+        if (outq >> kq & 1)
+            continue;
+        const double *w = cw[kq];
+        uint32_t sm = 0, um = 0;
+#if defined(__SSE2__)
+        const __m128d sign = _mm_set1_pd(-0.0);
+        for (int kp = 0; kp < np; kp += 2) {
+            __m128d s = _mm_setzero_pd(), u = _mm_setzero_pd();
+            for (int i = 0; i < 3; i++) {
+                const __m128d m = _mm_andnot_pd(sign, _mm_sub_pd(_mm_set1_pd(w[i]),
+                                                                 _mm_loadu_pd(&cvT[i][kp])));
+                s = _mm_or_pd(s, _mm_cmpgt_pd(m, _mm_set1_pd(ro[i])));
+                u = _mm_or_pd(u, _mm_cmpnle_pd(m, _mm_set1_pd(ri[i])));
+            }
+            sm |= (uint32_t)_mm_movemask_pd(s) << kp;
+            um |= (uint32_t)_mm_movemask_pd(u) << kp;
+        }
+#else
+        for (int kp = 0; kp < np; kp++) {
+            int sep = 0, und = 0;
+            for (int i = 0; i < 3; i++) {
+                const double m = fabs(w[i] - cvT[i][kp]);
+                sep |= m > ro[i];
+                und |= !(m <= ri[i]);
+            }
+            sm |= (uint32_t)sep << kp;
+            um |= (uint32_t)und << kp;
+        }
+#endif
+        sepm[kq] = sm;
+        undm[kq] = um;
+    }
+}
+
 /* Triangle t whose cells span two axes with one cell on the third, a (c0[a] == c1[a]), as
  * rt_tri_cells decides, with fewer tests. When the whole triangle lies in that cell's box
  * shrunk by eps on a, the triangle meets a cell of the range exactly when its projection
@@ -707,7 +751,7 @@ static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
             emax = rt_dmax(emax, fabs(e[i][k]));
     /* the cells of P (cv: P's terms of group a) and of Q (cw), as rt_axis_cells makes them;
        out: the face test separates, in: it keeps with the margin; L, hmin, hmax as there */
-    double cv[RT_SPAN][3], cw[RT_SPAN][3], bcp[RT_SPAN], hp[RT_SPAN], bcq[RT_SPAN], hq[RT_SPAN];
+    double cvT[3][RT_SPAN + 1], cw[RT_SPAN][3], bcp[RT_SPAN], hp[RT_SPAN], bcq[RT_SPAN], hq[RT_SPAN];
     uint32_t outp = 0, inp = 0, outq = 0, inq = 0;
     double L[3], hmin[2], hmax[2];
 #define RT_SLAB_AXIS(X, O, BCS, HS, OUT, IN, S, TERMS)                                        \
@@ -734,10 +778,13 @@ static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
         hmax[S] = hx;                                                                          \
     } while (0)
     RT_SLAB_AXIS(P, Q, bcp, hp, outp, inp, 0,
-                 (cv[k][0] = f0 * d + hs[0], cv[k][1] = f1 * d + hs[1], cv[k][2] = f2 * d + hs[2]));
+                 (cvT[0][k] = f0 * d + hs[0], cvT[1][k] = f1 * d + hs[1], cvT[2][k] = f2 * d + hs[2]));
     RT_SLAB_AXIS(Q, P, bcq, hq, outq, inq, 1,
                  (cw[k][0] = f0 * d, cw[k][1] = f1 * d, cw[k][2] = f2 * d));
 #undef RT_SLAB_AXIS
+    /* the lane after the last cell defined (rt_slab_masks reads cells in pairs) */
+    for (int i = 0; i < 3; i++)
+        cvT[i][c1[P] - c0[P] + 1] = 0.0;
     L[2] = rt_dmax(rt_dmax(fabs(e[0][a]), fabs(e[2][a])), rt_dmax(fabs(bca - t->v[0][a]), ha));
     /* rt_tri_cells' bounds of group a (B, Dh over the range's cells; a has one cell), the
        inner one less eps (|e_i| on P and Q): the shrunk rectangle's half extent on the axis */
@@ -752,43 +799,28 @@ static int rt_tri_slab(const rt_tri *t, const double e[3][3], const double n[3],
         ro[i] = wr + B;
         ri[i] = wr - Bi - eps * (aP + aQ);
     }
-#if defined(__SSE2__)
-    const __m128d ro01 = _mm_loadu_pd(ro), ri01 = _mm_loadu_pd(ri);
-#endif
+    /* the filter's answers for every cell of the range, row by row (rt_slab_masks): bit kp of
+       sepm[kq], an edge separates; of undm[kq], one is not kept by the inner bound */
+    const int np = c1[P] - c0[P] + 1, nq = c1[Q] - c0[Q] + 1;
+    uint32_t sepm[RT_SPAN], undm[RT_SPAN];
+    rt_slab_masks(cvT, np, cw, nq, outq, ro, ri, sepm, undm);
+    const uint32_t all = np == 32 ? ~(uint32_t)0 : ((uint32_t)1 << np) - 1;
     uint64_t nexact = 0;
     int c[3];
     c[a] = c0[a];
-    for (c[Q] = c0[Q]; c[Q] <= c1[Q]; c[Q]++) {
-        const int kq = c[Q] - c0[Q];
+    for (int kq = 0; kq < nq; kq++) {
         if (outq >> kq & 1)
             continue;
-        const double *w = cw[kq];
-        for (c[P] = c0[P]; c[P] <= c1[P]; c[P]++) {
-            const int kp = c[P] - c0[P];
-            if (outp >> kp & 1)
-                continue;
-            const double *v = cv[kp];
-            /* rt_edge_filter's answer for the three edges: sep, one separates; und, one is
-               not kept by the inner bound (NaN included) */
-#if defined(__SSE2__)
-            /* edges 0 and 1 in SSE2 lanes (the same operations: the same m), edge 2 alone,
-               the answers combined without a branch per edge */
-            const __m128d m01 = _mm_andnot_pd(_mm_set1_pd(-0.0),
-                                              _mm_sub_pd(_mm_loadu_pd(w), _mm_loadu_pd(v)));
-            const double m2 = fabs(w[2] - v[2]);
-            const int sep = _mm_movemask_pd(_mm_cmpgt_pd(m01, ro01)) | (m2 > ro[2]);
-            const int und = _mm_movemask_pd(_mm_cmpnle_pd(m01, ri01)) | !(m2 <= ri[2]);
-#else
-            int sep = 0, und = 0;
-            for (int i = 0; i < 3; i++) {
-                const double m = fabs(w[i] - v[i]);
-                sep |= m > ro[i];
-                und |= !(m <= ri[i]);
-            }
-#endif
-            if (sep)
-                continue;
-            if (und || !(inp >> kp & inq >> kq & 1)) {
+        /* the cells to take, and among them those rt_tri_box decides: bit sets walked in
+           order (the same pushes, in the same order, as a test per cell) */
+        uint32_t take = all & ~outp & ~sepm[kq];
+        const uint32_t exact = undm[kq] | (inq >> kq & 1 ? ~inp : ~(uint32_t)0);
+        c[Q] = c0[Q] + kq;
+        while (take) {
+            const int kp = __builtin_ctz(take);
+            take &= take - 1;
+            c[P] = c0[P] + kp;
+            if (exact >> kp & 1) {
                 double bc[3], h[3];
                 bc[a] = bca;
                 h[a] = ha;
