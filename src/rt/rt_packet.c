@@ -771,6 +771,63 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
 }
 
 #ifdef RT_PK_X86
+/* The plain-ray set-ups' shared scalar parts (rt_pk_setup_avx2_body, rt_pk_setup_avx512_body):
+   the packet's axes from ray 0 (rt_rayx_shear's rule: kz, kx, ky, neg), its octant in the
+   grid frame (sgn) and the slicing axis K with the other two a1, a2 ... */
+typedef struct rt_pk_axes {
+    int kx, ky, kz, neg, K, a1, a2, sgn[3];
+} rt_pk_axes;
+
+static inline __attribute__((always_inline)) rt_pk_axes rt_pk_axes_of(const rt_grid *g,
+                                                                     const double *d0,
+                                                                     const int rotated)
+{
+    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
+    rt_pk_axes x;
+    const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
+    x.kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
+    x.neg = d0[x.kz] < 0.0;
+    x.kx = next[x.neg][x.kz][0];
+    x.ky = next[x.neg][x.kz][1];
+    double gd0[3] = {d0[0], d0[1], d0[2]};
+    if (rotated)
+        rt_grid_dir(g, d0, gd0);
+    for (int a = 0; a < 3; a++)
+        x.sgn[a] = gd0[a] < 0.0;
+    x.K = x.kz;
+    if (rotated) {
+        const double gx = fabs(gd0[0]), gy = fabs(gd0[1]), gz = fabs(gd0[2]);
+        x.K = gx >= gy && gx >= gz ? 0 : (gy >= gz ? 1 : 2);
+    }
+    x.a1 = (x.K + 1) % 3;
+    x.a2 = (x.K + 2) % 3;
+    return x;
+}
+
+/* ... and, once every ray is set up, the packet's fields from them (the rays walked: live) */
+static inline __attribute__((always_inline)) void rt_pk_setup_end(rt_pk *p, const rt_pk_axes *x,
+                                                                  uint64_t live)
+{
+    const rt_box *b = &p->sc->grid.b;
+    p->live = live;
+    p->made = 0;
+    p->kx = x->kx;
+    p->ky = x->ky;
+    p->kz = x->kz;
+    p->K = x->K;
+    p->a1 = x->a1;
+    p->a2 = x->a2;
+    p->sg = x->sgn[x->K] ? -1 : 1;
+    for (int a = 0; a < 3; a++) {
+        p->nf[0][a] = x->sgn[a] ? b->hi[a] : b->lo[a];
+        p->nf[1][a] = x->sgn[a] ? b->lo[a] : b->hi[a];
+    }
+    if (!p->any) {
+        memset(p->bi, 0xff, (size_t)p->n * sizeof p->bi[0]); /* -1: no hit */
+        memset(p->nh, 0, (size_t)p->n * sizeof p->nh[0]);
+    }
+}
+
 /* The set-up of a packet of rays that are all plain (every check of rt_rayx_setup passed by
    a wide margin, no component flushed), 4 rays a step with AVX2 (no FMA), and without the
    rays' rt_rayx: those are made by rt_pk_make when a ray first reaches an exact test (most
@@ -801,23 +858,9 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &g->b;
     const int n = p->n, any = p->any;
-    /* the packet's axes from ray 0 (rt_rayx_shear's rule), its octant in the grid frame */
-    const double *d0 = rays[0].dir;
-    const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
-    const int kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
-    const int neg = d0[kz] < 0.0;
-    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
-    const int kx = next[neg][kz][0], ky = next[neg][kz][1];
-    double gd0[3] = {d0[0], d0[1], d0[2]};
-    if (rotated)
-        rt_grid_dir(g, d0, gd0);
-    const int sgn[3] = {gd0[0] < 0.0, gd0[1] < 0.0, gd0[2] < 0.0};
-    int K = kz;
-    if (rotated) {
-        const double gx = fabs(gd0[0]), gy = fabs(gd0[1]), gz = fabs(gd0[2]);
-        K = gx >= gy && gx >= gz ? 0 : (gy >= gz ? 1 : 2);
-    }
-    const int a1 = (K + 1) % 3, a2 = (K + 2) % 3;
+    const rt_pk_axes x = rt_pk_axes_of(g, rays[0].dir, rotated);
+    const int kx = x.kx, ky = x.ky, kz = x.kz, neg = x.neg, K = x.K, a1 = x.a1, a2 = x.a2;
+    const int *sgn = x.sgn;
     const double lim[3] = {1e30, 1e-100, INFINITY};
     int64_t blim[3];
     memcpy(blim, lim, sizeof blim);
@@ -963,23 +1006,7 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
     p->usmax = fmax(fmax(e[1][0], e[1][1]), fmax(e[1][2], e[1][3]));
     p->uemin = fmin(fmin(e[2][0], e[2][1]), fmin(e[2][2], e[2][3]));
     p->uemax = fmax(fmax(e[3][0], e[3][1]), fmax(e[3][2], e[3][3]));
-    p->live = live;
-    p->made = 0;
-    p->kx = kx;
-    p->ky = ky;
-    p->kz = kz;
-    p->K = K;
-    p->a1 = a1;
-    p->a2 = a2;
-    p->sg = sgn[K] ? -1 : 1;
-    for (int a = 0; a < 3; a++) {
-        p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
-        p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
-    }
-    if (!any) {
-        memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
-        memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
-    }
+    rt_pk_setup_end(p, &x, live);
     return 1; /* go, gd: set by rt_pk_make */
 }
 
@@ -1003,23 +1030,9 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
     const rt_grid *g = &p->sc->grid;
     const rt_box *b = &g->b;
     const int n = p->n, any = p->any;
-    /* the packet's axes from ray 0 (rt_rayx_shear's rule), its octant in the grid frame */
-    const double *d0 = rays[0].dir;
-    const double ax0 = fabs(d0[0]), ay0 = fabs(d0[1]), az0 = fabs(d0[2]);
-    const int kz = ((ax0 < ay0) | (ax0 < az0)) * (1 + (ay0 < az0));
-    const int neg = d0[kz] < 0.0;
-    static const int8_t next[2][3][2] = {{{1, 2}, {2, 0}, {0, 1}}, {{2, 1}, {0, 2}, {1, 0}}};
-    const int kx = next[neg][kz][0], ky = next[neg][kz][1];
-    double gd0[3] = {d0[0], d0[1], d0[2]};
-    if (rotated)
-        rt_grid_dir(g, d0, gd0);
-    const int sgn[3] = {gd0[0] < 0.0, gd0[1] < 0.0, gd0[2] < 0.0};
-    int K = kz;
-    if (rotated) {
-        const double gx = fabs(gd0[0]), gy = fabs(gd0[1]), gz = fabs(gd0[2]);
-        K = gx >= gy && gx >= gz ? 0 : (gy >= gz ? 1 : 2);
-    }
-    const int a1 = (K + 1) % 3, a2 = (K + 2) % 3;
+    const rt_pk_axes x = rt_pk_axes_of(g, rays[0].dir, rotated);
+    const int kx = x.kx, ky = x.ky, kz = x.kz, neg = x.neg, K = x.K, a1 = x.a1, a2 = x.a2;
+    const int *sgn = x.sgn;
     const double lim[3] = {1e30, 1e-100, INFINITY};
     int64_t blim[3];
     memcpy(blim, lim, sizeof blim);
@@ -1159,23 +1172,7 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
     p->usmax = _mm512_reduce_max_pd(usmax);
     p->uemin = _mm512_reduce_min_pd(uemin);
     p->uemax = _mm512_reduce_max_pd(uemax);
-    p->live = live;
-    p->made = 0;
-    p->kx = kx;
-    p->ky = ky;
-    p->kz = kz;
-    p->K = K;
-    p->a1 = a1;
-    p->a2 = a2;
-    p->sg = sgn[K] ? -1 : 1;
-    for (int a = 0; a < 3; a++) {
-        p->nf[0][a] = sgn[a] ? b->hi[a] : b->lo[a];
-        p->nf[1][a] = sgn[a] ? b->lo[a] : b->hi[a];
-    }
-    if (!any) {
-        memset(p->bi, 0xff, (size_t)n * sizeof p->bi[0]); /* -1: no hit */
-        memset(p->nh, 0, (size_t)n * sizeof p->nh[0]);
-    }
+    rt_pk_setup_end(p, &x, live);
     return 1; /* go, gd: set by rt_pk_make */
 }
 
