@@ -13,9 +13,15 @@
  *    of a cell's enlarged box (the edge test's separation exactly 0 in exact arithmetic), or
  *    1, 4 and 64 ulps and 1e-14 .. 1e-10 beside it, on both sides, for the three axes, the
  *    four corners of a cell face and several cells; the third vertex on the far side of the
- *    edge (the edge axis decides) or on the near side;
+ *    edge (the edge axis decides) or on the near side; the edge as the build's edge 0, 1 and
+ *    2 (the filter's lanes);
  *  - "slab": the same edges on triangles inside one cell on the third axis, whose cells the
  *    build decides in the projection along that axis (rt_tri_slab);
+ *  - "band": the edges of "touch" and "slab" at B / 8 beside the corner (B the filter's outer
+ *    margin, computed here as the build computes it), where the filter's m lies in the middle
+ *    of its undecided band on the side where rt_tri_box decides against the wrong bound (the
+ *    outer one for a keep, the inner one for a separation): a filter deciding the band by
+ *    either bound changes the grid; each triangle sends at least one cell to the exact test;
  *  - "lattice": random triangles with vertices on the enlarged boxes' faces (q - eps, q + eps)
  *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
  *  - "lattice" again with the second level (crowded cells get sub-grids, whose cell boxes the
@@ -29,6 +35,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
+#include <float.h>
 #include <cmocka.h>
 #define GKS3D_RT_BUILDING 1
 #include "rt_internal.h"
@@ -65,19 +72,68 @@ static void add_tri(tris *t, const double v[9])
 }
 
 /* a triangle given in (u, p, q) coordinates, where p and q are the two axes of the projection
-   and u the third: axis a of the triangle's points gets (u, p, q)[(a - ax + 3) % 3] */
-static void add_rot(tris *t, int ax, const double upq[3][3])
+   and u the third: axis a of the triangle's points gets (u, p, q)[(a - ax + 3) % 3]; its
+   vertex k is upq[(k + rot) % 3] (rot 0, 1, 2: the edge upq[0] -> upq[1] is the build's edge
+   0, 1, 2, the edges e0 = V1 - V0, e1 = V2 - V1, e2 = V0 - V2 of rt_tri_box) */
+static void rot_tri(int ax, int rot, const double upq[3][3], double v[9])
 {
-    double v[9];
     for (int k = 0; k < 3; k++)
         for (int a = 0; a < 3; a++)
-            v[3 * k + a] = upq[k][(a - ax + 3) % 3];
+            v[3 * k + a] = upq[(k + rot) % 3][(a - ax + 3) % 3];
+}
+
+static void add_rot(tris *t, int ax, int rot, const double upq[3][3])
+{
+    double v[9];
+    rot_tri(ax, rot, upq, v);
     add_tri(t, v);
 }
 
+/* the filter's outer margin B for triangle v as the build computes it (rt_tri_cells,
+   docs/RAYTRACING.md, "The bound"): 64 u emax (L_x + L_y + L_z) + 2^-1000, emax the largest
+   |edge component|, L_a the largest of |e0_a|, |e2_a| and, over the cells of the triangle's
+   range on a (those its box widened by eps meets), |bc - V0_a| and h; D (the differences of
+   the cells' h, ulps here) is left out */
+static double filter_B(const double v[9])
+{
+    double emax = 0.0, sum = 0.0;
+    for (int a = 0; a < 3; a++) {
+        const double e0 = v[3 + a] - v[a], e1 = v[6 + a] - v[3 + a], e2 = v[a] - v[6 + a];
+        emax = fmax(emax, fmax(fabs(e0), fmax(fabs(e1), fabs(e2))));
+        const double lo = fmin(v[a], fmin(v[3 + a], v[6 + a])) - EPS;
+        const double hi = fmax(v[a], fmax(v[3 + a], v[6 + a])) + EPS;
+        double L = fmax(fabs(e0), fabs(e2));
+        for (int q = (int)fmax(0.0, floor(lo)); q <= (int)fmin(N - 1, floor(hi)); q++) {
+            const double bc = 0.5 * (cell_lo(q) + cell_hi(q));
+            L = fmax(L, fmax(fabs(bc - v[a]), 0.5 * (cell_hi(q) - cell_lo(q))));
+        }
+        sum += L;
+    }
+    return 64.0 * (DBL_EPSILON / 2) * emax * sum + 0x1p-1000;
+}
+
+/* the triangle of "touch" (touch_edges): the edge through the corner (P, Q) shifted by d
+   along (sp, sq), the third vertex on the side w */
+static void touch_tri(double upq[3][3], const double u[3], double P, double Q, double sp,
+                      double sq, double w, double d)
+{
+    const double p0 = P + d * sp, q0 = Q + d * sq;
+    const double r[3][3] = {
+        {u[0], p0 - 1.0 * sp, q0 + 1.0 * sq},
+        {u[1], p0 + 1.0 * sp, q0 - 1.0 * sq},
+        {u[2], p0 + w * 0.75 * sp, q0 + w * 0.75 * sq},
+    };
+    memcpy(upq, r, sizeof r);
+}
 /* the edges of "touch" (see the head comment), the triangles' vertices at u[0], u[1], u[2]
-   on the third axis */
-static void touch_edges(tris *t, const double u[3])
+   on the third axis, each triangle with the edge as edge 0, 1 and 2 of the build. fixed: the
+   fixed offsets (0, 1e-14 .. 1e-10, 1, 4, 64 ulps); band: the offset B / 8 (filter_B) on
+   both sides, which moves the filter's m by B / 2 (the edge's normal in the projection is
+   (e_Q, -e_P) = 2 (sp, sq) up to sign, the shift (d sp, d sq): 4 d): the middle of the band
+   between the exact threshold and ro (the edge outside: rt_tri_box separates, by far more
+   than its rounding, where |m| <= ro) or ri (inside: rt_tri_box keeps where |m| > ri), so
+   that the filter must leave the cell to rt_tri_box */
+static void touch_edges(tris *t, const double u[3], int fixed, int band)
 {
     const double offs[] = {0.0, 1e-14, 1e-13, 1e-12, 1e-10};
     const int ulps[] = {1, 4, 64};
@@ -93,33 +149,37 @@ static void touch_edges(tris *t, const double u[3])
                     /* an edge through (P, Q) along (sp, -sq) keeps the cell on one side (the
                        side of (sp, sq)); shifted by d along (sp, sq) */
                     for (int side = -1; side <= 1; side += 2)
-                        for (int far = 0; far < 2; far++) {
-                            double ds[2 * (5 + 3)];
-                            int nd = 0;
-                            for (size_t k = 0; k < sizeof offs / sizeof *offs; k++)
-                                ds[nd++] = side * offs[k];
-                            for (size_t k = 0; k < sizeof ulps / sizeof *ulps; k++)
-                                ds[nd++] = side * ulps[k] * (nextafter(P, INFINITY) - P);
-                            for (int k = 0; k < nd; k++) {
-                                const double d = ds[k];
-                                const double p0 = P + d * sp, q0 = Q + d * sq;
+                        for (int far = 0; far < 2; far++)
+                            for (int rot = 0; rot < 3; rot++) {
                                 /* the third vertex: away from the cell (far) or towards it */
                                 const double w = far ? -1.0 : 1.0;
-                                const double upq[3][3] = {
-                                    {u[0], p0 - 1.0 * sp, q0 + 1.0 * sq},
-                                    {u[1], p0 + 1.0 * sp, q0 - 1.0 * sq},
-                                    {u[2], p0 + w * 0.75 * sp, q0 + w * 0.75 * sq},
-                                };
-                                add_rot(t, ax, upq);
+                                double ds[5 + 3 + 1];
+                                int nd = 0;
+                                if (fixed) {
+                                    for (size_t k = 0; k < sizeof offs / sizeof *offs; k++)
+                                        ds[nd++] = side * offs[k];
+                                    for (size_t k = 0; k < sizeof ulps / sizeof *ulps; k++)
+                                        ds[nd++] = side * ulps[k] * (nextafter(P, INFINITY) - P);
+                                }
+                                if (band) {
+                                    double upq0[3][3], v[9];
+                                    touch_tri(upq0, u, P, Q, sp, sq, w, 0.0);
+                                    rot_tri(ax, rot, upq0, v);
+                                    ds[nd++] = side * filter_B(v) / 8.0;
+                                }
+                                for (int k = 0; k < nd; k++) {
+                                    double upq[3][3];
+                                    touch_tri(upq, u, P, Q, sp, sq, w, ds[k]);
+                                    add_rot(t, ax, rot, upq);
+                                }
                             }
-                        }
                 }
 }
 
 /* "touch": see the head comment */
 static void touch_scene(tris *t)
 {
-    touch_edges(t, (const double[3]){2.5, 5.5, 4.0});
+    touch_edges(t, (const double[3]){2.5, 5.5, 4.0}, 1, 1);
     /* planes through a cell corner, and a vertex on a cell face, exactly */
     for (int q = 2; q <= 4; q++) {
         const double X = cell_hi(q), Y = cell_hi(q + 1), Z = cell_lo(q);
@@ -139,10 +199,24 @@ static void touch_scene(tris *t)
    where the enlarged box is 3 eps away), tilted both ways */
 static void slab_scene(tris *t)
 {
-    touch_edges(t, (const double[3]){4.25, 4.75, 4.5});
-    touch_edges(t, (const double[3]){4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS, 4.5});
-    touch_edges(t, (const double[3]){5.0 - 2.0 * EPS, 4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS});
-    touch_edges(t, (const double[3]){4.5, 4.5, 4.5});
+    touch_edges(t, (const double[3]){4.25, 4.75, 4.5}, 1, 1);
+    touch_edges(t, (const double[3]){4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS, 4.5}, 1, 1);
+    touch_edges(t, (const double[3]){5.0 - 2.0 * EPS, 4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS}, 1, 1);
+    touch_edges(t, (const double[3]){4.5, 4.5, 4.5}, 1, 1);
+}
+
+/* "band": the edges of "touch" and "slab" at the offsets B / 8 only (touch_edges: the filter's
+   m in the middle of its undecided band), general: the triangles of "touch" (several cells on
+   every axis, rt_tri_cells' filter), or those of "slab" (rt_tri_slab's) */
+static void band_scene(tris *t, int general)
+{
+    if (general) {
+        touch_edges(t, (const double[3]){2.5, 5.5, 4.0}, 0, 1);
+        return;
+    }
+    touch_edges(t, (const double[3]){4.25, 4.75, 4.5}, 0, 1);
+    touch_edges(t, (const double[3]){4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS, 4.5}, 0, 1);
+    touch_edges(t, (const double[3]){5.0 - 2.0 * EPS, 4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS}, 0, 1);
 }
 
 /* "lattice": n random triangles near the centre, vertices on q - eps, q + eps, q, q + 1/2 */
@@ -245,6 +319,20 @@ static void test_slab(void **state)
     free(t.v);
 }
 
+/* every triangle of "band" puts a cell in the filter's band: at least one cell per triangle
+   to the exact test */
+static void test_band(void **state)
+{
+    (void)state;
+    for (int general = 1; general >= 0; general--) {
+        tris t = {0};
+        band_scene(&t, general);
+        const uint64_t exact = check(&t, 0, general ? "band, general" : "band, slab");
+        assert_true(exact >= t.n);
+        free(t.v);
+    }
+}
+
 static void test_lattice(void **state)
 {
     (void)state;
@@ -269,6 +357,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_touch),
         cmocka_unit_test(test_slab),
+        cmocka_unit_test(test_band),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_lattice_sub),
     };
