@@ -1187,6 +1187,11 @@ typedef int (*rt_sub_walk_fn)(rt_walkstate *w, const rt_subgrid *sg, double t0, 
    boxes have no second level, so the tests of modes RT_MODE_ANYTOP + O on a cell's sub-grid
    (mode >= RT_MODE_ANYTOP) never meet them */
 #define RT_MODE_NEARK 24
+/* rt_walk_box's mode 4: mode 3 for a batch whose rays run mostly along z (rt_rays_along_z:
+   eye rays), its top-level step comparing tx with tz first as the nearest-hit second-level
+   walks of kz = 2 do (RT_ADV_TREE); everything else mode 3's */
+#define RT_MODE_NEARZ 4
+#define RT_MODE3(mode) ((mode) == 3 || (mode) == RT_MODE_NEARZ)
 
 struct rt_walkstate {
     const rt_scene *sc;
@@ -1342,11 +1347,13 @@ static inline int rt_jump_cells(double t, double j, double tj, double it, int k)
    O >> 1, the direction's largest component): 0 tx against ty first, the smaller against tz;
    1 tx against tz first; 2 ty against tz first. Every order takes the same axis (ties: x, y,
    z); the first compare with the axis that steps most often is the better predicted one
-   (docs/bench/rt_tuning.md). Any-hit walks by kz: 0, 2, 1; nearest-hit: 0, 0, 1 (measured). */
+   (docs/bench/rt_tuning.md). Any-hit walks by kz: 0, 2, 1; nearest-hit: 0, 0, 1 (measured);
+   the nearest-hit top walk: 0 (mode 3, the ray's order not compiled in), 1 for a batch of
+   rays along z (mode RT_MODE_NEARZ). */
 #define RT_ADV_TREE                                                                    \
     (mode >= RT_MODE_NEARK   ? (((mode & 7) >> 1) == 2 ? 1 : 0)                        \
      : mode >= RT_MODE_ANYK ? (((mode & 7) >> 1) == 0 ? 0 : ((mode & 7) >> 1) == 1 ? 2 : 1) \
-                            : 0)
+                            : mode == RT_MODE_NEARZ ? 1 : 0)
 #define RT_ADVANCE()                                                        \
     do {                                                                    \
         if (RT_ADV_TREE == 1) {                                             \
@@ -1620,7 +1627,7 @@ RT_INLINE int rt_walk_cell(rt_walkstate *w, int mode, const uint32_t *refs, cons
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], !nearest)
                   : rt_cell_mesh_k(w, refs, r16, loc, n, kx, 3 - kx - kz, kz, nearest);
     }
-    if (mode == 3)
+    if (RT_MODE3(mode))
         return lf ? rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0) : w->list(w, refs, n);
     if (mode == 0 && lf)
         (void)rt_leaf_walk(w, &w->sc->grid.leaves[lf - 1], 0);
@@ -1669,7 +1676,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
         tent = s.t0;
         t1 = s.t1;
     }
-    if (sub && (mode == 1 || mode == 3 || mode >= RT_MODE_ANYTOP)) { /* any-hit,
+    if (sub && (mode == 1 || RT_MODE3(mode) || mode >= RT_MODE_ANYTOP)) { /* any-hit,
                                transmittance and mesh nearest-hit walks' top level: the
                                steps for their second-level walks (rt_dda_init) */
         w->step[0] = sx;
@@ -1778,7 +1785,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
             /* AVX2's encoding (modes 3, RT_MODE_ANYTOP + O): the clip in lanes, a direction
                component 0 (a step 0) to the loop; rt_box_clip's SSE2 zero test would load
                d[2] with a register vmovq (rt_nearest_apart) */
-            if ((mode == 3 || mode >= RT_MODE_ANYTOP) && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
+            if ((RT_MODE3(mode) || mode >= RT_MODE_ANYTOP) && pre ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
                 : pre ? rt_box_clip_nz(&sg->b, gr, &s0, &s1)
                 : mode >= RT_MODE_ANYTOP
                     ? (sx && sy && sz ? rt_box_clip_nz4(&sg->b, gr, &s0, &s1)
@@ -1786,11 +1793,11 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
                     : rt_box_clip(&sg->b, gr, &s0, &s1)) {
                 /* nearest-hit walks: a flat sub-grid whose plane the range does not cross
                    (rt_sub_flat_near) is not walked */
-                if ((mode == 0 || mode == 3) && __builtin_expect(w->spl != NULL, 0) &&
+                if ((mode == 0 || RT_MODE3(mode)) && __builtin_expect(w->spl != NULL, 0) &&
                     w->spl[sub[ci]] && rt_sub_flat_near(w, w->spl[sub[ci]], s0, s1))
                     goto lower;
                 int st = mode == 0   ? rt_walk_sub_nearest(w, sg, s0, s1)
-                         : mode == 3 ? w->sub(w, sg, s0, s1)
+                         : RT_MODE3(mode) ? w->sub(w, sg, s0, s1)
                          : mode >= RT_MODE_ANYTOP ? rt_walk_sub_anyhit_o(w, mode & 7, sg, s0, s1)
                                                   : rt_walk_sub_transmit(w, sg, s0, s1);
                 if (st != RT_WALK_CONT)
@@ -1802,7 +1809,7 @@ RT_INLINE int rt_walk_box(rt_walkstate *w, int mode, const rt_box *g, const uint
            been tested (the cells that hold the ray points up to it were all visited, and
            each holds every primitive crossing it). */
     lower:
-        if ((mode == 0 || mode == 3 || mode >= RT_MODE_NEARK) && w->best + 2.0 * w->ebest < t1)
+        if ((mode == 0 || RT_MODE3(mode) || mode >= RT_MODE_NEARK) && w->best + 2.0 * w->ebest < t1)
             t1 = w->best + 2.0 * w->ebest;
     advance:
         RT_ADVANCE();
@@ -2186,7 +2193,8 @@ RT_INLINE void rt_fill_hit_mesh(const rt_scene *sc, const rt_rayx *r, long i, do
 }
 
 /* one ray of rt_intersect; p: NULL, or its four-ray set-up (lane j), tg the grid's values
-   (rt_topgrid_of); mesh: rt_mesh_only's */
+   (rt_topgrid_of); mesh: 0, or in a scene where rt_mesh_only holds the set-up's walk mode
+   (3, RT_MODE_NEARZ) */
 RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray, rt_hit *h,
                                 const rt_topgrid *tg, const rt_pre4 *p, int j, int mesh)
 {
@@ -2208,7 +2216,7 @@ RT_INLINE void rt_intersect_one(const rt_scene *sc, rt_ctx *c, const rt_ray *ray
         }
         w.stamp = rt_ctx_next(c);
         w.spl = tg->splnear; /* rt_sub_flat_near */
-        rt_walk_pre(&w, mesh ? 3 : 0, tg, p, j);
+        rt_walk_pre(&w, mesh, tg, p, j);
         t = w.best;
         i = w.bi;
     } else if ((!p || p->state[j] == 0) &&
@@ -2246,7 +2254,7 @@ static inline int rt_pre4_all_miss(const rt_pre4 *p)
     return ((s[0] ^ one2) | (s[1] ^ one2)) == 0; /* one branch */
 }
 
-/* rt_intersect's rays (setup4: NULL, or the four-ray set-up; mesh: rt_mesh_only's) */
+/* rt_intersect's rays (setup4: NULL, or the four-ray set-up; mesh: as rt_intersect_one's) */
 RT_INLINE void rt_intersect_rays(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays,
                                  rt_hit *hits, const rt_setup *setup4, int mesh)
 {
@@ -2284,7 +2292,29 @@ static __attribute__((noinline)) RT_ANYHIT_TARGET void
 rt_intersect_mesh(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays, rt_hit *hits,
                   const rt_setup *setup4)
 {
-    rt_intersect_rays(sc, c, n, rays, hits, setup4, 1);
+    rt_intersect_rays(sc, c, n, rays, hits, setup4, 3);
+}
+
+/* the same for a batch of rays along z (rt_rays_along_z): mode RT_MODE_NEARZ */
+static __attribute__((noinline)) RT_ANYHIT_TARGET void
+rt_intersect_mesh_z(const rt_scene *sc, rt_ctx *c, size_t n, const rt_ray *rays, rt_hit *hits,
+                    const rt_setup *setup4)
+{
+    rt_intersect_rays(sc, c, n, rays, hits, setup4, RT_MODE_NEARZ);
+}
+
+/* 1 when the batch's first rays (up to 8) all have |d_z| above |d_x| and |d_y|: eye rays
+   along VRC3 z, whose top-level steps are mostly along z, as a guess for the whole batch
+   (only the order of the step's compares follows from it, never the cells walked) */
+static int rt_rays_along_z(size_t n, const rt_ray *rays)
+{
+    const size_t m = n < 8 ? n : 8;
+    for (size_t k = 0; k < m; k++) {
+        const double *d = rays[k].dir;
+        if (!(fabs(d[2]) > fabs(d[0]) && fabs(d[2]) > fabs(d[1])))
+            return 0;
+    }
+    return m > 0;
 }
 
 int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
@@ -2295,7 +2325,8 @@ int rt_intersect(const rt_scene *sc, size_t n, const rt_ray *rays, rt_hit *hits)
         return rc;
     const rt_setup *setup4 = n >= 4 ? rt_setup4_choose(sc) : NULL;
     if (rt_mesh_only(sc))
-        rt_intersect_mesh(sc, &c, n, rays, hits, setup4);
+        (rt_rays_along_z(n, rays) ? rt_intersect_mesh_z : rt_intersect_mesh)(sc, &c, n, rays,
+                                                                             hits, setup4);
     else
         rt_intersect_any(sc, &c, n, rays, hits, setup4);
     rt_ctx_free(&c);
