@@ -524,6 +524,14 @@ static void rt_tab_fill(rt_cell_tab *tab, const rt_box *g, double eps)
             rt_axis_box(g, a, q, eps, &tab->bc[a][q], &tab->h[a][q]);
 }
 
+/* cells whose triangle/box test the build's filters (the margin filter of rt_tri_cells, the
+   margins of rt_tri_row and rt_tri_slab) left to rt_tri_box (process total, for tests), and
+   the filters' switch (1: on; 0, for tests comparing both: every cell of rt_tri_row's range
+   through rt_tri_box, every cell of the other paths that no box face separates through the
+   edge tests of rt_tri_box's operands) */
+static uint64_t rt_exact_cells;
+static int rt_filter_on = 1;
+
 /* Triangle t whose cells span one axis a only (c0 == c1 on the others), as rt_tri_cells
  * decides, with fewer tests. When the whole triangle lies in the cell's box shrunk by eps on
  * the two other axes, a cell of the row whose face test on a keeps it with that margin too
@@ -533,7 +541,9 @@ static void rt_tab_fill(rt_cell_tab *tab, const rt_box *g, double eps)
  * the computed tests err by ~1e-15 of the scene's scale times that norm (eps is 1e-9 of it):
  * the 9 edge tests keep it, and the face and plane tests are computed as rt_tri_cells
  * computes them (the same operands). A cell without the margin gets rt_tri_box's tests (the
- * same decision as rt_tri_cells', bit for bit).
+ * same decision as rt_tri_cells', bit for bit). With the filters off (rt_build_set_filter),
+ * every cell of the row goes through rt_tri_box, without the face test, the inside test or
+ * the margins: the reference that tests compare the row's decisions with.
  * Returns 1, 0 (no memory), or -1 when the triangle is not inside on the other two axes
  * (nothing pushed). */
 static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], const double bb[6],
@@ -542,6 +552,19 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
 {
     const rt_cell_tab *tab = b->tab && b->tab->box == g ? b->tab : NULL;
     double nv[3], nh[3], bc[3], h[3];
+    int c[3] = {c0[0], c0[1], c0[2]};
+    if (!__atomic_load_n(&rt_filter_on, __ATOMIC_RELAXED)) {
+        for (int s = 0; s < 3; s++)
+            if (s != a)
+                rt_tab_box(tab, g, s, c0[s], eps, &bc[s], &h[s]);
+        for (c[a] = c0[a]; c[a] <= c1[a]; c[a]++) {
+            rt_tab_box(tab, g, a, c[a], eps, &bc[a], &h[a]);
+            if (rt_tri_box(t, e, n, bc, h) && !rt_build_push(b, base + rt_cell_index(g, c), prim))
+                return 0;
+        }
+        __atomic_fetch_add(&rt_exact_cells, (uint64_t)(c1[a] - c0[a] + 1), __ATOMIC_RELAXED);
+        return 1;
+    }
     for (int s = 0; s < 3; s++) {
         if (s == a)
             continue;
@@ -552,13 +575,14 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
         nv[s] = n[s] * (t->v[0][s] - bc[s]);
         nh[s] = h[s] * fabs(n[s]);
     }
-    int c[3] = {c0[0], c0[1], c0[2]};
+    uint64_t nexact = 0;
     for (c[a] = c0[a]; c[a] <= c1[a]; c[a]++) {
         rt_tab_box(tab, g, a, c[a], eps, &bc[a], &h[a]);
         const double mn = bb[a] - bc[a], mx = bb[3 + a] - bc[a];
         if (mn > h[a] || mx < -h[a]) /* the face test (rt_sep) */
             continue;
         if (!(mn <= h[a] - eps && mx >= eps - h[a])) {
+            nexact++;
             if (rt_tri_box(t, e, n, bc, h) && !rt_build_push(b, base + rt_cell_index(g, c), prim))
                 return 0;
             continue;
@@ -571,14 +595,10 @@ static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], 
         if (!rt_build_push(b, base + rt_cell_index(g, c), prim))
             return 0;
     }
+    if (nexact)
+        __atomic_fetch_add(&rt_exact_cells, nexact, __ATOMIC_RELAXED);
     return 1;
 }
-
-/* cells whose triangle/box test the margin filter of rt_tri_cells left to rt_tri_box (process
-   total, for tests), and the filter's switch (1: on; 0: every cell through the edge tests of
-   rt_tri_box's operands, for tests comparing both) */
-static uint64_t rt_exact_cells;
-static int rt_filter_on = 1;
 
 uint64_t rt_build_exact_cells(void)
 {

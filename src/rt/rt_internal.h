@@ -738,8 +738,8 @@ static inline int rt_fray_leaf(const rt_rayx *r, const rt_leaf *lf, rt_fray *f)
 /* grid build (rt_grid.c) */
 int rt_grid_build(rt_scene *sc, const rt_build_options *o);
 void rt_grid_free(rt_grid *g);
-/* for tests (rt_build.c): the cells whose triangle/box test the build's margin filter left
-   to the exact test (a process total), and the filter switched on (1, the default) or off (0:
+/* for tests (rt_build.c): the cells whose triangle/box test the build's margin filters left
+   to the exact test (a process total), and the filters switched on (1, the default) or off (0:
    every cell through the exact test; the grid is the same either way) */
 uint64_t rt_build_exact_cells(void);
 void rt_build_set_filter(int on);

@@ -1,11 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * test_rt_buildfilter.c -- the margin filter of the grid build (rt_build.c, rt_tri_cells;
- * docs/RAYTRACING.md, "The build's margin filter") keeps the grid that the exact triangle/box
- * tests make, where the filter cannot decide as well as where it can: the grid hash of each
- * scene with the filter on equals the hash with it off (rt_build_set_filter(0): every cell
- * through the exact test), on 1 and 2 build threads, and the filter did hand cells to the
- * exact test (rt_build_exact_cells) on the scenes built for that.
+ * test_rt_buildfilter.c -- the margin filters of the grid build (rt_build.c: rt_tri_cells,
+ * rt_tri_slab, rt_tri_row; docs/RAYTRACING.md, "The build's margin filter") keep the grid
+ * that the exact triangle/box tests make, where the filters cannot decide as well as where
+ * they can: the grid hash of each scene with the filters on equals the hash with them off
+ * (rt_build_set_filter(0): every cell through the exact test rt_tri_box, the whole row range
+ * of rt_tri_row's triangles without its face, inside and plane tests), on 1 and 2 build
+ * threads, and the filters did hand cells to the exact test (rt_build_exact_cells) on the
+ * scenes built for that.
  * Scenes in [0, 8]^3 (two tiny anchor triangles fix the scene box, so that the build's eps =
  * 1e-9 (scale + extent) = 1.6e-8 and the eps-enlarged cell boxes of an 8^3 grid over that box
  * are known here exactly, computed as the build computes them):
@@ -17,11 +19,17 @@
  *    2 (the filter's lanes);
  *  - "slab": the same edges on triangles inside one cell on the third axis, whose cells the
  *    build decides in the projection along that axis (rt_tri_slab);
+ *  - "row": triangles inside one cell on two axes and spanning cells on the third
+ *    (rt_tri_row), their end on it at the values where the row's face test and its eps
+ *    margin flip (computed as the build computes them), in the margin band and on the face;
+ *    on the other two axes 2 eps inside a cell and at the scene box's faces;
  *  - "band": the edges of "touch" and "slab" at B / 8 beside the corner (B the filter's outer
  *    margin, computed here as the build computes it), where the filter's m lies in the middle
  *    of its undecided band on the side where rt_tri_box decides against the wrong bound (the
  *    outer one for a keep, the inner one for a separation): a filter deciding the band by
  *    either bound changes the grid; each triangle sends at least one cell to the exact test;
+ *    and the triangles of "row" in the middle of the row's margin band (eps / 2 inside a
+ *    face), each sending a cell to the exact test;
  *  - "lattice": random triangles with vertices on the enlarged boxes' faces (q - eps, q + eps)
  *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
  *  - "lattice" again with the second level (crowded cells get sub-grids, whose cell boxes the
@@ -219,6 +227,88 @@ static void band_scene(tris *t, int general)
     touch_edges(t, (const double[3]){5.0 - 2.0 * EPS, 4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS}, 0, 1);
 }
 
+/* the cell box of q on an axis as the build computes it from cell_lo and cell_hi (rt_axis_box) */
+static void cell_box(int q, double *bc, double *h)
+{
+    *bc = 0.5 * (cell_lo(q) + cell_hi(q));
+    *h = 0.5 * (cell_hi(q) - cell_lo(q));
+}
+
+/* the smallest double y with y - bc >= t as the build computes it (a comparison of
+   rt_tri_row), found by stepping ulps from x (x near it) */
+static double first_ge(double x, double bc, double t)
+{
+    for (int k = 0; k < 64 && x - bc >= t; k++)
+        x = nextafter(x, -INFINITY);
+    for (int k = 0; k < 64 && !(x - bc >= t); k++)
+        x = nextafter(x, INFINITY);
+    assert_true(x - bc >= t && !(nextafter(x, -INFINITY) - bc >= t));
+    return x;
+}
+
+/* "row": triangles inside one cell on two axes (p, q; rt_tri_row), spanning cells on the
+   third (u), whose end on u lies at the face of cell k's enlarged box, on both sides of the
+   values where rt_tri_row's comparisons flip, computed as the build computes them (mn = bb -
+   bc against h: the face test; against h - eps: the margin), the middle of the margin band
+   (eps / 2 inside the face: the cell to rt_tri_box), and the face itself; the triangle below
+   the face (its top vertex at the lower face of k) or above (its bottom vertex at the upper
+   face of k - 1), touching with a vertex or with an edge in the face; on p and q in the
+   middle of cell 4, 2 eps from its faces (as close as a one-cell range allows), and at the
+   scene box's faces (the first and last cells: the inside test at its bound). band: only the
+   margin band's middle (each triangle sends a cell to rt_tri_box). */
+static void row_scene(tris *t, int band)
+{
+    static const struct {
+        double lo, hi;
+    } pq[] = {{4.0 + 2.0 * EPS, 5.0 - 2.0 * EPS}, {0.0, 1.0 - 2.0 * EPS}, {7.0 + 2.0 * EPS, 8.0}};
+    for (int ax = 0; ax < 3; ax++)
+        for (size_t r = 0; r < sizeof pq / sizeof *pq; r++)
+            for (int k = 2; k <= 7; k++)
+                for (int below = k == 7; below < 2; below++) {
+                    /* the face: the lower one of cell k (the triangle below it, its top mx
+                       = U - bc against -h and eps - h) or the upper one of cell k - 1 (the
+                       triangle above, its bottom mn = U - bc against h and h - eps) */
+                    const int cell = below ? k : k - 1;
+                    double bc, h;
+                    cell_box(cell, &bc, &h);
+                    const double F = below ? cell_lo(cell) : cell_hi(cell);
+                    const double in = below ? INFINITY : -INFINITY; /* into the cell */
+                    double U[8];
+                    int nu = 0;
+                    if (!band) {
+                        /* the face test's flip (kept: mx >= -h, mn <= h, i.e. not mn >=
+                           the double above h): the last value kept and the first not */
+                        const double hu = nextafter(h, INFINITY);
+                        const double keep = below ? first_ge(F, bc, -h)
+                                                  : nextafter(first_ge(F, bc, hu), -INFINITY);
+                        U[nu++] = keep;
+                        U[nu++] = nextafter(keep, -in);
+                        U[nu++] = nextafter(keep, in);
+                        U[nu++] = F;
+                        /* the margin's flip (mx >= eps - h, mn <= h - eps): the last value
+                           without the margin and the first with it */
+                        const double mu = nextafter(h - EPS, INFINITY);
+                        const double m = below ? first_ge(F + EPS, bc, EPS - h)
+                                               : nextafter(first_ge(F - EPS, bc, mu), -INFINITY);
+                        U[nu++] = m;
+                        U[nu++] = nextafter(m, -in);
+                    }
+                    U[nu++] = below ? F + EPS / 2 : F - EPS / 2;
+                    const double s = below ? -1.0 : 1.0; /* from U to the rest of the triangle */
+                    const double p0 = pq[r].lo, p1 = pq[r].hi, pm = 0.5 * (p0 + p1);
+                    for (int j = 0; j < nu; j++) {
+                        const double u = U[j];
+                        /* a vertex at U, the plane tilted; an edge at U */
+                        const double t1[3][3] = {{u, pm, 0.75 * p0 + 0.25 * p1},
+                                                 {u + s * 1.25, p0, p1},
+                                                 {u + s * 0.75, p1, p0}};
+                        const double t2[3][3] = {{u, p0, p0}, {u, p1, p1}, {u + s * 1.25, pm, p0}};
+                        add_rot(t, ax, 0, t1);
+                        add_rot(t, ax, 0, t2);
+                    }
+                }
+}
+
 /* "lattice": n random triangles near the centre, vertices on q - eps, q + eps, q, q + 1/2 */
 static void lattice_scene(tris *t, int n, uint64_t seed)
 {
@@ -319,15 +409,28 @@ static void test_slab(void **state)
     free(t.v);
 }
 
-/* every triangle of "band" puts a cell in the filter's band: at least one cell per triangle
-   to the exact test */
+static void test_row(void **state)
+{
+    (void)state;
+    tris t = {0};
+    row_scene(&t, 0);
+    (void)check(&t, 0, "row");
+    free(t.v);
+}
+
+/* every triangle of "band" puts a cell in the filter's band, every one of "row" with band
+   set a cell in rt_tri_row's margin band: at least one cell per triangle to the exact test */
 static void test_band(void **state)
 {
     (void)state;
-    for (int general = 1; general >= 0; general--) {
+    static const char *const names[] = {"band, general", "band, slab", "band, row"};
+    for (int kind = 0; kind < 3; kind++) {
         tris t = {0};
-        band_scene(&t, general);
-        const uint64_t exact = check(&t, 0, general ? "band, general" : "band, slab");
+        if (kind < 2)
+            band_scene(&t, kind == 0);
+        else
+            row_scene(&t, 1);
+        const uint64_t exact = check(&t, 0, names[kind]);
         assert_true(exact >= t.n);
         free(t.v);
     }
@@ -357,6 +460,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_touch),
         cmocka_unit_test(test_slab),
+        cmocka_unit_test(test_row),
         cmocka_unit_test(test_band),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_lattice_sub),
