@@ -451,7 +451,7 @@ static void rt_prim_plane(const rt_scene *sc, const rt_prim *p, double n[3], dou
  * cells of the other two axes only: its result is kept for the cells sharing them
  * (X group: per row of the x loop; Y group: per x within a z slab; Z group: per (x, y) over
  * all z). 0: no memory. */
-enum { RT_SPAN = 32 };
+enum { RT_SPAN = RT_BUILD_SPAN };
 
 typedef struct rt_axis_cell {
     double bc, h;  /* the eps-enlarged cell box on this axis: centre, half size */
@@ -466,7 +466,26 @@ typedef struct rt_axis_cell {
    for each edge i, m = q->cw[i] - p->cv[i] approximates a.(bc - V0) - s / 2; |m| > ro[i]:
    the axis separates (rt_tri_box would find so); |m| <= ri[i]: it does not; between (or
    NaN): undecided. Returns 1 when an axis of the group separates, 0 when none does, -1
-   when undecided. */
+   when undecided. The plain C form, which targets without SSE2 use; compiled everywhere, so
+   that a test compares it with the SSE2 form (rt_build_edge_filter): the same answers
+   where ri[i] <= ro[i] or either is NaN, as the build makes them (with ri > ro, |m| in
+   between separates in SSE2 only). */
+static inline int rt_edge_filter_c(const double ro[3], const double ri[3],
+                                   const rt_axis_cell *p, const rt_axis_cell *q)
+{
+    int r = 0;
+    for (int i = 0; i < 3; i++) {
+        const double m = fabs(q->cw[i] - p->cv[i]);
+        if (!(m <= ri[i])) {
+            if (m > ro[i])
+                return 1;
+            r = -1;
+        }
+    }
+    return r;
+}
+
+/* rt_edge_filter_c's answers, in SSE2 where compiled */
 static inline int rt_edge_filter(const double ro[3], const double ri[3], const rt_axis_cell *p,
                                  const rt_axis_cell *q)
 {
@@ -480,16 +499,7 @@ static inline int rt_edge_filter(const double ro[3], const double ri[3], const r
     const int und = _mm_movemask_pd(_mm_cmpnle_pd(m01, _mm_loadu_pd(ri))) | !(m2 <= ri[2]);
     return sep ? 1 : -(und != 0);
 #else
-    int r = 0;
-    for (int i = 0; i < 3; i++) {
-        const double m = fabs(q->cw[i] - p->cv[i]);
-        if (!(m <= ri[i])) {
-            if (m > ro[i])
-                return 1;
-            r = -1;
-        }
-    }
-    return r;
+    return rt_edge_filter_c(ro, ri, p, q);
 #endif
 }
 
@@ -700,18 +710,50 @@ rt_axis_cells(const rt_tri *t, const double e[3][3], const double n[3], const do
 /* rt_tri_slab's filter of group a for the cells of a range, row by row: for row kq of Q (not
    in outq) and cell kp of P, edge i: m = |cw[kq][i] - cvT[i][kp]| (rt_edge_filter's m);
    bit kp of sepm[kq] set when m > ro[i] for an edge, of undm[kq] when !(m <= ri[i]) for one
-   (NaN included); bits at np and above are arbitrary. The cells of a row side by side in
-   lanes, two at a time (cvT[i][np] defined), without a branch per cell. */
-static void rt_slab_masks(const double cvT[3][RT_SPAN + 1], int np, const double cw[][3], int nq,
-                          uint32_t outq, const double ro[3], const double ri[3], uint32_t *sepm,
-                          uint32_t *undm)
+   (NaN included); bits at np and above are arbitrary (0 here). The plain C form, one cell at
+   a time, which targets without SSE2 use; compiled everywhere, so that a test compares it
+   with the SSE2 form (rt_build_slab_masks): the same bits below np, for any inputs. */
+static void rt_slab_masks_c(const double cvT[3][RT_SPAN + 1], int np, const double cw[][3],
+                            int nq, uint32_t outq, const double ro[3], const double ri[3],
+                            uint32_t *sepm, uint32_t *undm)
 {
     for (int kq = 0; kq < nq; kq++) {
         if (outq >> kq & 1)
             continue;
         const double *w = cw[kq];
         uint32_t sm = 0, um = 0;
-#if defined(__SSE2__)
+        for (int kp = 0; kp < np; kp++) {
+            int sep = 0, und = 0;
+            for (int i = 0; i < 3; i++) {
+                const double m = fabs(w[i] - cvT[i][kp]);
+                sep |= m > ro[i];
+                und |= !(m <= ri[i]);
+            }
+            sm |= (uint32_t)sep << kp;
+            um |= (uint32_t)und << kp;
+        }
+        sepm[kq] = sm;
+        undm[kq] = um;
+    }
+}
+
+/* rt_slab_masks_c's masks; in SSE2 the cells of a row side by side in lanes, two at a time
+   (cvT[i][np] defined; bit np then arbitrary), without a branch per cell. inline: gcc then
+   inlines it into rt_tri_slab as when that was its one caller (without it, the second
+   caller, rt_build_slab_masks, kept it out of line and changed rt_tri_slab's code) */
+static inline void
+rt_slab_masks(const double cvT[3][RT_SPAN + 1], int np, const double cw[][3], int nq,
+              uint32_t outq, const double ro[3], const double ri[3], uint32_t *sepm,
+              uint32_t *undm)
+{
+#if !defined(__SSE2__)
+    rt_slab_masks_c(cvT, np, cw, nq, outq, ro, ri, sepm, undm);
+#else
+    for (int kq = 0; kq < nq; kq++) {
+        if (outq >> kq & 1)
+            continue;
+        const double *w = cw[kq];
+        uint32_t sm = 0, um = 0;
         const __m128d sign = _mm_set1_pd(-0.0);
         for (int kp = 0; kp < np; kp += 2) {
             __m128d s = _mm_setzero_pd(), u = _mm_setzero_pd();
@@ -724,21 +766,31 @@ static void rt_slab_masks(const double cvT[3][RT_SPAN + 1], int np, const double
             sm |= (uint32_t)_mm_movemask_pd(s) << kp;
             um |= (uint32_t)_mm_movemask_pd(u) << kp;
         }
-#else
-        for (int kp = 0; kp < np; kp++) {
-            int sep = 0, und = 0;
-            for (int i = 0; i < 3; i++) {
-                const double m = fabs(w[i] - cvT[i][kp]);
-                sep |= m > ro[i];
-                und |= !(m <= ri[i]);
-            }
-            sm |= (uint32_t)sep << kp;
-            um |= (uint32_t)und << kp;
-        }
-#endif
         sepm[kq] = sm;
         undm[kq] = um;
     }
+#endif
+}
+
+int rt_build_edge_filter(int form, const double ro[3], const double ri[3], const double cv[3],
+                         const double cw[3])
+{
+    rt_axis_cell p, q;
+    memset(&p, 0, sizeof p);
+    memset(&q, 0, sizeof q);
+    memcpy(p.cv, cv, sizeof p.cv);
+    memcpy(q.cw, cw, sizeof q.cw);
+    return form ? rt_edge_filter(ro, ri, &p, &q) : rt_edge_filter_c(ro, ri, &p, &q);
+}
+
+void rt_build_slab_masks(int form, const double (*cvT)[RT_BUILD_SPAN + 1], int np,
+                         const double (*cw)[3], int nq, uint32_t outq, const double ro[3],
+                         const double ri[3], uint32_t *sepm, uint32_t *undm)
+{
+    if (form)
+        rt_slab_masks(cvT, np, cw, nq, outq, ro, ri, sepm, undm);
+    else
+        rt_slab_masks_c(cvT, np, cw, nq, outq, ro, ri, sepm, undm);
 }
 
 /* Triangle t whose cells span two axes with one cell on the third, a (c0[a] == c1[a]), as

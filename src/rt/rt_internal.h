@@ -743,6 +743,19 @@ void rt_grid_free(rt_grid *g);
    every cell through the exact test; the grid is the same either way) */
 uint64_t rt_build_exact_cells(void);
 void rt_build_set_filter(int on);
+/* the most cells per axis of the triangle ranges that the build's filters take at once */
+enum { RT_BUILD_SPAN = 32 };
+/* for tests (rt_build.c): the build's edge filter (rt_edge_filter) and the slab path's masks
+   (rt_slab_masks) in their plain C forms (form 0: what targets without SSE2 run) or as the
+   build runs them (form 1: SSE2 where compiled), so that a test compares the two bit for bit.
+   rt_build_edge_filter: cv the terms of the cell on P, cw those of the cell on Q (rt_axis_cell
+   there); 1 separates, 0 keeps, -1 undecided. rt_build_slab_masks: cvT[i][np] must be
+   defined; sepm, undm written for the rows not in outq (bits np and above arbitrary). */
+int rt_build_edge_filter(int form, const double ro[3], const double ri[3], const double cv[3],
+                         const double cw[3]);
+void rt_build_slab_masks(int form, const double (*cvT)[RT_BUILD_SPAN + 1], int np,
+                         const double (*cw)[3], int nq, uint32_t outq, const double ro[3],
+                         const double ri[3], uint32_t *sepm, uint32_t *undm);
 /* the k-th smallest (from 0) of the n values r, the value r[k] has once r is sorted (r may be
    reordered; rt_build.c, the top level's median extent) */
 double rt_kth_smallest(double *r, size_t n, size_t k);

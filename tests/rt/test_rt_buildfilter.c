@@ -455,6 +455,262 @@ static void test_lattice_sub(void **state)
     free(t.v);
 }
 
+/* ---- the filters' plain C forms against the SSE2 forms (rt_build_edge_filter,
+   rt_build_slab_masks: form 0 is what targets without SSE2 run, form 1 what this one runs) */
+
+/* a double of any kind: small (most), of any exponent, subnormal, +-0, +-inf, NaN */
+static double any_double(uint64_t *st)
+{
+    const double r = rtu_rand(st) - 0.5;
+    switch ((int)(16 * rtu_rand(st))) {
+    case 0:
+        return 0.0;
+    case 1:
+        return -0.0;
+    case 2:
+        return INFINITY;
+    case 3:
+        return -INFINITY;
+    case 4:
+        return NAN;
+    case 5:
+        return DBL_MIN * r; /* subnormal */
+    case 6:
+        return ldexp(r, (int)(2100 * rtu_rand(st)) - 1074); /* up to overflow */
+    default:
+        return 8.0 * r;
+    }
+}
+
+/* the bounds (ri, ro) of an edge whose filter value is m = |cw - cv| as the build computes
+   it: around m (ties, one ulp either way), random, or as the filter off makes them (ro
+   infinite, ri -inf or NaN); ri <= ro or NaN, as the build's are */
+static void any_bounds(uint64_t *st, double m, double *ri, double *ro)
+{
+    double a = any_double(st), b = any_double(st);
+    switch ((int)(8 * rtu_rand(st))) {
+    case 0:
+        a = m;
+        break;
+    case 1:
+        b = m;
+        break;
+    case 2:
+        a = nextafter(m, INFINITY);
+        break;
+    case 3:
+        b = nextafter(m, -INFINITY);
+        break;
+    case 4:
+        a = -INFINITY;
+        b = INFINITY;
+        break;
+    case 5:
+        a = NAN;
+        b = INFINITY;
+        break;
+    default:
+        break;
+    }
+    *ri = a > b ? b : a; /* NaN stays where it is */
+    *ro = a > b ? a : b;
+}
+
+/* the filter's answer by its definition: 1 if an edge's m > ro, else -1 if one's m is not
+   <= ri, else 0 */
+static int edge_def(const double ro[3], const double ri[3], const double cv[3],
+                    const double cw[3])
+{
+    int sep = 0, und = 0;
+    for (int i = 0; i < 3; i++) {
+        const double m = fabs(cw[i] - cv[i]);
+        sep |= m > ro[i];
+        und |= !(m <= ri[i]);
+    }
+    return sep ? 1 : -und;
+}
+
+/* one edge of a hand-made case: m = |cw - cv| (cw, cv given) placed by state against its
+   bounds: below ri, at ri, between, at ro, above ro, m NaN, ri NaN, the filter off (ro inf,
+   ri -inf), ri = ro = m */
+enum { EDGE_STATES = 9 };
+static void edge_state(int state, double *cv, double *cw, double *ri, double *ro)
+{
+    if (state == 5)
+        *cw = NAN;
+    const double m = fabs(*cw - *cv);
+    switch (state) {
+    case 0:
+        *ri = nextafter(m, INFINITY);
+        *ro = *ri + 1.0;
+        break;
+    case 1:
+        *ri = m;
+        *ro = m + 1.0;
+        break;
+    case 2:
+        *ri = nextafter(m, -INFINITY);
+        *ro = nextafter(m, INFINITY);
+        break;
+    case 3:
+        *ri = nextafter(m, -INFINITY);
+        *ro = m;
+        break;
+    case 4:
+        *ro = nextafter(m, -INFINITY);
+        *ri = *ro - 1.0;
+        break;
+    case 5:
+        *ri = 1.0;
+        *ro = 2.0;
+        break;
+    case 6:
+        *ri = NAN;
+        *ro = nextafter(m, INFINITY);
+        break;
+    case 7:
+        *ri = -INFINITY;
+        *ro = INFINITY;
+        break;
+    default:
+        *ri = *ro = m;
+        break;
+    }
+}
+
+/* rt_edge_filter's two forms give the same answer as each other and, on the hand-made cases,
+   as the definition: every combination of the three edges' states (the edges in the two SSE2
+   lanes and alone) at several magnitudes, then random cells and bounds */
+static void test_forms_edge(void **state)
+{
+    (void)state;
+    uint64_t st = 12345;
+    long n = 0;
+    static const double mags[] = {1.0, 0x1p-1060, 0x1p1000, 3.0e-5};
+    for (size_t g = 0; g < sizeof mags / sizeof *mags; g++)
+        for (int c = 0; c < EDGE_STATES * EDGE_STATES * EDGE_STATES; c++) {
+            double cv[3], cw[3], ri[3], ro[3];
+            for (int i = 0, k = c; i < 3; i++, k /= EDGE_STATES) {
+                cv[i] = mags[g] * (rtu_rand(&st) - 0.5);
+                cw[i] = mags[g] * (rtu_rand(&st) - 0.5);
+                edge_state(k % EDGE_STATES, &cv[i], &cw[i], &ri[i], &ro[i]);
+            }
+            const int d = edge_def(ro, ri, cv, cw);
+            const int r0 = rt_build_edge_filter(0, ro, ri, cv, cw);
+            const int r1 = rt_build_edge_filter(1, ro, ri, cv, cw);
+            if (r0 != d || r1 != d)
+                fail_msg("edge filter, states %d (magnitude %g): plain C %d, as built %d, "
+                         "defined %d", c, mags[g], r0, r1, d);
+            n++;
+        }
+    for (int k = 0; k < 200000; k++) {
+        double cv[3], cw[3], ri[3], ro[3];
+        for (int i = 0; i < 3; i++) {
+            cv[i] = any_double(&st);
+            cw[i] = rtu_rand(&st) < 0.5 ? cv[i] + any_double(&st) : any_double(&st);
+            any_bounds(&st, fabs(cw[i] - cv[i]), &ri[i], &ro[i]);
+        }
+        const int r0 = rt_build_edge_filter(0, ro, ri, cv, cw);
+        const int r1 = rt_build_edge_filter(1, ro, ri, cv, cw);
+        if (r0 != r1)
+            fail_msg("edge filter, random case %d: plain C %d, as built %d (cv %a %a %a, cw "
+                     "%a %a %a, ri %a %a %a, ro %a %a %a)", k, r0, r1, cv[0], cv[1], cv[2],
+                     cw[0], cw[1], cw[2], ri[0], ri[1], ri[2], ro[0], ro[1], ro[2]);
+        n++;
+    }
+    printf("edge filter: %ld cases, the two forms equal\n", n);
+}
+
+/* rt_slab_masks' forms for one range: the same masks below np for every row not in outq,
+   and with want (the definition's masks) when given; rows in outq left alone */
+static void slab_compare(const double (*cvT)[RT_BUILD_SPAN + 1], int np, const double (*cw)[3],
+                         int nq, uint32_t outq, const double ro[3], const double ri[3],
+                         const uint32_t *wsep, const uint32_t *wund, const char *what, int k)
+{
+    uint32_t s0[RT_BUILD_SPAN], u0[RT_BUILD_SPAN], s1[RT_BUILD_SPAN], u1[RT_BUILD_SPAN];
+    for (int q = 0; q < RT_BUILD_SPAN; q++)
+        s0[q] = u0[q] = s1[q] = u1[q] = 0xdeadbeefu;
+    rt_build_slab_masks(0, cvT, np, cw, nq, outq, ro, ri, s0, u0);
+    rt_build_slab_masks(1, cvT, np, cw, nq, outq, ro, ri, s1, u1);
+    const uint32_t all = np == 32 ? ~(uint32_t)0 : ((uint32_t)1 << np) - 1;
+    for (int q = 0; q < RT_BUILD_SPAN; q++) {
+        if (q >= nq || (outq >> q & 1)) { /* not written */
+            if (s0[q] != 0xdeadbeefu || u0[q] != 0xdeadbeefu || s1[q] != 0xdeadbeefu ||
+                u1[q] != 0xdeadbeefu)
+                fail_msg("slab masks, %s %d: row %d (out) written", what, k, q);
+            continue;
+        }
+        if ((s0[q] & all) != (s1[q] & all) || (u0[q] & all) != (u1[q] & all))
+            fail_msg("slab masks, %s %d, row %d of %d, %d cells: plain C %08x %08x, as built "
+                     "%08x %08x", what, k, q, nq, np, s0[q] & all, u0[q] & all, s1[q] & all,
+                     u1[q] & all);
+        if (wsep && ((s0[q] & all) != wsep[q] || (u0[q] & all) != wund[q]))
+            fail_msg("slab masks, %s %d, row %d: %08x %08x, defined %08x %08x", what, k, q,
+                     s0[q] & all, u0[q] & all, wsep[q], wund[q]);
+    }
+}
+
+/* rt_slab_masks' two forms give the same masks, and on the hand-made ranges those of the
+   definition: every row length 1 .. 32 with the cells' m below ri, at ri, between, at ro,
+   above ro or NaN on each edge in turn (the SSE2 lanes' pairs, the odd last cell); then
+   random ranges, with m tied to a bound in some cells */
+static void test_forms_slab(void **state)
+{
+    (void)state;
+    uint64_t st = 777;
+    double cvT[3][RT_BUILD_SPAN + 1], cw[RT_BUILD_SPAN][3], ro[3], ri[3];
+    uint32_t ws[RT_BUILD_SPAN], wu[RT_BUILD_SPAN];
+    /* hand-made: ri 1, ro 2; cell p has m(p) = 0.5, 1, 1.5, 2, 3 or NaN (state (p + p / 6)
+       mod 6, all exact) on edge (p / 6) mod 3 in row 0 (cw 4, cvT 4 - m), 0.25 on the
+       others: each state on each edge in both lanes of a pair; row 1 has cw -4 (m 8 - m(p):
+       separates), row 2 is out, rows 3 .. have cw 4 + (q mod 4) / 2 (m + 0.5 ...) */
+    static const double ms[] = {0.5, 1.0, 1.5, 2.0, 3.0, NAN};
+    for (int np = 1; np <= RT_BUILD_SPAN; np++)
+        for (int nq = 1; nq <= 8; nq++) {
+            const uint32_t outq = nq > 2 ? 4u : 0u;
+            for (int i = 0; i < 3; i++) {
+                ri[i] = 1.0;
+                ro[i] = 2.0;
+                cvT[i][np] = rtu_rand(&st); /* the lane after the last cell */
+                for (int p = 0; p < np; p++)
+                    cvT[i][p] = 4.0 - (i == (p / 6) % 3 ? ms[(p + p / 6) % 6] : 0.25);
+            }
+            for (int q = 0; q < nq; q++) {
+                ws[q] = wu[q] = 0;
+                for (int i = 0; i < 3; i++)
+                    cw[q][i] = q == 1 ? -4.0 : 4.0 + 0.5 * (q % 4);
+            }
+            for (int q = 0; q < nq; q++)
+                for (int p = 0; p < np; p++) {
+                    int sep = 0, und = 0;
+                    for (int i = 0; i < 3; i++) {
+                        const double m = fabs(cw[q][i] - cvT[i][p]);
+                        sep |= m > ro[i];
+                        und |= !(m <= ri[i]);
+                    }
+                    ws[q] |= (uint32_t)sep << p;
+                    wu[q] |= (uint32_t)und << p;
+                }
+            slab_compare(cvT, np, cw, nq, outq, ro, ri, ws, wu, "hand-made", np);
+        }
+    for (int k = 0; k < 20000; k++) {
+        const int np = 1 + (int)(RT_BUILD_SPAN * rtu_rand(&st));
+        const int nq = 1 + (int)(RT_BUILD_SPAN * rtu_rand(&st));
+        const uint32_t outq = rtu_rand(&st) < 0.5 ? 0u : (uint32_t)(st >> 32);
+        for (int i = 0; i < 3; i++)
+            for (int p = 0; p <= np; p++)
+                cvT[i][p] = any_double(&st);
+        for (int q = 0; q < nq; q++)
+            for (int i = 0; i < 3; i++)
+                cw[q][i] = rtu_rand(&st) < 0.5 ? cvT[i][0] + any_double(&st) : any_double(&st);
+        for (int i = 0; i < 3; i++) {
+            const int p = (int)(np * rtu_rand(&st)), q = (int)(nq * rtu_rand(&st));
+            any_bounds(&st, fabs(cw[q][i] - cvT[i][p]), &ri[i], &ro[i]);
+        }
+        slab_compare(cvT, np, cw, nq, outq, ro, ri, NULL, NULL, "random", k);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -464,6 +720,8 @@ int main(void)
         cmocka_unit_test(test_band),
         cmocka_unit_test(test_lattice),
         cmocka_unit_test(test_lattice_sub),
+        cmocka_unit_test(test_forms_edge),
+        cmocka_unit_test(test_forms_slab),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
