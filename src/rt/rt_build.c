@@ -551,9 +551,12 @@ static int rt_filter_on = 1;
  * the computed tests err by ~1e-15 of the scene's scale times that norm (eps is 1e-9 of it):
  * the 9 edge tests keep it, and the face and plane tests are computed as rt_tri_cells
  * computes them (the same operands). A cell without the margin gets rt_tri_box's tests (the
- * same decision as rt_tri_cells', bit for bit). With the filters off (rt_build_set_filter),
- * every cell of the row goes through rt_tri_box, without the face test, the inside test or
- * the margins: the reference that tests compare the row's decisions with.
+ * same decision as rt_tri_cells', bit for bit; with the triangle inside the box on the other
+ * two axes, rt_tri_box's edge tests cannot separate a cell that the face tests keep, by
+ * monotone rounding, so it decides as the face and plane tests: docs/RAYTRACING.md, "One
+ * cell on two axes"). With the filters off (rt_build_set_filter), every cell of the row
+ * goes through rt_tri_box, without the face test, the inside test or the margins: the
+ * reference that tests compare the row's decisions with.
  * Returns 1, 0 (no memory), or -1 when the triangle is not inside on the other two axes
  * (nothing pushed). */
 static int rt_tri_row(const rt_tri *t, const double e[3][3], const double n[3], const double bb[6],

@@ -34,6 +34,11 @@
  *    and on q and q + 1/2: faces, edges and corners touched exactly everywhere;
  *  - "lattice" again with the second level (crowded cells get sub-grids, whose cell boxes the
  *    build takes from a table).
+ * And the plain C forms of the edge filter and of the slab path's masks (what targets without
+ * SSE2 build; rt_build_edge_filter, rt_build_slab_masks) give the SSE2 forms' answers bit for
+ * bit, and the definition's on hand-made cases: every combination of the edges' m against
+ * their bounds (below, at, above ri and ro, NaN, the filter off), cells in both lanes of an
+ * SSE2 pair, then random cells and bounds of any magnitude, ties and NaN included.
  */
 #include <stdarg.h>
 #include <stddef.h>
