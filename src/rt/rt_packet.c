@@ -112,6 +112,7 @@ typedef struct rt_pk {
     rt_pk_rec rec[RT_PK_REC][RT_PACKET];
     /* each ray's line: o[a1] + (z - o[K]) * m1, o[a2] + (z - o[K]) * m2 at z along K */
     double oK[RT_PACKET], o1[RT_PACKET], o2[RT_PACKET], m1[RT_PACKET], m2[RT_PACKET];
+    double dK[RT_PACKET];    /* each ray's direction along K (rt_pk_hit's end of its walk) */
     double nf[2][3];         /* the grid box's near and far plane per axis (rt_pk_clip) */
     /* the frustum of the rays of fmask: their crossings of z = z0 within [lo, hi] and their
        slopes within [mlo, mhi], per axis a1 (index 0) and a2 (1) */
@@ -142,8 +143,8 @@ typedef struct rt_pk {
     int kx, ky, kz;
     double uemin, usmax;     /* min of ue, max of us over the rays (fast paths of rt_pk_in) */
     double usmin, uemax;     /* the first start and the last end of the rays (rt_pk_ends) */
-    const double *go[RT_PACKET], *gd[RT_PACKET]; /* the rays in the grid frame (the walk's):
-                                                    the rt_rayx's own, or in rot */
+    const double *go[RT_PACKET], *gd[RT_PACKET]; /* the rays in the grid frame (the general
+                                                    set-up's): the rt_rayx's own, or in rot */
     double rot[RT_PACKET][2][3];
     rt_rayx *r;              /* the rays as the tests take them (the caller's storage) */
     const rt_ray *rays;      /* the rays as given */
@@ -471,19 +472,12 @@ static void rt_pk_choose(void)
 
 /* ---- set-up ---- */
 
-/* point p (and direction v) in a rotated grid's frame: rt_grid_point's (rt_grid_dir's)
-   operations (rt_build.c), the same values, inline here (three calls per triangle tested
-   were 7 % of fandisk's primary packets' instructions) */
+/* point p in a rotated grid's frame: rt_grid_point's operations (rt_build.c), the same
+   values, inline here (three calls per triangle tested were 7 % of fandisk's primary
+   packets' instructions) */
 static inline void rt_pk_gpoint(const rt_grid *g, const double p[3], double out[3])
 {
     const double q[3] = {p[0] - g->c[0], p[1] - g->c[1], p[2] - g->c[2]};
-    for (int a = 0; a < 3; a++)
-        out[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
-}
-
-static inline void rt_pk_gdir(const rt_grid *g, const double v[3], double out[3])
-{
-    const double q[3] = {v[0], v[1], v[2]};
     for (int a = 0; a < 3; a++)
         out[a] = g->R[a][0] * q[0] + g->R[a][1] * q[1] + g->R[a][2] * q[2];
 }
@@ -755,6 +749,7 @@ static int rt_pk_ray(rt_pk *p, int k, int *oct)
     p->tx[k] = r->tmax;
     p->sy[k] = r->sy;
     p->oK[k] = go[p->K];
+    p->dK[k] = gd[p->K];
     p->o1[k] = go[p->a1];
     p->o2[k] = go[p->a2];
     if (g->rotated) {
@@ -983,6 +978,7 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
             _mm256_storeu_pd(p->eb + k, _mm256_setzero_pd());
         }
         _mm256_storeu_pd(p->oK + k, _mm256_and_pd(in, oK));
+        _mm256_storeu_pd(p->dK + k, _mm256_and_pd(in, dK));
         _mm256_storeu_pd(p->o1 + k, _mm256_and_pd(in, RT_PK_GO(a1)));
         _mm256_storeu_pd(p->o2 + k, _mm256_and_pd(in, RT_PK_GO(a2)));
 #undef RT_PK_GO
@@ -1007,7 +1003,7 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
     p->uemin = fmin(fmin(e[2][0], e[2][1]), fmin(e[2][2], e[2][3]));
     p->uemax = fmax(fmax(e[3][0], e[3][1]), fmax(e[3][2], e[3][3]));
     rt_pk_setup_end(p, &x, live);
-    return 1; /* go, gd: set by rt_pk_make */
+    return 1;
 }
 
 /* the two cases in functions of their own (the grid frame's operations stay out of the
@@ -1154,6 +1150,7 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
             _mm512_storeu_pd(p->eb + k, _mm512_setzero_pd());
         }
         _mm512_storeu_pd(p->oK + k, _mm512_maskz_mov_pd(in, oK));
+        _mm512_storeu_pd(p->dK + k, _mm512_maskz_mov_pd(in, dK));
         _mm512_storeu_pd(p->o1 + k, _mm512_maskz_mov_pd(in, RT_PK_GO(a1)));
         _mm512_storeu_pd(p->o2 + k, _mm512_maskz_mov_pd(in, RT_PK_GO(a2)));
 #undef RT_PK_GO
@@ -1173,7 +1170,7 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
     p->uemin = _mm512_reduce_min_pd(uemin);
     p->uemax = _mm512_reduce_max_pd(uemax);
     rt_pk_setup_end(p, &x, live);
-    return 1; /* go, gd: set by rt_pk_make */
+    return 1;
 }
 
 RT_PK_AVX512 static int rt_pk_setup_avx512(rt_pk *p, const rt_ray *rays)
@@ -1299,7 +1296,10 @@ static int rt_pk_setup(rt_pk *p, const rt_scene *sc, rt_ctx *ctx, size_t n, cons
    computed with its operations: written here directly. A build without NDEBUG (the tests')
    compares them with rt_rayx_setup's byte for byte, takes rt_rayx_setup's on a difference
    and counts it (rt_packet_make_differ: test_rt_packet requires 0), so that a change of
-   rt_rayx or rt_rayx_setup that this copy misses is caught. */
+   rt_rayx or rt_rayx_setup that this copy misses is caught; it also checks the set-up's oK,
+   dK against the ray's o[K], d[K] in the grid frame. The ray is not taken into the grid
+   frame here: rt_pk_hit needs only its K components, oK and dK (on fandisk's packets the
+   rotation of every ray made was 3 % of the instructions). */
 #ifndef NDEBUG
 static atomic_ullong rt_pk_make_differ;
 #endif
@@ -1342,16 +1342,22 @@ static inline void rt_pk_make(rt_pk *p, uint64_t m)
             atomic_fetch_add_explicit(&rt_pk_make_differ, 1, memory_order_relaxed);
             *r = ref;
         }
-#endif
-        if (p->sc->grid.rotated) { /* as rt_pk_ray */
-            rt_pk_gpoint(&p->sc->grid, p->r[k].o, p->rot[k][0]);
-            rt_pk_gdir(&p->sc->grid, p->r[k].d, p->rot[k][1]);
-            p->go[k] = p->rot[k][0];
-            p->gd[k] = p->rot[k][1];
-        } else { /* the ray's own o and d (no component flushed) */
-            p->go[k] = p->r[k].o;
-            p->gd[k] = p->r[k].d;
+        /* the set-up's oK, dK: the ray's o[K], d[K] in the grid frame, as rt_pk_ray takes
+           them (rt_grid_point's and rt_grid_dir's operations on a rotated grid) */
+        double go[3], gd[3];
+        memcpy(go, r->o, sizeof go);
+        memcpy(gd, r->d, sizeof gd);
+        if (p->sc->grid.rotated) {
+            rt_grid_point(&p->sc->grid, r->o, go);
+            rt_grid_dir(&p->sc->grid, r->d, gd);
         }
+        if (memcmp(&go[p->K], &p->oK[k], sizeof go[0]) ||
+            memcmp(&gd[p->K], &p->dK[k], sizeof gd[0])) {
+            atomic_fetch_add_explicit(&rt_pk_make_differ, 1, memory_order_relaxed);
+            p->oK[k] = go[p->K];
+            p->dK[k] = gd[p->K];
+        }
+#endif
     }
     p->made |= m;
 }
@@ -1379,7 +1385,7 @@ static void rt_pk_hit(rt_pk *p, int k, uint32_t i, double t, const rt_tri_err *q
     if (p->bi[k] != old) { /* the walk's end: beyond the best hit's window (4 bounds) */
         const double te = p->best[k] + 4.0 * p->eb[k];
         const double tend = te < p->t1[k] ? te : p->t1[k];
-        const double ue = p->sg * (p->go[k][p->K] + tend * p->gd[k][p->K]);
+        const double ue = p->sg * (p->oK[k] + tend * p->dK[k]);
         /* a new best whose window reaches further than the last one's (a larger error
            bound): cells between the two ends may have been passed over for this ray, so its
            hits are not known to be complete: the single-ray walk decides */
