@@ -847,6 +847,29 @@ static inline __attribute__((always_inline)) void rt_pk_setup_end(rt_pk *p, cons
      rt_pk_clip's) and the extent along K (rt_pk_range's).
    Returns 0 if a ray is not plain or the rays do not share the axes and octant: then the
    general set-up runs (and decides coherence as before). */
+/* the lanes of rays k .. k + 3 when none of them is walked: what the set-up stores for a
+   ray not walked (0 in the kernels' and the walk's lanes; a nearest-hit ray's records as
+   for any ray: no hit; its end t1 is never read), without the divisions of the rays walked */
+static inline __attribute__((target("avx2"), always_inline)) void rt_pk_lanes0_avx2(rt_pk *p,
+                                                                                  int k,
+                                                                                  const int any)
+{
+    const __m256d z = _mm256_setzero_pd();
+    double *const f[] = {p->ox, p->oy, p->oz, p->sx, p->sy, p->oK, p->dK, p->o1, p->o2,
+                         p->m1, p->m2, p->us, p->ue};
+    for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
+        _mm256_storeu_pd(f[j] + k, z);
+    if (any) {
+        _mm256_storeu_pd(p->sz + k, z);
+        _mm256_storeu_pd(p->tn + k, z);
+        _mm256_storeu_pd(p->tx + k, z);
+    } else {
+        _mm256_storeu_pd(p->t1 + k, z);
+        _mm256_storeu_pd(p->best + k, _mm256_set1_pd(INFINITY));
+        _mm256_storeu_pd(p->eb + k, z);
+    }
+}
+
 static inline __attribute__((target("avx2"), always_inline)) int
 rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
 {
@@ -908,8 +931,6 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
             return 0; /* not the axes of ray 0 */
         if (rotated && _mm256_movemask_pd(v[3 + kz]) != (neg ? 15 : 0))
             return 0; /* (else the octant's check below) */
-        const __m256d sz = _mm256_div_pd(one, v[3 + kz]);
-        const __m256d sx = _mm256_mul_pd(v[3 + kx], sz), sy = _mm256_mul_pd(v[3 + ky], sz);
         /* the ray in the grid frame: go[0..2], gd[0..2] (v's own on a grid not rotated) */
         __m256d rv[6];
 #define RT_PK_GO(a) (rotated ? rv[a] : v[a])
@@ -951,6 +972,12 @@ rt_pk_setup_avx2_body(rt_pk *p, const rt_ray *rays, const int rotated)
         const __m256i a0 = _mm256_and_si256(_mm256_castpd_si256(T0), absm);
         const __m256d in = _mm256_and_pd(_mm256_cmp_pd(T0, T1, _CMP_LE_OQ),
                                          _mm256_castsi256_pd(_mm256_cmpgt_epi64(inf, a0)));
+        if (!_mm256_movemask_pd(in)) { /* none walked (rays beside the box): their lanes */
+            rt_pk_lanes0_avx2(p, k, any);
+            continue;
+        }
+        const __m256d sz = _mm256_div_pd(one, v[3 + kz]);
+        const __m256d sx = _mm256_mul_pd(v[3 + kx], sz), sy = _mm256_mul_pd(v[3 + ky], sz);
         const __m256d oK = RT_PK_GO(K), dK = RT_PK_GD(K);
         const __m256d us = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T0, dK)));
         const __m256d ue = _mm256_mul_pd(sg, _mm256_add_pd(oK, _mm256_mul_pd(T1, dK)));
@@ -1020,6 +1047,27 @@ __attribute__((target("avx2"))) static int rt_pk_setup_rot_avx2(rt_pk *p, const 
 
 /* rt_pk_setup_avx2_body with AVX-512: 8 rays a step (n a multiple of 8), the same checks and
    operations per lane, in mask registers */
+/* rt_pk_lanes0_avx2 for rays k .. k + 7 */
+static inline RT_PK_AVX512 __attribute__((always_inline)) void rt_pk_lanes0_avx512(rt_pk *p,
+                                                                                  int k,
+                                                                                  const int any)
+{
+    const __m512d z = _mm512_setzero_pd();
+    double *const f[] = {p->ox, p->oy, p->oz, p->sx, p->sy, p->oK, p->dK, p->o1, p->o2,
+                         p->m1, p->m2, p->us, p->ue};
+    for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
+        _mm512_storeu_pd(f[j] + k, z);
+    if (any) {
+        _mm512_storeu_pd(p->sz + k, z);
+        _mm512_storeu_pd(p->tn + k, z);
+        _mm512_storeu_pd(p->tx + k, z);
+    } else {
+        _mm512_storeu_pd(p->t1 + k, z);
+        _mm512_storeu_pd(p->best + k, _mm512_set1_pd(INFINITY));
+        _mm512_storeu_pd(p->eb + k, z);
+    }
+}
+
 static inline RT_PK_AVX512 __attribute__((always_inline)) int
 rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
 {
@@ -1083,8 +1131,6 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
             return 0; /* not the axes of ray 0 */
         if (rotated && _mm512_movepi64_mask(_mm512_castpd_si512(v[3 + kz])) != negk)
             return 0; /* (else the octant's check below) */
-        const __m512d sz = _mm512_div_pd(one, v[3 + kz]);
-        const __m512d sx = _mm512_mul_pd(v[3 + kx], sz), sy = _mm512_mul_pd(v[3 + ky], sz);
         /* the ray in the grid frame: go[0..2], gd[0..2] (v's own on a grid not rotated) */
         __m512d rv[6];
 #define RT_PK_GO(a) (rotated ? rv[a] : v[a])
@@ -1123,6 +1169,12 @@ rt_pk_setup_avx512_body(rt_pk *p, const rt_ray *rays, const int rotated)
         /* walked: t0 <= t1 and t0 finite (rt_pk_range) */
         const __m512i a0 = _mm512_and_si512(_mm512_castpd_si512(T0), absm);
         const __mmask8 in = _mm512_cmp_pd_mask(T0, T1, _CMP_LE_OQ) & _mm512_cmpgt_epi64_mask(inf, a0);
+        if (!in) { /* none walked (rays beside the box): their lanes */
+            rt_pk_lanes0_avx512(p, k, any);
+            continue;
+        }
+        const __m512d sz = _mm512_div_pd(one, v[3 + kz]);
+        const __m512d sx = _mm512_mul_pd(v[3 + kx], sz), sy = _mm512_mul_pd(v[3 + ky], sz);
         const __m512d oK = RT_PK_GO(K), dK = RT_PK_GD(K);
         const __m512d us = _mm512_mul_pd(sg, _mm512_add_pd(oK, _mm512_mul_pd(T0, dK)));
         const __m512d ue = _mm512_mul_pd(sg, _mm512_add_pd(oK, _mm512_mul_pd(T1, dK)));
@@ -2304,8 +2356,9 @@ unsigned long long rt_packet_count(void)
     return atomic_load_explicit(&rt_pk_traced, memory_order_relaxed);
 }
 
-int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays, long *i,
-                      double *t, rt_rayx *rx, rt_packet_stats *ps)
+/* rt_packet_nearest, and in *hm the rays that may have a hit: i[k] = -1 for the others */
+static int rt_pk_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays, long *i,
+                         double *t, rt_rayx *rx, rt_packet_stats *ps, uint64_t *hm)
 {
     rt_pk p;
     pthread_once(&rt_pk_once, rt_pk_choose);
@@ -2324,7 +2377,15 @@ int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *r
             i[k] = rt_trace_nearest(sc, ctx, &rx[k], &t[k]);
         }
     }
+    *hm = p.hit;
     return 1;
+}
+
+int rt_packet_nearest(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays, long *i,
+                      double *t, rt_rayx *rx, rt_packet_stats *ps)
+{
+    uint64_t hm;
+    return rt_pk_nearest(sc, ctx, n, rays, i, t, rx, ps, &hm);
 }
 
 int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *rays,
@@ -2421,7 +2482,9 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
         long pi[RT_PACKET];
         double pt[RT_PACKET];
         rt_rayx rx[RT_PACKET];
-        const int packed = rt_packet_nearest(sc, &c, m, rays + k0, pi, pt, rx, ps ? ps : &own);
+        uint64_t hm = 0;
+        const int packed =
+            rt_pk_nearest(sc, &c, m, rays + k0, pi, pt, rx, ps ? ps : &own, &hm);
         /* the primitives whose normal this packet's output already holds, by the low bits
            of their index, and a hit written with it (the rays of a packet hit a few
            triangles, each several times, not always in a row) */
@@ -2429,7 +2492,14 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
         const rt_hit *ch[RT_PK_NGC];
         for (int s = 0; s < RT_PK_NGC; s++)
             ci[s] = -1;
-        for (size_t j = 0; j < m; j++) {
+        /* a packet: its misses first (most rays of a frame), then the rays that may have a
+           hit in their order (the same records: a miss's does not depend on the others) */
+        const uint64_t all = m == RT_PACKET ? ~(uint64_t)0 : ((uint64_t)1 << m) - 1;
+        if (packed)
+            for (uint64_t w = all & ~hm; w; w &= w - 1)
+                hits[k0 + (size_t)__builtin_ctzll(w)] = (rt_hit){.t = INFINITY, .prim = -1};
+        for (uint64_t w = packed ? hm : all; w; w &= w - 1) {
+            const size_t j = (size_t)__builtin_ctzll(w);
             const rt_ray *q = &rays[k0 + j];
             long i = -1;
             if (packed)
