@@ -660,6 +660,8 @@ typedef struct rt_ctx {
     uint32_t stamp;
     size_t nprim;
     long blocker;       /* set by rt_trace_transmit when blocked by an opaque primitive */
+    int beside;         /* the last nearest-hit packet had no ray in the grid box
+                           (rt_packet.c: the next one tries rt_pk_beside) */
 } rt_ctx;
 
 int rt_ctx_init(rt_ctx *c, const rt_scene *sc);

@@ -18,6 +18,8 @@ void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit 
    could depend on the order of the tests: rt_packet.c). */
 typedef struct rt_packet_stats {
     uint64_t packets, fallback_packets, fallback_rays;
+    uint64_t beside; /* nearest-hit packets found beside the grid box without a set-up (of
+                        packets: rt_pk_beside, with the AVX2 and AVX-512 kernels) */
 } rt_packet_stats;
 
 /* The nearest hits of rays[0..n-1] (n <= RT_PACKET), bit for bit those of

@@ -188,6 +188,7 @@ int rt_ctx_init(rt_ctx *c, const rt_scene *sc)
 {
     c->nprim = sc->nprim;
     c->stamp = 0;
+    c->beside = 0;
     c->mbox = rt_calloc_array(sc->nprim ? sc->nprim : 1, sizeof(uint32_t));
     c->hbox = rt_calloc_array(RT_HBOX, sizeof(uint64_t));
     if (c->mbox && c->hbox)
@@ -203,6 +204,7 @@ static int rt_ctx_init_small(rt_ctx *c)
 {
     c->nprim = 0;
     c->stamp = 0;
+    c->beside = 0;
     c->mbox = NULL;
     c->hbox = rt_calloc_array(RT_HBOX, sizeof(uint64_t));
     return c->hbox ? RT_OK : RT_ERR_NOMEM;

@@ -9,7 +9,8 @@
  *    in packets of rays aimed exactly at neighbouring vertices and edge midpoints;
  *  - coplanar and overlapping areas (the tie rule decides), a box resting on a floor, with
  *    shadow rays to a point light;
- *  - rays that cannot form a packet (zero direction components, NaN, mixed octants).
+ *  - rays that cannot form a packet (zero direction components, NaN, mixed octants);
+ *  - packets beside the grid box (most of a frame around a mesh), and looking away from it.
  * Each check counts its rays and the rays whose answers differ (required 0), and that the
  * packet path was taken (packets traced as packets > 0): a test that could not fail if the
  * packet path were never used would prove nothing.
@@ -89,10 +90,11 @@ static void compare(const rt_scene *sc, size_t n, const rt_ray *rays, const doub
 static void report(const char *what, const tally *ta)
 {
     printf("%s: %zu rays (%zu hit), %zu differ; %zu shadow rays (%zu occluded), %zu differ; "
-           "packets %llu traced, %llu to the single-ray path, %llu rays re-traced\n",
+           "packets %llu traced (%llu beside the grid box), %llu to the single-ray path, %llu "
+           "rays re-traced\n",
            what, ta->rays, ta->hits, ta->differ, ta->shadow, ta->occluded, ta->sdiffer,
-           (unsigned long long)ta->ps.packets, (unsigned long long)ta->ps.fallback_packets,
-           (unsigned long long)ta->ps.fallback_rays);
+           (unsigned long long)ta->ps.packets, (unsigned long long)ta->ps.beside,
+           (unsigned long long)ta->ps.fallback_packets, (unsigned long long)ta->ps.fallback_rays);
     assert_int_equal(ta->differ, 0);
     assert_int_equal(ta->sdiffer, 0);
     assert_true(ta->ps.packets > 0);
@@ -223,6 +225,62 @@ static void mesh_case(const char *path, int ncam)
     free(rays);
     rt_scene_free(sc);
     rtu_mesh_free(&m);
+}
+
+/* packets beside the grid box (rt_pk_beside, tried after a packet without a ray in the box):
+   cameras whose frame holds the mesh with much room around it, so that most packets lie
+   beside the box, many of them next to its outline (the bounds' margins are far below a
+   pixel: a packet a pixel off the box is still judged by them), and cameras looking away
+   from it (the box behind the rays); on a rotated grid (fandisk) and one in VRC3 (bunny).
+   With the AVX2 and AVX-512 kernels packets must have been found beside the box. */
+static void beside_case(const char *path)
+{
+    rtu_mesh m;
+    assert_int_equal(rtu_load_off(path, &m), 0);
+    rt_scene *sc = rt_scene_new();
+    assert_non_null(sc);
+    rt_surface s;
+    rt_surface_default(&s);
+    assert_int_equal(rtu_mesh_add(&m, sc, rt_scene_add_surface(sc, &s)), 0);
+    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
+    double bb[6], mid[3];
+    rtu_mesh_bbox(&m, bb);
+    for (int i = 0; i < 3; i++)
+        mid[i] = 0.5 * (bb[i] + bb[3 + i]);
+    const double diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                             (bb[5] - bb[2]) * (bb[5] - bb[2]));
+    enum { W = 96, H = 96 };
+    rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
+    assert_non_null(rays);
+    uint64_t rng = 777;
+    tally ta = {0};
+    for (int c = 0; c < 12; c++) {
+        double eye[3], at[3];
+        box_point(bb, 4.0, &rng, eye);
+        const double dist = sqrt((eye[0] - mid[0]) * (eye[0] - mid[0]) +
+                                 (eye[1] - mid[1]) * (eye[1] - mid[1]) +
+                                 (eye[2] - mid[2]) * (eye[2] - mid[2]));
+        for (int i = 0; i < 3; i++) /* toward the mesh, or away from it (c % 4 == 3) */
+            at[i] = c % 4 == 3 ? 2.0 * eye[i] - mid[i] : mid[i];
+        /* the mesh's diagonal over two thirds to a third of the frame */
+        const double pitch = diag / dist / (double)W * (1.5 + 1.5 * rtu_rand(&rng));
+        camera_rays(eye, at, pitch, W, H, INFINITY, rays);
+        compare(sc, (size_t)W * H, rays, NULL, &ta);
+    }
+    report(path, &ta);
+    const char *k = rt_packet_kernel_name();
+    if (!strcmp(k, "avx2") || !strcmp(k, "avx512"))
+        assert_true(ta.ps.beside > 0);
+    free(rays);
+    rt_scene_free(sc);
+    rtu_mesh_free(&m);
+}
+
+static void test_beside(void **state)
+{
+    (void)state;
+    beside_case(RT_DATA_DIR "/meshes/fandisk_large.off.gz");
+    beside_case(RT_DATA_DIR "/meshes/bunny00.off.gz");
 }
 
 static void test_meshes(void **state)
@@ -621,6 +679,7 @@ int main(void)
         cmocka_unit_test(test_coplanar),
         cmocka_unit_test(test_render),
         cmocka_unit_test(test_meshes),
+        cmocka_unit_test(test_beside),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
