@@ -57,9 +57,13 @@ mkdir -p "$out/obj"
 obj_of() { echo "$out/obj/$(echo "${1%.c}" | tr / _).o"; } # src/c/x/y.c -> obj/src_c_x_y.o
 objs=()
 for src in "${lib_srcs[@]}"; do objs+=("$(obj_of "$src")"); done
-for i in "${!lib_srcs[@]}"; do
+# Largest sources first: the tracer's rt_trace.c alone takes most of a minute here, and
+# compiled last (in name order) it kept one core busy while the other had nothing to do.
+mapfile -t by_size < <(for src in "${lib_srcs[@]}"; do echo "$(wc -c < "$src") $src"; done |
+                       sort -k1,1nr -k2 | cut -d' ' -f2-)
+for src in "${by_size[@]}"; do
     at_most_two
-    clang "${flags[@]}" -Isrc/rt -c "${lib_srcs[$i]}" -o "${objs[$i]}" &
+    clang "${flags[@]}" -Isrc/rt -c "$src" -o "$(obj_of "$src")" &
 done
 wait_all
 clang "${flags[@]}" tests/fuzz/fuzz_gksm.c "$(obj_of src/c/ws/mf/gks_mf_codec.c)" \
