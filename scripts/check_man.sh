@@ -77,9 +77,11 @@ fi
 
 # The groff command of man-db's pipeline for `man --warnings=w -E UTF-8 -l` (seen with strace):
 # preconv -e UTF-8 (-K utf8), tbl (-t), -mtty-char -mandoc -ww -Tutf8; the output is not kept.
-render() { groff -K utf8 -t -mtty-char -mandoc -ww -Tutf8 "$1" 2>&1 > /dev/null || echo "groff failed"; }
+render() {
+    groff -K utf8 -t -mtty-char -mandoc -ww -Tutf8 "$1" 2>&1 > /dev/null || echo "groff failed"
+}
 cd "$mandir"
-# First the links: a page of the one line ".so manN/target.N" (read with bash alone: 566 of them).
+# First the links: a page of the one line ".so manN/target.N" (read in bash: 566 of them).
 pages=()
 declare -A link
 for page in man1/*.1 man3/*.3 man7/*.7; do
@@ -106,5 +108,6 @@ for page in "${pages[@]}"; do
     fi
     nr=$((nr + 1))
 done
-echo "check_man: $nr pages rendered with groff -ww -mandoc -Tutf8 (as man --warnings=w -l), $nl .so links to them, status $status"
+echo "check_man: $nr pages rendered with groff -ww -mandoc -Tutf8 (as man --warnings=w -l)," \
+     "$nl .so links to them, status $status"
 exit $status

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# run-tests.sh -- set up, then run the whole test suite three times:
+# run-tests.sh -- set up, then run the whole test suite in four builds:
 #   ./build-test  Debug at -Og (the tests of the tracer run several times faster than at -O0,
-#                 the times are in README.md), -DGKS_WERROR=ON, benchmarks built too (not run)
+#                 the times are in docs/bench/RESULTS.md, "The test suite"), -DGKS_WERROR=ON,
+#                 benchmarks built too (not run)
 #   ./build-min   Release (-O2, so that warnings only the optimizer finds, such as
 #                 -Wmaybe-uninitialized, fail too), -DGKS_WERROR=ON, every optional dependency
 #                 off (each GKS_WITH_* option, the Fortran binding included), benchmarks off;
@@ -10,13 +11,17 @@
 #                 peer compiles; the checks of sources and documents (ctest label nocode,
 #                 the same in every build) are left out
 #   ./build-asan  Debug at -O1 (AddressSanitizer's documentation advises -O1 or more for
-#                 speed; the times are in README.md), -DGKS_WERROR=ON -DGKS_SANITIZE=ON
-#                 (AddressSanitizer + UBSan, LeakSanitizer on when it works here, see below);
+#                 speed; the times are in docs/bench/RESULTS.md), -DGKS_WERROR=ON
+#                 -DGKS_SANITIZE=ON (AddressSanitizer + UBSan, LeakSanitizer on when it works
+#                 here, see below);
 #                 the checks of sources and documents (ctest label nocode) are left out
 #   ./build-tsan  RelWithDebInfo, -DGKS_TSAN=ON (ThreadSanitizer): only the tests that run
 #                 threads (the tracer's pool, the recording worker and its failure paths,
 #                 the thread rule), built as their own targets so that the stage stays short
 # then fuzzes the untrusted-input readers for FUZZ_SECONDS (default 30) per target.
+# Each ctest runs two tests at a time (-j2, the machine's two cores); a fresh build has no times
+# of an earlier run, so the longest tests carry a COST (tests/*/CMakeLists.txt) that makes
+# ctest start them first rather than last beside an idle core.
 # Exits non-zero on any build or test failure. The tests are asked for explicitly
 # (-DBUILD_TESTING=ON, the Release build-min would not build them by default) and required
 # (-DGKS_REQUIRE_TESTS=ON: a missing cmocka stops the configure instead of skipping them).
