@@ -19,6 +19,9 @@ xvfb_need Xvfb xdotool
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir" || exit 1
 xvfb_start
 GKS3D_RECORD=fig3.gksm "$fig3" >/dev/null || { echo "FAIL: fig3 not recorded"; exit 1; }
+# out.txt made here: the background job's own redirection may come after wait_for's first
+# grep (which then failed on the missing file, and the loop ended at once: "no window")
+: >out.txt
 "$render" fig3.gksm --x11 --frames 3 --size 120 --mode raytrace --samples 4 \
     --name 'saved-%d.png' >out.txt 2>err.txt &
 pid=$!
