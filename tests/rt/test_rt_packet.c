@@ -153,21 +153,28 @@ static void box_point(const double bb[6], double g, uint64_t *rng, double p[3])
     }
 }
 
-static void mesh_case(const char *path, int ncam)
+/* the mesh of the OFF file path (into *m) committed as a scene of its own, with its box bb
+   and the box's diagonal *diag */
+static rt_scene *mesh_scene(const char *path, rtu_mesh *m, double bb[6], double *diag)
 {
-    rtu_mesh m;
-    assert_int_equal(rtu_load_off(path, &m), 0);
+    assert_int_equal(rtu_load_off(path, m), 0);
     rt_scene *sc = rt_scene_new();
     assert_non_null(sc);
     rt_surface s;
     rt_surface_default(&s);
-    const int si = rt_scene_add_surface(sc, &s);
-    assert_int_equal(rtu_mesh_add(&m, sc, si), 0);
+    assert_int_equal(rtu_mesh_add(m, sc, rt_scene_add_surface(sc, &s)), 0);
     assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
-    double bb[6];
-    rtu_mesh_bbox(&m, bb);
-    const double diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
-                             (bb[5] - bb[2]) * (bb[5] - bb[2]));
+    rtu_mesh_bbox(m, bb);
+    *diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
+                 (bb[5] - bb[2]) * (bb[5] - bb[2]));
+    return sc;
+}
+
+static void mesh_case(const char *path, int ncam)
+{
+    rtu_mesh m;
+    double bb[6], diag;
+    rt_scene *sc = mesh_scene(path, &m, bb, &diag);
     enum { W = 32, H = 32 };
     rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
     assert_non_null(rays);
@@ -236,19 +243,10 @@ static void mesh_case(const char *path, int ncam)
 static void beside_case(const char *path)
 {
     rtu_mesh m;
-    assert_int_equal(rtu_load_off(path, &m), 0);
-    rt_scene *sc = rt_scene_new();
-    assert_non_null(sc);
-    rt_surface s;
-    rt_surface_default(&s);
-    assert_int_equal(rtu_mesh_add(&m, sc, rt_scene_add_surface(sc, &s)), 0);
-    assert_int_equal(rt_scene_commit(sc, NULL), RT_OK);
-    double bb[6], mid[3];
-    rtu_mesh_bbox(&m, bb);
+    double bb[6], diag, mid[3];
+    rt_scene *sc = mesh_scene(path, &m, bb, &diag);
     for (int i = 0; i < 3; i++)
         mid[i] = 0.5 * (bb[i] + bb[3 + i]);
-    const double diag = sqrt((bb[3] - bb[0]) * (bb[3] - bb[0]) + (bb[4] - bb[1]) * (bb[4] - bb[1]) +
-                             (bb[5] - bb[2]) * (bb[5] - bb[2]));
     enum { W = 96, H = 96 };
     rt_ray *rays = malloc((size_t)W * H * sizeof *rays);
     assert_non_null(rays);
