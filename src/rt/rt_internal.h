@@ -666,6 +666,9 @@ typedef struct rt_ctx {
 
 int rt_ctx_init(rt_ctx *c, const rt_scene *sc);
 void rt_ctx_free(rt_ctx *c);
+/* the checks of a batch call (sc, and rays and out when n > 0: RT_ERR_ARG; sc committed:
+   RT_ERR_STATE) and its context: the small mailbox only (RT_ERR_NOMEM) */
+int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out, rt_ctx *c);
 
 /* 0 if the ray is unusable (non-finite, zero direction, NaN range). r->skip = RT_NO_SKIP. */
 int rt_rayx_setup(rt_rayx *r, const double o[3], const double d[3], double tmin, double tmax);

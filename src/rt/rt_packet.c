@@ -2631,22 +2631,6 @@ int rt_packet_occluded(const rt_scene *sc, rt_ctx *ctx, size_t n, const rt_ray *
 
 /* ---- the batch API ---- */
 
-/* the checks and the context of a packet call (rt_trace.c's rt_batch_begin) */
-static int rt_pk_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out,
-                       rt_ctx *c)
-{
-    if (!sc || (n && (!rays || !out)))
-        return RT_ERR_ARG;
-    if (!sc->committed)
-        return RT_ERR_STATE;
-    c->nprim = 0;
-    c->stamp = 0;
-    c->beside = 0;
-    c->mbox = NULL;
-    c->hbox = rt_calloc_array(RT_HBOX, sizeof(uint64_t));
-    return c->hbox ? RT_OK : RT_ERR_NOMEM;
-}
-
 /* rt_fill_hit (rt_trace.c) with the normal of primitive i given: the one rt_prim_ng gave
    for the last hit of the same primitive (the same value: it depends on the primitive
    only); the point and the side as rt_fill_hit computes them */
@@ -2671,7 +2655,7 @@ int rt_intersect_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays, 
 {
     rt_packet_stats own = {0};
     rt_ctx c;
-    const int rc = rt_pk_begin(sc, n, rays, hits, &c);
+    const int rc = rt_batch_begin(sc, n, rays, hits, &c);
     if (rc != RT_OK)
         return rc;
     for (size_t k0 = 0; k0 < n; k0 += RT_PACKET) {
@@ -2729,7 +2713,7 @@ int rt_occluded_packet_stats(const rt_scene *sc, size_t n, const rt_ray *rays,
 {
     rt_packet_stats own = {0};
     rt_ctx c;
-    const int rc = rt_pk_begin(sc, n, rays, occluded, &c);
+    const int rc = rt_batch_begin(sc, n, rays, occluded, &c);
     if (rc != RT_OK)
         return rc;
     for (size_t k0 = 0; k0 < n; k0 += RT_PACKET) {

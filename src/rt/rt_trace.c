@@ -2087,8 +2087,9 @@ void rt_fill_hit(const rt_scene *sc, const rt_rayx *r, long i, double t, rt_hit 
     h->side = den > 0.0 ? 1 : 0;
 }
 
-/* the checks and the traversal context of a batch call (out: its output array) */
-static int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out, rt_ctx *c)
+/* the checks and the traversal context of a batch call (out: its output array): the batch
+   API's here and rt_packet.c's */
+int rt_batch_begin(const rt_scene *sc, size_t n, const rt_ray *rays, const void *out, rt_ctx *c)
 {
     if (!sc || (n && (!rays || !out)))
         return RT_ERR_ARG;
