@@ -848,6 +848,12 @@ static inline __attribute__((always_inline)) void rt_pk_setup_end(rt_pk *p, cons
      rt_pk_clip's) and the extent along K (rt_pk_range's).
    Returns 0 if a ray is not plain or the rays do not share the axes and octant: then the
    general set-up runs (and decides coherence as before). */
+/* the set-up's per-ray fields that a ray not walked has 0 in (rt_pk_lanes0_avx2 and
+   rt_pk_lanes0_avx512) */
+#define RT_PK_LANES0(p)                                                                    \
+    {(p)->ox, (p)->oy, (p)->oz, (p)->sx, (p)->sy, (p)->oK, (p)->dK, (p)->o1, (p)->o2, (p)->m1, \
+     (p)->m2, (p)->us, (p)->ue}
+
 /* the lanes of rays k .. k + 3 when none of them is walked: what the set-up stores for a
    ray not walked (0 in the kernels' and the walk's lanes; a nearest-hit ray's records as
    for any ray: no hit; its end t1 is never read), without the divisions of the rays walked */
@@ -856,8 +862,7 @@ static inline __attribute__((target("avx2"), always_inline)) void rt_pk_lanes0_a
                                                                                   const int any)
 {
     const __m256d z = _mm256_setzero_pd();
-    double *const f[] = {p->ox, p->oy, p->oz, p->sx, p->sy, p->oK, p->dK, p->o1, p->o2,
-                         p->m1, p->m2, p->us, p->ue};
+    double *const f[] = RT_PK_LANES0(p);
     for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
         _mm256_storeu_pd(f[j] + k, z);
     if (any) {
@@ -1054,8 +1059,7 @@ static inline RT_PK_AVX512 __attribute__((always_inline)) void rt_pk_lanes0_avx5
                                                                                   const int any)
 {
     const __m512d z = _mm512_setzero_pd();
-    double *const f[] = {p->ox, p->oy, p->oz, p->sx, p->sy, p->oK, p->dK, p->o1, p->o2,
-                         p->m1, p->m2, p->us, p->ue};
+    double *const f[] = RT_PK_LANES0(p);
     for (size_t j = 0; j < sizeof f / sizeof f[0]; j++)
         _mm512_storeu_pd(f[j] + k, z);
     if (any) {
