@@ -618,8 +618,9 @@ static size_t rt_sorted_place(const uint64_t *s, size_t n, uint64_t x)
    given position above them (rt_ctri_given), the frame candidates' indices renumbered to
    match; its vertices renumbered in the order of their first use by the sorted triangles
    (unused ones last, in the given order), with the same coordinates, normals and colours,
-   each triangle's vertices in their given roles. key: 2 nt, to: max(nt, nv) and tmp: 24 max(nt, nv) bytes, tmp holding
-   the triangles' vertex sums on entry (rt_mesh_add_check). src: the vertices in the given
+   each triangle's vertices in their given roles. key: 2 nt words, to: nv, tmp: 24 nt bytes
+   and 24 nv without src, 12 nv with normals or colours; tmp holds the triangles' vertex
+   sums on entry (rt_mesh_add_check). src: the vertices in the given
    order when the scene's copy is not yet made (rt_scene_add_mesh: they are placed from the
    caller's array, no copy first), or NULL. */
 static void rt_mesh_sort(rt_scene *sc, rt_mesh *m, uint64_t *key, uint32_t *to, void *tmp,
@@ -724,11 +725,12 @@ static void rt_mesh_offsets(rt_scene *sc, rt_mesh *m, int given)
    each other in space, so their index triples and vertices then share cache lines (a ray's
    chain reference -> index triple -> three vertices misses less). The same coordinates, the
    same triangles with their vertices in their given roles, the tie rule on the given
-   positions: every answer stays bit for bit; no byte more at rest. key: rt_scene_mesh_end's
-   block with the triangles' vertex sums (rt_mesh_add_check), or NULL: without it the given
-   order is kept with the positions written (nothing else changes). Either way the index
-   words end as offsets (rt_scene.vmask). */
-static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n, const double *src)
+   positions: every answer stays bit for bit; no byte more at rest. key, tmp, to: the parts
+   of rt_mesh_end's block, tmp with the triangles' vertex sums (rt_mesh_add_check), or NULL:
+   without it the given order is kept with the positions written (nothing else changes).
+   Either way the index words end as offsets (rt_scene.vmask). */
+static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, void *tmp, uint32_t *to,
+                          const double *src)
 {
     if (sc->nmesh == 0) { /* a scene without meshes starts over */
         sc->vmask = RT_VMASK;
@@ -738,7 +740,7 @@ static void rt_mesh_order(rt_scene *sc, rt_mesh *m, uint64_t *key, size_t n, con
         (sc->nmv + m->nv > sc->vlimit || m->nt > ((size_t)1 << 24)))
         rt_meshes_given_order(sc);
     if (sc->vmask != UINT32_MAX && key) {
-        rt_mesh_sort(sc, m, key, (uint32_t *)(key + 5 * n), key + 2 * n, src);
+        rt_mesh_sort(sc, m, key, to, tmp, src);
         return;
     }
     if (src) /* the given order: the vertices as given */
@@ -761,15 +763,24 @@ static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const 
     if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
         return RT_ERR_ARG;
     /* rt_mesh_order's memory, taken before the check so that the check leaves the vertex
-       sums there: one block of 48 bytes per triangle or vertex (the larger count n, as
-       given): the sort's keys (16 n), its copies and the sums (24 n) and the new numbers
-       (4 n); none when the scene keeps the given order */
-    const size_t n = m->nv > m->nt ? m->nv : m->nt;
-    uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX ? rt_alloc_array(n ? n : 1, 48)
-                                                             : NULL;
-    const int rc = rt_mesh_add_check(sc, m, key ? (double (*)[3])(key + 2 * n) : NULL, src, srcix);
+       sums there: one block of 8-byte words, each part as large as its use (none when the
+       scene keeps the given order): the sort's keys and their second buffer (2 nt); tmp:
+       the sums (24 bytes a triangle), then the given triples (12), the vertices when they
+       are the scene's copy (24 a vertex: src NULL) and the normals or colours (12 a vertex);
+       then the new numbers (4 a vertex). Every part sized by the larger count made 48
+       bytes for each of the 3N unshared vertices of N separate triangles (4.3 MB at
+       N = 30000, 1.6 MB of it used): a larger peak of heap, which glibc gives back to the
+       system between scenes and the next scene faults in again (~10 us a 4 KiB page in
+       the VM of docs/bench/rt_tuning.md). */
+    const size_t nt = m->nt, nv = m->nv, nf = m->has_n || m->has_c ? nv / 2 + 1 : 0;
+    const size_t ntmp = 3 * (src ? (nf > nt ? nf : nt) : (nv > nt ? nv : nt));
+    uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX
+                        ? rt_alloc_array(2 * nt + ntmp + nv / 2 + 1, sizeof(uint64_t))
+                        : NULL;
+    uint64_t *tmp = key ? key + 2 * nt : NULL;
+    const int rc = rt_mesh_add_check(sc, m, (double (*)[3])tmp, src, srcix);
     if (rc == RT_OK)
-        rt_mesh_order(sc, m, key, n, src);
+        rt_mesh_order(sc, m, key, tmp, key ? (uint32_t *)(tmp + ntmp) : NULL, src);
     free(key);
     if (rc != RT_OK)
         return rc;
