@@ -646,8 +646,10 @@ static size_t same_hits(rt_scene *g, rt_scene *b, size_t n, const rt_ray *rays, 
  * many flat sub-grids before their hit; the second is inside the skip's grazing limit), and
  * each of them again ending exactly at its hit (tmax its t: the range's end lies on the plane
  * within the roundings, which a margin too small puts beyond the slab, and the hit is lost),
- * starting exactly at it (tmin its t) and ending just short of it; in batches and one ray a
- * call. The triangles' shared edges and vertices give ties between triangles. */
+ * starting exactly at it (tmin its t) and ending just short of it; and from far out ending
+ * exactly at it (the only case where the skip's margin beyond the slab's own widening decides:
+ * without it the hit is lost); in batches and one ray a call. The triangles' shared edges and
+ * vertices give ties between triangles. */
 static void test_intersect_flat(void **state)
 {
     (void)state;
@@ -700,6 +702,26 @@ static void test_intersect_flat(void **state)
         assert_int_equal(same_hits(g, b, n, rays[1], hg, hb), n);
         (void)same_hits(g, b, n, rays[2], hg, hb);
         assert_int_equal(same_hits(g, b, n, rays[3], hg, hb), 0);
+        /* the same rays from far out (30 times the plane's extent back along the ray, inside
+           the skip's 64 S0) and ending exactly at their hits: the ends' heights n . o + t
+           (n . d) now round by more than the slab's own widening (8 u S), so that only the
+           skip's margin (rt_sub_flat_near) keeps the hit's sub-grid walked */
+        const double far = 30.0 * (s + off);
+        for (int k = 0; k < M; k++) {
+            rays[1][k] = rays[0][k];
+            const double *d = rays[0][k].dir, dl = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (int a = 0; a < 3; a++)
+                rays[1][k].org[a] -= far / dl * d[a];
+        }
+        assert_true(same_hits(g, b, M, rays[1], hg, hb) > M / 2);
+        n = 0;
+        for (int k = 0; k < M; k++) {
+            if (hb[k].prim < 0)
+                continue;
+            rays[2][n] = rays[1][k];
+            rays[2][n++].tmax = hb[k].t;
+        }
+        assert_int_equal(same_hits(g, b, n, rays[2], hg, hb), n);
         rt_scene_free(g);
         rt_scene_free(b);
     }
