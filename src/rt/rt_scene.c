@@ -763,19 +763,20 @@ static int rt_mesh_end(rt_scene *sc, int front_surface, int back_surface, const 
     if (!rt_surface_ok(sc, front_surface) || !rt_surface_ok(sc, back_surface))
         return RT_ERR_ARG;
     /* rt_mesh_order's memory, taken before the check so that the check leaves the vertex
-       sums there: one block of 8-byte words, each part as large as its use (none when the
-       scene keeps the given order): the sort's keys and their second buffer (2 nt); tmp:
-       the sums (24 bytes a triangle), then the given triples (12), the vertices when they
-       are the scene's copy (24 a vertex: src NULL) and the normals or colours (12 a vertex);
-       then the new numbers (4 a vertex). Every part sized by the larger count made 48
-       bytes for each of the 3N unshared vertices of N separate triangles (4.3 MB at
-       N = 30000, 1.6 MB of it used): a larger peak of heap, which glibc gives back to the
-       system between scenes and the next scene faults in again (~10 us a 4 KiB page in
-       the VM of docs/bench/rt_tuning.md). */
-    const size_t nt = m->nt, nv = m->nv, nf = m->has_n || m->has_c ? nv / 2 + 1 : 0;
-    const size_t ntmp = 3 * (src ? (nf > nt ? nf : nt) : (nv > nt ? nv : nt));
+       sums there: one block of 8-byte words, each part as large as its own use (none when
+       the scene keeps the given order): the sort's keys and their second buffer (2 nt
+       words); tmp, the largest of its uses in turn: the sums (24 bytes a triangle), the
+       given triples (12), the vertices when they are the scene's copy (24 a vertex: src
+       NULL), the normals or colours (12 a vertex); then the new numbers (4 a vertex).
+       Parts sized by the larger of the two counts left most of the block unused for
+       triangles of their own vertices, a heap peak that the next scene faults in again
+       (docs/bench/rt_tuning.md, "Random triangles at N = 30000"). The counts are below
+       2^31 and RT_MAX_MESH_VERTS (rt_scene_mesh_begin): the sizes cannot overflow. */
+    const size_t nt = m->nt, nv = m->nv;
+    const size_t vbytes = src ? (m->has_n || m->has_c ? 12 * nv : 0) : 24 * nv;
+    const size_t ntmp = ((24 * nt > vbytes ? 24 * nt : vbytes) + 7) / 8;
     uint64_t *key = sc->nmesh == 0 || sc->vmask != UINT32_MAX
-                        ? rt_alloc_array(2 * nt + ntmp + nv / 2 + 1, sizeof(uint64_t))
+                        ? rt_alloc_array(2 * nt + ntmp + (4 * nv + 7) / 8 + 1, sizeof(uint64_t))
                         : NULL;
     uint64_t *tmp = key ? key + 2 * nt : NULL;
     const int rc = rt_mesh_add_check(sc, m, (double (*)[3])tmp, src, srcix);
