@@ -67,13 +67,16 @@ static void workload(void)
     static const Glimit3 win3 = { 0, 1, 0, 1, 0, 1 };
     static const Glimit3 vp3 = { 0, 32, 0, 32, 0, 1 };
     gopen_gks(NULL, 0);
+    /* each PNG workstation made small as soon as it is open: an emergency close writes its
+       picture at the size it has then (1024 x 1024 pixels before), which made most of the
+       test's time, under ASan mostly page faults */
     gopen_ws(1, "emerg_a.png", GWS_TYPE_PNG);
+    gset_ws_vp(1, &vp32);
     gopen_ws(2, "emerg_b.png", GWS_TYPE_PNG);
+    gset_ws_vp(2, &vp32);
     gopen_ws(3, "emerg.gksm", GWS_TYPE_MO);
     gopen_ws(4, NULL, GWS_TYPE_WISS);
     gopen_ws(5, NULL, GWS_TYPE_NULL);
-    gset_ws_vp(1, &vp32);
-    gset_ws_vp(2, &vp32);
     gset_hlhsr_mode(2, GHLHSR_RAYTRACE);
     gset_defer_st(1, GDEFER_ASAP, GIRG_ALLOWED);
     for (int ws = 1; ws <= 5; ws++)

@@ -44,6 +44,7 @@ void FNAME(gerhnd, GERHND)(const fint *errnr, const fint *fctid, const fint *err
 void FNAME(gopks, GOPKS)(const fint *, const fint *);
 void FNAME(gclks, GCLKS)(void);
 void FNAME(gopwk, GOPWK)(const fint *, const fint *, const fint *);
+void FNAME(gswkvp, GSWKVP)(const fint *, const freal *, const freal *, const freal *, const freal *);
 void FNAME(gacwk, GACWK)(const fint *);
 void FNAME(gdawk, GDAWK)(const fint *);
 void FNAME(gclwk, GCLWK)(const fint *);
@@ -225,6 +226,8 @@ static void start(void)
     FNAME(gopks, GOPKS)(&errfil, &bufa);
     FNAME(gopwk, GOPWK)(&wk, &conid, &wtype);
     FNAME(gacwk, GACWK)(&wk);
+    const freal x0 = 0.0f, x1 = 63.0f;
+    FNAME(gswkvp, GSWKVP)(&wk, &x0, &x1, &x0, &x1);
 }
 
 static void stop(void)

@@ -216,9 +216,13 @@ static int png_clear(gks_ws *ws)
             return 0;
         }
     }
+    /* another size or sampling: the new framebuffer is made by the first output or
+       update that needs it (framebuffer()), at the viewport of that time; a program that
+       sets the workstation window and then the viewport (the usual order) so makes one
+       framebuffer, not one of the default 1024 x 1024 pixels first */
     gks_raster_fb_free(p->fb);
     p->fb = NULL;
-    return framebuffer(ws) ? 0 : 300;
+    return 0;
 }
 
 /* gks_ws_driver.background: the empty frame's picture cleared to the new colour 0; a
