@@ -31,8 +31,8 @@
 # ctest start them first rather than last beside an idle core.
 # The gcc builds with -g (Debug, sanitizer, ThreadSanitizer) leave out variable tracking
 # (-fno-var-tracking): file and line in every report and backtrace stay, a debugger may show
-# fewer variables' values; gcc spent a third of the sanitizer build on it (src/rt/rt_trace.c
-# 50-60 s of CPU with it, 31 s without; the sanitizer stage's build 164 -> 133 s).
+# fewer variables' values; gcc spent about a third of the sanitizer build on it (the times
+# are in docs/bench/RESULTS.md, "The test suite").
 # Exits non-zero on any build or test failure. The tests are asked for explicitly
 # (-DBUILD_TESTING=ON, the Release build-min would not build them by default) and required
 # (-DGKS_REQUIRE_TESTS=ON: a missing cmocka stops the configure instead of skipping them).

@@ -1249,25 +1249,24 @@ static __attribute__((noinline)) int rt_sub_flat(const rt_walkstate *w, uint32_t
     return rt_flat_beyond(&w->spp[j - 1], &w->fs);
 }
 
-/* A nearest-hit walk's flat sub-grid of plane j - 1 over [*t0, *t1] (its range in the top
-   cell, clipped to the sub-grid's box and to the best hit's window). Guards: the origin lies
-   within 64 times the scene's scale S0 and the ray is not grazing the plane (|n . d| at
-   least 2^-9 plus k_a of sqrt(3) max |d[k]|), so that a hit's error along the ray stays
-   below the cells' enlargement; without them the range is walked whole (0, unchanged).
-   An empty range (lo > hi): both ends of the range lie beyond the slab by the margin on
-   one side (the ends' rounding term doubled, 32 u S'): no triangle of the sub-grid has a
-   computed hit or a crossing in it, and its walk is not needed. Else the range meets the
-   slab, and the parts
-   of it before and after the slab are cut off where the same test proves them empty: the
-   cut points are where the height reaches the slab widened by twice the margin, and each
-   part is cut only when its two ends pass the test above (so the proof is that of the
-   skip, on a part of the range: its S' is at most the whole range's). The walk then covers
-   the ray's few cells around its crossing of the plane instead of every cell from the
-   sub-grid's box on. The proof that the answer stays the same: docs/RAYTRACING.md, "Flat
-   sub-grids". The ray's values (S, S^3) are computed here, not per ray: most rays never
-   call it. Out of line as rt_sub_flat; the range is returned in two registers (a pointer
-   to the walk's own would keep them in memory: in-box misses of the bunny and armadillo,
-   which have no flat sub-grid, 3 % slower). */
+/* The part of [t0, t1] that a nearest-hit walk must cover in the flat sub-grid of plane
+   j - 1 ([t0, t1]: its range in the top cell, clipped to the sub-grid's box and to the best
+   hit's window); an empty range (lo > hi) when it need not walk it at all. Guards: the
+   origin lies within 64 times the scene's scale S0 and the ray is not grazing the plane
+   (|n . d| at least 2^-9 plus k_a of sqrt(3) max |d[k]|), so that a hit's error along the
+   ray stays below the cells' enlargement; without them [t0, t1] is returned whole. Empty:
+   both ends of [t0, t1] lie beyond the slab by the margin on one side (the ends' rounding
+   term doubled, 32 u S'), so no triangle of the sub-grid has a computed hit or a crossing
+   in it. Else the range meets the slab, and its parts before and after the slab are cut off
+   where the same test proves them empty: the cut points are where the height reaches the
+   slab widened by twice the margin, and a part is cut only when its two ends pass the test
+   above (the proof is that of the skip, on a part of the range, whose S' is at most the
+   whole range's). The walk then covers the ray's few cells around its crossing of the
+   plane instead of every cell from the sub-grid's box on. The proof that the answer stays
+   the same: docs/RAYTRACING.md, "Flat sub-grids". The ray's values (S, S^3) are computed
+   here, not per ray: most rays never call it. Out of line as rt_sub_flat; the range comes
+   back by value, in two registers (through pointers the top walk kept the range in memory
+   and slowed the walks of meshes without flat sub-grids: docs/bench/rt_tuning.md). */
 typedef struct {
     double lo, hi;
 } rt_trange;
